@@ -1,0 +1,26 @@
+# Helpers shared by every folder: warnings, sanitizers, test registration.
+
+add_library(rastrules_warnings INTERFACE)
+target_compile_options(rastrules_warnings INTERFACE
+  -Wall -Wextra -Wpedantic -Wconversion -Wsign-conversion -Wshadow
+  $<$<BOOL:${RASTRULES_WERROR}>:-Werror>)
+
+add_library(rastrules_sanitize INTERFACE)
+if(RASTRULES_SANITIZE)
+  string(REPLACE ";" "," _rastrules_san "${RASTRULES_SANITIZE}")
+  target_compile_options(rastrules_sanitize INTERFACE
+    -fsanitize=${_rastrules_san} -fno-omit-frame-pointer -fno-sanitize-recover=all)
+  target_link_options(rastrules_sanitize INTERFACE -fsanitize=${_rastrules_san})
+endif()
+
+# Third-party headers are system headers: their warnings are not ours.
+# rastrules_add_gtest(NAME <exe> AREA <area> KIND <unit|property> SOURCES ... LIBS ...)
+include(GoogleTest)
+function(rastrules_add_gtest)
+  cmake_parse_arguments(A "" "NAME;AREA;KIND" "SOURCES;LIBS" ${ARGN})
+  add_executable(${A_NAME} ${A_SOURCES})
+  target_link_libraries(${A_NAME} PRIVATE ${A_LIBS} rastrules_warnings rastrules_sanitize)
+  gtest_discover_tests(${A_NAME}
+    DISCOVERY_TIMEOUT 60
+    PROPERTIES LABELS "${A_KIND};${A_AREA}")
+endfunction()

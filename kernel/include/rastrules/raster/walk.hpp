@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+// Bounding-box traversal of a set-up triangle (layer 3: mechanism). Its only correctness
+// criterion: it yields exactly the pixel centres inside the target for which covers() is
+// true, in row-major order (y, then x). Checked by properties/tri/walk_props.cpp.
+// Implements: RASTER.WALK.BBOX, RASTER.TARGET.CLIP, FIX.BIAS.FORM, FIX.STEP.INCREMENTAL
+
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+
+#include "rastrules/fixed.hpp"
+#include "rastrules/formula/edge.hpp"
+#include "rastrules/triangle.hpp"
+
+namespace rastrules::raster {
+
+// Returns floor(n / d) for d > 0.
+[[nodiscard]] constexpr std::int64_t floor_div(std::int64_t n, std::int64_t d) {
+  const std::int64_t q = n / d;
+  return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+
+struct PixelRect {
+  std::int32_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // inclusive; empty when x1 < x0 or y1 < y0
+  [[nodiscard]] constexpr bool empty() const { return x1 < x0 || y1 < y0; }
+};
+
+// Returns the pixels whose centres lie in the bounding box of the snapped vertices, clipped
+// to the target [0, width) x [0, height).
+// rule: RASTER.WALK.BBOX, RASTER.TARGET.CLIP
+[[nodiscard]] constexpr PixelRect pixel_bounds(const TriangleSetup& t, std::int32_t width,
+                                               std::int32_t height) {
+  std::int64_t minx = t.snapped[0].x.raw(), maxx = minx;
+  std::int64_t miny = t.snapped[0].y.raw(), maxy = miny;
+  for (const Vec2& v : t.snapped) {
+    minx = std::min<std::int64_t>(minx, v.x.raw());
+    maxx = std::max<std::int64_t>(maxx, v.x.raw());
+    miny = std::min<std::int64_t>(miny, v.y.raw());
+    maxy = std::max<std::int64_t>(maxy, v.y.raw());
+  }
+  // Centre of pixel p is p*256 + 128: the first centre >= min, the last centre <= max.
+  const std::int64_t px0 = -floor_div(-(minx - kSubpixelHalf), kSubpixelOne);
+  const std::int64_t px1 = floor_div(maxx - kSubpixelHalf, kSubpixelOne);
+  const std::int64_t py0 = -floor_div(-(miny - kSubpixelHalf), kSubpixelOne);
+  const std::int64_t py1 = floor_div(maxy - kSubpixelHalf, kSubpixelOne);
+  PixelRect r;
+  r.x0 = static_cast<std::int32_t>(std::max<std::int64_t>(px0, 0));
+  r.y0 = static_cast<std::int32_t>(std::max<std::int64_t>(py0, 0));
+  r.x1 = static_cast<std::int32_t>(std::min<std::int64_t>(px1, std::int64_t{width} - 1));
+  r.y1 = static_cast<std::int32_t>(std::min<std::int64_t>(py1, std::int64_t{height} - 1));
+  return r;
+}
+
+// Calls emit(x, y) for every covered pixel centre of t inside the target, row by row.
+// Each edge is evaluated directly at the start of a row and stepped by one pixel along it,
+// and tested in bias form (E + bias >= 0); both are proved equal to the direct rule
+// (proofs/tri/bias_form.cpp, proofs/tri/incremental_step.cpp).
+// rule: RASTER.WALK.BBOX, FIX.BIAS.FORM, FIX.STEP.INCREMENTAL
+template <class Emit>
+constexpr void walk_triangle(const TriangleSetup& t, std::int32_t width, std::int32_t height,
+                             Emit&& emit) {
+  if (t.status != TriangleStatus::kRasterized) return;
+  const PixelRect r = pixel_bounds(t, width, height);
+  if (r.empty()) return;
+  std::int64_t bias[3];
+  std::int64_t step_x[3];
+  for (std::size_t i = 0; i < 3; ++i) {
+    const EdgeSetup& e = t.edges[i];
+    bias[i] = formula::edge_bias<std::int64_t>(e.inclusive);
+    step_x[i] = formula::edge_step_x<std::int64_t>(e.a.y.raw(), e.b.y.raw(), kSubpixelOne);
+  }
+  for (std::int32_t y = r.y0; y <= r.y1; ++y) {
+    const Vec2 start = pixel_center(r.x0, y);
+    std::int64_t e0 = t.edges[0].value_at(start).raw() + bias[0];
+    std::int64_t e1 = t.edges[1].value_at(start).raw() + bias[1];
+    std::int64_t e2 = t.edges[2].value_at(start).raw() + bias[2];
+    for (std::int32_t x = r.x0; x <= r.x1; ++x) {
+      if ((e0 | e1 | e2) >= 0) emit(x, y);
+      e0 += step_x[0];
+      e1 += step_x[1];
+      e2 += step_x[2];
+    }
+  }
+}
+
+}  // namespace rastrules::raster
