@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: MIT
+// What accuracy costs in time: the kernel's fast path against its own direct evaluation and
+// against the exact oracle, on the same scenes, reported as ratios measured in one run.
+// rule: RASTER.WALK.BBOX, TRI.COVER.SAMPLE
+
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "rastrules/oracle/triangle.hpp"
+#include "rastrules/raster/walk.hpp"
+#include "rastrules/scene.hpp"
+
+namespace {
+
+// A deterministic scene: n triangles with vertices on the 1/256 grid, a quarter of them with
+// vertices on pixel centres (ties), inside a size x size target with a margin outside it.
+rastrules::Scene make_scene(std::int32_t size, int n, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> coord(-4 * 256, (size + 4) * 256);
+  rastrules::Scene s;
+  s.width = size;
+  s.height = size;
+  for (int i = 0; i < n; ++i) {
+    rastrules::Primitive p;
+    for (auto& v : p.v) {
+      for (auto& c : v) {
+        int raw = coord(rng);
+        if (i % 4 == 0) raw = (raw / 256) * 256 + 128;
+        c = static_cast<float>(raw) / 256.0f;
+      }
+    }
+    s.primitives.push_back(p);
+  }
+  return s;
+}
+
+rastrules::oracle::Scene to_oracle(const rastrules::Scene& s) {
+  rastrules::oracle::Scene o;
+  o.width = s.width;
+  o.height = s.height;
+  for (const auto& p : s.primitives) o.triangles.push_back(p.v);
+  return o;
+}
+
+void BM_KernelRender(benchmark::State& st) {
+  const auto scene = make_scene(static_cast<std::int32_t>(st.range(0)), 16, 1);
+  std::size_t n = 0;
+  for (auto _ : st) {
+    auto r = rastrules::render(scene);
+    n = std::get<std::vector<rastrules::Fragment>>(r).size();
+    benchmark::DoNotOptimize(n);
+  }
+  st.counters["fragments"] = static_cast<double>(n);
+}
+
+// The same coverage decided per pixel with the layer-2 rule (covers()), no stepping, no bias.
+void BM_KernelDirectCovers(benchmark::State& st) {
+  const auto scene = make_scene(static_cast<std::int32_t>(st.range(0)), 16, 1);
+  const auto prepared = std::get<rastrules::PreparedScene>(rastrules::prepare(scene));
+  std::size_t n = 0;
+  for (auto _ : st) {
+    n = 0;
+    for (const auto& t : prepared.triangles) {
+      const auto r = rastrules::raster::pixel_bounds(t, prepared.width, prepared.height);
+      for (std::int32_t y = r.y0; y <= r.y1; ++y)
+        for (std::int32_t x = r.x0; x <= r.x1; ++x)
+          n += rastrules::covers(t, rastrules::pixel_center(x, y)) ? 1u : 0u;
+    }
+    benchmark::DoNotOptimize(n);
+  }
+  st.counters["fragments"] = static_cast<double>(n);
+}
+
+void BM_OracleRender(benchmark::State& st) {
+  const auto scene = to_oracle(make_scene(static_cast<std::int32_t>(st.range(0)), 16, 1));
+  std::size_t n = 0;
+  for (auto _ : st) {
+    n = rastrules::oracle::render(scene).size();
+    benchmark::DoNotOptimize(n);
+  }
+  st.counters["fragments"] = static_cast<double>(n);
+}
+
+BENCHMARK(BM_KernelRender)->Arg(16)->Arg(64)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_KernelDirectCovers)->Arg(16)->Arg(64)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_OracleRender)->Arg(16)->Arg(64)->Unit(benchmark::kMillisecond);
+
+// Prints the usual table, then the ratios of each method to the kernel's fast path, from the
+// times measured in this run (never compared with a fixed number).
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const auto& r : runs) {
+      if (r.run_type == Run::RT_Iteration && r.iterations > 0) {
+        times_[r.benchmark_name()] = r.GetAdjustedRealTime() *
+                                     benchmark::GetTimeUnitMultiplier(benchmark::kNanosecond) /
+                                     benchmark::GetTimeUnitMultiplier(r.time_unit);
+      }
+    }
+    ConsoleReporter::ReportRuns(runs);
+  }
+  void Finalize() override {
+    ConsoleReporter::Finalize();
+    std::printf("\nAccuracy cost (time relative to BM_KernelRender, same scene, this run):\n");
+    for (const char* size : {"16", "64"}) {
+      const std::string base = std::string("BM_KernelRender/") + size;
+      if (!times_.count(base) || times_[base] <= 0) continue;
+      for (const char* name : {"BM_KernelDirectCovers/", "BM_OracleRender/"}) {
+        const std::string key = std::string(name) + size;
+        if (times_.count(key)) {
+          std::printf("  %-26s %10.1fx\n", key.c_str(), times_[key] / times_[base]);
+        }
+      }
+    }
+  }
+
+ private:
+  std::map<std::string, double> times_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+  RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  return 0;
+}
