@@ -15,6 +15,7 @@ endif()
 
 # Third-party headers are system headers: their warnings are not ours.
 # rastrules_add_gtest(NAME <exe> AREA <area> KIND <unit|property> SOURCES ... LIBS ...)
+find_package(GTest QUIET)
 include(GoogleTest)
 function(rastrules_add_gtest)
   cmake_parse_arguments(A "" "NAME;AREA;KIND" "SOURCES;LIBS" ${ARGN})

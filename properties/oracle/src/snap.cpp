@@ -68,8 +68,8 @@ std::int64_t snap_d3d_saturate(float v) {
   const Q tiny(1, 512);
   if (x < tiny && x > -tiny) return 0;
   // v >= FixedMax = 2^15 - 2^-8 gives FixedMax; v <= FixedMin = -2^15 gives FixedMin.
-  if (x >= Q(kRawMax, 256)) return kRawMax;
-  if (x <= Q(kRawMin, 256)) return kRawMin;
+  if (x >= Q(Z(kRawMax), Z(256))) return kRawMax;
+  if (x <= Q(Z(kRawMin), Z(256))) return kRawMin;
   return to_int64(round_half_even(x * Q(256)));
 }
 

@@ -2,8 +2,9 @@
 // The triangle rules written a second time, for machines: exact, slow, independent.
 // Written from spec/ (SNAP.*, TRI.*, RASTER.TARGET.CLIP) with exact rationals; never includes
 // or calls kernel code, and shares none of its types.
-// Implements (as oracle): SNAP.VERTEX.ROUND, SNAP.VERTEX.RANGE, TRI.FILL.TOP_EDGE,
-//   TRI.FILL.LEFT_EDGE, TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION, TRI.CULL.MODE, TRI.COVER.SAMPLE
+// Implements (as oracle): SNAP.VERTEX.ROUND, SNAP.VERTEX.RANGE, SNAP.D3D.SATURATE,
+//   TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE, TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION,
+//   TRI.CULL.MODE, TRI.COVER.SAMPLE
 
 #pragma once
 
@@ -42,6 +43,16 @@ struct Fragment {
 // Returns v * 256 rounded half to even as an integer, computed with exact rationals, or
 // nullopt when v is NaN, infinite, or the result lies outside [-2^23, 2^23 - 1].
 std::optional<std::int64_t> snap(float v);
+
+// Returns D3D11.3's saturating float-to-fixed conversion to signed 16.8 as a raw integer,
+// computed with exact rationals: NaN -> 0; |v| < 2^-9 -> 0; v >= FixedMax (2^15 - 2^-8,
+// including +Inf) -> FixedMax; v <= FixedMin (-2^15, including -Inf) -> FixedMin; otherwise
+// v * 256 rounded half to even.
+std::int64_t snap_d3d_saturate(float v);
+
+// Returns +1 when the snapped vertices (raw 16.8) run clockwise on screen (y down), -1 when
+// counter-clockwise, 0 when they are collinear or two coincide (TRI.ORIENT.AREA).
+int winding(const std::array<std::array<std::int64_t, 2>, 3>& snapped);
 
 // Returns whether the triangle with the given snapped vertices (raw 16.8 integers) covers the
 // sample (raw 16.8), under `state`, decided by the spec's words: exact orientation, the top

@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: MIT
+// A symbolic number domain for instantiating rastrules::formula templates with Z3 terms.
+//
+// Sym<Rep> models a value of the C++ signed integer type Rep. It carries an exact, unbounded
+// Z3 integer term, and every + - * (and unary -) it performs records the obligation "the exact
+// result fits in Rep" in its Domain. Instantiating a formula template with Sym<std::int64_t>
+// therefore yields both the mathematical value of the formula and the list of conditions under
+// which the kernel's std::int64_t evaluation equals it (no overflow, so no wrap and no UB).
+// This is sound for formula/ because it uses no division, modulo, shifts or masks: with no
+// overflow, two's-complement + - * agree with integer arithmetic.
+// Comparisons return SymBool, which supports && || ! so that the branch-free formula code
+// compiles unchanged.
+
+#pragma once
+
+#include <z3++.h>
+
+#include <concepts>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rastrules::proofs {
+
+// How a value is displayed in a counterexample.
+enum class Unit {
+  kCoordRaw,  // raw 16.8 position: also shown in pixels (raw / 2^kSubpixelBits)
+  kEdgeRaw,   // raw 32.16 edge value: also shown in pixel^2 (raw / 2^(2 kSubpixelBits))
+  kInteger,   // a plain integer
+  kBool,      // a Boolean
+};
+
+// A condition the modelled C++ evaluation needs (for example "this product fits int64_t").
+struct Obligation {
+  std::string what;  // for example "((bx - ax) * (py - ay)) fits int64_t"
+  z3::expr value;    // the exact value that must fit
+  z3::expr holds;    // min(Rep) <= value <= max(Rep)
+};
+
+// A named term shown in counterexamples.
+struct Watch {
+  std::string name;
+  z3::expr value;
+  Unit unit;
+};
+
+template <std::signed_integral Rep>
+class Sym;
+
+// Returns the name of the C++ type Rep models, for reports.
+template <std::signed_integral Rep>
+constexpr const char* type_name() {
+  if constexpr (sizeof(Rep) == 1) return "int8_t";
+  else if constexpr (sizeof(Rep) == 2) return "int16_t";
+  else if constexpr (sizeof(Rep) == 4) return "int32_t";
+  else return "int64_t";
+}
+
+// Owns the Z3 context, the obligation log and the variables of one proof run. Exactly one
+// Domain is active at a time (the most recently constructed live one); Sym's literal
+// constructor uses it, which is what lets `Num(0)` in formula templates work.
+class Domain {
+ public:
+  Domain() : previous_(active_) { active_ = this; }
+  ~Domain() { active_ = previous_; }
+  Domain(const Domain&) = delete;
+  Domain& operator=(const Domain&) = delete;
+
+  [[nodiscard]] static Domain& active() { return *active_; }
+  [[nodiscard]] z3::context& ctx() { return ctx_; }
+
+  // Returns a fresh integer variable modelling a value of type Rep (its range is NOT assumed;
+  // theorems state their input ranges as explicit hypotheses).
+  template <std::signed_integral Rep>
+  Sym<Rep> var(const std::string& name, Unit unit);
+
+  // Returns a fresh Boolean variable.
+  z3::expr bool_var(const std::string& name) {
+    z3::expr v = ctx_.bool_const(name.c_str());
+    variables_.push_back(Watch{name, v, Unit::kBool});
+    return v;
+  }
+
+  // Records that the exact value e must fit Rep for the modelled C++ evaluation to be exact.
+  template <std::signed_integral Rep>
+  void require_fits(const z3::expr& e, const std::string& text) {
+    const z3::expr lo = ctx_.int_val(static_cast<std::int64_t>(std::numeric_limits<Rep>::min()));
+    const z3::expr hi = ctx_.int_val(static_cast<std::int64_t>(std::numeric_limits<Rep>::max()));
+    log_.push_back(Obligation{text + " fits " + type_name<Rep>(), e, lo <= e && e <= hi});
+  }
+
+  // The obligation log is append-only; a mark lets a theorem take what one computation added.
+  [[nodiscard]] std::size_t mark() const { return log_.size(); }
+  [[nodiscard]] std::vector<Obligation> obligations_since(std::size_t mark) const {
+    return {log_.begin() + static_cast<std::ptrdiff_t>(mark), log_.end()};
+  }
+
+  [[nodiscard]] const std::vector<Watch>& variables() const { return variables_; }
+
+ private:
+  z3::context ctx_;
+  std::vector<Obligation> log_;
+  std::vector<Watch> variables_;
+  Domain* previous_;
+  static inline thread_local Domain* active_ = nullptr;
+};
+
+// A symbolic Boolean: the result of comparing Sym values.
+class SymBool {
+ public:
+  explicit SymBool(z3::expr e) : e_(std::move(e)) {}
+  // A constant, in the active Domain.
+  explicit SymBool(bool b) : e_(Domain::active().ctx().bool_val(b)) {}
+
+  [[nodiscard]] const z3::expr& expr() const { return e_; }
+
+  friend SymBool operator&&(const SymBool& a, const SymBool& b) { return SymBool(a.e_ && b.e_); }
+  friend SymBool operator||(const SymBool& a, const SymBool& b) { return SymBool(a.e_ || b.e_); }
+  friend SymBool operator!(const SymBool& a) { return SymBool(!a.e_); }
+  friend SymBool operator==(const SymBool& a, const SymBool& b) { return SymBool(a.e_ == b.e_); }
+  friend SymBool operator!=(const SymBool& a, const SymBool& b) { return SymBool(a.e_ != b.e_); }
+
+ private:
+  z3::expr e_;
+};
+
+// A symbolic value of C++ type Rep (see the file comment).
+template <std::signed_integral Rep>
+class Sym {
+ public:
+  using rep = Rep;
+
+  // A literal (for example the `Num(0)` and `Num(-1)` of formula::edge_bias).
+  explicit Sym(std::int64_t literal)
+      : dom_(&Domain::active()),
+        e_(dom_->ctx().int_val(literal)),
+        text_(std::to_string(literal)) {
+    // A literal that does not fit Rep would not compile in the modelled C++; record it anyway.
+    dom_->require_fits<Rep>(e_, text_);
+  }
+  Sym(Domain& dom, z3::expr e, std::string text) : dom_(&dom), e_(std::move(e)), text_(std::move(text)) {}
+
+  [[nodiscard]] const z3::expr& expr() const { return e_; }
+  [[nodiscard]] const std::string& text() const { return text_; }
+  [[nodiscard]] Domain& domain() const { return *dom_; }
+
+  friend Sym operator+(const Sym& a, const Sym& b) { return a.arith(a.e_ + b.e_, "(" + a.text_ + " + " + b.text_ + ")"); }
+  friend Sym operator-(const Sym& a, const Sym& b) { return a.arith(a.e_ - b.e_, "(" + a.text_ + " - " + b.text_ + ")"); }
+  friend Sym operator*(const Sym& a, const Sym& b) { return a.arith(a.e_ * b.e_, "(" + a.text_ + " * " + b.text_ + ")"); }
+  friend Sym operator-(const Sym& a) { return a.arith(-a.e_, "(-" + a.text_ + ")"); }
+
+  friend SymBool operator==(const Sym& a, const Sym& b) { return SymBool(a.e_ == b.e_); }
+  friend SymBool operator!=(const Sym& a, const Sym& b) { return SymBool(a.e_ != b.e_); }
+  friend SymBool operator<(const Sym& a, const Sym& b) { return SymBool(a.e_ < b.e_); }
+  friend SymBool operator<=(const Sym& a, const Sym& b) { return SymBool(a.e_ <= b.e_); }
+  friend SymBool operator>(const Sym& a, const Sym& b) { return SymBool(a.e_ > b.e_); }
+  friend SymBool operator>=(const Sym& a, const Sym& b) { return SymBool(a.e_ >= b.e_); }
+
+ private:
+  Sym arith(z3::expr r, std::string text) const {
+    dom_->require_fits<Rep>(r, text);
+    return Sym(*dom_, std::move(r), std::move(text));
+  }
+
+  Domain* dom_;
+  z3::expr e_;
+  std::string text_;
+};
+
+template <std::signed_integral Rep>
+Sym<Rep> Domain::var(const std::string& name, Unit unit) {
+  z3::expr v = ctx_.int_const(name.c_str());
+  variables_.push_back(Watch{name, v, unit});
+  return Sym<Rep>(*this, v, name);
+}
+
+// Returns c ? t : f (a proof-side mirror of a C++ conditional on symbolic data). Performs no
+// arithmetic, so records no obligation.
+template <std::signed_integral Rep>
+Sym<Rep> select(const SymBool& c, const Sym<Rep>& t, const Sym<Rep>& f) {
+  return Sym<Rep>(t.domain(), z3::ite(c.expr(), t.expr(), f.expr()),
+                  "select(" + t.text() + ", " + f.text() + ")");
+}
+
+}  // namespace rastrules::proofs

@@ -1,0 +1,186 @@
+// SPDX-License-Identifier: MIT
+// rastrules render: exact fragment lists on hand-checked scenes, standard input and output,
+// and the picture.
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "rastrules/io/picture.hpp"
+#include "support.hpp"
+
+namespace {
+
+using rastrules::test::read_file;
+using rastrules::test::run_cli;
+using rastrules::test::TempDir;
+
+std::string frag(int prim, int x, int y) {
+  return "  {\"prim\": " + std::to_string(prim) + ", \"x\": " + std::to_string(x) +
+         ", \"y\": " + std::to_string(y) + ", \"mask\": 1}";
+}
+
+std::string fragments(std::initializer_list<std::array<int, 3>> list) {
+  std::string s = "{\"fragments\": [";
+  bool first = true;
+  for (const auto& f : list) {
+    s += (first ? "\n" : ",\n") + frag(f[0], f[1], f[2]);
+    first = false;
+  }
+  return s + (first ? "]}\n" : "\n]}\n");
+}
+
+// A 4x4 target split along the anti-diagonal x + y = 4, which runs through the centres
+// (0.5, 3.5), (1.5, 2.5), (2.5, 1.5), (3.5, 0.5). For the first (clockwise) triangle that
+// diagonal is a right edge (excluded), for the second a left edge (included).
+constexpr const char* kSplitSquare = R"({"target": {"width": 4, "height": 4}, "primitives": [
+  {"type": "triangle", "v": [[0, 0], [4, 0], [0, 4]]},
+  {"type": "triangle", "v": [[4, 0], [4, 4], [0, 4]]}]})";
+
+const std::string kSplitSquareFragments =
+    fragments({{0, 0, 0}, {0, 1, 0}, {0, 2, 0}, {0, 0, 1}, {0, 1, 1}, {0, 0, 2},
+               {1, 3, 0}, {1, 2, 1}, {1, 3, 1}, {1, 1, 2}, {1, 2, 2}, {1, 3, 2},
+               {1, 0, 3}, {1, 1, 3}, {1, 2, 3}, {1, 3, 3}});
+
+// rule: SCENE.OUTPUT.FRAGMENTS, TRI.FILL.TOP_LEFT
+TEST(CliRender, SplitSquareGivesEachDiagonalCentreToTheTriangleWithTheLeftEdge) {
+  const TempDir dir;
+  const auto scene = dir.write("scene.json", kSplitSquare);
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_EQ(read_file(dir / "out.json"), kSplitSquareFragments);
+  EXPECT_NE(r.out.find("2 primitives, 16 fragments"), std::string::npos) << r.out;
+}
+
+// rule: SCENE.OUTPUT.FRAGMENTS, TRI.FILL.TOP_LEFT
+TEST(CliRender, DiagonalThroughCentresGoesToTheLeftEdgeSide) {
+  // Square [1, 3]^2 split along x = y, which runs through the centres (1.5, 1.5) and
+  // (2.5, 2.5): for the upper triangle it is a left edge (included), for the lower one a
+  // right edge (excluded).
+  const TempDir dir;
+  const auto scene = dir.write("scene.json", R"({"target": {"width": 4, "height": 4}, "primitives": [
+    {"type": "triangle", "v": [[1, 1], [3, 1], [3, 3]]},
+    {"type": "triangle", "v": [[1, 1], [3, 3], [1, 3]]}]})");
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read_file(dir / "out.json"), fragments({{0, 1, 1}, {0, 2, 1}, {0, 2, 2}, {1, 1, 2}}));
+}
+
+// rule: SCENE.OUTPUT.FRAGMENTS, TRI.CULL.MODE, TRI.DEGENERATE.ZERO_AREA
+TEST(CliRender, CulledAndDegenerateTrianglesProduceNoFragments) {
+  const TempDir dir;
+  const auto scene = dir.write("scene.json", R"({"target": {"width": 4, "height": 4}, "cull": "back",
+    "primitives": [
+      {"type": "triangle", "v": [[0, 0], [0, 4], [4, 0]]},
+      {"type": "triangle", "v": [[0, 0], [2, 2], [4, 4]]},
+      {"type": "triangle", "v": [[0, 0], [1, 0], [0, 1]]}]})");
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  // Only the third (clockwise, front-facing) triangle draws: the centre (0.5, 0.5) lies on
+  // its hypotenuse x + y = 1, a right edge, so it is not covered either.
+  EXPECT_EQ(read_file(dir / "out.json"), fragments({}));
+}
+
+// rule: SCENE.OUTPUT.FRAGMENTS, RASTER.TARGET.CLIP
+TEST(CliRender, FragmentsOutsideTheTargetAreNotWritten) {
+  const TempDir dir;
+  const auto scene = dir.write("scene.json", R"({"target": {"width": 2, "height": 1}, "primitives": [
+    {"type": "triangle", "v": [[-100, -100], [100, -100], [-100, 100]]}]})");
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read_file(dir / "out.json"), fragments({{0, 0, 0}, {0, 1, 0}}));
+}
+
+// rule: SCENE.NUMBER.FLOAT32, SNAP.VERTEX.ROUND
+TEST(CliRender, CoordinatesAreReadAsFloat32BeforeSnapping) {
+  // Three left edges near the centres x = 0.5, 1.5, 2.5 of a 3x1 target:
+  // - 0.5019531251: the nearest float32 is 0.501953125 = raw 128.5 exactly, which snaps to
+  //   128 (ties to even) = 0.5, so the edge runs through the centre and includes it. (Read as
+  //   a double, the text would snap to 129 and miss the centre.)
+  // - 1.501953125 = raw 384.5 snaps to 384 = 1.5: on the centre, included.
+  // - 2.505859375 = raw 641.5 snaps to 642 = 2.5078125: right of the centre, which is outside.
+  const TempDir dir;
+  const auto scene = dir.write("scene.json", R"({"target": {"width": 3, "height": 1}, "primitives": [
+    {"type": "triangle", "v": [[0.5019531251, -1], [1, -1], [0.5019531251, 3]]},
+    {"type": "triangle", "v": [[1.501953125, -1], [2, -1], [1.501953125, 3]]},
+    {"type": "triangle", "v": [[2.505859375, -1], [3, -1], [2.505859375, 3]]}]})");
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read_file(dir / "out.json"), fragments({{0, 0, 0}, {1, 1, 0}}));
+}
+
+// rule: SCENE.OUTPUT.FRAGMENTS
+TEST(CliRender, ReadsStandardInputAndWritesStandardOutput) {
+  const TempDir dir;
+  const auto scene = dir.write("scene.json", kSplitSquare);
+  const auto r = run_cli({"render", "-", "--fragments", "-"}, scene.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, kSplitSquareFragments);
+  EXPECT_EQ(r.err, "");
+}
+
+TEST(CliRender, WritesAPictureOfTheMagnifiedTarget) {
+  const TempDir dir;
+  const auto scene = dir.write("scene.json", kSplitSquare);
+  const auto r = run_cli({"render", scene.string(), "--png", (dir / "out.png").string(), "--fragments",
+                          (dir / "out.json").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto png = rastrules::test::read_png(dir / "out.png");
+  ASSERT_TRUE(png.has_value());
+  // Default scale: 32 image pixels per target pixel, plus the closing grid line.
+  ASSERT_EQ(png->width, 4u * 32 + 1);
+  ASSERT_EQ(png->height, 4u * 32 + 1);
+  auto rgb = [](rastrules::io::Rgb c) { return std::array<std::uint8_t, 3>{c.r, c.g, c.b}; };
+  // Inside pixel (1, 0) (covered by primitive 0) and pixel (3, 3) (primitive 1), away from
+  // the grid, the centre crosses and the edges.
+  EXPECT_EQ(png->at(1 * 32 + 4, 0 * 32 + 28), rgb(rastrules::io::cover_colour(0)));
+  EXPECT_EQ(png->at(3 * 32 + 4, 3 * 32 + 4), rgb(rastrules::io::cover_colour(1)));
+  EXPECT_NE(rastrules::io::cover_colour(0), rastrules::io::cover_colour(1));
+  EXPECT_EQ(read_file(dir / "out.json"), kSplitSquareFragments);
+}
+
+TEST(CliRender, PictureMarksOverlapsAndUncoveredPixels) {
+  const TempDir dir;
+  const auto scene = dir.write("scene.json", R"({"target": {"width": 3, "height": 2}, "primitives": [
+    {"type": "triangle", "v": [[0, 0], [2, 0], [0, 2]]},
+    {"type": "triangle", "v": [[0, 0], [2, 0], [0, 2]]}]})");
+  const auto r = run_cli({"render", scene.string(), "--png", (dir / "out.png").string(), "--scale", "16"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto png = rastrules::test::read_png(dir / "out.png");
+  ASSERT_TRUE(png.has_value());
+  ASSERT_EQ(png->width, 3u * 16 + 1);
+  ASSERT_EQ(png->height, 2u * 16 + 1);
+  auto rgb = [](rastrules::io::Rgb c) { return std::array<std::uint8_t, 3>{c.r, c.g, c.b}; };
+  // Pixel (0, 0) is covered twice: its border is the overlap mark.
+  EXPECT_EQ(png->at(0 * 16 + 1, 0 * 16 + 8), rgb(rastrules::io::kOverlapMark));
+  EXPECT_EQ(png->at(0 * 16 + 14, 0 * 16 + 8), rgb(rastrules::io::kOverlapMark));
+  // Pixel (2, 1) is not covered: background.
+  EXPECT_EQ(png->at(2 * 16 + 4, 1 * 16 + 4), rgb(rastrules::io::kBackground));
+}
+
+// rule: SCENE.INPUT.ERRORS
+TEST(CliRender, RefusesPicturesLargerThanTheLimitWithoutWritingAnything) {
+  const TempDir dir;
+  const auto scene = dir.write("scene.json", R"({"target": {"width": 5000, "height": 2}, "primitives": []})");
+  const auto r = run_cli({"render", scene.string(), "--png", (dir / "out.png").string(), "--fragments",
+                          (dir / "out.json").string()});
+  EXPECT_EQ(r.status, 2);
+  ASSERT_EQ(r.err_lines().size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("--png"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
+}
+
+// rule: SCENE.INPUT.ERRORS
+TEST(CliRender, UnwritableOutputIsAnErrorAndLeavesNothing) {
+  const TempDir dir;
+  const auto scene = dir.write("scene.json", kSplitSquare);
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "no-such-dir" / "out.json").string()});
+  EXPECT_EQ(r.status, 2);
+  ASSERT_EQ(r.err_lines().size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("cannot create"), std::string::npos) << r.err;
+}
+
+}  // namespace

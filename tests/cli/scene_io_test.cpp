@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: MIT
+// The scene reader and writer and the fragment writer (tools/io), called directly.
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <variant>
+
+#include <gtest/gtest.h>
+
+#include "rastrules/io/fragment_json.hpp"
+#include "rastrules/io/scene_json.hpp"
+
+namespace {
+
+using rastrules::Scene;
+using rastrules::SceneError;
+
+std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f); }
+
+Scene read_ok(const std::string& text) {
+  auto r = rastrules::io::read_scene(text);
+  if (auto* e = std::get_if<SceneError>(&r)) ADD_FAILURE() << "unexpected error: " << e->what();
+  return std::holds_alternative<Scene>(r) ? std::get<Scene>(r) : Scene{};
+}
+
+std::string one_triangle(const std::string& x0) {
+  return R"({"target": {"width": 4, "height": 4}, "primitives": [{"type": "triangle", "v": [[)" + x0 +
+         R"(, 0], [4, 0], [0, 4]]}]})";
+}
+
+// rule: SCENE.NUMBER.FLOAT32
+TEST(SceneNumberFloat32, DecimalTextIsRoundedOnceStraightToFloat32) {
+  // 1 + 2^-24 + 1e-20 lies just above the midpoint between the floats 1 and 1 + 2^-23.
+  // Correct rounding gives 1 + 2^-23; going through double first lands exactly on the
+  // midpoint and then ties to even, giving 1.
+  const std::string text = "1.00000005960464477539062501";
+  const auto f = rastrules::io::decimal_to_float32(text);
+  ASSERT_TRUE(f.has_value());
+  EXPECT_EQ(bits(*f), bits(1.00000011920928955078125f));
+  EXPECT_EQ(bits(static_cast<float>(std::stod(text))), bits(1.0f));  // the double rounding avoided
+}
+
+// rule: SCENE.NUMBER.FLOAT32, SNAP.VERTEX.ROUND
+TEST(SceneNumberFloat32, DoubleRoundingWouldChangeTheSnappedVertex) {
+  // 16384 + 1/256 + 1/1024 + 1e-20: float32 spacing here is 1/512. Directly: 16384 + 3/512
+  // (snaps to raw 4194306 by ties-to-even); through double: 16384 + 2/512 (raw 4194305).
+  const Scene s = read_ok(one_triangle("16384.00488281250000000001"));
+  ASSERT_EQ(s.primitives.size(), 1u);
+  EXPECT_EQ(bits(s.primitives[0].v[0][0]), bits(16384.005859375f));
+}
+
+// rule: SCENE.NUMBER.FLOAT32
+TEST(SceneNumberFloat32, IntegersAreRoundedToFloat32TiesToEven) {
+  EXPECT_EQ(bits(read_ok(one_triangle("16777217")).primitives[0].v[0][0]), bits(16777216.0f));
+  EXPECT_EQ(bits(read_ok(one_triangle("16777219")).primitives[0].v[0][0]), bits(16777220.0f));
+  EXPECT_EQ(bits(read_ok(one_triangle("-3")).primitives[0].v[0][0]), bits(-3.0f));
+}
+
+// rule: SCENE.NUMBER.FLOAT32
+TEST(SceneNumberFloat32, NumbersBeyondFloat32BecomeInfinitiesAndTinyOnesZeros) {
+  using rastrules::io::decimal_to_float32;
+  const float inf = std::numeric_limits<float>::infinity();
+  EXPECT_EQ(decimal_to_float32("1e39"), inf);
+  EXPECT_EQ(decimal_to_float32("-1e39"), -inf);
+  EXPECT_EQ(decimal_to_float32("3.40282357e38"), inf);  // above FLT_MAX's rounding boundary
+  EXPECT_EQ(bits(*decimal_to_float32("3.4028235e38")), bits(std::numeric_limits<float>::max()));
+  EXPECT_EQ(bits(*decimal_to_float32("1e-50")), bits(0.0f));
+  EXPECT_EQ(bits(*decimal_to_float32("-1e-50")), bits(-0.0f));
+  EXPECT_EQ(bits(*decimal_to_float32("0.00000000000000000000000000000000000000000000140129846")),
+            bits(std::numeric_limits<float>::denorm_min()));
+  EXPECT_FALSE(decimal_to_float32("abc").has_value());
+  EXPECT_FALSE(decimal_to_float32("inf").has_value());
+  EXPECT_FALSE(decimal_to_float32("1.5x").has_value());
+}
+
+// rule: SCENE.NUMBER.FLOAT32
+TEST(SceneNumberFloat32, SpecialValueStringsAreReadAsTheirFloats) {
+  const Scene s = read_ok(R"({"target": {"width": 4, "height": 4}, "primitives": [
+      {"type": "triangle", "v": [["NaN", 0], ["Infinity", 0], [0, "-Infinity"]]}]})");
+  ASSERT_EQ(s.primitives.size(), 1u);
+  EXPECT_TRUE(std::isnan(s.primitives[0].v[0][0]));
+  EXPECT_EQ(s.primitives[0].v[1][0], std::numeric_limits<float>::infinity());
+  EXPECT_EQ(s.primitives[0].v[2][1], -std::numeric_limits<float>::infinity());
+}
+
+// rule: SCENE.FORMAT.V1
+TEST(SceneFormatV1, OptionalKeysTakeTheirDefaults) {
+  const Scene s = read_ok(R"({"target": {"width": 16, "height": 8}, "primitives": []})");
+  EXPECT_EQ(s.width, 16);
+  EXPECT_EQ(s.height, 8);
+  EXPECT_EQ(s.state.cull, rastrules::CullMode::kNone);
+  EXPECT_EQ(s.state.front_face, rastrules::FrontFace::kClockwise);
+  EXPECT_EQ(s.state.fill, rastrules::FillConvention::kTopLeft);
+  EXPECT_TRUE(s.primitives.empty());
+}
+
+// rule: SCENE.FORMAT.V1
+TEST(SceneFormatV1, EveryKeyOfTheSpecExampleIsRead) {
+  const Scene s = read_ok(R"({
+    "version": 1,
+    "target": {"width": 16, "height": 8},
+    "cull": "front",
+    "front_face": "ccw",
+    "fill": "bottom-right",
+    "primitives": [
+      {"type": "triangle", "v": [[1.0, 1.0], [9.5, 2.0], [2.0, 7.25]]}
+    ]
+  })");
+  EXPECT_EQ(s.state.cull, rastrules::CullMode::kFront);
+  EXPECT_EQ(s.state.front_face, rastrules::FrontFace::kCounterClockwise);
+  EXPECT_EQ(s.state.fill, rastrules::FillConvention::kBottomRight);
+  ASSERT_EQ(s.primitives.size(), 1u);
+  EXPECT_EQ(s.primitives[0].v[1][0], 9.5f);
+  EXPECT_EQ(s.primitives[0].v[2][1], 7.25f);
+}
+
+// rule: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32
+TEST(SceneFormatV1, WrittenScenesReadBackBitForBit) {
+  Scene s;
+  s.width = 7;
+  s.height = 3;
+  s.state.cull = rastrules::CullMode::kBack;
+  s.state.fill = rastrules::FillConvention::kTopRight;
+  const float values[] = {0.1f, -0.0f, 1e-45f, 3.4028235e38f, 16384.005859375f, 1.0f / 3.0f,
+                          std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+                          std::numeric_limits<float>::quiet_NaN(), 32767.99609375f, -32768.0f, 7.0f};
+  rastrules::Primitive p;
+  for (std::size_t i = 0; i < std::size(values); ++i) {
+    p.v[(i / 2) % 3][i % 2] = values[i];
+    if (i % 6 == 5) s.primitives.push_back(p);
+  }
+  const std::string text = rastrules::io::write_scene(s);
+  const Scene back = read_ok(text);
+  EXPECT_EQ(rastrules::io::write_scene(back), text);
+  ASSERT_EQ(back.primitives.size(), s.primitives.size());
+  for (std::size_t n = 0; n < s.primitives.size(); ++n) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      for (std::size_t k = 0; k < 2; ++k) {
+        // NaN is written as "NaN" and read as the quiet NaN, the one stored here.
+        EXPECT_EQ(bits(back.primitives[n].v[i][k]), bits(s.primitives[n].v[i][k]))
+            << "primitive " << n << " v[" << i << "][" << k << "] written as " << text;
+      }
+    }
+  }
+  EXPECT_EQ(back.state.cull, rastrules::CullMode::kBack);
+  EXPECT_EQ(back.state.fill, rastrules::FillConvention::kTopRight);
+}
+
+// rule: SCENE.INPUT.ERRORS
+TEST(SceneInputErrors, TheFirstErrorInReadingOrderNamesItsField) {
+  auto r = rastrules::io::read_scene(R"({"target": {"width": 4, "height": 4}, "primitives": [
+      {"type": "triangle", "v": [[0, 0], [1, 0], [0, 1]]},
+      {"type": "triangle", "v": [[0, 0], [1, "x"], [0, 1]], "extra": 1}]})");
+  ASSERT_TRUE(std::holds_alternative<SceneError>(r));
+  EXPECT_EQ(std::get<SceneError>(r).field, "primitives[1].v[1][1]");
+}
+
+// rule: SCENE.INPUT.ERRORS
+TEST(SceneInputErrors, ControlAndNonAsciiBytesInMessagesAreEscaped) {
+  auto r = rastrules::io::read_scene("{\"fill\": \"top-\xc3\xa9\\n\", \"target\": {\"width\": 1, \"height\": 1}}");
+  ASSERT_TRUE(std::holds_alternative<SceneError>(r));
+  const std::string what = std::get<SceneError>(r).what();
+  EXPECT_EQ(what.find('\n'), std::string::npos);
+  EXPECT_NE(what.find("top-\\xc3\\xa9\\x0a"), std::string::npos) << what;
+}
+
+// rule: SCENE.OUTPUT.FRAGMENTS
+TEST(SceneOutputFragments, WriterStreamsInOrderAndRefusesFragmentsOutOfOrder) {
+  std::FILE* f = std::tmpfile();
+  ASSERT_NE(f, nullptr);
+  rastrules::io::FragmentWriter w(f);
+  EXPECT_TRUE(w.add({0, 3, 1, 1}));
+  EXPECT_TRUE(w.add({0, 0, 2, 1}));
+  EXPECT_FALSE(w.add({0, 5, 1, 1}));  // row 1 after row 2
+  EXPECT_FALSE(w.add({0, 0, 2, 1}));  // a duplicate
+  EXPECT_TRUE(w.add({1, 0, 0, 1}));
+  ASSERT_TRUE(w.finish());
+  EXPECT_EQ(w.count(), 3u);
+  std::rewind(f);
+  std::string text;
+  for (int c; (c = std::fgetc(f)) != EOF;) text += static_cast<char>(c);
+  std::fclose(f);
+  EXPECT_EQ(text,
+            "{\"fragments\": [\n"
+            "  {\"prim\": 0, \"x\": 3, \"y\": 1, \"mask\": 1},\n"
+            "  {\"prim\": 0, \"x\": 0, \"y\": 2, \"mask\": 1},\n"
+            "  {\"prim\": 1, \"x\": 0, \"y\": 0, \"mask\": 1}\n"
+            "]}\n");
+  EXPECT_EQ(rastrules::io::fragments_to_json({{0, 3, 1, 1}, {0, 0, 2, 1}, {1, 0, 0, 1}}), text);
+  EXPECT_EQ(rastrules::io::fragments_to_json({}), "{\"fragments\": []}\n");
+}
+
+}  // namespace

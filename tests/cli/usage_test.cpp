@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+// Command-line usage: unknown commands and options, missing arguments, --help.
+
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "support.hpp"
+
+namespace {
+
+using rastrules::test::run_cli;
+
+// rule: SCENE.INPUT.ERRORS
+TEST(CliUsage, HelpPrintsUsageAndSucceeds) {
+  for (const char* flag : {"--help", "-h", "help"}) {
+    const auto r = run_cli({flag});
+    EXPECT_EQ(r.status, 0) << flag;
+    EXPECT_NE(r.out.find("usage: rastrules"), std::string::npos) << flag;
+    EXPECT_EQ(r.err, "") << flag;
+  }
+}
+
+// rule: SCENE.INPUT.ERRORS
+TEST(CliUsage, UsageErrorsExitWithStatus2AndPrintUsage) {
+  const std::vector<std::vector<std::string>> cases = {
+      {},
+      {"draw"},
+      {"render"},
+      {"render", "scene.json"},
+      {"render", "scene.json", "--fragments"},
+      {"render", "scene.json", "--fragments", "out.json", "--frobnicate"},
+      {"render", "a.json", "b.json", "--fragments", "out.json"},
+      {"render", "scene.json", "--png", "out.png", "--scale", "0"},
+      {"render", "scene.json", "--png", "out.png", "--scale", "x"},
+      {"render", "scene.json", "--fragments", "-", "--png", "-"},
+      {"explain", "scene.json"},
+      {"explain", "--pixel", "1,1"},
+      {"showcase", "--out"},
+      {"showcase", "--out", "dir", "extra"},
+  };
+  for (const auto& args : cases) {
+    std::string shown;
+    for (const auto& a : args) shown += a + " ";
+    const auto r = run_cli(args);
+    EXPECT_EQ(r.status, 2) << shown;
+    EXPECT_EQ(r.err.rfind("rastrules: error: ", 0), 0u) << shown << ": " << r.err;
+    EXPECT_NE(r.err.find("usage: rastrules"), std::string::npos) << shown;
+    EXPECT_EQ(r.out, "") << shown;
+  }
+}
+
+}  // namespace

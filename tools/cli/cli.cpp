@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: MIT
+// Shared pieces of the rastrules command line.
+// Implements: SCENE.INPUT.ERRORS
+
+#include "cli.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <filesystem>
+#include <system_error>
+#include <variant>
+
+#include "rastrules/io/scene_json.hpp"
+
+namespace rastrules::cli {
+
+int error(std::string_view message) {
+  // One line, whatever the message holds.
+  std::string line = "rastrules: error: ";
+  for (const char c : message) line += (c == '\n' || c == '\r') ? ' ' : c;
+  line += '\n';
+  std::fputs(line.c_str(), stderr);
+  return kExitBadInput;
+}
+
+void print_usage(std::FILE* out) {
+  std::fputs(
+      "usage: rastrules <command> [options]\n"
+      "\n"
+      "commands:\n"
+      "  render SCENE.json [--fragments OUT.json] [--png OUT.png] [--scale N]\n"
+      "      Rasterize a scene (spec/scene.md). --fragments writes the fragment list,\n"
+      "      sorted by (prim, y, x); --png draws the target magnified N times (default 32,\n"
+      "      less for large targets; at most 4096 pixels a side) with the pixel grid, pixel\n"
+      "      centres, the snapped edges, covered pixels coloured by primitive and overlaps\n"
+      "      hatched in red. At least one output is needed. \"-\" reads the scene from\n"
+      "      standard input or writes an output to standard output.\n"
+      "  explain SCENE.json --pixel X,Y [--json]\n"
+      "      For every primitive: its snapped vertices, area, winding, culling, and for each\n"
+      "      edge the exact edge value at the centre of pixel (X, Y), whether it is a top or\n"
+      "      left edge, and the rule that decided; then whether the pixel is covered.\n"
+      "  showcase --out DIR\n"
+      "      Render the built-in showcase scenes into DIR (scene, fragments and picture of\n"
+      "      each), compare every one with the exact oracle and print a summary.\n"
+      "  help\n"
+      "      Show this text (also --help, -h).\n"
+      "\n"
+      "exit status: 0 success, 1 a difference was found (showcase), 2 bad input or usage.\n",
+      out);
+}
+
+int usage_error(std::string_view reason) {
+  error(reason);
+  print_usage(stderr);
+  return kExitBadInput;
+}
+
+// rule: SCENE.INPUT.ERRORS
+std::optional<LoadedScene> load_scene(const std::string& path) {
+  auto text = io::read_scene_file(path);
+  if (auto* err = std::get_if<SceneError>(&text)) {
+    error(err->what());
+    return std::nullopt;
+  }
+  auto scene = io::read_scene(std::get<std::string>(text));
+  if (auto* err = std::get_if<SceneError>(&scene)) {
+    // Parse errors have no field: name the file instead.
+    error(err->field.empty() ? (path == "-" ? "<stdin>" : path) + ": " + err->message : err->what());
+    return std::nullopt;
+  }
+  LoadedScene loaded;
+  loaded.scene = std::move(std::get<Scene>(scene));
+  auto prepared = prepare(loaded.scene);
+  if (auto* err = std::get_if<SceneError>(&prepared)) {
+    error(err->what());
+    return std::nullopt;
+  }
+  loaded.prepared = std::move(std::get<PreparedScene>(prepared));
+  return loaded;
+}
+
+OutputFile::~OutputFile() { discard(); }
+
+void OutputFile::discard() {
+  if (is_stdout_ || file_ == nullptr) return;
+  std::fclose(file_);
+  file_ = nullptr;
+  std::error_code ec;
+  std::filesystem::remove(temp_path_, ec);
+}
+
+std::optional<std::string> OutputFile::open(const std::string& path) {
+  path_ = path;
+  if (path == "-") {
+    is_stdout_ = true;
+    file_ = stdout;
+    return std::nullopt;
+  }
+  temp_path_ = path + ".tmp-" + std::to_string(::getpid());
+  file_ = std::fopen(temp_path_.c_str(), "wb");
+  if (file_ == nullptr) return path + ": cannot create: " + std::strerror(errno);
+  return std::nullopt;
+}
+
+std::optional<std::string> OutputFile::commit() {
+  if (is_stdout_) {
+    if (std::fflush(stdout) != 0) return std::string("<stdout>: write failed");
+    return std::nullopt;
+  }
+  const bool write_failed = std::ferror(file_) != 0;
+  const bool close_failed = std::fclose(file_) != 0;
+  file_ = nullptr;
+  std::error_code ec;
+  if (write_failed || close_failed) {
+    std::filesystem::remove(temp_path_, ec);
+    return path_ + ": write failed";
+  }
+  std::filesystem::rename(temp_path_, path_, ec);
+  if (ec) {
+    std::filesystem::remove(temp_path_, ec);
+    return path_ + ": cannot write: " + ec.message();
+  }
+  return std::nullopt;
+}
+
+std::optional<std::int64_t> parse_int(std::string_view text, std::int64_t lo, std::int64_t hi) {
+  std::int64_t v = 0;
+  const char* last = text.data() + text.size();
+  const auto r = std::from_chars(text.data(), last, v);
+  if (text.empty() || r.ec != std::errc{} || r.ptr != last || v < lo || v > hi) return std::nullopt;
+  return v;
+}
+
+std::string fixed_decimal(std::int64_t raw, int frac_bits) {
+  const bool negative = raw < 0;
+  const std::uint64_t mag = negative ? 0 - static_cast<std::uint64_t>(raw) : static_cast<std::uint64_t>(raw);
+  const std::uint64_t whole = mag >> frac_bits;
+  const std::uint64_t frac = mag & ((std::uint64_t{1} << frac_bits) - 1);
+  std::string s = (negative ? "-" : "") + std::to_string(whole);
+  if (frac == 0) return s;
+  // frac / 2^k = frac * 5^k / 10^k; frac < 2^16 and 5^16 < 2^38, so no overflow.
+  std::uint64_t pow5 = 1;
+  for (int i = 0; i < frac_bits; ++i) pow5 *= 5;
+  std::string digits = std::to_string(frac * pow5);
+  digits.insert(0, static_cast<std::size_t>(frac_bits) - digits.size(), '0');
+  while (!digits.empty() && digits.back() == '0') digits.pop_back();
+  return s + "." + digits;
+}
+
+}  // namespace rastrules::cli

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+// Shared pieces of the rastrules command line: exit codes, error reporting, scene loading,
+// output files that appear only when complete.
+// Implements: SCENE.INPUT.ERRORS
+
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "rastrules/scene.hpp"
+
+namespace rastrules::cli {
+
+// rule: SCENE.INPUT.ERRORS
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitDifference = 1;  // a difference was found (showcase vs the oracle)
+inline constexpr int kExitBadInput = 2;    // bad input or usage
+
+using Args = std::vector<std::string>;
+
+// Prints "rastrules: error: MESSAGE" as one line on standard error. Returns kExitBadInput.
+int error(std::string_view message);
+
+// Prints the usage text on standard error and returns kExitBadInput, after a one-line reason.
+int usage_error(std::string_view reason);
+
+// Prints the usage text on `out`.
+void print_usage(std::FILE* out);
+
+// A scene read from a file and prepared by the kernel.
+struct LoadedScene {
+  Scene scene;
+  PreparedScene prepared;
+};
+
+// Reads, parses and prepares a scene ("-" is standard input). On failure prints the one-line
+// error (`rastrules: error: FIELD: PROBLEM`) and returns nullopt.
+// rule: SCENE.INPUT.ERRORS
+std::optional<LoadedScene> load_scene(const std::string& path);
+
+// An output file written under a temporary name and renamed into place by commit(), so that
+// a failed run leaves no output file; "-" writes to standard output.
+class OutputFile {
+ public:
+  OutputFile() = default;
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+  ~OutputFile();
+
+  // Opens the temporary file. Returns an error message on failure.
+  std::optional<std::string> open(const std::string& path);
+  [[nodiscard]] std::FILE* get() const { return file_; }
+  // Closes the file and moves it into place. Returns an error message on failure (and then
+  // removes the temporary file).
+  std::optional<std::string> commit();
+
+ private:
+  void discard();
+  std::string path_;
+  std::string temp_path_;
+  std::FILE* file_ = nullptr;
+  bool is_stdout_ = false;
+};
+
+// Parses a decimal integer in [lo, hi]; nullopt when the text is anything else.
+std::optional<std::int64_t> parse_int(std::string_view text, std::int64_t lo, std::int64_t hi);
+
+// Returns raw / 2^frac_bits as an exact decimal ("-3.5", "0.00390625").
+// Preconditions: 0 <= frac_bits <= 16.
+std::string fixed_decimal(std::int64_t raw, int frac_bits);
+
+int run_render(const Args& args);
+int run_explain(const Args& args);
+int run_showcase(const Args& args);
+
+}  // namespace rastrules::cli

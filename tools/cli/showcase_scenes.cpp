@@ -1,0 +1,245 @@
+// SPDX-License-Identifier: MIT
+// The built-in showcase scenes. Every coordinate here is a float32 chosen to land on the
+// cases the rules decide: pixel centres on edges and vertices, shared edges, half-subpixel
+// snapping ties, slivers, and the ends of the supported range.
+
+#include "showcase_scenes.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+
+namespace rastrules::cli {
+namespace {
+
+using Point = std::array<float, 2>;
+
+Primitive tri(Point a, Point b, Point c) {
+  Primitive p;
+  p.type = PrimitiveType::kTriangle;
+  p.v = {a, b, c};
+  return p;
+}
+
+Scene make_scene(std::int32_t w, std::int32_t h, RasterState state = {}) {
+  Scene s;
+  s.width = w;
+  s.height = h;
+  s.state = state;
+  return s;
+}
+
+// In the style of the D3D11.3 triangle rasterization diagram (img/TriRast.png): a 16x8
+// target with a large triangle, two tiny ones covering no centre, a diamond split along a
+// horizontal edge through a row of centres, a fan around a pixel centre, a small triangle
+// whose vertical left edge runs through a centre, a square split along a diagonal through
+// centres, a tall sliver and a triangle leaving the target at the bottom.
+Scene d3d_diagram() {
+  Scene s = make_scene(16, 8);
+  auto& p = s.primitives;
+  p.push_back(tri({1.0f, 0.95f}, {6.0f, 2.0f}, {2.0f, 3.95f}));
+  p.push_back(tri({5.25f, 1.2f}, {6.25f, 1.2f}, {6.25f, 0.3f}));
+  p.push_back(tri({6.7f, 1.2f}, {7.75f, 1.2f}, {7.6f, 0.45f}));
+  p.push_back(tri({9.5f, 0.75f}, {11.75f, 2.5f}, {7.75f, 2.5f}));  // diamond, upper half
+  p.push_back(tri({7.75f, 2.5f}, {11.75f, 2.5f}, {9.5f, 5.25f}));  // diamond, lower half
+  const Point c{7.5f, 4.5f};                                        // fan centre: a pixel centre
+  p.push_back(tri(c, {1.0f, 6.0f}, {3.5f, 4.5f}));
+  p.push_back(tri(c, {5.5f, 7.5f}, {1.0f, 6.0f}));
+  p.push_back(tri(c, {7.5f, 7.5f}, {5.5f, 7.5f}));
+  p.push_back(tri(c, {9.5f, 6.0f}, {7.5f, 7.5f}));
+  p.push_back(tri({11.5f, 5.0f}, {12.5f, 5.5f}, {11.5f, 6.5f}));   // left edge through (11.5, 5.5)
+  p.push_back(tri({13.5f, 5.5f}, {15.5f, 5.5f}, {13.5f, 7.5f}));   // square, split on the diagonal
+  p.push_back(tri({15.5f, 5.5f}, {15.5f, 7.5f}, {13.5f, 7.5f}));
+  p.push_back(tri({14.5f, -0.2f}, {14.6f, 4.6f}, {13.5f, 1.5f}));  // tall sliver
+  p.push_back(tri({9.5f, 7.5f}, {10.5f, 7.5f}, {9.5f, 9.5f}));     // vertex on a centre, leaves the target
+  return s;
+}
+
+// A fan of 16 triangles around a pixel centre, every outer vertex on a pixel centre too, so
+// that every edge passes through centres: each centre inside the outline is covered once.
+Scene fan() {
+  Scene s = make_scene(24, 24);
+  const std::array<Point, 16> rim = {{{22.5f, 12.5f}, {21.5f, 16.5f}, {19.5f, 19.5f}, {16.5f, 21.5f},
+                                      {12.5f, 22.5f}, {8.5f, 21.5f},  {5.5f, 19.5f},  {3.5f, 16.5f},
+                                      {2.5f, 12.5f},  {3.5f, 8.5f},   {5.5f, 5.5f},   {8.5f, 3.5f},
+                                      {12.5f, 2.5f},  {16.5f, 3.5f},  {19.5f, 5.5f},  {21.5f, 8.5f}}};
+  for (std::size_t i = 0; i < rim.size(); ++i) {
+    // Alternate the vertex order: coverage does not depend on the winding with culling off.
+    const Point a = rim[i], b = rim[(i + 1) % rim.size()];
+    s.primitives.push_back(i % 2 == 0 ? tri({12.5f, 12.5f}, a, b) : tri({12.5f, 12.5f}, b, a));
+  }
+  return s;
+}
+
+// A deterministic generator (xorshift64*) for the jittered mesh.
+class Rng {
+ public:
+  explicit Rng(std::uint64_t seed) : s_(seed) {}
+  std::uint64_t next() {
+    s_ ^= s_ >> 12;
+    s_ ^= s_ << 25;
+    s_ ^= s_ >> 27;
+    return s_ * 0x2545F4914F6CDD1DULL;
+  }
+  // Returns an integer in [lo, hi].
+  std::int32_t in(std::int32_t lo, std::int32_t hi) {
+    return lo + static_cast<std::int32_t>(next() % static_cast<std::uint64_t>(hi - lo + 1));
+  }
+
+ private:
+  std::uint64_t s_;
+};
+
+// A grid of 8 x 6 cells, 4 px each, whose interior vertices are jittered by whole subpixels;
+// one vertex in three sits exactly on a pixel centre. Cells are split along alternating
+// diagonals and every other triangle is given counter-clockwise.
+Scene jittered_grid() {
+  Scene s = make_scene(32, 24);
+  constexpr int kNx = 8, kNy = 6, kCell = 4;
+  Rng rng(0x5EEDu);
+  std::array<std::array<Point, kNx + 1>, kNy + 1> v{};
+  for (int j = 0; j <= kNy; ++j) {
+    for (int i = 0; i <= kNx; ++i) {
+      std::int32_t x = i * kCell * 256, y = j * kCell * 256;
+      if (i > 0 && i < kNx && j > 0 && j < kNy) {
+        if (rng.in(0, 2) == 0) {
+          x += 128;  // a pixel centre
+          y += 128;
+        } else {
+          x += rng.in(-300, 300);
+          y += rng.in(-300, 300);
+        }
+      }
+      v[static_cast<std::size_t>(j)][static_cast<std::size_t>(i)] =
+          Point{static_cast<float>(x) / 256.0f, static_cast<float>(y) / 256.0f};
+    }
+  }
+  int n = 0;
+  for (std::size_t j = 0; j < kNy; ++j) {
+    for (std::size_t i = 0; i < kNx; ++i) {
+      const Point a = v[j][i], b = v[j][i + 1], c = v[j + 1][i + 1], d = v[j + 1][i];
+      std::array<Primitive, 2> halves = (i + j) % 2 == 0
+                                            ? std::array<Primitive, 2>{tri(a, b, c), tri(a, c, d)}
+                                            : std::array<Primitive, 2>{tri(a, b, d), tri(b, c, d)};
+      for (Primitive& p : halves) {
+        if (n++ % 2 == 1) std::swap(p.v[1], p.v[2]);
+        s.primitives.push_back(p);
+      }
+    }
+  }
+  return s;
+}
+
+// Ties on every edge type: a square of four triangles meeting at a pixel centre with its
+// corners on pixel centres (diagonal edges through centres), a rectangle split into two with
+// horizontal and vertical edges along rows and columns of centres, and a triangle whose three
+// vertices are pixel centres.
+Scene ties(FillConvention fill) {
+  RasterState state;
+  state.fill = fill;
+  Scene s = make_scene(14, 12, state);
+  auto& p = s.primitives;
+  const Point c{5.5f, 5.5f}, nw{1.5f, 1.5f}, ne{9.5f, 1.5f}, se{9.5f, 9.5f}, sw{1.5f, 9.5f};
+  p.push_back(tri(c, nw, ne));
+  p.push_back(tri(c, ne, se));
+  p.push_back(tri(c, se, sw));
+  p.push_back(tri(c, sw, nw));
+  p.push_back(tri({10.5f, 1.5f}, {12.5f, 1.5f}, {12.5f, 6.5f}));  // horizontal top, vertical right
+  p.push_back(tri({10.5f, 1.5f}, {12.5f, 6.5f}, {10.5f, 6.5f}));  // vertical left, horizontal bottom
+  p.push_back(tri({10.5f, 8.5f}, {12.5f, 10.5f}, {10.5f, 10.5f}));
+  return s;
+}
+
+// Culling after snapping: pairs of equal triangles with both windings, a triangle that is
+// degenerate only after snapping, and one whose winding flips when snapped.
+Scene culling(CullMode cull, FrontFace front) {
+  RasterState state;
+  state.cull = cull;
+  state.front_face = front;
+  Scene s = make_scene(16, 8, state);
+  auto& p = s.primitives;
+  p.push_back(tri({0.5f, 0.5f}, {4.5f, 0.5f}, {0.5f, 4.5f}));   // clockwise
+  p.push_back(tri({4.5f, 0.5f}, {4.5f, 4.5f}, {0.5f, 4.5f}));   // clockwise
+  p.push_back(tri({5.5f, 0.5f}, {5.5f, 4.5f}, {9.5f, 0.5f}));   // counter-clockwise
+  p.push_back(tri({9.5f, 0.5f}, {5.5f, 4.5f}, {9.5f, 4.5f}));   // counter-clockwise
+  p.push_back(tri({10.5f, 1.5f}, {14.5f, 2.5f}, {11.5f, 6.5f}));  // clockwise
+  p.push_back(tri({10.5f, 1.5f}, {11.5f, 6.5f}, {14.5f, 2.5f}));  // the same, counter-clockwise
+  // Degenerate after snapping: y = 1.001 and 1.0019 both snap to 1 (raw 256).
+  p.push_back(tri({1.0f, 6.0f}, {5.0f, 6.001f}, {9.0f, 6.0019f}));
+  // Clockwise as floats (A = 0.004 px^2), counter-clockwise once snapped.
+  p.push_back(tri({0.0f, 7.0f}, {10.0f, 7.003f}, {5.0f, 7.0019f}));
+  return s;
+}
+
+// Slivers and needles: triangles one subpixel wide along rows and columns of centres and
+// along a diagonal, and long needles crossing the whole target.
+Scene slivers() {
+  Scene s = make_scene(32, 16);
+  auto& p = s.primitives;
+  constexpr float kSub = 1.0f / 256.0f;
+  p.push_back(tri({0.5f, 2.5f}, {31.5f, 2.5f}, {0.5f, 2.5f + kSub}));           // top edge on a row
+  p.push_back(tri({0.5f, 4.5f - kSub}, {31.5f, 4.5f}, {0.5f, 4.5f}));           // bottom edge on a row
+  p.push_back(tri({3.5f, 6.5f}, {3.5f + kSub, 15.5f}, {3.5f, 15.5f}));          // left edge on a column
+  p.push_back(tri({6.5f, 6.5f}, {6.5f, 15.5f}, {6.5f - kSub, 15.5f}));          // right edge on a column
+  p.push_back(tri({8.5f, 6.5f}, {15.5f, 13.5f}, {8.5f + kSub, 6.5f}));          // diagonal through centres
+  p.push_back(tri({-40.0f, 7.25f}, {70.0f, 7.75f}, {-40.0f, 7.2578125f}));      // long needle
+  p.push_back(tri({16.0f, 0.1f}, {31.9f, 15.9f}, {16.02f, 0.1f}));              // thin, steep
+  p.push_back(tri({17.5f, 5.5f}, {30.5f, 14.5f}, {17.5f + 2 * kSub, 5.5f}));    // needle from a centre
+  return s;
+}
+
+// Triangles far larger than the target with vertices at the ends of the supported range,
+// [-32768, 32767.99609375]. The first two share the diagonal x = y, which runs through the
+// centres (i + 0.5, i + 0.5): together they cover the target exactly once.
+Scene huge() {
+  Scene s = make_scene(32, 32);
+  auto& p = s.primitives;
+  constexpr float kMin = -32768.0f, kMax = 32767.99609375f;
+  p.push_back(tri({kMin, kMin}, {kMax, kMin}, {kMax, kMax}));
+  p.push_back(tri({kMin, kMin}, {kMax, kMax}, {kMin, kMax}));
+  p.push_back(tri({kMin, 20.5f}, {kMax, 0.5f}, {kMax, kMax}));
+  return s;
+}
+
+// Snapping ties: coordinates exactly half-way between two subpixels (odd multiples of 1/512),
+// which round half to even, so some land on pixel centres and some just miss them.
+Scene snap_ties() {
+  Scene s = make_scene(16, 8);
+  auto& p = s.primitives;
+  constexpr float kHalfSub = 1.0f / 512.0f;
+  // x = 2.5 + 1/512: raw 640.5 -> 640 (even): the left edge runs through the centres x = 2.5.
+  p.push_back(tri({2.5f + kHalfSub, 0.5f}, {3.5f, 0.5f}, {2.5f + kHalfSub, 7.5f}));
+  // x = 5.5 + 3/512: raw 1409.5 -> 1410 (even) = 5.5078125: just right of the centres x = 5.5.
+  p.push_back(tri({5.5f + 3 * kHalfSub, 0.5f}, {6.5f, 0.5f}, {5.5f + 3 * kHalfSub, 7.5f}));
+  // Right edge: x = 9.5 - 1/512: raw 2431.5 -> 2432 (even) = 9.5: on the centres, excluded.
+  p.push_back(tri({8.5f, 0.5f}, {9.5f - kHalfSub, 0.5f}, {9.5f - kHalfSub, 7.5f}));
+  // Top edge: y = 2.5 - 1/512 -> 2.5 (raw 639.5 -> 640); bottom y = 5.5 + 1/512 -> 5.5.
+  p.push_back(tri({10.5f, 2.5f - kHalfSub}, {15.5f, 2.5f - kHalfSub}, {15.5f, 5.5f + kHalfSub}));
+  // Near zero: -1/512 snaps to 0 (raw -0.5 -> 0), 1/512 to 0 as well.
+  p.push_back(tri({-kHalfSub, -kHalfSub}, {1.5f + kHalfSub, kHalfSub}, {kHalfSub, 1.5f - kHalfSub}));
+  return s;
+}
+
+}  // namespace
+
+std::vector<ShowcaseScene> showcase_scenes() {
+  std::vector<ShowcaseScene> out;
+  out.push_back({"d3d-diagram", "the cases of the D3D11.3 triangle diagram", d3d_diagram()});
+  out.push_back({"fan", "16 triangles around a pixel centre, all edges through centres", fan()});
+  out.push_back({"jittered-grid", "96-triangle mesh, jittered vertices, mixed windings", jittered_grid()});
+  out.push_back({"ties-top-left", "edge ties of every kind, fill top-left (D3D)", ties(FillConvention::kTopLeft)});
+  out.push_back({"ties-top-right", "the same, fill top-right", ties(FillConvention::kTopRight)});
+  out.push_back({"ties-bottom-left", "the same, fill bottom-left (GL read top-down)", ties(FillConvention::kBottomLeft)});
+  out.push_back({"ties-bottom-right", "the same, fill bottom-right", ties(FillConvention::kBottomRight)});
+  out.push_back({"cull-back", "cull back, front face cw, windings decided after snapping",
+                 culling(CullMode::kBack, FrontFace::kClockwise)});
+  out.push_back({"cull-front-ccw", "cull front, front face ccw",
+                 culling(CullMode::kFront, FrontFace::kCounterClockwise)});
+  out.push_back({"slivers", "slivers one subpixel wide on rows, columns and diagonals; needles", slivers()});
+  out.push_back({"huge", "triangles at the ends of the coordinate range", huge()});
+  out.push_back({"snap-ties", "coordinates half-way between subpixels (round half to even)", snap_ties()});
+  return out;
+}
+
+}  // namespace rastrules::cli

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+// The fragment list output (spec/scene.md), written as a stream.
+// Implements: SCENE.OUTPUT.FRAGMENTS
+
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "rastrules/scene.hpp"
+
+namespace rastrules::io {
+
+// Writes {"fragments": [...]} to a FILE*, one fragment per line, without holding the list in
+// memory. The caller emits fragments in (prim, y, x) order (SCENE.OUTPUT.FRAGMENTS); the
+// writer checks that order and refuses fragments that break it.
+// rule: SCENE.OUTPUT.FRAGMENTS
+class FragmentWriter {
+ public:
+  explicit FragmentWriter(std::FILE* out);
+  FragmentWriter(const FragmentWriter&) = delete;
+  FragmentWriter& operator=(const FragmentWriter&) = delete;
+
+  // Appends one fragment. Returns false (and writes nothing) when it does not come after the
+  // previous one in (prim, y, x) order.
+  bool add(const Fragment& f);
+
+  // Closes the list. Returns false when any write failed.
+  bool finish();
+
+  [[nodiscard]] std::uint64_t count() const { return count_; }
+
+ private:
+  void flush_buffer();
+
+  std::FILE* out_;
+  std::string buffer_;
+  std::uint64_t count_ = 0;
+  Fragment last_{};
+  bool failed_ = false;
+};
+
+// Returns the fragment list as one string (for small lists and tests).
+[[nodiscard]] std::string fragments_to_json(const std::vector<Fragment>& fragments);
+
+}  // namespace rastrules::io

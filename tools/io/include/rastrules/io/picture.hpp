@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// Pictures of a rendered scene: the target magnified, its pixel grid and pixel centres, the
+// primitives' snapped edges, covered pixels coloured by primitive and overlaps marked.
+// Pictures only show results computed by the kernel; they decide nothing.
+
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "rastrules/io/image.hpp"
+#include "rastrules/scene.hpp"
+
+namespace rastrules::io {
+
+// Largest picture side in image pixels, and the magnification used when it fits.
+inline constexpr int kMaxPictureSide = 4096;
+inline constexpr int kDefaultPixelScale = 32;
+
+// Returns the magnification (image pixels per target pixel) used by default: 32, or less so
+// that the picture stays within kMaxPictureSide; 0 when even 1 does not fit.
+[[nodiscard]] int default_picture_scale(std::int32_t width, std::int32_t height);
+
+// Returns whether a picture of the target at `scale` fits within kMaxPictureSide.
+[[nodiscard]] bool picture_fits(std::int32_t width, std::int32_t height, int scale);
+
+// How many primitives cover each pixel of the target, and the first of them.
+class CoverageMap {
+ public:
+  CoverageMap(std::int32_t width, std::int32_t height);
+  void add(std::uint32_t prim, std::int32_t x, std::int32_t y);
+  [[nodiscard]] std::uint32_t count(std::int32_t x, std::int32_t y) const;
+  [[nodiscard]] std::uint32_t first(std::int32_t x, std::int32_t y) const;  // valid if count > 0
+  [[nodiscard]] std::int32_t width() const { return width_; }
+  [[nodiscard]] std::int32_t height() const { return height_; }
+
+ private:
+  std::size_t index(std::int32_t x, std::int32_t y) const;
+  std::int32_t width_;
+  std::int32_t height_;
+  std::vector<std::uint32_t> first_;
+  std::vector<std::uint8_t> count_;  // saturates at 255
+};
+
+// Colours: the fill of pixels covered by primitive `prim` alone, the colour of its edges, and
+// the fill of pixels covered by more than one primitive.
+[[nodiscard]] Rgb cover_colour(std::uint32_t prim);
+[[nodiscard]] Rgb edge_colour(std::uint32_t prim);
+inline constexpr Rgb kOverlapColour{255, 190, 190};
+inline constexpr Rgb kOverlapMark{210, 20, 20};
+inline constexpr Rgb kBackground{255, 255, 255};
+
+// Returns the picture of a prepared scene and its coverage. The image is
+// (width * scale + 1) x (height * scale + 1) pixels; target pixel (i, j) occupies image pixels
+// [i * scale + 1, (i + 1) * scale) in x (and likewise in y), between grid lines.
+// Preconditions: scale >= 1 and picture_fits(scene.width, scene.height, scale).
+[[nodiscard]] Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int scale);
+
+}  // namespace rastrules::io

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+// Scene files (spec/scene.md, version 1): a strict streaming reader and a writer.
+// Implements: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS (the reader's part)
+// Does not implement: target limits and vertex validity, which the kernel's prepare() checks
+// (SCENE.TARGET.LIMITS, SNAP.VERTEX.INVALID) after reading.
+
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "rastrules/scene.hpp"
+
+namespace rastrules::io {
+
+// Largest scene file accepted, in bytes. Memory used by reading is proportional to the input
+// (about 40 bytes per primitive in memory for at least 40 bytes of text), so this bounds it.
+inline constexpr std::size_t kMaxSceneBytes = std::size_t{64} << 20;  // 64 MiB
+
+// Returns the scene described by the JSON text, or the first error found in reading order.
+// Errors name the field path (`primitives[2].v[1][0]: must be a number ...`) or, for
+// malformed JSON, the parser's position (`(json): parse error at line 1, column 7: ...`).
+// Coordinates are converted from their decimal text directly to the nearest float32
+// (SCENE.NUMBER.FLOAT32); the strings "NaN", "Infinity" and "-Infinity" are accepted and left
+// for prepare() to reject.
+// rule: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS
+[[nodiscard]] std::variant<Scene, SceneError> read_scene(std::string_view json_text);
+
+// Returns the whole content of a scene file ("-" is standard input), or an error naming the
+// file when it cannot be read or is larger than kMaxSceneBytes.
+[[nodiscard]] std::variant<std::string, SceneError> read_scene_file(const std::string& path);
+
+// Returns the scene as JSON text in the format read_scene() accepts, one primitive per line.
+// Floats are written in their shortest form that reads back to the same float32;
+// NaN and infinities as the strings "NaN", "Infinity", "-Infinity".
+// rule: SCENE.FORMAT.V1
+[[nodiscard]] std::string write_scene(const Scene& scene);
+
+// Returns the shortest decimal text that reads back (SCENE.NUMBER.FLOAT32) to exactly v,
+// or "NaN", "Infinity", "-Infinity".
+[[nodiscard]] std::string format_float(float v);
+
+// Returns the float32 nearest to the decimal number `text` (JSON number syntax), ties to
+// even, converted directly from the text; values too large become infinities, values too
+// small zeros of the right sign. nullopt when the text is not a number.
+// rule: SCENE.NUMBER.FLOAT32
+[[nodiscard]] std::optional<float> decimal_to_float32(std::string_view text);
+
+// Returns s with every byte outside printable ASCII written as \xNN, cut to max_len bytes
+// (with "..." appended when cut), so that it is safe inside a one-line error message.
+[[nodiscard]] std::string printable(std::string_view s, std::size_t max_len = 60);
+
+}  // namespace rastrules::io

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+// The fragment list output.
+// Implements: SCENE.OUTPUT.FRAGMENTS
+
+#include "rastrules/io/fragment_json.hpp"
+
+#include <array>
+#include <charconv>
+#include <tuple>
+
+namespace rastrules::io {
+namespace {
+
+constexpr std::size_t kFlushBytes = std::size_t{1} << 16;
+
+template <class Int>
+void append_int(std::string& out, Int v) {
+  std::array<char, 24> buf{};
+  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  out.append(buf.data(), r.ptr);
+}
+
+// Appends one fragment object on its own line.
+void append_fragment(std::string& out, const Fragment& f, bool first) {
+  out += first ? "\n  {\"prim\": " : ",\n  {\"prim\": ";
+  append_int(out, f.prim);
+  out += ", \"x\": ";
+  append_int(out, f.x);
+  out += ", \"y\": ";
+  append_int(out, f.y);
+  out += ", \"mask\": ";
+  append_int(out, f.mask);
+  out += "}";
+}
+
+}  // namespace
+
+FragmentWriter::FragmentWriter(std::FILE* out) : out_(out) {
+  buffer_.reserve(kFlushBytes + 128);
+  buffer_ += "{\"fragments\": [";
+}
+
+// rule: SCENE.OUTPUT.FRAGMENTS
+bool FragmentWriter::add(const Fragment& f) {
+  if (count_ != 0 && std::tie(f.prim, f.y, f.x) <= std::tie(last_.prim, last_.y, last_.x)) {
+    return false;
+  }
+  append_fragment(buffer_, f, count_ == 0);
+  last_ = f;
+  ++count_;
+  if (buffer_.size() >= kFlushBytes) flush_buffer();
+  return true;
+}
+
+bool FragmentWriter::finish() {
+  buffer_ += count_ == 0 ? "]}\n" : "\n]}\n";
+  flush_buffer();
+  if (std::fflush(out_) != 0) failed_ = true;
+  return !failed_;
+}
+
+void FragmentWriter::flush_buffer() {
+  if (!buffer_.empty() && std::fwrite(buffer_.data(), 1, buffer_.size(), out_) != buffer_.size()) {
+    failed_ = true;
+  }
+  buffer_.clear();
+}
+
+std::string fragments_to_json(const std::vector<Fragment>& fragments) {
+  std::string out = "{\"fragments\": [";
+  for (std::size_t n = 0; n < fragments.size(); ++n) {
+    append_fragment(out, fragments[n], n == 0);
+  }
+  out += fragments.empty() ? "]}\n" : "\n]}\n";
+  return out;
+}
+
+}  // namespace rastrules::io
