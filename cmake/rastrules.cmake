@@ -18,10 +18,14 @@ endif()
 find_package(GTest QUIET)
 include(GoogleTest)
 function(rastrules_add_gtest)
-  cmake_parse_arguments(A "" "NAME;AREA;KIND" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(A "" "NAME;AREA;KIND" "SOURCES;LIBS;TEST_PROPERTIES" ${ARGN})
   add_executable(${A_NAME} ${A_SOURCES})
   target_link_libraries(${A_NAME} PRIVATE ${A_LIBS} rastrules_warnings rastrules_sanitize)
+  # gtest_discover_tests re-splits a list-valued LABELS, keeping only the first element, so
+  # the kind goes on the tests and the area on the directory (CTest adds directory labels to
+  # every test defined there; each area has its own folder).
   gtest_discover_tests(${A_NAME}
     DISCOVERY_TIMEOUT 60
-    PROPERTIES LABELS "${A_KIND};${A_AREA}")
+    PROPERTIES LABELS "${A_KIND}" ${A_TEST_PROPERTIES})
+  set_property(DIRECTORY APPEND PROPERTY LABELS "${A_AREA}")
 endfunction()

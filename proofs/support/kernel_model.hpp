@@ -97,15 +97,12 @@ struct KernelModel {
     return e > zero || (e == zero && inclusive);
   }
 
-  // Mirrors setup_triangle (triangle.hpp): clockwise = (A > 0); a triangle that is not
-  // clockwise becomes (v0, v2, v1). (The kernel returns early when A == 0; theorems that use
-  // this state A != 0 as a hypothesis.)
+  // Mirrors setup_triangle (triangle.hpp): `t.clockwise = t.twice_area > 0`, and a triangle
+  // that is not clockwise is normalised to (v0, v2, v1) (see covers_normalised below).
   // rule: TRI.ORIENT.NORMALISE
   template <class S>
-  static Triangle<S> normalise(const Triangle<S>& v) {
-    const SymBool clockwise = twice_signed_area(v) > S(0);
-    return Triangle<S>{v[0], Point<S>{select(clockwise, v[1].x, v[2].x), select(clockwise, v[1].y, v[2].y)},
-                       Point<S>{select(clockwise, v[2].x, v[1].x), select(clockwise, v[2].y, v[1].y)}};
+  static SymBool is_clockwise(const Triangle<S>& v) {
+    return twice_signed_area(v) > S(0);
   }
 };
 
@@ -123,6 +120,19 @@ SymBool covers(const Triangle<S>& t, const Point<S>& p) {
                            F::template is_inclusive_edge<TopInclusive, LeftInclusive>(a, b));
   }
   return all;
+}
+
+// Returns whether the triangle with vertices v (in the order given, A != 0) covers sample p
+// under the convention (TopInclusive, LeftInclusive), after the winding normalisation of
+// setup_triangle: a triangle that is not clockwise (F::is_clockwise) becomes (v0, v2, v1);
+// then p must be inside all three edges (rastrules::covers). The kernel selects the vertex
+// order and then evaluates; selecting between the two evaluations is the same function, and
+// keeps every edge value a polynomial in the inputs.
+// rule: TRI.ORIENT.NORMALISE, TRI.COVER.SAMPLE
+template <class F, bool TopInclusive, bool LeftInclusive, class S>
+SymBool covers_normalised(const Triangle<S>& v, const Point<S>& p) {
+  return select(F::is_clockwise(v), covers<F, TopInclusive, LeftInclusive>(v, p),
+                covers<F, TopInclusive, LeftInclusive>(Triangle<S>{v[0], v[2], v[1]}, p));
 }
 
 // Calls fn.template operator()<TopInclusive, LeftInclusive>(name) for the four fill

@@ -18,6 +18,7 @@
 #include <concepts>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -71,7 +72,7 @@ class Domain {
   [[nodiscard]] static Domain& active() { return *active_; }
   [[nodiscard]] z3::context& ctx() { return ctx_; }
 
-  // Returns a fresh integer variable modelling a value of type Rep (its range is NOT assumed;
+  // Returns a fresh integer variable (names must be unique within the Domain) modelling a value of type Rep (its range is NOT assumed;
   // theorems state their input ranges as explicit hypotheses).
   template <std::signed_integral Rep>
   Sym<Rep> var(const std::string& name, Unit unit);
@@ -79,7 +80,7 @@ class Domain {
   // Returns a fresh Boolean variable.
   z3::expr bool_var(const std::string& name) {
     z3::expr v = ctx_.bool_const(name.c_str());
-    variables_.push_back(Watch{name, v, Unit::kBool});
+    dom_register(name, v, Unit::kBool);
     return v;
   }
 
@@ -100,6 +101,15 @@ class Domain {
   [[nodiscard]] const std::vector<Watch>& variables() const { return variables_; }
 
  private:
+  // Variables with the same name would be the same Z3 constant, silently identifying two
+  // quantities of a theorem: refuse.
+  void dom_register(const std::string& name, const z3::expr& v, Unit unit) {
+    for (const Watch& w : variables_) {
+      if (w.name == name) throw std::logic_error("proof variable declared twice: " + name);
+    }
+    variables_.push_back(Watch{name, v, unit});
+  }
+
   z3::context ctx_;
   std::vector<Obligation> log_;
   std::vector<Watch> variables_;
@@ -172,7 +182,7 @@ class Sym {
 template <std::signed_integral Rep>
 Sym<Rep> Domain::var(const std::string& name, Unit unit) {
   z3::expr v = ctx_.int_const(name.c_str());
-  variables_.push_back(Watch{name, v, unit});
+  dom_register(name, v, unit);
   return Sym<Rep>(*this, v, name);
 }
 
@@ -182,6 +192,11 @@ template <std::signed_integral Rep>
 Sym<Rep> select(const SymBool& c, const Sym<Rep>& t, const Sym<Rep>& f) {
   return Sym<Rep>(t.domain(), z3::ite(c.expr(), t.expr(), f.expr()),
                   "select(" + t.text() + ", " + f.text() + ")");
+}
+
+// Returns c ? t : f for Booleans.
+inline SymBool select(const SymBool& c, const SymBool& t, const SymBool& f) {
+  return SymBool(z3::ite(c.expr(), t.expr(), f.expr()));
 }
 
 }  // namespace rastrules::proofs

@@ -1,6 +1,23 @@
 // SPDX-License-Identifier: MIT
 // Obligation TRI.SHARED_EDGE.EXACTLY_ONCE, as a template over a kernel model. Used by
 // shared_edge_exactly_once.cpp and selftest/mutants.cpp.
+//
+// Encoding of "p on the open segment (a, b)" on integer raw coordinates: a step vector
+// delta = (dx, dy) and integers 0 < k < n with b = a + n delta and p = a + k delta. Every
+// integer point strictly between two distinct integer points a and b arises this way (take
+// delta = (b - a) / g with g the gcd of the coordinate differences, n = g, 0 < k < g), and
+// every such p is strictly between a and b. So the theorem covers exactly the integer
+// samples on the open shared segment (pixel centres are integer raw points).
+//
+// The nonlinear core is split into lemmas, each proved here and then used, instantiated, as a
+// hypothesis of the next (proofs-notes: one query with everything times out):
+//   L0 (signs): 0 < K < N  =>  sign((N - K) V) = sign(K V) = sign(N V)    for all integers.
+//   L1 (edge values on the segment): with U = (delta x (c - a)), the kernel's values satisfy
+//      E_ab(p) = 0, E_ba(p) = 0, and E_bc(p), E_ca(p) have the sign of A(a, b, c) = n U,
+//      E_cb(p), E_ac(p) the opposite sign; proved with L0 instantiated at (n, k, U).
+//   M (exactly once): from L1 instantiated for both third vertices c and d.
+// Overflow freedom of the kernel evaluations here is FIX.BUDGET.EDGE_VALUE (all points are in
+// the vertex range), proved by fixed/edge_value_no_overflow for every such point.
 
 #pragma once
 
@@ -21,17 +38,26 @@ z3::expr spec_orientation(const Point<S>& a, const Point<S>& b, const Point<S>& 
          (b.y.expr() - a.y.expr()) * (c.x.expr() - a.x.expr());
 }
 
-// Returns "p lies on the open segment (a, b)": collinear with a and b, within their bounding
-// box, and equal to neither. On integer points this is exactly p = a + t (b - a), 0 < t < 1.
-template <class S>
-z3::expr on_open_segment(const Point<S>& a, const Point<S>& b, const Point<S>& p) {
-  const z3::expr ax = a.x.expr(), ay = a.y.expr(), bx = b.x.expr(), by = b.y.expr();
-  const z3::expr px = p.x.expr(), py = p.y.expr();
-  const z3::expr between_x = (ax <= px && px <= bx) || (bx <= px && px <= ax);
-  const z3::expr between_y = (ay <= py && py <= by) || (by <= py && py <= ay);
-  const z3::expr not_a = !(px == ax && py == ay);
-  const z3::expr not_b = !(px == bx && py == by);
-  return spec_orientation(a, b, p) == 0 && between_x && between_y && not_a && not_b;
+// L0 for integers n, k, v: 0 < k < n implies sign((n - k) v) = sign(k v) = sign(n v).
+inline z3::expr sign_lemma(const z3::expr& n, const z3::expr& k, const z3::expr& v) {
+  const z3::expr nv = n * v;
+  const z3::expr rest = (n - k) * v;
+  const z3::expr kv = k * v;
+  return z3::implies(0 < k && k < n, (rest > 0) == (nv > 0) && (rest < 0) == (nv < 0) &&
+                                         (kv > 0) == (nv > 0) && (kv < 0) == (nv < 0));
+}
+
+// L1's conclusion for third vertex c: the kernel's edge values at p of the six directed edges
+// between a, b and c, related to the kernel's A(a, b, c).
+template <class F, class S>
+z3::expr segment_edge_values(const Point<S>& a, const Point<S>& b, const Point<S>& c,
+                             const Point<S>& p) {
+  const z3::expr area = F::twice_signed_area(Triangle<S>{a, b, c}).expr();
+  auto same_sign = [&](const S& e) { return (e.expr() > 0) == (area > 0) && (e.expr() < 0) == (area < 0); };
+  auto opposite_sign = [&](const S& e) { return (e.expr() > 0) == (area < 0) && (e.expr() < 0) == (area > 0); };
+  return F::edge_value(a, b, p).expr() == 0 && F::edge_value(b, a, p).expr() == 0 &&
+         same_sign(F::edge_value(b, c, p)) && same_sign(F::edge_value(c, a, p)) &&
+         opposite_sign(F::edge_value(c, b, p)) && opposite_sign(F::edge_value(a, c, p));
 }
 
 // Part 1, for every convention: for all a != b in the vertex range, exactly one of the directed
@@ -47,57 +73,95 @@ template <class F>
 void prove_shared_edge_exactly_once(Prover& pr) {
   using S = typename F::Acc;
   Domain& dom = pr.domain();
+  z3::context& ctx = dom.ctx();
+
   const Point<S> a = point_var<S>(dom, "a");
-  const Point<S> b = point_var<S>(dom, "b");
+
+  // Part 1.
+  {
+    const Point<S> b = point_var<S>(dom, "b");
+    // rule: SNAP.VERTEX.RANGE
+    const z3::expr a_ne_b = !(a.x.expr() == b.x.expr() && a.y.expr() == b.y.expr());
+    const std::vector<z3::expr> hyps = {in_vertex_range<F>(a), in_vertex_range<F>(b), a_ne_b};
+    for_each_convention([&]<bool TopInclusive, bool LeftInclusive>(const char* convention) {
+      const std::size_t mark = dom.mark();
+      const SymBool forward = F::template is_inclusive_edge<TopInclusive, LeftInclusive>(a, b);
+      const SymBool backward = F::template is_inclusive_edge<TopInclusive, LeftInclusive>(b, a);
+      pr.watch("inclusive(a->b)", forward.expr(), Unit::kBool);
+      pr.watch("inclusive(b->a)", backward.expr(), Unit::kBool);
+      pr.prove(std::string(convention) + ": exactly one of a->b, b->a is inclusive (a != b)",
+               hyps, forward.expr() != backward.expr(), dom.obligations_since(mark));
+    });
+  }
+
+  // Part 2. The shared edge a -> b = a + n delta, the sample p = a + k delta.
+  const S dx = dom.var<typename S::rep>("delta_x", Unit::kCoordRaw);
+  const S dy = dom.var<typename S::rep>("delta_y", Unit::kCoordRaw);
+  const S n = dom.var<typename S::rep>("n", Unit::kInteger);
+  const S k = dom.var<typename S::rep>("k", Unit::kInteger);
+  const Point<S> b{a.x + n * dx, a.y + n * dy};
+  const Point<S> p{a.x + k * dx, a.y + k * dy};
   const Point<S> c = point_var<S>(dom, "c");
   const Point<S> d = point_var<S>(dom, "d");
-  const Point<S> p = point_var<S>(dom, "p");
   const z3::expr order1 = dom.bool_var("first_is_abc");   // else (b, a, c)
   const z3::expr order2 = dom.bool_var("second_is_abd");  // else (b, a, d)
+  const z3::expr on_segment = 0 < k.expr() && k.expr() < n.expr();
+  auto show_points = [&] {
+    pr.watch("bx", b.x.expr(), Unit::kCoordRaw);
+    pr.watch("by", b.y.expr(), Unit::kCoordRaw);
+    pr.watch("px", p.x.expr(), Unit::kCoordRaw);
+    pr.watch("py", p.y.expr(), Unit::kCoordRaw);
+  };
 
-  // rule: SNAP.VERTEX.RANGE
-  const z3::expr a_ne_b = !(a.x.expr() == b.x.expr() && a.y.expr() == b.y.expr());
-  const std::vector<z3::expr> edge_hyps = {in_vertex_range<F>(a), in_vertex_range<F>(b), a_ne_b};
+  const z3::expr lemma_n = ctx.int_const("lemma_N");
+  const z3::expr lemma_k = ctx.int_const("lemma_K");
+  const z3::expr lemma_v = ctx.int_const("lemma_V");
+  const Status l0 = pr.prove("lemma L0: 0 < K < N => sign((N - K) V) = sign(K V) = sign(N V)", {},
+                             sign_lemma(lemma_n, lemma_k, lemma_v));
 
-  for_each_convention([&]<bool TopInclusive, bool LeftInclusive>(const char* convention) {
-    const std::size_t mark = dom.mark();
-    const SymBool forward = F::template is_inclusive_edge<TopInclusive, LeftInclusive>(a, b);
-    const SymBool backward = F::template is_inclusive_edge<TopInclusive, LeftInclusive>(b, a);
-    pr.watch("inclusive(a->b)", forward.expr(), Unit::kBool);
-    pr.watch("inclusive(b->a)", backward.expr(), Unit::kBool);
-    pr.prove(std::string(convention) + ": exactly one of a->b, b->a is inclusive (a != b)",
-             edge_hyps, forward.expr() != backward.expr(), dom.obligations_since(mark));
-  });
+  // L1 for the generic third vertex c; M uses it at c and at d.
+  const z3::expr u = dx.expr() * (c.y.expr() - a.y.expr()) - dy.expr() * (c.x.expr() - a.x.expr());
+  show_points();
+  const Status l1 =
+      l0 != Status::kProved
+          ? pr.skip("lemma L1: kernel edge values at a sample on the open edge ab",
+                    "relies on lemma L0, which was not proved")
+          : pr.prove("lemma L1: kernel edge values at a sample on the open edge ab",
+                     {on_segment, sign_lemma(n.expr(), k.expr(), u)},
+                     segment_edge_values<F>(a, b, c, p));
 
   const z3::expr oc = spec_orientation(a, b, c);
   const z3::expr od = spec_orientation(a, b, d);
+  // rule: SNAP.VERTEX.RANGE
   const std::vector<z3::expr> hyps = {
-      in_vertex_range<F>(a),
-      in_vertex_range<F>(b),
-      in_vertex_range<F>(c),
-      in_vertex_range<F>(d),
+      in_vertex_range<F>(a), in_vertex_range<F>(b), in_vertex_range<F>(c),
+      in_vertex_range<F>(d), in_vertex_range<F>(p), on_segment,
       (oc > 0 && od < 0) || (oc < 0 && od > 0),
-      on_open_segment(a, b, p),
-  };
-  auto ordered = [](const z3::expr& first, const Point<S>& x, const Point<S>& y,
-                    const Point<S>& z) {
-    // first ? (x, y, z) : (y, x, z)
-    const SymBool f(first);
-    return Triangle<S>{Point<S>{select(f, x.x, y.x), select(f, x.y, y.y)},
-                       Point<S>{select(f, y.x, x.x), select(f, y.y, x.y)}, z};
+      segment_edge_values<F>(a, b, c, p),  // L1 at c
+      segment_edge_values<F>(a, b, d, p),  // L1 at d
   };
 
   for_each_convention([&]<bool TopInclusive, bool LeftInclusive>(const char* convention) {
-    const std::size_t mark = dom.mark();
-    const Triangle<S> t1 = F::normalise(ordered(order1, a, b, c));
-    const Triangle<S> t2 = F::normalise(ordered(order2, a, b, d));
-    const SymBool in1 = covers<F, TopInclusive, LeftInclusive>(t1, p);
-    const SymBool in2 = covers<F, TopInclusive, LeftInclusive>(t2, p);
+    auto covered = [&](const z3::expr& first, const Point<S>& third) {
+      // first ? (a, b, third) : (b, a, third), then normalised and tested as the kernel does.
+      return select(SymBool(first),
+                    covers_normalised<F, TopInclusive, LeftInclusive>(
+                        Triangle<S>{a, b, third}, p),
+                    covers_normalised<F, TopInclusive, LeftInclusive>(
+                        Triangle<S>{b, a, third}, p));
+    };
+    const SymBool in1 = covered(order1, c);
+    const SymBool in2 = covered(order2, d);
+    const std::string name = std::string(convention) +
+                             ": each sample on the open shared edge is covered by exactly one triangle";
+    if (l1 != Status::kProved) {
+      pr.skip(name, "relies on lemma L1, which was not proved");
+      return;
+    }
+    show_points();
     pr.watch("covered by first", in1.expr(), Unit::kBool);
     pr.watch("covered by second", in2.expr(), Unit::kBool);
-    pr.prove(std::string(convention) +
-                 ": each point on the open shared edge is covered by exactly one triangle",
-             hyps, in1.expr() != in2.expr(), dom.obligations_since(mark));
+    pr.prove(name, hyps, in1.expr() != in2.expr());
   });
 }
 

@@ -87,7 +87,7 @@ TEST(CliRender, CulledAndDegenerateTrianglesProduceNoFragments) {
 TEST(CliRender, FragmentsOutsideTheTargetAreNotWritten) {
   const TempDir dir;
   const auto scene = dir.write("scene.json", R"({"target": {"width": 2, "height": 1}, "primitives": [
-    {"type": "triangle", "v": [[-100, -100], [100, -100], [-100, 100]]}]})");
+    {"type": "triangle", "v": [[-100, -100], [300, -100], [-100, 300]]}]})");
   const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(read_file(dir / "out.json"), fragments({{0, 0, 0}, {0, 1, 0}}));
@@ -155,7 +155,7 @@ TEST(CliRender, PictureMarksOverlapsAndUncoveredPixels) {
   auto rgb = [](rastrules::io::Rgb c) { return std::array<std::uint8_t, 3>{c.r, c.g, c.b}; };
   // Pixel (0, 0) is covered twice: its border is the overlap mark.
   EXPECT_EQ(png->at(0 * 16 + 1, 0 * 16 + 8), rgb(rastrules::io::kOverlapMark));
-  EXPECT_EQ(png->at(0 * 16 + 14, 0 * 16 + 8), rgb(rastrules::io::kOverlapMark));
+  EXPECT_EQ(png->at(0 * 16 + 15, 0 * 16 + 8), rgb(rastrules::io::kOverlapMark));
   // Pixel (2, 1) is not covered: background.
   EXPECT_EQ(png->at(2 * 16 + 4, 1 * 16 + 4), rgb(rastrules::io::kBackground));
 }
@@ -181,6 +181,22 @@ TEST(CliRender, UnwritableOutputIsAnErrorAndLeavesNothing) {
   EXPECT_EQ(r.status, 2);
   ASSERT_EQ(r.err_lines().size(), 1u) << r.err;
   EXPECT_NE(r.err.find("cannot create"), std::string::npos) << r.err;
+}
+
+}  // namespace
+
+namespace {
+
+TEST(CliRender, OutputsThatAreNotRegularFilesAreWrittenInPlace) {
+  // A symbolic link (like /dev/null or a pipe) must not be replaced by a renamed temporary file.
+  const TempDir dir;
+  const auto scene = dir.write("scene.json", kSplitSquare);
+  const auto real = dir.write("real.json", "");
+  std::filesystem::create_symlink(real, dir / "link.json");
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "link.json").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.json"));
+  EXPECT_EQ(read_file(real), kSplitSquareFragments);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
+#include <stdexcept>
 #include <string>
 
 #include "rastrules/scene.hpp"
@@ -55,6 +57,12 @@ constexpr CullCase kCullCases[] = {
   {Winding::kZeroArea,         CullMode::kFront, FrontFace::kCounterClockwise, false, TriangleStatus::kDegenerate},
 };
 // clang-format on
+
+// Names the case in gtest output instead of dumping its bytes.
+void PrintTo(const CullCase& c, std::ostream* os) {
+  *os << "winding " << static_cast<int>(c.winding) << ", cull " << to_string(c.cull) << ", front "
+      << to_string(c.front);
+}
 
 class TriCullMode : public ::testing::TestWithParam<CullCase> {};
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <numeric>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,9 @@ const ConventionCase kCases[] = {
   {"CounterClockwiseOnLeftEdge", {{{0, 0}, {0, 4}, {4, 0}}},         {0, 1.5},    true,  false, true,  false},
 };
 // clang-format on
+
+// Names the case in gtest output instead of dumping its bytes.
+void PrintTo(const ConventionCase& c, std::ostream* os) { *os << c.name; }
 
 class TriFillConvention : public ::testing::TestWithParam<ConventionCase> {};
 

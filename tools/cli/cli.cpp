@@ -88,6 +88,7 @@ void OutputFile::discard() {
   if (is_stdout_ || file_ == nullptr) return;
   std::fclose(file_);
   file_ = nullptr;
+  if (is_in_place_) return;
   std::error_code ec;
   std::filesystem::remove(temp_path_, ec);
 }
@@ -97,6 +98,16 @@ std::optional<std::string> OutputFile::open(const std::string& path) {
   if (path == "-") {
     is_stdout_ = true;
     file_ = stdout;
+    return std::nullopt;
+  }
+  // Devices, pipes and symbolic links (/dev/null, /dev/stdout, a FIFO) are written in place:
+  // renaming a temporary file over them would replace them.
+  std::error_code ec;
+  const auto link = std::filesystem::symlink_status(path, ec);
+  if (std::filesystem::exists(link) && !std::filesystem::is_regular_file(link)) {
+    is_in_place_ = true;
+    file_ = std::fopen(path.c_str(), "wb");
+    if (file_ == nullptr) return path + ": cannot open: " + std::strerror(errno);
     return std::nullopt;
   }
   temp_path_ = path + ".tmp-" + std::to_string(::getpid());
@@ -113,6 +124,10 @@ std::optional<std::string> OutputFile::commit() {
   const bool write_failed = std::ferror(file_) != 0;
   const bool close_failed = std::fclose(file_) != 0;
   file_ = nullptr;
+  if (is_in_place_) {
+    if (write_failed || close_failed) return path_ + ": write failed";
+    return std::nullopt;
+  }
   std::error_code ec;
   if (write_failed || close_failed) {
     std::filesystem::remove(temp_path_, ec);

@@ -44,7 +44,8 @@ struct LoadedScene {
 std::optional<LoadedScene> load_scene(const std::string& path);
 
 // An output file written under a temporary name and renamed into place by commit(), so that
-// a failed run leaves no output file; "-" writes to standard output.
+// a failed run leaves no output file; "-" writes to standard output; an existing path that is
+// not a regular file (a device such as /dev/null, a pipe, a symbolic link) is written in place.
 class OutputFile {
  public:
   OutputFile() = default;
@@ -65,6 +66,7 @@ class OutputFile {
   std::string temp_path_;
   std::FILE* file_ = nullptr;
   bool is_stdout_ = false;
+  bool is_in_place_ = false;  // not a regular file: written directly, never renamed
 };
 
 // Parses a decimal integer in [lo, hi]; nullopt when the text is anything else.

@@ -115,8 +115,9 @@ int run_render(const Args& args) {
   if (png_path) {
     if (auto err = png_file.commit()) {
       // No partial result: the fragment list goes too.
-      if (fragments_path && *fragments_path != "-") {
-        std::error_code ec;
+      std::error_code ec;
+      if (fragments_path && *fragments_path != "-" &&
+          std::filesystem::is_regular_file(std::filesystem::symlink_status(*fragments_path, ec))) {
         std::filesystem::remove(*fragments_path, ec);
       }
       return error(*err);

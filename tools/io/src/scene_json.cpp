@@ -463,6 +463,8 @@ std::optional<float> decimal_to_float32(std::string_view text) {
 std::string format_float(float v) {
   if (std::isnan(v)) return "NaN";
   if (std::isinf(v)) return v > 0 ? "Infinity" : "-Infinity";
+  // "-0" would read back as the integer 0, that is +0.0; "-0.0" is a float and keeps the sign.
+  if (v == 0.0f && std::signbit(v)) return "-0.0";
   std::array<char, 64> buf{};
   const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
   return std::string(buf.data(), r.ptr);

@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: MIT
+// Self-check: every proof obligation can fail. Runs the same obligation templates as the
+// proofs (fixed/*.hpp, tri/*.hpp) against deliberately broken kernel models, each derived
+// from KernelModel with one member replaced, and passes only if every mutant is REFUTED (with
+// a counterexample) by each obligation listed for it. A mutant that survives means a proof
+// that cannot see that kind of bug.
+// rule: FIX.BUDGET.EDGE_VALUE, FIX.BIAS.FORM, FIX.STEP.INCREMENTAL, TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION, TRI.SHARED_EDGE.EXACTLY_ONCE, TRI.DEGENERATE.ZERO_AREA
+// Assumes: SNAP.VERTEX.RANGE
+// Expected: every mutant REFUTED; exit status 0 iff so.
+
+#include <cstdint>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "fixed/edge_value_no_overflow.hpp"
+#include "support/kernel_model.hpp"
+#include "support/prover.hpp"
+#include "support/sym.hpp"
+#include "tri/bias_form.hpp"
+#include "tri/degenerate_covers_nothing.hpp"
+#include "tri/incremental_step.hpp"
+#include "tri/shared_edge_exactly_once.hpp"
+#include "tri/top_left_matches_spec.hpp"
+
+namespace rastrules::proofs {
+namespace {
+
+// The top rule read with y up: horizontal edges running in -x (interior above) count as top.
+struct TopRuleYUp : KernelModel {
+  static constexpr const char* kName = "top rule with y up (horizontal edges running -x are top)";
+  template <class S>
+  static auto is_top_edge(const Point<S>& a, const Point<S>& b) {
+    return (b.y == a.y) && (b.x < a.x);
+  }
+  template <bool TopInclusive, bool LeftInclusive, class S>
+  static auto is_inclusive_edge(const Point<S>& a, const Point<S>& b) {
+    return KernelModel::is_inclusive_edge<!TopInclusive, LeftInclusive>(a, b);
+  }
+};
+
+// The left rule with the interior on the wrong side: edges running down the screen are left.
+struct LeftRuleMirrored : KernelModel {
+  static constexpr const char* kName = "left rule mirrored (edges running +y are left)";
+  template <class S>
+  static auto is_left_edge(const Point<S>& a, const Point<S>& b) {
+    return b.y > a.y;
+  }
+  template <bool TopInclusive, bool LeftInclusive, class S>
+  static auto is_inclusive_edge(const Point<S>& a, const Point<S>& b) {
+    return KernelModel::is_inclusive_edge<TopInclusive, !LeftInclusive>(a, b);
+  }
+};
+
+// Every horizontal edge inclusive, whatever its direction.
+struct HorizontalAlwaysInclusive : KernelModel {
+  static constexpr const char* kName = "horizontal edges always inclusive";
+  template <bool TopInclusive, bool LeftInclusive, class S>
+  static auto is_inclusive_edge(const Point<S>& a, const Point<S>& b) {
+    const auto horizontal = (b.y == a.y);
+    const auto v_ok = LeftInclusive ? (b.y < a.y) : (b.y > a.y);
+    return horizontal || (!horizontal && v_ok);
+  }
+};
+
+// The two biases exchanged.
+struct BiasSwapped : KernelModel {
+  static constexpr const char* kName = "bias swapped (-1 for inclusive edges, 0 otherwise)";
+  template <class S>
+  static S edge_bias(bool inclusive) {
+    return inclusive ? S(-1) : S(0);
+  }
+};
+
+// A 32-bit accumulator, as a SIMD lane might use.
+struct Int32Accumulator : KernelModel {
+  static constexpr const char* kName = "int32_t accumulator";
+  using Acc = Sym<std::int32_t>;
+};
+
+// A vertex range of 2^31 raw units each side (instead of SNAP.VERTEX.RANGE's 2^23).
+struct RangeTooWide : KernelModel {
+  static constexpr const char* kName = "vertex range [-2^31, 2^31)";
+  static constexpr std::int64_t kMinRaw = -(std::int64_t{1} << 31);
+  static constexpr std::int64_t kMaxRaw = (std::int64_t{1} << 31) - 1;
+};
+
+// The x step with the wrong sign.
+struct StepXSignWrong : KernelModel {
+  static constexpr const char* kName = "edge_step_x with the wrong sign";
+  template <class S>
+  static S edge_step_x(const Point<S>& a, const Point<S>& b, const S& one) {
+    return (b.y - a.y) * one;
+  }
+};
+
+// The y step without the pixel scale.
+struct StepYUnscaled : KernelModel {
+  static constexpr const char* kName = "edge_step_y not scaled by one pixel";
+  template <class S>
+  static S edge_step_y(const Point<S>& a, const Point<S>& b, const S& one) {
+    (void)one;
+    return b.x - a.x;
+  }
+};
+
+// No winding normalisation: counter-clockwise triangles are tested as given.
+struct NoNormalisation : KernelModel {
+  static constexpr const char* kName = "no winding normalisation";
+  template <class S>
+  static SymBool is_clockwise(const Triangle<S>&) {
+    return SymBool(true);
+  }
+};
+
+// Samples on an edge never inside (the fill rule ignored).
+struct TiesNeverInside : KernelModel {
+  static constexpr const char* kName = "samples on an edge never inside";
+  template <class S>
+  static SymBool inside(const S& e, const SymBool&) {
+    return e > S(0);
+  }
+};
+
+struct Run {
+  std::string obligation;
+  std::function<void(Prover&)> prove;
+  std::vector<Constant> constants;
+};
+
+template <class F>
+Run run_edge_value_no_overflow() {
+  std::vector<Constant> k = F::constants();
+  k.push_back({"model kMinRaw", F::kMinRaw, Unit::kCoordRaw});
+  k.push_back({"model kMaxRaw", F::kMaxRaw, Unit::kCoordRaw});
+  return {"fixed/edge_value_no_overflow", prove_edge_value_no_overflow<F>, k};
+}
+template <class F>
+Run run_top_left_matches_spec() {
+  return {"tri/top_left_matches_spec", prove_top_left_matches_spec<F>, F::constants()};
+}
+template <class F>
+Run run_shared_edge_exactly_once() {
+  return {"tri/shared_edge_exactly_once", prove_shared_edge_exactly_once<F>, F::constants()};
+}
+template <class F>
+Run run_bias_form() {
+  return {"tri/bias_form", prove_bias_form<F>, F::constants()};
+}
+template <class F>
+Run run_incremental_step() {
+  return {"tri/incremental_step", prove_incremental_step<F>, F::constants()};
+}
+template <class F>
+Run run_degenerate_covers_nothing() {
+  return {"tri/degenerate_covers_nothing", prove_degenerate_covers_nothing<F>, F::constants()};
+}
+
+struct Mutant {
+  std::string name;
+  std::vector<Run> must_refute;
+};
+
+template <class F>
+Mutant mutant(std::vector<Run> runs) {
+  return Mutant{F::kName, std::move(runs)};
+}
+
+}  // namespace
+}  // namespace rastrules::proofs
+
+int main() {
+  using namespace rastrules::proofs;
+  const std::vector<Mutant> mutants = {
+      mutant<TopRuleYUp>({run_top_left_matches_spec<TopRuleYUp>()}),
+      mutant<LeftRuleMirrored>({run_top_left_matches_spec<LeftRuleMirrored>()}),
+      mutant<HorizontalAlwaysInclusive>(
+          {run_top_left_matches_spec<HorizontalAlwaysInclusive>(),
+           run_shared_edge_exactly_once<HorizontalAlwaysInclusive>(),
+           run_degenerate_covers_nothing<HorizontalAlwaysInclusive>()}),
+      mutant<BiasSwapped>({run_bias_form<BiasSwapped>()}),
+      mutant<Int32Accumulator>({run_edge_value_no_overflow<Int32Accumulator>(),
+                                run_incremental_step<Int32Accumulator>()}),
+      mutant<RangeTooWide>({run_edge_value_no_overflow<RangeTooWide>()}),
+      mutant<StepXSignWrong>({run_incremental_step<StepXSignWrong>()}),
+      mutant<StepYUnscaled>({run_incremental_step<StepYUnscaled>()}),
+      mutant<NoNormalisation>({run_shared_edge_exactly_once<NoNormalisation>()}),
+      mutant<TiesNeverInside>({run_shared_edge_exactly_once<TiesNeverInside>()}),
+  };
+
+  std::vector<std::string> summary;
+  int survived = 0;
+  for (const Mutant& m : mutants) {
+    for (const Run& r : m.must_refute) {
+      std::cout << "\n=== mutant: " << m.name << " / " << r.obligation << "\n";
+      Domain dom;
+      Prover pr(dom, r.obligation + " [mutant: " + m.name + "]", "(self-check)",
+                {"SNAP.VERTEX.RANGE"}, r.constants);
+      r.prove(pr);
+      int refuted = 0;
+      for (const auto& [theorem, status] : pr.results()) refuted += status == Status::kRefuted;
+      const bool killed = refuted > 0;
+      survived += killed ? 0 : 1;
+      summary.push_back(std::string(killed ? "REFUTED  " : "SURVIVED ") + m.name + " / " +
+                        r.obligation + " (" + std::to_string(refuted) + " of " +
+                        std::to_string(pr.results().size()) + " theorems refuted)");
+    }
+  }
+  std::cout << "\nmutation self-check:\n";
+  for (const std::string& line : summary) std::cout << "  " << line << "\n";
+  std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " mutant runs refuted, "
+            << survived << " survived\n";
+  return survived == 0 ? 0 : 1;
+}

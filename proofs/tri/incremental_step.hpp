@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+// Obligation FIX.STEP.INCREMENTAL, as a template over a kernel model. Used by
+// incremental_step.cpp and selftest/mutants.cpp.
+
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "support/kernel_model.hpp"
+#include "support/prover.hpp"
+
+namespace rastrules::proofs {
+
+// For all a, b, p in the vertex range with the stepped sample also in range, and
+// one = kSubpixelOne (one pixel):
+//   edge_value(a, b, p + (one, 0)) == edge_value(a, b, p) + edge_step_x(a, b, one),
+//   edge_value(a, b, p + (0, one)) == edge_value(a, b, p) + edge_step_y(a, b, one),
+// and, as the traversal accumulates it (walk.hpp: e = E(p) + bias; e += step_x), for both
+// biases: (E(p) + edge_bias(f)) + edge_step_x == E(p + (one, 0)) + edge_bias(f);
+// with every intermediate fitting the accumulator type.
+// rule: FIX.STEP.INCREMENTAL
+template <class F>
+void prove_incremental_step(Prover& pr) {
+  using S = typename F::Acc;
+  Domain& dom = pr.domain();
+  const Point<S> a = point_var<S>(dom, "a");
+  const Point<S> b = point_var<S>(dom, "b");
+  const Point<S> p = point_var<S>(dom, "p");
+  const S one(F::kOne);
+  const Point<S> px{p.x + one, p.y};
+  const Point<S> py{p.x, p.y + one};
+  // rule: SNAP.VERTEX.RANGE
+  const std::vector<z3::expr> base = {in_vertex_range<F>(a), in_vertex_range<F>(b),
+                                      in_vertex_range<F>(p)};
+  std::vector<z3::expr> hyps_x = base;
+  hyps_x.push_back(in_vertex_range<F>(px));
+  std::vector<z3::expr> hyps_y = base;
+  hyps_y.push_back(in_vertex_range<F>(py));
+
+  {
+    const std::size_t mark = dom.mark();
+    const S direct = F::edge_value(a, b, px);
+    const S stepped = F::edge_value(a, b, p) + F::edge_step_x(a, b, one);
+    pr.watch("E(p + (1 px, 0))", direct.expr(), Unit::kEdgeRaw);
+    pr.watch("E(p) + step_x", stepped.expr(), Unit::kEdgeRaw);
+    pr.prove("edge_value(p + (1 px, 0)) == edge_value(p) + edge_step_x", hyps_x,
+             direct.expr() == stepped.expr(), dom.obligations_since(mark));
+  }
+  {
+    const std::size_t mark = dom.mark();
+    const S direct = F::edge_value(a, b, py);
+    const S stepped = F::edge_value(a, b, p) + F::edge_step_y(a, b, one);
+    pr.watch("E(p + (0, 1 px))", direct.expr(), Unit::kEdgeRaw);
+    pr.watch("E(p) + step_y", stepped.expr(), Unit::kEdgeRaw);
+    pr.prove("edge_value(p + (0, 1 px)) == edge_value(p) + edge_step_y", hyps_y,
+             direct.expr() == stepped.expr(), dom.obligations_since(mark));
+  }
+  for (const bool inclusive : {true, false}) {
+    const std::size_t mark = dom.mark();
+    const S direct = F::edge_value(a, b, px) + F::template edge_bias<S>(inclusive);
+    const S accumulated =
+        (F::edge_value(a, b, p) + F::template edge_bias<S>(inclusive)) + F::edge_step_x(a, b, one);
+    pr.watch("E(p + (1 px, 0)) + bias", direct.expr(), Unit::kEdgeRaw);
+    pr.watch("(E(p) + bias) + step_x", accumulated.expr(), Unit::kEdgeRaw);
+    pr.prove(std::string("walk accumulator: (E(p) + edge_bias(") + (inclusive ? "true" : "false") +
+                 ")) + edge_step_x == E(p + (1 px, 0)) + edge_bias",
+             hyps_x, direct.expr() == accumulated.expr(), dom.obligations_since(mark));
+  }
+}
+
+}  // namespace rastrules::proofs
