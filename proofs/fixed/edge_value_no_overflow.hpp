@@ -18,8 +18,7 @@ namespace rastrules::proofs {
 //   E + edge_bias(true) and E + edge_bias(false), as the traversal adds them (walk.hpp);
 //   edge_step_x(a, b, kSubpixelOne) and edge_step_y(a, b, kSubpixelOne).
 // rule: FIX.BUDGET.EDGE_VALUE
-template <class F>
-void prove_edge_value_no_overflow(Prover& pr) {
+template <class F> void prove_edge_value_no_overflow(Prover& pr) {
   using S = typename F::Acc;
   Domain& dom = pr.domain();
   const Point<S> a = point_var<S>(dom, "a");
@@ -34,8 +33,8 @@ void prove_edge_value_no_overflow(Prover& pr) {
     const std::size_t mark = dom.mark();
     const S e = F::edge_value(a, b, p);
     pr.watch("E_ab(p)", e.expr(), Unit::kEdgeRaw);
-    pr.prove("edge_value(a, b, p): every intermediate fits " + type, hyps,
-             dom.ctx().bool_val(true), dom.obligations_since(mark));
+    pr.prove("edge_value(a, b, p): every intermediate fits " + type, hyps, dom.ctx().bool_val(true),
+             dom.obligations_since(mark));
   }
   {
     const std::size_t mark = dom.mark();
@@ -66,4 +65,4 @@ void prove_edge_value_no_overflow(Prover& pr) {
   }
 }
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs

@@ -4,8 +4,8 @@
 // from KernelModel with one member replaced, and passes only if every mutant is REFUTED (with
 // a counterexample) by each obligation listed for it. A mutant that survives means a proof
 // that cannot see that kind of bug.
-// rule: FIX.BUDGET.EDGE_VALUE, FIX.BIAS.FORM, FIX.STEP.INCREMENTAL, TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION, TRI.SHARED_EDGE.EXACTLY_ONCE, TRI.DEGENERATE.ZERO_AREA
-// Assumes: SNAP.VERTEX.RANGE
+// Cites no rule: it is evidence about the proofs, not about the kernel.
+// Assumes: SNAP.VERTEX.RANGE (as the obligations do)
 // Expected: every mutant REFUTED; exit status 0 iff so.
 
 #include <cstdint>
@@ -30,8 +30,7 @@ namespace {
 // The top rule read with y up: horizontal edges running in -x (interior above) count as top.
 struct TopRuleYUp : KernelModel {
   static constexpr const char* kName = "top rule with y up (horizontal edges running -x are top)";
-  template <class S>
-  static auto is_top_edge(const Point<S>& a, const Point<S>& b) {
+  template <class S> static auto is_top_edge(const Point<S>& a, const Point<S>& b) {
     return (b.y == a.y) && (b.x < a.x);
   }
   template <bool TopInclusive, bool LeftInclusive, class S>
@@ -43,8 +42,7 @@ struct TopRuleYUp : KernelModel {
 // The left rule with the interior on the wrong side: edges running down the screen are left.
 struct LeftRuleMirrored : KernelModel {
   static constexpr const char* kName = "left rule mirrored (edges running +y are left)";
-  template <class S>
-  static auto is_left_edge(const Point<S>& a, const Point<S>& b) {
+  template <class S> static auto is_left_edge(const Point<S>& a, const Point<S>& b) {
     return b.y > a.y;
   }
   template <bool TopInclusive, bool LeftInclusive, class S>
@@ -67,10 +65,7 @@ struct HorizontalAlwaysInclusive : KernelModel {
 // The two biases exchanged.
 struct BiasSwapped : KernelModel {
   static constexpr const char* kName = "bias swapped (-1 for inclusive edges, 0 otherwise)";
-  template <class S>
-  static S edge_bias(bool inclusive) {
-    return inclusive ? S(-1) : S(0);
-  }
+  template <class S> static S edge_bias(bool inclusive) { return inclusive ? S(-1) : S(0); }
 };
 
 // A 32-bit accumulator, as a SIMD lane might use.
@@ -89,8 +84,7 @@ struct RangeTooWide : KernelModel {
 // The x step with the wrong sign.
 struct StepXSignWrong : KernelModel {
   static constexpr const char* kName = "edge_step_x with the wrong sign";
-  template <class S>
-  static S edge_step_x(const Point<S>& a, const Point<S>& b, const S& one) {
+  template <class S> static S edge_step_x(const Point<S>& a, const Point<S>& b, const S& one) {
     return (b.y - a.y) * one;
   }
 };
@@ -98,8 +92,7 @@ struct StepXSignWrong : KernelModel {
 // The y step without the pixel scale.
 struct StepYUnscaled : KernelModel {
   static constexpr const char* kName = "edge_step_y not scaled by one pixel";
-  template <class S>
-  static S edge_step_y(const Point<S>& a, const Point<S>& b, const S& one) {
+  template <class S> static S edge_step_y(const Point<S>& a, const Point<S>& b, const S& one) {
     (void)one;
     return b.x - a.x;
   }
@@ -108,19 +101,13 @@ struct StepYUnscaled : KernelModel {
 // No winding normalisation: counter-clockwise triangles are tested as given.
 struct NoNormalisation : KernelModel {
   static constexpr const char* kName = "no winding normalisation";
-  template <class S>
-  static SymBool is_clockwise(const Triangle<S>&) {
-    return SymBool(true);
-  }
+  template <class S> static SymBool is_clockwise(const Triangle<S>&) { return SymBool(true); }
 };
 
 // Samples on an edge never inside (the fill rule ignored).
 struct TiesNeverInside : KernelModel {
   static constexpr const char* kName = "samples on an edge never inside";
-  template <class S>
-  static SymBool inside(const S& e, const SymBool&) {
-    return e > S(0);
-  }
+  template <class S> static SymBool inside(const S& e, const SymBool&) { return e > S(0); }
 };
 
 struct Run {
@@ -129,31 +116,25 @@ struct Run {
   std::vector<Constant> constants;
 };
 
-template <class F>
-Run run_edge_value_no_overflow() {
+template <class F> Run run_edge_value_no_overflow() {
   std::vector<Constant> k = F::constants();
   k.push_back({"model kMinRaw", F::kMinRaw, Unit::kCoordRaw});
   k.push_back({"model kMaxRaw", F::kMaxRaw, Unit::kCoordRaw});
   return {"fixed/edge_value_no_overflow", prove_edge_value_no_overflow<F>, k};
 }
-template <class F>
-Run run_top_left_matches_spec() {
+template <class F> Run run_top_left_matches_spec() {
   return {"tri/top_left_matches_spec", prove_top_left_matches_spec<F>, F::constants()};
 }
-template <class F>
-Run run_shared_edge_exactly_once() {
+template <class F> Run run_shared_edge_exactly_once() {
   return {"tri/shared_edge_exactly_once", prove_shared_edge_exactly_once<F>, F::constants()};
 }
-template <class F>
-Run run_bias_form() {
+template <class F> Run run_bias_form() {
   return {"tri/bias_form", prove_bias_form<F>, F::constants()};
 }
-template <class F>
-Run run_incremental_step() {
+template <class F> Run run_incremental_step() {
   return {"tri/incremental_step", prove_incremental_step<F>, F::constants()};
 }
-template <class F>
-Run run_degenerate_covers_nothing() {
+template <class F> Run run_degenerate_covers_nothing() {
   return {"tri/degenerate_covers_nothing", prove_degenerate_covers_nothing<F>, F::constants()};
 }
 
@@ -162,13 +143,12 @@ struct Mutant {
   std::vector<Run> must_refute;
 };
 
-template <class F>
-Mutant mutant(std::vector<Run> runs) {
+template <class F> Mutant mutant(std::vector<Run> runs) {
   return Mutant{F::kName, std::move(runs)};
 }
 
-}  // namespace
-}  // namespace rastrules::proofs
+} // namespace
+} // namespace rastrules::proofs
 
 int main() {
   using namespace rastrules::proofs;
@@ -199,7 +179,8 @@ int main() {
                 {"SNAP.VERTEX.RANGE"}, r.constants);
       r.prove(pr);
       int refuted = 0;
-      for (const auto& [theorem, status] : pr.results()) refuted += status == Status::kRefuted;
+      for (const auto& [theorem, status] : pr.results())
+        refuted += status == Status::kRefuted;
       const bool killed = refuted > 0;
       survived += killed ? 0 : 1;
       summary.push_back(std::string(killed ? "REFUTED  " : "SURVIVED ") + m.name + " / " +
@@ -208,7 +189,8 @@ int main() {
     }
   }
   std::cout << "\nmutation self-check:\n";
-  for (const std::string& line : summary) std::cout << "  " << line << "\n";
+  for (const std::string& line : summary)
+    std::cout << "  " << line << "\n";
   std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " mutant runs refuted, "
             << survived << " survived\n";
   return survived == 0 ? 0 : 1;

@@ -25,22 +25,21 @@
 namespace rastrules::proofs {
 
 // A point in raw 16.8 units, with coordinates of symbolic type S.
-template <class S>
-struct Point {
+template <class S> struct Point {
   S x;
   S y;
 };
 
-template <class S>
-using Triangle = std::array<Point<S>, 3>;
+template <class S> using Triangle = std::array<Point<S>, 3>;
 
 // Returns a point with fresh coordinates "<name>x", "<name>y".
-template <class S>
-Point<S> point_var(Domain& dom, const std::string& name) {
+template <class S> Point<S> point_var(Domain& dom, const std::string& name) {
   return Point<S>{dom.var<typename S::rep>(name + "x", Unit::kCoordRaw),
                   dom.var<typename S::rep>(name + "y", Unit::kCoordRaw)};
 }
 
+// Obligations call the model only as F::member (never a member from inside another member,
+// except is_clockwise below), so a mutant that hides one member changes every use of it.
 struct KernelModel {
   static constexpr const char* kName = "kernel";
 
@@ -56,43 +55,33 @@ struct KernelModel {
 
   static std::vector<Constant> constants() { return kernel_constants(); }
 
-  template <class S>
-  static S edge_value(const Point<S>& a, const Point<S>& b, const Point<S>& p) {
+  template <class S> static S edge_value(const Point<S>& a, const Point<S>& b, const Point<S>& p) {
     return formula::edge_value<S>(a.x, a.y, b.x, b.y, p.x, p.y);
   }
-  template <class S>
-  static S twice_signed_area(const Triangle<S>& t) {
+  template <class S> static S twice_signed_area(const Triangle<S>& t) {
     return formula::twice_signed_area<S>(t[0].x, t[0].y, t[1].x, t[1].y, t[2].x, t[2].y);
   }
-  template <class S>
-  static auto is_top_edge(const Point<S>& a, const Point<S>& b) {
+  template <class S> static auto is_top_edge(const Point<S>& a, const Point<S>& b) {
     return formula::is_top_edge<S>(a.x, a.y, b.x, b.y);
   }
-  template <class S>
-  static auto is_left_edge(const Point<S>& a, const Point<S>& b) {
+  template <class S> static auto is_left_edge(const Point<S>& a, const Point<S>& b) {
     return formula::is_left_edge<S>(a.x, a.y, b.x, b.y);
   }
   template <bool TopInclusive, bool LeftInclusive, class S>
   static auto is_inclusive_edge(const Point<S>& a, const Point<S>& b) {
     return formula::is_inclusive_edge<TopInclusive, LeftInclusive, S>(a.x, a.y, b.x, b.y);
   }
-  template <class S>
-  static S edge_bias(bool inclusive) {
-    return formula::edge_bias<S>(inclusive);
-  }
-  template <class S>
-  static S edge_step_x(const Point<S>& a, const Point<S>& b, const S& one) {
+  template <class S> static S edge_bias(bool inclusive) { return formula::edge_bias<S>(inclusive); }
+  template <class S> static S edge_step_x(const Point<S>& a, const Point<S>& b, const S& one) {
     return formula::edge_step_x<S>(a.y, b.y, one);
   }
-  template <class S>
-  static S edge_step_y(const Point<S>& a, const Point<S>& b, const S& one) {
+  template <class S> static S edge_step_y(const Point<S>& a, const Point<S>& b, const S& one) {
     return formula::edge_step_y<S>(a.x, b.x, one);
   }
 
   // Mirrors rastrules::inside (triangle.hpp): E > 0, or E == 0 and the edge is inclusive.
   // rule: TRI.FILL.TOP_LEFT
-  template <class S>
-  static SymBool inside(const S& e, const SymBool& inclusive) {
+  template <class S> static SymBool inside(const S& e, const SymBool& inclusive) {
     const S zero(0);
     return e > zero || (e == zero && inclusive);
   }
@@ -100,8 +89,7 @@ struct KernelModel {
   // Mirrors setup_triangle (triangle.hpp): `t.clockwise = t.twice_area > 0`, and a triangle
   // that is not clockwise is normalised to (v0, v2, v1) (see covers_normalised below).
   // rule: TRI.ORIENT.NORMALISE
-  template <class S>
-  static SymBool is_clockwise(const Triangle<S>& v) {
+  template <class S> static SymBool is_clockwise(const Triangle<S>& v) {
     return twice_signed_area(v) > S(0);
   }
 };
@@ -137,8 +125,7 @@ SymBool covers_normalised(const Triangle<S>& v, const Point<S>& p) {
 
 // Calls fn.template operator()<TopInclusive, LeftInclusive>(name) for the four fill
 // conventions of TRI.FILL.CONVENTION, in the spec's order.
-template <class Fn>
-void for_each_convention(Fn&& fn) {
+template <class Fn> void for_each_convention(Fn&& fn) {
   fn.template operator()<true, true>("top-left");
   fn.template operator()<false, true>("bottom-left");
   fn.template operator()<true, false>("top-right");
@@ -146,12 +133,11 @@ void for_each_convention(Fn&& fn) {
 }
 
 // Returns "p lies in the supported vertex range" (SNAP.VERTEX.RANGE) for model F.
-template <class F, class S>
-z3::expr in_vertex_range(const Point<S>& p) {
+template <class F, class S> z3::expr in_vertex_range(const Point<S>& p) {
   z3::context& ctx = p.x.expr().ctx();
   const z3::expr lo = ctx.int_val(F::kMinRaw);
   const z3::expr hi = ctx.int_val(F::kMaxRaw);
   return lo <= p.x.expr() && p.x.expr() <= hi && lo <= p.y.expr() && p.y.expr() <= hi;
 }
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs

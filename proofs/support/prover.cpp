@@ -24,7 +24,7 @@ namespace {
 // Interrupts the context's running check after `seconds` unless disarmed first (Z3's own
 // timeout parameter is not honoured by every tactic, see proofs-notes pitfall 3).
 class Watchdog {
- public:
+public:
   Watchdog(z3::context& ctx, double seconds)
       : thread_([this, &ctx, seconds] {
           std::unique_lock<std::mutex> lock(mutex_);
@@ -44,7 +44,7 @@ class Watchdog {
   Watchdog(const Watchdog&) = delete;
   Watchdog& operator=(const Watchdog&) = delete;
 
- private:
+private:
   std::mutex mutex_;
   std::condition_variable cv_;
   bool done_ = false;
@@ -80,7 +80,8 @@ CheckOutcome check(z3::solver& s, z3::context& ctx) {
     out.reason = e.msg();
     return out;
   }
-  if (out.result == z3::unknown) out.reason = s.reason_unknown();
+  if (out.result == z3::unknown)
+    out.reason = s.reason_unknown();
   return out;
 }
 
@@ -88,23 +89,29 @@ std::string fixed_decimal(z3::context& ctx, const z3::expr& raw_value, int frac_
                           const char* unit) {
   const z3::expr scale = ctx.real_val(static_cast<std::int64_t>(std::int64_t{1} << frac_bits));
   const z3::expr real = (z3::to_real(raw_value) / scale).simplify();
-  if (!real.is_numeral()) return "?";
+  if (!real.is_numeral())
+    return "?";
   // frac_bits decimal digits represent raw / 2^frac_bits exactly.
   std::string s = real.get_decimal_string(frac_bits);
   if (s.find('.') != std::string::npos) {
-    while (!s.empty() && s.back() == '0') s.pop_back();
-    if (!s.empty() && s.back() == '.') s.pop_back();
+    while (!s.empty() && s.back() == '0')
+      s.pop_back();
+    if (!s.empty() && s.back() == '.')
+      s.pop_back();
   }
   return s + " " + unit;
 }
 
-}  // namespace
+} // namespace
 
 const char* to_string(Status s) {
   switch (s) {
-    case Status::kProved: return "PROVED";
-    case Status::kRefuted: return "REFUTED";
-    case Status::kUnknown: return "UNKNOWN";
+  case Status::kProved:
+    return "PROVED";
+  case Status::kRefuted:
+    return "REFUTED";
+  case Status::kUnknown:
+    return "UNKNOWN";
   }
   return "UNKNOWN";
 }
@@ -113,7 +120,8 @@ double query_timeout_seconds() {
   if (const char* env = std::getenv("RASTRULES_PROOF_TIMEOUT")) {
     char* end = nullptr;
     const double v = std::strtod(env, &end);
-    if (end != env && v > 0.0) return v;
+    if (end != env && v > 0.0)
+      return v;
   }
   return 30.0;
 }
@@ -137,20 +145,23 @@ std::string show_value(const z3::model& m, const z3::expr& e, Unit unit) {
   const z3::expr v = m.eval(e, true);
   z3::context& ctx = e.ctx();
   if (unit == Unit::kBool) {
-    if (v.is_true()) return "true";
-    if (v.is_false()) return "false";
+    if (v.is_true())
+      return "true";
+    if (v.is_false())
+      return "false";
     return v.to_string();
   }
   std::string raw;
-  if (!v.is_numeral(raw)) return v.to_string();
+  if (!v.is_numeral(raw))
+    return v.to_string();
   switch (unit) {
-    case Unit::kCoordRaw:
-      return raw + " raw [" + fixed_decimal(ctx, v, kSubpixelBits, "px") + "]";
-    case Unit::kEdgeRaw:
-      return raw + " raw [" + fixed_decimal(ctx, v, 2 * kSubpixelBits, "px^2") + "]";
-    case Unit::kInteger:
-    case Unit::kBool:
-      break;
+  case Unit::kCoordRaw:
+    return raw + " raw [" + fixed_decimal(ctx, v, kSubpixelBits, "px") + "]";
+  case Unit::kEdgeRaw:
+    return raw + " raw [" + fixed_decimal(ctx, v, 2 * kSubpixelBits, "px^2") + "]";
+  case Unit::kInteger:
+  case Unit::kBool:
+    break;
   }
   return raw;
 }
@@ -168,21 +179,22 @@ Prover::Prover(Domain& dom, std::string obligation, std::string rules,
     std::cout << "    " << c.name << " = ";
     const z3::expr v = ctx.int_val(c.value);
     switch (c.unit) {
-      case Unit::kCoordRaw:
-        std::cout << c.value << " raw [" << fixed_decimal(ctx, v, kSubpixelBits, "px") << "]";
-        break;
-      case Unit::kEdgeRaw:
-        std::cout << c.value << " raw [" << fixed_decimal(ctx, v, 2 * kSubpixelBits, "px^2") << "]";
-        break;
-      case Unit::kInteger:
-      case Unit::kBool:
-        std::cout << c.value;
-        break;
+    case Unit::kCoordRaw:
+      std::cout << c.value << " raw [" << fixed_decimal(ctx, v, kSubpixelBits, "px") << "]";
+      break;
+    case Unit::kEdgeRaw:
+      std::cout << c.value << " raw [" << fixed_decimal(ctx, v, 2 * kSubpixelBits, "px^2") << "]";
+      break;
+    case Unit::kInteger:
+    case Unit::kBool:
+      std::cout << c.value;
+      break;
     }
     std::cout << "\n";
   }
   std::cout << "  assumes:";
-  for (const std::string& a : assumes) std::cout << " " << a;
+  for (const std::string& a : assumes)
+    std::cout << " " << a;
   std::cout << "\n";
   std::cout.flush();
 }
@@ -207,7 +219,8 @@ Status Prover::prove(const std::string& name, const std::vector<z3::expr>& hypot
 
   // 1. The hypotheses must be satisfiable, or the theorem would hold vacuously.
   z3::solver pre = make_solver(ctx);
-  for (const z3::expr& h : hypotheses) pre.add(h);
+  for (const z3::expr& h : hypotheses)
+    pre.add(h);
   const CheckOutcome sat_pre = check(pre, ctx);
   if (sat_pre.result == z3::unsat) {
     note = "hypotheses are unsatisfiable: the theorem would be vacuous";
@@ -216,9 +229,11 @@ Status Prover::prove(const std::string& name, const std::vector<z3::expr>& hypot
   } else {
     // 2. hypotheses AND NOT(goal AND obligations) must be unsatisfiable.
     z3::expr all = goal;
-    for (const Obligation& o : obligations) all = all && o.holds;
+    for (const Obligation& o : obligations)
+      all = all && o.holds;
     z3::solver s = make_solver(ctx);
-    for (const z3::expr& h : hypotheses) s.add(h);  // separately (proofs-notes pitfall 4)
+    for (const z3::expr& h : hypotheses)
+      s.add(h); // separately (proofs-notes pitfall 4)
     s.add(!all);
     const CheckOutcome r = check(s, ctx);
     if (r.result == z3::unsat) {
@@ -230,13 +245,15 @@ Status Prover::prove(const std::string& name, const std::vector<z3::expr>& hypot
       const z3::model m = s.get_model();
       cex.push_back("counterexample (raw fixed-point units, pixels in brackets):");
       for (const Watch& v : dom_.variables()) {
-        if (!m.has_interp(v.value.decl())) continue;
+        if (!m.has_interp(v.value.decl()))
+          continue;
         cex.push_back("  " + v.name + " = " + show_value(m, v.value, v.unit));
       }
       for (const Watch& w : watches) {
         cex.push_back("  " + w.name + " = " + show_value(m, w.value, w.unit));
       }
-      if (m.eval(goal, true).is_false()) cex.push_back("violated: the goal");
+      if (m.eval(goal, true).is_false())
+        cex.push_back("violated: the goal");
       for (const Obligation& o : obligations) {
         if (m.eval(o.holds, true).is_false()) {
           cex.push_back("violated: " + o.what + " (value " +
@@ -249,9 +266,11 @@ Status Prover::prove(const std::string& name, const std::vector<z3::expr>& hypot
   char time_buf[32];
   std::snprintf(time_buf, sizeof time_buf, "%.2f", seconds());
   std::cout << to_string(status) << " " << name << " (" << time_buf << " s)";
-  if (!note.empty()) std::cout << " -- " << note;
+  if (!note.empty())
+    std::cout << " -- " << note;
   std::cout << "\n";
-  for (const std::string& line : cex) std::cout << "    " << line << "\n";
+  for (const std::string& line : cex)
+    std::cout << "    " << line << "\n";
   std::cout.flush();
   results_.emplace_back(name, status);
   return status;
@@ -268,10 +287,11 @@ Status Prover::skip(const std::string& name, const std::string& reason) {
 int Prover::finish() {
   int passed = 0;
   int failed = 0;
-  for (const auto& r : results_) (r.second == Status::kProved ? passed : failed) += 1;
+  for (const auto& r : results_)
+    (r.second == Status::kProved ? passed : failed) += 1;
   std::cout << obligation_ << ": " << passed << " passed, " << failed << " failed\n";
   std::cout.flush();
   return (failed == 0 && passed > 0) ? 0 : 1;
 }
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs

@@ -45,7 +45,7 @@ struct Constant {
 [[nodiscard]] std::string show_value(const z3::model& m, const z3::expr& e, Unit unit);
 
 class Prover {
- public:
+public:
   // Prints the report header. `rules` is the rule list the proof cites, `assumes` the rule IDs
   // it takes as hypotheses.
   Prover(Domain& dom, std::string obligation, std::string rules, std::vector<std::string> assumes,
@@ -73,7 +73,7 @@ class Prover {
   // was PROVED (and at least one was run).
   int finish();
 
- private:
+private:
   Domain& dom_;
   std::string obligation_;
   std::vector<Watch> watches_;
@@ -83,4 +83,4 @@ class Prover {
 // Per-query time limit in seconds: RASTRULES_PROOF_TIMEOUT from the environment, else 30.
 [[nodiscard]] double query_timeout_seconds();
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs

@@ -27,17 +27,17 @@ namespace rastrules::proofs {
 
 // How a value is displayed in a counterexample.
 enum class Unit {
-  kCoordRaw,  // raw 16.8 position: also shown in pixels (raw / 2^kSubpixelBits)
-  kEdgeRaw,   // raw 32.16 edge value: also shown in pixel^2 (raw / 2^(2 kSubpixelBits))
-  kInteger,   // a plain integer
-  kBool,      // a Boolean
+  kCoordRaw, // raw 16.8 position: also shown in pixels (raw / 2^kSubpixelBits)
+  kEdgeRaw,  // raw 32.16 edge value: also shown in pixel^2 (raw / 2^(2 kSubpixelBits))
+  kInteger,  // a plain integer
+  kBool,     // a Boolean
 };
 
 // A condition the modelled C++ evaluation needs (for example "this product fits int64_t").
 struct Obligation {
-  std::string what;  // for example "((bx - ax) * (py - ay)) fits int64_t"
-  z3::expr value;    // the exact value that must fit
-  z3::expr holds;    // min(Rep) <= value <= max(Rep)
+  std::string what; // for example "((bx - ax) * (py - ay)) fits int64_t"
+  z3::expr value;   // the exact value that must fit
+  z3::expr holds;   // min(Rep) <= value <= max(Rep)
 };
 
 // A named term shown in counterexamples.
@@ -47,35 +47,40 @@ struct Watch {
   Unit unit;
 };
 
-template <std::signed_integral Rep>
-class Sym;
+template <std::signed_integral Rep> class Sym;
 
 // Returns the name of the C++ type Rep models, for reports.
-template <std::signed_integral Rep>
-constexpr const char* type_name() {
-  if constexpr (sizeof(Rep) == 1) return "int8_t";
-  else if constexpr (sizeof(Rep) == 2) return "int16_t";
-  else if constexpr (sizeof(Rep) == 4) return "int32_t";
-  else return "int64_t";
+template <std::signed_integral Rep> constexpr const char* type_name() {
+  if constexpr (sizeof(Rep) == 1)
+    return "int8_t";
+  else if constexpr (sizeof(Rep) == 2)
+    return "int16_t";
+  else if constexpr (sizeof(Rep) == 4)
+    return "int32_t";
+  else
+    return "int64_t";
 }
 
 // Owns the Z3 context, the obligation log and the variables of one proof run. Exactly one
 // Domain is active at a time (the most recently constructed live one); Sym's literal
 // constructor uses it, which is what lets `Num(0)` in formula templates work.
 class Domain {
- public:
+public:
   Domain() : previous_(active_) { active_ = this; }
   ~Domain() { active_ = previous_; }
   Domain(const Domain&) = delete;
   Domain& operator=(const Domain&) = delete;
 
-  [[nodiscard]] static Domain& active() { return *active_; }
+  [[nodiscard]] static Domain& active() {
+    if (active_ == nullptr)
+      throw std::logic_error("no active proofs::Domain");
+    return *active_;
+  }
   [[nodiscard]] z3::context& ctx() { return ctx_; }
 
-  // Returns a fresh integer variable (names must be unique within the Domain) modelling a value of type Rep (its range is NOT assumed;
-  // theorems state their input ranges as explicit hypotheses).
-  template <std::signed_integral Rep>
-  Sym<Rep> var(const std::string& name, Unit unit);
+  // Returns a fresh integer variable (names must be unique within the Domain) modelling a value of
+  // type Rep (its range is NOT assumed; theorems state their input ranges as explicit hypotheses).
+  template <std::signed_integral Rep> Sym<Rep> var(const std::string& name, Unit unit);
 
   // Returns a fresh Boolean variable.
   z3::expr bool_var(const std::string& name) {
@@ -100,12 +105,13 @@ class Domain {
 
   [[nodiscard]] const std::vector<Watch>& variables() const { return variables_; }
 
- private:
+private:
   // Variables with the same name would be the same Z3 constant, silently identifying two
   // quantities of a theorem: refuse.
   void dom_register(const std::string& name, const z3::expr& v, Unit unit) {
     for (const Watch& w : variables_) {
-      if (w.name == name) throw std::logic_error("proof variable declared twice: " + name);
+      if (w.name == name)
+        throw std::logic_error("proof variable declared twice: " + name);
     }
     variables_.push_back(Watch{name, v, unit});
   }
@@ -119,7 +125,7 @@ class Domain {
 
 // A symbolic Boolean: the result of comparing Sym values.
 class SymBool {
- public:
+public:
   explicit SymBool(z3::expr e) : e_(std::move(e)) {}
   // A constant, in the active Domain.
   explicit SymBool(bool b) : e_(Domain::active().ctx().bool_val(b)) {}
@@ -132,33 +138,37 @@ class SymBool {
   friend SymBool operator==(const SymBool& a, const SymBool& b) { return SymBool(a.e_ == b.e_); }
   friend SymBool operator!=(const SymBool& a, const SymBool& b) { return SymBool(a.e_ != b.e_); }
 
- private:
+private:
   z3::expr e_;
 };
 
 // A symbolic value of C++ type Rep (see the file comment).
-template <std::signed_integral Rep>
-class Sym {
- public:
+template <std::signed_integral Rep> class Sym {
+public:
   using rep = Rep;
 
   // A literal (for example the `Num(0)` and `Num(-1)` of formula::edge_bias).
   explicit Sym(std::int64_t literal)
-      : dom_(&Domain::active()),
-        e_(dom_->ctx().int_val(literal)),
-        text_(std::to_string(literal)) {
+      : dom_(&Domain::active()), e_(dom_->ctx().int_val(literal)), text_(std::to_string(literal)) {
     // A literal that does not fit Rep would not compile in the modelled C++; record it anyway.
     dom_->require_fits<Rep>(e_, text_);
   }
-  Sym(Domain& dom, z3::expr e, std::string text) : dom_(&dom), e_(std::move(e)), text_(std::move(text)) {}
+  Sym(Domain& dom, z3::expr e, std::string text)
+      : dom_(&dom), e_(std::move(e)), text_(std::move(text)) {}
 
   [[nodiscard]] const z3::expr& expr() const { return e_; }
   [[nodiscard]] const std::string& text() const { return text_; }
   [[nodiscard]] Domain& domain() const { return *dom_; }
 
-  friend Sym operator+(const Sym& a, const Sym& b) { return a.arith(a.e_ + b.e_, "(" + a.text_ + " + " + b.text_ + ")"); }
-  friend Sym operator-(const Sym& a, const Sym& b) { return a.arith(a.e_ - b.e_, "(" + a.text_ + " - " + b.text_ + ")"); }
-  friend Sym operator*(const Sym& a, const Sym& b) { return a.arith(a.e_ * b.e_, "(" + a.text_ + " * " + b.text_ + ")"); }
+  friend Sym operator+(const Sym& a, const Sym& b) {
+    return a.arith(a.e_ + b.e_, "(" + a.text_ + " + " + b.text_ + ")");
+  }
+  friend Sym operator-(const Sym& a, const Sym& b) {
+    return a.arith(a.e_ - b.e_, "(" + a.text_ + " - " + b.text_ + ")");
+  }
+  friend Sym operator*(const Sym& a, const Sym& b) {
+    return a.arith(a.e_ * b.e_, "(" + a.text_ + " * " + b.text_ + ")");
+  }
   friend Sym operator-(const Sym& a) { return a.arith(-a.e_, "(-" + a.text_ + ")"); }
 
   friend SymBool operator==(const Sym& a, const Sym& b) { return SymBool(a.e_ == b.e_); }
@@ -168,7 +178,7 @@ class Sym {
   friend SymBool operator>(const Sym& a, const Sym& b) { return SymBool(a.e_ > b.e_); }
   friend SymBool operator>=(const Sym& a, const Sym& b) { return SymBool(a.e_ >= b.e_); }
 
- private:
+private:
   Sym arith(z3::expr r, std::string text) const {
     dom_->require_fits<Rep>(r, text);
     return Sym(*dom_, std::move(r), std::move(text));
@@ -179,8 +189,7 @@ class Sym {
   std::string text_;
 };
 
-template <std::signed_integral Rep>
-Sym<Rep> Domain::var(const std::string& name, Unit unit) {
+template <std::signed_integral Rep> Sym<Rep> Domain::var(const std::string& name, Unit unit) {
   z3::expr v = ctx_.int_const(name.c_str());
   dom_register(name, v, unit);
   return Sym<Rep>(*this, v, name);
@@ -199,4 +208,4 @@ inline SymBool select(const SymBool& c, const SymBool& t, const SymBool& f) {
   return SymBool(z3::ite(c.expr(), t.expr(), f.expr()));
 }
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs

@@ -10,9 +10,9 @@
 // Expected: PROVED. Exit status 0 iff every theorem is PROVED; a counterexample is printed
 // otherwise.
 
+#include "tri/bias_form.hpp"
 #include "support/kernel_model.hpp"
 #include "support/prover.hpp"
-#include "tri/bias_form.hpp"
 
 int main() {
   using namespace rastrules::proofs;

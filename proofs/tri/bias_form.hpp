@@ -22,8 +22,7 @@ namespace rastrules::proofs {
 // on 64-bit two's-complement bit-vectors (this expression is restated from walk.hpp, which
 // evaluates it on concrete integers; the query has no multiplication).
 // rule: FIX.BIAS.FORM
-template <class F>
-void prove_bias_form(Prover& pr) {
+template <class F> void prove_bias_form(Prover& pr) {
   using S = typename F::Acc;
   Domain& dom = pr.domain();
   z3::context& ctx = dom.ctx();
@@ -56,4 +55,4 @@ void prove_bias_form(Prover& pr) {
            ((e0 | e1 | e2) >= zero) == (e0 >= zero && e1 >= zero && e2 >= zero));
 }
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs

@@ -8,9 +8,9 @@
 // Expected: PROVED. Exit status 0 iff every theorem is PROVED; a counterexample is printed
 // otherwise.
 
+#include "tri/degenerate_covers_nothing.hpp"
 #include "support/kernel_model.hpp"
 #include "support/prover.hpp"
-#include "tri/degenerate_covers_nothing.hpp"
 
 int main() {
   using namespace rastrules::proofs;

@@ -19,8 +19,7 @@ namespace rastrules::proofs {
 // any vertex order (the theorem quantifies over all a, b, c, so (a, c, b) is an instance too),
 // covers nothing either.
 // rule: TRI.DEGENERATE.ZERO_AREA
-template <class F>
-void prove_degenerate_covers_nothing(Prover& pr) {
+template <class F> void prove_degenerate_covers_nothing(Prover& pr) {
   using S = typename F::Acc;
   Domain& dom = pr.domain();
   const Point<S> a = point_var<S>(dom, "a");
@@ -38,9 +37,9 @@ void prove_degenerate_covers_nothing(Prover& pr) {
     pr.watch("E_ab(p)", F::edge_value(a, b, p).expr(), Unit::kEdgeRaw);
     pr.watch("E_bc(p)", F::edge_value(b, c, p).expr(), Unit::kEdgeRaw);
     pr.watch("E_ca(p)", F::edge_value(c, a, p).expr(), Unit::kEdgeRaw);
-    pr.prove(std::string(convention) + ": a zero-area triangle covers no sample", hyps,
-             !in.expr(), dom.obligations_since(mark));
+    pr.prove(std::string(convention) + ": a zero-area triangle covers no sample", hyps, !in.expr(),
+             dom.obligations_since(mark));
   });
 }
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs

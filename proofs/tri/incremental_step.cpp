@@ -13,9 +13,9 @@
 // Expected: PROVED. Exit status 0 iff every theorem is PROVED; a counterexample is printed
 // otherwise.
 
+#include "tri/incremental_step.hpp"
 #include "support/kernel_model.hpp"
 #include "support/prover.hpp"
-#include "tri/incremental_step.hpp"
 
 int main() {
   using namespace rastrules::proofs;

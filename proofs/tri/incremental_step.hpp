@@ -20,8 +20,7 @@ namespace rastrules::proofs {
 // biases: (E(p) + edge_bias(f)) + edge_step_x == E(p + (one, 0)) + edge_bias(f);
 // with every intermediate fitting the accumulator type.
 // rule: FIX.STEP.INCREMENTAL
-template <class F>
-void prove_incremental_step(Prover& pr) {
+template <class F> void prove_incremental_step(Prover& pr) {
   using S = typename F::Acc;
   Domain& dom = pr.domain();
   const Point<S> a = point_var<S>(dom, "a");
@@ -69,4 +68,4 @@ void prove_incremental_step(Prover& pr) {
   }
 }
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs

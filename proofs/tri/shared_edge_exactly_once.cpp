@@ -12,17 +12,17 @@
 // Expected: PROVED. Exit status 0 iff every theorem is PROVED; a counterexample is printed
 // otherwise.
 
+#include "tri/shared_edge_exactly_once.hpp"
 #include "support/kernel_model.hpp"
 #include "support/prover.hpp"
-#include "tri/shared_edge_exactly_once.hpp"
 
 int main() {
   using namespace rastrules::proofs;
   Domain dom;
-  Prover pr(dom, "tri/shared_edge_exactly_once", "TRI.SHARED_EDGE.EXACTLY_ONCE",
-            {"SNAP.VERTEX.RANGE", "TRI.ORIENT.NORMALISE", "TRI.FILL.TOP_LEFT",
-             "TRI.FILL.CONVENTION"},
-            KernelModel::constants());
+  Prover pr(
+      dom, "tri/shared_edge_exactly_once", "TRI.SHARED_EDGE.EXACTLY_ONCE",
+      {"SNAP.VERTEX.RANGE", "TRI.ORIENT.NORMALISE", "TRI.FILL.TOP_LEFT", "TRI.FILL.CONVENTION"},
+      KernelModel::constants());
   prove_shared_edge_exactly_once<KernelModel>(pr);
   return pr.finish();
 }

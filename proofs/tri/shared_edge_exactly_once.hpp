@@ -53,8 +53,12 @@ template <class F, class S>
 z3::expr segment_edge_values(const Point<S>& a, const Point<S>& b, const Point<S>& c,
                              const Point<S>& p) {
   const z3::expr area = F::twice_signed_area(Triangle<S>{a, b, c}).expr();
-  auto same_sign = [&](const S& e) { return (e.expr() > 0) == (area > 0) && (e.expr() < 0) == (area < 0); };
-  auto opposite_sign = [&](const S& e) { return (e.expr() > 0) == (area < 0) && (e.expr() < 0) == (area > 0); };
+  auto same_sign = [&](const S& e) {
+    return (e.expr() > 0) == (area > 0) && (e.expr() < 0) == (area < 0);
+  };
+  auto opposite_sign = [&](const S& e) {
+    return (e.expr() > 0) == (area < 0) && (e.expr() < 0) == (area > 0);
+  };
   return F::edge_value(a, b, p).expr() == 0 && F::edge_value(b, a, p).expr() == 0 &&
          same_sign(F::edge_value(b, c, p)) && same_sign(F::edge_value(c, a, p)) &&
          opposite_sign(F::edge_value(c, b, p)) && opposite_sign(F::edge_value(a, c, p));
@@ -69,8 +73,7 @@ z3::expr segment_edge_values(const Point<S>& a, const Point<S>& b, const Point<S
 // Any other vertex order is a rotation of one of these two, and the kernel's edges and
 // twice_signed_area are invariant under rotation, so the two orders cover all six.
 // rule: TRI.SHARED_EDGE.EXACTLY_ONCE, TRI.FILL.CONVENTION
-template <class F>
-void prove_shared_edge_exactly_once(Prover& pr) {
+template <class F> void prove_shared_edge_exactly_once(Prover& pr) {
   using S = typename F::Acc;
   Domain& dom = pr.domain();
   z3::context& ctx = dom.ctx();
@@ -89,8 +92,8 @@ void prove_shared_edge_exactly_once(Prover& pr) {
       const SymBool backward = F::template is_inclusive_edge<TopInclusive, LeftInclusive>(b, a);
       pr.watch("inclusive(a->b)", forward.expr(), Unit::kBool);
       pr.watch("inclusive(b->a)", backward.expr(), Unit::kBool);
-      pr.prove(std::string(convention) + ": exactly one of a->b, b->a is inclusive (a != b)",
-               hyps, forward.expr() != backward.expr(), dom.obligations_since(mark));
+      pr.prove(std::string(convention) + ": exactly one of a->b, b->a is inclusive (a != b)", hyps,
+               forward.expr() != backward.expr(), dom.obligations_since(mark));
     });
   }
 
@@ -103,8 +106,8 @@ void prove_shared_edge_exactly_once(Prover& pr) {
   const Point<S> p{a.x + k * dx, a.y + k * dy};
   const Point<S> c = point_var<S>(dom, "c");
   const Point<S> d = point_var<S>(dom, "d");
-  const z3::expr order1 = dom.bool_var("first_is_abc");   // else (b, a, c)
-  const z3::expr order2 = dom.bool_var("second_is_abd");  // else (b, a, d)
+  const z3::expr order1 = dom.bool_var("first_is_abc");  // else (b, a, c)
+  const z3::expr order2 = dom.bool_var("second_is_abd"); // else (b, a, d)
   const z3::expr on_segment = 0 < k.expr() && k.expr() < n.expr();
   auto show_points = [&] {
     pr.watch("bx", b.x.expr(), Unit::kCoordRaw);
@@ -122,38 +125,40 @@ void prove_shared_edge_exactly_once(Prover& pr) {
   // L1 for the generic third vertex c; M uses it at c and at d.
   const z3::expr u = dx.expr() * (c.y.expr() - a.y.expr()) - dy.expr() * (c.x.expr() - a.x.expr());
   show_points();
-  const Status l1 =
-      l0 != Status::kProved
-          ? pr.skip("lemma L1: kernel edge values at a sample on the open edge ab",
-                    "relies on lemma L0, which was not proved")
-          : pr.prove("lemma L1: kernel edge values at a sample on the open edge ab",
-                     {on_segment, sign_lemma(n.expr(), k.expr(), u)},
-                     segment_edge_values<F>(a, b, c, p));
+  const Status l1 = l0 != Status::kProved
+                        ? pr.skip("lemma L1: kernel edge values at a sample on the open edge ab",
+                                  "relies on lemma L0, which was not proved")
+                        : pr.prove("lemma L1: kernel edge values at a sample on the open edge ab",
+                                   {on_segment, sign_lemma(n.expr(), k.expr(), u)},
+                                   segment_edge_values<F>(a, b, c, p));
 
   const z3::expr oc = spec_orientation(a, b, c);
   const z3::expr od = spec_orientation(a, b, d);
   // rule: SNAP.VERTEX.RANGE
   const std::vector<z3::expr> hyps = {
-      in_vertex_range<F>(a), in_vertex_range<F>(b), in_vertex_range<F>(c),
-      in_vertex_range<F>(d), in_vertex_range<F>(p), on_segment,
+      in_vertex_range<F>(a),
+      in_vertex_range<F>(b),
+      in_vertex_range<F>(c),
+      in_vertex_range<F>(d),
+      in_vertex_range<F>(p),
+      on_segment,
       (oc > 0 && od < 0) || (oc < 0 && od > 0),
-      segment_edge_values<F>(a, b, c, p),  // L1 at c
-      segment_edge_values<F>(a, b, d, p),  // L1 at d
+      segment_edge_values<F>(a, b, c, p), // L1 at c
+      segment_edge_values<F>(a, b, d, p), // L1 at d
   };
 
   for_each_convention([&]<bool TopInclusive, bool LeftInclusive>(const char* convention) {
     auto covered = [&](const z3::expr& first, const Point<S>& third) {
       // first ? (a, b, third) : (b, a, third), then normalised and tested as the kernel does.
       return select(SymBool(first),
-                    covers_normalised<F, TopInclusive, LeftInclusive>(
-                        Triangle<S>{a, b, third}, p),
-                    covers_normalised<F, TopInclusive, LeftInclusive>(
-                        Triangle<S>{b, a, third}, p));
+                    covers_normalised<F, TopInclusive, LeftInclusive>(Triangle<S>{a, b, third}, p),
+                    covers_normalised<F, TopInclusive, LeftInclusive>(Triangle<S>{b, a, third}, p));
     };
     const SymBool in1 = covered(order1, c);
     const SymBool in2 = covered(order2, d);
-    const std::string name = std::string(convention) +
-                             ": each sample on the open shared edge is covered by exactly one triangle";
+    const std::string name =
+        std::string(convention) +
+        ": each sample on the open shared edge is covered by exactly one triangle";
     if (l1 != Status::kProved) {
       pr.skip(name, "relies on lemma L1, which was not proved");
       return;
@@ -165,4 +170,4 @@ void prove_shared_edge_exactly_once(Prover& pr) {
   });
 }
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs

@@ -7,6 +7,7 @@
 //                                   other edges, y down);
 //   formula::is_left_edge(p, q) <=> p.y != q.y and r.x > the x of line pq at height r.y
 //                                   (exact rational; no edge-function shortcut);
+//   formula::is_inclusive_edge<true, true> == is_top_edge || is_left_edge (every edge a -> b);
 //   formula::is_inclusive_edge<T, L>(p, q) <=> (T ? top : bottom) || (L ? left : right), for
 //   top-left, bottom-left, top-right and bottom-right.
 // rule: TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE, TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION
@@ -14,9 +15,9 @@
 // Expected: PROVED. Exit status 0 iff every theorem is PROVED; a counterexample is printed
 // otherwise.
 
+#include "tri/top_left_matches_spec.hpp"
 #include "support/kernel_model.hpp"
 #include "support/prover.hpp"
-#include "tri/top_left_matches_spec.hpp"
 
 int main() {
   using namespace rastrules::proofs;

@@ -18,10 +18,10 @@ namespace rastrules::proofs {
 // the spec's words on exact values, without the kernel's shortcuts (no edge function, no
 // assumption about the winding). Positions are raw 16.8 integers; y grows down the screen.
 struct SpecEdgeClass {
-  z3::expr top;     // exactly horizontal, third vertex below it (the edge is above the others)
-  z3::expr bottom;  // exactly horizontal, third vertex above it
-  z3::expr left;    // not horizontal, third vertex strictly on the +x side of the edge's line
-  z3::expr right;   // not horizontal, third vertex strictly on the -x side of the edge's line
+  z3::expr top;    // exactly horizontal, third vertex below it (the edge is above the others)
+  z3::expr bottom; // exactly horizontal, third vertex above it
+  z3::expr left;   // not horizontal, third vertex strictly on the +x side of the edge's line
+  z3::expr right;  // not horizontal, third vertex strictly on the -x side of the edge's line
 };
 
 // rule: TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE
@@ -58,19 +58,20 @@ inline void prove_division_free_side(Prover& pr) {
   const z3::expr d = ctx.real_const("lemma_d");
   const z3::expr above = (x > y / d) == ((d > 0 && x * d > y) || (d < 0 && x * d < y));
   const z3::expr below = (x < y / d) == ((d > 0 && x * d < y) || (d < 0 && x * d > y));
-  pr.prove("lemma: x > y/d <=> (d > 0 and xd > y) or (d < 0 and xd < y), and for < (rationals, d != 0)",
-           {d != 0}, above && below);
+  pr.prove(
+      "lemma: x > y/d <=> (d > 0 and xd > y) or (d < 0 and xd < y), and for < (rationals, d != 0)",
+      {d != 0}, above && below);
 }
 
 // For every triangle (a, b, c) in the vertex range with twice_signed_area(a, b, c) > 0
 // (clockwise, non-degenerate) and each of its edges a -> b (third vertex c), b -> c (a),
 // c -> a (b):
 //   is_top_edge  <=> spec top;   is_left_edge <=> spec left;
+//   is_inclusive_edge<true, true> == is_top_edge || is_left_edge (for every directed edge);
 //   is_inclusive_edge<T, L> <=> (T ? top : bottom) || (L ? left : right), for all four
 //   conventions (TRI.FILL.CONVENTION; <true, true> is TRI.FILL.TOP_LEFT's "top or left").
 // rule: TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE, TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION
-template <class F>
-void prove_top_left_matches_spec(Prover& pr) {
+template <class F> void prove_top_left_matches_spec(Prover& pr) {
   using S = typename F::Acc;
   Domain& dom = pr.domain();
   z3::context& ctx = dom.ctx();
@@ -113,20 +114,30 @@ void prove_top_left_matches_spec(Prover& pr) {
                   pr.watch(std::string("is_left_edge(") + en + ")", kernel, Unit::kBool);
                   return kernel == spec_edge_class(p, q, r).left;
                 });
+  {
+    // The kernel's own composition, for every directed edge (no triangle needed).
+    const std::size_t mark = dom.mark();
+    const z3::expr inclusive = F::template is_inclusive_edge<true, true>(a, b).expr();
+    const z3::expr top_or_left = (F::is_top_edge(a, b) || F::is_left_edge(a, b)).expr();
+    pr.watch("is_inclusive_edge<true, true>(a, b)", inclusive, Unit::kBool);
+    pr.watch("is_top_edge(a, b) || is_left_edge(a, b)", top_or_left, Unit::kBool);
+    pr.prove("is_inclusive_edge<true, true>(a, b) == is_top_edge(a, b) || is_left_edge(a, b)",
+             {in_vertex_range<F>(a), in_vertex_range<F>(b)}, inclusive == top_or_left,
+             dom.obligations_since(mark));
+  }
   for_each_convention([&]<bool TopInclusive, bool LeftInclusive>(const char* convention) {
-    for_all_edges(
-        std::string("is_inclusive_edge ") + convention + " <=> " +
-            (TopInclusive ? "top" : "bottom") + " or " + (LeftInclusive ? "left" : "right") +
-            " (each edge)",
-        [&](const Point<S>& p, const Point<S>& q, const Point<S>& r, const char* en) {
-          const z3::expr kernel =
-              F::template is_inclusive_edge<TopInclusive, LeftInclusive>(p, q).expr();
-          pr.watch(std::string("is_inclusive_edge(") + en + ")", kernel, Unit::kBool);
-          const SpecEdgeClass spec = spec_edge_class(p, q, r);
-          return kernel == ((TopInclusive ? spec.top : spec.bottom) ||
-                            (LeftInclusive ? spec.left : spec.right));
-        });
+    for_all_edges(std::string("is_inclusive_edge ") + convention + " <=> " +
+                      (TopInclusive ? "top" : "bottom") + " or " +
+                      (LeftInclusive ? "left" : "right") + " (each edge)",
+                  [&](const Point<S>& p, const Point<S>& q, const Point<S>& r, const char* en) {
+                    const z3::expr kernel =
+                        F::template is_inclusive_edge<TopInclusive, LeftInclusive>(p, q).expr();
+                    pr.watch(std::string("is_inclusive_edge(") + en + ")", kernel, Unit::kBool);
+                    const SpecEdgeClass spec = spec_edge_class(p, q, r);
+                    return kernel == ((TopInclusive ? spec.top : spec.bottom) ||
+                                      (LeftInclusive ? spec.left : spec.right));
+                  });
   });
 }
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs

@@ -73,10 +73,13 @@ RC_GTEST_PROP(SnapD3D, SaturateIsMonotoneAndAgreesWithSnapInsideTheRange,
   RC_PRE(!std::isnan(f.v) && !std::isnan(g.v));
   const auto sf = rastrules::snap_d3d_saturate(f.v).raw();
   const auto sg = rastrules::snap_d3d_saturate(g.v).raw();
-  if (f.v <= g.v) RC_ASSERT(sf <= sg);
-  if (g.v <= f.v) RC_ASSERT(sg <= sf);
+  if (f.v <= g.v)
+    RC_ASSERT(sf <= sg);
+  if (g.v <= f.v)
+    RC_ASSERT(sg <= sf);
   const rastrules::SnapResult s = rastrules::snap_to_subpixel(f.v);
-  if (s.status == rastrules::SnapStatus::kOk) RC_ASSERT(s.value.raw() == sf);
+  if (s.status == rastrules::SnapStatus::kOk)
+    RC_ASSERT(s.value.raw() == sf);
 }
 
 // rule: SNAP.VERTEX.INVALID
@@ -110,4 +113,4 @@ RC_GTEST_PROP(SnapVertex, SceneIsRejectedIffACoordinateDoesNotSnapNamingTheFirst
   }
 }
 
-}  // namespace
+} // namespace

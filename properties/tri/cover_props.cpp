@@ -74,10 +74,12 @@ RC_GTEST_PROP(TriCover, KernelRenderEqualsOracleRender, ()) {
   if (const auto* err = std::get_if<rastrules::SceneError>(&k)) {
     RC_FAIL("kernel rejected a valid scene: " + err->what());
   }
-  const std::vector<rastrules::oracle::Fragment> o = rastrules::oracle::render(gen::to_oracle_scene(s));
+  const std::vector<rastrules::oracle::Fragment> o =
+      rastrules::oracle::render(gen::to_oracle_scene(s));
   const std::string diff =
       gen::describe_difference(std::get<std::vector<rastrules::Fragment>>(k), o);
-  if (!diff.empty()) RC_FAIL(diff);
+  if (!diff.empty())
+    RC_FAIL(diff);
 }
 
 // Samples that sit on the tie: the vertices, raw lattice points on each edge, and the raw
@@ -103,7 +105,8 @@ std::vector<gen::RawPoint> tie_samples(const gen::RawTriangle& t) {
   return out;
 }
 
-// rule: TRI.FILL.TOP_LEFT, TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE, TRI.FILL.CONVENTION, TRI.CULL.MODE
+// rule: TRI.FILL.TOP_LEFT, TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE, TRI.FILL.CONVENTION,
+// TRI.CULL.MODE
 RC_GTEST_PROP(TriFill, CoversEqualsOracleOnVerticesEdgesAndTheirNeighbours, ()) {
   const rastrules::RasterState state = *gen::raster_state();
   const gen::RawTriangle t = *rc::gen::weightedOneOf<gen::RawTriangle>({
@@ -130,4 +133,4 @@ RC_GTEST_PROP(TriFill, CoversEqualsOracleOnVerticesEdgesAndTheirNeighbours, ()) 
   RC_CLASSIFY(on_boundary > 3, "samples on edges besides the vertices");
 }
 
-}  // namespace
+} // namespace

@@ -78,13 +78,14 @@ RC_GTEST_PROP(TriInvariance, WholePixelTranslationMovesCoverageExactly, ()) {
     for (std::int64_t px = px0; px <= px1; ++px) {
       const std::int64_t sx = 256 * px + 128, sy = 256 * py + 128;
       const std::int64_t mx = sx + 256 * dx, my = sy + 256 * dy;
-      if (!in_range(sx) || !in_range(sy) || !in_range(mx) || !in_range(my)) continue;
+      if (!in_range(sx) || !in_range(sy) || !in_range(mx) || !in_range(my))
+        continue;
       const bool ca = rastrules::covers(a, sample(sx, sy));
       const bool cb = rastrules::covers(b, sample(mx, my));
       if (ca != cb) {
         std::ostringstream msg;
-        msg << "pixel (" << px << ", " << py << "): " << ca << ", moved pixel (" << px + dx
-            << ", " << py + dy << "): " << cb;
+        msg << "pixel (" << px << ", " << py << "): " << ca << ", moved pixel (" << px + dx << ", "
+            << py + dy << "): " << cb;
         RC_FAIL(msg.str());
       }
       covered += ca ? 1u : 0u;
@@ -102,11 +103,13 @@ RC_GTEST_PROP(TriInvariance, ReversingTheWindingWithCullNoneChangesNothing, ()) 
     // Reverse the order, and rotate by a random amount.
     const auto rot = static_cast<std::size_t>(*rc::gen::inRange(0, 3));
     const gen::FloatTriangle rev{t.v[0], t.v[2], t.v[1]};
-    for (std::size_t i = 0; i < 3; ++i) t.v[i] = rev[(i + rot) % 3];
+    for (std::size_t i = 0; i < 3; ++i)
+      t.v[i] = rev[(i + rot) % 3];
   }
-  const std::string diff = gen::describe_difference(
-      render_ok(r), rastrules::oracle::render(gen::to_oracle_scene(s)));
-  if (!diff.empty()) RC_FAIL("reversed (kernel) vs original (oracle): " + diff);
+  const std::string diff =
+      gen::describe_difference(render_ok(r), rastrules::oracle::render(gen::to_oracle_scene(s)));
+  if (!diff.empty())
+    RC_FAIL("reversed (kernel) vs original (oracle): " + diff);
   RC_ASSERT(render_ok(r) == render_ok(s));
 }
 
@@ -133,7 +136,8 @@ RC_GTEST_PROP(TriInvariance, CullingKeepsExactlyTheTrianglesOfTheOtherWinding, (
       const int w = winding[f.prim];
       // Cull back keeps front faces; cull front keeps back faces (never zero area, which
       // covers nothing anyway).
-      if (cull == rastrules::CullMode::kBack ? w == front : w == -front) expected.push_back(f);
+      if (cull == rastrules::CullMode::kBack ? w == front : w == -front)
+        expected.push_back(f);
     }
     RC_ASSERT(render_ok(c) == expected);
   }
@@ -142,4 +146,4 @@ RC_GTEST_PROP(TriInvariance, CullingKeepsExactlyTheTrianglesOfTheOtherWinding, (
               "both windings in the scene");
 }
 
-}  // namespace
+} // namespace

@@ -33,7 +33,8 @@ RC_GTEST_PROP(TriSharedEdge, SamplesOnASharedEdgeAreCoveredExactlyOnce,
   RC_CLASSIFY(pair.a[0] == pair.b[0], "vertical shared edge");
   RC_CLASSIFY(t1.clockwise == t2.clockwise, "same winding");
   const auto hits = [&](const gen::RawPoint& s) {
-    return int{rastrules::covers(t1, gen::to_vec2(s))} + int{rastrules::covers(t2, gen::to_vec2(s))};
+    return int{rastrules::covers(t1, gen::to_vec2(s))} +
+           int{rastrules::covers(t2, gen::to_vec2(s))};
   };
   const auto fail = [](const char* what, const gen::RawPoint& s, int h) {
     std::ostringstream msg;
@@ -43,16 +44,20 @@ RC_GTEST_PROP(TriSharedEdge, SamplesOnASharedEdgeAreCoveredExactlyOnce,
   const auto on_edge = gen::points_on_open_segment(pair.a, pair.b, 64);
   RC_CLASSIFY(!on_edge.empty(), "lattice points on the shared edge");
   for (const gen::RawPoint& s : on_edge) {
-    if (hits(s) != 1) fail("on the open shared segment", s, hits(s));
+    if (hits(s) != 1)
+      fail("on the open shared segment", s, hits(s));
     // Off the line, a point is strictly on one side: at most one triangle can contain it.
     for (const auto& d : {std::array<std::int32_t, 2>{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
       const gen::RawPoint n{s[0] + d[0], s[1] + d[1]};
-      if (hits(n) > 1) fail("next to the shared segment", n, hits(n));
+      if (hits(n) > 1)
+        fail("next to the shared segment", n, hits(n));
     }
   }
   // The shared vertices: their wedges are part of some full fan, so at most one covers them.
-  if (hits(pair.a) > 1) fail("shared vertex a", pair.a, hits(pair.a));
-  if (hits(pair.b) > 1) fail("shared vertex b", pair.b, hits(pair.b));
+  if (hits(pair.a) > 1)
+    fail("shared vertex a", pair.a, hits(pair.a));
+  if (hits(pair.b) > 1)
+    fail("shared vertex b", pair.b, hits(pair.b));
 }
 
-}  // namespace
+} // namespace

@@ -39,12 +39,12 @@ RC_GTEST_PROP(RasterWalk, WalkYieldsExactlyTheCoveredPixelCentres, ()) {
   }
   const rastrules::TriangleSetup setup = rastrules::setup_triangle(v, state);
   std::vector<std::pair<std::int32_t, std::int32_t>> walked, brute;
-  rastrules::raster::walk_triangle(setup, w, h, [&walked](std::int32_t x, std::int32_t y) {
-    walked.emplace_back(y, x);
-  });
+  rastrules::raster::walk_triangle(
+      setup, w, h, [&walked](std::int32_t x, std::int32_t y) { walked.emplace_back(y, x); });
   for (std::int32_t y = 0; y < h; ++y) {
     for (std::int32_t x = 0; x < w; ++x) {
-      if (rastrules::covers(setup, rastrules::pixel_center(x, y))) brute.emplace_back(y, x);
+      if (rastrules::covers(setup, rastrules::pixel_center(x, y)))
+        brute.emplace_back(y, x);
     }
   }
   RC_CLASSIFY(!brute.empty(), "covers some pixel");
@@ -53,4 +53,4 @@ RC_GTEST_PROP(RasterWalk, WalkYieldsExactlyTheCoveredPixelCentres, ()) {
   RC_ASSERT(walked == brute);
 }
 
-}  // namespace
+} // namespace

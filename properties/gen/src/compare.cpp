@@ -23,31 +23,37 @@ oracle::Scene to_oracle_scene(const TriScene& s) {
   o.width = s.width;
   o.height = s.height;
   o.state = to_oracle_state(s.state);
-  for (const GenTriangle& t : s.triangles) o.triangles.push_back(t.v);
+  for (const GenTriangle& t : s.triangles)
+    o.triangles.push_back(t.v);
   return o;
 }
 
 std::array<std::array<std::int64_t, 2>, 3> to_oracle_raw(const RawTriangle& t) {
   std::array<std::array<std::int64_t, 2>, 3> r{};
-  for (std::size_t i = 0; i < 3; ++i) r[i] = {t[i][0], t[i][1]};
+  for (std::size_t i = 0; i < 3; ++i)
+    r[i] = {t[i][0], t[i][1]};
   return r;
 }
 
 std::string describe_difference(const std::vector<Fragment>& kernel,
                                 const std::vector<oracle::Fragment>& oracle) {
-  using Key = std::tuple<std::uint32_t, std::int32_t, std::int32_t>;  // (prim, y, x)
+  using Key = std::tuple<std::uint32_t, std::int32_t, std::int32_t>; // (prim, y, x)
   std::vector<Key> k, o;
   bool bad_mask = false;
   for (const Fragment& f : kernel) {
     k.emplace_back(f.prim, f.y, f.x);
     bad_mask = bad_mask || f.mask != 1u;
   }
-  for (const oracle::Fragment& f : oracle) o.emplace_back(f.prim, f.y, f.x);
-  if (k == o && !bad_mask) return "";
+  for (const oracle::Fragment& f : oracle)
+    o.emplace_back(f.prim, f.y, f.x);
+  if (k == o && !bad_mask)
+    return "";
   std::ostringstream os;
   os << "kernel: " << k.size() << " fragments, oracle: " << o.size() << " fragments";
-  if (bad_mask) os << "; a kernel fragment has mask != 1";
-  if (!std::is_sorted(k.begin(), k.end())) os << "; kernel output is not sorted by (prim, y, x)";
+  if (bad_mask)
+    os << "; a kernel fragment has mask != 1";
+  if (!std::is_sorted(k.begin(), k.end()))
+    os << "; kernel output is not sorted by (prim, y, x)";
   std::vector<Key> ks = k, os_ = o;
   std::sort(ks.begin(), ks.end());
   std::sort(os_.begin(), os_.end());
@@ -63,8 +69,9 @@ std::string describe_difference(const std::vector<Fragment>& kernel,
   };
   dump("only the kernel", only_k);
   dump("only the oracle", only_o);
-  if (only_k.empty() && only_o.empty()) os << "\n  (same sets; order or duplicates differ)";
+  if (only_k.empty() && only_o.empty())
+    os << "\n  (same sets; order or duplicates differ)";
   return os.str();
 }
 
-}  // namespace rastrules::gen
+} // namespace rastrules::gen

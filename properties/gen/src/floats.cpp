@@ -15,9 +15,13 @@
 namespace rastrules::gen {
 namespace {
 
-float from_bits(std::uint32_t b) { return std::bit_cast<float>(b); }
+float from_bits(std::uint32_t b) {
+  return std::bit_cast<float>(b);
+}
 
-rc::Gen<float> any_bits() { return rc::gen::map(rc::gen::arbitrary<std::uint32_t>(), from_bits); }
+rc::Gen<float> any_bits() {
+  return rc::gen::map(rc::gen::arbitrary<std::uint32_t>(), from_bits);
+}
 
 rc::Gen<float> subnormal() {
   return rc::gen::apply(
@@ -30,8 +34,8 @@ rc::Gen<float> subnormal() {
 rc::Gen<float> special() {
   return rc::gen::element(
       std::numeric_limits<float>::quiet_NaN(), -std::numeric_limits<float>::quiet_NaN(),
-      std::numeric_limits<float>::signaling_NaN(), from_bits(0x7F800001u),
-      from_bits(0xFFFFFFFFu), from_bits(0x7FC12345u), std::numeric_limits<float>::infinity(),
+      std::numeric_limits<float>::signaling_NaN(), from_bits(0x7F800001u), from_bits(0xFFFFFFFFu),
+      from_bits(0x7FC12345u), std::numeric_limits<float>::infinity(),
       -std::numeric_limits<float>::infinity(), 0.0f, -0.0f, std::numeric_limits<float>::min(),
       -std::numeric_limits<float>::min(), std::numeric_limits<float>::max(),
       std::numeric_limits<float>::lowest(), std::numeric_limits<float>::denorm_min(),
@@ -40,9 +44,8 @@ rc::Gen<float> special() {
 
 // (2k + 1) / 512 with |2k + 1| < 2^24, so the float is exact and v * 256 = k + 1/2.
 rc::Gen<float> tie() {
-  return rc::gen::map(rc::gen::inRange<std::int32_t>(-(1 << 23), (1 << 23)), [](std::int32_t k) {
-    return static_cast<float>(2 * k + 1) / 512.0f;
-  });
+  return rc::gen::map(rc::gen::inRange<std::int32_t>(-(1 << 23), (1 << 23)),
+                      [](std::int32_t k) { return static_cast<float>(2 * k + 1) / 512.0f; });
 }
 
 rc::Gen<float> near_tie() {
@@ -68,39 +71,47 @@ rc::Gen<float> near_limit() {
         float v = base;
         const float dir = ulps < 0 ? -std::numeric_limits<float>::infinity()
                                    : std::numeric_limits<float>::infinity();
-        for (std::int32_t i = 0; i < std::abs(ulps); ++i) v = std::nextafter(v, dir);
+        for (std::int32_t i = 0; i < std::abs(ulps); ++i)
+          v = std::nextafter(v, dir);
         return v;
       },
-      rc::gen::element(32767.99609375f, 32767.998046875f, 32768.0f, 32767.994140625f,
-                       -32768.0f, -32768.001953125f, -32768.00390625f, -32768.005859375f,
-                       -32767.998046875f),
+      rc::gen::element(32767.99609375f, 32767.998046875f, 32768.0f, 32767.994140625f, -32768.0f,
+                       -32768.001953125f, -32768.00390625f, -32768.005859375f, -32767.998046875f),
       rc::gen::inRange<std::int32_t>(-3, 4));
 }
 
 rc::Gen<float> in_range() {
   // x / 65536 with |x| <= 2^31: the conversion to float rounds once to 24 bits and the
   // division by a power of two is exact, giving floats with up to 16 fractional bits.
-  return rc::gen::map(rc::gen::inRange<std::int64_t>(-(std::int64_t{1} << 31),
-                                                     (std::int64_t{1} << 31) + 1),
-                      [](std::int64_t x) { return static_cast<float>(x) / 65536.0f; });
+  return rc::gen::map(
+      rc::gen::inRange<std::int64_t>(-(std::int64_t{1} << 31), (std::int64_t{1} << 31) + 1),
+      [](std::int64_t x) { return static_cast<float>(x) / 65536.0f; });
 }
 
 rc::Gen<FloatCase> tagged(rc::Gen<float> g, FloatClass c) {
   return rc::gen::map(std::move(g), [c](float v) { return FloatCase{v, c}; });
 }
 
-}  // namespace
+} // namespace
 
 std::string_view to_string(FloatClass c) {
   switch (c) {
-    case FloatClass::kAnyBits: return "any bits";
-    case FloatClass::kSubnormal: return "subnormal";
-    case FloatClass::kSpecial: return "special";
-    case FloatClass::kTie: return "tie";
-    case FloatClass::kNearTie: return "near tie";
-    case FloatClass::kExactSubpixel: return "exact subpixel";
-    case FloatClass::kNearLimit: return "near range limit";
-    case FloatClass::kInRange: return "in range";
+  case FloatClass::kAnyBits:
+    return "any bits";
+  case FloatClass::kSubnormal:
+    return "subnormal";
+  case FloatClass::kSpecial:
+    return "special";
+  case FloatClass::kTie:
+    return "tie";
+  case FloatClass::kNearTie:
+    return "near tie";
+  case FloatClass::kExactSubpixel:
+    return "exact subpixel";
+  case FloatClass::kNearLimit:
+    return "near range limit";
+  case FloatClass::kInRange:
+    return "in range";
   }
   return "unknown";
 }
@@ -138,4 +149,4 @@ void showValue(const FloatCase& f, std::ostream& os) {
   os.flags(flags);
 }
 
-}  // namespace rastrules::gen
+} // namespace rastrules::gen

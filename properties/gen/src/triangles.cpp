@@ -23,16 +23,17 @@
 namespace rastrules::gen {
 namespace {
 
-constexpr std::int32_t kOne = 256;   // one pixel in raw units
-constexpr std::int32_t kHalf = 128;  // half a pixel in raw units
-constexpr std::int32_t kMargin = 4;  // pixels around the target used by "near" generators
+constexpr std::int32_t kOne = 256;  // one pixel in raw units
+constexpr std::int32_t kHalf = 128; // half a pixel in raw units
+constexpr std::int32_t kMargin = 4; // pixels around the target used by "near" generators
 
 std::int32_t clamp_raw(std::int64_t v) {
-  return static_cast<std::int32_t>(
-      std::clamp<std::int64_t>(v, kMinVertexRaw, kMaxVertexRaw));
+  return static_cast<std::int32_t>(std::clamp<std::int64_t>(v, kMinVertexRaw, kMaxVertexRaw));
 }
 
-RawPoint point(std::int64_t x, std::int64_t y) { return RawPoint{clamp_raw(x), clamp_raw(y)}; }
+RawPoint point(std::int64_t x, std::int64_t y) {
+  return RawPoint{clamp_raw(x), clamp_raw(y)};
+}
 
 // Returns t with its vertices permuted by the permutation numbered `perm` (0..5).
 RawTriangle permuted(const RawTriangle& t, std::int32_t perm) {
@@ -42,7 +43,9 @@ RawTriangle permuted(const RawTriangle& t, std::int32_t perm) {
   return RawTriangle{t[p[0]], t[p[1]], t[p[2]]};
 }
 
-rc::Gen<std::int32_t> perm_index() { return rc::gen::inRange<std::int32_t>(0, 6); }
+rc::Gen<std::int32_t> perm_index() {
+  return rc::gen::inRange<std::int32_t>(0, 6);
+}
 
 rc::Gen<std::int32_t> raw_in(std::int32_t lo, std::int32_t hi) {
   return rc::gen::inRange<std::int32_t>(lo, hi + 1);
@@ -56,16 +59,18 @@ rc::Gen<RawPoint> pixel_centre_near(std::int32_t w, std::int32_t h, std::int32_t
 }
 
 rc::Gen<RawPoint> raw_point_anywhere() {
-  return rc::gen::apply([](std::int32_t x, std::int32_t y) { return RawPoint{x, y}; },
-                        raw_in(kMinVertexRaw, kMaxVertexRaw),
-                        raw_in(kMinVertexRaw, kMaxVertexRaw));
+  return rc::gen::apply(
+      [](std::int32_t x, std::int32_t y) {
+        return RawPoint{x, y};
+      },
+      raw_in(kMinVertexRaw, kMaxVertexRaw), raw_in(kMinVertexRaw, kMaxVertexRaw));
 }
 
 // A raw coordinate at or next to a range limit, or near the target.
 rc::Gen<std::int32_t> limit_coord(std::int32_t side) {
   return rc::gen::weightedOneOf<std::int32_t>({
-      {3, rc::gen::element(kMinVertexRaw, kMinVertexRaw + 1, kMinVertexRaw + kHalf,
-                           kMaxVertexRaw, kMaxVertexRaw - 1, kMaxVertexRaw - kHalf + 1)},
+      {3, rc::gen::element(kMinVertexRaw, kMinVertexRaw + 1, kMinVertexRaw + kHalf, kMaxVertexRaw,
+                           kMaxVertexRaw - 1, kMaxVertexRaw - kHalf + 1)},
       {1, raw_in(-kMargin * kOne, (side + kMargin) * kOne)},
   });
 }
@@ -81,7 +86,9 @@ RawPoint nudge(RawPoint p, std::size_t axis) {
   return p;
 }
 
-GenTriangle tagged(const RawTriangle& t, TriKind kind) { return GenTriangle{to_float(t), kind}; }
+GenTriangle tagged(const RawTriangle& t, TriKind kind) {
+  return GenTriangle{to_float(t), kind};
+}
 
 // ---- one generator per TriKind ----
 
@@ -107,7 +114,8 @@ rc::Gen<GenTriangle> snap_ties_tri(std::int32_t w, std::int32_t h) {
         GenTriangle g{to_float(t), TriKind::kSnapTies};
         for (std::size_t i = 0; i < 3; ++i) {
           for (std::size_t k = 0; k < 2; ++k) {
-            if (tie[2 * i + k]) g.v[i][k] = static_cast<float>(2 * t[i][k] + 1) / 512.0f;
+            if (tie[2 * i + k])
+              g.v[i][k] = static_cast<float>(2 * t[i][k] + 1) / 512.0f;
           }
         }
         return g;
@@ -125,8 +133,8 @@ rc::Gen<GenTriangle> axis_edge_tri(std::int32_t w, std::int32_t h, bool horizont
       },
       rc::gen::weightedOneOf<RawPoint>(
           {{1, raw_point_near(w, h, kMargin)}, {1, pixel_centre_near(w, h, kMargin)}}),
-      raw_in(-kMargin * kOne, (std::max(w, h) + kMargin) * kOne),
-      raw_point_near(w, h, kMargin), perm_index());
+      raw_in(-kMargin * kOne, (std::max(w, h) + kMargin) * kOne), raw_point_near(w, h, kMargin),
+      perm_index());
 }
 
 // An edge through the pixel centre c0: a = c0 + k1 s (p, q), b = c0 - k2 s (p, q). When s (p, q)
@@ -136,7 +144,8 @@ rc::Gen<GenTriangle> through_centres_tri(std::int32_t w, std::int32_t h) {
     const RawPoint c0 = *pixel_centre_near(w, h, 0);
     std::int32_t p = *rc::gen::inRange<std::int32_t>(-4, 5);
     const std::int32_t q = *rc::gen::inRange<std::int32_t>(-4, 5);
-    if (p == 0 && q == 0) p = 1;
+    if (p == 0 && q == 0)
+      p = 1;
     const std::int32_t s = *rc::gen::element(16, 32, 64, 128, 256);
     const std::int32_t k1 = *rc::gen::inRange<std::int32_t>(1, 9);
     const std::int32_t k2 = *rc::gen::inRange<std::int32_t>(1, 9);
@@ -189,8 +198,11 @@ rc::Gen<GenTriangle> huge_tri(std::int32_t w, std::int32_t h) {
 rc::Gen<GenTriangle> range_limits_tri(std::int32_t w, std::int32_t h) {
   const auto coord_x = limit_coord(w);
   const auto coord_y = limit_coord(h);
-  const auto pt = rc::gen::apply([](std::int32_t x, std::int32_t y) { return RawPoint{x, y}; },
-                                 coord_x, coord_y);
+  const auto pt = rc::gen::apply(
+      [](std::int32_t x, std::int32_t y) {
+        return RawPoint{x, y};
+      },
+      coord_x, coord_y);
   return rc::gen::apply(
       [](RawPoint a, RawPoint b, RawPoint c) {
         return tagged(RawTriangle{a, b, c}, TriKind::kRangeLimits);
@@ -214,12 +226,12 @@ rc::Gen<GenTriangle> degenerate_tri(std::int32_t w, std::int32_t h) {
 
 rc::Gen<GenTriangle> floats_tri(std::int32_t w, std::int32_t h) {
   // x / 65536 px: 16 fractional bits, so snapping rounds (and sometimes ties).
-  const auto fx = rc::gen::map(
-      rc::gen::inRange<std::int32_t>(-kMargin * 65536, (w + kMargin) * 65536),
-      [](std::int32_t x) { return static_cast<float>(x) / 65536.0f; });
-  const auto fy = rc::gen::map(
-      rc::gen::inRange<std::int32_t>(-kMargin * 65536, (h + kMargin) * 65536),
-      [](std::int32_t y) { return static_cast<float>(y) / 65536.0f; });
+  const auto fx =
+      rc::gen::map(rc::gen::inRange<std::int32_t>(-kMargin * 65536, (w + kMargin) * 65536),
+                   [](std::int32_t x) { return static_cast<float>(x) / 65536.0f; });
+  const auto fy =
+      rc::gen::map(rc::gen::inRange<std::int32_t>(-kMargin * 65536, (h + kMargin) * 65536),
+                   [](std::int32_t y) { return static_cast<float>(y) / 65536.0f; });
   return rc::gen::apply(
       [](float x0, float y0, float x1, float y1, float x2, float y2) {
         return GenTriangle{FloatTriangle{{{x0, y0}, {x1, y1}, {x2, y2}}}, TriKind::kFloats};
@@ -227,41 +239,60 @@ rc::Gen<GenTriangle> floats_tri(std::int32_t w, std::int32_t h) {
       fx, fy, fx, fy, fx, fy);
 }
 
-}  // namespace
+} // namespace
 
 std::string_view to_string(TriKind k) {
   switch (k) {
-    case TriKind::kRandom: return "random";
-    case TriKind::kPixelCentres: return "pixel centres";
-    case TriKind::kSnapTies: return "snap ties";
-    case TriKind::kHorizontalEdge: return "horizontal edge";
-    case TriKind::kVerticalEdge: return "vertical edge";
-    case TriKind::kThroughCentres: return "edge through centres";
-    case TriKind::kSliver: return "sliver";
-    case TriKind::kNeedle: return "needle";
-    case TriKind::kHuge: return "huge";
-    case TriKind::kRangeLimits: return "range limits";
-    case TriKind::kDegenerate: return "degenerate";
-    case TriKind::kFloats: return "floats";
+  case TriKind::kRandom:
+    return "random";
+  case TriKind::kPixelCentres:
+    return "pixel centres";
+  case TriKind::kSnapTies:
+    return "snap ties";
+  case TriKind::kHorizontalEdge:
+    return "horizontal edge";
+  case TriKind::kVerticalEdge:
+    return "vertical edge";
+  case TriKind::kThroughCentres:
+    return "edge through centres";
+  case TriKind::kSliver:
+    return "sliver";
+  case TriKind::kNeedle:
+    return "needle";
+  case TriKind::kHuge:
+    return "huge";
+  case TriKind::kRangeLimits:
+    return "range limits";
+  case TriKind::kDegenerate:
+    return "degenerate";
+  case TriKind::kFloats:
+    return "floats";
   }
   return "unknown";
 }
 
 std::string_view to_string(MeshKind k) {
   switch (k) {
-    case MeshKind::kJitteredGrid: return "jittered grid";
-    case MeshKind::kFan: return "fan";
-    case MeshKind::kLatticeFan: return "lattice fan";
-    case MeshKind::kDelaunay: return "delaunay";
+  case MeshKind::kJitteredGrid:
+    return "jittered grid";
+  case MeshKind::kFan:
+    return "fan";
+  case MeshKind::kLatticeFan:
+    return "lattice fan";
+  case MeshKind::kDelaunay:
+    return "delaunay";
   }
   return "unknown";
 }
 
-float to_float(std::int32_t raw) { return static_cast<float>(raw) / 256.0f; }
+float to_float(std::int32_t raw) {
+  return static_cast<float>(raw) / 256.0f;
+}
 
 FloatTriangle to_float(const RawTriangle& t) {
   FloatTriangle f{};
-  for (std::size_t i = 0; i < 3; ++i) f[i] = {to_float(t[i][0]), to_float(t[i][1])};
+  for (std::size_t i = 0; i < 3; ++i)
+    f[i] = {to_float(t[i][0]), to_float(t[i][1])};
   return f;
 }
 
@@ -273,10 +304,13 @@ std::array<Vec2, 3> to_vec2(const RawTriangle& t) {
   return {to_vec2(t[0]), to_vec2(t[1]), to_vec2(t[2])};
 }
 
-std::int64_t twice_area(const RawTriangle& t) { return cross(t[0], t[1], t[2]); }
+std::int64_t twice_area(const RawTriangle& t) {
+  return cross(t[0], t[1], t[2]);
+}
 
 RawTriangle make_nondegenerate(RawTriangle t) {
-  if (t[0] == t[1]) t[1] = nudge(t[1], 0);
+  if (t[0] == t[1])
+    t[1] = nudge(t[1], 0);
   if (cross(t[0], t[1], t[2]) == 0) {
     // With t0 != t1, moving t2 across the line by one unit: along y for a horizontal edge
     // (the area changes by +-(x1 - x0) != 0), along x otherwise (changes by -+(y1 - y0) != 0).
@@ -285,7 +319,9 @@ RawTriangle make_nondegenerate(RawTriangle t) {
   return t;
 }
 
-RawTriangle reversed(const RawTriangle& t) { return RawTriangle{t[0], t[2], t[1]}; }
+RawTriangle reversed(const RawTriangle& t) {
+  return RawTriangle{t[0], t[2], t[1]};
+}
 
 rc::Gen<FillConvention> fill_convention() {
   return rc::gen::element(FillConvention::kTopLeft, FillConvention::kTopRight,
@@ -294,7 +330,9 @@ rc::Gen<FillConvention> fill_convention() {
 
 rc::Gen<RasterState> raster_state() {
   return rc::gen::apply(
-      [](CullMode c, FrontFace f, FillConvention fill) { return RasterState{c, f, fill}; },
+      [](CullMode c, FrontFace f, FillConvention fill) {
+        return RasterState{c, f, fill};
+      },
       rc::gen::element(CullMode::kNone, CullMode::kBack, CullMode::kFront),
       rc::gen::element(FrontFace::kClockwise, FrontFace::kCounterClockwise), fill_convention());
 }
@@ -307,40 +345,62 @@ rc::Gen<RawPoint> raw_point_near(std::int32_t width, std::int32_t height, std::i
 
 rc::Gen<RawTriangle> raw_triangle_near(std::int32_t width, std::int32_t height) {
   const auto p = raw_point_near(width, height, kMargin);
-  return rc::gen::apply([](RawPoint a, RawPoint b, RawPoint c) { return RawTriangle{a, b, c}; },
-                        p, p, p);
+  return rc::gen::apply(
+      [](RawPoint a, RawPoint b, RawPoint c) {
+        return RawTriangle{a, b, c};
+      },
+      p, p, p);
 }
 
 rc::Gen<RawTriangle> nondegenerate_raw_triangle_near(std::int32_t width, std::int32_t height) {
-  return rc::gen::map(
-      rc::gen::mapcat(rc::gen::inRange<std::int32_t>(0, 12),
-                      [width, height](std::int32_t kind) -> rc::Gen<RawTriangle> {
-                        // Tie-heavy kinds as raw triangles (no float ties here).
-                        rc::Gen<GenTriangle> g = random_tri(width, height);
-                        switch (kind) {
-                          case 1: g = pixel_centres_tri(width, height); break;
-                          case 2: g = axis_edge_tri(width, height, true); break;
-                          case 3: g = axis_edge_tri(width, height, false); break;
-                          case 4: g = through_centres_tri(width, height); break;
-                          case 5: g = sliver_tri(width, height); break;
-                          case 6: g = needle_tri(width, height); break;
-                          case 7: g = huge_tri(width, height); break;
-                          case 8: g = range_limits_tri(width, height); break;
-                          case 9: g = degenerate_tri(width, height); break;
-                          default: break;
-                        }
-                        return rc::gen::map(std::move(g), [](const GenTriangle& t) {
-                          RawTriangle r{};
-                          for (std::size_t i = 0; i < 3; ++i) {
-                            for (std::size_t k = 0; k < 2; ++k) {
-                              // Exact: these kinds are built on the 1/256 grid.
-                              r[i][k] = static_cast<std::int32_t>(t.v[i][k] * 256.0f);
-                            }
-                          }
-                          return r;
-                        });
-                      }),
-      make_nondegenerate);
+  return rc::gen::map(rc::gen::mapcat(rc::gen::inRange<std::int32_t>(0, 12),
+                                      [width, height](std::int32_t kind) -> rc::Gen<RawTriangle> {
+                                        // Tie-heavy kinds as raw triangles (no float ties here).
+                                        rc::Gen<GenTriangle> g = random_tri(width, height);
+                                        switch (kind) {
+                                        case 1:
+                                          g = pixel_centres_tri(width, height);
+                                          break;
+                                        case 2:
+                                          g = axis_edge_tri(width, height, true);
+                                          break;
+                                        case 3:
+                                          g = axis_edge_tri(width, height, false);
+                                          break;
+                                        case 4:
+                                          g = through_centres_tri(width, height);
+                                          break;
+                                        case 5:
+                                          g = sliver_tri(width, height);
+                                          break;
+                                        case 6:
+                                          g = needle_tri(width, height);
+                                          break;
+                                        case 7:
+                                          g = huge_tri(width, height);
+                                          break;
+                                        case 8:
+                                          g = range_limits_tri(width, height);
+                                          break;
+                                        case 9:
+                                          g = degenerate_tri(width, height);
+                                          break;
+                                        default:
+                                          break;
+                                        }
+                                        return rc::gen::map(std::move(g), [](const GenTriangle& t) {
+                                          RawTriangle r{};
+                                          for (std::size_t i = 0; i < 3; ++i) {
+                                            for (std::size_t k = 0; k < 2; ++k) {
+                                              // Exact: these kinds are built on the 1/256 grid.
+                                              r[i][k] =
+                                                  static_cast<std::int32_t>(t.v[i][k] * 256.0f);
+                                            }
+                                          }
+                                          return r;
+                                        });
+                                      }),
+                      make_nondegenerate);
 }
 
 rc::Gen<GenTriangle> triangle_near(std::int32_t width, std::int32_t height) {
@@ -387,21 +447,29 @@ rc::Gen<SharedEdgePair> shared_edge_pair_around(rc::Gen<RawPoint> base) {
                 },
                 rc::gen::inRange<std::int32_t>(-3, 4), rc::gen::inRange<std::int32_t>(-3, 4),
                 rc::gen::element(1, 7, 64, 128, 256, 1024))},
-        {1, rc::gen::apply([](std::int32_t x, std::int32_t y) { return RawPoint{x, y}; },
-                           raw_in(-4096, 4096), raw_in(-4096, 4096))},
+        {1, rc::gen::apply(
+                [](std::int32_t x, std::int32_t y) {
+                  return RawPoint{x, y};
+                },
+                raw_in(-4096, 4096), raw_in(-4096, 4096))},
     });
     RawPoint b{a[0] + d[0], a[1] + d[1]};
-    if (b == a) b = nudge(b, 0);
+    if (b == a)
+      b = nudge(b, 0);
     const auto offset = rc::gen::apply(
-        [](std::int32_t x, std::int32_t y) { return RawPoint{x, y}; }, raw_in(-4096, 4096),
-        raw_in(-4096, 4096));
+        [](std::int32_t x, std::int32_t y) {
+          return RawPoint{x, y};
+        },
+        raw_in(-4096, 4096), raw_in(-4096, 4096));
     const RawPoint o1 = *offset;
     const RawPoint o2 = *offset;
     RawPoint c1{a[0] + o1[0], a[1] + o1[1]};
     RawPoint c2{a[0] + o2[0], a[1] + o2[1]};
-    const std::size_t across = (a[1] == b[1]) ? 1 : 0;  // axis that leaves the line
-    if (cross(a, b, c1) == 0) c1 = nudge(c1, across);
-    if (cross(a, b, c2) == 0) c2 = nudge(c2, across);
+    const std::size_t across = (a[1] == b[1]) ? 1 : 0; // axis that leaves the line
+    if (cross(a, b, c1) == 0)
+      c1 = nudge(c1, across);
+    if (cross(a, b, c2) == 0)
+      c2 = nudge(c2, across);
     if ((cross(a, b, c1) > 0) == (cross(a, b, c2) > 0)) {
       // Point reflection through the edge's midpoint flips the side.
       c2 = RawPoint{a[0] + b[0] - c2[0], a[1] + b[1] - c2[1]};
@@ -415,7 +483,7 @@ rc::Gen<SharedEdgePair> shared_edge_pair_around(rc::Gen<RawPoint> base) {
   });
 }
 
-}  // namespace
+} // namespace
 
 rc::Gen<SharedEdgePair> shared_edge_pair() {
   return shared_edge_pair_around(rc::gen::weightedOneOf<RawPoint>({
@@ -435,9 +503,9 @@ rc::Gen<TriScene> tri_scene(std::int32_t max_side, std::int32_t max_triangles) {
     while (static_cast<std::int32_t>(s.triangles.size()) < n) {
       if (*rc::gen::inRange(0, 5) == 0) {
         // Two triangles sharing an edge near the target.
-        const SharedEdgePair p = *shared_edge_pair_around(rc::gen::weightedOneOf<RawPoint>(
-            {{1, raw_point_near(s.width, s.height, 0)},
-             {1, pixel_centre_near(s.width, s.height, 0)}}));
+        const SharedEdgePair p = *shared_edge_pair_around(
+            rc::gen::weightedOneOf<RawPoint>({{1, raw_point_near(s.width, s.height, 0)},
+                                              {1, pixel_centre_near(s.width, s.height, 0)}}));
         s.triangles.push_back(tagged(p.first, TriKind::kThroughCentres));
         s.triangles.push_back(tagged(p.second, TriKind::kThroughCentres));
       } else {
@@ -454,12 +522,14 @@ std::vector<RawPoint> points_on_open_segment(const RawPoint& a, const RawPoint& 
   const std::int64_t dy = std::int64_t{b[1]} - a[1];
   const std::int64_t g = std::gcd(std::llabs(dx), std::llabs(dy));
   std::vector<RawPoint> out;
-  if (g < 2 || limit == 0) return out;
-  const std::int64_t inner = g - 1;  // lattice points strictly inside: j = 1 .. g - 1
-  const auto count = static_cast<std::int64_t>(std::min<std::size_t>(
-      limit, static_cast<std::size_t>(inner)));
+  if (g < 2 || limit == 0)
+    return out;
+  const std::int64_t inner = g - 1; // lattice points strictly inside: j = 1 .. g - 1
+  const auto count =
+      static_cast<std::int64_t>(std::min<std::size_t>(limit, static_cast<std::size_t>(inner)));
   for (std::int64_t i = 0; i < count; ++i) {
-    const std::int64_t j = (count == inner) ? i + 1 : 1 + (inner - 1) * i / std::max<std::int64_t>(count - 1, 1);
+    const std::int64_t j =
+        (count == inner) ? i + 1 : 1 + (inner - 1) * i / std::max<std::int64_t>(count - 1, 1);
     out.push_back(point(a[0] + dx / g * j, a[1] + dy / g * j));
   }
   return out;
@@ -473,9 +543,9 @@ rc::Gen<Mesh> jittered_grid(std::int32_t w, std::int32_t h) {
   return rc::gen::exec([w, h] {
     Mesh m;
     m.kind = MeshKind::kJitteredGrid;
-    const std::int32_t s = *rc::gen::weightedOneOf<std::int32_t>(
-        {{2, rc::gen::element(128, 256, 384, 512, 768, 1024)},
-         {1, rc::gen::inRange<std::int32_t>(64, 1025)}});
+    const std::int32_t s =
+        *rc::gen::weightedOneOf<std::int32_t>({{2, rc::gen::element(128, 256, 384, 512, 768, 1024)},
+                                               {1, rc::gen::inRange<std::int32_t>(64, 1025)}});
     const auto nx = static_cast<std::size_t>(*rc::gen::inRange<std::int32_t>(1, 7));
     const auto ny = static_cast<std::size_t>(*rc::gen::inRange<std::int32_t>(1, 7));
     const RawPoint origin = *rc::gen::weightedOneOf<RawPoint>(
@@ -506,10 +576,14 @@ rc::Gen<Mesh> jittered_grid(std::int32_t w, std::int32_t h) {
         }
       }
     }
-    for (std::size_t i = 0; i < nx; ++i) m.outline.push_back(v[i][0]);
-    for (std::size_t k = 0; k < ny; ++k) m.outline.push_back(v[nx][k]);
-    for (std::size_t i = nx; i > 0; --i) m.outline.push_back(v[i][ny]);
-    for (std::size_t k = ny; k > 0; --k) m.outline.push_back(v[0][k]);
+    for (std::size_t i = 0; i < nx; ++i)
+      m.outline.push_back(v[i][0]);
+    for (std::size_t k = 0; k < ny; ++k)
+      m.outline.push_back(v[nx][k]);
+    for (std::size_t i = nx; i > 0; --i)
+      m.outline.push_back(v[i][ny]);
+    for (std::size_t k = ny; k > 0; --k)
+      m.outline.push_back(v[0][k]);
     return m;
   });
 }
@@ -554,7 +628,8 @@ rc::Gen<Mesh> lattice_fan(std::int32_t w, std::int32_t h) {
     std::vector<std::size_t> chosen;
     for (std::size_t i = 0; i < 8; ++i) {
       // Keep every other direction at least, so that consecutive spokes are < 180 deg apart.
-      if (keep[i] || i % 2 == 0) chosen.push_back(i);
+      if (keep[i] || i % 2 == 0)
+        chosen.push_back(i);
     }
     for (const std::size_t i : chosen) {
       const std::int32_t len = *rc::gen::inRange<std::int32_t>(1, 17) * kHalf;
@@ -576,34 +651,39 @@ rc::Gen<Mesh> delaunay(std::int32_t w, std::int32_t h) {
     m.kind = MeshKind::kDelaunay;
     const RawTriangle seed = *nondegenerate_raw_triangle_near(w, h);
     const auto lattice = rc::gen::apply(
-        [](std::int32_t i, std::int32_t j) { return RawPoint{i * kHalf, j * kHalf}; },
+        [](std::int32_t i, std::int32_t j) {
+          return RawPoint{i * kHalf, j * kHalf};
+        },
         rc::gen::inRange<std::int32_t>(-2 * kMargin, 2 * (w + kMargin)),
         rc::gen::inRange<std::int32_t>(-2 * kMargin, 2 * (h + kMargin)));
     const auto pts = *rc::gen::container<std::vector<RawPoint>>(
         static_cast<std::size_t>(*rc::gen::inRange<std::int32_t>(0, 25)),
         rc::gen::weightedOneOf<RawPoint>({{1, raw_point_near(w, h, kMargin)}, {1, lattice}}));
     std::vector<K::Point_2> points;
-    for (const RawPoint& p : seed) points.emplace_back(p[0], p[1]);
-    for (const RawPoint& p : pts) points.emplace_back(p[0], p[1]);
+    for (const RawPoint& p : seed)
+      points.emplace_back(p[0], p[1]);
+    for (const RawPoint& p : pts)
+      points.emplace_back(p[0], p[1]);
     const CGAL::Delaunay_triangulation_2<K> dt(points.begin(), points.end());
     const auto raw = [](const K::Point_2& p) {
       // Exact: the coordinates are integers below 2^24 stored in doubles.
       return RawPoint{static_cast<std::int32_t>(p.x()), static_cast<std::int32_t>(p.y())};
     };
     for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-      m.triangles.push_back(permuted(RawTriangle{raw(f->vertex(0)->point()),
-                                                 raw(f->vertex(1)->point()),
-                                                 raw(f->vertex(2)->point())},
-                                     *perm_index()));
+      m.triangles.push_back(
+          permuted(RawTriangle{raw(f->vertex(0)->point()), raw(f->vertex(1)->point()),
+                               raw(f->vertex(2)->point())},
+                   *perm_index()));
     }
     std::vector<K::Point_2> hull;
     CGAL::convex_hull_2(points.begin(), points.end(), std::back_inserter(hull));
-    for (const K::Point_2& p : hull) m.outline.push_back(raw(p));
+    for (const K::Point_2& p : hull)
+      m.outline.push_back(raw(p));
     return m;
   });
 }
 
-}  // namespace
+} // namespace
 
 rc::Gen<Mesh> mesh_near(std::int32_t width, std::int32_t height) {
   return rc::gen::weightedOneOf<Mesh>({
@@ -663,7 +743,8 @@ void showValue(const GenTriangle& t, std::ostream& os) {
 
 void showValue(const TriScene& s, std::ostream& os) {
   os << "scene (kinds:";
-  for (const GenTriangle& t : s.triangles) os << " " << to_string(t.kind) << ";";
+  for (const GenTriangle& t : s.triangles)
+    os << " " << to_string(t.kind) << ";";
   os << ")\n" << to_json(s);
 }
 
@@ -674,12 +755,13 @@ void show_raw(const RawPoint& p, std::ostream& os) {
 void show_raw(const RawTriangle& t, std::ostream& os) {
   os << "[";
   for (std::size_t i = 0; i < 3; ++i) {
-    if (i) os << ", ";
+    if (i)
+      os << ", ";
     show_raw(t[i], os);
   }
   os << "]";
 }
-}  // namespace
+} // namespace
 
 void showValue(const SharedEdgePair& p, std::ostream& os) {
   os << "shared edge (raw 16.8) ";
@@ -695,15 +777,17 @@ void showValue(const SharedEdgePair& p, std::ostream& os) {
 void showValue(const Mesh& m, std::ostream& os) {
   os << to_string(m.kind) << " mesh (raw 16.8), outline [";
   for (std::size_t i = 0; i < m.outline.size(); ++i) {
-    if (i) os << ", ";
+    if (i)
+      os << ", ";
     show_raw(m.outline[i], os);
   }
   os << "], triangles [";
   for (std::size_t i = 0; i < m.triangles.size(); ++i) {
-    if (i) os << ", ";
+    if (i)
+      os << ", ";
     show_raw(m.triangles[i], os);
   }
   os << "]";
 }
 
-}  // namespace rastrules::gen
+} // namespace rastrules::gen

@@ -51,37 +51,47 @@ enum class EdgeKind { kTop, kBottom, kLeft, kRight };
 // rule: TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE, TRI.FILL.CONVENTION
 EdgeKind classify(const Raw& a, const Raw& b, const Raw& c) {
   if (a[1] == b[1]) {
-    if (c[1] == a[1]) throw std::logic_error("oracle: classify called on a degenerate triangle");
+    if (c[1] == a[1])
+      throw std::logic_error("oracle: classify called on a degenerate triangle");
     return c[1] > a[1] ? EdgeKind::kTop : EdgeKind::kBottom;
   }
   // x of the line through a and b at height c.y: a.x + (b.x - a.x) (c.y - a.y) / (b.y - a.y).
   const Q line_x = Q(a[0]) + Q(b[0] - a[0]) * Q(c[1] - a[1]) / Q(b[1] - a[1]);
   const Q third_x = Q(c[0]);
-  if (third_x == line_x) throw std::logic_error("oracle: classify called on a degenerate triangle");
+  if (third_x == line_x)
+    throw std::logic_error("oracle: classify called on a degenerate triangle");
   return third_x > line_x ? EdgeKind::kLeft : EdgeKind::kRight;
 }
 
 struct Convention {
-  bool top;   // horizontal edges with the interior below are inclusive (else those above)
-  bool left;  // other edges with the interior to the right are inclusive (else to the left)
+  bool top;  // horizontal edges with the interior below are inclusive (else those above)
+  bool left; // other edges with the interior to the right are inclusive (else to the left)
 };
 
 // rule: TRI.FILL.CONVENTION
 Convention parse_fill(const std::string& fill) {
-  if (fill == "top-left") return {true, true};
-  if (fill == "top-right") return {true, false};
-  if (fill == "bottom-left") return {false, true};
-  if (fill == "bottom-right") return {false, false};
+  if (fill == "top-left")
+    return {true, true};
+  if (fill == "top-right")
+    return {true, false};
+  if (fill == "bottom-left")
+    return {false, true};
+  if (fill == "bottom-right")
+    return {false, false};
   throw std::invalid_argument("oracle: unknown fill convention '" + fill + "'");
 }
 
 // rule: TRI.FILL.CONVENTION
 bool is_inclusive(EdgeKind k, Convention c) {
   switch (k) {
-    case EdgeKind::kTop: return c.top;
-    case EdgeKind::kBottom: return !c.top;
-    case EdgeKind::kLeft: return c.left;
-    case EdgeKind::kRight: return !c.left;
+  case EdgeKind::kTop:
+    return c.top;
+  case EdgeKind::kBottom:
+    return !c.top;
+  case EdgeKind::kLeft:
+    return c.left;
+  case EdgeKind::kRight:
+    return !c.left;
   }
   return false;
 }
@@ -90,13 +100,14 @@ bool is_inclusive(EdgeKind k, Convention c) {
 struct Prepared {
   bool drawn = false;
   std::array<Point, 3> p{};
-  std::array<bool, 3> inclusive{};  // edge i joins p[i] and p[(i + 1) % 3]
+  std::array<bool, 3> inclusive{}; // edge i joins p[i] and p[(i + 1) % 3]
 };
 
 Prepared prepare(const std::array<Raw, 3>& v, const State& state) {
   const Convention conv = parse_fill(state.fill);
   Prepared t;
-  for (std::size_t i = 0; i < 3; ++i) t.p[i] = to_point(v[i]);
+  for (std::size_t i = 0; i < 3; ++i)
+    t.p[i] = to_point(v[i]);
   // Winding. CGAL::orientation(p, q, r) is the sign of
   //   (q.x - p.x)(r.y - p.y) - (q.y - p.y)(r.x - p.x),
   // LEFT_TURN when positive, which is counter-clockwise for axes with y pointing up. Window
@@ -107,7 +118,8 @@ Prepared prepare(const std::array<Raw, 3>& v, const State& state) {
   // rule: TRI.ORIENT.AREA
   const CGAL::Orientation o = CGAL::orientation(t.p[0], t.p[1], t.p[2]);
   // rule: TRI.DEGENERATE.ZERO_AREA
-  if (o == CGAL::COLLINEAR) return t;  // covers nothing, whatever the cull mode
+  if (o == CGAL::COLLINEAR)
+    return t; // covers nothing, whatever the cull mode
   const bool clockwise = (o == CGAL::LEFT_TURN);
   // rule: TRI.CULL.MODE
   bool front_facing = false;
@@ -119,9 +131,11 @@ Prepared prepare(const std::array<Raw, 3>& v, const State& state) {
     throw std::invalid_argument("oracle: unknown front face '" + state.front_face + "'");
   }
   if (state.cull == "back") {
-    if (!front_facing) return t;
+    if (!front_facing)
+      return t;
   } else if (state.cull == "front") {
-    if (front_facing) return t;
+    if (front_facing)
+      return t;
   } else if (state.cull != "none") {
     throw std::invalid_argument("oracle: unknown cull mode '" + state.cull + "'");
   }
@@ -138,29 +152,37 @@ Prepared prepare(const std::array<Raw, 3>& v, const State& state) {
 // touch the pixel center, then if both edges are 'top' or 'left' then the sample is inside").
 // rule: TRI.FILL.TOP_LEFT, TRI.COVER.SAMPLE
 bool covers_prepared(const Prepared& t, const Point& s) {
-  if (!t.drawn) return false;
+  if (!t.drawn)
+    return false;
   const K::Triangle_2 tri(t.p[0], t.p[1], t.p[2]);
   switch (tri.bounded_side(s)) {
-    case CGAL::ON_BOUNDED_SIDE: return true;
-    case CGAL::ON_UNBOUNDED_SIDE: return false;
-    case CGAL::ON_BOUNDARY: break;
+  case CGAL::ON_BOUNDED_SIDE:
+    return true;
+  case CGAL::ON_UNBOUNDED_SIDE:
+    return false;
+  case CGAL::ON_BOUNDARY:
+    break;
   }
   for (std::size_t i = 0; i < 3; ++i) {
     const K::Segment_2 edge(t.p[i], t.p[(i + 1) % 3]);
-    if (edge.has_on(s) && !t.inclusive[i]) return false;
+    if (edge.has_on(s) && !t.inclusive[i])
+      return false;
   }
   return true;
 }
 
-}  // namespace
+} // namespace
 
 // rule: TRI.ORIENT.AREA
 int winding(const std::array<std::array<std::int64_t, 2>, 3>& snapped) {
   // LEFT_TURN is clockwise on screen: see the derivation in prepare().
   switch (CGAL::orientation(to_point(snapped[0]), to_point(snapped[1]), to_point(snapped[2]))) {
-    case CGAL::LEFT_TURN: return 1;
-    case CGAL::RIGHT_TURN: return -1;
-    default: return 0;
+  case CGAL::LEFT_TURN:
+    return 1;
+  case CGAL::RIGHT_TURN:
+    return -1;
+  default:
+    return 0;
   }
 }
 
@@ -194,7 +216,8 @@ std::vector<Fragment> render(const Scene& scene) {
   // Pixel (x, y) has its only sample at (x + 0.5, y + 0.5) px = (256 x + 128, 256 y + 128) raw.
   std::vector<Fragment> out;
   for (std::size_t p = 0; p < prepared.size(); ++p) {
-    if (!prepared[p].drawn) continue;
+    if (!prepared[p].drawn)
+      continue;
     for (std::int32_t y = 0; y < scene.height; ++y) {
       for (std::int32_t x = 0; x < scene.width; ++x) {
         const Point s = to_point({std::int64_t{256} * x + 128, std::int64_t{256} * y + 128});
@@ -204,7 +227,7 @@ std::vector<Fragment> render(const Scene& scene) {
       }
     }
   }
-  return out;  // already sorted by (prim, y, x)
+  return out; // already sorted by (prim, y, x)
 }
 
-}  // namespace rastrules::oracle
+} // namespace rastrules::oracle

@@ -25,4 +25,4 @@ namespace rastrules::gen {
 [[nodiscard]] std::string describe_difference(const std::vector<Fragment>& kernel,
                                               const std::vector<oracle::Fragment>& oracle);
 
-}  // namespace rastrules::gen
+} // namespace rastrules::gen

@@ -14,14 +14,14 @@
 namespace rastrules::gen {
 
 enum class FloatClass {
-  kAnyBits,        // a uniformly random 32-bit pattern
-  kSubnormal,      // exponent field 0
-  kSpecial,        // NaN (any payload), +-Inf, +-0, FLT_MIN, FLT_MAX, the smallest subnormal
-  kTie,            // (2k + 1) / 512: exactly half-way between two 16.8 values
-  kNearTie,        // one ulp either side of a tie
-  kExactSubpixel,  // k / 256: snaps without rounding
-  kNearLimit,      // within a few ulps of the ends of SNAP.VERTEX.RANGE
-  kInRange,        // a random float in [-32768, 32768] with bits below 1/256
+  kAnyBits,       // a uniformly random 32-bit pattern
+  kSubnormal,     // exponent field 0
+  kSpecial,       // NaN (any payload), +-Inf, +-0, FLT_MIN, FLT_MAX, the smallest subnormal
+  kTie,           // (2k + 1) / 512: exactly half-way between two 16.8 values
+  kNearTie,       // one ulp either side of a tie
+  kExactSubpixel, // k / 256: snaps without rounding
+  kNearLimit,     // within a few ulps of the ends of SNAP.VERTEX.RANGE
+  kInRange,       // a random float in [-32768, 32768] with bits below 1/256
 };
 
 [[nodiscard]] std::string_view to_string(FloatClass c);
@@ -41,9 +41,8 @@ void showValue(const FloatCase& f, std::ostream& os);
 // pattern in hex, and "NaN"/"Infinity"/"-Infinity" for the special values.
 void show_float(float v, std::ostream& os);
 
-}  // namespace rastrules::gen
+} // namespace rastrules::gen
 
-template <>
-struct rc::Arbitrary<rastrules::gen::FloatCase> {
+template <> struct rc::Arbitrary<rastrules::gen::FloatCase> {
   static rc::Gen<rastrules::gen::FloatCase> arbitrary() { return rastrules::gen::float_case(); }
 };

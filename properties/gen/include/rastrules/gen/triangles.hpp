@@ -31,18 +31,18 @@ using FloatTriangle = std::array<std::array<float, 2>, 3>;
 
 // How a triangle was built; RC_TAG uses it to show that every tie class occurred.
 enum class TriKind {
-  kRandom,          // vertices on the 1/256 grid near the target
-  kPixelCentres,    // vertices on pixel centres
-  kSnapTies,        // some coordinates exactly half-way between two 16.8 values
-  kHorizontalEdge,  // two vertices with equal snapped y
-  kVerticalEdge,    // two vertices with equal snapped x
-  kThroughCentres,  // an edge passing exactly through one or more pixel centres
-  kSliver,          // third vertex within a few 1/256 of the other two's line
-  kNeedle,          // two vertices a few 1/256 apart, the third far away
-  kHuge,            // vertices far outside the target, the triangle crossing it
-  kRangeLimits,     // coordinates at or next to -2^23 and 2^23 - 1 raw
-  kDegenerate,      // collinear or coincident snapped vertices
-  kFloats,          // floats with bits below 1/256 (snapping rounds)
+  kRandom,         // vertices on the 1/256 grid near the target
+  kPixelCentres,   // vertices on pixel centres
+  kSnapTies,       // some coordinates exactly half-way between two 16.8 values
+  kHorizontalEdge, // two vertices with equal snapped y
+  kVerticalEdge,   // two vertices with equal snapped x
+  kThroughCentres, // an edge passing exactly through one or more pixel centres
+  kSliver,         // third vertex within a few 1/256 of the other two's line
+  kNeedle,         // two vertices a few 1/256 apart, the third far away
+  kHuge,           // vertices far outside the target, the triangle crossing it
+  kRangeLimits,    // coordinates at or next to -2^23 and 2^23 - 1 raw
+  kDegenerate,     // collinear or coincident snapped vertices
+  kFloats,         // floats with bits below 1/256 (snapping rounds)
 };
 
 [[nodiscard]] std::string_view to_string(TriKind k);
@@ -113,24 +113,23 @@ enum class MeshKind { kJitteredGrid, kFan, kLatticeFan, kDelaunay };
 // vertices, all vertices exactly on the 1/256 grid (so snapping keeps it a triangulation).
 struct Mesh {
   MeshKind kind = MeshKind::kJitteredGrid;
-  std::vector<RawPoint> outline;  // the polygon, in order (either orientation)
+  std::vector<RawPoint> outline; // the polygon, in order (either orientation)
   std::vector<RawTriangle> triangles;
 };
 [[nodiscard]] rc::Gen<Mesh> mesh_near(std::int32_t width, std::int32_t height);
 
 // Conversions for the two renderers.
 [[nodiscard]] Scene to_kernel_scene(const TriScene& s);
-[[nodiscard]] std::string to_json(const TriScene& s);  // spec/scene.md, floats round-trip
+[[nodiscard]] std::string to_json(const TriScene& s); // spec/scene.md, floats round-trip
 
 void showValue(const GenTriangle& t, std::ostream& os);
 void showValue(const TriScene& s, std::ostream& os);
 void showValue(const SharedEdgePair& p, std::ostream& os);
 void showValue(const Mesh& m, std::ostream& os);
 
-}  // namespace rastrules::gen
+} // namespace rastrules::gen
 
-template <>
-struct rc::Arbitrary<rastrules::gen::SharedEdgePair> {
+template <> struct rc::Arbitrary<rastrules::gen::SharedEdgePair> {
   static rc::Gen<rastrules::gen::SharedEdgePair> arbitrary() {
     return rastrules::gen::shared_edge_pair();
   }
