@@ -24,7 +24,7 @@ template <class F> void prove_edge_value_no_overflow(Prover& pr) {
   const Point<S> a = point_var<S>(dom, "a");
   const Point<S> b = point_var<S>(dom, "b");
   const Point<S> p = point_var<S>(dom, "p");
-  // rule: SNAP.VERTEX.RANGE
+  // Assumes: SNAP.VERTEX.RANGE
   const std::vector<z3::expr> hyps = {in_vertex_range<F>(a), in_vertex_range<F>(b),
                                       in_vertex_range<F>(p)};
   const std::string type = type_name<typename S::rep>();

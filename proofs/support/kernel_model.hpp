@@ -47,7 +47,7 @@ struct KernelModel {
   // rastrules/raster/walk.hpp), on raw coordinates widened from int32_t.
   using Acc = Sym<std::int64_t>;
 
-  // rule: SNAP.VERTEX.RANGE
+  // Assumes: SNAP.VERTEX.RANGE
   static constexpr std::int64_t kMinRaw = kMinVertexRaw;
   static constexpr std::int64_t kMaxRaw = kMaxVertexRaw;
   // One pixel in raw units: the traversal steps by kSubpixelOne (walk.hpp).
@@ -80,7 +80,7 @@ struct KernelModel {
   }
 
   // Mirrors rastrules::inside (triangle.hpp): E > 0, or E == 0 and the edge is inclusive.
-  // rule: TRI.FILL.TOP_LEFT
+  // Mirrors (assumed, not proved here): TRI.FILL.TOP_LEFT
   template <class S> static SymBool inside(const S& e, const SymBool& inclusive) {
     const S zero(0);
     return e > zero || (e == zero && inclusive);
@@ -88,7 +88,7 @@ struct KernelModel {
 
   // Mirrors setup_triangle (triangle.hpp): `t.clockwise = t.twice_area > 0`, and a triangle
   // that is not clockwise is normalised to (v0, v2, v1) (see covers_normalised below).
-  // rule: TRI.ORIENT.NORMALISE
+  // Mirrors (assumed, not proved here): TRI.ORIENT.NORMALISE
   template <class S> static SymBool is_clockwise(const Triangle<S>& v) {
     return twice_signed_area(v) > S(0);
   }
@@ -97,7 +97,7 @@ struct KernelModel {
 // Returns whether clockwise (normalised) triangle t covers sample p under the convention
 // (TopInclusive, LeftInclusive): inside all three edges (v0 v1), (v1 v2), (v2 v0), as
 // rastrules::covers does for a rasterized triangle.
-// rule: TRI.COVER.SAMPLE, TRI.FILL.CONVENTION
+// Mirrors (assumed, not proved here): TRI.COVER.SAMPLE
 template <class F, bool TopInclusive, bool LeftInclusive, class S>
 SymBool covers(const Triangle<S>& t, const Point<S>& p) {
   SymBool all(true);
@@ -116,7 +116,7 @@ SymBool covers(const Triangle<S>& t, const Point<S>& p) {
 // then p must be inside all three edges (rastrules::covers). The kernel selects the vertex
 // order and then evaluates; selecting between the two evaluations is the same function, and
 // keeps every edge value a polynomial in the inputs.
-// rule: TRI.ORIENT.NORMALISE, TRI.COVER.SAMPLE
+// Mirrors (assumed, not proved here): TRI.ORIENT.NORMALISE, TRI.COVER.SAMPLE
 template <class F, bool TopInclusive, bool LeftInclusive, class S>
 SymBool covers_normalised(const Triangle<S>& v, const Point<S>& p) {
   return select(F::is_clockwise(v), covers<F, TopInclusive, LeftInclusive>(v, p),

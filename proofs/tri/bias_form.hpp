@@ -29,7 +29,7 @@ template <class F> void prove_bias_form(Prover& pr) {
   const Point<S> a = point_var<S>(dom, "a");
   const Point<S> b = point_var<S>(dom, "b");
   const Point<S> p = point_var<S>(dom, "p");
-  // rule: SNAP.VERTEX.RANGE
+  // Assumes: SNAP.VERTEX.RANGE
   const std::vector<z3::expr> hyps = {in_vertex_range<F>(a), in_vertex_range<F>(b),
                                       in_vertex_range<F>(p)};
   for (const bool inclusive : {true, false}) {
@@ -37,7 +37,7 @@ template <class F> void prove_bias_form(Prover& pr) {
     const S e = F::edge_value(a, b, p);
     const S biased = e + F::template edge_bias<S>(inclusive);
     const z3::expr flag = ctx.bool_val(inclusive);
-    // rule: TRI.FILL.TOP_LEFT
+    // The rule side, as TRI.FILL.TOP_LEFT states it.
     const z3::expr rule = e.expr() > 0 || (e.expr() == 0 && flag);
     pr.watch("E_ab(p)", e.expr(), Unit::kEdgeRaw);
     pr.watch("E + bias", biased.expr(), Unit::kEdgeRaw);

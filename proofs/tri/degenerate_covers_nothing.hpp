@@ -27,7 +27,7 @@ template <class F> void prove_degenerate_covers_nothing(Prover& pr) {
   const Point<S> c = point_var<S>(dom, "c");
   const Point<S> p = point_var<S>(dom, "p");
   const S area = F::twice_signed_area(Triangle<S>{a, b, c});
-  // rule: SNAP.VERTEX.RANGE, TRI.ORIENT.AREA
+  // Assumes: SNAP.VERTEX.RANGE, TRI.ORIENT.AREA
   const std::vector<z3::expr> hyps = {in_vertex_range<F>(a), in_vertex_range<F>(b),
                                       in_vertex_range<F>(c), in_vertex_range<F>(p),
                                       area.expr() == 0};

@@ -29,7 +29,7 @@ template <class F> void prove_incremental_step(Prover& pr) {
   const S one(F::kOne);
   const Point<S> px{p.x + one, p.y};
   const Point<S> py{p.x, p.y + one};
-  // rule: SNAP.VERTEX.RANGE
+  // Assumes: SNAP.VERTEX.RANGE
   const std::vector<z3::expr> base = {in_vertex_range<F>(a), in_vertex_range<F>(b),
                                       in_vertex_range<F>(p)};
   std::vector<z3::expr> hyps_x = base;

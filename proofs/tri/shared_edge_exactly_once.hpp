@@ -83,7 +83,7 @@ template <class F> void prove_shared_edge_exactly_once(Prover& pr) {
   // Part 1.
   {
     const Point<S> b = point_var<S>(dom, "b");
-    // rule: SNAP.VERTEX.RANGE
+    // Assumes: SNAP.VERTEX.RANGE
     const z3::expr a_ne_b = !(a.x.expr() == b.x.expr() && a.y.expr() == b.y.expr());
     const std::vector<z3::expr> hyps = {in_vertex_range<F>(a), in_vertex_range<F>(b), a_ne_b};
     for_each_convention([&]<bool TopInclusive, bool LeftInclusive>(const char* convention) {
@@ -134,7 +134,7 @@ template <class F> void prove_shared_edge_exactly_once(Prover& pr) {
 
   const z3::expr oc = spec_orientation(a, b, c);
   const z3::expr od = spec_orientation(a, b, d);
-  // rule: SNAP.VERTEX.RANGE
+  // Assumes: SNAP.VERTEX.RANGE
   const std::vector<z3::expr> hyps = {
       in_vertex_range<F>(a),
       in_vertex_range<F>(b),

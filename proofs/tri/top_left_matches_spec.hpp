@@ -79,7 +79,7 @@ template <class F> void prove_top_left_matches_spec(Prover& pr) {
   const Point<S> b = point_var<S>(dom, "b");
   const Point<S> c = point_var<S>(dom, "c");
   const S area = F::twice_signed_area(Triangle<S>{a, b, c});
-  // rule: SNAP.VERTEX.RANGE, TRI.ORIENT.AREA
+  // Assumes: SNAP.VERTEX.RANGE, TRI.ORIENT.AREA
   const std::vector<z3::expr> hyps = {in_vertex_range<F>(a), in_vertex_range<F>(b),
                                       in_vertex_range<F>(c), area.expr() > 0};
 
