@@ -7,7 +7,7 @@
 // equals the mathematical value.
 // Method: the templates are instantiated on Sym<std::int64_t> (exact integers that record a
 // "fits int64_t" obligation per + - *); hypotheses AND NOT(all obligations) must be unsat.
-// rule: FIX.BUDGET.EDGE_VALUE
+// rule: FIX.BUDGET.EDGE_VALUE, TRI.EDGE.FUNCTION
 // Assumes: SNAP.VERTEX.RANGE
 // Expected: PROVED. Exit status 0 iff every theorem is PROVED; a counterexample is printed
 // otherwise.

@@ -24,7 +24,7 @@ namespace {
 
 using rastrules::gen::FloatCase;
 
-// rule: SNAP.VERTEX.ROUND, SNAP.VERTEX.RANGE
+// rule: SNAP.VERTEX.FORMAT, SNAP.VERTEX.ROUND, SNAP.VERTEX.RANGE
 RC_GTEST_PROP(SnapVertex, SnapToSubpixelEqualsExactRationalRounding, (const FloatCase& f)) {
   RC_TAG(std::string(to_string(f.cls)));
   const rastrules::SnapResult k = rastrules::snap_to_subpixel(f.v);

@@ -105,8 +105,7 @@ std::vector<gen::RawPoint> tie_samples(const gen::RawTriangle& t) {
   return out;
 }
 
-// rule: TRI.FILL.TOP_LEFT, TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE, TRI.FILL.CONVENTION,
-// TRI.CULL.MODE
+// rule: TRI.FILL.TOP_LEFT, TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE, TRI.FILL.CONVENTION, TRI.CULL.MODE
 RC_GTEST_PROP(TriFill, CoversEqualsOracleOnVerticesEdgesAndTheirNeighbours, ()) {
   const rastrules::RasterState state = *gen::raster_state();
   const gen::RawTriangle t = *rc::gen::weightedOneOf<gen::RawTriangle>({

@@ -113,7 +113,7 @@ RC_GTEST_PROP(TriInvariance, ReversingTheWindingWithCullNoneChangesNothing, ()) 
   RC_ASSERT(render_ok(r) == render_ok(s));
 }
 
-// rule: TRI.INVARIANCE.TRANSLATION, TRI.CULL.MODE, SNAP.CULL.AFTER_SNAP, TRI.DEGENERATE.ZERO_AREA
+// rule: TRI.INVARIANCE.TRANSLATION, TRI.CULL.MODE, TRI.ORIENT.AREA, SNAP.CULL.AFTER_SNAP, TRI.DEGENERATE.ZERO_AREA
 RC_GTEST_PROP(TriInvariance, CullingKeepsExactlyTheTrianglesOfTheOtherWinding, ()) {
   gen::TriScene s = *gen::tri_scene(32, 8);
   s.state.cull = rastrules::CullMode::kNone;
