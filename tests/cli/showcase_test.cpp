@@ -63,6 +63,34 @@ TEST(CliShowcase, EverySceneAgreesWithTheOracleAndItsFilesAreConsistent) {
   }
 }
 
+// Points, lines and antialiased lines are checked by their own oracles, and the summary says
+// which oracle checked each scene.
+// rule: SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP
+// rule: SCENE.LINE_MODE, SCENE.OUTPUT.COVERAGE
+TEST(CliShowcase, PointAndLineScenesNameTheOracleThatCheckedThem) {
+  const TempDir dir;
+  const auto r = run_cli({"showcase", "--out", (dir / "pictures").string()});
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  const std::size_t at = r.out.find("oracles used:\n");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const std::string used = r.out.substr(at);
+  for (const char* line :
+       {"  fan: triangle oracle (render)\n", "  points: point oracle (point_covers)\n",
+        "  lines-d3d: line oracle (aliased_line_pixels)\n",
+        "  lines-vulkan: line oracle (aliased_line_pixels)\n",
+        "  line-strip: line oracle (aliased_line_pixels)\n",
+        "  lines-aa: AA-line oracle (aa_pixels, aa_check within 1/65536)\n",
+        "  quad-lines-1.4: quad-line oracle (quad_line_covers)\n",
+        "  quad-lines-1.0: quad-line oracle (quad_line_covers)\n"}) {
+    EXPECT_NE(used.find(line), std::string::npos) << line << "in:\n" << used;
+  }
+  // The strip scene draws pixels twice (once per segment) and the AA scene writes coverage.
+  const std::string strip = read_file(dir / "pictures" / "line-strip.fragments.json");
+  EXPECT_NE(strip.find("\"seg\": 2"), std::string::npos);
+  const std::string aa = read_file(dir / "pictures" / "lines-aa.fragments.json");
+  EXPECT_NE(aa.find("\"coverage\": 0."), std::string::npos);
+}
+
 // rule: SCENE.INPUT.ERRORS
 TEST(CliShowcase, MissingOutputDirectoryIsAUsageError) {
   const auto r = run_cli({"showcase"});

@@ -13,6 +13,8 @@
 
 #include "cli.hpp"
 #include "rastrules/io/scene_json.hpp"
+#include "rastrules/line_aa.hpp"
+#include "rastrules/line_aliased.hpp"
 #include "rastrules/triangle.hpp"
 
 namespace rastrules::cli {
@@ -27,9 +29,11 @@ struct EdgeReport {
   std::string decision;  // rule ID and reason
 };
 
+// One triangle's report: a triangle primitive, one half of a point, or one half of a
+// quadrilateral line segment.
 struct PrimitiveReport {
   std::size_t index = 0;
-  Primitive input;
+  Primitive input; // the triangle's own vertices (for a point or a quad line: its corners)
   TriangleSetup setup;
   bool has_edges = false;    // false for degenerate triangles
   bool culled = false;       // the edges are then shown for information only
@@ -37,6 +41,30 @@ struct PrimitiveReport {
   bool covered = false;
   bool inside_all_edges = false;
   std::vector<std::string> decided_by;
+};
+
+// One segment of a line or line strip at the pixel (aliased or antialiased).
+struct SegReport {
+  std::uint32_t seg = 0;
+  Vec2 a, b;                      // snapped endpoints
+  bool x_major = false;           // |dx| >= |dy|
+  bool covered = false;           // the kernel's verdict for this pixel
+  std::uint32_t coverage_q16 = 0; // antialiased lines
+  LineDiamondDecision decision;   // aliased lines
+};
+
+// The report of one primitive: a triangle (tris[0]), a point (tris: its two triangles), a
+// quadrilateral line (tris: two per segment, tri_seg), or an aliased / antialiased line (segs).
+struct Report {
+  std::size_t index = 0;
+  PrimitiveType type = PrimitiveType::kTriangle;
+  bool aa = false;
+  Primitive input;
+  std::vector<Vec2> snapped;
+  std::vector<PrimitiveReport> tris;
+  std::vector<std::uint32_t> tri_seg;
+  std::vector<SegReport> segs;
+  bool covered = false;
 };
 
 std::string px(Subpixel v) { return fixed_decimal(v.raw(), kSubpixelBits); }
@@ -59,8 +87,9 @@ std::string edge_decision(const EdgeReport& e, FillConvention fill) {
          " -> " + verdict;
 }
 
-PrimitiveReport explain_primitive(std::size_t index, const Primitive& input,
-                                  const TriangleSetup& setup, const RasterState& state, Vec2 sample) {
+PrimitiveReport explain_triangle(std::size_t index, const Primitive& input,
+                                 const TriangleSetup& setup, const RasterState& state,
+                                 Vec2 sample) {
   PrimitiveReport r;
   r.index = index;
   r.input = input;
@@ -127,56 +156,227 @@ PrimitiveReport explain_primitive(std::size_t index, const Primitive& input,
   return r;
 }
 
+// The text report of one triangle, each line starting with ind.
+std::string triangle_text(const PrimitiveReport& r, const PreparedScene& s, const std::string& ind,
+                          bool show_input = true) {
+  std::string out;
+  const TriangleSetup& t = r.setup;
+
+  if (show_input) {
+    out += ind + "vertices, input float32 -> snapped 16.8  [SNAP.VERTEX.ROUND]:\n";
+    for (std::size_t i = 0; i < 3; ++i) {
+      out += ind + "  v" + std::to_string(i) + " (" + io::format_float(r.input.v[i][0]) + ", " +
+             io::format_float(r.input.v[i][1]) + ") -> " + point_px(t.snapped[i]) + " px = raw " +
+             point_raw(t.snapped[i]) + "\n";
+    }
+  } else {
+    out += ind + "vertices (snapped 16.8):";
+    for (std::size_t i = 0; i < 3; ++i)
+      out += " v" + std::to_string(i) + " " + point_px(t.snapped[i]);
+    out += "\n";
+  }
+  out += ind + "twice signed area A = " + std::to_string(t.twice_area) +
+         " raw = " + area_px2(t.twice_area) + " px^2: " +
+         (t.twice_area == 0 ? std::string("degenerate")
+                            : std::string(t.clockwise ? "clockwise" : "counter-clockwise") + ", " +
+                                  (t.front_facing ? "front-facing" : "back-facing")) +
+         "  [TRI.ORIENT.AREA, TRI.CULL.MODE]\n";
+  out += ind + "status: " + std::string(to_string(t.status)) + "\n";
+  if (r.has_edges) {
+    out += ind + "edges in clockwise order" + (t.clockwise ? "" : " (v1 and v2 swapped)") +
+           "  [TRI.ORIENT.NORMALISE]" +
+           (r.culled ? ", for information only (the triangle is culled)" : "") + ":\n";
+    for (std::size_t i = 0; i < 3; ++i) {
+      const EdgeReport& e = r.edges[i];
+      out += ind + "  edge " + std::to_string(i) + ": v" + std::to_string(e.from) + " " +
+             point_px(e.a) + " -> v" + std::to_string(e.to) + " " + point_px(e.b) + "\n";
+      out += ind + "    E at the centre = " + std::to_string(e.e) + " raw = " + area_px2(e.e) +
+             " px^2  [TRI.EDGE.FUNCTION]\n";
+      out += ind + "    " + e.kind + " edge: top " + (e.top ? "yes" : "no") + ", left " +
+             (e.left ? "yes" : "no") + ", inclusive under " + std::string(to_string(s.state.fill)) +
+             " " + (e.inclusive ? "yes" : "no") + "  [TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE]\n";
+      out += ind + "    " + std::string(e.inside ? "inside" : "outside") + ": " + e.decision + "\n";
+    }
+    }
+    out += ind + "verdict: " + std::string(r.covered ? "covered" : "not covered") + "\n";
+    out += ind + "decided by:\n";
+    for (const std::string& d : r.decided_by)
+      out += ind + "  " + d + "\n";
+    if (r.culled) {
+      out += ind + std::string("  (without culling the centre would be ") +
+             (r.inside_all_edges ? "inside" : "outside") + ")\n";
+    }
+    return out;
+}
+
+std::string fraction_q16(std::uint32_t q) {
+  return fixed_decimal(static_cast<std::int64_t>(q), kAACoverageBits);
+}
+
+// The diamond features named in a DiamondFeature bit set.
+std::string features_text(std::uint32_t bits) {
+  std::string out;
+  for (std::uint32_t b = 1; b <= kFeatureCornerLeft; b <<= 1) {
+    if ((bits & b) == 0)
+      continue;
+    out += (out.empty() ? "" : ", ") + std::string(to_string(static_cast<DiamondFeature>(b)));
+  }
+  return out.empty() ? "nothing" : out;
+}
+
+// The diamond test area of the pixel whose centre is c: corners at c +- (0.5, 0), (0, 0.5).
+std::string diamond_text(Vec2 c) {
+  auto at = [&](std::int32_t dx, std::int32_t dy) {
+    return point_px(Vec2{Subpixel::from_raw(c.x.raw() + dx), Subpixel::from_raw(c.y.raw() + dy)});
+  };
+  const std::int32_t h = kSubpixelHalf;
+  return "top " + at(0, -h) + ", right " + at(h, 0) + ", bottom " + at(0, h) + ", left " +
+         at(-h, 0);
+}
+
+// The text of a point, a line or a line strip.
+std::string other_text(const Report& r, const PreparedScene& s, Vec2 sample) {
+  std::string out = "\nprimitive " + std::to_string(r.index) + ": " +
+                    std::string(to_string(r.type)) + (r.aa ? " (antialiased)" : "") + "\n";
+  out += "  vertices, input float32 -> snapped 16.8  [SNAP.VERTEX.ROUND]:\n";
+  for (std::size_t i = 0; i < r.snapped.size(); ++i) {
+    out += "    v" + std::to_string(i) + " (" + io::format_float(r.input.v[i][0]) + ", " +
+           io::format_float(r.input.v[i][1]) + ") -> " + point_px(r.snapped[i]) + " px = raw " +
+           point_raw(r.snapped[i]) + "\n";
+  }
+  if (r.type == PrimitiveType::kPoint) {
+    // rule: SCENE.PRIM.POINT
+    out += "  a 1x1 square centred on v0, drawn as two triangles (Z pattern) under the triangle "
+           "rules, never culled  [SCENE.PRIM.POINT]\n";
+    for (std::size_t k = 0; k < r.tris.size(); ++k) {
+      out += "  triangle " + std::to_string(k) + " of the point:\n";
+      out += triangle_text(r.tris[k], s, "    ", false);
+    }
+  } else if (!r.tris.empty()) {
+    out += "  quadrilateral line (line_mode " + std::string(io::line_mode_name(s.line_mode)) +
+           "): a rectangle of two triangles per segment under the triangle rules, never culled  "
+           "[SCENE.LINE_MODE]\n";
+    for (std::size_t k = 0; k < r.tris.size(); ++k) {
+      out += "  segment " + std::to_string(r.tri_seg[k]) + ", triangle " + std::to_string(k % 2) +
+             ":\n";
+      out += triangle_text(r.tris[k], s, "    ", false);
+    }
+  } else {
+    if (!r.aa)
+      out += "  pixel's diamond test area: " + diamond_text(sample) + "\n";
+    for (const SegReport& g : r.segs) {
+      out += "  segment " + std::to_string(g.seg) + ": " + point_px(g.a) + " -> " + point_px(g.b) +
+             ", " + (g.x_major ? "x-major" : "y-major") + "\n";
+      if (r.aa) {
+        out += "    coverage = " + fraction_q16(g.coverage_q16) + " (" +
+               std::to_string(g.coverage_q16) +
+               "/65536): mean over the squares R0..R4 (widths 1, 1.5, 2, 2.5, 3) of area(line "
+               "rectangle & Ri) / area(Ri)  [SCENE.OUTPUT.COVERAGE]\n";
+      } else {
+        if (s.line_mode == LineMode::kD3DDiamond) {
+          out += std::string("    test area: the diamond's interior, its lower-left and "
+                             "lower-right edges and bottom corner") +
+                 (g.x_major ? "" : ", and (y-major) its right corner") +
+                 "; not the upper edges nor the other corners  [LINE.D3D.TEST_AREA]\n";
+        } else {
+          out += "    test area: the open diamond; both endpoints shifted by (-e, -e^2)  "
+                 "[LINE.VK.TEST_AREA]\n";
+        }
+        const LineDiamondDecision& d = g.decision;
+        if (d.zero_length)
+          out += "    zero-length line  [LINE.ZERO_LENGTH]\n";
+        out += "    the segment meets: " + features_text(d.met_features) + "\n";
+        out += "    of which in the test area: " +
+               features_text(d.met_features & d.included_features) + "\n";
+        out += std::string("    enters the test area: ") + (d.entered ? "yes" : "no") +
+               "; ends inside it: " + (d.end_inside ? "yes" : "no") + "\n";
+        out += "    reason: " + std::string(d.reason) + "\n";
+      }
+      out +=
+          std::string("    verdict: ") +
+          (g.covered ? (r.aa ? "fragment (coverage > 0)" : "covered: the segment exits the diamond")
+                     : (r.aa ? "no fragment (coverage 0)"
+                             : "not covered: the segment does not exit the diamond")) +
+          "\n";
+    }
+  }
+  out += std::string("  verdict: ") + (r.covered ? "covered" : "not covered") + "\n";
+  return out;
+}
+
+// rule: SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.LINE_MODE
+Report explain_primitive(const LoadedScene& loaded, std::size_t p, std::int32_t x, std::int32_t y,
+                         Vec2 sample) {
+  const PreparedScene& s = loaded.prepared;
+  const PreparedPrimitive& prim = s.primitives[p];
+  Report r;
+  r.index = p;
+  r.type = prim.type;
+  r.aa = prim.aa;
+  r.input = loaded.scene.primitives[p];
+  r.snapped = prim.v;
+  for (const PreparedTriangle& t : prim.triangles) {
+    Primitive corners = make_triangle({});
+    if (prim.type == PrimitiveType::kTriangle)
+      corners = r.input;
+    PrimitiveReport tr = explain_triangle(p, corners, t.setup, s.state, sample);
+    r.covered = r.covered || tr.covered;
+    r.tris.push_back(std::move(tr));
+    r.tri_seg.push_back(t.seg);
+  }
+  if (prim.triangles.empty() && prim.type != PrimitiveType::kTriangle) {
+    // The kernel's verdict per segment (aliased_line_covers' explanation, or the AA
+    // coverage); the fragment list agrees with it.
+    for (std::size_t k = 0; k + 1 < prim.v.size(); ++k) {
+      SegReport g;
+      g.seg = static_cast<std::uint32_t>(k);
+      g.a = prim.v[k];
+      g.b = prim.v[k + 1];
+      const std::int64_t dx = std::int64_t{g.b.x.raw()} - g.a.x.raw();
+      const std::int64_t dy = std::int64_t{g.b.y.raw()} - g.a.y.raw();
+      g.x_major = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy);
+      if (prim.aa) {
+        const AACoverage c = aa_line_coverage(g.a, g.b, x, y);
+        g.covered = c.positive;
+        g.coverage_q16 = c.q16;
+      } else {
+        g.decision = explain_aliased_line_pixel(g.a, g.b, s.line_mode, x, y);
+        g.covered = g.decision.covered;
+        g.x_major = g.decision.x_major;
+      }
+      r.covered = r.covered || g.covered;
+      r.segs.push_back(g);
+    }
+  }
+  return r;
+}
+
 void print_text(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 sample,
-                const std::vector<PrimitiveReport>& reports) {
+                const std::vector<Report>& reports) {
   const PreparedScene& s = loaded.prepared;
   std::string out;
   out += "scene: " + std::to_string(s.width) + "x" + std::to_string(s.height) + " target, cull " +
          std::string(to_string(s.state.cull)) + ", front face " +
-         std::string(to_string(s.state.front_face)) + ", fill " + std::string(to_string(s.state.fill)) +
-         ", " + std::to_string(reports.size()) + " primitive" + (reports.size() == 1 ? "" : "s") + "\n";
-  out += "pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): centre " + point_px(sample) +
-         " px = raw " + point_raw(sample) + "  [COORD.PIXEL.CENTER]\n";
+         std::string(to_string(s.state.front_face)) + ", fill " +
+         std::string(to_string(s.state.fill)) +
+         (s.line_mode != LineMode::kD3DDiamond
+              ? ", line_mode " + std::string(io::line_mode_name(s.line_mode))
+              : std::string()) +
+         ", " + std::to_string(reports.size()) + " primitive" + (reports.size() == 1 ? "" : "s") +
+         "\n";
+  out += "pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): centre " +
+         point_px(sample) + " px = raw " + point_raw(sample) + "  [COORD.PIXEL.CENTER]\n";
   std::vector<std::size_t> covering;
-  for (const PrimitiveReport& r : reports) {
-    const TriangleSetup& t = r.setup;
+  for (const Report& report : reports) {
+    if (report.type != PrimitiveType::kTriangle) {
+      out += other_text(report, s, sample);
+      if (report.covered)
+        covering.push_back(report.index);
+      continue;
+    }
+    const PrimitiveReport& r = report.tris[0];
     out += "\nprimitive " + std::to_string(r.index) + ": triangle\n";
-    out += "  vertices, input float32 -> snapped 16.8  [SNAP.VERTEX.ROUND]:\n";
-    for (std::size_t i = 0; i < 3; ++i) {
-      out += "    v" + std::to_string(i) + " (" + io::format_float(r.input.v[i][0]) + ", " +
-             io::format_float(r.input.v[i][1]) + ") -> " + point_px(t.snapped[i]) + " px = raw " +
-             point_raw(t.snapped[i]) + "\n";
-    }
-    out += "  twice signed area A = " + std::to_string(t.twice_area) + " raw = " + area_px2(t.twice_area) +
-           " px^2: " +
-           (t.twice_area == 0 ? std::string("degenerate")
-                              : std::string(t.clockwise ? "clockwise" : "counter-clockwise") +
-                                    ", " + (t.front_facing ? "front-facing" : "back-facing")) +
-           "  [TRI.ORIENT.AREA, TRI.CULL.MODE]\n";
-    out += "  status: " + std::string(to_string(t.status)) + "\n";
-    if (r.has_edges) {
-      out += std::string("  edges in clockwise order") +
-             (t.clockwise ? "" : " (v1 and v2 swapped)") + "  [TRI.ORIENT.NORMALISE]" +
-             (r.culled ? ", for information only (the triangle is culled)" : "") + ":\n";
-      for (std::size_t i = 0; i < 3; ++i) {
-        const EdgeReport& e = r.edges[i];
-        out += "    edge " + std::to_string(i) + ": v" + std::to_string(e.from) + " " + point_px(e.a) +
-               " -> v" + std::to_string(e.to) + " " + point_px(e.b) + "\n";
-        out += "      E at the centre = " + std::to_string(e.e) + " raw = " + area_px2(e.e) +
-               " px^2  [TRI.EDGE.FUNCTION]\n";
-        out += "      " + e.kind + " edge: top " + (e.top ? "yes" : "no") + ", left " +
-               (e.left ? "yes" : "no") + ", inclusive under " + std::string(to_string(s.state.fill)) +
-               " " + (e.inclusive ? "yes" : "no") + "  [TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE]\n";
-        out += "      " + std::string(e.inside ? "inside" : "outside") + ": " + e.decision + "\n";
-      }
-    }
-    out += "  verdict: " + std::string(r.covered ? "covered" : "not covered") + "\n";
-    out += "  decided by:\n";
-    for (const std::string& d : r.decided_by) out += "    " + d + "\n";
-    if (r.culled) {
-      out += std::string("    (without culling the centre would be ") +
-             (r.inside_all_edges ? "inside" : "outside") + ")\n";
-    }
+    out += triangle_text(r, s, "  ");
     if (r.covered) covering.push_back(r.index);
   }
   out += "\npixel (" + std::to_string(x) + ", " + std::to_string(y) + "): ";
@@ -190,55 +390,122 @@ void print_text(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
   std::fputs(out.c_str(), stdout);
 }
 
+using ojson = nlohmann::ordered_json;
+
+ojson point_json(Vec2 v) {
+  return ojson::array({v.x.raw(), v.y.raw()});
+}
+
+ojson triangle_json(const PrimitiveReport& r) {
+  using json = ojson;
+  auto point = point_json;
+  const TriangleSetup& t = r.setup;
+  json p;
+  p["prim"] = r.index;
+  json in = json::array();
+  for (const auto& v : r.input.v)
+    in.push_back({io::format_float(v[0]), io::format_float(v[1])});
+  p["input"] = in;
+  json snapped = json::array();
+  for (const Vec2& v : t.snapped)
+    snapped.push_back(point(v));
+  p["snapped_raw"] = snapped;
+  p["twice_area_raw"] = t.twice_area;
+  p["winding"] = t.twice_area == 0 ? "degenerate" : (t.clockwise ? "cw" : "ccw");
+  p["front_facing"] = t.front_facing;
+  p["status"] = to_string(t.status);
+  json edges = json::array();
+  if (r.has_edges) {
+    for (const EdgeReport& e : r.edges) {
+      edges.push_back({{"from", e.from},
+                       {"to", e.to},
+                       {"a_raw", point(e.a)},
+                       {"b_raw", point(e.b)},
+                       {"e_raw", e.e},
+                       {"kind", e.kind},
+                       {"top", e.top},
+                       {"left", e.left},
+                       {"inclusive", e.inclusive},
+                       {"inside", e.inside},
+                       {"decision", e.decision}});
+    }
+  }
+  p["edges"] = edges;
+  p["edges_informative_only"] = r.culled;
+  p["covered"] = r.covered;
+  p["decided_by"] = r.decided_by;
+  return p;
+}
+
+ojson other_json(const Report& r) {
+  using json = ojson;
+  json p;
+  p["prim"] = r.index;
+  p["type"] = to_string(r.type);
+  if (r.aa)
+    p["aa"] = true;
+  json in = json::array();
+  for (const auto& v : r.input.v)
+    in.push_back({io::format_float(v[0]), io::format_float(v[1])});
+  p["input"] = in;
+  json snapped = json::array();
+  for (const Vec2& v : r.snapped)
+    snapped.push_back(point_json(v));
+  p["snapped_raw"] = snapped;
+  if (!r.tris.empty()) {
+    json tris = json::array();
+    for (std::size_t k = 0; k < r.tris.size(); ++k) {
+      json t = triangle_json(r.tris[k]);
+      t.erase("input");
+      if (r.type != PrimitiveType::kPoint)
+        t["seg"] = r.tri_seg[k];
+      tris.push_back(t);
+    }
+    p["triangles"] = tris;
+  } else {
+    json segs = json::array();
+    for (const SegReport& g : r.segs) {
+      json j = {{"seg", g.seg},
+                {"a_raw", point_json(g.a)},
+                {"b_raw", point_json(g.b)},
+                {"x_major", g.x_major},
+                {"covered", g.covered}};
+      if (r.aa) {
+        j["coverage_q16"] = g.coverage_q16;
+        j["coverage"] = fraction_q16(g.coverage_q16);
+      } else {
+        j["met"] = features_text(g.decision.met_features);
+        j["met_in_test_area"] =
+            features_text(g.decision.met_features & g.decision.included_features);
+        j["entered"] = g.decision.entered;
+        j["end_inside"] = g.decision.end_inside;
+        j["reason"] = g.decision.reason;
+      }
+      segs.push_back(j);
+    }
+    p["segments"] = segs;
+  }
+  p["covered"] = r.covered;
+  return p;
+}
+
 void print_json(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 sample,
-                const std::vector<PrimitiveReport>& reports) {
-  using json = nlohmann::ordered_json;
+                const std::vector<Report>& reports) {
+  using json = ojson;
   const PreparedScene& s = loaded.prepared;
-  auto point = [](Vec2 v) { return json::array({v.x.raw(), v.y.raw()}); };
+  auto point = point_json;
   json doc;
   doc["target"] = {{"width", s.width}, {"height", s.height}};
   doc["cull"] = to_string(s.state.cull);
   doc["front_face"] = to_string(s.state.front_face);
   doc["fill"] = to_string(s.state.fill);
+  doc["line_mode"] = io::line_mode_name(s.line_mode);
   doc["pixel"] = {x, y};
   doc["sample_raw"] = point(sample);
   json prims = json::array();
   json covering = json::array();
-  for (const PrimitiveReport& r : reports) {
-    const TriangleSetup& t = r.setup;
-    json p;
-    p["prim"] = r.index;
-    json in = json::array();
-    for (const auto& v : r.input.v) in.push_back({io::format_float(v[0]), io::format_float(v[1])});
-    p["input"] = in;
-    json snapped = json::array();
-    for (const Vec2& v : t.snapped) snapped.push_back(point(v));
-    p["snapped_raw"] = snapped;
-    p["twice_area_raw"] = t.twice_area;
-    p["winding"] = t.twice_area == 0 ? "degenerate" : (t.clockwise ? "cw" : "ccw");
-    p["front_facing"] = t.front_facing;
-    p["status"] = to_string(t.status);
-    json edges = json::array();
-    if (r.has_edges) {
-      for (const EdgeReport& e : r.edges) {
-        edges.push_back({{"from", e.from},
-                         {"to", e.to},
-                         {"a_raw", point(e.a)},
-                         {"b_raw", point(e.b)},
-                         {"e_raw", e.e},
-                         {"kind", e.kind},
-                         {"top", e.top},
-                         {"left", e.left},
-                         {"inclusive", e.inclusive},
-                         {"inside", e.inside},
-                         {"decision", e.decision}});
-      }
-    }
-    p["edges"] = edges;
-    p["edges_informative_only"] = r.culled;
-    p["covered"] = r.covered;
-    p["decided_by"] = r.decided_by;
-    prims.push_back(p);
+  for (const Report& r : reports) {
+    prims.push_back(r.type == PrimitiveType::kTriangle ? triangle_json(r.tris[0]) : other_json(r));
     if (r.covered) covering.push_back(r.index);
   }
   doc["primitives"] = prims;
@@ -296,11 +563,10 @@ int run_explain(const Args& args) {
                  " target");
   }
   const Vec2 sample = pixel_center(x, y);
-  std::vector<PrimitiveReport> reports;
-  reports.reserve(loaded->prepared.triangles.size());
-  for (std::size_t p = 0; p < loaded->prepared.triangles.size(); ++p) {
-    reports.push_back(explain_primitive(p, loaded->scene.primitives[p], loaded->prepared.triangles[p],
-                                        loaded->prepared.state, sample));
+  std::vector<Report> reports;
+  reports.reserve(loaded->prepared.primitives.size());
+  for (std::size_t p = 0; p < loaded->prepared.primitives.size(); ++p) {
+    reports.push_back(explain_primitive(*loaded, p, x, y, sample));
   }
   if (as_json) {
     print_json(*loaded, x, y, sample, reports);

@@ -13,7 +13,6 @@
 #include "rastrules/io/fragment_json.hpp"
 #include "rastrules/io/image.hpp"
 #include "rastrules/io/picture.hpp"
-#include "rastrules/raster/walk.hpp"
 
 namespace rastrules::cli {
 
@@ -83,25 +82,27 @@ int run_render(const Args& args) {
     if (auto err = png_file.open(*png_path)) return error(*err);
   }
 
-  // Fragments are streamed as the traversal emits them, primitive by primitive and row by
-  // row, which is the (prim, y, x) order of SCENE.OUTPUT.FRAGMENTS; memory stays independent
-  // of the number of fragments. The coverage map (for the picture) is width * height.
+  // Fragments are streamed primitive by primitive in the (prim, y, x, seg) order of
+  // SCENE.OUTPUT.FRAGMENTS: a triangle's as the traversal finds them (memory independent of
+  // their number), a point's or line's after the kernel sorts that one primitive's list. The
+  // coverage map (for the picture) is width * height.
   std::optional<io::FragmentWriter> writer;
   if (fragments_path) writer.emplace(fragments_file.get());
   std::unique_ptr<io::CoverageMap> coverage;
   if (png_path) coverage = std::make_unique<io::CoverageMap>(scene.width, scene.height);
   bool in_order = true;
   std::uint64_t fragment_count = 0;
-  for (std::size_t p = 0; p < scene.triangles.size(); ++p) {
-    const auto prim = static_cast<std::uint32_t>(p);
-    raster::walk_triangle(scene.triangles[p], scene.width, scene.height,
-                          [&](std::int32_t x, std::int32_t y) {
-                            ++fragment_count;
-                            if (writer) in_order = writer->add(Fragment{prim, x, y, 1u}) && in_order;
-                            if (coverage) coverage->add(prim, x, y);
-                          });
+  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+    for_each_fragment(scene, p, [&](const Fragment& f) {
+      ++fragment_count;
+      if (writer)
+        in_order = writer->add(f) && in_order;
+      if (coverage)
+        coverage->add(f.prim, f.x, f.y, f.coverage_q16);
+    });
   }
-  if (!in_order) return error("internal error: the traversal emitted fragments out of (prim, y, x) order");
+  if (!in_order)
+    return error("internal error: the kernel emitted fragments out of (prim, y, x, seg) order");
   if (writer) {
     if (!writer->finish()) return error(*fragments_path + ": write failed");
   }
@@ -125,10 +126,11 @@ int run_render(const Args& args) {
   }
   const bool stdout_used = (fragments_path && *fragments_path == "-") || (png_path && *png_path == "-");
   if (!stdout_used) {
-    std::printf("render: %zu primitives, %llu fragments%s%s%s%s\n", scene.triangles.size(),
-                static_cast<unsigned long long>(fragment_count),
-                fragments_path ? " -> " : "", fragments_path ? fragments_path->c_str() : "",
-                png_path ? (fragments_path ? ", " : " -> ") : "", png_path ? png_path->c_str() : "");
+    std::printf("render: %zu primitives, %llu fragments%s%s%s%s\n", scene.primitives.size(),
+                static_cast<unsigned long long>(fragment_count), fragments_path ? " -> " : "",
+                fragments_path ? fragments_path->c_str() : "",
+                png_path ? (fragments_path ? ", " : " -> ") : "",
+                png_path ? png_path->c_str() : "");
   }
   return kExitOk;
 }

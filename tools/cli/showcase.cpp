@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 // rastrules showcase: render the built-in scenes, write their files and pictures, and
-// compare every fragment list with the exact oracle (properties/oracle).
+// compare every fragment list with the exact oracles (properties/oracle): triangles with the
+// triangle oracle, points with the triangle oracle on their exact squares (or the point
+// oracle), aliased lines with the line oracle, antialiased lines with the AA-line oracle
+// (pixels exactly, coverage within LINE.AA.PRECISION).
 
 #include <algorithm>
 #include <bit>
@@ -20,6 +23,9 @@
 #include "rastrules/io/image.hpp"
 #include "rastrules/io/picture.hpp"
 #include "rastrules/io/scene_json.hpp"
+#include "rastrules/oracle/line.hpp"
+#include "rastrules/oracle/line_aa.hpp"
+#include "rastrules/oracle/point.hpp"
 #include "rastrules/oracle/triangle.hpp"
 #include "showcase_scenes.hpp"
 
@@ -32,27 +38,208 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-oracle::Scene to_oracle(const Scene& s) {
-  oracle::Scene o;
-  o.width = s.width;
-  o.height = s.height;
-  o.state.cull = std::string(to_string(s.state.cull));
-  o.state.front_face = std::string(to_string(s.state.front_face));
-  o.state.fill = std::string(to_string(s.state.fill));
-  o.triangles.reserve(s.primitives.size());
-  for (const Primitive& p : s.primitives) o.triangles.push_back(p.v);
+oracle::State oracle_state(const RasterState& st) {
+  oracle::State o;
+  o.cull = std::string(to_string(st.cull));
+  o.front_face = std::string(to_string(st.front_face));
+  o.fill = std::string(to_string(st.fill));
   return o;
+}
+
+// One primitive's fragments as the oracles see them: pixels with the segment (strips) and
+// nothing else; coverage is checked separately.
+using Key = std::tuple<std::int32_t, std::int32_t, std::int64_t>; // (y, x, seg or -1)
+Key key_of(const Fragment& f) {
+  return {f.y, f.x, f.seg ? std::int64_t{*f.seg} : -1};
+}
+
+std::string key_text(std::uint32_t prim, const Key& k) {
+  return "prim " + std::to_string(prim) + " pixel (" + std::to_string(std::get<1>(k)) + ", " +
+         std::to_string(std::get<0>(k)) + ")" +
+         (std::get<2>(k) >= 0 ? " seg " + std::to_string(std::get<2>(k)) : std::string());
+}
+
+// The result of checking one scene against the oracles.
+struct Check {
+  bool same = true;
+  std::vector<std::string> differences; // at most a few
+  std::vector<std::string> oracles;     // which oracle checked which primitives
+  void note(const std::string& d) {
+    same = false;
+    if (differences.size() < 10)
+      differences.push_back(d);
+  }
+  void used(const std::string& name) {
+    if (std::find(oracles.begin(), oracles.end(), name) == oracles.end())
+      oracles.push_back(name);
+  }
+};
+
+// Compares one primitive's kernel fragments with the oracle's sorted keys.
+void compare_keys(std::uint32_t prim, const std::vector<Fragment>& kernel, std::vector<Key> exact,
+                  Check& check) {
+  std::sort(exact.begin(), exact.end());
+  std::vector<Key> mine;
+  mine.reserve(kernel.size());
+  for (const Fragment& f : kernel)
+    mine.push_back(key_of(f));
+  std::size_t i = 0, j = 0;
+  while (i < mine.size() || j < exact.size()) {
+    if (j == exact.size() || (i < mine.size() && mine[i] < exact[j])) {
+      check.note("only the kernel covers " + key_text(prim, mine[i++]));
+    } else if (i == mine.size() || exact[j] < mine[i]) {
+      check.note("only the oracle covers " + key_text(prim, exact[j++]));
+    } else {
+      ++i;
+      ++j;
+    }
+  }
+  for (const Fragment& f : kernel) {
+    if (f.mask != 1u)
+      check.note("mask " + std::to_string(f.mask) + " at " + key_text(prim, key_of(f)));
+  }
+}
+
+// The raw 16.8 position of the centre of pixel (x, y) (COORD.PIXEL.CENTER).
+std::array<std::int64_t, 2> centre_raw(std::int32_t x, std::int32_t y) {
+  return {std::int64_t{x} * 256 + 128, std::int64_t{y} * 256 + 128};
+}
+
+// Returns raw 16.8 of a float by the oracle's own snapping (never the kernel's).
+std::array<std::int64_t, 2> oracle_raw(const FloatPoint& v) {
+  const auto x = oracle::snap(v[0]);
+  const auto y = oracle::snap(v[1]);
+  if (!x || !y)
+    throw std::invalid_argument("oracle: a coordinate does not snap");
+  return {*x, *y};
+}
+
+// Appends the oracle's pixels of the aliased or quadrilateral line a -> b (raw 16.8) to out.
+// Returns false when no oracle exists for the mode.
+// rule: SCENE.LINE_MODE
+bool line_oracle(const std::array<std::int64_t, 2>& a, const std::array<std::int64_t, 2>& b,
+                 LineMode mode, const Scene& scene, std::int64_t seg, std::vector<Key>& out,
+                 Check& check) {
+  if (mode == LineMode::kQuadWide || mode == LineMode::kQuadNarrow) {
+    const std::string name(io::line_mode_name(mode));
+    check.used("quad-line oracle (quad_line_covers)");
+    for (std::int32_t y = 0; y < scene.height; ++y) {
+      for (std::int32_t x = 0; x < scene.width; ++x) {
+        if (oracle::quad_line_covers(a, b, name, centre_raw(x, y),
+                                     std::string(to_string(scene.state.fill)))) {
+          out.push_back(Key{y, x, seg});
+        }
+      }
+    }
+    return true;
+  }
+  check.used("line oracle (aliased_line_pixels)");
+  const std::string name = mode == LineMode::kD3DDiamond ? "d3d-diamond" : "vulkan-bresenham";
+  for (const auto& px : oracle::aliased_line_pixels(a, b, name, scene.width, scene.height)) {
+    out.push_back(Key{px[1], px[0], seg});
+  }
+  return true;
+}
+
+// rule: SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.OUTPUT.COVERAGE
+Check check_scene(const Scene& scene, const PreparedScene& ps,
+                  const std::vector<Fragment>& kernel) {
+  Check check;
+  // The kernel's fragments per primitive.
+  std::vector<std::vector<Fragment>> per_prim(scene.primitives.size());
+  for (const Fragment& f : kernel)
+    per_prim[f.prim].push_back(f);
+  // Triangles: one oracle scene holding all triangle primitives.
+  oracle::Scene tris;
+  tris.width = scene.width;
+  tris.height = scene.height;
+  tris.state = oracle_state(scene.state);
+  std::vector<std::uint32_t> tri_prim;
+  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+    const Primitive& prim = scene.primitives[p];
+    if (prim.type != PrimitiveType::kTriangle)
+      continue;
+    tris.triangles.push_back({prim.v[0], prim.v[1], prim.v[2]});
+    tri_prim.push_back(static_cast<std::uint32_t>(p));
+  }
+  std::vector<std::vector<Key>> exact(scene.primitives.size());
+  if (!tris.triangles.empty()) {
+    check.used("triangle oracle (render)");
+    for (const oracle::Fragment& f : oracle::render(tris)) {
+      exact[tri_prim[f.prim]].push_back(Key{f.y, f.x, -1});
+    }
+  }
+  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+    const Primitive& prim = scene.primitives[p];
+    const auto id = static_cast<std::uint32_t>(p);
+    switch (prim.type) {
+    case PrimitiveType::kTriangle:
+      break;
+    case PrimitiveType::kPoint: {
+      // The exact half-open square around the oracle's own snapped centre, every pixel.
+      check.used("point oracle (point_covers)");
+      const auto c = oracle_raw(prim.v[0]);
+      if (!oracle::point_in_range(c))
+        throw std::invalid_argument("oracle: point out of range");
+      for (std::int32_t y = 0; y < scene.height; ++y) {
+        for (std::int32_t x = 0; x < scene.width; ++x) {
+          if (oracle::point_covers(c, centre_raw(x, y), std::string(to_string(scene.state.fill)))) {
+            exact[p].push_back(Key{y, x, -1});
+          }
+        }
+      }
+      break;
+    }
+    case PrimitiveType::kLine:
+    case PrimitiveType::kLineStrip: {
+      const bool strip = prim.type == PrimitiveType::kLineStrip;
+      for (std::size_t s = 0; s + 1 < prim.v.size(); ++s) {
+        const std::int64_t seg = strip ? static_cast<std::int64_t>(s) : -1;
+        const auto a = oracle_raw(prim.v[s]);
+        const auto b = oracle_raw(prim.v[s + 1]);
+        if (prim.aa) {
+          check.used("AA-line oracle (aa_pixels, aa_check within 1/65536)");
+          for (const auto& px : oracle::aa_pixels(a, b, scene.width, scene.height)) {
+            exact[p].push_back(Key{px[1], px[0], seg});
+          }
+          for (const Fragment& f : per_prim[p]) {
+            if (f.seg.value_or(0) != s)
+              continue;
+            const oracle::AACheck c = oracle::aa_check(a, b, f.x, f.y, f.coverage_q16.value_or(0));
+            if (!c.within_bound) {
+              check.note("coverage " + std::to_string(f.coverage_q16.value_or(0)) + "/65536 at " +
+                         key_text(id, key_of(f)) + " is not within 1/65536 of the exact " +
+                         std::to_string(c.approx));
+            }
+          }
+        } else {
+          if (!line_oracle(a, b, ps.line_mode, scene, seg, exact[p], check)) {
+            check.note("no oracle for " + std::string(to_string(prim.type)) + " in line_mode " +
+                       std::string(io::line_mode_name(ps.line_mode)));
+          }
+        }
+      }
+      break;
+    }
+    }
+    compare_keys(id, per_prim[p], exact[p], check);
+  }
+  return check;
 }
 
 // Returns whether two scenes hold the same state and bit-identical coordinates.
 bool same_scene(const Scene& a, const Scene& b) {
   if (a.width != b.width || a.height != b.height || a.state.cull != b.state.cull ||
       a.state.front_face != b.state.front_face || a.state.fill != b.state.fill ||
-      a.primitives.size() != b.primitives.size()) {
+      a.line_mode != b.line_mode || a.primitives.size() != b.primitives.size()) {
     return false;
   }
   for (std::size_t p = 0; p < a.primitives.size(); ++p) {
-    for (std::size_t i = 0; i < 3; ++i) {
+    if (a.primitives[p].type != b.primitives[p].type || a.primitives[p].aa != b.primitives[p].aa ||
+        a.primitives[p].v.size() != b.primitives[p].v.size()) {
+      return false;
+    }
+    for (std::size_t i = 0; i < a.primitives[p].v.size(); ++i) {
       for (std::size_t k = 0; k < 2; ++k) {
         if (std::bit_cast<std::uint32_t>(a.primitives[p].v[i][k]) !=
             std::bit_cast<std::uint32_t>(b.primitives[p].v[i][k])) {
@@ -74,36 +261,14 @@ std::optional<std::string> write_text(const std::filesystem::path& path, const s
 std::optional<std::string> write_picture(const std::filesystem::path& path, const PreparedScene& scene,
                                          const std::vector<Fragment>& fragments) {
   io::CoverageMap coverage(scene.width, scene.height);
-  for (const Fragment& f : fragments) coverage.add(f.prim, f.x, f.y);
+  for (const Fragment& f : fragments)
+    coverage.add(f.prim, f.x, f.y, f.coverage_q16);
   const io::Image image =
       io::draw_picture(scene, coverage, io::default_picture_scale(scene.width, scene.height));
   OutputFile f;
   if (auto err = f.open(path.string())) return err;
   if (auto err = io::write_png(f.get(), image)) return path.string() + ": " + *err;
   return f.commit();
-}
-
-// Returns up to `limit` lines describing fragments found by only one side.
-std::vector<std::string> differences(const std::vector<Fragment>& kernel,
-                                     const std::vector<oracle::Fragment>& exact, std::size_t limit) {
-  std::vector<std::string> out;
-  std::size_t i = 0, j = 0;
-  auto key = [](auto& f) { return std::tuple(f.prim, f.y, f.x); };
-  auto text = [](const char* who, auto& f) {
-    return std::string(who) + ": prim " + std::to_string(f.prim) + " pixel (" + std::to_string(f.x) +
-           ", " + std::to_string(f.y) + ")";
-  };
-  while ((i < kernel.size() || j < exact.size()) && out.size() < limit) {
-    if (j == exact.size() || (i < kernel.size() && key(kernel[i]) < key(exact[j]))) {
-      out.push_back(text("only the kernel covers", kernel[i++]));
-    } else if (i == kernel.size() || key(exact[j]) < key(kernel[i])) {
-      out.push_back(text("only the oracle covers", exact[j++]));
-    } else {
-      ++i;
-      ++j;
-    }
-  }
-  return out;
 }
 
 }  // namespace
@@ -134,10 +299,11 @@ int run_showcase(const Args& args) {
   }
 
   const std::vector<ShowcaseScene> scenes = showcase_scenes();
-  std::printf("%-18s %6s %9s %10s %10s  %s\n", "scene", "prims", "fragments", "kernel ms", "oracle ms",
-              "agree");
+  std::printf("%-22s %6s %9s %10s %10s  %s\n", "scene", "prims", "fragments", "kernel ms",
+              "oracle ms", "agree");
   int agree = 0;
   std::vector<std::string> notes;
+  std::vector<std::string> checked_by_lines;
   for (const ShowcaseScene& sc : scenes) {
     const Clock::time_point k0 = Clock::now();
     auto prepared = prepare(sc.scene);
@@ -148,25 +314,21 @@ int run_showcase(const Args& args) {
     const std::vector<Fragment> kernel = rasterize(ps);
     const double kernel_ms = ms_since(k0);
 
-    std::vector<oracle::Fragment> exact;
-    std::optional<std::string> oracle_error;
+    Check check;
     const Clock::time_point o0 = Clock::now();
     try {
-      exact = oracle::render(to_oracle(sc.scene));
+      check = check_scene(sc.scene, ps, kernel);
     } catch (const std::exception& e) {
-      oracle_error = e.what();
+      check.note(std::string("the oracle failed: ") + e.what());
     }
     const double oracle_ms = ms_since(o0);
-
-    bool same = !oracle_error && kernel.size() == exact.size();
-    for (std::size_t i = 0; same && i < kernel.size(); ++i) {
-      same = kernel[i].prim == exact[i].prim && kernel[i].x == exact[i].x && kernel[i].y == exact[i].y &&
-             kernel[i].mask == 1u;
-    }
-    if (oracle_error) notes.push_back(sc.name + ": the oracle failed: " + *oracle_error);
-    if (!same && !oracle_error) {
-      for (const std::string& d : differences(kernel, exact, 10)) notes.push_back(sc.name + ": " + d);
-    }
+    bool same = check.same;
+    for (const std::string& d : check.differences)
+      notes.push_back(sc.name + ": " + d);
+    std::string checked_by;
+    for (const std::string& o : check.oracles)
+      checked_by += (checked_by.empty() ? "" : ", ") + o;
+    checked_by_lines.push_back(sc.name + ": " + (checked_by.empty() ? "no primitive" : checked_by));
 
     // The scene file must read back to exactly this scene (SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32).
     const std::string scene_text = io::write_scene(sc.scene);
@@ -181,10 +343,13 @@ int run_showcase(const Args& args) {
       if (err) return error(*err);
     }
     if (same) ++agree;
-    std::printf("%-18s %6zu %9zu %10.3f %10.3f  %s\n", sc.name.c_str(), sc.scene.primitives.size(),
+    std::printf("%-22s %6zu %9zu %10.3f %10.3f  %s\n", sc.name.c_str(), sc.scene.primitives.size(),
                 kernel.size(), kernel_ms, oracle_ms, same ? "yes" : "NO");
   }
   for (const std::string& n : notes) std::printf("  %s\n", n.c_str());
+  std::printf("oracles used:\n");
+  for (const std::string& n : checked_by_lines)
+    std::printf("  %s\n", n.c_str());
   const int differ = static_cast<int>(scenes.size()) - agree;
   std::printf("showcase: %zu scenes, %d agree with the oracle, %d differ; pictures in %s\n", scenes.size(),
               agree, differ, dir.string().c_str());

@@ -221,6 +221,116 @@ Scene snap_ties() {
   return s;
 }
 
+Primitive point(Point c) {
+  Primitive p;
+  p.type = PrimitiveType::kPoint;
+  p.v = {c};
+  return p;
+}
+
+Primitive line(Point a, Point b, bool aa = false) {
+  Primitive p;
+  p.type = PrimitiveType::kLine;
+  p.v = {a, b};
+  p.aa = aa;
+  return p;
+}
+
+Primitive strip(std::vector<Point> v, bool aa = false) {
+  Primitive p;
+  p.type = PrimitiveType::kLineStrip;
+  p.v = std::move(v);
+  p.aa = aa;
+  return p;
+}
+
+// Points on every kind of tie: centred on a pixel centre, on a pixel corner, on the middle of
+// a vertical and of a horizontal pixel edge (their squares' sides run through centres), one
+// subpixel off a centre, at the target's corner (the square holds no centre of the target),
+// and at an arbitrary position.
+// rule: SCENE.PRIM.POINT
+Scene points(FillConvention fill) {
+  RasterState state;
+  state.fill = fill;
+  state.cull = CullMode::kBack; // points are never culled
+  Scene s = make_scene(16, 6, state);
+  auto& p = s.primitives;
+  p.push_back(point({1.5f, 1.5f})); // on a centre: exactly that pixel
+  p.push_back(point({4.0f, 2.0f})); // on a corner: square sides through 4 centres
+  p.push_back(point({7.0f, 1.5f})); // on a vertical edge: left/right sides through centres
+  p.push_back(point({9.5f, 3.0f})); // on a horizontal edge: top/bottom sides through centres
+  p.push_back(point({12.5f + 1.0f / 256.0f, 1.5f})); // one subpixel right of a centre
+  p.push_back(point({0.0f, 0.0f}));                  // at the target's corner
+  p.push_back(point({13.3f, 4.7f}));                 // anywhere
+  p.push_back(point({15.5f, 5.5f}));                 // the last pixel
+  return s;
+}
+
+// Aliased lines through diamond corners and along diamond edges: along a row of centres (left
+// and right corners), along a pixel row boundary (top and bottom corners), along diamond edges
+// at exactly 45 degrees both ways, a vertical line through centres (y-major), endpoints on
+// centres and on corners, a zero-length line, and a line drawn in both directions.
+// rule: SCENE.PRIM.LINE, SCENE.LINE_MODE
+Scene lines(LineMode mode) {
+  Scene s = make_scene(16, 12);
+  s.line_mode = mode;
+  auto& p = s.primitives;
+  p.push_back(line({0.5f, 0.5f}, {7.5f, 0.5f}));   // along centres: end on a centre
+  p.push_back(line({0.0f, 2.0f}, {7.0f, 2.0f}));   // along top/bottom corners of the diamonds
+  p.push_back(line({0.5f, 3.0f}, {5.5f, 8.0f}));   // 45 degrees along diamond edges
+  p.push_back(line({7.5f, 8.0f}, {12.5f, 3.0f}));  // 45 degrees, the other way
+  p.push_back(line({14.5f, 0.5f}, {14.5f, 6.5f})); // vertical through centres (y-major)
+  p.push_back(line({9.0f, 1.0f}, {13.0f, 2.0f}));  // corner to corner
+  p.push_back(line({3.5f, 10.5f}, {3.5f, 10.5f})); // zero length
+  p.push_back(line({6.2f, 9.7f}, {13.8f, 11.1f})); // shallow, arbitrary
+  p.push_back(line({13.8f, 10.1f}, {6.2f, 8.7f})); // the same shape drawn right to left
+  return s;
+}
+
+// A line strip whose third segment runs back over the first: pixels drawn by two segments
+// appear once per segment (seg 0 and seg 2), as independent lines would draw them.
+// rule: SCENE.PRIM.LINE_STRIP
+Scene line_strip_scene() {
+  Scene s = make_scene(16, 8);
+  auto& p = s.primitives;
+  p.push_back(strip({{1.5f, 1.5f}, {9.5f, 1.5f}, {9.5f, 5.5f}, {3.5f, 1.5f}, {3.2f, 6.8f}}));
+  p.push_back(line({1.5f, 1.5f}, {9.5f, 1.5f})); // segment 0 as an independent line
+  return s;
+}
+
+// Antialiased lines (the D3D reference algorithm): horizontal on a row of centres and between
+// rows, 45 degrees, steep, short, and a strip.
+// rule: SCENE.PRIM.LINE, SCENE.OUTPUT.COVERAGE
+Scene aa_lines() {
+  Scene s = make_scene(16, 12);
+  auto& p = s.primitives;
+  p.push_back(line({1.0f, 1.5f}, {9.0f, 1.5f}, true));
+  p.push_back(line({1.0f, 3.0f}, {9.0f, 3.0f}, true));
+  p.push_back(line({1.5f, 5.5f}, {6.5f, 10.5f}, true));
+  p.push_back(line({12.25f, 0.5f}, {13.75f, 10.5f}, true));
+  p.push_back(line({10.5f, 5.5f}, {10.75f, 5.5f}, true));
+  p.push_back(strip({{7.5f, 6.5f}, {10.5f, 9.5f}, {14.5f, 8.5f}}, true));
+  return s;
+}
+
+// Quadrilateral lines, 1.4 px (D3D with multisampling) or 1.0 px (Vulkan strict lines):
+// horizontal and vertical through centres, 45 degrees, arbitrary, and zero length.
+// rule: SCENE.LINE_MODE
+Scene quad_lines(LineMode mode) {
+  Scene s = make_scene(16, 12);
+  s.line_mode = mode;
+  s.state.cull = CullMode::kFront; // quadrilateral lines are never culled
+  auto& p = s.primitives;
+  p.push_back(line({0.5f, 1.5f}, {7.5f, 1.5f}));
+  p.push_back(line({1.0f, 4.0f}, {7.0f, 4.0f}));
+  p.push_back(line({10.5f, 0.5f}, {10.5f, 6.5f}));
+  p.push_back(line({1.0f, 6.0f}, {6.0f, 11.0f}));
+  p.push_back(line({8.3f, 10.6f}, {15.2f, 7.1f}));
+  p.push_back(line({13.5f, 2.5f}, {13.5f, 2.5f}));
+  p.push_back(strip({{12.0f, 4.0f}, {15.0f, 4.0f}, {12.0f, 6.0f}}));
+  return s;
+}
+
 }  // namespace
 
 std::vector<ShowcaseScene> showcase_scenes() {
@@ -239,6 +349,22 @@ std::vector<ShowcaseScene> showcase_scenes() {
   out.push_back({"slivers", "slivers one subpixel wide on rows, columns and diagonals; needles", slivers()});
   out.push_back({"huge", "triangles at the ends of the coordinate range", huge()});
   out.push_back({"snap-ties", "coordinates half-way between subpixels (round half to even)", snap_ties()});
+  out.push_back({"points", "points on centres, corners and edge midpoints, fill top-left",
+                 points(FillConvention::kTopLeft)});
+  out.push_back({"points-bottom-right", "the same points, fill bottom-right",
+                 points(FillConvention::kBottomRight)});
+  out.push_back({"lines-d3d", "aliased lines through diamond corners and along edges (D3D)",
+                 lines(LineMode::kD3DDiamond)});
+  out.push_back(
+      {"lines-vulkan", "the same lines, Vulkan Bresenham", lines(LineMode::kVulkanBresenham)});
+  out.push_back({"line-strip", "a strip running back over itself: one fragment per segment",
+                 line_strip_scene()});
+  out.push_back(
+      {"lines-aa", "antialiased lines: coverage of the D3D reference algorithm", aa_lines()});
+  out.push_back({"quad-lines-1.4", "quadrilateral lines 1.4 px wide (D3D multisampling)",
+                 quad_lines(LineMode::kQuadWide)});
+  out.push_back({"quad-lines-1.0", "quadrilateral lines 1.0 px wide (Vulkan strict)",
+                 quad_lines(LineMode::kQuadNarrow)});
   return out;
 }
 

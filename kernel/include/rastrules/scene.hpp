@@ -1,47 +1,83 @@
 // SPDX-License-Identifier: MIT
 // The kernel's scene model and its single entry point: validate, snap, set up, traverse.
 // Implements: SCENE.FORMAT.V1 (in memory), SCENE.OUTPUT.FRAGMENTS, SCENE.TARGET.LIMITS,
-//             SNAP.VERTEX.INVALID
+//             SNAP.VERTEX.INVALID, SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP,
+//             SCENE.LINE_MODE, SCENE.OUTPUT.COVERAGE
 // The JSON reader and writer live in tools/; the kernel has no third-party dependency.
 
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include "rastrules/fixed.hpp"
+#include "rastrules/line.hpp"
 #include "rastrules/snap.hpp"
 #include "rastrules/triangle.hpp"
 
 namespace rastrules {
 
-enum class PrimitiveType { kTriangle };
+// rule: SCENE.FORMAT.V1, SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP
+enum class PrimitiveType { kTriangle, kPoint, kLine, kLineStrip };
+[[nodiscard]] std::string_view to_string(PrimitiveType t); // "triangle", "point", ...
+
+// A window-space position in pixels, read as float32.
+using FloatPoint = std::array<float, 2>;
 
 struct Primitive {
   PrimitiveType type = PrimitiveType::kTriangle;
-  std::array<std::array<float, 2>, 3> v{};  // window coordinates in pixels, read as float32
+  // Window coordinates in pixels, read as float32: 3 for a triangle, 1 for a point, 2 for a
+  // line, at least 2 for a line strip. A default primitive is a triangle with 3 zero vertices.
+  std::vector<FloatPoint> v = std::vector<FloatPoint>(3);
+  bool aa = false; // antialiased (lines and line strips only; SCENE.PRIM.LINE)
 };
+
+// Returns a triangle primitive with the given vertices.
+[[nodiscard]] Primitive make_triangle(const std::array<FloatPoint, 3>& v);
+
+// Returns the number of vertices a primitive of type t must have (0 for a line strip, whose
+// count is "at least 2").
+[[nodiscard]] std::size_t required_vertex_count(PrimitiveType t);
 
 struct Scene {
   std::int32_t width = 0;
   std::int32_t height = 0;
   RasterState state;
+  LineMode line_mode = LineMode::kD3DDiamond; // SCENE.LINE_MODE
   std::vector<Primitive> primitives;
 };
 
 // One covered pixel of one primitive. mask has bit i set for covered sample i; without
-// multisampling the only sample is the pixel centre, so mask == 1.
-// rule: SCENE.OUTPUT.FRAGMENTS
+// multisampling the only sample is the pixel centre, so mask == 1. Antialiased line
+// fragments carry their coverage (coverage_q16 / 65536, SCENE.OUTPUT.COVERAGE); line strip
+// fragments carry the index of the segment that produced them (SCENE.PRIM.LINE_STRIP).
+// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.PRIM.LINE_STRIP
 struct Fragment {
+  Fragment() = default;
+  // Brace forms {prim, x, y}, {prim, x, y, mask}, ... keep working without naming the
+  // optional fields.
+  constexpr Fragment(std::uint32_t prim_, std::int32_t x_, std::int32_t y_, std::uint32_t mask_ = 1,
+                     std::optional<std::uint32_t> seg_ = std::nullopt,
+                     std::optional<std::uint32_t> coverage_q16_ = std::nullopt)
+      : prim(prim_), x(x_), y(y_), mask(mask_), seg(seg_), coverage_q16(coverage_q16_) {}
+
   std::uint32_t prim = 0;
   std::int32_t x = 0;
   std::int32_t y = 0;
   std::uint32_t mask = 1;
-  friend constexpr bool operator==(const Fragment&, const Fragment&) = default;
+  std::optional<std::uint32_t> seg;          // line strips only
+  std::optional<std::uint32_t> coverage_q16; // antialiased lines only, in [1, 65536]
+  friend bool operator==(const Fragment&, const Fragment&) = default;
 };
+
+// The order of SCENE.OUTPUT.FRAGMENTS: (prim, y, x, seg), a missing seg first.
+[[nodiscard]] bool fragment_before(const Fragment& a, const Fragment& b);
 
 // A rejected scene: the JSON-pointer-like path of the offending field and what is wrong.
 struct SceneError {
@@ -50,21 +86,56 @@ struct SceneError {
   [[nodiscard]] std::string what() const { return field + ": " + message; }
 };
 
+// A triangle the scene draws: a triangle primitive, one half of a point's square, or one half
+// of a quadrilateral line segment (seg is the segment index within its primitive).
+struct PreparedTriangle {
+  TriangleSetup setup;
+  std::uint32_t seg = 0;
+};
+
+// One primitive after validation and snapping.
+struct PreparedPrimitive {
+  PrimitiveType type = PrimitiveType::kTriangle;
+  bool aa = false;
+  std::vector<Vec2> v; // snapped vertices
+  // The triangles drawn for it: the triangle itself; the point's two (SCENE.PRIM.POINT); two
+  // per segment of a quadrilateral line (LineMode kQuadWide/kQuadNarrow). Empty for aliased
+  // and antialiased lines, which the line rasterizers draw from v.
+  std::vector<PreparedTriangle> triangles;
+};
+
 // The scene after validation and snapping.
 struct PreparedScene {
   std::int32_t width = 0;
   std::int32_t height = 0;
   RasterState state;
-  std::vector<TriangleSetup> triangles;
+  LineMode line_mode = LineMode::kD3DDiamond;
+  std::vector<PreparedPrimitive> primitives;
 };
 
 // Returns the prepared scene, or the first error in field order. Checks
-// SCENE.TARGET.LIMITS and snaps every vertex (SNAP.VERTEX.INVALID rejects NaN, infinities and
-// out-of-range coordinates).
-// rule: SCENE.TARGET.LIMITS, SNAP.VERTEX.INVALID
+// SCENE.TARGET.LIMITS, the vertex count of each primitive type, "aa" only on lines with
+// line_mode d3d, snaps every vertex (SNAP.VERTEX.INVALID rejects NaN, infinities and
+// out-of-range coordinates) and checks point positions against the point range
+// [kMinPointRaw, kMaxPointRaw] (SCENE.PRIM.POINT).
+// rule: SCENE.TARGET.LIMITS, SNAP.VERTEX.INVALID, SCENE.PRIM.POINT
+// rule: SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.LINE_MODE
 [[nodiscard]] std::variant<PreparedScene, SceneError> prepare(const Scene& scene);
 
-// Returns the fragments of a prepared scene sorted by (prim, y, x), only inside the target.
+// Returns the fragments of primitive p of a prepared scene sorted by (y, x, seg), only inside
+// the target. Preconditions: p < scene.primitives.size().
+// rule: SCENE.OUTPUT.FRAGMENTS, RASTER.TARGET.CLIP
+[[nodiscard]] std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_t p);
+
+// Calls emit for each fragment of primitive p in (y, x, seg) order, as rasterize_primitive
+// returns them. A triangle's fragments are streamed as the traversal finds them (memory does
+// not grow with their number); a point's, a line's and a line strip's are collected and
+// sorted first (memory proportional to that one primitive's fragments).
+// rule: SCENE.OUTPUT.FRAGMENTS
+void for_each_fragment(const PreparedScene& scene, std::size_t p,
+                       const std::function<void(const Fragment&)>& emit);
+
+// Returns the fragments of a prepared scene sorted by (prim, y, x, seg), only inside the target.
 // rule: SCENE.OUTPUT.FRAGMENTS, RASTER.TARGET.CLIP
 [[nodiscard]] std::vector<Fragment> rasterize(const PreparedScene& scene);
 

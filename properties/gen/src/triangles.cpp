@@ -702,7 +702,7 @@ Scene to_kernel_scene(const TriScene& s) {
   for (const GenTriangle& t : s.triangles) {
     Primitive p;
     p.type = PrimitiveType::kTriangle;
-    p.v = t.v;
+    p.v.assign(t.v.begin(), t.v.end());
     k.primitives.push_back(p);
   }
   return k;

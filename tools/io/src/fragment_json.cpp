@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The fragment list output.
-// Implements: SCENE.OUTPUT.FRAGMENTS
+// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.PRIM.LINE_STRIP
 
 #include "rastrules/io/fragment_json.hpp"
 
 #include <array>
 #include <charconv>
-#include <tuple>
+#include <string>
 
 namespace rastrules::io {
 namespace {
@@ -30,10 +30,38 @@ void append_fragment(std::string& out, const Fragment& f, bool first) {
   append_int(out, f.y);
   out += ", \"mask\": ";
   append_int(out, f.mask);
+  // rule: SCENE.PRIM.LINE_STRIP
+  if (f.seg) {
+    out += ", \"seg\": ";
+    append_int(out, *f.seg);
+  }
+  // rule: SCENE.OUTPUT.COVERAGE
+  if (f.coverage_q16) {
+    out += ", \"coverage\": ";
+    out += format_coverage(*f.coverage_q16);
+  }
   out += "}";
 }
 
 }  // namespace
+
+// rule: SCENE.OUTPUT.COVERAGE
+std::string format_coverage(std::uint32_t coverage_q16) {
+  // q / 2^16 = q * 5^16 / 10^16: the digits of q * 5^16 with the point 16 places from the
+  // right, trailing zeros dropped. Exact for every q (at most 16 fraction digits).
+  constexpr std::uint64_t kFive16 = 152587890625u; // 5^16
+  const std::uint64_t whole = coverage_q16 >> 16;
+  const std::uint64_t frac = (coverage_q16 & 0xffffu) * kFive16; // < 10^16
+  std::string out = std::to_string(whole);
+  out += '.';
+  if (frac == 0)
+    return out + "0";
+  std::string digits = std::to_string(frac);
+  digits.insert(0, 16 - digits.size(), '0');
+  while (digits.back() == '0')
+    digits.pop_back();
+  return out + digits;
+}
 
 FragmentWriter::FragmentWriter(std::FILE* out) : out_(out) {
   buffer_.reserve(kFlushBytes + 128);
@@ -42,9 +70,8 @@ FragmentWriter::FragmentWriter(std::FILE* out) : out_(out) {
 
 // rule: SCENE.OUTPUT.FRAGMENTS
 bool FragmentWriter::add(const Fragment& f) {
-  if (count_ != 0 && std::tie(f.prim, f.y, f.x) <= std::tie(last_.prim, last_.y, last_.x)) {
+  if (count_ != 0 && !fragment_before(last_, f))
     return false;
-  }
   append_fragment(buffer_, f, count_ == 0);
   last_ = f;
   ++count_;

@@ -57,10 +57,31 @@ std::size_t CoverageMap::index(std::int32_t x, std::int32_t y) const {
   return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
 }
 
-void CoverageMap::add(std::uint32_t prim, std::int32_t x, std::int32_t y) {
+void CoverageMap::add(std::uint32_t prim, std::int32_t x, std::int32_t y,
+                      std::optional<std::uint32_t> coverage_q16) {
   const std::size_t i = index(x, y);
+  if (coverage_q16) {
+    // Antialiased: blended over what earlier antialiased fragments left, white at first
+    // (srcColor * alpha + dstColor * (1 - alpha), alpha = coverage), not counted as overlap.
+    if (aa_.empty())
+      aa_.assign(first_.size(), kBackground);
+    if (aa_seen_.empty())
+      aa_seen_.assign(first_.size(), 0);
+    const Rgb src = kPalette[prim % kPalette.size()];
+    const int percent = static_cast<int>((std::uint64_t{*coverage_q16} * 100 + 32768) >> 16);
+    Rgb& dst = aa_[i];
+    dst = Rgb{mix(src.r, dst.r, percent), mix(src.g, dst.g, percent), mix(src.b, dst.b, percent)};
+    aa_seen_[i] = 1;
+    return;
+  }
   if (count_[i] == 0) first_[i] = prim;
   if (count_[i] < 255) ++count_[i];
+}
+
+std::optional<Rgb> CoverageMap::aa_colour(std::int32_t x, std::int32_t y) const {
+  if (aa_seen_.empty() || aa_seen_[index(x, y)] == 0)
+    return std::nullopt;
+  return aa_[index(x, y)];
 }
 
 std::uint32_t CoverageMap::count(std::int32_t x, std::int32_t y) const { return count_[index(x, y)]; }
@@ -84,8 +105,13 @@ Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int 
   for (std::int32_t j = 0; j < scene.height; ++j) {
     for (std::int32_t i = 0; i < scene.width; ++i) {
       const std::uint32_t n = coverage.count(i, j);
-      if (n == 0) continue;
       const int x0 = i * s, y0 = j * s;
+      if (n == 0) {
+        if (const std::optional<Rgb> aa = coverage.aa_colour(i, j)) {
+          img.fill_rect(x0, y0, x0 + s + 1, y0 + s + 1, *aa);
+        }
+        continue;
+      }
       if (n == 1) {
         img.fill_rect(x0, y0, x0 + s + 1, y0 + s + 1, cover_colour(coverage.first(i, j)));
         continue;
@@ -126,24 +152,47 @@ Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int 
   }
 
   // Edges at their snapped positions: solid for drawn primitives, dashed grey for culled and
-  // degenerate ones. Then the vertices.
-  for (std::size_t p = 0; p < scene.triangles.size(); ++p) {
-    const TriangleSetup& t = scene.triangles[p];
-    const bool drawn = t.status == TriangleStatus::kRasterized;
-    const Rgb c = drawn ? edge_colour(static_cast<std::uint32_t>(p)) : kInactiveEdge;
-    for (std::size_t e = 0; e < 3; ++e) {
-      const Vec2 a = t.snapped[e];
-      const Vec2 b = t.snapped[(e + 1) % 3];
-      img.line(to_image(a.x.raw(), s), to_image(a.y.raw(), s), to_image(b.x.raw(), s),
-               to_image(b.y.raw(), s), c, drawn ? 0 : 3);
+  // degenerate ones; a point's square outline; a line's segments (and a quadrilateral line's
+  // two triangles). Then the vertices.
+  auto segment = [&](Vec2 a, Vec2 b, Rgb c, int dash) {
+    img.line(to_image(a.x.raw(), s), to_image(a.y.raw(), s), to_image(b.x.raw(), s),
+             to_image(b.y.raw(), s), c, dash);
+  };
+  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+    const PreparedPrimitive& prim = scene.primitives[p];
+    const Rgb colour = edge_colour(static_cast<std::uint32_t>(p));
+    if (prim.type == PrimitiveType::kPoint) {
+      const Vec2 c = prim.v[0];
+      auto corner = [&](std::int32_t dx, std::int32_t dy) {
+        return Vec2{Subpixel::from_raw(c.x.raw() + dx), Subpixel::from_raw(c.y.raw() + dy)};
+      };
+      const std::int32_t h = kSubpixelHalf;
+      const std::array<Vec2, 4> sq = {corner(-h, -h), corner(h, -h), corner(h, h), corner(-h, h)};
+      for (std::size_t e = 0; e < 4; ++e)
+        segment(sq[e], sq[(e + 1) % 4], colour, 0);
+      continue;
+    }
+    for (const PreparedTriangle& pt : prim.triangles) {
+      const TriangleSetup& t = pt.setup;
+      const bool drawn = t.status == TriangleStatus::kRasterized;
+      const Rgb c = drawn ? colour : kInactiveEdge;
+      const bool quad = prim.type != PrimitiveType::kTriangle;
+      for (std::size_t e = 0; e < 3; ++e) {
+        segment(t.snapped[e], t.snapped[(e + 1) % 3], c, drawn && !quad ? 0 : 3);
+      }
+    }
+    if (prim.type == PrimitiveType::kLine || prim.type == PrimitiveType::kLineStrip) {
+      for (std::size_t i = 0; i + 1 < prim.v.size(); ++i)
+        segment(prim.v[i], prim.v[i + 1], colour, 0);
     }
   }
   const int r = std::max(1, s / 16);
-  for (std::size_t p = 0; p < scene.triangles.size(); ++p) {
-    const TriangleSetup& t = scene.triangles[p];
-    const Rgb c = t.status == TriangleStatus::kRasterized ? edge_colour(static_cast<std::uint32_t>(p))
-                                                          : kInactiveEdge;
-    for (const Vec2& v : t.snapped) {
+  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+    const PreparedPrimitive& prim = scene.primitives[p];
+    const bool inactive = prim.type == PrimitiveType::kTriangle &&
+                          prim.triangles[0].setup.status != TriangleStatus::kRasterized;
+    const Rgb c = inactive ? kInactiveEdge : edge_colour(static_cast<std::uint32_t>(p));
+    for (const Vec2& v : prim.v) {
       const double x = to_image(v.x.raw(), s), y = to_image(v.y.raw(), s);
       if (x < -r || y < -r || x > img.width() + r || y > img.height() + r) continue;
       const int xi = static_cast<int>(x + 0.5), yi = static_cast<int>(y + 0.5);

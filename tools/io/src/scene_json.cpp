@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The scene reader (a strict, streaming SAX handler over nlohmann::json) and writer.
-// Implements: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS
+// Implements: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS, SCENE.PRIM.POINT,
+//             SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.LINE_MODE
 
 #include "rastrules/io/scene_json.hpp"
 
@@ -71,9 +72,22 @@ enum class Ctx { kRootObject, kTargetObject, kPrimitiveArray, kPrimitiveObject, 
 
 // Where a value goes.
 enum class Slot {
-  kRoot, kVersion, kTarget, kCull, kFrontFace, kFill, kPrimitives,  // root object
-  kWidth, kHeight,                                                   // target
-  kPrimitive, kType, kVertices, kVertex, kCoord,                     // primitives
+  kRoot,
+  kVersion,
+  kTarget,
+  kCull,
+  kFrontFace,
+  kFill,
+  kLineMode,
+  kPrimitives, // root object
+  kWidth,
+  kHeight, // target
+  kPrimitive,
+  kType,
+  kVertices,
+  kAA,
+  kVertex,
+  kCoord, // primitives
 };
 
 struct KeySpec {
@@ -82,16 +96,35 @@ struct KeySpec {
   bool required;
 };
 
-constexpr std::array<KeySpec, 6> kRootKeys = {{{"version", Slot::kVersion, false},
+constexpr std::array<KeySpec, 7> kRootKeys = {{{"version", Slot::kVersion, false},
                                                {"target", Slot::kTarget, true},
                                                {"cull", Slot::kCull, false},
                                                {"front_face", Slot::kFrontFace, false},
                                                {"fill", Slot::kFill, false},
+                                               {"line_mode", Slot::kLineMode, false},
                                                {"primitives", Slot::kPrimitives, true}}};
 constexpr std::array<KeySpec, 2> kTargetKeys = {{{"width", Slot::kWidth, true},
                                                  {"height", Slot::kHeight, true}}};
-constexpr std::array<KeySpec, 2> kPrimitiveKeys = {{{"type", Slot::kType, true},
-                                                    {"v", Slot::kVertices, true}}};
+constexpr std::array<KeySpec, 3> kPrimitiveKeys = {
+    {{"type", Slot::kType, true}, {"v", Slot::kVertices, true}, {"aa", Slot::kAA, false}}};
+constexpr std::size_t kAAKeyIndex = 2;
+
+// The scene-file names of the line modes (SCENE.LINE_MODE).
+constexpr std::array<std::pair<std::string_view, LineMode>, 4> kLineModeNames = {
+    {{"d3d", LineMode::kD3DDiamond},
+     {"vulkan-bresenham", LineMode::kVulkanBresenham},
+     {"quad-wide", LineMode::kQuadWide},
+     {"quad-narrow", LineMode::kQuadNarrow}}};
+
+// The vertex count a primitive type needs, for messages.
+std::string vertex_count_text(PrimitiveType t) {
+  const std::size_t need = required_vertex_count(t);
+  if (need == 0)
+    return "at least 2 vertices";
+  if (need == 1)
+    return "exactly 1 vertex";
+  return "exactly " + std::to_string(need) + " vertices";
+}
 
 enum class Kind { kNull, kBool, kInt, kUint, kFloat, kString, kObject, kArray };
 
@@ -191,10 +224,26 @@ class SceneReader {
     switch (f.ctx) {
       case Ctx::kRootObject: return required(kRootKeys);
       case Ctx::kTargetObject: return required(kTargetKeys);
-      case Ctx::kPrimitiveObject:
+      case Ctx::kPrimitiveObject: {
         if (!required(kPrimitiveKeys)) return false;
-        scene_.primitives.push_back(current_);
+        // rule: SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP
+        // The type may come after "v" and "aa", so both are checked against it here.
+        const std::size_t n = current_.v.size();
+        const std::size_t need = required_vertex_count(current_.type);
+        if ((need != 0 && n != need) || (need == 0 && n < 2)) {
+          return fail(f.path + ".v", "a " + std::string(to_string(current_.type)) + " must have " +
+                                         vertex_count_text(current_.type) + " [x, y], got " +
+                                         std::to_string(n));
+        }
+        const bool line =
+            current_.type == PrimitiveType::kLine || current_.type == PrimitiveType::kLineStrip;
+        if ((f.seen & (1u << kAAKeyIndex)) != 0 && !line) {
+          return fail(f.path + ".aa", "only lines and line strips take \"aa\", not a " +
+                                          std::string(to_string(current_.type)));
+        }
+        scene_.primitives.push_back(std::move(current_));
         return true;
+      }
       default: return fail(f.path, "internal error: unbalanced object");
     }
   }
@@ -202,9 +251,6 @@ class SceneReader {
   bool end_array() {
     const Frame f = std::move(stack_.back());
     stack_.pop_back();
-    if (f.ctx == Ctx::kVertexArray && f.count != 3) {
-      return fail(f.path, "must have exactly 3 vertices [x, y], got " + std::to_string(f.count));
-    }
     if (f.ctx == Ctx::kCoordArray && f.count != 2) {
       return fail(f.path, "must have exactly 2 coordinates [x, y], got " + std::to_string(f.count));
     }
@@ -264,9 +310,7 @@ class SceneReader {
           field = f.path + "[" + std::to_string(f.count++) + "]";
           break;
         case Ctx::kVertexArray:
-          if (f.count == 3) return fail(f.path, "must have exactly 3 vertices [x, y], got more");
           slot = Slot::kVertex;
-          vertex_ = f.count;
           field = f.path + "[" + std::to_string(f.count++) + "]";
           break;
         case Ctx::kCoordArray:
@@ -313,26 +357,41 @@ class SceneReader {
                                          {"bottom-left", FillConvention::kBottomLeft},
                                          {"bottom-right", FillConvention::kBottomRight}}},
                            scene_.state.fill);
+      case Slot::kLineMode:
+        // rule: SCENE.LINE_MODE
+        return enumeration(field, v, kLineModeNames, scene_.line_mode);
       case Slot::kPrimitives:
         if (v.kind != Kind::kArray) return type_error(field, "an array of primitives", v);
         return push(Ctx::kPrimitiveArray, field);
       case Slot::kPrimitive:
         if (v.kind != Kind::kObject) return type_error(field, "an object {\"type\", \"v\"}", v);
         current_ = Primitive{};
+        current_.v.clear();
         return push(Ctx::kPrimitiveObject, field);
       case Slot::kType:
         if (v.kind != Kind::kString) return type_error(field, "a string", v);
-        if (v.text == "triangle") {
-          current_.type = PrimitiveType::kTriangle;
-          return true;
+        for (const PrimitiveType t : {PrimitiveType::kTriangle, PrimitiveType::kPoint,
+                                      PrimitiveType::kLine, PrimitiveType::kLineStrip}) {
+          if (v.text == to_string(t)) {
+            current_.type = t;
+            return true;
+          }
         }
         return fail(field, "unknown primitive type \"" + printable(v.text) +
-                               "\" (expected \"triangle\")");
+                               "\" (expected \"triangle\", \"point\", \"line\" or \"line_strip\")");
       case Slot::kVertices:
-        if (v.kind != Kind::kArray) return type_error(field, "an array of 3 vertices [x, y]", v);
+        if (v.kind != Kind::kArray)
+          return type_error(field, "an array of vertices [x, y]", v);
         return push(Ctx::kVertexArray, field);
+      case Slot::kAA:
+        // rule: SCENE.PRIM.LINE
+        if (v.kind != Kind::kBool)
+          return type_error(field, "true or false", v);
+        current_.aa = v.b;
+        return true;
       case Slot::kVertex:
         if (v.kind != Kind::kArray) return type_error(field, "an array [x, y]", v);
+        current_.v.push_back(FloatPoint{0.0f, 0.0f});
         return push(Ctx::kCoordArray, field);
       case Slot::kCoord: return coordinate(field, v);
     }
@@ -399,14 +458,13 @@ class SceneReader {
         break;
       default: return type_error(field, "a number, \"NaN\", \"Infinity\" or \"-Infinity\"", v);
     }
-    current_.v[vertex_][coord_] = f;
+    current_.v.back()[coord_] = f;
     return true;
   }
 
   std::vector<Frame> stack_;
   Scene scene_;
   Primitive current_;
-  std::size_t vertex_ = 0;
   std::size_t coord_ = 0;
   bool root_done_ = false;
   std::string last_path_;
@@ -421,6 +479,14 @@ void append_escaped(std::string& out, unsigned char c) {
 }
 
 }  // namespace
+
+std::string_view line_mode_name(LineMode m) {
+  for (const auto& [name, mode] : kLineModeNames) {
+    if (mode == m)
+      return name;
+  }
+  return "unknown";
+}
 
 std::string printable(std::string_view s, std::size_t max_len) {
   std::string out;
@@ -517,16 +583,23 @@ std::string write_scene(const Scene& scene) {
   out += "  \"cull\": \"" + std::string(to_string(scene.state.cull)) + "\",\n";
   out += "  \"front_face\": \"" + std::string(to_string(scene.state.front_face)) + "\",\n";
   out += "  \"fill\": \"" + std::string(to_string(scene.state.fill)) + "\",\n";
+  if (scene.line_mode != LineMode::kD3DDiamond) {
+    out += "  \"line_mode\": \"" + std::string(line_mode_name(scene.line_mode)) + "\",\n";
+  }
   out += "  \"primitives\": [";
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     out += p == 0 ? "\n" : ",\n";
-    out += "    {\"type\": \"triangle\", \"v\": [";
-    for (std::size_t i = 0; i < 3; ++i) {
+    const Primitive& prim = scene.primitives[p];
+    out += "    {\"type\": \"" + std::string(to_string(prim.type)) + "\", ";
+    if (prim.aa)
+      out += "\"aa\": true, ";
+    out += "\"v\": [";
+    for (std::size_t i = 0; i < prim.v.size(); ++i) {
       if (i != 0) out += ", ";
       out += "[";
       for (std::size_t k = 0; k < 2; ++k) {
         if (k != 0) out += ", ";
-        const float f = scene.primitives[p].v[i][k];
+        const float f = prim.v[i][k];
         const bool quoted = std::isnan(f) || std::isinf(f);
         out += quoted ? "\"" + format_float(f) + "\"" : format_float(f);
       }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The fragment list output (spec/scene.md), written as a stream.
-// Implements: SCENE.OUTPUT.FRAGMENTS
+// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE
 
 #pragma once
 
@@ -14,8 +14,9 @@
 namespace rastrules::io {
 
 // Writes {"fragments": [...]} to a FILE*, one fragment per line, without holding the list in
-// memory. The caller emits fragments in (prim, y, x) order (SCENE.OUTPUT.FRAGMENTS); the
-// writer checks that order and refuses fragments that break it.
+// memory. The caller emits fragments in (prim, y, x, seg) order (SCENE.OUTPUT.FRAGMENTS); the
+// writer checks that order and refuses fragments that break it. Fragments with a seg get a
+// "seg" field, fragments with a coverage a "coverage" field (SCENE.OUTPUT.COVERAGE).
 // rule: SCENE.OUTPUT.FRAGMENTS
 class FragmentWriter {
  public:
@@ -24,7 +25,7 @@ class FragmentWriter {
   FragmentWriter& operator=(const FragmentWriter&) = delete;
 
   // Appends one fragment. Returns false (and writes nothing) when it does not come after the
-  // previous one in (prim, y, x) order.
+  // previous one in (prim, y, x, seg) order.
   bool add(const Fragment& f);
 
   // Closes the list. Returns false when any write failed.
@@ -41,6 +42,11 @@ class FragmentWriter {
   Fragment last_{};
   bool failed_ = false;
 };
+
+// Returns coverage_q16 / 65536 as its exact decimal: "0.5", "0.0000152587890625", "1.0"
+// (always a point and at least one fraction digit; no trailing zeros otherwise).
+// rule: SCENE.OUTPUT.COVERAGE
+[[nodiscard]] std::string format_coverage(std::uint32_t coverage_q16);
 
 // Returns the fragment list as one string (for small lists and tests).
 [[nodiscard]] std::string fragments_to_json(const std::vector<Fragment>& fragments);

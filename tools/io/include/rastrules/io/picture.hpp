@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "rastrules/io/image.hpp"
@@ -28,9 +29,14 @@ inline constexpr int kDefaultPixelScale = 32;
 class CoverageMap {
  public:
   CoverageMap(std::int32_t width, std::int32_t height);
-  void add(std::uint32_t prim, std::int32_t x, std::int32_t y);
+  // coverage_q16: an antialiased line fragment's coverage: such fragments are blended by
+  // coverage into the pixel's colour instead of being counted (so they never show as overlap).
+  void add(std::uint32_t prim, std::int32_t x, std::int32_t y,
+           std::optional<std::uint32_t> coverage_q16 = std::nullopt);
   [[nodiscard]] std::uint32_t count(std::int32_t x, std::int32_t y) const;
   [[nodiscard]] std::uint32_t first(std::int32_t x, std::int32_t y) const;  // valid if count > 0
+  // The blended colour of the antialiased fragments added at the pixel; nullopt when none.
+  [[nodiscard]] std::optional<Rgb> aa_colour(std::int32_t x, std::int32_t y) const;
   [[nodiscard]] std::int32_t width() const { return width_; }
   [[nodiscard]] std::int32_t height() const { return height_; }
 
@@ -40,6 +46,8 @@ class CoverageMap {
   std::int32_t height_;
   std::vector<std::uint32_t> first_;
   std::vector<std::uint8_t> count_;  // saturates at 255
+  std::vector<Rgb> aa_;              // allocated on the first antialiased fragment
+  std::vector<std::uint8_t> aa_seen_;
 };
 
 // Colours: the fill of pixels covered by primitive `prim` alone, the colour of its edges, and

@@ -39,6 +39,11 @@ inline constexpr std::size_t kMaxSceneBytes = std::size_t{64} << 20;  // 64 MiB
 // rule: SCENE.FORMAT.V1
 [[nodiscard]] std::string write_scene(const Scene& scene);
 
+// Returns the scene-file name of a line mode: "d3d", "vulkan-bresenham", "quad-wide",
+// "quad-narrow" (SCENE.LINE_MODE).
+// rule: SCENE.LINE_MODE
+[[nodiscard]] std::string_view line_mode_name(LineMode m);
+
 // Returns the shortest decimal text that reads back (SCENE.NUMBER.FLOAT32) to exactly v,
 // or "NaN", "Infinity", "-Infinity".
 [[nodiscard]] std::string format_float(float v);

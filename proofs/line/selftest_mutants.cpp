@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: MIT
+// Self-check: the diamond-exit obligations can fail. Runs prove_d3d_diamond_exit against
+// deliberately broken models of the D3D test area, each derived from DiamondKernelModel, and
+// passes only if every mutant is REFUTED (with a counterexample) by at least one theorem.
+// Cites no rule: it is evidence about the proofs, not about the kernel.
+// Expected: every mutant REFUTED; exit status 0 iff so.
+
+#include <array>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "line/diamond_exit.hpp"
+#include "support/prover.hpp"
+
+namespace rastrules::proofs {
+namespace {
+
+// A test area given by four edge strictness flags (no corner added for y-major lines).
+template <bool S0, bool S1, bool S2, bool S3>
+struct StrictnessModel : DiamondKernelModel {
+  template <bool YMajor, class M>
+  static auto meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
+    const M zero(0), one(1);
+    return formula::t_feasible(formula::segment_in_diamond_constraints<M, M>(
+                                   au, av, du, dv, {h, h, h, h}, {S0, S1, S2, S3}, zero, one, one),
+                               zero);
+  }
+  template <bool YMajor, class M>
+  static auto contains(const M& pu, const M& pv, const M& h) {
+    const M zero(0);
+    return meets<YMajor, M>(pu, pv, zero, zero, h);
+  }
+  template <bool YMajor, class M>
+  static auto exits(const M& au, const M& av, const M& bu, const M& bv, const M& h) {
+    return meets<YMajor, M>(au, av, bu - au, bv - av, h) && !contains<YMajor, M>(bu, bv, h);
+  }
+};
+
+// The right corner is never included (y-major lines use the x-major area).
+struct RightCornerNeverIncluded : DiamondKernelModel {
+  static constexpr const char* kName = "right corner never included (y-major as x-major)";
+  template <bool YMajor, class M>
+  static auto meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
+    return DiamondKernelModel::meets<false, M>(au, av, du, dv, h);
+  }
+  template <bool YMajor, class M>
+  static auto contains(const M& pu, const M& pv, const M& h) {
+    return DiamondKernelModel::contains<false, M>(pu, pv, h);
+  }
+  template <bool YMajor, class M>
+  static auto exits(const M& au, const M& av, const M& bu, const M& bv, const M& h) {
+    return DiamondKernelModel::exits<false, M>(au, av, bu, bv, h);
+  }
+};
+
+// x-major and y-major exchanged.
+struct MajorSwapped : DiamondKernelModel {
+  static constexpr const char* kName = "x-major and y-major areas swapped";
+  template <bool YMajor, class M>
+  static auto meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
+    return DiamondKernelModel::meets<!YMajor, M>(au, av, du, dv, h);
+  }
+  template <bool YMajor, class M>
+  static auto contains(const M& pu, const M& pv, const M& h) {
+    return DiamondKernelModel::contains<!YMajor, M>(pu, pv, h);
+  }
+  template <bool YMajor, class M>
+  static auto exits(const M& au, const M& av, const M& bu, const M& bv, const M& h) {
+    return DiamondKernelModel::exits<!YMajor, M>(au, av, bu, bv, h);
+  }
+};
+
+struct UpperEdgesIncluded : StrictnessModel<true, true, false, false> {
+  static constexpr const char* kName = "upper edges and top corner included instead of lower";
+};
+struct OpenDiamond : StrictnessModel<true, true, true, true> {
+  static constexpr const char* kName = "open diamond (bottom corner and lower edges excluded)";
+};
+struct ClosedDiamond : StrictnessModel<false, false, false, false> {
+  static constexpr const char* kName = "closed diamond (every edge and corner included)";
+};
+struct LowerLeftExcluded : StrictnessModel<false, true, true, true> {
+  static constexpr const char* kName = "lower-left edge excluded";
+};
+
+struct Mutant {
+  std::string name;
+  std::function<void(Prover&, NraProver&)> run;
+};
+
+template <class F>
+Mutant mutant() {
+  return Mutant{F::kName, [](Prover& pr, NraProver& nra) { prove_d3d_diamond_exit<F>(pr, nra); }};
+}
+
+}  // namespace
+}  // namespace rastrules::proofs
+
+int main() {
+  using namespace rastrules::proofs;
+  const std::vector<Mutant> mutants = {
+      mutant<RightCornerNeverIncluded>(), mutant<MajorSwapped>(),  mutant<UpperEdgesIncluded>(),
+      mutant<OpenDiamond>(),              mutant<ClosedDiamond>(), mutant<LowerLeftExcluded>(),
+  };
+  std::vector<std::string> summary;
+  int survived = 0;
+  for (const Mutant& m : mutants) {
+    std::cout << "\n=== mutant: " << m.name << "\n";
+    Domain dom;
+    Prover pr(dom, "line/diamond_exit_matches_spec [mutant: " + m.name + "]", "(self-check)", {},
+              kernel_constants());
+    NraProver nra(dom.ctx());
+    m.run(pr, nra);
+    int refuted = 0;
+    for (const auto& [theorem, status] : pr.results()) refuted += status == Status::kRefuted;
+    for (const auto& [theorem, status] : nra.results()) refuted += status == Status::kRefuted;
+    survived += refuted > 0 ? 0 : 1;
+    summary.push_back(std::string(refuted > 0 ? "REFUTED  " : "SURVIVED ") + m.name + " (" +
+                      std::to_string(refuted) + " theorems refuted)");
+  }
+  std::cout << "\nmutation self-check (line):\n";
+  for (const std::string& line : summary) std::cout << "  " << line << "\n";
+  std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " passed, " << survived
+            << " failed\n";
+  return survived == 0 ? 0 : 1;
+}

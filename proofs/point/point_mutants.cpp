@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+// Self-check: the point obligation can fail. Runs prove_point_half_open_square against
+// deliberately broken point models, each derived from PointKernelModel with one member
+// replaced, and passes only if every mutant is REFUTED (with a counterexample). A mutant that
+// survives means the proof cannot see that kind of bug.
+// Cites no rule: it is evidence about the proof, not about the kernel.
+// Assumes: POINT.RANGE, SNAP.VERTEX.RANGE (as the obligation does)
+// Expected: every mutant REFUTED; exit status 0 iff so.
+
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "point/half_open_square.hpp"
+#include "point/point_model.hpp"
+#include "support/kernel_model.hpp"
+#include "support/prover.hpp"
+#include "support/sym.hpp"
+
+namespace rastrules::proofs {
+namespace {
+
+// The second triangle's upper-right corner one subpixel lower: a sliver gap along the diagonal.
+struct GapOnDiagonal : PointKernelModel {
+  static constexpr const char* kName = "one-subpixel gap along the diagonal";
+  template <class S> static std::array<Triangle<S>, 2> point_triangles(const Point<S>& c) {
+    auto t = PointKernelModel::point_triangles<S>(c);
+    t[1][1].y = t[1][1].y + S(1);
+    return t;
+  }
+};
+
+// The other diagonal with the second triangle wound counter-clockwise, in a kernel that does
+// not normalise windings: the counter-clockwise triangle covers nothing.
+struct FlippedDiagonalWrongWinding : PointKernelModel {
+  static constexpr const char* kName = "diagonal flipped, counter-clockwise half, no normalisation";
+  template <class S> static std::array<Triangle<S>, 2> point_triangles(const Point<S>& c) {
+    const auto t = PointKernelModel::point_triangles<S>(c);
+    const Point<S> tl = t[0][0], tr = t[0][1], bl = t[0][2], br = t[1][2];
+    return {Triangle<S>{tl, tr, br}, Triangle<S>{tl, bl, br}};
+  }
+  template <class S> static SymBool is_clockwise(const Triangle<S>&) { return SymBool(true); }
+};
+
+// Two triangles that overlap (both contain the top edge) instead of tiling the square.
+struct OverlappingHalves : PointKernelModel {
+  static constexpr const char* kName = "overlapping halves (TL, TR, BL) and (TL, TR, BR)";
+  template <class S> static std::array<Triangle<S>, 2> point_triangles(const Point<S>& c) {
+    const auto t = PointKernelModel::point_triangles<S>(c);
+    const Point<S> tl = t[0][0], tr = t[0][1], br = t[1][2];
+    return {t[0], Triangle<S>{tl, tr, br}};
+  }
+};
+
+// A square one subpixel too small (half side 127 raw).
+struct SquareTooSmall : PointKernelModel {
+  static constexpr const char* kName = "half side 127 raw instead of 128";
+  template <class S> static std::array<Triangle<S>, 2> point_triangles(const Point<S>& c) {
+    const auto t = formula::point_z_triangles<S>(c.x, c.y, S(kSubpixelHalf - 1));
+    return {to_triangle<S>(t[0]), to_triangle<S>(t[1])};
+  }
+};
+
+// Samples on an edge never inside: the square becomes open.
+struct TiesNeverInside : PointKernelModel {
+  static constexpr const char* kName = "samples on an edge never inside";
+  template <class S> static SymBool inside(const S& e, const SymBool&) { return e > S(0); }
+};
+
+// The point range as wide as the vertex range: corners leave SNAP.VERTEX.RANGE.
+struct PointRangeTooWide : PointKernelModel {
+  static constexpr const char* kName = "point centres over the whole vertex range";
+  static constexpr std::int64_t kMinPointCentreRaw = kMinVertexRaw;
+  static constexpr std::int64_t kMaxPointCentreRaw = kMaxVertexRaw;
+};
+
+struct Mutant {
+  std::string name;
+  std::function<void(Prover&)> prove;
+};
+
+template <class F> Mutant mutant() { return Mutant{F::kName, prove_point_half_open_square<F>}; }
+
+}  // namespace
+}  // namespace rastrules::proofs
+
+int main() {
+  using namespace rastrules::proofs;
+  const std::vector<Mutant> mutants = {
+      mutant<GapOnDiagonal>(),   mutant<FlippedDiagonalWrongWinding>(),
+      mutant<OverlappingHalves>(), mutant<SquareTooSmall>(),
+      mutant<TiesNeverInside>(), mutant<PointRangeTooWide>(),
+  };
+  std::vector<std::string> summary;
+  int survived = 0;
+  for (const Mutant& m : mutants) {
+    std::cout << "\n=== mutant: " << m.name << " / point/half_open_square\n";
+    Domain dom;
+    Prover pr(dom, "point/half_open_square [mutant: " + m.name + "]", "(self-check)",
+              {"POINT.RANGE", "SNAP.VERTEX.RANGE"}, PointKernelModel::constants());
+    m.prove(pr);
+    int refuted = 0;
+    for (const auto& [theorem, status] : pr.results()) refuted += status == Status::kRefuted;
+    const bool killed = refuted > 0;
+    survived += killed ? 0 : 1;
+    summary.push_back(std::string(killed ? "REFUTED  " : "SURVIVED ") + m.name + " (" +
+                      std::to_string(refuted) + " of " + std::to_string(pr.results().size()) +
+                      " theorems refuted)");
+  }
+  std::cout << "\npoint mutation self-check:\n";
+  for (const std::string& line : summary) std::cout << "  " << line << "\n";
+  std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " mutants refuted, "
+            << survived << " survived\n";
+  return survived == 0 ? 0 : 1;
+}
