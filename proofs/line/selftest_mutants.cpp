@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// Self-check: the diamond-exit obligations can fail. Runs prove_d3d_diamond_exit against
-// deliberately broken models of the D3D test area, each derived from DiamondKernelModel, and
-// passes only if every mutant is REFUTED (with a counterexample) by at least one theorem.
+// Self-check: the diamond-exit obligations can fail. Runs prove_d3d_diamond_exit and
+// prove_d3d_meets_witness against deliberately broken models of the D3D test area, each
+// derived from DiamondKernelModel, and passes only if every mutant is REFUTED (with a
+// counterexample) by at least one theorem.
 // Cites no rule: it is evidence about the proofs, not about the kernel.
 // Expected: every mutant REFUTED; exit status 0 iff so.
 
@@ -85,6 +86,32 @@ struct LowerLeftExcluded : StrictnessModel<false, true, true, true> {
   static constexpr const char* kName = "lower-left edge excluded";
 };
 
+// Only the touch test is broken: it says "touched" too often (upper edges and the top, left
+// and, x-major, right corners count), while the end-point test is the kernel's. The end-point
+// and "exits" theorems and the forward direction of "touches" still hold; only the reverse
+// direction (prove_d3d_meets_witness) can refute it.
+struct MeetsUpperEdgesClosed : DiamondKernelModel {
+  static constexpr const char* kName = "touch test with closed upper edges (end-point test correct)";
+  template <bool YMajor, class M>
+  static auto meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
+    const M zero(0), one(1);
+    const auto closed = formula::t_feasible(
+        formula::segment_in_diamond_constraints<M, M>(au, av, du, dv, {h, h, h, h},
+                                                      {false, false, false, false}, zero, one, one),
+        zero);
+    if constexpr (YMajor) {
+      return closed || formula::on_segment(h, zero, au, av, du, dv);
+    } else {
+      return closed;
+    }
+  }
+  template <bool YMajor, class M>
+  static auto exits(const M& au, const M& av, const M& bu, const M& bv, const M& h) {
+    return meets<YMajor, M>(au, av, bu - au, bv - av, h) &&
+           !DiamondKernelModel::contains<YMajor, M>(bu, bv, h);
+  }
+};
+
 struct Mutant {
   std::string name;
   std::function<void(Prover&, NraProver&)> run;
@@ -92,7 +119,10 @@ struct Mutant {
 
 template <class F>
 Mutant mutant() {
-  return Mutant{F::kName, [](Prover& pr, NraProver& nra) { prove_d3d_diamond_exit<F>(pr, nra); }};
+  return Mutant{F::kName, [](Prover& pr, NraProver& nra) {
+                  prove_d3d_diamond_exit<F>(pr, nra);
+                  prove_d3d_meets_witness<F>(pr, nra);
+                }};
 }
 
 }  // namespace
@@ -103,6 +133,7 @@ int main() {
   const std::vector<Mutant> mutants = {
       mutant<RightCornerNeverIncluded>(), mutant<MajorSwapped>(),  mutant<UpperEdgesIncluded>(),
       mutant<OpenDiamond>(),              mutant<ClosedDiamond>(), mutant<LowerLeftExcluded>(),
+      mutant<MeetsUpperEdgesClosed>(),
   };
   std::vector<std::string> summary;
   int survived = 0;
