@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // rastrules render: the fragment list and the picture of a scene.
-// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.INPUT.ERRORS
+// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
@@ -13,6 +14,7 @@
 #include "rastrules/io/fragment_json.hpp"
 #include "rastrules/io/image.hpp"
 #include "rastrules/io/picture.hpp"
+#include "rastrules/io/scene_json.hpp"
 
 namespace rastrules::cli {
 
@@ -20,6 +22,7 @@ namespace rastrules::cli {
 int run_render(const Args& args) {
   std::optional<std::string> scene_path, fragments_path, png_path;
   std::optional<int> scale;
+  std::uint64_t max_fragments = io::kDefaultMaxFragments;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const char* flag) -> std::optional<std::string> {
@@ -43,6 +46,12 @@ int run_render(const Args& args) {
       const auto n = v ? parse_int(*v, 1, io::kMaxPictureSide) : std::nullopt;
       if (!n) return usage_error("--scale needs an integer in [1, 4096]");
       scale = static_cast<int>(*n);
+    } else if (is("--max-fragments")) {
+      // rule: SCENE.INPUT.LIMITS
+      const std::optional<std::string> v = value("--max-fragments");
+      const auto n = v ? parse_int(*v, 1, std::int64_t{1} << 40) : std::nullopt;
+      if (!n) return usage_error("--max-fragments needs an integer in [1, 2^40]");
+      max_fragments = static_cast<std::uint64_t>(*n);
     } else if (a.size() > 1 && a[0] == '-') {
       return usage_error("render: unknown option \"" + a + "\"");
     } else if (scene_path) {
@@ -92,14 +101,24 @@ int run_render(const Args& args) {
   if (png_path) coverage = std::make_unique<io::CoverageMap>(scene.width, scene.height);
   bool in_order = true;
   std::uint64_t fragment_count = 0;
-  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
-    for_each_fragment(scene, p, [&](const Fragment& f) {
-      ++fragment_count;
-      if (writer)
-        in_order = writer->add(f) && in_order;
-      if (coverage)
-        coverage->add(f.prim, f.x, f.y, f.coverage_q16);
-    });
+  // rule: SCENE.INPUT.LIMITS
+  // The work limit: counted while streaming; the first fragment beyond it stops the traversal
+  // (the exception unwinds out of the kernel's walk) and the outputs, still under their
+  // temporary names, are removed by ~OutputFile.
+  struct TooManyFragments {};
+  try {
+    for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+      for_each_fragment(scene, p, [&](const Fragment& f) {
+        if (++fragment_count > max_fragments) throw TooManyFragments{};
+        if (writer)
+          in_order = writer->add(f) && in_order;
+        if (coverage)
+          coverage->add(f.prim, f.x, f.y, f.coverage_q16);
+      });
+    }
+  } catch (const TooManyFragments&) {
+    return error("render: more than " + std::to_string(max_fragments) +
+                 " fragments (limit SCENE.INPUT.LIMITS); raise it with --max-fragments N");
   }
   if (!in_order)
     return error("internal error: the kernel emitted fragments out of (prim, y, x, seg) order");

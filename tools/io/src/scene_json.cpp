@@ -186,7 +186,9 @@ class SceneReader {
 
   bool key(json::string_t& k) {
     Frame& f = stack_.back();
-    const std::string field = f.path.empty() ? printable(k) : f.path + "." + printable(k);
+    // An empty key is named "" so that the error still names a field (found by fuzz_scene_parser).
+    const std::string name = k.empty() ? std::string("\"\"") : printable(k);
+    const std::string field = f.path.empty() ? name : f.path + "." + name;
     auto check = [&](const auto& keys) {
       for (std::size_t n = 0; n < keys.size(); ++n) {
         if (keys[n].name != k) continue;
@@ -306,10 +308,20 @@ class SceneReader {
           field = f.key_path;
           break;
         case Ctx::kPrimitiveArray:
+          // rule: SCENE.INPUT.LIMITS
+          if (f.count >= kMaxScenePrimitives) {
+            return fail(f.path, "more than " + std::to_string(kMaxScenePrimitives) +
+                                    " primitives (limit SCENE.INPUT.LIMITS)");
+          }
           slot = Slot::kPrimitive;
           field = f.path + "[" + std::to_string(f.count++) + "]";
           break;
         case Ctx::kVertexArray:
+          // rule: SCENE.INPUT.LIMITS
+          if (f.count >= kMaxStripVertices) {
+            return fail(f.path, "more than " + std::to_string(kMaxStripVertices) +
+                                    " vertices in one primitive (limit SCENE.INPUT.LIMITS)");
+          }
           slot = Slot::kVertex;
           field = f.path + "[" + std::to_string(f.count++) + "]";
           break;
@@ -545,7 +557,7 @@ std::variant<Scene, SceneError> read_scene(std::string_view json_text) {
   return reader.result(ok);
 }
 
-// rule: SCENE.INPUT.ERRORS
+// rule: SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
 std::variant<std::string, SceneError> read_scene_file(const std::string& path) {
   const bool is_stdin = path == "-";
   const std::string name = is_stdin ? "<stdin>" : path;
@@ -568,7 +580,7 @@ std::variant<std::string, SceneError> read_scene_file(const std::string& path) {
   if (!is_stdin) std::fclose(file);
   if (too_large) {
     return SceneError{name, "is larger than " + std::to_string(kMaxSceneBytes >> 20) +
-                                " MiB, the largest scene file accepted"};
+                                " MiB, the largest scene file accepted (limit SCENE.INPUT.LIMITS)"};
   }
   if (failed) return SceneError{name, std::string("cannot read: ") + std::strerror(err)};
   return text;

@@ -12,13 +12,28 @@
 #include <string_view>
 #include <variant>
 
+#include <cstdint>
+
 #include "rastrules/scene.hpp"
 
 namespace rastrules::io {
 
 // Largest scene file accepted, in bytes. Memory used by reading is proportional to the input
 // (about 40 bytes per primitive in memory for at least 40 bytes of text), so this bounds it.
+// rule: SCENE.INPUT.LIMITS
 inline constexpr std::size_t kMaxSceneBytes = std::size_t{64} << 20;  // 64 MiB
+
+// The other limits of SCENE.INPUT.LIMITS (spec/scene.md states why and the memory each bounds).
+// Most primitives in one scene.
+inline constexpr std::size_t kMaxScenePrimitives = std::size_t{1} << 20;  // 1048576
+// Most vertices in one primitive's "v" (only a line strip can have more than 3).
+inline constexpr std::size_t kMaxStripVertices = std::size_t{1} << 16;  // 65536
+// Deepest nesting of JSON arrays and objects: scene, primitives, primitive, v, vertex. The
+// schema itself enforces it (an array or object where a scalar belongs is a type error, found
+// at its first character), so the parser's stack never holds more than this many levels.
+inline constexpr std::size_t kMaxSceneNesting = 5;
+// Default of `rastrules render --max-fragments`: most fragments one render may produce.
+inline constexpr std::uint64_t kDefaultMaxFragments = std::uint64_t{1} << 26;  // 67108864
 
 // Returns the scene described by the JSON text, or the first error found in reading order.
 // Errors name the field path (`primitives[2].v[1][0]: must be a number ...`) or, for

@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: MIT
+// SCENE.INPUT.LIMITS: each limit accepts its largest input and refuses the next one with one
+// clear line naming the limit, exit status 2 and no output file. Large inputs are generated
+// in temporary directories at test time (nothing big is committed).
+
+#include <chrono>
+#include <cstddef>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <variant>
+
+#include <gtest/gtest.h>
+
+#include "rastrules/io/scene_json.hpp"
+#include "support.hpp"
+
+namespace {
+
+using rastrules::test::read_file;
+using rastrules::test::run_cli;
+using rastrules::test::TempDir;
+namespace io = rastrules::io;
+
+void expect_one_error_line(const rastrules::test::RunResult& r, const std::string& expected) {
+  EXPECT_EQ(r.status, 2);
+  const auto lines = r.err_lines();
+  ASSERT_EQ(lines.size(), 1u) << r.err.substr(0, 2000);
+  EXPECT_EQ(lines[0].rfind("rastrules: error: ", 0), 0u) << lines[0];
+  EXPECT_NE(lines[0].find(expected), std::string::npos) << "expected \"" << expected << "\" in: " << lines[0];
+}
+
+std::string head(int w, int h) {
+  return "{\"version\": 1, \"target\": {\"width\": " + std::to_string(w) +
+         ", \"height\": " + std::to_string(h) + "}, \"primitives\": [";
+}
+
+// `n` points (the primitive with the shortest text, so that the test stays fast).
+std::string many_points(std::size_t n) {
+  std::string s = head(8, 8);
+  s.reserve(s.size() + n * 32);
+  for (std::size_t i = 0; i < n; ++i) {
+    s += i == 0 ? "" : ",";
+    s += "{\"type\":\"point\",\"v\":[[1,1]]}";
+  }
+  return s + "]}";
+}
+
+// A line strip of `n` vertices zig-zagging inside an 8x8 target.
+std::string long_strip(std::size_t n) {
+  std::string s = head(8, 8) + "{\"type\": \"line_strip\", \"v\": [";
+  s.reserve(s.size() + n * 8);
+  for (std::size_t i = 0; i < n; ++i) {
+    s += i == 0 ? "" : ",";
+    s += (i % 2 == 0) ? "[1,1]" : "[6,5]";
+  }
+  return s + "]}]}";
+}
+
+// rule: SCENE.INPUT.LIMITS
+TEST(Limits, FileOfExactlyTheSizeLimitIsReadAndOneByteMoreIsRefused) {
+  const TempDir dir;
+  const std::string scene = head(4, 4) + "]}";
+  const std::string pad(io::kMaxSceneBytes - scene.size(), ' ');
+  const auto at_limit = dir.write("at_limit.json", pad + scene);
+  ASSERT_EQ(std::filesystem::file_size(at_limit), io::kMaxSceneBytes);
+  const auto ok = run_cli({"render", at_limit.string(), "--fragments", (dir / "ok.json").string()});
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  EXPECT_EQ(read_file(dir / "ok.json"), "{\"fragments\": []}\n");
+
+  const auto over = dir.write("over.json", pad + " " + scene);
+  const auto r = run_cli({"render", over.string(), "--fragments", (dir / "out.json").string()});
+  expect_one_error_line(r, "is larger than 64 MiB, the largest scene file accepted (limit SCENE.INPUT.LIMITS)");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
+}
+
+// rule: SCENE.INPUT.LIMITS
+TEST(Limits, PrimitiveCountLimitAcceptsTheLimitAndRefusesOneMore) {
+  const auto at = io::read_scene(many_points(io::kMaxScenePrimitives));
+  ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(at)) << std::get<rastrules::SceneError>(at).what();
+  EXPECT_EQ(std::get<rastrules::Scene>(at).primitives.size(), io::kMaxScenePrimitives);
+
+  const TempDir dir;
+  const auto over = dir.write("over.json", many_points(io::kMaxScenePrimitives + 1));
+  ASSERT_LT(std::filesystem::file_size(over), io::kMaxSceneBytes);  // the count, not the size, fails
+  const auto r = run_cli({"render", over.string(), "--fragments", (dir / "out.json").string()});
+  expect_one_error_line(r, "primitives: more than 1048576 primitives (limit SCENE.INPUT.LIMITS)");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
+}
+
+// rule: SCENE.INPUT.LIMITS, SCENE.PRIM.LINE_STRIP
+TEST(Limits, StripVertexLimitAcceptsTheLimitAndRefusesOneMore) {
+  const TempDir dir;
+  const auto at = dir.write("at.json", long_strip(io::kMaxStripVertices));
+  const auto ok = run_cli({"render", at.string(), "--fragments", (dir / "ok.json").string()});
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "ok.json"));
+
+  const auto over = dir.write("over.json", long_strip(io::kMaxStripVertices + 1));
+  const auto r = run_cli({"render", over.string(), "--fragments", (dir / "out.json").string()});
+  expect_one_error_line(r, "primitives[0].v: more than 65536 vertices in one primitive (limit SCENE.INPUT.LIMITS)");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
+}
+
+// rule: SCENE.INPUT.LIMITS
+TEST(Limits, NestingDeeperThanTheFormatStopsAtTheFirstExtraLevel) {
+  // A million levels where a coordinate belongs: refused at the first '[' beyond depth 5,
+  // without recursion or memory proportional to the depth.
+  const std::string deep(std::size_t{1} << 20, '[');
+  const std::string text = head(4, 4) + "{\"type\": \"point\", \"v\": [[" + deep;
+  const auto r = io::read_scene(text);
+  ASSERT_TRUE(std::holds_alternative<rastrules::SceneError>(r));
+  EXPECT_EQ(std::get<rastrules::SceneError>(r).what(),
+            "primitives[0].v[0][0]: must be a number, \"NaN\", \"Infinity\" or \"-Infinity\", got an array");
+  EXPECT_EQ(io::kMaxSceneNesting, 5u);
+}
+
+// rule: SCENE.INPUT.LIMITS, SCENE.OUTPUT.FRAGMENTS
+TEST(Limits, FragmentLimitIsExactAndLeavesNoOutput) {
+  const TempDir dir;
+  // Two triangles covering the 16x8 target: 128 fragments.
+  const auto scene = dir.write("full.json", head(16, 8) +
+                                                "{\"type\": \"triangle\", \"v\": [[0,0],[16,0],[0,8]]},"
+                                                "{\"type\": \"triangle\", \"v\": [[16,0],[16,8],[0,8]]}]}");
+  const auto ok = run_cli({"render", scene.string(), "--fragments", (dir / "ok.json").string(),
+                           "--max-fragments", "128"});
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  EXPECT_NE(ok.out.find("128 fragments"), std::string::npos) << ok.out;
+
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(), "--png",
+                          (dir / "out.png").string(), "--max-fragments=127"});
+  expect_one_error_line(r, "render: more than 127 fragments (limit SCENE.INPUT.LIMITS); raise it with --max-fragments N");
+  EXPECT_EQ(r.out, "");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++files;
+  EXPECT_EQ(files, 2u);  // full.json and ok.json: no temporary file left behind
+}
+
+// rule: SCENE.INPUT.LIMITS
+TEST(Limits, FragmentLimitStopsAHugeRenderEarly) {
+  // A full-screen triangle on the largest target has 2^28 fragments; the limit stops the
+  // traversal at the first fragment beyond it instead of walking (and writing) them all.
+  const TempDir dir;
+  const auto scene = dir.write("huge.json", head(16384, 16384) +
+                                                "{\"type\": \"triangle\", \"v\": [[0,0],[32000,0],[0,32000]]}]}");
+  const auto start = std::chrono::steady_clock::now();
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(),
+                          "--max-fragments", "100000"});
+  const auto seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  expect_one_error_line(r, "render: more than 100000 fragments (limit SCENE.INPUT.LIMITS)");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
+  EXPECT_LT(seconds, 5.0);
+}
+
+// rule: SCENE.INPUT.LIMITS
+TEST(Limits, DefaultFragmentLimitIsStatedInTheUsage) {
+  EXPECT_EQ(io::kDefaultMaxFragments, std::uint64_t{1} << 26);
+  const auto r = run_cli({"--help"});
+  EXPECT_NE(r.out.find("--max-fragments fragments (default 67108864)"), std::string::npos) << r.out;
+}
+
+// rule: SCENE.INPUT.ERRORS
+TEST(Limits, MaxFragmentsNeedsAPositiveInteger) {
+  const TempDir dir;
+  const auto scene = dir.write("s.json", head(4, 4) + "]}");
+  for (const char* bad : {"0", "-1", "abc", "1099511627777"}) {
+    const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "o.json").string(),
+                            "--max-fragments", bad});
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_NE(r.err.find("--max-fragments needs an integer in [1, 2^40]"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "o.json"));
+  }
+}
+
+}  // namespace
