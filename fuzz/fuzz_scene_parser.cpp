@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+// libFuzzer target: the strict scene reader (tools/io, rastrules::io::read_scene) on arbitrary
+// bytes. Must never crash, leak or hit undefined behaviour, and must return either
+// - an error with a non-empty message naming a field (`primitives[2].v[1][0]`) or, for
+//   malformed JSON, the parser's position (`parse error at line 1, column 7: ...`); or
+// - a scene that the writer writes back to text reading to the same scene, and that prepare()
+//   accepts exactly when the oracles' reading of spec/scene.md finds it valid (and rejects with
+//   a named field otherwise). Small accepted scenes are also rasterized.
+// rule: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "rastrules/io/scene_json.hpp"
+#include "rastrules/scene.hpp"
+#include "support.hpp"
+
+namespace {
+
+using rastrules::Scene;
+using rastrules::SceneError;
+namespace fz = rastrules::fuzz;
+
+void check_error(const SceneError& e, const char* stage, const Scene* scene, const std::uint8_t* data,
+                 std::size_t size) {
+  const bool names_position = e.message.rfind("parse error", 0) == 0;
+  if (e.message.empty() || (e.field.empty() && !names_position)) {
+    fz::fail(std::string(stage) + " returned an error that names no field or position",
+             {"field: \"" + e.field + "\"", "message: \"" + e.message + "\""}, scene, data, size);
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size > rastrules::io::kMaxSceneBytes) return 0;
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  const auto read = rastrules::io::read_scene(text);
+  if (const auto* err = std::get_if<SceneError>(&read)) {
+    check_error(*err, "read_scene", nullptr, data, size);
+    return 0;
+  }
+  const Scene& scene = std::get<Scene>(read);
+
+  // The writer's text reads back to the same scene (SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32).
+  const std::string written = rastrules::io::write_scene(scene);
+  const auto reread = rastrules::io::read_scene(written);
+  if (const auto* err = std::get_if<SceneError>(&reread)) {
+    fz::fail("write_scene wrote text that read_scene rejects", {err->what()}, &scene, data, size);
+  }
+  if (!fz::same_scene(std::get<Scene>(reread), scene)) {
+    fz::fail("write_scene wrote text that reads back to a different scene", {}, &scene, data, size);
+  }
+
+  // prepare() accepts exactly the scenes the oracles find valid.
+  const std::string invalid = fz::oracle_invalid_reason(scene);
+  const auto prepared = rastrules::prepare(scene);
+  if (const auto* err = std::get_if<SceneError>(&prepared)) {
+    check_error(*err, "prepare", &scene, data, size);
+    if (invalid.empty()) fz::fail("prepare rejects a scene the oracles find valid", {err->what()}, &scene, data, size);
+    return 0;
+  }
+  if (!invalid.empty()) fz::fail("prepare accepts a scene the oracles find invalid", {invalid}, &scene, data, size);
+
+  // Small scenes are drawn too (big targets would make one input slow, not more interesting).
+  const auto& ps = std::get<rastrules::PreparedScene>(prepared);
+  if (std::int64_t{ps.width} * ps.height <= 4096 && ps.primitives.size() <= 16) {
+    const std::vector<rastrules::Fragment> fragments = rastrules::rasterize(ps);
+    for (const rastrules::Fragment& f : fragments) {
+      if (f.x < 0 || f.y < 0 || f.x >= ps.width || f.y >= ps.height || f.prim >= ps.primitives.size()) {
+        fz::fail("a fragment outside the target", {}, &scene, data, size);
+      }
+    }
+  }
+  return 0;
+}

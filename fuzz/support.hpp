@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// Shared by the fuzz targets: a byte decoder (in the manner of libFuzzer's FuzzedDataProvider,
+// written here so that gcc builds need nothing from clang), the decoder of small scenes, the
+// comparison of the kernel with the exact oracles, and the failure report.
+
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "rastrules/scene.hpp"
+
+namespace rastrules::fuzz {
+
+// Reads integers from the front of a byte string; past its end every read gives zero bytes.
+class ByteReader {
+ public:
+  ByteReader(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
+  std::uint8_t byte();
+  std::uint16_t u16();       // little-endian
+  std::uint32_t u24();       // little-endian, in [0, 2^24)
+  std::uint32_t u32();       // little-endian
+  [[nodiscard]] std::size_t remaining() const { return size_ - pos_; }
+
+ private:
+  const std::uint8_t* data_;
+  std::size_t size_;
+  std::size_t pos_ = 0;
+};
+
+// The limits of decoded scenes.
+inline constexpr std::int32_t kMaxFuzzTarget = 64;   // width and height in [1, 64]
+inline constexpr std::size_t kMaxFuzzPrimitives = 8; // [0, 8] primitives
+inline constexpr std::size_t kMaxStripVertices = 5;  // line strips: [2, 5] vertices
+// At most 2 antialiased segments per scene (further "aa" flags are dropped): the exact AA
+// oracle takes milliseconds per pixel under the sanitizers, and one input must stay well
+// within libFuzzer's -timeout.
+inline constexpr std::size_t kMaxAaSegments = 2;
+
+// Returns the scene the bytes describe (fuzz/README.md gives the layout): target 1..64 px,
+// any cull / front_face / fill / line_mode, up to 8 primitives of every type (antialiased
+// lines and strips included), each coordinate from one of: a raw 16.8 value near the target,
+// any raw 16.8 value of SNAP.VERTEX.RANGE, a rounding tie between two raw values, a few ulps
+// from a raw value, or arbitrary float32 bits (NaN, infinities, out of range).
+[[nodiscard]] Scene decode_scene(ByteReader& in);
+
+// Returns whether two scenes hold the same state and bit-identical coordinates (any NaN equals
+// any NaN: NaN payloads are not part of a scene file).
+[[nodiscard]] bool same_scene(const Scene& a, const Scene& b);
+
+// Returns the differences (empty when none) between the kernel's fragments of `scene` and the
+// exact oracles: triangles against oracle::render, points against oracle::point_covers,
+// aliased lines against oracle::aliased_line_pixels, quadrilateral lines against
+// oracle::quad_line_covers, antialiased lines against oracle::aa_pixels (pixels exactly) and
+// oracle::aa_check (coverage within LINE.AA.PRECISION). Also checks the fragment list itself:
+// inside the target, sorted (SCENE.OUTPUT.FRAGMENTS), mask 1, seg on strips only, coverage on
+// antialiased lines only and in [1, 65536]. Preconditions: prepare(scene) succeeded.
+[[nodiscard]] std::vector<std::string> compare_with_oracles(const Scene& scene, const PreparedScene& ps,
+                                                            const std::vector<Fragment>& kernel);
+
+// Returns why `scene` is invalid by the oracles' reading of spec/scene.md (a coordinate that
+// does not snap, a point outside POINT.RANGE, aa outside line mode d3d, a wrong vertex count,
+// a target size outside [1, 16384]), or an empty string when they find it valid.
+[[nodiscard]] std::string oracle_invalid_reason(const Scene& scene);
+
+// Prints the failure, the scene file that reproduces it and the input bytes (hex) to stderr,
+// then aborts (libFuzzer saves the input as crash-*).
+[[noreturn]] void fail(const std::string& what, const std::vector<std::string>& details, const Scene* scene,
+                       const std::uint8_t* data, std::size_t size);
+
+}  // namespace rastrules::fuzz
