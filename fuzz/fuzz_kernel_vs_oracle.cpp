@@ -29,7 +29,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const rastrules::Scene scene = fz::decode_scene(in);
 
   const auto reread = rastrules::io::read_scene(rastrules::io::write_scene(scene));
-  if (!std::holds_alternative<rastrules::Scene>(reread) || !fz::same_scene(std::get<rastrules::Scene>(reread), scene)) {
+  if (!std::holds_alternative<rastrules::Scene>(reread) || !rastrules::io::same_scene(std::get<rastrules::Scene>(reread), scene)) {
     fz::fail("the scene file written for the scene does not read back to it",
              {std::holds_alternative<rastrules::SceneError>(reread) ? std::get<rastrules::SceneError>(reread).what()
                                                                      : std::string("a different scene")},

@@ -52,7 +52,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (const auto* err = std::get_if<SceneError>(&reread)) {
     fz::fail("write_scene wrote text that read_scene rejects", {err->what()}, &scene, data, size);
   }
-  if (!fz::same_scene(std::get<Scene>(reread), scene)) {
+  if (!rastrules::io::same_scene(std::get<Scene>(reread), scene)) {
     fz::fail("write_scene wrote text that reads back to a different scene", {}, &scene, data, size);
   }
 

@@ -46,10 +46,6 @@ inline constexpr std::size_t kMaxAaSegments = 2;
 // from a raw value, or arbitrary float32 bits (NaN, infinities, out of range).
 [[nodiscard]] Scene decode_scene(ByteReader& in);
 
-// Returns whether two scenes hold the same state and bit-identical coordinates (any NaN equals
-// any NaN: NaN payloads are not part of a scene file).
-[[nodiscard]] bool same_scene(const Scene& a, const Scene& b);
-
 // Returns the differences (empty when none) between the kernel's fragments of `scene` and the
 // exact oracles: triangles against oracle::render, points against oracle::point_covers,
 // aliased lines against oracle::aliased_line_pixels, quadrilateral lines against

@@ -227,30 +227,6 @@ Check check_scene(const Scene& scene, const PreparedScene& ps,
   return check;
 }
 
-// Returns whether two scenes hold the same state and bit-identical coordinates.
-bool same_scene(const Scene& a, const Scene& b) {
-  if (a.width != b.width || a.height != b.height || a.state.cull != b.state.cull ||
-      a.state.front_face != b.state.front_face || a.state.fill != b.state.fill ||
-      a.line_mode != b.line_mode || a.primitives.size() != b.primitives.size()) {
-    return false;
-  }
-  for (std::size_t p = 0; p < a.primitives.size(); ++p) {
-    if (a.primitives[p].type != b.primitives[p].type || a.primitives[p].aa != b.primitives[p].aa ||
-        a.primitives[p].v.size() != b.primitives[p].v.size()) {
-      return false;
-    }
-    for (std::size_t i = 0; i < a.primitives[p].v.size(); ++i) {
-      for (std::size_t k = 0; k < 2; ++k) {
-        if (std::bit_cast<std::uint32_t>(a.primitives[p].v[i][k]) !=
-            std::bit_cast<std::uint32_t>(b.primitives[p].v[i][k])) {
-          return false;
-        }
-      }
-    }
-  }
-  return true;
-}
-
 std::optional<std::string> write_text(const std::filesystem::path& path, const std::string& text) {
   OutputFile f;
   if (auto err = f.open(path.string())) return err;
@@ -333,7 +309,7 @@ int run_showcase(const Args& args) {
     // The scene file must read back to exactly this scene (SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32).
     const std::string scene_text = io::write_scene(sc.scene);
     const auto reread = io::read_scene(scene_text);
-    if (!std::holds_alternative<Scene>(reread) || !same_scene(std::get<Scene>(reread), sc.scene)) {
+    if (!std::holds_alternative<Scene>(reread) || !io::same_scene(std::get<Scene>(reread), sc.scene)) {
       same = false;
       notes.push_back(sc.name + ": the written scene file does not read back to the same scene");
     }

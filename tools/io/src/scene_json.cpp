@@ -6,6 +6,7 @@
 #include "rastrules/io/scene_json.hpp"
 
 #include <array>
+#include <bit>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -621,6 +622,28 @@ std::string write_scene(const Scene& scene) {
   }
   out += scene.primitives.empty() ? "]\n}\n" : "\n  ]\n}\n";
   return out;
+}
+
+bool same_scene(const Scene& a, const Scene& b) {
+  if (a.width != b.width || a.height != b.height || a.state.cull != b.state.cull ||
+      a.state.front_face != b.state.front_face || a.state.fill != b.state.fill ||
+      a.line_mode != b.line_mode || a.primitives.size() != b.primitives.size()) {
+    return false;
+  }
+  for (std::size_t p = 0; p < a.primitives.size(); ++p) {
+    const Primitive& pa = a.primitives[p];
+    const Primitive& pb = b.primitives[p];
+    if (pa.type != pb.type || pa.aa != pb.aa || pa.v.size() != pb.v.size()) return false;
+    for (std::size_t i = 0; i < pa.v.size(); ++i) {
+      for (std::size_t k = 0; k < 2; ++k) {
+        const float x = pa.v[i][k];
+        const float y = pb.v[i][k];
+        if (std::isnan(x) && std::isnan(y)) continue;
+        if (std::bit_cast<std::uint32_t>(x) != std::bit_cast<std::uint32_t>(y)) return false;
+      }
+    }
+  }
+  return true;
 }
 
 }  // namespace rastrules::io

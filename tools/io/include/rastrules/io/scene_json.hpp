@@ -73,4 +73,9 @@ inline constexpr std::uint64_t kDefaultMaxFragments = std::uint64_t{1} << 26;  /
 // (with "..." appended when cut), so that it is safe inside a one-line error message.
 [[nodiscard]] std::string printable(std::string_view s, std::size_t max_len = 60);
 
+// Returns whether two scenes hold the same state and bit-identical coordinates (any NaN equals
+// any NaN: NaN payloads are not part of a scene file). Used to check that a written scene reads
+// back as itself (showcase, fuzz targets).
+[[nodiscard]] bool same_scene(const Scene& a, const Scene& b);
+
 }  // namespace rastrules::io
