@@ -38,15 +38,8 @@ using Raw2 = oracle::Raw2;
 
 constexpr std::int32_t kSide = 10;  // target side for the window properties
 
-std::string fill_name(rastrules::FillConvention f) {
-  switch (f) {
-    case rastrules::FillConvention::kTopLeft: return "top-left";
-    case rastrules::FillConvention::kTopRight: return "top-right";
-    case rastrules::FillConvention::kBottomLeft: return "bottom-left";
-    case rastrules::FillConvention::kBottomRight: return "bottom-right";
-  }
-  return "?";
-}
+// The fill convention spelled as in spec/scene.md, for the string-typed oracle.
+std::string fill_name(rastrules::FillConvention f) { return std::string(rastrules::to_string(f)); }
 
 std::string mode_name(LineMode m) { return m == LineMode::kQuadWide ? "quad-wide" : "quad-narrow"; }
 

@@ -32,15 +32,8 @@ using rastrules::Vec2;
 
 constexpr std::int32_t kSide = 8;  // target side for the window properties
 
-std::string fill_name(rastrules::FillConvention f) {
-  switch (f) {
-    case rastrules::FillConvention::kTopLeft: return "top-left";
-    case rastrules::FillConvention::kTopRight: return "top-right";
-    case rastrules::FillConvention::kBottomLeft: return "bottom-left";
-    case rastrules::FillConvention::kBottomRight: return "bottom-right";
-  }
-  return "?";
-}
+// The fill convention spelled as in spec/scene.md, for the string-typed oracle.
+std::string fill_name(rastrules::FillConvention f) { return std::string(rastrules::to_string(f)); }
 
 Vec2 raw(std::int64_t x, std::int64_t y) {
   return Vec2{rastrules::Subpixel::from_raw(static_cast<std::int32_t>(x)),
