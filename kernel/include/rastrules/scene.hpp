@@ -18,6 +18,7 @@
 
 #include "rastrules/fixed.hpp"
 #include "rastrules/line.hpp"
+#include "rastrules/msaa.hpp"
 #include "rastrules/snap.hpp"
 #include "rastrules/triangle.hpp"
 
@@ -36,6 +37,7 @@ struct Primitive {
   // line, at least 2 for a line strip. A default primitive is a triangle with 3 zero vertices.
   std::vector<FloatPoint> v = std::vector<FloatPoint>(3);
   bool aa = false; // antialiased (lines and line strips only; SCENE.PRIM.LINE)
+  Rgba8 color = {255, 255, 255, 255}; // written to covered samples by resolve() (SCENE.MSAA)
 };
 
 // Returns a triangle primitive with the given vertices.
@@ -50,6 +52,8 @@ struct Scene {
   std::int32_t height = 0;
   RasterState state;
   LineMode line_mode = LineMode::kD3DDiamond; // SCENE.LINE_MODE
+  MultisampleState msaa;                      // SCENE.MSAA; default: one sample at the centre
+  Rgba8 clear_color = {0, 0, 0, 0};           // the samples' value before any primitive
   std::vector<Primitive> primitives;
 };
 
@@ -73,10 +77,19 @@ struct Fragment {
   std::uint32_t mask = 1;
   std::optional<std::uint32_t> seg;          // line strips only
   std::optional<std::uint32_t> coverage_q16; // antialiased lines only, in [1, 65536]
+  // Multisampling (SCENE.OUTPUT.MSAA). mask is the coverage ANDed with the sample mask
+  // (MSAA.MASK.AND). A helper lane (MSAA.QUAD.HELPER) has helper == true and mask == 0.
+  // Under sample-frequency shading each fragment is one sample: sample == i, mask == 1 << i
+  // (0 for a helper). centroid: present when the scene asks for a centroid rule.
+  // derivatives: present when the scene asks for derivatives.
+  bool helper = false;
+  std::optional<std::uint32_t> sample;
+  std::optional<Centroid> centroid;
+  std::optional<EvalDerivatives> derivatives;
   friend bool operator==(const Fragment&, const Fragment&) = default;
 };
 
-// The order of SCENE.OUTPUT.FRAGMENTS: (prim, y, x, seg), a missing seg first.
+// The order of SCENE.OUTPUT.FRAGMENTS: (prim, y, x, seg, sample), a missing seg or sample first.
 [[nodiscard]] bool fragment_before(const Fragment& a, const Fragment& b);
 
 // A rejected scene: the JSON-pointer-like path of the offending field and what is wrong.
@@ -97,6 +110,7 @@ struct PreparedTriangle {
 struct PreparedPrimitive {
   PrimitiveType type = PrimitiveType::kTriangle;
   bool aa = false;
+  Rgba8 color = {255, 255, 255, 255};
   std::vector<Vec2> v; // snapped vertices
   // The triangles drawn for it: the triangle itself; the point's two (SCENE.PRIM.POINT); two
   // per segment of a quadrilateral line (LineMode kQuadWide/kQuadNarrow). Empty for aliased
@@ -110,6 +124,8 @@ struct PreparedScene {
   std::int32_t height = 0;
   RasterState state;
   LineMode line_mode = LineMode::kD3DDiamond;
+  MultisampleState msaa;
+  Rgba8 clear_color = {0, 0, 0, 0};
   std::vector<PreparedPrimitive> primitives;
 };
 
@@ -138,6 +154,25 @@ void for_each_fragment(const PreparedScene& scene, std::size_t p,
 // Returns the fragments of a prepared scene sorted by (prim, y, x, seg), only inside the target.
 // rule: SCENE.OUTPUT.FRAGMENTS, RASTER.TARGET.CLIP
 [[nodiscard]] std::vector<Fragment> rasterize(const PreparedScene& scene);
+
+// A resolved target: one RGBA8 value per pixel, row-major, y down.
+struct ResolvedImage {
+  std::int32_t width = 0;
+  std::int32_t height = 0;
+  std::vector<Rgba8> pixels;
+};
+
+// The largest width * height * samples resolve() accepts (a 256 MiB sample buffer).
+// rule: MSAA.LIMITS
+inline constexpr std::int64_t kMaxResolveSamples = std::int64_t{1} << 26;
+
+// Writes each fragment's primitive colour to its covered samples (fragments of helper lanes
+// write nothing) in fragment order, over samples cleared to clear_color, then resolves every
+// pixel with resolve_pixel(). No blending: the coverage of antialiased lines is not applied.
+// Returns an error naming the limit when width * height * samples > kMaxResolveSamples.
+// rule: MSAA.RESOLVE.AVERAGE
+[[nodiscard]] std::variant<ResolvedImage, SceneError> resolve(const PreparedScene& scene,
+                                                              const std::vector<Fragment>& fragments);
 
 // prepare() then rasterize().
 [[nodiscard]] std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene);

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// The driver interface: draw a scene with some rasterizer (lavapipe, an external process, a
+// deliberately imprecise built-in one, or the reference kernel itself) and return its
+// coverage as a fragment list in the kernel's own format, so the two compare directly.
+// Implements: DRIVER.INTERFACE (spec/driver.md)
+
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "rastrules/scene.hpp"
+
+namespace rastrules::driver {
+
+// What a driver reports about itself, and what it can draw.
+struct DriverInfo {
+  std::string name;                 // "lavapipe", "imprecise", "reference", "external"
+  std::string description;          // device name and version, or the command line
+  int subpixel_bits = -1;           // as the driver reports it (-1: unknown)
+  std::vector<std::uint32_t> sample_counts;  // supported rasterization sample counts
+  bool points = false;
+  bool lines_bresenham = false;     // line_mode "vulkan-bresenham"
+  bool lines_rectangular = false;   // line_mode "quad-narrow" (Vulkan rectangular, 1.0 wide)
+  bool lines_d3d = false;           // line_mode "d3d" (diamond exit)
+  bool sample_mask = false;
+  bool sample_shading = false;
+  std::int32_t max_target_side = 0; // largest width or height it accepts
+};
+
+// A driver failure (not a difference): could not start, device lost, unsupported scene, ...
+struct DriverError {
+  std::string message;
+};
+
+// Coverage as the driver produced it: one fragment per (prim, x, y[, seg][, sample]) with the
+// per-sample mask, sorted like SCENE.OUTPUT.FRAGMENTS. Fields the driver cannot observe (seg,
+// coverage_q16, centroid, derivatives, helper lanes) are left empty; compare() ignores them.
+using DrawResult = std::variant<std::vector<Fragment>, DriverError>;
+
+class Driver {
+ public:
+  virtual ~Driver() = default;
+  [[nodiscard]] virtual const DriverInfo& info() const = 0;
+  // Returns an empty string when the driver can draw the scene, else the reason it cannot
+  // (for example "4 samples not supported", "antialiased lines not supported").
+  [[nodiscard]] virtual std::string unsupported(const Scene& scene) const = 0;
+  // Draws the scene. Preconditions: unsupported(scene).empty(); prepare(scene) succeeds.
+  [[nodiscard]] virtual DrawResult draw(const Scene& scene) = 0;
+};
+
+// Opens a driver by name: "reference" (the kernel), "imprecise" (built-in planted bugs, see
+// imprecise.hpp), "lavapipe" (Mesa's Vulkan CPU driver, when built with Vulkan), or
+// "external:COMMAND" (spec/driver.md DRIVER.EXTERNAL.PROTOCOL). On failure returns nullptr and
+// sets *error to a one-line reason.
+[[nodiscard]] std::unique_ptr<Driver> open_driver(std::string_view name, std::string* error);
+
+// Returns the names open_driver accepts in this build, for usage messages.
+[[nodiscard]] std::vector<std::string> driver_names();
+
+}  // namespace rastrules::driver
