@@ -65,6 +65,21 @@ HAND = {
                          {"type": "line", "v": [[0.501953125, 0.5], [7.498046875, 6.5]]}]),
     "nan_strings": scene(4, 4, [{"type": "triangle", "v": [["NaN", 1], [2, "Infinity"], ["-Infinity", 0]]}]),
     "exponents": scene(4, 4, [{"type": "triangle", "v": [[1e0, 2.5E+0], [3.999e-0, 1e-45], [-0.0, 4e0]]}]),
+    # multisampling (SCENE.MSAA): every key, every pattern kind, both centroid rules
+    "msaa_4x": scene(6, 4, [{"type": "triangle", "v": [[0.5, 0.5], [5.5, 1.5], [1.5, 3.5]], "color": [255, 0, 0, 255]},
+                            {"type": "point", "v": [[4.5, 3.0]]},
+                            {"type": "line", "v": [[0.0, 3.5], [6.0, 2.0]], "aa": True}],
+                     samples=4, sample_mask=13, centroid="d3d11", quads=True, derivatives="fine",
+                     clear_color=[0, 0, 0, 255]),
+    "msaa_16x_sample_shading": scene(4, 4, [{"type": "triangle", "v": [[0, 0], [4, 0.5], [0.5, 4]]}],
+                                     samples=16, shading="sample", derivatives="coarse"),
+    "msaa_center_bresenham": scene(4, 4, [{"type": "line", "v": [[0.5, 0.5], [3.5, 2.5]]}],
+                                   samples=8, sample_pattern="center", line_mode="vulkan-bresenham",
+                                   centroid="d3d10"),
+    "msaa_custom": scene(4, 4, [{"type": "triangle", "v": [[0, 0], [4, 0], [0, 4]]},
+                                {"type": "line_strip", "v": [[0, 3], [3, 0], [4, 4]]}],
+                         sample_pattern=[[-8, -8], [7, 7], [0, 0], [0, 0], [-8, 7]], line_mode="quad-narrow",
+                         sample_mask=0, quads=True),
 }
 
 

@@ -323,6 +323,22 @@ std::string oracle_invalid_reason(const Scene& scene) {
       if (prim.type == PrimitiveType::kPoint && !oracle::point_in_range({*x, *y})) return at + ": outside POINT.RANGE";
     }
   }
+  // Multisampling, from spec/rules/msaa.md (the reader has already checked each key alone):
+  // MSAA.LIMITS: a sample mask other than the default all-ones value holds no bit beyond the
+  // pattern's n samples. MSAA.SHADING.SAMPLE: sample shading of "vulkan-bresenham" lines with
+  // n > 1 is bad input. MSAA.LINE.MODE: with n > 1 every line except a "vulkan-bresenham" one
+  // is a quadrilateral line, which a centre pattern cannot draw.
+  const std::size_t n = scene.msaa.pattern.positions.size();
+  if (scene.msaa.sample_mask != 0xFFFFFFFFu && n < 32 && (scene.msaa.sample_mask >> n) != 0) {
+    return "sample_mask: bits beyond the pattern";
+  }
+  for (const Primitive& prim : scene.primitives) {
+    const bool line = prim.type == PrimitiveType::kLine || prim.type == PrimitiveType::kLineStrip;
+    if (!line || n <= 1) continue;
+    const bool bresenham = scene.line_mode == LineMode::kVulkanBresenham;
+    if (bresenham && scene.msaa.shading == ShadingRate::kSample) return "shading: sample shading of Bresenham lines";
+    if (!bresenham && scene.msaa.pattern.kind == PatternKind::kCenter) return "sample_pattern: quad lines on a centre pattern";
+  }
   return {};
 }
 

@@ -58,7 +58,9 @@ inline constexpr std::size_t kMaxAaSegments = 2;
 
 // Returns why `scene` is invalid by the oracles' reading of spec/scene.md (a coordinate that
 // does not snap, a point outside POINT.RANGE, aa outside line mode d3d, a wrong vertex count,
-// a target size outside [1, 16384]), or an empty string when they find it valid.
+// a target size outside [1, 16384], a sample mask wider than the pattern, sample shading of
+// Bresenham lines or quadrilateral lines on a centre pattern with several samples), or an
+// empty string when they find it valid.
 [[nodiscard]] std::string oracle_invalid_reason(const Scene& scene);
 
 // Prints the failure, the scene file that reproduces it and the input bytes (hex) to stderr,

@@ -2,16 +2,22 @@
 // Scene validation, snapping and rasterization entry points.
 // Implements: SCENE.TARGET.LIMITS, SNAP.VERTEX.INVALID, SCENE.OUTPUT.FRAGMENTS,
 //             SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.LINE_MODE,
-//             SCENE.OUTPUT.COVERAGE
+//             SCENE.OUTPUT.COVERAGE, SCENE.MSAA, SCENE.OUTPUT.MSAA, MSAA.LIMITS, MSAA.MASK.AND,
+//             MSAA.POINT.PER_SAMPLE, MSAA.LINE.MODE, MSAA.SHADING.PIXEL, MSAA.SHADING.SAMPLE,
+//             MSAA.QUAD.HELPER, MSAA.DERIV.FINE, MSAA.DERIV.COARSE, MSAA.RESOLVE.AVERAGE
 
 #include "rastrules/scene.hpp"
 
 #include <algorithm>
+#include <map>
+#include <optional>
+#include <set>
 #include <string>
 #include <tuple>
 
 #include "rastrules/point.hpp"
 #include "rastrules/raster/walk.hpp"
+#include "rastrules/raster/walk_msaa.hpp"
 
 namespace rastrules {
 
@@ -87,12 +93,14 @@ std::size_t required_vertex_count(PrimitiveType t) {
   return 0;
 }
 
-// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.PRIM.LINE_STRIP
+// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.PRIM.LINE_STRIP, SCENE.OUTPUT.MSAA
 bool fragment_before(const Fragment& a, const Fragment& b) {
-  // A missing seg (-1) sorts before every segment index.
+  // A missing seg or sample (-1) sorts before every index.
   const std::int64_t sa = a.seg ? std::int64_t{*a.seg} : -1;
   const std::int64_t sb = b.seg ? std::int64_t{*b.seg} : -1;
-  return std::tie(a.prim, a.y, a.x, sa) < std::tie(b.prim, b.y, b.x, sb);
+  const std::int64_t ka = a.sample ? std::int64_t{*a.sample} : -1;
+  const std::int64_t kb = b.sample ? std::int64_t{*b.sample} : -1;
+  return std::tie(a.prim, a.y, a.x, sa, ka) < std::tie(b.prim, b.y, b.x, sb, kb);
 }
 
 namespace {
@@ -107,6 +115,106 @@ bool is_quad(LineMode m) {
 
 std::string field_of(std::size_t p) {
   return "primitives[" + std::to_string(p) + "]";
+}
+
+// Returns whether lines of this scene are drawn as quadrilateral lines (two triangles per
+// segment): the quadrilateral line modes, and the D3D line mode on a multisampled target.
+// rule: SCENE.LINE_MODE, MSAA.LINE.MODE
+bool lines_as_quads(LineMode mode, bool aa, std::uint32_t samples) {
+  if (is_quad(mode)) return !aa;
+  return mode == LineMode::kD3DDiamond && samples > 1;
+}
+
+std::string mask_hex(std::uint32_t m) {
+  static constexpr char kDigits[] = "0123456789abcdef";
+  std::string out = "0x";
+  for (int shift = 28; shift >= 0; shift -= 4) out += kDigits[(m >> shift) & 0xFu];
+  return out;
+}
+
+// Returns the first error of the multisample state in field order (MSAA.LIMITS).
+// rule: MSAA.LIMITS, SCENE.MSAA, MSAA.LINE.MODE, MSAA.SHADING.SAMPLE
+std::optional<SceneError> validate_msaa(const Scene& scene) {
+  const MultisampleState& ms = scene.msaa;
+  const SamplePattern& pat = ms.pattern;
+  const std::uint32_t n = pat.count();
+  switch (pat.kind) {
+    case PatternKind::kStandard:
+    case PatternKind::kCenter: {
+      if (!is_standard_count(n)) {
+        return SceneError{"samples", std::to_string(n) + " has no " +
+                                         std::string(to_string(pat.kind)) +
+                                         " pattern (1, 2, 4, 8, 16)"};
+      }
+      const SamplePattern want =
+          pat.kind == PatternKind::kCenter ? center_pattern(n) : standard_pattern(n);
+      if (pat.positions != want.positions) {
+        return SceneError{"sample_pattern", "positions differ from the " +
+                                                std::string(to_string(pat.kind)) + " pattern of " +
+                                                std::to_string(n) + " samples"};
+      }
+      break;
+    }
+    case PatternKind::kCustom:
+      if (n < 1 || n > kMaxSamples) {
+        return SceneError{"sample_pattern", "must list 1 to " + std::to_string(kMaxSamples) +
+                                                " positions, got " + std::to_string(n)};
+      }
+      for (std::size_t k = 0; k < n; ++k) {
+        const SampleOffset o = pat.positions[k];
+        const std::int32_t c[2] = {o.x, o.y};
+        for (std::size_t a = 0; a < 2; ++a) {
+          if (c[a] < kSampleGridMin || c[a] > kSampleGridMax) {
+            return SceneError{"sample_pattern[" + std::to_string(k) + "][" + std::to_string(a) +
+                                  "]",
+                              "must be an integer in [" + std::to_string(kSampleGridMin) + ", " +
+                                  std::to_string(kSampleGridMax) + "] (1/16 px), got " +
+                                  std::to_string(c[a])};
+          }
+        }
+      }
+      break;
+    default:
+      return SceneError{"sample_pattern", "unknown pattern kind"};
+  }
+  // rule: MSAA.MASK.AND, MSAA.LIMITS
+  // 0xFFFFFFFF is the default "all samples"; any other value must fit the pattern.
+  if (ms.sample_mask != 0xFFFFFFFFu && (ms.sample_mask & ~full_mask(n)) != 0u) {
+    return SceneError{"sample_mask", "must be an integer in [0, " + std::to_string(full_mask(n)) +
+                                         "] (bit k is sample k of " + std::to_string(n) +
+                                         "), got " + std::to_string(ms.sample_mask) + " (" +
+                                         mask_hex(ms.sample_mask) + ")"};
+  }
+  if (ms.has_centroid && ms.centroid_rule != CentroidRule::kD3D11 &&
+      ms.centroid_rule != CentroidRule::kD3D10) {
+    return SceneError{"centroid", "must be one of \"d3d11\", \"d3d10\""};
+  }
+  if (ms.shading != ShadingRate::kPixel && ms.shading != ShadingRate::kSample) {
+    return SceneError{"shading", "must be one of \"pixel\", \"sample\""};
+  }
+  if (ms.derivatives != DerivativeMode::kNone && ms.derivatives != DerivativeMode::kFine &&
+      ms.derivatives != DerivativeMode::kCoarse) {
+    return SceneError{"derivatives", "must be one of \"fine\", \"coarse\""};
+  }
+  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+    const Primitive& prim = scene.primitives[p];
+    if (!is_line(prim.type) || n <= 1) continue;
+    // rule: MSAA.SHADING.SAMPLE
+    if (ms.shading == ShadingRate::kSample && scene.line_mode == LineMode::kVulkanBresenham) {
+      return SceneError{"shading", "\"sample\" shading is undefined for \"vulkan-bresenham\" "
+                                   "lines with more than one sample (" +
+                                       field_of(p) + " is a " + std::string(to_string(prim.type)) +
+                                       ")"};
+    }
+    // rule: MSAA.LINE.MODE
+    if (pat.kind == PatternKind::kCenter && lines_as_quads(scene.line_mode, prim.aa, n)) {
+      return SceneError{"sample_pattern", "a \"center\" pattern of " + std::to_string(n) +
+                                              " samples cannot draw quadrilateral lines (" +
+                                              field_of(p) + " is a " +
+                                              std::string(to_string(prim.type)) + ")"};
+    }
+  }
+  return std::nullopt;
 }
 
 } // namespace
@@ -125,11 +233,16 @@ std::variant<PreparedScene, SceneError> prepare(const Scene& scene) {
                                            std::to_string(kMaxTargetSide) + "], got " +
                                            std::to_string(scene.height)};
   }
+  // rule: MSAA.LIMITS
+  if (auto err = validate_msaa(scene)) return *err;
+  const std::uint32_t samples = scene.msaa.count();
   PreparedScene out;
   out.width = scene.width;
   out.height = scene.height;
   out.state = scene.state;
   out.line_mode = scene.line_mode;
+  out.msaa = scene.msaa;
+  out.clear_color = scene.clear_color;
   out.primitives.reserve(scene.primitives.size());
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     const Primitive& in = scene.primitives[p];
@@ -156,6 +269,7 @@ std::variant<PreparedScene, SceneError> prepare(const Scene& scene) {
     PreparedPrimitive prim;
     prim.type = in.type;
     prim.aa = in.aa;
+    prim.color = in.color;
     prim.v.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
       Subpixel c[2];
@@ -191,12 +305,14 @@ std::variant<PreparedScene, SceneError> prepare(const Scene& scene) {
       break;
     case PrimitiveType::kLine:
     case PrimitiveType::kLineStrip:
-      // rule: SCENE.LINE_MODE
-      if (!in.aa && is_quad(scene.line_mode)) {
+      // rule: SCENE.LINE_MODE, MSAA.LINE.MODE
+      if (lines_as_quads(scene.line_mode, in.aa, samples)) {
+        // D3D lines (aliased or antialiased) on a multisampled target are 1.4 px wide.
+        const LineMode quad_mode = is_quad(scene.line_mode) ? scene.line_mode : LineMode::kQuadWide;
         RasterState no_cull = scene.state;
         no_cull.cull = CullMode::kNone;
         for (std::size_t s = 0; s + 1 < prim.v.size(); ++s) {
-          for (const auto& tri : quad_line_triangles(prim.v[s], prim.v[s + 1], scene.line_mode)) {
+          for (const auto& tri : quad_line_triangles(prim.v[s], prim.v[s + 1], quad_mode)) {
             prim.triangles.push_back(
                 PreparedTriangle{setup_triangle(tri, no_cull), static_cast<std::uint32_t>(s)});
           }
@@ -209,8 +325,22 @@ std::variant<PreparedScene, SceneError> prepare(const Scene& scene) {
   return out;
 }
 
+namespace {
+
+// Returns whether the scene is single-sample rendering with nothing else asked for: one sample
+// at the pixel centre in the mask, pixel shading, no centroid, no quads. Such scenes take the
+// single-sample path unchanged (SCENE.MSAA: only what a scene asks for is computed).
+// rule: SCENE.MSAA, MSAA.COVER.SAMPLE
+bool is_single_sample(const PreparedScene& scene) {
+  const MultisampleState& ms = scene.msaa;
+  return ms.count() == 1 && ms.pattern.positions[0] == SampleOffset{} &&
+         ms.effective_mask() == 1u && ms.shading == ShadingRate::kPixel && !ms.has_centroid &&
+         !ms.wants_quads();
+}
+
+// The single-sample path (issues #2 and #3).
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.PRIM.LINE_STRIP
-std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_t p) {
+std::vector<Fragment> rasterize_single(const PreparedScene& scene, std::size_t p) {
   const PreparedPrimitive& prim = scene.primitives[p];
   const auto id = static_cast<std::uint32_t>(p);
   const bool strip = prim.type == PrimitiveType::kLineStrip;
@@ -251,11 +381,205 @@ std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_
   return out;
 }
 
+// A pixel a primitive (or one segment of a line strip) touches: its coverage before the sample
+// mask, and the antialiasing coverage of an antialiased single-sample line.
+struct PixelCoverage {
+  std::uint32_t seg = 0;
+  std::int32_t y = 0;
+  std::int32_t x = 0;
+  std::uint32_t coverage = 0;
+  std::optional<std::uint32_t> coverage_q16;
+};
+
+// Returns the per-sample coverage of primitive p sorted by (y, x, seg), one entry per pixel and
+// segment.
+// rule: MSAA.COVER.SAMPLE, MSAA.POINT.PER_SAMPLE, MSAA.LINE.MODE
+std::vector<PixelCoverage> sample_coverage_of(const PreparedScene& scene,
+                                              const PreparedPrimitive& prim) {
+  const SamplePattern& pattern = scene.msaa.pattern;
+  std::vector<PixelCoverage> cov;
+  if (!is_line(prim.type) || lines_as_quads(scene.line_mode, prim.aa, pattern.count())) {
+    // Triangles, a point's two triangles and quadrilateral lines: every sample tested.
+    // rule: MSAA.COVER.SAMPLE, MSAA.POINT.PER_SAMPLE
+    for (const PreparedTriangle& t : prim.triangles) {
+      raster::walk_triangle_samples(t.setup, pattern, scene.width, scene.height,
+                                    [&](std::int32_t x, std::int32_t y, std::uint32_t mask) {
+                                      cov.push_back(PixelCoverage{t.seg, y, x, mask, std::nullopt});
+                                    });
+    }
+  } else {
+    // Vulkan Bresenham lines (any count) and D3D lines with one sample: every sample of each
+    // pixel the line produces.
+    // rule: MSAA.LINE.MODE
+    const std::uint32_t all = full_mask(pattern.count());
+    for (std::size_t s = 0; s + 1 < prim.v.size(); ++s) {
+      const auto seg = static_cast<std::uint32_t>(s);
+      if (prim.aa) {
+        rasterize_aa_line(prim.v[s], prim.v[s + 1], scene.width, scene.height,
+                          [&](std::int32_t x, std::int32_t y, std::uint32_t c) {
+                            cov.push_back(PixelCoverage{seg, y, x, all, c});
+                          });
+      } else {
+        rasterize_aliased_line(prim.v[s], prim.v[s + 1], scene.line_mode, scene.width,
+                               scene.height, [&](std::int32_t x, std::int32_t y) {
+                                 cov.push_back(PixelCoverage{seg, y, x, all, std::nullopt});
+                               });
+      }
+    }
+  }
+  std::sort(cov.begin(), cov.end(), [](const PixelCoverage& a, const PixelCoverage& b) {
+    return std::tie(a.y, a.x, a.seg) < std::tie(b.y, b.x, b.seg);
+  });
+  // Merge the halves of a point or of a quadrilateral segment that share a pixel.
+  std::vector<PixelCoverage> merged;
+  merged.reserve(cov.size());
+  for (const PixelCoverage& c : cov) {
+    if (!merged.empty() && merged.back().y == c.y && merged.back().x == c.x &&
+        merged.back().seg == c.seg) {
+      merged.back().coverage |= c.coverage;
+    } else {
+      merged.push_back(c);
+    }
+  }
+  return merged;
+}
+
+// The multisampled path: per-sample coverage, the sample mask, shading rate, centroid, quads
+// with helper lanes and derivatives, each only when the scene asks for it.
+// rule: MSAA.MASK.AND, MSAA.SHADING.PIXEL, MSAA.SHADING.SAMPLE, MSAA.QUAD.HELPER
+// rule: MSAA.DERIV.FINE, MSAA.DERIV.COARSE, SCENE.OUTPUT.MSAA
+std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p) {
+  const PreparedPrimitive& prim = scene.primitives[p];
+  const MultisampleState& ms = scene.msaa;
+  const SamplePattern& pattern = ms.pattern;
+  const auto id = static_cast<std::uint32_t>(p);
+  const bool strip = prim.type == PrimitiveType::kLineStrip;
+  const bool per_sample = ms.shading == ShadingRate::kSample;
+  const std::uint32_t em = ms.effective_mask();
+  auto seg_of = [&](std::uint32_t s) {
+    return strip ? std::optional<std::uint32_t>(s) : std::nullopt;
+  };
+  auto centroid_of = [&](std::uint32_t coverage) {
+    return centroid(ms.centroid_rule, coverage, em, pattern);
+  };
+
+  const std::vector<PixelCoverage> cov = sample_coverage_of(scene, prim);
+  std::vector<Fragment> out;
+  // (seg, y, x) -> (coverage before the mask, after the mask) of pixels with a fragment.
+  using LaneKey = std::tuple<std::uint32_t, std::int32_t, std::int32_t>;
+  using LaneMasks = std::pair<std::uint32_t, std::uint32_t>;
+  std::map<LaneKey, LaneMasks> lanes;
+  for (const PixelCoverage& c : cov) {
+    // rule: MSAA.MASK.AND
+    const std::uint32_t mask = c.coverage & em;
+    if (mask == 0) continue;  // the mask removed every covered sample: nothing to write
+    if (ms.wants_quads()) lanes.emplace(LaneKey{c.seg, c.y, c.x}, LaneMasks{c.coverage, mask});
+    Fragment f{id, c.x, c.y, mask, seg_of(c.seg), c.coverage_q16};
+    if (ms.has_centroid) f.centroid = centroid_of(c.coverage);
+    if (!per_sample) {
+      // rule: MSAA.SHADING.PIXEL
+      out.push_back(f);
+      continue;
+    }
+    // rule: MSAA.SHADING.SAMPLE
+    for (std::uint32_t k = 0; k < pattern.count(); ++k) {
+      if (((mask >> k) & 1u) == 0u) continue;
+      Fragment fs = f;
+      fs.sample = k;
+      fs.mask = std::uint32_t{1} << k;
+      out.push_back(fs);
+    }
+  }
+
+  if (ms.wants_quads()) {
+    // rule: MSAA.QUAD.ALIGN, MSAA.QUAD.LANE, MSAA.QUAD.HELPER
+    // A lane of (seg, sample k) runs covered when its pixel has a fragment with sample k (any
+    // fragment under pixel shading).
+    auto lane_mask = [&](std::uint32_t seg, std::int32_t x, std::int32_t y) -> const LaneMasks* {
+      const auto it = lanes.find(LaneKey{seg, y, x});
+      return it == lanes.end() ? nullptr : &it->second;
+    };
+    auto lane_covered = [&](std::uint32_t seg, std::uint32_t k, std::int32_t x, std::int32_t y) {
+      const auto* l = lane_mask(seg, x, y);
+      return l != nullptr && (!per_sample || ((l->second >> k) & 1u) != 0u);
+    };
+    // The evaluation point of a lane in 1/16 px from the target origin: the sample under
+    // sample shading, else the centroid when asked for (a helper's follows rule 3: nothing
+    // covered), else the pixel centre.
+    auto eval_point = [&](std::uint32_t seg, std::uint32_t k, std::int32_t x,
+                          std::int32_t y) -> std::array<std::int32_t, 2> {
+      SampleOffset o{};
+      if (per_sample) {
+        o = pattern.positions[k];
+      } else if (ms.has_centroid) {
+        const auto* l = lane_mask(seg, x, y);
+        o = centroid_of(l != nullptr ? l->first : 0u).offset;
+      }
+      return {x * 16 + 8 + o.x, y * 16 + 8 + o.y};
+    };
+    // Touched quads: (seg, sample index or 0, top-left y, top-left x).
+    using QuadKey = std::tuple<std::uint32_t, std::uint32_t, std::int32_t, std::int32_t>;
+    std::set<QuadKey> quads;
+    for (const Fragment& f : out) {
+      quads.emplace(f.seg.value_or(0), f.sample.value_or(0), f.y & ~1, f.x & ~1);
+    }
+    // Derivatives of every listed lane, keyed like the quads plus the lane's pixel.
+    std::map<QuadKey, EvalDerivatives> derivs;
+    for (const auto& [seg, k, qy, qx] : quads) {
+      std::array<std::int32_t, 4> px{}, py{};
+      for (std::uint32_t lane = 0; lane < 4; ++lane) {
+        const std::int32_t x = qx + static_cast<std::int32_t>(lane & 1u);
+        const std::int32_t y = qy + static_cast<std::int32_t>(lane >> 1u);
+        const auto e = eval_point(seg, k, x, y);
+        px[lane] = e[0];
+        py[lane] = e[1];
+      }
+      for (std::uint32_t lane = 0; lane < 4; ++lane) {
+        const std::int32_t x = qx + static_cast<std::int32_t>(lane & 1u);
+        const std::int32_t y = qy + static_cast<std::int32_t>(lane >> 1u);
+        if (x >= scene.width || y >= scene.height) continue;  // helpers outside: not listed
+        if (!lane_covered(seg, k, x, y)) {
+          Fragment h{id, x, y, 0u, seg_of(seg), std::nullopt};
+          h.helper = true;
+          if (per_sample) h.sample = k;
+          if (ms.has_centroid) h.centroid = centroid_of(0u);
+          out.push_back(h);
+        }
+        if (ms.derivatives != DerivativeMode::kNone) {
+          // rule: MSAA.DERIV.FINE, MSAA.DERIV.COARSE
+          const bool fine = ms.derivatives == DerivativeMode::kFine;
+          const Derivatives<std::int32_t> dx =
+              fine ? fine_derivatives(px, lane) : coarse_derivatives(px);
+          const Derivatives<std::int32_t> dy =
+              fine ? fine_derivatives(py, lane) : coarse_derivatives(py);
+          derivs.emplace(QuadKey{seg, k, y, x}, EvalDerivatives{dx.ddx, dy.ddx, dx.ddy, dy.ddy});
+        }
+      }
+    }
+    if (ms.derivatives != DerivativeMode::kNone) {
+      for (Fragment& f : out) {
+        f.derivatives = derivs.at(QuadKey{f.seg.value_or(0), f.sample.value_or(0), f.y, f.x});
+      }
+    }
+  }
+  // rule: SCENE.OUTPUT.MSAA
+  std::sort(out.begin(), out.end(), fragment_before);
+  return out;
+}
+
+}  // namespace
+
+// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.PRIM.LINE_STRIP, SCENE.OUTPUT.MSAA
+std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_t p) {
+  if (is_single_sample(scene)) return rasterize_single(scene, p);
+  return rasterize_msaa(scene, p);
+}
+
 // rule: SCENE.OUTPUT.FRAGMENTS
 void for_each_fragment(const PreparedScene& scene, std::size_t p,
                        const std::function<void(const Fragment&)>& emit) {
   const PreparedPrimitive& prim = scene.primitives[p];
-  if (prim.type == PrimitiveType::kTriangle) {
+  if (prim.type == PrimitiveType::kTriangle && is_single_sample(scene)) {
     const auto id = static_cast<std::uint32_t>(p);
     raster::walk_triangle(prim.triangles[0].setup, scene.width, scene.height,
                           [&](std::int32_t x, std::int32_t y) {
@@ -274,7 +598,48 @@ std::vector<Fragment> rasterize(const PreparedScene& scene) {
     std::vector<Fragment> f = rasterize_primitive(scene, p);
     out.insert(out.end(), f.begin(), f.end());
   }
-  return out; // primitives in order, each sorted by (y, x, seg)
+  return out; // primitives in order, each sorted by (y, x, seg, sample)
+}
+
+// rule: MSAA.RESOLVE.AVERAGE, MSAA.LIMITS
+std::variant<ResolvedImage, SceneError> resolve(const PreparedScene& scene,
+                                                const std::vector<Fragment>& fragments) {
+  const std::uint32_t n = scene.msaa.count();
+  const std::int64_t total = std::int64_t{scene.width} * scene.height * n;
+  if (scene.width < 1 || scene.height < 1 || n < 1 || total > kMaxResolveSamples) {
+    return SceneError{"target", "a resolve needs width x height x samples in [1, " +
+                                    std::to_string(kMaxResolveSamples) +
+                                    "] (kMaxResolveSamples), got " +
+                                    std::to_string(scene.width) + " x " +
+                                    std::to_string(scene.height) + " x " + std::to_string(n)};
+  }
+  std::vector<Rgba8> samples(static_cast<std::size_t>(total), scene.clear_color);
+  for (std::size_t i = 0; i < fragments.size(); ++i) {
+    const Fragment& f = fragments[i];
+    if (f.prim >= scene.primitives.size() || f.x < 0 || f.x >= scene.width || f.y < 0 ||
+        f.y >= scene.height) {
+      return SceneError{"fragments[" + std::to_string(i) + "]",
+                        "names a primitive or pixel outside the scene"};
+    }
+    if (f.helper) continue;  // helper lanes write nothing (MSAA.QUAD.HELPER)
+    const std::size_t base =
+        (static_cast<std::size_t>(f.y) * static_cast<std::size_t>(scene.width) +
+         static_cast<std::size_t>(f.x)) * n;
+    for (std::uint32_t k = 0; k < n; ++k) {
+      if (((f.mask >> k) & 1u) != 0u) samples[base + k] = scene.primitives[f.prim].color;
+    }
+  }
+  ResolvedImage img;
+  img.width = scene.width;
+  img.height = scene.height;
+  img.pixels.reserve(static_cast<std::size_t>(scene.width) *
+                     static_cast<std::size_t>(scene.height));
+  std::vector<Rgba8> pixel(n);
+  for (std::size_t i = 0; i < samples.size(); i += n) {
+    std::copy_n(samples.begin() + static_cast<std::ptrdiff_t>(i), n, pixel.begin());
+    img.pixels.push_back(resolve_pixel(pixel));
+  }
+  return img;
 }
 
 std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene) {

@@ -88,7 +88,7 @@ std::string read_file(const std::filesystem::path& path) {
 namespace {
 
 // libpng reports errors by longjmp: only trivially destructible objects live in this frame.
-bool read_png_rows(std::FILE* f, Png* out) {
+bool read_png_rows(std::FILE* f, Png* out, int color_type, std::size_t channels) {
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   if (png == nullptr) return false;
   png_infop info = png_create_info_struct(png);
@@ -102,15 +102,15 @@ bool read_png_rows(std::FILE* f, Png* out) {
   }
   png_init_io(png, f);
   png_read_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
-  const bool rgb8 = png_get_color_type(png, info) == PNG_COLOR_TYPE_RGB && png_get_bit_depth(png, info) == 8;
+  const bool rgb8 = png_get_color_type(png, info) == color_type && png_get_bit_depth(png, info) == 8;
   if (rgb8) {
     out->width = png_get_image_width(png, info);
     out->height = png_get_image_height(png, info);
     png_bytepp rows = png_get_rows(png, info);
-    out->rgb.resize(static_cast<std::size_t>(out->width) * out->height * 3);
+    out->rgb.resize(static_cast<std::size_t>(out->width) * out->height * channels);
     for (std::uint32_t y = 0; y < out->height; ++y) {
-      std::copy(rows[y], rows[y] + static_cast<std::size_t>(out->width) * 3,
-                out->rgb.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * out->width * 3));
+      std::copy(rows[y], rows[y] + static_cast<std::size_t>(out->width) * channels,
+                out->rgb.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * out->width * channels));
     }
   }
   png_destroy_read_struct(&png, &info, nullptr);
@@ -123,7 +123,17 @@ std::optional<Png> read_png(const std::filesystem::path& path) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (f == nullptr) return std::nullopt;
   Png png;
-  const bool ok = read_png_rows(f, &png);
+  const bool ok = read_png_rows(f, &png, PNG_COLOR_TYPE_RGB, 3);
+  std::fclose(f);
+  if (!ok) return std::nullopt;
+  return png;
+}
+
+std::optional<Png> read_png_rgba(const std::filesystem::path& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (f == nullptr) return std::nullopt;
+  Png png;
+  const bool ok = read_png_rows(f, &png, PNG_COLOR_TYPE_RGB_ALPHA, 4);
   std::fclose(f);
   if (!ok) return std::nullopt;
   return png;

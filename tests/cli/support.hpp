@@ -50,9 +50,18 @@ struct Png {
     const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 3;
     return {rgb[i], rgb[i + 1], rgb[i + 2]};
   }
+  // For read_png_rgba().
+  [[nodiscard]] std::array<std::uint8_t, 4> rgba_at(std::uint32_t x, std::uint32_t y) const {
+    const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 4;
+    return {rgb[i], rgb[i + 1], rgb[i + 2], rgb[i + 3]};
+  }
 };
 
 // Reads an 8-bit RGB PNG with libpng; nullopt when the file is not one.
 std::optional<Png> read_png(const std::filesystem::path& path);
+
+// Reads an 8-bit RGBA PNG (the resolved target); rgb then holds 4 bytes per pixel (use
+// rgba_at); nullopt when the file is not one.
+std::optional<Png> read_png_rgba(const std::filesystem::path& path);
 
 }  // namespace rastrules::test

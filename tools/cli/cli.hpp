@@ -79,5 +79,8 @@ std::string fixed_decimal(std::int64_t raw, int frac_bits);
 int run_render(const Args& args);
 int run_explain(const Args& args);
 int run_showcase(const Args& args);
+int run_fuzz(const Args& args);
+int run_check(const Args& args);
+int run_probe(const Args& args);
 
 }  // namespace rastrules::cli

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
-// rastrules explain: why each primitive covers, or does not cover, one pixel centre.
+// rastrules explain: why each primitive covers, or does not cover, one pixel centre; on a
+// multisampled scene, each sample of the pixel (MSAA.COVER.SAMPLE), the sample mask
+// (MSAA.MASK.AND) and the centroid branch (MSAA.CENTROID.*).
 // Every number shown is computed by the kernel (snap, setup_triangle, EdgeSetup::value_at,
-// covers); this file only reports them and names the rule that decided.
+// covers, sample_position, sample_coverage, centroid); this file only reports them and names
+// the rule that decided.
 
 #include <array>
 #include <cstdio>
@@ -15,6 +18,7 @@
 #include "rastrules/io/scene_json.hpp"
 #include "rastrules/line_aa.hpp"
 #include "rastrules/line_aliased.hpp"
+#include "rastrules/msaa.hpp"
 #include "rastrules/triangle.hpp"
 
 namespace rastrules::cli {
@@ -53,6 +57,30 @@ struct SegReport {
   LineDiamondDecision decision;   // aliased lines
 };
 
+// One sample of a multisampled pixel: each triangle of the primitive evaluated there.
+struct SampleReport {
+  std::uint32_t index = 0;
+  SampleOffset offset;
+  Vec2 position;
+  std::vector<PrimitiveReport> tris;  // as Report::tris, at this sample
+};
+
+// The coverage of one segment (0 for triangles and points) of a multisampled primitive.
+struct SegmentMask {
+  std::uint32_t seg = 0;
+  std::uint32_t coverage = 0;  // the kernel's sample_coverage (before the mask)
+  std::uint32_t explained = 0; // the samples the per-sample reports find covered
+  std::uint32_t mask = 0;      // coverage & the sample mask (MSAA.MASK.AND)
+  std::optional<Centroid> centroid;
+};
+
+// A multisampled primitive at the pixel.
+struct MsaaReport {
+  std::vector<SampleReport> samples;  // empty for lines drawn without triangles
+  bool whole_pixel = false;           // Bresenham lines: every sample of a produced pixel
+  std::vector<SegmentMask> segments;
+};
+
 // The report of one primitive: a triangle (tris[0]), a point (tris: its two triangles), a
 // quadrilateral line (tris: two per segment, tri_seg), or an aliased / antialiased line (segs).
 struct Report {
@@ -65,7 +93,25 @@ struct Report {
   std::vector<std::uint32_t> tri_seg;
   std::vector<SegReport> segs;
   bool covered = false;
+  std::optional<MsaaReport> msaa;  // multisampled scenes only
 };
+
+// Whether explain reports samples: more than one sample, or a centroid asked for.
+bool multisampled(const PreparedScene& s) { return s.msaa.count() > 1 || s.msaa.has_centroid; }
+
+std::string mask_text(std::uint32_t m, std::uint32_t n) {
+  std::string bits;
+  for (std::uint32_t k = n; k-- > 0;) bits += ((m >> k) & 1u) != 0 ? '1' : '0';
+  std::string list;
+  for (std::uint32_t k = 0; k < n; ++k) {
+    if (((m >> k) & 1u) != 0) list += (list.empty() ? "" : ", ") + std::to_string(k);
+  }
+  return "0b" + bits + " (" + (list.empty() ? "no sample" : "sample" + std::string(list.find(',') == std::string::npos ? " " : "s ") + list) + ")";
+}
+
+std::string offset_text(SampleOffset o) {
+  return "(" + std::to_string(o.x) + ", " + std::to_string(o.y) + ")/16";
+}
 
 std::string px(Subpixel v) { return fixed_decimal(v.raw(), kSubpixelBits); }
 std::string point_px(Vec2 v) { return "(" + px(v.x) + ", " + px(v.y) + ")"; }
@@ -304,6 +350,53 @@ std::string other_text(const Report& r, const PreparedScene& s, Vec2 sample) {
   return out;
 }
 
+// Each sample of pixel (x, y) for one primitive: its triangles' edges at the sample, the
+// kernel's coverage mask per segment, the mask AND and the centroid.
+// rule: MSAA.COVER.SAMPLE, MSAA.MASK.AND, MSAA.CENTROID.D3D11, MSAA.CENTROID.D3D10
+MsaaReport explain_samples(const PreparedScene& s, const PreparedPrimitive& prim, const Report& r,
+                           std::int32_t x, std::int32_t y) {
+  MsaaReport m;
+  const MultisampleState& ms = s.msaa;
+  const std::uint32_t n = ms.count();
+  auto segment = [&](std::uint32_t seg) -> SegmentMask& {
+    for (SegmentMask& g : m.segments) {
+      if (g.seg == seg) return g;
+    }
+    m.segments.push_back(SegmentMask{seg, 0, 0, 0, std::nullopt});
+    return m.segments.back();
+  };
+  if (!prim.triangles.empty()) {
+    for (std::uint32_t k = 0; k < n; ++k) {
+      SampleReport sr;
+      sr.index = k;
+      sr.offset = ms.pattern.positions[k];
+      sr.position = sample_position(x, y, sr.offset);
+      for (std::size_t t = 0; t < prim.triangles.size(); ++t) {
+        PrimitiveReport tr = explain_triangle(r.index, r.tris[t].input, prim.triangles[t].setup,
+                                              s.state, sr.position);
+        if (tr.covered) segment(prim.triangles[t].seg).explained |= std::uint32_t{1} << k;
+        sr.tris.push_back(std::move(tr));
+      }
+      m.samples.push_back(std::move(sr));
+    }
+    for (const PreparedTriangle& t : prim.triangles) {
+      segment(t.seg).coverage |= sample_coverage(t.setup, x, y, ms.pattern);
+    }
+  } else {
+    // rule: MSAA.LINE.MODE
+    m.whole_pixel = true;
+    for (const SegReport& g : r.segs) {
+      SegmentMask& sm = segment(g.seg);
+      if (g.covered) sm.coverage = sm.explained = full_mask(n);
+    }
+  }
+  for (SegmentMask& g : m.segments) {
+    g.mask = g.coverage & ms.effective_mask();
+    if (ms.has_centroid) g.centroid = centroid(ms.centroid_rule, g.coverage, ms.sample_mask, ms.pattern);
+  }
+  return m;
+}
+
 // rule: SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.LINE_MODE
 Report explain_primitive(const LoadedScene& loaded, std::size_t p, std::int32_t x, std::int32_t y,
                          Vec2 sample) {
@@ -348,7 +441,111 @@ Report explain_primitive(const LoadedScene& loaded, std::size_t p, std::int32_t 
       r.segs.push_back(g);
     }
   }
+  if (multisampled(s)) {
+    // A fragment exists when some sample in the mask is covered (MSAA.MASK.AND).
+    r.msaa = explain_samples(s, prim, r, x, y);
+    r.covered = false;
+    for (const SegmentMask& g : r.msaa->segments) r.covered = r.covered || g.mask != 0;
+  }
   return r;
+}
+
+std::string centroid_rule_id(CentroidRule r) {
+  return r == CentroidRule::kD3D11 ? "MSAA.CENTROID.D3D11" : "MSAA.CENTROID.D3D10";
+}
+
+std::string pattern_rule_id(PatternKind k) {
+  switch (k) {
+    case PatternKind::kStandard: return "MSAA.PATTERN.STANDARD";
+    case PatternKind::kCenter: return "MSAA.PATTERN.CENTER";
+    case PatternKind::kCustom: return "MSAA.PATTERN.CUSTOM";
+  }
+  return "MSAA.PATTERN.GRID";
+}
+
+// The text of one primitive of a multisampled scene: each sample of the pixel.
+// rule: MSAA.COVER.SAMPLE, MSAA.MASK.AND, MSAA.CENTROID.D3D11, MSAA.CENTROID.D3D10
+std::string msaa_text(const Report& r, const PreparedScene& s, std::int32_t x, std::int32_t y) {
+  const MsaaReport& m = *r.msaa;
+  const MultisampleState& ms = s.msaa;
+  const std::uint32_t n = ms.count();
+  std::string out = "\nprimitive " + std::to_string(r.index) + ": " + std::string(to_string(r.type)) +
+                    (r.aa ? " (antialiased)" : "") + "\n";
+  out += "  vertices, input float32 -> snapped 16.8  [SNAP.VERTEX.ROUND]:\n";
+  for (std::size_t i = 0; i < r.snapped.size(); ++i) {
+    out += "    v" + std::to_string(i) + " (" + io::format_float(r.input.v[i][0]) + ", " +
+           io::format_float(r.input.v[i][1]) + ") -> " + point_px(r.snapped[i]) + " px = raw " +
+           point_raw(r.snapped[i]) + "\n";
+  }
+  const bool several = m.samples.empty() ? false : m.samples[0].tris.size() > 1;
+  if (!m.samples.empty()) {
+    for (std::size_t t = 0; t < r.tris.size(); ++t) {
+      const PrimitiveReport& tr = r.tris[t];
+      std::string name = several ? "  triangle " + std::to_string(t) +
+                                       (r.type == PrimitiveType::kPoint
+                                            ? " of the point"
+                                            : " (segment " + std::to_string(r.tri_seg[t]) + ")")
+                                 : std::string("  triangle");
+      out += name + ": twice signed area A = " + std::to_string(tr.setup.twice_area) + " raw, " +
+             (tr.setup.twice_area == 0 ? std::string("degenerate")
+                                       : std::string(tr.setup.clockwise ? "clockwise" : "counter-clockwise")) +
+             ", status " + std::string(to_string(tr.setup.status)) + "  [TRI.ORIENT.AREA, TRI.CULL.MODE]\n";
+    }
+  }
+  out += "  " + std::to_string(n) + " sample" + (n == 1 ? "" : "s") + ", " +
+         std::string(to_string(ms.pattern.kind)) + " pattern  [" + pattern_rule_id(ms.pattern.kind) + "]\n";
+  if (m.whole_pixel) {
+    out += "  a " + std::string(io::line_mode_name(s.line_mode)) +
+           " line covers every sample of each pixel it produces  [MSAA.LINE.MODE]\n";
+    for (const SegReport& g : r.segs) {
+      out += "  segment " + std::to_string(g.seg) + ": " +
+             (g.covered ? "produces the pixel" : "does not produce the pixel") + "\n";
+    }
+  }
+  for (const SampleReport& sr : m.samples) {
+    out += "  sample " + std::to_string(sr.index) + " at " + offset_text(sr.offset) + " -> " +
+           point_px(sr.position) + " px = raw " + point_raw(sr.position) + "  [MSAA.SAMPLE.POSITION]\n";
+    for (std::size_t t = 0; t < sr.tris.size(); ++t) {
+      const PrimitiveReport& tr = sr.tris[t];
+      const std::string ind = several ? "      " : "    ";
+      if (several) out += "    triangle " + std::to_string(t) + ":\n";
+      if (!tr.has_edges) {
+        out += ind + "degenerate: covers nothing  [TRI.DEGENERATE.ZERO_AREA]\n";
+        continue;
+      }
+      for (std::size_t i = 0; i < 3; ++i) {
+        const EdgeReport& e = tr.edges[i];
+        out += ind + "edge " + std::to_string(i) + " v" + std::to_string(e.from) + "->v" +
+               std::to_string(e.to) + " (" + e.kind + "): E = " + std::to_string(e.e) + " raw = " +
+               area_px2(e.e) + " px^2 -> " + (e.inside ? "inside" : "outside") + ": " + e.decision + "\n";
+      }
+      if (tr.culled) out += ind + "culled: " + tr.decided_by.front() + "\n";
+      out += ind + (tr.covered ? "covered" : "not covered") + "  [MSAA.COVER.SAMPLE]\n";
+    }
+  }
+  for (const SegmentMask& g : m.segments) {
+    const std::string seg = m.segments.size() > 1 || r.type == PrimitiveType::kLineStrip
+                                ? "  segment " + std::to_string(g.seg) + ": "
+                                : "  ";
+    out += seg + "coverage " + mask_text(g.coverage, n) + "  [MSAA.COVER.SAMPLE]\n";
+    if (g.explained != g.coverage) {
+      out += seg + "internal error: the samples above say " + mask_text(g.explained, n) + "\n";
+    }
+    out += seg + "sample mask " + mask_text(ms.effective_mask(), n) + " -> fragment mask " +
+           mask_text(g.mask, n) + "  [MSAA.MASK.AND]\n";
+    if (g.centroid) {
+      const Centroid& c = *g.centroid;
+      const Vec2 at = sample_position(x, y, c.offset);
+      out += seg + "centroid (" + std::string(to_string(ms.centroid_rule)) + "): " +
+             std::string(to_string(c.branch)) + " -> " + offset_text(c.offset) + " = " +
+             point_px(at) + " px  [" + centroid_rule_id(ms.centroid_rule) + "]" +
+             (g.mask == 0 ? " (no fragment: the pixel is covered by no sample in the mask)" : "") +
+             "\n";
+    }
+    out += seg + "verdict: " + (g.mask != 0 ? "fragment, mask " + std::to_string(g.mask) : std::string("no fragment")) + "\n";
+  }
+  if (m.segments.empty()) out += "  verdict: no fragment\n";
+  return out;
 }
 
 void print_text(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 sample,
@@ -366,8 +563,21 @@ void print_text(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
          "\n";
   out += "pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): centre " +
          point_px(sample) + " px = raw " + point_raw(sample) + "  [COORD.PIXEL.CENTER]\n";
+  if (multisampled(s)) {
+    const MultisampleState& ms = s.msaa;
+    out += "multisampling: " + std::to_string(ms.count()) + " samples, " +
+           std::string(to_string(ms.pattern.kind)) + " pattern, sample mask " +
+           mask_text(ms.effective_mask(), ms.count()) + ", centroid " +
+           (ms.has_centroid ? std::string(to_string(ms.centroid_rule)) : std::string("none")) +
+           ", shading " + std::string(to_string(ms.shading)) + "  [SCENE.MSAA]\n";
+  }
   std::vector<std::size_t> covering;
   for (const Report& report : reports) {
+    if (report.msaa) {
+      out += msaa_text(report, s, x, y);
+      if (report.covered) covering.push_back(report.index);
+      continue;
+    }
     if (report.type != PrimitiveType::kTriangle) {
       out += other_text(report, s, sample);
       if (report.covered)
@@ -489,6 +699,49 @@ ojson other_json(const Report& r) {
   return p;
 }
 
+// rule: MSAA.COVER.SAMPLE, MSAA.MASK.AND, MSAA.CENTROID.D3D11, MSAA.CENTROID.D3D10
+ojson msaa_json(const Report& r, const PreparedScene& s) {
+  using json = ojson;
+  const MsaaReport& m = *r.msaa;
+  json samples = json::array();
+  for (const SampleReport& sr : m.samples) {
+    json tris = json::array();
+    bool covered = false;
+    for (const PrimitiveReport& tr : sr.tris) {
+      json edges = json::array();
+      if (tr.has_edges) {
+        for (const EdgeReport& e : tr.edges) {
+          edges.push_back({{"from", e.from}, {"to", e.to}, {"kind", e.kind}, {"e_raw", e.e},
+                           {"inclusive", e.inclusive}, {"inside", e.inside}, {"decision", e.decision}});
+        }
+      }
+      tris.push_back({{"status", to_string(tr.setup.status)}, {"edges", edges}, {"covered", tr.covered}});
+      covered = covered || tr.covered;
+    }
+    samples.push_back({{"sample", sr.index},
+                       {"offset", {sr.offset.x, sr.offset.y}},
+                       {"position_raw", point_json(sr.position)},
+                       {"triangles", tris},
+                       {"covered", covered}});
+  }
+  json segs = json::array();
+  for (const SegmentMask& g : m.segments) {
+    json j = {{"seg", g.seg}, {"coverage", g.coverage}, {"sample_mask", s.msaa.effective_mask()},
+              {"mask", g.mask}, {"fragment", g.mask != 0}};
+    if (g.centroid) {
+      j["centroid"] = {{"rule", to_string(s.msaa.centroid_rule)},
+                       {"branch", to_string(g.centroid->branch)},
+                       {"offset", {g.centroid->offset.x, g.centroid->offset.y}}};
+    }
+    segs.push_back(j);
+  }
+  json out;
+  out["samples"] = samples;
+  if (m.whole_pixel) out["every_sample_of_produced_pixels"] = true;
+  out["segments"] = segs;
+  return out;
+}
+
 void print_json(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 sample,
                 const std::vector<Report>& reports) {
   using json = ojson;
@@ -504,8 +757,19 @@ void print_json(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
   doc["sample_raw"] = point(sample);
   json prims = json::array();
   json covering = json::array();
+  if (multisampled(s)) {
+    doc["samples"] = s.msaa.count();
+    doc["sample_pattern"] = to_string(s.msaa.pattern.kind);
+    doc["sample_mask"] = s.msaa.effective_mask();
+    if (s.msaa.has_centroid) doc["centroid"] = to_string(s.msaa.centroid_rule);
+  }
   for (const Report& r : reports) {
-    prims.push_back(r.type == PrimitiveType::kTriangle ? triangle_json(r.tris[0]) : other_json(r));
+    ojson p = r.type == PrimitiveType::kTriangle ? triangle_json(r.tris[0]) : other_json(r);
+    if (r.msaa) {
+      p["covered"] = r.covered;
+      p["msaa"] = msaa_json(r, s);
+    }
+    prims.push_back(p);
     if (r.covered) covering.push_back(r.index);
   }
   doc["primitives"] = prims;

@@ -23,6 +23,9 @@ int main(int argc, char** argv) {
     if (command == "render") return run_render(args);
     if (command == "explain") return run_explain(args);
     if (command == "showcase") return run_showcase(args);
+    if (command == "fuzz") return run_fuzz(args);
+    if (command == "check") return run_check(args);
+    if (command == "probe") return run_probe(args);
     return usage_error("unknown command \"" + command + "\"");
   } catch (const std::bad_alloc&) {
     return error("out of memory");

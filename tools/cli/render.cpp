@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// rastrules render: the fragment list and the picture of a scene.
-// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
+// rastrules render: the fragment list, the picture and the resolved target of a scene.
+// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS, SCENE.OUTPUT.MSAA
 
 #include <cstdint>
 #include <cstdio>
@@ -9,6 +9,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
+#include <vector>
 
 #include "cli.hpp"
 #include "rastrules/io/fragment_json.hpp"
@@ -20,7 +22,7 @@ namespace rastrules::cli {
 
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.INPUT.ERRORS
 int run_render(const Args& args) {
-  std::optional<std::string> scene_path, fragments_path, png_path;
+  std::optional<std::string> scene_path, fragments_path, png_path, resolve_path;
   std::optional<int> scale;
   std::uint64_t max_fragments = io::kDefaultMaxFragments;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -41,6 +43,9 @@ int run_render(const Args& args) {
     } else if (is("--png")) {
       png_path = value("--png");
       if (!png_path || png_path->empty()) return usage_error("--png needs a file name");
+    } else if (is("--resolve")) {
+      resolve_path = value("--resolve");
+      if (!resolve_path || resolve_path->empty()) return usage_error("--resolve needs a file name");
     } else if (is("--scale")) {
       const std::optional<std::string> v = value("--scale");
       const auto n = v ? parse_int(*v, 1, io::kMaxPictureSide) : std::nullopt;
@@ -61,9 +66,13 @@ int run_render(const Args& args) {
     }
   }
   if (!scene_path) return usage_error("render: missing SCENE.json");
-  if (!fragments_path && !png_path) return usage_error("render: give --fragments OUT.json, --png OUT.png or both");
-  if (fragments_path && png_path && *fragments_path == "-" && *png_path == "-") {
-    return usage_error("render: --fragments and --png cannot both be standard output");
+  if (!fragments_path && !png_path && !resolve_path) {
+    return usage_error("render: give --fragments OUT.json, --png OUT.png or --resolve OUT.png");
+  }
+  const int to_stdout = (fragments_path && *fragments_path == "-") + (png_path && *png_path == "-") +
+                        (resolve_path && *resolve_path == "-");
+  if (to_stdout > 1) {
+    return usage_error("render: only one of --fragments, --png and --resolve can be standard output");
   }
   if (scale && !png_path) return usage_error("render: --scale needs --png");
 
@@ -83,12 +92,27 @@ int run_render(const Args& args) {
     }
   }
 
-  OutputFile fragments_file, png_file;
+  // rule: MSAA.LIMITS, MSAA.RESOLVE.AVERAGE
+  // The resolve's sample buffer is checked before any work; resolve() checks it again.
+  if (resolve_path) {
+    const std::int64_t samples = std::int64_t{scene.width} * scene.height * scene.msaa.count();
+    if (samples > kMaxResolveSamples) {
+      return error("--resolve: the " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
+                   " target with " + std::to_string(scene.msaa.count()) + " samples has " +
+                   std::to_string(samples) + " samples, more than " +
+                   std::to_string(kMaxResolveSamples) + " (limit MSAA.LIMITS)");
+    }
+  }
+
+  OutputFile fragments_file, png_file, resolve_file;
   if (fragments_path) {
     if (auto err = fragments_file.open(*fragments_path)) return error(*err);
   }
   if (png_path) {
     if (auto err = png_file.open(*png_path)) return error(*err);
+  }
+  if (resolve_path) {
+    if (auto err = resolve_file.open(*resolve_path)) return error(*err);
   }
 
   // Fragments are streamed primitive by primitive in the (prim, y, x, seg) order of
@@ -98,7 +122,12 @@ int run_render(const Args& args) {
   std::optional<io::FragmentWriter> writer;
   if (fragments_path) writer.emplace(fragments_file.get());
   std::unique_ptr<io::CoverageMap> coverage;
-  if (png_path) coverage = std::make_unique<io::CoverageMap>(scene.width, scene.height);
+  if (png_path) {
+    coverage = std::make_unique<io::CoverageMap>(scene.width, scene.height);
+    if (io::samples_visible(scene, picture_scale)) coverage->record_samples(scene.msaa.count());
+  }
+  // The resolve needs every fragment (at most --max-fragments of them).
+  std::vector<Fragment> all;
   bool in_order = true;
   std::uint64_t fragment_count = 0;
   // rule: SCENE.INPUT.LIMITS
@@ -113,7 +142,9 @@ int run_render(const Args& args) {
         if (writer)
           in_order = writer->add(f) && in_order;
         if (coverage)
-          coverage->add(f.prim, f.x, f.y, f.coverage_q16);
+          coverage->add_fragment(f);
+        if (resolve_path)
+          all.push_back(f);
       });
     }
   } catch (const TooManyFragments&) {
@@ -129,27 +160,45 @@ int run_render(const Args& args) {
     const io::Image image = io::draw_picture(scene, *coverage, picture_scale);
     if (auto err = io::write_png(png_file.get(), image)) return error(*png_path + ": " + *err);
   }
-  if (fragments_path) {
-    if (auto err = fragments_file.commit()) return error(*err);
-  }
-  if (png_path) {
-    if (auto err = png_file.commit()) {
-      // No partial result: the fragment list goes too.
-      std::error_code ec;
-      if (fragments_path && *fragments_path != "-" &&
-          std::filesystem::is_regular_file(std::filesystem::symlink_status(*fragments_path, ec))) {
-        std::filesystem::remove(*fragments_path, ec);
-      }
-      return error(*err);
+  // rule: MSAA.RESOLVE.AVERAGE
+  if (resolve_path) {
+    const auto resolved = resolve(scene, all);
+    if (const auto* err = std::get_if<SceneError>(&resolved)) return error("--resolve: " + err->what());
+    const ResolvedImage& r = std::get<ResolvedImage>(resolved);
+    std::vector<std::uint8_t> rgba;
+    rgba.reserve(r.pixels.size() * 4);
+    for (const Rgba8& p : r.pixels) rgba.insert(rgba.end(), p.begin(), p.end());
+    if (auto err = io::write_png_rgba(resolve_file.get(), r.width, r.height, rgba)) {
+      return error(*resolve_path + ": " + *err);
     }
   }
-  const bool stdout_used = (fragments_path && *fragments_path == "-") || (png_path && *png_path == "-");
-  if (!stdout_used) {
-    std::printf("render: %zu primitives, %llu fragments%s%s%s%s\n", scene.primitives.size(),
-                static_cast<unsigned long long>(fragment_count), fragments_path ? " -> " : "",
-                fragments_path ? fragments_path->c_str() : "",
-                png_path ? (fragments_path ? ", " : " -> ") : "",
-                png_path ? png_path->c_str() : "");
+  // No partial result: when one output cannot be moved into place, the ones already in place
+  // are removed.
+  std::vector<std::string> committed;
+  auto commit = [&](OutputFile& file, const std::optional<std::string>& path) -> std::optional<std::string> {
+    if (!path) return std::nullopt;
+    if (auto err = file.commit()) {
+      std::error_code ec;
+      for (const std::string& done : committed) {
+        if (done != "-" && std::filesystem::is_regular_file(std::filesystem::symlink_status(done, ec))) {
+          std::filesystem::remove(done, ec);
+        }
+      }
+      return err;
+    }
+    committed.push_back(*path);
+    return std::nullopt;
+  };
+  if (auto err = commit(fragments_file, fragments_path)) return error(*err);
+  if (auto err = commit(png_file, png_path)) return error(*err);
+  if (auto err = commit(resolve_file, resolve_path)) return error(*err);
+  if (to_stdout == 0) {
+    std::string outputs;
+    for (const auto* p : {&fragments_path, &png_path, &resolve_path}) {
+      if (*p) outputs += (outputs.empty() ? " -> " : ", ") + **p;
+    }
+    std::printf("render: %zu primitives, %llu fragments%s\n", scene.primitives.size(),
+                static_cast<unsigned long long>(fragment_count), outputs.c_str());
   }
   return kExitOk;
 }

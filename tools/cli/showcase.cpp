@@ -3,7 +3,9 @@
 // compare every fragment list with the exact oracles (properties/oracle): triangles with the
 // triangle oracle, points with the triangle oracle on their exact squares (or the point
 // oracle), aliased lines with the line oracle, antialiased lines with the AA-line oracle
-// (pixels exactly, coverage within LINE.AA.PRECISION).
+// (pixels exactly, coverage within LINE.AA.PRECISION); multisampled scenes with the exact
+// multisampling oracle (oracle/msaa.hpp): every fragment field (mask, sample, helper,
+// centroid, derivatives) and the resolved target.
 
 #include <algorithm>
 #include <bit>
@@ -25,6 +27,7 @@
 #include "rastrules/io/scene_json.hpp"
 #include "rastrules/oracle/line.hpp"
 #include "rastrules/oracle/line_aa.hpp"
+#include "rastrules/oracle/msaa.hpp"
 #include "rastrules/oracle/point.hpp"
 #include "rastrules/oracle/triangle.hpp"
 #include "showcase_scenes.hpp"
@@ -227,6 +230,119 @@ Check check_scene(const Scene& scene, const PreparedScene& ps,
   return check;
 }
 
+// Whether a scene goes to the multisampling oracle: anything SCENE.MSAA asks for beyond one
+// sample at the centre with pixel shading.
+bool multisampled(const Scene& scene) {
+  const MultisampleState& ms = scene.msaa;
+  return ms.count() > 1 || ms.pattern.kind != PatternKind::kStandard || ms.has_centroid ||
+         ms.wants_quads() || ms.shading != ShadingRate::kPixel ||
+         ms.sample_mask != MultisampleState{}.sample_mask;
+}
+
+// The scene as the multisampling oracle reads it: its own snapping, strings for every state.
+oracle::msaa::Input oracle_msaa_input(const Scene& scene) {
+  oracle::msaa::Input in;
+  in.width = scene.width;
+  in.height = scene.height;
+  in.state = oracle_state(scene.state);
+  in.line_mode = std::string(io::line_mode_name(scene.line_mode));
+  in.pattern.clear();
+  for (const SampleOffset& o : scene.msaa.pattern.positions) in.pattern.push_back({o.x, o.y});
+  in.sample_mask = scene.msaa.sample_mask;
+  if (scene.msaa.has_centroid) in.centroid = std::string(to_string(scene.msaa.centroid_rule));
+  in.shading = std::string(to_string(scene.msaa.shading));
+  in.quads = scene.msaa.quads;
+  in.derivatives = std::string(to_string(scene.msaa.derivatives));
+  in.clear_color = scene.clear_color;
+  for (const Primitive& prim : scene.primitives) {
+    oracle::msaa::Primitive op;
+    op.type = std::string(to_string(prim.type));
+    for (const FloatPoint& v : prim.v) op.v.push_back(oracle_raw(v));
+    op.aa = prim.aa;
+    op.color = prim.color;
+    in.primitives.push_back(std::move(op));
+  }
+  return in;
+}
+
+std::string opt_text(const std::optional<std::uint32_t>& v) { return v ? std::to_string(*v) : "-"; }
+
+// One fragment as text, the same for the kernel's and the oracle's.
+std::string msaa_text(std::uint32_t prim, std::int32_t x, std::int32_t y, std::uint32_t mask,
+                      const std::optional<std::uint32_t>& seg, const std::optional<std::uint32_t>& sample,
+                      bool helper, const std::optional<std::array<std::int64_t, 2>>& centroid,
+                      const std::optional<std::array<std::int64_t, 4>>& d) {
+  std::string t = "prim " + std::to_string(prim) + " pixel (" + std::to_string(x) + ", " +
+                  std::to_string(y) + ") seg " + opt_text(seg) + " sample " + opt_text(sample) +
+                  " mask " + std::to_string(mask) + (helper ? " helper" : "");
+  if (centroid) t += " centroid (" + std::to_string((*centroid)[0]) + ", " + std::to_string((*centroid)[1]) + ")/16";
+  if (d) {
+    t += " ddx (" + std::to_string((*d)[0]) + ", " + std::to_string((*d)[1]) + ") ddy (" +
+         std::to_string((*d)[2]) + ", " + std::to_string((*d)[3]) + ")/16";
+  }
+  return t;
+}
+
+// Compares a multisampled scene's fragments and resolved target with the exact oracle.
+// rule: SCENE.OUTPUT.MSAA, MSAA.COVER.SAMPLE, MSAA.MASK.AND, MSAA.CENTROID.D3D11
+// rule: MSAA.CENTROID.D3D10, MSAA.QUAD.HELPER, MSAA.DERIV.FINE, MSAA.DERIV.COARSE
+// rule: MSAA.RESOLVE.AVERAGE
+Check check_msaa_scene(const Scene& scene, const PreparedScene& ps, const std::vector<Fragment>& kernel) {
+  Check check;
+  check.used("multisampling oracle (msaa::render, msaa::resolve)");
+  const oracle::msaa::Input in = oracle_msaa_input(scene);
+  const std::vector<oracle::msaa::Fragment> exact = oracle::msaa::render(in);
+  std::vector<std::string> mine, theirs;
+  for (const Fragment& f : kernel) {
+    std::optional<std::array<std::int64_t, 2>> c;
+    if (f.centroid) c = std::array<std::int64_t, 2>{f.centroid->offset.x, f.centroid->offset.y};
+    std::optional<std::array<std::int64_t, 4>> d;
+    if (f.derivatives) {
+      d = std::array<std::int64_t, 4>{f.derivatives->ddx_x, f.derivatives->ddx_y, f.derivatives->ddy_x,
+                                      f.derivatives->ddy_y};
+    }
+    if (f.coverage_q16) check.note("a coverage on a multisampled fragment at prim " + std::to_string(f.prim));
+    mine.push_back(msaa_text(f.prim, f.x, f.y, f.mask, f.seg, f.sample, f.helper, c, d));
+  }
+  for (const oracle::msaa::Fragment& f : exact) {
+    std::optional<std::array<std::int64_t, 2>> c;
+    if (f.centroid) c = std::array<std::int64_t, 2>{f.centroid->offset.x, f.centroid->offset.y};
+    std::optional<std::array<std::int64_t, 4>> d;
+    if (f.derivatives) {
+      d = std::array<std::int64_t, 4>{f.derivatives->ddx_x, f.derivatives->ddx_y, f.derivatives->ddy_x,
+                                      f.derivatives->ddy_y};
+    }
+    theirs.push_back(msaa_text(f.prim, f.x, f.y, f.mask, f.seg, f.sample, f.helper, c, d));
+  }
+  // The lists are in the same order (SCENE.OUTPUT.MSAA); report where they part.
+  const std::size_t n = std::max(mine.size(), theirs.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::string a = i < mine.size() ? mine[i] : "(nothing)";
+    const std::string b = i < theirs.size() ? theirs[i] : "(nothing)";
+    if (a != b) check.note("fragment " + std::to_string(i) + ": kernel " + a + ", oracle " + b);
+  }
+  // The resolved target.
+  const auto resolved = resolve(ps, kernel);
+  if (const auto* err = std::get_if<SceneError>(&resolved)) {
+    check.note("resolve failed: " + err->what());
+    return check;
+  }
+  const std::vector<oracle::msaa::Rgba> exact_pixels = oracle::msaa::resolve(in, exact);
+  const std::vector<Rgba8>& pixels = std::get<ResolvedImage>(resolved).pixels;
+  if (pixels.size() != exact_pixels.size()) {
+    check.note("resolve: " + std::to_string(pixels.size()) + " pixels, the oracle " +
+               std::to_string(exact_pixels.size()));
+    return check;
+  }
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    if (pixels[i] != exact_pixels[i]) {
+      check.note("resolve differs at pixel (" + std::to_string(i % static_cast<std::size_t>(scene.width)) +
+                 ", " + std::to_string(i / static_cast<std::size_t>(scene.width)) + ")");
+    }
+  }
+  return check;
+}
+
 std::optional<std::string> write_text(const std::filesystem::path& path, const std::string& text) {
   OutputFile f;
   if (auto err = f.open(path.string())) return err;
@@ -237,13 +353,28 @@ std::optional<std::string> write_text(const std::filesystem::path& path, const s
 std::optional<std::string> write_picture(const std::filesystem::path& path, const PreparedScene& scene,
                                          const std::vector<Fragment>& fragments) {
   io::CoverageMap coverage(scene.width, scene.height);
+  const int scale = io::default_picture_scale(scene.width, scene.height);
+  if (io::samples_visible(scene, scale)) coverage.record_samples(scene.msaa.count());
   for (const Fragment& f : fragments)
-    coverage.add(f.prim, f.x, f.y, f.coverage_q16);
-  const io::Image image =
-      io::draw_picture(scene, coverage, io::default_picture_scale(scene.width, scene.height));
+    coverage.add_fragment(f);
+  const io::Image image = io::draw_picture(scene, coverage, scale);
   OutputFile f;
   if (auto err = f.open(path.string())) return err;
   if (auto err = io::write_png(f.get(), image)) return path.string() + ": " + *err;
+  return f.commit();
+}
+
+// Writes the resolved target of a multisampled scene (MSAA.RESOLVE.AVERAGE).
+std::optional<std::string> write_resolve(const std::filesystem::path& path, const PreparedScene& scene,
+                                         const std::vector<Fragment>& fragments) {
+  const auto resolved = resolve(scene, fragments);
+  if (const auto* err = std::get_if<SceneError>(&resolved)) return path.string() + ": " + err->what();
+  const ResolvedImage& r = std::get<ResolvedImage>(resolved);
+  std::vector<std::uint8_t> rgba;
+  for (const Rgba8& p : r.pixels) rgba.insert(rgba.end(), p.begin(), p.end());
+  OutputFile f;
+  if (auto err = f.open(path.string())) return err;
+  if (auto err = io::write_png_rgba(f.get(), r.width, r.height, rgba)) return path.string() + ": " + *err;
   return f.commit();
 }
 
@@ -293,7 +424,8 @@ int run_showcase(const Args& args) {
     Check check;
     const Clock::time_point o0 = Clock::now();
     try {
-      check = check_scene(sc.scene, ps, kernel);
+      check = multisampled(sc.scene) ? check_msaa_scene(sc.scene, ps, kernel)
+                                     : check_scene(sc.scene, ps, kernel);
     } catch (const std::exception& e) {
       check.note(std::string("the oracle failed: ") + e.what());
     }
@@ -317,6 +449,9 @@ int run_showcase(const Args& args) {
                             write_text(dir / (sc.name + ".fragments.json"), io::fragments_to_json(kernel)),
                             write_picture(dir / (sc.name + ".png"), ps, kernel)}) {
       if (err) return error(*err);
+    }
+    if (multisampled(sc.scene)) {
+      if (auto err = write_resolve(dir / (sc.name + ".resolve.png"), ps, kernel)) return error(*err);
     }
     if (same) ++agree;
     std::printf("%-22s %6zu %9zu %10.3f %10.3f  %s\n", sc.name.c_str(), sc.scene.primitives.size(),

@@ -331,6 +331,126 @@ Scene quad_lines(LineMode mode) {
   return s;
 }
 
+// Multisampling (SCENE.MSAA). Sample k of pixel (i, j) under the 4x standard pattern sits at
+// (i, j) + (0.5, 0.5) + o_k / 16 with o = (-2,-6), (6,-2), (-6,2), (2,6): for example sample 0 at
+// (i + 0.375, j + 0.125) and sample 1 at (i + 0.875, j + 0.375).
+
+Primitive coloured(Primitive p, Rgba8 c) {
+  p.color = c;
+  return p;
+}
+
+Scene msaa_scene(std::int32_t w, std::int32_t h, SamplePattern pattern) {
+  Scene s = make_scene(w, h);
+  s.msaa.pattern = std::move(pattern);
+  s.clear_color = {0, 0, 0, 255};
+  return s;
+}
+
+// 4x: edges through samples. Three triangles share edges: a horizontal top edge through
+// sample 0 of every pixel of row 1 (y = 1.125), a diagonal shared edge from sample 0 of pixel
+// (1, 1) to sample 0 of pixel (5, 5) through sample 0 of (2, 2), (3, 3), (4, 4), and a vertical
+// edge through sample 1 of column 7 (x = 7.875); vertices on samples. Each tied sample goes to
+// exactly one of the triangles sharing the edge (top-left rule per sample).
+// rule: MSAA.COVER.SAMPLE, MSAA.PATTERN.STANDARD
+Scene msaa_ties() {
+  Scene s = msaa_scene(10, 8, standard_pattern(4));
+  auto& p = s.primitives;
+  const Point a{1.375f, 1.125f}, b{7.875f, 1.125f}, c{5.375f, 5.125f}, d{1.375f, 7.125f},
+      e{7.875f, 7.375f};
+  p.push_back(coloured(tri(a, b, c), {230, 60, 40, 255}));
+  p.push_back(coloured(tri(a, c, d), {40, 160, 60, 255}));
+  p.push_back(coloured(tri(b, e, c), {40, 90, 220, 255}));
+  p.push_back(coloured(tri(c, e, d), {230, 200, 40, 255}));  // closes the fan at sample 0 of (5, 5)
+  return s;
+}
+
+// 8x and 16x: a small fan around a pixel centre with a point and a sliver.
+// rule: MSAA.COVER.SAMPLE, MSAA.POINT.PER_SAMPLE, MSAA.RESOLVE.AVERAGE
+Scene msaa_fan(std::uint32_t samples) {
+  Scene s = msaa_scene(10, 8, standard_pattern(samples));
+  auto& p = s.primitives;
+  const Point c{4.5f, 3.5f};
+  p.push_back(coloured(tri(c, {1.0f, 0.5f}, {8.25f, 1.0f}), {220, 50, 50, 255}));
+  p.push_back(coloured(tri(c, {8.25f, 1.0f}, {6.5f, 7.5f}), {50, 180, 70, 255}));
+  p.push_back(coloured(tri(c, {6.5f, 7.5f}, {1.0f, 0.5f}), {60, 80, 220, 255}));
+  p.push_back(coloured(point({8.5f, 5.5f}), {250, 220, 40, 255}));
+  p.push_back(coloured(tri({0.25f, 6.0f}, {5.0f, 6.4375f}, {0.25f, 6.125f}), {200, 80, 200, 255}));
+  return s;
+}
+
+// The centre pattern: 4 samples at the pixel centre; every pixel is all or nothing, like one
+// sample, and a Vulkan Bresenham line covers every sample of its pixels.
+// rule: MSAA.PATTERN.CENTER, MSAA.LINE.MODE
+Scene msaa_center() {
+  Scene s = msaa_scene(10, 8, center_pattern(4));
+  s.line_mode = LineMode::kVulkanBresenham;
+  auto& p = s.primitives;
+  p.push_back(coloured(tri({0.5f, 0.5f}, {6.5f, 0.5f}, {0.5f, 6.5f}), {220, 60, 40, 255}));
+  p.push_back(coloured(tri({6.5f, 0.5f}, {6.5f, 6.5f}, {0.5f, 6.5f}), {40, 150, 220, 255}));
+  p.push_back(coloured(point({8.0f, 2.0f}), {250, 220, 40, 255}));
+  p.push_back(coloured(line({7.2f, 4.3f}, {9.8f, 7.6f}), {255, 255, 255, 255}));
+  return s;
+}
+
+// A custom pattern on the grid's extremes, with a repeated position: (-8,-8) is the pixel's
+// top-left corner (reachable), (7, 7) the last grid point before the bottom-right corner.
+// rule: MSAA.PATTERN.CUSTOM, MSAA.PATTERN.GRID
+Scene msaa_custom() {
+  Scene s = msaa_scene(8, 6, custom_pattern({{-8, -8}, {7, -8}, {-8, 7}, {7, 7}, {0, 0}, {0, 0}}));
+  auto& p = s.primitives;
+  p.push_back(coloured(tri({1.0f, 1.0f}, {7.0f, 1.0f}, {1.0f, 5.0f}), {220, 60, 40, 255}));
+  p.push_back(coloured(tri({7.0f, 1.0f}, {7.0f, 5.0f}, {1.0f, 5.0f}), {40, 150, 220, 255}));
+  p.push_back(coloured(point({3.5f, 3.0f}), {250, 220, 40, 255}));
+  return s;
+}
+
+// Centroids: partially covered pixels along slanted edges, a sample mask that removes sample 1
+// and helper lanes (which have no covered sample), under the D3D11 or the D3D10 rule, with
+// fine derivatives of the evaluation point.
+// rule: MSAA.CENTROID.D3D11, MSAA.CENTROID.D3D10, MSAA.MASK.AND, MSAA.DERIV.FINE
+Scene msaa_centroid(CentroidRule rule) {
+  Scene s = msaa_scene(10, 8, standard_pattern(4));
+  s.msaa.has_centroid = true;
+  s.msaa.centroid_rule = rule;
+  s.msaa.sample_mask = 0b1101;
+  s.msaa.derivatives = DerivativeMode::kFine;
+  auto& p = s.primitives;
+  p.push_back(coloured(tri({0.8f, 0.3f}, {9.3f, 2.1f}, {2.2f, 7.6f}), {220, 60, 40, 255}));
+  p.push_back(coloured(tri({9.7f, 3.4f}, {9.6f, 7.8f}, {5.1f, 7.7f}), {40, 150, 220, 255}));
+  return s;
+}
+
+// Sample-frequency shading: one fragment per covered sample in the mask, quads per sample index
+// with helper lanes, coarse derivatives; lines drawn as 1.4 px quadrilaterals (MSAA.LINE.MODE).
+// rule: MSAA.SHADING.SAMPLE, MSAA.QUAD.HELPER, MSAA.DERIV.COARSE, MSAA.LINE.MODE
+Scene msaa_sample_shading() {
+  Scene s = msaa_scene(8, 6, standard_pattern(4));
+  s.msaa.shading = ShadingRate::kSample;
+  s.msaa.quads = true;
+  s.msaa.derivatives = DerivativeMode::kCoarse;
+  auto& p = s.primitives;
+  p.push_back(coloured(tri({0.6f, 0.4f}, {5.3f, 1.2f}, {1.4f, 4.7f}), {220, 60, 40, 255}));
+  p.push_back(coloured(line({4.0f, 4.5f}, {7.5f, 2.0f}), {40, 150, 220, 255}));
+  return s;
+}
+
+// Resolve: half-transparent colours over an opaque clear colour; overlapping primitives, an
+// edge shared through samples, antialiased and aliased D3D lines (1.4 px quadrilaterals under
+// multisampling, not antialiased), and a point.
+// rule: MSAA.RESOLVE.AVERAGE, MSAA.LINE.MODE
+Scene msaa_resolve() {
+  Scene s = msaa_scene(12, 8, standard_pattern(4));
+  s.clear_color = {16, 32, 48, 255};
+  auto& p = s.primitives;
+  p.push_back(coloured(tri({0.5f, 0.5f}, {8.3f, 1.7f}, {2.2f, 7.4f}), {255, 0, 0, 128}));
+  p.push_back(coloured(tri({3.1f, 2.2f}, {11.6f, 3.3f}, {6.4f, 7.9f}), {0, 255, 0, 255}));
+  p.push_back(coloured(line({0.5f, 7.5f}, {11.5f, 4.25f}, true), {255, 255, 255, 255}));
+  p.push_back(coloured(line({9.0f, 0.5f}, {11.5f, 2.0f}), {0, 0, 255, 200}));
+  p.push_back(coloured(point({10.5f, 6.5f}), {255, 255, 0, 255}));
+  return s;
+}
+
 }  // namespace
 
 std::vector<ShowcaseScene> showcase_scenes() {
@@ -365,6 +485,22 @@ std::vector<ShowcaseScene> showcase_scenes() {
                  quad_lines(LineMode::kQuadWide)});
   out.push_back({"quad-lines-1.0", "quadrilateral lines 1.0 px wide (Vulkan strict)",
                  quad_lines(LineMode::kQuadNarrow)});
+  out.push_back({"msaa-4x-ties", "4x: shared edges through sample points, vertices on samples",
+                 msaa_ties()});
+  out.push_back({"msaa-8x", "8x standard pattern: a fan, a point and a sliver", msaa_fan(8)});
+  out.push_back({"msaa-16x", "the same at 16x", msaa_fan(16)});
+  out.push_back({"msaa-center-4x", "4 samples at the centre: all or nothing per pixel",
+                 msaa_center()});
+  out.push_back({"msaa-custom", "a custom pattern on the grid's extremes, one position twice",
+                 msaa_custom()});
+  out.push_back({"msaa-centroid-d3d11", "centroids (D3D11 rule), sample mask 0b1101, fine ddx/ddy",
+                 msaa_centroid(CentroidRule::kD3D11)});
+  out.push_back({"msaa-centroid-d3d10", "the same under the D3D10 reference rule",
+                 msaa_centroid(CentroidRule::kD3D10)});
+  out.push_back({"msaa-sample-shading", "sample shading, quads per sample, coarse ddx/ddy",
+                 msaa_sample_shading()});
+  out.push_back({"msaa-resolve", "colours over a clear colour, resolved by averaging",
+                 msaa_resolve()});
   return out;
 }
 

@@ -208,7 +208,7 @@ def scan_tags(root, rules, report):
 
 
 # Rule areas whose normative and derived rules must have a property or a proof.
-STRICT_AREAS = ("TRI.", "SNAP.", "FIX.", "RASTER.", "POINT.", "LINE.")
+STRICT_AREAS = ("TRI.", "SNAP.", "FIX.", "RASTER.", "POINT.", "LINE.", "MSAA.")
 
 
 def check_evidence(rules, report):

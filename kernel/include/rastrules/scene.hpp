@@ -113,8 +113,9 @@ struct PreparedPrimitive {
   Rgba8 color = {255, 255, 255, 255};
   std::vector<Vec2> v; // snapped vertices
   // The triangles drawn for it: the triangle itself; the point's two (SCENE.PRIM.POINT); two
-  // per segment of a quadrilateral line (LineMode kQuadWide/kQuadNarrow). Empty for aliased
-  // and antialiased lines, which the line rasterizers draw from v.
+  // per segment of a quadrilateral line (LineMode kQuadWide/kQuadNarrow, and kD3DDiamond lines,
+  // aliased or antialiased, with more than one sample: MSAA.LINE.MODE). Empty for the other
+  // aliased and antialiased lines, which the line rasterizers draw from v.
   std::vector<PreparedTriangle> triangles;
 };
 
@@ -138,20 +139,23 @@ struct PreparedScene {
 // rule: SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.LINE_MODE
 [[nodiscard]] std::variant<PreparedScene, SceneError> prepare(const Scene& scene);
 
-// Returns the fragments of primitive p of a prepared scene sorted by (y, x, seg), only inside
-// the target. Preconditions: p < scene.primitives.size().
+// Returns the fragments of primitive p of a prepared scene sorted by (y, x, seg, sample), only
+// inside the target. Preconditions: p < scene.primitives.size().
 // rule: SCENE.OUTPUT.FRAGMENTS, RASTER.TARGET.CLIP
 [[nodiscard]] std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_t p);
 
-// Calls emit for each fragment of primitive p in (y, x, seg) order, as rasterize_primitive
-// returns them. A triangle's fragments are streamed as the traversal finds them (memory does
-// not grow with their number); a point's, a line's and a line strip's are collected and
-// sorted first (memory proportional to that one primitive's fragments).
+// Calls emit for each fragment of primitive p in (y, x, seg, sample) order, as
+// rasterize_primitive returns them. In a single-sample scene (one sample at the centre, full
+// mask, pixel shading, no centroid, no quads) a triangle's fragments are streamed as the
+// traversal finds them (memory does not grow with their number); a point's, a line's, a line
+// strip's and every primitive's of a multisampled scene are collected and sorted first (memory
+// proportional to that one primitive's fragments).
 // rule: SCENE.OUTPUT.FRAGMENTS
 void for_each_fragment(const PreparedScene& scene, std::size_t p,
                        const std::function<void(const Fragment&)>& emit);
 
-// Returns the fragments of a prepared scene sorted by (prim, y, x, seg), only inside the target.
+// Returns the fragments of a prepared scene sorted by (prim, y, x, seg, sample), only inside the
+// target.
 // rule: SCENE.OUTPUT.FRAGMENTS, RASTER.TARGET.CLIP
 [[nodiscard]] std::vector<Fragment> rasterize(const PreparedScene& scene);
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The fragment list output.
-// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.PRIM.LINE_STRIP
+// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.PRIM.LINE_STRIP,
+//             SCENE.OUTPUT.MSAA
 
 #include "rastrules/io/fragment_json.hpp"
 
@@ -35,10 +36,26 @@ void append_fragment(std::string& out, const Fragment& f, bool first) {
     out += ", \"seg\": ";
     append_int(out, *f.seg);
   }
+  // rule: SCENE.OUTPUT.MSAA
+  if (f.sample) {
+    out += ", \"sample\": ";
+    append_int(out, *f.sample);
+  }
+  if (f.helper) out += ", \"helper\": true";
   // rule: SCENE.OUTPUT.COVERAGE
   if (f.coverage_q16) {
     out += ", \"coverage\": ";
     out += format_coverage(*f.coverage_q16);
+  }
+  // rule: SCENE.OUTPUT.MSAA
+  if (f.centroid) {
+    const auto c = centroid_sixteenths(f.x, f.y, f.centroid->offset);
+    out += ", \"centroid\": [" + format_sixteenths(c[0]) + ", " + format_sixteenths(c[1]) + "]";
+  }
+  if (f.derivatives) {
+    const EvalDerivatives& d = *f.derivatives;
+    out += ", \"ddx\": [" + format_sixteenths(d.ddx_x) + ", " + format_sixteenths(d.ddx_y) + "]";
+    out += ", \"ddy\": [" + format_sixteenths(d.ddy_x) + ", " + format_sixteenths(d.ddy_y) + "]";
   }
   out += "}";
 }
@@ -61,6 +78,25 @@ std::string format_coverage(std::uint32_t coverage_q16) {
   while (digits.back() == '0')
     digits.pop_back();
   return out + digits;
+}
+
+// rule: SCENE.OUTPUT.MSAA
+std::string format_sixteenths(std::int64_t sixteenths) {
+  // v / 16 = v * 625 / 10^4: at most 4 fraction digits, exact.
+  const bool negative = sixteenths < 0;
+  const std::uint64_t mag = negative ? 0 - static_cast<std::uint64_t>(sixteenths)
+                                     : static_cast<std::uint64_t>(sixteenths);
+  std::string out = (negative ? "-" : "") + std::to_string(mag >> 4) + ".";
+  const std::uint64_t frac = (mag & 15u) * 625u;
+  if (frac == 0) return out + "0";
+  std::string digits = std::to_string(frac);
+  digits.insert(0, 4 - digits.size(), '0');
+  while (digits.back() == '0') digits.pop_back();
+  return out + digits;
+}
+
+std::array<std::int64_t, 2> centroid_sixteenths(std::int32_t x, std::int32_t y, SampleOffset o) {
+  return {std::int64_t{x} * 16 + 8 + o.x, std::int64_t{y} * 16 + 8 + o.y};
 }
 
 FragmentWriter::FragmentWriter(std::FILE* out) : out_(out) {

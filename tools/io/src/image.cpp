@@ -94,6 +94,18 @@ void Image::line(double x0, double y0, double x1, double y1, Rgb c, int dash) {
   }
 }
 
+void Image::disc(int cx, int cy, int r, Rgb c, bool filled) {
+  // Integer test x^2 + y^2 <= r^2 (filled) or the ring r^2 - 2r < x^2 + y^2 <= r^2 (hollow).
+  const int outer = r * r + r;
+  const int inner = (r - 1) * (r - 1) + (r - 1);
+  for (int y = -r; y <= r; ++y) {
+    for (int x = -r; x <= r; ++x) {
+      const int d = x * x + y * y;
+      if (d <= outer && (filled || d > inner)) set(cx + x, cy + y, c);
+    }
+  }
+}
+
 namespace {
 
 struct PngError {
@@ -111,7 +123,7 @@ void on_png_warning(png_structp, png_const_charp) {}
 
 // libpng reports errors by longjmp: this frame holds only trivially destructible objects.
 bool write_png_rows(std::FILE* out, png_uint_32 width, png_uint_32 height, png_bytepp rows,
-                    PngError* err) {
+                    PngError* err, int color_type = PNG_COLOR_TYPE_RGB) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, err, on_png_error, on_png_warning);
   if (png == nullptr) {
     std::strcpy(err->message, "cannot create the PNG writer");
@@ -128,7 +140,7 @@ bool write_png_rows(std::FILE* out, png_uint_32 width, png_uint_32 height, png_b
     return false;
   }
   png_init_io(png, out);
-  png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+  png_set_IHDR(png, info, width, height, 8, color_type, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
   png_write_image(png, rows);
@@ -149,6 +161,26 @@ std::optional<std::string> write_png(std::FILE* out, const Image& image) {
   PngError err{};
   if (!write_png_rows(out, static_cast<png_uint_32>(image.width()),
                       static_cast<png_uint_32>(image.height()), rows.data(), &err)) {
+    return std::string("PNG: ") + err.message;
+  }
+  if (std::fflush(out) != 0 || std::ferror(out) != 0) return std::string("PNG: write failed");
+  return std::nullopt;
+}
+
+std::optional<std::string> write_png_rgba(std::FILE* out, int width, int height,
+                                          const std::vector<std::uint8_t>& rgba) {
+  if (width < 1 || height < 1 ||
+      rgba.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
+    return std::string("PNG: the pixel buffer does not match the size");
+  }
+  std::vector<png_bytep> rows(static_cast<std::size_t>(height));
+  auto* base = const_cast<std::uint8_t*>(rgba.data());
+  for (std::size_t y = 0; y < rows.size(); ++y) {
+    rows[y] = base + y * static_cast<std::size_t>(width) * 4;
+  }
+  PngError err{};
+  if (!write_png_rows(out, static_cast<png_uint_32>(width), static_cast<png_uint_32>(height),
+                      rows.data(), &err, PNG_COLOR_TYPE_RGB_ALPHA)) {
     return std::string("PNG: ") + err.message;
   }
   if (std::fflush(out) != 0 || std::ferror(out) != 0) return std::string("PNG: write failed");

@@ -25,6 +25,15 @@ constexpr std::array<Rgb, 10> kPalette = {{{31, 119, 180},
 constexpr Rgb kGrid{175, 175, 175};
 constexpr Rgb kCentre{80, 80, 80};
 constexpr Rgb kInactiveEdge{120, 120, 120};
+constexpr Rgb kSampleMark{40, 40, 40};
+constexpr Rgb kSharedPixel{228, 228, 228};
+constexpr Rgb kHelperMark{150, 0, 150};
+constexpr Rgb kCentroidMark{200, 0, 0};
+
+// The number of samples a picture shows per pixel (the pattern's, at most 32).
+std::uint32_t coverage_sample_count(const PreparedScene& scene) {
+  return std::min<std::uint32_t>(scene.msaa.count(), 32);
+}
 
 std::uint8_t mix(std::uint8_t a, std::uint8_t b, int percent_a) {
   return static_cast<std::uint8_t>((a * percent_a + b * (100 - percent_a)) / 100);
@@ -78,6 +87,64 @@ void CoverageMap::add(std::uint32_t prim, std::int32_t x, std::int32_t y,
   if (count_[i] < 255) ++count_[i];
 }
 
+void CoverageMap::record_samples(std::uint32_t sample_count) {
+  const std::size_t pixels = first_.size();
+  sample_count_ = sample_count;
+  owner_.assign(pixels * sample_count, 0);
+  helper_.assign(pixels, 0);
+  sample_overlap_.assign(pixels, 0);
+  has_centroid_.assign(pixels, 0);
+  centroid_.assign(pixels, SampleOffset{});
+}
+
+void CoverageMap::add_fragment(const Fragment& f) {
+  const std::size_t i = index(f.x, f.y);
+  if (sample_count_ != 0) {
+    if (f.helper) {
+      helper_[i] = 1;
+    } else {
+      for (std::uint32_t k = 0; k < sample_count_ && k < 32; ++k) {
+        if (((f.mask >> k) & 1u) == 0) continue;
+        std::uint32_t& owner = owner_[i * sample_count_ + k];
+        if (owner != 0) sample_overlap_[i] = 1;
+        owner = f.prim + 1;
+      }
+      if (f.centroid) {
+        has_centroid_[i] = 1;
+        centroid_[i] = f.centroid->offset;
+      }
+    }
+  }
+  if (f.helper) return;
+  if (f.sample && last_counted_ && last_counted_->prim == f.prim && last_counted_->x == f.x &&
+      last_counted_->y == f.y && last_counted_->seg == f.seg) {
+    return;
+  }
+  last_counted_ = f;
+  add(f.prim, f.x, f.y, f.coverage_q16);
+}
+
+std::uint32_t CoverageMap::sample_owner(std::int32_t x, std::int32_t y, std::uint32_t k) const {
+  return owner_[index(x, y) * sample_count_ + k];
+}
+
+bool CoverageMap::helper(std::int32_t x, std::int32_t y) const { return helper_[index(x, y)] != 0; }
+
+bool CoverageMap::sample_overlap(std::int32_t x, std::int32_t y) const {
+  return sample_overlap_[index(x, y)] != 0;
+}
+
+std::optional<SampleOffset> CoverageMap::centroid(std::int32_t x, std::int32_t y) const {
+  if (has_centroid_[index(x, y)] == 0) return std::nullopt;
+  return centroid_[index(x, y)];
+}
+
+bool samples_visible(const PreparedScene& scene, int scale) {
+  const MultisampleState& ms = scene.msaa;
+  const bool multisampled = ms.count() > 1 || ms.has_centroid || ms.wants_quads();
+  return multisampled && scale >= kMinSampleScale;
+}
+
 std::optional<Rgb> CoverageMap::aa_colour(std::int32_t x, std::int32_t y) const {
   if (aa_seen_.empty() || aa_seen_[index(x, y)] == 0)
     return std::nullopt;
@@ -116,6 +183,12 @@ Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int 
         img.fill_rect(x0, y0, x0 + s + 1, y0 + s + 1, cover_colour(coverage.first(i, j)));
         continue;
       }
+      // Multisampled: primitives sharing a pixel on different samples is no overlap; the
+      // sample points show who covers what. Only a sample covered twice is hatched.
+      if (coverage.has_samples() && s >= kMinSampleScale && !coverage.sample_overlap(i, j)) {
+        img.fill_rect(x0, y0, x0 + s + 1, y0 + s + 1, kSharedPixel);
+        continue;
+      }
       img.fill_rect(x0, y0, x0 + s + 1, y0 + s + 1, kOverlapColour);
       if (s < 4) {
         img.fill_rect(x0, y0, x0 + s + 1, y0 + s + 1, kOverlapMark);
@@ -137,8 +210,9 @@ Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int 
     for (std::int32_t j = 0; j <= scene.height; ++j) img.fill_rect(0, j * s, img.width(), j * s + 1, kGrid);
   }
 
-  // Pixel centres, as small crosses (COORD.PIXEL.CENTER).
-  if (s >= 6) {
+  // Pixel centres, as small crosses (COORD.PIXEL.CENTER); multisampled pictures show the
+  // sample points instead.
+  if (s >= 6 && !(coverage.has_samples() && s >= kMinSampleScale)) {
     const int arm = std::max(1, s / 10);
     for (std::int32_t j = 0; j < scene.height; ++j) {
       for (std::int32_t i = 0; i < scene.width; ++i) {
@@ -186,6 +260,40 @@ Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int 
         segment(prim.v[i], prim.v[i + 1], colour, 0);
     }
   }
+  // rule: SCENE.OUTPUT.MSAA
+  // Multisampled: helper lanes outlined dashed, every sample point hollow, covered samples
+  // filled in their primitive's colour, the centroid as a small cross.
+  if (coverage.has_samples() && s >= kMinSampleScale) {
+    const std::uint32_t n = std::min(coverage_sample_count(scene), coverage.sample_count());
+    const int sr = std::max(2, s / 14);
+    for (std::int32_t j = 0; j < scene.height; ++j) {
+      for (std::int32_t i = 0; i < scene.width; ++i) {
+        const int x0 = i * s, y0 = j * s;
+        if (coverage.helper(i, j)) {
+          const int m = std::max(2, s / 10);
+          const double a = x0 + m, b = y0 + m, c = x0 + s - m, d = y0 + s - m;
+          img.line(a, b, c, b, kHelperMark, 3);
+          img.line(c, b, c, d, kHelperMark, 3);
+          img.line(c, d, a, d, kHelperMark, 3);
+          img.line(a, d, a, b, kHelperMark, 3);
+        }
+        for (std::uint32_t k = 0; k < n; ++k) {
+          const SampleOffset o = scene.msaa.pattern.positions[k];
+          const int cx = x0 + s / 2 + (o.x * s) / 16, cy = y0 + s / 2 + (o.y * s) / 16;
+          const std::uint32_t owner = coverage.sample_owner(i, j, k);
+          if (owner != 0) img.disc(cx, cy, sr, edge_colour(owner - 1), true);
+          img.disc(cx, cy, sr, kSampleMark, false);
+        }
+        if (const std::optional<SampleOffset> c = coverage.centroid(i, j)) {
+          const int cx = x0 + s / 2 + (c->x * s) / 16, cy = y0 + s / 2 + (c->y * s) / 16;
+          const int arm = sr + 1;
+          img.fill_rect(cx - arm, cy, cx + arm + 1, cy + 1, kCentroidMark);
+          img.fill_rect(cx, cy - arm, cx + 1, cy + arm + 1, kCentroidMark);
+        }
+      }
+    }
+  }
+
   const int r = std::max(1, s / 16);
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     const PreparedPrimitive& prim = scene.primitives[p];

@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The scene reader (a strict, streaming SAX handler over nlohmann::json) and writer.
 // Implements: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS, SCENE.PRIM.POINT,
-//             SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.LINE_MODE
+//             SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.LINE_MODE, SCENE.MSAA
+// The multisampling keys (SCENE.MSAA): the reader checks each key's type and range and builds
+// the sample pattern from "samples" and "sample_pattern"; the rules between keys (a sample mask
+// wider than the pattern, lines a pattern cannot draw) are prepare()'s (MSAA.LIMITS), except
+// an explicit all-ones "sample_mask", which prepare() cannot tell from the default.
 
 #include "rastrules/io/scene_json.hpp"
 
@@ -69,7 +73,17 @@ bool magnitude_at_least_one(std::string_view text) {
   return found && order + exponent >= 0;
 }
 
-enum class Ctx { kRootObject, kTargetObject, kPrimitiveArray, kPrimitiveObject, kVertexArray, kCoordArray };
+enum class Ctx {
+  kRootObject,
+  kTargetObject,
+  kPrimitiveArray,
+  kPrimitiveObject,
+  kVertexArray,
+  kCoordArray,
+  kPatternArray,  // "sample_pattern": [[i, j], ...]
+  kPatternPair,   // one [i, j]
+  kColorArray,    // "clear_color" or "primitives[i].color": [r, g, b, a]
+};
 
 // Where a value goes.
 enum class Slot {
@@ -89,6 +103,18 @@ enum class Slot {
   kAA,
   kVertex,
   kCoord, // primitives
+  kSamples,
+  kSamplePattern,
+  kSampleMask,
+  kCentroid,
+  kShading,
+  kQuads,
+  kDerivatives,
+  kClearColor, // root object, multisampling (SCENE.MSAA)
+  kColor,      // primitives[i].color
+  kPatternEntry,
+  kPatternCoord,
+  kColorChannel,
 };
 
 struct KeySpec {
@@ -97,18 +123,36 @@ struct KeySpec {
   bool required;
 };
 
-constexpr std::array<KeySpec, 7> kRootKeys = {{{"version", Slot::kVersion, false},
-                                               {"target", Slot::kTarget, true},
-                                               {"cull", Slot::kCull, false},
-                                               {"front_face", Slot::kFrontFace, false},
-                                               {"fill", Slot::kFill, false},
-                                               {"line_mode", Slot::kLineMode, false},
-                                               {"primitives", Slot::kPrimitives, true}}};
+constexpr std::array<KeySpec, 15> kRootKeys = {{{"version", Slot::kVersion, false},
+                                                {"target", Slot::kTarget, true},
+                                                {"cull", Slot::kCull, false},
+                                                {"front_face", Slot::kFrontFace, false},
+                                                {"fill", Slot::kFill, false},
+                                                {"line_mode", Slot::kLineMode, false},
+                                                {"samples", Slot::kSamples, false},
+                                                {"sample_pattern", Slot::kSamplePattern, false},
+                                                {"sample_mask", Slot::kSampleMask, false},
+                                                {"centroid", Slot::kCentroid, false},
+                                                {"shading", Slot::kShading, false},
+                                                {"quads", Slot::kQuads, false},
+                                                {"derivatives", Slot::kDerivatives, false},
+                                                {"clear_color", Slot::kClearColor, false},
+                                                {"primitives", Slot::kPrimitives, true}}};
 constexpr std::array<KeySpec, 2> kTargetKeys = {{{"width", Slot::kWidth, true},
                                                  {"height", Slot::kHeight, true}}};
-constexpr std::array<KeySpec, 3> kPrimitiveKeys = {
-    {{"type", Slot::kType, true}, {"v", Slot::kVertices, true}, {"aa", Slot::kAA, false}}};
+constexpr std::array<KeySpec, 4> kPrimitiveKeys = {{{"type", Slot::kType, true},
+                                                    {"v", Slot::kVertices, true},
+                                                    {"aa", Slot::kAA, false},
+                                                    {"color", Slot::kColor, false}}};
 constexpr std::size_t kAAKeyIndex = 2;
+
+// The scene-file names of the multisampling enumerations (SCENE.MSAA).
+constexpr std::array<std::pair<std::string_view, CentroidRule>, 2> kCentroidNames = {
+    {{"d3d11", CentroidRule::kD3D11}, {"d3d10", CentroidRule::kD3D10}}};
+constexpr std::array<std::pair<std::string_view, ShadingRate>, 2> kShadingNames = {
+    {{"pixel", ShadingRate::kPixel}, {"sample", ShadingRate::kSample}}};
+constexpr std::array<std::pair<std::string_view, DerivativeMode>, 2> kDerivativeNames = {
+    {{"fine", DerivativeMode::kFine}, {"coarse", DerivativeMode::kCoarse}}};
 
 // The scene-file names of the line modes (SCENE.LINE_MODE).
 constexpr std::array<std::pair<std::string_view, LineMode>, 4> kLineModeNames = {
@@ -225,7 +269,7 @@ class SceneReader {
       return true;
     };
     switch (f.ctx) {
-      case Ctx::kRootObject: return required(kRootKeys);
+      case Ctx::kRootObject: return required(kRootKeys) && finish_pattern();
       case Ctx::kTargetObject: return required(kTargetKeys);
       case Ctx::kPrimitiveObject: {
         if (!required(kPrimitiveKeys)) return false;
@@ -256,6 +300,17 @@ class SceneReader {
     stack_.pop_back();
     if (f.ctx == Ctx::kCoordArray && f.count != 2) {
       return fail(f.path, "must have exactly 2 coordinates [x, y], got " + std::to_string(f.count));
+    }
+    // rule: SCENE.MSAA, MSAA.PATTERN.CUSTOM
+    if (f.ctx == Ctx::kPatternArray && f.count == 0) {
+      return fail(f.path, "must have 1 to " + std::to_string(kMaxSamples) +
+                              " positions [i, j], got none");
+    }
+    if (f.ctx == Ctx::kPatternPair && f.count != 2) {
+      return fail(f.path, "must have exactly 2 offsets [i, j], got " + std::to_string(f.count));
+    }
+    if (f.ctx == Ctx::kColorArray && f.count != 4) {
+      return fail(f.path, "must have exactly 4 channels [r, g, b, a], got " + std::to_string(f.count));
     }
     return true;
   }
@@ -334,6 +389,27 @@ class SceneReader {
           coord_ = f.count;
           field = f.path + "[" + std::to_string(f.count++) + "]";
           break;
+        case Ctx::kPatternArray:
+          // rule: MSAA.LIMITS
+          if (f.count >= kMaxSamples) {
+            return fail(f.path, "must have 1 to " + std::to_string(kMaxSamples) +
+                                    " positions [i, j], got more");
+          }
+          slot = Slot::kPatternEntry;
+          field = f.path + "[" + std::to_string(f.count++) + "]";
+          break;
+        case Ctx::kPatternPair:
+          if (f.count == 2) return fail(f.path, "must have exactly 2 offsets [i, j], got more");
+          slot = Slot::kPatternCoord;
+          coord_ = f.count;
+          field = f.path + "[" + std::to_string(f.count++) + "]";
+          break;
+        case Ctx::kColorArray:
+          if (f.count == 4) return fail(f.path, "must have exactly 4 channels [r, g, b, a], got more");
+          slot = Slot::kColorChannel;
+          coord_ = f.count;
+          field = f.path + "[" + std::to_string(f.count++) + "]";
+          break;
       }
     } else if (root_done_) {
       return fail("scene", "more than one JSON value");
@@ -407,8 +483,109 @@ class SceneReader {
         current_.v.push_back(FloatPoint{0.0f, 0.0f});
         return push(Ctx::kCoordArray, field);
       case Slot::kCoord: return coordinate(field, v);
+      // rule: SCENE.MSAA, MSAA.LIMITS
+      case Slot::kSamples:
+        if (v.kind == Kind::kInt && v.i >= 1 && v.i <= kMaxSamples) {
+          samples_ = static_cast<std::uint32_t>(v.i);
+          return true;
+        }
+        return type_error(field, "an integer in [1, " + std::to_string(kMaxSamples) + "]", v);
+      case Slot::kSamplePattern:
+        if (v.kind == Kind::kString && v.text == "standard") {
+          pattern_kind_ = PatternKind::kStandard;
+          return true;
+        }
+        if (v.kind == Kind::kString && v.text == "center") {
+          pattern_kind_ = PatternKind::kCenter;
+          return true;
+        }
+        if (v.kind == Kind::kArray) {
+          pattern_kind_ = PatternKind::kCustom;
+          return push(Ctx::kPatternArray, field);
+        }
+        return type_error(field, "\"standard\", \"center\" or an array of [i, j] offsets", v);
+      case Slot::kPatternEntry:
+        if (v.kind != Kind::kArray) return type_error(field, "an array [i, j]", v);
+        custom_.push_back(SampleOffset{});
+        return push(Ctx::kPatternPair, field);
+      case Slot::kPatternCoord: {
+        // rule: MSAA.PATTERN.GRID
+        const bool on_grid = v.kind == Kind::kInt && v.i >= kSampleGridMin && v.i <= kSampleGridMax;
+        if (!on_grid) {
+          return type_error(field, "an integer in [" + std::to_string(kSampleGridMin) + ", " +
+                                       std::to_string(kSampleGridMax) + "]", v);
+        }
+        (coord_ == 0 ? custom_.back().x : custom_.back().y) = static_cast<std::int8_t>(v.i);
+        return true;
+      }
+      case Slot::kSampleMask:
+        // rule: MSAA.MASK.AND
+        // Only the type and the 32-bit range here; bits beyond the pattern are prepare()'s.
+        if (v.kind == Kind::kInt && v.i >= 0 && v.i <= 0xFFFFFFFFll) {
+          scene_.msaa.sample_mask = static_cast<std::uint32_t>(v.i);
+          sample_mask_given_ = true;
+          return true;
+        }
+        return type_error(field, "an integer in [0, 4294967295]", v);
+      case Slot::kCentroid:
+        scene_.msaa.has_centroid = true;
+        return enumeration(field, v, kCentroidNames, scene_.msaa.centroid_rule);
+      case Slot::kShading: return enumeration(field, v, kShadingNames, scene_.msaa.shading);
+      case Slot::kQuads:
+        if (v.kind != Kind::kBool) return type_error(field, "true or false", v);
+        scene_.msaa.quads = v.b;
+        return true;
+      case Slot::kDerivatives:
+        return enumeration(field, v, kDerivativeNames, scene_.msaa.derivatives);
+      case Slot::kClearColor:
+      case Slot::kColor:
+        if (v.kind != Kind::kArray) return type_error(field, "an array [r, g, b, a]", v);
+        color_ = slot == Slot::kClearColor ? &scene_.clear_color : &current_.color;
+        return push(Ctx::kColorArray, field);
+      case Slot::kColorChannel:
+        if (v.kind == Kind::kInt && v.i >= 0 && v.i <= 255) {
+          (*color_)[coord_] = static_cast<std::uint8_t>(v.i);
+          return true;
+        }
+        return type_error(field, "an integer in [0, 255]", v);
     }
     return fail(field, "internal error: unknown slot");
+  }
+
+  // Builds the sample pattern from "samples" and "sample_pattern", which may come in either
+  // order, once the root object is complete.
+  // rule: SCENE.MSAA, MSAA.PATTERN.STANDARD, MSAA.PATTERN.CENTER, MSAA.PATTERN.CUSTOM
+  bool finish_pattern() {
+    if (pattern_kind_ == PatternKind::kCustom) {
+      if (samples_ && *samples_ != custom_.size()) {
+        return fail("samples", std::to_string(*samples_) + " does not match the " +
+                                   std::to_string(custom_.size()) +
+                                   " positions of sample_pattern");
+      }
+      scene_.msaa.pattern = custom_pattern(std::move(custom_));
+      return check_explicit_all_ones_mask();
+    }
+    const std::uint32_t n = samples_.value_or(1);
+    if (!is_standard_count(n)) {
+      return fail("samples", std::to_string(n) + " has no " +
+                                 std::string(to_string(pattern_kind_)) +
+                                 " pattern (1, 2, 4, 8, 16)");
+    }
+    scene_.msaa.pattern =
+        pattern_kind_ == PatternKind::kCenter ? center_pattern(n) : standard_pattern(n);
+    return check_explicit_all_ones_mask();
+  }
+
+  // In memory, 0xFFFFFFFF is the default "all samples" and prepare() accepts it whatever the
+  // count; in a file the key holds at most the pattern's bits (MSAA.LIMITS), so the all-ones
+  // value written out is refused here, with prepare()'s message for any wider mask.
+  // rule: MSAA.LIMITS
+  bool check_explicit_all_ones_mask() {
+    const std::uint32_t n = scene_.msaa.pattern.count();
+    if (!sample_mask_given_ || scene_.msaa.sample_mask != 0xFFFFFFFFu || n >= 32) return true;
+    return fail("sample_mask", "must be an integer in [0, " + std::to_string(full_mask(n)) +
+                                   "] (bit k is sample k of " + std::to_string(n) +
+                                   "), got 4294967295 (0xffffffff)");
   }
 
   bool push(Ctx ctx, std::string path) {
@@ -479,6 +656,11 @@ class SceneReader {
   Scene scene_;
   Primitive current_;
   std::size_t coord_ = 0;
+  std::optional<std::uint32_t> samples_;  // "samples", when given
+  PatternKind pattern_kind_ = PatternKind::kStandard;
+  std::vector<SampleOffset> custom_;      // the positions of a custom "sample_pattern"
+  Rgba8* color_ = nullptr;                // the colour being read
+  bool sample_mask_given_ = false;
   bool root_done_ = false;
   std::string last_path_;
   std::optional<SceneError> error_;
@@ -587,6 +769,14 @@ std::variant<std::string, SceneError> read_scene_file(const std::string& path) {
   return text;
 }
 
+namespace {
+// "[r, g, b, a]".
+std::string color_text(const Rgba8& c) {
+  return "[" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) +
+         ", " + std::to_string(c[3]) + "]";
+}
+}  // namespace
+
 // rule: SCENE.FORMAT.V1
 std::string write_scene(const Scene& scene) {
   std::string out;
@@ -599,6 +789,30 @@ std::string write_scene(const Scene& scene) {
   if (scene.line_mode != LineMode::kD3DDiamond) {
     out += "  \"line_mode\": \"" + std::string(line_mode_name(scene.line_mode)) + "\",\n";
   }
+  // rule: SCENE.MSAA
+  // The multisampling keys, each only when it differs from its default.
+  const MultisampleState& ms = scene.msaa;
+  if (ms.pattern.kind == PatternKind::kCustom) {
+    out += "  \"sample_pattern\": [";
+    for (std::size_t k = 0; k < ms.pattern.positions.size(); ++k) {
+      const SampleOffset o = ms.pattern.positions[k];
+      out += (k == 0 ? "[" : ", [") + std::to_string(o.x) + ", " + std::to_string(o.y) + "]";
+    }
+    out += "],\n";
+  } else {
+    if (ms.pattern.count() != 1) out += "  \"samples\": " + std::to_string(ms.pattern.count()) + ",\n";
+    if (ms.pattern.kind == PatternKind::kCenter) out += "  \"sample_pattern\": \"center\",\n";
+  }
+  if (ms.sample_mask != MultisampleState{}.sample_mask) {
+    out += "  \"sample_mask\": " + std::to_string(ms.sample_mask) + ",\n";
+  }
+  if (ms.has_centroid) out += "  \"centroid\": \"" + std::string(to_string(ms.centroid_rule)) + "\",\n";
+  if (ms.shading != ShadingRate::kPixel) out += "  \"shading\": \"" + std::string(to_string(ms.shading)) + "\",\n";
+  if (ms.quads) out += "  \"quads\": true,\n";
+  if (ms.derivatives != DerivativeMode::kNone) {
+    out += "  \"derivatives\": \"" + std::string(to_string(ms.derivatives)) + "\",\n";
+  }
+  if (scene.clear_color != Rgba8{0, 0, 0, 0}) out += "  \"clear_color\": " + color_text(scene.clear_color) + ",\n";
   out += "  \"primitives\": [";
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     out += p == 0 ? "\n" : ",\n";
@@ -606,6 +820,7 @@ std::string write_scene(const Scene& scene) {
     out += "    {\"type\": \"" + std::string(to_string(prim.type)) + "\", ";
     if (prim.aa)
       out += "\"aa\": true, ";
+    if (prim.color != Primitive{}.color) out += "\"color\": " + color_text(prim.color) + ", ";
     out += "\"v\": [";
     for (std::size_t i = 0; i < prim.v.size(); ++i) {
       if (i != 0) out += ", ";
@@ -630,10 +845,21 @@ bool same_scene(const Scene& a, const Scene& b) {
       a.line_mode != b.line_mode || a.primitives.size() != b.primitives.size()) {
     return false;
   }
+  const MultisampleState& ma = a.msaa;
+  const MultisampleState& mb = b.msaa;
+  if (ma.pattern != mb.pattern || ma.sample_mask != mb.sample_mask ||
+      ma.has_centroid != mb.has_centroid ||
+      (ma.has_centroid && ma.centroid_rule != mb.centroid_rule) || ma.shading != mb.shading ||
+      ma.quads != mb.quads || ma.derivatives != mb.derivatives ||
+      a.clear_color != b.clear_color) {
+    return false;
+  }
   for (std::size_t p = 0; p < a.primitives.size(); ++p) {
     const Primitive& pa = a.primitives[p];
     const Primitive& pb = b.primitives[p];
-    if (pa.type != pb.type || pa.aa != pb.aa || pa.v.size() != pb.v.size()) return false;
+    if (pa.type != pb.type || pa.aa != pb.aa || pa.color != pb.color || pa.v.size() != pb.v.size()) {
+      return false;
+    }
     for (std::size_t i = 0; i < pa.v.size(); ++i) {
       for (std::size_t k = 0; k < 2; ++k) {
         const float x = pa.v[i][k];

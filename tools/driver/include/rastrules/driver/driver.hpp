@@ -19,7 +19,7 @@ namespace rastrules::driver {
 
 // What a driver reports about itself, and what it can draw.
 struct DriverInfo {
-  std::string name;                 // "lavapipe", "imprecise", "reference", "external"
+  std::string name;                 // "lavapipe", "opengl", "imprecise", "reference", "external"
   std::string description;          // device name and version, or the command line
   int subpixel_bits = -1;           // as the driver reports it (-1: unknown)
   std::vector<std::uint32_t> sample_counts;  // supported rasterization sample counts
@@ -54,7 +54,8 @@ class Driver {
 };
 
 // Opens a driver by name: "reference" (the kernel), "imprecise" (built-in planted bugs, see
-// imprecise.hpp), "lavapipe" (Mesa's Vulkan CPU driver, when built with Vulkan), or
+// imprecise.hpp), "lavapipe" (Mesa's Vulkan CPU driver, when built with Vulkan), "opengl"
+// (Mesa's llvmpipe through EGL surfaceless, when built with EGL and OpenGL), or
 // "external:COMMAND" (spec/driver.md DRIVER.EXTERNAL.PROTOCOL). On failure returns nullptr and
 // sets *error to a one-line reason.
 [[nodiscard]] std::unique_ptr<Driver> open_driver(std::string_view name, std::string* error);

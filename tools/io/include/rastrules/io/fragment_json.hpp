@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The fragment list output (spec/scene.md), written as a stream.
-// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE
+// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.OUTPUT.MSAA
 
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -16,7 +17,9 @@ namespace rastrules::io {
 // Writes {"fragments": [...]} to a FILE*, one fragment per line, without holding the list in
 // memory. The caller emits fragments in (prim, y, x, seg) order (SCENE.OUTPUT.FRAGMENTS); the
 // writer checks that order and refuses fragments that break it. Fragments with a seg get a
-// "seg" field, fragments with a coverage a "coverage" field (SCENE.OUTPUT.COVERAGE).
+// "seg" field, fragments with a coverage a "coverage" field (SCENE.OUTPUT.COVERAGE); the
+// multisampling fields "sample", "helper", "centroid", "ddx" and "ddy" appear only when the
+// fragment has them (SCENE.OUTPUT.MSAA).
 // rule: SCENE.OUTPUT.FRAGMENTS
 class FragmentWriter {
  public:
@@ -47,6 +50,16 @@ class FragmentWriter {
 // (always a point and at least one fraction digit; no trailing zeros otherwise).
 // rule: SCENE.OUTPUT.COVERAGE
 [[nodiscard]] std::string format_coverage(std::uint32_t coverage_q16);
+
+// Returns v / 16 as its exact decimal: "3.5625", "-0.25", "1.0" (always a point and at least one
+// fraction digit). Centroids and derivatives are multiples of 1/16 px (SCENE.OUTPUT.MSAA).
+// rule: SCENE.OUTPUT.MSAA
+[[nodiscard]] std::string format_sixteenths(std::int64_t sixteenths);
+
+// Returns the centroid of a fragment of pixel (x, y) at offset o from its centre, in 1/16 px
+// from the target's origin: (16 x + 8 + o.x, 16 y + 8 + o.y).
+[[nodiscard]] std::array<std::int64_t, 2> centroid_sixteenths(std::int32_t x, std::int32_t y,
+                                                              SampleOffset o);
 
 // Returns the fragment list as one string (for small lists and tests).
 [[nodiscard]] std::string fragments_to_json(const std::vector<Fragment>& fragments);

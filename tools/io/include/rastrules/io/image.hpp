@@ -32,6 +32,8 @@ class Image {
   // Draws a one-pixel line between two points in image coordinates (any values; the line is
   // clipped to the image first). dash > 0 draws dash pixels on, dash pixels off.
   void line(double x0, double y0, double x1, double y1, Rgb c, int dash = 0);
+  // Draws a disc of radius r around (cx, cy): filled, or only its one-pixel outline.
+  void disc(int cx, int cy, int r, Rgb c, bool filled);
   // Returns the rows, top first, 3 bytes per pixel.
   [[nodiscard]] const std::vector<std::uint8_t>& rgb() const { return rgb_; }
 
@@ -43,5 +45,10 @@ class Image {
 
 // Writes the image as an 8-bit RGB PNG. Returns an error message, or nullopt on success.
 [[nodiscard]] std::optional<std::string> write_png(std::FILE* out, const Image& image);
+
+// Writes width x height RGBA8 pixels (rows top first, 4 bytes per pixel) as an 8-bit RGBA PNG
+// (the resolved target of `rastrules render --resolve`). Returns an error message, or nullopt.
+[[nodiscard]] std::optional<std::string> write_png_rgba(std::FILE* out, int width, int height,
+                                                        const std::vector<std::uint8_t>& rgba);
 
 }  // namespace rastrules::io

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Pictures of a rendered scene: the target magnified, its pixel grid and pixel centres, the
-// primitives' snapped edges, covered pixels coloured by primitive and overlaps marked.
+// primitives' snapped edges, covered pixels coloured by primitive and overlaps marked; for
+// multisampled scenes every sample point (hollow), covered samples filled in the picture colour
+// of the primitive that covered them last, pixels shared by primitives on different samples in
+// grey (only samples covered twice count as overlap), helper lanes outlined dashed and
+// centroids marked.
 // Pictures only show results computed by the kernel; they decide nothing.
 
 #pragma once
@@ -40,6 +44,23 @@ class CoverageMap {
   [[nodiscard]] std::int32_t width() const { return width_; }
   [[nodiscard]] std::int32_t height() const { return height_; }
 
+  // Multisampled scenes (SCENE.OUTPUT.MSAA). record_samples(n) makes add_fragment() also keep,
+  // per sample, the last primitive that covered it, per pixel whether a helper lane ran there
+  // and the last centroid. Costs 4n + 4 bytes a pixel; call it only when the picture shows
+  // samples (samples_visible()).
+  void record_samples(std::uint32_t sample_count);
+  // Adds one kernel fragment: helper lanes are recorded but never counted as coverage, and
+  // the per-sample fragments of one pixel of one primitive (sample shading) count once.
+  void add_fragment(const Fragment& f);
+  [[nodiscard]] bool has_samples() const { return sample_count_ != 0; }
+  [[nodiscard]] std::uint32_t sample_count() const { return sample_count_; }
+  // 1 + the primitive that last covered sample k of the pixel; 0 when none did.
+  [[nodiscard]] std::uint32_t sample_owner(std::int32_t x, std::int32_t y, std::uint32_t k) const;
+  [[nodiscard]] bool helper(std::int32_t x, std::int32_t y) const;
+  // Whether some sample of the pixel was covered more than once.
+  [[nodiscard]] bool sample_overlap(std::int32_t x, std::int32_t y) const;
+  [[nodiscard]] std::optional<SampleOffset> centroid(std::int32_t x, std::int32_t y) const;
+
  private:
   std::size_t index(std::int32_t x, std::int32_t y) const;
   std::int32_t width_;
@@ -48,7 +69,22 @@ class CoverageMap {
   std::vector<std::uint8_t> count_;  // saturates at 255
   std::vector<Rgb> aa_;              // allocated on the first antialiased fragment
   std::vector<std::uint8_t> aa_seen_;
+  std::uint32_t sample_count_ = 0;
+  std::vector<std::uint32_t> owner_;        // width * height * sample_count_
+  std::vector<std::uint8_t> helper_;        // width * height
+  std::vector<std::uint8_t> sample_overlap_; // width * height
+  std::vector<std::uint8_t> has_centroid_;  // width * height
+  std::vector<SampleOffset> centroid_;      // width * height
+  std::optional<Fragment> last_counted_;    // for sample shading: count a pixel once
 };
+
+// The smallest magnification at which pictures of multisampled scenes show sample points.
+inline constexpr int kMinSampleScale = 8;
+
+// Returns whether a picture at `scale` shows the sample points of the scene: a multisampled
+// scene (more than one sample, or helper lanes, centroids or derivatives asked for) at a
+// magnification of at least kMinSampleScale.
+[[nodiscard]] bool samples_visible(const PreparedScene& scene, int scale);
 
 // Colours: the fill of pixels covered by primitive `prim` alone, the colour of its edges, and
 // the fill of pixels covered by more than one primitive.

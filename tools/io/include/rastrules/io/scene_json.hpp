@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Scene files (spec/scene.md, version 1): a strict streaming reader and a writer.
-// Implements: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS (the reader's part)
+// Implements: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS (the reader's part),
+//             SCENE.MSAA (the keys; the rules between them are prepare()'s, MSAA.LIMITS)
 // Does not implement: target limits and vertex validity, which the kernel's prepare() checks
 // (SCENE.TARGET.LIMITS, SNAP.VERTEX.INVALID) after reading.
 

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+// Bounding-box traversal of a set-up triangle at every sample of a pattern (layer 3:
+// mechanism). Its only correctness criterion: it yields, in row-major order, exactly the pixels
+// of the target with a non-zero sample_coverage() mask, each with that mask.
+// Implements: MSAA.COVER.SAMPLE (traversal), RASTER.TARGET.CLIP, FIX.BIAS.FORM,
+//             FIX.STEP.INCREMENTAL
+
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "rastrules/fixed.hpp"
+#include "rastrules/formula/edge.hpp"
+#include "rastrules/msaa.hpp"
+#include "rastrules/raster/walk.hpp"
+#include "rastrules/triangle.hpp"
+
+namespace rastrules::raster {
+
+// Returns the pixels of the target having at least one sample of the pattern inside the
+// bounding box of the snapped vertices. Samples sit up to 8/16 px left/up and 7/16 px
+// right/down of the pixel centre, so a triangle can cover samples of pixels whose centres lie
+// outside its bounding box: the box is widened by the pattern's actual offsets.
+// Preconditions: pattern.count() >= 1.
+// rule: MSAA.COVER.SAMPLE, RASTER.TARGET.CLIP
+[[nodiscard]] constexpr PixelRect sample_pixel_bounds(const TriangleSetup& t,
+                                                      const SamplePattern& pattern,
+                                                      std::int32_t width, std::int32_t height) {
+  std::int64_t minx = t.snapped[0].x.raw(), maxx = minx;
+  std::int64_t miny = t.snapped[0].y.raw(), maxy = miny;
+  for (const Vec2& v : t.snapped) {
+    minx = std::min<std::int64_t>(minx, v.x.raw());
+    maxx = std::max<std::int64_t>(maxx, v.x.raw());
+    miny = std::min<std::int64_t>(miny, v.y.raw());
+    maxy = std::max<std::int64_t>(maxy, v.y.raw());
+  }
+  std::int64_t ox0 = pattern.positions[0].x, ox1 = ox0;
+  std::int64_t oy0 = pattern.positions[0].y, oy1 = oy0;
+  for (const SampleOffset& o : pattern.positions) {
+    ox0 = std::min<std::int64_t>(ox0, o.x);
+    ox1 = std::max<std::int64_t>(ox1, o.x);
+    oy0 = std::min<std::int64_t>(oy0, o.y);
+    oy1 = std::max<std::int64_t>(oy1, o.y);
+  }
+  // Sample (i, j) of pixel p lies at p*256 + 128 + 16 i. Pixel p can have a sample in
+  // [min, max] only if p*256 + 128 + 16 ox1 >= min and p*256 + 128 + 16 ox0 <= max.
+  const std::int64_t g = kSampleGridUnit;
+  const std::int64_t px0 = -floor_div(-(minx - kSubpixelHalf - g * ox1), kSubpixelOne);
+  const std::int64_t px1 = floor_div(maxx - kSubpixelHalf - g * ox0, kSubpixelOne);
+  const std::int64_t py0 = -floor_div(-(miny - kSubpixelHalf - g * oy1), kSubpixelOne);
+  const std::int64_t py1 = floor_div(maxy - kSubpixelHalf - g * oy0, kSubpixelOne);
+  PixelRect r;
+  r.x0 = static_cast<std::int32_t>(std::max<std::int64_t>(px0, 0));
+  r.y0 = static_cast<std::int32_t>(std::max<std::int64_t>(py0, 0));
+  r.x1 = static_cast<std::int32_t>(std::min<std::int64_t>(px1, std::int64_t{width} - 1));
+  r.y1 = static_cast<std::int32_t>(std::min<std::int64_t>(py1, std::int64_t{height} - 1));
+  return r;
+}
+
+// Calls emit(x, y, mask) for every pixel of the target where t covers at least one sample of
+// the pattern, row by row; bit k of mask is sample k (before any sample mask). Each sample's
+// edge values are evaluated directly at the start of a row and stepped by one pixel, in bias
+// form, exactly as walk_triangle does at the pixel centre (the step and the bias do not depend
+// on the point they start from).
+// Preconditions: 1 <= pattern.count() <= kMaxSamples; offsets on the sample grid.
+// rule: MSAA.COVER.SAMPLE, FIX.BIAS.FORM, FIX.STEP.INCREMENTAL
+template <class Emit>
+constexpr void walk_triangle_samples(const TriangleSetup& t, const SamplePattern& pattern,
+                                     std::int32_t width, std::int32_t height, Emit&& emit) {
+  if (t.status != TriangleStatus::kRasterized)
+    return;
+  const PixelRect r = sample_pixel_bounds(t, pattern, width, height);
+  if (r.empty())
+    return;
+  const std::size_t n = pattern.count();
+  std::int64_t bias[3];
+  std::int64_t step_x[3];
+  for (std::size_t i = 0; i < 3; ++i) {
+    const EdgeSetup& e = t.edges[i];
+    bias[i] = formula::edge_bias<std::int64_t>(e.inclusive);
+    step_x[i] = formula::edge_step_x<std::int64_t>(e.a.y.raw(), e.b.y.raw(), kSubpixelOne);
+  }
+  std::array<std::array<std::int64_t, 3>, kMaxSamples> e{};
+  for (std::int32_t y = r.y0; y <= r.y1; ++y) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec2 s = sample_position(r.x0, y, pattern.positions[k]);
+      for (std::size_t i = 0; i < 3; ++i)
+        e[k][i] = t.edges[i].value_at(s).raw() + bias[i];
+    }
+    for (std::int32_t x = r.x0; x <= r.x1; ++x) {
+      std::uint32_t mask = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        if ((e[k][0] | e[k][1] | e[k][2]) >= 0)
+          mask |= std::uint32_t{1} << k;
+        e[k][0] += step_x[0];
+        e[k][1] += step_x[1];
+        e[k][2] += step_x[2];
+      }
+      if (mask != 0)
+        emit(x, y, mask);
+    }
+  }
+}
+
+} // namespace rastrules::raster

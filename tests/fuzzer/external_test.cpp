@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+// The external-process driver: `rastrules render - --fragments -` is a conforming external
+// driver, and every failure of an external process is a clear error.
+
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <variant>
+
+#include "rastrules/driver/driver.hpp"
+#include "rastrules/driver/external.hpp"
+#include "rastrules/fuzzer/fuzzer.hpp"
+
+namespace rastrules::driver {
+namespace {
+
+class TempDir {
+ public:
+  TempDir() {
+    std::random_device rd;
+    path_ = std::filesystem::temp_directory_path() / ("rastrules-external-" + std::to_string(rd()));
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  // Writes an executable shell script and returns its path.
+  std::string script(const std::string& name, const std::string& body) const {
+    const auto p = path_ / name;
+    std::ofstream(p) << "#!/bin/sh\n" << body << "\n";
+    ::chmod(p.c_str(), 0755);
+    return p.string();
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+Scene small_scene() {
+  Scene s;
+  s.width = 4;
+  s.height = 4;
+  s.primitives.push_back(make_triangle({FloatPoint{0, 0}, FloatPoint{4, 0}, FloatPoint{0, 4}}));
+  return s;
+}
+
+std::string draw_error(const std::string& command, ExternalOptions options = {}) {
+  std::string err;
+  auto d = open_external_driver(command, &err, options);
+  EXPECT_NE(d, nullptr) << err;
+  if (!d) return err;
+  auto r = d->draw(small_scene());
+  if (auto* e = std::get_if<DriverError>(&r)) return e->message;
+  return "";
+}
+
+const std::string kRender = std::string(RASTRULES_CLI) + " render - --fragments -";
+
+// rule: DRIVER.EXTERNAL.PROTOCOL
+TEST(ExternalDriver, RastrulesRenderIsAConformingExternalDriver) {
+  std::string err;
+  auto d = open_driver("external:" + kRender, &err);
+  ASSERT_NE(d, nullptr) << err;
+  auto r = d->draw(small_scene());
+  ASSERT_TRUE(std::holds_alternative<std::vector<Fragment>>(r)) << std::get<DriverError>(r).message;
+  auto expected = render(small_scene());
+  EXPECT_EQ(std::get<std::vector<Fragment>>(r), std::get<std::vector<Fragment>>(expected));
+  // A short campaign over every family finds nothing.
+  fuzzer::Settings s;
+  s.driver_name = "external";
+  s.cases = 25;
+  s.seed = 11;
+  const fuzzer::Summary sum = fuzzer::run_fuzz(*d, s);
+  EXPECT_TRUE(sum.error.empty()) << sum.error;
+  EXPECT_EQ(sum.cases, 25u);
+  EXPECT_EQ(sum.mismatches, 0u);
+}
+
+// rule: DRIVER.EXTERNAL.PROTOCOL
+TEST(ExternalDriver, CommandsAreSplitOrGivenToTheShell) {
+  EXPECT_EQ(external_argv("/bin/prog  --a=1 x.json"), (std::vector<std::string>{"/bin/prog", "--a=1", "x.json"}));
+  EXPECT_EQ(external_argv("prog 'a b'"), (std::vector<std::string>{"/bin/sh", "-c", "prog 'a b'"}));
+  EXPECT_EQ(external_argv("a | b"), (std::vector<std::string>{"/bin/sh", "-c", "a | b"}));
+  std::string err;
+  EXPECT_EQ(open_driver("external:", &err), nullptr);
+  EXPECT_NE(err.find("empty command"), std::string::npos) << err;
+}
+
+// rule: DRIVER.EXTERNAL.PROTOCOL
+TEST(ExternalDriver, CrashNonZeroExitAndMissingProgramAreErrors) {
+  TempDir dir;
+  EXPECT_NE(draw_error(dir.script("crash.sh", "kill -SEGV $$")).find("crashed: killed by signal 11"), std::string::npos);
+  const std::string exit3 = draw_error(dir.script("exit3.sh", "echo 'no such mode' >&2; exit 3"));
+  EXPECT_NE(exit3.find("exited with status 3"), std::string::npos) << exit3;
+  EXPECT_NE(exit3.find("no such mode"), std::string::npos) << exit3;
+  EXPECT_NE(draw_error("/nonexistent/driver").find("cannot start"), std::string::npos);
+}
+
+// rule: DRIVER.EXTERNAL.PROTOCOL
+TEST(ExternalDriver, AHangingProcessIsKilledAtTheTimeout) {
+  TempDir dir;
+  ExternalOptions o;
+  o.timeout_ms = 200;
+  const auto start = std::chrono::steady_clock::now();
+  const std::string e = draw_error(dir.script("hang.sh", "sleep 30"), o);
+  const auto elapsed = std::chrono::steady_clock::now() - start;
+  EXPECT_NE(e.find("timed out after 200 ms"), std::string::npos) << e;
+  EXPECT_LT(elapsed, std::chrono::seconds(5));
+}
+
+// rule: DRIVER.EXTERNAL.PROTOCOL
+TEST(ExternalDriver, TooMuchOutputIsAnError) {
+  TempDir dir;
+  ExternalOptions o;
+  o.max_output_bytes = 1000;
+  const std::string e = draw_error(dir.script("flood.sh", "yes '{}'"), o);
+  EXPECT_NE(e.find("more than 1000 bytes"), std::string::npos) << e;
+}
+
+// rule: DRIVER.EXTERNAL.PROTOCOL
+TEST(ExternalDriver, MalformedOutputIsAnErrorNamingTheFragmentAndField) {
+  TempDir dir;
+  const auto out = [&](const std::string& json) {
+    static int n = 0;
+    return draw_error(dir.script("out" + std::to_string(n++) + ".sh", "cat > /dev/null; cat <<'EOF'\n" + json + "\nEOF"));
+  };
+  EXPECT_NE(out("garbage").find("malformed output: not JSON"), std::string::npos);
+  EXPECT_NE(out("[]").find("expected {\"fragments\": [...]}"), std::string::npos);
+  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 4, "y": 0}]})").find("fragments[0].x: 4 is outside the target"), std::string::npos);
+  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 1, "y": -1}]})").find("fragments[0].y: -1 is outside"), std::string::npos);
+  EXPECT_NE(out(R"({"fragments": [{"prim": 1, "x": 1, "y": 1}]})").find("fragments[0].prim: 1 is not a primitive"), std::string::npos);
+  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 1, "y": 1, "mask": 2}]})").find("fragments[0].mask: 2 has bits beyond the 1 sample"),
+            std::string::npos);
+  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 1, "y": 1, "colour": 2}]})").find("fragments[0].colour: unknown key"), std::string::npos);
+  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 1.5, "y": 1}]})").find("fragments[0].x: must be an integer"), std::string::npos);
+  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 1, "y": 1}, {"prim": 0, "x": 1, "y": 1}]})").find("fragments[1]: duplicate"),
+            std::string::npos);
+  // Unsorted but valid output is accepted and sorted.
+  TempDir dir2;
+  std::string err;
+  auto d = open_external_driver(dir2.script("ok.sh", "cat > /dev/null; echo '{\"fragments\": [{\"prim\": 0, \"x\": 2, \"y\": 1}, {\"prim\": 0, \"x\": 0, \"y\": 0, \"mask\": 1}]}'"),
+                                &err);
+  ASSERT_NE(d, nullptr);
+  auto r = d->draw(small_scene());
+  ASSERT_TRUE(std::holds_alternative<std::vector<Fragment>>(r)) << std::get<DriverError>(r).message;
+  EXPECT_EQ(std::get<std::vector<Fragment>>(r), (std::vector<Fragment>{{0, 0, 0}, {0, 2, 1}}));
+}
+
+}  // namespace
+}  // namespace rastrules::driver

@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+// rastrules check SCENE.json --driver NAME: one scene, the outputs of a campaign.
+// Implements: FUZZ.REPORT (the command line)
+
+#include "cli.hpp"
+#include "fuzz_options.hpp"
+#include "rastrules/fuzzer/fuzzer.hpp"
+
+namespace rastrules::cli {
+
+int run_check(const Args& args) {
+  auto o = parse_fuzz_options(args, true, false);
+  if (!o) return kExitBadInput;
+  o->settings.cases = 1;
+  o->settings.progress = false;
+  auto loaded = load_scene(o->scene_path);
+  if (!loaded) return kExitBadInput;
+  auto d = open_driver_or_report(o->settings.driver_name);
+  if (!d) return kExitBadInput;
+  if (const std::string why = d->unsupported(loaded->scene); !why.empty()) {
+    return error(o->settings.driver_name + " cannot draw this scene: " + why);
+  }
+  const fuzzer::Summary s = fuzzer::run_check(*d, loaded->scene, o->settings);
+  return finish_campaign(*o, *d, s);
+}
+
+}  // namespace rastrules::cli

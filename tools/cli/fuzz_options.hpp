@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// Options shared by rastrules fuzz, check and probe.
+
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "cli.hpp"
+#include "rastrules/driver/driver.hpp"
+#include "rastrules/fuzzer/fuzzer.hpp"
+
+namespace rastrules::cli {
+
+struct FuzzOptions {
+  fuzzer::Settings settings;
+  std::string scene_path;  // check only
+};
+
+// Parses --driver, --profile, --mode, --out, --no-progress, and --cases/--seed when
+// allow_campaign, and one scene path when want_scene. Prints the usage error and returns
+// nullopt on bad usage.
+std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene, bool allow_campaign);
+
+// Opens the driver, or prints "rastrules: error: --driver: REASON" and returns nullptr.
+std::unique_ptr<driver::Driver> open_driver_or_report(const std::string& name);
+
+// Prints the summary; returns 0 (no difference), 1 (differences) or 2 (the campaign stopped on
+// an error).
+int finish_campaign(const FuzzOptions& o, const driver::Driver& d, const fuzzer::Summary& s);
+
+}  // namespace rastrules::cli

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+// Private to the driver library: the constructor of each built-in driver, called by
+// registry.cpp. Each returns nullptr and sets *error to a one-line reason on failure. arg is
+// the part of the name after the entry's prefix ("" for a plain name).
+// Implements: DRIVER.INTERFACE
+
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "rastrules/driver/driver.hpp"
+
+namespace rastrules::driver::detail {
+
+std::unique_ptr<Driver> open_reference(std::string_view arg, std::string* error);
+// imprecise.cpp: arg "" is "imprecise" (all planted bugs), else one bug: "float-edges", ...
+std::unique_ptr<Driver> open_imprecise(std::string_view arg, std::string* error);
+// external.cpp: arg is the command line (DRIVER.EXTERNAL.PROTOCOL).
+std::unique_ptr<Driver> open_external(std::string_view arg, std::string* error);
+#if defined(RASTRULES_HAVE_LAVAPIPE)
+std::unique_ptr<Driver> open_lavapipe(std::string_view arg, std::string* error);
+#endif
+#if defined(RASTRULES_HAVE_OPENGL)
+std::unique_ptr<Driver> open_opengl(std::string_view arg, std::string* error);
+#endif
+
+// Returns the fragments a driver reports for a kernel result: helper lanes removed, and the
+// fields drivers cannot observe (coverage_q16, centroid, derivatives) cleared. seg and sample
+// are kept: they are part of a fragment's key.
+// rule: DRIVER.INTERFACE
+[[nodiscard]] std::vector<Fragment> observable(std::vector<Fragment> fragments);
+
+}  // namespace rastrules::driver::detail

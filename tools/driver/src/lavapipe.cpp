@@ -1,0 +1,816 @@
+// SPDX-License-Identifier: MIT
+// The lavapipe adapter: draws a scene with Mesa's Vulkan CPU driver (llvmpipe), headless, and
+// reads back per-primitive, per-sample coverage from a storage buffer that the fragment
+// shader ORs gl_SampleMaskIn into (integer multisampled attachments are not needed).
+// Implements: DRIVER.LAVAPIPE.DEVICE, DRIVER.LAVAPIPE.COVERAGE, DRIVER.LAVAPIPE.POSITION,
+//             DRIVER.LAVAPIPE.SUPPORT
+
+#include <dlfcn.h>
+#include <vulkan/vulkan.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <string>
+#include <tuple>
+#include <variant>
+#include <vector>
+
+#include "drivers.hpp"
+#include "rastrules/driver/coverage_frag.spv.h"
+#include "rastrules/driver/coverage_vert.spv.h"
+#include "rastrules/scene.hpp"
+
+namespace rastrules::driver {
+namespace {
+
+// The largest coverage buffer one draw may use (slots * width * height * 4 bytes).
+constexpr VkDeviceSize kMaxCoverageBytes = VkDeviceSize{256} << 20;
+
+std::string vk_failed(const char* what, VkResult r) {
+  return std::string("lavapipe: ") + what + " failed (VkResult " +
+         std::to_string(static_cast<int>(r)) + ")";
+}
+
+struct Push {
+  float inv_k = 1.0F;
+  std::uint32_t slot = 0;
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::uint32_t slots = 0;
+};
+
+struct HostBuffer {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkDeviceSize size = 0;
+  void* mapped = nullptr;
+};
+
+// Everything that selects a pipeline (DRIVER.LAVAPIPE.SUPPORT).
+struct PipelineKey {
+  VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  VkLineRasterizationModeEXT line_mode = VK_LINE_RASTERIZATION_MODE_DEFAULT_EXT;
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+  VkCullModeFlags cull = VK_CULL_MODE_NONE;
+  VkFrontFace front = VK_FRONT_FACE_CLOCKWISE;
+  std::uint32_t sample_mask = 0xFFFFFFFFu;
+  [[nodiscard]] auto tie() const {
+    return std::make_tuple(static_cast<int>(topology), static_cast<int>(line_mode),
+                           static_cast<int>(samples), cull, static_cast<int>(front),
+                           sample_mask);
+  }
+  friend bool operator<(const PipelineKey& a, const PipelineKey& b) { return a.tie() < b.tie(); }
+};
+
+// Returns K, the smallest power of two >= every extent the scene needs (DRIVER.LAVAPIPE.POSITION),
+// or 0 when a coordinate is not finite (prepare() reports it).
+// rule: DRIVER.LAVAPIPE.POSITION
+double position_scale(const Scene& scene) {
+  double extent = std::max({1.0, static_cast<double>(scene.width), static_cast<double>(scene.height)});
+  for (const Primitive& p : scene.primitives) {
+    for (const FloatPoint& v : p.v) {
+      for (float c : v) {
+        if (!std::isfinite(c)) return 0.0;
+        extent = std::max(extent, std::fabs(static_cast<double>(c)));
+      }
+    }
+  }
+  // A margin of 2 px keeps the parts of points and lines that lie up to 1 px beyond their
+  // vertices inside the viewport (lavapipe drops what lies outside it).
+  extent += 2.0;
+  double k = 1.0;
+  while (k < extent) k *= 2.0;
+  return k;
+}
+
+bool is_line(PrimitiveType t) { return t == PrimitiveType::kLine || t == PrimitiveType::kLineStrip; }
+
+// The number of coverage slots of a primitive: one, or one per segment of a strip.
+std::uint32_t slot_count(const Primitive& p) {
+  if (p.type == PrimitiveType::kLineStrip) {
+    return p.v.size() < 2 ? 0U : static_cast<std::uint32_t>(p.v.size() - 1);
+  }
+  return 1U;
+}
+
+class LavapipeDriver final : public Driver {
+ public:
+  LavapipeDriver() = default;
+  LavapipeDriver(const LavapipeDriver&) = delete;
+  LavapipeDriver& operator=(const LavapipeDriver&) = delete;
+  ~LavapipeDriver() override { destroy(); }
+
+  // Creates the instance, selects the CPU device and creates everything draws share.
+  // Returns an empty string on success, else the reason.
+  // rule: DRIVER.LAVAPIPE.DEVICE
+  std::string init() {
+    VkApplicationInfo app{};
+    app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
+    app.pApplicationName = "rastrules";
+    app.apiVersion = VK_API_VERSION_1_2;
+    VkInstanceCreateInfo ici{};
+    ici.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
+    ici.pApplicationInfo = &app;
+    if (VkResult r = vkCreateInstance(&ici, nullptr, &instance_); r != VK_SUCCESS) {
+      instance_ = VK_NULL_HANDLE;
+      return vk_failed("vkCreateInstance (is a Vulkan loader installed?)", r);
+    }
+    std::uint32_t n = 0;
+    vkEnumeratePhysicalDevices(instance_, &n, nullptr);
+    std::vector<VkPhysicalDevice> devices(n);
+    vkEnumeratePhysicalDevices(instance_, &n, devices.data());
+    std::string seen;
+    for (VkPhysicalDevice d : devices) {
+      VkPhysicalDeviceProperties p{};
+      vkGetPhysicalDeviceProperties(d, &p);
+      seen += std::string(seen.empty() ? "" : ", ") + p.deviceName;
+      if (p.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU &&
+          std::string_view(p.deviceName).find("llvmpipe") != std::string_view::npos) {
+        physical_ = d;
+        props_ = p;
+        break;
+      }
+    }
+    if (physical_ == VK_NULL_HANDLE) {
+      return "lavapipe: no CPU Vulkan device named llvmpipe (install mesa-vulkan-drivers); devices: " +
+             (seen.empty() ? std::string("none") : seen);
+    }
+    // Keep Mesa's ICD loaded for the life of the process: the loader unloads it with the last
+    // instance, and its process-wide state (LLVM, caches) is not meant to be torn down and
+    // rebuilt by every driver that is opened and closed (it shows as leaks under
+    // LeakSanitizer). Only marks the already loaded library; does nothing if it is not.
+    static void* const pinned = dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+    (void)pinned;
+    if (std::string why = check_features(); !why.empty()) return why;
+    if (std::string why = create_device(); !why.empty()) return why;
+    return create_shared();
+  }
+
+  [[nodiscard]] const DriverInfo& info() const override { return info_; }
+
+  // rule: DRIVER.LAVAPIPE.SUPPORT
+  [[nodiscard]] std::string unsupported(const Scene& scene) const override {
+    const MultisampleState& ms = scene.msaa;
+    if (ms.pattern.kind != PatternKind::kStandard) {
+      return "sample pattern '" + std::string(to_string(ms.pattern.kind)) +
+             "' not supported (Vulkan standard sample locations only)";
+    }
+    const std::uint32_t samples = ms.count();
+    if (std::find(info_.sample_counts.begin(), info_.sample_counts.end(), samples) ==
+        info_.sample_counts.end()) {
+      return std::to_string(samples) + " samples not supported by " + props_.deviceName;
+    }
+    if (ms.shading == ShadingRate::kSample) {
+      return "sample-frequency shading not supported (the adapter observes coverage per pixel)";
+    }
+    if (scene.width > info_.max_target_side || scene.height > info_.max_target_side) {
+      return "target " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
+             " larger than " + std::to_string(info_.max_target_side);
+    }
+    std::uint64_t slots = 0;
+    for (const Primitive& p : scene.primitives) {
+      if (is_line(p.type)) {
+        if (p.aa) return "antialiased lines not supported";
+        switch (scene.line_mode) {
+          case LineMode::kD3DDiamond:
+            return "line mode 'd3d' (diamond exit) has no Vulkan equivalent";
+          case LineMode::kQuadWide:
+            return "line mode 'quad-wide' (1.4 px) not supported (Vulkan rectangular lines are 1.0 px wide here)";
+          case LineMode::kVulkanBresenham:
+            if (!info_.lines_bresenham) return "Bresenham lines not supported by the device";
+            break;
+          case LineMode::kQuadNarrow:
+            if (!info_.lines_rectangular) return "rectangular lines not supported by the device";
+            break;
+        }
+      }
+      slots += slot_count(p);
+    }
+    const double k = position_scale(scene);
+    if (k > max_k_) {
+      return "coordinates need a viewport of side " + std::to_string(2.0 * k) +
+             " (device limit: K <= " + std::to_string(max_k_) + ")";
+    }
+    const std::uint64_t bytes = slots * static_cast<std::uint64_t>(std::max(scene.width, 0)) *
+                                static_cast<std::uint64_t>(std::max(scene.height, 0)) * 4U;
+    if (bytes > kMaxCoverageBytes) {
+      return "coverage buffer of " + std::to_string(bytes) + " bytes exceeds " +
+             std::to_string(kMaxCoverageBytes);
+    }
+    return {};
+  }
+
+  // rule: DRIVER.LAVAPIPE.COVERAGE, DRIVER.LAVAPIPE.POSITION
+  [[nodiscard]] DrawResult draw(const Scene& scene) override {
+    if (std::string why = unsupported(scene); !why.empty()) return DriverError{"unsupported: " + why};
+    auto prepared = prepare(scene);
+    if (const auto* e = std::get_if<SceneError>(&prepared)) {
+      return DriverError{"invalid scene: " + e->what()};
+    }
+    const auto w = static_cast<std::uint32_t>(scene.width);
+    const auto h = static_cast<std::uint32_t>(scene.height);
+    std::vector<Fragment> out;
+    if (w == 0 || h == 0 || scene.primitives.empty()) return out;
+
+    // Slots and vertices: one draw per scene primitive, vertices as float32 exactly as read.
+    std::vector<std::uint32_t> first_slot;
+    std::vector<float> vertices;
+    std::uint32_t slots = 0;
+    for (const Primitive& p : scene.primitives) {
+      first_slot.push_back(slots);
+      slots += slot_count(p);
+      for (const FloatPoint& v : p.v) {
+        vertices.push_back(v[0]);
+        vertices.push_back(v[1]);
+      }
+    }
+    const VkDeviceSize cov_bytes = std::max<VkDeviceSize>(VkDeviceSize{slots} * w * h * 4U, 4U);
+    if (std::string why = ensure_buffer(coverage_, cov_bytes,
+                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                            VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+        !why.empty()) {
+      return DriverError{why};
+    }
+    // ensure_buffer reallocates exactly when the size grows: rebind then, whatever the handle.
+    if (coverage_.size != bound_size_) {
+      bind_coverage();
+      bound_size_ = coverage_.size;
+    }
+    if (std::string why = ensure_buffer(vertex_, std::max<VkDeviceSize>(vertices.size() * sizeof(float), 8),
+                                        VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        !why.empty()) {
+      return DriverError{why};
+    }
+    std::memcpy(vertex_.mapped, vertices.data(), vertices.size() * sizeof(float));
+    if (std::string why = ensure_framebuffer(w, h); !why.empty()) return DriverError{why};
+
+    const double k = position_scale(scene);
+    const auto samples = static_cast<VkSampleCountFlagBits>(scene.msaa.count());
+    const std::uint32_t mask = scene.msaa.effective_mask();
+
+    // The command buffer is in the initial state: it is reset as soon as its submission
+    // completes, before any buffer it used is replaced.
+    VkCommandBufferBeginInfo begin{};
+    begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vkBeginCommandBuffer(cmd_, &begin);
+    vkCmdFillBuffer(cmd_, coverage_.buffer, 0, cov_bytes, 0);
+    barrier(VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+            VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+            VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+
+    VkRenderPassBeginInfo rpb{};
+    rpb.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
+    rpb.renderPass = render_pass_;
+    rpb.framebuffer = framebuffer_;
+    rpb.renderArea = {{0, 0}, {w, h}};
+    vkCmdBeginRenderPass(cmd_, &rpb, VK_SUBPASS_CONTENTS_INLINE);
+    // rule: DRIVER.LAVAPIPE.POSITION
+    const auto kf = static_cast<float>(k);
+    const VkViewport viewport{-kf, -kf, 2.0F * kf, 2.0F * kf, 0.0F, 1.0F};
+    const VkRect2D scissor{{0, 0}, {w, h}};
+    vkCmdSetViewport(cmd_, 0, 1, &viewport);
+    vkCmdSetScissor(cmd_, 0, 1, &scissor);
+    vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 0, nullptr);
+    const VkDeviceSize zero = 0;
+    vkCmdBindVertexBuffers(cmd_, 0, 1, &vertex_.buffer, &zero);
+
+    VkPipeline bound = VK_NULL_HANDLE;
+    std::uint32_t first_vertex = 0;
+    for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+      const Primitive& p = scene.primitives[i];
+      PipelineKey key;
+      key.samples = samples;
+      key.sample_mask = mask;
+      switch (p.type) {
+        case PrimitiveType::kTriangle:
+          key.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+          key.cull = scene.state.cull == CullMode::kBack    ? VK_CULL_MODE_BACK_BIT
+                     : scene.state.cull == CullMode::kFront ? VK_CULL_MODE_FRONT_BIT
+                                                            : VK_CULL_MODE_NONE;
+          // Both y-down: on-screen winding maps directly (DRIVER.LAVAPIPE.SUPPORT).
+          key.front = scene.state.front_face == FrontFace::kClockwise ? VK_FRONT_FACE_CLOCKWISE
+                                                                      : VK_FRONT_FACE_COUNTER_CLOCKWISE;
+          break;
+        case PrimitiveType::kPoint:
+          key.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+          break;
+        case PrimitiveType::kLine:
+        case PrimitiveType::kLineStrip:
+          key.topology = p.type == PrimitiveType::kLine ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST
+                                                        : VK_PRIMITIVE_TOPOLOGY_LINE_STRIP;
+          key.line_mode = scene.line_mode == LineMode::kVulkanBresenham
+                              ? VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT
+                              : VK_LINE_RASTERIZATION_MODE_RECTANGULAR_EXT;
+          break;
+      }
+      auto pipeline = get_pipeline(key);
+      if (const auto* e = std::get_if<std::string>(&pipeline)) {
+        vkCmdEndRenderPass(cmd_);
+        vkEndCommandBuffer(cmd_);
+        vkResetCommandBuffer(cmd_, 0);
+        return DriverError{*e};
+      }
+      const VkPipeline pl = std::get<VkPipeline>(pipeline);
+      if (pl != bound) {
+        vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, pl);
+        bound = pl;
+      }
+      const Push push{static_cast<float>(1.0 / k), first_slot[i], w, h, slots};
+      vkCmdPushConstants(cmd_, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                         0, sizeof(Push), &push);
+      const auto count = static_cast<std::uint32_t>(p.v.size());
+      vkCmdDraw(cmd_, count, 1, first_vertex, 0);
+      first_vertex += count;
+    }
+    vkCmdEndRenderPass(cmd_);
+    barrier(VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+            VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+    if (VkResult r = vkEndCommandBuffer(cmd_); r != VK_SUCCESS) {
+      vkResetCommandBuffer(cmd_, 0);
+      return DriverError{vk_failed("vkEndCommandBuffer", r)};
+    }
+    VkSubmitInfo submit{};
+    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cmd_;
+    if (VkResult r = vkQueueSubmit(queue_, 1, &submit, fence_); r != VK_SUCCESS) {
+      vkResetCommandBuffer(cmd_, 0);
+      return DriverError{vk_failed("vkQueueSubmit", r)};
+    }
+    const VkResult waited = vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX);
+    vkResetFences(device_, 1, &fence_);
+    if (waited != VK_SUCCESS) return DriverError{vk_failed("vkWaitForFences", waited)};
+    vkResetCommandBuffer(cmd_, 0);
+
+    // rule: DRIVER.LAVAPIPE.COVERAGE
+    const auto* cov = static_cast<const std::uint32_t*>(coverage_.mapped);
+    const std::uint32_t all = full_mask(scene.msaa.count());
+    for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+      const bool strip = scene.primitives[i].type == PrimitiveType::kLineStrip;
+      const std::uint32_t n = slot_count(scene.primitives[i]);
+      for (std::uint32_t s = 0; s < n; ++s) {
+        const std::size_t plane = std::size_t{first_slot[i] + s} * w * h;
+        for (std::uint32_t y = 0; y < h; ++y) {
+          for (std::uint32_t x = 0; x < w; ++x) {
+            const std::uint32_t m = cov[plane + std::size_t{y} * w + x] & all;
+            if (m == 0) continue;
+            Fragment f(static_cast<std::uint32_t>(i), static_cast<std::int32_t>(x),
+                       static_cast<std::int32_t>(y), m);
+            if (strip) f.seg = s;
+            out.push_back(f);
+          }
+        }
+      }
+    }
+    std::sort(out.begin(), out.end(), fragment_before);
+    return out;
+  }
+
+ private:
+  std::string check_features() {
+    VkPhysicalDeviceLineRasterizationFeaturesEXT line{};
+    line.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT;
+    VkPhysicalDeviceFeatures2 f2{};
+    f2.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+    f2.pNext = &line;
+    vkGetPhysicalDeviceFeatures2(physical_, &f2);
+    if (f2.features.fragmentStoresAndAtomics != VK_TRUE) {
+      return "lavapipe: device lacks fragmentStoresAndAtomics (needed to observe coverage)";
+    }
+    if (f2.features.geometryShader != VK_TRUE) {
+      return "lavapipe: device lacks geometryShader (needed for gl_PrimitiveID in fragment shaders)";
+    }
+    std::uint32_t n = 0;
+    vkEnumerateDeviceExtensionProperties(physical_, nullptr, &n, nullptr);
+    std::vector<VkExtensionProperties> exts(n);
+    vkEnumerateDeviceExtensionProperties(physical_, nullptr, &n, exts.data());
+    has_line_ext_ = std::any_of(exts.begin(), exts.end(), [](const VkExtensionProperties& e) {
+      return std::strcmp(e.extensionName, VK_EXT_LINE_RASTERIZATION_EXTENSION_NAME) == 0;
+    });
+    bresenham_ = has_line_ext_ && line.bresenhamLines == VK_TRUE;
+    rectangular_ = has_line_ext_ && line.rectangularLines == VK_TRUE;
+    smooth_ = has_line_ext_ && line.smoothLines == VK_TRUE;
+
+    // Info (DRIVER.LAVAPIPE.DEVICE).
+    const VkPhysicalDeviceLimits& lim = props_.limits;
+    VkPhysicalDeviceDriverProperties drv{};
+    drv.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES;
+    VkPhysicalDeviceProperties2 p2{};
+    p2.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2;
+    p2.pNext = &drv;
+    vkGetPhysicalDeviceProperties2(physical_, &p2);
+    info_.name = "lavapipe";
+    info_.description = std::string(props_.deviceName) + ", " + drv.driverName + " " +
+                        drv.driverInfo + ", Vulkan " +
+                        std::to_string(VK_API_VERSION_MAJOR(props_.apiVersion)) + "." +
+                        std::to_string(VK_API_VERSION_MINOR(props_.apiVersion)) + "." +
+                        std::to_string(VK_API_VERSION_PATCH(props_.apiVersion)) +
+                        ", lines: " + (bresenham_ ? "bresenham " : "") +
+                        (rectangular_ ? "rectangular " : "") + (smooth_ ? "smooth" : "");
+    info_.subpixel_bits = static_cast<int>(lim.subPixelPrecisionBits);
+    const VkSampleCountFlags counts = lim.framebufferNoAttachmentsSampleCounts;
+    for (std::uint32_t c : {1U, 2U, 4U, 8U, 16U}) {
+      if ((counts & c) != 0U && (lim.standardSampleLocations == VK_TRUE || c == 1U)) {
+        info_.sample_counts.push_back(c);
+      }
+    }
+    info_.points = true;
+    info_.lines_bresenham = bresenham_;
+    info_.lines_rectangular = rectangular_;
+    info_.lines_d3d = false;
+    info_.sample_mask = true;
+    info_.sample_shading = false;
+    // rule: DRIVER.LAVAPIPE.POSITION
+    // K is a power of two with a viewport [-K, K]: 2K <= maxViewportDimensions and
+    // [-K, K] inside viewportBoundsRange.
+    const double max_dim = std::min(lim.maxViewportDimensions[0], lim.maxViewportDimensions[1]);
+    const double bound = std::min(-static_cast<double>(lim.viewportBoundsRange[0]),
+                                  static_cast<double>(lim.viewportBoundsRange[1]));
+    max_k_ = 1.0;
+    while (2.0 * (2.0 * max_k_) <= max_dim && 2.0 * max_k_ <= bound) max_k_ *= 2.0;
+    const double fb = std::min(lim.maxFramebufferWidth, lim.maxFramebufferHeight);
+    info_.max_target_side = static_cast<std::int32_t>(std::min(fb, max_k_));
+    return {};
+  }
+
+  std::string create_device() {
+    std::uint32_t n = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &n, nullptr);
+    std::vector<VkQueueFamilyProperties> families(n);
+    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &n, families.data());
+    bool found = false;
+    for (std::uint32_t i = 0; i < n && !found; ++i) {
+      if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) != 0U) {
+        family_ = i;
+        found = true;
+      }
+    }
+    if (!found) return "lavapipe: no graphics queue";
+    const float priority = 1.0F;
+    VkDeviceQueueCreateInfo qci{};
+    qci.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
+    qci.queueFamilyIndex = family_;
+    qci.queueCount = 1;
+    qci.pQueuePriorities = &priority;
+    VkPhysicalDeviceLineRasterizationFeaturesEXT line{};
+    line.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT;
+    line.bresenhamLines = bresenham_ ? VK_TRUE : VK_FALSE;
+    line.rectangularLines = rectangular_ ? VK_TRUE : VK_FALSE;
+    VkPhysicalDeviceFeatures2 f2{};
+    f2.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+    f2.pNext = has_line_ext_ ? &line : nullptr;
+    f2.features.fragmentStoresAndAtomics = VK_TRUE;
+    f2.features.geometryShader = VK_TRUE;
+    const char* ext = VK_EXT_LINE_RASTERIZATION_EXTENSION_NAME;
+    VkDeviceCreateInfo dci{};
+    dci.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
+    dci.pNext = &f2;
+    dci.queueCreateInfoCount = 1;
+    dci.pQueueCreateInfos = &qci;
+    dci.enabledExtensionCount = has_line_ext_ ? 1U : 0U;
+    dci.ppEnabledExtensionNames = has_line_ext_ ? &ext : nullptr;
+    if (VkResult r = vkCreateDevice(physical_, &dci, nullptr, &device_); r != VK_SUCCESS) {
+      device_ = VK_NULL_HANDLE;
+      return vk_failed("vkCreateDevice", r);
+    }
+    vkGetDeviceQueue(device_, family_, 0, &queue_);
+    vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+    return {};
+  }
+
+  std::string create_shared() {
+    VkCommandPoolCreateInfo pci{};
+    pci.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+    pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    pci.queueFamilyIndex = family_;
+    if (VkResult r = vkCreateCommandPool(device_, &pci, nullptr, &pool_); r != VK_SUCCESS) {
+      return vk_failed("vkCreateCommandPool", r);
+    }
+    VkCommandBufferAllocateInfo cai{};
+    cai.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+    cai.commandPool = pool_;
+    cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    cai.commandBufferCount = 1;
+    if (VkResult r = vkAllocateCommandBuffers(device_, &cai, &cmd_); r != VK_SUCCESS) {
+      return vk_failed("vkAllocateCommandBuffers", r);
+    }
+    VkFenceCreateInfo fci{};
+    fci.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+    if (VkResult r = vkCreateFence(device_, &fci, nullptr, &fence_); r != VK_SUCCESS) {
+      return vk_failed("vkCreateFence", r);
+    }
+    VkDescriptorSetLayoutBinding binding{};
+    binding.binding = 0;
+    binding.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    binding.descriptorCount = 1;
+    binding.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
+    VkDescriptorSetLayoutCreateInfo dli{};
+    dli.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+    dli.bindingCount = 1;
+    dli.pBindings = &binding;
+    if (VkResult r = vkCreateDescriptorSetLayout(device_, &dli, nullptr, &set_layout_); r != VK_SUCCESS) {
+      return vk_failed("vkCreateDescriptorSetLayout", r);
+    }
+    VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(Push)};
+    VkPipelineLayoutCreateInfo lci{};
+    lci.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+    lci.setLayoutCount = 1;
+    lci.pSetLayouts = &set_layout_;
+    lci.pushConstantRangeCount = 1;
+    lci.pPushConstantRanges = &range;
+    if (VkResult r = vkCreatePipelineLayout(device_, &lci, nullptr, &layout_); r != VK_SUCCESS) {
+      return vk_failed("vkCreatePipelineLayout", r);
+    }
+    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1};
+    VkDescriptorPoolCreateInfo dpi{};
+    dpi.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+    dpi.maxSets = 1;
+    dpi.poolSizeCount = 1;
+    dpi.pPoolSizes = &size;
+    if (VkResult r = vkCreateDescriptorPool(device_, &dpi, nullptr, &descriptor_pool_); r != VK_SUCCESS) {
+      return vk_failed("vkCreateDescriptorPool", r);
+    }
+    VkDescriptorSetAllocateInfo dai{};
+    dai.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+    dai.descriptorPool = descriptor_pool_;
+    dai.descriptorSetCount = 1;
+    dai.pSetLayouts = &set_layout_;
+    if (VkResult r = vkAllocateDescriptorSets(device_, &dai, &set_); r != VK_SUCCESS) {
+      return vk_failed("vkAllocateDescriptorSets", r);
+    }
+    for (auto [code, bytes, module] :
+         {std::tuple{kCoverage_vert, sizeof(kCoverage_vert), &vert_},
+          std::tuple{kCoverage_frag, sizeof(kCoverage_frag), &frag_}}) {
+      VkShaderModuleCreateInfo sci{};
+      sci.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+      sci.codeSize = bytes;
+      sci.pCode = code;
+      if (VkResult r = vkCreateShaderModule(device_, &sci, nullptr, module); r != VK_SUCCESS) {
+        return vk_failed("vkCreateShaderModule", r);
+      }
+    }
+    // A render pass without attachments: coverage goes to the storage buffer only, and the
+    // sample count is the pipeline's rasterizationSamples.
+    VkSubpassDescription subpass{};
+    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    VkRenderPassCreateInfo rci{};
+    rci.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
+    rci.subpassCount = 1;
+    rci.pSubpasses = &subpass;
+    if (VkResult r = vkCreateRenderPass(device_, &rci, nullptr, &render_pass_); r != VK_SUCCESS) {
+      return vk_failed("vkCreateRenderPass", r);
+    }
+    return {};
+  }
+
+  std::string ensure_buffer(HostBuffer& b, VkDeviceSize bytes, VkBufferUsageFlags usage) {
+    if (b.size >= bytes) return {};
+    // The previous command buffer has completed (each draw waits for its fence); wait anyway
+    // before destroying a buffer a descriptor set may still name. The caller rebinds the
+    // descriptor set after any reallocation: the new buffer may reuse the old handle value,
+    // so comparing handles would leave the set pointing at freed memory.
+    if (b.buffer != VK_NULL_HANDLE) {
+      vkDeviceWaitIdle(device_);
+      free_buffer(b);
+    }
+    VkDeviceSize size = 4096;
+    while (size < bytes) size *= 2;
+    VkBufferCreateInfo bci{};
+    bci.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+    bci.size = size;
+    bci.usage = usage;
+    bci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    if (VkResult r = vkCreateBuffer(device_, &bci, nullptr, &b.buffer); r != VK_SUCCESS) {
+      b.buffer = VK_NULL_HANDLE;
+      return vk_failed("vkCreateBuffer", r);
+    }
+    VkMemoryRequirements req{};
+    vkGetBufferMemoryRequirements(device_, b.buffer, &req);
+    const VkMemoryPropertyFlags want =
+        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    std::uint32_t type = memory_.memoryTypeCount;
+    for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
+      if ((req.memoryTypeBits & (1U << i)) != 0U &&
+          (memory_.memoryTypes[i].propertyFlags & want) == want) {
+        type = i;
+        break;
+      }
+    }
+    if (type == memory_.memoryTypeCount) return "lavapipe: no host-visible coherent memory";
+    VkMemoryAllocateInfo mai{};
+    mai.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+    mai.allocationSize = req.size;
+    mai.memoryTypeIndex = type;
+    if (VkResult r = vkAllocateMemory(device_, &mai, nullptr, &b.memory); r != VK_SUCCESS) {
+      b.memory = VK_NULL_HANDLE;
+      free_buffer(b);
+      return vk_failed("vkAllocateMemory", r);
+    }
+    vkBindBufferMemory(device_, b.buffer, b.memory, 0);
+    if (VkResult r = vkMapMemory(device_, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped); r != VK_SUCCESS) {
+      free_buffer(b);
+      return vk_failed("vkMapMemory", r);
+    }
+    b.size = size;
+    return {};
+  }
+
+  void free_buffer(HostBuffer& b) {
+    if (b.mapped != nullptr) vkUnmapMemory(device_, b.memory);
+    if (b.buffer != VK_NULL_HANDLE) vkDestroyBuffer(device_, b.buffer, nullptr);
+    if (b.memory != VK_NULL_HANDLE) vkFreeMemory(device_, b.memory, nullptr);
+    b = HostBuffer{};
+  }
+
+  // Points the descriptor set at the coverage buffer.
+  void bind_coverage() {
+    VkDescriptorBufferInfo bi{coverage_.buffer, 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet write{};
+    write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    write.dstSet = set_;
+    write.dstBinding = 0;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    write.pBufferInfo = &bi;
+    vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+  }
+
+  std::string ensure_framebuffer(std::uint32_t w, std::uint32_t h) {
+    if (framebuffer_ != VK_NULL_HANDLE && fb_w_ == w && fb_h_ == h) return {};
+    if (framebuffer_ != VK_NULL_HANDLE) {
+      vkDeviceWaitIdle(device_);
+      vkDestroyFramebuffer(device_, framebuffer_, nullptr);
+      framebuffer_ = VK_NULL_HANDLE;
+    }
+    VkFramebufferCreateInfo fci{};
+    fci.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
+    fci.renderPass = render_pass_;
+    fci.width = w;
+    fci.height = h;
+    fci.layers = 1;
+    if (VkResult r = vkCreateFramebuffer(device_, &fci, nullptr, &framebuffer_); r != VK_SUCCESS) {
+      framebuffer_ = VK_NULL_HANDLE;
+      return vk_failed("vkCreateFramebuffer", r);
+    }
+    fb_w_ = w;
+    fb_h_ = h;
+    return {};
+  }
+
+  void barrier(VkPipelineStageFlags src_stage, VkAccessFlags src, VkPipelineStageFlags dst_stage,
+               VkAccessFlags dst) {
+    VkMemoryBarrier mb{};
+    mb.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+    mb.srcAccessMask = src;
+    mb.dstAccessMask = dst;
+    vkCmdPipelineBarrier(cmd_, src_stage, dst_stage, 0, 1, &mb, 0, nullptr, 0, nullptr);
+  }
+
+  // Returns the cached pipeline for key, creating it on first use.
+  std::variant<VkPipeline, std::string> get_pipeline(const PipelineKey& key) {
+    if (auto it = pipelines_.find(key); it != pipelines_.end()) return it->second;
+    VkPipelineShaderStageCreateInfo stages[2]{};
+    stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+    stages[0].module = vert_;
+    stages[0].pName = "main";
+    stages[1] = stages[0];
+    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+    stages[1].module = frag_;
+    VkVertexInputBindingDescription vb{0, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX};
+    VkVertexInputAttributeDescription va{0, 0, VK_FORMAT_R32G32_SFLOAT, 0};
+    VkPipelineVertexInputStateCreateInfo vi{};
+    vi.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
+    vi.vertexBindingDescriptionCount = 1;
+    vi.pVertexBindingDescriptions = &vb;
+    vi.vertexAttributeDescriptionCount = 1;
+    vi.pVertexAttributeDescriptions = &va;
+    VkPipelineInputAssemblyStateCreateInfo ia{};
+    ia.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
+    ia.topology = key.topology;
+    VkPipelineViewportStateCreateInfo vp{};
+    vp.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
+    vp.viewportCount = 1;
+    vp.scissorCount = 1;
+    VkPipelineRasterizationLineStateCreateInfoEXT line{};
+    line.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_LINE_STATE_CREATE_INFO_EXT;
+    line.lineRasterizationMode = key.line_mode;
+    VkPipelineRasterizationStateCreateInfo rs{};
+    rs.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
+    rs.pNext = key.line_mode != VK_LINE_RASTERIZATION_MODE_DEFAULT_EXT ? &line : nullptr;
+    rs.polygonMode = VK_POLYGON_MODE_FILL;
+    rs.cullMode = key.cull;
+    rs.frontFace = key.front;
+    rs.lineWidth = 1.0F;
+    const VkSampleMask mask = key.sample_mask;
+    VkPipelineMultisampleStateCreateInfo ms{};
+    ms.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
+    ms.rasterizationSamples = key.samples;
+    ms.pSampleMask = &mask;
+    const VkDynamicState dyn[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo ds{};
+    ds.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
+    ds.dynamicStateCount = 2;
+    ds.pDynamicStates = dyn;
+    VkGraphicsPipelineCreateInfo gci{};
+    gci.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
+    gci.stageCount = 2;
+    gci.pStages = stages;
+    gci.pVertexInputState = &vi;
+    gci.pInputAssemblyState = &ia;
+    gci.pViewportState = &vp;
+    gci.pRasterizationState = &rs;
+    gci.pMultisampleState = &ms;
+    gci.pDynamicState = &ds;
+    gci.layout = layout_;
+    gci.renderPass = render_pass_;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    if (VkResult r = vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &gci, nullptr, &pipeline);
+        r != VK_SUCCESS) {
+      return vk_failed("vkCreateGraphicsPipelines", r);
+    }
+    pipelines_.emplace(key, pipeline);
+    return pipeline;
+  }
+
+  void destroy() {
+    if (device_ != VK_NULL_HANDLE) {
+      vkDeviceWaitIdle(device_);
+      for (auto& [key, p] : pipelines_) vkDestroyPipeline(device_, p, nullptr);
+      pipelines_.clear();
+      free_buffer(coverage_);
+      free_buffer(vertex_);
+      if (framebuffer_ != VK_NULL_HANDLE) vkDestroyFramebuffer(device_, framebuffer_, nullptr);
+      if (render_pass_ != VK_NULL_HANDLE) vkDestroyRenderPass(device_, render_pass_, nullptr);
+      if (vert_ != VK_NULL_HANDLE) vkDestroyShaderModule(device_, vert_, nullptr);
+      if (frag_ != VK_NULL_HANDLE) vkDestroyShaderModule(device_, frag_, nullptr);
+      if (descriptor_pool_ != VK_NULL_HANDLE) vkDestroyDescriptorPool(device_, descriptor_pool_, nullptr);
+      if (layout_ != VK_NULL_HANDLE) vkDestroyPipelineLayout(device_, layout_, nullptr);
+      if (set_layout_ != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(device_, set_layout_, nullptr);
+      if (fence_ != VK_NULL_HANDLE) vkDestroyFence(device_, fence_, nullptr);
+      if (pool_ != VK_NULL_HANDLE) vkDestroyCommandPool(device_, pool_, nullptr);
+      vkDestroyDevice(device_, nullptr);
+      device_ = VK_NULL_HANDLE;
+    }
+    if (instance_ != VK_NULL_HANDLE) {
+      vkDestroyInstance(instance_, nullptr);
+      instance_ = VK_NULL_HANDLE;
+    }
+  }
+
+  DriverInfo info_;
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+  VkPhysicalDeviceProperties props_{};
+  VkPhysicalDeviceMemoryProperties memory_{};
+  bool has_line_ext_ = false;
+  bool bresenham_ = false;
+  bool rectangular_ = false;
+  bool smooth_ = false;
+  double max_k_ = 1.0;
+  std::uint32_t family_ = 0;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  VkCommandPool pool_ = VK_NULL_HANDLE;
+  VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+  VkFence fence_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  VkShaderModule vert_ = VK_NULL_HANDLE;
+  VkShaderModule frag_ = VK_NULL_HANDLE;
+  VkRenderPass render_pass_ = VK_NULL_HANDLE;
+  VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
+  std::uint32_t fb_w_ = 0;
+  std::uint32_t fb_h_ = 0;
+  HostBuffer coverage_;
+  HostBuffer vertex_;
+  VkDeviceSize bound_size_ = 0;  // coverage_.size when the descriptor set was last written
+  std::map<PipelineKey, VkPipeline> pipelines_;
+};
+
+}  // namespace
+
+namespace detail {
+
+// rule: DRIVER.LAVAPIPE.DEVICE
+std::unique_ptr<Driver> open_lavapipe(std::string_view arg, std::string* error) {
+  if (!arg.empty()) {
+    *error = "driver 'lavapipe' takes no argument";
+    return nullptr;
+  }
+  auto d = std::make_unique<LavapipeDriver>();
+  if (std::string why = d->init(); !why.empty()) {
+    *error = why;
+    return nullptr;
+  }
+  return d;
+}
+
+}  // namespace detail
+}  // namespace rastrules::driver

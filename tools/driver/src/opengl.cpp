@@ -1,0 +1,599 @@
+// SPDX-License-Identifier: MIT
+// The OpenGL adapter: draws a scene with Mesa's llvmpipe through EGL, headless (the surfaceless
+// platform, no window and no pbuffer), in a GL 4.3+ core context, and reads back per-primitive,
+// per-sample coverage from a shader storage buffer that the fragment shader ORs
+// gl_SampleMaskIn into, like the lavapipe adapter. The window origin is made upper-left with
+// glClipControl, so the framebuffer is y-down like the scene.
+// Implements: DRIVER.OPENGL.DEVICE, DRIVER.OPENGL.ORIGIN, DRIVER.OPENGL.POSITION,
+//             DRIVER.OPENGL.COVERAGE, DRIVER.OPENGL.SUPPORT
+
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/glcorearb.h>
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "drivers.hpp"
+#include "rastrules/driver/opengl_shaders.h"
+#include "rastrules/scene.hpp"
+
+namespace rastrules::driver {
+namespace {
+
+// The largest coverage buffer one draw may use (slots * width * height * 4 bytes).
+constexpr std::uint64_t kMaxCoverageBytes = std::uint64_t{256} << 20;
+
+// Uniform locations of shaders/opengl_coverage.*.
+constexpr GLint kUniformInvK = 0;
+constexpr GLint kUniformSlot = 1;
+constexpr GLint kUniformWidth = 2;
+constexpr GLint kUniformHeight = 3;
+constexpr GLint kUniformSlots = 4;
+
+bool is_line(PrimitiveType t) { return t == PrimitiveType::kLine || t == PrimitiveType::kLineStrip; }
+
+// The number of coverage slots of a primitive: one, or one per segment of a strip.
+std::uint32_t slot_count(const Primitive& p) {
+  if (p.type == PrimitiveType::kLineStrip) {
+    return p.v.size() < 2 ? 0U : static_cast<std::uint32_t>(p.v.size() - 1);
+  }
+  return 1U;
+}
+
+// Returns K, the smallest power of two >= every extent the scene needs, or 0 when a
+// coordinate is not finite (prepare() reports it). Same argument as DRIVER.LAVAPIPE.POSITION.
+// rule: DRIVER.OPENGL.POSITION
+double position_scale(const Scene& scene) {
+  double extent = std::max({1.0, static_cast<double>(scene.width), static_cast<double>(scene.height)});
+  for (const Primitive& p : scene.primitives) {
+    for (const FloatPoint& v : p.v) {
+      for (float c : v) {
+        if (!std::isfinite(c)) return 0.0;
+        extent = std::max(extent, std::fabs(static_cast<double>(c)));
+      }
+    }
+  }
+  extent += 2.0;  // keeps point squares and line rectangles inside the viewport
+  double k = 1.0;
+  while (k < extent) k *= 2.0;
+  return k;
+}
+
+std::string egl_failed(const char* what) {
+  return std::string("opengl: ") + what + " failed (EGL error 0x" + [] {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%04X", static_cast<unsigned>(eglGetError()));
+    return std::string(buf);
+  }() + ")";
+}
+
+bool has_extension(const char* list, std::string_view name) {
+  if (list == nullptr) return false;
+  std::string_view all(list);
+  std::size_t pos = 0;
+  while (pos < all.size()) {
+    const std::size_t end = std::min(all.find(' ', pos), all.size());
+    if (all.substr(pos, end - pos) == name) return true;
+    pos = end + 1;
+  }
+  return false;
+}
+
+class OpenGLDriver final : public Driver {
+ public:
+  OpenGLDriver() = default;
+  OpenGLDriver(const OpenGLDriver&) = delete;
+  OpenGLDriver& operator=(const OpenGLDriver&) = delete;
+  ~OpenGLDriver() override { destroy(); }
+
+  // Opens the display, creates the context and everything draws share. Returns an empty
+  // string on success, else the reason.
+  // rule: DRIVER.OPENGL.DEVICE
+  std::string init() {
+    if (std::string why = open_display(); !why.empty()) return why;
+    if (std::string why = create_context(); !why.empty()) return why;
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    if (renderer == nullptr || std::string_view(renderer).find("llvmpipe") == std::string_view::npos) {
+      return std::string("opengl: the renderer is '") + (renderer != nullptr ? renderer : "unknown") +
+             "', not llvmpipe (install libgl1-mesa-dri and libegl-mesa0)";
+    }
+    // Keep Mesa's EGL and DRI drivers loaded for the life of the process: their process-wide
+    // state (LLVM, caches) is not meant to be torn down by every driver that is opened and
+    // closed (it shows as leaks under LeakSanitizer). Only marks already loaded libraries.
+    for (const char* lib : {"libEGL_mesa.so.0", "swrast_dri.so", "libgallium_dri.so", "libglapi.so.0"}) {
+      void* pinned = dlopen(lib, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+      (void)pinned;  // deliberately never closed
+    }
+    if (std::string why = query_limits(renderer, version); !why.empty()) return why;
+    return create_shared();
+  }
+
+  [[nodiscard]] const DriverInfo& info() const override { return info_; }
+
+  // rule: DRIVER.OPENGL.SUPPORT
+  [[nodiscard]] std::string unsupported(const Scene& scene) const override {
+    const MultisampleState& ms = scene.msaa;
+    if (ms.pattern.kind != PatternKind::kStandard) {
+      return "sample pattern '" + std::string(to_string(ms.pattern.kind)) +
+             "' not supported (OpenGL has the implementation's fixed positions only)";
+    }
+    const std::uint32_t samples = ms.count();
+    if (std::find(info_.sample_counts.begin(), info_.sample_counts.end(), samples) ==
+        info_.sample_counts.end()) {
+      return std::to_string(samples) + " samples not supported by " + renderer_ +
+             " with the standard positions";
+    }
+    if (samples == 1 && (ms.effective_mask() & 1U) == 0U) {
+      return "a sample mask without sample 0 on a 1-sample target (OpenGL ignores the sample "
+             "mask without a multisample buffer)";
+    }
+    if (ms.shading == ShadingRate::kSample) {
+      return "sample-frequency shading not supported (the adapter observes coverage per pixel)";
+    }
+    if (scene.width > info_.max_target_side || scene.height > info_.max_target_side) {
+      return "target " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
+             " larger than " + std::to_string(info_.max_target_side);
+    }
+    std::uint64_t slots = 0;
+    for (const Primitive& p : scene.primitives) {
+      if (is_line(p.type)) {
+        if (p.aa) return "antialiased lines not supported (GL_LINE_SMOOTH is not used)";
+        if (samples == 1 && scene.line_mode != LineMode::kVulkanBresenham) {
+          return "line mode '" + std::string(to_string(scene.line_mode)) +
+                 "' not supported on 1 sample (OpenGL aliased lines are 'vulkan-bresenham')";
+        }
+        if (samples > 1 && scene.line_mode != LineMode::kQuadNarrow) {
+          return "line mode '" + std::string(to_string(scene.line_mode)) +
+                 "' not supported on a multisampled target (OpenGL multisampled lines are "
+                 "rectangles, 'quad-narrow')";
+        }
+      }
+      slots += slot_count(p);
+    }
+    const double k = position_scale(scene);
+    if (k > max_k_) {
+      return "coordinates need a viewport of side " + std::to_string(2.0 * k) +
+             " (limit: K <= " + std::to_string(max_k_) + ")";
+    }
+    const std::uint64_t bytes = slots * static_cast<std::uint64_t>(std::max(scene.width, 0)) *
+                                static_cast<std::uint64_t>(std::max(scene.height, 0)) * 4U;
+    if (bytes > kMaxCoverageBytes) {
+      return "coverage buffer of " + std::to_string(bytes) + " bytes exceeds " +
+             std::to_string(kMaxCoverageBytes);
+    }
+    return {};
+  }
+
+  // rule: DRIVER.OPENGL.COVERAGE, DRIVER.OPENGL.POSITION
+  [[nodiscard]] DrawResult draw(const Scene& scene) override {
+    if (std::string why = unsupported(scene); !why.empty()) return DriverError{"unsupported: " + why};
+    auto prepared = prepare(scene);
+    if (const auto* e = std::get_if<SceneError>(&prepared)) {
+      return DriverError{"invalid scene: " + e->what()};
+    }
+    const auto w = static_cast<std::uint32_t>(scene.width);
+    const auto h = static_cast<std::uint32_t>(scene.height);
+    std::vector<Fragment> out;
+    if (w == 0 || h == 0 || scene.primitives.empty()) return out;
+    if (eglMakeCurrent(display_, surface_, surface_, context_) != EGL_TRUE) {
+      return DriverError{egl_failed("eglMakeCurrent")};
+    }
+    while (glGetError() != GL_NO_ERROR) {
+    }
+
+    // Slots and vertices: one draw per scene primitive, vertices as float32 exactly as read.
+    std::vector<std::uint32_t> first_slot;
+    std::vector<float> vertices;
+    std::uint32_t slots = 0;
+    for (const Primitive& p : scene.primitives) {
+      first_slot.push_back(slots);
+      slots += slot_count(p);
+      for (const FloatPoint& v : p.v) {
+        vertices.push_back(v[0]);
+        vertices.push_back(v[1]);
+      }
+    }
+    const std::size_t cov_words = std::max<std::size_t>(std::size_t{slots} * w * h, 1);
+    const std::uint32_t samples = scene.msaa.count();
+    if (std::string why = ensure_framebuffer(w, h, samples); !why.empty()) return DriverError{why};
+
+    // The coverage buffer: grown by doubling; its storage is re-specified in place and the
+    // binding point is rewritten on every draw, so no stale binding can survive a regrowth.
+    if (coverage_words_ < cov_words) {
+      std::size_t words = 1024;
+      while (words < cov_words) words *= 2;
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, coverage_);
+      glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(words * 4U), nullptr,
+                   GL_DYNAMIC_READ);
+      coverage_words_ = words;
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, coverage_);
+    const GLuint zero = 0;
+    glClearBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, 0,
+                         static_cast<GLsizeiptr>(cov_words * 4U), GL_RED_INTEGER, GL_UNSIGNED_INT,
+                         &zero);
+    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(float)),
+                 vertices.data(), GL_STREAM_DRAW);
+    glBindVertexArray(vao_);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+    glEnableVertexAttribArray(0);
+    glUseProgram(program_);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+
+    // rule: DRIVER.OPENGL.POSITION
+    const double k = position_scale(scene);
+    const auto ki = static_cast<GLint>(k);
+    glViewport(-ki, -ki, 2 * ki, 2 * ki);
+    glDepthRangef(0.0F, 1.0F);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, static_cast<GLsizei>(w), static_cast<GLsizei>(h));
+    glUniform1f(kUniformInvK, static_cast<float>(1.0 / k));
+    glUniform1ui(kUniformWidth, w);
+    glUniform1ui(kUniformHeight, h);
+    glUniform1ui(kUniformSlots, slots);
+
+    // Multisampling and the sample mask (DRIVER.OPENGL.SUPPORT).
+    if (samples > 1) {
+      glEnable(GL_MULTISAMPLE);
+      glEnable(GL_SAMPLE_MASK);
+      glSampleMaski(0, scene.msaa.effective_mask());
+    } else {
+      glDisable(GL_SAMPLE_MASK);
+    }
+
+    GLint first_vertex = 0;
+    for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+      const Primitive& p = scene.primitives[i];
+      GLenum mode = GL_TRIANGLES;
+      switch (p.type) {
+        case PrimitiveType::kTriangle:
+          mode = GL_TRIANGLES;
+          if (scene.state.cull == CullMode::kNone) {
+            glDisable(GL_CULL_FACE);
+          } else {
+            glEnable(GL_CULL_FACE);
+            glCullFace(scene.state.cull == CullMode::kBack ? GL_BACK : GL_FRONT);
+          }
+          // rule: DRIVER.OPENGL.ORIGIN
+          // Under GL_UPPER_LEFT the sign of GL's window-space area is reversed, so the
+          // orientation is the one seen in the y-down image: clockwise on screen is GL_CW.
+          glFrontFace(scene.state.front_face == FrontFace::kClockwise ? GL_CW : GL_CCW);
+          break;
+        case PrimitiveType::kPoint:
+          mode = GL_POINTS;
+          glDisable(GL_CULL_FACE);
+          break;
+        case PrimitiveType::kLine:
+        case PrimitiveType::kLineStrip:
+          mode = p.type == PrimitiveType::kLine ? GL_LINES : GL_LINE_STRIP;
+          glDisable(GL_CULL_FACE);
+          break;
+      }
+      glUniform1ui(kUniformSlot, first_slot[i]);
+      const auto count = static_cast<GLsizei>(p.v.size());
+      glDrawArrays(mode, first_vertex, count);
+      first_vertex += count;
+    }
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<std::uint32_t> cov(cov_words);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, coverage_);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(cov_words * 4U), cov.data());
+    if (GLenum err = glGetError(); err != GL_NO_ERROR) {
+      return DriverError{"opengl: GL error " + std::to_string(err) + " while drawing"};
+    }
+
+    // rule: DRIVER.OPENGL.COVERAGE
+    const std::uint32_t all = full_mask(samples);
+    for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+      const bool strip = scene.primitives[i].type == PrimitiveType::kLineStrip;
+      const std::uint32_t n = slot_count(scene.primitives[i]);
+      for (std::uint32_t s = 0; s < n; ++s) {
+        const std::size_t plane = std::size_t{first_slot[i] + s} * w * h;
+        for (std::uint32_t y = 0; y < h; ++y) {
+          for (std::uint32_t x = 0; x < w; ++x) {
+            const std::uint32_t m = cov[plane + std::size_t{y} * w + x] & all;
+            if (m == 0) continue;
+            Fragment f(static_cast<std::uint32_t>(i), static_cast<std::int32_t>(x),
+                       static_cast<std::int32_t>(y), m);
+            if (strip) f.seg = s;
+            out.push_back(f);
+          }
+        }
+      }
+    }
+    std::sort(out.begin(), out.end(), fragment_before);
+    return out;
+  }
+
+ private:
+  // rule: DRIVER.OPENGL.DEVICE
+  std::string open_display() {
+    const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    if (has_extension(client, "EGL_MESA_platform_surfaceless")) {
+      auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+          eglGetProcAddress("eglGetPlatformDisplayEXT"));
+      if (get_platform_display != nullptr) {
+        display_ = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        platform_ = "surfaceless";
+      }
+    }
+    if (display_ == EGL_NO_DISPLAY) {
+      display_ = eglGetDisplay(EGL_DEFAULT_DISPLAY);
+      platform_ = "default";
+    }
+    if (display_ == EGL_NO_DISPLAY) return "opengl: no EGL display (install libegl-mesa0)";
+    EGLint major = 0;
+    EGLint minor = 0;
+    if (eglInitialize(display_, &major, &minor) != EGL_TRUE) {
+      display_ = EGL_NO_DISPLAY;
+      return egl_failed("eglInitialize (is Mesa's EGL installed?)");
+    }
+    egl_version_ = std::to_string(major) + "." + std::to_string(minor);
+    if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE) return egl_failed("eglBindAPI(EGL_OPENGL_API)");
+    return {};
+  }
+
+  std::string create_context() {
+    const char* exts = eglQueryString(display_, EGL_EXTENSIONS);
+    const bool no_config = has_extension(exts, "EGL_KHR_no_config_context") ||
+                           has_extension(exts, "EGL_MESA_configless_context");
+    const bool surfaceless = has_extension(exts, "EGL_KHR_surfaceless_context");
+    EGLConfig config = nullptr;  // EGL_NO_CONFIG_KHR
+    if (!no_config || !surfaceless) {
+      // The fallback: a config with a 1x1 pbuffer to make the context current on.
+      const EGLint attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
+                                EGL_NONE};
+      EGLint n = 0;
+      if (eglChooseConfig(display_, attribs, &config, 1, &n) != EGL_TRUE || n < 1) {
+        return egl_failed("eglChooseConfig (no pbuffer OpenGL config)");
+      }
+      const EGLint pb[] = {EGL_WIDTH, 1, EGL_HEIGHT, 1, EGL_NONE};
+      surface_ = eglCreatePbufferSurface(display_, config, pb);
+      if (surface_ == EGL_NO_SURFACE) return egl_failed("eglCreatePbufferSurface");
+    }
+    for (const auto& [maj, min] : {std::array<EGLint, 2>{4, 5}, std::array<EGLint, 2>{4, 3}}) {
+      const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, maj, EGL_CONTEXT_MINOR_VERSION, min,
+                                EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                EGL_NONE};
+      context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, attribs);
+      if (context_ != EGL_NO_CONTEXT) break;
+    }
+    if (context_ == EGL_NO_CONTEXT) return egl_failed("eglCreateContext (OpenGL 4.3 core)");
+    if (eglMakeCurrent(display_, surface_, surface_, context_) != EGL_TRUE) {
+      return egl_failed("eglMakeCurrent");
+    }
+    return {};
+  }
+
+  // rule: DRIVER.OPENGL.DEVICE, DRIVER.OPENGL.POSITION
+  std::string query_limits(const char* renderer, const char* version) {
+    GLint major = 0;
+    GLint minor = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    if (major < 4 || (major == 4 && minor < 3)) {
+      return "opengl: OpenGL " + std::to_string(major) + "." + std::to_string(minor) +
+             " (needs 4.3 for shader storage buffers)";
+    }
+    // glClipControl: core in 4.5, else ARB_clip_control (DRIVER.OPENGL.ORIGIN).
+    bool clip_control = major > 4 || minor >= 5;
+    GLint n_ext = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &n_ext);
+    for (GLint i = 0; i < n_ext && !clip_control; ++i) {
+      const char* e = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
+      clip_control = e != nullptr && std::string_view(e) == "GL_ARB_clip_control";
+    }
+    if (!clip_control) return "opengl: no glClipControl (needs OpenGL 4.5 or ARB_clip_control)";
+    renderer_ = renderer;
+    info_.name = "opengl";
+    info_.description = std::string(renderer) + ", OpenGL " + version + ", EGL " + egl_version_ +
+                        " (" + platform_ + "), origin upper-left (glClipControl)";
+    GLint bits = -1;
+    glGetIntegerv(GL_SUBPIXEL_BITS, &bits);
+    info_.subpixel_bits = bits;
+    GLint max_samples = 0;
+    glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+    info_.sample_counts = {1};
+    if (max_samples >= 4 && standard_positions(4)) info_.sample_counts.push_back(4);
+    info_.points = true;
+    info_.lines_bresenham = true;
+    info_.lines_rectangular = false;  // only on multisampled targets (DRIVER.OPENGL.SUPPORT)
+    info_.lines_d3d = false;
+    info_.sample_mask = true;
+    info_.sample_shading = false;
+    // K is a power of two with a viewport [-K, K]: 2K <= GL_MAX_VIEWPORT_DIMS and [-K, K]
+    // inside GL_VIEWPORT_BOUNDS_RANGE.
+    GLint dims[2] = {0, 0};
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, dims);
+    GLfloat range[2] = {0.0F, 0.0F};
+    glGetFloatv(GL_VIEWPORT_BOUNDS_RANGE, range);
+    GLint rb = 0;
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &rb);
+    const double max_dim = std::min(dims[0], dims[1]);
+    const double bound = std::min(-static_cast<double>(range[0]), static_cast<double>(range[1]));
+    max_k_ = 1.0;
+    while (2.0 * (2.0 * max_k_) <= max_dim && 2.0 * max_k_ <= bound) max_k_ *= 2.0;
+    info_.max_target_side = static_cast<std::int32_t>(std::min(static_cast<double>(rb), max_k_));
+    return {};
+  }
+
+  // Returns whether the n-sample positions of a GL_R8 renderbuffer are the standard pattern
+  // (GL_SAMPLE_POSITION: in [0, 1] of the pixel, y counted like the framebuffer's rows).
+  bool standard_positions(std::uint32_t n) {
+    GLuint rb = 0;
+    GLuint fb = 0;
+    glGenRenderbuffers(1, &rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, static_cast<GLsizei>(n), GL_R8, 4, 4);
+    glGenFramebuffers(1, &fb);
+    glBindFramebuffer(GL_FRAMEBUFFER, fb);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
+    bool ok = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    GLint got = 0;
+    glGetIntegerv(GL_SAMPLES, &got);
+    ok = ok && got == static_cast<GLint>(n);
+    const SamplePattern want = standard_pattern(n);
+    for (std::uint32_t i = 0; ok && i < n; ++i) {
+      GLfloat pos[2] = {-1.0F, -1.0F};
+      glGetMultisamplefv(GL_SAMPLE_POSITION, i, pos);
+      const float sx = pos[0] * 16.0F - 8.0F;
+      const float sy = pos[1] * 16.0F - 8.0F;
+      ok = sx == static_cast<float>(want.positions[i].x) && sy == static_cast<float>(want.positions[i].y);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &fb);
+    glDeleteRenderbuffers(1, &rb);
+    return ok;
+  }
+
+  std::string compile(GLenum stage, const char* source, GLuint* shader) {
+    *shader = glCreateShader(stage);
+    glShaderSource(*shader, 1, &source, nullptr);
+    glCompileShader(*shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(*shader, GL_COMPILE_STATUS, &ok);
+    if (ok == GL_TRUE) return {};
+    std::array<char, 1024> log{};
+    glGetShaderInfoLog(*shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
+    std::string msg(log.data());
+    std::replace(msg.begin(), msg.end(), '\n', ' ');
+    return "opengl: shader compilation failed: " + msg;
+  }
+
+  // The program, buffers and fixed state shared by all draws.
+  // rule: DRIVER.OPENGL.ORIGIN, DRIVER.OPENGL.SUPPORT
+  std::string create_shared() {
+    GLuint vs = 0;
+    GLuint fs = 0;
+    std::string why = compile(GL_VERTEX_SHADER, kGlCoverage_vert, &vs);
+    if (why.empty()) why = compile(GL_FRAGMENT_SHADER, kGlCoverage_frag, &fs);
+    if (why.empty()) {
+      program_ = glCreateProgram();
+      glAttachShader(program_, vs);
+      glAttachShader(program_, fs);
+      glLinkProgram(program_);
+      GLint ok = GL_FALSE;
+      glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+      if (ok != GL_TRUE) why = "opengl: program link failed";
+    }
+    if (vs != 0) glDeleteShader(vs);
+    if (fs != 0) glDeleteShader(fs);
+    if (!why.empty()) return why;
+    glGenVertexArrays(1, &vao_);
+    glGenBuffers(1, &vertex_buffer_);
+    glGenBuffers(1, &coverage_);
+    // Upper-left origin: window y runs down like the scene's (DRIVER.OPENGL.ORIGIN).
+    glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
+    for (const GLenum cap : std::to_array<GLenum>({GL_DITHER, GL_BLEND, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_POLYGON_SMOOTH,
+                      GL_LINE_SMOOTH, GL_SAMPLE_SHADING, GL_SAMPLE_ALPHA_TO_COVERAGE,
+                      GL_SAMPLE_COVERAGE, GL_PROGRAM_POINT_SIZE, GL_POLYGON_OFFSET_FILL,
+                      GL_DEPTH_CLAMP, GL_RASTERIZER_DISCARD, GL_COLOR_LOGIC_OP})) {
+      glDisable(cap);
+    }
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glPointSize(1.0F);
+    glLineWidth(1.0F);
+    glProvokingVertex(GL_LAST_VERTEX_CONVENTION);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    if (GLenum err = glGetError(); err != GL_NO_ERROR) {
+      return "opengl: GL error " + std::to_string(err) + " while setting up";
+    }
+    return {};
+  }
+
+  // A framebuffer with one GL_R8 renderbuffer of the target's size and sample count.
+  std::string ensure_framebuffer(std::uint32_t w, std::uint32_t h, std::uint32_t samples) {
+    if (framebuffer_ != 0 && fb_w_ == w && fb_h_ == h && fb_samples_ == samples) return {};
+    if (framebuffer_ == 0) glGenFramebuffers(1, &framebuffer_);
+    if (renderbuffer_ == 0) glGenRenderbuffers(1, &renderbuffer_);
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer_);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? static_cast<GLsizei>(samples) : 0,
+                                     GL_R8, static_cast<GLsizei>(w), static_cast<GLsizei>(h));
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffer_);
+    if (GLenum st = glCheckFramebufferStatus(GL_FRAMEBUFFER); st != GL_FRAMEBUFFER_COMPLETE) {
+      fb_w_ = 0;
+      return "opengl: framebuffer incomplete (status " + std::to_string(st) + ")";
+    }
+    GLint got = 0;
+    glGetIntegerv(GL_SAMPLES, &got);
+    if (got != static_cast<GLint>(samples > 1 ? samples : 0)) {
+      fb_w_ = 0;
+      return "opengl: asked for " + std::to_string(samples) + " samples, got " + std::to_string(got);
+    }
+    fb_w_ = w;
+    fb_h_ = h;
+    fb_samples_ = samples;
+    return {};
+  }
+
+  void destroy() {
+    if (display_ == EGL_NO_DISPLAY) return;
+    if (context_ != EGL_NO_CONTEXT &&
+        eglMakeCurrent(display_, surface_, surface_, context_) == EGL_TRUE) {
+      if (program_ != 0) glDeleteProgram(program_);
+      if (vao_ != 0) glDeleteVertexArrays(1, &vao_);
+      if (vertex_buffer_ != 0) glDeleteBuffers(1, &vertex_buffer_);
+      if (coverage_ != 0) glDeleteBuffers(1, &coverage_);
+      if (framebuffer_ != 0) glDeleteFramebuffers(1, &framebuffer_);
+      if (renderbuffer_ != 0) glDeleteRenderbuffers(1, &renderbuffer_);
+    }
+    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
+    if (surface_ != EGL_NO_SURFACE) eglDestroySurface(display_, surface_);
+    // No eglTerminate: the display is one per process and shared by every opened driver;
+    // terminating it would destroy the contexts of the others (DRIVER.OPENGL.DEVICE).
+    display_ = EGL_NO_DISPLAY;
+  }
+
+  DriverInfo info_;
+  std::string renderer_;
+  std::string platform_;
+  std::string egl_version_;
+  double max_k_ = 1.0;
+  EGLDisplay display_ = EGL_NO_DISPLAY;
+  EGLSurface surface_ = EGL_NO_SURFACE;
+  EGLContext context_ = EGL_NO_CONTEXT;
+  GLuint program_ = 0;
+  GLuint vao_ = 0;
+  GLuint vertex_buffer_ = 0;
+  GLuint coverage_ = 0;
+  std::size_t coverage_words_ = 0;
+  GLuint framebuffer_ = 0;
+  GLuint renderbuffer_ = 0;
+  std::uint32_t fb_w_ = 0;
+  std::uint32_t fb_h_ = 0;
+  std::uint32_t fb_samples_ = 0;
+};
+
+}  // namespace
+
+namespace detail {
+
+// rule: DRIVER.OPENGL.DEVICE
+std::unique_ptr<Driver> open_opengl(std::string_view arg, std::string* error) {
+  if (!arg.empty()) {
+    *error = "driver 'opengl' takes no argument";
+    return nullptr;
+  }
+  auto d = std::make_unique<OpenGLDriver>();
+  if (std::string why = d->init(); !why.empty()) {
+    *error = why;
+    return nullptr;
+  }
+  return d;
+}
+
+}  // namespace detail
+}  // namespace rastrules::driver

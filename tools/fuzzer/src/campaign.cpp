@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: MIT
+// Campaigns: generate, draw, compare, shrink every mismatch and write its outputs.
+// Implements: FUZZ.GENERATE, FUZZ.SHRINK, FUZZ.REPORT
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "rastrules/fuzzer/fuzzer.hpp"
+#include "rastrules/io/scene_json.hpp"
+
+namespace rastrules::fuzzer {
+namespace {
+
+using nlohmann::json;
+
+json diff_json(const std::vector<DiffEntry>& list) {
+  json a = json::array();
+  for (const DiffEntry& d : list) a.push_back({{"prim", d.prim}, {"x", d.x}, {"y", d.y}, {"mask", d.mask}});
+  return a;
+}
+
+std::string origin_note(Profile p) {
+  return p == Profile::kOpenGL
+             ? "lower-left in OpenGL; scenes and reports use the y-down frame of spec/conventions.md (the opengl adapter sets an upper-left origin with glClipControl)"
+             : "upper-left";
+}
+
+json finding_json(const Finding& f, const Settings& s, const std::string& driver) {
+  json j = {{"seed", s.seed},
+            {"case", f.case_index},
+            {"family", f.family},
+            {"driver", driver},
+            {"profile", std::string(to_string(s.profile))},
+            {"mode", std::string(to_string(s.mode))},
+            {"origin", origin_note(s.profile)},
+            {"compared_with_fill", std::string(to_string(f.comparison.compared_with))},
+            {"primitives_before", f.original.primitives.size()},
+            {"primitives_after", f.shrunk.primitives.size()},
+            {"missing", diff_json(f.comparison.missing)},
+            {"extra", diff_json(f.comparison.extra)}};
+  if (f.duplicate_of) j["duplicate_of"] = *f.duplicate_of;
+  if (!f.files.scene.empty()) {
+    j["scene"] = f.files.scene;
+    j["shrunk_scene"] = f.files.shrunk;
+    j["picture"] = f.files.picture;
+    j["report"] = f.files.report;
+  }
+  return j;
+}
+
+bool write_text(const std::string& path, const std::string& text, std::string* error) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.close();
+  if (!out) {
+    *error = path + ": cannot write";
+    return false;
+  }
+  return true;
+}
+
+class Campaign {
+ public:
+  Campaign(driver::Driver& driver, const Settings& settings) : driver_(driver), settings_(settings) {}
+
+  // Compares one case; on a mismatch shrinks it and writes its outputs. Returns false when
+  // the campaign must stop (s.error set).
+  bool run_case(std::uint64_t index, const std::string& family, const Scene& scene, Summary& s) {
+    std::string error;
+    auto c = draw_and_compare(driver_, scene, settings_.profile, settings_.mode, &error);
+    if (!c) {
+      s.error = "case " + std::to_string(index) + ": " + error;
+      return false;
+    }
+    ++s.cases;
+    for (const FillConvention f : c->conventions) ++tally_[f];
+    if (c->match) return true;
+    ++s.mismatches;
+    Finding f;
+    f.case_index = index;
+    f.family = family;
+    f.original = scene;
+    f.shrunk = shrink(scene, [&](const Scene& t) {
+      std::string ignored;
+      auto r = draw_and_compare(driver_, t, settings_.profile, settings_.mode, &ignored);
+      return r.has_value() && !r->match;
+    });
+    auto shrunk = draw_and_compare(driver_, f.shrunk, settings_.profile, settings_.mode, &error);
+    f.comparison = shrunk ? std::move(*shrunk) : std::move(*c);
+    if (!shrunk) f.shrunk = scene;
+    f.key = io::write_scene(f.shrunk);
+    if (const auto it = first_.find(f.key); it != first_.end()) {
+      f.duplicate_of = it->second;
+    } else {
+      first_.emplace(f.key, index);
+      ++s.unique;
+      if (!settings_.out_dir.empty() && !write_outputs(f, s)) return false;
+    }
+    s.findings.push_back(std::move(f));
+    return true;
+  }
+
+  bool write_outputs(Finding& f, Summary& s) {
+    namespace fs = std::filesystem;
+    char stem[32];
+    std::snprintf(stem, sizeof stem, "case-%06llu", static_cast<unsigned long long>(f.case_index));
+    const fs::path dir(settings_.out_dir);
+    f.files.scene = (dir / (std::string(stem) + ".scene.json")).string();
+    f.files.shrunk = (dir / (std::string(stem) + ".min.json")).string();
+    f.files.picture = (dir / (std::string(stem) + ".png")).string();
+    f.files.report = (dir / (std::string(stem) + ".json")).string();
+    std::string error;
+    if (!write_text(f.files.scene, io::write_scene(f.original), &error) ||
+        !write_text(f.files.shrunk, f.key, &error) ||
+        !write_text(f.files.report, finding_json(f, settings_, settings_.driver_name).dump(2) + "\n", &error)) {
+      s.error = error;
+      return false;
+    }
+    if (auto e = write_difference_png(f.files.picture, f.shrunk, f.comparison)) {
+      s.error = f.files.picture + ": " + *e;
+      return false;
+    }
+    return true;
+  }
+
+  bool finish(Summary& s) {
+    for (const auto& [f, n] : tally_) s.legal_conventions.emplace_back(f, n);
+    if (settings_.out_dir.empty()) return true;
+    json j = {{"driver", settings_.driver_name},
+              {"description", driver_.info().description},
+              {"profile", std::string(to_string(settings_.profile))},
+              {"mode", std::string(to_string(settings_.mode))},
+              {"origin", origin_note(settings_.profile)},
+              {"seed", settings_.seed},
+              {"cases", s.cases},
+              {"skipped", s.skipped},
+              {"mismatches", s.mismatches},
+              {"unique", s.unique},
+              {"seconds", s.seconds}};
+    if (!s.error.empty()) j["error"] = s.error;
+    if (settings_.mode == Mode::kLegal) {
+      json t = json::object();
+      for (const auto& [f, n] : s.legal_conventions) t[std::string(to_string(f))] = n;
+      j["fill_conventions_matched"] = t;
+    }
+    json list = json::array();
+    for (const Finding& f : s.findings) list.push_back(finding_json(f, settings_, settings_.driver_name));
+    j["findings"] = list;
+    s.report_path = (std::filesystem::path(settings_.out_dir) / "report.json").string();
+    std::string error;
+    if (!write_text(s.report_path, j.dump(2) + "\n", &error)) {
+      s.error = error;
+      return false;
+    }
+    return true;
+  }
+
+ private:
+  driver::Driver& driver_;
+  const Settings& settings_;
+  std::map<std::string, std::uint64_t> first_;
+  std::map<FillConvention, std::uint64_t> tally_;
+};
+
+bool make_out_dir(const Settings& settings, Summary& s) {
+  if (settings.out_dir.empty()) return true;
+  std::error_code ec;
+  std::filesystem::create_directories(settings.out_dir, ec);
+  if (ec) {
+    s.error = settings.out_dir + ": cannot create: " + ec.message();
+    return false;
+  }
+  return true;
+}
+
+void progress(const Settings& settings, std::uint64_t done, const Summary& s) {
+  if (!settings.progress) return;
+  constexpr int kWidth = 30;
+  const auto filled = static_cast<int>(settings.cases == 0 ? kWidth : done * kWidth / settings.cases);
+  std::string bar(static_cast<std::size_t>(filled), '#');
+  bar.resize(kWidth, '.');
+  std::fprintf(stderr, "\r[%s] %llu/%llu cases, %llu mismatches", bar.c_str(), static_cast<unsigned long long>(done),
+               static_cast<unsigned long long>(settings.cases), static_cast<unsigned long long>(s.mismatches));
+  if (done == settings.cases) std::fputc('\n', stderr);
+  std::fflush(stderr);
+}
+
+}  // namespace
+
+Summary run_fuzz(driver::Driver& driver, const Settings& settings) {
+  Summary s;
+  const auto start = std::chrono::steady_clock::now();
+  if (!make_out_dir(settings, s)) return s;
+  Campaign campaign(driver, settings);
+  for (std::uint64_t i = 0; i < settings.cases; ++i) {
+    auto c = generate_case(settings.seed, i, settings.profile, driver);
+    if (!c) {
+      ++s.skipped;
+    } else if (!campaign.run_case(i, c->family, c->scene, s)) {
+      break;
+    }
+    progress(settings, i + 1, s);
+  }
+  if (settings.progress && !s.error.empty()) std::fputc('\n', stderr);  // end the bar's line
+  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  campaign.finish(s);
+  return s;
+}
+
+Summary run_check(driver::Driver& driver, const Scene& scene, const Settings& settings) {
+  Summary s;
+  const auto start = std::chrono::steady_clock::now();
+  if (!make_out_dir(settings, s)) return s;
+  Campaign campaign(driver, settings);
+  campaign.run_case(0, "check", scene, s);
+  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  campaign.finish(s);
+  return s;
+}
+
+void print_summary(std::FILE* out, const Settings& settings, const driver::Driver& driver, const Summary& s) {
+  std::fprintf(out, "driver      %s (%s)\n", settings.driver_name.c_str(), driver.info().description.c_str());
+  std::fprintf(out, "profile     %s, mode %s, seed %llu\n", std::string(to_string(settings.profile)).c_str(),
+               std::string(to_string(settings.mode)).c_str(), static_cast<unsigned long long>(settings.seed));
+  std::fprintf(out, "+------------+------------+---------+-----------+----------+\n");
+  std::fprintf(out, "| cases      | mismatches | unique  | time (s)  | cases/s  |\n");
+  std::fprintf(out, "+------------+------------+---------+-----------+----------+\n");
+  const double rate = s.seconds > 0 ? static_cast<double>(s.cases) / s.seconds : 0.0;
+  std::fprintf(out, "| %-10llu | %-10llu | %-7llu | %-9.2f | %-8.1f |\n", static_cast<unsigned long long>(s.cases),
+               static_cast<unsigned long long>(s.mismatches), static_cast<unsigned long long>(s.unique), s.seconds, rate);
+  std::fprintf(out, "+------------+------------+---------+-----------+----------+\n");
+  if (s.skipped != 0) std::fprintf(out, "skipped     %llu cases the driver cannot draw\n", static_cast<unsigned long long>(s.skipped));
+  if (settings.mode == Mode::kLegal && settings.profile != Profile::kD3D11) {
+    std::string all;
+    for (const auto& [f, n] : s.legal_conventions) {
+      all += (all.empty() ? "" : ", ") + std::string(to_string(f)) + " " + std::to_string(n);
+    }
+    std::fprintf(out, "fill conventions that explain the driver's results (cases): %s\n", all.empty() ? "none" : all.c_str());
+  }
+  for (const Finding& f : s.findings) {
+    if (f.duplicate_of) continue;
+    std::fprintf(out, "case %llu (%s): %zu -> %zu primitive(s), %zu missing, %zu extra%s%s\n",
+                 static_cast<unsigned long long>(f.case_index), f.family.c_str(), f.original.primitives.size(),
+                 f.shrunk.primitives.size(), f.comparison.missing.size(), f.comparison.extra.size(),
+                 f.files.picture.empty() ? "" : ", picture ", f.files.picture.c_str());
+  }
+  if (!s.report_path.empty()) std::fprintf(out, "report      %s\n", s.report_path.c_str());
+}
+
+}  // namespace rastrules::fuzzer
