@@ -153,4 +153,30 @@ TEST(ExternalDriver, MalformedOutputIsAnErrorNamingTheFragmentAndField) {
 }
 
 }  // namespace
+// Regressions found by fuzz_external_protocol (fuzz/corpus/fuzz_external_protocol/regression_*):
+// a number too large for any JSON number type made the parser throw an exception that was not
+// caught (the process aborted), and nesting is bounded before the recursive parser sees it.
+// rule: DRIVER.EXTERNAL.PROTOCOL
+TEST(ExternalDriverRegression, NumberOverflowIsAnErrorNotAnAbort) {
+  const auto r = parse_external_fragments("[555551e955]", small_scene());
+  ASSERT_TRUE(std::holds_alternative<std::string>(r));
+  EXPECT_NE(std::get<std::string>(r).find("number overflow"), std::string::npos) << std::get<std::string>(r);
+  const auto r2 = parse_external_fragments(
+      R"({"fragments": [{"prim": 0, "x": 1e999, "y": 0, "mask": 1}]})", small_scene());
+  EXPECT_TRUE(std::holds_alternative<std::string>(r2));
+}
+
+// rule: DRIVER.EXTERNAL.PROTOCOL
+TEST(ExternalDriverRegression, DeepNestingIsRefusedBeforeParsing) {
+  const std::string deep = "{\"fragments\": " + std::string(100000, '[') + std::string(100000, ']') + "}";
+  const auto r = parse_external_fragments(deep, small_scene());
+  ASSERT_TRUE(std::holds_alternative<std::string>(r));
+  EXPECT_NE(std::get<std::string>(r).find("nesting deeper than 8 levels"), std::string::npos)
+      << std::get<std::string>(r);
+  // Brackets inside strings do not count.
+  const auto ok = parse_external_fragments(R"({"fragments": [], "note": "[[[[[[[[[[[["})", small_scene());
+  EXPECT_FALSE(std::holds_alternative<std::string>(ok) &&
+               std::get<std::string>(ok).find("nesting") != std::string::npos);
+}
+
 }  // namespace rastrules::driver

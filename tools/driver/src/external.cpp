@@ -286,14 +286,55 @@ std::vector<std::string> external_argv(std::string_view command) {
   return argv;
 }
 
+namespace {
+
+constexpr std::size_t kMaxProtocolDepth = 8;
+
+// Returns the deepest nesting of arrays and objects in text, outside strings (a scan that
+// tolerates malformed text: the parser reports what is wrong with it).
+std::size_t max_nesting_depth(std::string_view text) {
+  std::size_t depth = 0, deepest = 0;
+  bool in_string = false, escaped = false;
+  for (const char c : text) {
+    if (in_string) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+      continue;
+    }
+    if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      deepest = std::max(deepest, ++depth);
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return deepest;
+}
+
+}  // namespace
+
 // rule: DRIVER.EXTERNAL.PROTOCOL
 std::variant<std::vector<Fragment>, std::string> parse_external_fragments(std::string_view text,
                                                                           const Scene& scene) {
+  // The protocol nests 4 deep ({"fragments": [{"centroid": [...]}]}); the DOM parser recurses
+  // once per level, so deeper text is refused before parsing rather than risk the stack.
+  if (const std::size_t depth = max_nesting_depth(text); depth > kMaxProtocolDepth) {
+    return "nesting deeper than " + std::to_string(kMaxProtocolDepth) + " levels (" +
+           std::to_string(depth) + ")";
+  }
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(text.begin(), text.end());
   } catch (const nlohmann::json::parse_error& e) {
     return std::string("not JSON: ") + e.what();
+  } catch (const nlohmann::json::exception& e) {  // e.g. a number too large for any type
+    return std::string("not JSON the protocol allows: ") + e.what();
   }
   if (!doc.is_object() || !doc.contains("fragments") || !doc["fragments"].is_array()) {
     return std::string("expected {\"fragments\": [...]}");
