@@ -62,7 +62,7 @@ void print_usage(std::FILE* out) {
       "      case-N.min.json (shrunk), case-N.png (expected | actual | difference) and\n"
       "      case-N.json, with DIR/report.json for the campaign (spec/driver.md FUZZ.*).\n"
       "      Drivers: reference, imprecise[:float-edges|:fill-bottom-right|:4-bit-subpixel],\n"
-      "      lavapipe (when built), external:COMMAND (DRIVER.EXTERNAL.PROTOCOL).\n"
+      "      lavapipe and opengl (when built), external:COMMAND (DRIVER.EXTERNAL.PROTOCOL).\n"
       "  check SCENE.json --driver NAME [--profile P] [--mode exact|legal] [--out DIR]\n"
       "      The same comparison and outputs for one scene, used as it is.\n"
       "  probe --driver NAME\n"
