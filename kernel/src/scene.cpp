@@ -331,6 +331,21 @@ namespace {
 // at the pixel centre in the mask, pixel shading, no centroid, no quads. Such scenes take the
 // single-sample path unchanged (SCENE.MSAA: only what a scene asks for is computed).
 // rule: SCENE.MSAA, MSAA.COVER.SAMPLE
+// How many entries (fragments, or touched pixels of a multisampled primitive) a primitive that
+// must be collected before it is sorted may hold (for_each_fragment_bounded). Null: no bound.
+struct CollectBudget {
+  std::uint64_t left = 0;
+};
+struct CollectLimitReached {};
+
+// Counts one collected entry against the budget; throws CollectLimitReached (caught by
+// for_each_fragment_bounded, never escaping the kernel) when it is spent.
+void take(CollectBudget* budget) {
+  if (budget == nullptr) return;
+  if (budget->left == 0) throw CollectLimitReached{};
+  --budget->left;
+}
+
 bool is_single_sample(const PreparedScene& scene) {
   const MultisampleState& ms = scene.msaa;
   return ms.count() == 1 && ms.pattern.positions[0] == SampleOffset{} &&
@@ -340,7 +355,8 @@ bool is_single_sample(const PreparedScene& scene) {
 
 // The single-sample path (issues #2 and #3).
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.PRIM.LINE_STRIP
-std::vector<Fragment> rasterize_single(const PreparedScene& scene, std::size_t p) {
+std::vector<Fragment> rasterize_single(const PreparedScene& scene, std::size_t p,
+                                       CollectBudget* budget) {
   const PreparedPrimitive& prim = scene.primitives[p];
   const auto id = static_cast<std::uint32_t>(p);
   const bool strip = prim.type == PrimitiveType::kLineStrip;
@@ -353,6 +369,7 @@ std::vector<Fragment> rasterize_single(const PreparedScene& scene, std::size_t p
     for (const PreparedTriangle& t : prim.triangles) {
       raster::walk_triangle(t.setup, scene.width, scene.height,
                             [&](std::int32_t x, std::int32_t y) {
+                              take(budget);
                               out.push_back(Fragment{id, x, y, 1u, seg_of(t.seg), std::nullopt});
                             });
     }
@@ -363,11 +380,13 @@ std::vector<Fragment> rasterize_single(const PreparedScene& scene, std::size_t p
         // rule: SCENE.OUTPUT.COVERAGE
         rasterize_aa_line(prim.v[s], prim.v[s + 1], scene.width, scene.height,
                           [&](std::int32_t x, std::int32_t y, std::uint32_t c) {
+                            take(budget);
                             out.push_back(Fragment{id, x, y, 1u, seg_of(seg), c});
                           });
       } else {
         rasterize_aliased_line(prim.v[s], prim.v[s + 1], scene.line_mode, scene.width, scene.height,
                                [&](std::int32_t x, std::int32_t y) {
+                                 take(budget);
                                  out.push_back(Fragment{id, x, y, 1u, seg_of(seg), std::nullopt});
                                });
       }
@@ -395,7 +414,7 @@ struct PixelCoverage {
 // segment.
 // rule: MSAA.COVER.SAMPLE, MSAA.POINT.PER_SAMPLE, MSAA.LINE.MODE
 std::vector<PixelCoverage> sample_coverage_of(const PreparedScene& scene,
-                                              const PreparedPrimitive& prim) {
+                                              const PreparedPrimitive& prim, CollectBudget* budget) {
   const SamplePattern& pattern = scene.msaa.pattern;
   std::vector<PixelCoverage> cov;
   if (!is_line(prim.type) || lines_as_quads(scene.line_mode, prim.aa, pattern.count())) {
@@ -404,6 +423,7 @@ std::vector<PixelCoverage> sample_coverage_of(const PreparedScene& scene,
     for (const PreparedTriangle& t : prim.triangles) {
       raster::walk_triangle_samples(t.setup, pattern, scene.width, scene.height,
                                     [&](std::int32_t x, std::int32_t y, std::uint32_t mask) {
+                                      take(budget);
                                       cov.push_back(PixelCoverage{t.seg, y, x, mask, std::nullopt});
                                     });
     }
@@ -417,11 +437,13 @@ std::vector<PixelCoverage> sample_coverage_of(const PreparedScene& scene,
       if (prim.aa) {
         rasterize_aa_line(prim.v[s], prim.v[s + 1], scene.width, scene.height,
                           [&](std::int32_t x, std::int32_t y, std::uint32_t c) {
+                            take(budget);
                             cov.push_back(PixelCoverage{seg, y, x, all, c});
                           });
       } else {
         rasterize_aliased_line(prim.v[s], prim.v[s + 1], scene.line_mode, scene.width,
                                scene.height, [&](std::int32_t x, std::int32_t y) {
+                                 take(budget);
                                  cov.push_back(PixelCoverage{seg, y, x, all, std::nullopt});
                                });
       }
@@ -448,7 +470,8 @@ std::vector<PixelCoverage> sample_coverage_of(const PreparedScene& scene,
 // with helper lanes and derivatives, each only when the scene asks for it.
 // rule: MSAA.MASK.AND, MSAA.SHADING.PIXEL, MSAA.SHADING.SAMPLE, MSAA.QUAD.HELPER
 // rule: MSAA.DERIV.FINE, MSAA.DERIV.COARSE, SCENE.OUTPUT.MSAA
-std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p) {
+std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p,
+                                     CollectBudget* budget) {
   const PreparedPrimitive& prim = scene.primitives[p];
   const MultisampleState& ms = scene.msaa;
   const SamplePattern& pattern = ms.pattern;
@@ -463,7 +486,9 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p) 
     return centroid(ms.centroid_rule, coverage, em, pattern);
   };
 
-  const std::vector<PixelCoverage> cov = sample_coverage_of(scene, prim);
+  // rule: MSAA.MASK.AND
+  if (em == 0) return {};  // the mask removes every sample: no fragment, no quad, no helper
+  const std::vector<PixelCoverage> cov = sample_coverage_of(scene, prim, budget);
   std::vector<Fragment> out;
   // (seg, y, x) -> (coverage before the mask, after the mask) of pixels with a fragment.
   using LaneKey = std::tuple<std::uint32_t, std::int32_t, std::int32_t>;
@@ -478,6 +503,7 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p) 
     if (ms.has_centroid) f.centroid = centroid_of(c.coverage);
     if (!per_sample) {
       // rule: MSAA.SHADING.PIXEL
+      take(budget);
       out.push_back(f);
       continue;
     }
@@ -487,6 +513,7 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p) 
       Fragment fs = f;
       fs.sample = k;
       fs.mask = std::uint32_t{1} << k;
+      take(budget);
       out.push_back(fs);
     }
   }
@@ -543,6 +570,7 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p) 
           h.helper = true;
           if (per_sample) h.sample = k;
           if (ms.has_centroid) h.centroid = centroid_of(0u);
+          take(budget);
           out.push_back(h);
         }
         if (ms.derivatives != DerivativeMode::kNone) {
@@ -571,8 +599,8 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p) 
 
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.PRIM.LINE_STRIP, SCENE.OUTPUT.MSAA
 std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_t p) {
-  if (is_single_sample(scene)) return rasterize_single(scene, p);
-  return rasterize_msaa(scene, p);
+  if (is_single_sample(scene)) return rasterize_single(scene, p, nullptr);
+  return rasterize_msaa(scene, p, nullptr);
 }
 
 // rule: SCENE.OUTPUT.FRAGMENTS
@@ -589,6 +617,27 @@ void for_each_fragment(const PreparedScene& scene, std::size_t p,
   }
   for (const Fragment& f : rasterize_primitive(scene, p))
     emit(f);
+}
+
+// rule: SCENE.INPUT.LIMITS
+bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p,
+                               std::uint64_t max_collected,
+                               const std::function<void(const Fragment&)>& emit) {
+  const PreparedPrimitive& prim = scene.primitives[p];
+  if (prim.type == PrimitiveType::kTriangle && is_single_sample(scene)) {
+    for_each_fragment(scene, p, emit);  // streamed: nothing is held
+    return true;
+  }
+  CollectBudget budget{max_collected};
+  std::vector<Fragment> frags;
+  try {
+    frags = is_single_sample(scene) ? rasterize_single(scene, p, &budget)
+                                    : rasterize_msaa(scene, p, &budget);
+  } catch (const CollectLimitReached&) {
+    return false;
+  }
+  for (const Fragment& f : frags) emit(f);
+  return true;
 }
 
 // rule: SCENE.OUTPUT.FRAGMENTS

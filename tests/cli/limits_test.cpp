@@ -155,6 +155,50 @@ TEST(Limits, FragmentLimitStopsAHugeRenderEarly) {
   EXPECT_LT(seconds, 5.0);
 }
 
+// A line strip is collected whole before its fragments are sorted: the bound on what it may
+// hold (2 x --max-fragments) stops it before memory grows with it, and says which primitive.
+// rule: SCENE.INPUT.LIMITS
+TEST(Limits, CollectedPrimitivesAreBoundedBeforeTheyAreSorted) {
+  const TempDir dir;
+  std::string strip = "{\"type\": \"line_strip\", \"v\": [";
+  for (int i = 0; i < 16; ++i) {
+    strip += std::string(i ? "," : "") + "[" + std::to_string(i % 2 ? 1020 : 2) + ".5," +
+             std::to_string(2 + i * 60) + ".5]";
+  }
+  strip += "]}]}";
+  const auto scene = dir.write("strip.json", head(1024, 1024) + strip);
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(),
+                          "--max-fragments", "1000"});
+  expect_one_error_line(r, "render: primitives[0] touches more than 2000 pixels or fragments that must be held "
+                           "to be sorted (limit SCENE.INPUT.LIMITS, 2 x --max-fragments); raise it with "
+                           "--max-fragments N");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
+  const auto ok = run_cli({"render", scene.string(), "--fragments", (dir / "ok.json").string(),
+                           "--max-fragments", "100000"});
+  EXPECT_EQ(ok.status, 0) << ok.err;
+}
+
+// A multisampled primitive holds the pixels it touches, also those whose covered samples the
+// sample mask removes: a sliver that covers only sample 1 of each pixel under mask 1 draws
+// nothing, yet touches about 40 pixels, which count against the bound.
+// rule: SCENE.INPUT.LIMITS, MSAA.MASK.AND
+TEST(Limits, TouchedPixelsOfAMaskedPrimitiveCountAgainstTheBound) {
+  const TempDir dir;
+  const auto scene = dir.write(
+      "sliver.json",
+      "{\"target\": {\"width\": 64, \"height\": 4}, \"samples\": 2, "
+      "\"sample_pattern\": [[-8, -8], [7, 7]], \"sample_mask\": 1, \"primitives\": ["
+      "{\"type\": \"triangle\", \"v\": [[0, 0.9], [64, 0.9], [0, 1.0]]}]}");
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(),
+                          "--max-fragments", "10"});
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("primitives[0] touches more than 20 pixels"), std::string::npos) << r.err;
+  const auto ok = run_cli({"render", scene.string(), "--fragments", (dir / "ok.json").string(),
+                           "--max-fragments", "100"});
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  EXPECT_NE(ok.out.find("0 fragments"), std::string::npos) << ok.out;
+}
+
 // rule: SCENE.INPUT.LIMITS
 TEST(Limits, DefaultFragmentLimitIsStatedInTheUsage) {
   EXPECT_EQ(io::kDefaultMaxFragments, std::uint64_t{1} << 26);

@@ -137,7 +137,11 @@ int run_render(const Args& args) {
   struct TooManyFragments {};
   try {
     for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
-      for_each_fragment(scene, p, [&](const Fragment& f) {
+      // A primitive that is collected before it is emitted holds at most 2 * max_fragments
+      // entries: a pixel is held at most twice (once per triangle of a point or quadrilateral
+      // segment), so one that needs more has more than max_fragments fragments, except when
+      // the sample mask removes the samples it covers (then the limit counts touched pixels).
+      const bool done = for_each_fragment_bounded(scene, p, 2 * max_fragments, [&](const Fragment& f) {
         if (++fragment_count > max_fragments) throw TooManyFragments{};
         if (writer)
           in_order = writer->add(f) && in_order;
@@ -146,6 +150,12 @@ int run_render(const Args& args) {
         if (resolve_path)
           all.push_back(f);
       });
+      if (!done) {
+        return error("render: primitives[" + std::to_string(p) + "] touches more than " +
+                     std::to_string(2 * max_fragments) +
+                     " pixels or fragments that must be held to be sorted (limit SCENE.INPUT.LIMITS, 2 x "
+                     "--max-fragments); raise it with --max-fragments N");
+      }
     }
   } catch (const TooManyFragments&) {
     return error("render: more than " + std::to_string(max_fragments) +

@@ -154,6 +154,18 @@ struct PreparedScene {
 void for_each_fragment(const PreparedScene& scene, std::size_t p,
                        const std::function<void(const Fragment&)>& emit);
 
+// for_each_fragment with a bound on memory: a primitive whose fragments are collected and
+// sorted before they are emitted (everything but a single-sample triangle, which is streamed)
+// may hold at most max_collected entries: fragments, helper lanes, and for a multisampled
+// primitive also the pixels it touches (a point's or quadrilateral segment's pixel once per
+// triangle). When primitive p needs more, nothing of it is emitted and false is returned.
+// Held memory is then at most about 200 bytes per entry (fragments, touched pixels and, with
+// quads, their lane, quad and derivative maps).
+// rule: SCENE.INPUT.LIMITS
+[[nodiscard]] bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p,
+                                             std::uint64_t max_collected,
+                                             const std::function<void(const Fragment&)>& emit);
+
 // Returns the fragments of a prepared scene sorted by (prim, y, x, seg, sample), only inside the
 // target.
 // rule: SCENE.OUTPUT.FRAGMENTS, RASTER.TARGET.CLIP
