@@ -17,85 +17,30 @@
 #include <utility>
 #include <vector>
 
+#include "gpu_test_support.hpp"
 #include "rastrules/driver/driver.hpp"
 #include "rastrules/scene.hpp"
 
 namespace rastrules::driver {
 namespace {
 
-// One lavapipe driver for the whole program: creating the Vulkan device is the slow part, and
-// reusing it across draws is what the adapter is built for.
-Driver* lavapipe(std::string* why) {
-  static std::string error;
-  static std::unique_ptr<Driver> d = open_driver("lavapipe", &error);
-  *why = error;
-  return d.get();
-}
+using gpu_test::describe;
+using gpu_test::draw_ok;
+using gpu_test::expect_draws;
+using gpu_test::frags;
+using gpu_test::line;
+using gpu_test::line_scene;
+using gpu_test::prim;
+using gpu_test::reference;
+using gpu_test::scene;
 
-#define RASTRULES_LAVAPIPE_OR_SKIP(var)             \
-  std::string var##_why;                            \
-  Driver* var = lavapipe(&var##_why);               \
-  if (var == nullptr) GTEST_SKIP() << "no CPU Vulkan device: " << var##_why
-
-std::string describe(const std::vector<Fragment>& fs) {
-  std::ostringstream os;
-  for (const Fragment& f : fs) {
-    os << " {" << f.prim << " " << f.x << "," << f.y << " m" << f.mask;
-    if (f.seg) os << " s" << *f.seg;
-    os << "}";
-  }
-  return os.str();
-}
-
-std::vector<Fragment> draw_ok(Driver& d, const Scene& s) {
-  EXPECT_EQ(d.unsupported(s), "");
-  DrawResult r = d.draw(s);
-  if (const auto* e = std::get_if<DriverError>(&r)) {
-    ADD_FAILURE() << d.info().name << ": " << e->message;
-    return {};
-  }
-  return std::get<std::vector<Fragment>>(r);
-}
-
-std::vector<Fragment> reference(const Scene& s) {
-  auto d = open_driver("reference", nullptr);
-  return draw_ok(*d, s);
-}
-
-Scene scene(std::int32_t w, std::int32_t h, std::uint32_t samples = 1) {
-  Scene s;
-  s.width = w;
-  s.height = h;
-  s.msaa.pattern = standard_pattern(samples);
-  return s;
-}
-
-Primitive prim(PrimitiveType t, std::vector<FloatPoint> v) {
-  Primitive p;
-  p.type = t;
-  p.v = std::move(v);
-  return p;
-}
-
-Primitive line(FloatPoint a, FloatPoint b) { return prim(PrimitiveType::kLine, {a, b}); }
+// One lavapipe driver for the whole program (gpu_test::shared_driver).
+#define RASTRULES_LAVAPIPE_OR_SKIP(var) RASTRULES_DRIVER_OR_SKIP(var, "lavapipe", "no CPU Vulkan device")
 
 // Draws s with lavapipe and the reference, expects the same non-empty fragments.
 void expect_same_as_reference(const Scene& s) {
   RASTRULES_LAVAPIPE_OR_SKIP(d);
-  const auto got = draw_ok(*d, s);
-  const auto want = reference(s);
-  EXPECT_FALSE(want.empty());
-  EXPECT_EQ(got, want) << "lavapipe:" << describe(got) << "\nreference:" << describe(want);
-}
-
-// A fragment list written (x, y, mask) for one primitive without seg.
-std::vector<Fragment> frags(std::uint32_t prim_index,
-                            std::initializer_list<std::array<std::int32_t, 3>> list) {
-  std::vector<Fragment> out;
-  for (const auto& f : list) {
-    out.emplace_back(prim_index, f[0], f[1], static_cast<std::uint32_t>(f[2]));
-  }
-  return out;
+  expect_draws(*d, s, reference(s));
 }
 
 // rule: DRIVER.LAVAPIPE.DEVICE
@@ -282,19 +227,16 @@ bool within_vulkan_allowance(const std::vector<Fragment>& got, const std::vector
 TEST(Lavapipe, BresenhamEndsDeviateWithinVulkanAllowance) {
   RASTRULES_LAVAPIPE_OR_SKIP(d);
   // The minimal scenes of the finding.
-  Scene a = scene(8, 8);
-  a.line_mode = LineMode::kVulkanBresenham;
-  a.primitives.push_back(line({1.25F, 1.5F}, {6.75F, 3.25F}));  // b on the diamond of (6, 3)
+  const Scene a = line_scene(8, 8, 1, LineMode::kVulkanBresenham,
+                             {line({1.25F, 1.5F}, {6.75F, 3.25F})});  // b on the diamond of (6, 3)
   EXPECT_EQ(describe(reference(a)), describe(frags(0, {{1, 1, 1}, {2, 1, 1}, {3, 2, 1}, {4, 2, 1}, {5, 2, 1}})));
   EXPECT_EQ(describe(draw_ok(*d, a)), describe(frags(0, {{1, 1, 1}, {2, 1, 1}, {3, 2, 1}, {4, 2, 1}, {5, 2, 1}, {6, 3, 1}})));
-  Scene b = scene(8, 8);
-  b.line_mode = LineMode::kVulkanBresenham;
-  b.primitives.push_back(line({7.75F, 6.5F}, {7.75F, 4.5F}));  // a inside the diamond of (7, 6)
+  const Scene b = line_scene(8, 8, 1, LineMode::kVulkanBresenham,
+                             {line({7.75F, 6.5F}, {7.75F, 4.5F})});  // a inside the diamond of (7, 6)
   EXPECT_EQ(describe(reference(b)), describe(frags(0, {{7, 5, 1}, {7, 6, 1}})));
   EXPECT_EQ(describe(draw_ok(*d, b)), describe(frags(0, {{7, 5, 1}})));
-  Scene c = scene(8, 8);
-  c.line_mode = LineMode::kVulkanBresenham;
-  c.primitives.push_back(line({3.5F, 6.5F}, {3.5F, 2.5F}));  // y-major, upwards, centre to centre
+  const Scene c = line_scene(8, 8, 1, LineMode::kVulkanBresenham,
+                             {line({3.5F, 6.5F}, {3.5F, 2.5F})});  // y-major, upwards, centre to centre
   EXPECT_EQ(describe(reference(c)), describe(frags(0, {{3, 3, 1}, {3, 4, 1}, {3, 5, 1}, {3, 6, 1}})));
   EXPECT_EQ(describe(draw_ok(*d, c)), describe(frags(0, {{3, 3, 1}, {3, 4, 1}, {3, 5, 1}})));
   // Seeded lines with tie-heavy end points: every difference is an allowed one, and there
@@ -398,9 +340,7 @@ TEST(Lavapipe, Msaa4SampleMaskMatchesTheReference) {
 // rule: DRIVER.LAVAPIPE.COVERAGE, MSAA.LINE.MODE
 TEST(Lavapipe, Msaa4BresenhamCoversOnlySampleZero) {
   RASTRULES_LAVAPIPE_OR_SKIP(d);
-  Scene s = scene(8, 4, 4);
-  s.line_mode = LineMode::kVulkanBresenham;
-  s.primitives.push_back(line({0.5F, 1.5F}, {4.5F, 1.5F}));
+  const Scene s = line_scene(8, 4, 4, LineMode::kVulkanBresenham, {line({0.5F, 1.5F}, {4.5F, 1.5F})});
   EXPECT_EQ(describe(reference(s)), describe(frags(0, {{0, 1, 15}, {1, 1, 15}, {2, 1, 15}, {3, 1, 15}})));
   EXPECT_EQ(describe(draw_ok(*d, s)), describe(frags(0, {{0, 1, 1}, {1, 1, 1}, {2, 1, 1}, {3, 1, 1}})));
 }
@@ -411,33 +351,22 @@ TEST(Lavapipe, Msaa4BresenhamCoversOnlySampleZero) {
 // rule: DRIVER.LAVAPIPE.COVERAGE, RASTER.TARGET.CLIP
 TEST(Lavapipe, Msaa4RectangularLineCrossingTheRightOrBottomEdgeIsDropped) {
   RASTRULES_LAVAPIPE_OR_SKIP(d);
-  Scene s = scene(8, 8, 4);
-  s.line_mode = LineMode::kQuadNarrow;
-  s.primitives.push_back(line({7.75F, 6.5F}, {7.75F, 4.5F}));  // rectangle x in [7.25, 8.25]
+  const Primitive right = line({7.75F, 6.5F}, {7.75F, 4.5F});  // rectangle x in [7.25, 8.25]
+  const Primitive low = line({1.5F, 7.75F}, {5.5F, 7.75F});     // y in [7.25, 8.25]
+  const Scene s = line_scene(8, 8, 4, LineMode::kQuadNarrow, {right});
   EXPECT_FALSE(reference(s).empty());
   EXPECT_TRUE(draw_ok(*d, s).empty());
-  Scene bottom = scene(8, 8, 4);
-  bottom.line_mode = LineMode::kQuadNarrow;
-  bottom.primitives.push_back(line({1.5F, 7.75F}, {5.5F, 7.75F}));  // y in [7.25, 8.25]
+  const Scene bottom = line_scene(8, 8, 4, LineMode::kQuadNarrow, {low});
   EXPECT_FALSE(reference(bottom).empty());
   EXPECT_TRUE(draw_ok(*d, bottom).empty());
   // The same lines crossing the left and top edges are drawn like the reference.
-  Scene left = scene(8, 8, 4);
-  left.line_mode = LineMode::kQuadNarrow;
-  left.primitives.push_back(line({0.25F, 6.5F}, {0.25F, 4.5F}));
-  left.primitives.push_back(line({1.5F, 0.25F}, {5.5F, 0.25F}));
-  expect_same_as_reference(left);
+  expect_same_as_reference(line_scene(8, 8, 4, LineMode::kQuadNarrow,
+                                      {line({0.25F, 6.5F}, {0.25F, 4.5F}), line({1.5F, 0.25F}, {5.5F, 0.25F})}));
   // One pixel wider and taller, nothing crosses the edge: the reference's fragments (the
   // extra column and row are outside the smaller target).
-  Scene wide = scene(9, 9, 4);
-  wide.line_mode = LineMode::kQuadNarrow;
-  wide.primitives = {s.primitives[0], bottom.primitives[0]};
-  expect_same_as_reference(wide);
+  expect_same_as_reference(line_scene(9, 9, 4, LineMode::kQuadNarrow, {right, low}));
   // Single-sample rectangular lines crossing the edge are drawn.
-  Scene one = scene(8, 8);
-  one.line_mode = LineMode::kQuadNarrow;
-  one.primitives = {s.primitives[0], bottom.primitives[0]};
-  expect_same_as_reference(one);
+  expect_same_as_reference(line_scene(8, 8, 1, LineMode::kQuadNarrow, {right, low}));
 }
 
 // FINDING.LAVAPIPE.MSAA_RECT_SHORT: on a 4x target lavapipe draws nothing for this 0.5 px
@@ -445,16 +374,12 @@ TEST(Lavapipe, Msaa4RectangularLineCrossingTheRightOrBottomEdgeIsDropped) {
 // rule: DRIVER.LAVAPIPE.COVERAGE, LINE.QUAD.SHAPE
 TEST(Lavapipe, Msaa4ShortRectangularLineIsDropped) {
   RASTRULES_LAVAPIPE_OR_SKIP(d);
-  Scene s = scene(8, 8, 4);
-  s.line_mode = LineMode::kQuadNarrow;
-  s.primitives.push_back(line({5.625F, 1.625F}, {5.625F, 1.125F}));
+  const Primitive short_line = line({5.625F, 1.625F}, {5.625F, 1.125F});
+  const Scene s = line_scene(8, 8, 4, LineMode::kQuadNarrow, {short_line});
   EXPECT_EQ(describe(reference(s)), describe(frags(0, {{5, 1, 3}})));
   EXPECT_TRUE(draw_ok(*d, s).empty());
-  Scene one = scene(8, 8);
-  one.line_mode = LineMode::kQuadNarrow;
-  one.primitives = s.primitives;
-  one.primitives.push_back(line({2.5F, 2.0F}, {2.5F, 2.75F}));  // covers the centre (2.5, 2.5)
-  expect_same_as_reference(one);
+  expect_same_as_reference(line_scene(8, 8, 1, LineMode::kQuadNarrow,
+                                      {short_line, line({2.5F, 2.0F}, {2.5F, 2.75F})}));  // covers the centre (2.5, 2.5)
 }
 
 // Draw state is reused: different target sizes, sample counts and line modes in sequence

@@ -17,49 +17,25 @@
 #include <utility>
 #include <vector>
 
+#include "gpu_test_support.hpp"
 #include "rastrules/driver/driver.hpp"
 #include "rastrules/scene.hpp"
 
 namespace rastrules::driver {
 namespace {
 
-// One OpenGL driver for the whole program: the context, program and buffers are reused.
-Driver* opengl(std::string* why) {
-  static std::string error;
-  static std::unique_ptr<Driver> d = open_driver("opengl", &error);
-  *why = error;
-  return d.get();
-}
+using gpu_test::describe;
+using gpu_test::draw_ok;
+using gpu_test::expect_draws;
+using gpu_test::line;
+using gpu_test::line_scene;
+using gpu_test::prim;
+using gpu_test::reference;
+using gpu_test::scene;
 
-#define RASTRULES_OPENGL_OR_SKIP(var)               \
-  std::string var##_why;                            \
-  Driver* var = opengl(&var##_why);                 \
-  if (var == nullptr) GTEST_SKIP() << "no llvmpipe EGL device: " << var##_why
-
-std::string describe(const std::vector<Fragment>& fs) {
-  std::ostringstream os;
-  for (const Fragment& f : fs) {
-    os << " {" << f.prim << " " << f.x << "," << f.y << " m" << f.mask;
-    if (f.seg) os << " s" << *f.seg;
-    os << "}";
-  }
-  return os.str();
-}
-
-std::vector<Fragment> draw_ok(Driver& d, const Scene& s) {
-  EXPECT_EQ(d.unsupported(s), "");
-  DrawResult r = d.draw(s);
-  if (const auto* e = std::get_if<DriverError>(&r)) {
-    ADD_FAILURE() << d.info().name << ": " << e->message;
-    return {};
-  }
-  return std::get<std::vector<Fragment>>(r);
-}
-
-std::vector<Fragment> reference(const Scene& s) {
-  auto d = open_driver("reference", nullptr);
-  return draw_ok(*d, s);
-}
+// One OpenGL driver for the whole program (gpu_test::shared_driver): the context, program and
+// buffers are reused.
+#define RASTRULES_OPENGL_OR_SKIP(var) RASTRULES_DRIVER_OR_SKIP(var, "opengl", "no llvmpipe EGL device")
 
 // The reference under llvmpipe's tie rule (FINDING.OPENGL.FILL_BOTTOM_LEFT).
 std::vector<Fragment> reference_bottom_left(Scene s) {
@@ -67,29 +43,10 @@ std::vector<Fragment> reference_bottom_left(Scene s) {
   return reference(s);
 }
 
-Scene scene(std::int32_t w, std::int32_t h, std::uint32_t samples = 1) {
-  Scene s;
-  s.width = w;
-  s.height = h;
-  s.msaa.pattern = standard_pattern(samples);
-  return s;
-}
-
-Primitive prim(PrimitiveType t, std::vector<FloatPoint> v) {
-  Primitive p;
-  p.type = t;
-  p.v = std::move(v);
-  return p;
-}
-
-Primitive line(FloatPoint a, FloatPoint b) { return prim(PrimitiveType::kLine, {a, b}); }
-
-// Draws s with OpenGL and expects the reference's non-empty fragments.
+// Draws s with OpenGL and expects want, which must not be empty.
 void expect_same_as(const Scene& s, const std::vector<Fragment>& want) {
   RASTRULES_OPENGL_OR_SKIP(d);
-  const auto got = draw_ok(*d, s);
-  EXPECT_FALSE(want.empty());
-  EXPECT_EQ(got, want) << "opengl:" << describe(got) << "\nexpected:" << describe(want);
+  expect_draws(*d, s, want);
 }
 
 // rule: DRIVER.OPENGL.DEVICE
@@ -250,10 +207,7 @@ TEST(OpenGL, LinesAwayFromTiesMatchTheReference) {
 TEST(OpenGL, LineEndsDifferFromTheDiamondExitRule) {
   RASTRULES_OPENGL_OR_SKIP(d);
   const auto one = [](FloatPoint a, FloatPoint b) {
-    Scene s = scene(1, 1);
-    s.line_mode = LineMode::kVulkanBresenham;
-    s.primitives.push_back(line(a, b));
-    return s;
+    return line_scene(1, 1, 1, LineMode::kVulkanBresenham, {line(a, b)});
   };
   for (const Scene& s : {one({0.0F, 0.0F}, {1.0F, 0.0F}), one({1.0F, 0.0F}, {0.0F, 0.0F}),
                          one({0.5F, 0.0F}, {-1.0F, 1.0F})}) {
@@ -329,16 +283,12 @@ TEST(OpenGL, Msaa4RectangularLinesAtTheEdgeOrShortAreDropped) {
   for (const auto& [a, b] : {std::pair<FloatPoint, FloatPoint>{{7.75F, 6.5F}, {7.75F, 4.5F}},
                              std::pair<FloatPoint, FloatPoint>{{1.5F, 7.75F}, {5.5F, 7.75F}},
                              std::pair<FloatPoint, FloatPoint>{{5.625F, 1.625F}, {5.625F, 1.125F}}}) {
-    Scene s = scene(8, 8, 4);
-    s.line_mode = LineMode::kQuadNarrow;
-    s.primitives.push_back(line(a, b));
+    const Scene s = line_scene(8, 8, 4, LineMode::kQuadNarrow, {line(a, b)});
     EXPECT_FALSE(reference(s).empty());
     EXPECT_EQ(describe(draw_ok(*d, s)), "");
   }
   // The shrunk scene of the short case: a horizontal half-pixel line on the top edge.
-  Scene m = scene(1, 1, 4);
-  m.line_mode = LineMode::kQuadNarrow;
-  m.primitives.push_back(line({1.0F, 0.0F}, {0.5F, 0.0F}));
+  const Scene m = line_scene(1, 1, 4, LineMode::kQuadNarrow, {line({1.0F, 0.0F}, {0.5F, 0.0F})});
   EXPECT_EQ(describe(reference_bottom_left(m)), " {0 0,0 m2}");
   EXPECT_EQ(describe(draw_ok(*d, m)), "");
 }

@@ -19,15 +19,13 @@
 #include <vector>
 
 #include "drivers.hpp"
+#include "gpu_common.hpp"
 #include "rastrules/driver/coverage_frag.spv.h"
 #include "rastrules/driver/coverage_vert.spv.h"
 #include "rastrules/scene.hpp"
 
 namespace rastrules::driver {
 namespace {
-
-// The largest coverage buffer one draw may use (slots * width * height * 4 bytes).
-constexpr VkDeviceSize kMaxCoverageBytes = VkDeviceSize{256} << 20;
 
 std::string vk_failed(const char* what, VkResult r) {
   return std::string("lavapipe: ") + what + " failed (VkResult " +
@@ -65,42 +63,8 @@ struct PipelineKey {
   friend bool operator<(const PipelineKey& a, const PipelineKey& b) { return a.tie() < b.tie(); }
 };
 
-// Returns K, the smallest power of two >= every extent the scene needs (DRIVER.LAVAPIPE.POSITION),
-// or 0 when a coordinate is not finite (prepare() reports it).
-// rule: DRIVER.LAVAPIPE.POSITION
-double position_scale(const Scene& scene) {
-  double extent = std::max({1.0, static_cast<double>(scene.width), static_cast<double>(scene.height)});
-  for (const Primitive& p : scene.primitives) {
-    for (const FloatPoint& v : p.v) {
-      for (float c : v) {
-        if (!std::isfinite(c)) return 0.0;
-        extent = std::max(extent, std::fabs(static_cast<double>(c)));
-      }
-    }
-  }
-  // A margin of 2 px keeps the parts of points and lines that lie up to 1 px beyond their
-  // vertices inside the viewport (lavapipe drops what lies outside it).
-  extent += 2.0;
-  double k = 1.0;
-  while (k < extent) k *= 2.0;
-  return k;
-}
-
-bool is_line(PrimitiveType t) { return t == PrimitiveType::kLine || t == PrimitiveType::kLineStrip; }
-
-// The number of coverage slots of a primitive: one, or one per segment of a strip.
-std::uint32_t slot_count(const Primitive& p) {
-  if (p.type == PrimitiveType::kLineStrip) {
-    return p.v.size() < 2 ? 0U : static_cast<std::uint32_t>(p.v.size() - 1);
-  }
-  return 1U;
-}
-
-class LavapipeDriver final : public Driver {
+class LavapipeDriver final : public detail::GpuDriver {
  public:
-  LavapipeDriver() = default;
-  LavapipeDriver(const LavapipeDriver&) = delete;
-  LavapipeDriver& operator=(const LavapipeDriver&) = delete;
   ~LavapipeDriver() override { destroy(); }
 
   // Creates the instance, selects the CPU device and creates everything draws share.
@@ -149,84 +113,36 @@ class LavapipeDriver final : public Driver {
     return create_shared();
   }
 
-  [[nodiscard]] const DriverInfo& info() const override { return info_; }
-
   // rule: DRIVER.LAVAPIPE.SUPPORT
-  [[nodiscard]] std::string unsupported(const Scene& scene) const override {
-    const MultisampleState& ms = scene.msaa;
-    if (ms.pattern.kind != PatternKind::kStandard) {
-      return "sample pattern '" + std::string(to_string(ms.pattern.kind)) +
-             "' not supported (Vulkan standard sample locations only)";
-    }
-    const std::uint32_t samples = ms.count();
-    if (std::find(info_.sample_counts.begin(), info_.sample_counts.end(), samples) ==
-        info_.sample_counts.end()) {
-      return std::to_string(samples) + " samples not supported by " + props_.deviceName;
-    }
-    if (ms.shading == ShadingRate::kSample) {
-      return "sample-frequency shading not supported (the adapter observes coverage per pixel)";
-    }
-    if (scene.width > info_.max_target_side || scene.height > info_.max_target_side) {
-      return "target " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
-             " larger than " + std::to_string(info_.max_target_side);
-    }
-    std::uint64_t slots = 0;
-    for (const Primitive& p : scene.primitives) {
-      if (is_line(p.type)) {
-        if (p.aa) return "antialiased lines not supported";
-        switch (scene.line_mode) {
-          case LineMode::kD3DDiamond:
-            return "line mode 'd3d' (diamond exit) has no Vulkan equivalent";
-          case LineMode::kQuadWide:
-            return "line mode 'quad-wide' (1.4 px) not supported (Vulkan rectangular lines are 1.0 px wide here)";
-          case LineMode::kVulkanBresenham:
-            if (!info_.lines_bresenham) return "Bresenham lines not supported by the device";
-            break;
-          case LineMode::kQuadNarrow:
-            if (!info_.lines_rectangular) return "rectangular lines not supported by the device";
-            break;
-        }
+  [[nodiscard]] detail::SupportChecks support_checks() const override {
+    detail::SupportChecks checks;
+    checks.pattern_note = "Vulkan standard sample locations only";
+    checks.count_by = props_.deviceName;
+    checks.k_limit = "device limit";
+    checks.line = [this](const Scene& s, const Primitive& p) -> std::string {
+      if (p.aa) return "antialiased lines not supported";
+      switch (s.line_mode) {
+        case LineMode::kD3DDiamond:
+          return "line mode 'd3d' (diamond exit) has no Vulkan equivalent";
+        case LineMode::kQuadWide:
+          return "line mode 'quad-wide' (1.4 px) not supported (Vulkan rectangular lines are 1.0 px wide here)";
+        case LineMode::kVulkanBresenham:
+          if (!info_.lines_bresenham) return "Bresenham lines not supported by the device";
+          break;
+        case LineMode::kQuadNarrow:
+          if (!info_.lines_rectangular) return "rectangular lines not supported by the device";
+          break;
       }
-      slots += slot_count(p);
-    }
-    const double k = position_scale(scene);
-    if (k > max_k_) {
-      return "coordinates need a viewport of side " + std::to_string(2.0 * k) +
-             " (device limit: K <= " + std::to_string(max_k_) + ")";
-    }
-    const std::uint64_t bytes = slots * static_cast<std::uint64_t>(std::max(scene.width, 0)) *
-                                static_cast<std::uint64_t>(std::max(scene.height, 0)) * 4U;
-    if (bytes > kMaxCoverageBytes) {
-      return "coverage buffer of " + std::to_string(bytes) + " bytes exceeds " +
-             std::to_string(kMaxCoverageBytes);
-    }
-    return {};
+      return {};
+    };
+    return checks;
   }
 
   // rule: DRIVER.LAVAPIPE.COVERAGE, DRIVER.LAVAPIPE.POSITION
-  [[nodiscard]] DrawResult draw(const Scene& scene) override {
-    if (std::string why = unsupported(scene); !why.empty()) return DriverError{"unsupported: " + why};
-    auto prepared = prepare(scene);
-    if (const auto* e = std::get_if<SceneError>(&prepared)) {
-      return DriverError{"invalid scene: " + e->what()};
-    }
-    const auto w = static_cast<std::uint32_t>(scene.width);
-    const auto h = static_cast<std::uint32_t>(scene.height);
-    std::vector<Fragment> out;
-    if (w == 0 || h == 0 || scene.primitives.empty()) return out;
-
-    // Slots and vertices: one draw per scene primitive, vertices as float32 exactly as read.
-    std::vector<std::uint32_t> first_slot;
-    std::vector<float> vertices;
-    std::uint32_t slots = 0;
-    for (const Primitive& p : scene.primitives) {
-      first_slot.push_back(slots);
-      slots += slot_count(p);
-      for (const FloatPoint& v : p.v) {
-        vertices.push_back(v[0]);
-        vertices.push_back(v[1]);
-      }
-    }
+  [[nodiscard]] DrawResult draw_packed(const Scene& scene, const detail::PackedScene& packed,
+                                       std::uint32_t w, std::uint32_t h) override {
+    const std::vector<float>& vertices = packed.vertices;
+    const std::uint32_t slots = packed.slots;
     const VkDeviceSize cov_bytes = std::max<VkDeviceSize>(VkDeviceSize{slots} * w * h * 4U, 4U);
     if (std::string why = ensure_buffer(coverage_, cov_bytes,
                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
@@ -247,7 +163,7 @@ class LavapipeDriver final : public Driver {
     std::memcpy(vertex_.mapped, vertices.data(), vertices.size() * sizeof(float));
     if (std::string why = ensure_framebuffer(w, h); !why.empty()) return DriverError{why};
 
-    const double k = position_scale(scene);
+    const double k = detail::position_scale(scene);
     const auto samples = static_cast<VkSampleCountFlagBits>(scene.msaa.count());
     const std::uint32_t mask = scene.msaa.effective_mask();
 
@@ -319,7 +235,7 @@ class LavapipeDriver final : public Driver {
         vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, pl);
         bound = pl;
       }
-      const Push push{static_cast<float>(1.0 / k), first_slot[i], w, h, slots};
+      const Push push{static_cast<float>(1.0 / k), packed.first_slot[i], w, h, slots};
       vkCmdPushConstants(cmd_, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
                          0, sizeof(Push), &push);
       const auto count = static_cast<std::uint32_t>(p.v.size());
@@ -347,27 +263,8 @@ class LavapipeDriver final : public Driver {
     vkResetCommandBuffer(cmd_, 0);
 
     // rule: DRIVER.LAVAPIPE.COVERAGE
-    const auto* cov = static_cast<const std::uint32_t*>(coverage_.mapped);
-    const std::uint32_t all = full_mask(scene.msaa.count());
-    for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
-      const bool strip = scene.primitives[i].type == PrimitiveType::kLineStrip;
-      const std::uint32_t n = slot_count(scene.primitives[i]);
-      for (std::uint32_t s = 0; s < n; ++s) {
-        const std::size_t plane = std::size_t{first_slot[i] + s} * w * h;
-        for (std::uint32_t y = 0; y < h; ++y) {
-          for (std::uint32_t x = 0; x < w; ++x) {
-            const std::uint32_t m = cov[plane + std::size_t{y} * w + x] & all;
-            if (m == 0) continue;
-            Fragment f(static_cast<std::uint32_t>(i), static_cast<std::int32_t>(x),
-                       static_cast<std::int32_t>(y), m);
-            if (strip) f.seg = s;
-            out.push_back(f);
-          }
-        }
-      }
-    }
-    std::sort(out.begin(), out.end(), fragment_before);
-    return out;
+    return detail::decode_coverage(scene, packed, static_cast<const std::uint32_t*>(coverage_.mapped),
+                                   w, h);
   }
 
  private:
@@ -430,8 +327,7 @@ class LavapipeDriver final : public Driver {
     const double max_dim = std::min(lim.maxViewportDimensions[0], lim.maxViewportDimensions[1]);
     const double bound = std::min(-static_cast<double>(lim.viewportBoundsRange[0]),
                                   static_cast<double>(lim.viewportBoundsRange[1]));
-    max_k_ = 1.0;
-    while (2.0 * (2.0 * max_k_) <= max_dim && 2.0 * max_k_ <= bound) max_k_ *= 2.0;
+    max_k_ = detail::max_position_scale(max_dim, bound);
     const double fb = std::min(lim.maxFramebufferWidth, lim.maxFramebufferHeight);
     info_.max_target_side = static_cast<std::int32_t>(std::min(fb, max_k_));
     return {};
@@ -762,7 +658,6 @@ class LavapipeDriver final : public Driver {
     }
   }
 
-  DriverInfo info_;
   VkInstance instance_ = VK_NULL_HANDLE;
   VkPhysicalDevice physical_ = VK_NULL_HANDLE;
   VkPhysicalDeviceProperties props_{};
@@ -771,7 +666,6 @@ class LavapipeDriver final : public Driver {
   bool bresenham_ = false;
   bool rectangular_ = false;
   bool smooth_ = false;
-  double max_k_ = 1.0;
   std::uint32_t family_ = 0;
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;
@@ -800,16 +694,7 @@ namespace detail {
 
 // rule: DRIVER.LAVAPIPE.DEVICE
 std::unique_ptr<Driver> open_lavapipe(std::string_view arg, std::string* error) {
-  if (!arg.empty()) {
-    *error = "driver 'lavapipe' takes no argument";
-    return nullptr;
-  }
-  auto d = std::make_unique<LavapipeDriver>();
-  if (std::string why = d->init(); !why.empty()) {
-    *error = why;
-    return nullptr;
-  }
-  return d;
+  return open_gpu_driver<LavapipeDriver>("lavapipe", arg, error);
 }
 
 }  // namespace detail

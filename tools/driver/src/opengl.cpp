@@ -23,14 +23,12 @@
 #include <vector>
 
 #include "drivers.hpp"
+#include "gpu_common.hpp"
 #include "rastrules/driver/opengl_shaders.h"
 #include "rastrules/scene.hpp"
 
 namespace rastrules::driver {
 namespace {
-
-// The largest coverage buffer one draw may use (slots * width * height * 4 bytes).
-constexpr std::uint64_t kMaxCoverageBytes = std::uint64_t{256} << 20;
 
 // Uniform locations of shaders/opengl_coverage.*.
 constexpr GLint kUniformInvK = 0;
@@ -38,35 +36,6 @@ constexpr GLint kUniformSlot = 1;
 constexpr GLint kUniformWidth = 2;
 constexpr GLint kUniformHeight = 3;
 constexpr GLint kUniformSlots = 4;
-
-bool is_line(PrimitiveType t) { return t == PrimitiveType::kLine || t == PrimitiveType::kLineStrip; }
-
-// The number of coverage slots of a primitive: one, or one per segment of a strip.
-std::uint32_t slot_count(const Primitive& p) {
-  if (p.type == PrimitiveType::kLineStrip) {
-    return p.v.size() < 2 ? 0U : static_cast<std::uint32_t>(p.v.size() - 1);
-  }
-  return 1U;
-}
-
-// Returns K, the smallest power of two >= every extent the scene needs, or 0 when a
-// coordinate is not finite (prepare() reports it). Same argument as DRIVER.LAVAPIPE.POSITION.
-// rule: DRIVER.OPENGL.POSITION
-double position_scale(const Scene& scene) {
-  double extent = std::max({1.0, static_cast<double>(scene.width), static_cast<double>(scene.height)});
-  for (const Primitive& p : scene.primitives) {
-    for (const FloatPoint& v : p.v) {
-      for (float c : v) {
-        if (!std::isfinite(c)) return 0.0;
-        extent = std::max(extent, std::fabs(static_cast<double>(c)));
-      }
-    }
-  }
-  extent += 2.0;  // keeps point squares and line rectangles inside the viewport
-  double k = 1.0;
-  while (k < extent) k *= 2.0;
-  return k;
-}
 
 std::string egl_failed(const char* what) {
   return std::string("opengl: ") + what + " failed (EGL error 0x" + [] {
@@ -88,11 +57,8 @@ bool has_extension(const char* list, std::string_view name) {
   return false;
 }
 
-class OpenGLDriver final : public Driver {
+class OpenGLDriver final : public detail::GpuDriver {
  public:
-  OpenGLDriver() = default;
-  OpenGLDriver(const OpenGLDriver&) = delete;
-  OpenGLDriver& operator=(const OpenGLDriver&) = delete;
   ~OpenGLDriver() override { destroy(); }
 
   // Opens the display, creates the context and everything draws share. Returns an empty
@@ -118,91 +84,47 @@ class OpenGLDriver final : public Driver {
     return create_shared();
   }
 
-  [[nodiscard]] const DriverInfo& info() const override { return info_; }
-
   // rule: DRIVER.OPENGL.SUPPORT
-  [[nodiscard]] std::string unsupported(const Scene& scene) const override {
-    const MultisampleState& ms = scene.msaa;
-    if (ms.pattern.kind != PatternKind::kStandard) {
-      return "sample pattern '" + std::string(to_string(ms.pattern.kind)) +
-             "' not supported (OpenGL has the implementation's fixed positions only)";
-    }
-    const std::uint32_t samples = ms.count();
-    if (std::find(info_.sample_counts.begin(), info_.sample_counts.end(), samples) ==
-        info_.sample_counts.end()) {
-      return std::to_string(samples) + " samples not supported by " + renderer_ +
-             " with the standard positions";
-    }
-    if (samples == 1 && (ms.effective_mask() & 1U) == 0U) {
-      return "a sample mask without sample 0 on a 1-sample target (OpenGL ignores the sample "
-             "mask without a multisample buffer)";
-    }
-    if (ms.shading == ShadingRate::kSample) {
-      return "sample-frequency shading not supported (the adapter observes coverage per pixel)";
-    }
-    if (scene.width > info_.max_target_side || scene.height > info_.max_target_side) {
-      return "target " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
-             " larger than " + std::to_string(info_.max_target_side);
-    }
-    std::uint64_t slots = 0;
-    for (const Primitive& p : scene.primitives) {
-      if (is_line(p.type)) {
-        if (p.aa) return "antialiased lines not supported (GL_LINE_SMOOTH is not used)";
-        if (samples == 1 && scene.line_mode != LineMode::kVulkanBresenham) {
-          return "line mode '" + std::string(to_string(scene.line_mode)) +
-                 "' not supported on 1 sample (OpenGL aliased lines are 'vulkan-bresenham')";
-        }
-        if (samples > 1 && scene.line_mode != LineMode::kQuadNarrow) {
-          return "line mode '" + std::string(to_string(scene.line_mode)) +
-                 "' not supported on a multisampled target (OpenGL multisampled lines are "
-                 "rectangles, 'quad-narrow')";
-        }
+  [[nodiscard]] detail::SupportChecks support_checks() const override {
+    detail::SupportChecks checks;
+    checks.pattern_note = "OpenGL has the implementation's fixed positions only";
+    checks.count_by = renderer_ + " with the standard positions";
+    checks.k_limit = "limit";
+    checks.msaa = [](const MultisampleState& ms) -> std::string {
+      if (ms.count() == 1 && (ms.effective_mask() & 1U) == 0U) {
+        return "a sample mask without sample 0 on a 1-sample target (OpenGL ignores the sample "
+               "mask without a multisample buffer)";
       }
-      slots += slot_count(p);
-    }
-    const double k = position_scale(scene);
-    if (k > max_k_) {
-      return "coordinates need a viewport of side " + std::to_string(2.0 * k) +
-             " (limit: K <= " + std::to_string(max_k_) + ")";
-    }
-    const std::uint64_t bytes = slots * static_cast<std::uint64_t>(std::max(scene.width, 0)) *
-                                static_cast<std::uint64_t>(std::max(scene.height, 0)) * 4U;
-    if (bytes > kMaxCoverageBytes) {
-      return "coverage buffer of " + std::to_string(bytes) + " bytes exceeds " +
-             std::to_string(kMaxCoverageBytes);
-    }
-    return {};
+      return {};
+    };
+    checks.line = [](const Scene& s, const Primitive& p) -> std::string {
+      const std::uint32_t samples = s.msaa.count();
+      if (p.aa) return "antialiased lines not supported (GL_LINE_SMOOTH is not used)";
+      if (samples == 1 && s.line_mode != LineMode::kVulkanBresenham) {
+        return "line mode '" + std::string(to_string(s.line_mode)) +
+               "' not supported on 1 sample (OpenGL aliased lines are 'vulkan-bresenham')";
+      }
+      if (samples > 1 && s.line_mode != LineMode::kQuadNarrow) {
+        return "line mode '" + std::string(to_string(s.line_mode)) +
+               "' not supported on a multisampled target (OpenGL multisampled lines are "
+               "rectangles, 'quad-narrow')";
+      }
+      return {};
+    };
+    return checks;
   }
 
   // rule: DRIVER.OPENGL.COVERAGE, DRIVER.OPENGL.POSITION
-  [[nodiscard]] DrawResult draw(const Scene& scene) override {
-    if (std::string why = unsupported(scene); !why.empty()) return DriverError{"unsupported: " + why};
-    auto prepared = prepare(scene);
-    if (const auto* e = std::get_if<SceneError>(&prepared)) {
-      return DriverError{"invalid scene: " + e->what()};
-    }
-    const auto w = static_cast<std::uint32_t>(scene.width);
-    const auto h = static_cast<std::uint32_t>(scene.height);
-    std::vector<Fragment> out;
-    if (w == 0 || h == 0 || scene.primitives.empty()) return out;
+  [[nodiscard]] DrawResult draw_packed(const Scene& scene, const detail::PackedScene& packed,
+                                       std::uint32_t w, std::uint32_t h) override {
     if (eglMakeCurrent(display_, surface_, surface_, context_) != EGL_TRUE) {
       return DriverError{egl_failed("eglMakeCurrent")};
     }
     while (glGetError() != GL_NO_ERROR) {
     }
 
-    // Slots and vertices: one draw per scene primitive, vertices as float32 exactly as read.
-    std::vector<std::uint32_t> first_slot;
-    std::vector<float> vertices;
-    std::uint32_t slots = 0;
-    for (const Primitive& p : scene.primitives) {
-      first_slot.push_back(slots);
-      slots += slot_count(p);
-      for (const FloatPoint& v : p.v) {
-        vertices.push_back(v[0]);
-        vertices.push_back(v[1]);
-      }
-    }
+    const std::vector<float>& vertices = packed.vertices;
+    const std::uint32_t slots = packed.slots;
     const std::size_t cov_words = std::max<std::size_t>(std::size_t{slots} * w * h, 1);
     const std::uint32_t samples = scene.msaa.count();
     if (std::string why = ensure_framebuffer(w, h, samples); !why.empty()) return DriverError{why};
@@ -232,7 +154,7 @@ class OpenGLDriver final : public Driver {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
 
     // rule: DRIVER.OPENGL.POSITION
-    const double k = position_scale(scene);
+    const double k = detail::position_scale(scene);
     const auto ki = static_cast<GLint>(k);
     glViewport(-ki, -ki, 2 * ki, 2 * ki);
     glDepthRangef(0.0F, 1.0F);
@@ -280,7 +202,7 @@ class OpenGLDriver final : public Driver {
           glDisable(GL_CULL_FACE);
           break;
       }
-      glUniform1ui(kUniformSlot, first_slot[i]);
+      glUniform1ui(kUniformSlot, packed.first_slot[i]);
       const auto count = static_cast<GLsizei>(p.v.size());
       glDrawArrays(mode, first_vertex, count);
       first_vertex += count;
@@ -294,26 +216,7 @@ class OpenGLDriver final : public Driver {
     }
 
     // rule: DRIVER.OPENGL.COVERAGE
-    const std::uint32_t all = full_mask(samples);
-    for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
-      const bool strip = scene.primitives[i].type == PrimitiveType::kLineStrip;
-      const std::uint32_t n = slot_count(scene.primitives[i]);
-      for (std::uint32_t s = 0; s < n; ++s) {
-        const std::size_t plane = std::size_t{first_slot[i] + s} * w * h;
-        for (std::uint32_t y = 0; y < h; ++y) {
-          for (std::uint32_t x = 0; x < w; ++x) {
-            const std::uint32_t m = cov[plane + std::size_t{y} * w + x] & all;
-            if (m == 0) continue;
-            Fragment f(static_cast<std::uint32_t>(i), static_cast<std::int32_t>(x),
-                       static_cast<std::int32_t>(y), m);
-            if (strip) f.seg = s;
-            out.push_back(f);
-          }
-        }
-      }
-    }
-    std::sort(out.begin(), out.end(), fragment_before);
-    return out;
+    return detail::decode_coverage(scene, packed, cov.data(), w, h);
   }
 
  private:
@@ -422,8 +325,7 @@ class OpenGLDriver final : public Driver {
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &rb);
     const double max_dim = std::min(dims[0], dims[1]);
     const double bound = std::min(-static_cast<double>(range[0]), static_cast<double>(range[1]));
-    max_k_ = 1.0;
-    while (2.0 * (2.0 * max_k_) <= max_dim && 2.0 * max_k_ <= bound) max_k_ *= 2.0;
+    max_k_ = detail::max_position_scale(max_dim, bound);
     info_.max_target_side = static_cast<std::int32_t>(std::min(static_cast<double>(rb), max_k_));
     return {};
   }
@@ -557,11 +459,9 @@ class OpenGLDriver final : public Driver {
     display_ = EGL_NO_DISPLAY;
   }
 
-  DriverInfo info_;
   std::string renderer_;
   std::string platform_;
   std::string egl_version_;
-  double max_k_ = 1.0;
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLSurface surface_ = EGL_NO_SURFACE;
   EGLContext context_ = EGL_NO_CONTEXT;
@@ -583,16 +483,7 @@ namespace detail {
 
 // rule: DRIVER.OPENGL.DEVICE
 std::unique_ptr<Driver> open_opengl(std::string_view arg, std::string* error) {
-  if (!arg.empty()) {
-    *error = "driver 'opengl' takes no argument";
-    return nullptr;
-  }
-  auto d = std::make_unique<OpenGLDriver>();
-  if (std::string why = d->init(); !why.empty()) {
-    *error = why;
-    return nullptr;
-  }
-  return d;
+  return open_gpu_driver<OpenGLDriver>("opengl", arg, error);
 }
 
 }  // namespace detail
