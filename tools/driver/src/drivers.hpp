@@ -32,4 +32,10 @@ std::unique_ptr<Driver> open_opengl(std::string_view arg, std::string* error);
 // rule: DRIVER.INTERFACE
 [[nodiscard]] std::vector<Fragment> observable(std::vector<Fragment> fragments);
 
+// Returns the info of a driver that draws everything a scene can ask for (every sample count,
+// primitive, line mode, the sample mask and sample shading, targets up to kMaxTargetSide): the
+// reference and, by declaration, an external process.
+[[nodiscard]] DriverInfo full_capabilities(std::string name, std::string description,
+                                           int subpixel_bits);
+
 }  // namespace rastrules::driver::detail

@@ -189,18 +189,9 @@ std::string one_line(std::string s) {
 class ExternalDriver final : public Driver {
  public:
   ExternalDriver(std::string command, ExternalOptions options)
-      : argv_(external_argv(command)), options_(options) {
-    info_.name = "external";
-    info_.description = command;
-    info_.subpixel_bits = -1;
-    info_.sample_counts = {1, 2, 4, 8, 16};
-    info_.points = true;
-    info_.lines_bresenham = true;
-    info_.lines_rectangular = true;
-    info_.lines_d3d = true;
-    info_.sample_mask = true;
-    info_.sample_shading = true;
-    info_.max_target_side = kMaxTargetSide;
+      : argv_(external_argv(command)),
+        options_(options),
+        info_(detail::full_capabilities("external", command, -1)) {
     // A process that exits without reading its input must not kill us with SIGPIPE.
     struct sigaction ignore {};
     ignore.sa_handler = SIG_IGN;

@@ -24,25 +24,32 @@ std::vector<Fragment> observable(std::vector<Fragment> fragments) {
   return fragments;
 }
 
+// rule: DRIVER.INTERFACE
+DriverInfo full_capabilities(std::string name, std::string description, int subpixel_bits) {
+  DriverInfo info;
+  info.name = std::move(name);
+  info.description = std::move(description);
+  info.subpixel_bits = subpixel_bits;
+  info.sample_counts = {1, 2, 4, 8, 16};
+  info.points = true;
+  info.lines_bresenham = true;
+  info.lines_rectangular = true;
+  info.lines_d3d = true;
+  info.sample_mask = true;
+  info.sample_shading = true;
+  info.max_target_side = kMaxTargetSide;
+  return info;
+}
+
 }  // namespace detail
 
 namespace {
 
 class ReferenceDriver final : public Driver {
  public:
-  ReferenceDriver() {
-    info_.name = "reference";
-    info_.description = "rastrules reference kernel (fixed point, 16.8 snapping)";
-    info_.subpixel_bits = kSubpixelBits;
-    info_.sample_counts = {1, 2, 4, 8, 16};
-    info_.points = true;
-    info_.lines_bresenham = true;
-    info_.lines_rectangular = true;
-    info_.lines_d3d = true;
-    info_.sample_mask = true;
-    info_.sample_shading = true;
-    info_.max_target_side = kMaxTargetSide;
-  }
+  ReferenceDriver()
+      : info_(detail::full_capabilities("reference", "rastrules reference kernel (fixed point, 16.8 snapping)",
+                                kSubpixelBits)) {}
 
   [[nodiscard]] const DriverInfo& info() const override { return info_; }
 

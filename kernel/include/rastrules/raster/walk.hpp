@@ -26,11 +26,14 @@ struct PixelRect {
   [[nodiscard]] constexpr bool empty() const { return x1 < x0 || y1 < y0; }
 };
 
-// Returns the pixels whose centres lie in the bounding box of the snapped vertices, clipped
-// to the target [0, width) x [0, height).
+// Returns the pixels of the target [0, width) x [0, height) that have a sample point in the
+// bounding box of the snapped vertices, for sample points at raw offsets [dx0, dx1] x [dy0, dy1]
+// from the pixel centre (all zero: the pixel centre itself).
 // rule: RASTER.WALK.BBOX, RASTER.TARGET.CLIP
-[[nodiscard]] constexpr PixelRect pixel_bounds(const TriangleSetup& t, std::int32_t width,
-                                               std::int32_t height) {
+[[nodiscard]] constexpr PixelRect pixel_bounds_with_offsets(const TriangleSetup& t, std::int32_t width,
+                                                            std::int32_t height, std::int64_t dx0,
+                                                            std::int64_t dx1, std::int64_t dy0,
+                                                            std::int64_t dy1) {
   std::int64_t minx = t.snapped[0].x.raw(), maxx = minx;
   std::int64_t miny = t.snapped[0].y.raw(), maxy = miny;
   for (const Vec2& v : t.snapped) {
@@ -39,17 +42,26 @@ struct PixelRect {
     miny = std::min<std::int64_t>(miny, v.y.raw());
     maxy = std::max<std::int64_t>(maxy, v.y.raw());
   }
-  // Centre of pixel p is p*256 + 128: the first centre >= min, the last centre <= max.
-  const std::int64_t px0 = -floor_div(-(minx - kSubpixelHalf), kSubpixelOne);
-  const std::int64_t px1 = floor_div(maxx - kSubpixelHalf, kSubpixelOne);
-  const std::int64_t py0 = -floor_div(-(miny - kSubpixelHalf), kSubpixelOne);
-  const std::int64_t py1 = floor_div(maxy - kSubpixelHalf, kSubpixelOne);
+  // A sample of pixel p is at p*256 + 128 + d: pixel p has one in [min, max] only if
+  // p*256 + 128 + d1 >= min and p*256 + 128 + d0 <= max.
+  const std::int64_t px0 = -floor_div(-(minx - kSubpixelHalf - dx1), kSubpixelOne);
+  const std::int64_t px1 = floor_div(maxx - kSubpixelHalf - dx0, kSubpixelOne);
+  const std::int64_t py0 = -floor_div(-(miny - kSubpixelHalf - dy1), kSubpixelOne);
+  const std::int64_t py1 = floor_div(maxy - kSubpixelHalf - dy0, kSubpixelOne);
   PixelRect r;
   r.x0 = static_cast<std::int32_t>(std::max<std::int64_t>(px0, 0));
   r.y0 = static_cast<std::int32_t>(std::max<std::int64_t>(py0, 0));
   r.x1 = static_cast<std::int32_t>(std::min<std::int64_t>(px1, std::int64_t{width} - 1));
   r.y1 = static_cast<std::int32_t>(std::min<std::int64_t>(py1, std::int64_t{height} - 1));
   return r;
+}
+
+// Returns the pixels whose centres lie in the bounding box of the snapped vertices, clipped
+// to the target [0, width) x [0, height).
+// rule: RASTER.WALK.BBOX, RASTER.TARGET.CLIP
+[[nodiscard]] constexpr PixelRect pixel_bounds(const TriangleSetup& t, std::int32_t width,
+                                               std::int32_t height) {
+  return pixel_bounds_with_offsets(t, width, height, 0, 0, 0, 0);
 }
 
 // Calls emit(x, y) for every covered pixel centre of t inside the target, row by row.

@@ -29,14 +29,6 @@ namespace rastrules::raster {
 [[nodiscard]] constexpr PixelRect sample_pixel_bounds(const TriangleSetup& t,
                                                       const SamplePattern& pattern,
                                                       std::int32_t width, std::int32_t height) {
-  std::int64_t minx = t.snapped[0].x.raw(), maxx = minx;
-  std::int64_t miny = t.snapped[0].y.raw(), maxy = miny;
-  for (const Vec2& v : t.snapped) {
-    minx = std::min<std::int64_t>(minx, v.x.raw());
-    maxx = std::max<std::int64_t>(maxx, v.x.raw());
-    miny = std::min<std::int64_t>(miny, v.y.raw());
-    maxy = std::max<std::int64_t>(maxy, v.y.raw());
-  }
   std::int64_t ox0 = pattern.positions[0].x, ox1 = ox0;
   std::int64_t oy0 = pattern.positions[0].y, oy1 = oy0;
   for (const SampleOffset& o : pattern.positions) {
@@ -45,19 +37,8 @@ namespace rastrules::raster {
     oy0 = std::min<std::int64_t>(oy0, o.y);
     oy1 = std::max<std::int64_t>(oy1, o.y);
   }
-  // Sample (i, j) of pixel p lies at p*256 + 128 + 16 i. Pixel p can have a sample in
-  // [min, max] only if p*256 + 128 + 16 ox1 >= min and p*256 + 128 + 16 ox0 <= max.
   const std::int64_t g = kSampleGridUnit;
-  const std::int64_t px0 = -floor_div(-(minx - kSubpixelHalf - g * ox1), kSubpixelOne);
-  const std::int64_t px1 = floor_div(maxx - kSubpixelHalf - g * ox0, kSubpixelOne);
-  const std::int64_t py0 = -floor_div(-(miny - kSubpixelHalf - g * oy1), kSubpixelOne);
-  const std::int64_t py1 = floor_div(maxy - kSubpixelHalf - g * oy0, kSubpixelOne);
-  PixelRect r;
-  r.x0 = static_cast<std::int32_t>(std::max<std::int64_t>(px0, 0));
-  r.y0 = static_cast<std::int32_t>(std::max<std::int64_t>(py0, 0));
-  r.x1 = static_cast<std::int32_t>(std::min<std::int64_t>(px1, std::int64_t{width} - 1));
-  r.y1 = static_cast<std::int32_t>(std::min<std::int64_t>(py1, std::int64_t{height} - 1));
-  return r;
+  return pixel_bounds_with_offsets(t, width, height, g * ox0, g * ox1, g * oy0, g * oy1);
 }
 
 // Calls emit(x, y, mask) for every pixel of the target where t covers at least one sample of
