@@ -640,6 +640,29 @@ bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p,
   return true;
 }
 
+// TEMPORARY (session 3 contract): options-taking entry points forward to the plain ones until
+// the fast traversal (FAST.EQUALS.PLAIN) and threads (FAST.THREADS.DETERMINISTIC) are wired in.
+std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_t p,
+                                          const RenderOptions& /*options*/) {
+  return rasterize_primitive(scene, p);
+}
+void for_each_fragment(const PreparedScene& scene, std::size_t p, const RenderOptions& /*options*/,
+                       const std::function<void(const Fragment&)>& emit) {
+  for_each_fragment(scene, p, emit);
+}
+bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p, std::uint64_t max_collected,
+                               const RenderOptions& /*options*/,
+                               const std::function<void(const Fragment&)>& emit) {
+  return for_each_fragment_bounded(scene, p, max_collected, emit);
+}
+std::vector<Fragment> rasterize(const PreparedScene& scene, const RenderOptions& /*options*/) {
+  return rasterize(scene);
+}
+std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene,
+                                                       const RenderOptions& /*options*/) {
+  return render(scene);
+}
+
 // rule: SCENE.OUTPUT.FRAGMENTS
 std::vector<Fragment> rasterize(const PreparedScene& scene) {
   std::vector<Fragment> out;

@@ -8,7 +8,7 @@ Reads the rule registry (level-3 headings `### <ID> — <title>` in spec/**/*.md
 
   * every rule ID is defined once, has a valid kind, and depends only on defined IDs;
   * every cited ID exists and every tag is well formed;
-  * every normative rule has an implementation site (kernel/, tools/ except tools/trace/)
+  * every normative rule has an implementation site (kernel/, bench/, tools/ except tools/trace/)
     and an example test (tests/).
 
   * every normative or derived rule of the rule families that issue #2 requires to be
@@ -161,7 +161,7 @@ def category_of(relpath):
     """Returns the evidence category of a source file, or None if it is not scanned."""
     parts = relpath.split("/")
     top = parts[0]
-    if top == "kernel":
+    if top in ("kernel", "bench"):
         return "implementation"
     if top == "tools":
         return None if len(parts) > 1 and parts[1] == "trace" else "implementation"
@@ -177,7 +177,7 @@ def category_of(relpath):
 def scan_tags(root, rules, report):
     """Attaches every tag to its rules; records unknown IDs and malformed tags."""
     tags = 0
-    for top in ("kernel", "tools", "proofs", "properties", "tests"):
+    for top in ("kernel", "bench", "tools", "proofs", "properties", "tests"):
         base = os.path.join(root, top)
         if not os.path.isdir(base):
             continue
@@ -208,7 +208,7 @@ def scan_tags(root, rules, report):
 
 
 # Rule areas whose normative and derived rules must have a property or a proof.
-STRICT_AREAS = ("TRI.", "SNAP.", "FIX.", "RASTER.", "POINT.", "LINE.", "MSAA.")
+STRICT_AREAS = ("TRI.", "SNAP.", "FIX.", "RASTER.", "POINT.", "LINE.", "MSAA.", "FAST.")
 
 
 def check_evidence(rules, report):

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "rastrules/fixed.hpp"
+#include "rastrules/isa.hpp"
 #include "rastrules/line.hpp"
 #include "rastrules/msaa.hpp"
 #include "rastrules/snap.hpp"
@@ -143,6 +144,12 @@ struct PreparedScene {
 // inside the target. Preconditions: p < scene.primitives.size().
 // rule: SCENE.OUTPUT.FRAGMENTS, RASTER.TARGET.CLIP
 [[nodiscard]] std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_t p);
+// The same with the traversal and instruction set of options (options.threads is not used:
+// one primitive is rasterized by the calling thread). Equal results for all options
+// (FAST.EQUALS.PLAIN, FAST.ISA.DISPATCH).
+// rule: FAST.EQUALS.PLAIN
+[[nodiscard]] std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_t p,
+                                                        const RenderOptions& options);
 
 // Calls emit for each fragment of primitive p in (y, x, seg, sample) order, as
 // rasterize_primitive returns them. In a single-sample scene (one sample at the centre, full
@@ -152,6 +159,8 @@ struct PreparedScene {
 // proportional to that one primitive's fragments).
 // rule: SCENE.OUTPUT.FRAGMENTS
 void for_each_fragment(const PreparedScene& scene, std::size_t p,
+                       const std::function<void(const Fragment&)>& emit);
+void for_each_fragment(const PreparedScene& scene, std::size_t p, const RenderOptions& options,
                        const std::function<void(const Fragment&)>& emit);
 
 // for_each_fragment with a bound on memory: a primitive whose fragments are collected and
@@ -165,11 +174,19 @@ void for_each_fragment(const PreparedScene& scene, std::size_t p,
 [[nodiscard]] bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p,
                                              std::uint64_t max_collected,
                                              const std::function<void(const Fragment&)>& emit);
+[[nodiscard]] bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p,
+                                             std::uint64_t max_collected,
+                                             const RenderOptions& options,
+                                             const std::function<void(const Fragment&)>& emit);
 
 // Returns the fragments of a prepared scene sorted by (prim, y, x, seg, sample), only inside the
 // target.
 // rule: SCENE.OUTPUT.FRAGMENTS, RASTER.TARGET.CLIP
 [[nodiscard]] std::vector<Fragment> rasterize(const PreparedScene& scene);
+// The same with options: primitives are rasterized by options.threads threads and the result
+// is identical for every thread count (FAST.THREADS.DETERMINISTIC).
+// rule: FAST.THREADS.DETERMINISTIC
+[[nodiscard]] std::vector<Fragment> rasterize(const PreparedScene& scene, const RenderOptions& options);
 
 // A resolved target: one RGBA8 value per pixel, row-major, y down.
 struct ResolvedImage {
@@ -192,5 +209,7 @@ inline constexpr std::int64_t kMaxResolveSamples = std::int64_t{1} << 26;
 
 // prepare() then rasterize().
 [[nodiscard]] std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene);
+[[nodiscard]] std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene,
+                                                                    const RenderOptions& options);
 
 }  // namespace rastrules

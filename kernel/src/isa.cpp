@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+// Run-time choice of the fast traversal's instruction set (FAST.ISA.DISPATCH).
+
+#include "rastrules/isa.hpp"
+
+namespace rastrules {
+
+std::string_view to_string(Isa isa) {
+  switch (isa) {
+    case Isa::kScalar: return "scalar";
+    case Isa::kAvx2: return "avx2";
+    case Isa::kAvx512: return "avx512";
+  }
+  return "?";
+}
+
+std::optional<Isa> parse_isa(std::string_view name) {
+  for (Isa isa : {Isa::kScalar, Isa::kAvx2, Isa::kAvx512})
+    if (name == to_string(isa)) return isa;
+  return std::nullopt;
+}
+
+// rule: FAST.ISA.DISPATCH
+bool isa_supported(Isa isa) {
+  switch (isa) {
+    case Isa::kScalar: return true;
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+    case Isa::kAvx2:
+      __builtin_cpu_init();
+      return __builtin_cpu_supports("avx2") != 0;
+    case Isa::kAvx512:
+      __builtin_cpu_init();
+      return __builtin_cpu_supports("avx512f") != 0 && __builtin_cpu_supports("avx512bw") != 0 &&
+             __builtin_cpu_supports("avx512vl") != 0;
+#else
+    case Isa::kAvx2:
+    case Isa::kAvx512:
+      return false;
+#endif
+  }
+  return false;
+}
+
+// rule: FAST.ISA.DISPATCH
+Isa best_isa() {
+  static const Isa best = isa_supported(Isa::kAvx512) ? Isa::kAvx512
+                          : isa_supported(Isa::kAvx2) ? Isa::kAvx2
+                                                      : Isa::kScalar;
+  return best;
+}
+
+Isa effective_isa(const RenderOptions& options) { return options.isa ? *options.isa : best_isa(); }
+
+std::string_view to_string(Traversal t) { return t == Traversal::kPlain ? "plain" : "fast"; }
+
+std::optional<Traversal> parse_traversal(std::string_view name) {
+  if (name == "plain") return Traversal::kPlain;
+  if (name == "fast") return Traversal::kFast;
+  return std::nullopt;
+}
+
+}  // namespace rastrules
