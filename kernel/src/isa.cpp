@@ -3,6 +3,8 @@
 
 #include "rastrules/isa.hpp"
 
+#include <cstdlib>
+
 namespace rastrules {
 
 std::string_view to_string(Isa isa) {
@@ -20,8 +22,16 @@ std::optional<Isa> parse_isa(std::string_view name) {
   return std::nullopt;
 }
 
+std::optional<Isa> isa_cap() {
+  const char* value = std::getenv(kMaxIsaVariable);
+  if (value == nullptr || *value == '\0') return std::nullopt;
+  return parse_isa(value).value_or(Isa::kScalar);
+}
+
 // rule: FAST.ISA.DISPATCH
 bool isa_supported(Isa isa) {
+  if (const std::optional<Isa> cap = isa_cap(); cap && static_cast<int>(isa) > static_cast<int>(*cap))
+    return false;
   switch (isa) {
     case Isa::kScalar: return true;
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))

@@ -16,6 +16,7 @@
 #include <tuple>
 
 #include "rastrules/point.hpp"
+#include "rastrules/raster/fast.hpp"
 #include "rastrules/raster/walk.hpp"
 #include "rastrules/raster/walk_msaa.hpp"
 
@@ -346,6 +347,33 @@ void take(CollectBudget* budget) {
   --budget->left;
 }
 
+// Calls emit(x, y) for the pixel centres t covers, by the traversal of options: both yield the
+// same pixels in the same order (FAST.EQUALS.PLAIN).
+// rule: FAST.EQUALS.PLAIN, RASTER.WALK.BBOX
+template <class Emit>
+void walk_centres(const PreparedScene& scene, const TriangleSetup& t, const RenderOptions& options,
+                  Emit&& emit) {
+  if (options.traversal == Traversal::kFast) {
+    raster::walk_triangle_fast(t, scene.width, scene.height, effective_isa(options), emit);
+  } else {
+    raster::walk_triangle(t, scene.width, scene.height, emit);
+  }
+}
+
+// Calls emit(x, y, mask) for the pixels with samples of the pattern t covers, by the traversal
+// of options (FAST.EQUALS.PLAIN).
+// rule: FAST.EQUALS.PLAIN, MSAA.COVER.SAMPLE
+template <class Emit>
+void walk_samples(const PreparedScene& scene, const TriangleSetup& t, const RenderOptions& options,
+                  Emit&& emit) {
+  if (options.traversal == Traversal::kFast) {
+    raster::walk_triangle_samples_fast(t, scene.msaa.pattern, scene.width, scene.height,
+                                       effective_isa(options), emit);
+  } else {
+    raster::walk_triangle_samples(t, scene.msaa.pattern, scene.width, scene.height, emit);
+  }
+}
+
 bool is_single_sample(const PreparedScene& scene) {
   const MultisampleState& ms = scene.msaa;
   return ms.count() == 1 && ms.pattern.positions[0] == SampleOffset{} &&
@@ -356,7 +384,7 @@ bool is_single_sample(const PreparedScene& scene) {
 // The single-sample path (issues #2 and #3).
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.PRIM.LINE_STRIP
 std::vector<Fragment> rasterize_single(const PreparedScene& scene, std::size_t p,
-                                       CollectBudget* budget) {
+                                       const RenderOptions& options, CollectBudget* budget) {
   const PreparedPrimitive& prim = scene.primitives[p];
   const auto id = static_cast<std::uint32_t>(p);
   const bool strip = prim.type == PrimitiveType::kLineStrip;
@@ -367,11 +395,10 @@ std::vector<Fragment> rasterize_single(const PreparedScene& scene, std::size_t p
   if (!prim.triangles.empty() || !is_line(prim.type)) {
     // Triangles, points (two triangles that never overlap) and quadrilateral lines.
     for (const PreparedTriangle& t : prim.triangles) {
-      raster::walk_triangle(t.setup, scene.width, scene.height,
-                            [&](std::int32_t x, std::int32_t y) {
-                              take(budget);
-                              out.push_back(Fragment{id, x, y, 1u, seg_of(t.seg), std::nullopt});
-                            });
+      walk_centres(scene, t.setup, options, [&](std::int32_t x, std::int32_t y) {
+        take(budget);
+        out.push_back(Fragment{id, x, y, 1u, seg_of(t.seg), std::nullopt});
+      });
     }
   } else {
     for (std::size_t s = 0; s + 1 < prim.v.size(); ++s) {
@@ -414,18 +441,18 @@ struct PixelCoverage {
 // segment.
 // rule: MSAA.COVER.SAMPLE, MSAA.POINT.PER_SAMPLE, MSAA.LINE.MODE
 std::vector<PixelCoverage> sample_coverage_of(const PreparedScene& scene,
-                                              const PreparedPrimitive& prim, CollectBudget* budget) {
+                                              const PreparedPrimitive& prim,
+                                              const RenderOptions& options, CollectBudget* budget) {
   const SamplePattern& pattern = scene.msaa.pattern;
   std::vector<PixelCoverage> cov;
   if (!is_line(prim.type) || lines_as_quads(scene.line_mode, prim.aa, pattern.count())) {
     // Triangles, a point's two triangles and quadrilateral lines: every sample tested.
     // rule: MSAA.COVER.SAMPLE, MSAA.POINT.PER_SAMPLE
     for (const PreparedTriangle& t : prim.triangles) {
-      raster::walk_triangle_samples(t.setup, pattern, scene.width, scene.height,
-                                    [&](std::int32_t x, std::int32_t y, std::uint32_t mask) {
-                                      take(budget);
-                                      cov.push_back(PixelCoverage{t.seg, y, x, mask, std::nullopt});
-                                    });
+      walk_samples(scene, t.setup, options, [&](std::int32_t x, std::int32_t y, std::uint32_t mask) {
+        take(budget);
+        cov.push_back(PixelCoverage{t.seg, y, x, mask, std::nullopt});
+      });
     }
   } else {
     // Vulkan Bresenham lines (any count) and D3D lines with one sample: every sample of each
@@ -471,7 +498,7 @@ std::vector<PixelCoverage> sample_coverage_of(const PreparedScene& scene,
 // rule: MSAA.MASK.AND, MSAA.SHADING.PIXEL, MSAA.SHADING.SAMPLE, MSAA.QUAD.HELPER
 // rule: MSAA.DERIV.FINE, MSAA.DERIV.COARSE, SCENE.OUTPUT.MSAA
 std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p,
-                                     CollectBudget* budget) {
+                                     const RenderOptions& options, CollectBudget* budget) {
   const PreparedPrimitive& prim = scene.primitives[p];
   const MultisampleState& ms = scene.msaa;
   const SamplePattern& pattern = ms.pattern;
@@ -488,7 +515,7 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p,
 
   // rule: MSAA.MASK.AND
   if (em == 0) return {};  // the mask removes every sample: no fragment, no quad, no helper
-  const std::vector<PixelCoverage> cov = sample_coverage_of(scene, prim, budget);
+  const std::vector<PixelCoverage> cov = sample_coverage_of(scene, prim, options, budget);
   std::vector<Fragment> out;
   // (seg, y, x) -> (coverage before the mask, after the mask) of pixels with a fragment.
   using LaneKey = std::tuple<std::uint32_t, std::int32_t, std::int32_t>;
@@ -598,41 +625,50 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p,
 }  // namespace
 
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.PRIM.LINE_STRIP, SCENE.OUTPUT.MSAA
-std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_t p) {
-  if (is_single_sample(scene)) return rasterize_single(scene, p, nullptr);
-  return rasterize_msaa(scene, p, nullptr);
+// rule: FAST.EQUALS.PLAIN
+std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_t p,
+                                          const RenderOptions& options) {
+  if (is_single_sample(scene)) return rasterize_single(scene, p, options, nullptr);
+  return rasterize_msaa(scene, p, options, nullptr);
 }
 
-// rule: SCENE.OUTPUT.FRAGMENTS
-void for_each_fragment(const PreparedScene& scene, std::size_t p,
+std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_t p) {
+  return rasterize_primitive(scene, p, RenderOptions{});
+}
+
+// rule: SCENE.OUTPUT.FRAGMENTS, FAST.EQUALS.PLAIN
+void for_each_fragment(const PreparedScene& scene, std::size_t p, const RenderOptions& options,
                        const std::function<void(const Fragment&)>& emit) {
   const PreparedPrimitive& prim = scene.primitives[p];
   if (prim.type == PrimitiveType::kTriangle && is_single_sample(scene)) {
     const auto id = static_cast<std::uint32_t>(p);
-    raster::walk_triangle(prim.triangles[0].setup, scene.width, scene.height,
-                          [&](std::int32_t x, std::int32_t y) {
-                            emit(Fragment{id, x, y, 1u});
-                          });
+    walk_centres(scene, prim.triangles[0].setup, options,
+                 [&](std::int32_t x, std::int32_t y) { emit(Fragment{id, x, y, 1u}); });
     return;
   }
-  for (const Fragment& f : rasterize_primitive(scene, p))
+  for (const Fragment& f : rasterize_primitive(scene, p, options))
     emit(f);
 }
 
-// rule: SCENE.INPUT.LIMITS
-bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p,
-                               std::uint64_t max_collected,
+void for_each_fragment(const PreparedScene& scene, std::size_t p,
+                       const std::function<void(const Fragment&)>& emit) {
+  for_each_fragment(scene, p, RenderOptions{}, emit);
+}
+
+// rule: SCENE.INPUT.LIMITS, FAST.EQUALS.PLAIN
+bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p, std::uint64_t max_collected,
+                               const RenderOptions& options,
                                const std::function<void(const Fragment&)>& emit) {
   const PreparedPrimitive& prim = scene.primitives[p];
   if (prim.type == PrimitiveType::kTriangle && is_single_sample(scene)) {
-    for_each_fragment(scene, p, emit);  // streamed: nothing is held
+    for_each_fragment(scene, p, options, emit);  // streamed: nothing is held
     return true;
   }
   CollectBudget budget{max_collected};
   std::vector<Fragment> frags;
   try {
-    frags = is_single_sample(scene) ? rasterize_single(scene, p, &budget)
-                                    : rasterize_msaa(scene, p, &budget);
+    frags = is_single_sample(scene) ? rasterize_single(scene, p, options, &budget)
+                                    : rasterize_msaa(scene, p, options, &budget);
   } catch (const CollectLimitReached&) {
     return false;
   }
@@ -640,27 +676,10 @@ bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p,
   return true;
 }
 
-// TEMPORARY (session 3 contract): options-taking entry points forward to the plain ones until
-// the fast traversal (FAST.EQUALS.PLAIN) and threads (FAST.THREADS.DETERMINISTIC) are wired in.
-std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_t p,
-                                          const RenderOptions& /*options*/) {
-  return rasterize_primitive(scene, p);
-}
-void for_each_fragment(const PreparedScene& scene, std::size_t p, const RenderOptions& /*options*/,
-                       const std::function<void(const Fragment&)>& emit) {
-  for_each_fragment(scene, p, emit);
-}
-bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p, std::uint64_t max_collected,
-                               const RenderOptions& /*options*/,
+bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p,
+                               std::uint64_t max_collected,
                                const std::function<void(const Fragment&)>& emit) {
-  return for_each_fragment_bounded(scene, p, max_collected, emit);
-}
-std::vector<Fragment> rasterize(const PreparedScene& scene, const RenderOptions& /*options*/) {
-  return rasterize(scene);
-}
-std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene,
-                                                       const RenderOptions& /*options*/) {
-  return render(scene);
+  return for_each_fragment_bounded(scene, p, max_collected, RenderOptions{}, emit);
 }
 
 // rule: SCENE.OUTPUT.FRAGMENTS

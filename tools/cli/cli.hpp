@@ -82,5 +82,6 @@ int run_showcase(const Args& args);
 int run_fuzz(const Args& args);
 int run_check(const Args& args);
 int run_probe(const Args& args);
+int run_bench(const Args& args);  // bench.cpp: the precision ladder (BENCH.REPORT)
 
 }  // namespace rastrules::cli

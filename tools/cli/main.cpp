@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
     if (command == "fuzz") return run_fuzz(args);
     if (command == "check") return run_check(args);
     if (command == "probe") return run_probe(args);
+    if (command == "bench") return run_bench(args);
     return usage_error("unknown command \"" + command + "\"");
   } catch (const std::bad_alloc&) {
     return error("out of memory");

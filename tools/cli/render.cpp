@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
 // rastrules render: the fragment list, the picture and the resolved target of a scene.
-// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS, SCENE.OUTPUT.MSAA
+// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS, SCENE.OUTPUT.MSAA,
+//             FAST.THREADS.DETERMINISTIC, FAST.ISA.DISPATCH (--isa)
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <system_error>
 #include <memory>
@@ -17,6 +20,9 @@
 #include "rastrules/io/image.hpp"
 #include "rastrules/io/picture.hpp"
 #include "rastrules/io/scene_json.hpp"
+#include "rastrules/isa.hpp"
+
+#include "rastrules/parallel.hpp"
 
 namespace rastrules::cli {
 
@@ -25,6 +31,7 @@ int run_render(const Args& args) {
   std::optional<std::string> scene_path, fragments_path, png_path, resolve_path;
   std::optional<int> scale;
   std::uint64_t max_fragments = io::kDefaultMaxFragments;
+  RenderOptions options;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const char* flag) -> std::optional<std::string> {
@@ -57,6 +64,41 @@ int run_render(const Args& args) {
       const auto n = v ? parse_int(*v, 1, std::int64_t{1} << 40) : std::nullopt;
       if (!n) return usage_error("--max-fragments needs an integer in [1, 2^40]");
       max_fragments = static_cast<std::uint64_t>(*n);
+    } else if (is("--threads")) {
+      // rule: FAST.THREADS.DETERMINISTIC
+      const std::optional<std::string> v = value("--threads");
+      const auto n = v ? parse_int(*v, 1, kMaxThreads) : std::nullopt;
+      if (!n) {
+        return error("--threads needs an integer in [1, " + std::to_string(kMaxThreads) + "], got " +
+                     (v ? "\"" + *v + "\"" : std::string("nothing")));
+      }
+      options.threads = static_cast<unsigned>(*n);
+    } else if (is("--traversal")) {
+      const std::optional<std::string> v = value("--traversal");
+      const auto t = v ? parse_traversal(*v) : std::nullopt;
+      if (!t) {
+        return error("--traversal needs \"plain\" or \"fast\", got " +
+                     (v ? "\"" + *v + "\"" : std::string("nothing")));
+      }
+      options.traversal = *t;
+    } else if (is("--isa")) {
+      // rule: FAST.ISA.DISPATCH
+      const std::optional<std::string> v = value("--isa");
+      if (v && *v == "auto") {
+        options.isa = std::nullopt;
+      } else {
+        const auto isa = v ? parse_isa(*v) : std::nullopt;
+        if (!isa) {
+          return error("--isa needs \"scalar\", \"avx2\", \"avx512\" or \"auto\", got " +
+                       (v ? "\"" + *v + "\"" : std::string("nothing")));
+        }
+        if (!isa_supported(*isa)) {
+          return error("--isa " + *v + ": this processor (or this build) cannot run " + *v +
+                       " (" + std::string(kMaxIsaVariable) + " may cap it); use --isa auto (here " +
+                       std::string(to_string(best_isa())) + ")");
+        }
+        options.isa = *isa;
+      }
     } else if (a.size() > 1 && a[0] == '-') {
       return usage_error("render: unknown option \"" + a + "\"");
     } else if (scene_path) {
@@ -64,6 +106,11 @@ int run_render(const Args& args) {
     } else {
       scene_path = a;
     }
+  }
+  // rule: FAST.ISA.DISPATCH
+  if (const char* cap = std::getenv(kMaxIsaVariable); cap != nullptr && *cap != '\0' && !parse_isa(cap)) {
+    return error(std::string(kMaxIsaVariable) + " needs \"scalar\", \"avx2\" or \"avx512\", got \"" +
+                 cap + "\"");
   }
   if (!scene_path) return usage_error("render: missing SCENE.json");
   if (!fragments_path && !png_path && !resolve_path) {
@@ -135,26 +182,64 @@ int run_render(const Args& args) {
   // (the exception unwinds out of the kernel's walk) and the outputs, still under their
   // temporary names, are removed by ~OutputFile.
   struct TooManyFragments {};
+  const auto emit = [&](const Fragment& f) {
+    if (++fragment_count > max_fragments) throw TooManyFragments{};
+    if (writer)
+      in_order = writer->add(f) && in_order;
+    if (coverage)
+      coverage->add_fragment(f);
+    if (resolve_path)
+      all.push_back(f);
+  };
+  const auto too_many_held = [&](std::size_t p) {
+    return error("render: primitives[" + std::to_string(p) + "] touches more than " +
+                 std::to_string(2 * max_fragments) +
+                 " pixels or fragments that must be held to be sorted (limit SCENE.INPUT.LIMITS, 2 x "
+                 "--max-fragments); raise it with --max-fragments N");
+  };
+  // A primitive that is collected before it is emitted holds at most 2 * max_fragments
+  // entries: a pixel is held at most twice (once per triangle of a point or quadrilateral
+  // segment), so one that needs more has more than max_fragments fragments, except when
+  // the sample mask removes the samples it covers (then the limit counts touched pixels).
   try {
-    for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
-      // A primitive that is collected before it is emitted holds at most 2 * max_fragments
-      // entries: a pixel is held at most twice (once per triangle of a point or quadrilateral
-      // segment), so one that needs more has more than max_fragments fragments, except when
-      // the sample mask removes the samples it covers (then the limit counts touched pixels).
-      const bool done = for_each_fragment_bounded(scene, p, 2 * max_fragments, [&](const Fragment& f) {
-        if (++fragment_count > max_fragments) throw TooManyFragments{};
-        if (writer)
-          in_order = writer->add(f) && in_order;
-        if (coverage)
-          coverage->add_fragment(f);
-        if (resolve_path)
-          all.push_back(f);
-      });
-      if (!done) {
-        return error("render: primitives[" + std::to_string(p) + "] touches more than " +
-                     std::to_string(2 * max_fragments) +
-                     " pixels or fragments that must be held to be sorted (limit SCENE.INPUT.LIMITS, 2 x "
-                     "--max-fragments); raise it with --max-fragments N");
+    if (options.threads <= 1) {
+      for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+        if (!for_each_fragment_bounded(scene, p, 2 * max_fragments, options, emit)) return too_many_held(p);
+      }
+    } else {
+      // rule: FAST.THREADS.DETERMINISTIC
+      // Batches of primitives: each thread rasterizes whole primitives of the batch into the
+      // primitive's own buffer, then this thread emits the buffers in primitive order through
+      // the same checks as above, so the outputs, the error and the primitive it names are
+      // those of one thread. A buffer stops at max_fragments + 1 fragments (enough to pass the
+      // limit wherever it is emitted), so a batch holds at most 4 * threads such buffers.
+      struct Unit {
+        std::vector<Fragment> fragments;
+        bool done = true;
+      };
+      struct BufferFull {};
+      const std::size_t batch = std::size_t{4} * options.threads;
+      std::vector<Unit> units(batch);
+      for (std::size_t first = 0; first < scene.primitives.size(); first += batch) {
+        const std::size_t count = std::min(batch, scene.primitives.size() - first);
+        run_units(count, options.threads, [&](std::size_t u) {
+          Unit& unit = units[u];
+          unit.fragments.clear();
+          unit.done = true;
+          try {
+            unit.done = for_each_fragment_bounded(scene, first + u, 2 * max_fragments, options,
+                                                  [&](const Fragment& f) {
+                                                    if (unit.fragments.size() > max_fragments) throw BufferFull{};
+                                                    unit.fragments.push_back(f);
+                                                  });
+          } catch (const BufferFull&) {
+            // A collected primitive emits only after it fits its bound, so done stays true.
+          }
+        });
+        for (std::size_t u = 0; u < count; ++u) {
+          if (!units[u].done) return too_many_held(first + u);
+          for (const Fragment& f : units[u].fragments) emit(f);
+        }
       }
     }
   } catch (const TooManyFragments&) {

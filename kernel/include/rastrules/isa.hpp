@@ -14,9 +14,16 @@ namespace rastrules {
 enum class Isa { kScalar, kAvx2, kAvx512 };
 [[nodiscard]] std::string_view to_string(Isa isa);  // "scalar", "avx2", "avx512"
 [[nodiscard]] std::optional<Isa> parse_isa(std::string_view name);
-// Whether this build has code for isa and this processor can run it (CPUID, at run time).
+// The environment variable that caps the instruction sets isa_supported() reports, to reproduce
+// a smaller processor: RASTRULES_MAX_ISA=scalar|avx2|avx512 (isa_cap() reads it; unset or empty:
+// no cap; an unknown value caps at scalar, and the command line rejects it with an error).
+inline constexpr const char* kMaxIsaVariable = "RASTRULES_MAX_ISA";
+[[nodiscard]] std::optional<Isa> isa_cap();
+// Whether this build has code for isa, this processor can run it (CPUID, at run time) and
+// isa_cap() allows it. Isa values are ordered scalar < avx2 < avx512.
 [[nodiscard]] bool isa_supported(Isa isa);
-// The widest supported instruction set: avx512 (F+BW+VL), else avx2, else scalar.
+// The widest supported instruction set: avx512 (F+BW+VL), else avx2, else scalar (decided at
+// the first call).
 [[nodiscard]] Isa best_isa();
 
 // Which traversal decides coverage. Both give the same fragments in the same order

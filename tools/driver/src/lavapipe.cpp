@@ -5,7 +5,6 @@
 // Implements: DRIVER.LAVAPIPE.DEVICE, DRIVER.LAVAPIPE.COVERAGE, DRIVER.LAVAPIPE.POSITION,
 //             DRIVER.LAVAPIPE.SUPPORT
 
-#include <dlfcn.h>
 #include <vulkan/vulkan.h>
 
 #include <algorithm>
@@ -20,6 +19,7 @@
 
 #include "drivers.hpp"
 #include "gpu_common.hpp"
+#include "vulkan_common.hpp"
 #include "rastrules/driver/coverage_frag.spv.h"
 #include "rastrules/driver/coverage_vert.spv.h"
 #include "rastrules/scene.hpp"
@@ -27,10 +27,9 @@
 namespace rastrules::driver {
 namespace {
 
-std::string vk_failed(const char* what, VkResult r) {
-  return std::string("lavapipe: ") + what + " failed (VkResult " +
-         std::to_string(static_cast<int>(r)) + ")";
-}
+using detail::free_host_buffer;
+using detail::HostBuffer;
+using detail::vk_failed;
 
 struct Push {
   float inv_k = 1.0F;
@@ -38,13 +37,6 @@ struct Push {
   std::uint32_t width = 0;
   std::uint32_t height = 0;
   std::uint32_t slots = 0;
-};
-
-struct HostBuffer {
-  VkBuffer buffer = VK_NULL_HANDLE;
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  VkDeviceSize size = 0;
-  void* mapped = nullptr;
 };
 
 // Everything that selects a pipeline (DRIVER.LAVAPIPE.SUPPORT).
@@ -71,43 +63,10 @@ class LavapipeDriver final : public detail::GpuDriver {
   // Returns an empty string on success, else the reason.
   // rule: DRIVER.LAVAPIPE.DEVICE
   std::string init() {
-    VkApplicationInfo app{};
-    app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
-    app.pApplicationName = "rastrules";
-    app.apiVersion = VK_API_VERSION_1_2;
-    VkInstanceCreateInfo ici{};
-    ici.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
-    ici.pApplicationInfo = &app;
-    if (VkResult r = vkCreateInstance(&ici, nullptr, &instance_); r != VK_SUCCESS) {
-      instance_ = VK_NULL_HANDLE;
-      return vk_failed("vkCreateInstance (is a Vulkan loader installed?)", r);
+    if (std::string why = detail::open_lavapipe_instance(&instance_, &physical_, &props_);
+        !why.empty()) {
+      return why;
     }
-    std::uint32_t n = 0;
-    vkEnumeratePhysicalDevices(instance_, &n, nullptr);
-    std::vector<VkPhysicalDevice> devices(n);
-    vkEnumeratePhysicalDevices(instance_, &n, devices.data());
-    std::string seen;
-    for (VkPhysicalDevice d : devices) {
-      VkPhysicalDeviceProperties p{};
-      vkGetPhysicalDeviceProperties(d, &p);
-      seen += std::string(seen.empty() ? "" : ", ") + p.deviceName;
-      if (p.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU &&
-          std::string_view(p.deviceName).find("llvmpipe") != std::string_view::npos) {
-        physical_ = d;
-        props_ = p;
-        break;
-      }
-    }
-    if (physical_ == VK_NULL_HANDLE) {
-      return "lavapipe: no CPU Vulkan device named llvmpipe (install mesa-vulkan-drivers); devices: " +
-             (seen.empty() ? std::string("none") : seen);
-    }
-    // Keep Mesa's ICD loaded for the life of the process: the loader unloads it with the last
-    // instance, and its process-wide state (LLVM, caches) is not meant to be torn down and
-    // rebuilt by every driver that is opened and closed (it shows as leaks under
-    // LeakSanitizer). Only marks the already loaded library; does nothing if it is not.
-    static void* const pinned = dlopen("libvulkan_lvp.so", RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
-    (void)pinned;
     if (std::string why = check_features(); !why.empty()) return why;
     if (std::string why = create_device(); !why.empty()) return why;
     return create_shared();
@@ -294,19 +253,8 @@ class LavapipeDriver final : public detail::GpuDriver {
 
     // Info (DRIVER.LAVAPIPE.DEVICE).
     const VkPhysicalDeviceLimits& lim = props_.limits;
-    VkPhysicalDeviceDriverProperties drv{};
-    drv.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES;
-    VkPhysicalDeviceProperties2 p2{};
-    p2.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2;
-    p2.pNext = &drv;
-    vkGetPhysicalDeviceProperties2(physical_, &p2);
     info_.name = "lavapipe";
-    info_.description = std::string(props_.deviceName) + ", " + drv.driverName + " " +
-                        drv.driverInfo + ", Vulkan " +
-                        std::to_string(VK_API_VERSION_MAJOR(props_.apiVersion)) + "." +
-                        std::to_string(VK_API_VERSION_MINOR(props_.apiVersion)) + "." +
-                        std::to_string(VK_API_VERSION_PATCH(props_.apiVersion)) +
-                        ", lines: " + (bresenham_ ? "bresenham " : "") +
+    info_.description = detail::device_description(physical_, props_) + ", lines: " + (bresenham_ ? "bresenham " : "") +
                         (rectangular_ ? "rectangular " : "") + (smooth_ ? "smooth" : "");
     info_.subpixel_bits = static_cast<int>(lim.subPixelPrecisionBits);
     const VkSampleCountFlags counts = lim.framebufferNoAttachmentsSampleCounts;
@@ -334,18 +282,7 @@ class LavapipeDriver final : public detail::GpuDriver {
   }
 
   std::string create_device() {
-    std::uint32_t n = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &n, nullptr);
-    std::vector<VkQueueFamilyProperties> families(n);
-    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &n, families.data());
-    bool found = false;
-    for (std::uint32_t i = 0; i < n && !found; ++i) {
-      if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) != 0U) {
-        family_ = i;
-        found = true;
-      }
-    }
-    if (!found) return "lavapipe: no graphics queue";
+    if (std::string why = detail::graphics_queue_family(physical_, &family_); !why.empty()) return why;
     const float priority = 1.0F;
     VkDeviceQueueCreateInfo qci{};
     qci.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
@@ -471,55 +408,11 @@ class LavapipeDriver final : public detail::GpuDriver {
     // so comparing handles would leave the set pointing at freed memory.
     if (b.buffer != VK_NULL_HANDLE) {
       vkDeviceWaitIdle(device_);
-      free_buffer(b);
+      free_host_buffer(device_, &b);
     }
     VkDeviceSize size = 4096;
     while (size < bytes) size *= 2;
-    VkBufferCreateInfo bci{};
-    bci.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
-    bci.size = size;
-    bci.usage = usage;
-    bci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    if (VkResult r = vkCreateBuffer(device_, &bci, nullptr, &b.buffer); r != VK_SUCCESS) {
-      b.buffer = VK_NULL_HANDLE;
-      return vk_failed("vkCreateBuffer", r);
-    }
-    VkMemoryRequirements req{};
-    vkGetBufferMemoryRequirements(device_, b.buffer, &req);
-    const VkMemoryPropertyFlags want =
-        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-    std::uint32_t type = memory_.memoryTypeCount;
-    for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
-      if ((req.memoryTypeBits & (1U << i)) != 0U &&
-          (memory_.memoryTypes[i].propertyFlags & want) == want) {
-        type = i;
-        break;
-      }
-    }
-    if (type == memory_.memoryTypeCount) return "lavapipe: no host-visible coherent memory";
-    VkMemoryAllocateInfo mai{};
-    mai.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
-    mai.allocationSize = req.size;
-    mai.memoryTypeIndex = type;
-    if (VkResult r = vkAllocateMemory(device_, &mai, nullptr, &b.memory); r != VK_SUCCESS) {
-      b.memory = VK_NULL_HANDLE;
-      free_buffer(b);
-      return vk_failed("vkAllocateMemory", r);
-    }
-    vkBindBufferMemory(device_, b.buffer, b.memory, 0);
-    if (VkResult r = vkMapMemory(device_, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped); r != VK_SUCCESS) {
-      free_buffer(b);
-      return vk_failed("vkMapMemory", r);
-    }
-    b.size = size;
-    return {};
-  }
-
-  void free_buffer(HostBuffer& b) {
-    if (b.mapped != nullptr) vkUnmapMemory(device_, b.memory);
-    if (b.buffer != VK_NULL_HANDLE) vkDestroyBuffer(device_, b.buffer, nullptr);
-    if (b.memory != VK_NULL_HANDLE) vkFreeMemory(device_, b.memory, nullptr);
-    b = HostBuffer{};
+    return detail::create_host_buffer(device_, memory_, size, usage, &b);
   }
 
   // Points the descriptor set at the coverage buffer.
@@ -638,8 +531,8 @@ class LavapipeDriver final : public detail::GpuDriver {
       vkDeviceWaitIdle(device_);
       for (auto& [key, p] : pipelines_) vkDestroyPipeline(device_, p, nullptr);
       pipelines_.clear();
-      free_buffer(coverage_);
-      free_buffer(vertex_);
+      free_host_buffer(device_, &coverage_);
+      free_host_buffer(device_, &vertex_);
       if (framebuffer_ != VK_NULL_HANDLE) vkDestroyFramebuffer(device_, framebuffer_, nullptr);
       if (render_pass_ != VK_NULL_HANDLE) vkDestroyRenderPass(device_, render_pass_, nullptr);
       if (vert_ != VK_NULL_HANDLE) vkDestroyShaderModule(device_, vert_, nullptr);

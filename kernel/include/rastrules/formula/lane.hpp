@@ -11,7 +11,7 @@
 //   E(i, j) + bias >= 0   <=>   L(i, j) >= -q,   L(i, j) = i * A + j * B.
 // |A|, |B| < 2^24 and 0 <= i, j < kFastTileSize keep |L| < 2^30, so L fits an int32 lane and
 // -q may be clamped to [-2^30, 2^30] without changing any comparison.
-// Implements: FAST.LANE.I32
+// Implements: FAST.LANE.I32, FAST.TILE.CLASSIFY
 
 #pragma once
 
@@ -36,6 +36,27 @@ constexpr Num lane_threshold(Num q, Num bound, Select select) {
   const Num neg = -q;
   const Num lo = select(neg < -bound, -bound, neg);
   return select(lo > bound, bound, lo);
+}
+
+// Returns the largest lane offset over a tile's lanes 0 <= i, j <= last (last = kFastTileSize - 1):
+// max(A, 0) * last + max(B, 0) * last, attained at the corner chosen by the signs of A and B.
+// A tile whose lane_max is below an edge's lane_threshold has no lane inside that edge.
+// Branch-free: select(c, t, f) returns c ? t : f.
+// rule: FAST.TILE.CLASSIFY
+template <class Num, class Select>
+constexpr Num lane_max(Num a, Num b, Num last, Select select) {
+  const Num zero(0);
+  return select(a > zero, a, zero) * last + select(b > zero, b, zero) * last;
+}
+
+// Returns the smallest lane offset over a tile's lanes 0 <= i, j <= last:
+// min(A, 0) * last + min(B, 0) * last. A tile whose lane_min is at least an edge's
+// lane_threshold has every lane inside that edge.
+// rule: FAST.TILE.CLASSIFY
+template <class Num, class Select>
+constexpr Num lane_min(Num a, Num b, Num last, Select select) {
+  const Num zero(0);
+  return select(a < zero, a, zero) * last + select(b < zero, b, zero) * last;
 }
 
 }  // namespace rastrules::formula

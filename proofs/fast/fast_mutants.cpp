@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: MIT
+// Self-check: the fast-traversal obligations can fail. Runs prove_lane_budget,
+// prove_lane_equivalence and prove_tile_classify against deliberately broken models, each
+// derived from FastKernelModel with one member replaced, and passes only if every mutant is
+// REFUTED (with a counterexample). A mutant that survives means the proof cannot see that kind
+// of bug.
+// Cites no rule: it is evidence about the proofs, not about the kernel.
+// Assumes: SNAP.VERTEX.RANGE (as the obligations do)
+// Expected: every mutant REFUTED; exit status 0 iff so.
+
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "fast/fast_proofs.hpp"
+#include "support/prover.hpp"
+
+namespace rastrules::proofs {
+namespace {
+
+// Tiles of 64 x 64 pixels with the same lane bound: 63 (|A| + |B|) reaches 2^31, so L leaves
+// int32_t and |L| < 2^30 fails.
+struct Tile64 : FastKernelModel {
+  static constexpr const char* kName = "tile 64 x 64 with kLaneBound 2^30";
+  static constexpr std::int64_t kTile = 64;
+};
+
+// Coordinates one bit wider than SNAP.VERTEX.RANGE ([-2^24, 2^24)) with 32 x 32 tiles: 31 (|A|
+// + |B|) reaches 2^31.
+struct WideCoordsTile32 : FastKernelModel {
+  static constexpr const char* kName = "coordinates in [-2^24, 2^24) with tile 32 x 32";
+  static constexpr std::int64_t kMinRaw = 2 * std::int64_t{kMinVertexRaw};
+  static constexpr std::int64_t kMaxRaw = 2 * (std::int64_t{kMaxVertexRaw} + 1) - 1;
+  static constexpr std::int64_t kTile = 32;
+};
+
+// Lanes of 16 bits: A alone does not fit.
+struct Int16Lanes : FastKernelModel {
+  static constexpr const char* kName = "int16_t lanes";
+  using Lane = Sym<std::int16_t>;
+};
+
+// The threshold clamped to [-2^20, 2^20]: a lane offset above 2^20 passes a threshold that
+// was clamped down from a larger -q.
+struct Clamp20 : FastKernelModel {
+  static constexpr const char* kName = "threshold clamp bound 2^20";
+  static constexpr std::int64_t kBound = std::int64_t{1} << 20;
+};
+
+// q one too large: q = floor((E0 + bias) / 256) + 1.
+struct QOffByOne : FastKernelModel {
+  static constexpr const char* kName = "q = floor((E0 + bias) / 256) + 1";
+  static z3::expr shift_characterisation(const z3::expr& e_biased, const z3::expr& q,
+                                         const z3::expr& r) {
+    z3::context& ctx = q.ctx();
+    const z3::expr d = ctx.int_val(kDivisor);
+    return e_biased == d * (q - 1) + r && 0 <= r && r < d;
+  }
+};
+
+// The shift by 7 bits instead of kSubpixelBits: q = floor((E0 + bias) / 128).
+struct Shift7 : FastKernelModel {
+  static constexpr const char* kName = "q = (E0 + bias) >> 7";
+  static z3::expr shift_characterisation(const z3::expr& e_biased, const z3::expr& q,
+                                         const z3::expr& r) {
+    z3::context& ctx = q.ctx();
+    const z3::expr d = ctx.int_val(kDivisor / 2);
+    return e_biased == d * q + r && 0 <= r && r < d;
+  }
+};
+
+// The bias forgotten (0 for every edge): a sample exactly on a non-inclusive edge is inside.
+struct BiasDropped : FastKernelModel {
+  static constexpr const char* kName = "edge_bias always 0";
+  template <class S> static S edge_bias(bool) { return S(0); }
+};
+
+// lane_max taking the corner of min(B, 0) instead of max(B, 0): a tile is rejected although a
+// lane in its other row is inside.
+struct LaneMaxWrongCorner : FastKernelModel {
+  static constexpr const char* kName = "lane_max uses min(B, 0)";
+  template <class L> static L lane_max(const L& a, const L& b, const L& last) {
+    const L zero(0);
+    return select(a > zero, a, zero) * last + select(b < zero, b, zero) * last;
+  }
+};
+
+// lane_min over lanes 0 .. kTile - 2 (one lane short): a tile is accepted although its last
+// row or column has a lane outside.
+struct LaneMinShort : FastKernelModel {
+  static constexpr const char* kName = "lane_min over kTile - 1 lanes";
+  template <class L> static L lane_min(const L& a, const L& b, const L& last) {
+    return formula::lane_min<L>(a, b, last - L(1), SymSelect{});
+  }
+};
+
+struct Mutant {
+  std::string name;
+  std::string obligation;
+  std::function<void(Prover&)> prove;
+};
+
+} // namespace
+} // namespace rastrules::proofs
+
+int main() {
+  using namespace rastrules::proofs;
+  const std::vector<Mutant> mutants = {
+      {Tile64::kName, "fast/lane_budget", prove_lane_budget<Tile64>},
+      // The same tile size breaks the decision too: some |L| exceeds the clamp bound.
+      {Tile64::kName, "fast/lane_equivalence", prove_lane_equivalence<Tile64>},
+      {WideCoordsTile32::kName, "fast/lane_budget", prove_lane_budget<WideCoordsTile32>},
+      {Int16Lanes::kName, "fast/lane_budget", prove_lane_budget<Int16Lanes>},
+      {Clamp20::kName, "fast/lane_equivalence", prove_lane_equivalence<Clamp20>},
+      {QOffByOne::kName, "fast/lane_equivalence", prove_lane_equivalence<QOffByOne>},
+      {Shift7::kName, "fast/lane_equivalence", prove_lane_equivalence<Shift7>},
+      {BiasDropped::kName, "fast/lane_equivalence", prove_lane_equivalence<BiasDropped>},
+      {LaneMaxWrongCorner::kName, "fast/tile_classify", prove_tile_classify<LaneMaxWrongCorner>},
+      {LaneMinShort::kName, "fast/tile_classify", prove_tile_classify<LaneMinShort>},
+  };
+  std::vector<std::string> summary;
+  int survived = 0;
+  for (const Mutant& m : mutants) {
+    std::cout << "\n=== mutant: " << m.name << " / " << m.obligation << "\n";
+    Domain dom;
+    Prover pr(dom, m.obligation + " [mutant: " + m.name + "]", "(self-check)",
+              {"SNAP.VERTEX.RANGE"}, FastKernelModel::constants());
+    m.prove(pr);
+    int refuted = 0;
+    for (const auto& [theorem, status] : pr.results())
+      refuted += status == Status::kRefuted;
+    const bool killed = refuted > 0;
+    survived += killed ? 0 : 1;
+    summary.push_back(std::string(killed ? "REFUTED  " : "SURVIVED ") + m.name + " (" +
+                      std::to_string(refuted) + " of " + std::to_string(pr.results().size()) +
+                      " theorems refuted)");
+  }
+  std::cout << "\nfast mutation self-check:\n";
+  for (const std::string& line : summary)
+    std::cout << "  " << line << "\n";
+  std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " mutants refuted, "
+            << survived << " survived\n";
+  return survived == 0 ? 0 : 1;
+}

@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: MIT
+// Examples for BENCH.REPORT and BENCH.TARGETS: the Markdown and JSON shape, the targets'
+// verdicts and the plot, on a synthetic report (no timing).
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "rastrules/bench/ladder.hpp"
+
+namespace rb = rastrules::bench;
+
+namespace {
+
+// A report with made-up figures: decisions per second = base * factor per rung.
+rb::LadderReport synthetic(double fast_factor, double lavapipe_seconds) {
+  rb::LadderReport r;
+  r.date = "2026-01-01T00:00:00Z";
+  r.cpu = "test cpu";
+  r.isa = "avx2";
+  r.limit_isa = "avx2";
+  r.scenes = {"small", "medium", "large", "hard"};
+  r.sweep_t = {0, 1, 2};
+  r.sweep_note = "synthetic";
+  double factor = 0.5;
+  for (const rb::Rung rung : rb::all_rungs()) {
+    rb::RungResult rr;
+    rr.rung = rung;
+    const double f = rung == rb::Rung::kReference       ? 1.0
+                     : rung == rb::Rung::kReferenceFast ? fast_factor
+                     : rung == rb::Rung::kLimit         ? 4.0
+                                                        : (factor += 0.25);
+    for (const auto& name : r.scenes) {
+      rb::FamilyResult fr;
+      fr.scene = name;
+      fr.triangles = 100;
+      fr.decisions = 1000;
+      fr.seconds = 1e-3 / f;
+      fr.decisions_per_second = 1e6 * f;
+      fr.triangles_per_second = 1e5 * f;
+      fr.ratio_to_reference = f;
+      if (rb::has_coverage(rung)) {
+        fr.errors = rung == rb::Rung::kFloat ? 10 : 0;
+        fr.watertight = rung == rb::Rung::kFloat ? 4 : 0;
+      }
+      rr.families.push_back(fr);
+      rr.total_decisions += 1000;
+      rr.total_errors += fr.errors.value_or(0);
+      rr.total_watertight += fr.watertight.value_or(0);
+    }
+    if (rb::has_coverage(rung)) {
+      rr.sweep = {{0, 0, 0, 0}, {1, 0, 0, 0}, {2, 0, 0, 0}};
+      rr.range = rb::exact_range(rr.sweep);
+    }
+    r.rungs.push_back(rr);
+  }
+  r.lavapipe.available = lavapipe_seconds > 0;
+  r.lavapipe.why_not = lavapipe_seconds > 0 ? "" : "no Vulkan CPU device";
+  r.lavapipe.seconds = lavapipe_seconds;
+  r.lavapipe.triangles = 100;
+  return r;
+}
+
+} // namespace
+
+// rule: BENCH.REPORT
+TEST(LadderReport, MarkdownHasOneRowPerRungAndTheTargets) {
+  const std::string md = rb::to_markdown(synthetic(2.0, 1.0));
+  for (const rb::Rung rung : rb::all_rungs())
+    EXPECT_NE(md.find("| " + std::string(rb::to_string(rung)) + " |"), std::string::npos)
+        << rb::to_string(rung);
+  EXPECT_NE(md.find("| rung | small Mdec/s (x ref) | medium Mdec/s (x ref) |"), std::string::npos);
+  EXPECT_NE(md.find("test cpu"), std::string::npos);
+  EXPECT_NE(md.find("Targets"), std::string::npos);
+  EXPECT_NE(md.find("0.01"), std::string::npos); // float's error fraction: 40 / 4000
+}
+
+// rule: BENCH.REPORT
+TEST(LadderReport, JsonHoldsEveryFigure) {
+  const auto j = nlohmann::json::parse(rb::to_json(synthetic(2.0, 1.0)));
+  EXPECT_EQ(j.at("isa"), "avx2");
+  EXPECT_EQ(j.at("threads"), 1);
+  EXPECT_EQ(j.at("date"), "2026-01-01T00:00:00Z");
+  ASSERT_EQ(j.at("rungs").size(), rb::all_rungs().size());
+  const auto& f = j.at("rungs").at(0);
+  EXPECT_EQ(f.at("rung"), "float");
+  EXPECT_EQ(f.at("errors"), 40);
+  EXPECT_DOUBLE_EQ(f.at("error_fraction").get<double>(), 0.01);
+  EXPECT_EQ(f.at("scenes").size(), 4u);
+  EXPECT_EQ(f.at("sweep").size(), 3u);
+  EXPECT_EQ(f.at("exact_range"), 2);
+  EXPECT_TRUE(j.at("rungs").back().at("exact_range").is_null()); // limit
+  EXPECT_EQ(j.at("targets").size(), 3u);
+  EXPECT_TRUE(j.at("lavapipe").at("available").get<bool>());
+}
+
+// rule: BENCH.TARGETS
+TEST(LadderTargets, EachTargetSaysWhetherThisRunMetIt) {
+  bool has_fast = false;
+  for (const rb::Rung r : rb::all_rungs())
+    has_fast = has_fast || r == rb::Rung::kReferenceFast;
+  if (!has_fast)
+    GTEST_SKIP() << "reference-fast not built";
+  // fast = 3.5 x reference: 87.5 % of limit (4), faster than float; 100 triangles in 1 s
+  // for lavapipe against 3.5e5/s: 3500x.
+  auto t = rb::check_targets(synthetic(3.5, 1.0));
+  ASSERT_EQ(t.size(), 3u);
+  for (const auto& c : t)
+    EXPECT_EQ(c.met, std::optional<bool>(true)) << c.name << ": " << c.measured;
+  // fast = 0.6 x reference: 15 % of limit, slower than float (0.75); lavapipe faster.
+  t = rb::check_targets(synthetic(0.6, 1e-5));
+  for (const auto& c : t)
+    EXPECT_EQ(c.met, std::optional<bool>(false)) << c.name << ": " << c.measured;
+  // Without lavapipe the third target is not measured.
+  t = rb::check_targets(synthetic(3.5, 0.0));
+  EXPECT_EQ(t[2].met, std::nullopt);
+  EXPECT_NE(t[2].measured.find("no Vulkan CPU device"), std::string::npos);
+}
+
+// rule: BENCH.REPORT
+TEST(LadderPlot, OneLabelledPointPerRungOnLogAxes) {
+  const auto r = synthetic(2.0, 1.0);
+  const rb::Plot p = rb::make_plot(r);
+  ASSERT_EQ(p.rgb.size(),
+            static_cast<std::size_t>(p.width) * static_cast<std::size_t>(p.height) * 3);
+  // Every character of every label and tick has a glyph.
+  for (const rb::Rung rung : rb::all_rungs())
+    for (const char c : rb::to_string(rung))
+      EXPECT_TRUE(rb::glyph(c).has_value()) << c;
+  for (const char c : std::string("0123456789e-.,()/%:"))
+    EXPECT_TRUE(rb::glyph(c).has_value()) << c;
+  EXPECT_FALSE(rb::glyph('\x01').has_value());
+  // The digit 1 is a vertical stroke with a base: row 6 is ".###.".
+  EXPECT_EQ(rb::glyph('1')->at(6), 0b01110);
+  // The plot is not blank: count non-white pixels.
+  std::size_t ink = 0;
+  for (int y = 0; y < p.height; ++y)
+    for (int x = 0; x < p.width; ++x)
+      if (p.at(x, y) != std::array<std::uint8_t, 3>{255, 255, 255})
+        ++ink;
+  EXPECT_GT(ink, 5000u);
+}

@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: MIT
+// rastrules bench --ladder: the precision ladder (spec/bench.md). Runs every rung on the same
+// scenes (bench/ladder/), times lavapipe on the small mesh through tools/driver, writes
+// DIR/ladder.md, DIR/ladder.json and DIR/ladder.png and prints the table.
+// Implements: BENCH.REPORT, BENCH.LAVAPIPE (the call), BENCH.TARGETS (printed)
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <system_error>
+
+#include "cli.hpp"
+#include "rastrules/bench/ladder.hpp"
+#include "rastrules/io/image.hpp"
+#ifdef RASTRULES_CLI_HAVE_LAVAPIPE_TIMING
+#include "rastrules/driver/timing.hpp"
+#endif
+
+namespace rastrules::cli {
+namespace {
+
+// The lavapipe figure of BENCH.LAVAPIPE for one ladder scene.
+// rule: BENCH.LAVAPIPE
+bench::LavapipeFigure time_lavapipe(const bench::LadderScene& s, int repeats) {
+  bench::LavapipeFigure f;
+#ifdef RASTRULES_CLI_HAVE_LAVAPIPE_TIMING
+  Scene scene;
+  scene.width = s.width;
+  scene.height = s.height;
+  for (const auto& t : s.triangles)
+    scene.primitives.push_back(make_triangle(t));
+  const driver::CoverageTiming t = driver::time_lavapipe_coverage(scene, repeats);
+  f.available = t.available;
+  f.why_not = t.why_not;
+  f.device = t.device;
+  f.includes = t.includes;
+  f.repeats = t.repeats;
+  f.seconds = t.seconds_median;
+  f.samples_passed = t.samples_passed;
+#else
+  (void)s;
+  (void)repeats;
+  f.why_not = "this build has no lavapipe timing (tools/driver)";
+#endif
+  return f;
+}
+
+std::optional<std::string> write_text(const std::filesystem::path& path, const std::string& text) {
+  OutputFile out;
+  if (auto err = out.open(path.string()))
+    return err;
+  if (std::fwrite(text.data(), 1, text.size(), out.get()) != text.size())
+    return path.string() + ": write failed";
+  return out.commit();
+}
+
+} // namespace
+
+// rule: BENCH.REPORT
+int run_bench(const Args& args) {
+  bool ladder = false;
+  bench::LadderConfig config;
+  std::optional<std::string> out_dir;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--ladder") {
+      ladder = true;
+    } else if (a == "--quick") {
+      config.quick = true;
+    } else if (a == "--seed" || a == "--out") {
+      if (i + 1 >= args.size())
+        return error(a + ": missing value");
+      const std::string& v = args[++i];
+      if (a == "--out") {
+        if (v.empty())
+          return error("--out: must name a directory");
+        out_dir = v;
+      } else {
+        const auto n = parse_int(v, 0, 1000000000);
+        if (!n)
+          return error("--seed: must be an integer in [0, 1000000000], got \"" + v + "\"");
+        config.seed = static_cast<std::uint64_t>(*n);
+      }
+    } else {
+      return usage_error("bench: unknown option \"" + a + "\"");
+    }
+  }
+  if (!ladder)
+    return usage_error("bench: missing --ladder (the only benchmark: bench --ladder [--out DIR] "
+                       "[--quick] [--seed N])");
+  config.min_seconds = config.quick ? 0.02 : 0.2;
+
+  std::filesystem::path dir;
+  if (out_dir) {
+    dir = *out_dir;
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir))
+      return error("--out: cannot create directory \"" + *out_dir + "\"" +
+                   (ec ? ": " + ec.message() : std::string()));
+  }
+
+  const int lavapipe_repeats = config.quick ? 5 : 21;
+  const bench::LadderReport report = bench::run_ladder(
+      config, [&](const bench::LadderScene& s) { return time_lavapipe(s, lavapipe_repeats); },
+      [](const std::string& line) { std::fprintf(stderr, "bench: %s\n", line.c_str()); });
+  const std::string md = bench::to_markdown(report);
+  std::fputs(md.c_str(), stdout);
+  std::fflush(stdout);
+  if (!out_dir)
+    return kExitOk;
+
+  if (auto err = write_text(dir / "ladder.md", md))
+    return error(*err);
+  if (auto err = write_text(dir / "ladder.json", bench::to_json(report)))
+    return error(*err);
+  const bench::Plot plot = bench::make_plot(report);
+  io::Image image(plot.width, plot.height, io::Rgb{255, 255, 255});
+  for (int y = 0; y < plot.height; ++y)
+    for (int x = 0; x < plot.width; ++x) {
+      const auto c = plot.at(x, y);
+      image.set(x, y, io::Rgb{c[0], c[1], c[2]});
+    }
+  OutputFile png;
+  const std::string png_path = (dir / "ladder.png").string();
+  if (auto err = png.open(png_path))
+    return error(*err);
+  if (auto err = io::write_png(png.get(), image))
+    return error(png_path + ": " + *err);
+  if (auto err = png.commit())
+    return error(*err);
+  std::fprintf(stderr, "bench: wrote %s/ladder.md, ladder.json, ladder.png in %.1f s\n",
+               dir.string().c_str(), report.seconds_total);
+  return kExitOk;
+}
+
+} // namespace rastrules::cli
