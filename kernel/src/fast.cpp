@@ -16,16 +16,17 @@ namespace {
 static_assert(kFastTileSize == fast_detail::kTile, "one tile size");
 
 // Returns E + bias of each edge at the sample point of the first pixel of r's first tile,
-// shifted by (dx, dy) raw units, and the lane steps A and B. The tile's first pixel (tx0, ty0)
-// lies in [0, kMaxTargetSide) (tiles are aligned to 0 and r inside the target), |dx|, |dy| <=
+// shifted by (dx, dy) raw units, and the lane steps A and B. Tiles start at r's first pixel
+// (tx0, ty0) = (r.x0, r.y0) (FAST.TILE.CLASSIFY: a triangle smaller than a tile is one tile,
+// wherever it lies), which lies in [0, kMaxTargetSide) (r inside the target); |dx|, |dy| <=
 // 128: the sample point lies in [0, 2^22], inside SNAP.VERTEX.RANGE, and E is exact in int64
 // (FIX.BUDGET.EDGE_VALUE).
 // rule: FAST.LANE.I32, FIX.BIAS.FORM
 fast_detail::FastEdges prepare_edges(const TriangleSetup& t, PixelRect r, std::int32_t dx,
                                      std::int32_t dy) {
   fast_detail::FastEdges f{};
-  f.tx0 = r.x0 - r.x0 % kFastTileSize;
-  f.ty0 = r.y0 - r.y0 % kFastTileSize;
+  f.tx0 = r.x0;
+  f.ty0 = r.y0;
   const Vec2 s{Subpixel::from_raw(f.tx0 * kSubpixelOne + kSubpixelHalf + dx),
                Subpixel::from_raw(f.ty0 * kSubpixelOne + kSubpixelHalf + dy)};
   for (std::size_t k = 0; k < 3; ++k) {

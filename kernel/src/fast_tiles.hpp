@@ -34,7 +34,7 @@ struct FastEdges {
   std::int64_t e_first[3];
   std::int32_t a[3];  // A = ay - by: the lane step along x (FAST.LANE.I32)
   std::int32_t b[3];  // B = bx - ax: the lane step along y
-  std::int32_t tx0;   // first pixel of the first tile: multiples of kTile
+  std::int32_t tx0;   // first pixel of the first tile: the rectangle's first pixel
   std::int32_t ty0;
 };
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -24,6 +25,44 @@ std::int32_t raw_ok(float v) {
 }
 
 SnapStatus status_of(float v) { return snap_to_subpixel(v).status; }
+
+// Every exponent that can reach the range (and the ones just beyond it), with a stride of
+// mantissas plus every bit pattern one step around each rounding tie, both signs, against a
+// computation in double (exact: |v| * 256 < 2^40 fits its 53 bits) rounded by the FPU's default
+// round-half-to-even. The kernel's integer code and this one share nothing.
+// rule: SNAP.VERTEX.ROUND, SNAP.VERTEX.RANGE
+TEST(SnapVertexRound, EqualsDoubleRoundingOverEveryExponentAndEveryTieNeighbourhood) {
+  std::uint64_t checked = 0;
+  const auto check = [&checked](std::uint32_t bits) {
+    const float v = std::bit_cast<float>(bits);
+    const double want = std::nearbyint(static_cast<double>(v) * 256.0);
+    const SnapResult r = snap_to_subpixel(v);
+    ++checked;
+    if (want < kMinVertexRaw || want > kMaxVertexRaw) {
+      ASSERT_EQ(r.status, SnapStatus::kOutOfRange) << "bits 0x" << std::hex << bits;
+    } else {
+      ASSERT_EQ(r.status, SnapStatus::kOk) << "bits 0x" << std::hex << bits;
+      ASSERT_EQ(static_cast<double>(r.value.raw()), want) << "bits 0x" << std::hex << bits;
+    }
+  };
+  for (std::uint32_t sign : {0u, 0x80000000u}) {
+    for (std::uint32_t biased = 0; biased <= 145; ++biased) {
+      const std::uint32_t e = sign | (biased << 23);
+      for (std::uint32_t m = 0; m <= 0x7FFFFFu; m += 997) check(e | m);
+      check(e | 0x7FFFFFu);
+      // Ties: the bits below the rounding point equal one half (right = 142 - biased).
+      const int right = biased == 0 ? 141 : 142 - static_cast<int>(biased);
+      if (right >= 1 && right <= 23) {
+        const std::uint32_t half = 1u << (right - 1);
+        for (std::uint32_t q = 0; q < (0x800000u >> right); q += 1 + (q / 64)) {
+          const std::uint32_t m = (q << right) | half;
+          for (std::uint32_t d : {m - 1, m, m + 1}) check(e | (d & 0x7FFFFFu));
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 2'000'000u);
+}
 
 // rule: SNAP.VERTEX.FORMAT
 TEST(SnapVertexFormat, SubpixelIsSigned16Dot8) {

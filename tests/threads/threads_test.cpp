@@ -193,4 +193,65 @@ TEST(ThreadPool, OutOfMemoryInAWorkerReachesTheCaller) {
   }
 }
 
+// rule: FAST.THREADS.DETERMINISTIC
+TEST(OrderedPool, ConsumesInOrderWithinTheWindowForEveryThreadCount) {
+  for (const unsigned n : {1u, 2u, 3u, 8u, 64u}) {
+    for (const std::size_t window : {std::size_t{1}, std::size_t{3}, std::size_t{32}}) {
+      const std::size_t units = 300;
+      std::vector<std::size_t> slot(window, units);  // which unit each slot holds
+      std::vector<std::atomic<int>> produced(units);
+      std::atomic<std::size_t> consumed{0};
+      std::atomic<bool> ahead_too_far{false};
+      std::vector<std::size_t> order;
+      rastrules::run_ordered(
+          units, n, window,
+          [&](std::size_t i) {
+            if (i >= consumed.load() + window) ahead_too_far = true;
+            produced[i].fetch_add(1);
+            slot[i % window] = i;
+          },
+          [&](std::size_t i) {
+            EXPECT_EQ(produced[i].load(), 1) << "unit " << i;
+            EXPECT_EQ(slot[i % window], i) << "unit " << i << ": its slot was overwritten";
+            order.push_back(i);
+            consumed = i + 1;
+          });
+      EXPECT_FALSE(ahead_too_far.load()) << n << " threads, window " << window;
+      ASSERT_EQ(order.size(), units);
+      for (std::size_t i = 0; i < units; ++i) EXPECT_EQ(order[i], i);
+    }
+  }
+}
+
+// rule: FAST.THREADS.DETERMINISTIC
+TEST(OrderedPool, TheFirstFailureInIndexOrderStopsItWhateverTheThreadCount) {
+  for (const unsigned n : {1u, 2u, 8u}) {
+    // A producer failure: units before it are consumed, none after.
+    std::vector<std::size_t> order;
+    try {
+      rastrules::run_ordered(
+          100, n, 8,
+          [&](std::size_t i) {
+            if (i == 41 || i == 77) throw std::runtime_error("unit " + std::to_string(i));
+          },
+          [&](std::size_t i) { order.push_back(i); });
+      ADD_FAILURE() << "no exception with " << n << " threads";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), "unit 41") << n << " threads";
+    }
+    ASSERT_EQ(order.size(), 41u) << n << " threads";
+    // A consumer failure: rethrown as it is, nothing consumed after it.
+    std::size_t last = 0;
+    EXPECT_THROW(rastrules::run_ordered(
+                     100, n, 4, [](std::size_t) {},
+                     [&](std::size_t i) {
+                       last = i;
+                       if (i == 13) throw std::bad_alloc();
+                     }),
+                 std::bad_alloc)
+        << n << " threads";
+    EXPECT_EQ(last, 13u);
+  }
+}
+
 }  // namespace

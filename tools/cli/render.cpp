@@ -208,38 +208,56 @@ int run_render(const Args& args) {
       }
     } else {
       // rule: FAST.THREADS.DETERMINISTIC
-      // Batches of primitives: each thread rasterizes whole primitives of the batch into the
-      // primitive's own buffer, then this thread emits the buffers in primitive order through
-      // the same checks as above, so the outputs, the error and the primitive it names are
-      // those of one thread. A buffer stops at max_fragments + 1 fragments (enough to pass the
-      // limit wherever it is emitted), so a batch holds at most 4 * threads such buffers.
+      // A pool created once rasterizes chunks of kChunk consecutive primitives, each chunk into
+      // its own buffer (slot u % window), at most `window` chunks ahead of this thread, which
+      // emits the buffers in primitive order through the same checks as above: the outputs,
+      // the error and the primitive it names are those of one thread. A chunk stops at its first
+      // primitive that needs more than it may hold (reported when the chunk is emitted, after
+      // the fragments before it) or when its buffer passes max_fragments + 1 fragments (enough
+      // to pass the limit wherever it is emitted), so at most 4 * threads such buffers are held.
+      constexpr std::size_t kChunk = 64;  // primitives per unit: amortises the hand-over
       struct Unit {
         std::vector<Fragment> fragments;
-        bool done = true;
+        std::optional<std::size_t> too_many_held;  // the primitive that did not fit, if any
       };
       struct BufferFull {};
-      const std::size_t batch = std::size_t{4} * options.threads;
-      std::vector<Unit> units(batch);
-      for (std::size_t first = 0; first < scene.primitives.size(); first += batch) {
-        const std::size_t count = std::min(batch, scene.primitives.size() - first);
-        run_units(count, options.threads, [&](std::size_t u) {
-          Unit& unit = units[u];
-          unit.fragments.clear();
-          unit.done = true;
-          try {
-            unit.done = for_each_fragment_bounded(scene, first + u, 2 * max_fragments, options,
-                                                  [&](const Fragment& f) {
-                                                    if (unit.fragments.size() > max_fragments) throw BufferFull{};
-                                                    unit.fragments.push_back(f);
-                                                  });
-          } catch (const BufferFull&) {
-            // A collected primitive emits only after it fits its bound, so done stays true.
-          }
-        });
-        for (std::size_t u = 0; u < count; ++u) {
-          if (!units[u].done) return too_many_held(first + u);
-          for (const Fragment& f : units[u].fragments) emit(f);
-        }
+      struct TooManyHeld {
+        std::size_t p;
+      };
+      const std::size_t window = std::size_t{4} * options.threads;
+      const std::size_t n_units = (scene.primitives.size() + kChunk - 1) / kChunk;
+      std::vector<Unit> units(window);
+      try {
+        run_ordered(
+            n_units, options.threads, window,
+            [&](std::size_t u) {
+              Unit& unit = units[u % window];
+              unit.fragments.clear();
+              unit.too_many_held.reset();
+              const std::size_t end = std::min(scene.primitives.size(), (u + 1) * kChunk);
+              try {
+                for (std::size_t p = u * kChunk; p < end; ++p) {
+                  const bool fits = for_each_fragment_bounded(
+                      scene, p, 2 * max_fragments, options, [&](const Fragment& f) {
+                        if (unit.fragments.size() > max_fragments) throw BufferFull{};
+                        unit.fragments.push_back(f);
+                      });
+                  if (!fits) {
+                    unit.too_many_held = p;
+                    return;
+                  }
+                }
+              } catch (const BufferFull&) {
+                // Emitting the buffer passes the limit: nothing after it is needed.
+              }
+            },
+            [&](std::size_t u) {
+              const Unit& unit = units[u % window];
+              for (const Fragment& f : unit.fragments) emit(f);
+              if (unit.too_many_held) throw TooManyHeld{*unit.too_many_held};
+            });
+      } catch (const TooManyHeld& held) {
+        return too_many_held(held.p);
       }
     }
   } catch (const TooManyFragments&) {

@@ -25,4 +25,16 @@ inline constexpr unsigned kMaxThreads = 256;
 // rule: FAST.THREADS.DETERMINISTIC
 void run_units(std::size_t n, unsigned threads, const std::function<void(std::size_t)>& unit);
 
+// Calls produce(i) for each i in [0, n) on a pool of min(threads, n) threads created once, and
+// consume(i) on the calling thread in increasing i, each after produce(i) has returned. At most
+// `window` units (>= 1) are produced ahead of the last consumed one, so produce(i) may write a
+// slot i % window that consume(i) reads. With one thread every produce(i) runs on the calling
+// thread just before consume(i), and no thread is created. The first exception in index order
+// (from produce(i) or consume(i)) stops the pool and is rethrown after every thread has
+// stopped; consume(j) never runs for j past it: the same outcome for every thread count.
+// rule: FAST.THREADS.DETERMINISTIC
+void run_ordered(std::size_t n, unsigned threads, std::size_t window,
+                 const std::function<void(std::size_t)>& produce,
+                 const std::function<void(std::size_t)>& consume);
+
 }  // namespace rastrules

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The fast exact traversal (layer 3: mechanism): tiles of kFastTileSize x kFastTileSize pixels
-// aligned to the target, whole-tile rejection and acceptance, 32-bit SIMD lanes (FAST.LANE.I32),
+// from the first pixel of the triangle's bounds, whole-tile rejection and acceptance, 32-bit SIMD lanes (FAST.LANE.I32),
 // incremental stepping, AVX-512 / AVX2 / scalar chosen at run time. Its only correctness
 // criterion: exactly the coverage of the plain walks (walk.hpp, walk_msaa.hpp), in the same
 // order (FAST.EQUALS.PLAIN).
@@ -89,8 +89,8 @@ void walk_triangle_fast(const TriangleSetup& t, std::int32_t width, std::int32_t
     heap.resize(words);
     buf = heap.data();
   }
-  // Strips of rows aligned to tile rows.
-  for (std::int32_t sy = r.y0 - r.y0 % kFastTileSize; sy <= r.y1; sy += rows) {
+  // Strips of whole tile rows from the first row of the bounds.
+  for (std::int32_t sy = r.y0; sy <= r.y1; sy += rows) {
     const PixelRect strip{r.x0, std::max(sy, r.y0), r.x1, std::min(sy + rows - 1, r.y1)};
     fast_cover_rect(t, strip, 0, 0, isa, buf, wpr);
     for (std::int32_t y = strip.y0; y <= strip.y1; ++y) {
@@ -125,7 +125,7 @@ void walk_triangle_samples_fast(const TriangleSetup& t, const SamplePattern& pat
     heap.resize(plane * n);
     buf = heap.data();
   }
-  for (std::int32_t sy = r.y0 - r.y0 % kFastTileSize; sy <= r.y1; sy += rows) {
+  for (std::int32_t sy = r.y0; sy <= r.y1; sy += rows) {
     const PixelRect strip{r.x0, std::max(sy, r.y0), r.x1, std::min(sy + rows - 1, r.y1)};
     for (std::size_t k = 0; k < n; ++k) {
       const SampleOffset o = pattern.positions[k];
