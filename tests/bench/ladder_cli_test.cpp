@@ -46,7 +46,11 @@ TEST(LadderCli, BadOptionsAreOneLineErrors) {
                                              {"bench", "--ladder", "--seed", "-1"},
                                              {"bench", "--ladder", "--seed"},
                                              {"bench", "--ladder", "--out", ""},
-                                             {"bench", "--ladder", "--out", "/dev/null/sub"}}) {
+                                             {"bench", "--ladder", "--out", "/dev/null/sub"},
+                                             {"bench", "--ladder", "--threads", "0"},
+                                             {"bench", "--ladder", "--threads", "257"},
+                                             {"bench", "--ladder", "--threads", "x"},
+                                             {"bench", "--ladder", "--threads"}}) {
     const auto r = run_cli(args);
     EXPECT_EQ(r.status, 2) << args.back();
     EXPECT_EQ(r.err_lines().size(), 1u) << r.err;

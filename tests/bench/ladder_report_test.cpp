@@ -59,6 +59,21 @@ rb::LadderReport synthetic(double fast_factor, double lavapipe_seconds) {
   r.lavapipe.why_not = lavapipe_seconds > 0 ? "" : "no Vulkan CPU device";
   r.lavapipe.seconds = lavapipe_seconds;
   r.lavapipe.triangles = 100;
+  r.lavapipe.threads = 2;
+  r.lavapipe.threads_source = "synthetic";
+  // reference-fast on 2 threads: 1.5 times its single-thread rate.
+  r.threads = 2;
+  r.config.threads = 2;
+  for (const auto& name : r.scenes) {
+    rb::FamilyResult fr;
+    fr.scene = name;
+    fr.triangles = 100;
+    fr.decisions = 1000;
+    fr.decisions_per_second = 1.5e6 * fast_factor;
+    fr.triangles_per_second = 1.5e5 * fast_factor;
+    fr.ratio_to_reference = 1.5 * fast_factor;
+    r.fast_threaded.push_back(fr);
+  }
   return r;
 }
 
@@ -74,13 +89,19 @@ TEST(LadderReport, MarkdownHasOneRowPerRungAndTheTargets) {
   EXPECT_NE(md.find("test cpu"), std::string::npos);
   EXPECT_NE(md.find("Targets"), std::string::npos);
   EXPECT_NE(md.find("0.01"), std::string::npos); // float's error fraction: 40 / 4000
+  // rule: BENCH.METRIC.THROUGHPUT, BENCH.LAVAPIPE
+  EXPECT_NE(md.find("| reference-fast x2 | 3 (3) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("2 rasterizer threads: synthetic"), std::string::npos) << md;
 }
 
 // rule: BENCH.REPORT
 TEST(LadderReport, JsonHoldsEveryFigure) {
   const auto j = nlohmann::json::parse(rb::to_json(synthetic(2.0, 1.0)));
   EXPECT_EQ(j.at("isa"), "avx2");
-  EXPECT_EQ(j.at("threads"), 1);
+  EXPECT_EQ(j.at("threads"), 2);
+  ASSERT_EQ(j.at("reference_fast_threaded").size(), 4u);
+  EXPECT_EQ(j.at("reference_fast_threaded").at(0).at("threads"), 2);
+  EXPECT_EQ(j.at("lavapipe").at("threads"), 2);
   EXPECT_EQ(j.at("date"), "2026-01-01T00:00:00Z");
   ASSERT_EQ(j.at("rungs").size(), rb::all_rungs().size());
   const auto& f = j.at("rungs").at(0);
@@ -112,6 +133,20 @@ TEST(LadderTargets, EachTargetSaysWhetherThisRunMetIt) {
   t = rb::check_targets(synthetic(0.6, 1e-5));
   for (const auto& c : t)
     EXPECT_EQ(c.met, std::optional<bool>(false)) << c.name << ": " << c.measured;
+  // Equal resources: rastrules on 2 threads (1.5 x 3.5e5 = 5.25e5/s) against lavapipe on 2
+  // (100 per 10 ms = 1e4/s): 52.5x; the single-thread ratio (35x) is printed as well.
+  t = rb::check_targets(synthetic(3.5, 1e-2));
+  EXPECT_EQ(t[2].met, std::optional<bool>(true)) << t[2].measured;
+  EXPECT_NE(t[2].measured.find("52.5x lavapipe, both on 2 threads"), std::string::npos) << t[2].measured;
+  EXPECT_NE(t[2].measured.find("35x"), std::string::npos) << t[2].measured;
+  // Different thread counts: per thread. lavapipe on 8 threads: 1e4 / 8 per thread against
+  // 5.25e5 / 2: 210x.
+  auto r8 = synthetic(3.5, 1e-2);
+  r8.lavapipe.threads = 8;
+  t = rb::check_targets(r8);
+  EXPECT_NE(t[2].measured.find("210x lavapipe per thread (rastrules 2, lavapipe 8 threads)"),
+            std::string::npos)
+      << t[2].measured;
   // Without lavapipe the third target is not measured.
   t = rb::check_targets(synthetic(3.5, 0.0));
   EXPECT_EQ(t[2].met, std::nullopt);

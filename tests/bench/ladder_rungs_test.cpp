@@ -166,3 +166,20 @@ TEST(LadderRungs, LimitLoopsAgreeAndCountInsideCentres) {
     EXPECT_EQ(rb::limit_loop_avx512(setup), scalar);
   }
 }
+
+// rule: BENCH.METRIC.THROUGHPUT
+TEST(LadderRungs, ReferenceFastOnThreadsCountsWhatOneThreadCounts) {
+  bool has_fast = false;
+  for (const rb::Rung r : rb::all_rungs())
+    has_fast = has_fast || r == rb::Rung::kReferenceFast;
+  if (!has_fast)
+    GTEST_SKIP() << "reference-fast not built";
+  rb::LadderConfig c;
+  c.quick = true;
+  for (const rb::LadderScene& s : rb::make_scenes(c).timed) {
+    const std::uint64_t one = rb::run_rung(rb::Rung::kReferenceFast, s, nullptr);
+    EXPECT_GT(one, 0u) << s.name;
+    for (const unsigned n : {1u, 2u, 3u, 7u})
+      EXPECT_EQ(rb::run_reference_fast_threaded(s, n), one) << s.name << ", " << n << " threads";
+  }
+}

@@ -5,11 +5,14 @@
 // Implements: BENCH.REPORT, BENCH.LAVAPIPE (the call), BENCH.TARGETS (printed)
 
 #include <cstdio>
+#include <algorithm>
+#include <thread>
 #include <filesystem>
 #include <string>
 #include <system_error>
 
 #include "cli.hpp"
+#include "rastrules/parallel.hpp"
 #include "rastrules/bench/ladder.hpp"
 #include "rastrules/io/image.hpp"
 #ifdef RASTRULES_CLI_HAVE_LAVAPIPE_TIMING
@@ -60,6 +63,7 @@ std::optional<std::string> write_text(const std::filesystem::path& path, const s
 int run_bench(const Args& args) {
   bool ladder = false;
   bench::LadderConfig config;
+  config.threads = std::max(1u, std::thread::hardware_concurrency());
   std::optional<std::string> out_dir;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -67,6 +71,15 @@ int run_bench(const Args& args) {
       ladder = true;
     } else if (a == "--quick") {
       config.quick = true;
+    } else if (a == "--threads") {
+      // rule: BENCH.METRIC.THROUGHPUT
+      const std::optional<std::string> v =
+          i + 1 < args.size() ? std::optional<std::string>(args[++i]) : std::nullopt;
+      const auto n = v ? parse_int(*v, 1, kMaxThreads) : std::nullopt;
+      if (!n)
+        return error("--threads needs an integer in [1, " + std::to_string(kMaxThreads) + "], got " +
+                     (v ? "\"" + *v + "\"" : std::string("nothing")));
+      config.threads = static_cast<unsigned>(*n);
     } else if (a == "--seed" || a == "--out") {
       if (i + 1 >= args.size())
         return error(a + ": missing value");
@@ -87,7 +100,7 @@ int run_bench(const Args& args) {
   }
   if (!ladder)
     return usage_error("bench: missing --ladder (the only benchmark: bench --ladder [--out DIR] "
-                       "[--quick] [--seed N])");
+                       "[--quick] [--seed N] [--threads N])");
   config.min_seconds = config.quick ? 0.02 : 0.2;
 
   std::filesystem::path dir;

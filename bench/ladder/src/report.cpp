@@ -32,7 +32,8 @@ std::string range_text(const RungResult& r) {
 std::string to_markdown(const LadderReport& r) {
   std::ostringstream o;
   o << "Precision ladder, " << r.date << ", " << r.cpu << ", ISA " << r.isa
-    << " (limit rung: " << r.limit_isa << "), " << r.threads << " thread, "
+    << " (limit rung: " << r.limit_isa << "), rungs on 1 thread, `reference-fast x" << r.threads
+    << "` on " << r.threads << ", "
     << (r.config.quick ? "quick" : "full") << " mode, seed " << r.config.seed << ".\n\n";
   o << "| rung |";
   for (const auto& s : r.scenes)
@@ -51,6 +52,13 @@ std::string to_markdown(const LadderReport& r) {
         << " | " << rr.total_watertight << " | " << range_text(rr) << " |\n";
     else
       o << " n/a | n/a | n/a |\n";
+    if (rr.rung == Rung::kReferenceFast && !r.fast_threaded.empty()) {
+      o << "| reference-fast x" << r.threads << " |";
+      for (const FamilyResult& f : r.fast_threaded)
+        o << " " << fmt("%.4g", f.decisions_per_second / 1e6) << " ("
+          << fmt("%.3g", f.ratio_to_reference) << ") |";
+      o << " = reference-fast | = | = |\n";
+    }
   }
   o << "\nDecisions: pixel centres of each triangle's bounding box (clipped to the target); "
        "Mdec/s: millions of decisions per second, median of repeats (at least "
@@ -61,12 +69,18 @@ std::string to_markdown(const LadderReport& r) {
        "the sweep ("
     << r.sweep_note
     << ") up to which the rung has no error, no watertightness and no "
-       "translation violation.\n";
+       "translation violation. `reference-fast x" << r.threads << "`: the same traversal with the "
+       "scene's triangles split into " << r.threads << " chunks on " << r.threads
+    << " threads (its answers are reference-fast's). The plot shows the single-thread rungs; "
+       "`limit` has no error figure (no tie rule) and is drawn at error 0 only to show its speed.\n";
   o << "\nTriangles per second (small mesh):";
   for (const RungResult& rr : r.rungs)
     for (const FamilyResult& f : rr.families)
       if (f.scene == "small")
         o << " " << to_string(rr.rung) << " " << fmt("%.3g", f.triangles_per_second) << ";";
+  for (const FamilyResult& f : r.fast_threaded)
+    if (f.scene == "small")
+      o << " reference-fast x" << r.threads << " " << fmt("%.3g", f.triangles_per_second) << ";";
   o << "\n\nLavapipe (small mesh, " << r.lavapipe.triangles << " triangles): ";
   if (r.lavapipe.available) {
     const double lav = r.lavapipe.seconds > 0
@@ -74,7 +88,8 @@ std::string to_markdown(const LadderReport& r) {
                            : 0.0;
     o << fmt("%.3g", lav) << " triangles/s (" << r.lavapipe.device << ", median of "
       << r.lavapipe.repeats << " draws, " << fmt("%.4g", r.lavapipe.seconds * 1e3)
-      << " ms per draw); occlusion query " << r.lavapipe.samples_passed << " samples, reference "
+      << " ms per draw, " << (r.lavapipe.threads > 0 ? std::to_string(r.lavapipe.threads) : "?")
+      << " rasterizer threads: " << r.lavapipe.threads_source << "); occlusion query " << r.lavapipe.samples_passed << " samples, reference "
       << r.reference_small_covered << " pixels. Timed: " << r.lavapipe.includes
       << (!r.lavapipe.includes.empty() && r.lavapipe.includes.back() == '.' ? "" : ".")
       << " rastrules' figures count coverage only (snapping, setup, traversal).\n";
@@ -145,6 +160,18 @@ std::string to_json(const LadderReport& r) {
     rungs.push_back(x);
   }
   j["rungs"] = rungs;
+  json threaded = json::array();
+  for (const FamilyResult& f : r.fast_threaded)
+    threaded.push_back({{"scene", f.scene},
+                        {"threads", r.threads},
+                        {"decisions", f.decisions},
+                        {"covered", f.covered},
+                        {"repeats", f.repeats},
+                        {"seconds_median", f.seconds},
+                        {"decisions_per_second", f.decisions_per_second},
+                        {"triangles_per_second", f.triangles_per_second},
+                        {"ratio_to_reference", f.ratio_to_reference}});
+  j["reference_fast_threaded"] = threaded;
   json lav;
   lav["available"] = r.lavapipe.available;
   lav["why_not"] = r.lavapipe.why_not;
@@ -155,6 +182,8 @@ std::string to_json(const LadderReport& r) {
   lav["samples_passed"] = r.lavapipe.samples_passed;
   lav["triangles"] = r.lavapipe.triangles;
   lav["reference_covered"] = r.reference_small_covered;
+  lav["threads"] = r.lavapipe.threads;
+  lav["threads_source"] = r.lavapipe.threads_source;
   if (r.lavapipe.available && r.lavapipe.seconds > 0)
     lav["triangles_per_second"] = static_cast<double>(r.lavapipe.triangles) / r.lavapipe.seconds;
   j["lavapipe"] = lav;

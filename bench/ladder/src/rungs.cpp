@@ -18,6 +18,7 @@
 #include "rastrules/isa.hpp"
 #include "rastrules/oracle/triangle.hpp"
 #ifdef RASTRULES_LADDER_HAVE_FAST
+#include "rastrules/parallel.hpp"
 #include "rastrules/raster/fast.hpp"
 #endif
 #include "rastrules/raster/walk.hpp"
@@ -363,6 +364,33 @@ void run_one(Rung r, const FloatTriangle& tri, std::int32_t w, std::int32_t h, E
 }
 
 } // namespace
+
+// rule: BENCH.METRIC.THROUGHPUT
+std::uint64_t run_reference_fast_threaded(const LadderScene& s, unsigned threads) {
+#ifdef RASTRULES_LADDER_HAVE_FAST
+  const std::size_t n = s.triangles.size();
+  const std::size_t chunks = std::max<std::size_t>(1, std::min<std::size_t>(threads, n));
+  std::vector<std::uint64_t> counts(chunks, 0);
+  const Isa isa = best_isa();
+  run_units(chunks, threads, [&](std::size_t k) {
+    std::uint64_t c = 0;
+    for (std::size_t i = n * k / chunks; i < n * (k + 1) / chunks; ++i) {
+      const TriangleSetup t = reference_setup(s.triangles[i]);
+      if (t.status == TriangleStatus::kRasterized)
+        c += raster::fast_count_covered(t, s.width, s.height, isa);
+    }
+    counts[k] = c;
+  });
+  std::uint64_t total = 0;
+  for (const std::uint64_t c : counts)
+    total += c;
+  return total;
+#else
+  (void)s;
+  (void)threads;
+  throw std::logic_error("ladder: reference-fast is not built (no kernel fast traversal)");
+#endif
+}
 
 // rule: BENCH.LADDER.RUNGS
 std::uint64_t run_rung(Rung r, const LadderScene& s, Coverage* out) {

@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace rastrules::bench {
@@ -155,13 +156,28 @@ struct LavapipeFigure {
   double seconds = 0;
   std::uint64_t samples_passed = 0;
   std::uint64_t triangles = 0;
+  unsigned threads = 0;        // lavapipe's rasterizer threads (0: unknown)
+  std::string threads_source;  // where that figure comes from
 };
+
+// Returns lavapipe's rasterizer thread count and where it comes from: LP_NUM_THREADS when set
+// (an integer in [0, 256]; 0 means llvmpipe rasterizes on the calling thread, counted as 1),
+// else the number of online processors, llvmpipe's default (BENCH.LAVAPIPE).
+// rule: BENCH.LAVAPIPE
+[[nodiscard]] std::pair<unsigned, std::string> lavapipe_threads();
 
 struct LadderConfig {
   bool quick = false;
   std::uint64_t seed = 1;
   double min_seconds = 0.2; // per rung and scene, repeated until reached (quick: 0.02)
+  unsigned threads = 1;     // threads of the `reference-fast xN` figure (BENCH.METRIC.THROUGHPUT)
 };
+
+// reference-fast on `threads` threads: the scene's triangles in `threads` contiguous chunks,
+// each counted by the fast traversal on its own thread (rastrules::run_units), the chunk counts
+// added in chunk order. Equal to run_rung(kReferenceFast, s, nullptr) for every thread count.
+// rule: BENCH.METRIC.THROUGHPUT
+[[nodiscard]] std::uint64_t run_reference_fast_threaded(const LadderScene& s, unsigned threads);
 
 struct LadderReport {
   LadderConfig config;
@@ -175,6 +191,9 @@ struct LadderReport {
   std::string sweep_note;
   std::uint64_t reference_small_covered = 0;
   std::vector<RungResult> rungs;
+  // reference-fast on config.threads threads, per timed scene (empty when the fast traversal is
+  // not built); its errors, watertightness and exact range are reference-fast's.
+  std::vector<FamilyResult> fast_threaded;
   LavapipeFigure lavapipe;
   double seconds_total = 0;
   [[nodiscard]] const RungResult* find(Rung r) const;
