@@ -31,13 +31,7 @@ using detail::free_host_buffer;
 using detail::HostBuffer;
 using detail::vk_failed;
 
-struct Push {
-  float inv_k = 1.0F;
-  std::uint32_t slot = 0;
-  std::uint32_t width = 0;
-  std::uint32_t height = 0;
-  std::uint32_t slots = 0;
-};
+using Push = detail::CoveragePush;
 
 // Everything that selects a pipeline (DRIVER.LAVAPIPE.SUPPORT).
 struct PipelineKey {
@@ -137,18 +131,8 @@ class LavapipeDriver final : public detail::GpuDriver {
             VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
             VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 
-    VkRenderPassBeginInfo rpb{};
-    rpb.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
-    rpb.renderPass = render_pass_;
-    rpb.framebuffer = framebuffer_;
-    rpb.renderArea = {{0, 0}, {w, h}};
-    vkCmdBeginRenderPass(cmd_, &rpb, VK_SUBPASS_CONTENTS_INLINE);
     // rule: DRIVER.LAVAPIPE.POSITION
-    const auto kf = static_cast<float>(k);
-    const VkViewport viewport{-kf, -kf, 2.0F * kf, 2.0F * kf, 0.0F, 1.0F};
-    const VkRect2D scissor{{0, 0}, {w, h}};
-    vkCmdSetViewport(cmd_, 0, 1, &viewport);
-    vkCmdSetScissor(cmd_, 0, 1, &scissor);
+    detail::begin_target_pass(cmd_, render_pass_, framebuffer_, w, h, k);
     vkCmdBindDescriptorSets(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 0, nullptr);
     const VkDeviceSize zero = 0;
     vkCmdBindVertexBuffers(cmd_, 0, 1, &vertex_.buffer, &zero);
@@ -163,12 +147,9 @@ class LavapipeDriver final : public detail::GpuDriver {
       switch (p.type) {
         case PrimitiveType::kTriangle:
           key.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-          key.cull = scene.state.cull == CullMode::kBack    ? VK_CULL_MODE_BACK_BIT
-                     : scene.state.cull == CullMode::kFront ? VK_CULL_MODE_FRONT_BIT
-                                                            : VK_CULL_MODE_NONE;
           // Both y-down: on-screen winding maps directly (DRIVER.LAVAPIPE.SUPPORT).
-          key.front = scene.state.front_face == FrontFace::kClockwise ? VK_FRONT_FACE_CLOCKWISE
-                                                                      : VK_FRONT_FACE_COUNTER_CLOCKWISE;
+          key.cull = detail::vk_cull_mode(scene.state.cull);
+          key.front = detail::vk_front_face(scene.state.front_face);
           break;
         case PrimitiveType::kPoint:
           key.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
@@ -208,17 +189,10 @@ class LavapipeDriver final : public detail::GpuDriver {
       vkResetCommandBuffer(cmd_, 0);
       return DriverError{vk_failed("vkEndCommandBuffer", r)};
     }
-    VkSubmitInfo submit{};
-    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &cmd_;
-    if (VkResult r = vkQueueSubmit(queue_, 1, &submit, fence_); r != VK_SUCCESS) {
+    if (std::string why = detail::submit_and_wait(device_, queue_, cmd_, fence_); !why.empty()) {
       vkResetCommandBuffer(cmd_, 0);
-      return DriverError{vk_failed("vkQueueSubmit", r)};
+      return DriverError{why};
     }
-    const VkResult waited = vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX);
-    vkResetFences(device_, 1, &fence_);
-    if (waited != VK_SUCCESS) return DriverError{vk_failed("vkWaitForFences", waited)};
     vkResetCommandBuffer(cmd_, 0);
 
     // rule: DRIVER.LAVAPIPE.COVERAGE
@@ -283,12 +257,6 @@ class LavapipeDriver final : public detail::GpuDriver {
 
   std::string create_device() {
     if (std::string why = detail::graphics_queue_family(physical_, &family_); !why.empty()) return why;
-    const float priority = 1.0F;
-    VkDeviceQueueCreateInfo qci{};
-    qci.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
-    qci.queueFamilyIndex = family_;
-    qci.queueCount = 1;
-    qci.pQueuePriorities = &priority;
     VkPhysicalDeviceLineRasterizationFeaturesEXT line{};
     line.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT;
     line.bresenhamLines = bresenham_ ? VK_TRUE : VK_FALSE;
@@ -299,42 +267,20 @@ class LavapipeDriver final : public detail::GpuDriver {
     f2.features.fragmentStoresAndAtomics = VK_TRUE;
     f2.features.geometryShader = VK_TRUE;
     const char* ext = VK_EXT_LINE_RASTERIZATION_EXTENSION_NAME;
-    VkDeviceCreateInfo dci{};
-    dci.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
-    dci.pNext = &f2;
-    dci.queueCreateInfoCount = 1;
-    dci.pQueueCreateInfos = &qci;
-    dci.enabledExtensionCount = has_line_ext_ ? 1U : 0U;
-    dci.ppEnabledExtensionNames = has_line_ext_ ? &ext : nullptr;
-    if (VkResult r = vkCreateDevice(physical_, &dci, nullptr, &device_); r != VK_SUCCESS) {
-      device_ = VK_NULL_HANDLE;
-      return vk_failed("vkCreateDevice", r);
+    if (std::string why = detail::create_device(physical_, family_, f2, has_line_ext_ ? 1U : 0U, &ext,
+                                                &device_, &queue_);
+        !why.empty()) {
+      return why;
     }
-    vkGetDeviceQueue(device_, family_, 0, &queue_);
     vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
     return {};
   }
 
   std::string create_shared() {
-    VkCommandPoolCreateInfo pci{};
-    pci.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-    pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    pci.queueFamilyIndex = family_;
-    if (VkResult r = vkCreateCommandPool(device_, &pci, nullptr, &pool_); r != VK_SUCCESS) {
-      return vk_failed("vkCreateCommandPool", r);
-    }
-    VkCommandBufferAllocateInfo cai{};
-    cai.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-    cai.commandPool = pool_;
-    cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    cai.commandBufferCount = 1;
-    if (VkResult r = vkAllocateCommandBuffers(device_, &cai, &cmd_); r != VK_SUCCESS) {
-      return vk_failed("vkAllocateCommandBuffers", r);
-    }
-    VkFenceCreateInfo fci{};
-    fci.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-    if (VkResult r = vkCreateFence(device_, &fci, nullptr, &fence_); r != VK_SUCCESS) {
-      return vk_failed("vkCreateFence", r);
+    if (std::string why = detail::create_submit_objects(
+            device_, family_, VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT, &pool_, &cmd_, &fence_);
+        !why.empty()) {
+      return why;
     }
     VkDescriptorSetLayoutBinding binding{};
     binding.binding = 0;
@@ -378,24 +324,15 @@ class LavapipeDriver final : public detail::GpuDriver {
     for (auto [code, bytes, module] :
          {std::tuple{kCoverage_vert, sizeof(kCoverage_vert), &vert_},
           std::tuple{kCoverage_frag, sizeof(kCoverage_frag), &frag_}}) {
-      VkShaderModuleCreateInfo sci{};
-      sci.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
-      sci.codeSize = bytes;
-      sci.pCode = code;
-      if (VkResult r = vkCreateShaderModule(device_, &sci, nullptr, module); r != VK_SUCCESS) {
-        return vk_failed("vkCreateShaderModule", r);
+      if (std::string why = detail::create_shader_module(device_, code, bytes, module); !why.empty()) {
+        return why;
       }
     }
     // A render pass without attachments: coverage goes to the storage buffer only, and the
     // sample count is the pipeline's rasterizationSamples.
-    VkSubpassDescription subpass{};
-    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    VkRenderPassCreateInfo rci{};
-    rci.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
-    rci.subpassCount = 1;
-    rci.pSubpasses = &subpass;
-    if (VkResult r = vkCreateRenderPass(device_, &rci, nullptr, &render_pass_); r != VK_SUCCESS) {
-      return vk_failed("vkCreateRenderPass", r);
+    if (std::string why = detail::create_attachmentless_render_pass(device_, &render_pass_);
+        !why.empty()) {
+      return why;
     }
     return {};
   }
@@ -462,65 +399,19 @@ class LavapipeDriver final : public detail::GpuDriver {
   // Returns the cached pipeline for key, creating it on first use.
   std::variant<VkPipeline, std::string> get_pipeline(const PipelineKey& key) {
     if (auto it = pipelines_.find(key); it != pipelines_.end()) return it->second;
-    VkPipelineShaderStageCreateInfo stages[2]{};
-    stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-    stages[0].module = vert_;
-    stages[0].pName = "main";
-    stages[1] = stages[0];
-    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    stages[1].module = frag_;
-    VkVertexInputBindingDescription vb{0, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX};
-    VkVertexInputAttributeDescription va{0, 0, VK_FORMAT_R32G32_SFLOAT, 0};
-    VkPipelineVertexInputStateCreateInfo vi{};
-    vi.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
-    vi.vertexBindingDescriptionCount = 1;
-    vi.pVertexBindingDescriptions = &vb;
-    vi.vertexAttributeDescriptionCount = 1;
-    vi.pVertexAttributeDescriptions = &va;
-    VkPipelineInputAssemblyStateCreateInfo ia{};
-    ia.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
-    ia.topology = key.topology;
-    VkPipelineViewportStateCreateInfo vp{};
-    vp.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
-    vp.viewportCount = 1;
-    vp.scissorCount = 1;
-    VkPipelineRasterizationLineStateCreateInfoEXT line{};
-    line.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_LINE_STATE_CREATE_INFO_EXT;
-    line.lineRasterizationMode = key.line_mode;
-    VkPipelineRasterizationStateCreateInfo rs{};
-    rs.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
-    rs.pNext = key.line_mode != VK_LINE_RASTERIZATION_MODE_DEFAULT_EXT ? &line : nullptr;
-    rs.polygonMode = VK_POLYGON_MODE_FILL;
-    rs.cullMode = key.cull;
-    rs.frontFace = key.front;
-    rs.lineWidth = 1.0F;
     const VkSampleMask mask = key.sample_mask;
-    VkPipelineMultisampleStateCreateInfo ms{};
-    ms.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
-    ms.rasterizationSamples = key.samples;
-    ms.pSampleMask = &mask;
-    const VkDynamicState dyn[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo ds{};
-    ds.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
-    ds.dynamicStateCount = 2;
-    ds.pDynamicStates = dyn;
-    VkGraphicsPipelineCreateInfo gci{};
-    gci.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
-    gci.stageCount = 2;
-    gci.pStages = stages;
-    gci.pVertexInputState = &vi;
-    gci.pInputAssemblyState = &ia;
-    gci.pViewportState = &vp;
-    gci.pRasterizationState = &rs;
-    gci.pMultisampleState = &ms;
-    gci.pDynamicState = &ds;
-    gci.layout = layout_;
-    gci.renderPass = render_pass_;
+    detail::CoveragePipelineState state;
+    state.topology = key.topology;
+    state.cull = key.cull;
+    state.front = key.front;
+    state.samples = key.samples;
+    state.sample_mask = &mask;
+    state.line_mode = key.line_mode;
     VkPipeline pipeline = VK_NULL_HANDLE;
-    if (VkResult r = vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &gci, nullptr, &pipeline);
-        r != VK_SUCCESS) {
-      return vk_failed("vkCreateGraphicsPipelines", r);
+    if (std::string why = detail::create_coverage_pipeline(device_, vert_, frag_, layout_, render_pass_,
+                                                           state, &pipeline);
+        !why.empty()) {
+      return why;
     }
     pipelines_.emplace(key, pipeline);
     return pipeline;

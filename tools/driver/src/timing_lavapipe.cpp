@@ -33,13 +33,7 @@ namespace {
 using detail::vk_failed;
 
 // The push constants of coverage.vert (only inv_k is read by this mode).
-struct Push {
-  float inv_k = 1.0F;
-  std::uint32_t slot = 0;
-  std::uint32_t width = 0;
-  std::uint32_t height = 0;
-  std::uint32_t slots = 0;
-};
+using Push = detail::CoveragePush;
 
 // Why the scene cannot be timed as BENCH.LAVAPIPE defines it, or "".
 std::string untimeable(const Scene& scene, int repeats) {
@@ -169,42 +163,16 @@ class Timer {
       return "lavapipe: device lacks occlusionQueryPrecise (needed to count covered samples)";
     }
     if (std::string why = detail::graphics_queue_family(physical_, &family_); !why.empty()) return why;
-    const float priority = 1.0F;
-    VkDeviceQueueCreateInfo qci{};
-    qci.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
-    qci.queueFamilyIndex = family_;
-    qci.queueCount = 1;
-    qci.pQueuePriorities = &priority;
-    VkPhysicalDeviceFeatures features{};
-    features.occlusionQueryPrecise = VK_TRUE;
-    VkDeviceCreateInfo dci{};
-    dci.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
-    dci.queueCreateInfoCount = 1;
-    dci.pQueueCreateInfos = &qci;
-    dci.pEnabledFeatures = &features;
-    if (VkResult r = vkCreateDevice(physical_, &dci, nullptr, &device_); r != VK_SUCCESS) {
-      device_ = VK_NULL_HANDLE;
-      return vk_failed("vkCreateDevice", r);
+    VkPhysicalDeviceFeatures2 features{};
+    features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+    features.features.occlusionQueryPrecise = VK_TRUE;
+    if (std::string why = detail::create_device(physical_, family_, features, 0, nullptr, &device_, &queue_);
+        !why.empty()) {
+      return why;
     }
-    vkGetDeviceQueue(device_, family_, 0, &queue_);
-    VkCommandPoolCreateInfo pci{};
-    pci.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-    pci.queueFamilyIndex = family_;
-    if (VkResult r = vkCreateCommandPool(device_, &pci, nullptr, &pool_); r != VK_SUCCESS) {
-      return vk_failed("vkCreateCommandPool", r);
-    }
-    VkCommandBufferAllocateInfo cai{};
-    cai.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-    cai.commandPool = pool_;
-    cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    cai.commandBufferCount = 1;
-    if (VkResult r = vkAllocateCommandBuffers(device_, &cai, &cmd_); r != VK_SUCCESS) {
-      return vk_failed("vkAllocateCommandBuffers", r);
-    }
-    VkFenceCreateInfo fci{};
-    fci.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-    if (VkResult r = vkCreateFence(device_, &fci, nullptr, &fence_); r != VK_SUCCESS) {
-      return vk_failed("vkCreateFence", r);
+    if (std::string why = detail::create_submit_objects(device_, family_, 0, &pool_, &cmd_, &fence_);
+        !why.empty()) {
+      return why;
     }
     VkQueryPoolCreateInfo qpi{};
     qpi.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO;
@@ -221,12 +189,8 @@ class Timer {
   std::string create_pipeline(const Scene& scene) {
     for (auto [code, bytes, module] : {std::tuple{kCoverage_vert, sizeof(kCoverage_vert), &vert_},
                                        std::tuple{kTiming_frag, sizeof(kTiming_frag), &frag_}}) {
-      VkShaderModuleCreateInfo sci{};
-      sci.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
-      sci.codeSize = bytes;
-      sci.pCode = code;
-      if (VkResult r = vkCreateShaderModule(device_, &sci, nullptr, module); r != VK_SUCCESS) {
-        return vk_failed("vkCreateShaderModule", r);
+      if (std::string why = detail::create_shader_module(device_, code, bytes, module); !why.empty()) {
+        return why;
       }
     }
     VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(Push)};
@@ -237,14 +201,9 @@ class Timer {
     if (VkResult r = vkCreatePipelineLayout(device_, &lci, nullptr, &layout_); r != VK_SUCCESS) {
       return vk_failed("vkCreatePipelineLayout", r);
     }
-    VkSubpassDescription subpass{};
-    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    VkRenderPassCreateInfo rci{};
-    rci.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
-    rci.subpassCount = 1;
-    rci.pSubpasses = &subpass;
-    if (VkResult r = vkCreateRenderPass(device_, &rci, nullptr, &render_pass_); r != VK_SUCCESS) {
-      return vk_failed("vkCreateRenderPass", r);
+    if (std::string why = detail::create_attachmentless_render_pass(device_, &render_pass_);
+        !why.empty()) {
+      return why;
     }
     VkFramebufferCreateInfo fci{};
     fci.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
@@ -255,63 +214,14 @@ class Timer {
     if (VkResult r = vkCreateFramebuffer(device_, &fci, nullptr, &framebuffer_); r != VK_SUCCESS) {
       return vk_failed("vkCreateFramebuffer", r);
     }
-    VkPipelineShaderStageCreateInfo stages[2]{};
-    stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-    stages[0].module = vert_;
-    stages[0].pName = "main";
-    stages[1] = stages[0];
-    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    stages[1].module = frag_;
-    VkVertexInputBindingDescription vb{0, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX};
-    VkVertexInputAttributeDescription va{0, 0, VK_FORMAT_R32G32_SFLOAT, 0};
-    VkPipelineVertexInputStateCreateInfo vi{};
-    vi.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
-    vi.vertexBindingDescriptionCount = 1;
-    vi.pVertexBindingDescriptions = &vb;
-    vi.vertexAttributeDescriptionCount = 1;
-    vi.pVertexAttributeDescriptions = &va;
-    VkPipelineInputAssemblyStateCreateInfo ia{};
-    ia.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
-    ia.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo vp{};
-    vp.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
-    vp.viewportCount = 1;
-    vp.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo rs{};
-    rs.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
-    rs.polygonMode = VK_POLYGON_MODE_FILL;
     // The scene's culling, as the adapter maps it (both y-down: the winding maps directly).
-    rs.cullMode = scene.state.cull == CullMode::kBack    ? VK_CULL_MODE_BACK_BIT
-                  : scene.state.cull == CullMode::kFront ? VK_CULL_MODE_FRONT_BIT
-                                                         : VK_CULL_MODE_NONE;
-    rs.frontFace = scene.state.front_face == FrontFace::kClockwise ? VK_FRONT_FACE_CLOCKWISE
-                                                                   : VK_FRONT_FACE_COUNTER_CLOCKWISE;
-    rs.lineWidth = 1.0F;
-    VkPipelineMultisampleStateCreateInfo ms{};
-    ms.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
-    ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    const VkDynamicState dyn[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo ds{};
-    ds.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
-    ds.dynamicStateCount = 2;
-    ds.pDynamicStates = dyn;
-    VkGraphicsPipelineCreateInfo gci{};
-    gci.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
-    gci.stageCount = 2;
-    gci.pStages = stages;
-    gci.pVertexInputState = &vi;
-    gci.pInputAssemblyState = &ia;
-    gci.pViewportState = &vp;
-    gci.pRasterizationState = &rs;
-    gci.pMultisampleState = &ms;
-    gci.pDynamicState = &ds;
-    gci.layout = layout_;
-    gci.renderPass = render_pass_;
-    if (VkResult r = vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &gci, nullptr, &pipeline_);
-        r != VK_SUCCESS) {
-      pipeline_ = VK_NULL_HANDLE;
-      return vk_failed("vkCreateGraphicsPipelines", r);
+    detail::CoveragePipelineState state;
+    state.cull = detail::vk_cull_mode(scene.state.cull);
+    state.front = detail::vk_front_face(scene.state.front_face);
+    if (std::string why = detail::create_coverage_pipeline(device_, vert_, frag_, layout_, render_pass_,
+                                                           state, &pipeline_);
+        !why.empty()) {
+      return why;
     }
     return {};
   }
@@ -348,17 +258,7 @@ class Timer {
     const auto w = static_cast<std::uint32_t>(scene.width);
     const auto h = static_cast<std::uint32_t>(scene.height);
     vkCmdResetQueryPool(cmd_, queries_, 0, 1);
-    VkRenderPassBeginInfo rpb{};
-    rpb.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
-    rpb.renderPass = render_pass_;
-    rpb.framebuffer = framebuffer_;
-    rpb.renderArea = {{0, 0}, {w, h}};
-    vkCmdBeginRenderPass(cmd_, &rpb, VK_SUBPASS_CONTENTS_INLINE);
-    const auto kf = static_cast<float>(k_);
-    const VkViewport viewport{-kf, -kf, 2.0F * kf, 2.0F * kf, 0.0F, 1.0F};
-    const VkRect2D scissor{{0, 0}, {w, h}};
-    vkCmdSetViewport(cmd_, 0, 1, &viewport);
-    vkCmdSetScissor(cmd_, 0, 1, &scissor);
+    detail::begin_target_pass(cmd_, render_pass_, framebuffer_, w, h, k_);
     vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
     const VkDeviceSize zero = 0;
     vkCmdBindVertexBuffers(cmd_, 0, 1, &vertices_.buffer, &zero);
@@ -375,18 +275,10 @@ class Timer {
   // Submits the recorded draw, waits for its fence and reads the query.
   // rule: BENCH.LAVAPIPE
   std::string draw(double* seconds, std::uint64_t* count) {
-    VkSubmitInfo submit{};
-    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &cmd_;
     const auto start = std::chrono::steady_clock::now();
-    if (VkResult r = vkQueueSubmit(queue_, 1, &submit, fence_); r != VK_SUCCESS) {
-      return vk_failed("vkQueueSubmit", r);
-    }
-    const VkResult waited = vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX);
+    const std::string why = detail::submit_and_wait(device_, queue_, cmd_, fence_);
     const auto stop = std::chrono::steady_clock::now();
-    vkResetFences(device_, 1, &fence_);
-    if (waited != VK_SUCCESS) return vk_failed("vkWaitForFences", waited);
+    if (!why.empty()) return why;
     *seconds = std::chrono::duration<double>(stop - start).count();
     std::uint64_t result = 0;
     if (VkResult r = vkGetQueryPoolResults(device_, queries_, 0, 1, sizeof(result), &result, sizeof(result),

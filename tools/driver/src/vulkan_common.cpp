@@ -138,4 +138,184 @@ void free_host_buffer(VkDevice device, HostBuffer* b) {
   *b = HostBuffer{};
 }
 
+std::string create_device(VkPhysicalDevice physical, std::uint32_t family,
+                          const VkPhysicalDeviceFeatures2& features, std::uint32_t extension_count,
+                          const char* const* extensions, VkDevice* device, VkQueue* queue) {
+  const float priority = 1.0F;
+  VkDeviceQueueCreateInfo qci{};
+  qci.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
+  qci.queueFamilyIndex = family;
+  qci.queueCount = 1;
+  qci.pQueuePriorities = &priority;
+  VkDeviceCreateInfo dci{};
+  dci.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
+  dci.pNext = &features;
+  dci.queueCreateInfoCount = 1;
+  dci.pQueueCreateInfos = &qci;
+  dci.enabledExtensionCount = extension_count;
+  dci.ppEnabledExtensionNames = extension_count > 0 ? extensions : nullptr;
+  if (VkResult r = vkCreateDevice(physical, &dci, nullptr, device); r != VK_SUCCESS) {
+    *device = VK_NULL_HANDLE;
+    return vk_failed("vkCreateDevice", r);
+  }
+  vkGetDeviceQueue(*device, family, 0, queue);
+  return {};
+}
+
+std::string create_submit_objects(VkDevice device, std::uint32_t family,
+                                  VkCommandPoolCreateFlags flags, VkCommandPool* pool,
+                                  VkCommandBuffer* cmd, VkFence* fence) {
+  VkCommandPoolCreateInfo pci{};
+  pci.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+  pci.flags = flags;
+  pci.queueFamilyIndex = family;
+  if (VkResult r = vkCreateCommandPool(device, &pci, nullptr, pool); r != VK_SUCCESS) {
+    return vk_failed("vkCreateCommandPool", r);
+  }
+  VkCommandBufferAllocateInfo cai{};
+  cai.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+  cai.commandPool = *pool;
+  cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  cai.commandBufferCount = 1;
+  if (VkResult r = vkAllocateCommandBuffers(device, &cai, cmd); r != VK_SUCCESS) {
+    return vk_failed("vkAllocateCommandBuffers", r);
+  }
+  VkFenceCreateInfo fci{};
+  fci.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+  if (VkResult r = vkCreateFence(device, &fci, nullptr, fence); r != VK_SUCCESS) {
+    return vk_failed("vkCreateFence", r);
+  }
+  return {};
+}
+
+std::string create_shader_module(VkDevice device, const std::uint32_t* code, std::size_t bytes,
+                                 VkShaderModule* module) {
+  VkShaderModuleCreateInfo sci{};
+  sci.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+  sci.codeSize = bytes;
+  sci.pCode = code;
+  if (VkResult r = vkCreateShaderModule(device, &sci, nullptr, module); r != VK_SUCCESS) {
+    return vk_failed("vkCreateShaderModule", r);
+  }
+  return {};
+}
+
+std::string create_attachmentless_render_pass(VkDevice device, VkRenderPass* pass) {
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  VkRenderPassCreateInfo rci{};
+  rci.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
+  rci.subpassCount = 1;
+  rci.pSubpasses = &subpass;
+  if (VkResult r = vkCreateRenderPass(device, &rci, nullptr, pass); r != VK_SUCCESS) {
+    return vk_failed("vkCreateRenderPass", r);
+  }
+  return {};
+}
+
+std::string create_coverage_pipeline(VkDevice device, VkShaderModule vert, VkShaderModule frag,
+                                     VkPipelineLayout layout, VkRenderPass pass,
+                                     const CoveragePipelineState& state, VkPipeline* pipeline) {
+  VkPipelineShaderStageCreateInfo stages[2]{};
+  stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stages[0].module = vert;
+  stages[0].pName = "main";
+  stages[1] = stages[0];
+  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+  stages[1].module = frag;
+  VkVertexInputBindingDescription vb{0, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX};
+  VkVertexInputAttributeDescription va{0, 0, VK_FORMAT_R32G32_SFLOAT, 0};
+  VkPipelineVertexInputStateCreateInfo vi{};
+  vi.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
+  vi.vertexBindingDescriptionCount = 1;
+  vi.pVertexBindingDescriptions = &vb;
+  vi.vertexAttributeDescriptionCount = 1;
+  vi.pVertexAttributeDescriptions = &va;
+  VkPipelineInputAssemblyStateCreateInfo ia{};
+  ia.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
+  ia.topology = state.topology;
+  VkPipelineViewportStateCreateInfo vp{};
+  vp.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
+  vp.viewportCount = 1;
+  vp.scissorCount = 1;
+  VkPipelineRasterizationLineStateCreateInfoEXT line{};
+  line.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_LINE_STATE_CREATE_INFO_EXT;
+  line.lineRasterizationMode = state.line_mode;
+  VkPipelineRasterizationStateCreateInfo rs{};
+  rs.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
+  rs.pNext = state.line_mode != VK_LINE_RASTERIZATION_MODE_DEFAULT_EXT ? &line : nullptr;
+  rs.polygonMode = VK_POLYGON_MODE_FILL;
+  rs.cullMode = state.cull;
+  rs.frontFace = state.front;
+  rs.lineWidth = 1.0F;
+  VkPipelineMultisampleStateCreateInfo ms{};
+  ms.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
+  ms.rasterizationSamples = state.samples;
+  ms.pSampleMask = state.sample_mask;
+  const VkDynamicState dyn[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  VkPipelineDynamicStateCreateInfo ds{};
+  ds.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
+  ds.dynamicStateCount = 2;
+  ds.pDynamicStates = dyn;
+  VkGraphicsPipelineCreateInfo gci{};
+  gci.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
+  gci.stageCount = 2;
+  gci.pStages = stages;
+  gci.pVertexInputState = &vi;
+  gci.pInputAssemblyState = &ia;
+  gci.pViewportState = &vp;
+  gci.pRasterizationState = &rs;
+  gci.pMultisampleState = &ms;
+  gci.pDynamicState = &ds;
+  gci.layout = layout;
+  gci.renderPass = pass;
+  if (VkResult r = vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &gci, nullptr, pipeline);
+      r != VK_SUCCESS) {
+    *pipeline = VK_NULL_HANDLE;
+    return vk_failed("vkCreateGraphicsPipelines", r);
+  }
+  return {};
+}
+
+// rule: DRIVER.LAVAPIPE.POSITION
+void begin_target_pass(VkCommandBuffer cmd, VkRenderPass pass, VkFramebuffer framebuffer,
+                       std::uint32_t w, std::uint32_t h, double k) {
+  VkRenderPassBeginInfo rpb{};
+  rpb.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
+  rpb.renderPass = pass;
+  rpb.framebuffer = framebuffer;
+  rpb.renderArea = {{0, 0}, {w, h}};
+  vkCmdBeginRenderPass(cmd, &rpb, VK_SUBPASS_CONTENTS_INLINE);
+  const auto kf = static_cast<float>(k);
+  const VkViewport viewport{-kf, -kf, 2.0F * kf, 2.0F * kf, 0.0F, 1.0F};
+  const VkRect2D scissor{{0, 0}, {w, h}};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+std::string submit_and_wait(VkDevice device, VkQueue queue, VkCommandBuffer cmd, VkFence fence) {
+  VkSubmitInfo submit{};
+  submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd;
+  if (VkResult r = vkQueueSubmit(queue, 1, &submit, fence); r != VK_SUCCESS) {
+    return vk_failed("vkQueueSubmit", r);
+  }
+  const VkResult waited = vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX);
+  vkResetFences(device, 1, &fence);
+  if (waited != VK_SUCCESS) return vk_failed("vkWaitForFences", waited);
+  return {};
+}
+
+VkCullModeFlags vk_cull_mode(CullMode cull) {
+  return cull == CullMode::kBack    ? VK_CULL_MODE_BACK_BIT
+         : cull == CullMode::kFront ? VK_CULL_MODE_FRONT_BIT
+                                    : VK_CULL_MODE_NONE;
+}
+
+VkFrontFace vk_front_face(FrontFace front) {
+  return front == FrontFace::kClockwise ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE;
+}
+
 }  // namespace rastrules::driver::detail
