@@ -14,6 +14,7 @@ namespace rastrules::raster {
 namespace {
 
 static_assert(kFastTileSize == fast_detail::kTile, "one tile size");
+static_assert(kFastBlockSize == fast_detail::kBlock, "one block size");
 
 // Returns E + bias of each edge at the sample point of the first pixel of r's first tile,
 // shifted by (dx, dy) raw units, and the lane steps A and B. Tiles start at r's first pixel
@@ -86,7 +87,8 @@ FastTileCounts fast_tile_counts(const TriangleSetup& t, std::int32_t width, std:
   const PixelRect r = pixel_bounds(t, width, height);
   if (r.empty()) return {};
   const fast_detail::TileCounts c = fast_detail::tile_counts_scalar(prepare_edges(t, r, 0, 0), r);
-  return FastTileCounts{c.rejected, c.accepted, c.partial};
+  return FastTileCounts{c.rejected,        c.accepted,        c.partial,
+                        c.blocks_rejected, c.blocks_accepted, c.blocks_partial};
 }
 
 }  // namespace rastrules::raster

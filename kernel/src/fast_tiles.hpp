@@ -43,6 +43,9 @@ struct TileCounts {
   std::uint64_t rejected = 0;
   std::uint64_t accepted = 0;
   std::uint64_t partial = 0;
+  std::uint64_t blocks_rejected = 0;
+  std::uint64_t blocks_accepted = 0;
+  std::uint64_t blocks_partial = 0;
 };
 
 // The entry points of each instruction set. cover_rect writes fast_cover_rect's output;
@@ -61,6 +64,7 @@ namespace {
 
 constexpr std::int32_t kTile = 16;
 constexpr std::int32_t kLast = kTile - 1;
+constexpr std::int32_t kBlock = 4 * kTile;
 
 constexpr std::int32_t min32(std::int32_t x, std::int32_t y) { return x < y ? x : y; }
 constexpr std::int32_t max32(std::int32_t x, std::int32_t y) { return x > y ? x : y; }
@@ -90,55 +94,93 @@ constexpr std::uint64_t popcount32(std::uint32_t m) {
 // depends on the tile); kernel.tile(c, j0, j1, cols, sink, tx, ty) runs a partial tile's rows.
 template <class Kernel, class Sink>
 inline void drive(const FastEdges& f, PixelRect r, Sink& sink) {
-  // One tile step along x (y) adds 16 pixels' worth of E: 16 * 256 * A (B), exact in int64
-  // (|A| < 2^24: |step| < 2^36; FIX.STEP.INCREMENTAL).
+  // One tile step along x (y) adds 16 pixels' worth of E: 16 * 256 * A (B), a block step 64
+  // pixels' worth; exact in int64 (|A| < 2^24: |step| < 2^38; FIX.STEP.INCREMENTAL).
   const auto select = [](bool cond, std::int64_t x, std::int64_t y) { return cond ? x : y; };
   const auto select32 = [](bool cond, std::int32_t x, std::int32_t y) { return cond ? x : y; };
-  std::int64_t step_x[3], step_y[3], row_e[3];
+  std::int64_t step_x[3], step_y[3], block_x[3], block_y[3], block_row_e[3];
+  std::int64_t bmax[3], bmin[3];
   std::int32_t lmax[3], lmin[3];
   for (int k = 0; k < 3; ++k) {
     step_x[k] = std::int64_t{kTile} * 256 * f.a[k];
     step_y[k] = std::int64_t{kTile} * 256 * f.b[k];
-    row_e[k] = f.e_first[k];
+    block_x[k] = std::int64_t{kBlock} * 256 * f.a[k];
+    block_y[k] = std::int64_t{kBlock} * 256 * f.b[k];
+    block_row_e[k] = f.e_first[k];
     // rule: FAST.TILE.CLASSIFY
     // L = i A + j B is linear in (i, j): over a tile's lanes 0 <= i, j <= 15 its extremes lie
     // at corners chosen by the signs of A and B (formula::lane_max, lane_min), the same for
-    // every tile. The whole tile is classified, also when only part of it lies in r: rejecting
-    // or accepting more lanes than r holds decides r's lanes all the same.
-    // |A|, |B| < 2^24: |L| < 2^29.
+    // every tile; over a block's lanes 0 <= i, j <= 63 likewise, in 64-bit (|L| < 2^31). The
+    // whole tile or block is classified, also when only part of it lies in r: rejecting or
+    // accepting more lanes than r holds decides r's lanes all the same.
+    // |A|, |B| < 2^24: |L| < 2^29 over a tile.
     lmax[k] = formula::lane_max<std::int32_t>(f.a[k], f.b[k], kLast, select32);
     lmin[k] = formula::lane_min<std::int32_t>(f.a[k], f.b[k], kLast, select32);
+    bmax[k] = formula::lane_max<std::int64_t>(f.a[k], f.b[k], kBlock - 1, select);
+    bmin[k] = formula::lane_min<std::int64_t>(f.a[k], f.b[k], kBlock - 1, select);
   }
   const Kernel kernel(f.a, f.b);
-  for (std::int32_t ty = f.ty0; ty <= r.y1; ty += kTile) {
-    const std::int32_t j0 = max32(r.y0 - ty, 0), j1 = min32(r.y1 - ty, kLast);
-    std::int64_t e[3] = {row_e[0], row_e[1], row_e[2]};
-    for (std::int32_t tx = f.tx0; tx <= r.x1; tx += kTile) {
-      const std::int32_t i0 = max32(r.x0 - tx, 0), i1 = min32(r.x1 - tx, kLast);
-      std::int32_t c[3];
-      bool reject = false, accept = true;
-      for (int k = 0; k < 3; ++k) {
-        // rule: FAST.LANE.I32
-        // q = floor((E0 + bias) / 256) by an arithmetic shift; C = -q clamped to
-        // [-2^30, 2^30]: lane (i, j) is inside iff i A + j B >= C.
-        const std::int64_t q = e[k] >> 8;
-        c[k] = static_cast<std::int32_t>(
-            formula::lane_threshold<std::int64_t>(q, std::int64_t{formula::kLaneBound}, select));
-        // rule: FAST.TILE.CLASSIFY
-        reject |= lmax[k] < c[k];  // no lane of the tile inside this edge
-        accept &= lmin[k] >= c[k];  // every lane of the tile inside this edge
-        e[k] += step_x[k];
+  // A rectangle within one block is never rejected or accepted whole (it is a triangle's
+  // bounds): its tiles are classified directly.
+  const bool blocks = r.x1 - r.x0 >= kBlock || r.y1 - r.y0 >= kBlock;
+  for (std::int32_t by = f.ty0; by <= r.y1; by += kBlock) {
+    const std::int32_t by1 = min32(by + kBlock - 1, r.y1);
+    std::int64_t be[3] = {block_row_e[0], block_row_e[1], block_row_e[2]};
+    for (std::int32_t bx = f.tx0; bx <= r.x1; bx += kBlock) {
+      const std::int32_t bx1 = min32(bx + kBlock - 1, r.x1);
+      // rule: FAST.TILE.CLASSIFY, FAST.LANE.I32
+      // The block's lanes in 64-bit: inside iff L >= -q with q = (E0 + bias) >> 8; the clamp
+      // to [-2^31, 2^31] (formula::kBlockLaneBound) changes no comparison since |L| < 2^31.
+      bool block_reject = false, block_accept = blocks;
+      for (int k = 0; blocks && k < 3; ++k) {
+        const std::int64_t c = formula::lane_threshold<std::int64_t>(
+            be[k] >> 8, std::int64_t{formula::kBlockLaneBound}, select);
+        block_reject |= bmax[k] < c;
+        block_accept &= bmin[k] >= c;
       }
-      const std::uint32_t cols = column_mask(i0, i1);
-      if (reject) {
-        sink.reject();
-      } else if (accept) {
-        sink.accept(tx, ty, j0, j1, cols);
-      } else if (sink.partial()) {
-        kernel.tile(c, j0, j1, cols, sink, tx, ty);
+      sink.block(block_reject ? 0 : block_accept ? 1 : 2);
+      std::int64_t row_e[3] = {be[0], be[1], be[2]};
+      for (std::int32_t ty = by; ty <= by1; ty += kTile) {
+        const std::int32_t j0 = max32(r.y0 - ty, 0), j1 = min32(r.y1 - ty, kLast);
+        std::int64_t e[3] = {row_e[0], row_e[1], row_e[2]};
+        for (std::int32_t tx = bx; tx <= bx1; tx += kTile) {
+          const std::int32_t i0 = max32(r.x0 - tx, 0), i1 = min32(r.x1 - tx, kLast);
+          const std::uint32_t cols = column_mask(i0, i1);
+          if (block_reject) {
+            sink.reject();
+            continue;
+          }
+          if (block_accept) {
+            sink.accept(tx, ty, j0, j1, cols);
+            continue;
+          }
+          std::int32_t c[3];
+          bool reject = false, accept = true;
+          for (int k = 0; k < 3; ++k) {
+            // rule: FAST.LANE.I32
+            // q = floor((E0 + bias) / 256) by an arithmetic shift; C = -q clamped to
+            // [-2^30, 2^30]: lane (i, j) is inside iff i A + j B >= C.
+            const std::int64_t q = e[k] >> 8;
+            c[k] = static_cast<std::int32_t>(
+                formula::lane_threshold<std::int64_t>(q, std::int64_t{formula::kLaneBound}, select));
+            // rule: FAST.TILE.CLASSIFY
+            reject |= lmax[k] < c[k];  // no lane of the tile inside this edge
+            accept &= lmin[k] >= c[k];  // every lane of the tile inside this edge
+            e[k] += step_x[k];
+          }
+          if (reject) {
+            sink.reject();
+          } else if (accept) {
+            sink.accept(tx, ty, j0, j1, cols);
+          } else if (sink.partial()) {
+            kernel.tile(c, j0, j1, cols, sink, tx, ty);
+          }
+        }
+        for (int k = 0; k < 3; ++k) row_e[k] += step_y[k];
       }
+      for (int k = 0; k < 3; ++k) be[k] += block_x[k];
     }
-    for (int k = 0; k < 3; ++k) row_e[k] += step_y[k];
+    for (int k = 0; k < 3; ++k) block_row_e[k] += block_y[k];
   }
 }
 
@@ -164,6 +206,7 @@ struct BitSink {
       if (hi != 0) row[w + 1] |= hi;
     }
   }
+  void block(int) const {}
   void reject() const {}
   bool partial() const { return true; }
   void accept(std::int32_t tx, std::int32_t ty, std::int32_t j0, std::int32_t j1,
@@ -175,6 +218,7 @@ struct BitSink {
 
 struct CountSink {
   std::uint64_t n = 0;
+  void block(int) const {}
   void reject() const {}
   bool partial() const { return true; }
   void accept(std::int32_t, std::int32_t, std::int32_t j0, std::int32_t j1, std::uint32_t cols) {
@@ -185,6 +229,11 @@ struct CountSink {
 
 struct ClassSink {
   TileCounts counts;
+  void block(int kind) {
+    if (kind == 0) ++counts.blocks_rejected;
+    else if (kind == 1) ++counts.blocks_accepted;
+    else ++counts.blocks_partial;
+  }
   void reject() { ++counts.rejected; }
   bool partial() {
     ++counts.partial;

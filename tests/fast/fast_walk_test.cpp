@@ -65,6 +65,28 @@ TEST(FastTileClassify, TilesBeyondTheHypotenuseAreRejectedAndCrossedOnesTestedPe
   EXPECT_EQ(one.accepted + one.rejected + one.partial, 1u);
 }
 
+// rule: FAST.TILE.CLASSIFY, FAST.EQUALS.PLAIN
+TEST(FastTileClassify, BlocksOf64PixelsAreDecidedBeforeTheirTiles) {
+  // x >= 0, y >= 0, x + y <= 256 on a 256 x 256 target: 16 blocks of 64 x 64. Block (a, b)
+  // spans centre sums 64 (a + b) + 1 .. 64 (a + b) + 127: a + b <= 2 inside (6 blocks, 96
+  // tiles accepted without a lane), a + b >= 4 outside (6 blocks, 96 tiles rejected), a + b == 3
+  // crossed (4 blocks whose 64 tiles are classified one by one: the 6 accepted, 6 rejected and
+  // 4 per-lane tiles of each 64 x 64 hypotenuse, as in the test above).
+  const TriangleSetup t = triangle_px({0, 0}, {256, 0}, {0, 256});
+  const raster::FastTileCounts c = raster::fast_tile_counts(t, 256, 256);
+  EXPECT_EQ(c.blocks_accepted, 6u);
+  EXPECT_EQ(c.blocks_rejected, 6u);
+  EXPECT_EQ(c.blocks_partial, 4u);
+  EXPECT_EQ(c.accepted, 6u * 16u + 4u * 6u);
+  EXPECT_EQ(c.rejected, 6u * 16u + 4u * 6u);
+  EXPECT_EQ(c.partial, 4u * 4u);
+  expect_fast_equals_plain(t, 256, 256);
+  // Bounds within one block are not classified as a block (never decided whole).
+  const raster::FastTileCounts small = raster::fast_tile_counts(triangle_px({3, 3}, {60, 5}, {9, 50}), 256, 256);
+  EXPECT_EQ(small.blocks_accepted + small.blocks_rejected, 0u);
+  EXPECT_EQ(small.blocks_partial, 1u);
+}
+
 // rule: FAST.TILE.CLASSIFY, FAST.EQUALS.PLAIN, TRI.FILL.TOP_LEFT
 TEST(FastTileClassify, TiesInAPartialTileFollowTheFillRule) {
   // Edges through pixel centres: the top edge y = 2.5 and the left edge x = 2.5 are inclusive,

@@ -20,6 +20,11 @@ namespace rastrules::formula {
 // The clamp bound of the lane threshold; every lane offset L satisfies |L| < kLaneBound.
 inline constexpr long long kLaneBound = 1LL << 30;
 
+// The same for the 64-bit lanes of a block of 64 x 64 pixels (FAST.TILE.CLASSIFY): |A|, |B| < 2^24
+// and 0 <= i, j < 64 keep |L| < 2^31.
+// rule: FAST.TILE.CLASSIFY
+inline constexpr long long kBlockLaneBound = 1LL << 31;
+
 // Returns L(i, j) = i * A + j * B, the lane offset of pixel (i, j) of a tile in units of
 // 256 (1/65536 px^2 per 1/256 px).
 // rule: FAST.LANE.I32

@@ -23,6 +23,10 @@
 namespace rastrules::raster {
 
 inline constexpr std::int32_t kFastTileSize = 16;
+// Blocks of kFastBlockSize x kFastBlockSize pixels (4 x 4 tiles) are classified first, in 64-bit
+// lanes of the same form (FAST.TILE.CLASSIFY): a rejected or accepted block decides its 16
+// tiles without looking at them.
+inline constexpr std::int32_t kFastBlockSize = 4 * kFastTileSize;
 
 // Writes the coverage of the sample points at raw offset (dx, dy) from each pixel centre of
 // rect r by the rasterized triangle t: bit (x - r.x0) % 64 of word (y - r.y0) * words_per_row +
@@ -44,9 +48,12 @@ void fast_cover_rect(const TriangleSetup& t, PixelRect r, std::int32_t dx, std::
 // per sample point. Each tile is classified whole, also where only part of it lies in the
 // rectangle.
 struct FastTileCounts {
-  std::uint64_t rejected = 0;
-  std::uint64_t accepted = 0;
-  std::uint64_t partial = 0;
+  std::uint64_t rejected = 0;  // tiles (also those of rejected blocks)
+  std::uint64_t accepted = 0;  // tiles (also those of accepted blocks)
+  std::uint64_t partial = 0;   // tiles decided per sample point
+  std::uint64_t blocks_rejected = 0;
+  std::uint64_t blocks_accepted = 0;
+  std::uint64_t blocks_partial = 0;  // blocks whose tiles were classified one by one
 };
 
 // Returns the classification of the tiles of the triangle's pixel bounds (pixel_bounds) at the
