@@ -14,15 +14,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
-#include <cstring>
 #include <exception>
 #include <string>
-#include <tuple>
 #include <variant>
 #include <vector>
 
 #include "gpu_common.hpp"
-#include "rastrules/driver/coverage_vert.spv.h"
 #include "rastrules/driver/timing.hpp"
 #include "rastrules/driver/timing_frag.spv.h"
 #include "vulkan_common.hpp"
@@ -66,36 +63,27 @@ class Timer {
   Timer(const Timer&) = delete;
   Timer& operator=(const Timer&) = delete;
   ~Timer() {
-    if (device_ != VK_NULL_HANDLE) {
-      vkDeviceWaitIdle(device_);
-      if (pipeline_ != VK_NULL_HANDLE) vkDestroyPipeline(device_, pipeline_, nullptr);
-      if (framebuffer_ != VK_NULL_HANDLE) vkDestroyFramebuffer(device_, framebuffer_, nullptr);
-      if (render_pass_ != VK_NULL_HANDLE) vkDestroyRenderPass(device_, render_pass_, nullptr);
-      if (vert_ != VK_NULL_HANDLE) vkDestroyShaderModule(device_, vert_, nullptr);
-      if (frag_ != VK_NULL_HANDLE) vkDestroyShaderModule(device_, frag_, nullptr);
-      if (layout_ != VK_NULL_HANDLE) vkDestroyPipelineLayout(device_, layout_, nullptr);
-      if (queries_ != VK_NULL_HANDLE) vkDestroyQueryPool(device_, queries_, nullptr);
-      if (fence_ != VK_NULL_HANDLE) vkDestroyFence(device_, fence_, nullptr);
-      if (pool_ != VK_NULL_HANDLE) vkDestroyCommandPool(device_, pool_, nullptr);
-      detail::free_host_buffer(device_, &vertices_);
-      vkDestroyDevice(device_, nullptr);
+    if (const VkDevice device = vk_.device; device != VK_NULL_HANDLE) {
+      vkDeviceWaitIdle(device);
+      if (pipeline_ != VK_NULL_HANDLE) vkDestroyPipeline(device, pipeline_, nullptr);
+      program_.destroy(device);
+      if (queries_ != VK_NULL_HANDLE) vkDestroyQueryPool(device, queries_, nullptr);
+      detail::free_host_buffer(device, &vertices_);
     }
-    if (instance_ != VK_NULL_HANDLE) vkDestroyInstance(instance_, nullptr);
+    vk_.destroy();
   }
 
   // rule: BENCH.LAVAPIPE, DRIVER.LAVAPIPE.DEVICE
   CoverageTiming run(const Scene& scene, int repeats) {
     CoverageTiming t;
     t.repeats = repeats;
-    if (std::string why = detail::open_lavapipe_instance(&instance_, &physical_, &props_); !why.empty()) {
-      return unavailable(t, why);
-    }
-    t.device = detail::device_description(physical_, props_);
+    if (std::string why = vk_.open(); !why.empty()) return unavailable(t, why);
+    t.device = detail::device_description(vk_.physical, vk_.props);
     if (std::string why = check_limits(scene); !why.empty()) return unavailable(t, why);
     if (std::string why = create_device(); !why.empty()) return unavailable(t, why);
     if (std::string why = create_pipeline(scene); !why.empty()) return unavailable(t, why);
     if (std::string why = upload(scene); !why.empty()) return unavailable(t, why);
-    if (std::string why = record(scene); !why.empty()) return unavailable(t, why);
+    if (std::string why = record(); !why.empty()) return unavailable(t, why);
 
     std::vector<double> seconds;
     std::uint64_t first_count = 0;
@@ -138,12 +126,9 @@ class Timer {
 
   // rule: DRIVER.LAVAPIPE.POSITION
   std::string check_limits(const Scene& scene) {
-    const VkPhysicalDeviceLimits& lim = props_.limits;
-    const double max_dim = std::min(lim.maxViewportDimensions[0], lim.maxViewportDimensions[1]);
-    const double bound = std::min(-static_cast<double>(lim.viewportBoundsRange[0]),
-                                  static_cast<double>(lim.viewportBoundsRange[1]));
+    const VkPhysicalDeviceLimits& lim = vk_.props.limits;
     k_ = detail::position_scale(scene);
-    const double max_k = detail::max_position_scale(max_dim, bound);
+    const double max_k = detail::max_position_scale(lim);
     if (k_ > max_k) {
       return "coordinates need a viewport of side " + std::to_string(2.0 * k_) +
              " (device limit: K <= " + std::to_string(max_k) + ")";
@@ -158,27 +143,19 @@ class Timer {
 
   std::string create_device() {
     VkPhysicalDeviceFeatures have{};
-    vkGetPhysicalDeviceFeatures(physical_, &have);
+    vkGetPhysicalDeviceFeatures(vk_.physical, &have);
     if (have.occlusionQueryPrecise != VK_TRUE) {
       return "lavapipe: device lacks occlusionQueryPrecise (needed to count covered samples)";
     }
-    if (std::string why = detail::graphics_queue_family(physical_, &family_); !why.empty()) return why;
     VkPhysicalDeviceFeatures2 features{};
     features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
     features.features.occlusionQueryPrecise = VK_TRUE;
-    if (std::string why = detail::create_device(physical_, family_, features, 0, nullptr, &device_, &queue_);
-        !why.empty()) {
-      return why;
-    }
-    if (std::string why = detail::create_submit_objects(device_, family_, 0, &pool_, &cmd_, &fence_);
-        !why.empty()) {
-      return why;
-    }
+    if (std::string why = vk_.create_device(features, 0, nullptr, 0); !why.empty()) return why;
     VkQueryPoolCreateInfo qpi{};
     qpi.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO;
     qpi.queryType = VK_QUERY_TYPE_OCCLUSION;
     qpi.queryCount = 1;
-    if (VkResult r = vkCreateQueryPool(device_, &qpi, nullptr, &queries_); r != VK_SUCCESS) {
+    if (VkResult r = vkCreateQueryPool(vk_.device, &qpi, nullptr, &queries_); r != VK_SUCCESS) {
       return vk_failed("vkCreateQueryPool", r);
     }
     return {};
@@ -187,88 +164,46 @@ class Timer {
   // A render pass and framebuffer without attachments (the sample count is the pipeline's),
   // coverage.vert and the empty timing.frag, triangles with the scene's culling, one sample.
   std::string create_pipeline(const Scene& scene) {
-    for (auto [code, bytes, module] : {std::tuple{kCoverage_vert, sizeof(kCoverage_vert), &vert_},
-                                       std::tuple{kTiming_frag, sizeof(kTiming_frag), &frag_}}) {
-      if (std::string why = detail::create_shader_module(device_, code, bytes, module); !why.empty()) {
-        return why;
-      }
-    }
-    VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(Push)};
-    VkPipelineLayoutCreateInfo lci{};
-    lci.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
-    lci.pushConstantRangeCount = 1;
-    lci.pPushConstantRanges = &range;
-    if (VkResult r = vkCreatePipelineLayout(device_, &lci, nullptr, &layout_); r != VK_SUCCESS) {
-      return vk_failed("vkCreatePipelineLayout", r);
-    }
-    if (std::string why = detail::create_attachmentless_render_pass(device_, &render_pass_);
+    if (std::string why = program_.create(vk_.device, kTiming_frag, sizeof(kTiming_frag),
+                                          VK_SHADER_STAGE_VERTEX_BIT, VK_NULL_HANDLE);
         !why.empty()) {
       return why;
     }
-    VkFramebufferCreateInfo fci{};
-    fci.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
-    fci.renderPass = render_pass_;
-    fci.width = static_cast<std::uint32_t>(scene.width);
-    fci.height = static_cast<std::uint32_t>(scene.height);
-    fci.layers = 1;
-    if (VkResult r = vkCreateFramebuffer(device_, &fci, nullptr, &framebuffer_); r != VK_SUCCESS) {
-      return vk_failed("vkCreateFramebuffer", r);
+    if (std::string why =
+            program_.ensure_framebuffer(vk_.device, static_cast<std::uint32_t>(scene.width),
+                                        static_cast<std::uint32_t>(scene.height));
+        !why.empty()) {
+      return why;
     }
     // The scene's culling, as the adapter maps it (both y-down: the winding maps directly).
     detail::CoveragePipelineState state;
     state.cull = detail::vk_cull_mode(scene.state.cull);
     state.front = detail::vk_front_face(scene.state.front_face);
-    if (std::string why = detail::create_coverage_pipeline(device_, vert_, frag_, layout_, render_pass_,
-                                                           state, &pipeline_);
-        !why.empty()) {
-      return why;
-    }
-    return {};
+    return program_.create_pipeline(vk_.device, state, &pipeline_);
   }
 
   // The float32 positions exactly as read, uploaded once (the adapter's packing).
   std::string upload(const Scene& scene) {
     const detail::PackedScene packed = detail::pack_scene(scene);
     vertex_count_ = static_cast<std::uint32_t>(packed.vertices.size() / 2);
-    const VkDeviceSize bytes = std::max<VkDeviceSize>(packed.vertices.size() * sizeof(float), 8);
-    if (std::string why = detail::create_host_buffer(device_, memory(), bytes,
-                                                     VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, &vertices_);
-        !why.empty()) {
-      return why;
-    }
-    if (!packed.vertices.empty()) {
-      std::memcpy(vertices_.mapped, packed.vertices.data(), packed.vertices.size() * sizeof(float));
-    }
-    return {};
-  }
-
-  VkPhysicalDeviceMemoryProperties memory() const {
-    VkPhysicalDeviceMemoryProperties m{};
-    vkGetPhysicalDeviceMemoryProperties(physical_, &m);
-    return m;
+    return vk_.upload_vertices(packed.vertices, &vertices_);
   }
 
   // rule: DRIVER.LAVAPIPE.POSITION, BENCH.LAVAPIPE
-  std::string record(const Scene& scene) {
-    VkCommandBufferBeginInfo begin{};
-    begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
-    if (VkResult r = vkBeginCommandBuffer(cmd_, &begin); r != VK_SUCCESS) {
-      return vk_failed("vkBeginCommandBuffer", r);
+  std::string record() {
+    const VkCommandBuffer cmd = vk_.cmd;
+    if (std::string why = detail::begin_commands(cmd, 0); !why.empty()) return why;
+    vkCmdResetQueryPool(cmd, queries_, 0, 1);
+    program_.begin_pass(cmd, vertices_.buffer, k_);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+    program_.push(cmd, Push{static_cast<float>(1.0 / k_), 0, program_.width, program_.height, 1});
+    vkCmdBeginQuery(cmd, queries_, 0, VK_QUERY_CONTROL_PRECISE_BIT);
+    if (vertex_count_ > 0) vkCmdDraw(cmd, vertex_count_, 1, 0, 0);
+    vkCmdEndQuery(cmd, queries_, 0);
+    vkCmdEndRenderPass(cmd);
+    if (VkResult r = vkEndCommandBuffer(cmd); r != VK_SUCCESS) {
+      return vk_failed("vkEndCommandBuffer", r);
     }
-    const auto w = static_cast<std::uint32_t>(scene.width);
-    const auto h = static_cast<std::uint32_t>(scene.height);
-    vkCmdResetQueryPool(cmd_, queries_, 0, 1);
-    detail::begin_target_pass(cmd_, render_pass_, framebuffer_, w, h, k_);
-    vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
-    const VkDeviceSize zero = 0;
-    vkCmdBindVertexBuffers(cmd_, 0, 1, &vertices_.buffer, &zero);
-    const Push push{static_cast<float>(1.0 / k_), 0, w, h, 1};
-    vkCmdPushConstants(cmd_, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(Push), &push);
-    vkCmdBeginQuery(cmd_, queries_, 0, VK_QUERY_CONTROL_PRECISE_BIT);
-    if (vertex_count_ > 0) vkCmdDraw(cmd_, vertex_count_, 1, 0, 0);
-    vkCmdEndQuery(cmd_, queries_, 0);
-    vkCmdEndRenderPass(cmd_);
-    if (VkResult r = vkEndCommandBuffer(cmd_); r != VK_SUCCESS) return vk_failed("vkEndCommandBuffer", r);
     return {};
   }
 
@@ -276,12 +211,13 @@ class Timer {
   // rule: BENCH.LAVAPIPE
   std::string draw(double* seconds, std::uint64_t* count) {
     const auto start = std::chrono::steady_clock::now();
-    const std::string why = detail::submit_and_wait(device_, queue_, cmd_, fence_);
+    const std::string why = vk_.submit_and_wait();
     const auto stop = std::chrono::steady_clock::now();
     if (!why.empty()) return why;
     *seconds = std::chrono::duration<double>(stop - start).count();
     std::uint64_t result = 0;
-    if (VkResult r = vkGetQueryPoolResults(device_, queries_, 0, 1, sizeof(result), &result, sizeof(result),
+    if (VkResult r = vkGetQueryPoolResults(vk_.device, queries_, 0, 1, sizeof(result), &result,
+                                           sizeof(result),
                                            VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT);
         r != VK_SUCCESS) {
       return vk_failed("vkGetQueryPoolResults", r);
@@ -290,21 +226,9 @@ class Timer {
     return {};
   }
 
-  VkInstance instance_ = VK_NULL_HANDLE;
-  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
-  VkPhysicalDeviceProperties props_{};
-  std::uint32_t family_ = 0;
-  VkDevice device_ = VK_NULL_HANDLE;
-  VkQueue queue_ = VK_NULL_HANDLE;
-  VkCommandPool pool_ = VK_NULL_HANDLE;
-  VkCommandBuffer cmd_ = VK_NULL_HANDLE;
-  VkFence fence_ = VK_NULL_HANDLE;
+  detail::LavapipeContext vk_;
   VkQueryPool queries_ = VK_NULL_HANDLE;
-  VkShaderModule vert_ = VK_NULL_HANDLE;
-  VkShaderModule frag_ = VK_NULL_HANDLE;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkRenderPass render_pass_ = VK_NULL_HANDLE;
-  VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
+  detail::CoverageProgram program_;
   VkPipeline pipeline_ = VK_NULL_HANDLE;
   detail::HostBuffer vertices_;
   std::uint32_t vertex_count_ = 0;

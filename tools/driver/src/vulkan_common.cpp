@@ -5,8 +5,13 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
+#include <cstring>
 #include <string_view>
 #include <vector>
+
+#include "gpu_common.hpp"
+#include "rastrules/driver/coverage_vert.spv.h"
 
 namespace rastrules::driver::detail {
 
@@ -195,6 +200,7 @@ std::string create_shader_module(VkDevice device, const std::uint32_t* code, std
   sci.codeSize = bytes;
   sci.pCode = code;
   if (VkResult r = vkCreateShaderModule(device, &sci, nullptr, module); r != VK_SUCCESS) {
+    *module = VK_NULL_HANDLE;
     return vk_failed("vkCreateShaderModule", r);
   }
   return {};
@@ -252,7 +258,7 @@ std::string create_coverage_pipeline(VkDevice device, VkShaderModule vert, VkSha
   VkPipelineMultisampleStateCreateInfo ms{};
   ms.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
   ms.rasterizationSamples = state.samples;
-  ms.pSampleMask = state.sample_mask;
+  ms.pSampleMask = state.sample_mask.has_value() ? &*state.sample_mask : nullptr;
   const VkDynamicState dyn[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
   VkPipelineDynamicStateCreateInfo ds{};
   ds.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
@@ -316,6 +322,155 @@ VkCullModeFlags vk_cull_mode(CullMode cull) {
 
 VkFrontFace vk_front_face(FrontFace front) {
   return front == FrontFace::kClockwise ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE;
+}
+
+std::string ensure_host_buffer(VkDevice device, const VkPhysicalDeviceMemoryProperties& memory,
+                               VkDeviceSize bytes, VkBufferUsageFlags usage, HostBuffer* b) {
+  if (b->size >= bytes) return {};
+  if (b->buffer != VK_NULL_HANDLE) {
+    vkDeviceWaitIdle(device);
+    free_host_buffer(device, b);
+  }
+  VkDeviceSize size = 4096;
+  while (size < bytes) size *= 2;
+  return create_host_buffer(device, memory, size, usage, b);
+}
+
+// rule: DRIVER.LAVAPIPE.POSITION
+double max_position_scale(const VkPhysicalDeviceLimits& lim) {
+  // K is a power of two with a viewport [-K, K]: 2K <= maxViewportDimensions and [-K, K]
+  // inside viewportBoundsRange.
+  const double max_dim = std::min(lim.maxViewportDimensions[0], lim.maxViewportDimensions[1]);
+  const double bound = std::min(-static_cast<double>(lim.viewportBoundsRange[0]),
+                                static_cast<double>(lim.viewportBoundsRange[1]));
+  return max_position_scale(max_dim, bound);
+}
+
+std::string begin_commands(VkCommandBuffer cmd, VkCommandBufferUsageFlags flags) {
+  VkCommandBufferBeginInfo begin{};
+  begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+  begin.flags = flags;
+  if (VkResult r = vkBeginCommandBuffer(cmd, &begin); r != VK_SUCCESS) {
+    return vk_failed("vkBeginCommandBuffer", r);
+  }
+  return {};
+}
+
+// rule: DRIVER.LAVAPIPE.DEVICE
+std::string LavapipeContext::open() { return open_lavapipe_instance(&instance, &physical, &props); }
+
+std::string LavapipeContext::create_device(const VkPhysicalDeviceFeatures2& features,
+                                           std::uint32_t extension_count,
+                                           const char* const* extensions,
+                                           VkCommandPoolCreateFlags pool_flags) {
+  if (std::string why = graphics_queue_family(physical, &family); !why.empty()) return why;
+  if (std::string why = detail::create_device(physical, family, features, extension_count,
+                                              extensions, &device, &queue);
+      !why.empty()) {
+    return why;
+  }
+  vkGetPhysicalDeviceMemoryProperties(physical, &memory);
+  return create_submit_objects(device, family, pool_flags, &pool, &cmd, &fence);
+}
+
+std::string LavapipeContext::submit_and_wait() const {
+  return detail::submit_and_wait(device, queue, cmd, fence);
+}
+
+std::string LavapipeContext::upload_vertices(const std::vector<float>& vertices,
+                                             HostBuffer* b) const {
+  const VkDeviceSize bytes = vertices.size() * sizeof(float);
+  if (std::string why = ensure_host_buffer(device, memory, std::max<VkDeviceSize>(bytes, 8),
+                                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, b);
+      !why.empty()) {
+    return why;
+  }
+  if (!vertices.empty()) std::memcpy(b->mapped, vertices.data(), bytes);
+  return {};
+}
+
+void LavapipeContext::destroy() {
+  if (device != VK_NULL_HANDLE) {
+    if (fence != VK_NULL_HANDLE) vkDestroyFence(device, fence, nullptr);
+    if (pool != VK_NULL_HANDLE) vkDestroyCommandPool(device, pool, nullptr);
+    vkDestroyDevice(device, nullptr);
+  }
+  if (instance != VK_NULL_HANDLE) vkDestroyInstance(instance, nullptr);
+  *this = LavapipeContext{};
+}
+
+std::string CoverageProgram::create(VkDevice device, const std::uint32_t* frag_code,
+                                    std::size_t frag_bytes, VkShaderStageFlags stages,
+                                    VkDescriptorSetLayout set_layout) {
+  if (std::string why = create_shader_module(device, kCoverage_vert, sizeof(kCoverage_vert), &vert);
+      !why.empty()) {
+    return why;
+  }
+  if (std::string why = create_shader_module(device, frag_code, frag_bytes, &frag); !why.empty()) {
+    return why;
+  }
+  push_stages = stages;
+  const VkPushConstantRange range{push_stages, 0, sizeof(CoveragePush)};
+  VkPipelineLayoutCreateInfo lci{};
+  lci.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+  lci.setLayoutCount = set_layout != VK_NULL_HANDLE ? 1U : 0U;
+  lci.pSetLayouts = set_layout != VK_NULL_HANDLE ? &set_layout : nullptr;
+  lci.pushConstantRangeCount = 1;
+  lci.pPushConstantRanges = &range;
+  if (VkResult r = vkCreatePipelineLayout(device, &lci, nullptr, &layout); r != VK_SUCCESS) {
+    layout = VK_NULL_HANDLE;
+    return vk_failed("vkCreatePipelineLayout", r);
+  }
+  // Without attachments: results leave through buffers or queries, and the sample count is
+  // the pipeline's rasterizationSamples.
+  return create_attachmentless_render_pass(device, &render_pass);
+}
+
+std::string CoverageProgram::ensure_framebuffer(VkDevice device, std::uint32_t w, std::uint32_t h) {
+  if (framebuffer != VK_NULL_HANDLE && width == w && height == h) return {};
+  if (framebuffer != VK_NULL_HANDLE) {
+    vkDeviceWaitIdle(device);
+    vkDestroyFramebuffer(device, framebuffer, nullptr);
+    framebuffer = VK_NULL_HANDLE;
+  }
+  VkFramebufferCreateInfo fci{};
+  fci.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
+  fci.renderPass = render_pass;
+  fci.width = w;
+  fci.height = h;
+  fci.layers = 1;
+  if (VkResult r = vkCreateFramebuffer(device, &fci, nullptr, &framebuffer); r != VK_SUCCESS) {
+    framebuffer = VK_NULL_HANDLE;
+    return vk_failed("vkCreateFramebuffer", r);
+  }
+  width = w;
+  height = h;
+  return {};
+}
+
+std::string CoverageProgram::create_pipeline(VkDevice device, const CoveragePipelineState& state,
+                                             VkPipeline* pipeline) const {
+  return create_coverage_pipeline(device, vert, frag, layout, render_pass, state, pipeline);
+}
+
+// rule: DRIVER.LAVAPIPE.POSITION
+void CoverageProgram::begin_pass(VkCommandBuffer cmd, VkBuffer vertices, double k) const {
+  begin_target_pass(cmd, render_pass, framebuffer, width, height, k);
+  const VkDeviceSize zero = 0;
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &zero);
+}
+
+void CoverageProgram::push(VkCommandBuffer cmd, const CoveragePush& constants) const {
+  vkCmdPushConstants(cmd, layout, push_stages, 0, sizeof(CoveragePush), &constants);
+}
+
+void CoverageProgram::destroy(VkDevice device) {
+  if (framebuffer != VK_NULL_HANDLE) vkDestroyFramebuffer(device, framebuffer, nullptr);
+  if (render_pass != VK_NULL_HANDLE) vkDestroyRenderPass(device, render_pass, nullptr);
+  if (vert != VK_NULL_HANDLE) vkDestroyShaderModule(device, vert, nullptr);
+  if (frag != VK_NULL_HANDLE) vkDestroyShaderModule(device, frag, nullptr);
+  if (layout != VK_NULL_HANDLE) vkDestroyPipelineLayout(device, layout, nullptr);
+  *this = CoverageProgram{};
 }
 
 }  // namespace rastrules::driver::detail

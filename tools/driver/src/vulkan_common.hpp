@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: MIT
-// Private to the driver library: the Vulkan pieces that the lavapipe adapter (lavapipe.cpp)
-// and the lavapipe coverage timing (timing_lavapipe.cpp) share: opening lavapipe (an instance
-// and the CPU device named llvmpipe), the graphics queue family, host-visible buffers and the
-// device description. Every function returns "" on success or the reason it failed.
-// Implements: DRIVER.LAVAPIPE.DEVICE
+// Private to the driver library: the Vulkan plumbing that the lavapipe adapter (lavapipe.cpp)
+// and the lavapipe coverage timing (timing_lavapipe.cpp) share, written once: opening lavapipe
+// (an instance and the CPU device named llvmpipe) with its device, queue, command buffer and
+// fence (LavapipeContext); host-visible buffers and the vertex upload; the coverage.vert program
+// with its pipeline layout, attachmentless render pass, framebuffer and pipelines
+// (CoverageProgram); command recording with the exact viewport transform; submit-and-wait; the
+// device's limit on K; the device description. Every function returning a string returns "" on
+// success or the reason it failed.
+// Implements: DRIVER.LAVAPIPE.DEVICE, DRIVER.LAVAPIPE.POSITION
 
 #pragma once
 
@@ -13,7 +17,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <tuple>
+#include <vector>
 
 namespace rastrules::driver::detail {
 
@@ -89,8 +96,17 @@ struct CoveragePipelineState {
   VkCullModeFlags cull = VK_CULL_MODE_NONE;
   VkFrontFace front = VK_FRONT_FACE_CLOCKWISE;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-  const VkSampleMask* sample_mask = nullptr;  // nullptr: every sample
+  std::optional<VkSampleMask> sample_mask;  // none: pSampleMask is null (every sample)
   VkLineRasterizationModeEXT line_mode = VK_LINE_RASTERIZATION_MODE_DEFAULT_EXT;
+
+  // An order, so that the state can key a cache of pipelines.
+  [[nodiscard]] auto tie() const {
+    return std::make_tuple(static_cast<int>(topology), static_cast<int>(line_mode),
+                           static_cast<int>(samples), cull, static_cast<int>(front), sample_mask);
+  }
+  friend bool operator<(const CoveragePipelineState& a, const CoveragePipelineState& b) {
+    return a.tie() < b.tie();
+  }
 };
 
 // Begins `pass` on `framebuffer` over the w x h target and sets the dynamic state: the scissor
@@ -114,5 +130,91 @@ void begin_target_pass(VkCommandBuffer cmd, VkRenderPass pass, VkFramebuffer fra
                                                    VkRenderPass pass,
                                                    const CoveragePipelineState& state,
                                                    VkPipeline* pipeline);
+
+// Grows *b (with `usage`) to at least `bytes`: nothing when it is large enough, else (after the
+// device is idle, as a descriptor set or command buffer may still name it) frees it and creates
+// one of the next power of two >= max(bytes, 4096). A caller that points a descriptor set at the
+// buffer rebinds it whenever b->size changes: the new buffer may reuse the old handle value.
+[[nodiscard]] std::string ensure_host_buffer(VkDevice device,
+                                             const VkPhysicalDeviceMemoryProperties& memory,
+                                             VkDeviceSize bytes, VkBufferUsageFlags usage,
+                                             HostBuffer* b);
+
+// The largest K of a viewport [-K, K] that the device's limits allow (max_position_scale of
+// maxViewportDimensions and viewportBoundsRange).
+// rule: DRIVER.LAVAPIPE.POSITION
+[[nodiscard]] double max_position_scale(const VkPhysicalDeviceLimits& lim);
+
+// Begins cmd (in the initial state) with `flags`.
+[[nodiscard]] std::string begin_commands(VkCommandBuffer cmd, VkCommandBufferUsageFlags flags);
+
+// Opened lavapipe: the instance, the CPU device, its logical device and graphics queue, and the
+// one command buffer and fence that every draw records, submits and waits on. destroy()
+// destroys what was created, the device's children first; the owner destroys what it created
+// on the device (after vkDeviceWaitIdle) before that.
+struct LavapipeContext {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physical = VK_NULL_HANDLE;
+  VkPhysicalDeviceProperties props{};
+  VkPhysicalDeviceMemoryProperties memory{};
+  std::uint32_t family = 0;
+  VkDevice device = VK_NULL_HANDLE;
+  VkQueue queue = VK_NULL_HANDLE;
+  VkCommandPool pool = VK_NULL_HANDLE;
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  VkFence fence = VK_NULL_HANDLE;
+
+  // open_lavapipe_instance().
+  // rule: DRIVER.LAVAPIPE.DEVICE
+  [[nodiscard]] std::string open();
+  // The graphics queue family, the logical device with the features and extensions
+  // (create_device()), its memory properties, and the command pool (with `pool_flags`), command
+  // buffer and fence.
+  [[nodiscard]] std::string create_device(const VkPhysicalDeviceFeatures2& features,
+                                          std::uint32_t extension_count,
+                                          const char* const* extensions,
+                                          VkCommandPoolCreateFlags pool_flags);
+  // submit_and_wait() of cmd.
+  [[nodiscard]] std::string submit_and_wait() const;
+  // The vertex buffer *b holds the float32 (x, y) pairs: grown by ensure_host_buffer(), then
+  // written.
+  [[nodiscard]] std::string upload_vertices(const std::vector<float>& vertices,
+                                            HostBuffer* b) const;
+  void destroy();
+};
+
+// What draws through coverage.vert share: its shader module and a fragment shader's, the
+// pipeline layout (the CoveragePush range for push_stages, and an optional descriptor set
+// layout), the attachmentless render pass, a framebuffer of the target's size, and the
+// pipelines of that program.
+struct CoverageProgram {
+  VkShaderModule vert = VK_NULL_HANDLE;
+  VkShaderModule frag = VK_NULL_HANDLE;
+  VkShaderStageFlags push_stages = 0;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkRenderPass render_pass = VK_NULL_HANDLE;
+  VkFramebuffer framebuffer = VK_NULL_HANDLE;
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+
+  // Creates the modules (coverage.vert and the fragment shader's SPIR-V, `frag_bytes` bytes),
+  // the layout and the render pass. set_layout may be VK_NULL_HANDLE (no descriptor set).
+  [[nodiscard]] std::string create(VkDevice device, const std::uint32_t* frag_code,
+                                   std::size_t frag_bytes, VkShaderStageFlags stages,
+                                   VkDescriptorSetLayout set_layout);
+  // A framebuffer of w x h: kept when it has that size, else (after the device is idle)
+  // replaced.
+  [[nodiscard]] std::string ensure_framebuffer(VkDevice device, std::uint32_t w, std::uint32_t h);
+  // create_coverage_pipeline() of this program's shaders, layout and render pass.
+  [[nodiscard]] std::string create_pipeline(VkDevice device, const CoveragePipelineState& state,
+                                            VkPipeline* pipeline) const;
+  // Begins the render pass over the framebuffer with the exact viewport transform
+  // (begin_target_pass) and binds `vertices` as the vertex buffer.
+  // rule: DRIVER.LAVAPIPE.POSITION
+  void begin_pass(VkCommandBuffer cmd, VkBuffer vertices, double k) const;
+  // Pushes the constants to push_stages.
+  void push(VkCommandBuffer cmd, const CoveragePush& constants) const;
+  void destroy(VkDevice device);
+};
 
 }  // namespace rastrules::driver::detail
