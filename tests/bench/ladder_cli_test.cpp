@@ -15,14 +15,21 @@ using rastrules::test::TempDir;
 TEST(LadderCli, QuickRunWritesTheTableTheJsonAndThePlot) {
   TempDir dir;
   const auto out = dir / "ladder";
-  const auto r = run_cli({"bench", "--ladder", "--quick", "--out", out.string()});
+  const auto r = run_cli({"bench", "--ladder", "--quick", "--threads", "2", "--out", out.string()});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("| reference |"), std::string::npos);
+  // rule: BENCH.METRIC.THROUGHPUT, BENCH.LAVAPIPE
+  EXPECT_NE(r.out.find("\n| reference-fast x2 |"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("rasterizer threads"), std::string::npos) << r.out;
   const std::string md = rastrules::test::read_file(out / "ladder.md");
   EXPECT_EQ(md, r.out);
   const auto j = nlohmann::json::parse(rastrules::test::read_file(out / "ladder.json"));
   EXPECT_TRUE(j.at("quick").get<bool>());
   EXPECT_GE(j.at("rungs").size(), 8u);
+  EXPECT_EQ(j.at("threads"), 2);
+  EXPECT_EQ(j.at("reference_fast_threaded").size(), j.at("scenes").size());
+  EXPECT_TRUE(j.at("lavapipe").contains("threads"));
+  EXPECT_FALSE(j.at("lavapipe").at("threads_source").get<std::string>().empty());
   // The reference and the exact oracle agree; the reference keeps its range to the top.
   for (const auto& rung : j.at("rungs")) {
     if (rung.at("rung") == "reference" || rung.at("rung") == "exact") {

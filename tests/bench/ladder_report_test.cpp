@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <unistd.h>
 
 #include "rastrules/bench/ladder.hpp"
 
@@ -77,7 +80,119 @@ rb::LadderReport synthetic(double fast_factor, double lavapipe_seconds) {
   return r;
 }
 
+// Sets LP_NUM_THREADS (or unsets it for nullopt) for its lifetime, then restores it.
+class LpNumThreads {
+public:
+  explicit LpNumThreads(const std::optional<std::string>& v) {
+    if (const char* old = std::getenv("LP_NUM_THREADS"))
+      old_ = old;
+    if (v)
+      setenv("LP_NUM_THREADS", v->c_str(), 1);
+    else
+      unsetenv("LP_NUM_THREADS");
+  }
+  ~LpNumThreads() {
+    if (old_)
+      setenv("LP_NUM_THREADS", old_->c_str(), 1);
+    else
+      unsetenv("LP_NUM_THREADS");
+  }
+  LpNumThreads(const LpNumThreads&) = delete;
+  LpNumThreads& operator=(const LpNumThreads&) = delete;
+
+private:
+  std::optional<std::string> old_;
+};
+
 } // namespace
+
+// rule: BENCH.LAVAPIPE
+TEST(LadderLavapipe, ThreadCountComesFromLpNumThreadsElseTheOnlineProcessors) {
+  {
+    const LpNumThreads env{std::nullopt};
+    const auto [n, source] = rb::lavapipe_threads();
+    EXPECT_EQ(n, static_cast<unsigned>(sysconf(_SC_NPROCESSORS_ONLN)));
+    EXPECT_NE(source.find("LP_NUM_THREADS unset"), std::string::npos) << source;
+  }
+  {
+    const LpNumThreads env{std::string("3")};
+    const auto [n, source] = rb::lavapipe_threads();
+    EXPECT_EQ(n, 3u);
+    EXPECT_EQ(source, "LP_NUM_THREADS=3");
+  }
+  {
+    // 0: llvmpipe rasterizes on the calling thread, one thread.
+    const LpNumThreads env{std::string("0")};
+    const auto [n, source] = rb::lavapipe_threads();
+    EXPECT_EQ(n, 1u);
+    EXPECT_NE(source.find("calling thread"), std::string::npos) << source;
+  }
+  for (const char* bad : {"x", "2x", "-1", "257", " "}) {
+    const LpNumThreads env{std::string(bad)};
+    const auto [n, source] = rb::lavapipe_threads();
+    EXPECT_EQ(n, 0u) << bad;
+    EXPECT_NE(source.find("not an integer in [0, 256]"), std::string::npos) << source;
+  }
+}
+
+// The whole ladder on the quick scenes with a fake lavapipe (no Vulkan), one repeat per figure:
+// the threaded row, its counts and lavapipe's thread count reach the table and the JSON.
+// rule: BENCH.METRIC.THROUGHPUT, BENCH.LAVAPIPE, BENCH.TARGETS
+TEST(LadderRun, FakeLavapipeAndThreeThreadsReachTheTableAndTheJson) {
+  bool has_fast = false;
+  for (const rb::Rung r : rb::all_rungs())
+    has_fast = has_fast || r == rb::Rung::kReferenceFast;
+  if (!has_fast)
+    GTEST_SKIP() << "reference-fast not built";
+  const LpNumThreads env{std::string("5")};
+  rb::LadderConfig c;
+  c.quick = true;
+  c.min_seconds = 0.0;
+  c.threads = 3;
+  int calls = 0;
+  const rb::LavapipeTimer fake = [&calls](const rb::LadderScene& s) {
+    ++calls;
+    EXPECT_EQ(s.name, "small");
+    rb::LavapipeFigure f;
+    f.available = true;
+    f.device = "fake lavapipe";
+    f.includes = "nothing (a test double)";
+    f.repeats = 1;
+    f.seconds = 0.5;
+    f.samples_passed = 12345;
+    return f;
+  };
+  const rb::LadderReport r = rb::run_ladder(c, fake, {});
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(r.threads, 3u);
+  EXPECT_EQ(r.lavapipe.threads, 5u);
+  EXPECT_EQ(r.lavapipe.threads_source, "LP_NUM_THREADS=5");
+  const rb::RungResult* fast = r.find(rb::Rung::kReferenceFast);
+  ASSERT_NE(fast, nullptr);
+  ASSERT_EQ(r.fast_threaded.size(), fast->families.size());
+  for (std::size_t i = 0; i < r.fast_threaded.size(); ++i) {
+    EXPECT_EQ(r.fast_threaded[i].scene, fast->families[i].scene);
+    EXPECT_EQ(r.fast_threaded[i].covered, fast->families[i].covered) << r.fast_threaded[i].scene;
+    EXPECT_EQ(r.fast_threaded[i].decisions, fast->families[i].decisions);
+    EXPECT_GE(r.fast_threaded[i].repeats, 1);
+  }
+  const std::string md = rb::to_markdown(r);
+  EXPECT_NE(md.find("\n| reference-fast x3 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("5 rasterizer threads: LP_NUM_THREADS=5"), std::string::npos) << md;
+  EXPECT_NE(md.find("fake lavapipe"), std::string::npos) << md;
+  // 3 threads against lavapipe's 5: compared per thread, the single-thread ratio beside it.
+  EXPECT_NE(md.find("per thread (rastrules 3, lavapipe 5 threads"), std::string::npos) << md;
+  EXPECT_NE(md.find("single-thread ratio (reference-fast on 1 thread against lavapipe on 5): "),
+            std::string::npos)
+      << md;
+  const auto j = nlohmann::json::parse(rb::to_json(r));
+  EXPECT_EQ(j.at("threads"), 3);
+  EXPECT_EQ(j.at("lavapipe").at("threads"), 5);
+  EXPECT_EQ(j.at("lavapipe").at("threads_source"), "LP_NUM_THREADS=5");
+  EXPECT_EQ(j.at("lavapipe").at("samples_passed"), 12345);
+  ASSERT_EQ(j.at("reference_fast_threaded").size(), r.fast_threaded.size());
+  EXPECT_EQ(j.at("reference_fast_threaded").at(0).at("threads"), 3);
+}
 
 // rule: BENCH.REPORT
 TEST(LadderReport, MarkdownHasOneRowPerRungAndTheTargets) {
@@ -137,15 +252,28 @@ TEST(LadderTargets, EachTargetSaysWhetherThisRunMetIt) {
   // (100 per 10 ms = 1e4/s): 52.5x; the single-thread ratio (35x) is printed as well.
   t = rb::check_targets(synthetic(3.5, 1e-2));
   EXPECT_EQ(t[2].met, std::optional<bool>(true)) << t[2].measured;
-  EXPECT_NE(t[2].measured.find("52.5x lavapipe, both on 2 threads"), std::string::npos) << t[2].measured;
-  EXPECT_NE(t[2].measured.find("35x"), std::string::npos) << t[2].measured;
+  EXPECT_NE(t[2].measured.find("52.5x lavapipe, both on 2 threads (equal resources)"),
+            std::string::npos)
+      << t[2].measured;
+  EXPECT_NE(t[2].measured.find("single-thread ratio (reference-fast on 1 thread against lavapipe "
+                               "on 2): 35x"),
+            std::string::npos)
+      << t[2].measured;
   // Different thread counts: per thread. lavapipe on 8 threads: 1e4 / 8 per thread against
   // 5.25e5 / 2: 210x.
   auto r8 = synthetic(3.5, 1e-2);
   r8.lavapipe.threads = 8;
   t = rb::check_targets(r8);
-  EXPECT_NE(t[2].measured.find("210x lavapipe per thread (rastrules 2, lavapipe 8 threads)"),
+  EXPECT_NE(t[2].measured.find("210x lavapipe per thread (rastrules 2, lavapipe 8 threads"),
             std::string::npos)
+      << t[2].measured;
+  // lavapipe's thread count unknown (LP_NUM_THREADS not understood): not measured, and why.
+  auto unknown = synthetic(3.5, 1e-2);
+  unknown.lavapipe.threads = 0;
+  unknown.lavapipe.threads_source = "LP_NUM_THREADS=\"x\" is not an integer in [0, 256]: unknown";
+  t = rb::check_targets(unknown);
+  EXPECT_EQ(t[2].met, std::nullopt);
+  EXPECT_NE(t[2].measured.find("thread count is unknown (LP_NUM_THREADS=\"x\""), std::string::npos)
       << t[2].measured;
   // Without lavapipe the third target is not measured.
   t = rb::check_targets(synthetic(3.5, 0.0));

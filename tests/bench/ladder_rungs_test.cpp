@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <vector>
 
 #include "limit.hpp"
 #include "rastrules/bench/ladder.hpp"
@@ -176,9 +177,19 @@ TEST(LadderRungs, ReferenceFastOnThreadsCountsWhatOneThreadCounts) {
     GTEST_SKIP() << "reference-fast not built";
   rb::LadderConfig c;
   c.quick = true;
-  for (const rb::LadderScene& s : rb::make_scenes(c).timed) {
+  const rb::LadderScenes scenes = rb::make_scenes(c);
+  std::vector<rb::LadderScene> all = scenes.timed;
+  all.push_back(scenes.translate_base);
+  // Fewer triangles than threads: the chunks are the triangles, the rest of the threads idle.
+  rb::LadderScene few = scenes.timed.front();
+  few.name = "two triangles";
+  few.triangles.resize(2);
+  all.push_back(few);
+  for (const rb::LadderScene& s : all) {
     const std::uint64_t one = rb::run_rung(rb::Rung::kReferenceFast, s, nullptr);
     EXPECT_GT(one, 0u) << s.name;
+    // The plain walk counts the same (FAST.EQUALS.PLAIN), so a lost or doubled chunk shows.
+    EXPECT_EQ(one, rb::run_rung(rb::Rung::kReference, s, nullptr)) << s.name;
     for (const unsigned n : {1u, 2u, 3u, 7u})
       EXPECT_EQ(rb::run_reference_fast_threaded(s, n), one) << s.name << ", " << n << " threads";
   }

@@ -33,8 +33,8 @@ std::string to_markdown(const LadderReport& r) {
   std::ostringstream o;
   o << "Precision ladder, " << r.date << ", " << r.cpu << ", ISA " << r.isa
     << " (limit rung: " << r.limit_isa << "), rungs on 1 thread, `reference-fast x" << r.threads
-    << "` on " << r.threads << ", "
-    << (r.config.quick ? "quick" : "full") << " mode, seed " << r.config.seed << ".\n\n";
+    << "` on " << r.threads << ", " << (r.config.quick ? "quick" : "full") << " mode, seed "
+    << r.config.seed << ".\n\n";
   o << "| rung |";
   for (const auto& s : r.scenes)
     o << " " << s << " Mdec/s (x ref) |";
@@ -69,10 +69,14 @@ std::string to_markdown(const LadderReport& r) {
        "the sweep ("
     << r.sweep_note
     << ") up to which the rung has no error, no watertightness and no "
-       "translation violation. `reference-fast x" << r.threads << "`: the same traversal with the "
-       "scene's triangles split into " << r.threads << " chunks on " << r.threads
+       "translation violation. `reference-fast x"
+    << r.threads
+    << "`: the same traversal with the "
+       "scene's triangles split into "
+    << r.threads << " chunks on " << r.threads
     << " threads (its answers are reference-fast's). The plot shows the single-thread rungs; "
-       "`limit` has no error figure (no tie rule) and is drawn at error 0 only to show its speed.\n";
+       "`limit` has no error figure (no tie rule) and is drawn at error 0 only to show its "
+       "speed.\n";
   o << "\nTriangles per second (small mesh):";
   for (const RungResult& rr : r.rungs)
     for (const FamilyResult& f : rr.families)
@@ -81,6 +85,10 @@ std::string to_markdown(const LadderReport& r) {
   for (const FamilyResult& f : r.fast_threaded)
     if (f.scene == "small")
       o << " reference-fast x" << r.threads << " " << fmt("%.3g", f.triangles_per_second) << ";";
+  // rule: BENCH.LAVAPIPE
+  const std::string lp_threads =
+      (r.lavapipe.threads > 0 ? std::to_string(r.lavapipe.threads) : std::string("?")) +
+      " rasterizer threads: " + r.lavapipe.threads_source;
   o << "\n\nLavapipe (small mesh, " << r.lavapipe.triangles << " triangles): ";
   if (r.lavapipe.available) {
     const double lav = r.lavapipe.seconds > 0
@@ -88,13 +96,14 @@ std::string to_markdown(const LadderReport& r) {
                            : 0.0;
     o << fmt("%.3g", lav) << " triangles/s (" << r.lavapipe.device << ", median of "
       << r.lavapipe.repeats << " draws, " << fmt("%.4g", r.lavapipe.seconds * 1e3)
-      << " ms per draw, " << (r.lavapipe.threads > 0 ? std::to_string(r.lavapipe.threads) : "?")
-      << " rasterizer threads: " << r.lavapipe.threads_source << "); occlusion query " << r.lavapipe.samples_passed << " samples, reference "
-      << r.reference_small_covered << " pixels. Timed: " << r.lavapipe.includes
+      << " ms per draw, " << lp_threads << "); occlusion query " << r.lavapipe.samples_passed
+      << " samples, reference " << r.reference_small_covered
+      << " pixels. Timed: " << r.lavapipe.includes
       << (!r.lavapipe.includes.empty() && r.lavapipe.includes.back() == '.' ? "" : ".")
       << " rastrules' figures count coverage only (snapping, setup, traversal).\n";
   } else {
-    o << "not available (" << r.lavapipe.why_not << "); no ratio.\n";
+    o << "not available (" << r.lavapipe.why_not << "); no ratio (it would have used " << lp_threads
+      << ").\n";
   }
   o << "\nTargets (BENCH.TARGETS, reported, never asserted):\n\n";
   for (const TargetCheck& t : check_targets(r))

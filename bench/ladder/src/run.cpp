@@ -79,7 +79,8 @@ std::pair<unsigned, std::string> lavapipe_threads() {
     const long n = std::strtol(v, &end, 10);
     if (end != nullptr && *end == '\0' && n >= 0 && n <= 256)
       return {n == 0 ? 1u : static_cast<unsigned>(n),
-              "LP_NUM_THREADS=" + std::string(v) + (n == 0 ? " (rasterizes on the calling thread)" : "")};
+              "LP_NUM_THREADS=" + std::string(v) +
+                  (n == 0 ? " (rasterizes on the calling thread)" : "")};
     return {0u, "LP_NUM_THREADS=\"" + std::string(v) + "\" is not an integer in [0, 256]: unknown"};
   }
   const long online = sysconf(_SC_NPROCESSORS_ONLN);
@@ -180,7 +181,8 @@ LadderReport run_ladder(const LadderConfig& c, const LavapipeTimer& lavapipe,
       f.triangles_per_second = sec > 0 ? static_cast<double>(f.triangles) / sec : 0.0;
       f.ratio_to_reference = ref_dps > 0 ? f.decisions_per_second / ref_dps : 0.0;
       rep.fast_threaded.push_back(f);
-      say("  reference-fast x" + std::to_string(rep.threads) + ": " + std::to_string(reps) + " repeats");
+      say("  reference-fast x" + std::to_string(rep.threads) + ": " + std::to_string(reps) +
+          " repeats");
     }
   }
 
@@ -298,8 +300,8 @@ std::vector<TargetCheck> check_targets(const LadderReport& r) {
   {
     // Equal resources: rastrules on N threads against lavapipe on its own thread count; when
     // the counts differ, per thread. The single-thread ratio is reported too.
-    TargetCheck t{"reference-fast >= 20x lavapipe's triangles/s on small triangles (same cores)",
-                  "", {}};
+    TargetCheck t{
+        "reference-fast >= 20x lavapipe's triangles/s on small triangles (same cores)", "", {}};
     const FamilyResult* one = family(fast, "small");
     const FamilyResult* many = nullptr;
     for (const auto& f : r.fast_threaded)
@@ -313,17 +315,20 @@ std::vector<TargetCheck> check_targets(const LadderReport& r) {
       if (r.lavapipe.threads == r.threads) {
         q = many->triangles_per_second / lav;
         t.measured = fmt(q) + "x lavapipe, both on " + std::to_string(r.threads) + " thread" +
-                     (r.threads == 1 ? "" : "s");
+                     (r.threads == 1 ? "" : "s") + " (equal resources)";
       } else {
         q = (many->triangles_per_second / r.threads) / (lav / r.lavapipe.threads);
         t.measured = fmt(q) + "x lavapipe per thread (rastrules " + std::to_string(r.threads) +
-                     ", lavapipe " + std::to_string(r.lavapipe.threads) + " threads)";
+                     ", lavapipe " + std::to_string(r.lavapipe.threads) +
+                     " threads: the counts differ, each rate divided by its thread count)";
       }
-      t.measured += "; one rastrules thread against lavapipe's " +
-                    std::to_string(r.lavapipe.threads) + ": " + fmt(single) + "x";
+      t.measured += "; single-thread ratio (reference-fast on 1 thread against lavapipe on " +
+                    std::to_string(r.lavapipe.threads) + "): " + fmt(single) + "x";
       t.met = q >= 20.0;
     } else if (!r.lavapipe.available) {
       t.measured = "lavapipe: " + r.lavapipe.why_not;
+    } else if (r.lavapipe.threads == 0) {
+      t.measured = "lavapipe's thread count is unknown (" + r.lavapipe.threads_source + ")";
     } else {
       t.measured = "not measured";
     }
