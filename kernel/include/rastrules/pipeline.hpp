@@ -1,0 +1,260 @@
+// SPDX-License-Identifier: MIT
+// The pipeline around the rules (spec/rules/pipe.md): transforms, clipping, divide and viewport,
+// exact barycentrics, attribute interpolation and depth. Standard library only.
+// The building blocks are free functions (used by the scene pipeline, the tests, the properties
+// and the benchmarks); run_pipeline() strings them together for a whole scene.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "rastrules/fixed.hpp"
+#include "rastrules/isa.hpp"
+#include "rastrules/scene.hpp"
+
+namespace rastrules::pipe {
+
+// ---------------------------------------------------------------------------------------------
+// Input and transforms
+
+using Vec4f = std::array<float, 4>;     // x, y, z, w
+using Mat4f = std::array<float, 16>;    // row-major, acting on column vectors
+
+// The magnitude limit of positions before and after the transform (PIPE.INPUT.POSITION).
+inline constexpr double kMaxPosition = 18446744073709551616.0;  // 2^64
+inline constexpr std::size_t kMaxAttributes = 16;                 // PIPE.INPUT.ATTRIBUTES
+
+// Returns m * v with each row fl32(((m0*x + m1*y) + m2*z) + m3*w).
+// rule: PIPE.TRANSFORM.FLOAT32
+[[nodiscard]] Vec4f transform(const Mat4f& m, const Vec4f& v);
+
+// ---------------------------------------------------------------------------------------------
+// Viewport
+
+struct Viewport {
+  float x = 0.0f, y = 0.0f, width = 0.0f, height = 0.0f;
+  float min_depth = 0.0f, max_depth = 1.0f;
+  friend bool operator==(const Viewport&, const Viewport&) = default;
+};
+
+// Returns nullopt when vp satisfies PIPE.VIEWPORT.RANGE, else {field, message}, field one of
+// "x", "y", "width", "height", "min_depth", "max_depth".
+// rule: PIPE.VIEWPORT.RANGE
+[[nodiscard]] std::optional<std::pair<std::string, std::string>> check_viewport(const Viewport& vp);
+
+// A vertex after divide and viewport (PIPE.VIEWPORT.TRANSFORM): window x, y (pixels, float32,
+// not yet snapped), window depth z, and the clip w kept for perspective interpolation.
+struct WindowVertex {
+  float x = 0.0f, y = 0.0f, z = 0.0f, w = 1.0f;
+  friend bool operator==(const WindowVertex&, const WindowVertex&) = default;
+};
+
+// Returns the divide and viewport transform of clip-space position p (p[3] > 0).
+// rule: PIPE.VIEWPORT.TRANSFORM
+[[nodiscard]] WindowVertex to_window(const Vec4f& p, const Viewport& vp);
+
+// The implicit scissor of PIPE.VIEWPORT.SCISSOR: pixels [x0, x1) x [y0, y1).
+struct PixelRect {
+  std::int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  [[nodiscard]] bool contains(std::int64_t px, std::int64_t py) const {
+    return px >= x0 && px < x1 && py >= y0 && py < y1;
+  }
+};
+// rule: PIPE.VIEWPORT.SCISSOR
+[[nodiscard]] PixelRect viewport_scissor(const Viewport& vp);
+
+// ---------------------------------------------------------------------------------------------
+// Clipping
+
+inline constexpr double kGuardBand = 31744.0;  // px, PIPE.CLIP.VOLUME
+inline constexpr int kWMinLog2 = -40;          // kWMin = 2^-40
+
+// The clip volume of one primitive (PIPE.CLIP.VOLUME).
+struct ClipVolume {
+  double w_min = 0.0;  // kWMin * M
+  double gx_lo = -1.0, gx_hi = 1.0, gy_lo = -1.0, gy_hi = 1.0;
+  bool depth_clip = true;
+};
+
+// Returns the volume for a primitive whose clip-space vertices are vs, under viewport vp.
+// rule: PIPE.CLIP.VOLUME
+[[nodiscard]] ClipVolume clip_volume(const std::vector<Vec4f>& vs, const Viewport& vp,
+                                     bool depth_clip);
+
+// A clip-space vertex with its attributes (all interpolated alike by the clipper).
+struct ClipVertex {
+  Vec4f pos{};
+  std::vector<float> attr;
+  friend bool operator==(const ClipVertex&, const ClipVertex&) = default;
+};
+
+// Returns whether p is inside every plane of the volume.
+[[nodiscard]] bool inside(const ClipVolume& vol, const Vec4f& p);
+
+// Returns the clipped polygon of triangle t (empty when nothing is left); t itself when all
+// three vertices are inside (PIPE.CLIP.UNCLIPPED).
+// rule: PIPE.CLIP.POLYGON, PIPE.CLIP.COMPUTE, PIPE.CLIP.UNCLIPPED
+[[nodiscard]] std::vector<ClipVertex> clip_polygon(const std::vector<ClipVertex>& polygon,
+                                                   const ClipVolume& vol);
+
+// Returns the clipped segment (a, b), or nullopt when it lies outside.
+// rule: PIPE.CLIP.LINE
+[[nodiscard]] std::optional<std::array<ClipVertex, 2>> clip_segment(const ClipVertex& a,
+                                                                   const ClipVertex& b,
+                                                                   const ClipVolume& vol);
+
+// ---------------------------------------------------------------------------------------------
+// Barycentrics and interpolation
+
+// Exact barycentrics (PIPE.BARY.EXACT): lambda_i = e[i] / area, and e[0] + e[1] + e[2] == area.
+struct Barycentrics {
+  std::array<std::int64_t, 3> e{};
+  std::int64_t area = 0;
+  friend bool operator==(const Barycentrics&, const Barycentrics&) = default;
+};
+
+// Returns the barycentrics of s in the triangle of snapped vertices v (in primitive order).
+// rule: PIPE.BARY.EXACT
+[[nodiscard]] Barycentrics barycentrics(const std::array<Vec2, 3>& v, Vec2 s);
+
+enum class Interpolation { kPerspective, kLinear, kFlat };
+enum class Location { kCenter, kCentroid, kSample };
+[[nodiscard]] std::string_view to_string(Interpolation i);
+[[nodiscard]] std::string_view to_string(Location l);
+
+// Returns the perspective-correct value (PIPE.INTERP.PERSPECTIVE, PIPE.INTERP.HORIZON): a are
+// the vertex values, w the vertices' clip w, flat the provoking vertex's value.
+// rule: PIPE.INTERP.PERSPECTIVE, PIPE.INTERP.HORIZON
+[[nodiscard]] float interpolate_perspective(const Barycentrics& b, const std::array<float, 3>& a,
+                                            const std::array<float, 3>& w, float flat);
+// rule: PIPE.INTERP.LINEAR, PIPE.INTERP.HORIZON
+[[nodiscard]] float interpolate_linear(const Barycentrics& b, const std::array<float, 3>& a);
+
+// ---------------------------------------------------------------------------------------------
+// Depth
+
+enum class DepthFormat { kD16, kD24, kD32F };
+enum class CompareFunc { kNever, kLess, kEqual, kLessEqual, kGreater, kNotEqual, kGreaterEqual, kAlways };
+[[nodiscard]] std::string_view to_string(DepthFormat f);
+[[nodiscard]] std::string_view to_string(CompareFunc f);
+
+// A stored depth value: the UNORM integer for d16/d24, the float32 bits' value for d32f
+// (stored as the float itself; compared as floats).
+struct DepthValue {
+  std::uint32_t unorm = 0;  // d16, d24
+  float f = 0.0f;           // d32f
+  friend bool operator==(const DepthValue&, const DepthValue&) = default;
+};
+
+// Returns the screen-linear depth at the barycentrics (PIPE.DEPTH.INTERP), before the clamp.
+// rule: PIPE.DEPTH.INTERP
+[[nodiscard]] double interpolate_depth(const Barycentrics& b, const std::array<float, 3>& z);
+
+// Returns the clamped depth converted to the format (PIPE.DEPTH.CLAMP, PIPE.DEPTH.FORMAT).
+// rule: PIPE.DEPTH.CLAMP, PIPE.DEPTH.FORMAT
+[[nodiscard]] DepthValue to_depth_format(double z, float min_depth, float max_depth, DepthFormat f);
+
+// Returns whether the test passes for the new value against the old one (PIPE.DEPTH.TEST).
+// rule: PIPE.DEPTH.TEST
+[[nodiscard]] bool depth_test(CompareFunc func, const DepthValue& now, const DepthValue& old,
+                              DepthFormat f);
+
+struct DepthBias {
+  std::int32_t bias = 0;
+  float slope_scaled = 0.0f;
+  float clamp = 0.0f;
+};
+
+// Returns the per-primitive bias of PIPE.DEPTH.BIAS for a triangle with snapped vertices v and
+// window depths z (0 when both bias terms are zero). format nullopt: no depth buffer (UNORM r
+// of 24 bits).
+// rule: PIPE.DEPTH.BIAS
+[[nodiscard]] float depth_bias(const std::array<Vec2, 3>& v, const std::array<float, 3>& z,
+                               const DepthBias& bias, std::optional<DepthFormat> format);
+
+// ---------------------------------------------------------------------------------------------
+// The scene pipeline
+
+struct AttributeDecl {
+  std::string name;
+  Interpolation interpolation = Interpolation::kPerspective;
+  Location location = Location::kCenter;
+};
+
+struct DepthState {
+  DepthFormat format = DepthFormat::kD24;
+  CompareFunc func = CompareFunc::kLess;
+  bool write = true;
+  float clear = 1.0f;
+  bool clip = true;  // depth clipping (D3D DepthClipEnable)
+  DepthBias bias;
+};
+
+enum class Provoking { kFirst, kLast };
+
+// One primitive of a pipeline scene: window-space (`v` of base, with optional z and w) or
+// positions before the transform (pos).
+struct PipePrimitive {
+  Primitive base;                       // type, aa, color; base.v used when pos is empty
+  std::vector<Vec4f> pos;               // PIPE.INPUT.POSITION; empty: window space
+  std::vector<float> z;                 // window-space only: depth per vertex (default 0)
+  std::vector<float> w;                 // window-space only: w per vertex (default 1)
+  std::vector<std::vector<float>> attr; // per vertex, one value per declared attribute
+};
+
+struct PipeScene {
+  Scene base;  // target, raster state, line mode, msaa, clear colour; base.primitives unused
+  std::optional<Viewport> viewport;     // default: the whole target, depth [0, 1]
+  std::optional<Mat4f> model, view, projection;
+  std::optional<DepthState> depth;      // no depth test without it
+  std::vector<AttributeDecl> attributes;
+  Provoking provoking = Provoking::kFirst;
+  std::vector<PipePrimitive> primitives;
+};
+
+// Which stages a scene needs (PIPE.EFFECTS.ON_DEMAND).
+struct Effects {
+  bool clip_space = false;   // some primitive has pos
+  bool depth = false;
+  bool attributes = false;
+  bool barycentrics = false; // depth or attributes
+  [[nodiscard]] bool coverage_only() const { return !clip_space && !depth && !attributes; }
+};
+[[nodiscard]] Effects effects_of(const PipeScene& s);
+
+// One fragment with what the scene asked for.
+struct PipeFragment {
+  Fragment f;                        // f.prim is the index of the source primitive
+  std::optional<std::uint32_t> part; // fan triangle or clipped segment index, when clipped
+  std::optional<Barycentrics> bary;  // at the attribute location of the first attribute, or centre
+  std::vector<float> attr;           // one per declared attribute
+  std::vector<DepthValue> depth;     // one per sample of f.mask (ascending sample index)
+  std::uint32_t passed = 0;          // samples that passed the depth test (== mask without depth)
+  friend bool operator==(const PipeFragment&, const PipeFragment&) = default;
+};
+
+struct PipeResult {
+  std::vector<PipeFragment> fragments;       // sorted by (prim, part, y, x, seg, sample)
+  std::vector<DepthValue> depth_buffer;      // width * height * samples, row-major, sample-minor
+  Effects effects;
+};
+
+// Optimizations that never change a result (PIPE.OPT.*); all on by default.
+struct PipeOptions {
+  RenderOptions render;  // traversal and instruction set (threads: not used by the pipeline)
+  // The most fragments (helper lanes included) a run may produce, and the most one primitive
+  // may hold to sort them (SCENE.INPUT.LIMITS); beyond it run_pipeline returns an error.
+  std::uint64_t max_fragments = std::uint64_t{1} << 26;
+};
+
+// Validates, transforms, clips, rasterizes (all rules of the other files), interpolates and
+// tests depth. Returns the first error (field, message) of bad input.
+[[nodiscard]] std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s,
+                                                                const PipeOptions& o = {});
+
+}  // namespace rastrules::pipe

@@ -1,0 +1,443 @@
+// SPDX-License-Identifier: MIT
+// run_pipeline(): a pipeline scene through validation, transform, clipping, divide and viewport,
+// the coverage rules of the rest of the kernel, barycentrics, interpolation and depth
+// (spec/rules/pipe.md). Only the stages the scene needs run (PIPE.EFFECTS.ON_DEMAND).
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "rastrules/msaa.hpp"
+#include "rastrules/pipeline.hpp"
+
+namespace rastrules::pipe {
+
+namespace {
+
+std::string idx(const char* name, std::size_t i) {
+  return std::string(name) + "[" + std::to_string(i) + "]";
+}
+
+SceneError err(std::string field, std::string message) {
+  return SceneError{std::move(field), std::move(message)};
+}
+
+// What a drawn (window-space) primitive came from.
+struct Source {
+  std::size_t prim = 0;
+  std::optional<std::uint32_t> part;
+  std::vector<WindowVertex> v;            // window x, y (unsnapped), depth z, clip w
+  std::vector<std::vector<float>> attr;   // per vertex
+  std::vector<float> flat;                // per attribute: the provoking vertex's value
+};
+
+struct Stop {
+  SceneError error;
+};
+
+// Validates the finite, bounded position p (PIPE.INPUT.POSITION).
+std::optional<SceneError> check_position(const Vec4f& p, const std::string& field,
+                                         const char* when) {
+  for (std::size_t c = 0; c < 4; ++c) {
+    const float v = p[c];
+    if (std::isnan(v))
+      return err(field, std::string("is NaN") + when + " (PIPE.INPUT.POSITION)");
+    if (std::isinf(v))
+      return err(field, std::string("is infinite") + when + " (PIPE.INPUT.POSITION)");
+    if (std::fabs(static_cast<double>(v)) > kMaxPosition)
+      return err(field, std::string("has a coordinate beyond 2^64") + when +
+                            " (PIPE.INPUT.POSITION)");
+  }
+  return std::nullopt;
+}
+
+// Replaces the primitive index of a field "primitives[N]..." of the internal scene with the
+// index of its source primitive.
+SceneError remap(SceneError e, const std::vector<Source>& sources) {
+  const std::string head = "primitives[";
+  if (e.field.rfind(head, 0) != 0)
+    return e;
+  const std::size_t close = e.field.find(']');
+  if (close == std::string::npos)
+    return e;
+  const std::size_t n = std::stoul(e.field.substr(head.size(), close - head.size()));
+  if (n < sources.size())
+    e.field = head + std::to_string(sources[n].prim) + e.field.substr(close);
+  return e;
+}
+
+// Returns the barycentrics of evaluation point s for a drawn primitive with snapped vertices v:
+// the triangle's (PIPE.BARY.EXACT); for a line the exact projection parameter t = num / den
+// as (den - num, num, 0) / den; for a point (1, 0, 0) / 1.
+Barycentrics eval_bary(PrimitiveType type, const std::vector<Vec2>& v, Vec2 s) {
+  if (type == PrimitiveType::kTriangle)
+    return barycentrics({v[0], v[1], v[2]}, s);
+  Barycentrics b;
+  if (type == PrimitiveType::kPoint || v.size() < 2) {
+    b.e = {1, 0, 0};
+    b.area = 1;
+    return b;
+  }
+  const std::int64_t dx = v[1].x.raw() - v[0].x.raw(), dy = v[1].y.raw() - v[0].y.raw();
+  const std::int64_t px = s.x.raw() - v[0].x.raw(), py = s.y.raw() - v[0].y.raw();
+  const std::int64_t den = dx * dx + dy * dy;  // < 2^49
+  const std::int64_t num = px * dx + py * dy;  // |.| < 2^49
+  b.e = {den - num, num, 0};
+  b.area = den;
+  return b;
+}
+
+}  // namespace
+
+// rule: PIPE.EFFECTS.ON_DEMAND
+Effects effects_of(const PipeScene& s) {
+  Effects e;
+  e.clip_space = std::any_of(s.primitives.begin(), s.primitives.end(),
+                             [](const PipePrimitive& p) { return !p.pos.empty(); });
+  e.depth = s.depth.has_value();
+  e.attributes = !s.attributes.empty();
+  e.barycentrics = e.depth || e.attributes;
+  return e;
+}
+
+std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const PipeOptions& o) {
+  PipeResult result;
+  result.effects = effects_of(s);
+  const Effects& fx = result.effects;
+
+  // ---- validation of the pipeline state (the base scene is checked by prepare())
+  Viewport vp{0.0f, 0.0f, static_cast<float>(s.base.width), static_cast<float>(s.base.height),
+              0.0f, 1.0f};
+  if (s.viewport) {
+    vp = *s.viewport;
+    if (auto bad = check_viewport(vp))
+      return err("viewport." + bad->first, bad->second);
+  }
+  const std::pair<const char*, const std::optional<Mat4f>*> mats[] = {
+      {"model", &s.model}, {"view", &s.view}, {"projection", &s.projection}};
+  for (const auto& [name, m] : mats) {
+    if (!m->has_value())
+      continue;
+    for (std::size_t k = 0; k < 16; ++k)
+      if (!std::isfinite((**m)[k]))
+        return err("transform." + idx(name, k), "is not finite (PIPE.TRANSFORM.FLOAT32)");
+  }
+  if (s.attributes.size() > kMaxAttributes)
+    return err("attributes", "has more than 16 entries (limit PIPE.INPUT.ATTRIBUTES)");
+  bool any_centroid = false;
+  for (std::size_t a = 0; a < s.attributes.size(); ++a) {
+    const AttributeDecl& d = s.attributes[a];
+    if (d.location == Location::kSample && s.base.msaa.shading != ShadingRate::kSample)
+      return err(idx("attributes", a) + ".location",
+                 "\"sample\" needs sample-frequency shading (PIPE.INTERP.LOCATION)");
+    any_centroid = any_centroid || d.location == Location::kCentroid;
+  }
+  if (s.depth) {
+    const DepthState& d = *s.depth;
+    if (!(d.clear >= 0.0f && d.clear <= 1.0f))
+      return err("depth.clear", "must lie in [0, 1] (PIPE.DEPTH.FORMAT)");
+    if (!std::isfinite(d.bias.slope_scaled))
+      return err("depth.slope_scaled_bias", "is not finite (PIPE.DEPTH.BIAS)");
+    if (!std::isfinite(d.bias.clamp))
+      return err("depth.bias_clamp", "is not finite (PIPE.DEPTH.BIAS)");
+  }
+  const std::uint32_t nsamples = s.base.msaa.count();
+  if (s.depth) {
+    const std::uint64_t total = static_cast<std::uint64_t>(std::max(s.base.width, 0)) *
+                                static_cast<std::uint64_t>(std::max(s.base.height, 0)) * nsamples;
+    if (total > static_cast<std::uint64_t>(kMaxResolveSamples))
+      return err("depth", "the depth buffer (width * height * samples) exceeds 2^26 samples "
+                          "(limit SCENE.INPUT.LIMITS)");
+  }
+
+  // ---- vertices: transform, clip, divide and viewport; the internal window-space scene
+  Scene ws = s.base;
+  ws.primitives.clear();
+  ws.primitives.reserve(s.primitives.size());
+  if (any_centroid)
+    ws.msaa.has_centroid = true;
+  std::vector<Source> sources;
+  sources.reserve(s.primitives.size());
+  const std::size_t nattr = s.attributes.size();
+  const bool has_transform = s.model || s.view || s.projection;
+
+  for (std::size_t i = 0; i < s.primitives.size(); ++i) {
+    const PipePrimitive& pp = s.primitives[i];
+    const std::string pf = idx("primitives", i);
+    const std::size_t nv = pp.pos.empty() ? pp.base.v.size() : pp.pos.size();
+    // rule: PIPE.INPUT.ATTRIBUTES
+    if (nattr > 0 && pp.attr.size() != nv)
+      return err(pf + ".attr", "needs one entry per vertex (" + std::to_string(nv) +
+                                   ") (PIPE.INPUT.ATTRIBUTES)");
+    if (nattr == 0 && !pp.attr.empty())
+      return err(pf + ".attr", "is given but the scene declares no attributes (PIPE.INPUT.ATTRIBUTES)");
+    for (std::size_t j = 0; j < pp.attr.size(); ++j) {
+      if (pp.attr[j].size() != nattr)
+        return err(pf + ".attr" + "[" + std::to_string(j) + "]",
+                   "needs one value per declared attribute (" + std::to_string(nattr) +
+                       ") (PIPE.INPUT.ATTRIBUTES)");
+      for (std::size_t k = 0; k < nattr; ++k)
+        if (!std::isfinite(pp.attr[j][k]))
+          return err(pf + ".attr[" + std::to_string(j) + "][" + std::to_string(k) + "]",
+                     std::string(std::isnan(pp.attr[j][k]) ? "is NaN" : "is infinite") +
+                         " (PIPE.INPUT.ATTRIBUTES)");
+    }
+    const std::size_t required = required_vertex_count(pp.base.type);
+    if ((required != 0 && nv != required) || (required == 0 && nv < 2))
+      return err(pf + (pp.pos.empty() ? ".v" : ".pos"),
+                 "a " + std::string(to_string(pp.base.type)) + " needs " +
+                     (required == 0 ? std::string("at least 2") : std::to_string(required)) +
+                     " vertices");
+    const auto vertex_attr = [&](std::size_t j) {
+      return nattr == 0 ? std::vector<float>{} : pp.attr[j];
+    };
+    // rule: PIPE.INTERP.FLAT
+    std::vector<float> flat(nattr, 0.0f);
+    if (nattr > 0) {
+      const std::size_t pv = s.provoking == Provoking::kFirst ? 0 : nv - 1;
+      flat = pp.attr[pv];
+    }
+    const auto add = [&](const Primitive& prim, std::optional<std::uint32_t> part,
+                         std::vector<WindowVertex> v, std::vector<std::vector<float>> attr) {
+      ws.primitives.push_back(prim);
+      sources.push_back(Source{i, part, std::move(v), std::move(attr), flat});
+    };
+    // Adds a drawn primitive of type t from window vertices (the clip-space paths).
+    const auto add_window = [&](PrimitiveType t, std::optional<std::uint32_t> part,
+                                const std::vector<ClipVertex>& vs) {
+      Primitive p = pp.base;
+      p.type = t;
+      p.v.clear();
+      std::vector<WindowVertex> w;
+      std::vector<std::vector<float>> attr;
+      for (const ClipVertex& c : vs) {
+        w.push_back(to_window(c.pos, vp));
+        p.v.push_back(FloatPoint{w.back().x, w.back().y});
+        attr.push_back(c.attr);
+      }
+      add(p, part, std::move(w), std::move(attr));
+    };
+
+    if (pp.pos.empty()) {
+      // Window space: v as given, z and w optional.
+      if (!pp.z.empty() && pp.z.size() != nv)
+        return err(pf + ".z", "needs one value per vertex");
+      if (!pp.w.empty() && pp.w.size() != nv)
+        return err(pf + ".w", "needs one value per vertex");
+      std::vector<WindowVertex> v(nv);
+      for (std::size_t j = 0; j < nv; ++j) {
+        v[j].x = pp.base.v[j][0];
+        v[j].y = pp.base.v[j][1];
+        if (!pp.z.empty()) {
+          if (!std::isfinite(pp.z[j]))
+            return err(pf + ".z[" + std::to_string(j) + "]", "is not finite (PIPE.DEPTH.INTERP)");
+          v[j].z = pp.z[j];
+        }
+        if (!pp.w.empty()) {
+          if (!(std::isfinite(pp.w[j]) && pp.w[j] > 0.0f))
+            return err(pf + ".w[" + std::to_string(j) + "]",
+                       "must be finite and greater than 0 (PIPE.INTERP.PERSPECTIVE)");
+          v[j].w = pp.w[j];
+        }
+      }
+      std::vector<std::vector<float>> attr;
+      for (std::size_t j = 0; j < nv; ++j)
+        attr.push_back(vertex_attr(j));
+      add(pp.base, std::nullopt, std::move(v), std::move(attr));
+      continue;
+    }
+
+    // Clip space (after the transform).
+    std::vector<ClipVertex> cv(nv);
+    for (std::size_t j = 0; j < nv; ++j) {
+      const std::string vf = pf + ".pos[" + std::to_string(j) + "]";
+      if (auto bad = check_position(pp.pos[j], vf, ""))
+        return *bad;
+      Vec4f p = pp.pos[j];
+      if (has_transform) {
+        if (s.model) p = transform(*s.model, p);
+        if (s.view) p = transform(*s.view, p);
+        if (s.projection) p = transform(*s.projection, p);
+        if (auto bad = check_position(p, vf, " after the transform"))
+          return *bad;
+      }
+      cv[j].pos = p;
+      cv[j].attr = vertex_attr(j);
+    }
+    std::vector<Vec4f> clip_pos;
+    for (const ClipVertex& c : cv)
+      clip_pos.push_back(c.pos);
+    const bool depth_clip = !s.depth || s.depth->clip;
+    const ClipVolume vol = clip_volume(clip_pos, vp, depth_clip);
+    switch (pp.base.type) {
+      case PrimitiveType::kTriangle: {
+        // rule: PIPE.CLIP.POLYGON, PIPE.CLIP.UNCLIPPED
+        const std::vector<ClipVertex> poly = clip_polygon(cv, vol);
+        const bool clipped = poly != cv;
+        for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
+          add_window(PrimitiveType::kTriangle,
+                     clipped ? std::optional<std::uint32_t>(static_cast<std::uint32_t>(k - 1))
+                             : std::nullopt,
+                     {poly[0], poly[k], poly[k + 1]});
+        }
+        break;
+      }
+      case PrimitiveType::kPoint: {
+        // rule: PIPE.CLIP.LINE
+        if (inside(vol, cv[0].pos))
+          add_window(PrimitiveType::kPoint, std::nullopt, cv);
+        break;
+      }
+      case PrimitiveType::kLine:
+      case PrimitiveType::kLineStrip: {
+        // rule: PIPE.CLIP.LINE
+        const bool all_in = std::all_of(cv.begin(), cv.end(),
+                                        [&](const ClipVertex& c) { return inside(vol, c.pos); });
+        if (all_in) {
+          add_window(pp.base.type, std::nullopt, cv);
+          break;
+        }
+        for (std::size_t k = 0; k + 1 < cv.size(); ++k) {
+          const auto seg = clip_segment(cv[k], cv[k + 1], vol);
+          if (seg)
+            add_window(PrimitiveType::kLine, static_cast<std::uint32_t>(k), {(*seg)[0], (*seg)[1]});
+        }
+        break;
+      }
+    }
+  }
+
+  // ---- snapping and setup: every rule of the rest of the kernel
+  auto prepared_or = prepare(ws);
+  if (auto* e = std::get_if<SceneError>(&prepared_or))
+    return remap(*e, sources);
+  const PreparedScene& ps = std::get<PreparedScene>(prepared_or);
+
+  // rule: PIPE.VIEWPORT.SCISSOR
+  const PixelRect scissor = viewport_scissor(vp);
+  const SamplePattern& pattern = ps.msaa.pattern;
+  const DepthFormat fmt = s.depth ? s.depth->format : DepthFormat::kD24;
+  const DepthValue clear =
+      s.depth ? to_depth_format(s.depth->clear, 0.0f, 1.0f, fmt) : DepthValue{};
+  if (s.depth)
+    result.depth_buffer.assign(static_cast<std::size_t>(s.base.width) *
+                                   static_cast<std::size_t>(s.base.height) * nsamples,
+                               clear);
+
+  std::uint64_t budget = o.max_fragments;
+  for (std::size_t p = 0; p < ps.primitives.size(); ++p) {
+    const PreparedPrimitive& pr = ps.primitives[p];
+    const Source& src = sources[p];
+    const std::size_t nv = src.v.size();
+    // Window depths and w per vertex, padded to three (lines and points use the first ones).
+    std::array<float, 3> z{}, w{1.0f, 1.0f, 1.0f};
+    for (std::size_t j = 0; j < std::min<std::size_t>(nv, 3); ++j) {
+      z[j] = src.v[j].z;
+      w[j] = src.v[j].w;
+    }
+    // rule: PIPE.DEPTH.BIAS
+    if (s.depth && pr.type == PrimitiveType::kTriangle) {
+      const float b = depth_bias({pr.v[0], pr.v[1], pr.v[2]}, z, s.depth->bias, fmt);
+      if (s.depth->bias.bias != 0 || s.depth->bias.slope_scaled != 0.0f)
+        for (float& zi : z)
+          zi = zi + b;
+    }
+    const std::vector<Vec2> snapped = pr.v;
+    const auto values_of = [&](std::size_t a) {
+      std::array<float, 3> v{};
+      for (std::size_t j = 0; j < std::min<std::size_t>(nv, 3); ++j)
+        v[j] = src.attr[j][a];
+      return v;
+    };
+    std::vector<std::array<float, 3>> avals;
+    for (std::size_t a = 0; a < nattr; ++a)
+      avals.push_back(values_of(a));
+
+    const auto emit = [&](const Fragment& f) {
+      // rule: PIPE.VIEWPORT.SCISSOR
+      if (!scissor.contains(f.x, f.y))
+        return;
+      if (budget == 0)
+        throw Stop{err(idx("primitives", src.prim),
+                       "the scene produces more than " + std::to_string(o.max_fragments) +
+                           " fragments (limit SCENE.INPUT.LIMITS)")};
+      --budget;
+      PipeFragment out;
+      out.f = f;
+      out.f.prim = static_cast<std::uint32_t>(src.prim);
+      if (!s.base.msaa.has_centroid)
+        out.f.centroid.reset();
+      out.part = src.part;
+      out.passed = f.mask;
+      if (fx.barycentrics) {
+        const Vec2 centre = pixel_center(f.x, f.y);
+        const auto point_of = [&](Location l) {
+          if (l == Location::kCentroid && f.centroid)
+            return sample_position(f.x, f.y, f.centroid->offset);
+          if (l == Location::kSample && f.sample)
+            return sample_position(f.x, f.y, pattern.positions[*f.sample]);
+          return centre;
+        };
+        // rule: PIPE.INTERP.LOCATION
+        const Location first = nattr > 0 ? s.attributes[0].location : Location::kCenter;
+        out.bary = eval_bary(pr.type, snapped, point_of(first));
+        out.attr.reserve(nattr);
+        for (std::size_t a = 0; a < nattr; ++a) {
+          const AttributeDecl& d = s.attributes[a];
+          const Barycentrics b = d.location == first ? *out.bary
+                                                     : eval_bary(pr.type, snapped, point_of(d.location));
+          switch (d.interpolation) {
+            case Interpolation::kPerspective:
+              out.attr.push_back(interpolate_perspective(b, avals[a], w, src.flat[a]));
+              break;
+            case Interpolation::kLinear:
+              out.attr.push_back(interpolate_linear(b, avals[a]));
+              break;
+            case Interpolation::kFlat:
+              out.attr.push_back(src.flat[a]);
+              break;
+          }
+        }
+      }
+      if (s.depth) {
+        // rule: PIPE.DEPTH.INTERP, PIPE.DEPTH.TEST, PIPE.DEPTH.WRITE
+        out.passed = 0;
+        for (std::uint32_t k = 0; k < nsamples; ++k) {
+          if ((f.mask & (1u << k)) == 0)
+            continue;
+          const Barycentrics b =
+              eval_bary(pr.type, snapped, sample_position(f.x, f.y, pattern.positions[k]));
+          const DepthValue dv =
+              to_depth_format(interpolate_depth(b, z), vp.min_depth, vp.max_depth, fmt);
+          out.depth.push_back(dv);
+          DepthValue& old = result.depth_buffer[(static_cast<std::size_t>(f.y) *
+                                                     static_cast<std::size_t>(s.base.width) +
+                                                 static_cast<std::size_t>(f.x)) *
+                                                    nsamples +
+                                                k];
+          if (depth_test(s.depth->func, dv, old, fmt)) {
+            out.passed |= 1u << k;
+            if (s.depth->write)
+              old = dv;
+          }
+        }
+      }
+      result.fragments.push_back(std::move(out));
+    };
+    try {
+      const bool ok = for_each_fragment_bounded(ps, p, o.max_fragments, o.render, emit);
+      if (!ok)
+        return err(idx("primitives", src.prim),
+                   "touches more than " + std::to_string(o.max_fragments) +
+                       " pixels or fragments that must be held to be sorted (limit "
+                       "SCENE.INPUT.LIMITS)");
+    } catch (Stop& stop) {
+      return stop.error;
+    }
+  }
+  return result;
+}
+
+}  // namespace rastrules::pipe

@@ -1,0 +1,306 @@
+// SPDX-License-Identifier: MIT
+// Examples for whole pipeline scenes: clip-space input equals window-space input, clipped
+// fans, the implicit scissor, flat attributes and the provoking vertex, depth test and write,
+// the z-fighting winner, effects on demand, and bad input naming its field.
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <tuple>
+#include <variant>
+
+#include "rastrules/pipeline.hpp"
+
+namespace rastrules::pipe {
+namespace {
+
+PipeScene scene(std::int32_t w, std::int32_t h) {
+  PipeScene s;
+  s.base.width = w;
+  s.base.height = h;
+  return s;
+}
+
+PipePrimitive clip_tri(Vec4f a, Vec4f b, Vec4f c) {
+  PipePrimitive p;
+  p.base.type = PrimitiveType::kTriangle;
+  p.pos = {a, b, c};
+  return p;
+}
+
+PipePrimitive window_tri(FloatPoint a, FloatPoint b, FloatPoint c, std::array<float, 3> z = {}) {
+  PipePrimitive p;
+  p.base = make_triangle({a, b, c});
+  p.z = {z[0], z[1], z[2]};
+  return p;
+}
+
+PipeResult run(const PipeScene& s, const PipeOptions& o = {}) {
+  auto r = run_pipeline(s, o);
+  if (auto* e = std::get_if<SceneError>(&r)) {
+    ADD_FAILURE() << e->what();
+    return {};
+  }
+  return std::get<PipeResult>(r);
+}
+
+SceneError run_error(const PipeScene& s) {
+  auto r = run_pipeline(s);
+  if (auto* e = std::get_if<SceneError>(&r))
+    return *e;
+  ADD_FAILURE() << "expected an error";
+  return {};
+}
+
+std::set<std::tuple<std::uint32_t, std::int32_t, std::int32_t>> pixels(const PipeResult& r) {
+  std::set<std::tuple<std::uint32_t, std::int32_t, std::int32_t>> s;
+  for (const auto& f : r.fragments) s.insert({f.f.prim, f.f.x, f.f.y});
+  return s;
+}
+
+// rule: PIPE.CLIP.UNCLIPPED, PIPE.VIEWPORT.TRANSFORM, PIPE.EFFECTS.ON_DEMAND
+TEST(PipeScene, ClipSpaceTriangleCoversWhatItsWindowImageCovers) {
+  PipeScene c = scene(16, 16);
+  // NDC (-0.75, 0.75), (0.5, 0.5), (-0.5, -0.875) with w = 2: window (2, 2), (12, 4), (4, 15).
+  c.primitives.push_back(clip_tri({-1.5f, 1.5f, 0.5f, 2}, {1, 1, 0.5f, 2}, {-1, -1.75f, 0.5f, 2}));
+  PipeScene w = scene(16, 16);
+  w.primitives.push_back(window_tri({2, 2}, {12, 4}, {4, 15}));
+  const PipeResult rc = run(c), rw = run(w);
+  EXPECT_EQ(pixels(rc), pixels(rw));
+  EXPECT_FALSE(rc.fragments.empty());
+  EXPECT_TRUE(rc.effects.clip_space);
+  EXPECT_TRUE(rw.effects.coverage_only());
+  // Coverage-only: the fragments are exactly the kernel's (SCENE.OUTPUT.FRAGMENTS).
+  Scene k;
+  k.width = 16;
+  k.height = 16;
+  k.primitives.push_back(make_triangle({FloatPoint{2, 2}, FloatPoint{12, 4}, FloatPoint{4, 15}}));
+  const auto kf = std::get<std::vector<Fragment>>(render(k));
+  ASSERT_EQ(kf.size(), rw.fragments.size());
+  for (std::size_t i = 0; i < kf.size(); ++i) {
+    EXPECT_EQ(rw.fragments[i].f, kf[i]);
+    EXPECT_FALSE(rw.fragments[i].bary.has_value());
+    EXPECT_TRUE(rw.fragments[i].depth.empty());
+  }
+}
+
+// rule: PIPE.CLIP.POLYGON
+TEST(PipeScene, NearClippedTriangleBecomesPartsThatCoverEachPixelOnce) {
+  PipeScene s = scene(32, 32);
+  s.depth = DepthState{};
+  // One vertex behind the near plane (z < 0).
+  s.primitives.push_back(clip_tri({-0.9f, -0.9f, -0.5f, 1}, {0.9f, -0.8f, 0.5f, 1}, {0, 0.9f, 0.5f, 1}));
+  const PipeResult r = run(s);
+  std::set<std::pair<std::int32_t, std::int32_t>> seen;
+  std::set<std::uint32_t> parts;
+  for (const auto& f : r.fragments) {
+    ASSERT_TRUE(f.part.has_value());
+    parts.insert(*f.part);
+    EXPECT_TRUE(seen.insert({f.f.x, f.f.y}).second) << "pixel drawn twice: " << f.f.x << "," << f.f.y;
+    // Depth stays in the viewport's range and the near plane maps to depth 0.
+    ASSERT_EQ(f.depth.size(), 1u);
+    EXPECT_LE(f.depth[0].unorm, 16777215u);
+  }
+  EXPECT_EQ(parts, (std::set<std::uint32_t>{0, 1}));
+}
+
+// rule: PIPE.VIEWPORT.SCISSOR
+TEST(PipeScene, NothingIsDrawnOutsideTheViewport) {
+  PipeScene s = scene(32, 32);
+  s.viewport = Viewport{8, 4, 8, 8, 0, 1};
+  // A triangle much larger than the viewport (NDC -10..10), inside the guard band.
+  s.primitives.push_back(clip_tri({-10, -10, 0.5f, 1}, {10, -10, 0.5f, 1}, {0, 10, 0.5f, 1}));
+  const PipeResult r = run(s);
+  EXPECT_EQ(r.fragments.size(), 64u);
+  for (const auto& f : r.fragments) {
+    EXPECT_GE(f.f.x, 8);
+    EXPECT_LT(f.f.x, 16);
+    EXPECT_GE(f.f.y, 4);
+    EXPECT_LT(f.f.y, 12);
+  }
+}
+
+// rule: PIPE.INTERP.FLAT, PIPE.INPUT.ATTRIBUTES
+TEST(PipeScene, FlatAttributesTakeTheProvokingVertex) {
+  for (const Provoking pv : {Provoking::kFirst, Provoking::kLast}) {
+    PipeScene s = scene(16, 16);
+    s.provoking = pv;
+    s.attributes = {AttributeDecl{"id", Interpolation::kFlat, Location::kCenter},
+                    AttributeDecl{"u", Interpolation::kLinear, Location::kCenter}};
+    PipePrimitive p = window_tri({1, 1}, {15, 1}, {1, 15});
+    p.attr = {{10, 0}, {20, 1}, {30, 2}};
+    s.primitives.push_back(p);
+    const PipeResult r = run(s);
+    ASSERT_FALSE(r.fragments.empty());
+    for (const auto& f : r.fragments) {
+      ASSERT_EQ(f.attr.size(), 2u);
+      EXPECT_EQ(f.attr[0], pv == Provoking::kFirst ? 10.0f : 30.0f);
+      EXPECT_GE(f.attr[1], 0.0f);
+      EXPECT_LE(f.attr[1], 2.0f);
+      ASSERT_TRUE(f.bary.has_value());
+      EXPECT_EQ(f.bary->e[0] + f.bary->e[1] + f.bary->e[2], f.bary->area);
+    }
+  }
+}
+
+// rule: PIPE.DEPTH.TEST, PIPE.DEPTH.WRITE
+TEST(PipeScene, ZFightingHasADeterministicWinner) {
+  for (const CompareFunc func : {CompareFunc::kLess, CompareFunc::kLessEqual}) {
+    PipeScene s = scene(8, 8);
+    s.depth = DepthState{};
+    s.depth->func = func;
+    // The same triangle twice at the same depth.
+    s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.5f, 0.25f, 0.75f}));
+    s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.5f, 0.25f, 0.75f}));
+    const PipeResult r = run(s);
+    for (const auto& f : r.fragments) {
+      if (f.f.prim == 0)
+        EXPECT_EQ(f.passed, 1u);  // first: passes against the clear value 1.0
+      else
+        EXPECT_EQ(f.passed, func == CompareFunc::kLess ? 0u : 1u);
+    }
+  }
+}
+
+// rule: PIPE.DEPTH.TEST, PIPE.DEPTH.WRITE, PIPE.DEPTH.FORMAT
+TEST(PipeScene, NearerTriangleWinsAndTheBufferHoldsItsDepth) {
+  PipeScene s = scene(8, 8);
+  s.depth = DepthState{};
+  s.depth->format = DepthFormat::kD16;
+  s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.25f, 0.25f, 0.25f}));
+  s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.75f, 0.75f, 0.75f}));  // behind
+  const PipeResult r = run(s);
+  for (const auto& f : r.fragments) EXPECT_EQ(f.passed, f.f.prim == 0 ? 1u : 0u);
+  const std::uint32_t quarter = to_depth_format(0.25, 0, 1, DepthFormat::kD16).unorm;
+  EXPECT_EQ(r.depth_buffer[0].unorm, quarter);                         // pixel (0, 0)
+  EXPECT_EQ(r.depth_buffer[7 * 8 + 7].unorm, 65535u);                  // pixel (7, 7): clear
+  // Without writes the second still fails (the buffer holds the clear value only where the
+  // first did not draw), and the buffer keeps the clear value everywhere.
+  s.depth->write = false;
+  const PipeResult nw = run(s);
+  for (const auto& v : nw.depth_buffer) EXPECT_EQ(v.unorm, 65535u);
+  for (const auto& f : nw.fragments) EXPECT_EQ(f.passed, 1u);
+}
+
+// rule: PIPE.DEPTH.TEST
+TEST(PipeScene, DepthIsTestedPerSample) {
+  PipeScene s = scene(4, 4);
+  s.base.msaa.pattern = standard_pattern(4);
+  s.depth = DepthState{};
+  s.depth->format = DepthFormat::kD32F;
+  // A steep depth ramp along x: within a pixel, samples to the left are nearer.
+  s.primitives.push_back(window_tri({0, 0}, {4, 0}, {0, 4}, {0.0f, 1.0f, 0.0f}));
+  s.primitives.push_back(window_tri({0, 0}, {4, 0}, {0, 4}, {0.2f, 0.2f, 0.2f}));
+  const PipeResult r = run(s);
+  bool mixed = false;
+  for (const auto& f : r.fragments) {
+    EXPECT_EQ(f.depth.size(), static_cast<std::size_t>(std::popcount(f.f.mask)));
+    if (f.f.prim == 1 && f.passed != 0 && f.passed != f.f.mask) mixed = true;
+  }
+  EXPECT_TRUE(mixed) << "some pixel should pass the test on some samples only";
+}
+
+// rule: PIPE.INTERP.LOCATION
+TEST(PipeScene, SampleLocationNeedsSampleShading) {
+  PipeScene s = scene(4, 4);
+  s.attributes = {AttributeDecl{"u", Interpolation::kPerspective, Location::kSample}};
+  PipePrimitive p = window_tri({0, 0}, {4, 0}, {0, 4});
+  p.attr = {{0}, {1}, {2}};
+  s.primitives.push_back(p);
+  const SceneError e = run_error(s);
+  EXPECT_EQ(e.field, "attributes[0].location");
+  s.base.msaa.pattern = standard_pattern(4);
+  s.base.msaa.shading = ShadingRate::kSample;
+  const PipeResult r = run(s);
+  for (const auto& f : r.fragments) ASSERT_TRUE(f.f.sample.has_value());
+}
+
+// rule: PIPE.INPUT.POSITION, PIPE.INPUT.ATTRIBUTES, PIPE.TRANSFORM.FLOAT32
+TEST(PipeScene, BadInputNamesTheField) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  PipeScene s = scene(8, 8);
+  s.primitives.push_back(clip_tri({0, 0, 0, 1}, {1, 0, 0, 1}, {0, nan, 0, 1}));
+  EXPECT_EQ(run_error(s).field, "primitives[0].pos[2]");
+  s.primitives[0].pos[2] = {0, 1e30f, 0, 1};
+  EXPECT_NE(run_error(s).message.find("2^64"), std::string::npos);
+  s.primitives[0].pos[2] = {0, 1, 0, 1};
+  s.projection = Mat4f{1e30f, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  const SceneError after = run_error(s);
+  EXPECT_EQ(after.field, "primitives[0].pos[1]");
+  EXPECT_NE(after.message.find("after the transform"), std::string::npos);
+  s.projection.reset();
+  s.attributes = {AttributeDecl{"u", Interpolation::kLinear, Location::kCenter}};
+  s.primitives[0].attr = {{0}, {1}};
+  EXPECT_EQ(run_error(s).field, "primitives[0].attr");
+  s.primitives[0].attr = {{0}, {1}, {std::numeric_limits<float>::infinity()}};
+  EXPECT_EQ(run_error(s).field, "primitives[0].attr[2][0]");
+  s.primitives[0].attr = {{0}, {1}, {2}};
+  s.viewport = Viewport{0, 0, 8, 8, 0.5f, 0.25f};
+  EXPECT_EQ(run_error(s).field, "viewport.min_depth");
+}
+
+// rule: PIPE.CLIP.LINE
+TEST(PipeScene, PointsOutsideTheVolumeAreDiscardedAndLinesAreCut) {
+  PipeScene s = scene(16, 16);
+  PipePrimitive pt;
+  pt.base.type = PrimitiveType::kPoint;
+  pt.pos = {{0, 0, -0.5f, 1}};  // in front of the near plane
+  s.primitives.push_back(pt);
+  PipePrimitive line;
+  line.base.type = PrimitiveType::kLine;
+  line.pos = {{-0.5f, 0.05f, -1, 1}, {0.5f, 0.05f, 1, 1}};  // crosses z = 0 half-way
+  s.primitives.push_back(line);
+  const PipeResult r = run(s);
+  for (const auto& f : r.fragments) {
+    EXPECT_EQ(f.f.prim, 1u);
+    EXPECT_EQ(f.part, std::optional<std::uint32_t>(0));
+    EXPECT_GE(f.f.x, 7);  // the clipped line starts at the centre, x = 8
+  }
+  EXPECT_FALSE(r.fragments.empty());
+}
+
+// rule: PIPE.DEPTH.BIAS
+TEST(PipeScene, BiasMovesTrianglesButNotPoints) {
+  PipeScene s = scene(8, 8);
+  s.depth = DepthState{};
+  s.depth->func = CompareFunc::kAlways;
+  s.depth->bias.bias = 1000;
+  s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.5f, 0.5f, 0.5f}));
+  PipePrimitive pt;
+  pt.base.type = PrimitiveType::kPoint;
+  pt.base.v = {FloatPoint{5.5f, 5.5f}};
+  pt.z = {0.5f};
+  s.primitives.push_back(pt);
+  const PipeResult r = run(s);
+  const std::uint32_t half = to_depth_format(0.5, 0, 1, DepthFormat::kD24).unorm;  // 2^23
+  for (const auto& f : r.fragments) {
+    ASSERT_EQ(f.depth.size(), 1u);
+    // r = fl32(1 / (2^24 - 1)) = 2^-24 exactly, so z = 0.5 + 1000 * 2^-24 and
+    // floor(z * (2^24 - 1) + 0.5) = 2^23 + 1000 - 1000 * 2^-24 rounds down to 2^23 + 999.
+    if (f.f.prim == 0)
+      EXPECT_EQ(f.depth[0].unorm, half + 999u);
+    else
+      EXPECT_EQ(f.depth[0].unorm, half);
+  }
+}
+
+// rule: PIPE.EFFECTS.ON_DEMAND
+TEST(PipeScene, ResultsDoNotDependOnTheTraversal) {
+  PipeScene s = scene(64, 64);
+  s.depth = DepthState{};
+  s.attributes = {AttributeDecl{"u", Interpolation::kPerspective, Location::kCenter}};
+  PipePrimitive p = clip_tri({-0.9f, -0.9f, 0.1f, 1}, {3, -0.5f, 2, 4}, {0, 0.9f, 0.4f, 0.5f});
+  p.attr = {{0}, {1}, {2}};
+  s.primitives.push_back(p);
+  PipeOptions plain;
+  plain.render.traversal = Traversal::kPlain;
+  const PipeResult a = run(s), b = run(s, plain);
+  EXPECT_EQ(a.fragments, b.fragments);
+  EXPECT_EQ(a.depth_buffer, b.depth_buffer);
+}
+
+}  // namespace
+}  // namespace rastrules::pipe
