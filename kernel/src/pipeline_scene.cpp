@@ -3,6 +3,7 @@
 // the coverage rules of the rest of the kernel, barycentrics, interpolation and depth
 // (spec/rules/pipe.md). Only the stages the scene needs run (PIPE.EFFECTS.ON_DEMAND).
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -10,6 +11,7 @@
 #include <utility>
 
 #include "rastrules/msaa.hpp"
+#include "rastrules/parallel.hpp"
 #include "rastrules/pipeline.hpp"
 
 namespace rastrules::pipe {
@@ -124,6 +126,8 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
       if (!std::isfinite((**m)[k]))
         return err("transform." + idx(name, k), "is not finite (PIPE.TRANSFORM.FLOAT32)");
   }
+  if (o.tile_size != 16 && o.tile_size != 32)
+    return err("options.tile_size", "must be 16 or 32 (PIPE.OPT.TILES)");
   if (s.attributes.size() > kMaxAttributes)
     return err("attributes", "has more than 16 entries (limit PIPE.INPUT.ATTRIBUTES)");
   bool any_centroid = false;
@@ -317,119 +321,22 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
 
   // rule: PIPE.VIEWPORT.SCISSOR
   const PixelRect scissor = viewport_scissor(vp);
-  const SamplePattern& pattern = ps.msaa.pattern;
-  const DepthFormat fmt = s.depth ? s.depth->format : DepthFormat::kD24;
-  const DepthValue clear =
-      s.depth ? to_depth_format(s.depth->clear, 0.0f, 1.0f, fmt) : DepthValue{};
-  if (s.depth)
-    result.depth_buffer.assign(static_cast<std::size_t>(s.base.width) *
-                                   static_cast<std::size_t>(s.base.height) * nsamples,
-                               clear);
 
-  std::uint64_t budget = o.max_fragments;
+  // ---- phase 1: coverage, in (prim, part, y, x, seg, sample) order
+  std::vector<Fragment> cover;      // f.prim: the drawn primitive's index in ps
   for (std::size_t p = 0; p < ps.primitives.size(); ++p) {
-    const PreparedPrimitive& pr = ps.primitives[p];
-    const Source& src = sources[p];
-    const std::size_t nv = src.v.size();
-    // Window depths and w per vertex, padded to three (lines and points use the first ones).
-    std::array<float, 3> z{}, w{1.0f, 1.0f, 1.0f};
-    for (std::size_t j = 0; j < std::min<std::size_t>(nv, 3); ++j) {
-      z[j] = src.v[j].z;
-      w[j] = src.v[j].w;
-    }
-    // rule: PIPE.DEPTH.BIAS
-    if (s.depth && pr.type == PrimitiveType::kTriangle) {
-      const float b = depth_bias({pr.v[0], pr.v[1], pr.v[2]}, z, s.depth->bias, fmt);
-      if (s.depth->bias.bias != 0 || s.depth->bias.slope_scaled != 0.0f)
-        for (float& zi : z)
-          zi = zi + b;
-    }
-    const std::vector<Vec2> snapped = pr.v;
-    const auto values_of = [&](std::size_t a) {
-      std::array<float, 3> v{};
-      for (std::size_t j = 0; j < std::min<std::size_t>(nv, 3); ++j)
-        v[j] = src.attr[j][a];
-      return v;
-    };
-    std::vector<std::array<float, 3>> avals;
-    for (std::size_t a = 0; a < nattr; ++a)
-      avals.push_back(values_of(a));
-
     const auto emit = [&](const Fragment& f) {
-      // rule: PIPE.VIEWPORT.SCISSOR
       if (!scissor.contains(f.x, f.y))
         return;
-      if (budget == 0)
-        throw Stop{err(idx("primitives", src.prim),
+      if (cover.size() >= o.max_fragments)
+        throw Stop{err(idx("primitives", sources[p].prim),
                        "the scene produces more than " + std::to_string(o.max_fragments) +
                            " fragments (limit SCENE.INPUT.LIMITS)")};
-      --budget;
-      PipeFragment out;
-      out.f = f;
-      out.f.prim = static_cast<std::uint32_t>(src.prim);
-      if (!s.base.msaa.has_centroid)
-        out.f.centroid.reset();
-      out.part = src.part;
-      out.passed = f.mask;
-      if (fx.barycentrics) {
-        const Vec2 centre = pixel_center(f.x, f.y);
-        const auto point_of = [&](Location l) {
-          if (l == Location::kCentroid && f.centroid)
-            return sample_position(f.x, f.y, f.centroid->offset);
-          if (l == Location::kSample && f.sample)
-            return sample_position(f.x, f.y, pattern.positions[*f.sample]);
-          return centre;
-        };
-        // rule: PIPE.INTERP.LOCATION
-        const Location first = nattr > 0 ? s.attributes[0].location : Location::kCenter;
-        out.bary = eval_bary(pr.type, snapped, point_of(first));
-        out.attr.reserve(nattr);
-        for (std::size_t a = 0; a < nattr; ++a) {
-          const AttributeDecl& d = s.attributes[a];
-          const Barycentrics b = d.location == first ? *out.bary
-                                                     : eval_bary(pr.type, snapped, point_of(d.location));
-          switch (d.interpolation) {
-            case Interpolation::kPerspective:
-              out.attr.push_back(interpolate_perspective(b, avals[a], w, src.flat[a]));
-              break;
-            case Interpolation::kLinear:
-              out.attr.push_back(interpolate_linear(b, avals[a]));
-              break;
-            case Interpolation::kFlat:
-              out.attr.push_back(src.flat[a]);
-              break;
-          }
-        }
-      }
-      if (s.depth) {
-        // rule: PIPE.DEPTH.INTERP, PIPE.DEPTH.TEST, PIPE.DEPTH.WRITE
-        out.passed = 0;
-        for (std::uint32_t k = 0; k < nsamples; ++k) {
-          if ((f.mask & (1u << k)) == 0)
-            continue;
-          const Barycentrics b =
-              eval_bary(pr.type, snapped, sample_position(f.x, f.y, pattern.positions[k]));
-          const DepthValue dv =
-              to_depth_format(interpolate_depth(b, z), vp.min_depth, vp.max_depth, fmt);
-          out.depth.push_back(dv);
-          DepthValue& old = result.depth_buffer[(static_cast<std::size_t>(f.y) *
-                                                     static_cast<std::size_t>(s.base.width) +
-                                                 static_cast<std::size_t>(f.x)) *
-                                                    nsamples +
-                                                k];
-          if (depth_test(s.depth->func, dv, old, fmt)) {
-            out.passed |= 1u << k;
-            if (s.depth->write)
-              old = dv;
-          }
-        }
-      }
-      result.fragments.push_back(std::move(out));
+      cover.push_back(f);
     };
     try {
-      const bool ok = for_each_fragment_bounded(ps, p, o.max_fragments, o.render, emit);
-      if (!ok)
-        return err(idx("primitives", src.prim),
+      if (!for_each_fragment_bounded(ps, p, o.max_fragments, o.render, emit))
+        return err(idx("primitives", sources[p].prim),
                    "touches more than " + std::to_string(o.max_fragments) +
                        " pixels or fragments that must be held to be sorted (limit "
                        "SCENE.INPUT.LIMITS)");
@@ -437,6 +344,273 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
       return stop.error;
     }
   }
+  result.fragments.resize(cover.size());
+  for (std::size_t i = 0; i < cover.size(); ++i) {
+    PipeFragment& out = result.fragments[i];
+    out.f = cover[i];
+    const Source& src = sources[cover[i].prim];
+    out.f.prim = static_cast<std::uint32_t>(src.prim);
+    if (!s.base.msaa.has_centroid)
+      out.f.centroid.reset();
+    out.part = src.part;
+    out.passed = cover[i].mask;
+  }
+  // rule: PIPE.EFFECTS.ON_DEMAND
+  if (!fx.barycentrics)
+    return result;
+
+  // ---- per drawn primitive: window depths (after bias), w and attribute values
+  const SamplePattern& pattern = ps.msaa.pattern;
+  const DepthFormat fmt = s.depth ? s.depth->format : DepthFormat::kD24;
+  const bool less_like = s.depth && (s.depth->func == CompareFunc::kLess ||
+                                     s.depth->func == CompareFunc::kLessEqual);
+  const bool greater_like = s.depth && (s.depth->func == CompareFunc::kGreater ||
+                                        s.depth->func == CompareFunc::kGreaterEqual);
+  struct Drawn {
+    std::array<float, 3> z{}, w{1.0f, 1.0f, 1.0f};
+    std::vector<std::array<float, 3>> a;
+    DepthValue lo, hi;  // conservative bounds of every sample's stored depth (triangles, points)
+    bool bounded = false;
+  };
+  std::vector<Drawn> drawn(ps.primitives.size());
+  for (std::size_t p = 0; p < ps.primitives.size(); ++p) {
+    const PreparedPrimitive& pr = ps.primitives[p];
+    const Source& src = sources[p];
+    Drawn& d = drawn[p];
+    const std::size_t nv = std::min<std::size_t>(src.v.size(), 3);
+    for (std::size_t j = 0; j < nv; ++j) {
+      d.z[j] = src.v[j].z;
+      d.w[j] = src.v[j].w;
+    }
+    // rule: PIPE.DEPTH.BIAS
+    if (s.depth && pr.type == PrimitiveType::kTriangle &&
+        (s.depth->bias.bias != 0 || s.depth->bias.slope_scaled != 0.0f)) {
+      const float b = depth_bias({pr.v[0], pr.v[1], pr.v[2]}, d.z, s.depth->bias, fmt);
+      for (float& zi : d.z)
+        zi = zi + b;
+    }
+    for (std::size_t a = 0; a < nattr; ++a) {
+      std::array<float, 3> v{};
+      for (std::size_t j = 0; j < nv; ++j)
+        v[j] = src.attr[j][a];
+      d.a.push_back(v);
+    }
+    // rule: PIPE.OPT.HIZ
+    // A covered sample of a triangle is a convex combination of its vertices, so its depth lies
+    // in [min Zi, max Zi] up to the rounding of PIPE.DEPTH.INTERP (relative 2^-50 of the largest
+    // |Zi|); the monotone conversion keeps the bounds. Lines extrapolate at their ends: none.
+    if (s.depth && (pr.type == PrimitiveType::kTriangle || pr.type == PrimitiveType::kPoint)) {
+      const std::size_t k = pr.type == PrimitiveType::kPoint ? 1 : 3;
+      double zlo = d.z[0], zhi = d.z[0], zabs = 0.0;
+      for (std::size_t j = 0; j < k; ++j) {
+        zlo = std::min(zlo, static_cast<double>(d.z[j]));
+        zhi = std::max(zhi, static_cast<double>(d.z[j]));
+        zabs = std::max(zabs, std::fabs(static_cast<double>(d.z[j])));
+      }
+      const double margin = std::ldexp(zabs, -46) + std::ldexp(1.0, -1000);
+      d.lo = to_depth_format(zlo - margin, vp.min_depth, vp.max_depth, fmt);
+      d.hi = to_depth_format(zhi + margin, vp.min_depth, vp.max_depth, fmt);
+      d.bounded = true;
+    }
+  }
+
+  // ---- the depth target: tiles, fast clear, Hi-Z (PIPE.OPT.*)
+  const std::int64_t T = o.tile_size;
+  const std::int64_t tiles_x = (s.base.width + T - 1) / T, tiles_y = (s.base.height + T - 1) / T;
+  const std::size_t ntiles = static_cast<std::size_t>(tiles_x * tiles_y);
+  const DepthValue clear =
+      s.depth ? to_depth_format(s.depth->clear, 0.0f, 1.0f, fmt) : DepthValue{};
+  std::vector<std::uint8_t> cleared;   // fast clear: the tile still holds only the clear value
+  std::vector<std::uint8_t> dirty;     // Hi-Z: the tile's bound must be recomputed
+  std::vector<DepthValue> bound;       // Hi-Z: max (less-like) or min (greater-like) of the tile
+  std::vector<std::size_t> checked;    // Hi-Z: drawn primitive last checked in the tile, + 1
+  std::vector<std::uint8_t> rejected;  // Hi-Z: whether that primitive was rejected there
+  const bool use_hiz = o.hiz && (less_like || greater_like);
+  std::atomic<std::uint64_t> n_hiz{0}, n_depth{0}, n_attr{0};  // PipeStats
+  if (s.depth) {
+    if (o.fast_clear) {
+      result.depth_buffer.resize(static_cast<std::size_t>(s.base.width) *
+                                 static_cast<std::size_t>(s.base.height) * nsamples);
+      cleared.assign(ntiles, 1);
+    } else {
+      result.depth_buffer.assign(static_cast<std::size_t>(s.base.width) *
+                                     static_cast<std::size_t>(s.base.height) * nsamples,
+                                 clear);
+    }
+    if (use_hiz) {
+      dirty.assign(ntiles, 0);
+      bound.assign(ntiles, clear);
+      checked.assign(ntiles, 0);
+      rejected.assign(ntiles, 0);
+    }
+  }
+  const auto tile_of = [&](std::int64_t x, std::int64_t y) {
+    return static_cast<std::size_t>((y / T) * tiles_x + x / T);
+  };
+  const auto sample_index = [&](std::int64_t x, std::int64_t y, std::uint32_t k) {
+    return (static_cast<std::size_t>(y) * static_cast<std::size_t>(s.base.width) +
+            static_cast<std::size_t>(x)) *
+               nsamples +
+           k;
+  };
+  // Calls fn(index) for each sample of tile t.
+  const auto for_tile = [&](std::size_t t, auto&& fn) {
+    const std::int64_t tx = static_cast<std::int64_t>(t) % tiles_x, ty = static_cast<std::int64_t>(t) / tiles_x;
+    for (std::int64_t y = ty * T; y < std::min<std::int64_t>((ty + 1) * T, s.base.height); ++y)
+      for (std::int64_t x = tx * T; x < std::min<std::int64_t>((tx + 1) * T, s.base.width); ++x)
+        for (std::uint32_t k = 0; k < nsamples; ++k)
+          fn(sample_index(x, y, k));
+  };
+  // rule: PIPE.OPT.FAST_CLEAR
+  const auto materialize = [&](std::size_t t) {
+    if (!cleared.empty() && cleared[t]) {
+      for_tile(t, [&](std::size_t i) { result.depth_buffer[i] = clear; });
+      cleared[t] = 0;
+    }
+  };
+  const auto stored_less = [&](const DepthValue& a, const DepthValue& b) {
+    return fmt == DepthFormat::kD32F ? a.f < b.f : a.unorm < b.unorm;
+  };
+  // rule: PIPE.OPT.HIZ
+  // Whether every covered sample of drawn primitive p in tile t fails the test.
+  const auto hiz_rejects = [&](std::size_t p, std::size_t t) {
+    if (checked[t] == p + 1)
+      return rejected[t] != 0;
+    if (dirty[t]) {
+      bool first = true;
+      DepthValue b = clear;
+      if (cleared.empty() || !cleared[t]) {
+        for_tile(t, [&](std::size_t i) {
+          const DepthValue& v = result.depth_buffer[i];
+          if (first || (less_like ? stored_less(b, v) : stored_less(v, b)))
+            b = v;
+          first = false;
+        });
+      }
+      bound[t] = b;
+      dirty[t] = 0;
+    }
+    const Drawn& d = drawn[p];
+    bool reject = false;
+    if (d.bounded) {
+      const CompareFunc f = s.depth->func;
+      // less: new < old fails for all when lo >= max; less_equal: when lo > max.
+      if (f == CompareFunc::kLess) reject = !stored_less(d.lo, bound[t]);
+      if (f == CompareFunc::kLessEqual) reject = stored_less(bound[t], d.lo);
+      if (f == CompareFunc::kGreater) reject = !stored_less(bound[t], d.hi);
+      if (f == CompareFunc::kGreaterEqual) reject = stored_less(d.hi, bound[t]);
+    }
+    checked[t] = p + 1;
+    rejected[t] = reject ? 1 : 0;
+    if (reject)
+      n_hiz.fetch_add(1, std::memory_order_relaxed);
+    return reject;
+  };
+
+  // ---- phase 2: depth and attributes of fragment i
+  const auto shade = [&](std::size_t i) {
+    const Fragment& f = cover[i];
+    const std::size_t p = f.prim;
+    const PreparedPrimitive& pr = ps.primitives[p];
+    const Drawn& d = drawn[p];
+    const Source& src = sources[p];
+    PipeFragment& out = result.fragments[i];
+    const Vec2 centre = pixel_center(f.x, f.y);
+    const auto point_of = [&](Location l) {
+      if (l == Location::kCentroid && f.centroid)
+        return sample_position(f.x, f.y, f.centroid->offset);
+      if (l == Location::kSample && f.sample)
+        return sample_position(f.x, f.y, pattern.positions[*f.sample]);
+      return centre;
+    };
+    // rule: PIPE.INTERP.LOCATION
+    const Location first = nattr > 0 ? s.attributes[0].location : Location::kCenter;
+    out.bary = eval_bary(pr.type, pr.v, point_of(first));
+    const auto interpolate = [&]() {
+      n_attr.fetch_add(nattr, std::memory_order_relaxed);
+      out.attr.reserve(nattr);
+      for (std::size_t a = 0; a < nattr; ++a) {
+        const AttributeDecl& decl = s.attributes[a];
+        const Barycentrics b =
+            decl.location == first ? *out.bary : eval_bary(pr.type, pr.v, point_of(decl.location));
+        switch (decl.interpolation) {
+          case Interpolation::kPerspective:
+            out.attr.push_back(interpolate_perspective(b, d.a[a], d.w, src.flat[a]));
+            break;
+          case Interpolation::kLinear:
+            out.attr.push_back(interpolate_linear(b, d.a[a]));
+            break;
+          case Interpolation::kFlat:
+            out.attr.push_back(src.flat[a]);
+            break;
+        }
+      }
+    };
+    // rule: PIPE.OPT.EARLY_Z
+    if (!o.early_z)
+      interpolate();  // late: attributes first, dropped below if the fragment is killed
+    if (s.depth && !f.helper) {
+      // rule: PIPE.DEPTH.INTERP, PIPE.DEPTH.TEST, PIPE.DEPTH.WRITE
+      const std::size_t t = tile_of(f.x, f.y);
+      out.passed = 0;
+      if (!(use_hiz && hiz_rejects(p, t))) {
+        for (std::uint32_t k = 0; k < nsamples; ++k) {
+          if ((f.mask & (1u << k)) == 0)
+            continue;
+          n_depth.fetch_add(1, std::memory_order_relaxed);
+          const Barycentrics b =
+              eval_bary(pr.type, pr.v, sample_position(f.x, f.y, pattern.positions[k]));
+          const DepthValue dv =
+              to_depth_format(interpolate_depth(b, d.z), vp.min_depth, vp.max_depth, fmt);
+          out.depth.push_back(dv);
+          const std::size_t si = sample_index(f.x, f.y, k);
+          const DepthValue old = (!cleared.empty() && cleared[t]) ? clear : result.depth_buffer[si];
+          if (depth_test(s.depth->func, dv, old, fmt)) {
+            out.passed |= 1u << k;
+            if (s.depth->write) {
+              materialize(t);
+              result.depth_buffer[si] = dv;
+              if (use_hiz)
+                dirty[t] = 1;
+            }
+          }
+        }
+      }
+      // rule: PIPE.DEPTH.KILL
+      if (out.passed == 0) {
+        out.depth.clear();
+        out.attr.clear();
+        out.bary.reset();
+        return;
+      }
+    }
+    if (o.early_z)
+      interpolate();
+  };
+
+  // rule: PIPE.OPT.TILES, PIPE.OPT.THREADS
+  if (o.binning && s.depth) {
+    // Bin the fragments by tile (each bin in fragment order), then shade tile by tile; tiles
+    // share no sample, so they may run on several threads.
+    std::vector<std::vector<std::size_t>> bins(ntiles);
+    for (std::size_t i = 0; i < cover.size(); ++i)
+      bins[tile_of(cover[i].x, cover[i].y)].push_back(i);
+    run_units(ntiles, std::max(1u, o.render.threads), [&](std::size_t t) {
+      for (const std::size_t i : bins[t])
+        shade(i);
+    });
+  } else {
+    for (std::size_t i = 0; i < cover.size(); ++i)
+      shade(i);
+  }
+  if (!cleared.empty())
+    for (std::size_t t = 0; t < ntiles; ++t) {
+      result.stats.tiles_never_written += cleared[t];
+      materialize(t);
+    }
+  result.stats.hiz_rejected = n_hiz.load();
+  result.stats.depth_samples = n_depth.load();
+  result.stats.attributes = n_attr.load();
   return result;
 }
 

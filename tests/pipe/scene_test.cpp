@@ -197,7 +197,9 @@ TEST(PipeScene, DepthIsTestedPerSample) {
   const PipeResult r = run(s);
   bool mixed = false;
   for (const auto& f : r.fragments) {
-    EXPECT_EQ(f.depth.size(), static_cast<std::size_t>(std::popcount(f.f.mask)));
+    // rule: PIPE.DEPTH.KILL
+    EXPECT_EQ(f.depth.size(),
+              f.passed == 0 ? 0u : static_cast<std::size_t>(std::popcount(f.f.mask)));
     if (f.f.prim == 1 && f.passed != 0 && f.passed != f.f.mask) mixed = true;
   }
   EXPECT_TRUE(mixed) << "some pixel should pass the test on some samples only";
@@ -300,6 +302,87 @@ TEST(PipeScene, ResultsDoNotDependOnTheTraversal) {
   const PipeResult a = run(s), b = run(s, plain);
   EXPECT_EQ(a.fragments, b.fragments);
   EXPECT_EQ(a.depth_buffer, b.depth_buffer);
+}
+
+// rule: PIPE.DEPTH.KILL, PIPE.OPT.EARLY_Z, PIPE.OPT.HIZ
+TEST(PipeScene, KilledFragmentsKeepTheirCoverageOnly) {
+  PipeScene s = scene(16, 16);  // one 16 x 16 tile
+  s.depth = DepthState{};
+  s.attributes = {AttributeDecl{"u", Interpolation::kLinear, Location::kCenter}};
+  // A full-target quad at depth 0.25, then a triangle behind it at 0.5.
+  PipePrimitive q0 = window_tri({0, 0}, {16, 0}, {0, 16}, {0.25f, 0.25f, 0.25f});
+  PipePrimitive q1 = window_tri({16, 0}, {16, 16}, {0, 16}, {0.25f, 0.25f, 0.25f});
+  PipePrimitive back = window_tri({0, 0}, {16, 0}, {0, 16}, {0.5f, 0.5f, 0.5f});
+  q0.attr = q1.attr = {{1}, {2}, {3}};
+  back.attr = {{4}, {5}, {6}};
+  s.primitives = {q0, q1, back};
+  for (const bool early : {true, false}) {
+    PipeOptions o;
+    o.early_z = early;
+    const PipeResult r = run(s, o);
+    std::size_t killed = 0;
+    for (const auto& f : r.fragments) {
+      if (f.f.prim == 2) {
+        ++killed;
+        EXPECT_EQ(f.passed, 0u);
+        EXPECT_EQ(f.f.mask, 1u);
+        EXPECT_TRUE(f.attr.empty());
+        EXPECT_TRUE(f.depth.empty());
+        EXPECT_FALSE(f.bary.has_value());
+      } else {
+        EXPECT_EQ(f.attr.size(), 1u);
+      }
+    }
+    // The 120 pixel centres strictly inside the half square (the 16 on the hypotenuse lie on a
+    // right edge, which is not inclusive).
+    EXPECT_EQ(killed, 120u);
+    // Hi-Z killed the back triangle in its one tile without computing a depth; early-Z
+    // interpolated only the quad's attributes.
+    EXPECT_EQ(r.stats.hiz_rejected, 1u);
+    EXPECT_EQ(r.stats.depth_samples, 256u);
+    EXPECT_EQ(r.stats.attributes, early ? 256u : 376u);
+    const PipeResult plain = run(s, PipeOptions::plain());
+    EXPECT_EQ(plain.stats.hiz_rejected, 0u);
+    EXPECT_EQ(plain.stats.depth_samples, 376u);
+    EXPECT_EQ(plain.fragments, r.fragments);
+    EXPECT_EQ(plain.depth_buffer, r.depth_buffer);
+  }
+}
+
+// rule: PIPE.OPT.TILES, PIPE.OPT.HIZ, PIPE.OPT.EARLY_Z, PIPE.OPT.FAST_CLEAR, PIPE.OPT.THREADS
+TEST(PipeScene, EveryOptimizationGivesThePlainResult) {
+  PipeScene s = scene(80, 48);
+  s.base.msaa.pattern = standard_pattern(4);
+  s.depth = DepthState{};
+  s.depth->format = DepthFormat::kD16;
+  s.attributes = {AttributeDecl{"u", Interpolation::kPerspective, Location::kCentroid}};
+  // Overlapping triangles front to back and back to front, one crossing the near plane.
+  const float zs[] = {0.9f, 0.2f, 0.6f, 0.1f, 0.95f};
+  for (int i = 0; i < 5; ++i) {
+    const float o = static_cast<float>(i) * 0.1f;
+    PipePrimitive p = clip_tri({-0.9f + o, -0.8f, zs[i], 1}, {0.9f, -0.7f + o, zs[i] * 0.5f, 1.5f},
+                               {o - 0.2f, 0.9f, i == 2 ? -0.4f : zs[i], 1});
+    p.attr = {{0}, {static_cast<float>(i)}, {10}};
+    s.primitives.push_back(p);
+  }
+  const PipeResult plain = run(s, PipeOptions::plain());
+  for (const CompareFunc f : {CompareFunc::kLess, CompareFunc::kGreaterEqual}) {
+    s.depth->func = f;
+    const PipeResult ref = run(s, PipeOptions::plain());
+    for (int mask = 0; mask < 32; ++mask) {
+      PipeOptions o;
+      o.binning = (mask & 1) != 0;
+      o.hiz = (mask & 2) != 0;
+      o.early_z = (mask & 4) != 0;
+      o.fast_clear = (mask & 8) != 0;
+      o.tile_size = (mask & 16) != 0 ? 32 : 16;
+      o.render.threads = (mask & 1) != 0 ? 3 : 1;
+      const PipeResult r = run(s, o);
+      EXPECT_EQ(r.fragments, ref.fragments) << "options " << mask;
+      EXPECT_EQ(r.depth_buffer, ref.depth_buffer) << "options " << mask;
+    }
+  }
+  EXPECT_FALSE(plain.fragments.empty());
 }
 
 }  // namespace

@@ -232,21 +232,44 @@ struct PipeFragment {
   Fragment f;                        // f.prim is the index of the source primitive
   std::optional<std::uint32_t> part; // fan triangle or clipped segment index, when clipped
   std::optional<Barycentrics> bary;  // at the attribute location of the first attribute, or centre
+  // A fragment none of whose samples passes the depth test is killed (PIPE.DEPTH.KILL):
+  // passed == 0 and no bary, attr or depth. Helper lanes are never depth-tested.
   std::vector<float> attr;           // one per declared attribute
   std::vector<DepthValue> depth;     // one per sample of f.mask (ascending sample index)
   std::uint32_t passed = 0;          // samples that passed the depth test (== mask without depth)
   friend bool operator==(const PipeFragment&, const PipeFragment&) = default;
 };
 
+// What the optimizations saved (not part of the result: it differs between options).
+struct PipeStats {
+  std::uint64_t hiz_rejected = 0;       // (primitive, tile) pairs Hi-Z killed whole
+  std::uint64_t depth_samples = 0;      // sample depths computed
+  std::uint64_t attributes = 0;         // attribute values interpolated
+  std::uint64_t tiles_never_written = 0; // tiles fast clear filled only at the end
+};
+
 struct PipeResult {
   std::vector<PipeFragment> fragments;       // sorted by (prim, part, y, x, seg, sample)
   std::vector<DepthValue> depth_buffer;      // width * height * samples, row-major, sample-minor
   Effects effects;
+  PipeStats stats;
 };
 
-// Optimizations that never change a result (PIPE.OPT.*); all on by default.
+// Optimizations that never change a result (PIPE.OPT.*); all on by default. plain() turns
+// every one off: the reference path the properties compare them with.
 struct PipeOptions {
-  RenderOptions render;  // traversal and instruction set (threads: not used by the pipeline)
+  RenderOptions render;  // traversal and instruction set; threads shade tiles (binning only)
+  std::int32_t tile_size = 16;  // 16 or 32 px: the tiles of binning, fast clear and Hi-Z
+  bool binning = true;          // PIPE.OPT.TILES: depth and attributes computed tile by tile
+  bool hiz = true;              // PIPE.OPT.HIZ: per-tile depth bounds reject whole primitives
+  bool early_z = true;          // PIPE.OPT.EARLY_Z: depth test before attributes
+  bool fast_clear = true;       // PIPE.OPT.FAST_CLEAR: tiles cleared on their first write
+  [[nodiscard]] static PipeOptions plain() {
+    PipeOptions o;
+    o.render.traversal = Traversal::kPlain;
+    o.binning = o.hiz = o.early_z = o.fast_clear = false;
+    return o;
+  }
   // The most fragments (helper lanes included) a run may produce, and the most one primitive
   // may hold to sort them (SCENE.INPUT.LIMITS); beyond it run_pipeline returns an error.
   std::uint64_t max_fragments = std::uint64_t{1} << 26;
