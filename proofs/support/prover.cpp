@@ -9,6 +9,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <mutex>
 #include <string>
@@ -54,10 +55,14 @@ private:
 // The solver used for every query: normalise to a sum of monomials first (`som`), which keeps
 // Z3 4.8.12's integer arithmetic from hanging on the products of the edge function (pitfall 3),
 // then the default SMT core.
-z3::solver make_solver(z3::context& ctx) {
+// Floating-point queries (Solver::kFloatingPoint) go to the QF_FP tactic instead, which
+// bit-blasts them: seconds where the SMT core's floating-point theory takes minutes.
+z3::solver make_solver(z3::context& ctx, Solver kind) {
   z3::params simp(ctx);
   simp.set("som", true);
-  z3::tactic t = z3::with(z3::tactic(ctx, "simplify"), simp) & z3::tactic(ctx, "smt");
+  z3::tactic t = kind == Solver::kFloatingPoint
+                     ? z3::tactic(ctx, "simplify") & z3::tactic(ctx, "qffp")
+                     : z3::with(z3::tactic(ctx, "simplify"), simp) & z3::tactic(ctx, "smt");
   z3::solver s = t.mk_solver();
   z3::params p(ctx);
   p.set("timeout", static_cast<unsigned>(query_timeout_seconds() * 1000.0));
@@ -102,6 +107,37 @@ std::string fixed_decimal(z3::context& ctx, const z3::expr& raw_value, int frac_
   return s + " " + unit;
 }
 
+// Returns an IEEE-754 value of model m as "<decimal> (<hexadecimal>)", for the float and double
+// formats (other formats as their IEEE bits).
+std::string float_value(const z3::model& m, const z3::expr& e) {
+  z3::context& ctx = e.ctx();
+  if (m.eval(z3::expr(ctx, Z3_mk_fpa_is_nan(ctx, e)), true).is_true())
+    return "NaN";
+  const z3::expr bits = m.eval(z3::expr(ctx, Z3_mk_fpa_to_ieee_bv(ctx, e)), true);
+  std::uint64_t u = 0;
+  if (!bits.is_numeral_u64(u))
+    return bits.to_string();
+  const unsigned ebits = e.get_sort().fpa_ebits();
+  const unsigned sbits = e.get_sort().fpa_sbits();
+  char buf[96];
+  if (ebits == 11 && sbits == 53) {
+    double d = 0.0;
+    static_assert(sizeof d == sizeof u);
+    std::memcpy(&d, &u, sizeof d);
+    std::snprintf(buf, sizeof buf, "%.17g (%a)", d, d);
+  } else if (ebits == 8 && sbits == 24) {
+    const auto u32 = static_cast<std::uint32_t>(u);
+    float f = 0.0f;
+    static_assert(sizeof f == sizeof u32);
+    std::memcpy(&f, &u32, sizeof f);
+    std::snprintf(buf, sizeof buf, "%.9g (%a)", static_cast<double>(f),
+                  static_cast<double>(f));
+  } else {
+    std::snprintf(buf, sizeof buf, "IEEE bits 0x%llx", static_cast<unsigned long long>(u));
+  }
+  return buf;
+}
+
 } // namespace
 
 const char* to_string(Status s) {
@@ -142,6 +178,8 @@ std::string solver_version() {
 }
 
 std::string show_value(const z3::model& m, const z3::expr& e, Unit unit) {
+  if (unit == Unit::kFloat)
+    return float_value(m, e);
   const z3::expr v = m.eval(e, true);
   z3::context& ctx = e.ctx();
   if (unit == Unit::kBool) {
@@ -161,6 +199,7 @@ std::string show_value(const z3::model& m, const z3::expr& e, Unit unit) {
     return raw + " raw [" + fixed_decimal(ctx, v, 2 * kSubpixelBits, "px^2") + "]";
   case Unit::kInteger:
   case Unit::kBool:
+  case Unit::kFloat:
     break;
   }
   return raw;
@@ -187,6 +226,7 @@ Prover::Prover(Domain& dom, std::string obligation, std::string rules,
       break;
     case Unit::kInteger:
     case Unit::kBool:
+    case Unit::kFloat:
       std::cout << c.value;
       break;
     }
@@ -196,6 +236,16 @@ Prover::Prover(Domain& dom, std::string obligation, std::string rules,
   for (const std::string& a : assumes)
     std::cout << " " << a;
   std::cout << "\n";
+  std::cout.flush();
+}
+
+void Prover::use_solver(Solver s) {
+  solver_ = s;
+  std::cout << "  solver for the following theorems: "
+            << (s == Solver::kFloatingPoint
+                    ? "IEEE-754 floating point (simplify then qffp, bit-blasting)"
+                    : "integer arithmetic (simplify:som then smt)")
+            << "\n";
   std::cout.flush();
 }
 
@@ -218,7 +268,7 @@ Status Prover::prove(const std::string& name, const std::vector<z3::expr>& hypot
   std::vector<std::string> cex;
 
   // 1. The hypotheses must be satisfiable, or the theorem would hold vacuously.
-  z3::solver pre = make_solver(ctx);
+  z3::solver pre = make_solver(ctx, solver_);
   for (const z3::expr& h : hypotheses)
     pre.add(h);
   const CheckOutcome sat_pre = check(pre, ctx);
@@ -231,7 +281,7 @@ Status Prover::prove(const std::string& name, const std::vector<z3::expr>& hypot
     z3::expr all = goal;
     for (const Obligation& o : obligations)
       all = all && o.holds;
-    z3::solver s = make_solver(ctx);
+    z3::solver s = make_solver(ctx, solver_);
     for (const z3::expr& h : hypotheses)
       s.add(h); // separately (proofs-notes pitfall 4)
     s.add(!all);

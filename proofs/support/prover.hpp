@@ -25,6 +25,13 @@ namespace rastrules::proofs {
 
 enum class Status { kProved, kRefuted, kUnknown };
 
+// How a theorem's query is solved.
+enum class Solver {
+  kArithmetic,    // simplify (som) then the SMT core: integer and real arithmetic (the default)
+  kFloatingPoint, // simplify then Z3's QF_FP tactic (bit-blasting to SAT): IEEE-754 terms,
+                  // bit-vectors and Booleans only (no integers or reals in the query)
+};
+
 [[nodiscard]] const char* to_string(Status s);
 
 // A named constant printed in the report header.
@@ -54,6 +61,9 @@ public:
   [[nodiscard]] Domain& domain() { return dom_; }
   [[nodiscard]] z3::context& ctx() { return dom_.ctx(); }
 
+  // Chooses the solver of the following theorems (and prints it in the report).
+  void use_solver(Solver s);
+
   // Adds a term to show in the counterexample of the next theorem.
   void watch(const std::string& name, const z3::expr& value, Unit unit);
 
@@ -75,6 +85,7 @@ public:
 
 private:
   Domain& dom_;
+  Solver solver_ = Solver::kArithmetic;
   std::string obligation_;
   std::vector<Watch> watches_;
   std::vector<std::pair<std::string, Status>> results_;

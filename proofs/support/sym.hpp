@@ -31,6 +31,7 @@ enum class Unit {
   kEdgeRaw,  // raw 32.16 edge value: also shown in pixel^2 (raw / 2^(2 kSubpixelBits))
   kInteger,  // a plain integer
   kBool,     // a Boolean
+  kFloat,    // an IEEE-754 floating-point term: shown as a decimal and a hexadecimal float
 };
 
 // A condition the modelled C++ evaluation needs (for example "this product fits int64_t").
@@ -86,6 +87,15 @@ public:
   z3::expr bool_var(const std::string& name) {
     z3::expr v = ctx_.bool_const(name.c_str());
     dom_register(name, v, Unit::kBool);
+    return v;
+  }
+
+  // Returns a fresh IEEE-754 floating-point variable with ebits exponent and sbits significand
+  // bits (11, 53: double; 8, 24: float). It ranges over every value of the format, NaN and
+  // infinities included; theorems state their input ranges as explicit hypotheses.
+  z3::expr fp_var(const std::string& name, unsigned ebits, unsigned sbits) {
+    z3::expr v = ctx_.fpa_const(name.c_str(), ebits, sbits);
+    dom_register(name, v, Unit::kFloat);
     return v;
   }
 
