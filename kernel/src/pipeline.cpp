@@ -12,6 +12,7 @@
 #include <string>
 #include <utility>
 
+#include "rastrules/formula/depth.hpp"
 #include "rastrules/formula/edge.hpp"
 #include "rastrules/msaa.hpp"
 
@@ -381,11 +382,12 @@ DepthValue to_depth_format(double z, float min_depth, float max_depth, DepthForm
   DepthValue v;
   switch (f) {
     case DepthFormat::kD16:
-      v.unorm = static_cast<std::uint32_t>(std::floor(z * 65535.0 + 0.5));
+    case DepthFormat::kD24: {
+      const int bits = f == DepthFormat::kD16 ? formula::kDepthD16Bits : formula::kDepthD24Bits;
+      v.unorm = static_cast<std::uint32_t>(std::floor(formula::unorm_rounding_argument(
+          z, static_cast<double>(formula::unorm_max(bits)))));
       break;
-    case DepthFormat::kD24:
-      v.unorm = static_cast<std::uint32_t>(std::floor(z * 16777215.0 + 0.5));
-      break;
+    }
     case DepthFormat::kD32F:
       v.f = static_cast<float>(z);
       break;

@@ -322,8 +322,8 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
   // rule: PIPE.VIEWPORT.SCISSOR
   const PixelRect scissor = viewport_scissor(vp);
 
-  // ---- phase 1: coverage, in (prim, part, y, x, seg, sample) order
-  std::vector<Fragment> cover;      // f.prim: the drawn primitive's index in ps
+  // ---- phase 1: coverage, in (prim, part, y, x, seg, sample) order, straight into the result
+  std::vector<Fragment>& cover = result.fragments;  // f.prim: the drawn primitive's index in ps
   for (std::size_t p = 0; p < ps.primitives.size(); ++p) {
     const auto emit = [&](const Fragment& f) {
       if (!scissor.contains(f.x, f.y))
@@ -344,18 +344,21 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
       return stop.error;
     }
   }
-  result.fragments.resize(cover.size());
-  for (std::size_t i = 0; i < cover.size(); ++i) {
-    PipeFragment& out = result.fragments[i];
-    out.f = cover[i];
-    const Source& src = sources[cover[i].prim];
-    out.f.prim = static_cast<std::uint32_t>(src.prim);
-    if (!s.base.msaa.has_centroid)
-      out.f.centroid.reset();
-    out.part = src.part;
-    out.passed = cover[i].mask;
-  }
   // rule: PIPE.EFFECTS.ON_DEMAND
+  // Window-space primitives are drawn one to one, so without clip space the drawn index is
+  // the scene's; without depth and attributes nothing else is computed.
+  if (fx.coverage_only())
+    return result;
+  std::vector<std::uint32_t> drawn_of(cover.size());
+  result.data.resize(cover.size());
+  for (std::size_t i = 0; i < cover.size(); ++i) {
+    Fragment& f = cover[i];
+    drawn_of[i] = f.prim;
+    const Source& src = sources[f.prim];
+    f.prim = static_cast<std::uint32_t>(src.prim);
+    result.data[i].part = src.part;
+    result.data[i].passed = f.mask;
+  }
   if (!fx.barycentrics)
     return result;
 
@@ -510,11 +513,11 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
   // ---- phase 2: depth and attributes of fragment i
   const auto shade = [&](std::size_t i) {
     const Fragment& f = cover[i];
-    const std::size_t p = f.prim;
+    const std::size_t p = drawn_of[i];
     const PreparedPrimitive& pr = ps.primitives[p];
     const Drawn& d = drawn[p];
     const Source& src = sources[p];
-    PipeFragment& out = result.fragments[i];
+    FragmentData& out = result.data[i];
     const Vec2 centre = pixel_center(f.x, f.y);
     const auto point_of = [&](Location l) {
       if (l == Location::kCentroid && f.centroid)
@@ -525,8 +528,8 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
     };
     // rule: PIPE.INTERP.LOCATION
     const Location first = nattr > 0 ? s.attributes[0].location : Location::kCenter;
-    out.bary = eval_bary(pr.type, pr.v, point_of(first));
     const auto interpolate = [&]() {
+      out.bary = eval_bary(pr.type, pr.v, point_of(first));
       n_attr.fetch_add(nattr, std::memory_order_relaxed);
       out.attr.reserve(nattr);
       for (std::size_t a = 0; a < nattr; ++a) {
@@ -608,6 +611,9 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
       result.stats.tiles_never_written += cleared[t];
       materialize(t);
     }
+  if (!s.base.msaa.has_centroid)
+    for (Fragment& f : cover)
+      f.centroid.reset();  // asked for by an attribute only: used above, not reported
   result.stats.hiz_rejected = n_hiz.load();
   result.stats.depth_samples = n_depth.load();
   result.stats.attributes = n_attr.load();

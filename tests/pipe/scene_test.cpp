@@ -38,6 +38,22 @@ PipePrimitive window_tri(FloatPoint a, FloatPoint b, FloatPoint c, std::array<fl
   return p;
 }
 
+// A fragment with its data, for reading tests (PipeResult keeps them in parallel arrays).
+struct Frag : FragmentData {
+  Fragment f;
+};
+std::vector<Frag> frags(const PipeResult& r) {
+  std::vector<Frag> v(r.fragments.size());
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    v[i].f = r.fragments[i];
+    if (!r.data.empty())
+      static_cast<FragmentData&>(v[i]) = r.data[i];
+    else
+      v[i].passed = r.fragments[i].mask;
+  }
+  return v;
+}
+
 PipeResult run(const PipeScene& s, const PipeOptions& o = {}) {
   auto r = run_pipeline(s, o);
   if (auto* e = std::get_if<SceneError>(&r)) {
@@ -57,7 +73,7 @@ SceneError run_error(const PipeScene& s) {
 
 std::set<std::tuple<std::uint32_t, std::int32_t, std::int32_t>> pixels(const PipeResult& r) {
   std::set<std::tuple<std::uint32_t, std::int32_t, std::int32_t>> s;
-  for (const auto& f : r.fragments) s.insert({f.f.prim, f.f.x, f.f.y});
+  for (const auto& f : r.fragments) s.insert({f.prim, f.x, f.y});
   return s;
 }
 
@@ -79,12 +95,9 @@ TEST(PipeScene, ClipSpaceTriangleCoversWhatItsWindowImageCovers) {
   k.height = 16;
   k.primitives.push_back(make_triangle({FloatPoint{2, 2}, FloatPoint{12, 4}, FloatPoint{4, 15}}));
   const auto kf = std::get<std::vector<Fragment>>(render(k));
-  ASSERT_EQ(kf.size(), rw.fragments.size());
-  for (std::size_t i = 0; i < kf.size(); ++i) {
-    EXPECT_EQ(rw.fragments[i].f, kf[i]);
-    EXPECT_FALSE(rw.fragments[i].bary.has_value());
-    EXPECT_TRUE(rw.fragments[i].depth.empty());
-  }
+  EXPECT_EQ(rw.fragments, kf);
+  EXPECT_TRUE(rw.data.empty());
+  EXPECT_EQ(rc.data.size(), rc.fragments.size());
 }
 
 // rule: PIPE.CLIP.POLYGON
@@ -96,7 +109,7 @@ TEST(PipeScene, NearClippedTriangleBecomesPartsThatCoverEachPixelOnce) {
   const PipeResult r = run(s);
   std::set<std::pair<std::int32_t, std::int32_t>> seen;
   std::set<std::uint32_t> parts;
-  for (const auto& f : r.fragments) {
+  for (const auto& f : frags(r)) {
     ASSERT_TRUE(f.part.has_value());
     parts.insert(*f.part);
     EXPECT_TRUE(seen.insert({f.f.x, f.f.y}).second) << "pixel drawn twice: " << f.f.x << "," << f.f.y;
@@ -115,7 +128,7 @@ TEST(PipeScene, NothingIsDrawnOutsideTheViewport) {
   s.primitives.push_back(clip_tri({-10, -10, 0.5f, 1}, {10, -10, 0.5f, 1}, {0, 10, 0.5f, 1}));
   const PipeResult r = run(s);
   EXPECT_EQ(r.fragments.size(), 64u);
-  for (const auto& f : r.fragments) {
+  for (const auto& f : frags(r)) {
     EXPECT_GE(f.f.x, 8);
     EXPECT_LT(f.f.x, 16);
     EXPECT_GE(f.f.y, 4);
@@ -135,7 +148,7 @@ TEST(PipeScene, FlatAttributesTakeTheProvokingVertex) {
     s.primitives.push_back(p);
     const PipeResult r = run(s);
     ASSERT_FALSE(r.fragments.empty());
-    for (const auto& f : r.fragments) {
+    for (const auto& f : frags(r)) {
       ASSERT_EQ(f.attr.size(), 2u);
       EXPECT_EQ(f.attr[0], pv == Provoking::kFirst ? 10.0f : 30.0f);
       EXPECT_GE(f.attr[1], 0.0f);
@@ -156,7 +169,7 @@ TEST(PipeScene, ZFightingHasADeterministicWinner) {
     s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.5f, 0.25f, 0.75f}));
     s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.5f, 0.25f, 0.75f}));
     const PipeResult r = run(s);
-    for (const auto& f : r.fragments) {
+    for (const auto& f : frags(r)) {
       if (f.f.prim == 0)
         EXPECT_EQ(f.passed, 1u);  // first: passes against the clear value 1.0
       else
@@ -173,7 +186,7 @@ TEST(PipeScene, NearerTriangleWinsAndTheBufferHoldsItsDepth) {
   s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.25f, 0.25f, 0.25f}));
   s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.75f, 0.75f, 0.75f}));  // behind
   const PipeResult r = run(s);
-  for (const auto& f : r.fragments) EXPECT_EQ(f.passed, f.f.prim == 0 ? 1u : 0u);
+  for (const auto& f : frags(r)) EXPECT_EQ(f.passed, f.f.prim == 0 ? 1u : 0u);
   const std::uint32_t quarter = to_depth_format(0.25, 0, 1, DepthFormat::kD16).unorm;
   EXPECT_EQ(r.depth_buffer[0].unorm, quarter);                         // pixel (0, 0)
   EXPECT_EQ(r.depth_buffer[7 * 8 + 7].unorm, 65535u);                  // pixel (7, 7): clear
@@ -182,7 +195,7 @@ TEST(PipeScene, NearerTriangleWinsAndTheBufferHoldsItsDepth) {
   s.depth->write = false;
   const PipeResult nw = run(s);
   for (const auto& v : nw.depth_buffer) EXPECT_EQ(v.unorm, 65535u);
-  for (const auto& f : nw.fragments) EXPECT_EQ(f.passed, 1u);
+  for (const auto& f : frags(nw)) EXPECT_EQ(f.passed, 1u);
 }
 
 // rule: PIPE.DEPTH.TEST
@@ -196,7 +209,7 @@ TEST(PipeScene, DepthIsTestedPerSample) {
   s.primitives.push_back(window_tri({0, 0}, {4, 0}, {0, 4}, {0.2f, 0.2f, 0.2f}));
   const PipeResult r = run(s);
   bool mixed = false;
-  for (const auto& f : r.fragments) {
+  for (const auto& f : frags(r)) {
     // rule: PIPE.DEPTH.KILL
     EXPECT_EQ(f.depth.size(),
               f.passed == 0 ? 0u : static_cast<std::size_t>(std::popcount(f.f.mask)));
@@ -217,7 +230,7 @@ TEST(PipeScene, SampleLocationNeedsSampleShading) {
   s.base.msaa.pattern = standard_pattern(4);
   s.base.msaa.shading = ShadingRate::kSample;
   const PipeResult r = run(s);
-  for (const auto& f : r.fragments) ASSERT_TRUE(f.f.sample.has_value());
+  for (const auto& f : frags(r)) ASSERT_TRUE(f.f.sample.has_value());
 }
 
 // rule: PIPE.INPUT.POSITION, PIPE.INPUT.ATTRIBUTES, PIPE.TRANSFORM.FLOAT32
@@ -256,7 +269,7 @@ TEST(PipeScene, PointsOutsideTheVolumeAreDiscardedAndLinesAreCut) {
   line.pos = {{-0.5f, 0.05f, -1, 1}, {0.5f, 0.05f, 1, 1}};  // crosses z = 0 half-way
   s.primitives.push_back(line);
   const PipeResult r = run(s);
-  for (const auto& f : r.fragments) {
+  for (const auto& f : frags(r)) {
     EXPECT_EQ(f.f.prim, 1u);
     EXPECT_EQ(f.part, std::optional<std::uint32_t>(0));
     EXPECT_GE(f.f.x, 7);  // the clipped line starts at the centre, x = 8
@@ -278,7 +291,7 @@ TEST(PipeScene, BiasMovesTrianglesButNotPoints) {
   s.primitives.push_back(pt);
   const PipeResult r = run(s);
   const std::uint32_t half = to_depth_format(0.5, 0, 1, DepthFormat::kD24).unorm;  // 2^23
-  for (const auto& f : r.fragments) {
+  for (const auto& f : frags(r)) {
     ASSERT_EQ(f.depth.size(), 1u);
     // r = fl32(1 / (2^24 - 1)) = 2^-24 exactly, so z = 0.5 + 1000 * 2^-24 and
     // floor(z * (2^24 - 1) + 0.5) = 2^23 + 1000 - 1000 * 2^-24 rounds down to 2^23 + 999.
@@ -301,6 +314,7 @@ TEST(PipeScene, ResultsDoNotDependOnTheTraversal) {
   plain.render.traversal = Traversal::kPlain;
   const PipeResult a = run(s), b = run(s, plain);
   EXPECT_EQ(a.fragments, b.fragments);
+  EXPECT_EQ(a.data, b.data);
   EXPECT_EQ(a.depth_buffer, b.depth_buffer);
 }
 
@@ -321,7 +335,7 @@ TEST(PipeScene, KilledFragmentsKeepTheirCoverageOnly) {
     o.early_z = early;
     const PipeResult r = run(s, o);
     std::size_t killed = 0;
-    for (const auto& f : r.fragments) {
+    for (const auto& f : frags(r)) {
       if (f.f.prim == 2) {
         ++killed;
         EXPECT_EQ(f.passed, 0u);
@@ -345,6 +359,7 @@ TEST(PipeScene, KilledFragmentsKeepTheirCoverageOnly) {
     EXPECT_EQ(plain.stats.hiz_rejected, 0u);
     EXPECT_EQ(plain.stats.depth_samples, 376u);
     EXPECT_EQ(plain.fragments, r.fragments);
+    EXPECT_EQ(plain.data, r.data);
     EXPECT_EQ(plain.depth_buffer, r.depth_buffer);
   }
 }
@@ -379,6 +394,7 @@ TEST(PipeScene, EveryOptimizationGivesThePlainResult) {
       o.render.threads = (mask & 1) != 0 ? 3 : 1;
       const PipeResult r = run(s, o);
       EXPECT_EQ(r.fragments, ref.fragments) << "options " << mask;
+      EXPECT_EQ(r.data, ref.data) << "options " << mask;
       EXPECT_EQ(r.depth_buffer, ref.depth_buffer) << "options " << mask;
     }
   }

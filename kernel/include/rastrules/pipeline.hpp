@@ -227,17 +227,17 @@ struct Effects {
 };
 [[nodiscard]] Effects effects_of(const PipeScene& s);
 
-// One fragment with what the scene asked for.
-struct PipeFragment {
-  Fragment f;                        // f.prim is the index of the source primitive
+// What a fragment of a pipeline scene carries besides its coverage (PipeResult::data[i] goes
+// with PipeResult::fragments[i]).
+// A fragment none of whose samples passes the depth test is killed (PIPE.DEPTH.KILL):
+// passed == 0 and no bary, attr or depth. Helper lanes are never depth-tested.
+struct FragmentData {
   std::optional<std::uint32_t> part; // fan triangle or clipped segment index, when clipped
-  std::optional<Barycentrics> bary;  // at the attribute location of the first attribute, or centre
-  // A fragment none of whose samples passes the depth test is killed (PIPE.DEPTH.KILL):
-  // passed == 0 and no bary, attr or depth. Helper lanes are never depth-tested.
+  std::optional<Barycentrics> bary;  // at the first attribute's location, or the pixel centre
   std::vector<float> attr;           // one per declared attribute
-  std::vector<DepthValue> depth;     // one per sample of f.mask (ascending sample index)
+  std::vector<DepthValue> depth;     // one per sample of the mask (ascending sample index)
   std::uint32_t passed = 0;          // samples that passed the depth test (== mask without depth)
-  friend bool operator==(const PipeFragment&, const PipeFragment&) = default;
+  friend bool operator==(const FragmentData&, const FragmentData&) = default;
 };
 
 // What the optimizations saved (not part of the result: it differs between options).
@@ -248,8 +248,13 @@ struct PipeStats {
   std::uint64_t tiles_never_written = 0; // tiles fast clear filled only at the end
 };
 
+// The result, as two parallel arrays so that a coverage-only scene costs what the kernel alone
+// costs (PIPE.EFFECTS.ON_DEMAND): fragments are the kernel's (SCENE.OUTPUT.FRAGMENTS, prim being
+// the scene's primitive index), sorted by (prim, part, y, x, seg, sample); data is empty when
+// the scene has no clip-space input, depth or attributes, else data[i] belongs to fragments[i].
 struct PipeResult {
-  std::vector<PipeFragment> fragments;       // sorted by (prim, part, y, x, seg, sample)
+  std::vector<Fragment> fragments;
+  std::vector<FragmentData> data;
   std::vector<DepthValue> depth_buffer;      // width * height * samples, row-major, sample-minor
   Effects effects;
   PipeStats stats;
