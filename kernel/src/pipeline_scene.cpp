@@ -355,6 +355,7 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
     Fragment& f = cover[i];
     drawn_of[i] = f.prim;
     const Source& src = sources[f.prim];
+    result.data[i].drawn = f.prim;
     f.prim = static_cast<std::uint32_t>(src.prim);
     result.data[i].part = src.part;
     result.data[i].passed = f.mask;
@@ -415,6 +416,15 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
       d.hi = to_depth_format(zhi + margin, vp.min_depth, vp.max_depth, fmt);
       d.bounded = true;
     }
+  }
+
+  result.drawn.reserve(drawn.size());
+  for (std::size_t p = 0; p < drawn.size(); ++p) {
+    const Source& src = sources[p];
+    result.drawn.push_back(DrawnPrimitive{ps.primitives[p].type,
+                                          static_cast<std::uint32_t>(src.prim), src.part,
+                                          ps.primitives[p].v, drawn[p].z, drawn[p].w, drawn[p].a,
+                                          src.flat});
   }
 
   // ---- the depth target: tiles, fast clear, Hi-Z (PIPE.OPT.*)

@@ -232,12 +232,26 @@ struct Effects {
 // A fragment none of whose samples passes the depth test is killed (PIPE.DEPTH.KILL):
 // passed == 0 and no bary, attr or depth. Helper lanes are never depth-tested.
 struct FragmentData {
+  std::uint32_t drawn = 0;           // index into PipeResult::drawn
   std::optional<std::uint32_t> part; // fan triangle or clipped segment index, when clipped
   std::optional<Barycentrics> bary;  // at the first attribute's location, or the pixel centre
   std::vector<float> attr;           // one per declared attribute
   std::vector<DepthValue> depth;     // one per sample of the mask (ascending sample index)
   std::uint32_t passed = 0;          // samples that passed the depth test (== mask without depth)
   friend bool operator==(const FragmentData&, const FragmentData&) = default;
+};
+
+// A primitive as drawn after clipping, divide, viewport, snapping and depth bias: what every
+// fragment's values were interpolated from (for explanations and exact re-computation).
+struct DrawnPrimitive {
+  PrimitiveType type = PrimitiveType::kTriangle;
+  std::uint32_t prim = 0;                  // the scene's primitive index
+  std::optional<std::uint32_t> part;
+  std::vector<Vec2> snapped;               // 3 (triangle), 2 (line), 1 (point), or a strip's
+  std::array<float, 3> z{};                // window depth of the first three vertices (biased)
+  std::array<float, 3> w{1.0f, 1.0f, 1.0f};  // clip w of the first three vertices
+  std::vector<std::array<float, 3>> attr;  // per attribute, the first three vertices' values
+  std::vector<float> flat;                 // per attribute, the provoking vertex's value
 };
 
 // What the optimizations saved (not part of the result: it differs between options).
@@ -255,6 +269,7 @@ struct PipeStats {
 struct PipeResult {
   std::vector<Fragment> fragments;
   std::vector<FragmentData> data;
+  std::vector<DrawnPrimitive> drawn;         // with depth or attributes: every drawn primitive
   std::vector<DepthValue> depth_buffer;      // width * height * samples, row-major, sample-minor
   Effects effects;
   PipeStats stats;
