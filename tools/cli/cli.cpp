@@ -34,6 +34,7 @@ void print_usage(std::FILE* out) {
       "  render SCENE.json [--fragments OUT.json] [--png OUT.png] [--scale N]\n"
       "         [--resolve OUT.png] [--max-fragments N] [--threads N]\n"
       "         [--traversal plain|fast] [--isa scalar|avx2|avx512|auto]\n"
+      "         [--png-depth] [--depth-out OUT.json]\n"
       "      Rasterize a scene (spec/scene.md). --fragments writes the fragment list,\n"
       "      sorted by (prim, y, x); --png draws the target magnified N times (default 32,\n"
       "      less for large targets; at most 4096 pixels a side) with the pixel grid, pixel\n"
@@ -48,12 +49,20 @@ void print_usage(std::FILE* out) {
       "      threads, the same bytes as with one (FAST.THREADS.DETERMINISTIC);\n"
       "      --traversal (default fast) and --isa (default auto: the widest the processor\n"
       "      runs) choose the coverage traversal, never the result (FAST.EQUALS.PLAIN).\n"
+      "      Pipeline scenes (SCENE.PIPELINE: clip-space \"pos\", \"transform\", \"viewport\",\n"
+      "      \"depth\", \"attributes\") go through the pipeline: fragments also carry \"part\",\n"
+      "      \"bary\", \"attr\", \"depth\" and \"passed\" as the scene asks\n"
+      "      (SCENE.OUTPUT.PIPELINE); --png-depth draws the final depth buffer in grey\n"
+      "      (black near, white far) instead of coverage; --depth-out writes it as JSON;\n"
+      "      --resolve writes the samples that passed the depth test.\n"
       "  explain SCENE.json --pixel X,Y [--json]\n"
       "      For every primitive: its snapped vertices, area, winding, culling, and for each\n"
       "      edge the exact edge value at the centre of pixel (X, Y), whether it is a top or\n"
       "      left edge, and the rule that decided; then whether the pixel is covered. For a\n"
       "      multisampled scene, the same for every sample of the pixel, then the coverage\n"
-      "      mask, the sample mask, the fragment's mask and the centroid branch.\n"
+      "      mask, the sample mask, the fragment's mask and the centroid branch. For a\n"
+      "      pipeline scene, the fragments run_pipeline produces at the pixel (part,\n"
+      "      barycentrics, attributes, depths, depth test).\n"
       "  showcase --out DIR\n"
       "      Render the built-in showcase scenes into DIR (scene, fragments and picture of\n"
       "      each, and the resolved target of multisampled ones), compare every one with\n"
@@ -93,21 +102,28 @@ int usage_error(std::string_view reason) {
   return kExitBadInput;
 }
 
-// rule: SCENE.INPUT.ERRORS
-std::optional<LoadedScene> load_scene(const std::string& path) {
+namespace {
+// Reads a scene file's text and parses it with read (read_scene or read_any_scene); on failure
+// prints the one-line error (parse errors have no field: the file is named instead).
+template <class Read>
+auto read_and_parse(const std::string& path, Read read) -> std::optional<decltype(read(std::string()))> {
   auto text = io::read_scene_file(path);
   if (auto* err = std::get_if<SceneError>(&text)) {
     error(err->what());
     return std::nullopt;
   }
-  auto scene = io::read_scene(std::get<std::string>(text));
+  auto scene = read(std::get<std::string>(text));
   if (auto* err = std::get_if<SceneError>(&scene)) {
-    // Parse errors have no field: name the file instead.
     error(err->field.empty() ? (path == "-" ? "<stdin>" : path) + ": " + err->message : err->what());
     return std::nullopt;
   }
+  return scene;
+}
+
+// Prepares a plain scene read from a file.
+std::optional<LoadedScene> prepare_loaded(Scene scene) {
   LoadedScene loaded;
-  loaded.scene = std::move(std::get<Scene>(scene));
+  loaded.scene = std::move(scene);
   auto prepared = prepare(loaded.scene);
   if (auto* err = std::get_if<SceneError>(&prepared)) {
     error(err->what());
@@ -115,6 +131,39 @@ std::optional<LoadedScene> load_scene(const std::string& path) {
   }
   loaded.prepared = std::move(std::get<PreparedScene>(prepared));
   return loaded;
+}
+}  // namespace
+
+// rule: SCENE.INPUT.ERRORS
+std::optional<std::variant<LoadedScene, pipe::PipeScene>> load_any_scene(const std::string& path) {
+  auto scene = read_and_parse(path, [](const std::string& t) { return io::read_any_scene(t); });
+  if (!scene) return std::nullopt;
+  if (auto* p = std::get_if<pipe::PipeScene>(&*scene)) return std::move(*p);
+  auto loaded = prepare_loaded(std::move(std::get<Scene>(*scene)));
+  if (!loaded) return std::nullopt;
+  return std::move(*loaded);
+}
+
+// rule: SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
+std::optional<pipe::PipeResult> run_pipeline_or_report(const pipe::PipeScene& scene,
+                                                       const RenderOptions& options,
+                                                       std::uint64_t max_fragments) {
+  pipe::PipeOptions o;
+  o.render = options;
+  o.max_fragments = max_fragments;
+  auto result = pipe::run_pipeline(scene, o);
+  if (auto* err = std::get_if<SceneError>(&result)) {
+    error(err->what());
+    return std::nullopt;
+  }
+  return std::move(std::get<pipe::PipeResult>(result));
+}
+
+// rule: SCENE.INPUT.ERRORS
+std::optional<LoadedScene> load_scene(const std::string& path) {
+  auto scene = read_and_parse(path, [](const std::string& t) { return io::read_scene(t); });
+  if (!scene) return std::nullopt;
+  return prepare_loaded(std::move(std::get<Scene>(*scene)));
 }
 
 OutputFile::~OutputFile() { discard(); }

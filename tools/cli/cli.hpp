@@ -10,8 +10,10 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
+#include "rastrules/pipeline.hpp"
 #include "rastrules/scene.hpp"
 
 namespace rastrules::cli {
@@ -40,8 +42,23 @@ struct LoadedScene {
 
 // Reads, parses and prepares a scene ("-" is standard input). On failure prints the one-line
 // error (`rastrules: error: FIELD: PROBLEM`) and returns nullopt.
+// A pipeline scene (SCENE.PIPELINE: "pos", "depth", "attributes", ...) is bad input here, named
+// by its first pipeline key: only render and explain read pipeline scenes.
 // rule: SCENE.INPUT.ERRORS
 std::optional<LoadedScene> load_scene(const std::string& path);
+
+// Reads and parses any scene: a plain scene, prepared as load_scene() does, or a pipeline scene
+// (SCENE.PIPELINE) as read, for rastrules::pipe::run_pipeline() to validate and render. On
+// failure prints the one-line error and returns nullopt.
+// rule: SCENE.INPUT.ERRORS
+std::optional<std::variant<LoadedScene, pipe::PipeScene>> load_any_scene(const std::string& path);
+
+// Runs the pipeline on a scene read by load_any_scene(); on bad input (run_pipeline's SceneError,
+// also more than max_fragments fragments) prints the one-line error and returns nullopt.
+// rule: SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
+std::optional<pipe::PipeResult> run_pipeline_or_report(const pipe::PipeScene& scene,
+                                                       const RenderOptions& options,
+                                                       std::uint64_t max_fragments);
 
 // An output file written under a temporary name and renamed into place by commit(), so that
 // a failed run leaves no output file; "-" writes to standard output; an existing path that is

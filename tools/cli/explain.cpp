@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli.hpp"
+#include "rastrules/io/fragment_json.hpp"
 #include "rastrules/io/scene_json.hpp"
 #include "rastrules/line_aa.hpp"
 #include "rastrules/line_aliased.hpp"
@@ -777,6 +778,118 @@ void print_json(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
   std::fputs((doc.dump(2) + "\n").c_str(), stdout);
 }
 
+// rule: SCENE.OUTPUT.PIPELINE
+// A pipeline scene at one pixel: the fragments run_pipeline produced there, with what each
+// carries and the drawn primitive (after clipping, divide, viewport, snapping and depth bias)
+// it was interpolated from. Coverage itself is the kernel's; no edge values are shown.
+int explain_pipeline(const pipe::PipeScene& scene, const pipe::PipeResult& result, std::int32_t x,
+                     std::int32_t y, bool as_json) {
+  const bool has_data = !result.data.empty();
+  if (has_data && result.data.size() != result.fragments.size()) {
+    return error("internal error: run_pipeline's fragment data do not match its fragments");
+  }
+  std::vector<Fragment> here;
+  std::vector<pipe::FragmentData> here_data;
+  for (std::size_t i = 0; i < result.fragments.size(); ++i) {
+    const Fragment& f = result.fragments[i];
+    if (f.x != x || f.y != y) continue;
+    here.push_back(f);
+    if (has_data) here_data.push_back(result.data[i]);
+  }
+  std::vector<std::uint32_t> covering;
+  for (std::size_t i = 0; i < here.size(); ++i) {
+    const std::uint32_t passed = has_data ? here_data[i].passed : here[i].mask;
+    if (passed != 0 && (covering.empty() || covering.back() != here[i].prim)) covering.push_back(here[i].prim);
+  }
+  const io::PipeOutputFields fields = io::pipe_output_fields(scene);
+  const std::uint32_t n = scene.base.msaa.count();
+  const auto drawn_of = [&](std::size_t i) -> const pipe::DrawnPrimitive* {
+    if (!has_data || here_data[i].drawn >= result.drawn.size()) return nullptr;
+    return &result.drawn[here_data[i].drawn];
+  };
+  if (as_json) {
+    const std::optional<std::string> text = io::pipe_fragments_to_json(here, here_data, fields);
+    if (!text) return error("internal error: run_pipeline's fragments do not match the scene");
+    ojson doc;
+    doc["target"] = {{"width", scene.base.width}, {"height", scene.base.height}};
+    doc["pixel"] = {x, y};
+    doc["pipeline"] = true;
+    doc["samples"] = n;
+    if (scene.depth) {
+      doc["depth"] = {{"format", io::depth_format_name(scene.depth->format)},
+                      {"func", io::compare_func_name(scene.depth->func)}};
+    }
+    doc["fragments"] = ojson::parse(*text)["fragments"];
+    for (std::size_t i = 0; i < here.size(); ++i) {
+      const pipe::DrawnPrimitive* d = drawn_of(i);
+      if (d == nullptr) continue;
+      ojson snapped = ojson::array();
+      for (const Vec2& v : d->snapped) snapped.push_back(point_json(v));
+      doc["fragments"][i]["drawn"] = {{"type", to_string(d->type)}, {"snapped_raw", snapped},
+                                      {"z", d->z}, {"w", d->w}};
+    }
+    doc["covered_by"] = covering;
+    std::fputs((doc.dump(2) + "\n").c_str(), stdout);
+    return kExitOk;
+  }
+  std::string out = "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") of a " +
+                    std::to_string(scene.base.width) + "x" + std::to_string(scene.base.height) +
+                    " pipeline scene (SCENE.PIPELINE): " + std::to_string(here.size()) +
+                    (here.size() == 1 ? " fragment" : " fragments") +
+                    " (coverage after transform, clipping, divide, viewport and snapping)\n";
+  for (std::size_t i = 0; i < here.size(); ++i) {
+    const Fragment& f = here[i];
+    const pipe::FragmentData* data = has_data ? &here_data[i] : nullptr;
+    out += "primitives[" + std::to_string(f.prim) + "]";
+    if (data != nullptr && data->part) out += " part " + std::to_string(*data->part);
+    if (f.seg) out += " seg " + std::to_string(*f.seg);
+    if (f.sample) out += " sample " + std::to_string(*f.sample);
+    out += f.helper ? ": helper lane" : ": mask " + mask_text(f.mask, n);
+    out += "\n";
+    if (const pipe::DrawnPrimitive* d = drawn_of(i)) {
+      std::string vs, zs, ws;
+      for (const Vec2& v : d->snapped) vs += (vs.empty() ? "" : ", ") + point_px(v);
+      for (std::size_t k = 0; k < std::min<std::size_t>(d->snapped.size(), 3); ++k) {
+        zs += (k == 0 ? "" : ", ") + io::format_float(d->z[k]);
+        ws += (k == 0 ? "" : ", ") + io::format_float(d->w[k]);
+      }
+      out += "  drawn " + std::string(to_string(d->type)) + ": snapped " + vs + ", window z [" + zs +
+             "], w [" + ws + "]\n";
+    }
+    if (data == nullptr) continue;
+    if (data->bary) {
+      const pipe::Barycentrics& b = *data->bary;
+      out += "  barycentrics (PIPE.BARY.EXACT): e = [" + std::to_string(b.e[0]) + ", " +
+             std::to_string(b.e[1]) + ", " + std::to_string(b.e[2]) + "], A = " +
+             std::to_string(b.area) + " (e0 + e1 + e2 = A)\n";
+    }
+    for (std::size_t k = 0; k < scene.attributes.size() && k < data->attr.size(); ++k) {
+      const pipe::AttributeDecl& a = scene.attributes[k];
+      out += "  attr " + io::printable(a.name) + " = " + io::format_float(data->attr[k]) + " (" +
+             std::string(io::interpolation_name(a.interpolation)) + ", " +
+             std::string(io::location_name(a.location)) + ")\n";
+    }
+    if (scene.depth) {
+      const bool killed = !f.helper && data->passed == 0;
+      std::string depths;
+      for (const pipe::DepthValue& d : data->depth) {
+        depths += (depths.empty() ? "" : ", ") + io::depth_text(d, scene.depth->format);
+      }
+      out += killed ? std::string("  killed: no sample passed the depth test (PIPE.DEPTH.KILL)")
+                    : "  depth [" + depths + "] (" + std::string(io::depth_format_name(scene.depth->format)) +
+                          "), passed " + mask_text(data->passed, n);
+      out += " (depth.func " + std::string(io::compare_func_name(scene.depth->func)) +
+             ", PIPE.DEPTH.TEST)\n";
+    }
+  }
+  std::string list;
+  for (const std::uint32_t p : covering) list += (list.empty() ? "" : ", ") + std::to_string(p);
+  out += "covered by: " + (list.empty() ? std::string("nothing") : "primitives " + list) +
+         (scene.depth ? " (samples that passed the depth test)\n" : "\n");
+  std::fputs(out.c_str(), stdout);
+  return kExitOk;
+}
+
 }  // namespace
 
 int run_explain(const Args& args) {
@@ -816,10 +929,23 @@ int run_explain(const Args& args) {
     return usage_error("--pixel needs two integers X,Y in [0, " + std::to_string(kMaxTargetSide - 1) + "]");
   }
 
-  const std::optional<LoadedScene> loaded = load_scene(*scene_path);
-  if (!loaded) return kExitBadInput;
+  const auto any = load_any_scene(*scene_path);
+  if (!any) return kExitBadInput;
   const auto x = static_cast<std::int32_t>(*px_x);
   const auto y = static_cast<std::int32_t>(*px_y);
+  // rule: SCENE.OUTPUT.PIPELINE
+  if (const auto* pipeline = std::get_if<pipe::PipeScene>(&*any)) {
+    const std::optional<pipe::PipeResult> result = run_pipeline_or_report(*pipeline, RenderOptions{},
+                                                                               io::kDefaultMaxFragments);
+    if (!result) return kExitBadInput;
+    if (x >= pipeline->base.width || y >= pipeline->base.height) {
+      return error("--pixel: (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
+                   std::to_string(pipeline->base.width) + "x" + std::to_string(pipeline->base.height) +
+                   " target");
+    }
+    return explain_pipeline(*pipeline, *result, x, y, as_json);
+  }
+  const LoadedScene* loaded = &std::get<LoadedScene>(*any);
   // rule: SCENE.INPUT.ERRORS
   if (x >= loaded->prepared.width || y >= loaded->prepared.height) {
     return error("--pixel: (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // rastrules render: the fragment list, the picture and the resolved target of a scene.
 // Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS, SCENE.OUTPUT.MSAA,
+//             SCENE.OUTPUT.PIPELINE (pipeline scenes through rastrules::pipe::run_pipeline),
 //             FAST.THREADS.DETERMINISTIC, FAST.ISA.DISPATCH (--isa)
 
 #include <algorithm>
@@ -25,10 +26,205 @@
 #include "rastrules/parallel.hpp"
 
 namespace rastrules::cli {
+namespace {
+
+// The outputs of one render, moved into place together: when one cannot be, the ones already
+// in place are removed (no partial result).
+struct Output {
+  OutputFile* file;
+  const std::optional<std::string>* path;
+};
+
+std::optional<std::string> commit_outputs(const std::vector<Output>& outputs) {
+  std::vector<std::string> committed;
+  for (const Output& o : outputs) {
+    if (!*o.path) continue;
+    if (auto err = o.file->commit()) {
+      std::error_code ec;
+      for (const std::string& done : committed) {
+        if (done != "-" && std::filesystem::is_regular_file(std::filesystem::symlink_status(done, ec))) {
+          std::filesystem::remove(done, ec);
+        }
+      }
+      return err;
+    }
+    committed.push_back(**o.path);
+  }
+  return std::nullopt;
+}
+
+// "render: N primitives, M fragments -> a, b" on standard output (unless an output is there).
+void print_summary(std::size_t primitives, std::uint64_t fragments, const std::vector<Output>& outputs) {
+  std::string names;
+  for (const Output& o : outputs) {
+    if (*o.path) names += (names.empty() ? " -> " : ", ") + **o.path;
+  }
+  std::printf("render: %zu primitives, %llu fragments%s\n", primitives,
+              static_cast<unsigned long long>(fragments), names.c_str());
+}
+
+// rule: MSAA.LIMITS
+// The resolve's sample buffer is checked before any work; resolve() checks it again.
+std::optional<std::string> resolve_too_large(std::int32_t width, std::int32_t height, std::uint32_t n) {
+  const std::int64_t samples = std::int64_t{width} * height * n;
+  if (samples <= kMaxResolveSamples) return std::nullopt;
+  return "--resolve: the " + std::to_string(width) + "x" + std::to_string(height) + " target with " +
+         std::to_string(n) + " samples has " + std::to_string(samples) + " samples, more than " +
+         std::to_string(kMaxResolveSamples) + " (limit MSAA.LIMITS)";
+}
+
+// Returns the picture's magnification (--scale, or the default for the target), or the error
+// when the picture would be too large.
+std::variant<int, std::string> picture_scale_for(std::int32_t width, std::int32_t height,
+                                                 std::optional<int> scale) {
+  const int s = scale ? *scale : io::default_picture_scale(width, height);
+  if (io::picture_fits(width, height, s)) return s;
+  return "--png: a picture of the " + std::to_string(width) + "x" + std::to_string(height) + " target" +
+         (scale ? " at --scale " + std::to_string(*scale) : std::string()) + " would be larger than " +
+         std::to_string(io::kMaxPictureSide) + " pixels a side";
+}
+
+// rule: MSAA.RESOLVE.AVERAGE
+// Resolves the fragments' samples and writes the RGBA PNG; returns the error, if any.
+std::optional<std::string> write_resolved(const PreparedScene& scene, const std::vector<Fragment>& fragments,
+                                          std::FILE* out, const std::string& path) {
+  const auto resolved = resolve(scene, fragments);
+  if (const auto* err = std::get_if<SceneError>(&resolved)) return "--resolve: " + err->what();
+  const ResolvedImage& r = std::get<ResolvedImage>(resolved);
+  std::vector<std::uint8_t> rgba;
+  rgba.reserve(r.pixels.size() * 4);
+  for (const Rgba8& px : r.pixels) rgba.insert(rgba.end(), px.begin(), px.end());
+  if (auto err = io::write_png_rgba(out, r.width, r.height, rgba)) return path + ": " + *err;
+  return std::nullopt;
+}
+
+// What `render` was asked for.
+struct RenderRequest {
+  std::optional<std::string> fragments_path, png_path, resolve_path, depth_out_path;
+  std::optional<int> scale;
+  bool png_depth = false;
+  std::uint64_t max_fragments = io::kDefaultMaxFragments;
+  RenderOptions options;
+  int to_stdout = 0;
+};
+
+// Returns the stored depth as a value in [0, 1] (d16 and d24: the UNORM value over 2^n - 1).
+double depth_01(const pipe::DepthValue& d, pipe::DepthFormat f) {
+  switch (f) {
+    case pipe::DepthFormat::kD16: return static_cast<double>(d.unorm) / 65535.0;
+    case pipe::DepthFormat::kD24: return static_cast<double>(d.unorm) / 16777215.0;
+    case pipe::DepthFormat::kD32F: return static_cast<double>(d.f);
+  }
+  return 0.0;
+}
+
+// rule: SCENE.OUTPUT.PIPELINE, SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
+// Renders a pipeline scene with run_pipeline: its fragments with the fields the scene asks for,
+// the coverage picture (or with --png-depth the depth buffer in grey), the resolved target of
+// the samples that passed the depth test, and with --depth-out the final depth buffer.
+int render_pipeline(const pipe::PipeScene& scene, const RenderRequest& rq) {
+  const Scene& base = scene.base;
+  if ((rq.png_depth || rq.depth_out_path) && !scene.depth) {
+    return error(std::string(rq.png_depth ? "--png-depth" : "--depth-out") +
+                 ": the scene has no \"depth\" (SCENE.PIPELINE)");
+  }
+  if (rq.resolve_path) {
+    if (auto err = resolve_too_large(base.width, base.height, base.msaa.count())) return error(*err);
+  }
+  // rule: SCENE.INPUT.LIMITS
+  // run_pipeline stops at the first fragment beyond the limit (and at a primitive that would
+  // hold more than it to sort them); its list is checked again here.
+  const std::optional<pipe::PipeResult> result = run_pipeline_or_report(scene, rq.options, rq.max_fragments);
+  if (!result) return kExitBadInput;
+  if (result->fragments.size() > rq.max_fragments) {
+    return error("render: more than " + std::to_string(rq.max_fragments) +
+                 " fragments (limit SCENE.INPUT.LIMITS); raise it with --max-fragments N");
+  }
+  // The target, sample pattern and colours as a prepared scene without geometry: the picture's
+  // grid and sample points, and the resolve (run_pipeline has checked the scene).
+  Scene target = base;
+  target.primitives.clear();
+  auto prepared_or_error = prepare(target);
+  if (auto* err = std::get_if<SceneError>(&prepared_or_error)) return error(err->what());
+  PreparedScene& prepared = std::get<PreparedScene>(prepared_or_error);
+
+  int picture_scale = 0;
+  if (rq.png_path) {
+    const auto s = picture_scale_for(base.width, base.height, rq.scale);
+    if (const auto* err = std::get_if<std::string>(&s)) return error(*err);
+    picture_scale = std::get<int>(s);
+  }
+  OutputFile fragments_file, png_file, resolve_file, depth_file;
+  const std::vector<Output> outputs = {{&fragments_file, &rq.fragments_path},
+                                       {&png_file, &rq.png_path},
+                                       {&resolve_file, &rq.resolve_path},
+                                       {&depth_file, &rq.depth_out_path}};
+  for (const Output& o : outputs) {
+    if (!*o.path) continue;
+    if (auto err = o.file->open(**o.path)) return error(*err);
+  }
+  const std::vector<Fragment>& fragments = result->fragments;
+  // data is empty when the scene has no clip space, depth or attributes, else one per fragment.
+  const std::vector<pipe::FragmentData>& data = result->data;
+  if (!data.empty() && data.size() != fragments.size()) {
+    return error("internal error: run_pipeline returned " + std::to_string(data.size()) +
+                 " fragment data for " + std::to_string(fragments.size()) + " fragments");
+  }
+  if (rq.fragments_path) {
+    io::FragmentWriter writer(fragments_file.get(), io::pipe_output_fields(scene));
+    for (std::size_t i = 0; i < fragments.size(); ++i) {
+      if (!writer.add(fragments[i], data.empty() ? nullptr : &data[i])) {
+        return error("internal error: run_pipeline returned fragments out of (prim, part, y, x, "
+                     "seg, sample) order or without one value per attribute and one depth per "
+                     "covered sample");
+      }
+    }
+    if (!writer.finish()) return error(*rq.fragments_path + ": write failed");
+  }
+  const std::uint32_t samples = base.msaa.count();
+  if (rq.png_path) {
+    std::optional<io::Image> image;
+    if (rq.png_depth) {
+      std::vector<double> depth01;
+      depth01.reserve(result->depth_buffer.size());
+      for (const pipe::DepthValue& d : result->depth_buffer) depth01.push_back(depth_01(d, scene.depth->format));
+      image.emplace(io::draw_depth_picture(base.width, base.height, samples, depth01, picture_scale));
+    } else {
+      io::CoverageMap coverage(base.width, base.height);
+      if (io::samples_visible(prepared, picture_scale)) coverage.record_samples(samples);
+      for (const Fragment& f : fragments) coverage.add_fragment(f);
+      image.emplace(io::draw_picture(prepared, coverage, picture_scale));
+    }
+    if (auto err = io::write_png(png_file.get(), *image)) return error(*rq.png_path + ": " + *err);
+  }
+  // rule: MSAA.RESOLVE.AVERAGE, PIPE.DEPTH.TEST
+  // Only the samples that passed the depth test write their primitive's colour.
+  if (rq.resolve_path) {
+    prepared.primitives.resize(scene.primitives.size());
+    for (std::size_t p = 0; p < scene.primitives.size(); ++p) prepared.primitives[p].color = scene.primitives[p].base.color;
+    std::vector<Fragment> written = fragments;
+    if (!data.empty()) {
+      for (std::size_t i = 0; i < written.size(); ++i) written[i].mask = data[i].passed;
+    }
+    if (auto err = write_resolved(prepared, written, resolve_file.get(), *rq.resolve_path)) return error(*err);
+  }
+  if (rq.depth_out_path &&
+      !io::write_depth_buffer(depth_file.get(), base.width, base.height, samples, scene.depth->format,
+                              result->depth_buffer)) {
+    return error(*rq.depth_out_path + ": write failed (or run_pipeline's depth buffer is not "
+                 "width x height x samples)");
+  }
+  if (auto err = commit_outputs(outputs)) return error(*err);
+  if (rq.to_stdout == 0) print_summary(scene.primitives.size(), result->fragments.size(), outputs);
+  return kExitOk;
+}
+
+}  // namespace
 
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.INPUT.ERRORS
 int run_render(const Args& args) {
-  std::optional<std::string> scene_path, fragments_path, png_path, resolve_path;
+  std::optional<std::string> scene_path, fragments_path, png_path, resolve_path, depth_out_path;
+  bool png_depth = false;
   std::optional<int> scale;
   std::uint64_t max_fragments = io::kDefaultMaxFragments;
   RenderOptions options;
@@ -53,6 +249,11 @@ int run_render(const Args& args) {
     } else if (is("--resolve")) {
       resolve_path = value("--resolve");
       if (!resolve_path || resolve_path->empty()) return usage_error("--resolve needs a file name");
+    } else if (a == "--png-depth") {
+      png_depth = true;
+    } else if (is("--depth-out")) {
+      depth_out_path = value("--depth-out");
+      if (!depth_out_path || depth_out_path->empty()) return usage_error("--depth-out needs a file name");
     } else if (is("--scale")) {
       const std::optional<std::string> v = value("--scale");
       const auto n = v ? parse_int(*v, 1, io::kMaxPictureSide) : std::nullopt;
@@ -113,42 +314,41 @@ int run_render(const Args& args) {
                  cap + "\"");
   }
   if (!scene_path) return usage_error("render: missing SCENE.json");
-  if (!fragments_path && !png_path && !resolve_path) {
-    return usage_error("render: give --fragments OUT.json, --png OUT.png or --resolve OUT.png");
+  if (!fragments_path && !png_path && !resolve_path && !depth_out_path) {
+    return usage_error("render: give --fragments OUT.json, --png OUT.png, --resolve OUT.png or --depth-out OUT.json");
   }
   const int to_stdout = (fragments_path && *fragments_path == "-") + (png_path && *png_path == "-") +
-                        (resolve_path && *resolve_path == "-");
+                        (resolve_path && *resolve_path == "-") + (depth_out_path && *depth_out_path == "-");
   if (to_stdout > 1) {
-    return usage_error("render: only one of --fragments, --png and --resolve can be standard output");
+    return usage_error("render: only one of --fragments, --png and --resolve can be standard output (--depth-out counts too)");
   }
   if (scale && !png_path) return usage_error("render: --scale needs --png");
+  if (png_depth && !png_path) return usage_error("render: --png-depth needs --png");
 
-  const std::optional<LoadedScene> loaded = load_scene(*scene_path);
-  if (!loaded) return kExitBadInput;
+  const auto any = load_any_scene(*scene_path);
+  if (!any) return kExitBadInput;
+  // rule: SCENE.OUTPUT.PIPELINE
+  if (const auto* pipeline = std::get_if<pipe::PipeScene>(&*any)) {
+    return render_pipeline(*pipeline, RenderRequest{fragments_path, png_path, resolve_path, depth_out_path,
+                                                    scale, png_depth, max_fragments, options, to_stdout});
+  }
+  if (png_depth || depth_out_path) {
+    return error(std::string(png_depth ? "--png-depth" : "--depth-out") +
+                 ": a window-space scene without \"depth\" has no depth buffer (SCENE.PIPELINE)");
+  }
+  const LoadedScene* loaded = &std::get<LoadedScene>(*any);
   const PreparedScene& scene = loaded->prepared;
 
   int picture_scale = 0;
   if (png_path) {
-    picture_scale = scale ? *scale : io::default_picture_scale(scene.width, scene.height);
-    if (!io::picture_fits(scene.width, scene.height, picture_scale)) {
-      return error("--png: a picture of the " + std::to_string(scene.width) + "x" +
-                   std::to_string(scene.height) + " target" +
-                   (scale ? " at --scale " + std::to_string(*scale) : std::string()) +
-                   " would be larger than " + std::to_string(io::kMaxPictureSide) +
-                   " pixels a side");
-    }
+    const auto s = picture_scale_for(scene.width, scene.height, scale);
+    if (const auto* err = std::get_if<std::string>(&s)) return error(*err);
+    picture_scale = std::get<int>(s);
   }
 
   // rule: MSAA.LIMITS, MSAA.RESOLVE.AVERAGE
-  // The resolve's sample buffer is checked before any work; resolve() checks it again.
   if (resolve_path) {
-    const std::int64_t samples = std::int64_t{scene.width} * scene.height * scene.msaa.count();
-    if (samples > kMaxResolveSamples) {
-      return error("--resolve: the " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
-                   " target with " + std::to_string(scene.msaa.count()) + " samples has " +
-                   std::to_string(samples) + " samples, more than " +
-                   std::to_string(kMaxResolveSamples) + " (limit MSAA.LIMITS)");
-    }
+    if (auto err = resolve_too_large(scene.width, scene.height, scene.msaa.count())) return error(*err);
   }
 
   OutputFile fragments_file, png_file, resolve_file;
@@ -275,44 +475,15 @@ int run_render(const Args& args) {
   }
   // rule: MSAA.RESOLVE.AVERAGE
   if (resolve_path) {
-    const auto resolved = resolve(scene, all);
-    if (const auto* err = std::get_if<SceneError>(&resolved)) return error("--resolve: " + err->what());
-    const ResolvedImage& r = std::get<ResolvedImage>(resolved);
-    std::vector<std::uint8_t> rgba;
-    rgba.reserve(r.pixels.size() * 4);
-    for (const Rgba8& p : r.pixels) rgba.insert(rgba.end(), p.begin(), p.end());
-    if (auto err = io::write_png_rgba(resolve_file.get(), r.width, r.height, rgba)) {
-      return error(*resolve_path + ": " + *err);
-    }
+    if (auto err = write_resolved(scene, all, resolve_file.get(), *resolve_path)) return error(*err);
   }
   // No partial result: when one output cannot be moved into place, the ones already in place
   // are removed.
-  std::vector<std::string> committed;
-  auto commit = [&](OutputFile& file, const std::optional<std::string>& path) -> std::optional<std::string> {
-    if (!path) return std::nullopt;
-    if (auto err = file.commit()) {
-      std::error_code ec;
-      for (const std::string& done : committed) {
-        if (done != "-" && std::filesystem::is_regular_file(std::filesystem::symlink_status(done, ec))) {
-          std::filesystem::remove(done, ec);
-        }
-      }
-      return err;
-    }
-    committed.push_back(*path);
-    return std::nullopt;
-  };
-  if (auto err = commit(fragments_file, fragments_path)) return error(*err);
-  if (auto err = commit(png_file, png_path)) return error(*err);
-  if (auto err = commit(resolve_file, resolve_path)) return error(*err);
-  if (to_stdout == 0) {
-    std::string outputs;
-    for (const auto* p : {&fragments_path, &png_path, &resolve_path}) {
-      if (*p) outputs += (outputs.empty() ? " -> " : ", ") + **p;
-    }
-    std::printf("render: %zu primitives, %llu fragments%s\n", scene.primitives.size(),
-                static_cast<unsigned long long>(fragment_count), outputs.c_str());
-  }
+  const std::vector<Output> outputs = {{&fragments_file, &fragments_path},
+                                       {&png_file, &png_path},
+                                       {&resolve_file, &resolve_path}};
+  if (auto err = commit_outputs(outputs)) return error(*err);
+  if (to_stdout == 0) print_summary(scene.primitives.size(), fragment_count, outputs);
   return kExitOk;
 }
 

@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: MIT
 // The fragment list output.
 // Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.PRIM.LINE_STRIP,
-//             SCENE.OUTPUT.MSAA
+//             SCENE.OUTPUT.MSAA, SCENE.OUTPUT.PIPELINE
 
 #include "rastrules/io/fragment_json.hpp"
 
 #include <array>
+#include <bit>
 #include <charconv>
+#include <cmath>
 #include <string>
+#include <utility>
+
+#include "rastrules/io/scene_json.hpp"
 
 namespace rastrules::io {
 namespace {
@@ -21,10 +26,17 @@ void append_int(std::string& out, Int v) {
   out.append(buf.data(), r.ptr);
 }
 
-// Appends one fragment object on its own line.
-void append_fragment(std::string& out, const Fragment& f, bool first) {
+// Appends one fragment object on its own line, without its closing brace; part: the pipeline
+// fragment's part (SCENE.OUTPUT.PIPELINE), written after prim.
+void append_fragment_fields(std::string& out, const Fragment& f, bool first,
+                            std::optional<std::uint32_t> part = std::nullopt) {
   out += first ? "\n  {\"prim\": " : ",\n  {\"prim\": ";
   append_int(out, f.prim);
+  // rule: SCENE.OUTPUT.PIPELINE
+  if (part) {
+    out += ", \"part\": ";
+    append_int(out, *part);
+  }
   out += ", \"x\": ";
   append_int(out, f.x);
   out += ", \"y\": ";
@@ -56,6 +68,77 @@ void append_fragment(std::string& out, const Fragment& f, bool first) {
     const EvalDerivatives& d = *f.derivatives;
     out += ", \"ddx\": [" + format_sixteenths(d.ddx_x) + ", " + format_sixteenths(d.ddx_y) + "]";
     out += ", \"ddy\": [" + format_sixteenths(d.ddy_x) + ", " + format_sixteenths(d.ddy_y) + "]";
+  }
+}
+
+// Appends one fragment object on its own line.
+void append_fragment(std::string& out, const Fragment& f, bool first) {
+  append_fragment_fields(out, f, first);
+  out += "}";
+}
+
+// A float that reads back as itself: the shortest round-trip decimal (SCENE.NUMBER.FLOAT32);
+// NaN and infinities, which the kernel never produces, as strings so that the JSON stays valid.
+std::string value_text(float v) {
+  const std::string s = format_float(v);
+  return std::isfinite(v) ? s : "\"" + s + "\"";
+}
+
+// Whether a pipeline fragment (with data d, or none) matches the fields: one value per
+// attribute and one depth per sample of its mask, none of either for a fragment the depth test
+// killed (PIPE.DEPTH.KILL: passed 0 on a covered fragment); without data, no field asked for.
+bool matches(const Fragment& f, const pipe::FragmentData* d, const PipeOutputFields& fields) {
+  if (d == nullptr) return fields.attributes.empty() && !fields.depth;
+  if (fields.depth && !f.helper && d->passed == 0) return d->attr.empty() && d->depth.empty();
+  if (d->attr.size() != fields.attributes.size()) return false;
+  if (fields.depth) return d->depth.size() == static_cast<std::size_t>(std::popcount(f.mask));
+  return d->depth.empty();
+}
+
+// Whether pipeline fragment a (of part part_a) comes strictly before b: (prim, part, y, x, seg,
+// sample), a missing part first.
+bool pipe_before(const Fragment& a, std::optional<std::uint32_t> part_a, const Fragment& b,
+                 std::optional<std::uint32_t> part_b) {
+  if (a.prim != b.prim) return a.prim < b.prim;
+  if (part_a != part_b) return part_a < part_b;
+  return fragment_before(a, b);
+}
+
+// rule: SCENE.OUTPUT.PIPELINE
+void append_pipe_fragment(std::string& out, const Fragment& f, const pipe::FragmentData* d,
+                          bool first, const PipeOutputFields& fields) {
+  append_fragment_fields(out, f, first, d != nullptr ? d->part : std::nullopt);
+  if (d != nullptr && d->bary) {
+    out += ", \"bary\": [";
+    for (const std::int64_t e : d->bary->e) {
+      append_int(out, e);
+      out += ", ";
+    }
+    append_int(out, d->bary->area);
+    out += "]";
+  }
+  if (d == nullptr) {
+    out += "}";
+    return;
+  }
+  const bool killed = fields.depth && !f.helper && d->passed == 0;
+  if (!fields.attributes.empty() && !killed) {
+    out += ", \"attr\": {";
+    for (std::size_t k = 0; k < fields.attributes.size(); ++k) {
+      out += (k == 0 ? "" : ", ") + json_string(fields.attributes[k]) + ": " + value_text(d->attr[k]);
+    }
+    out += "}";
+  }
+  if (fields.depth) {
+    if (!killed) {
+      out += ", \"depth\": [";
+      for (std::size_t k = 0; k < d->depth.size(); ++k) {
+        out += (k == 0 ? "" : ", ") + depth_text(d->depth[k], *fields.depth);
+      }
+      out += "]";
+    }
+    out += ", \"passed\": ";
+    append_int(out, d->passed);
   }
   out += "}";
 }
@@ -104,6 +187,24 @@ FragmentWriter::FragmentWriter(std::FILE* out) : out_(out) {
   buffer_ += "{\"fragments\": [";
 }
 
+FragmentWriter::FragmentWriter(std::FILE* out, PipeOutputFields fields)
+    : FragmentWriter(out) {
+  fields_ = std::move(fields);
+}
+
+// rule: SCENE.OUTPUT.PIPELINE
+bool FragmentWriter::add(const Fragment& f, const pipe::FragmentData* data) {
+  const std::optional<std::uint32_t> part = data != nullptr ? data->part : std::nullopt;
+  if (count_ != 0 && !pipe_before(last_, last_part_, f, part)) return false;
+  if (!matches(f, data, fields_)) return false;
+  append_pipe_fragment(buffer_, f, data, count_ == 0, fields_);
+  last_ = f;
+  last_part_ = part;
+  ++count_;
+  if (buffer_.size() >= kFlushBytes) flush_buffer();
+  return true;
+}
+
 // rule: SCENE.OUTPUT.FRAGMENTS
 bool FragmentWriter::add(const Fragment& f) {
   if (count_ != 0 && !fragment_before(last_, f))
@@ -136,6 +237,65 @@ std::string fragments_to_json(const std::vector<Fragment>& fragments) {
   }
   out += fragments.empty() ? "]}\n" : "\n]}\n";
   return out;
+}
+
+PipeOutputFields pipe_output_fields(const pipe::PipeScene& s) {
+  PipeOutputFields fields;
+  for (const pipe::AttributeDecl& a : s.attributes) fields.attributes.push_back(a.name);
+  if (s.depth) fields.depth = s.depth->format;
+  return fields;
+}
+
+std::optional<std::string> pipe_fragments_to_json(const std::vector<Fragment>& fragments,
+                                                  const std::vector<pipe::FragmentData>& data,
+                                                  const PipeOutputFields& fields) {
+  if (!data.empty() && data.size() != fragments.size()) return std::nullopt;
+  const auto data_of = [&](std::size_t n) { return data.empty() ? nullptr : &data[n]; };
+  const auto part_of = [&](std::size_t n) {
+    return data.empty() ? std::optional<std::uint32_t>() : data[n].part;
+  };
+  std::string out = "{\"fragments\": [";
+  for (std::size_t n = 0; n < fragments.size(); ++n) {
+    if (n != 0 && !pipe_before(fragments[n - 1], part_of(n - 1), fragments[n], part_of(n))) {
+      return std::nullopt;
+    }
+    if (!matches(fragments[n], data_of(n), fields)) return std::nullopt;
+    append_pipe_fragment(out, fragments[n], data_of(n), n == 0, fields);
+  }
+  out += fragments.empty() ? "]}\n" : "\n]}\n";
+  return out;
+}
+
+// rule: SCENE.OUTPUT.PIPELINE
+std::string depth_text(const pipe::DepthValue& d, pipe::DepthFormat format) {
+  if (format == pipe::DepthFormat::kD32F) return value_text(d.f);
+  std::string out;
+  append_int(out, d.unorm);
+  return out;
+}
+
+// rule: SCENE.OUTPUT.PIPELINE
+bool write_depth_buffer(std::FILE* out, std::int32_t width, std::int32_t height,
+                        std::uint32_t samples, pipe::DepthFormat format,
+                        const std::vector<pipe::DepthValue>& buffer) {
+  const std::size_t row = static_cast<std::size_t>(width < 0 ? 0 : width) * samples;
+  if (height < 0 || buffer.size() != row * static_cast<std::size_t>(height)) return false;
+  std::string text = "{\"format\": \"" + std::string(depth_format_name(format)) +
+                     "\", \"width\": " + std::to_string(width) + ", \"height\": " +
+                     std::to_string(height) + ", \"samples\": " + std::to_string(samples) +
+                     ", \"depth\": [";
+  bool ok = true;
+  for (std::size_t i = 0; i < buffer.size(); ++i) {
+    text += i == 0 ? "\n  " : (i % row == 0 ? ",\n  " : ", ");
+    text += depth_text(buffer[i], format);
+    if (text.size() >= kFlushBytes) {
+      ok = std::fwrite(text.data(), 1, text.size(), out) == text.size() && ok;
+      text.clear();
+    }
+  }
+  text += buffer.empty() ? "]}\n" : "\n]}\n";
+  ok = std::fwrite(text.data(), 1, text.size(), out) == text.size() && ok;
+  return std::fflush(out) == 0 && ok;
 }
 
 }  // namespace rastrules::io

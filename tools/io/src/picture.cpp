@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 namespace rastrules::io {
@@ -306,6 +307,30 @@ Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int 
       const int xi = static_cast<int>(x + 0.5), yi = static_cast<int>(y + 0.5);
       img.fill_rect(xi - r, yi - r, xi + r + 1, yi + r + 1, c);
     }
+  }
+  return img;
+}
+
+Image draw_depth_picture(std::int32_t width, std::int32_t height, std::uint32_t samples,
+                         const std::vector<double>& depth01, int scale) {
+  const int s = scale;
+  Image img(width * s + 1, height * s + 1, kBackground);
+  const std::size_t n = samples;
+  for (std::int32_t j = 0; j < height; ++j) {
+    for (std::int32_t i = 0; i < width; ++i) {
+      const std::size_t base =
+          (static_cast<std::size_t>(j) * static_cast<std::size_t>(width) + static_cast<std::size_t>(i)) * n;
+      double sum = 0.0;
+      for (std::size_t k = 0; k < n && base + k < depth01.size(); ++k) {
+        sum += std::clamp(depth01[base + k], 0.0, 1.0);
+      }
+      const auto g = static_cast<std::uint8_t>(std::lround(255.0 * sum / static_cast<double>(n)));
+      img.fill_rect(i * s, j * s, i * s + s + 1, j * s + s + 1, Rgb{g, g, g});
+    }
+  }
+  if (s >= 3) {
+    for (std::int32_t i = 0; i <= width; ++i) img.fill_rect(i * s, 0, i * s + 1, img.height(), kGrid);
+    for (std::int32_t j = 0; j <= height; ++j) img.fill_rect(0, j * s, img.width(), j * s + 1, kGrid);
   }
   return img;
 }

@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: MIT
 // The scene reader (a strict, streaming SAX handler over nlohmann::json) and writer.
 // Implements: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS, SCENE.PRIM.POINT,
-//             SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.LINE_MODE, SCENE.MSAA
+//             SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.LINE_MODE, SCENE.MSAA,
+//             SCENE.PIPELINE
 // The multisampling keys (SCENE.MSAA): the reader checks each key's type and range and builds
 // the sample pattern from "samples" and "sample_pattern"; the rules between keys (a sample mask
 // wider than the pattern, lines a pattern cannot draw) are prepare()'s (MSAA.LIMITS), except
 // an explicit all-ones "sample_mask", which prepare() cannot tell from the default.
+// The pipeline keys (SCENE.PIPELINE): the reader checks types, counts, finiteness, the keys
+// that exclude or need each other ("v" or "pos", "attr" and "attributes") and the ranges the
+// format itself states (w > 0, depth.clear in [0, 1], at most 16 attributes with unique
+// names); the viewport's ranges and the positions' magnitude are run_pipeline()'s.
 
 #include "rastrules/io/scene_json.hpp"
 
@@ -19,8 +24,11 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <system_error>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -83,6 +91,18 @@ enum class Ctx {
   kPatternArray,  // "sample_pattern": [[i, j], ...]
   kPatternPair,   // one [i, j]
   kColorArray,    // "clear_color" or "primitives[i].color": [r, g, b, a]
+  // Pipeline scenes (SCENE.PIPELINE).
+  kViewportObject,
+  kTransformObject,
+  kMatrixArray,      // "transform.model", ".view", ".projection": 16 numbers
+  kDepthObject,
+  kAttributesArray,  // "attributes": [{...}, ...]
+  kAttributeObject,
+  kNumberList,       // "primitives[i].z" or ".w": one number per vertex
+  kPosArray,         // "primitives[i].pos": [[x, y, z(, w)], ...]
+  kPosCoords,        // one [x, y, z(, w)]
+  kAttrArray,        // "primitives[i].attr": [[a0, a1, ...], ...]
+  kAttrValues,       // one vertex's values
 };
 
 // Where a value goes.
@@ -115,15 +135,58 @@ enum class Slot {
   kPatternEntry,
   kPatternCoord,
   kColorChannel,
+  // Pipeline scenes (SCENE.PIPELINE): root keys
+  kViewport,
+  kTransform,
+  kDepth,
+  kAttributes,
+  kProvoking,
+  // viewport
+  kViewportX,
+  kViewportY,
+  kViewportWidth,
+  kViewportHeight,
+  kViewportMinDepth,
+  kViewportMaxDepth,
+  // transform
+  kModel,
+  kView,
+  kProjection,
+  kMatrixEntry,
+  // depth
+  kDepthFormat,
+  kDepthFunc,
+  kDepthWrite,
+  kDepthClear,
+  kDepthClip,
+  kDepthBias,
+  kDepthSlopeBias,
+  kDepthBiasClamp,
+  // attributes
+  kAttribute,
+  kAttributeName,
+  kAttributeInterpolation,
+  kAttributeLocation,
+  // primitives[i]
+  kZ,
+  kW,
+  kPos,
+  kAttr,
+  kListNumber,
+  kPosVertex,
+  kPosCoord,
+  kAttrVertex,
+  kAttrValue,
 };
 
 struct KeySpec {
   std::string_view name;
   Slot slot;
   bool required;
+  bool pipeline = false;  // the key makes the scene a pipeline scene (SCENE.PIPELINE)
 };
 
-constexpr std::array<KeySpec, 15> kRootKeys = {{{"version", Slot::kVersion, false},
+constexpr std::array<KeySpec, 20> kRootKeys = {{{"version", Slot::kVersion, false},
                                                 {"target", Slot::kTarget, true},
                                                 {"cull", Slot::kCull, false},
                                                 {"front_face", Slot::kFrontFace, false},
@@ -137,14 +200,91 @@ constexpr std::array<KeySpec, 15> kRootKeys = {{{"version", Slot::kVersion, fals
                                                 {"quads", Slot::kQuads, false},
                                                 {"derivatives", Slot::kDerivatives, false},
                                                 {"clear_color", Slot::kClearColor, false},
-                                                {"primitives", Slot::kPrimitives, true}}};
+                                                {"primitives", Slot::kPrimitives, true},
+                                                {"viewport", Slot::kViewport, false, true},
+                                                {"transform", Slot::kTransform, false, true},
+                                                {"depth", Slot::kDepth, false, true},
+                                                {"attributes", Slot::kAttributes, false, true},
+                                                {"provoking_vertex", Slot::kProvoking, false, true}}};
 constexpr std::array<KeySpec, 2> kTargetKeys = {{{"width", Slot::kWidth, true},
                                                  {"height", Slot::kHeight, true}}};
-constexpr std::array<KeySpec, 4> kPrimitiveKeys = {{{"type", Slot::kType, true},
-                                                    {"v", Slot::kVertices, true},
+// "v" is required unless "pos" is given (checked when the primitive ends).
+constexpr std::array<KeySpec, 8> kPrimitiveKeys = {{{"type", Slot::kType, true},
+                                                    {"v", Slot::kVertices, false},
                                                     {"aa", Slot::kAA, false},
-                                                    {"color", Slot::kColor, false}}};
+                                                    {"color", Slot::kColor, false},
+                                                    {"z", Slot::kZ, false, true},
+                                                    {"w", Slot::kW, false, true},
+                                                    {"pos", Slot::kPos, false, true},
+                                                    {"attr", Slot::kAttr, false, true}}};
+constexpr std::size_t kVKeyIndex = 1;
 constexpr std::size_t kAAKeyIndex = 2;
+constexpr std::size_t kZKeyIndex = 4;
+constexpr std::size_t kWKeyIndex = 5;
+constexpr std::size_t kPosKeyIndex = 6;
+constexpr std::size_t kAttrKeyIndex = 7;
+
+// The pipeline objects (SCENE.PIPELINE). Every key is optional but an attribute's name.
+constexpr std::array<KeySpec, 6> kViewportKeys = {{{"x", Slot::kViewportX, false},
+                                                   {"y", Slot::kViewportY, false},
+                                                   {"width", Slot::kViewportWidth, false},
+                                                   {"height", Slot::kViewportHeight, false},
+                                                   {"min_depth", Slot::kViewportMinDepth, false},
+                                                   {"max_depth", Slot::kViewportMaxDepth, false}}};
+constexpr std::array<KeySpec, 3> kTransformKeys = {{{"model", Slot::kModel, false},
+                                                    {"view", Slot::kView, false},
+                                                    {"projection", Slot::kProjection, false}}};
+constexpr std::array<KeySpec, 8> kDepthKeys = {{{"format", Slot::kDepthFormat, false},
+                                                {"func", Slot::kDepthFunc, false},
+                                                {"write", Slot::kDepthWrite, false},
+                                                {"clear", Slot::kDepthClear, false},
+                                                {"clip", Slot::kDepthClip, false},
+                                                {"bias", Slot::kDepthBias, false},
+                                                {"slope_scaled_bias", Slot::kDepthSlopeBias, false},
+                                                {"bias_clamp", Slot::kDepthBiasClamp, false}}};
+constexpr std::array<KeySpec, 3> kAttributeKeys = {
+    {{"name", Slot::kAttributeName, true},
+     {"interpolation", Slot::kAttributeInterpolation, false},
+     {"location", Slot::kAttributeLocation, false}}};
+
+// The scene-file names of the pipeline enumerations (SCENE.PIPELINE).
+constexpr std::array<std::pair<std::string_view, pipe::Interpolation>, 3> kInterpolationNames = {
+    {{"perspective", pipe::Interpolation::kPerspective},
+     {"linear", pipe::Interpolation::kLinear},
+     {"flat", pipe::Interpolation::kFlat}}};
+constexpr std::array<std::pair<std::string_view, pipe::Location>, 3> kLocationNames = {
+    {{"center", pipe::Location::kCenter},
+     {"centroid", pipe::Location::kCentroid},
+     {"sample", pipe::Location::kSample}}};
+constexpr std::array<std::pair<std::string_view, pipe::DepthFormat>, 3> kDepthFormatNames = {
+    {{"d16", pipe::DepthFormat::kD16}, {"d24", pipe::DepthFormat::kD24}, {"d32f", pipe::DepthFormat::kD32F}}};
+constexpr std::array<std::pair<std::string_view, pipe::CompareFunc>, 8> kCompareFuncNames = {
+    {{"never", pipe::CompareFunc::kNever},
+     {"less", pipe::CompareFunc::kLess},
+     {"equal", pipe::CompareFunc::kEqual},
+     {"less_equal", pipe::CompareFunc::kLessEqual},
+     {"greater", pipe::CompareFunc::kGreater},
+     {"not_equal", pipe::CompareFunc::kNotEqual},
+     {"greater_equal", pipe::CompareFunc::kGreaterEqual},
+     {"always", pipe::CompareFunc::kAlways}}};
+constexpr std::array<std::pair<std::string_view, pipe::Provoking>, 2> kProvokingNames = {
+    {{"first", pipe::Provoking::kFirst}, {"last", pipe::Provoking::kLast}}};
+
+// Returns the scene-file name of e in names ("unknown" when absent).
+template <class Enum, std::size_t N>
+std::string_view name_of(const std::array<std::pair<std::string_view, Enum>, N>& names, Enum e) {
+  for (const auto& [name, value] : names) {
+    if (value == e) return name;
+  }
+  return "unknown";
+}
+
+// The pipeline keys of one primitive, kept beside it only when it has any.
+struct PipeExtras {
+  std::vector<pipe::Vec4f> pos;
+  std::vector<float> z, w;
+  std::vector<std::vector<float>> attr;
+};
 
 // The scene-file names of the multisampling enumerations (SCENE.MSAA).
 constexpr std::array<std::pair<std::string_view, CentroidRule>, 2> kCentroidNames = {
@@ -241,6 +381,7 @@ class SceneReader {
         f.seen |= 1u << n;
         f.key_slot = keys[n].slot;
         f.key_path = field;
+        if (keys[n].pipeline && pipeline_key_.empty()) pipeline_key_ = field;
         return true;
       }
       std::string expected;
@@ -251,6 +392,10 @@ class SceneReader {
       case Ctx::kRootObject: return check(kRootKeys);
       case Ctx::kTargetObject: return check(kTargetKeys);
       case Ctx::kPrimitiveObject: return check(kPrimitiveKeys);
+      case Ctx::kViewportObject: return check(kViewportKeys);
+      case Ctx::kTransformObject: return check(kTransformKeys);
+      case Ctx::kDepthObject: return check(kDepthKeys);
+      case Ctx::kAttributeObject: return check(kAttributeKeys);
       default: return fail(f.path, "internal error: key outside an object");
     }
   }
@@ -269,26 +414,80 @@ class SceneReader {
       return true;
     };
     switch (f.ctx) {
-      case Ctx::kRootObject: return required(kRootKeys) && finish_pattern();
+      case Ctx::kRootObject: return required(kRootKeys) && finish_pattern() && finish_pipeline();
       case Ctx::kTargetObject: return required(kTargetKeys);
       case Ctx::kPrimitiveObject: {
         if (!required(kPrimitiveKeys)) return false;
+        const auto given = [&](std::size_t key) { return (f.seen & (1u << key)) != 0; };
+        // rule: SCENE.PIPELINE
+        const bool has_pos = given(kPosKeyIndex);
+        if (has_pos && given(kVKeyIndex)) {
+          return fail(f.path + ".pos", "a primitive has either \"v\" (window space) or \"pos\" "
+                                       "(positions before the transform), not both");
+        }
+        if (!has_pos && !given(kVKeyIndex)) return fail(f.path + ".v", "is missing");
         // rule: SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP
         // The type may come after "v" and "aa", so both are checked against it here.
-        const std::size_t n = current_.v.size();
+        const std::size_t n = has_pos ? extras_.pos.size() : current_.v.size();
         const std::size_t need = required_vertex_count(current_.type);
         if ((need != 0 && n != need) || (need == 0 && n < 2)) {
-          return fail(f.path + ".v", "a " + std::string(to_string(current_.type)) + " must have " +
-                                         vertex_count_text(current_.type) + " [x, y], got " +
-                                         std::to_string(n));
+          return fail(f.path + (has_pos ? ".pos" : ".v"),
+                      "a " + std::string(to_string(current_.type)) + " must have " +
+                          vertex_count_text(current_.type) +
+                          (has_pos ? " [x, y, z] or [x, y, z, w]" : " [x, y]") + ", got " +
+                          std::to_string(n));
         }
         const bool line =
             current_.type == PrimitiveType::kLine || current_.type == PrimitiveType::kLineStrip;
-        if ((f.seen & (1u << kAAKeyIndex)) != 0 && !line) {
+        if (given(kAAKeyIndex) && !line) {
           return fail(f.path + ".aa", "only lines and line strips take \"aa\", not a " +
                                           std::string(to_string(current_.type)));
         }
+        // rule: SCENE.PIPELINE
+        for (const auto& [key, list, what] : {std::tuple{kZKeyIndex, &extras_.z, "z"},
+                                              std::tuple{kWKeyIndex, &extras_.w, "w"}}) {
+          if (!given(key)) continue;
+          const std::string field = f.path + "." + what;
+          if (has_pos) {
+            return fail(field, "goes with \"v\" only (window space); \"pos\" gives z and w in "
+                               "each position");
+          }
+          if (list->size() != n) {
+            return fail(field, "must have one number per vertex (" + std::to_string(n) +
+                                   "), got " + std::to_string(list->size()));
+          }
+        }
+        if (given(kAttrKeyIndex) && extras_.attr.size() != n) {
+          return fail(f.path + ".attr", "must have one list of attribute values per vertex (" +
+                                            std::to_string(n) + "), got " +
+                                            std::to_string(extras_.attr.size()));
+        }
+        const std::size_t index = scene_.primitives.size();
+        if (attributes_done_ && !check_attr(index, given(kAttrKeyIndex), extras_)) return false;
         scene_.primitives.push_back(std::move(current_));
+        if (given(kZKeyIndex) || given(kWKeyIndex) || has_pos || given(kAttrKeyIndex)) {
+          extras_of_.resize(index);
+          extras_of_.push_back(std::move(extras_));
+          has_attr_.resize(index);
+          has_attr_.push_back(given(kAttrKeyIndex));
+        }
+        return true;
+      }
+      // rule: SCENE.PIPELINE
+      case Ctx::kViewportObject:
+        viewport_seen_ = f.seen;
+        return true;
+      case Ctx::kTransformObject:
+      case Ctx::kDepthObject: return true;
+      case Ctx::kAttributeObject: {
+        if (!required(kAttributeKeys)) return false;
+        for (std::size_t k = 0; k < pipe_.attributes.size(); ++k) {
+          if (pipe_.attributes[k].name == attribute_.name) {
+            return fail(f.path + ".name", "duplicate attribute name \"" + printable(attribute_.name) +
+                                              "\" (also attributes[" + std::to_string(k) + "])");
+          }
+        }
+        pipe_.attributes.push_back(std::move(attribute_));
         return true;
       }
       default: return fail(f.path, "internal error: unbalanced object");
@@ -312,6 +511,19 @@ class SceneReader {
     if (f.ctx == Ctx::kColorArray && f.count != 4) {
       return fail(f.path, "must have exactly 4 channels [r, g, b, a], got " + std::to_string(f.count));
     }
+    // rule: SCENE.PIPELINE
+    if (f.ctx == Ctx::kMatrixArray && f.count != 16) {
+      return fail(f.path, "must have exactly 16 numbers (a row-major 4x4 matrix), got " +
+                              std::to_string(f.count));
+    }
+    if (f.ctx == Ctx::kPosCoords && f.count < 3) {
+      return fail(f.path, "must have 3 or 4 coordinates [x, y, z] or [x, y, z, w], got " +
+                              std::to_string(f.count));
+    }
+    if (f.ctx == Ctx::kAttributesArray) attributes_done_ = true;
+    if (f.ctx == Ctx::kAttrValues && attributes_done_ && f.count != pipe_.attributes.size()) {
+      return fail(f.path, attr_count_text(f.count));
+    }
     return true;
   }
 
@@ -334,11 +546,15 @@ class SceneReader {
     return false;
   }
 
-  [[nodiscard]] std::variant<Scene, SceneError> result(bool ok) {
+  [[nodiscard]] std::variant<Scene, pipe::PipeScene, SceneError> result(bool ok) {
     if (error_) return *error_;
     if (!ok) return SceneError{"", "parse error: input ended early"};
+    if (!pipeline_key_.empty()) return std::move(pipe_);
     return std::move(scene_);
   }
+
+  // The path of the first pipeline key read (empty for a plain scene).
+  [[nodiscard]] const std::string& pipeline_key() const { return pipeline_key_; }
 
  private:
   bool fail(std::string field, std::string message) {
@@ -360,53 +576,17 @@ class SceneReader {
         case Ctx::kRootObject:
         case Ctx::kTargetObject:
         case Ctx::kPrimitiveObject:
+        case Ctx::kViewportObject:
+        case Ctx::kTransformObject:
+        case Ctx::kDepthObject:
+        case Ctx::kAttributeObject:
           slot = f.key_slot;
           field = f.key_path;
           break;
-        case Ctx::kPrimitiveArray:
-          // rule: SCENE.INPUT.LIMITS
-          if (f.count >= kMaxScenePrimitives) {
-            return fail(f.path, "more than " + std::to_string(kMaxScenePrimitives) +
-                                    " primitives (limit SCENE.INPUT.LIMITS)");
-          }
-          slot = Slot::kPrimitive;
-          field = f.path + "[" + std::to_string(f.count++) + "]";
-          break;
-        case Ctx::kVertexArray:
-          // rule: SCENE.INPUT.LIMITS
-          if (f.count >= kMaxStripVertices) {
-            return fail(f.path, "more than " + std::to_string(kMaxStripVertices) +
-                                    " vertices in one primitive (limit SCENE.INPUT.LIMITS)");
-          }
-          slot = Slot::kVertex;
-          field = f.path + "[" + std::to_string(f.count++) + "]";
-          break;
-        case Ctx::kCoordArray:
-          if (f.count == 2) {
-            return fail(f.path, "must have exactly 2 coordinates [x, y], got more");
-          }
-          slot = Slot::kCoord;
-          coord_ = f.count;
-          field = f.path + "[" + std::to_string(f.count++) + "]";
-          break;
-        case Ctx::kPatternArray:
-          // rule: MSAA.LIMITS
-          if (f.count >= kMaxSamples) {
-            return fail(f.path, "must have 1 to " + std::to_string(kMaxSamples) +
-                                    " positions [i, j], got more");
-          }
-          slot = Slot::kPatternEntry;
-          field = f.path + "[" + std::to_string(f.count++) + "]";
-          break;
-        case Ctx::kPatternPair:
-          if (f.count == 2) return fail(f.path, "must have exactly 2 offsets [i, j], got more");
-          slot = Slot::kPatternCoord;
-          coord_ = f.count;
-          field = f.path + "[" + std::to_string(f.count++) + "]";
-          break;
-        case Ctx::kColorArray:
-          if (f.count == 4) return fail(f.path, "must have exactly 4 channels [r, g, b, a], got more");
-          slot = Slot::kColorChannel;
+        default:  // an array: its next element
+          // rule: SCENE.INPUT.LIMITS, MSAA.LIMITS, SCENE.PIPELINE
+          if (f.count >= element_limit(f.ctx)) return fail(f.path, overflow_message(f.ctx));
+          slot = element_slot(f.ctx);
           coord_ = f.count;
           field = f.path + "[" + std::to_string(f.count++) + "]";
           break;
@@ -456,6 +636,7 @@ class SceneReader {
         if (v.kind != Kind::kObject) return type_error(field, "an object {\"type\", \"v\"}", v);
         current_ = Primitive{};
         current_.v.clear();
+        extras_ = PipeExtras{};
         return push(Ctx::kPrimitiveObject, field);
       case Slot::kType:
         if (v.kind != Kind::kString) return type_error(field, "a string", v);
@@ -548,8 +729,283 @@ class SceneReader {
           return true;
         }
         return type_error(field, "an integer in [0, 255]", v);
+      // rule: SCENE.PIPELINE
+      case Slot::kViewport:
+        if (v.kind != Kind::kObject) {
+          return type_error(field, "an object {\"x\", \"y\", \"width\", \"height\", \"min_depth\", \"max_depth\"}", v);
+        }
+        pipe_.viewport.emplace();
+        return push(Ctx::kViewportObject, field);
+      case Slot::kViewportX: return finite_number(field, v, pipe_.viewport->x);
+      case Slot::kViewportY: return finite_number(field, v, pipe_.viewport->y);
+      case Slot::kViewportWidth: return finite_number(field, v, pipe_.viewport->width);
+      case Slot::kViewportHeight: return finite_number(field, v, pipe_.viewport->height);
+      case Slot::kViewportMinDepth: return finite_number(field, v, pipe_.viewport->min_depth);
+      case Slot::kViewportMaxDepth: return finite_number(field, v, pipe_.viewport->max_depth);
+      case Slot::kTransform:
+        if (v.kind != Kind::kObject) {
+          return type_error(field, "an object {\"model\", \"view\", \"projection\"}", v);
+        }
+        return push(Ctx::kTransformObject, field);
+      case Slot::kModel:
+      case Slot::kView:
+      case Slot::kProjection: {
+        if (v.kind != Kind::kArray) {
+          return type_error(field, "an array of 16 numbers (a row-major 4x4 matrix)", v);
+        }
+        std::optional<pipe::Mat4f>& m = slot == Slot::kModel ? pipe_.model
+                                        : slot == Slot::kView ? pipe_.view
+                                                              : pipe_.projection;
+        matrix_ = &m.emplace();
+        return push(Ctx::kMatrixArray, field);
+      }
+      case Slot::kMatrixEntry: return finite_number(field, v, (*matrix_)[coord_]);
+      case Slot::kDepth:
+        if (v.kind != Kind::kObject) return type_error(field, "an object", v);
+        pipe_.depth.emplace();
+        return push(Ctx::kDepthObject, field);
+      case Slot::kDepthFormat: return enumeration(field, v, kDepthFormatNames, pipe_.depth->format);
+      case Slot::kDepthFunc: return enumeration(field, v, kCompareFuncNames, pipe_.depth->func);
+      case Slot::kDepthWrite:
+      case Slot::kDepthClip:
+        if (v.kind != Kind::kBool) return type_error(field, "true or false", v);
+        (slot == Slot::kDepthWrite ? pipe_.depth->write : pipe_.depth->clip) = v.b;
+        return true;
+      case Slot::kDepthClear:
+        // rule: PIPE.DEPTH.FORMAT
+        if (!finite_number(field, v, pipe_.depth->clear)) return false;
+        if (pipe_.depth->clear >= 0.0f && pipe_.depth->clear <= 1.0f) return true;
+        return type_error(field, "a number in [0, 1]", v);
+      case Slot::kDepthBias:
+        if (v.kind == Kind::kInt && v.i >= std::numeric_limits<std::int32_t>::min() &&
+            v.i <= std::numeric_limits<std::int32_t>::max()) {
+          pipe_.depth->bias.bias = static_cast<std::int32_t>(v.i);
+          return true;
+        }
+        return type_error(field, "an integer in [-2147483648, 2147483647]", v);
+      case Slot::kDepthSlopeBias: return finite_number(field, v, pipe_.depth->bias.slope_scaled);
+      case Slot::kDepthBiasClamp: return finite_number(field, v, pipe_.depth->bias.clamp);
+      case Slot::kAttributes:
+        if (v.kind != Kind::kArray) return type_error(field, "an array of attributes", v);
+        return push(Ctx::kAttributesArray, field);
+      case Slot::kAttribute:
+        if (v.kind != Kind::kObject) {
+          return type_error(field, "an object {\"name\", \"interpolation\", \"location\"}", v);
+        }
+        attribute_ = pipe::AttributeDecl{};
+        return push(Ctx::kAttributeObject, field);
+      case Slot::kAttributeName:
+        if (v.kind != Kind::kString || v.text.empty()) return type_error(field, "a non-empty string", v);
+        attribute_.name = std::string(v.text);
+        return true;
+      case Slot::kAttributeInterpolation:
+        return enumeration(field, v, kInterpolationNames, attribute_.interpolation);
+      case Slot::kAttributeLocation: return enumeration(field, v, kLocationNames, attribute_.location);
+      case Slot::kProvoking: return enumeration(field, v, kProvokingNames, pipe_.provoking);
+      case Slot::kZ:
+      case Slot::kW:
+        if (v.kind != Kind::kArray) {
+          return type_error(field, slot == Slot::kZ ? "an array of one depth per vertex"
+                                                    : "an array of one positive w per vertex", v);
+        }
+        list_is_w_ = slot == Slot::kW;
+        return push(Ctx::kNumberList, field);
+      case Slot::kListNumber: {
+        float x = 0.0f;
+        if (!finite_number(field, v, x)) return false;
+        // rule: PIPE.INPUT.POSITION
+        if (list_is_w_ && !(x > 0.0f)) return type_error(field, "a positive number (a clip w)", v);
+        (list_is_w_ ? extras_.w : extras_.z).push_back(x);
+        return true;
+      }
+      case Slot::kPos:
+        if (v.kind != Kind::kArray) return type_error(field, "an array of positions [x, y, z(, w)]", v);
+        return push(Ctx::kPosArray, field);
+      case Slot::kPosVertex:
+        if (v.kind != Kind::kArray) return type_error(field, "an array [x, y, z] or [x, y, z, w]", v);
+        extras_.pos.push_back(pipe::Vec4f{0.0f, 0.0f, 0.0f, 1.0f});
+        return push(Ctx::kPosCoords, field);
+      case Slot::kPosCoord: return finite_number(field, v, extras_.pos.back()[coord_]);
+      case Slot::kAttr:
+        if (v.kind != Kind::kArray) {
+          return type_error(field, "an array of one list of attribute values per vertex", v);
+        }
+        if (attributes_done_ && pipe_.attributes.empty()) {
+          return fail(field, "is given but the scene declares no \"attributes\" (PIPE.INPUT.ATTRIBUTES)");
+        }
+        return push(Ctx::kAttrArray, field);
+      case Slot::kAttrVertex:
+        if (v.kind != Kind::kArray) {
+          return type_error(field, "an array of one number per declared attribute", v);
+        }
+        extras_.attr.emplace_back();
+        return push(Ctx::kAttrValues, field);
+      case Slot::kAttrValue: {
+        float x = 0.0f;
+        if (!finite_number(field, v, x)) return false;
+        extras_.attr.back().push_back(x);
+        return true;
+      }
     }
     return fail(field, "internal error: unknown slot");
+  }
+
+  // The most elements an array of this context holds; one more is an error (overflow_message).
+  // rule: SCENE.INPUT.LIMITS
+  std::size_t element_limit(Ctx ctx) const {
+    switch (ctx) {
+      case Ctx::kPrimitiveArray: return kMaxScenePrimitives;
+      case Ctx::kVertexArray:  // "v", and "z", "w", "pos" and "attr": one entry per vertex
+      case Ctx::kNumberList:
+      case Ctx::kPosArray:
+      case Ctx::kAttrArray: return kMaxStripVertices;
+      case Ctx::kCoordArray:
+      case Ctx::kPatternPair: return 2;
+      case Ctx::kColorArray:
+      case Ctx::kPosCoords: return 4;
+      case Ctx::kPatternArray: return kMaxSamples;
+      case Ctx::kMatrixArray: return 16;
+      case Ctx::kAttributesArray: return pipe::kMaxAttributes;
+      case Ctx::kAttrValues: return attributes_done_ ? pipe_.attributes.size() : pipe::kMaxAttributes;
+      default: return 0;
+    }
+  }
+
+  std::string overflow_message(Ctx ctx) const {
+    switch (ctx) {
+      case Ctx::kPrimitiveArray:
+        return "more than " + std::to_string(kMaxScenePrimitives) + " primitives (limit SCENE.INPUT.LIMITS)";
+      case Ctx::kVertexArray:
+      case Ctx::kNumberList:
+      case Ctx::kPosArray:
+      case Ctx::kAttrArray:
+        return "more than " + std::to_string(kMaxStripVertices) +
+               " vertices in one primitive (limit SCENE.INPUT.LIMITS)";
+      case Ctx::kCoordArray: return "must have exactly 2 coordinates [x, y], got more";
+      case Ctx::kPatternPair: return "must have exactly 2 offsets [i, j], got more";
+      case Ctx::kColorArray: return "must have exactly 4 channels [r, g, b, a], got more";
+      case Ctx::kPosCoords: return "must have 3 or 4 coordinates [x, y, z] or [x, y, z, w], got more";
+      case Ctx::kPatternArray:
+        return "must have 1 to " + std::to_string(kMaxSamples) + " positions [i, j], got more";
+      case Ctx::kMatrixArray: return "must have exactly 16 numbers (a row-major 4x4 matrix), got more";
+      case Ctx::kAttributesArray:
+        return "must have at most " + std::to_string(pipe::kMaxAttributes) +
+               " attributes (PIPE.INPUT.ATTRIBUTES), got more";
+      case Ctx::kAttrValues:
+        if (attributes_done_) return attr_count_text(0, true);
+        return "must have one value per declared attribute (at most " +
+               std::to_string(pipe::kMaxAttributes) + "), got more";
+      default: return "internal error: not an array";
+    }
+  }
+
+  static Slot element_slot(Ctx ctx) {
+    switch (ctx) {
+      case Ctx::kPrimitiveArray: return Slot::kPrimitive;
+      case Ctx::kVertexArray: return Slot::kVertex;
+      case Ctx::kCoordArray: return Slot::kCoord;
+      case Ctx::kPatternArray: return Slot::kPatternEntry;
+      case Ctx::kPatternPair: return Slot::kPatternCoord;
+      case Ctx::kColorArray: return Slot::kColorChannel;
+      case Ctx::kMatrixArray: return Slot::kMatrixEntry;
+      case Ctx::kAttributesArray: return Slot::kAttribute;
+      case Ctx::kNumberList: return Slot::kListNumber;
+      case Ctx::kPosArray: return Slot::kPosVertex;
+      case Ctx::kPosCoords: return Slot::kPosCoord;
+      case Ctx::kAttrArray: return Slot::kAttrVertex;
+      case Ctx::kAttrValues: return Slot::kAttrValue;
+      default: return Slot::kRoot;
+    }
+  }
+
+  // rule: SCENE.PIPELINE, PIPE.INPUT.ATTRIBUTES
+  // A number read as float32 like a coordinate (SCENE.NUMBER.FLOAT32) that must be finite: the
+  // strings "NaN", "Infinity" and "-Infinity" and numbers beyond float32 are named as such.
+  bool finite_number(const std::string& field, const Value& v, float& out) {
+    const std::optional<float> f = float32_value(field, v, "a number");
+    if (!f) return false;
+    if (std::isnan(*f)) return fail(field, "is NaN");
+    if (std::isinf(*f)) {
+      return fail(field, v.kind == Kind::kString ? std::string("is infinite")
+                                                 : "is infinite (beyond float32: " + printable(v.text) + ")");
+    }
+    out = *f;
+    return true;
+  }
+
+  // "must have N values (one per declared attribute), got M" (more when `more`).
+  std::string attr_count_text(std::size_t got, bool more = false) const {
+    const std::size_t n = pipe_.attributes.size();
+    return "must have " + std::to_string(n) + (n == 1 ? " value" : " values") +
+           " (one per declared attribute), got " + (more ? std::string("more") : std::to_string(got));
+  }
+
+  // rule: SCENE.PIPELINE
+  // Checks primitive p's "attr" against the declared attributes: required when the scene
+  // declares any, forbidden otherwise, one value per attribute at each vertex.
+  bool check_attr(std::size_t p, bool has_attr, const PipeExtras& e) {
+    const std::string path = "primitives[" + std::to_string(p) + "].attr";
+    const std::size_t n = pipe_.attributes.size();
+    if (has_attr && n == 0) {
+      return fail(path, "is given but the scene declares no \"attributes\" (PIPE.INPUT.ATTRIBUTES)");
+    }
+    if (!has_attr && n != 0) {
+      return fail(path, "is missing: the scene declares " + std::to_string(n) +
+                            (n == 1 ? " attribute" : " attributes") + " (PIPE.INPUT.ATTRIBUTES)");
+    }
+    for (std::size_t j = 0; j < e.attr.size(); ++j) {
+      if (e.attr[j].size() != n) {
+        return fail(path + "[" + std::to_string(j) + "]", attr_count_text(e.attr[j].size()));
+      }
+    }
+    return true;
+  }
+
+  // rule: SCENE.PIPELINE
+  // Once the root object is complete: the viewport's defaults (the target may come after it),
+  // the checks between keys given in any order, and the pipeline scene itself.
+  bool finish_pipeline() {
+    if (pipeline_key_.empty()) return true;
+    if (pipe_.viewport) {
+      pipe::Viewport& vp = *pipe_.viewport;
+      // Missing keys take the default viewport's values: the whole target, depth [0, 1].
+      const pipe::Viewport whole{0.0f, 0.0f, static_cast<float>(scene_.width),
+                                 static_cast<float>(scene_.height), 0.0f, 1.0f};
+      float* fields[] = {&vp.x, &vp.y, &vp.width, &vp.height, &vp.min_depth, &vp.max_depth};
+      const float defaults[] = {whole.x, whole.y, whole.width, whole.height, whole.min_depth, whole.max_depth};
+      for (std::size_t k = 0; k < 6; ++k) {
+        if ((viewport_seen_ & (1u << k)) == 0) *fields[k] = defaults[k];
+      }
+    }
+    // rule: PIPE.INTERP.LOCATION
+    for (std::size_t k = 0; k < pipe_.attributes.size(); ++k) {
+      if (pipe_.attributes[k].location == pipe::Location::kSample &&
+          scene_.msaa.shading != ShadingRate::kSample) {
+        return fail("attributes[" + std::to_string(k) + "].location",
+                    "\"sample\" needs \"shading\": \"sample\" (PIPE.INTERP.LOCATION)");
+      }
+    }
+    extras_of_.resize(scene_.primitives.size());
+    has_attr_.resize(scene_.primitives.size());
+    for (std::size_t p = 0; p < scene_.primitives.size(); ++p) {
+      if (!check_attr(p, has_attr_[p], extras_of_[p])) return false;
+    }
+    pipe_.primitives.reserve(scene_.primitives.size());
+    for (std::size_t p = 0; p < scene_.primitives.size(); ++p) {
+      pipe::PipePrimitive prim;
+      prim.base = std::move(scene_.primitives[p]);
+      PipeExtras& e = extras_of_[p];
+      if (!e.pos.empty()) prim.base.v.clear();
+      prim.pos = std::move(e.pos);
+      prim.z = std::move(e.z);
+      prim.w = std::move(e.w);
+      prim.attr = std::move(e.attr);
+      pipe_.primitives.push_back(std::move(prim));
+    }
+    scene_.primitives.clear();
+    extras_of_.clear();
+    pipe_.base = std::move(scene_);
+    return true;
   }
 
   // Builds the sample pattern from "samples" and "sample_pattern", which may come in either
@@ -624,31 +1080,35 @@ class SceneReader {
   }
 
   // rule: SCENE.NUMBER.FLOAT32
-  bool coordinate(const std::string& field, const Value& v) {
-    float f = 0.0f;
+  // Returns the JSON number as the nearest float32, converted once from its text (integers
+  // rounded once); the strings "NaN", "Infinity" and "-Infinity" give those values. Anything
+  // else fails (expected says what is allowed) and returns nullopt.
+  std::optional<float> float32_value(const std::string& field, const Value& v, std::string_view expected) {
     switch (v.kind) {
-      case Kind::kInt: f = static_cast<float>(v.i); break;   // one correct rounding
-      case Kind::kUint: f = static_cast<float>(v.u); break;  // one correct rounding
+      case Kind::kInt: return static_cast<float>(v.i);   // one correct rounding
+      case Kind::kUint: return static_cast<float>(v.u);  // one correct rounding
       case Kind::kFloat: {
         const std::optional<float> d = decimal_to_float32(v.text);
-        if (!d) return fail(field, "is not a number: " + printable(v.text));
-        f = *d;
-        break;
+        if (!d) fail(field, "is not a number: " + printable(v.text));
+        return d;
       }
       case Kind::kString:
-        if (v.text == "NaN") {
-          f = std::numeric_limits<float>::quiet_NaN();
-        } else if (v.text == "Infinity") {
-          f = std::numeric_limits<float>::infinity();
-        } else if (v.text == "-Infinity") {
-          f = -std::numeric_limits<float>::infinity();
-        } else {
-          return type_error(field, "a number, \"NaN\", \"Infinity\" or \"-Infinity\"", v);
-        }
+        if (v.text == "NaN") return std::numeric_limits<float>::quiet_NaN();
+        if (v.text == "Infinity") return std::numeric_limits<float>::infinity();
+        if (v.text == "-Infinity") return -std::numeric_limits<float>::infinity();
         break;
-      default: return type_error(field, "a number, \"NaN\", \"Infinity\" or \"-Infinity\"", v);
+      default: break;
     }
-    current_.v.back()[coord_] = f;
+    type_error(field, expected, v);
+    return std::nullopt;
+  }
+
+  // rule: SCENE.NUMBER.FLOAT32
+  bool coordinate(const std::string& field, const Value& v) {
+    const std::optional<float> f =
+        float32_value(field, v, "a number, \"NaN\", \"Infinity\" or \"-Infinity\"");
+    if (!f) return false;
+    current_.v.back()[coord_] = *f;
     return true;
   }
 
@@ -661,6 +1121,17 @@ class SceneReader {
   std::vector<SampleOffset> custom_;      // the positions of a custom "sample_pattern"
   Rgba8* color_ = nullptr;                // the colour being read
   bool sample_mask_given_ = false;
+  // Pipeline scenes (SCENE.PIPELINE).
+  std::string pipeline_key_;              // the first pipeline key read; empty: a plain scene
+  pipe::PipeScene pipe_;                  // its root keys (base and primitives set at the end)
+  unsigned viewport_seen_ = 0;            // the viewport keys given (kViewportKeys order)
+  pipe::Mat4f* matrix_ = nullptr;         // the matrix being read
+  pipe::AttributeDecl attribute_;         // the attribute being read
+  bool attributes_done_ = false;          // "attributes" read completely
+  bool list_is_w_ = false;                // the number list being read is "w" (else "z")
+  PipeExtras extras_;                     // the current primitive's pipeline keys
+  std::vector<PipeExtras> extras_of_;     // per primitive, up to the last one that has any
+  std::vector<bool> has_attr_;            // per primitive, up to the last one with extras
   bool root_done_ = false;
   std::string last_path_;
   std::optional<SceneError> error_;
@@ -731,13 +1202,60 @@ std::string format_float(float v) {
   return std::string(buf.data(), r.ptr);
 }
 
-// rule: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS
-std::variant<Scene, SceneError> read_scene(std::string_view json_text) {
+namespace {
+// Reads any scene; pipeline_key receives the first pipeline key's path (empty for a plain one).
+std::variant<Scene, pipe::PipeScene, SceneError> read(std::string_view json_text, std::string& pipeline_key) {
   SceneReader reader;
   const bool ok = nlohmann::json::sax_parse(json_text.begin(), json_text.end(), &reader,
                                             nlohmann::json::input_format_t::json,
                                             /*strict=*/true, /*ignore_comments=*/false);
+  pipeline_key = reader.pipeline_key();
   return reader.result(ok);
+}
+}  // namespace
+
+// rule: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS
+std::variant<Scene, SceneError> read_scene(std::string_view json_text) {
+  std::string pipeline_key;
+  auto r = read(json_text, pipeline_key);
+  if (auto* err = std::get_if<SceneError>(&r)) return std::move(*err);
+  if (std::holds_alternative<pipe::PipeScene>(r)) {
+    return SceneError{pipeline_key, "is a pipeline key (SCENE.PIPELINE) and only window-space "
+                                    "scenes are read here (rastrules render and explain read "
+                                    "pipeline scenes)"};
+  }
+  return std::move(std::get<Scene>(r));
+}
+
+// rule: SCENE.FORMAT.V1, SCENE.PIPELINE, SCENE.INPUT.ERRORS
+std::variant<Scene, pipe::PipeScene, SceneError> read_any_scene(std::string_view json_text) {
+  std::string pipeline_key;
+  return read(json_text, pipeline_key);
+}
+
+std::string_view interpolation_name(pipe::Interpolation i) { return name_of(kInterpolationNames, i); }
+std::string_view location_name(pipe::Location l) { return name_of(kLocationNames, l); }
+std::string_view depth_format_name(pipe::DepthFormat f) { return name_of(kDepthFormatNames, f); }
+std::string_view compare_func_name(pipe::CompareFunc f) { return name_of(kCompareFuncNames, f); }
+std::string_view provoking_name(pipe::Provoking p) { return name_of(kProvokingNames, p); }
+
+std::string json_string(std::string_view s) {
+  std::string out = "\"";
+  for (const char ch : s) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (ch == '"' || ch == '\\') {
+      out += '\\';
+      out += ch;
+    } else if (c < 0x20 || c == 0x7f) {
+      static constexpr char kHex[] = "0123456789abcdef";
+      out += "\\u00";
+      out += kHex[c >> 4];
+      out += kHex[c & 15u];
+    } else {
+      out += ch;
+    }
+  }
+  return out + "\"";
 }
 
 // rule: SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
@@ -775,10 +1293,23 @@ std::string color_text(const Rgba8& c) {
   return "[" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) +
          ", " + std::to_string(c[3]) + "]";
 }
-}  // namespace
 
+// A float as the reader takes it back: NaN and infinities as quoted strings.
+std::string float_text(float f) {
+  const bool quoted = std::isnan(f) || std::isinf(f);
+  return quoted ? "\"" + format_float(f) + "\"" : format_float(f);
+}
+
+// "[a, b, ...]" of n floats.
+std::string floats_text(const float* f, std::size_t n) {
+  std::string out = "[";
+  for (std::size_t k = 0; k < n; ++k) out += (k == 0 ? "" : ", ") + float_text(f[k]);
+  return out + "]";
+}
+
+// Every key of a plain scene before "primitives", from "{" on.
 // rule: SCENE.FORMAT.V1
-std::string write_scene(const Scene& scene) {
+std::string scene_head(const Scene& scene) {
   std::string out;
   out += "{\n  \"version\": 1,\n";
   out += "  \"target\": {\"width\": " + std::to_string(scene.width) +
@@ -813,60 +1344,205 @@ std::string write_scene(const Scene& scene) {
     out += "  \"derivatives\": \"" + std::string(to_string(ms.derivatives)) + "\",\n";
   }
   if (scene.clear_color != Rgba8{0, 0, 0, 0}) out += "  \"clear_color\": " + color_text(scene.clear_color) + ",\n";
+  return out;
+}
+
+// The start of one primitive's object: type, aa and color (when not the default).
+std::string primitive_head(const Primitive& prim) {
+  std::string out = "    {\"type\": \"" + std::string(to_string(prim.type)) + "\", ";
+  if (prim.aa) out += "\"aa\": true, ";
+  if (prim.color != Primitive{}.color) out += "\"color\": " + color_text(prim.color) + ", ";
+  return out;
+}
+
+// "\"v\": [[x, y], ...]".
+std::string vertices_text(const std::vector<FloatPoint>& v) {
+  std::string out = "\"v\": [";
+  for (std::size_t i = 0; i < v.size(); ++i) out += (i == 0 ? "" : ", ") + floats_text(v[i].data(), 2);
+  return out + "]";
+}
+
+// Whether two floats are the same value bit for bit, any NaN equal to any NaN.
+bool same_float(float x, float y) {
+  if (std::isnan(x) && std::isnan(y)) return true;
+  return std::bit_cast<std::uint32_t>(x) == std::bit_cast<std::uint32_t>(y);
+}
+
+bool same_floats(const float* a, const float* b, std::size_t n) {
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!same_float(a[k], b[k])) return false;
+  }
+  return true;
+}
+
+bool same_float_vector(const std::vector<float>& a, const std::vector<float>& b) {
+  return a.size() == b.size() && same_floats(a.data(), b.data(), a.size());
+}
+
+bool same_primitive(const Primitive& pa, const Primitive& pb) {
+  if (pa.type != pb.type || pa.aa != pb.aa || pa.color != pb.color || pa.v.size() != pb.v.size()) {
+    return false;
+  }
+  for (std::size_t i = 0; i < pa.v.size(); ++i) {
+    if (!same_floats(pa.v[i].data(), pb.v[i].data(), 2)) return false;
+  }
+  return true;
+}
+
+// Everything of two scenes but their primitives.
+bool same_state(const Scene& a, const Scene& b) {
+  if (a.width != b.width || a.height != b.height || a.state.cull != b.state.cull ||
+      a.state.front_face != b.state.front_face || a.state.fill != b.state.fill ||
+      a.line_mode != b.line_mode) {
+    return false;
+  }
+  const MultisampleState& ma = a.msaa;
+  const MultisampleState& mb = b.msaa;
+  return ma.pattern == mb.pattern && ma.sample_mask == mb.sample_mask &&
+         ma.has_centroid == mb.has_centroid &&
+         (!ma.has_centroid || ma.centroid_rule == mb.centroid_rule) && ma.shading == mb.shading &&
+         ma.quads == mb.quads && ma.derivatives == mb.derivatives && a.clear_color == b.clear_color;
+}
+
+bool same_matrix(const std::optional<pipe::Mat4f>& a, const std::optional<pipe::Mat4f>& b) {
+  if (a.has_value() != b.has_value()) return false;
+  return !a || same_floats(a->data(), b->data(), 16);
+}
+}  // namespace
+
+// rule: SCENE.FORMAT.V1
+std::string write_scene(const Scene& scene) {
+  std::string out = scene_head(scene);
   out += "  \"primitives\": [";
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     out += p == 0 ? "\n" : ",\n";
-    const Primitive& prim = scene.primitives[p];
-    out += "    {\"type\": \"" + std::string(to_string(prim.type)) + "\", ";
-    if (prim.aa)
-      out += "\"aa\": true, ";
-    if (prim.color != Primitive{}.color) out += "\"color\": " + color_text(prim.color) + ", ";
-    out += "\"v\": [";
-    for (std::size_t i = 0; i < prim.v.size(); ++i) {
-      if (i != 0) out += ", ";
-      out += "[";
-      for (std::size_t k = 0; k < 2; ++k) {
-        if (k != 0) out += ", ";
-        const float f = prim.v[i][k];
-        const bool quoted = std::isnan(f) || std::isinf(f);
-        out += quoted ? "\"" + format_float(f) + "\"" : format_float(f);
-      }
-      out += "]";
-    }
-    out += "]}";
+    out += primitive_head(scene.primitives[p]) + vertices_text(scene.primitives[p].v) + "}";
   }
   out += scene.primitives.empty() ? "]\n}\n" : "\n  ]\n}\n";
   return out;
 }
 
+// rule: SCENE.PIPELINE
+std::string write_pipe_scene(const pipe::PipeScene& s) {
+  std::string out = scene_head(s.base);
+  // Always written, so that the text is a pipeline scene even without any other pipeline key.
+  out += "  \"provoking_vertex\": \"" + std::string(provoking_name(s.provoking)) + "\",\n";
+  if (s.viewport) {
+    const pipe::Viewport& vp = *s.viewport;
+    out += "  \"viewport\": {\"x\": " + float_text(vp.x) + ", \"y\": " + float_text(vp.y) +
+           ", \"width\": " + float_text(vp.width) + ", \"height\": " + float_text(vp.height) +
+           ", \"min_depth\": " + float_text(vp.min_depth) +
+           ", \"max_depth\": " + float_text(vp.max_depth) + "},\n";
+  }
+  if (s.model || s.view || s.projection) {
+    std::string matrices;
+    for (const auto& [name, m] : {std::pair{"model", &s.model}, std::pair{"view", &s.view},
+                                  std::pair{"projection", &s.projection}}) {
+      if (!*m) continue;
+      matrices += (matrices.empty() ? "\"" : ",\n                \"") + std::string(name) +
+                  "\": " + floats_text((*m)->data(), 16);
+    }
+    out += "  \"transform\": {" + matrices + "},\n";
+  }
+  if (s.depth) {
+    const pipe::DepthState& d = *s.depth;
+    out += "  \"depth\": {\"format\": \"" + std::string(depth_format_name(d.format)) +
+           "\", \"func\": \"" + std::string(compare_func_name(d.func)) +
+           "\", \"write\": " + (d.write ? "true" : "false") + ", \"clear\": " + float_text(d.clear) +
+           ", \"clip\": " + (d.clip ? "true" : "false") + ", \"bias\": " + std::to_string(d.bias.bias) +
+           ", \"slope_scaled_bias\": " + float_text(d.bias.slope_scaled) +
+           ", \"bias_clamp\": " + float_text(d.bias.clamp) + "},\n";
+  }
+  if (!s.attributes.empty()) {
+    out += "  \"attributes\": [";
+    for (std::size_t k = 0; k < s.attributes.size(); ++k) {
+      const pipe::AttributeDecl& a = s.attributes[k];
+      out += (k == 0 ? "" : ", ") + std::string("{\"name\": ") + json_string(a.name) +
+             ", \"interpolation\": \"" + std::string(interpolation_name(a.interpolation)) +
+             "\", \"location\": \"" + std::string(location_name(a.location)) + "\"}";
+    }
+    out += "],\n";
+  }
+  out += "  \"primitives\": [";
+  for (std::size_t p = 0; p < s.primitives.size(); ++p) {
+    const pipe::PipePrimitive& prim = s.primitives[p];
+    out += p == 0 ? "\n" : ",\n";
+    out += primitive_head(prim.base);
+    if (!prim.pos.empty()) {
+      out += "\"pos\": [";
+      for (std::size_t i = 0; i < prim.pos.size(); ++i) {
+        out += (i == 0 ? "" : ", ") + floats_text(prim.pos[i].data(), 4);
+      }
+      out += "]";
+    } else {
+      out += vertices_text(prim.base.v);
+      if (!prim.z.empty()) out += ", \"z\": " + floats_text(prim.z.data(), prim.z.size());
+      if (!prim.w.empty()) out += ", \"w\": " + floats_text(prim.w.data(), prim.w.size());
+    }
+    if (!prim.attr.empty()) {
+      out += ", \"attr\": [";
+      for (std::size_t i = 0; i < prim.attr.size(); ++i) {
+        out += (i == 0 ? "" : ", ") + floats_text(prim.attr[i].data(), prim.attr[i].size());
+      }
+      out += "]";
+    }
+    out += "}";
+  }
+  out += s.primitives.empty() ? "]\n}\n" : "\n  ]\n}\n";
+  return out;
+}
+
 bool same_scene(const Scene& a, const Scene& b) {
-  if (a.width != b.width || a.height != b.height || a.state.cull != b.state.cull ||
-      a.state.front_face != b.state.front_face || a.state.fill != b.state.fill ||
-      a.line_mode != b.line_mode || a.primitives.size() != b.primitives.size()) {
-    return false;
-  }
-  const MultisampleState& ma = a.msaa;
-  const MultisampleState& mb = b.msaa;
-  if (ma.pattern != mb.pattern || ma.sample_mask != mb.sample_mask ||
-      ma.has_centroid != mb.has_centroid ||
-      (ma.has_centroid && ma.centroid_rule != mb.centroid_rule) || ma.shading != mb.shading ||
-      ma.quads != mb.quads || ma.derivatives != mb.derivatives ||
-      a.clear_color != b.clear_color) {
-    return false;
-  }
+  if (!same_state(a, b) || a.primitives.size() != b.primitives.size()) return false;
   for (std::size_t p = 0; p < a.primitives.size(); ++p) {
-    const Primitive& pa = a.primitives[p];
-    const Primitive& pb = b.primitives[p];
-    if (pa.type != pb.type || pa.aa != pb.aa || pa.color != pb.color || pa.v.size() != pb.v.size()) {
+    if (!same_primitive(a.primitives[p], b.primitives[p])) return false;
+  }
+  return true;
+}
+
+bool same_pipe_scene(const pipe::PipeScene& a, const pipe::PipeScene& b) {
+  if (!same_scene(a.base, b.base) || a.provoking != b.provoking ||
+      a.viewport.has_value() != b.viewport.has_value() || !same_matrix(a.model, b.model) ||
+      !same_matrix(a.view, b.view) || !same_matrix(a.projection, b.projection) ||
+      a.depth.has_value() != b.depth.has_value() || a.attributes.size() != b.attributes.size() ||
+      a.primitives.size() != b.primitives.size()) {
+    return false;
+  }
+  if (a.viewport) {
+    const pipe::Viewport& va = *a.viewport;
+    const pipe::Viewport& vb = *b.viewport;
+    const float fa[] = {va.x, va.y, va.width, va.height, va.min_depth, va.max_depth};
+    const float fb[] = {vb.x, vb.y, vb.width, vb.height, vb.min_depth, vb.max_depth};
+    if (!same_floats(fa, fb, 6)) return false;
+  }
+  if (a.depth) {
+    const pipe::DepthState& da = *a.depth;
+    const pipe::DepthState& db = *b.depth;
+    if (da.format != db.format || da.func != db.func || da.write != db.write || da.clip != db.clip ||
+        da.bias.bias != db.bias.bias || !same_float(da.clear, db.clear) ||
+        !same_float(da.bias.slope_scaled, db.bias.slope_scaled) ||
+        !same_float(da.bias.clamp, db.bias.clamp)) {
       return false;
     }
-    for (std::size_t i = 0; i < pa.v.size(); ++i) {
-      for (std::size_t k = 0; k < 2; ++k) {
-        const float x = pa.v[i][k];
-        const float y = pb.v[i][k];
-        if (std::isnan(x) && std::isnan(y)) continue;
-        if (std::bit_cast<std::uint32_t>(x) != std::bit_cast<std::uint32_t>(y)) return false;
-      }
+  }
+  for (std::size_t k = 0; k < a.attributes.size(); ++k) {
+    const pipe::AttributeDecl& x = a.attributes[k];
+    const pipe::AttributeDecl& y = b.attributes[k];
+    if (x.name != y.name || x.interpolation != y.interpolation || x.location != y.location) return false;
+  }
+  for (std::size_t p = 0; p < a.primitives.size(); ++p) {
+    const pipe::PipePrimitive& pa = a.primitives[p];
+    const pipe::PipePrimitive& pb = b.primitives[p];
+    if (!same_primitive(pa.base, pb.base) || pa.pos.size() != pb.pos.size() ||
+        !same_float_vector(pa.z, pb.z) || !same_float_vector(pa.w, pb.w) ||
+        pa.attr.size() != pb.attr.size()) {
+      return false;
+    }
+    for (std::size_t i = 0; i < pa.pos.size(); ++i) {
+      if (!same_floats(pa.pos[i].data(), pb.pos[i].data(), 4)) return false;
+    }
+    for (std::size_t i = 0; i < pa.attr.size(); ++i) {
+      if (!same_float_vector(pa.attr[i], pb.attr[i])) return false;
     }
   }
   return true;

@@ -1,18 +1,32 @@
 // SPDX-License-Identifier: MIT
 // The fragment list output (spec/scene.md), written as a stream.
-// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.OUTPUT.MSAA
+// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.OUTPUT.MSAA,
+//             SCENE.OUTPUT.PIPELINE
 
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "rastrules/pipeline.hpp"
 #include "rastrules/scene.hpp"
 
 namespace rastrules::io {
+
+// What the fragments of a pipeline scene carry besides a plain fragment's fields
+// (SCENE.OUTPUT.PIPELINE): "attr" when the scene declares attributes (named here, in order),
+// "depth" and "passed" when it has a depth state (its format).
+struct PipeOutputFields {
+  std::vector<std::string> attributes;
+  std::optional<pipe::DepthFormat> depth;
+};
+
+// Returns the fields the scene asks for.
+[[nodiscard]] PipeOutputFields pipe_output_fields(const pipe::PipeScene& s);
 
 // Writes {"fragments": [...]} to a FILE*, one fragment per line, without holding the list in
 // memory. The caller emits fragments in (prim, y, x, seg) order (SCENE.OUTPUT.FRAGMENTS); the
@@ -24,12 +38,24 @@ namespace rastrules::io {
 class FragmentWriter {
  public:
   explicit FragmentWriter(std::FILE* out);
+  // A writer of a pipeline scene's fragments (SCENE.OUTPUT.PIPELINE): add(f, data).
+  FragmentWriter(std::FILE* out, PipeOutputFields fields);
   FragmentWriter(const FragmentWriter&) = delete;
   FragmentWriter& operator=(const FragmentWriter&) = delete;
 
   // Appends one fragment. Returns false (and writes nothing) when it does not come after the
   // previous one in (prim, y, x, seg) order.
   bool add(const Fragment& f);
+
+  // Appends one fragment of a pipeline scene with its data (nullptr: none, as run_pipeline
+  // gives for a scene without clip space, depth or attributes): "part" after "prim" when it has
+  // one, then the plain fields, then "bary" (when it has barycentrics), "attr", "depth" and
+  // "passed" as the writer's fields say, "attr" and "depth" not for a killed fragment
+  // (PIPE.DEPTH.KILL). Returns false (and writes nothing) when it does not come after the
+  // previous one in (prim, part, y, x, seg, sample) order (a missing part first), or when its
+  // data does not match the fields (one value per attribute, one depth per sample of the mask;
+  // none for a killed fragment).
+  bool add(const Fragment& f, const pipe::FragmentData* data);
 
   // Closes the list. Returns false when any write failed.
   bool finish();
@@ -43,6 +69,8 @@ class FragmentWriter {
   std::string buffer_;
   std::uint64_t count_ = 0;
   Fragment last_{};
+  std::optional<std::uint32_t> last_part_;
+  PipeOutputFields fields_;
   bool failed_ = false;
 };
 
@@ -63,5 +91,25 @@ class FragmentWriter {
 
 // Returns the fragment list as one string (for small lists and tests).
 [[nodiscard]] std::string fragments_to_json(const std::vector<Fragment>& fragments);
+
+// The same for a pipeline scene's fragments and their data (SCENE.OUTPUT.PIPELINE; data empty
+// or one entry per fragment, as in PipeResult); nullopt when a fragment is out of order, does
+// not match the fields (as FragmentWriter::add) or the arrays differ in size.
+[[nodiscard]] std::optional<std::string> pipe_fragments_to_json(
+    const std::vector<Fragment>& fragments, const std::vector<pipe::FragmentData>& data,
+    const PipeOutputFields& fields);
+
+// Returns a stored depth value as written in the output: the UNORM integer for d16 and d24, the
+// float32 in its shortest round-trip form for d32f (SCENE.OUTPUT.PIPELINE).
+[[nodiscard]] std::string depth_text(const pipe::DepthValue& d, pipe::DepthFormat format);
+
+// Writes the final depth buffer (`render --depth-out FILE.json`, SCENE.OUTPUT.PIPELINE):
+// {"format": "d24", "width": W, "height": H, "samples": N, "depth": [...]} with
+// width * height * samples values, index (y * W + x) * N + k, one target row per line.
+// Returns false when a write failed or the buffer's size is not width * height * samples.
+// rule: SCENE.OUTPUT.PIPELINE
+[[nodiscard]] bool write_depth_buffer(std::FILE* out, std::int32_t width, std::int32_t height,
+                                      std::uint32_t samples, pipe::DepthFormat format,
+                                      const std::vector<pipe::DepthValue>& buffer);
 
 }  // namespace rastrules::io

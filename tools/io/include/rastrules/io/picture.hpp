@@ -100,4 +100,12 @@ inline constexpr Rgb kBackground{255, 255, 255};
 // Preconditions: scale >= 1 and picture_fits(scene.width, scene.height, scale).
 [[nodiscard]] Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int scale);
 
+// Returns a picture of a depth buffer (`render --png-depth`, SCENE.OUTPUT.PIPELINE): each target
+// pixel grey, black at depth 0 (near) to white at 1 (far), from the mean of its samples' depths
+// (depth01: width * height * samples values in [0, 1], index (y * width + x) * samples + k,
+// clamped), with the pixel grid from scale 3 on. Image size as draw_picture().
+// Preconditions: scale >= 1, picture_fits(width, height, scale), samples >= 1.
+[[nodiscard]] Image draw_depth_picture(std::int32_t width, std::int32_t height, std::uint32_t samples,
+                                       const std::vector<double>& depth01, int scale);
+
 }  // namespace rastrules::io
