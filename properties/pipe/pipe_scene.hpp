@@ -1,0 +1,504 @@
+// SPDX-License-Identifier: MIT
+// Whole pipeline scenes for the properties: printing a scene so that a counterexample can be
+// rebuilt, the oracle's account of each primitive (its transform, clip volume, clipped polygon,
+// fan, window vertices and snapped positions, all from oracle/pipe.hpp), sample positions from
+// the oracle's own pattern tables, and the check of run_pipeline's fragments against it:
+// barycentrics, attributes and depths within the spec's bounds at each evaluation point,
+// coverage of every part equal to the window-space path, the depth test replayed sample by
+// sample, killed fragments, the scissor, the output order.
+// Implements (properties for): PIPE.CLIP.UNCLIPPED, PIPE.CLIP.POLYGON, PIPE.BARY.EXACT,
+//   PIPE.INTERP.LOCATION, PIPE.INTERP.PERSPECTIVE, PIPE.INTERP.LINEAR, PIPE.INTERP.FLAT,
+//   PIPE.INTERP.BOUND, PIPE.DEPTH.INTERP, PIPE.DEPTH.BOUND, PIPE.DEPTH.TEST, PIPE.DEPTH.WRITE,
+//   PIPE.DEPTH.KILL, PIPE.VIEWPORT.SCISSOR
+
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <variant>
+#include <vector>
+
+#include "pipe_gen.hpp"
+#include "rastrules/msaa.hpp"
+#include "rastrules/oracle/msaa.hpp"
+#include "rastrules/oracle/pipe.hpp"
+#include "rastrules/oracle/triangle.hpp"
+#include "rastrules/pipeline.hpp"
+#include "rastrules/scene.hpp"
+
+namespace rastrules::pipe_scene {
+
+namespace op = rastrules::oracle::pipe;
+namespace om = rastrules::oracle::msaa;
+namespace kp = rastrules::pipe;
+namespace pg = rastrules::pipe_gen;
+using Raw2 = op::Raw2;
+
+// ---------------------------------------------------------------------------------------------
+// Printing
+
+inline std::string interpolation_name(kp::Interpolation i) {
+  switch (i) {
+  case kp::Interpolation::kPerspective: return "perspective";
+  case kp::Interpolation::kLinear: return "linear";
+  case kp::Interpolation::kFlat: return "flat";
+  }
+  return "?";
+}
+inline std::string location_name(kp::Location l) {
+  switch (l) {
+  case kp::Location::kCenter: return "center";
+  case kp::Location::kCentroid: return "centroid";
+  case kp::Location::kSample: return "sample";
+  }
+  return "?";
+}
+inline std::string cull_name(CullMode c) {
+  return c == CullMode::kNone ? "none" : (c == CullMode::kBack ? "back" : "front");
+}
+
+inline void show(const kp::PipeScene& s, std::ostream& os) {
+  const Scene& b = s.base;
+  os << "scene: target " << b.width << "x" << b.height << ", cull " << cull_name(b.state.cull)
+     << ", front " << (b.state.front_face == FrontFace::kClockwise ? "cw" : "ccw") << ", fill "
+     << static_cast<int>(b.state.fill) << ", samples " << b.msaa.count() << ", shading "
+     << (b.msaa.shading == ShadingRate::kSample ? "sample" : "pixel") << ", centroid rule "
+     << (b.msaa.centroid_rule == CentroidRule::kD3D11 ? "d3d11" : "d3d10") << ", provoking "
+     << (s.provoking == kp::Provoking::kFirst ? "first" : "last") << "\n";
+  if (s.viewport) {
+    os << "  viewport ";
+    kp::showValue(*s.viewport, os);
+    os << "\n";
+  }
+  const auto mat = [&](const char* name, const std::optional<kp::Mat4f>& m) {
+    if (m) os << "  " << name << " " << pg::fs(*m) << "\n";
+  };
+  mat("model", s.model);
+  mat("view", s.view);
+  mat("projection", s.projection);
+  if (s.depth) {
+    const kp::DepthState& d = *s.depth;
+    os << "  depth " << pg::depth_format_name(d.format) << " " << pg::compare_name(d.func)
+       << (d.write ? " write" : " no-write") << " clear " << pg::fs(d.clear)
+       << (d.clip ? " clip" : " no-clip") << "\n";
+  }
+  for (const kp::AttributeDecl& a : s.attributes)
+    os << "  attribute " << a.name << " " << interpolation_name(a.interpolation) << " "
+       << location_name(a.location) << "\n";
+  for (std::size_t i = 0; i < s.primitives.size(); ++i) {
+    const kp::PipePrimitive& p = s.primitives[i];
+    os << "  prim " << i << " " << to_string(p.base.type) << ":";
+    if (!p.pos.empty()) {
+      for (const kp::Vec4f& v : p.pos) os << " pos " << pg::fs(v);
+    } else {
+      for (const FloatPoint& v : p.base.v) os << " v " << pg::fs(v);
+      if (!p.z.empty()) os << " z " << pg::fs(p.z);
+      if (!p.w.empty()) os << " w " << pg::fs(p.w);
+    }
+    for (const auto& a : p.attr) os << " attr " << pg::fs(a);
+    os << "\n";
+  }
+}
+inline std::string show(const kp::PipeScene& s) {
+  std::ostringstream os;
+  show(s, os);
+  return os.str();
+}
+
+// ---------------------------------------------------------------------------------------------
+// The oracle's geometry of a primitive
+
+inline op::Viewport viewport_of(const kp::PipeScene& s) {
+  if (s.viewport) return pg::to_oracle(*s.viewport);
+  return op::Viewport{0.0f, 0.0f, static_cast<float>(s.base.width),
+                      static_cast<float>(s.base.height), 0.0f, 1.0f};
+}
+
+// One fan triangle (or the unclipped triangle) in window space.
+struct Part {
+  std::array<op::WindowVertex, 3> wv{};
+  std::array<Raw2, 3> raw{};
+  std::array<std::vector<float>, 3> attr;  // per vertex, one per attribute
+};
+
+struct PrimGeometry {
+  bool transform_error = false;  // a clip-space position beyond the limit after the transform
+  bool clipped = false;
+  std::vector<Part> parts;
+  std::vector<float> flat;  // per attribute
+  std::string problem;      // a window vertex that does not snap (the guard band's promise)
+};
+
+inline std::optional<Raw2> snap2(float x, float y) {
+  const auto rx = oracle::snap(x), ry = oracle::snap(y);
+  if (!rx || !ry) return std::nullopt;
+  return Raw2{*rx, *ry};
+}
+
+inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
+  const kp::PipePrimitive& p = s.primitives[prim];
+  const op::Viewport vp = viewport_of(s);
+  PrimGeometry g;
+  const std::size_t nv = p.pos.empty() ? p.base.v.size() : p.pos.size();
+  const std::size_t nattr = s.attributes.size();
+  for (std::size_t k = 0; k < nattr; ++k) {
+    std::vector<float> values;
+    for (std::size_t j = 0; j < nv; ++j) values.push_back(p.attr.at(j).at(k));
+    g.flat.push_back(op::flat_value(values, s.provoking == kp::Provoking::kFirst ? "first" : "last"));
+  }
+  const auto vertex_attr = [&](std::size_t j) {
+    return nattr == 0 ? std::vector<float>{} : p.attr.at(j);
+  };
+  std::vector<op::WindowVertex> wv;
+  std::vector<std::vector<float>> attrs;
+  if (p.pos.empty()) {
+    for (std::size_t j = 0; j < nv; ++j) {
+      op::WindowVertex v;
+      v.x = p.base.v[j][0];
+      v.y = p.base.v[j][1];
+      v.z = p.z.empty() ? 0.0f : p.z[j];
+      v.w = p.w.empty() ? 1.0f : p.w[j];
+      wv.push_back(v);
+      attrs.push_back(vertex_attr(j));
+    }
+  } else {
+    std::vector<op::ClipVertex> cv;
+    std::vector<op::Vec4> pos;
+    for (std::size_t j = 0; j < nv; ++j) {
+      op::Vec4 c = p.pos[j];
+      if (s.model) c = op::transform(*s.model, c);
+      if (s.view) c = op::transform(*s.view, c);
+      if (s.projection) c = op::transform(*s.projection, c);
+      if (!pg::position_ok(c)) g.transform_error = true;
+      cv.push_back(op::ClipVertex{c, vertex_attr(j)});
+      pos.push_back(c);
+    }
+    if (g.transform_error) return g;
+    if (p.base.type != PrimitiveType::kTriangle) return g;  // only triangles are modelled here
+    const bool depth_clip = !s.depth || s.depth->clip;
+    const op::Volume vol = op::clip_volume(pos, vp, depth_clip);
+    const std::vector<op::ClipVertex> poly = op::clip_polygon(cv, vol);
+    bool same = poly.size() == cv.size();
+    for (std::size_t j = 0; same && j < poly.size(); ++j) {
+      for (std::size_t c = 0; c < 4; ++c) same = same && pg::same_bits(poly[j].pos[c], cv[j].pos[c]);
+    }
+    g.clipped = !same;
+    for (const op::ClipVertex& c : poly) {
+      wv.push_back(op::to_window(c.pos, vp));
+      attrs.push_back(c.attr);
+    }
+  }
+  if (p.base.type != PrimitiveType::kTriangle) return g;
+  for (std::size_t k = 1; k + 1 < wv.size(); ++k) {
+    Part part;
+    const std::array<std::size_t, 3> idx{0, k, k + 1};
+    for (std::size_t i = 0; i < 3; ++i) {
+      part.wv[i] = wv[idx[i]];
+      part.attr[i] = attrs[idx[i]];
+      const auto r = snap2(part.wv[i].x, part.wv[i].y);
+      if (!r) {
+        g.problem = "window vertex (" + pg::fs(part.wv[i].x) + ", " + pg::fs(part.wv[i].y) +
+                    ") of primitive " + std::to_string(prim) + " does not snap";
+        return g;
+      }
+      part.raw[i] = *r;
+    }
+    g.parts.push_back(part);
+  }
+  return g;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Sample positions, from the oracle's pattern tables
+
+inline std::vector<om::Offset> pattern_of(const kp::PipeScene& s) {
+  return om::standard_pattern(s.base.msaa.count());
+}
+inline Raw2 centre_raw(std::int32_t x, std::int32_t y) {
+  return {256 * std::int64_t{x} + 128, 256 * std::int64_t{y} + 128};
+}
+inline Raw2 offset_raw(std::int32_t x, std::int32_t y, const om::Offset& o) {
+  const Raw2 c = centre_raw(x, y);
+  return {c[0] + 16 * std::int64_t{o.x}, c[1] + 16 * std::int64_t{o.y}};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Checking one run
+
+// Which stored values of the allowed range [lo, hi] fail the test against old: whether some
+// value in the range fails (a killed sample is then consistent).
+inline bool some_value_fails(const std::string& func, const op::Stored& lo, const op::Stored& hi,
+                             const op::Stored& old, const std::string& format) {
+  const bool d32f = format == "d32f";
+  const auto lt = [&](const op::Stored& a, const op::Stored& b) {
+    return d32f ? a.f < b.f : a.unorm < b.unorm;
+  };
+  const auto eq = [&](const op::Stored& a, const op::Stored& b) { return !lt(a, b) && !lt(b, a); };
+  if (func == "never") return true;
+  if (func == "always") return false;
+  if (func == "less") return !lt(hi, old);              // some v >= old
+  if (func == "less_equal") return lt(old, hi);         // some v > old
+  if (func == "greater") return !lt(old, lo);           // some v <= old
+  if (func == "greater_equal") return lt(lo, old);      // some v < old
+  if (func == "equal") return !(eq(lo, old) && eq(hi, old));
+  if (func == "not_equal") return !lt(old, lo) && !lt(hi, old);  // old in [lo, hi]
+  return false;
+}
+
+struct CheckStats {
+  std::size_t fragments = 0, killed = 0, clipped_prims = 0, attr_checks = 0, depth_checks = 0;
+  bool horizon = false, saturated = false;
+};
+
+// Returns "" when r is consistent with the oracle, else a description of the first problem.
+// Checks every triangle primitive (points and lines only for order, scissor and the depth
+// replay).
+inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r, CheckStats& st) {
+  std::ostringstream err;
+  const op::Viewport vp = viewport_of(s);
+  const op::Rect sc = op::viewport_scissor(vp);
+  const std::uint32_t n = s.base.msaa.count();
+  const std::vector<om::Offset> pattern = pattern_of(s);
+  const bool has_depth = s.depth.has_value();
+  const bool need_data = has_depth || !s.attributes.empty() ||
+                         std::any_of(s.primitives.begin(), s.primitives.end(),
+                                     [](const kp::PipePrimitive& p) { return !p.pos.empty(); });
+  if (need_data ? r.data.size() != r.fragments.size() : !r.data.empty()) {
+    err << "data has " << r.data.size() << " entries for " << r.fragments.size() << " fragments";
+    return err.str();
+  }
+  const std::string fmt = has_depth ? pg::depth_format_name(s.depth->format) : "";
+  const std::string func = has_depth ? pg::compare_name(s.depth->func) : "";
+  const std::int64_t W = s.base.width, H = s.base.height;
+  std::vector<op::Stored> buffer;
+  if (has_depth) {
+    const op::Stored clear = op::store_exact(static_cast<double>(s.depth->clear), 0.0f, 1.0f, fmt);
+    buffer.assign(static_cast<std::size_t>(W * H * n), clear);
+  }
+  std::vector<PrimGeometry> geo;
+  for (std::size_t i = 0; i < s.primitives.size(); ++i) {
+    geo.push_back(geometry(s, i));
+    if (!geo.back().problem.empty()) return geo.back().problem;
+    if (geo.back().clipped) ++st.clipped_prims;
+  }
+  const bool first_attr_centroid = !s.attributes.empty() &&
+                                   s.attributes[0].location == kp::Location::kCentroid;
+  (void)first_attr_centroid;
+  std::tuple<std::uint32_t, std::int64_t, std::int32_t, std::int32_t, std::int64_t> last{0, -1, -1, -1, -1};
+  for (std::size_t i = 0; i < r.fragments.size(); ++i) {
+    const Fragment& f = r.fragments[i];
+    const kp::FragmentData* d = need_data ? &r.data[i] : nullptr;
+    const std::string at = "fragment " + std::to_string(i) + " (prim " + std::to_string(f.prim) +
+                           ", part " + (d && d->part ? std::to_string(*d->part) : "-") + ", x " +
+                           std::to_string(f.x) + ", y " + std::to_string(f.y) + ", mask " +
+                           std::to_string(f.mask) + ")";
+    ++st.fragments;
+    // Order (prim, part, y, x, sample) and position.
+    const std::tuple<std::uint32_t, std::int64_t, std::int32_t, std::int32_t, std::int64_t> key{
+        f.prim, d && d->part ? std::int64_t{*d->part} : -1, f.y, f.x,
+        f.sample ? std::int64_t{*f.sample} : -1};
+    if (i > 0 && !(last < key)) return at + ": out of order";
+    last = key;
+    if (f.x < 0 || f.y < 0 || f.x >= W || f.y >= H) return at + ": outside the target";
+    if (f.x < sc.x0 || f.x >= sc.x1 || f.y < sc.y0 || f.y >= sc.y1)
+      return at + ": outside the viewport scissor";
+    if (f.prim >= s.primitives.size()) return at + ": no such primitive";
+    const kp::PipePrimitive& pp = s.primitives[f.prim];
+    const PrimGeometry& g = geo[f.prim];
+    if (g.transform_error) return at + ": the scene should have been rejected (transform)";
+    const bool triangle = pp.base.type == PrimitiveType::kTriangle;
+    const Part* part = nullptr;
+    if (triangle) {
+      const std::size_t k = d && d->part ? *d->part : 0;
+      if (d && d->part.has_value() != g.clipped)
+        return at + ": part " + (d->part ? "present" : "absent") + " but the oracle's clipper " +
+               (g.clipped ? "clips" : "does not clip");
+      if (k >= g.parts.size())
+        return at + ": part " + std::to_string(k) + " of " + std::to_string(g.parts.size());
+      part = &g.parts[k];
+    }
+    // The depth test, replayed.
+    const bool killed = has_depth && d->passed == 0 && !f.helper;
+    std::uint32_t passed = 0;
+    if (has_depth && !f.helper) {
+      if (!killed && d->depth.size() != static_cast<std::size_t>(std::popcount(f.mask)))
+        return at + ": " + std::to_string(d->depth.size()) + " depth values";
+      if (killed && (!d->depth.empty() || !d->attr.empty() || d->bary))
+        return at + ": killed but carries depth, attributes or barycentrics";
+      std::size_t j = 0;
+      for (std::uint32_t smp = 0; smp < n; ++smp) {
+        if ((f.mask & (1u << smp)) == 0) continue;
+        const std::size_t idx = static_cast<std::size_t>((f.y * W + f.x) * n + smp);
+        const Raw2 pos = offset_raw(f.x, f.y, pattern[smp]);
+        if (killed) {
+          if (part) {
+            const op::Bary b = op::barycentrics(part->raw, pos);
+            const op::DepthCheck c = op::check_depth_stored(
+                b, {part->wv[0].z, part->wv[1].z, part->wv[2].z}, vp.min_depth, vp.max_depth,
+                fmt, op::Stored{});
+            if (!some_value_fails(func, c.lo, c.hi, buffer[idx], fmt))
+              return at + ": killed, but sample " + std::to_string(smp) +
+                     " passes for every allowed depth: " + c.describe(fmt);
+          }
+          continue;
+        }
+        const op::Stored now = pg::to_oracle(d->depth[j++]);
+        if (part) {
+          const op::Bary b = op::barycentrics(part->raw, pos);
+          op::DepthCheck c = op::check_depth_stored(
+              b, {part->wv[0].z, part->wv[1].z, part->wv[2].z}, vp.min_depth, vp.max_depth, fmt, now);
+          ++st.depth_checks;
+          if (!c.ok) return at + ": depth of sample " + std::to_string(smp) + ": " + c.describe(fmt);
+        }
+        if (op::depth_test(func, now, buffer[idx], fmt)) {
+          passed |= 1u << smp;
+          if (s.depth->write) buffer[idx] = now;
+        }
+      }
+      if (killed) ++st.killed;
+      if (!killed && passed != d->passed)
+        return at + ": passed " + std::to_string(d->passed) + ", the replayed test gives " +
+               std::to_string(passed);
+    } else if (d && d->passed != f.mask) {
+      return at + ": passed " + std::to_string(d->passed) + " without a depth test";
+    }
+    if (!part || killed || d == nullptr) continue;
+    // Barycentrics and attributes.
+    const auto location_raw = [&](kp::Location l) -> std::optional<Raw2> {
+      switch (l) {
+      case kp::Location::kCenter: return centre_raw(f.x, f.y);
+      case kp::Location::kSample:
+        if (!f.sample) return std::nullopt;
+        return offset_raw(f.x, f.y, pattern.at(*f.sample));
+      case kp::Location::kCentroid: {
+        const std::string rule = s.base.msaa.centroid_rule == CentroidRule::kD3D11 ? "d3d11" : "d3d10";
+        const om::CentroidPoint c = om::centroid(rule, f.mask, 0xFFFFFFFFu, pattern);
+        return offset_raw(f.x, f.y, c.offset);
+      }
+      }
+      return std::nullopt;
+    };
+    const bool want_bary = has_depth || !s.attributes.empty();
+    if (want_bary != d->bary.has_value())
+      return at + ": barycentrics " + (d->bary ? "present" : "absent");
+    if (d->bary) {
+      const auto loc = location_raw(s.attributes.empty() ? kp::Location::kCenter : s.attributes[0].location);
+      if (loc && pg::to_oracle(*d->bary) != op::barycentrics(part->raw, *loc))
+        return at + ": barycentrics differ from the exact ones at " + pg::rs(*loc) + " of " +
+               pg::rs(part->raw);
+    }
+    if (d->attr.size() != s.attributes.size())
+      return at + ": " + std::to_string(d->attr.size()) + " attributes";
+    for (std::size_t k = 0; k < s.attributes.size(); ++k) {
+      const kp::AttributeDecl& a = s.attributes[k];
+      const float got = d->attr[k];
+      if (a.interpolation == kp::Interpolation::kFlat) {
+        if (!pg::same_bits(got, g.flat[k]))
+          return at + ": flat attribute " + std::to_string(k) + " " + pg::fs(got) + ", want " +
+                 pg::fs(g.flat[k]);
+        continue;
+      }
+      const auto loc = location_raw(a.location);
+      if (!loc) return at + ": attribute " + std::to_string(k) + " at a sample, fragment without one";
+      const op::Bary b = op::barycentrics(part->raw, *loc);
+      const std::array<float, 3> av{part->attr[0].at(k), part->attr[1].at(k), part->attr[2].at(k)};
+      const op::InterpCheck c =
+          a.interpolation == kp::Interpolation::kPerspective
+              ? op::check_perspective(b, av, {part->wv[0].w, part->wv[1].w, part->wv[2].w}, g.flat[k], got)
+              : op::check_linear(b, av, got);
+      ++st.attr_checks;
+      st.horizon = st.horizon || c.horizon;
+      st.saturated = st.saturated || c.saturated;
+      if (!c.ok)
+        return at + ": attribute " + std::to_string(k) + " (" + interpolation_name(a.interpolation) +
+               ") at " + pg::rs(*loc) + ", vertices " + pg::rs(part->raw) + ", values " +
+               pg::fs(av) + ", w " + pg::fs(std::array<float, 3>{part->wv[0].w, part->wv[1].w, part->wv[2].w}) +
+               ": " + c.describe();
+    }
+  }
+  if (has_depth) {
+    if (r.depth_buffer.size() != buffer.size())
+      return "depth buffer of " + std::to_string(r.depth_buffer.size()) + " samples";
+    for (std::size_t i = 0; i < buffer.size(); ++i) {
+      if (!(pg::to_oracle(r.depth_buffer[i]) == buffer[i]))
+        return "depth buffer sample " + std::to_string(i) + ": kernel (" +
+               std::to_string(r.depth_buffer[i].unorm) + ", " + pg::fs(r.depth_buffer[i].f) +
+               "), replay (" + std::to_string(buffer[i].unorm) + ", " + pg::fs(buffer[i].f) + ")";
+    }
+  } else if (!r.depth_buffer.empty()) {
+    return "a depth buffer without depth";
+  }
+  return "";
+}
+
+// The coverage of each part equals the window-space path (rastrules::render of that triangle
+// with the scene's raster and multisample state), cut to the viewport scissor.
+inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& r) {
+  const op::Rect sc = op::viewport_scissor(viewport_of(s));
+  std::map<std::pair<std::uint32_t, std::int64_t>, std::vector<Fragment>> got;
+  const bool has_data = !r.data.empty();
+  for (std::size_t i = 0; i < r.fragments.size(); ++i) {
+    Fragment f = r.fragments[i];
+    const std::int64_t part = has_data && r.data[i].part ? std::int64_t{*r.data[i].part} : -1;
+    const std::uint32_t prim = f.prim;
+    f.prim = 0;
+    got[{prim, part}].push_back(f);
+  }
+  const bool any_centroid = std::any_of(s.attributes.begin(), s.attributes.end(), [](const kp::AttributeDecl& a) {
+    return a.location == kp::Location::kCentroid;
+  });
+  for (std::size_t p = 0; p < s.primitives.size(); ++p) {
+    if (s.primitives[p].base.type != PrimitiveType::kTriangle) continue;
+    const PrimGeometry g = geometry(s, p);
+    if (g.transform_error) continue;
+    for (std::size_t k = 0; k < g.parts.size(); ++k) {
+      Scene ws = s.base;
+      if (any_centroid) ws.msaa.has_centroid = true;
+      ws.primitives = {make_triangle({FloatPoint{g.parts[k].wv[0].x, g.parts[k].wv[0].y},
+                                      FloatPoint{g.parts[k].wv[1].x, g.parts[k].wv[1].y},
+                                      FloatPoint{g.parts[k].wv[2].x, g.parts[k].wv[2].y}})};
+      const auto rendered = render(ws);
+      if (const auto* e = std::get_if<SceneError>(&rendered))
+        return "render of primitive " + std::to_string(p) + " part " + std::to_string(k) + ": " + e->what();
+      std::vector<Fragment> want;
+      for (const Fragment& f : std::get<std::vector<Fragment>>(rendered)) {
+        if (f.x >= sc.x0 && f.x < sc.x1 && f.y >= sc.y0 && f.y < sc.y1) want.push_back(f);
+      }
+      const std::int64_t key = g.clipped ? static_cast<std::int64_t>(k) : -1;
+      const auto it = got.find({static_cast<std::uint32_t>(p), key});
+      const std::vector<Fragment> have = it == got.end() ? std::vector<Fragment>{} : it->second;
+      if (have != want) {
+        std::ostringstream os;
+        os << "coverage of primitive " << p << " part " << key << ": pipeline " << have.size()
+           << " fragments, window-space render " << want.size() << " (vertices " << pg::rs(g.parts[k].raw) << ")";
+        for (std::size_t i = 0; i < std::max(have.size(), want.size()); ++i) {
+          const bool same = i < have.size() && i < want.size() && have[i] == want[i];
+          if (same) continue;
+          os << "; first difference at " << i << ": pipeline ";
+          if (i < have.size()) os << "(" << have[i].x << ", " << have[i].y << ", mask " << have[i].mask << ")";
+          os << ", render ";
+          if (i < want.size()) os << "(" << want[i].x << ", " << want[i].y << ", mask " << want[i].mask << ")";
+          break;
+        }
+        return os.str();
+      }
+      if (it != got.end()) got.erase(it);
+    }
+  }
+  for (const auto& [key, frags] : got) {
+    if (s.primitives[key.first].base.type == PrimitiveType::kTriangle && !frags.empty())
+      return "primitive " + std::to_string(key.first) + " part " + std::to_string(key.second) +
+             ": fragments of a part the oracle does not have";
+  }
+  return "";
+}
+
+}  // namespace rastrules::pipe_scene
