@@ -621,9 +621,6 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
       result.stats.tiles_never_written += cleared[t];
       materialize(t);
     }
-  if (!s.base.msaa.has_centroid)
-    for (Fragment& f : cover)
-      f.centroid.reset();  // asked for by an attribute only: used above, not reported
   result.stats.hiz_rejected = n_hiz.load();
   result.stats.depth_samples = n_depth.load();
   result.stats.attributes = n_attr.load();

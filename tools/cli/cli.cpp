@@ -88,10 +88,14 @@ void print_usage(std::FILE* out) {
       "      watertightness, translation invariance and lavapipe's time; prints the table\n"
       "      and with --out writes DIR/ladder.md, ladder.json and ladder.png. The fast\n"
       "      path is also timed on --threads N threads (default: one per processor).\n"
+      "  cases [DIR]\n"
+      "      Check the hard-case catalog (default spec/cases, PIPE.CATALOG): each case run\n"
+      "      with and without the optimizations, its values against the exact oracle's\n"
+      "      bounds and its NAME.expect.json; one line per case, exit status 1 on a failure.\n"
       "  help\n"
       "      Show this text (also --help, -h).\n"
       "\n"
-      "exit status: 0 success, 1 a difference was found (showcase, fuzz, check), 2 bad input\n"
+      "exit status: 0 success, 1 a difference was found (showcase, fuzz, check, cases), 2 bad input\n"
       "or usage, or a driver failure.\n",
       out);
 }

@@ -99,6 +99,7 @@ int run_showcase(const Args& args);
 int run_fuzz(const Args& args);
 int run_check(const Args& args);
 int run_probe(const Args& args);
-int run_bench(const Args& args);  // bench.cpp: the precision ladder (BENCH.REPORT)
+int run_bench(const Args& args);
+int run_cases(const Args& args);  // cases.cpp: the hard-case catalog (PIPE.CATALOG)  // bench.cpp: the precision ladder (BENCH.REPORT)
 
 }  // namespace rastrules::cli

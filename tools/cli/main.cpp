@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
     if (command == "check") return run_check(args);
     if (command == "probe") return run_probe(args);
     if (command == "bench") return run_bench(args);
+    if (command == "cases") return run_cases(args);
     return usage_error("unknown command \"" + command + "\"");
   } catch (const std::bad_alloc&) {
     return error("out of memory");

@@ -266,6 +266,8 @@ struct PipeStats {
 // costs (PIPE.EFFECTS.ON_DEMAND): fragments are the kernel's (SCENE.OUTPUT.FRAGMENTS, prim being
 // the scene's primitive index), sorted by (prim, part, y, x, seg, sample); data is empty when
 // the scene has no clip-space input, depth or attributes, else data[i] belongs to fragments[i].
+// An attribute at the centroid makes every fragment carry its centroid (as the scene's
+// `centroid` key does, with the D3D11 rule unless the scene names another).
 struct PipeResult {
   std::vector<Fragment> fragments;
   std::vector<FragmentData> data;
