@@ -6,12 +6,14 @@
 // as the spec's table says. Depths at and next to 0 and 1, tiny, outside [0, 1]; depth ranges
 // that are a point or one float step wide; triangles of every kind.
 // Implements (properties for): PIPE.DEPTH.INTERP, PIPE.DEPTH.CLAMP, PIPE.DEPTH.FORMAT,
-//   PIPE.DEPTH.BOUND, PIPE.DEPTH.TEST
+//   PIPE.DEPTH.BOUND, PIPE.DEPTH.TEST, PIPE.DEPTH.BIAS
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -123,6 +125,34 @@ RC_GTEST_PROP(PipeDepth, Float32DepthsConvertExactly, ()) {
             pg::depth_format_name(f) + ": kernel (" + std::to_string(got.unorm) + ", " +
             pg::fs(got.f) + "), exact (" + std::to_string(want.unorm) + ", " + pg::fs(want.f) + ")");
   }
+}
+
+// rule: PIPE.DEPTH.BIAS
+RC_GTEST_PROP(PipeDepth, BiasIsTheSpecFormula, ()) {
+  const pg::RawTri t = *pg::full_size(pg::raw_triangle(true));
+  // Sometimes every depth subnormal (where the d32f exponent is at its floor).
+  const std::array<float, 3> z = *rc::gen::weightedOneOf<std::array<float, 3>>({
+      {5, pg::full_size(pg::depth_triple())},
+      {1, rc::gen::apply([](float a, float b, float c) {
+         return std::array<float, 3>{std::fabs(a), std::fabs(b), std::fabs(c)};
+       }, pg::scaled(-149, -127), pg::scaled(-149, -127), pg::scaled(-149, -127))},
+  });
+  const kp::DepthBias b = *pg::depth_bias_state();
+  const int fi = *rc::gen::inRange(0, 4);
+  const std::optional<kp::DepthFormat> f =
+      fi == 3 ? std::nullopt : std::optional<kp::DepthFormat>(static_cast<kp::DepthFormat>(fi));
+  const std::string fname = f ? pg::depth_format_name(*f) : "";
+  const float got = kp::depth_bias(pg::to_vec2(t), z, b, f);
+  const float want = op::depth_bias(t, z, b.bias, b.slope_scaled, b.clamp, fname);
+  if (!pg::same_bits(got, want)) {
+    RC_FAIL("triangle " + pg::rs(t) + ", Z " + pg::fs(z) + ", bias " + std::to_string(b.bias) +
+            ", slope_scaled " + pg::fs(b.slope_scaled) + ", clamp " + pg::fs(b.clamp) + ", format '" +
+            fname + "': kernel " + pg::fs(got) + ", oracle " + pg::fs(want));
+  }
+  RC_CLASSIFY(b.slope_scaled != 0.0f, "slope term");
+  RC_CLASSIFY(pg::twice_area(t) == 0, "degenerate");
+  RC_CLASSIFY(std::fabs(z[0]) < 0x1p-126f && std::fabs(z[1]) < 0x1p-126f && std::fabs(z[2]) < 0x1p-126f,
+              "subnormal depths");
 }
 
 // rule: PIPE.DEPTH.TEST

@@ -2,17 +2,22 @@
 // Properties: the kernel's float stages are bit-identical to the oracle's evaluation of the
 // spec's formulas (each operation an exact rational rounded once): the transform, the divide
 // and viewport transform, the implicit scissor, the clip volume, the inside test and the
-// Sutherland-Hodgman clipper (positions and attributes); and the guard band bound: a triangle
+// Sutherland-Hodgman clipper (positions and attributes) and the segment clipper; every clipped
+// vertex lands within the guard band + 1 px (the assumption of PIPE.CLIP.GUARD_BAND_SNAP);
+// viewports are accepted exactly within the spec's limits; and the guard band bound: a triangle
 // clipped at the guard band covers every pixel centre farther than 1/64 px from the edges of
 // the exactly projected and snapped unclipped triangle exactly when that triangle does, each at
 // most once across its fan.
 // Implements (properties for): PIPE.TRANSFORM.FLOAT32, PIPE.VIEWPORT.TRANSFORM,
 //   PIPE.VIEWPORT.SCISSOR, PIPE.CLIP.VOLUME, PIPE.CLIP.POLYGON, PIPE.CLIP.COMPUTE,
-//   PIPE.CLIP.UNCLIPPED, PIPE.CLIP.GUARD_BAND_BOUND
+//   PIPE.CLIP.UNCLIPPED, PIPE.CLIP.GUARD_BAND_BOUND, PIPE.CLIP.GUARD_BAND_SNAP, PIPE.CLIP.LINE,
+//   PIPE.VIEWPORT.RANGE
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <string>
 #include <variant>
@@ -107,6 +112,7 @@ std::string show(const std::vector<op::ClipVertex>& vs) {
 }
 
 // rule: PIPE.CLIP.VOLUME, PIPE.CLIP.POLYGON, PIPE.CLIP.COMPUTE, PIPE.CLIP.UNCLIPPED
+// rule: PIPE.CLIP.GUARD_BAND_SNAP
 RC_GTEST_PROP(PipeGeometry, ClipperIsBitIdenticalToTheSpecAlgorithm, ()) {
   const std::int32_t w = *rc::gen::inRange(1, 64), h = *rc::gen::inRange(1, 64);
   const kp::Viewport vp = *pg::viewport(w, h);
@@ -141,6 +147,15 @@ RC_GTEST_PROP(PipeGeometry, ClipperIsBitIdenticalToTheSpecAlgorithm, ()) {
       same = same && pg::same_bits(got[i].attr[a], want[i].attr[a]);
   }
   if (!same) RC_FAIL(where + "kernel clip_polygon:\n" + show(got) + "oracle:\n" + show(want));
+  // PIPE.CLIP.GUARD_BAND_SNAP assumes (without proof) that clipping, divide and viewport move a
+  // guard-band point by at most 1 px: every output vertex lands within kGuardBand + 1 px.
+  for (const kp::ClipVertex& v : got) {
+    const kp::WindowVertex wv = kp::to_window(v.pos, vp);
+    const double g = kp::kGuardBand + 1.0;
+    if (!(std::fabs(static_cast<double>(wv.x)) <= g && std::fabs(static_cast<double>(wv.y)) <= g))
+      RC_FAIL(where + "clipped vertex " + pg::fs(v.pos) + " lands at window (" + pg::fs(wv.x) + ", " +
+              pg::fs(wv.y) + "), beyond the guard band + 1 px");
+  }
   const bool all_inside = op::inside(ovol, t[0].pos) && op::inside(ovol, t[1].pos) &&
                           op::inside(ovol, t[2].pos);
   if (all_inside) RC_ASSERT(got == t);  // PIPE.CLIP.UNCLIPPED
@@ -148,6 +163,84 @@ RC_GTEST_PROP(PipeGeometry, ClipperIsBitIdenticalToTheSpecAlgorithm, ()) {
   RC_CLASSIFY(got.empty(), "clipped away");
   RC_CLASSIFY(!all_inside && !got.empty(), "clipped");
   RC_CLASSIFY(got.size() > 5, "more than 5 vertices");
+}
+
+// rule: PIPE.CLIP.LINE, PIPE.CLIP.COMPUTE
+RC_GTEST_PROP(PipeGeometry, SegmentClipperIsBitIdenticalToTheSpecAlgorithm, ()) {
+  const std::int32_t w = *rc::gen::inRange(1, 64), h = *rc::gen::inRange(1, 64);
+  const kp::Viewport vp = *pg::viewport(w, h);
+  const bool depth_clip = *rc::gen::inRange(0, 4) != 0;
+  const std::vector<kp::ClipVertex> t = clip_triangle(static_cast<std::size_t>(*rc::gen::inRange(0, 3)));
+  const kp::ClipVolume vol = kp::clip_volume({t[0].pos, t[1].pos}, vp, depth_clip);
+  const op::Volume ovol = op::clip_volume({t[0].pos, t[1].pos}, pg::to_oracle(vp), depth_clip);
+  const auto got = kp::clip_segment(t[0], t[1], vol);
+  const auto want = op::clip_segment(op::ClipVertex{t[0].pos, t[0].attr}, op::ClipVertex{t[1].pos, t[1].attr}, ovol);
+  const std::string where = vps(vp) + (depth_clip ? ", depth clip" : ", no depth clip") +
+                            ", segment\n" + show(std::vector<kp::ClipVertex>{t[0], t[1]});
+  if (got.has_value() != want.has_value())
+    RC_FAIL(where + (got ? "kernel keeps it, the oracle discards it" : "kernel discards it, the oracle keeps it"));
+  if (got) {
+    bool same = true;
+    for (std::size_t i = 0; i < 2; ++i) {
+      for (std::size_t c = 0; c < 4; ++c) same = same && pg::same_bits((*got)[i].pos[c], (*want)[i].pos[c]);
+      same = same && (*got)[i].attr.size() == (*want)[i].attr.size();
+      for (std::size_t a = 0; same && a < (*got)[i].attr.size(); ++a)
+        same = pg::same_bits((*got)[i].attr[a], (*want)[i].attr[a]);
+    }
+    if (!same) {
+      RC_FAIL(where + "kernel:\n" + show(std::vector<kp::ClipVertex>{(*got)[0], (*got)[1]}) + "oracle:\n" +
+              show(std::vector<op::ClipVertex>{(*want)[0], (*want)[1]}));
+    }
+  }
+  RC_CLASSIFY(!got, "discarded");
+  RC_CLASSIFY(got && !((*got)[0] == t[0] && (*got)[1] == t[1]), "cut");
+}
+
+// Viewports near and beyond every limit: in range, at it, one float step past it, not finite.
+rc::Gen<kp::Viewport> any_viewport() {
+  return rc::gen::exec([] {
+    const auto coord = [] {
+      return *rc::gen::weightedOneOf<float>({
+          {3, rc::gen::map(rc::gen::inRange(-40000, 40001), [](int k) { return static_cast<float>(k); })},
+          {2, rc::gen::element(-32768.0f, 32767.0f, std::nextafter(-32768.0f, -1e9f), std::nextafter(32767.0f, 1e9f),
+                               0.0f, -0.0f, 0.5f, 1e-4f)},
+          {1, rc::gen::element(std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+                               -std::numeric_limits<float>::infinity())},
+          {1, pg::attr_value()},
+      });
+    };
+    const auto depth = [] {
+      return *rc::gen::weightedOneOf<float>({
+          {3, pg::depth_value()},
+          {1, rc::gen::element(-0.0f, std::nextafter(1.0f, 2.0f), std::nextafter(0.0f, -1.0f), 2.0f,
+                               std::numeric_limits<float>::quiet_NaN())},
+      });
+    };
+    kp::Viewport v;
+    v.x = coord();
+    v.y = coord();
+    v.width = std::fabs(coord()) * (*rc::gen::inRange(0, 8) == 0 ? -1.0f : 1.0f);
+    v.height = std::fabs(coord()) * (*rc::gen::inRange(0, 8) == 0 ? -1.0f : 1.0f);
+    v.min_depth = depth();
+    v.max_depth = depth();
+    return v;
+  });
+}
+
+// rule: PIPE.VIEWPORT.RANGE
+RC_GTEST_PROP(PipeGeometry, ViewportLimitsAreTheSpecRanges, ()) {
+  const kp::Viewport vp = *any_viewport();
+  const auto got = kp::check_viewport(vp);
+  const std::vector<std::string> want = op::viewport_violations(pg::to_oracle(vp));
+  if (got.has_value() == want.empty()) {
+    std::string fields;
+    for (const auto& f : want) fields += " " + f;
+    RC_FAIL(vps(vp) + ": kernel " + (got ? "rejects it (" + got->first + ": " + got->second + ")" : "accepts it") +
+            ", oracle violations:" + (fields.empty() ? " none" : fields));
+  }
+  if (got && std::find(want.begin(), want.end(), got->first) == want.end())
+    RC_FAIL(vps(vp) + ": kernel names " + got->first + ", which is within its limits");
+  RC_CLASSIFY(!got, "valid");
 }
 
 // A clip-space vertex with 0 <= z <= w and w > 0 (no w or depth clipping) whose x/w or y/w may
@@ -159,7 +252,9 @@ rc::Gen<kp::Vec4f> guard_band_vertex() {
       if (*rc::gen::inRange(0, 2) == 0)
         return static_cast<float>(*rc::gen::inRange(-512, 513)) / 256.0f;
       const float m = static_cast<float>(*rc::gen::inRange(1 << 10, 1 << 14)) / 1024.0f;
-      return std::ldexp(m, *rc::gen::inRange(11, 23)) * (*rc::gen::arbitrary<bool>() ? 1.0f : -1.0f);
+      // Mostly just beyond the band; sometimes as far as the position limit allows (2^62 w).
+      const int e = *rc::gen::inRange(0, 5) == 0 ? *rc::gen::inRange(23, 61) : *rc::gen::inRange(11, 23);
+      return std::ldexp(m, e) * (*rc::gen::arbitrary<bool>() ? 1.0f : -1.0f);
     };
     const float z = static_cast<float>(*rc::gen::inRange(0, 257)) / 256.0f * w;
     return kp::Vec4f{ndc() * w, ndc() * w, z, w};

@@ -180,6 +180,30 @@ inline rc::Gen<std::array<float, 3>> depth_triple() {
   });
 }
 
+// Depth bias states: zero, small and huge constant biases (beyond 2^24, the int32 ends),
+// slope factors, clamps of either sign.
+inline rc::Gen<kp::DepthBias> depth_bias_state() {
+  return rc::gen::exec([] {
+    kp::DepthBias b;
+    b.bias = *rc::gen::weightedOneOf<std::int32_t>({
+        {1, rc::gen::just(0)},
+        {3, rc::gen::inRange(-1000, 1001)},
+        {1, rc::gen::element(std::int32_t{1} << 24, (std::int32_t{1} << 24) + 1, -(std::int32_t{1} << 25) - 3,
+                             std::numeric_limits<std::int32_t>::max(), std::numeric_limits<std::int32_t>::min())},
+    });
+    b.slope_scaled = *rc::gen::weightedOneOf<float>({
+        {1, rc::gen::just(0.0f)},
+        {2, rc::gen::map(rc::gen::inRange(-64, 65), [](int k) { return static_cast<float>(k) / 16.0f; })},
+        {1, attr_value()},
+    });
+    b.clamp = *rc::gen::weightedOneOf<float>({
+        {2, rc::gen::just(0.0f)},
+        {1, rc::gen::map(rc::gen::inRange(-64, 65), [](int k) { return std::ldexp(static_cast<float>(k), -12); })},
+    });
+    return b;
+  });
+}
+
 // ---------------------------------------------------------------------------------------------
 // Raw triangles and evaluation points
 
@@ -313,7 +337,7 @@ inline rc::Gen<kp::Viewport> viewport(std::int32_t width, std::int32_t height, b
 // A clip-space position with |coordinates| <= 2^64.
 inline rc::Gen<kp::Vec4f> clip_vertex() {
   return rc::gen::exec([] {
-    const int kind = *rc::gen::inRange(0, 8);
+    const int kind = *rc::gen::inRange(0, 9);
     const auto unit = [] { return static_cast<float>(*rc::gen::inRange(-1024, 1025)) / 256.0f; };
     kp::Vec4f p{};
     switch (kind) {
@@ -357,6 +381,12 @@ inline rc::Gen<kp::Vec4f> clip_vertex() {
     case 6:  // raw random coordinates of any size up to 2^64
       for (auto& c : p) c = *scaled(-80, 40);
       break;
+    case 7: {  // tiny: the whole vertex scaled by 2^k, k in [-150, -100] (into the subnormals)
+      const int k = *rc::gen::inRange(-150, -99);
+      p = {std::ldexp(unit(), k), std::ldexp(unit(), k), std::ldexp(std::fabs(unit()), k),
+           std::ldexp(unit(), k)};
+      break;
+    }
     default:  // behind the eye
       p = {unit(), unit(), unit(), -std::fabs(unit()) - 0.125f};
       break;

@@ -211,6 +211,14 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
       }
       part.raw[i] = *r;
     }
+    // PIPE.DEPTH.BIAS: each fan triangle from its own snapped vertices and depths.
+    if (s.depth && (s.depth->bias.bias != 0 || s.depth->bias.slope_scaled != 0.0f)) {
+      const kp::DepthBias& b = s.depth->bias;
+      const float bias = op::depth_bias(part.raw, {part.wv[0].z, part.wv[1].z, part.wv[2].z},
+                                        b.bias, b.slope_scaled, b.clamp,
+                                        pg::depth_format_name(s.depth->format));
+      for (op::WindowVertex& v : part.wv) v.z = op::fl32_add(v.z, bias);
+    }
     g.parts.push_back(part);
   }
   return g;
@@ -324,6 +332,32 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
       if (k >= g.parts.size())
         return at + ": part " + std::to_string(k) + " of " + std::to_string(g.parts.size());
       part = &g.parts[k];
+    }
+    // The drawn primitive the kernel reports equals the oracle's part, bit for bit.
+    if (d && !r.drawn.empty()) {
+      if (d->drawn >= r.drawn.size()) return at + ": no drawn primitive " + std::to_string(d->drawn);
+      const kp::DrawnPrimitive& dp = r.drawn[d->drawn];
+      if (dp.prim != f.prim || dp.part != d->part || dp.type != pp.base.type)
+        return at + ": its drawn primitive names another primitive or part";
+      if (part) {
+        bool same = dp.snapped.size() == 3 && dp.attr.size() == s.attributes.size() &&
+                    dp.flat.size() == g.flat.size();
+        for (std::size_t j = 0; same && j < 3; ++j) {
+          same = dp.snapped[j].x.raw() == part->raw[j][0] && dp.snapped[j].y.raw() == part->raw[j][1] &&
+                 pg::same_bits(dp.z[j], part->wv[j].z) && pg::same_bits(dp.w[j], part->wv[j].w);
+          for (std::size_t k = 0; same && k < s.attributes.size(); ++k)
+            same = pg::same_bits(dp.attr[k][j], part->attr[j].at(k));
+        }
+        for (std::size_t k = 0; same && k < g.flat.size(); ++k) same = pg::same_bits(dp.flat[k], g.flat[k]);
+        if (!same) {
+          std::string got;
+          for (const Vec2& v : dp.snapped) got += " (" + std::to_string(v.x.raw()) + ", " + std::to_string(v.y.raw()) + ")";
+          return at + ": drawn primitive differs from the oracle's: kernel snapped" + got + " z " +
+                 pg::fs(dp.z) + " w " + pg::fs(dp.w) + "; oracle " + pg::rs(part->raw) + " z " +
+                 pg::fs(std::array<float, 3>{part->wv[0].z, part->wv[1].z, part->wv[2].z}) + " w " +
+                 pg::fs(std::array<float, 3>{part->wv[0].w, part->wv[1].w, part->wv[2].w});
+        }
+      }
     }
     // The depth test, replayed.
     const bool killed = has_depth && d->passed == 0 && !f.helper;

@@ -91,6 +91,7 @@ rc::Gen<kp::PipeScene> pipe_scene(std::int32_t max_side, int max_prims) {
       d.write = *rc::gen::inRange(0, 4) != 0;
       d.clear = std::min(1.0f, std::fabs(*pg::depth_value()));
       d.clip = *rc::gen::inRange(0, 5) != 0;
+      if (*rc::gen::inRange(0, 10) < 3) d.bias = *pg::depth_bias_state();
       s.depth = d;
     }
     s.provoking = *rc::gen::element(kp::Provoking::kFirst, kp::Provoking::kLast);

@@ -331,6 +331,68 @@ std::vector<ClipVertex> clip_polygon(const std::vector<ClipVertex>& polygon, con
   return out;
 }
 
+// rule: PIPE.CLIP.LINE, PIPE.CLIP.COMPUTE
+std::optional<std::array<ClipVertex, 2>> clip_segment(const ClipVertex& a, const ClipVertex& b,
+                                                     const Volume& vol) {
+  const auto to_d = [](const ClipVertex& v) {
+    DVertex d{widen(v.pos), {}};
+    for (const float x : v.attr) d.attr.push_back(x);
+    return d;
+  };
+  std::array<DVertex, 2> e{to_d(a), to_d(b)};
+  for (std::size_t plane = 0; plane < kPlaneCount; ++plane) {
+    if (!plane_used(vol, plane)) continue;
+    const double d0 = distance(vol, plane, e[0].pos), d1 = distance(vol, plane, e[1].pos);
+    const bool in0 = d0 >= 0.0, in1 = d1 >= 0.0;
+    if (!in0 && !in1) return std::nullopt;
+    if (in0 == in1) continue;
+    // Move the outside endpoint to the intersection, computed from the inside one.
+    const std::size_t o = in0 ? 1 : 0, i = 1 - o;
+    const double di = in0 ? d0 : d1, dout = in0 ? d1 : d0;
+    const double t = fl64_div(di, fl64_sub(di, dout));
+    DVertex v;
+    for (std::size_t c = 0; c < 4; ++c) v.pos[c] = lerp_component(e[i].pos[c], e[o].pos[c], t);
+    for (std::size_t k = 0; k < e[i].attr.size(); ++k)
+      v.attr.push_back(lerp_component(e[i].attr[k], e[o].attr.at(k), t));
+    e[o] = std::move(v);
+  }
+  std::array<ClipVertex, 2> out;
+  for (std::size_t j = 0; j < 2; ++j) {
+    for (std::size_t c = 0; c < 4; ++c) out[j].pos[c] = nearest_float(e[j].pos[c]);
+    for (const double x : e[j].attr) out[j].attr.push_back(nearest_float(x));
+  }
+  return out;
+}
+
+// rule: PIPE.VIEWPORT.RANGE
+std::vector<std::string> viewport_violations(const Viewport& vp) {
+  std::vector<std::string> out;
+  const Q lo(-32768), hi(32767);
+  const auto in_range = [&](float v) { return std::isfinite(v) && exact(v) >= lo && exact(v) <= hi; };
+  const auto axis = [&](float origin, float size, const char* o, const char* sz) {
+    if (!in_range(origin)) out.emplace_back(o);
+    if (!std::isfinite(size) || !(size > 0.0f)) {
+      out.emplace_back(sz);
+    } else if (std::isfinite(origin)) {
+      const Q end = exact(origin) + exact(size);
+      if (end < lo || end > hi) {
+        out.emplace_back(o);
+        out.emplace_back(sz);
+      }
+    }
+  };
+  axis(vp.x, vp.width, "x", "width");
+  axis(vp.y, vp.height, "y", "height");
+  const auto unit = [](float v) { return std::isfinite(v) && v >= 0.0f && v <= 1.0f; };
+  if (!unit(vp.min_depth)) out.emplace_back("min_depth");
+  if (!unit(vp.max_depth)) out.emplace_back("max_depth");
+  if (unit(vp.min_depth) && unit(vp.max_depth) && vp.min_depth > vp.max_depth) {
+    out.emplace_back("min_depth");
+    out.emplace_back("max_depth");
+  }
+  return out;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Exact projection and the exact clipper
 
@@ -834,6 +896,45 @@ std::string DepthCheck::describe(const std::string& format) const {
      << show_stored(got, format) << ", exactly rounded " << show_stored(expected, format)
      << ", allowed [" << show_stored(lo, format) << ", " << show_stored(hi, format) << "]";
   return os.str();
+}
+
+// rule: PIPE.DEPTH.BIAS
+float depth_bias(const std::array<Raw2, 3>& v, const std::array<float, 3>& z, std::int32_t bias,
+                 float slope_scaled, float clamp, const std::string& format) {
+  if (bias == 0 && slope_scaled == 0.0f) return 0.0f;
+  float slope_term = 0.0f;
+  if (slope_scaled != 0.0f) {
+    const auto q = [](std::int64_t r) { return exact_i(r); };
+    const Q x1 = q(v[1][0] - v[0][0]), y1 = q(v[1][1] - v[0][1]);
+    const Q x2 = q(v[2][0] - v[0][0]), y2 = q(v[2][1] - v[0][1]);
+    const Q z1 = exact(z[1]) - exact(z[0]), z2 = exact(z[2]) - exact(z[0]);
+    const Q den = x1 * y2 - x2 * y1;  // raw units squared
+    float max_slope = 0.0f;
+    if (den != 0) {
+      // Z = Z0 + a (x - x0) + b (y - y0) through the three vertices; positions in pixels are
+      // raw / 256, so the per-pixel derivatives are 256 times the per-raw-unit ones.
+      const double ddx = rn64(Q((z1 * y2 - z2 * y1) * 256 / den));
+      const double ddy = rn64(Q((x1 * z2 - x2 * z1) * 256 / den));
+      max_slope = nearest_float(std::max(std::fabs(ddx), std::fabs(ddy)));
+    }
+    slope_term = fl32_mul(slope_scaled, max_slope);
+  }
+  float r = 0.0f;
+  if (format == "d32f") {
+    Q zmax(0);
+    for (const float zi : z) zmax = std::max(zmax, abs_q(exact(zi)));
+    const long e = zmax == 0 ? -126 : std::max(floor_log2(zmax), -126L);
+    r = static_cast<float>(rn64(pow2(e - 23)));
+  } else {
+    const int bits = format.empty() ? 24 : unorm_bits(format);
+    if (bits == 0) throw std::invalid_argument("oracle: bad depth format for depth_bias");
+    r = rn32(Q(1) / (pow2(bits) - 1));
+  }
+  const float constant = fl32_mul(nearest_float(static_cast<double>(bias)), r);
+  float total = fl32_add(constant, slope_term);
+  if (clamp > 0.0f) total = std::min(clamp, total);
+  else if (clamp < 0.0f) total = std::max(clamp, total);
+  return total;
 }
 
 // rule: PIPE.DEPTH.TEST

@@ -103,6 +103,21 @@ struct ClipVertex {
 // rule: PIPE.CLIP.POLYGON, PIPE.CLIP.COMPUTE
 std::vector<ClipVertex> clip_polygon(const std::vector<ClipVertex>& polygon, const Volume& vol);
 
+// The segment (a, b) cut at the same planes in the same order with the same intersection as
+// clip_polygon (from the inside endpoint, doubles between planes, rounded once); nullopt when a
+// plane has both endpoints outside.
+// rule: PIPE.CLIP.LINE
+std::optional<std::array<ClipVertex, 2>> clip_segment(const ClipVertex& a, const ClipVertex& b,
+                                                     const Volume& vol);
+
+// The fields of a viewport that violate PIPE.VIEWPORT.RANGE, decided exactly (x + width and
+// y + height as exact sums): "x" or "y" out of [-32768, 32767] or not finite; "width" or
+// "height" not finite or not > 0; "x" and "width" (either may be named) when x + width is out of
+// [-32768, 32767], the same for y; "min_depth" or "max_depth" out of [0, 1]; both when
+// min_depth > max_depth. Empty when the viewport is valid.
+// rule: PIPE.VIEWPORT.RANGE
+std::vector<std::string> viewport_violations(const Viewport& vp);
+
 // ---------------------------------------------------------------------------------------------
 // Exact projection and the exact clipper (PIPE.CLIP.GUARD_BAND_BOUND)
 
@@ -261,6 +276,18 @@ DepthCheck check_depth_interp(const Bary& b, const std::array<float, 3>& z, doub
 // rule: PIPE.DEPTH.BOUND, PIPE.DEPTH.CLAMP, PIPE.DEPTH.FORMAT
 DepthCheck check_depth_stored(const Bary& b, const std::array<float, 3>& z, float min_depth,
                               float max_depth, const std::string& format, const Stored& got);
+
+// The depth bias of PIPE.DEPTH.BIAS for a triangle with snapped vertices v (raw 16.8) and
+// window depths z, format "d16", "d24", "d32f" or "" (no depth buffer: r of 24 bits). dZ/dx and
+// dZ/dy are the exact plane derivatives (per pixel) rounded once to double (the spec's choice),
+// MaxDepthSlope their larger magnitude rounded to float32 (0 for a degenerate triangle, where
+// they do not exist); r = 1/(2^n - 1) rounded to float32, or 2^(exponent(max |Z_i|) - 23) for
+// d32f with exponent(v) = max(floor(log2 v), -126) (the exponent field's value; -126 for 0 and
+// subnormals); Bias = fl32(fl32(float(bias) * r) + fl32(slope_scaled * MaxDepthSlope)),
+// clamped by clamp (min when > 0, max when < 0).
+// rule: PIPE.DEPTH.BIAS
+float depth_bias(const std::array<Raw2, 3>& v, const std::array<float, 3>& z, std::int32_t bias,
+                 float slope_scaled, float clamp, const std::string& format);
 
 // The comparison of PIPE.DEPTH.TEST on stored values ("never", "less", ..., "always").
 // rule: PIPE.DEPTH.TEST

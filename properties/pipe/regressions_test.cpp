@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+// Named regressions of the pipeline properties: counterexamples RapidCheck found (or cases at
+// the edge of an interpretation the properties rely on), kept as plain tests so that they run
+// every time, whatever the seed.
+// Implements (regressions for): PIPE.CLIP.COMPUTE, PIPE.CLIP.POLYGON, PIPE.CLIP.VOLUME,
+//   PIPE.CLIP.GUARD_BAND_BOUND, PIPE.CLIP.GUARD_BAND_SNAP, PIPE.VIEWPORT.RANGE, PIPE.DEPTH.BIAS
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <variant>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "pipe_gen.hpp"
+#include "rastrules/oracle/triangle.hpp"
+
+namespace {
+
+namespace pg = rastrules::pipe_gen;
+namespace op = rastrules::oracle::pipe;
+namespace kp = rastrules::pipe;
+
+// Found by PipeGeometry.ClipperIsBitIdenticalToTheSpecAlgorithm while the oracle still rounded
+// each plane's new vertices to float32: the vertex made at the w plane is clipped again at the
+// guard band's x_lo plane (viewport 1 px wide: gx_lo = -63489), and rounding it between the two
+// planes moves the final x by one ulp. PIPE.CLIP.COMPUTE says "rounded once to float32 when the
+// vertex is complete": vertices stay doubles from plane to plane (the kernel and the oracle agree).
+// rule: PIPE.CLIP.COMPUTE, PIPE.CLIP.POLYGON
+TEST(PipeRegression, ClipVerticesStayDoubleBetweenPlanes) {
+  const kp::Viewport vp{0.0f, 0.0f, 1.0f, 1.0f, 0.0f, 1.0f};
+  const std::vector<kp::ClipVertex> t{{{-3.75f, -3.75f, 3.75f, 3.75f}, {}},
+                                      {{-3.75f, -4.0f, -4.0f, -4.0f}, {}},
+                                      {{-0.5f, -0.5f, 0.5f, 0.5f}, {}}};
+  const std::vector<kp::Vec4f> pos{t[0].pos, t[1].pos, t[2].pos};
+  const kp::ClipVolume vol = kp::clip_volume(pos, vp, false);
+  const std::vector<kp::ClipVertex> got = kp::clip_polygon(t, vol);
+  const std::vector<op::ClipVertex> want =
+      op::clip_polygon(pg::to_oracle(t), op::clip_volume(pos, pg::to_oracle(vp), false));
+  ASSERT_EQ(got.size(), 4u);
+  ASSERT_EQ(want.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    for (std::size_t c = 0; c < 4; ++c) EXPECT_TRUE(pg::same_bits(got[i].pos[c], want[i].pos[c])) << i << " " << c;
+  }
+  // -0.861101 once rounded; rounded between the planes it would be -0.86110103 (0xBF5C711E).
+  EXPECT_EQ(std::bit_cast<std::uint32_t>(got[2].pos[0]), 0xBF5C711Du);
+}
+
+// The constant term of the bias for d32f when the largest |Z_i| is subnormal: the spec takes
+// exponent(0) as -126 (the exponent field's value), and a subnormal's exponent field is the
+// same, so r = 2^-149 and one unit of bias is the smallest subnormal.
+// rule: PIPE.DEPTH.BIAS
+TEST(PipeRegression, BiasOfSubnormalDepthsForD32f) {
+  const std::array<op::Raw2, 3> v{op::Raw2{0, 0}, op::Raw2{256, 0}, op::Raw2{0, 256}};
+  const std::array<float, 3> z{1e-45f, 0.0f, 3e-45f};
+  const kp::DepthBias b{1, 0.0f, 0.0f};
+  const float got = kp::depth_bias(pg::to_vec2(v), z, b, kp::DepthFormat::kD32F);
+  const float want = op::depth_bias(v, z, 1, 0.0f, 0.0f, "d32f");
+  EXPECT_EQ(want, std::ldexp(1.0f, -149));
+  EXPECT_TRUE(pg::same_bits(got, want)) << "kernel " << got << ", oracle " << want;
+}
+
+// Returns the pixel centres (farther than 1/64 px from every edge of the exactly projected and
+// snapped unclipped triangle) whose coverage by run_pipeline differs from that triangle's.
+std::string guard_band_mismatches(const std::array<kp::Vec4f, 3>& tri, std::int32_t w, std::int32_t h) {
+  kp::PipeScene s;
+  s.base.width = w;
+  s.base.height = h;
+  kp::PipePrimitive p;
+  p.pos = {tri[0], tri[1], tri[2]};
+  s.primitives.push_back(p);
+  const auto r = kp::run_pipeline(s);
+  if (const auto* e = std::get_if<rastrules::SceneError>(&r)) return "error " + e->what();
+  std::vector<int> count(static_cast<std::size_t>(w * h), 0);
+  for (const rastrules::Fragment& f : std::get<kp::PipeResult>(r).fragments)
+    ++count[static_cast<std::size_t>(f.y * w + f.x)];
+  const op::Viewport vp{0.0f, 0.0f, static_cast<float>(w), static_cast<float>(h), 0.0f, 1.0f};
+  const op::ExactRegion exact = op::ExactRegion::unclipped_triangle(tri, vp);
+  std::string out;
+  for (std::int32_t y = 0; y < h; ++y) {
+    for (std::int32_t x = 0; x < w; ++x) {
+      const auto side = exact.classify({256 * std::int64_t{x} + 128, 256 * std::int64_t{y} + 128}, 4);
+      if (side == op::ExactRegion::Side::kNear) continue;
+      const int want = side == op::ExactRegion::Side::kInside ? 1 : 0;
+      if (count[static_cast<std::size_t>(y * w + x)] != want)
+        out += " (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+    }
+  }
+  return out;
+}
+
+// Found by PipeGeometry.GuardBandClippingKeepsCoverageAwayFromEdges. PIPE.CLIP.VOLUME's w plane
+// is w >= 2^-40 M with M the largest |coordinate| of the primitive: one vertex with x = 2^41
+// (x/w = 2^41, far inside the position limit) raises it to w >= 2, which every vertex (w = 1)
+// fails, so the whole triangle is discarded although half of the target lies inside it (D3D
+// clips at 0 < w and draws it). This contradicts PIPE.CLIP.GUARD_BAND_BOUND. A spec problem:
+// the kernel follows PIPE.CLIP.VOLUME as written.
+// rule: PIPE.CLIP.VOLUME, PIPE.CLIP.GUARD_BAND_BOUND
+TEST(PipeRegression, FarVertexMustNotDiscardTheVisibleTriangle) {
+  const std::array<kp::Vec4f, 3> tri{kp::Vec4f{std::ldexp(1.0f, 41), 0.0f, 0.5f, 1.0f},
+                                     kp::Vec4f{-0.5f, -0.5f, 0.5f, 1.0f},
+                                     kp::Vec4f{-0.5f, 0.5f, 0.5f, 1.0f}};
+  EXPECT_EQ(guard_band_mismatches(tri, 8, 8), "");
+}
+
+// The property's own shrunk counterexample (w = 1, 0.5, 0.125; M = 2^40, so w >= 1).
+// rule: PIPE.CLIP.VOLUME, PIPE.CLIP.GUARD_BAND_BOUND
+TEST(PipeRegression, FarVertexMustNotDiscardTheVisibleTriangleShrunk) {
+  const std::array<kp::Vec4f, 3> tri{kp::Vec4f{-2.0f, -2.0f, 0.0f, 1.0f},
+                                     kp::Vec4f{-1.0f, -4194304.0f, 0.0f, 0.5f},
+                                     kp::Vec4f{1048576.0f, 1099511627776.0f, 0.0f, 0.125f}};
+  EXPECT_EQ(guard_band_mismatches(tri, 4, 6), "");
+}
+
+// Found by PipeGeometry.ClipperIsBitIdenticalToTheSpecAlgorithm (its guard band + 1 px check):
+// a vertex at x = 2.7e11 is cut at the x_lo guard band plane; the double intersection
+// I + t (O - I) cancels 2.7e11 down to -0.476, losing 2^-53 * 2.7e11 absolute, and the vertex
+// lands at window x = -31745.26, 1.26 px beyond the band. PIPE.CLIP.GUARD_BAND_SNAP assumes at
+// most 1 px; the kernel computes exactly what PIPE.CLIP.COMPUTE prescribes (the oracle agrees
+// bit for bit), so the assumption, not the kernel, is wrong. It still snaps in range (the band's
+// margin is 1023 px).
+// rule: PIPE.CLIP.GUARD_BAND_SNAP, PIPE.CLIP.COMPUTE
+TEST(PipeRegression, GuardBandVertexMovedMoreThanOnePixel) {
+  const kp::Viewport vp{-32768.0f, -200.0f, 42636.0f, 1.0f, 0.0f, 0.0f};
+  const std::vector<kp::ClipVertex> t{{{270569799680.0f, 8.271806e-25f, 8.271806e-25f, 10981424.0f}, {}},
+                                      {{270569799680.0f, -0.5f, 0.0f, 0.5f}, {}},
+                                      {{-0.5f, -0.5f, 0.5f, 0.5f}, {}}};
+  const kp::ClipVolume vol = kp::clip_volume({t[0].pos, t[1].pos, t[2].pos}, vp, false);
+  const std::vector<kp::ClipVertex> poly = kp::clip_polygon(t, vol);
+  ASSERT_FALSE(poly.empty());
+  double worst = 0.0;
+  for (const kp::ClipVertex& v : poly) {
+    const kp::WindowVertex w = kp::to_window(v.pos, vp);
+    worst = std::max({worst, std::fabs(static_cast<double>(w.x)), std::fabs(static_cast<double>(w.y))});
+    EXPECT_TRUE(rastrules::oracle::snap(w.x).has_value());  // the 1023 px margin holds
+  }
+  EXPECT_LE(worst, kp::kGuardBand + 1.0) << "a clipped vertex lands " << worst - kp::kGuardBand
+                                         << " px beyond the guard band";
+}
+
+// Found by PipeGeometry.ViewportLimitsAreTheSpecRanges: PIPE.VIEWPORT.RANGE requires
+// y + height <= 32767; with y = 32767 and height = 1e-45 the exact sum exceeds it, but the
+// kernel adds in float32 (fl32(32767 + 1e-45) = 32767) and accepts the viewport. The spec
+// writes fl32() where it means float arithmetic (PIPE.VIEWPORT.SCISSOR) and a plain sum here;
+// either the spec should say fl32(y + height) or the kernel should compare the exact sum.
+// rule: PIPE.VIEWPORT.RANGE
+TEST(PipeRegression, ViewportEndIsTheExactSum) {
+  const kp::Viewport vp{0.0f, 32767.0f, 8.0f, 1e-45f, 0.0f, 1.0f};
+  EXPECT_FALSE(op::viewport_violations(pg::to_oracle(vp)).empty());
+  EXPECT_TRUE(kp::check_viewport(vp).has_value()) << "the kernel accepts y + height = 32767 + 2^-149";
+  const kp::Viewport vx{1e-4f, 0.0f, 32767.0f, 8.0f, 0.0f, 1.0f};
+  EXPECT_TRUE(kp::check_viewport(vx).has_value()) << "the kernel accepts x + width = 32767.0001";
+}
+
+}  // namespace
