@@ -135,6 +135,8 @@ struct PrimGeometry {
   std::vector<Part> parts;
   std::vector<float> flat;  // per attribute
   std::string problem;      // a window vertex that does not snap (the guard band's promise)
+  // A clip-space point or line: its window vertices after clipping (empty: discarded).
+  std::vector<op::WindowVertex> other;
 };
 
 inline std::optional<Raw2> snap2(float x, float y) {
@@ -182,9 +184,21 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
       pos.push_back(c);
     }
     if (g.transform_error) return g;
-    if (p.base.type != PrimitiveType::kTriangle) return g;  // only triangles are modelled here
     const bool depth_clip = !s.depth || s.depth->clip;
     const op::Volume vol = op::clip_volume(pos, vp, depth_clip);
+    // PIPE.CLIP.LINE: a point outside the volume is discarded, a line cut like an edge.
+    if (p.base.type == PrimitiveType::kPoint) {
+      if (op::inside(vol, pos[0])) g.other.push_back(op::to_window(pos[0], vp));
+      return g;
+    }
+    if (p.base.type == PrimitiveType::kLine) {
+      if (const auto seg = op::clip_segment(cv[0], cv[1], vol)) {
+        g.other.push_back(op::to_window((*seg)[0].pos, vp));
+        g.other.push_back(op::to_window((*seg)[1].pos, vp));
+      }
+      return g;
+    }
+    if (p.base.type != PrimitiveType::kTriangle) return g;  // strips are not modelled here
     const std::vector<op::ClipVertex> poly = op::clip_polygon(cv, vol);
     bool same = poly.size() == cv.size();
     for (std::size_t j = 0; same && j < poly.size(); ++j) {
@@ -489,8 +503,51 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
   const bool any_centroid = std::any_of(s.attributes.begin(), s.attributes.end(), [](const kp::AttributeDecl& a) {
     return a.location == kp::Location::kCentroid;
   });
+  const auto render_one = [&](const Primitive& prim) -> std::variant<std::vector<Fragment>, std::string> {
+    Scene ws = s.base;
+    if (any_centroid) ws.msaa.has_centroid = true;
+    ws.primitives = {prim};
+    const auto rendered = render(ws);
+    if (const auto* e = std::get_if<SceneError>(&rendered)) return e->what();
+    std::vector<Fragment> want;
+    for (const Fragment& f : std::get<std::vector<Fragment>>(rendered)) {
+      if (f.x >= sc.x0 && f.x < sc.x1 && f.y >= sc.y0 && f.y < sc.y1) want.push_back(f);
+    }
+    return want;
+  };
   for (std::size_t p = 0; p < s.primitives.size(); ++p) {
-    if (s.primitives[p].base.type != PrimitiveType::kTriangle) continue;
+    const kp::PipePrimitive& pp = s.primitives[p];
+    const bool point_or_line = pp.base.type == PrimitiveType::kPoint || pp.base.type == PrimitiveType::kLine;
+    if (point_or_line && !pp.pos.empty()) {
+      // A clip-space point or line: all its fragments (whatever their part) against the coverage
+      // kernel's for its clipped window-space vertices.
+      const PrimGeometry g = geometry(s, p);
+      if (g.transform_error) continue;
+      std::vector<Fragment> have;
+      for (auto it = got.begin(); it != got.end();) {
+        if (it->first.first == p) {
+          have.insert(have.end(), it->second.begin(), it->second.end());
+          it = got.erase(it);
+        } else {
+          ++it;
+        }
+      }
+      std::vector<Fragment> want;
+      if (!g.other.empty()) {
+        Primitive prim = pp.base;
+        prim.v.clear();
+        for (const op::WindowVertex& v : g.other) prim.v.push_back(FloatPoint{v.x, v.y});
+        auto rendered = render_one(prim);
+        if (const auto* e = std::get_if<std::string>(&rendered))
+          return "render of primitive " + std::to_string(p) + ": " + *e;
+        want = std::get<std::vector<Fragment>>(rendered);
+      }
+      if (have != want)
+        return "coverage of " + std::string(to_string(pp.base.type)) + " " + std::to_string(p) + ": pipeline " +
+               std::to_string(have.size()) + " fragments, window-space render " + std::to_string(want.size());
+      continue;
+    }
+    if (pp.base.type != PrimitiveType::kTriangle) continue;
     const PrimGeometry g = geometry(s, p);
     if (g.transform_error) continue;
     for (std::size_t k = 0; k < g.parts.size(); ++k) {
