@@ -55,11 +55,18 @@ std::optional<std::pair<std::string, std::string>> check_viewport(const Viewport
     return bad("width", "must be greater than 0 (PIPE.VIEWPORT.RANGE)");
   if (!(vp.height > 0.0f))
     return bad("height", "must be greater than 0 (PIPE.VIEWPORT.RANGE)");
-  const float right = vp.x + vp.width;
-  const float bottom = vp.y + vp.height;
-  if (right < -32768.0f || right > 32767.0f)
+  // The exact sums (not their float32 rounding): TwoSum gives s + err == a + b exactly.
+  const auto exact_sum_outside = [](float a, float b) {
+    const double x = a, y = b;
+    const double s = x + y, bv = s - x, av = s - bv;
+    const double err = (x - av) + (y - bv);
+    const auto below = [&](double c) { return s < c || (s == c && err < 0.0); };
+    const auto above = [&](double c) { return s > c || (s == c && err > 0.0); };
+    return below(-32768.0) || above(32767.0);
+  };
+  if (exact_sum_outside(vp.x, vp.width))
     return bad("width", "x + width must lie in [-32768, 32767] (PIPE.VIEWPORT.RANGE)");
-  if (bottom < -32768.0f || bottom > 32767.0f)
+  if (exact_sum_outside(vp.y, vp.height))
     return bad("height", "y + height must lie in [-32768, 32767] (PIPE.VIEWPORT.RANGE)");
   if (vp.min_depth < 0.0f || vp.min_depth > 1.0f)
     return bad("min_depth", "must lie in [0, 1] (PIPE.VIEWPORT.RANGE)");
@@ -74,7 +81,10 @@ std::optional<std::pair<std::string, std::string>> check_viewport(const Viewport
 WindowVertex to_window(const Vec4f& p, const Viewport& vp) {
   const float xn = p[0] / p[3];
   const float yn = p[1] / p[3];
-  const float zn = p[2] / p[3];
+  float zn = p[2] / p[3];
+  // Only without depth clipping can z / w leave the float32 range: it saturates.
+  if (std::isinf(zn))
+    zn = std::copysign(std::numeric_limits<float>::max(), zn);
   WindowVertex r;
   float t = xn + 1.0f;
   t = t * vp.width;
@@ -147,35 +157,33 @@ ClipVertex narrow(const DVertex& d) {
 }
 
 // The intersection of the edge between inside vertex in and outside vertex out with the plane
-// whose distances are d_in >= 0 > d_out, computed from the inside endpoint (PIPE.CLIP.POLYGON).
-DVertex intersect(const DVertex& in, double d_in, const DVertex& out, double d_out) {
-  const double t = d_in / (d_in - d_out);
+// whose distances are d_in >= 0 > d_out (PIPE.CLIP.POLYGON): computed from the endpoint nearer
+// the plane (the inside one on a tie), so that t <= 1/2 and the result depends only on the two
+// endpoints, never on the walking direction; its w raised to w_min if rounding left it below.
+DVertex intersect(const DVertex& in, double d_in, const DVertex& out, double d_out,
+                  double w_min) {
+  const bool from_in = d_in <= -d_out;
+  const DVertex& e = from_in ? in : out;
+  const DVertex& f = from_in ? out : in;
+  const double de = from_in ? d_in : d_out, df = from_in ? d_out : d_in;
+  const double t = de / (de - df);
   DVertex r;
   for (std::size_t i = 0; i < 4; ++i)
-    r.pos[i] = in.pos[i] + t * (out.pos[i] - in.pos[i]);
-  r.attr.resize(in.attr.size());
-  for (std::size_t i = 0; i < in.attr.size(); ++i)
-    r.attr[i] = in.attr[i] + t * (out.attr[i] - in.attr[i]);
+    r.pos[i] = e.pos[i] + t * (f.pos[i] - e.pos[i]);
+  r.attr.resize(e.attr.size());
+  for (std::size_t i = 0; i < e.attr.size(); ++i)
+    r.attr[i] = e.attr[i] + t * (f.attr[i] - e.attr[i]);
+  if (r.pos[3] < w_min)
+    r.pos[3] = w_min;
   return r;
 }
 
 }  // namespace
 
 // rule: PIPE.CLIP.VOLUME
-ClipVolume clip_volume(const std::vector<Vec4f>& vs, const Viewport& vp, bool depth_clip) {
-  double m = 0.0;
-  for (const Vec4f& v : vs)
-    for (const float c : v)
-      m = std::max(m, std::fabs(static_cast<double>(c)));
-  // M rounded up to a power of two (1 for an all-zero primitive, which is then outside).
-  int e = 0;
-  double m2 = 1.0;
-  if (m > 0.0) {
-    const double f = std::frexp(m, &e);  // m = f * 2^e, f in [0.5, 1)
-    m2 = f == 0.5 ? std::ldexp(1.0, e - 1) : std::ldexp(1.0, e);
-  }
+ClipVolume clip_volume(const std::vector<Vec4f>& /*vs*/, const Viewport& vp, bool depth_clip) {
   ClipVolume vol;
-  vol.w_min = std::ldexp(m2, kWMinLog2);
+  vol.w_min = kWMin;
   const double x0 = vp.x, y0 = vp.y, w = vp.width, h = vp.height;
   vol.gx_lo = (-kGuardBand - x0) * 2.0 / w - 1.0;
   vol.gx_hi = (kGuardBand - x0) * 2.0 / w - 1.0;
@@ -222,9 +230,9 @@ std::vector<ClipVertex> clip_polygon(const std::vector<ClipVertex>& polygon, con
       if (pin)
         next.push_back(poly[i]);
       if (pin && !qin)
-        next.push_back(intersect(poly[i], d[i], poly[j], d[j]));
+        next.push_back(intersect(poly[i], d[i], poly[j], d[j], vol.w_min));
       else if (!pin && qin)
-        next.push_back(intersect(poly[j], d[j], poly[i], d[i]));
+        next.push_back(intersect(poly[j], d[j], poly[i], d[i], vol.w_min));
     }
     poly.swap(next);
   }
@@ -252,9 +260,9 @@ std::optional<std::array<ClipVertex, 2>> clip_segment(const ClipVertex& a, const
     if (!pin && !qin)
       return std::nullopt;
     if (pin && !qin)
-      q = intersect(p, dp, q, dq);
+      q = intersect(p, dp, q, dq, vol.w_min);
     else if (!pin && qin)
-      p = intersect(q, dq, p, dp);
+      p = intersect(q, dq, p, dp, vol.w_min);
   }
   return std::array<ClipVertex, 2>{narrow(p), narrow(q)};
 }
@@ -440,11 +448,12 @@ float depth_bias(const std::array<Vec2, 3>& v, const std::array<float, 3>& z, co
     float zmax = 0.0f;
     for (const float zi : z)
       zmax = std::max(zmax, std::fabs(zi));
+    // exponent() is IEEE's: a subnormal (or zero) has exponent -126.
     int e = -126;
     if (zmax > 0.0f) {
       int fe = 0;
       (void)std::frexp(zmax, &fe);  // zmax = f * 2^fe, f in [0.5, 1)
-      e = fe - 1;
+      e = std::max(fe - 1, -126);
     }
     r = std::ldexp(1.0f, e - 23);
   } else {

@@ -218,6 +218,11 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
       std::vector<std::vector<float>> attr;
       for (const ClipVertex& c : vs) {
         w.push_back(to_window(c.pos, vp));
+        // rule: PIPE.CLIP.SATURATE
+        // Rounding in the clipper can carry a created vertex a little beyond the guard band;
+        // D3D's saturating conversion keeps it snappable (a no-op for every other vertex).
+        w.back().x = std::clamp(w.back().x, -32768.0f, 32767.99609375f);
+        w.back().y = std::clamp(w.back().y, -32768.0f, 32767.99609375f);
         p.v.push_back(FloatPoint{w.back().x, w.back().y});
         attr.push_back(c.attr);
       }

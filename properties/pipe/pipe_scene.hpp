@@ -186,15 +186,22 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
     if (g.transform_error) return g;
     const bool depth_clip = !s.depth || s.depth->clip;
     const op::Volume vol = op::clip_volume(pos, vp, depth_clip);
+    // PIPE.CLIP.SATURATE: clip-space window positions are clamped to the snap range.
+    const auto window = [&](const op::Vec4& q) {
+      op::WindowVertex w = op::to_window(q, vp);
+      w.x = std::clamp(w.x, -32768.0f, 32767.99609375f);
+      w.y = std::clamp(w.y, -32768.0f, 32767.99609375f);
+      return w;
+    };
     // PIPE.CLIP.LINE: a point outside the volume is discarded, a line cut like an edge.
     if (p.base.type == PrimitiveType::kPoint) {
-      if (op::inside(vol, pos[0])) g.other.push_back(op::to_window(pos[0], vp));
+      if (op::inside(vol, pos[0])) g.other.push_back(window(pos[0]));
       return g;
     }
     if (p.base.type == PrimitiveType::kLine) {
       if (const auto seg = op::clip_segment(cv[0], cv[1], vol)) {
-        g.other.push_back(op::to_window((*seg)[0].pos, vp));
-        g.other.push_back(op::to_window((*seg)[1].pos, vp));
+        g.other.push_back(window((*seg)[0].pos));
+        g.other.push_back(window((*seg)[1].pos));
       }
       return g;
     }
@@ -206,7 +213,7 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
     }
     g.clipped = !same;
     for (const op::ClipVertex& c : poly) {
-      wv.push_back(op::to_window(c.pos, vp));
+      wv.push_back(window(c.pos));
       attrs.push_back(c.attr);
     }
   }

@@ -117,14 +117,15 @@ TEST(PipeRegression, FarVertexMustNotDiscardTheVisibleTriangleShrunk) {
   EXPECT_EQ(guard_band_mismatches(tri, 4, 6), "");
 }
 
-// Found by PipeGeometry.ClipperIsBitIdenticalToTheSpecAlgorithm (its guard band + 1 px check):
-// a vertex at x = 2.7e11 is cut at the x_lo guard band plane; the double intersection
+// Found by PipeGeometry.ClipperIsBitIdenticalToTheSpecAlgorithm (its former guard band + 1 px
+// check): a vertex at x = 2.7e11 is cut at the x_lo guard band plane; the double intersection
 // I + t (O - I) cancels 2.7e11 down to -0.476, losing 2^-53 * 2.7e11 absolute, and the vertex
-// lands at window x = -31745.26, 1.26 px beyond the band. PIPE.CLIP.GUARD_BAND_SNAP assumes at
-// most 1 px; the kernel computes exactly what PIPE.CLIP.COMPUTE prescribes (the oracle agrees
-// bit for bit), so the assumption, not the kernel, is wrong. It still snaps in range (the band's
-// margin is 1023 px).
-// rule: PIPE.CLIP.GUARD_BAND_SNAP, PIPE.CLIP.COMPUTE
+// lands at window x = -31745.26, 1.26 px beyond the band. The kernel computed exactly what
+// PIPE.CLIP.COMPUTE prescribed (the oracle agreed bit for bit); the spec now computes the
+// intersection from the endpoint nearer the plane, no longer assumes 1 px
+// (PIPE.CLIP.GUARD_BAND_SNAP) and saturates clip-space vertices to the snap range
+// (PIPE.CLIP.SATURATE).
+// rule: PIPE.CLIP.GUARD_BAND_SNAP, PIPE.CLIP.COMPUTE, PIPE.CLIP.SATURATE
 TEST(PipeRegression, GuardBandVertexMovedMoreThanOnePixel) {
   const kp::Viewport vp{-32768.0f, -200.0f, 42636.0f, 1.0f, 0.0f, 0.0f};
   const std::vector<kp::ClipVertex> t{{{270569799680.0f, 8.271806e-25f, 8.271806e-25f, 10981424.0f}, {}},
@@ -139,8 +140,20 @@ TEST(PipeRegression, GuardBandVertexMovedMoreThanOnePixel) {
     worst = std::max({worst, std::fabs(static_cast<double>(w.x)), std::fabs(static_cast<double>(w.y))});
     EXPECT_TRUE(rastrules::oracle::snap(w.x).has_value());  // the 1023 px margin holds
   }
-  EXPECT_LE(worst, kp::kGuardBand + 1.0) << "a clipped vertex lands " << worst - kp::kGuardBand
-                                         << " px beyond the guard band";
+  // Since the intersection starts from the endpoint nearer the plane (t <= 1/2) the
+  // cancellation is gone: the vertex lands on the band (it was 1.26 px beyond).
+  EXPECT_LE(worst, kp::kGuardBand + 1.0);
+  // The whole scene draws (its vertices snap), whatever the rounding.
+  kp::PipeScene s;
+  s.base.width = 16;
+  s.base.height = 16;
+  s.viewport = vp;
+  s.depth = kp::DepthState{};
+  s.depth->clip = false;
+  kp::PipePrimitive p;
+  p.pos = {t[0].pos, t[1].pos, t[2].pos};
+  s.primitives.push_back(p);
+  EXPECT_TRUE(std::holds_alternative<kp::PipeResult>(kp::run_pipeline(s)));
 }
 
 // Found by PipeGeometry.ViewportLimitsAreTheSpecRanges: PIPE.VIEWPORT.RANGE requires
@@ -158,3 +171,31 @@ TEST(PipeRegression, ViewportEndIsTheExactSum) {
 }
 
 }  // namespace
+
+// Found by PipeScene.FragmentsAgreeWithTheOracle (after the w plane became absolute): a vertex
+// behind the eye at w = -3e-45 cut against w >= 2^-126 from the inside endpoint (w = 1e-6) gave
+// t = 1 - 1e-32, which rounds to 1 in double, so the new vertex was the outside one with w < 0,
+// and its window position NaN. The intersection now starts from the endpoint nearer the plane
+// and its w is raised to kWMin when rounding leaves it below (PIPE.CLIP.POLYGON).
+// rule: PIPE.CLIP.POLYGON, PIPE.CLIP.COMPUTE, PIPE.CLIP.VOLUME
+TEST(PipeRegression, WPlaneCutKeepsWPositive) {
+  kp::PipeScene s;
+  s.base.width = 2;
+  s.base.height = 2;
+  s.depth = kp::DepthState{};
+  s.depth->clip = false;
+  kp::PipePrimitive p;
+  p.pos = {{-1.5e-06f, -1.5e-06f, -1.015625e-07f, 1e-06f},
+           {-1.5e-06f, -1.5e-06f, -1.015625e-07f, 1e-06f},
+           {-3e-45f, -3e-45f, 3e-45f, -3e-45f}};
+  s.primitives.push_back(p);
+  const auto r = kp::run_pipeline(s);
+  ASSERT_TRUE(std::holds_alternative<kp::PipeResult>(r))
+      << std::get<rastrules::SceneError>(r).what();
+  const kp::Viewport vp{0, 0, 2, 2, 0, 1};
+  const std::vector<kp::ClipVertex> t{{p.pos[0], {}}, {p.pos[1], {}}, {p.pos[2], {}}};
+  for (const kp::ClipVertex& v : kp::clip_polygon(t, kp::clip_volume({}, vp, false))) {
+    EXPECT_GE(v.pos[3], 0x1p-126f);
+    EXPECT_TRUE(std::isfinite(kp::to_window(v.pos, vp).x));
+  }
+}

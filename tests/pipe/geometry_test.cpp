@@ -95,7 +95,7 @@ TEST(PipeClip, GuardBandIsTheWindowSquareOf31744Pixels) {
   EXPECT_EQ(vol.gx_hi, 991.0);
   EXPECT_EQ(vol.gy_lo, -991.0);
   EXPECT_EQ(vol.gy_hi, 993.0);
-  EXPECT_EQ(vol.w_min, std::ldexp(1.0, -40));
+  EXPECT_EQ(vol.w_min, std::ldexp(1.0, -126));
   EXPECT_TRUE(inside(vol, Vec4f{991, -991, 1, 1}));
   EXPECT_FALSE(inside(vol, Vec4f{992, 0, 0.5f, 1}));
   EXPECT_FALSE(inside(vol, Vec4f{0, 0, -0.001f, 1}));  // z < 0
@@ -107,14 +107,24 @@ TEST(PipeClip, GuardBandIsTheWindowSquareOf31744Pixels) {
 }
 
 // rule: PIPE.CLIP.VOLUME
-TEST(PipeClip, WMinScalesWithThePrimitive) {
+TEST(PipeClip, TheWPlaneIsFloat32sSmallestNormal) {
   const Viewport vp{0, 0, 64, 64, 0, 1};
-  // Largest coordinate 3e-20 rounds up to 2^-64 (3e-20 is between 2^-65 and 2^-64).
-  const ClipVolume tiny = clip_volume({Vec4f{3e-20f, 0, 0, 1e-20f}}, vp, true);
-  EXPECT_EQ(tiny.w_min, std::ldexp(1.0, -64 - 40));
-  EXPECT_TRUE(inside(tiny, Vec4f{0, 0, 0, 1e-20f}));
-  const ClipVolume big = clip_volume({Vec4f{0, 0, 0, 1e6f}}, vp, true);
-  EXPECT_EQ(big.w_min, std::ldexp(1.0, 20 - 40));  // 1e6 < 2^20
+  const ClipVolume vol = clip_volume({}, vp, true);
+  EXPECT_TRUE(inside(vol, Vec4f{0, 0, 0, 0x1p-126f}));
+  EXPECT_FALSE(inside(vol, Vec4f{0, 0, 0, 0x1p-127f}));  // subnormal w: behind the eye
+  EXPECT_TRUE(inside(vol, Vec4f{1e-30f, 0, 1e-30f, 1e-20f}));
+}
+
+// rule: PIPE.CLIP.VOLUME, PIPE.CLIP.POLYGON
+TEST(PipeClip, AFarVertexDoesNotDiscardTheVisibleTriangle) {
+  // (The regression FarVertexMustNotDiscardTheVisibleTriangle of properties/pipe: a w plane
+  // relative to the largest coordinate once rose above every vertex's w here.)
+  const Viewport vp{0, 0, 8, 8, 0, 1};
+  const std::vector<ClipVertex> t{{{0x1p41f, 0, 0.5f, 1}, {}},
+                                  {{-0.5f, -0.5f, 0.5f, 1}, {}},
+                                  {{-0.5f, 0.5f, 0.5f, 1}, {}}};
+  const auto poly = clip_polygon(t, clip_volume({}, vp, true));
+  EXPECT_EQ(poly.size(), 4u);
 }
 
 std::vector<ClipVertex> tri(Vec4f a, Vec4f b, Vec4f c, float ua = 0, float ub = 0, float uc = 0) {

@@ -72,16 +72,17 @@ struct PixelRect {
 // Clipping
 
 inline constexpr double kGuardBand = 31744.0;  // px, PIPE.CLIP.VOLUME
-inline constexpr int kWMinLog2 = -40;          // kWMin = 2^-40
+inline constexpr double kWMin = 0x1p-126;      // the w plane: float32's smallest normal
 
 // The clip volume of one primitive (PIPE.CLIP.VOLUME).
 struct ClipVolume {
-  double w_min = 0.0;  // kWMin * M
+  double w_min = kWMin;
   double gx_lo = -1.0, gx_hi = 1.0, gy_lo = -1.0, gy_hi = 1.0;
   bool depth_clip = true;
 };
 
-// Returns the volume for a primitive whose clip-space vertices are vs, under viewport vp.
+// Returns the volume under viewport vp (the same for every primitive; vs is not used and kept
+// for callers that pass the primitive).
 // rule: PIPE.CLIP.VOLUME
 [[nodiscard]] ClipVolume clip_volume(const std::vector<Vec4f>& vs, const Viewport& vp,
                                      bool depth_clip);

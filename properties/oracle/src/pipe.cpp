@@ -194,7 +194,9 @@ Vec4 transform(const Mat4& m, const Vec4& v) {
 WindowVertex to_window(const Vec4& p, const Viewport& vp) {
   const float xn = fl32_div(p[0], p[3]);
   const float yn = fl32_div(p[1], p[3]);
-  const float zn = fl32_div(p[2], p[3]);
+  float zn = fl32_div(p[2], p[3]);
+  // Beyond float32 (only without depth clipping) zn saturates (PIPE.VIEWPORT.TRANSFORM).
+  if (std::isinf(zn)) zn = zn > 0 ? FLT_MAX : -FLT_MAX;
   WindowVertex out;
   out.x = fl32_add(fl32_mul(fl32_mul(fl32_add(xn, 1.0f), vp.width), 0.5f), vp.x);
   out.y = fl32_add(fl32_mul(fl32_mul(fl32_sub(1.0f, yn), vp.height), 0.5f), vp.y);
@@ -216,18 +218,8 @@ Rect viewport_scissor(const Viewport& vp) {
 Volume clip_volume(const std::vector<Vec4>& vs, const Viewport& vp, bool depth_clip) {
   Volume vol;
   vol.depth_clip = depth_clip;
-  // M: the largest |coordinate| rounded up to a power of two. The spec is silent when every
-  // coordinate is 0; M = 1 then (any M > 0 keeps w = 0 outside, which is what matters).
-  Q biggest(0);
-  for (const Vec4& v : vs) {
-    for (const float c : v) biggest = std::max(biggest, abs_q(exact(c)));
-  }
-  Q m(1);
-  if (biggest > 0) {
-    const long e = floor_log2(biggest);
-    m = (pow2(e) == biggest) ? biggest : pow2(e + 1);
-  }
-  vol.w_min = rn64(m * pow2(kWMinLog2));  // a power of two: exact
+  (void)vs;  // the volume does not depend on the primitive (PIPE.CLIP.VOLUME)
+  vol.w_min = rn64(pow2(kWMinLog2));  // a power of two: exact
   const double g = kGuardBand;
   const double x0 = vp.x, y0 = vp.y, w = vp.width, h = vp.height;
   // gx_lo = fl64((-G - X0) * 2 / W - 1), gx_hi = fl64((G - X0) * 2 / W - 1),
@@ -251,7 +243,7 @@ struct DVertex {
   std::vector<double> attr;
 };
 
-// The fl64 signed distance of p to plane: w - kWMin*M, x - gx_lo*w, gx_hi*w - x, y - gy_lo*w,
+// The fl64 signed distance of p to plane: w - kWMin, x - gx_lo*w, gx_hi*w - x, y - gy_lo*w,
 // gy_hi*w - y, z, w - z.
 // rule: PIPE.CLIP.COMPUTE
 double distance(const Volume& vol, std::size_t plane, const std::array<double, 4>& p) {
@@ -283,6 +275,27 @@ bool inside(const Volume& vol, const Vec4& p) {
   return true;
 }
 
+
+namespace {
+// The intersection of the edge (in, out), d_in >= 0 > d_out, with a plane, as PIPE.CLIP.POLYGON
+// computes it: from the endpoint e nearer the plane (|d_e| smaller; the inside one on a tie),
+// e + t (f - e) with t = d_e / (d_e - d_f) in fl64, then w raised to kWMin when below.
+DVertex cut_edge(const Volume& vol, const DVertex& in, double d_in, const DVertex& out,
+                 double d_out) {
+  const bool from_in = !(fl64_add(d_in, d_out) > 0.0);  // d_in <= -d_out, exactly
+  const DVertex& e = from_in ? in : out;
+  const DVertex& f = from_in ? out : in;
+  const double de = from_in ? d_in : d_out, df = from_in ? d_out : d_in;
+  const double t = fl64_div(de, fl64_sub(de, df));
+  DVertex v;
+  for (std::size_t c = 0; c < 4; ++c) v.pos[c] = lerp_component(e.pos[c], f.pos[c], t);
+  v.attr.resize(e.attr.size());
+  for (std::size_t a = 0; a < e.attr.size(); ++a) v.attr[a] = lerp_component(e.attr[a], f.attr.at(a), t);
+  if (v.pos[3] < vol.w_min) v.pos[3] = vol.w_min;
+  return v;
+}
+}  // namespace
+
 // rule: PIPE.CLIP.POLYGON, PIPE.CLIP.COMPUTE
 std::vector<ClipVertex> clip_polygon(const std::vector<ClipVertex>& polygon, const Volume& vol) {
   std::vector<DVertex> cur;
@@ -303,18 +316,10 @@ std::vector<ClipVertex> clip_polygon(const std::vector<ClipVertex>& polygon, con
       const bool pin = dp >= 0.0, qin = dq >= 0.0;
       if (pin) next.push_back(p);
       if (pin != qin) {
-        // From the inside endpoint i towards the outside one o: i + t (o - i),
-        // t = d_i / (d_i - d_o), whichever of p, q comes first in the walk.
-        const DVertex& in = pin ? p : q;
-        const DVertex& out = pin ? q : p;
-        const double di = pin ? dp : dq, dout = pin ? dq : dp;
-        const double t = fl64_div(di, fl64_sub(di, dout));
-        DVertex v;
-        for (std::size_t c = 0; c < 4; ++c) v.pos[c] = lerp_component(in.pos[c], out.pos[c], t);
-        v.attr.resize(in.attr.size());
-        for (std::size_t a = 0; a < in.attr.size(); ++a)
-          v.attr[a] = lerp_component(in.attr[a], out.attr.at(a), t);
-        next.push_back(std::move(v));
+        // From the endpoint e nearer the plane (the inside one on a tie) towards the other f:
+        // e + t (f - e), t = d_e / (d_e - d_f), whichever of p, q comes first in the walk;
+        // w raised to kWMin when rounding left it below.
+        next.push_back(cut_edge(vol, pin ? p : q, pin ? dp : dq, pin ? q : p, pin ? dq : dp));
       }
     }
     cur = std::move(next);
@@ -346,15 +351,10 @@ std::optional<std::array<ClipVertex, 2>> clip_segment(const ClipVertex& a, const
     const bool in0 = d0 >= 0.0, in1 = d1 >= 0.0;
     if (!in0 && !in1) return std::nullopt;
     if (in0 == in1) continue;
-    // Move the outside endpoint to the intersection, computed from the inside one.
+    // Move the outside endpoint to the intersection (cut_edge: from the nearer endpoint).
     const std::size_t o = in0 ? 1 : 0, i = 1 - o;
     const double di = in0 ? d0 : d1, dout = in0 ? d1 : d0;
-    const double t = fl64_div(di, fl64_sub(di, dout));
-    DVertex v;
-    for (std::size_t c = 0; c < 4; ++c) v.pos[c] = lerp_component(e[i].pos[c], e[o].pos[c], t);
-    for (std::size_t k = 0; k < e[i].attr.size(); ++k)
-      v.attr.push_back(lerp_component(e[i].attr[k], e[o].attr.at(k), t));
-    e[o] = std::move(v);
+    e[o] = cut_edge(vol, e[i], di, e[o], dout);
   }
   std::array<ClipVertex, 2> out;
   for (std::size_t j = 0; j < 2; ++j) {

@@ -76,7 +76,7 @@ Rect viewport_scissor(const Viewport& vp);
 // Clipping (PIPE.CLIP.*): the double / float32 formulas of the spec
 
 inline constexpr double kGuardBand = 31744.0;  // px
-inline constexpr int kWMinLog2 = -40;
+inline constexpr int kWMinLog2 = -126;  // the w plane: w >= 2^-126 (float32's smallest normal)
 
 struct Volume {
   double w_min = 0.0;
