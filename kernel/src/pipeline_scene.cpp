@@ -221,8 +221,8 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
         // rule: PIPE.CLIP.SATURATE
         // Rounding in the clipper can carry a created vertex a little beyond the guard band;
         // D3D's saturating conversion keeps it snappable (a no-op for every other vertex).
-        w.back().x = std::clamp(w.back().x, -32768.0f, 32767.99609375f);
-        w.back().y = std::clamp(w.back().y, -32768.0f, 32767.99609375f);
+        w.back().x = saturate_to_snap_range(w.back().x);
+        w.back().y = saturate_to_snap_range(w.back().y);
         p.v.push_back(FloatPoint{w.back().x, w.back().y});
         attr.push_back(c.attr);
       }

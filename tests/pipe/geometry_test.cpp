@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rastrules/pipeline.hpp"
+#include "rastrules/snap.hpp"
 
 namespace rastrules::pipe {
 namespace {
@@ -213,6 +214,27 @@ TEST(PipeClip, GuardBandCutsFarVerticesAndKeepsTheRest) {
   for (const auto& v : poly) {
     const WindowVertex wv = to_window(v.pos, vp);
     EXPECT_LE(std::fabs(wv.x), kGuardBand + 1.0);
+  }
+}
+
+// rule: PIPE.CLIP.SATURATE
+TEST(PipeClip, WindowPositionsSaturateToTheSnapRange) {
+  EXPECT_EQ(saturate_to_snap_range(100.25f), 100.25f);
+  EXPECT_EQ(saturate_to_snap_range(31744.5f), 31744.5f);
+  EXPECT_EQ(saturate_to_snap_range(40000.0f), 32767.99609375f);
+  EXPECT_EQ(saturate_to_snap_range(-1e30f), -32768.0f);
+  EXPECT_EQ(saturate_to_snap_range(32767.99609375f), 32767.99609375f);
+  // Every vertex the clipper creates at the guard band snaps (here with the widest viewport).
+  const Viewport vp{-32768, -32768, 65535, 65535, 0, 1};
+  const std::vector<ClipVertex> t{{{-0.5f, -0.5f, 0.5f, 1}, {}},
+                                  {{5e4f, -0.5f, 0.5f, 1}, {}},
+                                  {{-0.5f, 7e4f, 0.5f, 1}, {}}};
+  const auto poly = clip_polygon(t, clip_volume({}, vp, true));
+  ASSERT_GE(poly.size(), 4u);
+  for (const ClipVertex& v : poly) {
+    const WindowVertex w = to_window(v.pos, vp);
+    EXPECT_EQ(snap_to_subpixel(saturate_to_snap_range(w.x)).status, SnapStatus::kOk);
+    EXPECT_EQ(snap_to_subpixel(saturate_to_snap_range(w.y)).status, SnapStatus::kOk);
   }
 }
 

@@ -58,6 +58,13 @@ struct WindowVertex {
 // rule: PIPE.VIEWPORT.TRANSFORM
 [[nodiscard]] WindowVertex to_window(const Vec4f& p, const Viewport& vp);
 
+// Returns v clamped to the snap range [-32768, 32767.99609375] (D3D's FixedMin and FixedMax):
+// the window x and y of clip-space vertices pass through it before snapping.
+// rule: PIPE.CLIP.SATURATE
+[[nodiscard]] constexpr float saturate_to_snap_range(float v) {
+  return v < -32768.0f ? -32768.0f : (v > 32767.99609375f ? 32767.99609375f : v);
+}
+
 // The implicit scissor of PIPE.VIEWPORT.SCISSOR: pixels [x0, x1) x [y0, y1).
 struct PixelRect {
   std::int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
