@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: MIT
+// libFuzzer target: pipeline scenes (SCENE.PIPELINE) from arbitrary bytes, through the reader
+// (rastrules::io::read_any_scene) and, when they read, the whole pipeline (run_pipeline). Must
+// never crash, leak or hit undefined behaviour, and
+// - an error names a field (or the parser's position);
+// - a pipeline scene that reads is written back to text that reads to the same scene;
+// - a small one that runs gives finite attributes, barycentrics summing to their area, stored
+//   depths inside the viewport's depth range, and the same result with every optimization as
+//   with none (PIPE.OPT.*).
+// rule: SCENE.PIPELINE, SCENE.INPUT.ERRORS, PIPE.OPT.TILES, PIPE.INTERP.HORIZON, PIPE.DEPTH.CLAMP
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "rastrules/io/scene_json.hpp"
+#include "rastrules/pipeline.hpp"
+#include "support.hpp"
+
+namespace {
+
+namespace kp = rastrules::pipe;
+namespace fz = rastrules::fuzz;
+using rastrules::SceneError;
+
+[[noreturn]] void fail(const std::string& what, const std::string& detail, const std::uint8_t* data,
+                       std::size_t size) {
+  fz::fail(what, {detail}, nullptr, data, size);
+}
+
+void check_error(const SceneError& e, const char* stage, const std::uint8_t* data, std::size_t size) {
+  const bool names_position = e.message.rfind("parse error", 0) == 0;
+  if (e.message.empty() || (e.field.empty() && !names_position))
+    fail(std::string(stage) + " returned an error that names no field or position",
+         "field \"" + e.field + "\", message \"" + e.message + "\"", data, size);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size > rastrules::io::kMaxSceneBytes) return 0;
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  const auto read = rastrules::io::read_any_scene(text);
+  if (const auto* err = std::get_if<SceneError>(&read)) {
+    check_error(*err, "read_any_scene", data, size);
+    return 0;
+  }
+  const auto* scene = std::get_if<kp::PipeScene>(&read);
+  if (scene == nullptr) return 0;  // a window-space scene: fuzz_scene_parser's
+
+  // Written back, the text reads to the same pipeline scene.
+  const auto reread = rastrules::io::read_any_scene(rastrules::io::write_pipe_scene(*scene));
+  if (const auto* err = std::get_if<SceneError>(&reread))
+    fail("write_pipe_scene wrote text that read_any_scene rejects", err->what(), data, size);
+  if (!std::holds_alternative<kp::PipeScene>(reread) ||
+      !rastrules::io::same_pipe_scene(std::get<kp::PipeScene>(reread), *scene))
+    fail("write_pipe_scene wrote text that reads back to another scene", "", data, size);
+
+  // Small scenes run (big targets make one input slow, not more interesting).
+  if (std::int64_t{scene->base.width} * scene->base.height > 4096 || scene->primitives.size() > 16)
+    return 0;
+  kp::PipeOptions fast;
+  fast.max_fragments = 1u << 16;
+  kp::PipeOptions plain = kp::PipeOptions::plain();
+  plain.max_fragments = fast.max_fragments;
+  const auto a = kp::run_pipeline(*scene, fast);
+  const auto b = kp::run_pipeline(*scene, plain);
+  if (const auto* err = std::get_if<SceneError>(&a)) {
+    check_error(*err, "run_pipeline", data, size);
+    if (!std::holds_alternative<SceneError>(b) || std::get<SceneError>(b).what() != err->what())
+      fail("run_pipeline fails with every optimization but not without", err->what(), data, size);
+    return 0;
+  }
+  if (!std::holds_alternative<kp::PipeResult>(b))
+    fail("run_pipeline fails without the optimizations only", std::get<SceneError>(b).what(), data, size);
+  const kp::PipeResult& r = std::get<kp::PipeResult>(a);
+  const kp::PipeResult& p = std::get<kp::PipeResult>(b);
+  if (r.fragments != p.fragments || r.data != p.data || r.depth_buffer != p.depth_buffer)
+    fail("the optimized result differs from the plain one (PIPE.OPT.*)", "", data, size);
+  const kp::Viewport vp = scene->viewport.value_or(kp::Viewport{
+      0, 0, static_cast<float>(scene->base.width), static_cast<float>(scene->base.height), 0, 1});
+  const kp::DepthFormat fmt = scene->depth ? scene->depth->format : kp::DepthFormat::kD24;
+  const kp::DepthValue lo = kp::to_depth_format(vp.min_depth, 0, 1, fmt);
+  const kp::DepthValue hi = kp::to_depth_format(vp.max_depth, 0, 1, fmt);
+  for (const kp::FragmentData& d : r.data) {
+    if (d.bary && d.bary->e[0] + d.bary->e[1] + d.bary->e[2] != d.bary->area)
+      fail("barycentrics that do not sum to the area (PIPE.BARY.SUM)", "", data, size);
+    for (const float v : d.attr)
+      if (!std::isfinite(v)) fail("an attribute that is not finite (PIPE.INTERP.HORIZON)", "", data, size);
+    for (const kp::DepthValue& z : d.depth) {
+      const bool ok = fmt == kp::DepthFormat::kD32F ? (z.f >= lo.f && z.f <= hi.f)
+                                                    : (z.unorm >= lo.unorm && z.unorm <= hi.unorm);
+      if (!ok) fail("a stored depth outside the viewport's range (PIPE.DEPTH.CLAMP)", "", data, size);
+    }
+  }
+  return 0;
+}
