@@ -141,13 +141,15 @@ TEST(CliPipeline, DepthTestPassedMasksAndTheDepthBuffer) {
                                "depth": [4194304, 4194304, 4194304, 4194304]})"));
   // greater: the first and the third pass; always without writes: every fragment passes and
   // the buffer keeps the clear value.
-  for (const json& g : render(three_layers(R"({"func": "greater", "clear": 0})"))["fragments"]) {
+  const json greater = render(three_layers(R"({"func": "greater", "clear": 0})"));
+  for (const json& g : greater["fragments"]) {
     EXPECT_EQ(g["passed"].get<int>(), g["prim"].get<int>() == 1 ? 0 : 1) << g.dump();
   }
   const auto a = dir.write("always.json", three_layers(R"({"func": "always", "write": false, "format": "d16"})"));
   ASSERT_EQ(run_cli({"render", a.string(), "--fragments", (dir / "fa.json").string(), "--depth-out",
                      (dir / "da.json").string()}).status, 0);
-  for (const json& g : json::parse(read_file(dir / "fa.json"))["fragments"]) EXPECT_EQ(g["passed"].get<int>(), 1);
+  const json always = json::parse(read_file(dir / "fa.json"));
+  for (const json& g : always["fragments"]) EXPECT_EQ(g["passed"].get<int>(), 1);
   EXPECT_EQ(json::parse(read_file(dir / "da.json"))["depth"], json::array({65535, 65535, 65535, 65535}));
   EXPECT_EQ(render(three_layers(R"({"format": "d16"})"))["fragments"][0]["depth"], json::array({32768}));
   EXPECT_EQ(render(three_layers(R"({"format": "d32f"})"))["fragments"][0]["depth"], json::array({0.5}));
