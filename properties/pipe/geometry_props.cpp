@@ -254,8 +254,10 @@ rc::Gen<kp::Vec4f> guard_band_vertex() {
       if (*rc::gen::inRange(0, 2) == 0)
         return static_cast<float>(*rc::gen::inRange(-512, 513)) / 256.0f;
       const float m = static_cast<float>(*rc::gen::inRange(1 << 10, 1 << 14)) / 1024.0f;
-      // Mostly just beyond the band; sometimes as far as the position limit allows (2^62 w).
-      const int e = *rc::gen::inRange(0, 5) == 0 ? *rc::gen::inRange(23, 61) : *rc::gen::inRange(11, 23);
+      // Mostly just beyond the band; sometimes far: m < 16 = 2^4 and e <= 58 keep |ndc| below
+      // 2^62 and |ndc * w| (w <= 3) below the position limit 2^64 (PIPE.INPUT.POSITION; e up
+      // to 60 once generated 1.8447307e19 > 2^64, which the kernel rightly rejected).
+      const int e = *rc::gen::inRange(0, 5) == 0 ? *rc::gen::inRange(23, 59) : *rc::gen::inRange(11, 23);
       return std::ldexp(m, e) * (*rc::gen::arbitrary<bool>() ? 1.0f : -1.0f);
     };
     const float z = static_cast<float>(*rc::gen::inRange(0, 257)) / 256.0f * w;
