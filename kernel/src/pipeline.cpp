@@ -441,7 +441,7 @@ float depth_bias(const std::array<Vec2, 3>& v, const std::array<float, 3>& z, co
       const double ddy = (dz2 * dx1 - dz1 * dx2) * 256.0 / den;
       max_slope = saturate_to_float(std::max(std::fabs(ddx), std::fabs(ddy)));
     }
-    slope_term = bias.slope_scaled * max_slope;
+    slope_term = saturate_to_float(static_cast<double>(bias.slope_scaled * max_slope));
   }
   float r = 0.0f;
   if (format == DepthFormat::kD32F) {
@@ -461,7 +461,7 @@ float depth_bias(const std::array<Vec2, 3>& v, const std::array<float, 3>& z, co
     r = static_cast<float>(1.0 / n);
   }
   const float constant = static_cast<float>(bias.bias) * r;
-  float total = constant + slope_term;
+  float total = saturate_to_float(static_cast<double>(constant + slope_term));
   if (bias.clamp > 0.0f)
     total = std::min(bias.clamp, total);
   else if (bias.clamp < 0.0f)

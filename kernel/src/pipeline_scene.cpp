@@ -395,8 +395,11 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
     if (s.depth && pr.type == PrimitiveType::kTriangle &&
         (s.depth->bias.bias != 0 || s.depth->bias.slope_scaled != 0.0f)) {
       const float b = depth_bias({pr.v[0], pr.v[1], pr.v[2]}, d.z, s.depth->bias, fmt);
-      for (float& zi : d.z)
+      for (float& zi : d.z) {
         zi = zi + b;
+        if (std::isinf(zi))  // saturates like every float32 step of the bias (PIPE.DEPTH.BIAS)
+          zi = std::copysign(std::numeric_limits<float>::max(), zi);
+      }
     }
     for (std::size_t a = 0; a < nattr; ++a) {
       std::array<float, 3> v{};

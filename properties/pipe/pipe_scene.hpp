@@ -238,7 +238,7 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
       const float bias = op::depth_bias(part.raw, {part.wv[0].z, part.wv[1].z, part.wv[2].z},
                                         b.bias, b.slope_scaled, b.clamp,
                                         pg::depth_format_name(s.depth->format));
-      for (op::WindowVertex& v : part.wv) v.z = op::fl32_add(v.z, bias);
+      for (op::WindowVertex& v : part.wv) v.z = op::sat32(op::fl32_add(v.z, bias));
     }
     g.parts.push_back(part);
   }

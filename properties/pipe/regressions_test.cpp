@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <variant>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -198,4 +199,39 @@ TEST(PipeRegression, WPlaneCutKeepsWPositive) {
     EXPECT_GE(v.pos[3], 0x1p-126f);
     EXPECT_TRUE(std::isfinite(kp::to_window(v.pos, vp).x));
   }
+}
+
+// Found by PipeScene.FragmentsAgreeWithTheOracle at 6000 cases: with slope-scaled bias on a
+// triangle whose window depths are near FLT_MAX (depth clipping off), the slope term overflowed
+// to an infinity, Zi + Bias became infinite and the interpolated depth non-finite (the oracle
+// refused it). Every float32 step of the bias now saturates at +-FLT_MAX (PIPE.DEPTH.BIAS).
+// rule: PIPE.DEPTH.BIAS, PIPE.DEPTH.CLAMP
+TEST(PipeRegression, HugeSlopeBiasSaturates) {
+  const std::array<rastrules::oracle::pipe::Raw2, 3> v{{{0, 0}, {8 * 256, 0}, {0, 8 * 256}}};
+  const std::array<float, 3> z{3e38f, -3e38f, 3e38f};
+  kp::DepthBias b;
+  b.slope_scaled = 10.0f;
+  const float got = kp::depth_bias(pg::to_vec2(v), z, b, kp::DepthFormat::kD16);
+  const float want = op::depth_bias(v, z, 0, 10.0f, 0.0f, "d16");
+  EXPECT_EQ(got, std::numeric_limits<float>::max());
+  EXPECT_TRUE(pg::same_bits(got, want)) << "kernel " << got << ", oracle " << want;
+
+  kp::PipeScene s;
+  s.base.width = 8;
+  s.base.height = 8;
+  s.depth = kp::DepthState{};
+  s.depth->format = kp::DepthFormat::kD16;
+  s.depth->bias.slope_scaled = 10.0f;
+  kp::PipePrimitive p;
+  p.base = rastrules::make_triangle({rastrules::FloatPoint{0, 0}, rastrules::FloatPoint{8, 0},
+                                     rastrules::FloatPoint{0, 8}});
+  p.z = {3e38f, -3e38f, 3e38f};
+  s.primitives.push_back(p);
+  const auto r = kp::run_pipeline(s);
+  ASSERT_TRUE(std::holds_alternative<kp::PipeResult>(r));
+  const kp::PipeResult& res = std::get<kp::PipeResult>(r);
+  ASSERT_FALSE(res.drawn.empty());
+  for (const float zi : res.drawn[0].z) EXPECT_TRUE(std::isfinite(zi)) << zi;
+  for (const kp::FragmentData& d : res.data)
+    for (const kp::DepthValue& dv : d.depth) EXPECT_LE(dv.unorm, 65535u);
 }

@@ -899,6 +899,9 @@ std::string DepthCheck::describe(const std::string& format) const {
 }
 
 // rule: PIPE.DEPTH.BIAS
+// Every float32 step of the bias saturates at +-FLT_MAX (PIPE.DEPTH.BIAS).
+float sat32(float v) { return std::isinf(v) ? (v > 0 ? FLT_MAX : -FLT_MAX) : v; }
+
 float depth_bias(const std::array<Raw2, 3>& v, const std::array<float, 3>& z, std::int32_t bias,
                  float slope_scaled, float clamp, const std::string& format) {
   if (bias == 0 && slope_scaled == 0.0f) return 0.0f;
@@ -915,9 +918,9 @@ float depth_bias(const std::array<Raw2, 3>& v, const std::array<float, 3>& z, st
       // raw / 256, so the per-pixel derivatives are 256 times the per-raw-unit ones.
       const double ddx = rn64(Q((z1 * y2 - z2 * y1) * 256 / den));
       const double ddy = rn64(Q((x1 * z2 - x2 * z1) * 256 / den));
-      max_slope = nearest_float(std::max(std::fabs(ddx), std::fabs(ddy)));
+      max_slope = sat32(nearest_float(std::max(std::fabs(ddx), std::fabs(ddy))));
     }
-    slope_term = fl32_mul(slope_scaled, max_slope);
+    slope_term = sat32(fl32_mul(slope_scaled, max_slope));
   }
   float r = 0.0f;
   if (format == "d32f") {
@@ -931,7 +934,7 @@ float depth_bias(const std::array<Raw2, 3>& v, const std::array<float, 3>& z, st
     r = rn32(Q(1) / (pow2(bits) - 1));
   }
   const float constant = fl32_mul(nearest_float(static_cast<double>(bias)), r);
-  float total = fl32_add(constant, slope_term);
+  float total = sat32(fl32_add(constant, slope_term));
   if (clamp > 0.0f) total = std::min(clamp, total);
   else if (clamp < 0.0f) total = std::max(clamp, total);
   return total;

@@ -286,6 +286,8 @@ DepthCheck check_depth_stored(const Bary& b, const std::array<float, 3>& z, floa
 // subnormals); Bias = fl32(fl32(float(bias) * r) + fl32(slope_scaled * MaxDepthSlope)),
 // clamped by clamp (min when > 0, max when < 0).
 // rule: PIPE.DEPTH.BIAS
+// +-FLT_MAX for an infinity, v otherwise (the saturation of PIPE.DEPTH.BIAS).
+float sat32(float v);
 float depth_bias(const std::array<Raw2, 3>& v, const std::array<float, 3>& z, std::int32_t bias,
                  float slope_scaled, float clamp, const std::string& format);
 
