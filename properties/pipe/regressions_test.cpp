@@ -96,11 +96,11 @@ std::string guard_band_mismatches(const std::array<kp::Vec4f, 3>& tri, std::int3
 }
 
 // Found by PipeGeometry.GuardBandClippingKeepsCoverageAwayFromEdges. PIPE.CLIP.VOLUME's w plane
-// is w >= 2^-40 M with M the largest |coordinate| of the primitive: one vertex with x = 2^41
-// (x/w = 2^41, far inside the position limit) raises it to w >= 2, which every vertex (w = 1)
-// fails, so the whole triangle is discarded although half of the target lies inside it (D3D
-// clips at 0 < w and draws it). This contradicts PIPE.CLIP.GUARD_BAND_BOUND. A spec problem:
-// the kernel follows PIPE.CLIP.VOLUME as written.
+// was w >= 2^-40 M with M the largest |coordinate| of the primitive: one vertex with x = 2^41
+// (x/w = 2^41, far inside the position limit) raised it to w >= 2, which every vertex (w = 1)
+// failed, so the whole triangle was discarded although half of the target lies inside it (D3D
+// clips at 0 < w and draws it), contradicting PIPE.CLIP.GUARD_BAND_BOUND. A spec problem, fixed
+// in the spec: the w plane is now absolute (w >= 2^-126).
 // rule: PIPE.CLIP.VOLUME, PIPE.CLIP.GUARD_BAND_BOUND
 TEST(PipeRegression, FarVertexMustNotDiscardTheVisibleTriangle) {
   const std::array<kp::Vec4f, 3> tri{kp::Vec4f{std::ldexp(1.0f, 41), 0.0f, 0.5f, 1.0f},
