@@ -695,6 +695,21 @@ double linear_exact(const Bary& b, const std::array<float, 3>& a) {
   return rn64(sum / exact_i(b.area));
 }
 
+namespace {
+// The common end of both checks: the bound ulp32(x) + 2^-48 S of PIPE.INTERP.BOUND, then the
+// kernel's value against it and, inside the triangle, against the vertex values' range.
+void judge(InterpCheck& c, const Bary& b, const std::array<float, 3>& a, const Q& x, const Q& s,
+           float got) {
+  const Q bound = ulp32_q(x) + pow2(-48) * s;
+  c.s = rn64(s);
+  c.bound = rn64(bound);
+  if (!c.finite) return;
+  c.ok = accept(got, x, bound, c.saturated);
+  range_check(c, b, a, bound);
+  c.ok = c.ok && c.in_range;
+}
+}  // namespace
+
 // rule: PIPE.INTERP.PERSPECTIVE, PIPE.INTERP.HORIZON, PIPE.INTERP.BOUND
 InterpCheck check_perspective(const Bary& b, const std::array<float, 3>& a,
                               const std::array<float, 3>& w, float flat, float got) {
@@ -732,14 +747,7 @@ InterpCheck check_perspective(const Bary& b, const std::array<float, 3>& a,
     c.ok = c.finite;
     return c;
   }
-  const Q s = (sa + abs_q(x) * sq) / abs_q(dq);
-  const Q bound = ulp32_q(x) + pow2(-48) * s;
-  c.s = rn64(s);
-  c.bound = rn64(bound);
-  if (!c.finite) return c;
-  c.ok = accept(got, x, bound, c.saturated);
-  range_check(c, b, a, bound);
-  c.ok = c.ok && c.in_range;
+  judge(c, b, a, x, (sa + abs_q(x) * sq) / abs_q(dq), got);
   return c;
 }
 
@@ -757,15 +765,8 @@ InterpCheck check_linear(const Bary& b, const std::array<float, 3>& a, float got
   }
   const Q area = exact_i(b.area);
   const Q x = sum / area;
-  const Q s = sa / abs_q(area);
-  const Q bound = ulp32_q(x) + pow2(-48) * s;
   c.exact = rn64(x);
-  c.s = rn64(s);
-  c.bound = rn64(bound);
-  if (!c.finite) return c;
-  c.ok = accept(got, x, bound, c.saturated);
-  range_check(c, b, a, bound);
-  c.ok = c.ok && c.in_range;
+  judge(c, b, a, x, sa / abs_q(area), got);
   return c;
 }
 
