@@ -94,7 +94,18 @@ LadderScene make_mesh(std::string name, std::uint64_t seed, std::int32_t cols, s
         return static_cast<bool>(diag[static_cast<std::size_t>(j)][static_cast<std::size_t>(i)]);
       },
       s.triangles);
+  flatten(s);
   return s;
+}
+
+void flatten(LadderScene& s) {
+  s.xy.clear();
+  s.xy.reserve(6 * s.triangles.size());
+  for (const auto& tri : s.triangles)
+    for (const auto& v : tri) {
+      s.xy.push_back(v[0]);
+      s.xy.push_back(v[1]);
+    }
 }
 
 // rule: BENCH.LADDER.SCENES
@@ -129,6 +140,7 @@ LadderScene make_hard_mesh(std::int32_t cols, std::int32_t rows, std::int32_t ce
   s.rect_y1 = ys.back();
   split_cells(
       g, cols, nrows, [](std::int32_t i, std::int32_t j) { return (i + j) % 2 == 0; }, s.triangles);
+  flatten(s);
   return s;
 }
 
@@ -148,6 +160,7 @@ LadderScene translated(const LadderScene& s, std::int32_t t, std::int32_t width,
   out.rect_y0 += t;
   out.rect_x1 += t;
   out.rect_y1 += t;
+  flatten(out);
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -49,9 +50,16 @@ struct LadderScene {
   std::int32_t width = 0;
   std::int32_t height = 0;
   std::vector<FloatTriangle> triangles;
+  // The same coordinates, six floats a triangle, as the kernel's batch counter reads them
+  // (raster::fast_count_batch); flatten() fills it. Kept in the scene so that the timed
+  // reference-fast rung does not time a copy.
+  std::vector<float> xy;
   bool is_mesh = false;
   double rect_x0 = 0, rect_y0 = 0, rect_x1 = 0, rect_y1 = 0;
 };
+
+// Sets s.xy from s.triangles.
+void flatten(LadderScene& s);
 
 // A seeded mesh: (cols + 1) x (rows + 1) grid vertices `cell` pixels apart starting at
 // (x0, y0), interior vertices jittered by up to `jitter` * cell on the 1/256 grid, boundary
@@ -173,9 +181,27 @@ struct LadderConfig {
   unsigned threads = 1;     // threads of the `reference-fast xN` figure (BENCH.METRIC.THROUGHPUT)
 };
 
-// reference-fast on `threads` threads: the scene's triangles in `threads` contiguous chunks,
-// each counted by the fast traversal on its own thread (rastrules::run_units), the chunk counts
-// added in chunk order. Equal to run_rung(kReferenceFast, s, nullptr) for every thread count.
+// reference-fast on `threads` threads kept between calls (a persistent pool of standard-library
+// threads, created once, like a driver's): each call splits the scene's triangles into one
+// contiguous chunk a thread, counts each with the kernel's batch counter (the calling thread
+// takes chunk 0) and adds the chunk counts in chunk order. Equal to run_rung(kReferenceFast, s,
+// nullptr) for every thread count. A thread that cannot be created leaves fewer chunks.
+// rule: BENCH.METRIC.THROUGHPUT
+class FastPool {
+public:
+  explicit FastPool(unsigned threads);
+  ~FastPool();
+  FastPool(const FastPool&) = delete;
+  FastPool& operator=(const FastPool&) = delete;
+  [[nodiscard]] unsigned threads() const;
+  [[nodiscard]] std::uint64_t count(const LadderScene& s);
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// One FastPool(threads).count(s): threads created for this call only.
 // rule: BENCH.METRIC.THROUGHPUT
 [[nodiscard]] std::uint64_t run_reference_fast_threaded(const LadderScene& s, unsigned threads);
 

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+// Counting the coverage of many triangles at once (layer 3: mechanism): snapping and setup of
+// small triangles eight at a time in 32-bit SIMD lanes, then each one's rows in lanes; larger
+// triangles go through the tiled traversal (fast.hpp). Its only correctness criterion: for
+// every triangle, exactly the pixels walk_triangle emits for the triangle set up from its
+// snapped vertices (FAST.BATCH.EQUALS.PLAIN).
+// Implements: FAST.BATCH.EQUALS.PLAIN, FAST.BATCH.SMALL_I32, FAST.BATCH.SNAP_SIMD
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "rastrules/isa.hpp"
+#include "rastrules/snap.hpp"
+#include "rastrules/triangle.hpp"
+
+namespace rastrules::raster {
+
+// Triangles whose snapped vertices span less than kBatchSmallSpan raw units (16 pixels) in x
+// and in y are set up and decided in 32-bit lanes (FAST.BATCH.SMALL_I32).
+inline constexpr std::int32_t kBatchSmallSpan = 16 * kSubpixelOne;
+
+enum class BatchStatus {
+  kOk,
+  kBadLength,  // xy.size() is not a multiple of 6, or an output span has the wrong size
+  kBadTarget,  // width or height outside [1, kMaxTargetSide]
+  kBadIsa,     // the instruction set is not supported here (isa_supported)
+  kBadVertex,  // a coordinate does not snap (SNAP.VERTEX.INVALID): see bad_*
+};
+
+struct FastBatchResult {
+  BatchStatus status = BatchStatus::kOk;
+  std::uint64_t covered = 0;     // pixel centres covered, summed over the triangles
+  std::uint64_t rasterized = 0;  // triangles with status kRasterized (not degenerate, not culled)
+  std::uint64_t small = 0;       // of all triangles, those decided in 32-bit lanes
+  // kBadVertex: the first triangle (lowest index) with a coordinate that does not snap, its
+  // first such vertex (0..2) and axis ('x' or 'y'), and why.
+  std::size_t bad_triangle = 0;
+  int bad_vertex = 0;
+  char bad_axis = 'x';
+  SnapStatus bad_snap = SnapStatus::kOk;
+};
+
+// Returns a one-line description of r's status that names the problem ("ok" when kOk).
+[[nodiscard]] std::string describe(const FastBatchResult& r);
+
+// Counts the pixel centres of a width x height target covered by each triangle of xy (six
+// floats a triangle: x0 y0 x1 y1 x2 y2, window coordinates in pixels): for triangle i, the
+// pixels walk_triangle(setup_triangle(snapped vertices, state), width, height) emits.
+//   per_triangle: empty, or one entry per triangle, set to that triangle's count;
+//   hits: empty, or width * height counters (row-major), each increased by the number of
+//         triangles covering its pixel (overdraw; a watertight mesh leaves 0 or 1).
+// isa selects the lanes (scalar: every triangle through setup_triangle and the scalar tiles;
+// avx2 and avx512: the small triangles' snapping, setup and rows in AVX2 lanes, the others
+// through the tiles of that instruction set). Every isa gives the same result.
+// On an error status the counts and the outputs are unspecified (nothing is read or written
+// out of bounds); the status names the problem (describe()).
+// rule: FAST.BATCH.EQUALS.PLAIN
+[[nodiscard]] FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width,
+                                               std::int32_t height, const RasterState& state,
+                                               Isa isa,
+                                               std::span<std::uint64_t> per_triangle = {},
+                                               std::span<std::uint32_t> hits = {});
+
+}  // namespace rastrules::raster

@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: MIT
+// The batch counter's dispatcher (FAST.BATCH.EQUALS.PLAIN), compiled for the baseline
+// instruction set: checks the arguments, hands chunks of triangles to the AVX2 unit, and runs
+// every other triangle (all of them under Isa::kScalar) through the kernel's own snapping,
+// setup_triangle and tiled traversal.
+// Implements: FAST.BATCH.EQUALS.PLAIN, FAST.ISA.DISPATCH
+
+#include "rastrules/raster/fast_batch.hpp"
+
+#include <algorithm>
+#include <array>
+#include <string>
+
+#include "fast_batch_detail.hpp"
+#include "rastrules/raster/fast.hpp"
+
+namespace rastrules::raster {
+
+static_assert(kBatchSmallSpan == batch_detail::kSmallSpan, "one small span");
+
+namespace {
+
+constexpr std::size_t kChunk = 1024;  // triangles handed to the SIMD unit at once
+
+struct Bad {
+  int vertex = 0;
+  char axis = 'x';
+  SnapStatus status = SnapStatus::kOk;
+};
+
+// Snaps the six coordinates of one triangle; on failure, which one and why (the first, in
+// the order x0 y0 x1 y1 x2 y2).
+// rule: SNAP.VERTEX.ROUND, SNAP.VERTEX.RANGE, SNAP.VERTEX.INVALID
+bool snap_triangle(const float* v, std::array<Vec2, 3>& out, Bad& bad) {
+  for (int k = 0; k < 3; ++k) {
+    const SnapResult x = snap_to_subpixel(v[2 * k]);
+    if (x.status != SnapStatus::kOk) {
+      bad = Bad{k, 'x', x.status};
+      return false;
+    }
+    const SnapResult y = snap_to_subpixel(v[2 * k + 1]);
+    if (y.status != SnapStatus::kOk) {
+      bad = Bad{k, 'y', y.status};
+      return false;
+    }
+    out[static_cast<std::size_t>(k)] = Vec2{x.value, y.value};
+  }
+  return true;
+}
+
+struct Context {
+  std::span<const float> xy;
+  std::int32_t width;
+  std::int32_t height;
+  RasterState state;
+  Isa isa;
+  std::span<std::uint64_t> per_triangle;
+  std::span<std::uint32_t> hits;
+};
+
+// Triangle i the plain way: the kernel's snapping and setup, then its tiles.
+// rule: FAST.BATCH.EQUALS.PLAIN
+bool one_triangle(const Context& c, std::size_t i, FastBatchResult& r) {
+  std::array<Vec2, 3> v;
+  Bad bad;
+  if (!snap_triangle(c.xy.data() + 6 * i, v, bad)) {
+    r.status = BatchStatus::kBadVertex;
+    r.bad_triangle = i;
+    r.bad_vertex = bad.vertex;
+    r.bad_axis = bad.axis;
+    r.bad_snap = bad.status;
+    return false;
+  }
+  const TriangleSetup t = setup_triangle(v, c.state);
+  if (t.status != TriangleStatus::kRasterized) return true;
+  ++r.rasterized;
+  std::uint64_t n = 0;
+  if (c.hits.empty()) {
+    n = fast_count_covered(t, c.width, c.height, c.isa);
+  } else {
+    const auto w = static_cast<std::size_t>(c.width);
+    std::uint32_t* hits = c.hits.data();
+    walk_triangle_fast(t, c.width, c.height, c.isa, [&](std::int32_t x, std::int32_t y) {
+      ++hits[static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x)];
+      ++n;
+    });
+  }
+  r.covered += n;
+  if (!c.per_triangle.empty()) c.per_triangle[i] = n;
+  return true;
+}
+
+}  // namespace
+
+std::string describe(const FastBatchResult& r) {
+  switch (r.status) {
+    case BatchStatus::kOk: return "ok";
+    case BatchStatus::kBadLength:
+      return "batch: the coordinates are not 6 floats a triangle, or an output does not have one "
+             "entry per triangle (per_triangle) or per pixel (hits)";
+    case BatchStatus::kBadTarget:
+      return "batch: the target's width and height must lie in [1, " +
+             std::to_string(kMaxTargetSide) + "]";
+    case BatchStatus::kBadIsa: return "batch: the instruction set is not supported on this processor";
+    case BatchStatus::kBadVertex:
+      return "batch: triangle " + std::to_string(r.bad_triangle) + ", vertex " +
+             std::to_string(r.bad_vertex) + ", " + std::string(1, r.bad_axis) + ": " +
+             std::string(to_string(r.bad_snap)) + " (SNAP.VERTEX.INVALID)";
+  }
+  return "batch: unknown status";
+}
+
+// rule: FAST.BATCH.EQUALS.PLAIN, FAST.ISA.DISPATCH
+FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width,
+                                 std::int32_t height, const RasterState& state, Isa isa,
+                                 std::span<std::uint64_t> per_triangle,
+                                 std::span<std::uint32_t> hits) {
+  FastBatchResult r;
+  if (width < 1 || height < 1 || width > kMaxTargetSide || height > kMaxTargetSide) {
+    r.status = BatchStatus::kBadTarget;
+    return r;
+  }
+  const std::size_t n = xy.size() / 6;
+  if (xy.size() % 6 != 0 || (!per_triangle.empty() && per_triangle.size() != n) ||
+      (!hits.empty() &&
+       hits.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))) {
+    r.status = BatchStatus::kBadLength;
+    return r;
+  }
+  if (!isa_supported(isa)) {
+    r.status = BatchStatus::kBadIsa;
+    return r;
+  }
+  std::fill(per_triangle.begin(), per_triangle.end(), std::uint64_t{0});
+  const Context c{xy, width, height, state, isa, per_triangle, hits};
+#if RASTRULES_FAST_X86
+  if (isa != Isa::kScalar) {
+    batch_detail::Params p;
+    p.width = width;
+    p.height = height;
+    // rule: TRI.FILL.CONVENTION
+    // (formula::is_inclusive_edge's two flags)
+    p.top_inclusive = state.fill == FillConvention::kTopLeft || state.fill == FillConvention::kTopRight;
+    p.left_inclusive = state.fill == FillConvention::kTopLeft || state.fill == FillConvention::kBottomLeft;
+    // rule: TRI.CULL.MODE
+    // A clockwise triangle is front-facing iff front_face is kClockwise.
+    const bool cw_front = state.front_face == FrontFace::kClockwise;
+    p.skip_cw = (state.cull == CullMode::kBack && !cw_front) || (state.cull == CullMode::kFront && cw_front);
+    p.skip_ccw = (state.cull == CullMode::kBack && cw_front) || (state.cull == CullMode::kFront && !cw_front);
+    p.hits = hits.empty() ? nullptr : hits.data();
+    std::array<std::uint32_t, kChunk> large;
+    for (std::size_t base = 0; base < n; base += kChunk) {
+      p.xy = xy.data() + 6 * base;
+      p.n = std::min(kChunk, n - base);
+      p.per_triangle = per_triangle.empty() ? nullptr : per_triangle.data() + base;
+      batch_detail::Out o;
+      const std::size_t k = batch_detail::small_batch_avx2(p, o, large.data());
+      r.covered += o.covered;
+      r.rasterized += o.rasterized;
+      r.small += o.small;
+      for (std::size_t j = 0; j < k; ++j)
+        if (!one_triangle(c, base + large[j], r)) return r;  // cannot fail: all snapped
+      if (o.bad != static_cast<std::size_t>(-1)) {
+        const bool ok = one_triangle(c, base + o.bad, r);  // reports why
+        if (ok) r.status = BatchStatus::kBadVertex;        // unreachable: the lanes agree
+        return r;
+      }
+    }
+    return r;
+  }
+#endif
+  for (std::size_t i = 0; i < n; ++i)
+    if (!one_triangle(c, i, r)) return r;
+  return r;
+}
+
+}  // namespace rastrules::raster

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+// Internal to the batch counter (kernel/src/fast_batch*.cpp): what the dispatcher
+// (fast_batch.cpp, baseline instruction set) hands the SIMD unit (fast_batch_avx2.cpp, compiled
+// for AVX2) and what it gets back. The SIMD unit calls no inline function of another header
+// (see fast_tiles.hpp): it decides the small triangles and lists the others for the dispatcher.
+// Implements: FAST.BATCH.SMALL_I32
+
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#ifndef RASTRULES_FAST_X86
+#define RASTRULES_FAST_X86 0
+#endif
+
+namespace rastrules::raster::batch_detail {
+
+// Spans below this many raw units (16 pixels) are small (raster::kBatchSmallSpan).
+inline constexpr std::int32_t kSmallSpan = 16 * 256;
+
+struct Params {
+  const float* xy = nullptr;  // 6 floats a triangle
+  std::size_t n = 0;          // triangles
+  std::int32_t width = 0;
+  std::int32_t height = 0;
+  bool top_inclusive = true;   // TRI.FILL.CONVENTION, as formula::is_inclusive_edge's flags
+  bool left_inclusive = true;
+  bool skip_cw = false;        // TRI.CULL.MODE: clockwise triangles are culled
+  bool skip_ccw = false;       // counter-clockwise triangles are culled
+  std::uint64_t* per_triangle = nullptr;  // n entries, zeroed by the caller, or null
+  std::uint32_t* hits = nullptr;          // width * height, or null
+};
+
+struct Out {
+  std::uint64_t covered = 0;
+  std::uint64_t rasterized = 0;  // small triangles only
+  std::uint64_t small = 0;
+  std::size_t bad = static_cast<std::size_t>(-1);  // first triangle that does not snap
+};
+
+#if RASTRULES_FAST_X86
+// Decides the triangles of p whose snapped spans are below kBatchSmallSpan; writes the indices
+// (0-based in p) of the other snapped triangles to large[0..k) and returns k. Stops at the
+// first group of eight with a coordinate that does not snap and sets out.bad to its first
+// such triangle (the triangles of that group are then not counted).
+// rule: FAST.BATCH.SMALL_I32, FAST.BATCH.SNAP_SIMD
+std::size_t small_batch_avx2(const Params& p, Out& out, std::uint32_t* large);
+#endif
+
+}  // namespace rastrules::raster::batch_detail

@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: MIT
+// Properties: the batch counter (fast_count_batch) gives, for every instruction set this
+// processor runs, each triangle's count and the per-pixel overdraw that the plain walk gives
+// the triangle set up from its snapped vertices, on batches mixing small triangles (spans at
+// and around the 16-pixel bound of the 32-bit lanes, vertices off the 1/256 grid and on ties
+// of the snapping rule, clipped by the target's sides) with every shape of the fast
+// traversal's properties; and it reports the same first coordinate that does not snap.
+// Implements (properties for): FAST.BATCH.EQUALS.PLAIN, FAST.BATCH.SMALL_I32,
+//   FAST.BATCH.SNAP_SIMD
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "fast_gen.hpp"
+#include "rastrules/raster/fast_batch.hpp"
+#include "rastrules/raster/walk.hpp"
+
+namespace {
+
+namespace fg = rastrules::fast_gen;
+namespace mg = rastrules::msaa_gen;
+namespace raster = rastrules::raster;
+using rastrules::Isa;
+
+// A coordinate from a raw 16.8 value: exactly raw / 256, or moved off the grid by a fraction
+// of a unit (ties of round-half-to-even, just below and above them, tiny offsets).
+rc::Gen<float> coordinate(std::int64_t raw) {
+  return rc::gen::weightedOneOf<float>(
+      {{3, rc::gen::just(static_cast<float>(static_cast<double>(raw) / 256.0))},
+       {2, rc::gen::map(rc::gen::element(0.5, -0.5, 0.499, 0.501, 0.25, -0.75, 1e-3, -1e-3),
+                        [raw](double f) {
+                          // at the range's ends, only moves that still snap
+                          const auto v = static_cast<float>((static_cast<double>(raw) + f) / 256.0);
+                          return rastrules::snap_to_subpixel(v).status == rastrules::SnapStatus::kOk
+                                     ? v
+                                     : static_cast<float>(static_cast<double>(raw) / 256.0);
+                        })}});
+}
+
+// A small triangle: vertices within `span` raw units of a point near the w x h target, with
+// the spans 4095 and 4096 (the 32-bit lanes' bound, FAST.BATCH.SMALL_I32) made likely.
+rc::Gen<fg::RawTri> small_triangle(std::int32_t w, std::int32_t h) {
+  return rc::gen::exec([=] {
+    const std::int64_t s = *rc::gen::element<std::int64_t>(4095, 4096, 4097, 2048, 600, 64, 3);
+    const std::int64_t x = *fg::near_raw(w, 18), y = *fg::near_raw(h, 18);
+    fg::RawTri t;
+    for (auto& p : t)
+      p = {x + *rc::gen::inRange<std::int64_t>(-s, s + 1), y + *rc::gen::inRange<std::int64_t>(-s, s + 1)};
+    if (*rc::gen::arbitrary<bool>()) t[1][0] = t[0][0] + s;  // the span exactly s
+    if (*rc::gen::arbitrary<bool>()) t[2][1] = t[0][1] - s;
+    if (*rc::gen::inRange(0, 4) == 0) t[1][1] = t[0][1];  // a horizontal edge
+    if (*rc::gen::inRange(0, 4) == 0) t[2][0] = t[1][0];  // a vertical edge
+    for (auto& p : t) p = {fg::clamp_raw(p[0]), fg::clamp_raw(p[1])};
+    return t;
+  });
+}
+
+struct Batch {
+  std::int32_t w = 1, h = 1;
+  std::vector<float> xy;
+};
+
+rc::Gen<Batch> batch() {
+  return mg::full_size<Batch>(rc::gen::exec([] {
+    Batch b;
+    b.w = *rc::gen::weightedOneOf<std::int32_t>({{3, rc::gen::inRange<std::int32_t>(1, 70)},
+                                                 {1, rc::gen::inRange<std::int32_t>(70, 200)}});
+    b.h = *rc::gen::weightedOneOf<std::int32_t>({{3, rc::gen::inRange<std::int32_t>(1, 70)},
+                                                 {1, rc::gen::inRange<std::int32_t>(70, 200)}});
+    const auto n = *rc::gen::inRange<std::size_t>(1, 41);
+    for (std::size_t i = 0; i < n; ++i) {
+      const fg::RawTri t = *rc::gen::weightedOneOf<fg::RawTri>(
+          {{4, small_triangle(b.w, b.h)},
+           {1, rc::gen::map(fg::triangle(b.w, b.h), [](const fg::GenTri& g) { return g.v; })}});
+      for (const auto& p : t) {
+        b.xy.push_back(*coordinate(p[0]));
+        b.xy.push_back(*coordinate(p[1]));
+      }
+    }
+    return b;
+  }));
+}
+
+struct Expected {
+  std::vector<std::uint64_t> per_triangle;
+  std::vector<std::uint32_t> hits;
+  std::uint64_t covered = 0, rasterized = 0;
+};
+
+// The plain way, triangle by triangle: snap_to_subpixel, setup_triangle, walk_triangle.
+Expected plain(const Batch& b, const rastrules::RasterState& state) {
+  Expected e;
+  e.hits.assign(static_cast<std::size_t>(b.w) * static_cast<std::size_t>(b.h), 0);
+  for (std::size_t i = 0; i < b.xy.size() / 6; ++i) {
+    std::array<rastrules::Vec2, 3> v;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto x = rastrules::snap_to_subpixel(b.xy[6 * i + 2 * k]);
+      const auto y = rastrules::snap_to_subpixel(b.xy[6 * i + 2 * k + 1]);
+      RC_ASSERT(x.status == rastrules::SnapStatus::kOk);
+      RC_ASSERT(y.status == rastrules::SnapStatus::kOk);
+      v[k] = rastrules::Vec2{x.value, y.value};
+    }
+    const rastrules::TriangleSetup t = rastrules::setup_triangle(v, state);
+    if (t.status == rastrules::TriangleStatus::kRasterized) ++e.rasterized;
+    std::uint64_t n = 0;
+    raster::walk_triangle(t, b.w, b.h, [&](std::int32_t x, std::int32_t y) {
+      ++e.hits[static_cast<std::size_t>(y) * static_cast<std::size_t>(b.w) + static_cast<std::size_t>(x)];
+      ++n;
+    });
+    e.per_triangle.push_back(n);
+    e.covered += n;
+  }
+  return e;
+}
+
+// rule: FAST.BATCH.EQUALS.PLAIN, FAST.BATCH.SMALL_I32, FAST.BATCH.SNAP_SIMD, FAST.ISA.DISPATCH
+RC_GTEST_PROP(FastBatch, EveryIsaCountsEachTrianglesPlainPixels, ()) {
+  const Batch b = *batch();
+  const rastrules::RasterState state = *rastrules::gen::raster_state();
+  const Expected e = plain(b, state);
+  const std::size_t n = b.xy.size() / 6;
+  for (Isa isa : fg::supported_isas()) {
+    std::vector<std::uint64_t> per(n, 99);
+    std::vector<std::uint32_t> hits(e.hits.size(), 0);
+    const raster::FastBatchResult r = raster::fast_count_batch(b.xy, b.w, b.h, state, isa, per, hits);
+    RC_ASSERT(r.status == raster::BatchStatus::kOk);
+    RC_CLASSIFY(r.small > 0 && r.small < n, "small and large triangles");
+    for (std::size_t i = 0; i < n; ++i) {
+      if (per[i] != e.per_triangle[i]) {
+        std::string tri;
+        for (int k = 0; k < 6; ++k) tri += " " + std::to_string(b.xy[6 * i + static_cast<std::size_t>(k)]);
+        RC_FAIL(std::string(rastrules::to_string(isa)) + ": triangle " + std::to_string(i) +
+                " counts " + std::to_string(per[i]) + ", plain " + std::to_string(e.per_triangle[i]) +
+                " on " + std::to_string(b.w) + " x " + std::to_string(b.h) + ":" + tri);
+      }
+    }
+    RC_ASSERT(hits == e.hits);
+    RC_ASSERT(r.covered == e.covered);
+    RC_ASSERT(r.rasterized == e.rasterized);
+    // Without outputs: the same totals.
+    const raster::FastBatchResult bare = raster::fast_count_batch(b.xy, b.w, b.h, state, isa);
+    RC_ASSERT(bare.covered == e.covered);
+    RC_ASSERT(bare.rasterized == e.rasterized);
+  }
+}
+
+// rule: FAST.BATCH.SNAP_SIMD, SNAP.VERTEX.INVALID, FAST.ISA.DISPATCH
+RC_GTEST_PROP(FastBatch, EveryIsaNamesTheFirstCoordinateThatDoesNotSnap, ()) {
+  Batch b = *batch();
+  const float inf = std::numeric_limits<float>::infinity();
+  const auto bad = *rc::gen::inRange<std::size_t>(1, 4);
+  for (std::size_t k = 0; k < bad; ++k) {
+    const auto at = *rc::gen::inRange<std::size_t>(0, b.xy.size());
+    b.xy[at] = *rc::gen::element(std::numeric_limits<float>::quiet_NaN(), inf, -inf, 32768.0f,
+                                 -32768.00390625f, -32768.0020f, 32767.998f, 1e30f, -1e38f);
+  }
+  // The first coordinate that does not snap, in order, and why.
+  std::size_t first = b.xy.size();
+  rastrules::SnapStatus why = rastrules::SnapStatus::kOk;
+  for (std::size_t i = 0; i < b.xy.size(); ++i) {
+    const auto s = rastrules::snap_to_subpixel(b.xy[i]);
+    if (s.status != rastrules::SnapStatus::kOk) {
+      first = i;
+      why = s.status;
+      break;
+    }
+  }
+  RC_CLASSIFY(first == b.xy.size(), "every coordinate snaps");
+  for (Isa isa : fg::supported_isas()) {
+    const raster::FastBatchResult r =
+        raster::fast_count_batch(b.xy, b.w, b.h, rastrules::RasterState{}, isa);
+    if (first == b.xy.size()) {
+      RC_ASSERT(r.status == raster::BatchStatus::kOk);
+      continue;
+    }
+    RC_ASSERT(r.status == raster::BatchStatus::kBadVertex);
+    RC_ASSERT(r.bad_triangle == first / 6);
+    RC_ASSERT(r.bad_vertex == static_cast<int>((first % 6) / 2));
+    RC_ASSERT(r.bad_axis == (first % 2 == 0 ? 'x' : 'y'));
+    RC_ASSERT(r.bad_snap == why);
+  }
+}
+
+}  // namespace

@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: MIT
+// Examples of the batch counter (FAST.BATCH.*): counts of known triangles under two fill
+// conventions, a watertight mesh of small triangles (overdraw exactly one), small and large
+// triangles mixed, culling, clipping at the target's sides, a triangle at the 16-pixel bound of
+// the small lanes, and every error it names, for every instruction set this processor runs.
+
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "fast_support.hpp"
+#include "rastrules/raster/fast_batch.hpp"
+
+namespace {
+
+namespace raster = rastrules::raster;
+using rastrules::FillConvention;
+using rastrules::Isa;
+using rastrules::RasterState;
+using raster::BatchStatus;
+using raster::fast_count_batch;
+
+// rule: FAST.BATCH.EQUALS.PLAIN, TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION
+TEST(FastBatch, CountsTheCentresOfARightTriangleUnderTwoConventions) {
+  // (0,0) (4,0) (0,4): centres with i + j <= 2 are inside (6); the 4 on the hypotenuse
+  // (i + j == 3) are on an edge that runs down-left: exclusive under top-left, inclusive under
+  // bottom-right.
+  const std::vector<float> xy = {0, 0, 4, 0, 0, 4};
+  for (Isa isa : rastrules::test::supported_isas()) {
+    EXPECT_EQ(fast_count_batch(xy, 8, 8, RasterState{}, isa).covered, 6u) << to_string(isa);
+    RasterState br;
+    br.fill = FillConvention::kBottomRight;
+    EXPECT_EQ(fast_count_batch(xy, 8, 8, br, isa).covered, 10u) << to_string(isa);
+  }
+}
+
+// rule: FAST.BATCH.EQUALS.PLAIN, FAST.BATCH.SMALL_I32, FAST.THREADS.DETERMINISTIC
+TEST(FastBatch, AWatertightMeshOfSmallTrianglesDrawsEachCentreOnce) {
+  // A 20 x 13 grid of 3.25 px cells from (1.5, 2.25), both diagonals, with vertices on the 1/4
+  // grid: every centre inside the rectangle is covered exactly once, none outside.
+  std::vector<float> xy;
+  const float x0 = 1.5f, y0 = 2.25f, c = 3.25f;
+  for (int j = 0; j < 13; ++j)
+    for (int i = 0; i < 20; ++i) {
+      const float ax = x0 + c * static_cast<float>(i), ay = y0 + c * static_cast<float>(j);
+      const float bx = ax + c, by = ay + c;
+      if ((i + j) % 2 == 0)
+        xy.insert(xy.end(), {ax, ay, bx, ay, bx, by, ax, ay, bx, by, ax, by});
+      else
+        xy.insert(xy.end(), {ax, ay, bx, ay, ax, by, bx, ay, bx, by, ax, by});
+    }
+  const std::int32_t w = 72, h = 48;
+  for (Isa isa : rastrules::test::supported_isas()) {
+    std::vector<std::uint32_t> hits(static_cast<std::size_t>(w * h), 0);
+    std::vector<std::uint64_t> per(xy.size() / 6, 0);
+    const raster::FastBatchResult r = fast_count_batch(xy, w, h, RasterState{}, isa, per, hits);
+    ASSERT_EQ(r.status, BatchStatus::kOk) << describe(r);
+    std::uint64_t inside = 0;
+    for (std::int32_t y = 0; y < h; ++y)
+      for (std::int32_t x = 0; x < w; ++x) {
+        const float cx = static_cast<float>(x) + 0.5f, cy = static_cast<float>(y) + 0.5f;
+        // Top-left: the rectangle's left and top sides are inclusive, right and bottom not.
+        const bool in = cx >= x0 && cx < x0 + 20 * c && cy >= y0 && cy < y0 + 13 * c;
+        inside += in ? 1 : 0;
+        EXPECT_EQ(hits[static_cast<std::size_t>(y * w + x)], in ? 1u : 0u)
+            << to_string(isa) << " at " << x << ", " << y;
+      }
+    EXPECT_EQ(r.covered, inside);
+    EXPECT_EQ(r.rasterized, xy.size() / 6);
+    if (isa != Isa::kScalar) {
+      EXPECT_EQ(r.small, xy.size() / 6);
+    }
+    std::uint64_t sum = 0;
+    for (std::uint64_t n : per) sum += n;
+    EXPECT_EQ(sum, inside);
+  }
+}
+
+// The plain setup of one triangle: the kernel's snapping and setup_triangle.
+rastrules::TriangleSetup plain_setup(const float* v, const RasterState& s) {
+  std::array<rastrules::Vec2, 3> p;
+  for (std::size_t k = 0; k < 3; ++k)
+    p[k] = rastrules::Vec2{rastrules::snap_to_subpixel(v[2 * k]).value,
+                           rastrules::snap_to_subpixel(v[2 * k + 1]).value};
+  return rastrules::setup_triangle(p, s);
+}
+
+// Its bounding-box walk, counted.
+std::uint64_t plain_count(const float* v, std::int32_t w, std::int32_t h, const RasterState& s) {
+  std::uint64_t n = 0;
+  raster::walk_triangle(plain_setup(v, s), w, h, [&](std::int32_t, std::int32_t) { ++n; });
+  return n;
+}
+
+// rule: FAST.BATCH.EQUALS.PLAIN, FAST.BATCH.SMALL_I32, RASTER.TARGET.CLIP, TRI.CULL.MODE
+TEST(FastBatch, MixedSizesClippingAndCullingEqualThePlainWalk) {
+  const std::vector<float> xy = {
+      -3.2f, -2.7f, 5.9f, 1.1f, 0.3f, 6.6f,         // small, clipped at the left and top
+      90.5f, 60.5f, 106.49f, 60.5f, 90.5f, 76.49f,  // spans just under 16 px: small
+      90.5f, 60.5f, 106.5f, 60.5f, 90.5f, 76.5f,    // spans of exactly 16 px: not small
+      10.0f, 10.0f, 10.0f, 90.0f, 99.0f, 40.0f,     // large, counter-clockwise
+      10.0f, 10.0f, 90.0f, 40.0f, 10.0f, 90.0f,     // large, clockwise
+      120.1f, 70.3f, 125.7f, 79.9f, 119.0f, 78.2f,  // small, past the right and bottom sides
+      3.0f, 3.0f, 4.0f, 4.0f, 5.0f, 5.0f,           // degenerate
+      40.25f, 3.5f, 33.0f, 9.75f, 47.0f, 9.75f,     // small, counter-clockwise
+  };
+  const std::int32_t w = 123, h = 77;
+  for (const rastrules::CullMode cull :
+       {rastrules::CullMode::kNone, rastrules::CullMode::kBack, rastrules::CullMode::kFront}) {
+    RasterState s;
+    s.cull = cull;
+    std::vector<std::uint64_t> expected;
+    std::uint64_t rasterized = 0;
+    for (std::size_t i = 0; i < xy.size() / 6; ++i) {
+      expected.push_back(plain_count(&xy[6 * i], w, h, s));
+      rasterized += plain_setup(&xy[6 * i], s).status == rastrules::TriangleStatus::kRasterized ? 1u : 0u;
+    }
+    // Five run clockwise (front-facing by default), two counter-clockwise, one is degenerate.
+    EXPECT_EQ(rasterized, cull == rastrules::CullMode::kNone ? 7u : cull == rastrules::CullMode::kBack ? 5u : 2u);
+    for (Isa isa : rastrules::test::supported_isas()) {
+      std::vector<std::uint64_t> per(expected.size(), 0);
+      const raster::FastBatchResult r = fast_count_batch(xy, w, h, s, isa, per);
+      ASSERT_EQ(r.status, BatchStatus::kOk) << describe(r);
+      EXPECT_EQ(per, expected) << to_string(isa) << ", cull " << to_string(cull);
+      EXPECT_EQ(r.rasterized, rasterized) << to_string(isa);
+      if (isa != Isa::kScalar) {
+        EXPECT_EQ(r.small, 5u) << to_string(isa);
+      }
+    }
+  }
+}
+
+// rule: FAST.BATCH.EQUALS.PLAIN, SNAP.VERTEX.INVALID, FAST.ISA.DISPATCH
+TEST(FastBatch, NamesEveryBadArgument) {
+  std::vector<float> xy(6 * 20, 1.0f);
+  for (std::size_t i = 0; i < 20; ++i) xy[6 * i + 2] = 5.0f, xy[6 * i + 5] = 7.0f;
+  xy[6 * 13 + 5] = std::numeric_limits<float>::quiet_NaN();
+  xy[6 * 17 + 0] = 40000.0f;
+  for (Isa isa : rastrules::test::supported_isas()) {
+    const raster::FastBatchResult r = fast_count_batch(xy, 10, 10, RasterState{}, isa);
+    EXPECT_EQ(r.status, BatchStatus::kBadVertex);
+    EXPECT_EQ(r.bad_triangle, 13u);
+    EXPECT_EQ(r.bad_vertex, 2);
+    EXPECT_EQ(r.bad_axis, 'y');
+    EXPECT_EQ(describe(r), "batch: triangle 13, vertex 2, y: " +
+                               std::string(rastrules::to_string(rastrules::SnapStatus::kNaN)) +
+                               " (SNAP.VERTEX.INVALID)");
+  }
+  xy[6 * 13 + 5] = 7.0f;
+  const raster::FastBatchResult range = fast_count_batch(xy, 10, 10, RasterState{}, Isa::kScalar);
+  EXPECT_EQ(range.bad_triangle, 17u);
+  EXPECT_EQ(range.bad_snap, rastrules::SnapStatus::kOutOfRange);
+  xy[6 * 17 + 0] = 1.0f;
+  EXPECT_EQ(fast_count_batch(xy, 10, 10, RasterState{}, Isa::kScalar).status, BatchStatus::kOk);
+
+  const std::vector<float> seven(7, 1.0f);
+  EXPECT_EQ(fast_count_batch(seven, 10, 10, RasterState{}, Isa::kScalar).status, BatchStatus::kBadLength);
+  std::vector<std::uint64_t> per(19);
+  EXPECT_EQ(fast_count_batch(xy, 10, 10, RasterState{}, Isa::kScalar, per).status, BatchStatus::kBadLength);
+  std::vector<std::uint32_t> hits(99);
+  EXPECT_EQ(fast_count_batch(xy, 10, 10, RasterState{}, Isa::kScalar, {}, hits).status,
+            BatchStatus::kBadLength);
+  for (auto [w, h] : {std::pair{0, 10}, {10, -1}, {16385, 10}, {10, 16385}}) {
+    const raster::FastBatchResult t = fast_count_batch(xy, w, h, RasterState{}, Isa::kScalar);
+    EXPECT_EQ(t.status, BatchStatus::kBadTarget);
+    EXPECT_NE(describe(t).find("16384"), std::string::npos);
+  }
+  // An instruction set the processor lacks, or made to look as if it did.
+  ASSERT_EQ(setenv(rastrules::kMaxIsaVariable, "scalar", 1), 0);
+  EXPECT_EQ(fast_count_batch(xy, 10, 10, RasterState{}, Isa::kAvx2).status, BatchStatus::kBadIsa);
+  EXPECT_EQ(fast_count_batch(xy, 10, 10, RasterState{}, Isa::kAvx512).status, BatchStatus::kBadIsa);
+  ASSERT_EQ(unsetenv(rastrules::kMaxIsaVariable), 0);
+  // Nothing at all: zero triangles.
+  EXPECT_EQ(fast_count_batch({}, 10, 10, RasterState{}, Isa::kScalar).covered, 0u);
+}
+
+}  // namespace
