@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The batch counter's AVX2 unit (FAST.BATCH.SMALL_I32, FAST.BATCH.SNAP_SIMD): eight triangles
 // at a time are gathered, snapped, classified small or large, oriented, culled, bounded and set
-// up in 32-bit lanes; then each small one's rows (up to 16 pixels: two __m256i halves) are
-// tested and stepped. Compiled with -mavx2 on x86-64 (kernel/CMakeLists.txt); elsewhere empty.
+// up in 32-bit lanes; then each small one's rows (up to 16 pixels: two __m256i halves; up to 64: chunks
+// of eight) are tested and stepped. Compiled with -mavx2 on x86-64 (kernel/CMakeLists.txt); elsewhere empty.
 // Everything here is in an unnamed namespace or calls only intrinsics (fast_tiles.hpp says why).
 // Implements: FAST.BATCH.SMALL_I32, FAST.BATCH.SNAP_SIMD, FAST.BATCH.EQUALS.PLAIN
 
@@ -26,8 +26,8 @@ struct Lanes {
   alignas(32) std::int32_t b[3][8];  // 256 B: E's step per row
   alignas(32) std::int32_t x0[8];    // first pixel
   alignas(32) std::int32_t y0[8];
-  alignas(32) std::int32_t cols[8];  // pixels per row, 1..16
-  alignas(32) std::int32_t rows[8];  // rows, 1..16
+  alignas(32) std::int32_t cols[8];  // pixels per row, 1..64
+  alignas(32) std::int32_t rows[8];  // rows, 1..64
 };
 
 inline int mask_of(__m256i m) { return _mm256_movemask_ps(_mm256_castsi256_ps(m)); }
@@ -41,7 +41,7 @@ inline std::uint32_t hsum(__m256i v) {
 
 // rule: FAST.BATCH.SMALL_I32, FIX.BIAS.FORM, FIX.STEP.INCREMENTAL
 // The rows of triangle t of the group: lane i of row j holds E + bias at pixel (x0 + i, y0 + j)
-// (|E| < 2^26, FAST.BATCH.SMALL_I32); the pixel is covered iff all three are >= 0, that is iff
+// (|E| < 2^30, FAST.BATCH.SMALL_I32); the pixel is covered iff all three are >= 0, that is iff
 // their OR is >= 0. Lanes at or past `cols` hold -2^30 in edge 0 and never step: never inside.
 // Wide: a second half for pixels 8..15.
 template <bool kHits, bool kWide>
@@ -91,6 +91,53 @@ inline std::uint32_t cover_one(const Lanes& g, int t, std::uint32_t* hit, std::s
   return hsum(acc);
 }
 
+// rule: FAST.BATCH.SMALL_I32, FIX.BIAS.FORM, FIX.STEP.INCREMENTAL
+// More than 16 pixels a row: each row in chunks of eight lanes, stepped by 8 * 256 A; the last
+// chunk's lanes at or past `cols` masked off (|E| < 2^30 there, FAST.BATCH.SMALL_I32).
+template <bool kHits>
+inline std::uint32_t cover_rows(const Lanes& g, int t, std::uint32_t* hit, std::size_t stride) {
+  const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  const std::int32_t cols = g.cols[t], full = cols / 8, rest = cols % 8;
+  const __m256i tail = _mm256_cmpgt_epi32(_mm256_set1_epi32(rest), iota);
+  __m256i row[3], step8[3], down[3];
+  for (int k = 0; k < 3; ++k) {
+    const __m256i a = _mm256_set1_epi32(g.a[k][t]);
+    row[k] = _mm256_add_epi32(_mm256_set1_epi32(g.e[k][t]), _mm256_mullo_epi32(iota, a));
+    step8[k] = _mm256_slli_epi32(a, 3);
+    down[k] = _mm256_set1_epi32(g.b[k][t]);
+  }
+  const __m256i minus1 = _mm256_set1_epi32(-1);
+  __m256i acc = _mm256_setzero_si256();
+  const std::int32_t rows = g.rows[t];
+  for (std::int32_t j = 0; j < rows; ++j) {
+    __m256i l0 = row[0], l1 = row[1], l2 = row[2];
+    std::uint32_t* h = hit + static_cast<std::size_t>(j) * stride;
+    for (std::int32_t c = 0; c < full; ++c) {
+      const __m256i in = _mm256_cmpgt_epi32(_mm256_or_si256(_mm256_or_si256(l0, l1), l2), minus1);
+      acc = _mm256_sub_epi32(acc, in);
+      if constexpr (kHits) {
+        auto* q = reinterpret_cast<int*>(h + 8 * c);
+        _mm256_maskstore_epi32(q, in, _mm256_sub_epi32(_mm256_maskload_epi32(q, in), in));
+      }
+      l0 = _mm256_add_epi32(l0, step8[0]);
+      l1 = _mm256_add_epi32(l1, step8[1]);
+      l2 = _mm256_add_epi32(l2, step8[2]);
+    }
+    if (rest != 0) {
+      const __m256i in = _mm256_and_si256(
+          tail, _mm256_cmpgt_epi32(_mm256_or_si256(_mm256_or_si256(l0, l1), l2), minus1));
+      acc = _mm256_sub_epi32(acc, in);
+      if constexpr (kHits) {
+        // pixel x0 + 8 full lies inside the row: x0 + cols - 1 < width
+        auto* q = reinterpret_cast<int*>(h + 8 * full);
+        _mm256_maskstore_epi32(q, in, _mm256_sub_epi32(_mm256_maskload_epi32(q, in), in));
+      }
+    }
+    for (int k = 0; k < 3; ++k) row[k] = _mm256_add_epi32(row[k], down[k]);
+  }
+  return hsum(acc);
+}
+
 template <bool kHits>
 inline std::uint32_t cover(const Lanes& g, int t, const Params& p) {
   std::uint32_t* hit = nullptr;
@@ -98,6 +145,7 @@ inline std::uint32_t cover(const Lanes& g, int t, const Params& p) {
     hit = p.hits + static_cast<std::size_t>(g.y0[t]) * static_cast<std::size_t>(p.width) +
           static_cast<std::size_t>(g.x0[t]);
   const auto stride = static_cast<std::size_t>(p.width);
+  if (g.cols[t] > 16) return cover_rows<kHits>(g, t, hit, stride);
   return g.cols[t] > 8 ? cover_one<kHits, true>(g, t, hit, stride)
                        : cover_one<kHits, false>(g, t, hit, stride);
 }
@@ -152,7 +200,7 @@ std::size_t run(const Params& p, Out& out, std::uint32_t* large) {
     const __m256i miny = _mm256_min_epi32(_mm256_min_epi32(y[0], y[1]), y[2]);
     const __m256i maxy = _mm256_max_epi32(_mm256_max_epi32(y[0], y[1]), y[2]);
     // rule: FAST.BATCH.SMALL_I32
-    // Spans below 2^12 raw units: every product below is under 2^24 in magnitude.
+    // Spans below 2^14 raw units (64 px): every product below is under 2^28 in magnitude.
     const __m256i small = _mm256_and_si256(
         active, _mm256_and_si256(_mm256_cmpgt_epi32(small_span, _mm256_sub_epi32(maxx, minx)),
                                  _mm256_cmpgt_epi32(small_span, _mm256_sub_epi32(maxy, miny))));

@@ -16,8 +16,8 @@
 
 namespace rastrules::raster::batch_detail {
 
-// Spans below this many raw units (16 pixels) are small (raster::kBatchSmallSpan).
-inline constexpr std::int32_t kSmallSpan = 16 * 256;
+// Spans below this many raw units (64 pixels) are small (raster::kBatchSmallSpan).
+inline constexpr std::int32_t kSmallSpan = 64 * 256;
 
 struct Params {
   const float* xy = nullptr;  // 6 floats a triangle

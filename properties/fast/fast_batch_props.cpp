@@ -2,7 +2,7 @@
 // Properties: the batch counter (fast_count_batch) gives, for every instruction set this
 // processor runs, each triangle's count and the per-pixel overdraw that the plain walk gives
 // the triangle set up from its snapped vertices, on batches mixing small triangles (spans at
-// and around the 16-pixel bound of the 32-bit lanes, vertices off the 1/256 grid and on ties
+// and around the 64-pixel bound of the 32-bit lanes, vertices off the 1/256 grid and on ties
 // of the snapping rule, clipped by the target's sides) with every shape of the fast
 // traversal's properties; and it reports the same first coordinate that does not snap.
 // Implements (properties for): FAST.BATCH.EQUALS.PLAIN, FAST.BATCH.SMALL_I32,
@@ -44,10 +44,11 @@ rc::Gen<float> coordinate(std::int64_t raw) {
 }
 
 // A small triangle: vertices within `span` raw units of a point near the w x h target, with
-// the spans 4095 and 4096 (the 32-bit lanes' bound, FAST.BATCH.SMALL_I32) made likely.
+// the spans 16383 and 16384 (the 32-bit lanes' bound, FAST.BATCH.SMALL_I32) and the row
+// lengths 8 and 16 px (where the lanes change form) made likely.
 rc::Gen<fg::RawTri> small_triangle(std::int32_t w, std::int32_t h) {
   return rc::gen::exec([=] {
-    const std::int64_t s = *rc::gen::element<std::int64_t>(4095, 4096, 4097, 2048, 600, 64, 3);
+    const std::int64_t s = *rc::gen::element<std::int64_t>(16383, 16384, 16385, 8000, 4096, 2048, 1024, 600, 64, 3);
     const std::int64_t x = *fg::near_raw(w, 18), y = *fg::near_raw(h, 18);
     fg::RawTri t;
     for (auto& p : t)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Examples of the batch counter (FAST.BATCH.*): counts of known triangles under two fill
 // conventions, a watertight mesh of small triangles (overdraw exactly one), small and large
-// triangles mixed, culling, clipping at the target's sides, a triangle at the 16-pixel bound of
+// triangles mixed, culling, clipping at the target's sides, a triangle at the 64-pixel bound of
 // the small lanes, and every error it names, for every instruction set this processor runs.
 
 #include <cmath>
@@ -100,8 +100,8 @@ std::uint64_t plain_count(const float* v, std::int32_t w, std::int32_t h, const 
 TEST(FastBatch, MixedSizesClippingAndCullingEqualThePlainWalk) {
   const std::vector<float> xy = {
       -3.2f, -2.7f, 5.9f, 1.1f, 0.3f, 6.6f,         // small, clipped at the left and top
-      90.5f, 60.5f, 106.49f, 60.5f, 90.5f, 76.49f,  // spans just under 16 px: small
-      90.5f, 60.5f, 106.5f, 60.5f, 90.5f, 76.5f,    // spans of exactly 16 px: not small
+      40.5f, 5.5f, 104.49f, 5.5f, 40.5f, 69.49f,    // spans just under 64 px: small
+      40.5f, 5.5f, 104.5f, 5.5f, 40.5f, 69.5f,      // spans of exactly 64 px: not small
       10.0f, 10.0f, 10.0f, 90.0f, 99.0f, 40.0f,     // large, counter-clockwise
       10.0f, 10.0f, 90.0f, 40.0f, 10.0f, 90.0f,     // large, clockwise
       120.1f, 70.3f, 125.7f, 79.9f, 119.0f, 78.2f,  // small, past the right and bottom sides

@@ -18,9 +18,9 @@
 
 namespace rastrules::raster {
 
-// Triangles whose snapped vertices span less than kBatchSmallSpan raw units (16 pixels) in x
+// Triangles whose snapped vertices span less than kBatchSmallSpan raw units (64 pixels) in x
 // and in y are set up and decided in 32-bit lanes (FAST.BATCH.SMALL_I32).
-inline constexpr std::int32_t kBatchSmallSpan = 16 * kSubpixelOne;
+inline constexpr std::int32_t kBatchSmallSpan = 64 * kSubpixelOne;
 
 enum class BatchStatus {
   kOk,
