@@ -6,7 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "limit.hpp"
@@ -193,4 +196,29 @@ TEST(LadderRungs, ReferenceFastOnThreadsCountsWhatOneThreadCounts) {
     for (const unsigned n : {1u, 2u, 3u, 7u})
       EXPECT_EQ(rb::run_reference_fast_threaded(s, n), one) << s.name << ", " << n << " threads";
   }
+}
+
+// rule: BENCH.METRIC.THROUGHPUT, FAST.THREADS.DETERMINISTIC
+TEST(LadderRungs, APersistentPoolCountsTheSameEveryTimeAndReportsAChunksError) {
+  rb::LadderConfig c;
+  c.quick = true;
+  const rb::LadderScene s = rb::make_scenes(c).timed.front();
+  const std::uint64_t one = rb::run_rung(rb::Rung::kReference, s, nullptr);
+  rb::FastPool pool(3);
+  EXPECT_GE(pool.threads(), 1u);
+  for (int k = 0; k < 200; ++k)
+    ASSERT_EQ(pool.count(s), one) << "repeat " << k;
+  // A coordinate that does not snap in the last chunk: the worker's error reaches the caller,
+  // and the pool still works afterwards.
+  rb::LadderScene bad = s;
+  bad.triangles.back()[1][0] = std::numeric_limits<float>::quiet_NaN();
+  rb::flatten(bad);
+  try {
+    (void)pool.count(bad);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& e) {
+    const std::string want = "triangle " + std::to_string(s.triangles.size() - 1) + ", vertex 1, x";
+    EXPECT_NE(std::string(e.what()).find(want), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(pool.count(s), one);
 }

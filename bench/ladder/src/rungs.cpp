@@ -389,11 +389,14 @@ const std::vector<float>& coordinates(const LadderScene& s, std::vector<float>& 
 }
 
 // rule: FAST.BATCH.EQUALS.PLAIN
-std::uint64_t batch_count(std::span<const float> xy, const LadderScene& s, Isa isa) {
-  const raster::FastBatchResult r =
-      raster::fast_count_batch(xy, s.width, s.height, RasterState{}, isa);
-  if (r.status != raster::BatchStatus::kOk)
-    throw std::invalid_argument("ladder: " + raster::describe(r));
+// xy: the scene's triangles from index `first` on.
+std::uint64_t batch_count(std::span<const float> xy, const LadderScene& s, Isa isa,
+                          std::size_t first = 0) {
+  raster::FastBatchResult r = raster::fast_count_batch(xy, s.width, s.height, RasterState{}, isa);
+  if (r.status != raster::BatchStatus::kOk) {
+    r.bad_triangle += first;  // the scene's index, not the chunk's
+    throw std::invalid_argument("ladder: scene " + s.name + ": " + raster::describe(r));
+  }
   return r.covered;
 }
 #endif
@@ -518,7 +521,7 @@ std::uint64_t FastPool::count(const LadderScene& s) {
   const Isa isa = best_isa();
   const std::function<void(unsigned)> f = [&](unsigned k) {
     const std::size_t b = n * k / chunks, e = n * (k + 1) / chunks;
-    counts[k] = batch_count(std::span<const float>(xy).subspan(6 * b, 6 * (e - b)), s, isa);
+    counts[k] = batch_count(std::span<const float>(xy).subspan(6 * b, 6 * (e - b)), s, isa, b);
   };
   impl_->run(f);
   std::uint64_t total = 0;
