@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Self-check: the fast-traversal obligations can fail. Runs prove_lane_budget,
-// prove_lane_equivalence and prove_tile_classify against deliberately broken models, each
+// prove_lane_equivalence, prove_tile_classify, and the batch unit's prove_batch_small_i32,
+// prove_lane_bits and prove_batch_snap_simd against deliberately broken models, each
 // derived from FastKernelModel with one member replaced, and passes only if every mutant is
 // REFUTED (with a counterexample). A mutant that survives means the proof cannot see that kind
 // of bug.
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "fast/batch_proofs.hpp"
 #include "fast/fast_proofs.hpp"
 #include "support/prover.hpp"
 
@@ -95,6 +97,57 @@ struct LaneMinShort : FastKernelModel {
   }
 };
 
+// The batch unit's small triangles twice as wide (spans below 128 px): lane values reach 2^30
+// (and rows exceed 64 pixels, differences 2^14, the area 2^29).
+struct BatchSpanTwice : BatchKernelModel {
+  static constexpr const char* kName = "small span twice kBatchSmallSpan";
+  static constexpr std::int64_t kSpan = 2 * BatchKernelModel::kSpan;
+};
+
+// The rule's lane magnitude one bit tighter (2^29): the lanes' reach gives values above it, so
+// the 2^30 budget is checked, not vacuous.
+struct BatchLaneBits29 : BatchKernelModel {
+  static constexpr const char* kName = "lane values claimed below 2^29";
+  static constexpr int kLaneBits = 29;
+};
+
+// cover_one (two halves of eight lanes) taken for rows of up to 24 pixels: pixels 16..23 are
+// never tested.
+struct BatchOneUpTo24 : BatchKernelModel {
+  static constexpr const char* kName = "cover_one for rows of up to 24 px";
+  static constexpr std::int64_t kOneMaxCols = 24;
+};
+
+// The pixel bounds shifted by 7 bits: px0..px1 are not the pixels whose centres lie in the box.
+struct BatchShift7 : BatchKernelModel {
+  static constexpr const char* kName = "pixel bounds >> 7";
+  static constexpr int kShift = kSubpixelBits - 1;
+};
+
+// A positive poison (+2^30): a dead lane passes the sign test when the other edges do.
+struct BatchPoisonPositive : BatchKernelModel {
+  static constexpr const char* kName = "poison +2^30";
+  static constexpr std::int64_t kPoison = std::int64_t{1} << 30;
+};
+
+// Rounding v * 256 towards zero instead of to nearest even (_MM_FROUND_TO_ZERO).
+struct SnapRoundTowardZero : SnapKernelModel {
+  static constexpr const char* kName = "roundToIntegral towards zero";
+  static z3::expr round_mode(z3::context& ctx) { return z3::expr(ctx, Z3_mk_fpa_rtz(ctx)); }
+};
+
+// The accepted interval one unit wider at the top: 2^23 is accepted, the kernel rejects it.
+struct SnapHighestTooLarge : SnapKernelModel {
+  static constexpr const char* kName = "accepts r <= 2^23";
+  static constexpr float kHighest = static_cast<float>(std::int64_t{kMaxVertexRaw} + 1);
+};
+
+// The scale 128 (kSubpixelBits - 1): the lane snaps to 1/128 px.
+struct SnapScale128 : SnapKernelModel {
+  static constexpr const char* kName = "scale 128.0f";
+  static constexpr float kScale = static_cast<float>(kSubpixelOne / 2);
+};
+
 struct Mutant {
   std::string name;
   std::string obligation;
@@ -118,6 +171,18 @@ int main() {
       {BiasDropped::kName, "fast/lane_equivalence", prove_lane_equivalence<BiasDropped>},
       {LaneMaxWrongCorner::kName, "fast/tile_classify", prove_tile_classify<LaneMaxWrongCorner>},
       {LaneMinShort::kName, "fast/tile_classify", prove_tile_classify<LaneMinShort>},
+      {BatchSpanTwice::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchSpanTwice>},
+      {BatchLaneBits29::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchLaneBits29>},
+      {BatchOneUpTo24::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchOneUpTo24>},
+      {BatchShift7::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchShift7>},
+      {BatchPoisonPositive::kName, "fast/batch_small_i32 (lane bits)",
+       prove_lane_bits<BatchPoisonPositive>},
+      {SnapRoundTowardZero::kName, "fast/batch_snap_simd",
+       [](Prover& pr) { prove_batch_snap_simd<SnapRoundTowardZero>(pr, {{0, 255}}); }},
+      {SnapHighestTooLarge::kName, "fast/batch_snap_simd",
+       [](Prover& pr) { prove_batch_snap_simd<SnapHighestTooLarge>(pr, {{0, 255}}); }},
+      {SnapScale128::kName, "fast/batch_snap_simd",
+       [](Prover& pr) { prove_batch_snap_simd<SnapScale128>(pr, {{0, 255}}); }},
   };
   std::vector<std::string> summary;
   int survived = 0;
