@@ -161,8 +161,9 @@ FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width,
       for (std::size_t j = 0; j < k; ++j)
         if (!one_triangle(c, base + large[j], r)) return r;  // cannot fail: all snapped
       if (o.bad != static_cast<std::size_t>(-1)) {
-        const bool ok = one_triangle(c, base + o.bad, r);  // reports why
-        if (ok) r.status = BatchStatus::kBadVertex;        // unreachable: the lanes agree
+        // The lanes reject exactly what snap_to_subpixel rejects (FAST.BATCH.SNAP_SIMD): the
+        // plain way fails on the same triangle and says which coordinate and why.
+        (void)one_triangle(c, base + o.bad, r);
         return r;
       }
     }

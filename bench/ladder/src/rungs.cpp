@@ -381,10 +381,7 @@ void run_one(Rung r, const FloatTriangle& tri, std::int32_t w, std::int32_t h, E
 const std::vector<float>& coordinates(const LadderScene& s, std::vector<float>& tmp) {
   if (s.xy.size() == 6 * s.triangles.size())
     return s.xy;
-  LadderScene copy;
-  copy.triangles = s.triangles;
-  flatten(copy);
-  tmp = std::move(copy.xy);
+  tmp = flat_coordinates(s.triangles);
   return tmp;
 }
 

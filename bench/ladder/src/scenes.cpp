@@ -98,14 +98,19 @@ LadderScene make_mesh(std::string name, std::uint64_t seed, std::int32_t cols, s
   return s;
 }
 
-void flatten(LadderScene& s) {
-  s.xy.clear();
-  s.xy.reserve(6 * s.triangles.size());
-  for (const auto& tri : s.triangles)
+std::vector<float> flat_coordinates(const std::vector<FloatTriangle>& triangles) {
+  std::vector<float> xy;
+  xy.reserve(6 * triangles.size());
+  for (const auto& tri : triangles)
     for (const auto& v : tri) {
-      s.xy.push_back(v[0]);
-      s.xy.push_back(v[1]);
+      xy.push_back(v[0]);
+      xy.push_back(v[1]);
     }
+  return xy;
+}
+
+void flatten(LadderScene& s) {
+  s.xy = flat_coordinates(s.triangles);
 }
 
 // rule: BENCH.LADDER.SCENES

@@ -58,7 +58,8 @@ struct LadderScene {
   double rect_x0 = 0, rect_y0 = 0, rect_x1 = 0, rect_y1 = 0;
 };
 
-// Sets s.xy from s.triangles.
+// The triangles' coordinates, six floats a triangle; flatten(s) sets s.xy to them.
+[[nodiscard]] std::vector<float> flat_coordinates(const std::vector<FloatTriangle>& triangles);
 void flatten(LadderScene& s);
 
 // A seeded mesh: (cols + 1) x (rows + 1) grid vertices `cell` pixels apart starting at
