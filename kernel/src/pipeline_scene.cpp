@@ -32,8 +32,16 @@ struct Source {
   std::optional<std::uint32_t> part;
   std::vector<WindowVertex> v;            // window x, y (unsnapped), depth z, clip w
   std::vector<std::vector<float>> attr;   // per vertex
-  std::vector<float> flat;                // per attribute: the provoking vertex's value
+  // Per segment (one entry for a triangle, point or line; one per segment of a strip): per
+  // attribute, the provoking vertex's value (PIPE.INTERP.FLAT).
+  std::vector<std::vector<float>> flat;
 };
+
+// The number of drawn primitives (PipeResult::drawn) a coverage primitive of type t with nv
+// vertices stands for: one per segment of a strip (LINE.STRIP.SEQUENCE), else one.
+std::size_t segments_of(PrimitiveType t, std::size_t nv) {
+  return t == PrimitiveType::kLineStrip && nv >= 2 ? nv - 1 : 1;
+}
 
 struct Stop {
   SceneError error;
@@ -70,6 +78,7 @@ SceneError remap(SceneError e, const std::vector<Source>& sources) {
   return e;
 }
 
+// rule: PIPE.BARY.LINE
 // Returns the barycentrics of evaluation point s for a drawn primitive with snapped vertices v:
 // the triangle's (PIPE.BARY.EXACT); for a line the exact projection parameter t = num / den
 // as (den - num, num, 0) / den; for a point (1, 0, 0) / 1.
@@ -198,19 +207,29 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
       return nattr == 0 ? std::vector<float>{} : pp.attr[j];
     };
     // rule: PIPE.INTERP.FLAT
-    std::vector<float> flat(nattr, 0.0f);
-    if (nattr > 0) {
-      const std::size_t pv = s.provoking == Provoking::kFirst ? 0 : nv - 1;
-      flat = pp.attr[pv];
-    }
+    // The provoking vertex of each segment: a strip's segment k runs from vertex k to k + 1
+    // and is an independent line (LINE.STRIP.SEQUENCE); any other primitive is one segment.
+    const auto flat_of = [&](std::size_t segment) {
+      if (nattr == 0)
+        return std::vector<float>{};
+      const bool strip = pp.base.type == PrimitiveType::kLineStrip;
+      const std::size_t first = strip ? segment : 0, last = strip ? segment + 1 : nv - 1;
+      return pp.attr[s.provoking == Provoking::kFirst ? first : last];
+    };
+    // Adds a coverage primitive; segment: the strip segment a clipped line was cut from.
     const auto add = [&](const Primitive& prim, std::optional<std::uint32_t> part,
-                         std::vector<WindowVertex> v, std::vector<std::vector<float>> attr) {
+                         std::vector<WindowVertex> v, std::vector<std::vector<float>> attr,
+                         std::size_t segment = 0) {
+      std::vector<std::vector<float>> flat;
+      const std::size_t n = segments_of(prim.type, v.size());
+      for (std::size_t k = 0; k < n; ++k)
+        flat.push_back(flat_of(segment + k));
       ws.primitives.push_back(prim);
-      sources.push_back(Source{i, part, std::move(v), std::move(attr), flat});
+      sources.push_back(Source{i, part, std::move(v), std::move(attr), std::move(flat)});
     };
     // Adds a drawn primitive of type t from window vertices (the clip-space paths).
     const auto add_window = [&](PrimitiveType t, std::optional<std::uint32_t> part,
-                                const std::vector<ClipVertex>& vs) {
+                                const std::vector<ClipVertex>& vs, std::size_t segment = 0) {
       Primitive p = pp.base;
       p.type = t;
       p.v.clear();
@@ -226,7 +245,7 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
         p.v.push_back(FloatPoint{w.back().x, w.back().y});
         attr.push_back(c.attr);
       }
-      add(p, part, std::move(w), std::move(attr));
+      add(p, part, std::move(w), std::move(attr), segment);
     };
 
     if (pp.pos.empty()) {
@@ -311,7 +330,8 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
         for (std::size_t k = 0; k + 1 < cv.size(); ++k) {
           const auto seg = clip_segment(cv[k], cv[k + 1], vol);
           if (seg)
-            add_window(PrimitiveType::kLine, static_cast<std::uint32_t>(k), {(*seg)[0], (*seg)[1]});
+            add_window(PrimitiveType::kLine, static_cast<std::uint32_t>(k), {(*seg)[0], (*seg)[1]},
+                       k);
         }
         break;
       }
@@ -354,13 +374,19 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
   // the scene's; without depth and attributes nothing else is computed.
   if (fx.coverage_only())
     return result;
+  // Drawn primitives: one per coverage primitive, one per segment of a strip, so that a strip's
+  // segment k is interpolated from its own vertices k and k + 1 (LINE.STRIP.SEQUENCE).
+  std::vector<std::size_t> first_drawn(ps.primitives.size() + 1, 0);
+  for (std::size_t p = 0; p < ps.primitives.size(); ++p)
+    first_drawn[p + 1] = first_drawn[p] + sources[p].flat.size();
   std::vector<std::uint32_t> drawn_of(cover.size());
   result.data.resize(cover.size());
   for (std::size_t i = 0; i < cover.size(); ++i) {
     Fragment& f = cover[i];
-    drawn_of[i] = f.prim;
     const Source& src = sources[f.prim];
-    result.data[i].drawn = f.prim;
+    const std::size_t segment = f.seg && *f.seg < src.flat.size() ? *f.seg : 0;
+    drawn_of[i] = static_cast<std::uint32_t>(first_drawn[f.prim] + segment);
+    result.data[i].drawn = drawn_of[i];
     f.prim = static_cast<std::uint32_t>(src.prim);
     result.data[i].part = src.part;
     result.data[i].passed = f.mask;
@@ -376,20 +402,33 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
   const bool greater_like = s.depth && (s.depth->func == CompareFunc::kGreater ||
                                         s.depth->func == CompareFunc::kGreaterEqual);
   struct Drawn {
+    PrimitiveType type = PrimitiveType::kTriangle;
+    std::vector<Vec2> v;  // snapped vertices: 3, 2 or 1
     std::array<float, 3> z{}, w{1.0f, 1.0f, 1.0f};
     std::vector<std::array<float, 3>> a;
     DepthValue lo, hi;  // conservative bounds of every sample's stored depth (triangles, points)
     bool bounded = false;
   };
-  std::vector<Drawn> drawn(ps.primitives.size());
-  for (std::size_t p = 0; p < ps.primitives.size(); ++p) {
+  std::vector<Drawn> drawn(first_drawn.back());
+  for (std::size_t q = 0; q < drawn.size(); ++q) {
+    // q is segment `segment` of coverage primitive p.
+    const std::size_t p = static_cast<std::size_t>(
+        std::upper_bound(first_drawn.begin(), first_drawn.end(), q) - first_drawn.begin() - 1);
+    const std::size_t segment = q - first_drawn[p];
     const PreparedPrimitive& pr = ps.primitives[p];
     const Source& src = sources[p];
-    Drawn& d = drawn[p];
-    const std::size_t nv = std::min<std::size_t>(src.v.size(), 3);
+    Drawn& d = drawn[q];
+    const bool strip = pr.type == PrimitiveType::kLineStrip;
+    d.type = strip ? PrimitiveType::kLine : pr.type;
+    const std::size_t first = strip ? segment : 0;  // the segment's first vertex
+    const std::size_t nv = strip ? 2 : std::min<std::size_t>(src.v.size(), 3);
+    if (strip)
+      d.v = {pr.v[segment], pr.v[segment + 1]};
+    else
+      d.v = pr.v;
     for (std::size_t j = 0; j < nv; ++j) {
-      d.z[j] = src.v[j].z;
-      d.w[j] = src.v[j].w;
+      d.z[j] = src.v[first + j].z;
+      d.w[j] = src.v[first + j].w;
     }
     // rule: PIPE.DEPTH.BIAS
     if (s.depth && pr.type == PrimitiveType::kTriangle &&
@@ -404,7 +443,7 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
     for (std::size_t a = 0; a < nattr; ++a) {
       std::array<float, 3> v{};
       for (std::size_t j = 0; j < nv; ++j)
-        v[j] = src.attr[j][a];
+        v[j] = src.attr[first + j][a];
       d.a.push_back(v);
     }
     // rule: PIPE.OPT.HIZ
@@ -427,12 +466,16 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
   }
 
   result.drawn.reserve(drawn.size());
-  for (std::size_t p = 0; p < drawn.size(); ++p) {
+  for (std::size_t p = 0; p < ps.primitives.size(); ++p) {
     const Source& src = sources[p];
-    result.drawn.push_back(DrawnPrimitive{ps.primitives[p].type,
-                                          static_cast<std::uint32_t>(src.prim), src.part,
-                                          ps.primitives[p].v, drawn[p].z, drawn[p].w, drawn[p].a,
-                                          src.flat});
+    const bool strip = ps.primitives[p].type == PrimitiveType::kLineStrip;
+    for (std::size_t k = 0; k < src.flat.size(); ++k) {
+      const Drawn& d = drawn[first_drawn[p] + k];
+      result.drawn.push_back(DrawnPrimitive{
+          d.type, static_cast<std::uint32_t>(src.prim), src.part,
+          strip ? std::optional<std::uint32_t>(static_cast<std::uint32_t>(k)) : std::nullopt, d.v,
+          d.z, d.w, d.a, src.flat[k]});
+    }
   }
 
   // ---- the depth target: tiles, fast clear, Hi-Z (PIPE.OPT.*)
@@ -532,9 +575,8 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
   const auto shade = [&](std::size_t i) {
     const Fragment& f = cover[i];
     const std::size_t p = drawn_of[i];
-    const PreparedPrimitive& pr = ps.primitives[p];
     const Drawn& d = drawn[p];
-    const Source& src = sources[p];
+    const std::vector<float>& flat = result.drawn[p].flat;
     FragmentData& out = result.data[i];
     const Vec2 centre = pixel_center(f.x, f.y);
     const auto point_of = [&](Location l) {
@@ -547,22 +589,22 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
     // rule: PIPE.INTERP.LOCATION
     const Location first = nattr > 0 ? s.attributes[0].location : Location::kCenter;
     const auto interpolate = [&]() {
-      out.bary = eval_bary(pr.type, pr.v, point_of(first));
+      out.bary = eval_bary(d.type, d.v, point_of(first));
       n_attr.fetch_add(nattr, std::memory_order_relaxed);
       out.attr.reserve(nattr);
       for (std::size_t a = 0; a < nattr; ++a) {
         const AttributeDecl& decl = s.attributes[a];
         const Barycentrics b =
-            decl.location == first ? *out.bary : eval_bary(pr.type, pr.v, point_of(decl.location));
+            decl.location == first ? *out.bary : eval_bary(d.type, d.v, point_of(decl.location));
         switch (decl.interpolation) {
           case Interpolation::kPerspective:
-            out.attr.push_back(interpolate_perspective(b, d.a[a], d.w, src.flat[a]));
+            out.attr.push_back(interpolate_perspective(b, d.a[a], d.w, flat[a]));
             break;
           case Interpolation::kLinear:
             out.attr.push_back(interpolate_linear(b, d.a[a]));
             break;
           case Interpolation::kFlat:
-            out.attr.push_back(src.flat[a]);
+            out.attr.push_back(flat[a]);
             break;
         }
       }
@@ -580,7 +622,7 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
             continue;
           n_depth.fetch_add(1, std::memory_order_relaxed);
           const Barycentrics b =
-              eval_bary(pr.type, pr.v, sample_position(f.x, f.y, pattern.positions[k]));
+              eval_bary(d.type, d.v, sample_position(f.x, f.y, pattern.positions[k]));
           const DepthValue dv =
               to_depth_format(interpolate_depth(b, d.z), vp.min_depth, vp.max_depth, fmt);
           out.depth.push_back(dv);

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "pipe_gen.hpp"
+#include "rastrules/line.hpp"
 #include "rastrules/msaa.hpp"
 #include "rastrules/oracle/msaa.hpp"
 #include "rastrules/oracle/pipe.hpp"
@@ -72,7 +73,9 @@ inline void show(const kp::PipeScene& s, std::ostream& os) {
      << static_cast<int>(b.state.fill) << ", samples " << b.msaa.count() << ", shading "
      << (b.msaa.shading == ShadingRate::kSample ? "sample" : "pixel") << ", centroid rule "
      << (b.msaa.centroid_rule == CentroidRule::kD3D11 ? "d3d11" : "d3d10") << ", provoking "
-     << (s.provoking == kp::Provoking::kFirst ? "first" : "last") << "\n";
+     << (s.provoking == kp::Provoking::kFirst ? "first" : "last") << ", line mode "
+     << to_string(b.line_mode) << ", sample mask " << b.msaa.sample_mask << ", quads "
+     << (b.msaa.quads ? "on" : "off") << ", derivatives " << to_string(b.msaa.derivatives) << "\n";
   if (s.viewport) {
     os << "  viewport ";
     kp::showValue(*s.viewport, os);
@@ -95,7 +98,7 @@ inline void show(const kp::PipeScene& s, std::ostream& os) {
        << location_name(a.location) << "\n";
   for (std::size_t i = 0; i < s.primitives.size(); ++i) {
     const kp::PipePrimitive& p = s.primitives[i];
-    os << "  prim " << i << " " << to_string(p.base.type) << ":";
+    os << "  prim " << i << " " << to_string(p.base.type) << (p.base.aa ? " aa" : "") << ":";
     if (!p.pos.empty()) {
       for (const kp::Vec4f& v : p.pos) os << " pos " << pg::fs(v);
     } else {
@@ -129,6 +132,14 @@ struct Part {
   std::array<std::vector<float>, 3> attr;  // per vertex, one per attribute
 };
 
+// One segment of a line or line strip (a point: both ends its vertex) in window space.
+struct Seg {
+  std::array<op::WindowVertex, 2> wv{};
+  std::array<Raw2, 2> raw{};
+  std::array<std::vector<float>, 2> attr;  // per end, one per attribute
+  std::vector<float> flat;                 // per attribute: the segment's provoking vertex
+};
+
 struct PrimGeometry {
   bool transform_error = false;  // a clip-space position beyond the limit after the transform
   bool clipped = false;
@@ -137,12 +148,53 @@ struct PrimGeometry {
   std::string problem;      // a window vertex that does not snap (the guard band's promise)
   // A clip-space point or line: its window vertices after clipping (empty: discarded).
   std::vector<op::WindowVertex> other;
+  // Points, lines and strips: one entry per segment (a point or line: one), empty where the
+  // clipper discarded the segment (PIPE.CLIP.LINE, LINE.STRIP.SEQUENCE, PIPE.INTERP.FLAT).
+  std::vector<std::optional<Seg>> segs;
 };
+
+// The barycentrics of PIPE.BARY.LINE, written from the spec: the exact projection parameter
+// t = num / den of s onto the segment as (den - num, num, 0) / den; a point's are (1, 0, 0) / 1
+// (a point is a segment whose ends are its vertex), a zero-length line's (0, 0, 0) / 0.
+// rule: PIPE.BARY.LINE
+inline op::Bary line_bary(const std::array<Raw2, 2>& v, const Raw2& s, bool point) {
+  if (point) return op::Bary{{1, 0, 0}, 1};
+  const std::int64_t dx = v[1][0] - v[0][0], dy = v[1][1] - v[0][1];
+  const std::int64_t den = dx * dx + dy * dy;
+  const std::int64_t num = (s[0] - v[0][0]) * dx + (s[1] - v[0][1]) * dy;
+  return op::Bary{{den - num, num, 0}, den};
+}
 
 inline std::optional<Raw2> snap2(float x, float y) {
   const auto rx = oracle::snap(x), ry = oracle::snap(y);
   if (!rx || !ry) return std::nullopt;
   return Raw2{*rx, *ry};
+}
+
+// Appends segment k of primitive prim with window ends wv and their attributes; its flat value
+// is that of the segment's provoking vertex (PIPE.INTERP.FLAT: of each segment of a strip).
+inline void add_segment(PrimGeometry& g, const kp::PipeScene& s, std::size_t prim,
+                        const std::array<op::WindowVertex, 2>& wv,
+                        const std::array<std::vector<float>, 2>& attr, std::size_t k) {
+  const kp::PipePrimitive& p = s.primitives[prim];
+  const std::size_t nv = p.pos.empty() ? p.base.v.size() : p.pos.size();
+  const bool strip = p.base.type == PrimitiveType::kLineStrip;
+  const std::size_t provoking =
+      s.provoking == kp::Provoking::kFirst ? (strip ? k : 0) : (strip ? k + 1 : nv - 1);
+  Seg seg;
+  seg.wv = wv;
+  seg.attr = attr;
+  for (std::size_t a = 0; a < s.attributes.size(); ++a) seg.flat.push_back(p.attr.at(provoking).at(a));
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto r = snap2(wv[i].x, wv[i].y);
+    if (!r) {
+      g.problem = "window vertex (" + pg::fs(wv[i].x) + ", " + pg::fs(wv[i].y) + ") of primitive " +
+                  std::to_string(prim) + " does not snap";
+      return;
+    }
+    seg.raw[i] = *r;
+  }
+  g.segs.emplace_back(std::move(seg));
 }
 
 inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
@@ -193,19 +245,35 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
       w.y = std::clamp(w.y, -32768.0f, 32767.99609375f);
       return w;
     };
-    // PIPE.CLIP.LINE: a point outside the volume is discarded, a line cut like an edge.
+    // PIPE.CLIP.LINE: a point outside the volume is discarded, a line cut like an edge; a strip
+    // with every vertex inside stays whole, otherwise each segment is cut on its own (a part).
     if (p.base.type == PrimitiveType::kPoint) {
-      if (op::inside(vol, pos[0])) g.other.push_back(window(pos[0]));
-      return g;
-    }
-    if (p.base.type == PrimitiveType::kLine) {
-      if (const auto seg = op::clip_segment(cv[0], cv[1], vol)) {
-        g.other.push_back(window((*seg)[0].pos));
-        g.other.push_back(window((*seg)[1].pos));
+      if (op::inside(vol, pos[0])) {
+        g.other.push_back(window(pos[0]));
+        add_segment(g, s, prim, {g.other[0], g.other[0]}, {cv[0].attr, cv[0].attr}, 0);
+      } else {
+        g.segs.emplace_back();
       }
       return g;
     }
-    if (p.base.type != PrimitiveType::kTriangle) return g;  // strips are not modelled here
+    if (p.base.type == PrimitiveType::kLine || p.base.type == PrimitiveType::kLineStrip) {
+      const bool all_in = std::all_of(pos.begin(), pos.end(), [&](const op::Vec4& c) { return op::inside(vol, c); });
+      g.clipped = !all_in;
+      for (std::size_t k = 0; k + 1 < nv; ++k) {
+        if (all_in) {
+          add_segment(g, s, prim, {window(pos[k]), window(pos[k + 1])}, {cv[k].attr, cv[k + 1].attr}, k);
+        } else if (const auto seg = op::clip_segment(cv[k], cv[k + 1], vol)) {
+          add_segment(g, s, prim, {window((*seg)[0].pos), window((*seg)[1].pos)},
+                      {(*seg)[0].attr, (*seg)[1].attr}, k);
+        } else {
+          g.segs.emplace_back();
+        }
+        if (!g.problem.empty()) return g;
+      }
+      if (p.base.type == PrimitiveType::kLine && g.segs[0]) g.other = {g.segs[0]->wv[0], g.segs[0]->wv[1]};
+      // A line inside the volume is not clipped (no part), like an unclipped strip.
+      return g;
+    }
     const std::vector<op::ClipVertex> poly = op::clip_polygon(cv, vol);
     bool same = poly.size() == cv.size();
     for (std::size_t j = 0; same && j < poly.size(); ++j) {
@@ -217,7 +285,15 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
       attrs.push_back(c.attr);
     }
   }
-  if (p.base.type != PrimitiveType::kTriangle) return g;
+  if (p.base.type != PrimitiveType::kTriangle) {
+    // Window space: a point is one segment of no length, a line or strip one per segment.
+    for (std::size_t k = 0; k == 0 || k + 1 < nv; ++k) {
+      const std::size_t k1 = std::min(k + 1, nv - 1);
+      add_segment(g, s, prim, {wv[k], wv[k1]}, {attrs[k], attrs[k1]}, k);
+      if (!g.problem.empty()) return g;
+    }
+    return g;
+  }
   for (std::size_t k = 1; k + 1 < wv.size(); ++k) {
     Part part;
     const std::array<std::size_t, 3> idx{0, k, k + 1};
@@ -288,8 +364,8 @@ struct CheckStats {
 };
 
 // Returns "" when r is consistent with the oracle, else a description of the first problem.
-// Checks every triangle primitive (points and lines only for order, scissor and the depth
-// replay).
+// Checks every primitive: triangles against their parts, points, lines and each segment of a
+// strip against their own segment (PIPE.BARY.LINE).
 inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r, CheckStats& st) {
   std::ostringstream err;
   const op::Viewport vp = viewport_of(s);
@@ -321,7 +397,8 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
   const bool first_attr_centroid = !s.attributes.empty() &&
                                    s.attributes[0].location == kp::Location::kCentroid;
   (void)first_attr_centroid;
-  std::tuple<std::uint32_t, std::int64_t, std::int32_t, std::int32_t, std::int64_t> last{0, -1, -1, -1, -1};
+  std::tuple<std::uint32_t, std::int64_t, std::int32_t, std::int32_t, std::int64_t, std::int64_t> last{
+      0, -1, -1, -1, -1, -1};
   for (std::size_t i = 0; i < r.fragments.size(); ++i) {
     const Fragment& f = r.fragments[i];
     const kp::FragmentData* d = need_data ? &r.data[i] : nullptr;
@@ -330,9 +407,9 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
                            std::to_string(f.x) + ", y " + std::to_string(f.y) + ", mask " +
                            std::to_string(f.mask) + ")";
     ++st.fragments;
-    // Order (prim, part, y, x, sample) and position.
-    const std::tuple<std::uint32_t, std::int64_t, std::int32_t, std::int32_t, std::int64_t> key{
-        f.prim, d && d->part ? std::int64_t{*d->part} : -1, f.y, f.x,
+    // Order (prim, part, y, x, seg, sample) and position.
+    const std::tuple<std::uint32_t, std::int64_t, std::int32_t, std::int32_t, std::int64_t, std::int64_t> key{
+        f.prim, d && d->part ? std::int64_t{*d->part} : -1, f.y, f.x, f.seg ? std::int64_t{*f.seg} : -1,
         f.sample ? std::int64_t{*f.sample} : -1};
     if (i > 0 && !(last < key)) return at + ": out of order";
     last = key;
@@ -344,7 +421,23 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
     const PrimGeometry& g = geo[f.prim];
     if (g.transform_error) return at + ": the scene should have been rejected (transform)";
     const bool triangle = pp.base.type == PrimitiveType::kTriangle;
+    const bool strip = pp.base.type == PrimitiveType::kLineStrip;
+    const bool point = pp.base.type == PrimitiveType::kPoint;
     const Part* part = nullptr;
+    const Seg* seg = nullptr;  // points, lines, strip segments (PIPE.BARY.LINE)
+    std::size_t seg_index = 0;
+    if (!triangle) {
+      if (d && d->part.has_value() != g.clipped)
+        return at + ": part " + (d->part ? "present" : "absent") + " but the oracle's clipper " +
+               (g.clipped ? "clips" : "does not clip");
+      if (strip && f.seg.has_value() == g.clipped)
+        return at + ": seg " + (f.seg ? "present" : "absent") + " on a strip the oracle " +
+               (g.clipped ? "clips into lines" : "draws whole");
+      seg_index = d && d->part ? *d->part : (f.seg ? *f.seg : 0);
+      if (seg_index >= g.segs.size() || !g.segs[seg_index])
+        return at + ": segment " + std::to_string(seg_index) + " the oracle's clipper discards";
+      seg = &*g.segs[seg_index];
+    }
     if (triangle) {
       const std::size_t k = d && d->part ? *d->part : 0;
       if (d && d->part.has_value() != g.clipped)
@@ -358,8 +451,29 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
     if (d && !r.drawn.empty()) {
       if (d->drawn >= r.drawn.size()) return at + ": no drawn primitive " + std::to_string(d->drawn);
       const kp::DrawnPrimitive& dp = r.drawn[d->drawn];
-      if (dp.prim != f.prim || dp.part != d->part || dp.type != pp.base.type)
-        return at + ": its drawn primitive names another primitive or part";
+      const PrimitiveType drawn_type = strip ? PrimitiveType::kLine : pp.base.type;
+      const std::int64_t drawn_seg = strip && !g.clipped ? static_cast<std::int64_t>(seg_index) : -1;
+      if (dp.prim != f.prim || dp.part != d->part || dp.type != drawn_type ||
+          (dp.seg ? std::int64_t{*dp.seg} : -1) != drawn_seg)
+        return at + ": its drawn primitive names another primitive, part, segment or type";
+      if (seg) {
+        const std::size_t ends = pp.base.type == PrimitiveType::kPoint ? 1 : 2;
+        bool same = dp.snapped.size() == ends && dp.attr.size() == s.attributes.size() &&
+                    dp.flat.size() == seg->flat.size();
+        for (std::size_t j = 0; same && j < ends; ++j) {
+          same = dp.snapped[j].x.raw() == seg->raw[j][0] && dp.snapped[j].y.raw() == seg->raw[j][1] &&
+                 pg::same_bits(dp.z[j], seg->wv[j].z) && pg::same_bits(dp.w[j], seg->wv[j].w);
+          for (std::size_t k = 0; same && k < s.attributes.size(); ++k)
+            same = pg::same_bits(dp.attr[k][j], seg->attr[j].at(k));
+        }
+        for (std::size_t k = 0; same && k < seg->flat.size(); ++k) same = pg::same_bits(dp.flat[k], seg->flat[k]);
+        if (!same)
+          return at + ": drawn " + std::string(to_string(drawn_type)) + " (segment " + std::to_string(seg_index) +
+                 ") differs from the oracle's: oracle ends " + pg::rs(seg->raw[0]) + " " + pg::rs(seg->raw[1]) +
+                 " z " + pg::fs(std::array<float, 2>{seg->wv[0].z, seg->wv[1].z}) + " w " +
+                 pg::fs(std::array<float, 2>{seg->wv[0].w, seg->wv[1].w}) + ", kernel z " + pg::fs(dp.z) +
+                 " w " + pg::fs(dp.w);
+      }
       if (part) {
         bool same = dp.snapped.size() == 3 && dp.attr.size() == s.attributes.size() &&
                     dp.flat.size() == g.flat.size();
@@ -393,12 +507,16 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
         if ((f.mask & (1u << smp)) == 0) continue;
         const std::size_t idx = static_cast<std::size_t>((f.y * W + f.x) * n + smp);
         const Raw2 pos = offset_raw(f.x, f.y, pattern[smp]);
+        // The exact barycentrics and vertex depths of the sample (PIPE.BARY.EXACT, PIPE.BARY.LINE).
+        std::optional<std::pair<op::Bary, std::array<float, 3>>> exact;
+        if (part)
+          exact = {op::barycentrics(part->raw, pos), {part->wv[0].z, part->wv[1].z, part->wv[2].z}};
+        if (seg) exact = {line_bary(seg->raw, pos, point), {seg->wv[0].z, seg->wv[1].z, 0.0f}};
+        if (exact && exact->first.area == 0) exact.reset();  // a zero-length line: vertex 0's depth
         if (killed) {
-          if (part) {
-            const op::Bary b = op::barycentrics(part->raw, pos);
-            const op::DepthCheck c = op::check_depth_stored(
-                b, {part->wv[0].z, part->wv[1].z, part->wv[2].z}, vp.min_depth, vp.max_depth,
-                fmt, op::Stored{});
+          if (exact) {
+            const op::DepthCheck c = op::check_depth_stored(exact->first, exact->second, vp.min_depth,
+                                                            vp.max_depth, fmt, op::Stored{});
             if (!some_value_fails(func, c.lo, c.hi, buffer[idx], fmt))
               return at + ": killed, but sample " + std::to_string(smp) +
                      " passes for every allowed depth: " + c.describe(fmt);
@@ -406,10 +524,8 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
           continue;
         }
         const op::Stored now = pg::to_oracle(d->depth[j++]);
-        if (part) {
-          const op::Bary b = op::barycentrics(part->raw, pos);
-          op::DepthCheck c = op::check_depth_stored(
-              b, {part->wv[0].z, part->wv[1].z, part->wv[2].z}, vp.min_depth, vp.max_depth, fmt, now);
+        if (exact) {
+          op::DepthCheck c = op::check_depth_stored(exact->first, exact->second, vp.min_depth, vp.max_depth, fmt, now);
           ++st.depth_checks;
           if (!c.ok) return at + ": depth of sample " + std::to_string(smp) + ": " + c.describe(fmt);
         }
@@ -425,7 +541,19 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
     } else if (d && d->passed != f.mask) {
       return at + ": passed " + std::to_string(d->passed) + " without a depth test";
     }
-    if (!part || killed || d == nullptr) continue;
+    if ((!part && !seg) || killed || d == nullptr) continue;
+    const std::vector<float>& flat = seg ? seg->flat : g.flat;
+    // The exact barycentrics at an evaluation point, and the vertex values they weigh.
+    const auto bary_at = [&](const Raw2& q) {
+      return part ? op::barycentrics(part->raw, q) : line_bary(seg->raw, q, point);
+    };
+    const auto vertex_values = [&](std::size_t k) {
+      return part ? std::array<float, 3>{part->attr[0].at(k), part->attr[1].at(k), part->attr[2].at(k)}
+                  : std::array<float, 3>{seg->attr[0].at(k), seg->attr[1].at(k), 0.0f};
+    };
+    const std::array<float, 3> vertex_w = part ? std::array<float, 3>{part->wv[0].w, part->wv[1].w, part->wv[2].w}
+                                               : std::array<float, 3>{seg->wv[0].w, seg->wv[1].w, 1.0f};
+    const std::string vertices = part ? pg::rs(part->raw) : pg::rs(seg->raw[0]) + " " + pg::rs(seg->raw[1]);
     // Barycentrics and attributes.
     const auto location_raw = [&](kp::Location l) -> std::optional<Raw2> {
       switch (l) {
@@ -434,9 +562,17 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
         if (!f.sample) return std::nullopt;
         return offset_raw(f.x, f.y, pattern.at(*f.sample));
       case kp::Location::kCentroid: {
+        // The fragment's own centroid: check_coverage compares it with rastrules::render's,
+        // whose centroids the MSAA properties check against the oracle (with partial masks,
+        // helper lanes and sample shading, where the pixel's coverage before the mask is not
+        // in the fragment). Here, where the fragment determines it, against the oracle too.
         const std::string rule = s.base.msaa.centroid_rule == CentroidRule::kD3D11 ? "d3d11" : "d3d10";
-        const om::CentroidPoint c = om::centroid(rule, f.mask, 0xFFFFFFFFu, pattern);
-        return offset_raw(f.x, f.y, c.offset);
+        const bool determined = !f.helper && s.base.msaa.shading == ShadingRate::kPixel &&
+                                (s.base.msaa.sample_mask & full_mask(n)) == full_mask(n);
+        if (!f.centroid) return std::nullopt;
+        const om::Offset o{f.centroid->offset.x, f.centroid->offset.y};
+        if (determined && !(om::centroid(rule, f.mask, 0xFFFFFFFFu, pattern).offset == o)) return std::nullopt;
+        return offset_raw(f.x, f.y, o);
       }
       }
       return std::nullopt;
@@ -446,9 +582,8 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
       return at + ": barycentrics " + (d->bary ? "present" : "absent");
     if (d->bary) {
       const auto loc = location_raw(s.attributes.empty() ? kp::Location::kCenter : s.attributes[0].location);
-      if (loc && pg::to_oracle(*d->bary) != op::barycentrics(part->raw, *loc))
-        return at + ": barycentrics differ from the exact ones at " + pg::rs(*loc) + " of " +
-               pg::rs(part->raw);
+      if (loc && pg::to_oracle(*d->bary) != bary_at(*loc))
+        return at + ": barycentrics differ from the exact ones at " + pg::rs(*loc) + " of " + vertices;
     }
     if (d->attr.size() != s.attributes.size())
       return at + ": " + std::to_string(d->attr.size()) + " attributes";
@@ -456,27 +591,36 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
       const kp::AttributeDecl& a = s.attributes[k];
       const float got = d->attr[k];
       if (a.interpolation == kp::Interpolation::kFlat) {
-        if (!pg::same_bits(got, g.flat[k]))
+        if (!pg::same_bits(got, flat[k]))
           return at + ": flat attribute " + std::to_string(k) + " " + pg::fs(got) + ", want " +
-                 pg::fs(g.flat[k]);
+                 pg::fs(flat[k]);
         continue;
       }
       const auto loc = location_raw(a.location);
-      if (!loc) return at + ": attribute " + std::to_string(k) + " at a sample, fragment without one";
-      const op::Bary b = op::barycentrics(part->raw, *loc);
-      const std::array<float, 3> av{part->attr[0].at(k), part->attr[1].at(k), part->attr[2].at(k)};
+      if (!loc)
+        return at + ": attribute " + std::to_string(k) + " at a sample or centroid the fragment lacks, or a centroid " +
+               "other than the oracle's";
+      const op::Bary b = bary_at(*loc);
+      const std::array<float, 3> av = vertex_values(k);
+      if (b.area == 0) {
+        // A zero-length line (PIPE.BARY.LINE): vertex 0's value, or the flat one in perspective.
+        const float want = a.interpolation == kp::Interpolation::kPerspective ? flat[k] : av[0];
+        if (!pg::same_bits(got, want))
+          return at + ": attribute " + std::to_string(k) + " of a zero-length line " + pg::fs(got) + ", want " +
+                 pg::fs(want);
+        continue;
+      }
       const op::InterpCheck c =
           a.interpolation == kp::Interpolation::kPerspective
-              ? op::check_perspective(b, av, {part->wv[0].w, part->wv[1].w, part->wv[2].w}, g.flat[k], got)
+              ? op::check_perspective(b, av, vertex_w, flat[k], got)
               : op::check_linear(b, av, got);
       ++st.attr_checks;
       st.horizon = st.horizon || c.horizon;
       st.saturated = st.saturated || c.saturated;
       if (!c.ok)
         return at + ": attribute " + std::to_string(k) + " (" + interpolation_name(a.interpolation) +
-               ") at " + pg::rs(*loc) + ", vertices " + pg::rs(part->raw) + ", values " +
-               pg::fs(av) + ", w " + pg::fs(std::array<float, 3>{part->wv[0].w, part->wv[1].w, part->wv[2].w}) +
-               ": " + c.describe();
+               ") at " + pg::rs(*loc) + ", vertices " + vertices + ", values " + pg::fs(av) + ", w " +
+               pg::fs(vertex_w) + ": " + c.describe();
     }
   }
   if (has_depth) {
@@ -552,6 +696,48 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
       if (have != want)
         return "coverage of " + std::string(to_string(pp.base.type)) + " " + std::to_string(p) + ": pipeline " +
                std::to_string(have.size()) + " fragments, window-space render " + std::to_string(want.size());
+      continue;
+    }
+    if (pp.base.type == PrimitiveType::kLineStrip) {
+      // rule: PIPE.CLIP.LINE, LINE.STRIP.SEQUENCE
+      // A strip inside the volume (or in window space) covers what the coverage kernel draws for
+      // the strip of its window vertices; a clipped one, segment by segment, what it draws for
+      // each cut segment as a line (part = segment).
+      const PrimGeometry g = geometry(s, p);
+      if (g.transform_error) continue;
+      std::vector<std::pair<std::int64_t, Primitive>> units;
+      Primitive whole = pp.base;
+      whole.v.clear();
+      for (std::size_t k = 0; k < g.segs.size(); ++k) {
+        if (!g.segs[k]) continue;
+        const Seg& sg = *g.segs[k];
+        if (g.clipped) {
+          Primitive line = pp.base;
+          line.type = PrimitiveType::kLine;
+          line.v = {FloatPoint{sg.wv[0].x, sg.wv[0].y}, FloatPoint{sg.wv[1].x, sg.wv[1].y}};
+          units.emplace_back(static_cast<std::int64_t>(k), line);
+        } else {
+          if (k == 0) whole.v.push_back(FloatPoint{sg.wv[0].x, sg.wv[0].y});
+          whole.v.push_back(FloatPoint{sg.wv[1].x, sg.wv[1].y});
+        }
+      }
+      if (!g.clipped) units.emplace_back(-1, whole);
+      for (const auto& [key, prim] : units) {
+        auto rendered = render_one(prim);
+        if (const auto* e = std::get_if<std::string>(&rendered))
+          return "render of strip " + std::to_string(p) + " part " + std::to_string(key) + ": " + *e;
+        const auto it = got.find({static_cast<std::uint32_t>(p), key});
+        const std::vector<Fragment> have = it == got.end() ? std::vector<Fragment>{} : it->second;
+        if (have != std::get<std::vector<Fragment>>(rendered))
+          return "coverage of strip " + std::to_string(p) + " part " + std::to_string(key) + ": pipeline " +
+                 std::to_string(have.size()) + " fragments, window-space render " +
+                 std::to_string(std::get<std::vector<Fragment>>(rendered).size());
+        if (it != got.end()) got.erase(it);
+      }
+      for (auto it = got.begin(); it != got.end(); ++it)
+        if (it->first.first == p && !it->second.empty())
+          return "strip " + std::to_string(p) + " part " + std::to_string(it->first.second) +
+                 ": fragments of a segment the oracle's clipper discards";
       continue;
     }
     if (pp.base.type != PrimitiveType::kTriangle) continue;

@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: MIT
 // Properties of whole scenes through run_pipeline: random targets, raster and multisample
-// states, viewports, transforms, attributes (perspective, linear, flat at the centre, centroid
-// or sample), depth states (every format and compare function, writes on and off, clear values,
-// depth clipping on and off, viewport depth ranges near the format limits), and primitives given
-// in window space or in clip space (inside the view, across the near and far planes, behind the
-// eye, across the guard band, w ratios of 1e6 and more). Checked against the oracle fragment by
-// fragment (pipe_scene.hpp): barycentrics, attributes and depths within the spec's bounds,
-// coverage of every part equal to the window-space path, the depth test replayed, killed
-// fragments; and the result is bit-identical across two runs and across every combination of
-// the optimizations, traversals and thread counts.
+// states (partial sample masks, 2x2 quads with helper lanes and derivatives, every line mode),
+// viewports, transforms, attributes (perspective, linear, flat at the centre, centroid or
+// sample; centroid also under sample shading), depth states (every format and compare
+// function, writes on and off, clear values, depth clipping on and off, viewport depth ranges
+// near the format limits), and triangles, points, lines and line strips given in window space
+// or in clip space (inside the view, across the near and far planes, behind the eye, across the
+// guard band, w ratios of 1e6 and more). Checked against the oracle fragment by fragment
+// (pipe_scene.hpp): barycentrics, attributes and depths within the spec's bounds (each strip
+// segment from its own vertices), coverage of every part equal to the window-space path, the
+// depth test replayed, killed fragments; each strip segment equals the same segment drawn as a
+// line; and the result is bit-identical across two runs and across every combination of the
+// optimizations, traversals and thread counts.
 // Implements (properties for): PIPE.CLIP.UNCLIPPED, PIPE.CLIP.POLYGON, PIPE.BARY.EXACT,
 //   PIPE.INTERP.LOCATION, PIPE.INTERP.PERSPECTIVE, PIPE.INTERP.LINEAR, PIPE.INTERP.FLAT,
 //   PIPE.INTERP.HORIZON, PIPE.INTERP.BOUND, PIPE.DEPTH.INTERP, PIPE.DEPTH.BOUND, PIPE.DEPTH.TEST,
@@ -22,6 +25,7 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <variant>
 #include <vector>
 
@@ -30,6 +34,7 @@
 
 #include "pipe_gen.hpp"
 #include "pipe_scene.hpp"
+#include "strips.hpp"
 
 namespace {
 
@@ -55,6 +60,53 @@ rc::Gen<kp::Vec4f> scene_vertex() {
   return rc::gen::weightedOneOf<kp::Vec4f>({{5, view_vertex()}, {1, pg::clip_vertex()}});
 }
 
+// A primitive of the given type for scene s (its target, line mode and attributes): in window
+// space with depths and w (a strip's vertices from several triangles) or in clip space; strips
+// have 2 to 5 vertices; lines are sometimes antialiased where the line mode allows it.
+rc::Gen<kp::PipePrimitive> primitive(const kp::PipeScene& scene, PrimitiveType type) {
+  // By value: RapidCheck calls this again while shrinking, after the scene is gone.
+  struct State {
+    std::int32_t width, height;
+    rastrules::LineMode line_mode;
+    std::size_t nattr;
+  };
+  const State s{scene.base.width, scene.base.height, scene.base.line_mode, scene.attributes.size()};
+  return rc::gen::exec([s, type] {
+    kp::PipePrimitive p;
+    p.base.type = type;
+    p.base.v.clear();  // a default Primitive is a triangle with three vertices
+    const bool linelike = type == PrimitiveType::kLine || type == PrimitiveType::kLineStrip;
+    p.base.aa = linelike && s.line_mode == rastrules::LineMode::kD3DDiamond && *rc::gen::inRange(0, 6) == 0;
+    const std::size_t nv = type == PrimitiveType::kLineStrip ? static_cast<std::size_t>(*rc::gen::inRange(2, 6))
+                                                             : rastrules::required_vertex_count(type);
+    if (*rc::gen::inRange(0, 10) < 3) {
+      const bool with_z = *rc::gen::inRange(0, 4) != 0, with_w = *rc::gen::arbitrary<bool>();
+      while (p.base.v.size() < nv) {
+        const rastrules::gen::GenTriangle t = *rastrules::gen::triangle_near(s.width, s.height);
+        const auto z = *pg::depth_triple();
+        const auto w = *pg::w_triple();
+        for (std::size_t j = 0; j < 3 && p.base.v.size() < nv; ++j) {
+          p.base.v.push_back(t.v[j]);
+          if (with_z) p.z.push_back(z[j]);
+          if (with_w) p.w.push_back(w[j]);
+        }
+      }
+    } else {
+      for (std::size_t j = 0; j < nv; ++j) {
+        kp::Vec4f v = *scene_vertex();
+        if (!pg::position_ok(v)) v = {0.0f, 0.0f, 0.5f, 1.0f};
+        p.pos.push_back(v);
+      }
+    }
+    for (std::size_t j = 0; j < nv && s.nattr > 0; ++j) {
+      std::vector<float> a;
+      for (std::size_t k = 0; k < s.nattr; ++k) a.push_back(*pg::attr_value());
+      p.attr.push_back(a);
+    }
+    return p;
+  });
+}
+
 rc::Gen<kp::PipeScene> pipe_scene(std::int32_t max_side, int max_prims) {
   return rc::gen::exec([max_side, max_prims] {
     kp::PipeScene s;
@@ -70,13 +122,23 @@ rc::Gen<kp::PipeScene> pipe_scene(std::int32_t max_side, int max_prims) {
     const bool sample_shading = n > 1 && *rc::gen::inRange(0, 4) == 0;
     s.base.msaa.shading = sample_shading ? rastrules::ShadingRate::kSample : rastrules::ShadingRate::kPixel;
     s.base.msaa.centroid_rule = *rc::gen::element(rastrules::CentroidRule::kD3D11, rastrules::CentroidRule::kD3D10);
+    // Partial sample masks (MSAA.MASK.AND), and 2x2 quads with helper lanes, with or without the
+    // derivatives that need them (MSAA.QUAD.HELPER, MSAA.QUAD.DERIVATIVES): helper lanes carry
+    // the attributes a shader's derivatives are formed from.
+    if (n > 1 && *rc::gen::inRange(0, 4) == 0) s.base.msaa.sample_mask = *rc::gen::inRange<std::uint32_t>(0, 1u << n);
+    const int quads = *rc::gen::inRange(0, 8);
+    s.base.msaa.quads = quads == 0;
+    s.base.msaa.derivatives = quads == 1   ? rastrules::DerivativeMode::kFine
+                              : quads == 2 ? rastrules::DerivativeMode::kCoarse
+                                           : rastrules::DerivativeMode::kNone;
     const int nattr = *rc::gen::inRange(0, 4);
     for (int k = 0; k < nattr; ++k) {
       kp::AttributeDecl a;
       a.name = "a" + std::to_string(k);
       a.interpolation = *rc::gen::element(kp::Interpolation::kPerspective, kp::Interpolation::kPerspective,
                                           kp::Interpolation::kLinear, kp::Interpolation::kFlat);
-      a.location = sample_shading ? *rc::gen::element(kp::Location::kCenter, kp::Location::kSample)
+      // Centroid under sample shading too (PIPE.INTERP.LOCATION).
+      a.location = sample_shading ? *rc::gen::element(kp::Location::kCenter, kp::Location::kSample, kp::Location::kCentroid)
                                   : *rc::gen::element(kp::Location::kCenter, kp::Location::kCentroid);
       s.attributes.push_back(a);
     }
@@ -95,33 +157,21 @@ rc::Gen<kp::PipeScene> pipe_scene(std::int32_t max_side, int max_prims) {
       s.depth = d;
     }
     s.provoking = *rc::gen::element(kp::Provoking::kFirst, kp::Provoking::kLast);
+    // Vulkan's Bresenham lines have no sample shading (MSAA.SHADING.SAMPLE).
+    s.base.line_mode = sample_shading ? *rc::gen::element(rastrules::LineMode::kD3DDiamond, rastrules::LineMode::kQuadWide,
+                                                          rastrules::LineMode::kQuadNarrow)
+                                      : *rc::gen::element(rastrules::LineMode::kD3DDiamond,
+                                                          rastrules::LineMode::kVulkanBresenham,
+                                                          rastrules::LineMode::kQuadWide, rastrules::LineMode::kQuadNarrow);
     const int nprims = *rc::gen::inRange(1, max_prims + 1);
     for (int i = 0; i < nprims; ++i) {
-      kp::PipePrimitive p;
+      // Points, lines and strips (LINE.STRIP.SEQUENCE, PIPE.BARY.LINE) besides triangles.
       const int kind = *rc::gen::inRange(0, 20);
-      p.base.type = kind == 0 ? PrimitiveType::kPoint : (kind == 1 ? PrimitiveType::kLine : PrimitiveType::kTriangle);
-      const std::size_t nv = rastrules::required_vertex_count(p.base.type);
-      if (*rc::gen::inRange(0, 10) < 3) {
-        // Window space, with depths and w.
-        const rastrules::gen::GenTriangle t = *rastrules::gen::triangle_near(s.base.width, s.base.height);
-        p.base.v.assign(t.v.begin(), t.v.begin() + static_cast<std::ptrdiff_t>(nv));
-        const auto z = *pg::depth_triple();
-        const auto w = *pg::w_triple();
-        if (*rc::gen::inRange(0, 4) != 0) p.z.assign(z.begin(), z.begin() + static_cast<std::ptrdiff_t>(nv));
-        if (*rc::gen::arbitrary<bool>()) p.w.assign(w.begin(), w.begin() + static_cast<std::ptrdiff_t>(nv));
-      } else {
-        for (std::size_t j = 0; j < nv; ++j) {
-          kp::Vec4f v = *scene_vertex();
-          if (!pg::position_ok(v)) v = {0.0f, 0.0f, 0.5f, 1.0f};
-          p.pos.push_back(v);
-        }
-      }
-      for (std::size_t j = 0; j < nv && nattr > 0; ++j) {
-        std::vector<float> a;
-        for (int k = 0; k < nattr; ++k) a.push_back(*pg::attr_value());
-        p.attr.push_back(a);
-      }
-      s.primitives.push_back(p);
+      const PrimitiveType type = kind == 0   ? PrimitiveType::kPoint
+                                 : kind == 1 ? PrimitiveType::kLine
+                                 : kind <= 3 ? PrimitiveType::kLineStrip
+                                             : PrimitiveType::kTriangle;
+      s.primitives.push_back(*primitive(s, type));
     }
     return s;
   });
@@ -148,7 +198,8 @@ std::optional<kp::PipeResult> run(const kp::PipeScene& s, const kp::PipeOptions&
 // rule: PIPE.CLIP.UNCLIPPED, PIPE.CLIP.POLYGON, PIPE.BARY.EXACT, PIPE.INTERP.LOCATION
 // rule: PIPE.INTERP.PERSPECTIVE, PIPE.INTERP.LINEAR, PIPE.INTERP.FLAT, PIPE.INTERP.HORIZON
 // rule: PIPE.INTERP.BOUND, PIPE.DEPTH.INTERP, PIPE.DEPTH.BOUND, PIPE.DEPTH.TEST, PIPE.DEPTH.WRITE
-// rule: PIPE.DEPTH.KILL, PIPE.VIEWPORT.SCISSOR
+// rule: PIPE.DEPTH.KILL, PIPE.VIEWPORT.SCISSOR, PIPE.BARY.LINE, LINE.STRIP.SEQUENCE
+// rule: MSAA.QUAD.HELPER, MSAA.MASK.AND
 RC_GTEST_PROP(PipeScene, FragmentsAgreeWithTheOracle, ()) {
   const kp::PipeScene s = *pg::full_size(pipe_scene(12, 4));
   const auto r = run(s, kp::PipeOptions::plain());
@@ -167,6 +218,17 @@ RC_GTEST_PROP(PipeScene, FragmentsAgreeWithTheOracle, ()) {
   RC_CLASSIFY(st.depth_checks > 0, "depths checked");
   RC_CLASSIFY(st.horizon, "beyond the horizon");
   RC_CLASSIFY(st.fragments == 0, "no fragment");
+  RC_CLASSIFY(std::any_of(r->fragments.begin(), r->fragments.end(), [](const rastrules::Fragment& f) { return f.helper; }),
+              "helper lanes");
+  RC_CLASSIFY((s.base.msaa.sample_mask & rastrules::full_mask(s.base.msaa.count())) != rastrules::full_mask(s.base.msaa.count()),
+              "partial sample mask");
+  RC_CLASSIFY(std::any_of(s.primitives.begin(), s.primitives.end(),
+                          [](const kp::PipePrimitive& p) { return p.base.type == PrimitiveType::kLineStrip; }),
+              "line strips");
+  RC_CLASSIFY(s.base.msaa.shading == rastrules::ShadingRate::kSample &&
+                  std::any_of(s.attributes.begin(), s.attributes.end(),
+                              [](const kp::AttributeDecl& a) { return a.location == kp::Location::kCentroid; }),
+              "centroid under sample shading");
   if (st.fragments == 0 && std::getenv("PIPE_DEBUG")) std::cerr << ps::show(s) << "\n";
 }
 
@@ -231,6 +293,69 @@ RC_GTEST_PROP(PipeScene, OptimizationsTraversalsAndThreadsChangeNothing, ()) {
   if (!d2.empty()) RC_FAIL("options (" + describe(o) + ") differ from plain: " + d2 + "\n" + ps::show(s));
   RC_CLASSIFY(fast->stats.hiz_rejected > 0, "Hi-Z rejected something");
   RC_CLASSIFY(s.base.width > 32 || s.base.height > 32, "several 32 px tiles");
+}
+
+// rule: LINE.STRIP.SEQUENCE, PIPE.BARY.LINE, PIPE.INTERP.FLAT, PIPE.CLIP.LINE
+// Each segment of a strip gives, fragment for fragment, what the same segment drawn as a line
+// gives: coverage, barycentrics, attributes (flat ones from the segment's provoking vertex),
+// depths and the depth test, clipped or not, in every line mode, with either provoking vertex.
+RC_GTEST_PROP(PipeStrip, EachSegmentEqualsTheSameSegmentDrawnAsALine, ()) {
+  kp::PipeScene s = *pg::full_size(pipe_scene(16, 1));
+  s.primitives = {*primitive(s, PrimitiveType::kLineStrip)};
+  const kp::PipeScene lines = pg::strips_as_lines(s);
+  const auto a = run(s, kp::PipeOptions::plain());
+  const auto b = run(lines, kp::PipeOptions::plain());
+  if (!a || !b) {
+    RC_TAG("rejected: transform overflow");
+    return;
+  }
+  // Both sorted by (segment, y, x, sample): a strip's segment is its seg, or its part when
+  // clipped; a line's is its primitive index.
+  const auto order = [](const kp::PipeResult& r, bool strip) {
+    std::vector<std::tuple<std::uint32_t, std::int32_t, std::int32_t, std::int64_t, std::size_t>> v;
+    for (std::size_t i = 0; i < r.fragments.size(); ++i) {
+      const rastrules::Fragment& f = r.fragments[i];
+      const std::uint32_t segment =
+          strip ? (f.seg ? *f.seg : (r.data.empty() ? 0 : r.data[i].part.value_or(0))) : f.prim;
+      v.emplace_back(segment, f.y, f.x, f.sample ? std::int64_t{*f.sample} : -1, i);
+    }
+    std::sort(v.begin(), v.end());
+    return v;
+  };
+  const auto oa = order(*a, true), ob = order(*b, false);
+  if (oa.size() != ob.size())
+    RC_FAIL("strip " + std::to_string(oa.size()) + " fragments, lines " + std::to_string(ob.size()) + "\n" +
+            ps::show(s));
+  const bool clipped = std::any_of(a->data.begin(), a->data.end(), [](const kp::FragmentData& d) { return d.part; });
+  for (std::size_t j = 0; j < oa.size(); ++j) {
+    const std::size_t ia = std::get<4>(oa[j]), ib = std::get<4>(ob[j]);
+    rastrules::Fragment fa = a->fragments[ia], fb = b->fragments[ib];
+    const std::string at = "segment " + std::to_string(std::get<0>(oa[j])) + " at (" + std::to_string(fa.x) +
+                           ", " + std::to_string(fa.y) + ")";
+    fa.prim = fb.prim = 0;
+    fa.seg = fb.seg = std::nullopt;
+    if (std::get<0>(oa[j]) != std::get<0>(ob[j]) || !(fa == fb))
+      RC_FAIL(at + ": the strip's fragment differs from the line's\n" + ps::show(s));
+    if (a->data.empty() != b->data.empty()) RC_FAIL("one run has fragment data, the other not\n" + ps::show(s));
+    if (a->data.empty()) continue;
+    kp::FragmentData da = a->data[ia], db = b->data[ib];
+    da.drawn = db.drawn = 0;
+    da.part = db.part = std::nullopt;
+    if (!(da == db))
+      RC_FAIL(at + ": values differ: strip attr " + pg::fs(da.attr) + ", line attr " + pg::fs(db.attr) +
+              (da.bary && db.bary ? ", strip bary e1 " + std::to_string(da.bary->e[1]) + "/" +
+                                        std::to_string(da.bary->area) + ", line " + std::to_string(db.bary->e[1]) +
+                                        "/" + std::to_string(db.bary->area)
+                                  : std::string()) +
+              "\n" + ps::show(s));
+  }
+  if (a->depth_buffer != b->depth_buffer) RC_FAIL("depth buffers differ\n" + ps::show(s));
+  RC_CLASSIFY(clipped, "clipped");
+  RC_CLASSIFY(s.primitives[0].pos.empty(), "window space");
+  RC_CLASSIFY(!s.attributes.empty(), "attributes");
+  RC_CLASSIFY(s.depth.has_value(), "depth");
+  RC_CLASSIFY(oa.empty(), "no fragment");
+  RC_TAG(std::string(to_string(s.base.line_mode)));
 }
 
 }  // namespace

@@ -299,3 +299,46 @@ TEST(CliPipeline, TheReadmeExampleRenders) {
 }
 
 }  // namespace
+
+namespace {
+
+// The strip of the report on line strips: two segments, a linear and a flat attribute.
+constexpr const char* kStrip = R"({"target": {"width": 16, "height": 16},
+ "attributes": [{"name": "u", "interpolation": "linear"}, {"name": "k", "interpolation": "flat"}],
+ "depth": {"format": "d24", "func": "always"},
+ "primitives": [{"type": "line_strip",
+   "pos": [[-0.9375, -0.9375, 0.25], [0.9375, -0.9375, 0.5], [0.9375, 0.9375, 0.75]],
+   "attr": [[0, 10], [1, 20], [2, 30]]}]})";
+
+// rule: PIPE.BARY.LINE, PIPE.INTERP.FLAT, LINE.STRIP.SEQUENCE, SCENE.OUTPUT.PIPELINE
+TEST(CliPipeline, StripSegmentsAreInterpolatedFromTheirOwnVertices) {
+  const json doc = render(kStrip);
+  bool seen = false;
+  for (const json& f : doc["fragments"]) {
+    if (f["x"] != 15 || f["y"] != 1 || !f.contains("seg") || f["seg"] != 1) continue;
+    seen = true;
+    EXPECT_EQ(f["bary"], json::parse("[983040, 13762560, 0, 14745600]"));
+    EXPECT_EQ(f["attr"]["k"], 20);
+    EXPECT_EQ(f["depth"], json::parse("[12303291]"));
+  }
+  EXPECT_TRUE(seen);
+}
+
+// rule: PIPE.OPT.TILES, PIPE.OPT.HIZ, PIPE.OPT.EARLY_Z, PIPE.OPT.FAST_CLEAR
+TEST(CliPipeline, PipelinePlainGivesTheSameBytes) {
+  const TempDir dir;
+  const auto path = dir.write("scene.json", kStrip);
+  const auto fast = run_cli({"render", path.string(), "--fragments", "-"});
+  const auto plain = run_cli({"render", path.string(), "--fragments", "-", "--pipeline-plain"});
+  ASSERT_EQ(fast.status, 0) << fast.err;
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  EXPECT_EQ(fast.out, plain.out);
+  // A coverage-only scene: the plain traversal, the same bytes.
+  const auto path2 = dir.write("tri.json", kWindowTriangle);
+  const auto a = run_cli({"render", path2.string(), "--fragments", "-"});
+  const auto b = run_cli({"render", path2.string(), "--fragments", "-", "--pipeline-plain"});
+  ASSERT_EQ(b.status, 0) << b.err;
+  EXPECT_EQ(a.out, b.out);
+}
+
+}  // namespace

@@ -34,7 +34,7 @@ void print_usage(std::FILE* out) {
       "  render SCENE.json [--fragments OUT.json] [--png OUT.png] [--scale N]\n"
       "         [--resolve OUT.png] [--max-fragments N] [--threads N]\n"
       "         [--traversal plain|fast] [--isa scalar|avx2|avx512|auto]\n"
-      "         [--png-depth] [--depth-out OUT.json]\n"
+      "         [--png-depth] [--depth-out OUT.json] [--pipeline-plain]\n"
       "      Rasterize a scene (spec/scene.md). --fragments writes the fragment list,\n"
       "      sorted by (prim, y, x); --png draws the target magnified N times (default 32,\n"
       "      less for large targets; at most 4096 pixels a side) with the pixel grid, pixel\n"
@@ -54,7 +54,9 @@ void print_usage(std::FILE* out) {
       "      \"bary\", \"attr\", \"depth\" and \"passed\" as the scene asks\n"
       "      (SCENE.OUTPUT.PIPELINE); --png-depth draws the final depth buffer in grey\n"
       "      (black near, white far) instead of coverage; --depth-out writes it as JSON;\n"
-      "      --resolve writes the samples that passed the depth test.\n"
+      "      --resolve writes the samples that passed the depth test. --pipeline-plain\n"
+      "      turns off every optimization (PIPE.OPT.*: binning, Hi-Z, early-Z, fast\n"
+      "      clear, and the fast traversal), never changing the result.\n"
       "  explain SCENE.json --pixel X,Y [--json]\n"
       "      For every primitive: its snapped vertices, area, winding, culling, and for each\n"
       "      edge the exact edge value at the centre of pixel (X, Y), whether it is a top or\n"
@@ -151,9 +153,15 @@ std::optional<std::variant<LoadedScene, pipe::PipeScene>> load_any_scene(const s
 // rule: SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
 std::optional<pipe::PipeResult> run_pipeline_or_report(const pipe::PipeScene& scene,
                                                        const RenderOptions& options,
-                                                       std::uint64_t max_fragments) {
+                                                       std::uint64_t max_fragments, bool plain) {
+  // rule: PIPE.OPT.TILES, PIPE.OPT.HIZ, PIPE.OPT.EARLY_Z, PIPE.OPT.FAST_CLEAR
   pipe::PipeOptions o;
   o.render = options;
+  if (plain) {
+    o = pipe::PipeOptions::plain();
+    o.render.threads = options.threads;
+    o.render.isa = options.isa;
+  }
   o.max_fragments = max_fragments;
   auto result = pipe::run_pipeline(scene, o);
   if (auto* err = std::get_if<SceneError>(&result)) {

@@ -55,10 +55,12 @@ std::optional<std::variant<LoadedScene, pipe::PipeScene>> load_any_scene(const s
 
 // Runs the pipeline on a scene read by load_any_scene(); on bad input (run_pipeline's SceneError,
 // also more than max_fragments fragments) prints the one-line error and returns nullopt.
+// plain: every optimization off (PipeOptions::plain(), `render --pipeline-plain`).
 // rule: SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
 std::optional<pipe::PipeResult> run_pipeline_or_report(const pipe::PipeScene& scene,
                                                        const RenderOptions& options,
-                                                       std::uint64_t max_fragments);
+                                                       std::uint64_t max_fragments,
+                                                       bool plain = false);
 
 // An output file written under a temporary name and renamed into place by commit(), so that
 // a failed run leaves no output file; "-" writes to standard output; an existing path that is

@@ -859,7 +859,10 @@ int explain_pipeline(const pipe::PipeScene& scene, const pipe::PipeResult& resul
     if (data == nullptr) continue;
     if (data->bary) {
       const pipe::Barycentrics& b = *data->bary;
-      out += "  barycentrics (PIPE.BARY.EXACT): e = [" + std::to_string(b.e[0]) + ", " +
+      const pipe::DrawnPrimitive* d = drawn_of(i);
+      const bool triangle = d == nullptr || d->type == PrimitiveType::kTriangle;
+      out += std::string("  barycentrics (") + (triangle ? "PIPE.BARY.EXACT" : "PIPE.BARY.LINE") + "): e = [" +
+             std::to_string(b.e[0]) + ", " +
              std::to_string(b.e[1]) + ", " + std::to_string(b.e[2]) + "], A = " +
              std::to_string(b.area) + " (e0 + e1 + e2 = A)\n";
     }

@@ -106,6 +106,7 @@ struct RenderRequest {
   std::uint64_t max_fragments = io::kDefaultMaxFragments;
   RenderOptions options;
   int to_stdout = 0;
+  bool pipeline_plain = false;
 };
 
 // Returns the stored depth as a value in [0, 1] (d16 and d24: the UNORM value over 2^n - 1).
@@ -134,7 +135,8 @@ int render_pipeline(const pipe::PipeScene& scene, const RenderRequest& rq) {
   // rule: SCENE.INPUT.LIMITS
   // run_pipeline stops at the first fragment beyond the limit (and at a primitive that would
   // hold more than it to sort them); its list is checked again here.
-  const std::optional<pipe::PipeResult> result = run_pipeline_or_report(scene, rq.options, rq.max_fragments);
+  const std::optional<pipe::PipeResult> result = run_pipeline_or_report(scene, rq.options, rq.max_fragments,
+                                                                                rq.pipeline_plain);
   if (!result) return kExitBadInput;
   if (result->fragments.size() > rq.max_fragments) {
     return error("render: more than " + std::to_string(rq.max_fragments) +
@@ -224,7 +226,7 @@ int render_pipeline(const pipe::PipeScene& scene, const RenderRequest& rq) {
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.INPUT.ERRORS
 int run_render(const Args& args) {
   std::optional<std::string> scene_path, fragments_path, png_path, resolve_path, depth_out_path;
-  bool png_depth = false;
+  bool png_depth = false, pipeline_plain = false;
   std::optional<int> scale;
   std::uint64_t max_fragments = io::kDefaultMaxFragments;
   RenderOptions options;
@@ -251,6 +253,11 @@ int run_render(const Args& args) {
       if (!resolve_path || resolve_path->empty()) return usage_error("--resolve needs a file name");
     } else if (a == "--png-depth") {
       png_depth = true;
+    } else if (a == "--pipeline-plain") {
+      // rule: PIPE.OPT.TILES
+      // Pipeline scenes: every optimization off; coverage scenes: the plain traversal.
+      pipeline_plain = true;
+      options.traversal = Traversal::kPlain;
     } else if (is("--depth-out")) {
       depth_out_path = value("--depth-out");
       if (!depth_out_path || depth_out_path->empty()) return usage_error("--depth-out needs a file name");
@@ -330,7 +337,8 @@ int run_render(const Args& args) {
   // rule: SCENE.OUTPUT.PIPELINE
   if (const auto* pipeline = std::get_if<pipe::PipeScene>(&*any)) {
     return render_pipeline(*pipeline, RenderRequest{fragments_path, png_path, resolve_path, depth_out_path,
-                                                    scale, png_depth, max_fragments, options, to_stdout});
+                                                    scale, png_depth, max_fragments, options, to_stdout,
+                                                    pipeline_plain});
   }
   if (png_depth || depth_out_path) {
     return error(std::string(png_depth ? "--png-depth" : "--depth-out") +

@@ -255,10 +255,13 @@ struct DrawnPrimitive {
   PrimitiveType type = PrimitiveType::kTriangle;
   std::uint32_t prim = 0;                  // the scene's primitive index
   std::optional<std::uint32_t> part;
-  std::vector<Vec2> snapped;               // 3 (triangle), 2 (line), 1 (point), or a strip's
-  std::array<float, 3> z{};                // window depth of the first three vertices (biased)
-  std::array<float, 3> w{1.0f, 1.0f, 1.0f};  // clip w of the first three vertices
-  std::vector<std::array<float, 3>> attr;  // per attribute, the first three vertices' values
+  // The segment of an unclipped line strip: each segment is drawn (and listed here) as a line
+  // of its own (LINE.STRIP.SEQUENCE); a clipped strip's segments are parts instead.
+  std::optional<std::uint32_t> seg;
+  std::vector<Vec2> snapped;               // 3 (triangle), 2 (line, strip segment), 1 (point)
+  std::array<float, 3> z{};                // window depth of the vertices (biased)
+  std::array<float, 3> w{1.0f, 1.0f, 1.0f};  // clip w of the vertices
+  std::vector<std::array<float, 3>> attr;  // per attribute, the vertices' values
   std::vector<float> flat;                 // per attribute, the provoking vertex's value
 };
 
