@@ -36,7 +36,8 @@ rastrules::Scene make_scene(std::int32_t size, int n, std::uint32_t seed) {
     for (auto& v : p.v) {
       for (auto& c : v) {
         int raw = coord(rng);
-        if (i % 4 == 0) raw = (raw / 256) * 256 + 128;
+        if (i % 4 == 0)
+          raw = (raw / 256) * 256 + 128;
         c = static_cast<float>(raw) / 256.0f;
       }
     }
@@ -200,7 +201,7 @@ BENCHMARK(BM_OracleRender)->Arg(16)->Arg(64)->Unit(benchmark::kMillisecond);
 // Prints the usual table, then the ratios of each method to the kernel's fast path, from the
 // times measured in this run (never compared with a fixed number).
 class RatioReporter : public benchmark::ConsoleReporter {
- public:
+public:
   void ReportRuns(const std::vector<Run>& runs) override {
     for (const auto& r : runs) {
       if (r.run_type == Run::RT_Iteration && r.iterations > 0) {
@@ -237,15 +238,16 @@ class RatioReporter : public benchmark::ConsoleReporter {
     }
   }
 
- private:
+private:
   std::map<std::string, double> times_;
 };
 
-}  // namespace
+} // namespace
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+  if (benchmark::ReportUnrecognizedArguments(argc, argv))
+    return 2;
   RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();

@@ -27,8 +27,8 @@ constexpr std::int32_t kSize = 512;
 // [1, 4] (x, y, z scaled by w) or, when window is set, as their window-space images.
 rp::PipeScene make_scene(int n, bool window, std::uint32_t seed) {
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> pos(-0.95f, 0.95f), off(-0.08f, 0.08f),
-      depth(0.05f, 0.95f), wdist(1.0f, 4.0f);
+  std::uniform_real_distribution<float> pos(-0.95f, 0.95f), off(-0.08f, 0.08f), depth(0.05f, 0.95f),
+      wdist(1.0f, 4.0f);
   rp::PipeScene s;
   s.base.width = kSize;
   s.base.height = kSize;
@@ -53,14 +53,14 @@ rp::PipeScene make_scene(int n, bool window, std::uint32_t seed) {
 }
 
 enum Stage : int {
-  kKernelOnly,    // rastrules::render of the window-space scene: no pipeline at all
-  kCoverageOnly,  // the pipeline on the same scene: coverage only
-  kClipSpace,     // + transform-free clip-space input, clipping, divide, viewport
-  kDepth,         // + depth test and write (d24, less)
-  kAttributes,    // + 4 perspective attributes
-  kMsaa4,         // + 4 samples (depth per sample)
-  kCentroid,      // + attributes at the centroid
-  kDerivatives,   // + quads, helper lanes and fine derivatives
+  kKernelOnly,   // rastrules::render of the window-space scene: no pipeline at all
+  kCoverageOnly, // the pipeline on the same scene: coverage only
+  kClipSpace,    // + transform-free clip-space input, clipping, divide, viewport
+  kDepth,        // + depth test and write (d24, less)
+  kAttributes,   // + 4 perspective attributes
+  kMsaa4,        // + 4 samples (depth per sample)
+  kCentroid,     // + attributes at the centroid
+  kDerivatives,  // + quads, helper lanes and fine derivatives
 };
 const char* const kStageNames[] = {"kernel_only", "coverage_only", "+clip_space", "+depth",
                                    "+attributes", "+msaa4",        "+centroid",   "+derivatives"};
@@ -71,9 +71,9 @@ rp::PipeScene stage_scene(int stage) {
     s.depth = rp::DepthState{};
   if (stage >= kAttributes) {
     for (const char* n : {"r", "g", "b", "u"})
-      s.attributes.push_back(rp::AttributeDecl{n, rp::Interpolation::kPerspective,
-                                               stage >= kCentroid ? rp::Location::kCentroid
-                                                                  : rp::Location::kCenter});
+      s.attributes.push_back(
+          rp::AttributeDecl{n, rp::Interpolation::kPerspective,
+                            stage >= kCentroid ? rp::Location::kCentroid : rp::Location::kCenter});
     for (auto& p : s.primitives)
       p.attr = {{0, 1, 2, 3}, {1, 2, 3, 4}, {2, 3, 4, 5}};
   }
@@ -115,8 +115,7 @@ void BM_PipelineStage(benchmark::State& st) {
 BENCHMARK(BM_PipelineStage)->DenseRange(kKernelOnly, kDerivatives)->Unit(benchmark::kMillisecond);
 
 // Times a and b alternately, each iteration once, and reports time(b) / time(a).
-template <class A, class B>
-void ratio(benchmark::State& st, A&& a, B&& b) {
+template <class A, class B> void ratio(benchmark::State& st, A&& a, B&& b) {
   using clock = std::chrono::steady_clock;
   double ta = 0.0, tb = 0.0;
   for (auto _ : st) {
@@ -163,20 +162,25 @@ void BM_OptimizationsOverPlain(benchmark::State& st) {
   }
   s.depth = rp::DepthState{};
   for (const char* n : {"r", "g", "b", "u"})
-    s.attributes.push_back(rp::AttributeDecl{n, rp::Interpolation::kPerspective, rp::Location::kCenter});
+    s.attributes.push_back(
+        rp::AttributeDecl{n, rp::Interpolation::kPerspective, rp::Location::kCenter});
   rp::PipeOptions fast;
   const int which = static_cast<int>(st.range(0));
   if (which > 0) {
     fast = rp::PipeOptions::plain();
     fast.render.traversal = rastrules::Traversal::kFast;
-    if (which == 1) fast.binning = true;
-    if (which == 2) fast.hiz = true;
-    if (which == 3) fast.early_z = true;
-    if (which == 4) fast.fast_clear = true;
+    if (which == 1)
+      fast.binning = true;
+    if (which == 2)
+      fast.hiz = true;
+    if (which == 3)
+      fast.early_z = true;
+    if (which == 4)
+      fast.fast_clear = true;
   }
   const rp::PipeOptions plain = [] {
     rp::PipeOptions o = rp::PipeOptions::plain();
-    o.render.traversal = rastrules::Traversal::kFast;  // the same coverage traversal on both sides
+    o.render.traversal = rastrules::Traversal::kFast; // the same coverage traversal on both sides
     return o;
   }();
   ratio(
@@ -187,4 +191,4 @@ void BM_OptimizationsOverPlain(benchmark::State& st) {
 }
 BENCHMARK(BM_OptimizationsOverPlain)->DenseRange(0, 4)->Unit(benchmark::kMillisecond);
 
-}  // namespace
+} // namespace

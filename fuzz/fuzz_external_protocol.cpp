@@ -34,7 +34,8 @@ Scene scene_for(std::uint8_t b) {
   Scene s;
   s.width = kSides[b & 3u];
   s.height = kSides[(b >> 2) & 3u];
-  if ((b & 16u) != 0) s.msaa.pattern = rastrules::standard_pattern(4);
+  if ((b & 16u) != 0)
+    s.msaa.pattern = rastrules::standard_pattern(4);
   const std::size_t prims = 1u + ((b >> 5) & 3u);
   for (std::size_t i = 0; i < prims; ++i) {
     rastrules::Primitive p;
@@ -45,15 +46,17 @@ Scene scene_for(std::uint8_t b) {
   return s;
 }
 
-}  // namespace
+} // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (size == 0 || size > (std::size_t{1} << 20)) return 0;
+  if (size == 0 || size > (std::size_t{1} << 20))
+    return 0;
   const Scene scene = scene_for(data[0]);
   const std::string_view text(reinterpret_cast<const char*>(data + 1), size - 1);
   const auto parsed = rastrules::driver::parse_external_fragments(text, scene);
   if (const auto* err = std::get_if<std::string>(&parsed)) {
-    if (err->empty()) fz::fail("parse_external_fragments returned an empty error", {}, &scene, data, size);
+    if (err->empty())
+      fz::fail("parse_external_fragments returned an empty error", {}, &scene, data, size);
     return 0;
   }
   const auto& frags = std::get<std::vector<Fragment>>(parsed);
@@ -67,7 +70,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       fz::fail("accepted a fragment outside the target", {at}, &scene, data, size);
     }
     if (f.prim >= scene.primitives.size()) {
-      fz::fail("accepted a fragment of a primitive the scene does not have", {at}, &scene, data, size);
+      fz::fail("accepted a fragment of a primitive the scene does not have", {at}, &scene, data,
+               size);
     }
     if ((f.mask & ~full) != 0) {
       fz::fail("accepted a mask beyond the pattern's samples", {at}, &scene, data, size);

@@ -29,10 +29,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const rastrules::Scene scene = fz::decode_scene(in);
 
   const auto reread = rastrules::io::read_scene(rastrules::io::write_scene(scene));
-  if (!std::holds_alternative<rastrules::Scene>(reread) || !rastrules::io::same_scene(std::get<rastrules::Scene>(reread), scene)) {
+  if (!std::holds_alternative<rastrules::Scene>(reread) ||
+      !rastrules::io::same_scene(std::get<rastrules::Scene>(reread), scene)) {
     fz::fail("the scene file written for the scene does not read back to it",
-             {std::holds_alternative<rastrules::SceneError>(reread) ? std::get<rastrules::SceneError>(reread).what()
-                                                                     : std::string("a different scene")},
+             {std::holds_alternative<rastrules::SceneError>(reread)
+                  ? std::get<rastrules::SceneError>(reread).what()
+                  : std::string("a different scene")},
              &scene, data, size);
   }
 
@@ -42,14 +44,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (err->field.empty() || err->message.empty()) {
       fz::fail("prepare returned an error naming no field", {err->what()}, &scene, data, size);
     }
-    if (invalid.empty()) fz::fail("prepare rejects a scene the oracles find valid", {err->what()}, &scene, data, size);
+    if (invalid.empty())
+      fz::fail("prepare rejects a scene the oracles find valid", {err->what()}, &scene, data, size);
     return 0;
   }
-  if (!invalid.empty()) fz::fail("prepare accepts a scene the oracles find invalid", {invalid}, &scene, data, size);
+  if (!invalid.empty())
+    fz::fail("prepare accepts a scene the oracles find invalid", {invalid}, &scene, data, size);
 
   const auto& ps = std::get<rastrules::PreparedScene>(prepared);
   const std::vector<rastrules::Fragment> kernel = rastrules::rasterize(ps);
-  if (rastrules::rasterize(ps) != kernel) fz::fail("two runs of rasterize differ", {}, &scene, data, size);
+  if (rastrules::rasterize(ps) != kernel)
+    fz::fail("two runs of rasterize differ", {}, &scene, data, size);
   const auto rendered = rastrules::render(scene);
   if (!std::holds_alternative<std::vector<rastrules::Fragment>>(rendered) ||
       std::get<std::vector<rastrules::Fragment>>(rendered) != kernel) {
@@ -62,6 +67,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const std::exception& e) {
     differences.push_back(std::string("the oracle failed: ") + e.what());
   }
-  if (!differences.empty()) fz::fail("the kernel and the exact oracles disagree", differences, &scene, data, size);
+  if (!differences.empty())
+    fz::fail("the kernel and the exact oracles disagree", differences, &scene, data, size);
   return 0;
 }

@@ -31,17 +31,19 @@ using rastrules::SceneError;
   fz::fail(what, {detail}, nullptr, data, size);
 }
 
-void check_error(const SceneError& e, const char* stage, const std::uint8_t* data, std::size_t size) {
+void check_error(const SceneError& e, const char* stage, const std::uint8_t* data,
+                 std::size_t size) {
   const bool names_position = e.message.rfind("parse error", 0) == 0;
   if (e.message.empty() || (e.field.empty() && !names_position))
     fail(std::string(stage) + " returned an error that names no field or position",
          "field \"" + e.field + "\", message \"" + e.message + "\"", data, size);
 }
 
-}  // namespace
+} // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (size > rastrules::io::kMaxSceneBytes) return 0;
+  if (size > rastrules::io::kMaxSceneBytes)
+    return 0;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   const auto read = rastrules::io::read_any_scene(text);
   if (const auto* err = std::get_if<SceneError>(&read)) {
@@ -49,7 +51,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   const auto* scene = std::get_if<kp::PipeScene>(&read);
-  if (scene == nullptr) return 0;  // a window-space scene: fuzz_scene_parser's
+  if (scene == nullptr)
+    return 0; // a window-space scene: fuzz_scene_parser's
 
   // Written back, the text reads to the same pipeline scene.
   const auto reread = rastrules::io::read_any_scene(rastrules::io::write_pipe_scene(*scene));
@@ -75,7 +78,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   if (!std::holds_alternative<kp::PipeResult>(b))
-    fail("run_pipeline fails without the optimizations only", std::get<SceneError>(b).what(), data, size);
+    fail("run_pipeline fails without the optimizations only", std::get<SceneError>(b).what(), data,
+         size);
   const kp::PipeResult& r = std::get<kp::PipeResult>(a);
   const kp::PipeResult& p = std::get<kp::PipeResult>(b);
   if (r.fragments != p.fragments || r.data != p.data || r.depth_buffer != p.depth_buffer)
@@ -89,11 +93,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (d.bary && d.bary->e[0] + d.bary->e[1] + d.bary->e[2] != d.bary->area)
       fail("barycentrics that do not sum to the area (PIPE.BARY.SUM)", "", data, size);
     for (const float v : d.attr)
-      if (!std::isfinite(v)) fail("an attribute that is not finite (PIPE.INTERP.HORIZON)", "", data, size);
+      if (!std::isfinite(v))
+        fail("an attribute that is not finite (PIPE.INTERP.HORIZON)", "", data, size);
     for (const kp::DepthValue& z : d.depth) {
       const bool ok = fmt == kp::DepthFormat::kD32F ? (z.f >= lo.f && z.f <= hi.f)
                                                     : (z.unorm >= lo.unorm && z.unorm <= hi.unorm);
-      if (!ok) fail("a stored depth outside the viewport's range (PIPE.DEPTH.CLAMP)", "", data, size);
+      if (!ok)
+        fail("a stored depth outside the viewport's range (PIPE.DEPTH.CLAMP)", "", data, size);
     }
   }
   return 0;

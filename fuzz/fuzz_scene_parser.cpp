@@ -25,8 +25,8 @@ using rastrules::Scene;
 using rastrules::SceneError;
 namespace fz = rastrules::fuzz;
 
-void check_error(const SceneError& e, const char* stage, const Scene* scene, const std::uint8_t* data,
-                 std::size_t size) {
+void check_error(const SceneError& e, const char* stage, const Scene* scene,
+                 const std::uint8_t* data, std::size_t size) {
   const bool names_position = e.message.rfind("parse error", 0) == 0;
   if (e.message.empty() || (e.field.empty() && !names_position)) {
     fz::fail(std::string(stage) + " returned an error that names no field or position",
@@ -34,10 +34,11 @@ void check_error(const SceneError& e, const char* stage, const Scene* scene, con
   }
 }
 
-}  // namespace
+} // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (size > rastrules::io::kMaxSceneBytes) return 0;
+  if (size > rastrules::io::kMaxSceneBytes)
+    return 0;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   const auto read = rastrules::io::read_scene(text);
   if (const auto* err = std::get_if<SceneError>(&read)) {
@@ -61,17 +62,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto prepared = rastrules::prepare(scene);
   if (const auto* err = std::get_if<SceneError>(&prepared)) {
     check_error(*err, "prepare", &scene, data, size);
-    if (invalid.empty()) fz::fail("prepare rejects a scene the oracles find valid", {err->what()}, &scene, data, size);
+    if (invalid.empty())
+      fz::fail("prepare rejects a scene the oracles find valid", {err->what()}, &scene, data, size);
     return 0;
   }
-  if (!invalid.empty()) fz::fail("prepare accepts a scene the oracles find invalid", {invalid}, &scene, data, size);
+  if (!invalid.empty())
+    fz::fail("prepare accepts a scene the oracles find invalid", {invalid}, &scene, data, size);
 
   // Small scenes are drawn too (big targets would make one input slow, not more interesting).
   const auto& ps = std::get<rastrules::PreparedScene>(prepared);
   if (std::int64_t{ps.width} * ps.height <= 4096 && ps.primitives.size() <= 16) {
     const std::vector<rastrules::Fragment> fragments = rastrules::rasterize(ps);
     for (const rastrules::Fragment& f : fragments) {
-      if (f.x < 0 || f.y < 0 || f.x >= ps.width || f.y >= ps.height || f.prim >= ps.primitives.size()) {
+      if (f.x < 0 || f.y < 0 || f.x >= ps.width || f.y >= ps.height ||
+          f.prim >= ps.primitives.size()) {
         fz::fail("a fragment outside the target", {}, &scene, data, size);
       }
     }

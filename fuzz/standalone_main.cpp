@@ -25,34 +25,39 @@ bool run_file(const std::filesystem::path& path) {
     std::fprintf(stderr, "%s: cannot open\n", path.string().c_str());
     return false;
   }
-  const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::vector<char> bytes((std::istreambuf_iterator<char>(in)),
+                                std::istreambuf_iterator<char>());
   // A copy in a buffer of exactly the input's size, so that ASan sees reads past its end.
   std::vector<std::uint8_t> data(bytes.begin(), bytes.end());
   (void)LLVMFuzzerTestOneInput(data.empty() ? nullptr : data.data(), data.size());
   return true;
 }
 
-}  // namespace
+} // namespace
 
 int main(int argc, char** argv) {
   std::size_t ran = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (!arg.empty() && arg[0] == '-') continue;  // libFuzzer flags are ignored
+    if (!arg.empty() && arg[0] == '-')
+      continue; // libFuzzer flags are ignored
     const std::filesystem::path p(arg);
     std::error_code ec;
     if (std::filesystem::is_directory(p, ec)) {
       std::vector<std::filesystem::path> files;
       for (const auto& e : std::filesystem::directory_iterator(p, ec)) {
-        if (e.is_regular_file()) files.push_back(e.path());
+        if (e.is_regular_file())
+          files.push_back(e.path());
       }
       std::sort(files.begin(), files.end());
       for (const auto& f : files) {
-        if (!run_file(f)) return 2;
+        if (!run_file(f))
+          return 2;
         ++ran;
       }
     } else {
-      if (!run_file(p)) return 2;
+      if (!run_file(p))
+        return 2;
       ++ran;
     }
   }

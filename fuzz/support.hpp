@@ -16,15 +16,15 @@ namespace rastrules::fuzz {
 
 // Reads integers from the front of a byte string; past its end every read gives zero bytes.
 class ByteReader {
- public:
+public:
   ByteReader(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
   std::uint8_t byte();
-  std::uint16_t u16();       // little-endian
-  std::uint32_t u24();       // little-endian, in [0, 2^24)
-  std::uint32_t u32();       // little-endian
+  std::uint16_t u16(); // little-endian
+  std::uint32_t u24(); // little-endian, in [0, 2^24)
+  std::uint32_t u32(); // little-endian
   [[nodiscard]] std::size_t remaining() const { return size_ - pos_; }
 
- private:
+private:
   const std::uint8_t* data_;
   std::size_t size_;
   std::size_t pos_ = 0;
@@ -53,7 +53,8 @@ inline constexpr std::size_t kMaxAaSegments = 2;
 // oracle::aa_check (coverage within LINE.AA.PRECISION). Also checks the fragment list itself:
 // inside the target, sorted (SCENE.OUTPUT.FRAGMENTS), mask 1, seg on strips only, coverage on
 // antialiased lines only and in [1, 65536]. Preconditions: prepare(scene) succeeded.
-[[nodiscard]] std::vector<std::string> compare_with_oracles(const Scene& scene, const PreparedScene& ps,
+[[nodiscard]] std::vector<std::string> compare_with_oracles(const Scene& scene,
+                                                            const PreparedScene& ps,
                                                             const std::vector<Fragment>& kernel);
 
 // Returns why `scene` is invalid by the oracles' reading of spec/scene.md (a coordinate that
@@ -65,7 +66,7 @@ inline constexpr std::size_t kMaxAaSegments = 2;
 
 // Prints the failure, the scene file that reproduces it and the input bytes (hex) to stderr,
 // then aborts (libFuzzer saves the input as crash-*).
-[[noreturn]] void fail(const std::string& what, const std::vector<std::string>& details, const Scene* scene,
-                       const std::uint8_t* data, std::size_t size);
+[[noreturn]] void fail(const std::string& what, const std::vector<std::string>& details,
+                       const Scene* scene, const std::uint8_t* data, std::size_t size);
 
-}  // namespace rastrules::fuzz
+} // namespace rastrules::fuzz

@@ -40,21 +40,27 @@ fast_detail::FastEdges prepare_edges(const TriangleSetup& t, PixelRect r, std::i
   return f;
 }
 
-}  // namespace
+} // namespace
 
 // rule: FAST.ISA.DISPATCH, FAST.TILE.CLASSIFY, FAST.LANE.I32
-void fast_cover_rect(const TriangleSetup& t, PixelRect r, std::int32_t dx, std::int32_t dy,
-                     Isa isa, std::uint64_t* out, std::size_t words_per_row) {
+void fast_cover_rect(const TriangleSetup& t, PixelRect r, std::int32_t dx, std::int32_t dy, Isa isa,
+                     std::uint64_t* out, std::size_t words_per_row) {
   const fast_detail::FastEdges f = prepare_edges(t, r, dx, dy);
   switch (isa) {
 #if RASTRULES_FAST_X86
-    case Isa::kAvx512: fast_detail::cover_rect_avx512(f, r, out, words_per_row); return;
-    case Isa::kAvx2: fast_detail::cover_rect_avx2(f, r, out, words_per_row); return;
+  case Isa::kAvx512:
+    fast_detail::cover_rect_avx512(f, r, out, words_per_row);
+    return;
+  case Isa::kAvx2:
+    fast_detail::cover_rect_avx2(f, r, out, words_per_row);
+    return;
 #else
-    case Isa::kAvx512:
-    case Isa::kAvx2:  // never supported in this build (isa_supported): the same lanes, scalar
+  case Isa::kAvx512:
+  case Isa::kAvx2: // never supported in this build (isa_supported): the same lanes, scalar
 #endif
-    case Isa::kScalar: fast_detail::cover_rect_scalar(f, r, out, words_per_row); return;
+  case Isa::kScalar:
+    fast_detail::cover_rect_scalar(f, r, out, words_per_row);
+    return;
   }
   fast_detail::cover_rect_scalar(f, r, out, words_per_row);
 }
@@ -62,33 +68,40 @@ void fast_cover_rect(const TriangleSetup& t, PixelRect r, std::int32_t dx, std::
 // rule: FAST.EQUALS.PLAIN, FAST.ISA.DISPATCH
 std::uint64_t fast_count_covered(const TriangleSetup& t, std::int32_t width, std::int32_t height,
                                  Isa isa) {
-  if (t.status != TriangleStatus::kRasterized) return 0;
+  if (t.status != TriangleStatus::kRasterized)
+    return 0;
   const PixelRect r = pixel_bounds(t, width, height);
-  if (r.empty()) return 0;
+  if (r.empty())
+    return 0;
   // The whole rectangle at once, nothing stored: accepted tiles count their clipped area,
   // partial ones the popcount of each row's lane mask.
   const fast_detail::FastEdges f = prepare_edges(t, r, 0, 0);
   switch (isa) {
 #if RASTRULES_FAST_X86
-    case Isa::kAvx512: return fast_detail::count_rect_avx512(f, r);
-    case Isa::kAvx2: return fast_detail::count_rect_avx2(f, r);
+  case Isa::kAvx512:
+    return fast_detail::count_rect_avx512(f, r);
+  case Isa::kAvx2:
+    return fast_detail::count_rect_avx2(f, r);
 #else
-    case Isa::kAvx512:
-    case Isa::kAvx2:
+  case Isa::kAvx512:
+  case Isa::kAvx2:
 #endif
-    case Isa::kScalar: return fast_detail::count_rect_scalar(f, r);
+  case Isa::kScalar:
+    return fast_detail::count_rect_scalar(f, r);
   }
   return fast_detail::count_rect_scalar(f, r);
 }
 
 // rule: FAST.TILE.CLASSIFY
 FastTileCounts fast_tile_counts(const TriangleSetup& t, std::int32_t width, std::int32_t height) {
-  if (t.status != TriangleStatus::kRasterized) return {};
+  if (t.status != TriangleStatus::kRasterized)
+    return {};
   const PixelRect r = pixel_bounds(t, width, height);
-  if (r.empty()) return {};
+  if (r.empty())
+    return {};
   const fast_detail::TileCounts c = fast_detail::tile_counts_scalar(prepare_edges(t, r, 0, 0), r);
   return FastTileCounts{c.rejected,        c.accepted,        c.partial,
                         c.blocks_rejected, c.blocks_accepted, c.blocks_partial};
 }
 
-}  // namespace rastrules::raster
+} // namespace rastrules::raster

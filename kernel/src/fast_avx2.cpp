@@ -19,8 +19,8 @@ namespace rastrules::raster::fast_detail {
 namespace {
 
 struct Avx2Kernel {
-  __m256i lo[3], hi[3], step[3];  // lanes i A for i = 0..7 and 8..15; B
-  std::int32_t step_b[3];          // B
+  __m256i lo[3], hi[3], step[3]; // lanes i A for i = 0..7 and 8..15; B
+  std::int32_t step_b[3];        // B
 
   Avx2Kernel(const std::int32_t (&a)[3], const std::int32_t (&b)[3]) {
     const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
@@ -65,7 +65,7 @@ struct Avx2Kernel {
   }
 };
 
-}  // namespace
+} // namespace
 
 void cover_rect_avx2(const FastEdges& f, PixelRect r, std::uint64_t* out,
                      std::size_t words_per_row) {
@@ -76,6 +76,6 @@ std::uint64_t count_rect_avx2(const FastEdges& f, PixelRect r) {
   return count_rect_with<Avx2Kernel>(f, r);
 }
 
-}  // namespace rastrules::raster::fast_detail
+} // namespace rastrules::raster::fast_detail
 
 #endif

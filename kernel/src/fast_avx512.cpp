@@ -19,7 +19,7 @@ namespace rastrules::raster::fast_detail {
 namespace {
 
 struct Avx512Kernel {
-  __m512i base[3], step[3];  // lanes i A for i = 0..15; B
+  __m512i base[3], step[3]; // lanes i A for i = 0..15; B
 
   Avx512Kernel(const std::int32_t (&a)[3], const std::int32_t (&b)[3]) {
     const __m512i iota = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
@@ -55,7 +55,7 @@ struct Avx512Kernel {
   }
 };
 
-}  // namespace
+} // namespace
 
 void cover_rect_avx512(const FastEdges& f, PixelRect r, std::uint64_t* out,
                        std::size_t words_per_row) {
@@ -66,6 +66,6 @@ std::uint64_t count_rect_avx512(const FastEdges& f, PixelRect r) {
   return count_rect_with<Avx512Kernel>(f, r);
 }
 
-}  // namespace rastrules::raster::fast_detail
+} // namespace rastrules::raster::fast_detail
 
 #endif

@@ -20,7 +20,7 @@ static_assert(kBatchSmallSpan == batch_detail::kSmallSpan, "one small span");
 
 namespace {
 
-constexpr std::size_t kChunk = 1024;  // triangles handed to the SIMD unit at once
+constexpr std::size_t kChunk = 1024; // triangles handed to the SIMD unit at once
 
 struct Bad {
   int vertex = 0;
@@ -72,7 +72,8 @@ bool one_triangle(const Context& c, std::size_t i, FastBatchResult& r) {
     return false;
   }
   const TriangleSetup t = setup_triangle(v, c.state);
-  if (t.status != TriangleStatus::kRasterized) return true;
+  if (t.status != TriangleStatus::kRasterized)
+    return true;
   ++r.rasterized;
   std::uint64_t n = 0;
   if (c.hits.empty()) {
@@ -86,33 +87,36 @@ bool one_triangle(const Context& c, std::size_t i, FastBatchResult& r) {
     });
   }
   r.covered += n;
-  if (!c.per_triangle.empty()) c.per_triangle[i] = n;
+  if (!c.per_triangle.empty())
+    c.per_triangle[i] = n;
   return true;
 }
 
-}  // namespace
+} // namespace
 
 std::string describe(const FastBatchResult& r) {
   switch (r.status) {
-    case BatchStatus::kOk: return "ok";
-    case BatchStatus::kBadLength:
-      return "batch: the coordinates are not 6 floats a triangle, or an output does not have one "
-             "entry per triangle (per_triangle) or per pixel (hits)";
-    case BatchStatus::kBadTarget:
-      return "batch: the target's width and height must lie in [1, " +
-             std::to_string(kMaxTargetSide) + "]";
-    case BatchStatus::kBadIsa: return "batch: the instruction set is not supported on this processor";
-    case BatchStatus::kBadVertex:
-      return "batch: triangle " + std::to_string(r.bad_triangle) + ", vertex " +
-             std::to_string(r.bad_vertex) + ", " + std::string(1, r.bad_axis) + ": " +
-             std::string(to_string(r.bad_snap)) + " (SNAP.VERTEX.INVALID)";
+  case BatchStatus::kOk:
+    return "ok";
+  case BatchStatus::kBadLength:
+    return "batch: the coordinates are not 6 floats a triangle, or an output does not have one "
+           "entry per triangle (per_triangle) or per pixel (hits)";
+  case BatchStatus::kBadTarget:
+    return "batch: the target's width and height must lie in [1, " +
+           std::to_string(kMaxTargetSide) + "]";
+  case BatchStatus::kBadIsa:
+    return "batch: the instruction set is not supported on this processor";
+  case BatchStatus::kBadVertex:
+    return "batch: triangle " + std::to_string(r.bad_triangle) + ", vertex " +
+           std::to_string(r.bad_vertex) + ", " + std::string(1, r.bad_axis) + ": " +
+           std::string(to_string(r.bad_snap)) + " (SNAP.VERTEX.INVALID)";
   }
   return "batch: unknown status";
 }
 
 // rule: FAST.BATCH.EQUALS.PLAIN, FAST.ISA.DISPATCH
-FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width,
-                                 std::int32_t height, const RasterState& state, Isa isa,
+FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width, std::int32_t height,
+                                 const RasterState& state, Isa isa,
                                  std::span<std::uint64_t> per_triangle,
                                  std::span<std::uint32_t> hits) {
   FastBatchResult r;
@@ -140,13 +144,17 @@ FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width,
     p.height = height;
     // rule: TRI.FILL.CONVENTION
     // (formula::is_inclusive_edge's two flags)
-    p.top_inclusive = state.fill == FillConvention::kTopLeft || state.fill == FillConvention::kTopRight;
-    p.left_inclusive = state.fill == FillConvention::kTopLeft || state.fill == FillConvention::kBottomLeft;
+    p.top_inclusive =
+        state.fill == FillConvention::kTopLeft || state.fill == FillConvention::kTopRight;
+    p.left_inclusive =
+        state.fill == FillConvention::kTopLeft || state.fill == FillConvention::kBottomLeft;
     // rule: TRI.CULL.MODE
     // A clockwise triangle is front-facing iff front_face is kClockwise.
     const bool cw_front = state.front_face == FrontFace::kClockwise;
-    p.skip_cw = (state.cull == CullMode::kBack && !cw_front) || (state.cull == CullMode::kFront && cw_front);
-    p.skip_ccw = (state.cull == CullMode::kBack && cw_front) || (state.cull == CullMode::kFront && !cw_front);
+    p.skip_cw = (state.cull == CullMode::kBack && !cw_front) ||
+                (state.cull == CullMode::kFront && cw_front);
+    p.skip_ccw = (state.cull == CullMode::kBack && cw_front) ||
+                 (state.cull == CullMode::kFront && !cw_front);
     p.hits = hits.empty() ? nullptr : hits.data();
     std::array<std::uint32_t, kChunk> large;
     for (std::size_t base = 0; base < n; base += kChunk) {
@@ -159,7 +167,8 @@ FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width,
       r.rasterized += o.rasterized;
       r.small += o.small;
       for (std::size_t j = 0; j < k; ++j)
-        if (!one_triangle(c, base + large[j], r)) return r;  // cannot fail: all snapped
+        if (!one_triangle(c, base + large[j], r))
+          return r; // cannot fail: all snapped
       if (o.bad != static_cast<std::size_t>(-1)) {
         // The lanes reject exactly what snap_to_subpixel rejects (FAST.BATCH.SNAP_SIMD): the
         // plain way fails on the same triangle and says which coordinate and why.
@@ -171,8 +180,9 @@ FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width,
   }
 #endif
   for (std::size_t i = 0; i < n; ++i)
-    if (!one_triangle(c, i, r)) return r;
+    if (!one_triangle(c, i, r))
+      return r;
   return r;
 }
 
-}  // namespace rastrules::raster
+} // namespace rastrules::raster

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The batch counter's AVX2 unit (FAST.BATCH.SMALL_I32, FAST.BATCH.SNAP_SIMD): eight triangles
 // at a time are gathered, snapped, classified small or large, oriented, culled, bounded and set
-// up in 32-bit lanes; then each small one's rows (up to 16 pixels: two __m256i halves; up to 64: chunks
-// of eight) are tested and stepped. Compiled with -mavx2 on x86-64 (kernel/CMakeLists.txt); elsewhere empty.
-// Everything here is in an unnamed namespace or calls only intrinsics (fast_tiles.hpp says why).
-// Implements: FAST.BATCH.SMALL_I32, FAST.BATCH.SNAP_SIMD, FAST.BATCH.EQUALS.PLAIN
+// up in 32-bit lanes; then each small one's rows (up to 16 pixels: two __m256i halves; up to 64:
+// chunks of eight) are tested and stepped. Compiled with -mavx2 on x86-64 (kernel/CMakeLists.txt);
+// elsewhere empty. Everything here is in an unnamed namespace or calls only intrinsics
+// (fast_tiles.hpp says why). Implements: FAST.BATCH.SMALL_I32, FAST.BATCH.SNAP_SIMD,
+// FAST.BATCH.EQUALS.PLAIN
 
 #include <cstddef>
 #include <cstdint>
@@ -21,16 +22,18 @@ namespace {
 
 // One group's set-up lanes, stored for the per-triangle row loops.
 struct Lanes {
-  alignas(32) std::int32_t e[3][8];  // E + bias at the sample point of the first pixel
-  alignas(32) std::int32_t a[3][8];  // 256 A: E's step per pixel along x
-  alignas(32) std::int32_t b[3][8];  // 256 B: E's step per row
-  alignas(32) std::int32_t x0[8];    // first pixel
+  alignas(32) std::int32_t e[3][8]; // E + bias at the sample point of the first pixel
+  alignas(32) std::int32_t a[3][8]; // 256 A: E's step per pixel along x
+  alignas(32) std::int32_t b[3][8]; // 256 B: E's step per row
+  alignas(32) std::int32_t x0[8];   // first pixel
   alignas(32) std::int32_t y0[8];
-  alignas(32) std::int32_t cols[8];  // pixels per row, 1..64
-  alignas(32) std::int32_t rows[8];  // rows, 1..64
+  alignas(32) std::int32_t cols[8]; // pixels per row, 1..64
+  alignas(32) std::int32_t rows[8]; // rows, 1..64
 };
 
-inline int mask_of(__m256i m) { return _mm256_movemask_ps(_mm256_castsi256_ps(m)); }
+inline int mask_of(__m256i m) {
+  return _mm256_movemask_ps(_mm256_castsi256_ps(m));
+}
 
 inline std::uint32_t hsum(__m256i v) {
   __m128i s = _mm_add_epi32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
@@ -84,9 +87,11 @@ inline std::uint32_t cover_one(const Lanes& g, int t, std::uint32_t* hit, std::s
         auto* p = reinterpret_cast<int*>(hit + static_cast<std::size_t>(j) * stride + 8);
         _mm256_maskstore_epi32(p, in_hi, _mm256_sub_epi32(_mm256_maskload_epi32(p, in_hi), in_hi));
       }
-      for (int k = 0; k < 3; ++k) hi[k] = _mm256_add_epi32(hi[k], shi[k]);
+      for (int k = 0; k < 3; ++k)
+        hi[k] = _mm256_add_epi32(hi[k], shi[k]);
     }
-    for (int k = 0; k < 3; ++k) lo[k] = _mm256_add_epi32(lo[k], slo[k]);
+    for (int k = 0; k < 3; ++k)
+      lo[k] = _mm256_add_epi32(lo[k], slo[k]);
   }
   return hsum(acc);
 }
@@ -133,28 +138,32 @@ inline std::uint32_t cover_rows(const Lanes& g, int t, std::uint32_t* hit, std::
         _mm256_maskstore_epi32(q, in, _mm256_sub_epi32(_mm256_maskload_epi32(q, in), in));
       }
     }
-    for (int k = 0; k < 3; ++k) row[k] = _mm256_add_epi32(row[k], down[k]);
+    for (int k = 0; k < 3; ++k)
+      row[k] = _mm256_add_epi32(row[k], down[k]);
   }
   return hsum(acc);
 }
 
-template <bool kHits>
-inline std::uint32_t cover(const Lanes& g, int t, const Params& p) {
+template <bool kHits> inline std::uint32_t cover(const Lanes& g, int t, const Params& p) {
   std::uint32_t* hit = nullptr;
   if constexpr (kHits)
     hit = p.hits + static_cast<std::size_t>(g.y0[t]) * static_cast<std::size_t>(p.width) +
           static_cast<std::size_t>(g.x0[t]);
   const auto stride = static_cast<std::size_t>(p.width);
-  if (g.cols[t] > 16) return cover_rows<kHits>(g, t, hit, stride);
+  if (g.cols[t] > 16)
+    return cover_rows<kHits>(g, t, hit, stride);
   return g.cols[t] > 8 ? cover_one<kHits, true>(g, t, hit, stride)
                        : cover_one<kHits, false>(g, t, hit, stride);
 }
 
-inline unsigned ctz(unsigned m) { return static_cast<unsigned>(__builtin_ctz(m)); }
-inline unsigned popcount(unsigned m) { return static_cast<unsigned>(__builtin_popcount(m)); }
+inline unsigned ctz(unsigned m) {
+  return static_cast<unsigned>(__builtin_ctz(m));
+}
+inline unsigned popcount(unsigned m) {
+  return static_cast<unsigned>(__builtin_popcount(m));
+}
 
-template <bool kHits>
-std::size_t run(const Params& p, Out& out, std::uint32_t* large) {
+template <bool kHits> std::size_t run(const Params& p, Out& out, std::uint32_t* large) {
   std::size_t nlarge = 0;
   const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
   const __m256i idx6 = _mm256_setr_epi32(0, 6, 12, 18, 24, 30, 36, 42);
@@ -182,13 +191,14 @@ std::size_t run(const Params& p, Out& out, std::uint32_t* large) {
     __m256i c[6];
     int bad = 0;
     for (int k = 0; k < 6; ++k) {
-      const __m256 f =
-          _mm256_mask_i32gather_ps(_mm256_setzero_ps(), src + k, idx6, _mm256_castsi256_ps(active), 4);
-      const __m256 r = _mm256_round_ps(_mm256_mul_ps(f, scale), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+      const __m256 f = _mm256_mask_i32gather_ps(_mm256_setzero_ps(), src + k, idx6,
+                                                _mm256_castsi256_ps(active), 4);
+      const __m256 r =
+          _mm256_round_ps(_mm256_mul_ps(f, scale), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
       const __m256 ok = _mm256_and_ps(_mm256_cmp_ps(r, lowest, _CMP_GE_OQ),
                                       _mm256_cmp_ps(r, highest, _CMP_LE_OQ));
       bad |= ~_mm256_movemask_ps(ok) & 0xFF;
-      c[k] = _mm256_cvtps_epi32(r);  // r is an integer in range: exact in any rounding mode
+      c[k] = _mm256_cvtps_epi32(r); // r is an integer in range: exact in any rounding mode
     }
     if (bad != 0) {
       out.bad = base + ctz(static_cast<unsigned>(bad));
@@ -210,17 +220,19 @@ std::size_t run(const Params& p, Out& out, std::uint32_t* large) {
          rest &= rest - 1)
       large[nlarge++] = static_cast<std::uint32_t>(base + ctz(rest));
     // rule: TRI.ORIENT.AREA, TRI.DEGENERATE.ZERO_AREA, TRI.CULL.MODE, TRI.ORIENT.NORMALISE
-    const __m256i area =
-        _mm256_sub_epi32(_mm256_mullo_epi32(_mm256_sub_epi32(x[1], x[0]), _mm256_sub_epi32(y[2], y[0])),
-                         _mm256_mullo_epi32(_mm256_sub_epi32(y[1], y[0]), _mm256_sub_epi32(x[2], x[0])));
+    const __m256i area = _mm256_sub_epi32(
+        _mm256_mullo_epi32(_mm256_sub_epi32(x[1], x[0]), _mm256_sub_epi32(y[2], y[0])),
+        _mm256_mullo_epi32(_mm256_sub_epi32(y[1], y[0]), _mm256_sub_epi32(x[2], x[0])));
     const __m256i cw = _mm256_cmpgt_epi32(area, zero);
     const __m256i ccw = _mm256_cmpgt_epi32(zero, area);
     const __m256i keep = _mm256_and_si256(
         small, _mm256_or_si256(_mm256_and_si256(cw, keep_cw), _mm256_and_si256(ccw, keep_ccw)));
     out.rasterized += popcount(static_cast<unsigned>(mask_of(keep)));
     {
-      const __m256i x1 = _mm256_blendv_epi8(x[1], x[2], ccw), x2 = _mm256_blendv_epi8(x[2], x[1], ccw);
-      const __m256i y1 = _mm256_blendv_epi8(y[1], y[2], ccw), y2 = _mm256_blendv_epi8(y[2], y[1], ccw);
+      const __m256i x1 = _mm256_blendv_epi8(x[1], x[2], ccw),
+                    x2 = _mm256_blendv_epi8(x[2], x[1], ccw);
+      const __m256i y1 = _mm256_blendv_epi8(y[1], y[2], ccw),
+                    y2 = _mm256_blendv_epi8(y[2], y[1], ccw);
       x[1] = x1;
       x[2] = x2;
       y[1] = y1;
@@ -229,16 +241,21 @@ std::size_t run(const Params& p, Out& out, std::uint32_t* large) {
     // rule: RASTER.WALK.BBOX, RASTER.TARGET.CLIP
     // Pixel p's centre p * 256 + 128 lies in [min, max] iff ceil((min - 128) / 256) <= p <=
     // floor((max - 128) / 256); arithmetic shifts are floors.
-    const __m256i px0 = _mm256_max_epi32(_mm256_srai_epi32(_mm256_add_epi32(minx, _mm256_set1_epi32(127)), 8), zero);
-    const __m256i py0 = _mm256_max_epi32(_mm256_srai_epi32(_mm256_add_epi32(miny, _mm256_set1_epi32(127)), 8), zero);
-    const __m256i px1 = _mm256_min_epi32(_mm256_srai_epi32(_mm256_sub_epi32(maxx, _mm256_set1_epi32(128)), 8), last_x);
-    const __m256i py1 = _mm256_min_epi32(_mm256_srai_epi32(_mm256_sub_epi32(maxy, _mm256_set1_epi32(128)), 8), last_y);
+    const __m256i px0 = _mm256_max_epi32(
+        _mm256_srai_epi32(_mm256_add_epi32(minx, _mm256_set1_epi32(127)), 8), zero);
+    const __m256i py0 = _mm256_max_epi32(
+        _mm256_srai_epi32(_mm256_add_epi32(miny, _mm256_set1_epi32(127)), 8), zero);
+    const __m256i px1 = _mm256_min_epi32(
+        _mm256_srai_epi32(_mm256_sub_epi32(maxx, _mm256_set1_epi32(128)), 8), last_x);
+    const __m256i py1 = _mm256_min_epi32(
+        _mm256_srai_epi32(_mm256_sub_epi32(maxy, _mm256_set1_epi32(128)), 8), last_y);
     const __m256i ncols = _mm256_sub_epi32(_mm256_add_epi32(px1, _mm256_set1_epi32(1)), px0);
     const __m256i nrows = _mm256_sub_epi32(_mm256_add_epi32(py1, _mm256_set1_epi32(1)), py0);
     const __m256i live = _mm256_and_si256(
         keep, _mm256_and_si256(_mm256_cmpgt_epi32(ncols, zero), _mm256_cmpgt_epi32(nrows, zero)));
     const unsigned live_bits = static_cast<unsigned>(mask_of(live));
-    if (live_bits == 0) continue;
+    if (live_bits == 0)
+      continue;
     const __m256i sx = _mm256_add_epi32(_mm256_slli_epi32(px0, 8), _mm256_set1_epi32(128));
     const __m256i sy = _mm256_add_epi32(_mm256_slli_epi32(py0, 8), _mm256_set1_epi32(128));
     for (int k = 0; k < 3; ++k) {
@@ -248,8 +265,10 @@ std::size_t run(const Params& p, Out& out, std::uint32_t* large) {
       const __m256i e = _mm256_add_epi32(_mm256_mullo_epi32(B, _mm256_sub_epi32(sy, ay)),
                                          _mm256_mullo_epi32(A, _mm256_sub_epi32(sx, ax)));
       const __m256i horizontal = _mm256_cmpeq_epi32(ay, by);
-      const __m256i h_ok = p.top_inclusive ? _mm256_cmpgt_epi32(bx, ax) : _mm256_cmpgt_epi32(ax, bx);
-      const __m256i v_ok = p.left_inclusive ? _mm256_cmpgt_epi32(ay, by) : _mm256_cmpgt_epi32(by, ay);
+      const __m256i h_ok =
+          p.top_inclusive ? _mm256_cmpgt_epi32(bx, ax) : _mm256_cmpgt_epi32(ax, bx);
+      const __m256i v_ok =
+          p.left_inclusive ? _mm256_cmpgt_epi32(ay, by) : _mm256_cmpgt_epi32(by, ay);
       const __m256i inclusive = _mm256_blendv_epi8(v_ok, h_ok, horizontal);
       // bias: 0 for an inclusive edge, -1 otherwise
       _mm256_store_si256(reinterpret_cast<__m256i*>(g.e[k]),
@@ -265,18 +284,19 @@ std::size_t run(const Params& p, Out& out, std::uint32_t* large) {
       const int t = static_cast<int>(ctz(bits));
       const std::uint32_t n = cover<kHits>(g, t, p);
       out.covered += n;
-      if (p.per_triangle != nullptr) p.per_triangle[base + static_cast<std::size_t>(t)] = n;
+      if (p.per_triangle != nullptr)
+        p.per_triangle[base + static_cast<std::size_t>(t)] = n;
     }
   }
   return nlarge;
 }
 
-}  // namespace
+} // namespace
 
 std::size_t small_batch_avx2(const Params& p, Out& out, std::uint32_t* large) {
   return p.hits != nullptr ? run<true>(p, out, large) : run<false>(p, out, large);
 }
 
-}  // namespace rastrules::raster::batch_detail
+} // namespace rastrules::raster::batch_detail
 
 #endif

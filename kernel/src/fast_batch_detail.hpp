@@ -20,23 +20,23 @@ namespace rastrules::raster::batch_detail {
 inline constexpr std::int32_t kSmallSpan = 64 * 256;
 
 struct Params {
-  const float* xy = nullptr;  // 6 floats a triangle
-  std::size_t n = 0;          // triangles
+  const float* xy = nullptr; // 6 floats a triangle
+  std::size_t n = 0;         // triangles
   std::int32_t width = 0;
   std::int32_t height = 0;
-  bool top_inclusive = true;   // TRI.FILL.CONVENTION, as formula::is_inclusive_edge's flags
+  bool top_inclusive = true; // TRI.FILL.CONVENTION, as formula::is_inclusive_edge's flags
   bool left_inclusive = true;
-  bool skip_cw = false;        // TRI.CULL.MODE: clockwise triangles are culled
-  bool skip_ccw = false;       // counter-clockwise triangles are culled
-  std::uint64_t* per_triangle = nullptr;  // n entries, zeroed by the caller, or null
-  std::uint32_t* hits = nullptr;          // width * height, or null
+  bool skip_cw = false;                  // TRI.CULL.MODE: clockwise triangles are culled
+  bool skip_ccw = false;                 // counter-clockwise triangles are culled
+  std::uint64_t* per_triangle = nullptr; // n entries, zeroed by the caller, or null
+  std::uint32_t* hits = nullptr;         // width * height, or null
 };
 
 struct Out {
   std::uint64_t covered = 0;
-  std::uint64_t rasterized = 0;  // small triangles only
+  std::uint64_t rasterized = 0; // small triangles only
   std::uint64_t small = 0;
-  std::size_t bad = static_cast<std::size_t>(-1);  // first triangle that does not snap
+  std::size_t bad = static_cast<std::size_t>(-1); // first triangle that does not snap
 };
 
 #if RASTRULES_FAST_X86
@@ -48,4 +48,4 @@ struct Out {
 std::size_t small_batch_avx2(const Params& p, Out& out, std::uint32_t* large);
 #endif
 
-}  // namespace rastrules::raster::batch_detail
+} // namespace rastrules::raster::batch_detail

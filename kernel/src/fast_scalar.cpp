@@ -17,7 +17,7 @@ namespace {
 struct ScalarKernel {
   std::int32_t a[3];
   std::int32_t b[3];
-  std::int32_t base[3][kTile];  // lane_offset(i, 0) = i A
+  std::int32_t base[3][kTile]; // lane_offset(i, 0) = i A
 
   ScalarKernel(const std::int32_t (&a_)[3], const std::int32_t (&b_)[3]) : a{}, b{}, base{} {
     for (int k = 0; k < 3; ++k) {
@@ -44,12 +44,13 @@ struct ScalarKernel {
         bits |= static_cast<std::uint32_t>(in) << i;
       }
       sink.row(tx, ty + j, bits & cols);
-      for (int k = 0; k < 3; ++k) jb[k] += b[k];
+      for (int k = 0; k < 3; ++k)
+        jb[k] += b[k];
     }
   }
 };
 
-}  // namespace
+} // namespace
 
 void cover_rect_scalar(const FastEdges& f, PixelRect r, std::uint64_t* out,
                        std::size_t words_per_row) {
@@ -66,4 +67,4 @@ TileCounts tile_counts_scalar(const FastEdges& f, PixelRect r) {
   return sink.counts;
 }
 
-}  // namespace rastrules::raster::fast_detail
+} // namespace rastrules::raster::fast_detail

@@ -32,9 +32,9 @@ struct FastEdges {
   // E + bias (FIX.BIAS.FORM) of each edge at the sample point of the first pixel (tx0, ty0)
   // of the rectangle's first tile, evaluated directly (TRI.EDGE.FUNCTION, 64-bit).
   std::int64_t e_first[3];
-  std::int32_t a[3];  // A = ay - by: the lane step along x (FAST.LANE.I32)
-  std::int32_t b[3];  // B = bx - ax: the lane step along y
-  std::int32_t tx0;   // first pixel of the first tile: the rectangle's first pixel
+  std::int32_t a[3]; // A = ay - by: the lane step along x (FAST.LANE.I32)
+  std::int32_t b[3]; // B = bx - ax: the lane step along y
+  std::int32_t tx0;  // first pixel of the first tile: the rectangle's first pixel
   std::int32_t ty0;
 };
 
@@ -50,13 +50,16 @@ struct TileCounts {
 
 // The entry points of each instruction set. cover_rect writes fast_cover_rect's output;
 // count_rect returns the number of covered sample points of r; tile_counts the classification.
-void cover_rect_scalar(const FastEdges& f, PixelRect r, std::uint64_t* out, std::size_t words_per_row);
+void cover_rect_scalar(const FastEdges& f, PixelRect r, std::uint64_t* out,
+                       std::size_t words_per_row);
 std::uint64_t count_rect_scalar(const FastEdges& f, PixelRect r);
 TileCounts tile_counts_scalar(const FastEdges& f, PixelRect r);
 #if RASTRULES_FAST_X86
-void cover_rect_avx2(const FastEdges& f, PixelRect r, std::uint64_t* out, std::size_t words_per_row);
+void cover_rect_avx2(const FastEdges& f, PixelRect r, std::uint64_t* out,
+                     std::size_t words_per_row);
 std::uint64_t count_rect_avx2(const FastEdges& f, PixelRect r);
-void cover_rect_avx512(const FastEdges& f, PixelRect r, std::uint64_t* out, std::size_t words_per_row);
+void cover_rect_avx512(const FastEdges& f, PixelRect r, std::uint64_t* out,
+                       std::size_t words_per_row);
 std::uint64_t count_rect_avx512(const FastEdges& f, PixelRect r);
 #endif
 
@@ -66,8 +69,12 @@ constexpr std::int32_t kTile = 16;
 constexpr std::int32_t kLast = kTile - 1;
 constexpr std::int32_t kBlock = 4 * kTile;
 
-constexpr std::int32_t min32(std::int32_t x, std::int32_t y) { return x < y ? x : y; }
-constexpr std::int32_t max32(std::int32_t x, std::int32_t y) { return x > y ? x : y; }
+constexpr std::int32_t min32(std::int32_t x, std::int32_t y) {
+  return x < y ? x : y;
+}
+constexpr std::int32_t max32(std::int32_t x, std::int32_t y) {
+  return x > y ? x : y;
+}
 
 // Bits i0..i1 of a 16-bit row (0 <= i0 <= i1 <= 15).
 constexpr std::uint32_t column_mask(std::int32_t i0, std::int32_t i1) {
@@ -79,7 +86,8 @@ constexpr std::uint64_t popcount32(std::uint32_t m) {
   return static_cast<std::uint64_t>(__builtin_popcount(m));
 #else
   std::uint64_t n = 0;
-  for (; m != 0; m &= m - 1) ++n;
+  for (; m != 0; m &= m - 1)
+    ++n;
   return n;
 #endif
 }
@@ -92,8 +100,7 @@ constexpr std::uint64_t popcount32(std::uint32_t m) {
 //   sink.row(tx, y, bits): the covered columns tx+i of row y (already clipped to r).
 // Kernel(a, b) prepares the lanes i A of a row (the same in every tile: only the threshold
 // depends on the tile); kernel.tile(c, j0, j1, cols, sink, tx, ty) runs a partial tile's rows.
-template <class Kernel, class Sink>
-inline void drive(const FastEdges& f, PixelRect r, Sink& sink) {
+template <class Kernel, class Sink> inline void drive(const FastEdges& f, PixelRect r, Sink& sink) {
   // One tile step along x (y) adds 16 pixels' worth of E: 16 * 256 * A (B), a block step 64
   // pixels' worth; exact in int64 (|A| < 2^24: |step| < 2^38; FIX.STEP.INCREMENTAL).
   const auto select = [](bool cond, std::int64_t x, std::int64_t y) { return cond ? x : y; };
@@ -161,11 +168,11 @@ inline void drive(const FastEdges& f, PixelRect r, Sink& sink) {
             // q = floor((E0 + bias) / 256) by an arithmetic shift; C = -q clamped to
             // [-2^30, 2^30]: lane (i, j) is inside iff i A + j B >= C.
             const std::int64_t q = e[k] >> 8;
-            c[k] = static_cast<std::int32_t>(
-                formula::lane_threshold<std::int64_t>(q, std::int64_t{formula::kLaneBound}, select));
+            c[k] = static_cast<std::int32_t>(formula::lane_threshold<std::int64_t>(
+                q, std::int64_t{formula::kLaneBound}, select));
             // rule: FAST.TILE.CLASSIFY
             reject |= lmax[k] < c[k];  // no lane of the tile inside this edge
-            accept &= lmin[k] >= c[k];  // every lane of the tile inside this edge
+            accept &= lmin[k] >= c[k]; // every lane of the tile inside this edge
             e[k] += step_x[k];
           }
           if (reject) {
@@ -176,11 +183,14 @@ inline void drive(const FastEdges& f, PixelRect r, Sink& sink) {
             kernel.tile(c, j0, j1, cols, sink, tx, ty);
           }
         }
-        for (int k = 0; k < 3; ++k) row_e[k] += step_y[k];
+        for (int k = 0; k < 3; ++k)
+          row_e[k] += step_y[k];
       }
-      for (int k = 0; k < 3; ++k) be[k] += block_x[k];
+      for (int k = 0; k < 3; ++k)
+        be[k] += block_x[k];
     }
-    for (int k = 0; k < 3; ++k) block_row_e[k] += block_y[k];
+    for (int k = 0; k < 3; ++k)
+      block_row_e[k] += block_y[k];
   }
 }
 
@@ -191,8 +201,9 @@ struct BitSink {
   PixelRect r;
 
   void put(std::int32_t tx, std::int32_t y, std::uint32_t bits) const {
-    if (bits == 0) return;
-    std::int32_t off = tx - r.x0;  // >= -15: the tile may start left of r (those bits are 0)
+    if (bits == 0)
+      return;
+    std::int32_t off = tx - r.x0; // >= -15: the tile may start left of r (those bits are 0)
     if (off < 0) {
       bits >>= -off;
       off = 0;
@@ -203,7 +214,8 @@ struct BitSink {
     row[w] |= std::uint64_t{bits} << s;
     if (s > 48) {
       const std::uint64_t hi = std::uint64_t{bits} >> (64 - s);
-      if (hi != 0) row[w + 1] |= hi;
+      if (hi != 0)
+        row[w + 1] |= hi;
     }
   }
   void block(int) const {}
@@ -211,7 +223,8 @@ struct BitSink {
   bool partial() const { return true; }
   void accept(std::int32_t tx, std::int32_t ty, std::int32_t j0, std::int32_t j1,
               std::uint32_t cols) const {
-    for (std::int32_t j = j0; j <= j1; ++j) put(tx, ty + j, cols);
+    for (std::int32_t j = j0; j <= j1; ++j)
+      put(tx, ty + j, cols);
   }
   void row(std::int32_t tx, std::int32_t y, std::uint32_t bits) const { put(tx, y, bits); }
 };
@@ -230,9 +243,12 @@ struct CountSink {
 struct ClassSink {
   TileCounts counts;
   void block(int kind) {
-    if (kind == 0) ++counts.blocks_rejected;
-    else if (kind == 1) ++counts.blocks_accepted;
-    else ++counts.blocks_partial;
+    if (kind == 0)
+      ++counts.blocks_rejected;
+    else if (kind == 1)
+      ++counts.blocks_accepted;
+    else
+      ++counts.blocks_partial;
   }
   void reject() { ++counts.rejected; }
   bool partial() {
@@ -254,13 +270,12 @@ inline void cover_rect_with(const FastEdges& f, PixelRect r, std::uint64_t* out,
   drive<Kernel>(f, r, sink);
 }
 
-template <class Kernel>
-inline std::uint64_t count_rect_with(const FastEdges& f, PixelRect r) {
+template <class Kernel> inline std::uint64_t count_rect_with(const FastEdges& f, PixelRect r) {
   CountSink sink;
   drive<Kernel>(f, r, sink);
   return sink.n;
 }
 
-}  // namespace
+} // namespace
 
-}  // namespace rastrules::raster::fast_detail
+} // namespace rastrules::raster::fast_detail

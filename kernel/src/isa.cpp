@@ -9,43 +9,50 @@ namespace rastrules {
 
 std::string_view to_string(Isa isa) {
   switch (isa) {
-    case Isa::kScalar: return "scalar";
-    case Isa::kAvx2: return "avx2";
-    case Isa::kAvx512: return "avx512";
+  case Isa::kScalar:
+    return "scalar";
+  case Isa::kAvx2:
+    return "avx2";
+  case Isa::kAvx512:
+    return "avx512";
   }
   return "?";
 }
 
 std::optional<Isa> parse_isa(std::string_view name) {
   for (Isa isa : {Isa::kScalar, Isa::kAvx2, Isa::kAvx512})
-    if (name == to_string(isa)) return isa;
+    if (name == to_string(isa))
+      return isa;
   return std::nullopt;
 }
 
 std::optional<Isa> isa_cap() {
   const char* value = std::getenv(kMaxIsaVariable);
-  if (value == nullptr || *value == '\0') return std::nullopt;
+  if (value == nullptr || *value == '\0')
+    return std::nullopt;
   return parse_isa(value).value_or(Isa::kScalar);
 }
 
 // rule: FAST.ISA.DISPATCH
 bool isa_supported(Isa isa) {
-  if (const std::optional<Isa> cap = isa_cap(); cap && static_cast<int>(isa) > static_cast<int>(*cap))
+  if (const std::optional<Isa> cap = isa_cap();
+      cap && static_cast<int>(isa) > static_cast<int>(*cap))
     return false;
   switch (isa) {
-    case Isa::kScalar: return true;
+  case Isa::kScalar:
+    return true;
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-    case Isa::kAvx2:
-      __builtin_cpu_init();
-      return __builtin_cpu_supports("avx2") != 0;
-    case Isa::kAvx512:
-      __builtin_cpu_init();
-      return __builtin_cpu_supports("avx512f") != 0 && __builtin_cpu_supports("avx512bw") != 0 &&
-             __builtin_cpu_supports("avx512vl") != 0;
+  case Isa::kAvx2:
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+  case Isa::kAvx512:
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") != 0 && __builtin_cpu_supports("avx512bw") != 0 &&
+           __builtin_cpu_supports("avx512vl") != 0;
 #else
-    case Isa::kAvx2:
-    case Isa::kAvx512:
-      return false;
+  case Isa::kAvx2:
+  case Isa::kAvx512:
+    return false;
 #endif
   }
   return false;
@@ -59,14 +66,20 @@ Isa best_isa() {
   return best;
 }
 
-Isa effective_isa(const RenderOptions& options) { return options.isa ? *options.isa : best_isa(); }
+Isa effective_isa(const RenderOptions& options) {
+  return options.isa ? *options.isa : best_isa();
+}
 
-std::string_view to_string(Traversal t) { return t == Traversal::kPlain ? "plain" : "fast"; }
+std::string_view to_string(Traversal t) {
+  return t == Traversal::kPlain ? "plain" : "fast";
+}
 
 std::optional<Traversal> parse_traversal(std::string_view name) {
-  if (name == "plain") return Traversal::kPlain;
-  if (name == "fast") return Traversal::kFast;
+  if (name == "plain")
+    return Traversal::kPlain;
+  if (name == "fast")
+    return Traversal::kFast;
   return std::nullopt;
 }
 
-}  // namespace rastrules
+} // namespace rastrules

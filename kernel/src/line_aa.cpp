@@ -35,13 +35,14 @@ constexpr std::array<I64, 5> kHalfRaw = {128, 192, 256, 320, 384};
 constexpr std::array<I64, 5> kWeight = {3600, 1600, 900, 576, 400};
 constexpr I64 kWeightDen = 18000;
 constexpr I64 kR4HalfRaw = 384;
-constexpr I64 kHalfWidthRaw = 128;  // the rectangle is 1 px wide: 0.5 px either side
+constexpr I64 kHalfWidthRaw = 128; // the rectangle is 1 px wide: 0.5 px either side
 
 // Returns floor(sqrt(v)).
 U128 isqrt(U128 v) {
   U128 r = 0;
   U128 bit = U128{1} << 126;
-  while (bit > v) bit >>= 2;
+  while (bit > v)
+    bit >>= 2;
   while (bit != 0) {
     if (v >= r + bit) {
       v -= r + bit;
@@ -54,12 +55,13 @@ U128 isqrt(U128 v) {
   return r;
 }
 
-I64 floor_div(I64 n, I64 d) {  // d > 0
+I64 floor_div(I64 n, I64 d) { // d > 0
   I64 q = n / d;
-  if ((n % d != 0) && (n < 0)) --q;
+  if ((n % d != 0) && (n < 0))
+    --q;
   return q;
 }
-I64 ceil_div(I64 n, I64 d) {  // d > 0
+I64 ceil_div(I64 n, I64 d) { // d > 0
   return -floor_div(-n, d);
 }
 
@@ -78,7 +80,9 @@ I128 div_round(I128 num, I128 den) {
 
 // Returns whether v * sqrt(D) < w, for D > 0 and w >= 0, exactly (callers: |v| < 2^26,
 // w < 2^31, D < 2^49, so v^2 D < 2^101 and w^2 < 2^62; proofs/line_aa/aa_formulas.cpp).
-bool times_sqrt_less(I128 v, I128 w, I128 D) { return formula::times_sqrt_less<I128>(v, w, D); }
+bool times_sqrt_less(I128 v, I128 w, I128 D) {
+  return formula::times_sqrt_less<I128>(v, w, D);
+}
 
 struct Pt {
   I128 x;
@@ -102,7 +106,8 @@ struct HalfPlane {
 // Sutherland-Hodgman against one half-plane; new vertices rounded to the nearest unit.
 Poly clip(const Poly& in, const HalfPlane& h) {
   Poly out;
-  if (in.n == 0) return out;
+  if (in.n == 0)
+    return out;
   auto side = [&](const Pt& p) { return I128{h.nx} * p.x + I128{h.ny} * p.y - h.k; };
   for (int i = 0; i < in.n; ++i) {
     const Pt& prev = in.v[static_cast<std::size_t>((i + in.n - 1) % in.n)];
@@ -117,7 +122,8 @@ Poly clip(const Poly& in, const HalfPlane& h) {
       out.v[static_cast<std::size_t>(out.n++)] =
           Pt{div_round(prev.x * -sc + cur.x * sp, den), div_round(prev.y * -sc + cur.y * sp, den)};
     }
-    if (cur_in) out.v[static_cast<std::size_t>(out.n++)] = cur;
+    if (cur_in)
+      out.v[static_cast<std::size_t>(out.n++)] = cur;
   }
   return out;
 }
@@ -134,7 +140,7 @@ I128 twice_area(const Poly& p) {
 }
 
 struct Frame {
-  I64 ax, ay, bx, by;  // endpoints relative to the pixel centre, raw units
+  I64 ax, ay, bx, by; // endpoints relative to the pixel centre, raw units
 };
 
 // Returns the canonical representative of the line relative to the pixel centre under the
@@ -148,7 +154,8 @@ Frame canonical(I64 ax, I64 ay, I64 bx, I64 by) {
     const I64 sy = (t & 2) ? -1 : 1;
     Frame f = (t & 4) ? Frame{sx * bx, sy * by, sx * ax, sy * ay}
                       : Frame{sx * ax, sy * ay, sx * bx, sy * by};
-    if (f.bx - f.ax < 0 || f.by - f.ay < 0) continue;
+    if (f.bx - f.ax < 0 || f.by - f.ay < 0)
+      continue;
     const auto key = [](const Frame& g) { return std::array<I64, 4>{g.ax, g.ay, g.bx, g.by}; };
     if (!have || key(f) < key(best)) {
       best = f;
@@ -167,25 +174,31 @@ bool overlaps_r4(const Frame& f, I64 D) {
   const I128 w = I128{kHalfWidthRaw};
   const I128 D128 = D;
   // x: rectangle x-extent [ax - 128 dy / L, bx + 128 dy / L] against (-384, 384).
-  if (!times_sqrt_less(I128{f.ax} - kR4HalfRaw, w * dy, D128)) return false;
-  if (!times_sqrt_less(-(I128{f.bx} + kR4HalfRaw), w * dy, D128)) return false;
+  if (!times_sqrt_less(I128{f.ax} - kR4HalfRaw, w * dy, D128))
+    return false;
+  if (!times_sqrt_less(-(I128{f.bx} + kR4HalfRaw), w * dy, D128))
+    return false;
   // y: [ay - 128 dx / L, by + 128 dx / L].
-  if (!times_sqrt_less(I128{f.ay} - kR4HalfRaw, w * dx, D128)) return false;
-  if (!times_sqrt_less(-(I128{f.by} + kR4HalfRaw), w * dx, D128)) return false;
+  if (!times_sqrt_less(I128{f.ay} - kR4HalfRaw, w * dx, D128))
+    return false;
+  if (!times_sqrt_less(-(I128{f.by} + kR4HalfRaw), w * dx, D128))
+    return false;
   // d: rectangle [d.A, d.B], square (-S, S) with S = 384 (dx + dy).
   const I128 S = I128{kR4HalfRaw} * (dx + dy);
   const I128 dA = I128{dx} * f.ax + I128{dy} * f.ay;
   const I128 dB = I128{dx} * f.bx + I128{dy} * f.by;
-  if (!(dA < S && dB > -S)) return false;
+  if (!(dA < S && dB > -S))
+    return false;
   // normal n1 = (-dy, dx): rectangle n1.A +- 128 L, square (-S, S).
   I128 nA = -I128{dy} * f.ax + I128{dx} * f.ay;
-  if (nA < 0) nA = -nA;
+  if (nA < 0)
+    nA = -nA;
   // v = |n1 . A| - S < 128 sqrt(D): true when v < 0, else compare the squares.
   const I128 v = nA - S;
   return v < 0 || v * v < w * w * D128;
 }
 
-}  // namespace
+} // namespace
 
 // rule: LINE.AA.COVERAGE, LINE.AA.RECT, LINE.AA.ZERO_LENGTH, LINE.AA.PRECISION
 AACoverage aa_line_coverage(Vec2 a, Vec2 b, std::int32_t px, std::int32_t py) {
@@ -206,10 +219,12 @@ AACoverage aa_line_coverage(Vec2 a, Vec2 b, std::int32_t px, std::int32_t py) {
   const Frame f = canonical(a.x.raw() - cx, a.y.raw() - cy, b.x.raw() - cx, b.y.raw() - cy);
   const I64 dx = f.bx - f.ax;
   const I64 dy = f.by - f.ay;
-  const I64 D = dx * dx + dy * dy;  // < 2^49
+  const I64 D = dx * dx + dy * dy; // < 2^49
   // rule: LINE.AA.ZERO_LENGTH
-  if (D == 0) return {};
-  if (!overlaps_r4(f, D)) return {};
+  if (D == 0)
+    return {};
+  if (!overlaps_r4(f, D))
+    return {};
 
   // The four half-planes of the rectangle (LINE.AA.RECT), q = p - c in raw units:
   //   end at a:  d . (q - A) >= 0          end at b:  d . (q - B) <= 0
@@ -236,7 +251,8 @@ AACoverage aa_line_coverage(Vec2 a, Vec2 b, std::int32_t px, std::int32_t py) {
     p.v[1] = Pt{H, -H};
     p.v[2] = Pt{H, H};
     p.v[3] = Pt{-H, H};
-    for (const HalfPlane& h : planes) p = clip(p, h);
+    for (const HalfPlane& h : planes)
+      p = clip(p, h);
     sum += twice_area(p) * kWeight[i];
   }
   // q16 = sum_i (T_i / 2^65 px^2) * m_i / 18000 * 2^16, rounded to nearest, halves up.
@@ -249,7 +265,8 @@ AACoverage aa_line_coverage(Vec2 a, Vec2 b, std::int32_t px, std::int32_t py) {
 // rule: LINE.AA.TRAVERSAL, RASTER.TARGET.CLIP
 void rasterize_aa_line(Vec2 a, Vec2 b, std::int32_t width, std::int32_t height,
                        const AAEmit& emit) {
-  if (a == b || width <= 0 || height <= 0) return;
+  if (a == b || width <= 0 || height <= 0)
+    return;
   const I64 ax = a.x.raw(), ay = a.y.raw(), bx = b.x.raw(), by = b.y.raw();
   const I64 dx = bx - ax, dy = by - ay;
   const I64 D = dx * dx + dy * dy;
@@ -264,7 +281,8 @@ void rasterize_aa_line(Vec2 a, Vec2 b, std::int32_t width, std::int32_t height,
   // Per row, a necessary condition from the normal axis narrows the columns:
   // |n1 . (c - a)| < 128 L + 384 (|dx| + |dy|) <= M.
   I64 lc = static_cast<I64>(isqrt(static_cast<U128>(D)));
-  if (lc * lc < D) ++lc;
+  if (lc * lc < D)
+    ++lc;
   const I64 M = kHalfWidthRaw * lc + kR4HalfRaw * ((dx < 0 ? -dx : dx) + (dy < 0 ? -dy : dy));
   for (I64 py = py0; py <= py1; ++py) {
     I64 lo = px0, hi = px1;
@@ -281,9 +299,10 @@ void rasterize_aa_line(Vec2 a, Vec2 b, std::int32_t width, std::int32_t height,
       hi = std::min(hi, ceil_div(ax * e + t + M - 128 * e, 256 * e));
     }
     for (I64 px = lo; px <= hi; ++px) {
-      const AACoverage c = aa_line_coverage(a, b, static_cast<std::int32_t>(px),
-                                            static_cast<std::int32_t>(py));
-      if (c.positive) emit(static_cast<std::int32_t>(px), static_cast<std::int32_t>(py), c.q16);
+      const AACoverage c =
+          aa_line_coverage(a, b, static_cast<std::int32_t>(px), static_cast<std::int32_t>(py));
+      if (c.positive)
+        emit(static_cast<std::int32_t>(px), static_cast<std::int32_t>(py), c.q16);
     }
   }
 }
@@ -298,4 +317,4 @@ std::uint8_t aa_blend_unorm8(std::uint8_t src, std::uint8_t src_alpha, std::uint
   return static_cast<std::uint8_t>((2 * n + den) / (2 * den));
 }
 
-}  // namespace rastrules
+} // namespace rastrules

@@ -20,35 +20,48 @@ namespace rastrules {
 
 std::string_view to_string(LineMode m) {
   switch (m) {
-    case LineMode::kD3DDiamond: return "d3d-diamond";
-    case LineMode::kVulkanBresenham: return "vulkan-bresenham";
-    case LineMode::kQuadWide: return "quad-wide";
-    case LineMode::kQuadNarrow: return "quad-narrow";
+  case LineMode::kD3DDiamond:
+    return "d3d-diamond";
+  case LineMode::kVulkanBresenham:
+    return "vulkan-bresenham";
+  case LineMode::kQuadWide:
+    return "quad-wide";
+  case LineMode::kQuadNarrow:
+    return "quad-narrow";
   }
   return "?";
 }
 
 std::string_view to_string(DiamondFeature f) {
   switch (f) {
-    case kFeatureInterior: return "interior";
-    case kFeatureEdgeLowerRight: return "lower-right edge";
-    case kFeatureEdgeLowerLeft: return "lower-left edge";
-    case kFeatureEdgeUpperRight: return "upper-right edge";
-    case kFeatureEdgeUpperLeft: return "upper-left edge";
-    case kFeatureCornerBottom: return "bottom corner";
-    case kFeatureCornerRight: return "right corner";
-    case kFeatureCornerTop: return "top corner";
-    case kFeatureCornerLeft: return "left corner";
+  case kFeatureInterior:
+    return "interior";
+  case kFeatureEdgeLowerRight:
+    return "lower-right edge";
+  case kFeatureEdgeLowerLeft:
+    return "lower-left edge";
+  case kFeatureEdgeUpperRight:
+    return "upper-right edge";
+  case kFeatureEdgeUpperLeft:
+    return "upper-left edge";
+  case kFeatureCornerBottom:
+    return "bottom corner";
+  case kFeatureCornerRight:
+    return "right corner";
+  case kFeatureCornerTop:
+    return "top corner";
+  case kFeatureCornerLeft:
+    return "left corner";
   }
   return "";
 }
 
 namespace {
 
-constexpr std::int64_t kH = kSubpixelHalf;  // half the diamond's diagonal: 1/2 px
+constexpr std::int64_t kH = kSubpixelHalf; // half the diamond's diagonal: 1/2 px
 
 struct Relative {
-  std::int64_t au, av, bu, bv;  // a and b relative to the pixel centre, raw 16.8
+  std::int64_t au, av, bu, bv; // a and b relative to the pixel centre, raw 16.8
 };
 
 Relative relative(Vec2 a, Vec2 b, std::int32_t px, std::int32_t py) {
@@ -68,28 +81,32 @@ bool covers_relative(const Relative& r, LineMode mode, bool x_major) {
   if (mode == LineMode::kVulkanBresenham) {
     return formula::vk_exits<std::int64_t>(r.au, r.av, r.bu, r.bv, kH);
   }
-  if (x_major) return formula::d3d_exits<false, std::int64_t>(r.au, r.av, r.bu, r.bv, kH);
+  if (x_major)
+    return formula::d3d_exits<false, std::int64_t>(r.au, r.av, r.bu, r.bv, kH);
   return formula::d3d_exits<true, std::int64_t>(r.au, r.av, r.bu, r.bv, kH);
 }
 
-}  // namespace
+} // namespace
 
 bool aliased_line_covers(Vec2 a, Vec2 b, LineMode mode, std::int32_t px, std::int32_t py) {
   // rule: LINE.ZERO_LENGTH
-  if (a == b) return false;
+  if (a == b)
+    return false;
   return covers_relative(relative(a, b, px, py), mode, is_x_major(a, b));
 }
 
 // rule: LINE.ORDER.TRAVEL, LINE.TARGET.CLIP, LINE.ZERO_LENGTH
-void rasterize_aliased_line(Vec2 a, Vec2 b, LineMode mode, std::int32_t width,
-                            std::int32_t height, const PixelEmit& emit) {
-  if (mode != LineMode::kD3DDiamond && mode != LineMode::kVulkanBresenham) return;
-  if (a == b || width <= 0 || height <= 0) return;
+void rasterize_aliased_line(Vec2 a, Vec2 b, LineMode mode, std::int32_t width, std::int32_t height,
+                            const PixelEmit& emit) {
+  if (mode != LineMode::kD3DDiamond && mode != LineMode::kVulkanBresenham)
+    return;
+  if (a == b || width <= 0 || height <= 0)
+    return;
   const bool x_major = is_x_major(a, b);
   // Work in (major, minor) coordinates: for y-major lines swap x and y.
   const std::int64_t ma = x_major ? a.x.raw() : a.y.raw(), na = x_major ? a.y.raw() : a.x.raw();
   const std::int64_t mb = x_major ? b.x.raw() : b.y.raw(), nb = x_major ? b.y.raw() : b.x.raw();
-  const std::int64_t dm = mb - ma, dn = nb - na;  // dm != 0 since |dm| >= |dn| and a != b
+  const std::int64_t dm = mb - ma, dn = nb - na; // dm != 0 since |dm| >= |dn| and a != b
   const std::int64_t major_limit = x_major ? width : height;
   const std::int64_t minor_limit = x_major ? height : width;
   // A diamond lies in its closed pixel square, and the Vulkan perturbation is infinitesimal,
@@ -97,9 +114,10 @@ void rasterize_aliased_line(Vec2 a, Vec2 b, LineMode mode, std::int32_t width,
   // the rows (columns) the segment spans over [256k, 256k + 256], one more on each side.
   const std::int64_t lo = std::min(ma, mb), hi = std::max(ma, mb);
   const std::int64_t k_first = std::max<std::int64_t>(floor_div(lo, kSubpixelOne) - 1, 0);
-  const std::int64_t k_last = std::min<std::int64_t>(floor_div(hi, kSubpixelOne) + 1,
-                                                      major_limit - 1);
-  if (k_first > k_last) return;
+  const std::int64_t k_last =
+      std::min<std::int64_t>(floor_div(hi, kSubpixelOne) + 1, major_limit - 1);
+  if (k_first > k_last)
+    return;
   const std::int64_t step_major = dm > 0 ? 1 : -1;
   const std::int64_t step_minor = dn >= 0 ? 1 : -1;
   // Minor coordinate of the segment's line at major coordinate m, floored to a pixel index:
@@ -118,17 +136,20 @@ void rasterize_aliased_line(Vec2 a, Vec2 b, LineMode mode, std::int32_t width,
   for (std::int64_t k = k_begin; k != k_end; k += step_major) {
     const std::int64_t m0 = std::max(lo, k * kSubpixelOne);
     const std::int64_t m1 = std::min(hi, k * kSubpixelOne + kSubpixelOne);
-    if (m0 > m1) continue;
+    if (m0 > m1)
+      continue;
     const std::int64_t n0 = minor_pixel_at(m0), n1 = minor_pixel_at(m1);
     const std::int64_t j_first = std::max<std::int64_t>(std::min(n0, n1) - 1, 0);
     const std::int64_t j_last = std::min<std::int64_t>(std::max(n0, n1) + 1, minor_limit - 1);
-    if (j_first > j_last) continue;
+    if (j_first > j_last)
+      continue;
     const std::int64_t j_begin = step_minor > 0 ? j_first : j_last;
     const std::int64_t j_end = step_minor > 0 ? j_last + 1 : j_first - 1;
     for (std::int64_t j = j_begin; j != j_end; j += step_minor) {
       const auto px = static_cast<std::int32_t>(x_major ? k : j);
       const auto py = static_cast<std::int32_t>(x_major ? j : k);
-      if (covers_relative(relative(a, b, px, py), mode, x_major)) emit(px, py);
+      if (covers_relative(relative(a, b, px, py), mode, x_major))
+        emit(px, py);
     }
   }
 }
@@ -153,7 +174,8 @@ LineDiamondDecision explain_aliased_line_pixel(Vec2 a, Vec2 b, LineMode mode, st
   // Interior: the open diamond.
   const auto open = formula::segment_in_diamond_constraints<std::int64_t, std::int64_t>(
       r.au, r.av, du, dv, {kH, kH, kH, kH}, {true, true, true, true}, 0, 1, 1);
-  if (formula::t_feasible(open, std::int64_t{0})) d.met_features |= kFeatureInterior;
+  if (formula::t_feasible(open, std::int64_t{0}))
+    d.met_features |= kFeatureInterior;
   // Open edge k: s_k·p = h with the two neighbouring half-planes strict (which excludes the
   // corners at its ends).
   constexpr std::array<DiamondFeature, 4> kEdgeBits = {
@@ -166,7 +188,8 @@ LineDiamondDecision explain_aliased_line_pixel(Vec2 a, Vec2 b, LineMode mode, st
     const std::array<C, 6> cs = {C{kH - a_k, m_k, false}, C{a_k - kH, -m_k, false},
                                  C{kH - a_p, m_p, true},  C{kH - a_q, m_q, true},
                                  C{0, -1, false},         C{1, 1, false}};
-    if (formula::t_feasible(cs, std::int64_t{0})) d.met_features |= kEdgeBits[k];
+    if (formula::t_feasible(cs, std::int64_t{0}))
+      d.met_features |= kEdgeBits[k];
   }
   constexpr std::array<std::array<std::int64_t, 2>, 4> kCorners = {
       {{{0, kH}}, {{kH, 0}}, {{0, -kH}}, {{-kH, 0}}}};
@@ -178,8 +201,8 @@ LineDiamondDecision explain_aliased_line_pixel(Vec2 a, Vec2 b, LineMode mode, st
     }
   }
   if (mode == LineMode::kVulkanBresenham) {
-    d.included_features = kFeatureInterior | kFeatureEdgeLowerRight | kFeatureEdgeUpperRight |
-                          kFeatureCornerRight;
+    d.included_features =
+        kFeatureInterior | kFeatureEdgeLowerRight | kFeatureEdgeUpperRight | kFeatureCornerRight;
     d.entered = formula::vk_meets<std::int64_t>(r.au, r.av, du, dv, kH);
     d.end_inside = formula::vk_contains<std::int64_t>(r.bu, r.bv, kH);
   } else {
@@ -197,11 +220,12 @@ LineDiamondDecision explain_aliased_line_pixel(Vec2 a, Vec2 b, LineMode mode, st
   if (d.zero_length) {
     d.reason = "zero-length line: covers nothing (LINE.ZERO_LENGTH)";
   } else if (!d.entered) {
-    d.reason = (d.met_features == 0)
-                   ? "the segment misses the diamond"
-                   : (mode == LineMode::kVulkanBresenham
-                          ? "the perturbed segment misses the open diamond (LINE.VK.TEST_AREA)"
-                          : "the segment meets only excluded edges or corners (LINE.D3D.TEST_AREA)");
+    d.reason =
+        (d.met_features == 0)
+            ? "the segment misses the diamond"
+            : (mode == LineMode::kVulkanBresenham
+                   ? "the perturbed segment misses the open diamond (LINE.VK.TEST_AREA)"
+                   : "the segment meets only excluded edges or corners (LINE.D3D.TEST_AREA)");
   } else if (d.end_inside) {
     d.reason = "the end point lies in the test area: the line does not exit";
   } else if ((d.met_features & kFeatureInterior) != 0) {
@@ -214,4 +238,4 @@ LineDiamondDecision explain_aliased_line_pixel(Vec2 a, Vec2 b, LineMode mode, st
   return d;
 }
 
-}  // namespace rastrules
+} // namespace rastrules

@@ -23,7 +23,8 @@ namespace rastrules {
 void run_units(std::size_t n, unsigned threads, const std::function<void(std::size_t)>& unit) {
   const std::size_t wanted = std::min<std::size_t>(std::clamp(threads, 1U, kMaxThreads), n);
   if (wanted <= 1) {
-    for (std::size_t i = 0; i < n; ++i) unit(i);  // inline, in order: the first throw stops it
+    for (std::size_t i = 0; i < n; ++i)
+      unit(i); // inline, in order: the first throw stops it
     return;
   }
   std::atomic<std::size_t> next{0};
@@ -36,7 +37,8 @@ void run_units(std::size_t n, unsigned threads, const std::function<void(std::si
   auto work = [&] {
     for (;;) {
       const std::size_t i = next.fetch_add(1, std::memory_order_relaxed);
-      if (i >= n || i > first_failed.load(std::memory_order_acquire)) return;
+      if (i >= n || i > first_failed.load(std::memory_order_acquire))
+        return;
       try {
         unit(i);
       } catch (...) {
@@ -55,12 +57,13 @@ void run_units(std::size_t n, unsigned threads, const std::function<void(std::si
       try {
         pool.emplace_back(work);
       } catch (const std::system_error&) {
-        break;  // no more threads: the ones running (and this one) take the remaining units
+        break; // no more threads: the ones running (and this one) take the remaining units
       }
     }
     work();
-  }  // the jthreads join here
-  if (failure) std::rethrow_exception(failure);
+  } // the jthreads join here
+  if (failure)
+    std::rethrow_exception(failure);
 }
 
 // rule: FAST.THREADS.DETERMINISTIC
@@ -81,11 +84,11 @@ void run_ordered(std::size_t n, unsigned threads, std::size_t window,
     std::exception_ptr failure;
   };
   std::mutex m;
-  std::condition_variable produced;  // a slot became ready
-  std::condition_variable room;      // a unit was consumed, or stop
+  std::condition_variable produced; // a slot became ready
+  std::condition_variable room;     // a unit was consumed, or stop
   std::vector<Slot> slots(window);
-  std::size_t next = 0;      // the next unit to produce
-  std::size_t consumed = 0;  // units consumed so far
+  std::size_t next = 0;     // the next unit to produce
+  std::size_t consumed = 0; // units consumed so far
   bool stop = false;
   auto work = [&] {
     for (;;) {
@@ -93,7 +96,8 @@ void run_ordered(std::size_t n, unsigned threads, std::size_t window,
       {
         std::unique_lock<std::mutex> lock(m);
         room.wait(lock, [&] { return stop || next >= n || next < consumed + window; });
-        if (stop || next >= n) return;
+        if (stop || next >= n)
+          return;
         i = next++;
       }
       std::exception_ptr failure;
@@ -126,14 +130,14 @@ void run_ordered(std::size_t n, unsigned threads, std::size_t window,
           stop = true;
         }
         room.notify_all();
-        pool.clear();  // joins
+        pool.clear(); // joins
       }
     } stopper{m, stop, room, pool};
     for (std::size_t t = 0; t < wanted; ++t) {
       try {
         pool.emplace_back(work);
       } catch (const std::system_error&) {
-        break;  // fewer threads: the ones running take every unit
+        break; // fewer threads: the ones running take every unit
       }
     }
     if (pool.empty()) {
@@ -152,8 +156,9 @@ void run_ordered(std::size_t n, unsigned threads, std::size_t window,
         slot = &slots[i % window];
         failure = slot->failure;
       }
-      if (failure) break;  // the lowest-index failure: later units are not consumed
-      consume(i);          // may throw: the stopper stops the pool
+      if (failure)
+        break;    // the lowest-index failure: later units are not consumed
+      consume(i); // may throw: the stopper stops the pool
       {
         const std::lock_guard<std::mutex> lock(m);
         slot->ready = false;
@@ -162,32 +167,34 @@ void run_ordered(std::size_t n, unsigned threads, std::size_t window,
       room.notify_all();
     }
   }
-  if (failure) std::rethrow_exception(failure);
+  if (failure)
+    std::rethrow_exception(failure);
 }
 
 // rule: FAST.THREADS.DETERMINISTIC, SCENE.OUTPUT.FRAGMENTS
 std::vector<Fragment> rasterize(const PreparedScene& scene, const RenderOptions& options) {
   const std::size_t n = scene.primitives.size();
   std::vector<std::vector<Fragment>> per_unit(n);
-  run_units(n, options.threads, [&](std::size_t p) {
-    per_unit[p] = rasterize_primitive(scene, p, options);
-  });
+  run_units(n, options.threads,
+            [&](std::size_t p) { per_unit[p] = rasterize_primitive(scene, p, options); });
   std::size_t total = 0;
-  for (const auto& f : per_unit) total += f.size();
+  for (const auto& f : per_unit)
+    total += f.size();
   std::vector<Fragment> out;
   out.reserve(total);
   for (auto& f : per_unit) {
     out.insert(out.end(), f.begin(), f.end());
-    std::vector<Fragment>().swap(f);  // release each unit's copy as soon as it is moved
+    std::vector<Fragment>().swap(f); // release each unit's copy as soon as it is moved
   }
-  return out;  // primitives in order, each sorted by (y, x, seg, sample)
+  return out; // primitives in order, each sorted by (y, x, seg, sample)
 }
 
 std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene,
                                                        const RenderOptions& options) {
   auto prepared = prepare(scene);
-  if (auto* err = std::get_if<SceneError>(&prepared)) return *err;
+  if (auto* err = std::get_if<SceneError>(&prepared))
+    return *err;
   return rasterize(std::get<PreparedScene>(prepared), options);
 }
 
-}  // namespace rastrules
+} // namespace rastrules

@@ -40,8 +40,10 @@ std::optional<std::pair<std::string, std::string>> check_viewport(const Viewport
   const auto bad = [](const char* f, const std::string& m) {
     return std::optional<std::pair<std::string, std::string>>{std::pair{std::string(f), m}};
   };
-  const std::pair<const char*, float> all[] = {{"x", vp.x},         {"y", vp.y},
-                                               {"width", vp.width}, {"height", vp.height},
+  const std::pair<const char*, float> all[] = {{"x", vp.x},
+                                               {"y", vp.y},
+                                               {"width", vp.width},
+                                               {"height", vp.height},
                                                {"min_depth", vp.min_depth},
                                                {"max_depth", vp.max_depth}};
   for (const auto& [f, v] : all)
@@ -105,10 +107,9 @@ WindowVertex to_window(const Vec4f& p, const Viewport& vp) {
 PixelRect viewport_scissor(const Viewport& vp) {
   const float right = vp.x + vp.width;
   const float bottom = vp.y + vp.height;
-  return PixelRect{static_cast<std::int64_t>(std::floor(vp.x)),
-                   static_cast<std::int64_t>(std::floor(vp.y)),
-                   static_cast<std::int64_t>(std::floor(right)),
-                   static_cast<std::int64_t>(std::floor(bottom))};
+  return PixelRect{
+      static_cast<std::int64_t>(std::floor(vp.x)), static_cast<std::int64_t>(std::floor(vp.y)),
+      static_cast<std::int64_t>(std::floor(right)), static_cast<std::int64_t>(std::floor(bottom))};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -116,22 +117,31 @@ PixelRect viewport_scissor(const Viewport& vp) {
 
 namespace {
 
-constexpr int kPlaneCount = 7;  // w, x_lo, x_hi, y_lo, y_hi, z_near, z_far
+constexpr int kPlaneCount = 7; // w, x_lo, x_hi, y_lo, y_hi, z_near, z_far
 
 // The signed distance of (x, y, z, w) to plane k, in double (PIPE.CLIP.COMPUTE).
 double plane_distance(const ClipVolume& vol, int k, const std::array<double, 4>& p) {
   switch (k) {
-    case 0: return p[3] - vol.w_min;
-    case 1: return p[0] - vol.gx_lo * p[3];
-    case 2: return vol.gx_hi * p[3] - p[0];
-    case 3: return p[1] - vol.gy_lo * p[3];
-    case 4: return vol.gy_hi * p[3] - p[1];
-    case 5: return p[2];
-    default: return p[3] - p[2];
+  case 0:
+    return p[3] - vol.w_min;
+  case 1:
+    return p[0] - vol.gx_lo * p[3];
+  case 2:
+    return vol.gx_hi * p[3] - p[0];
+  case 3:
+    return p[1] - vol.gy_lo * p[3];
+  case 4:
+    return vol.gy_hi * p[3] - p[1];
+  case 5:
+    return p[2];
+  default:
+    return p[3] - p[2];
   }
 }
 
-bool plane_active(const ClipVolume& vol, int k) { return k < 5 || vol.depth_clip; }
+bool plane_active(const ClipVolume& vol, int k) {
+  return k < 5 || vol.depth_clip;
+}
 
 struct DVertex {
   std::array<double, 4> pos{};
@@ -160,8 +170,7 @@ ClipVertex narrow(const DVertex& d) {
 // whose distances are d_in >= 0 > d_out (PIPE.CLIP.POLYGON): computed from the endpoint nearer
 // the plane (the inside one on a tie), so that t <= 1/2 and the result depends only on the two
 // endpoints, never on the walking direction; its w raised to w_min if rounding left it below.
-DVertex intersect(const DVertex& in, double d_in, const DVertex& out, double d_out,
-                  double w_min) {
+DVertex intersect(const DVertex& in, double d_in, const DVertex& out, double d_out, double w_min) {
   const bool from_in = d_in <= -d_out;
   const DVertex& e = from_in ? in : out;
   const DVertex& f = from_in ? out : in;
@@ -178,7 +187,7 @@ DVertex intersect(const DVertex& in, double d_in, const DVertex& out, double d_o
   return r;
 }
 
-}  // namespace
+} // namespace
 
 // rule: PIPE.CLIP.VOLUME
 ClipVolume clip_volume(const std::vector<Vec4f>& /*vs*/, const Viewport& vp, bool depth_clip) {
@@ -202,7 +211,8 @@ bool inside(const ClipVolume& vol, const Vec4f& p) {
 }
 
 // rule: PIPE.CLIP.POLYGON, PIPE.CLIP.COMPUTE, PIPE.CLIP.UNCLIPPED
-std::vector<ClipVertex> clip_polygon(const std::vector<ClipVertex>& polygon, const ClipVolume& vol) {
+std::vector<ClipVertex> clip_polygon(const std::vector<ClipVertex>& polygon,
+                                     const ClipVolume& vol) {
   if (std::all_of(polygon.begin(), polygon.end(),
                   [&](const ClipVertex& v) { return inside(vol, v.pos); }))
     return polygon;
@@ -247,7 +257,7 @@ std::vector<ClipVertex> clip_polygon(const std::vector<ClipVertex>& polygon, con
 
 // rule: PIPE.CLIP.LINE
 std::optional<std::array<ClipVertex, 2>> clip_segment(const ClipVertex& a, const ClipVertex& b,
-                                                     const ClipVolume& vol) {
+                                                      const ClipVolume& vol) {
   if (inside(vol, a.pos) && inside(vol, b.pos))
     return std::array<ClipVertex, 2>{a, b};
   DVertex p = widen(a), q = widen(b);
@@ -284,18 +294,24 @@ Barycentrics barycentrics(const std::array<Vec2, 3>& v, Vec2 s) {
 
 std::string_view to_string(Interpolation i) {
   switch (i) {
-    case Interpolation::kPerspective: return "perspective";
-    case Interpolation::kLinear: return "linear";
-    case Interpolation::kFlat: return "flat";
+  case Interpolation::kPerspective:
+    return "perspective";
+  case Interpolation::kLinear:
+    return "linear";
+  case Interpolation::kFlat:
+    return "flat";
   }
   return "?";
 }
 
 std::string_view to_string(Location l) {
   switch (l) {
-    case Location::kCenter: return "center";
-    case Location::kCentroid: return "centroid";
-    case Location::kSample: return "sample";
+  case Location::kCenter:
+    return "center";
+  case Location::kCentroid:
+    return "centroid";
+  case Location::kSample:
+    return "sample";
   }
   return "?";
 }
@@ -313,7 +329,7 @@ float saturate_to_float(double r) {
   return static_cast<float>(r);
 }
 
-}  // namespace
+} // namespace
 
 // rule: PIPE.INTERP.PERSPECTIVE, PIPE.INTERP.HORIZON
 float interpolate_perspective(const Barycentrics& b, const std::array<float, 3>& a,
@@ -352,23 +368,34 @@ float interpolate_linear(const Barycentrics& b, const std::array<float, 3>& a) {
 
 std::string_view to_string(DepthFormat f) {
   switch (f) {
-    case DepthFormat::kD16: return "d16";
-    case DepthFormat::kD24: return "d24";
-    case DepthFormat::kD32F: return "d32f";
+  case DepthFormat::kD16:
+    return "d16";
+  case DepthFormat::kD24:
+    return "d24";
+  case DepthFormat::kD32F:
+    return "d32f";
   }
   return "?";
 }
 
 std::string_view to_string(CompareFunc f) {
   switch (f) {
-    case CompareFunc::kNever: return "never";
-    case CompareFunc::kLess: return "less";
-    case CompareFunc::kEqual: return "equal";
-    case CompareFunc::kLessEqual: return "less_equal";
-    case CompareFunc::kGreater: return "greater";
-    case CompareFunc::kNotEqual: return "not_equal";
-    case CompareFunc::kGreaterEqual: return "greater_equal";
-    case CompareFunc::kAlways: return "always";
+  case CompareFunc::kNever:
+    return "never";
+  case CompareFunc::kLess:
+    return "less";
+  case CompareFunc::kEqual:
+    return "equal";
+  case CompareFunc::kLessEqual:
+    return "less_equal";
+  case CompareFunc::kGreater:
+    return "greater";
+  case CompareFunc::kNotEqual:
+    return "not_equal";
+  case CompareFunc::kGreaterEqual:
+    return "greater_equal";
+  case CompareFunc::kAlways:
+    return "always";
   }
   return "?";
 }
@@ -389,16 +416,16 @@ DepthValue to_depth_format(double z, float min_depth, float max_depth, DepthForm
   z = std::min(static_cast<double>(max_depth), std::max(static_cast<double>(min_depth), z));
   DepthValue v;
   switch (f) {
-    case DepthFormat::kD16:
-    case DepthFormat::kD24: {
-      const int bits = f == DepthFormat::kD16 ? formula::kDepthD16Bits : formula::kDepthD24Bits;
-      v.unorm = static_cast<std::uint32_t>(std::floor(formula::unorm_rounding_argument(
-          z, static_cast<double>(formula::unorm_max(bits)))));
-      break;
-    }
-    case DepthFormat::kD32F:
-      v.f = static_cast<float>(z);
-      break;
+  case DepthFormat::kD16:
+  case DepthFormat::kD24: {
+    const int bits = f == DepthFormat::kD16 ? formula::kDepthD16Bits : formula::kDepthD24Bits;
+    v.unorm = static_cast<std::uint32_t>(std::floor(
+        formula::unorm_rounding_argument(z, static_cast<double>(formula::unorm_max(bits)))));
+    break;
+  }
+  case DepthFormat::kD32F:
+    v.f = static_cast<float>(z);
+    break;
   }
   return v;
 }
@@ -407,14 +434,22 @@ DepthValue to_depth_format(double z, float min_depth, float max_depth, DepthForm
 bool depth_test(CompareFunc func, const DepthValue& now, const DepthValue& old, DepthFormat f) {
   const auto cmp = [func](auto a, auto b) {
     switch (func) {
-      case CompareFunc::kNever: return false;
-      case CompareFunc::kLess: return a < b;
-      case CompareFunc::kEqual: return a == b;
-      case CompareFunc::kLessEqual: return a <= b;
-      case CompareFunc::kGreater: return a > b;
-      case CompareFunc::kNotEqual: return a != b;
-      case CompareFunc::kGreaterEqual: return a >= b;
-      case CompareFunc::kAlways: return true;
+    case CompareFunc::kNever:
+      return false;
+    case CompareFunc::kLess:
+      return a < b;
+    case CompareFunc::kEqual:
+      return a == b;
+    case CompareFunc::kLessEqual:
+      return a <= b;
+    case CompareFunc::kGreater:
+      return a > b;
+    case CompareFunc::kNotEqual:
+      return a != b;
+    case CompareFunc::kGreaterEqual:
+      return a >= b;
+    case CompareFunc::kAlways:
+      return true;
     }
     return false;
   };
@@ -432,7 +467,7 @@ float depth_bias(const std::array<Vec2, 3>& v, const std::array<float, 3>& z, co
     const double dy1 = static_cast<double>(v[1].y.raw() - v[0].y.raw());
     const double dx2 = static_cast<double>(v[2].x.raw() - v[0].x.raw());
     const double dy2 = static_cast<double>(v[2].y.raw() - v[0].y.raw());
-    const double den = dx1 * dy2 - dx2 * dy1;  // exact: |.| < 2^49
+    const double den = dx1 * dy2 - dx2 * dy1; // exact: |.| < 2^49
     float max_slope = 0.0f;
     if (den != 0.0) {
       const double dz1 = static_cast<double>(z[1]) - static_cast<double>(z[0]);
@@ -452,7 +487,7 @@ float depth_bias(const std::array<Vec2, 3>& v, const std::array<float, 3>& z, co
     int e = -126;
     if (zmax > 0.0f) {
       int fe = 0;
-      (void)std::frexp(zmax, &fe);  // zmax = f * 2^fe, f in [0.5, 1)
+      (void)std::frexp(zmax, &fe); // zmax = f * 2^fe, f in [0.5, 1)
       e = std::max(fe - 1, -126);
     }
     r = std::ldexp(1.0f, e - 23);
@@ -469,4 +504,4 @@ float depth_bias(const std::array<Vec2, 3>& v, const std::array<float, 3>& z, co
   return total;
 }
 
-}  // namespace rastrules::pipe
+} // namespace rastrules::pipe

@@ -30,8 +30,8 @@ SceneError err(std::string field, std::string message) {
 struct Source {
   std::size_t prim = 0;
   std::optional<std::uint32_t> part;
-  std::vector<WindowVertex> v;            // window x, y (unsnapped), depth z, clip w
-  std::vector<std::vector<float>> attr;   // per vertex
+  std::vector<WindowVertex> v;          // window x, y (unsnapped), depth z, clip w
+  std::vector<std::vector<float>> attr; // per vertex
   // Per segment (one entry for a triangle, point or line; one per segment of a strip): per
   // attribute, the provoking vertex's value (PIPE.INTERP.FLAT).
   std::vector<std::vector<float>> flat;
@@ -57,8 +57,8 @@ std::optional<SceneError> check_position(const Vec4f& p, const std::string& fiel
     if (std::isinf(v))
       return err(field, std::string("is infinite") + when + " (PIPE.INPUT.POSITION)");
     if (std::fabs(static_cast<double>(v)) > kMaxPosition)
-      return err(field, std::string("has a coordinate beyond 2^64") + when +
-                            " (PIPE.INPUT.POSITION)");
+      return err(field,
+                 std::string("has a coordinate beyond 2^64") + when + " (PIPE.INPUT.POSITION)");
   }
   return std::nullopt;
 }
@@ -93,14 +93,14 @@ Barycentrics eval_bary(PrimitiveType type, const std::vector<Vec2>& v, Vec2 s) {
   }
   const std::int64_t dx = v[1].x.raw() - v[0].x.raw(), dy = v[1].y.raw() - v[0].y.raw();
   const std::int64_t px = s.x.raw() - v[0].x.raw(), py = s.y.raw() - v[0].y.raw();
-  const std::int64_t den = dx * dx + dy * dy;  // < 2^49
-  const std::int64_t num = px * dx + py * dy;  // |.| < 2^49
+  const std::int64_t den = dx * dx + dy * dy; // < 2^49
+  const std::int64_t num = px * dx + py * dy; // |.| < 2^49
   b.e = {den - num, num, 0};
   b.area = den;
   return b;
 }
 
-}  // namespace
+} // namespace
 
 // rule: PIPE.EFFECTS.ON_DEMAND
 Effects effects_of(const PipeScene& s) {
@@ -182,10 +182,11 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
     const std::size_t nv = pp.pos.empty() ? pp.base.v.size() : pp.pos.size();
     // rule: PIPE.INPUT.ATTRIBUTES
     if (nattr > 0 && pp.attr.size() != nv)
-      return err(pf + ".attr", "needs one entry per vertex (" + std::to_string(nv) +
-                                   ") (PIPE.INPUT.ATTRIBUTES)");
+      return err(pf + ".attr",
+                 "needs one entry per vertex (" + std::to_string(nv) + ") (PIPE.INPUT.ATTRIBUTES)");
     if (nattr == 0 && !pp.attr.empty())
-      return err(pf + ".attr", "is given but the scene declares no attributes (PIPE.INPUT.ATTRIBUTES)");
+      return err(pf + ".attr",
+                 "is given but the scene declares no attributes (PIPE.INPUT.ATTRIBUTES)");
     for (std::size_t j = 0; j < pp.attr.size(); ++j) {
       if (pp.attr[j].size() != nattr)
         return err(pf + ".attr" + "[" + std::to_string(j) + "]",
@@ -285,9 +286,12 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
         return *bad;
       Vec4f p = pp.pos[j];
       if (has_transform) {
-        if (s.model) p = transform(*s.model, p);
-        if (s.view) p = transform(*s.view, p);
-        if (s.projection) p = transform(*s.projection, p);
+        if (s.model)
+          p = transform(*s.model, p);
+        if (s.view)
+          p = transform(*s.view, p);
+        if (s.projection)
+          p = transform(*s.projection, p);
         if (auto bad = check_position(p, vf, " after the transform"))
           return *bad;
       }
@@ -300,41 +304,41 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
     const bool depth_clip = !s.depth || s.depth->clip;
     const ClipVolume vol = clip_volume(clip_pos, vp, depth_clip);
     switch (pp.base.type) {
-      case PrimitiveType::kTriangle: {
-        // rule: PIPE.CLIP.POLYGON, PIPE.CLIP.UNCLIPPED
-        const std::vector<ClipVertex> poly = clip_polygon(cv, vol);
-        const bool clipped = poly != cv;
-        for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
-          add_window(PrimitiveType::kTriangle,
-                     clipped ? std::optional<std::uint32_t>(static_cast<std::uint32_t>(k - 1))
-                             : std::nullopt,
-                     {poly[0], poly[k], poly[k + 1]});
-        }
+    case PrimitiveType::kTriangle: {
+      // rule: PIPE.CLIP.POLYGON, PIPE.CLIP.UNCLIPPED
+      const std::vector<ClipVertex> poly = clip_polygon(cv, vol);
+      const bool clipped = poly != cv;
+      for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
+        add_window(PrimitiveType::kTriangle,
+                   clipped ? std::optional<std::uint32_t>(static_cast<std::uint32_t>(k - 1))
+                           : std::nullopt,
+                   {poly[0], poly[k], poly[k + 1]});
+      }
+      break;
+    }
+    case PrimitiveType::kPoint: {
+      // rule: PIPE.CLIP.LINE
+      if (inside(vol, cv[0].pos))
+        add_window(PrimitiveType::kPoint, std::nullopt, cv);
+      break;
+    }
+    case PrimitiveType::kLine:
+    case PrimitiveType::kLineStrip: {
+      // rule: PIPE.CLIP.LINE
+      const bool all_in = std::all_of(cv.begin(), cv.end(),
+                                      [&](const ClipVertex& c) { return inside(vol, c.pos); });
+      if (all_in) {
+        add_window(pp.base.type, std::nullopt, cv);
         break;
       }
-      case PrimitiveType::kPoint: {
-        // rule: PIPE.CLIP.LINE
-        if (inside(vol, cv[0].pos))
-          add_window(PrimitiveType::kPoint, std::nullopt, cv);
-        break;
+      for (std::size_t k = 0; k + 1 < cv.size(); ++k) {
+        const auto seg = clip_segment(cv[k], cv[k + 1], vol);
+        if (seg)
+          add_window(PrimitiveType::kLine, static_cast<std::uint32_t>(k), {(*seg)[0], (*seg)[1]},
+                     k);
       }
-      case PrimitiveType::kLine:
-      case PrimitiveType::kLineStrip: {
-        // rule: PIPE.CLIP.LINE
-        const bool all_in = std::all_of(cv.begin(), cv.end(),
-                                        [&](const ClipVertex& c) { return inside(vol, c.pos); });
-        if (all_in) {
-          add_window(pp.base.type, std::nullopt, cv);
-          break;
-        }
-        for (std::size_t k = 0; k + 1 < cv.size(); ++k) {
-          const auto seg = clip_segment(cv[k], cv[k + 1], vol);
-          if (seg)
-            add_window(PrimitiveType::kLine, static_cast<std::uint32_t>(k), {(*seg)[0], (*seg)[1]},
-                       k);
-        }
-        break;
-      }
+      break;
+    }
     }
   }
 
@@ -348,7 +352,7 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
   const PixelRect scissor = viewport_scissor(vp);
 
   // ---- phase 1: coverage, in (prim, part, y, x, seg, sample) order, straight into the result
-  std::vector<Fragment>& cover = result.fragments;  // f.prim: the drawn primitive's index in ps
+  std::vector<Fragment>& cover = result.fragments; // f.prim: the drawn primitive's index in ps
   for (std::size_t p = 0; p < ps.primitives.size(); ++p) {
     const auto emit = [&](const Fragment& f) {
       if (!scissor.contains(f.x, f.y))
@@ -397,16 +401,16 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
   // ---- per drawn primitive: window depths (after bias), w and attribute values
   const SamplePattern& pattern = ps.msaa.pattern;
   const DepthFormat fmt = s.depth ? s.depth->format : DepthFormat::kD24;
-  const bool less_like = s.depth && (s.depth->func == CompareFunc::kLess ||
-                                     s.depth->func == CompareFunc::kLessEqual);
+  const bool less_like =
+      s.depth && (s.depth->func == CompareFunc::kLess || s.depth->func == CompareFunc::kLessEqual);
   const bool greater_like = s.depth && (s.depth->func == CompareFunc::kGreater ||
                                         s.depth->func == CompareFunc::kGreaterEqual);
   struct Drawn {
     PrimitiveType type = PrimitiveType::kTriangle;
-    std::vector<Vec2> v;  // snapped vertices: 3, 2 or 1
+    std::vector<Vec2> v; // snapped vertices: 3, 2 or 1
     std::array<float, 3> z{}, w{1.0f, 1.0f, 1.0f};
     std::vector<std::array<float, 3>> a;
-    DepthValue lo, hi;  // conservative bounds of every sample's stored depth (triangles, points)
+    DepthValue lo, hi; // conservative bounds of every sample's stored depth (triangles, points)
     bool bounded = false;
   };
   std::vector<Drawn> drawn(first_drawn.back());
@@ -420,7 +424,7 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
     Drawn& d = drawn[q];
     const bool strip = pr.type == PrimitiveType::kLineStrip;
     d.type = strip ? PrimitiveType::kLine : pr.type;
-    const std::size_t first = strip ? segment : 0;  // the segment's first vertex
+    const std::size_t first = strip ? segment : 0; // the segment's first vertex
     const std::size_t nv = strip ? 2 : std::min<std::size_t>(src.v.size(), 3);
     if (strip)
       d.v = {pr.v[segment], pr.v[segment + 1]};
@@ -436,7 +440,7 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
       const float b = depth_bias({pr.v[0], pr.v[1], pr.v[2]}, d.z, s.depth->bias, fmt);
       for (float& zi : d.z) {
         zi = zi + b;
-        if (std::isinf(zi))  // saturates like every float32 step of the bias (PIPE.DEPTH.BIAS)
+        if (std::isinf(zi)) // saturates like every float32 step of the bias (PIPE.DEPTH.BIAS)
           zi = std::copysign(std::numeric_limits<float>::max(), zi);
       }
     }
@@ -484,13 +488,13 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
   const std::size_t ntiles = static_cast<std::size_t>(tiles_x * tiles_y);
   const DepthValue clear =
       s.depth ? to_depth_format(s.depth->clear, 0.0f, 1.0f, fmt) : DepthValue{};
-  std::vector<std::uint8_t> cleared;   // fast clear: the tile still holds only the clear value
-  std::vector<std::uint8_t> dirty;     // Hi-Z: the tile's bound must be recomputed
-  std::vector<DepthValue> bound;       // Hi-Z: max (less-like) or min (greater-like) of the tile
-  std::vector<std::size_t> checked;    // Hi-Z: drawn primitive last checked in the tile, + 1
-  std::vector<std::uint8_t> rejected;  // Hi-Z: whether that primitive was rejected there
+  std::vector<std::uint8_t> cleared;  // fast clear: the tile still holds only the clear value
+  std::vector<std::uint8_t> dirty;    // Hi-Z: the tile's bound must be recomputed
+  std::vector<DepthValue> bound;      // Hi-Z: max (less-like) or min (greater-like) of the tile
+  std::vector<std::size_t> checked;   // Hi-Z: drawn primitive last checked in the tile, + 1
+  std::vector<std::uint8_t> rejected; // Hi-Z: whether that primitive was rejected there
   const bool use_hiz = o.hiz && (less_like || greater_like);
-  std::atomic<std::uint64_t> n_hiz{0}, n_depth{0}, n_attr{0};  // PipeStats
+  std::atomic<std::uint64_t> n_hiz{0}, n_depth{0}, n_attr{0}; // PipeStats
   if (s.depth) {
     if (o.fast_clear) {
       result.depth_buffer.resize(static_cast<std::size_t>(s.base.width) *
@@ -519,7 +523,8 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
   };
   // Calls fn(index) for each sample of tile t.
   const auto for_tile = [&](std::size_t t, auto&& fn) {
-    const std::int64_t tx = static_cast<std::int64_t>(t) % tiles_x, ty = static_cast<std::int64_t>(t) / tiles_x;
+    const std::int64_t tx = static_cast<std::int64_t>(t) % tiles_x,
+                       ty = static_cast<std::int64_t>(t) / tiles_x;
     for (std::int64_t y = ty * T; y < std::min<std::int64_t>((ty + 1) * T, s.base.height); ++y)
       for (std::int64_t x = tx * T; x < std::min<std::int64_t>((tx + 1) * T, s.base.width); ++x)
         for (std::uint32_t k = 0; k < nsamples; ++k)
@@ -559,10 +564,14 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
     if (d.bounded) {
       const CompareFunc f = s.depth->func;
       // less: new < old fails for all when lo >= max; less_equal: when lo > max.
-      if (f == CompareFunc::kLess) reject = !stored_less(d.lo, bound[t]);
-      if (f == CompareFunc::kLessEqual) reject = stored_less(bound[t], d.lo);
-      if (f == CompareFunc::kGreater) reject = !stored_less(bound[t], d.hi);
-      if (f == CompareFunc::kGreaterEqual) reject = stored_less(d.hi, bound[t]);
+      if (f == CompareFunc::kLess)
+        reject = !stored_less(d.lo, bound[t]);
+      if (f == CompareFunc::kLessEqual)
+        reject = stored_less(bound[t], d.lo);
+      if (f == CompareFunc::kGreater)
+        reject = !stored_less(bound[t], d.hi);
+      if (f == CompareFunc::kGreaterEqual)
+        reject = stored_less(d.hi, bound[t]);
     }
     checked[t] = p + 1;
     rejected[t] = reject ? 1 : 0;
@@ -597,21 +606,21 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
         const Barycentrics b =
             decl.location == first ? *out.bary : eval_bary(d.type, d.v, point_of(decl.location));
         switch (decl.interpolation) {
-          case Interpolation::kPerspective:
-            out.attr.push_back(interpolate_perspective(b, d.a[a], d.w, flat[a]));
-            break;
-          case Interpolation::kLinear:
-            out.attr.push_back(interpolate_linear(b, d.a[a]));
-            break;
-          case Interpolation::kFlat:
-            out.attr.push_back(flat[a]);
-            break;
+        case Interpolation::kPerspective:
+          out.attr.push_back(interpolate_perspective(b, d.a[a], d.w, flat[a]));
+          break;
+        case Interpolation::kLinear:
+          out.attr.push_back(interpolate_linear(b, d.a[a]));
+          break;
+        case Interpolation::kFlat:
+          out.attr.push_back(flat[a]);
+          break;
         }
       }
     };
     // rule: PIPE.OPT.EARLY_Z
     if (!o.early_z)
-      interpolate();  // late: attributes first, dropped below if the fragment is killed
+      interpolate(); // late: attributes first, dropped below if the fragment is killed
     if (s.depth && !f.helper) {
       // rule: PIPE.DEPTH.INTERP, PIPE.DEPTH.TEST, PIPE.DEPTH.WRITE
       const std::size_t t = tile_of(f.x, f.y);
@@ -677,4 +686,4 @@ std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s, const Pipe
   return result;
 }
 
-}  // namespace rastrules::pipe
+} // namespace rastrules::pipe

@@ -34,4 +34,4 @@ std::array<TriangleSetup, 2> setup_point(Vec2 c, const RasterState& state) {
   return {setup_triangle(tris[0], no_cull), setup_triangle(tris[1], no_cull)};
 }
 
-}  // namespace rastrules
+} // namespace rastrules

@@ -24,37 +24,50 @@ namespace rastrules {
 
 std::string_view to_string(FillConvention f) {
   switch (f) {
-    case FillConvention::kTopLeft: return "top-left";
-    case FillConvention::kTopRight: return "top-right";
-    case FillConvention::kBottomLeft: return "bottom-left";
-    case FillConvention::kBottomRight: return "bottom-right";
+  case FillConvention::kTopLeft:
+    return "top-left";
+  case FillConvention::kTopRight:
+    return "top-right";
+  case FillConvention::kBottomLeft:
+    return "bottom-left";
+  case FillConvention::kBottomRight:
+    return "bottom-right";
   }
   return "unknown";
 }
 
 std::string_view to_string(CullMode c) {
   switch (c) {
-    case CullMode::kNone: return "none";
-    case CullMode::kBack: return "back";
-    case CullMode::kFront: return "front";
+  case CullMode::kNone:
+    return "none";
+  case CullMode::kBack:
+    return "back";
+  case CullMode::kFront:
+    return "front";
   }
   return "unknown";
 }
 
 std::string_view to_string(FrontFace f) {
   switch (f) {
-    case FrontFace::kClockwise: return "cw";
-    case FrontFace::kCounterClockwise: return "ccw";
+  case FrontFace::kClockwise:
+    return "cw";
+  case FrontFace::kCounterClockwise:
+    return "ccw";
   }
   return "unknown";
 }
 
 std::string_view to_string(TriangleStatus s) {
   switch (s) {
-    case TriangleStatus::kRasterized: return "rasterized";
-    case TriangleStatus::kDegenerate: return "degenerate (zero area after snapping)";
-    case TriangleStatus::kCulledBack: return "culled (back-facing)";
-    case TriangleStatus::kCulledFront: return "culled (front-facing)";
+  case TriangleStatus::kRasterized:
+    return "rasterized";
+  case TriangleStatus::kDegenerate:
+    return "degenerate (zero area after snapping)";
+  case TriangleStatus::kCulledBack:
+    return "culled (back-facing)";
+  case TriangleStatus::kCulledFront:
+    return "culled (front-facing)";
   }
   return "unknown";
 }
@@ -122,14 +135,16 @@ std::string field_of(std::size_t p) {
 // segment): the quadrilateral line modes, and the D3D line mode on a multisampled target.
 // rule: SCENE.LINE_MODE, MSAA.LINE.MODE
 bool lines_as_quads(LineMode mode, bool aa, std::uint32_t samples) {
-  if (is_quad(mode)) return !aa;
+  if (is_quad(mode))
+    return !aa;
   return mode == LineMode::kD3DDiamond && samples > 1;
 }
 
 std::string mask_hex(std::uint32_t m) {
   static constexpr char kDigits[] = "0123456789abcdef";
   std::string out = "0x";
-  for (int shift = 28; shift >= 0; shift -= 4) out += kDigits[(m >> shift) & 0xFu];
+  for (int shift = 28; shift >= 0; shift -= 4)
+    out += kDigits[(m >> shift) & 0xFu];
   return out;
 }
 
@@ -140,43 +155,42 @@ std::optional<SceneError> validate_msaa(const Scene& scene) {
   const SamplePattern& pat = ms.pattern;
   const std::uint32_t n = pat.count();
   switch (pat.kind) {
-    case PatternKind::kStandard:
-    case PatternKind::kCenter: {
-      if (!is_standard_count(n)) {
-        return SceneError{"samples", std::to_string(n) + " has no " +
-                                         std::string(to_string(pat.kind)) +
-                                         " pattern (1, 2, 4, 8, 16)"};
-      }
-      const SamplePattern want =
-          pat.kind == PatternKind::kCenter ? center_pattern(n) : standard_pattern(n);
-      if (pat.positions != want.positions) {
-        return SceneError{"sample_pattern", "positions differ from the " +
-                                                std::string(to_string(pat.kind)) + " pattern of " +
-                                                std::to_string(n) + " samples"};
-      }
-      break;
+  case PatternKind::kStandard:
+  case PatternKind::kCenter: {
+    if (!is_standard_count(n)) {
+      return SceneError{"samples", std::to_string(n) + " has no " +
+                                       std::string(to_string(pat.kind)) +
+                                       " pattern (1, 2, 4, 8, 16)"};
     }
-    case PatternKind::kCustom:
-      if (n < 1 || n > kMaxSamples) {
-        return SceneError{"sample_pattern", "must list 1 to " + std::to_string(kMaxSamples) +
-                                                " positions, got " + std::to_string(n)};
-      }
-      for (std::size_t k = 0; k < n; ++k) {
-        const SampleOffset o = pat.positions[k];
-        const std::int32_t c[2] = {o.x, o.y};
-        for (std::size_t a = 0; a < 2; ++a) {
-          if (c[a] < kSampleGridMin || c[a] > kSampleGridMax) {
-            return SceneError{"sample_pattern[" + std::to_string(k) + "][" + std::to_string(a) +
-                                  "]",
-                              "must be an integer in [" + std::to_string(kSampleGridMin) + ", " +
-                                  std::to_string(kSampleGridMax) + "] (1/16 px), got " +
-                                  std::to_string(c[a])};
-          }
+    const SamplePattern want =
+        pat.kind == PatternKind::kCenter ? center_pattern(n) : standard_pattern(n);
+    if (pat.positions != want.positions) {
+      return SceneError{"sample_pattern", "positions differ from the " +
+                                              std::string(to_string(pat.kind)) + " pattern of " +
+                                              std::to_string(n) + " samples"};
+    }
+    break;
+  }
+  case PatternKind::kCustom:
+    if (n < 1 || n > kMaxSamples) {
+      return SceneError{"sample_pattern", "must list 1 to " + std::to_string(kMaxSamples) +
+                                              " positions, got " + std::to_string(n)};
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      const SampleOffset o = pat.positions[k];
+      const std::int32_t c[2] = {o.x, o.y};
+      for (std::size_t a = 0; a < 2; ++a) {
+        if (c[a] < kSampleGridMin || c[a] > kSampleGridMax) {
+          return SceneError{"sample_pattern[" + std::to_string(k) + "][" + std::to_string(a) + "]",
+                            "must be an integer in [" + std::to_string(kSampleGridMin) + ", " +
+                                std::to_string(kSampleGridMax) + "] (1/16 px), got " +
+                                std::to_string(c[a])};
         }
       }
-      break;
-    default:
-      return SceneError{"sample_pattern", "unknown pattern kind"};
+    }
+    break;
+  default:
+    return SceneError{"sample_pattern", "unknown pattern kind"};
   }
   // rule: MSAA.MASK.AND, MSAA.LIMITS
   // 0xFFFFFFFF is the default "all samples"; any other value must fit the pattern.
@@ -199,7 +213,8 @@ std::optional<SceneError> validate_msaa(const Scene& scene) {
   }
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     const Primitive& prim = scene.primitives[p];
-    if (!is_line(prim.type) || n <= 1) continue;
+    if (!is_line(prim.type) || n <= 1)
+      continue;
     // rule: MSAA.SHADING.SAMPLE
     if (ms.shading == ShadingRate::kSample && scene.line_mode == LineMode::kVulkanBresenham) {
       return SceneError{"shading", "\"sample\" shading is undefined for \"vulkan-bresenham\" "
@@ -235,7 +250,8 @@ std::variant<PreparedScene, SceneError> prepare(const Scene& scene) {
                                            std::to_string(scene.height)};
   }
   // rule: MSAA.LIMITS
-  if (auto err = validate_msaa(scene)) return *err;
+  if (auto err = validate_msaa(scene))
+    return *err;
   const std::uint32_t samples = scene.msaa.count();
   PreparedScene out;
   out.width = scene.width;
@@ -342,8 +358,10 @@ struct CollectLimitReached {};
 // Counts one collected entry against the budget; throws CollectLimitReached (caught by
 // for_each_fragment_bounded, never escaping the kernel) when it is spent.
 void take(CollectBudget* budget) {
-  if (budget == nullptr) return;
-  if (budget->left == 0) throw CollectLimitReached{};
+  if (budget == nullptr)
+    return;
+  if (budget->left == 0)
+    throw CollectLimitReached{};
   --budget->left;
 }
 
@@ -449,10 +467,11 @@ std::vector<PixelCoverage> sample_coverage_of(const PreparedScene& scene,
     // Triangles, a point's two triangles and quadrilateral lines: every sample tested.
     // rule: MSAA.COVER.SAMPLE, MSAA.POINT.PER_SAMPLE
     for (const PreparedTriangle& t : prim.triangles) {
-      walk_samples(scene, t.setup, options, [&](std::int32_t x, std::int32_t y, std::uint32_t mask) {
-        take(budget);
-        cov.push_back(PixelCoverage{t.seg, y, x, mask, std::nullopt});
-      });
+      walk_samples(scene, t.setup, options,
+                   [&](std::int32_t x, std::int32_t y, std::uint32_t mask) {
+                     take(budget);
+                     cov.push_back(PixelCoverage{t.seg, y, x, mask, std::nullopt});
+                   });
     }
   } else {
     // Vulkan Bresenham lines (any count) and D3D lines with one sample: every sample of each
@@ -468,8 +487,8 @@ std::vector<PixelCoverage> sample_coverage_of(const PreparedScene& scene,
                             cov.push_back(PixelCoverage{seg, y, x, all, c});
                           });
       } else {
-        rasterize_aliased_line(prim.v[s], prim.v[s + 1], scene.line_mode, scene.width,
-                               scene.height, [&](std::int32_t x, std::int32_t y) {
+        rasterize_aliased_line(prim.v[s], prim.v[s + 1], scene.line_mode, scene.width, scene.height,
+                               [&](std::int32_t x, std::int32_t y) {
                                  take(budget);
                                  cov.push_back(PixelCoverage{seg, y, x, all, std::nullopt});
                                });
@@ -514,7 +533,8 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p,
   };
 
   // rule: MSAA.MASK.AND
-  if (em == 0) return {};  // the mask removes every sample: no fragment, no quad, no helper
+  if (em == 0)
+    return {}; // the mask removes every sample: no fragment, no quad, no helper
   const std::vector<PixelCoverage> cov = sample_coverage_of(scene, prim, options, budget);
   std::vector<Fragment> out;
   // (seg, y, x) -> (coverage before the mask, after the mask) of pixels with a fragment.
@@ -524,10 +544,13 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p,
   for (const PixelCoverage& c : cov) {
     // rule: MSAA.MASK.AND
     const std::uint32_t mask = c.coverage & em;
-    if (mask == 0) continue;  // the mask removed every covered sample: nothing to write
-    if (ms.wants_quads()) lanes.emplace(LaneKey{c.seg, c.y, c.x}, LaneMasks{c.coverage, mask});
+    if (mask == 0)
+      continue; // the mask removed every covered sample: nothing to write
+    if (ms.wants_quads())
+      lanes.emplace(LaneKey{c.seg, c.y, c.x}, LaneMasks{c.coverage, mask});
     Fragment f{id, c.x, c.y, mask, seg_of(c.seg), c.coverage_q16};
-    if (ms.has_centroid) f.centroid = centroid_of(c.coverage);
+    if (ms.has_centroid)
+      f.centroid = centroid_of(c.coverage);
     if (!per_sample) {
       // rule: MSAA.SHADING.PIXEL
       take(budget);
@@ -536,7 +559,8 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p,
     }
     // rule: MSAA.SHADING.SAMPLE
     for (std::uint32_t k = 0; k < pattern.count(); ++k) {
-      if (((mask >> k) & 1u) == 0u) continue;
+      if (((mask >> k) & 1u) == 0u)
+        continue;
       Fragment fs = f;
       fs.sample = k;
       fs.mask = std::uint32_t{1} << k;
@@ -591,12 +615,15 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p,
       for (std::uint32_t lane = 0; lane < 4; ++lane) {
         const std::int32_t x = qx + static_cast<std::int32_t>(lane & 1u);
         const std::int32_t y = qy + static_cast<std::int32_t>(lane >> 1u);
-        if (x >= scene.width || y >= scene.height) continue;  // helpers outside: not listed
+        if (x >= scene.width || y >= scene.height)
+          continue; // helpers outside: not listed
         if (!lane_covered(seg, k, x, y)) {
           Fragment h{id, x, y, 0u, seg_of(seg), std::nullopt};
           h.helper = true;
-          if (per_sample) h.sample = k;
-          if (ms.has_centroid) h.centroid = centroid_of(0u);
+          if (per_sample)
+            h.sample = k;
+          if (ms.has_centroid)
+            h.centroid = centroid_of(0u);
           take(budget);
           out.push_back(h);
         }
@@ -622,13 +649,14 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p,
   return out;
 }
 
-}  // namespace
+} // namespace
 
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.PRIM.LINE_STRIP, SCENE.OUTPUT.MSAA
 // rule: FAST.EQUALS.PLAIN
 std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_t p,
                                           const RenderOptions& options) {
-  if (is_single_sample(scene)) return rasterize_single(scene, p, options, nullptr);
+  if (is_single_sample(scene))
+    return rasterize_single(scene, p, options, nullptr);
   return rasterize_msaa(scene, p, options, nullptr);
 }
 
@@ -642,8 +670,9 @@ void for_each_fragment(const PreparedScene& scene, std::size_t p, const RenderOp
   const PreparedPrimitive& prim = scene.primitives[p];
   if (prim.type == PrimitiveType::kTriangle && is_single_sample(scene)) {
     const auto id = static_cast<std::uint32_t>(p);
-    walk_centres(scene, prim.triangles[0].setup, options,
-                 [&](std::int32_t x, std::int32_t y) { emit(Fragment{id, x, y, 1u}); });
+    walk_centres(scene, prim.triangles[0].setup, options, [&](std::int32_t x, std::int32_t y) {
+      emit(Fragment{id, x, y, 1u});
+    });
     return;
   }
   for (const Fragment& f : rasterize_primitive(scene, p, options))
@@ -656,12 +685,12 @@ void for_each_fragment(const PreparedScene& scene, std::size_t p,
 }
 
 // rule: SCENE.INPUT.LIMITS, FAST.EQUALS.PLAIN
-bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p, std::uint64_t max_collected,
-                               const RenderOptions& options,
+bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p,
+                               std::uint64_t max_collected, const RenderOptions& options,
                                const std::function<void(const Fragment&)>& emit) {
   const PreparedPrimitive& prim = scene.primitives[p];
   if (prim.type == PrimitiveType::kTriangle && is_single_sample(scene)) {
-    for_each_fragment(scene, p, options, emit);  // streamed: nothing is held
+    for_each_fragment(scene, p, options, emit); // streamed: nothing is held
     return true;
   }
   CollectBudget budget{max_collected};
@@ -672,7 +701,8 @@ bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p, std::u
   } catch (const CollectLimitReached&) {
     return false;
   }
-  for (const Fragment& f : frags) emit(f);
+  for (const Fragment& f : frags)
+    emit(f);
   return true;
 }
 
@@ -700,9 +730,9 @@ std::variant<ResolvedImage, SceneError> resolve(const PreparedScene& scene,
   if (scene.width < 1 || scene.height < 1 || n < 1 || total > kMaxResolveSamples) {
     return SceneError{"target", "a resolve needs width x height x samples in [1, " +
                                     std::to_string(kMaxResolveSamples) +
-                                    "] (kMaxResolveSamples), got " +
-                                    std::to_string(scene.width) + " x " +
-                                    std::to_string(scene.height) + " x " + std::to_string(n)};
+                                    "] (kMaxResolveSamples), got " + std::to_string(scene.width) +
+                                    " x " + std::to_string(scene.height) + " x " +
+                                    std::to_string(n)};
   }
   std::vector<Rgba8> samples(static_cast<std::size_t>(total), scene.clear_color);
   for (std::size_t i = 0; i < fragments.size(); ++i) {
@@ -712,12 +742,15 @@ std::variant<ResolvedImage, SceneError> resolve(const PreparedScene& scene,
       return SceneError{"fragments[" + std::to_string(i) + "]",
                         "names a primitive or pixel outside the scene"};
     }
-    if (f.helper) continue;  // helper lanes write nothing (MSAA.QUAD.HELPER)
+    if (f.helper)
+      continue; // helper lanes write nothing (MSAA.QUAD.HELPER)
     const std::size_t base =
         (static_cast<std::size_t>(f.y) * static_cast<std::size_t>(scene.width) +
-         static_cast<std::size_t>(f.x)) * n;
+         static_cast<std::size_t>(f.x)) *
+        n;
     for (std::uint32_t k = 0; k < n; ++k) {
-      if (((f.mask >> k) & 1u) != 0u) samples[base + k] = scene.primitives[f.prim].color;
+      if (((f.mask >> k) & 1u) != 0u)
+        samples[base + k] = scene.primitives[f.prim].color;
     }
   }
   ResolvedImage img;
@@ -735,8 +768,9 @@ std::variant<ResolvedImage, SceneError> resolve(const PreparedScene& scene,
 
 std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene) {
   auto prepared = prepare(scene);
-  if (auto* err = std::get_if<SceneError>(&prepared)) return *err;
+  if (auto* err = std::get_if<SceneError>(&prepared))
+    return *err;
   return rasterize(std::get<PreparedScene>(prepared));
 }
 
-}  // namespace rastrules
+} // namespace rastrules

@@ -38,7 +38,7 @@ struct FastBlockModel : FastKernelModel {
   }
 };
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs
 
 int main() {
   using namespace rastrules::proofs;

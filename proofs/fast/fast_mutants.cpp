@@ -178,11 +178,17 @@ int main() {
       {BatchPoisonPositive::kName, "fast/batch_small_i32 (lane bits)",
        prove_lane_bits<BatchPoisonPositive>},
       {SnapRoundTowardZero::kName, "fast/batch_snap_simd",
-       [](Prover& pr) { prove_batch_snap_simd<SnapRoundTowardZero>(pr, {{0, 255}}); }},
+       [](Prover& pr) {
+         prove_batch_snap_simd<SnapRoundTowardZero>(pr, {{0, 255}});
+       }},
       {SnapHighestTooLarge::kName, "fast/batch_snap_simd",
-       [](Prover& pr) { prove_batch_snap_simd<SnapHighestTooLarge>(pr, {{0, 255}}); }},
+       [](Prover& pr) {
+         prove_batch_snap_simd<SnapHighestTooLarge>(pr, {{0, 255}});
+       }},
       {SnapScale128::kName, "fast/batch_snap_simd",
-       [](Prover& pr) { prove_batch_snap_simd<SnapScale128>(pr, {{0, 255}}); }},
+       [](Prover& pr) {
+         prove_batch_snap_simd<SnapScale128>(pr, {{0, 255}});
+       }},
   };
   std::vector<std::string> summary;
   int survived = 0;

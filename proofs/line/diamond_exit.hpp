@@ -33,7 +33,7 @@ namespace rastrules::proofs {
 
 // A real number term in the active Domain's context (see sym.hpp for the pattern).
 class RealNum {
- public:
+public:
   explicit RealNum(std::int64_t v) : e_(Domain::active().ctx().real_val(v)) {}
   explicit RealNum(z3::expr e) : e_(std::move(e)) {}
   [[nodiscard]] const z3::expr& expr() const { return e_; }
@@ -49,7 +49,7 @@ class RealNum {
   friend SymBool operator>(const RealNum& a, const RealNum& b) { return SymBool(a.e_ > b.e_); }
   friend SymBool operator>=(const RealNum& a, const RealNum& b) { return SymBool(a.e_ >= b.e_); }
 
- private:
+private:
   z3::expr e_;
 };
 
@@ -60,22 +60,22 @@ struct DiamondKernelModel {
   static auto meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
     return formula::d3d_meets<YMajor, M>(au, av, du, dv, h);
   }
-  template <bool YMajor, class M>
-  static auto contains(const M& pu, const M& pv, const M& h) {
+  template <bool YMajor, class M> static auto contains(const M& pu, const M& pv, const M& h) {
     return formula::d3d_contains<YMajor, M>(pu, pv, h);
   }
   template <bool YMajor, class M>
   static auto exits(const M& au, const M& av, const M& bu, const M& bv, const M& h) {
     return formula::d3d_exits<YMajor, M>(au, av, bu, bv, h);
   }
-  template <class M>
-  static auto vk_contains(const M& pu, const M& pv, const M& h) {
+  template <class M> static auto vk_contains(const M& pu, const M& pv, const M& h) {
     return formula::vk_contains<M>(pu, pv, h);
   }
 };
 
 // |x| as a Z3 term.
-inline z3::expr abs_term(const z3::expr& x) { return z3::ite(x >= 0, x, -x); }
+inline z3::expr abs_term(const z3::expr& x) {
+  return z3::ite(x >= 0, x, -x);
+}
 
 // LINE.D3D.TEST_AREA in the spec's words, for a point (u, v) relative to the centre:
 // inside the open diamond; or on the boundary (|u| + |v| = h) at a lower edge or the bottom
@@ -90,7 +90,8 @@ inline z3::expr spec_in_d3d_area(bool y_major, const z3::expr& u, const z3::expr
   const z3::expr bottom_corner = (u == 0) && (v == h);
   const z3::expr right_corner = (u == h) && (v == 0);
   z3::expr in = (l1 < h) || lower_left_edge || lower_right_edge || bottom_corner;
-  if (y_major) in = in || right_corner;
+  if (y_major)
+    in = in || right_corner;
   return in;
 }
 
@@ -111,7 +112,7 @@ inline z3::expr spec_in_vk_point_area(const z3::expr& u, const z3::expr& v, cons
 // division go to Z3's default solver instead (Engine::kDefault). Same report format: one line
 // per theorem with PROVED / REFUTED / UNKNOWN and the time; a counterexample on REFUTED.
 class NraProver {
- public:
+public:
   explicit NraProver(z3::context& ctx) : ctx_(ctx) {}
 
   // kNlsat: the qfnra-nlsat tactic; kDefault: Z3's default solver (for terms with division).
@@ -122,7 +123,8 @@ class NraProver {
                Engine engine = Engine::kNlsat) {
     const auto start = std::chrono::steady_clock::now();
     auto make = [&] {
-      return engine == Engine::kNlsat ? z3::tactic(ctx_, "qfnra-nlsat").mk_solver() : z3::solver(ctx_);
+      return engine == Engine::kNlsat ? z3::tactic(ctx_, "qfnra-nlsat").mk_solver()
+                                      : z3::solver(ctx_);
     };
     z3::solver s = make();
     z3::params p(ctx_);
@@ -147,12 +149,14 @@ class NraProver {
         status = Status::kRefuted;
         const z3::model m = s.get_model();
         note = "\n  counterexample (raw units):";
-        for (const auto& [n, e] : show) note += "\n    " + n + " = " + m.eval(e, true).to_string();
+        for (const auto& [n, e] : show)
+          note += "\n    " + n + " = " + m.eval(e, true).to_string();
       } else {
         note = " -- solver gave up: " + s.reason_unknown();
       }
     }
-    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double secs =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << to_string(status) << " " << name << " (" << std::fixed << std::setprecision(2)
               << secs << (engine == Engine::kNlsat ? " s, qfnra-nlsat)" : " s, z3 default solver)")
               << note << "\n";
@@ -166,11 +170,12 @@ class NraProver {
   }
   [[nodiscard]] bool all_proved() const {
     for (const auto& r : results_)
-      if (r.second != Status::kProved) return false;
+      if (r.second != Status::kProved)
+        return false;
     return !results_.empty();
   }
 
- private:
+private:
   z3::context& ctx_;
   std::vector<std::pair<std::string, Status>> results_;
 };
@@ -180,7 +185,8 @@ class NraProver {
 // terms are hash-consed, so an atom built twice by the same code is the same term). If the
 // skeleton of (hypotheses => goal) is a tautology, so is the formula itself: the theorem
 // step that only chains proved lemmas is checked this way, without arithmetic.
-inline z3::expr boolean_skeleton(const z3::expr& e, std::vector<std::pair<z3::expr, z3::expr>>& atoms) {
+inline z3::expr boolean_skeleton(const z3::expr& e,
+                                 std::vector<std::pair<z3::expr, z3::expr>>& atoms) {
   if (e.is_app()) {
     const Z3_decl_kind k = e.decl().decl_kind();
     const bool connective = k == Z3_OP_AND || k == Z3_OP_OR || k == Z3_OP_NOT ||
@@ -190,12 +196,14 @@ inline z3::expr boolean_skeleton(const z3::expr& e, std::vector<std::pair<z3::ex
                              e.num_args() > 1 && e.arg(1).is_bool());
     if (connective) {
       z3::expr_vector args(e.ctx());
-      for (unsigned i = 0; i < e.num_args(); ++i) args.push_back(boolean_skeleton(e.arg(i), atoms));
+      for (unsigned i = 0; i < e.num_args(); ++i)
+        args.push_back(boolean_skeleton(e.arg(i), atoms));
       return e.num_args() == 0 ? e : e.decl()(args);
     }
   }
   for (const auto& [atom, var] : atoms)
-    if (z3::eq(atom, e)) return var;
+    if (z3::eq(atom, e))
+      return var;
   const z3::expr var = e.ctx().bool_const(("atom!" + std::to_string(atoms.size())).c_str());
   atoms.emplace_back(e, var);
   return var;
@@ -209,16 +217,17 @@ inline z3::expr boolean_skeleton(const z3::expr& e, std::vector<std::pair<z3::ex
 // The converse, meets(a, d) => some a + t d in T, times out as one query (with the quantifier
 // and with one explicit witness alike); it is proved in lemmas by prove_d3d_meets_witness below.
 // rule: LINE.D3D.TEST_AREA, LINE.D3D.EXIT, LINE.DIAMOND.GEOMETRY
-template <class F>
-void prove_d3d_diamond_exit(Prover& pr, NraProver& nra) {
+template <class F> void prove_d3d_diamond_exit(Prover& pr, NraProver& nra) {
   Domain& dom = pr.domain();
   z3::context& ctx = dom.ctx();
   const RealNum h(kSubpixelHalf);
   for (const bool y_major : {false, true}) {
     const std::string axis = y_major ? "y-major" : "x-major";
     const std::string sfx = y_major ? "_y" : "_x";
-    const z3::expr au = ctx.real_const(("au" + sfx).c_str()), av = ctx.real_const(("av" + sfx).c_str());
-    const z3::expr bu = ctx.real_const(("bu" + sfx).c_str()), bv = ctx.real_const(("bv" + sfx).c_str());
+    const z3::expr au = ctx.real_const(("au" + sfx).c_str()),
+                   av = ctx.real_const(("av" + sfx).c_str());
+    const z3::expr bu = ctx.real_const(("bu" + sfx).c_str()),
+                   bv = ctx.real_const(("bv" + sfx).c_str());
     const z3::expr t = ctx.real_const(("t" + sfx).c_str());
     const z3::expr du = bu - au, dv = bv - av;
     const RealNum A(au), B(av), Bu(bu), Bv(bv), Du(du), Dv(dv);
@@ -234,8 +243,10 @@ void prove_d3d_diamond_exit(Prover& pr, NraProver& nra) {
     auto on_segment_in_t = [&](const z3::expr& tt) {
       return (tt >= 0) && (tt <= 1) && spec_in_d3d_area(y_major, au + tt * du, av + tt * dv, hv);
     };
-    const std::vector<std::pair<std::string, z3::expr>> show = {
-        {"a - centre (u)", au}, {"a - centre (v)", av}, {"b - centre (u)", bu}, {"b - centre (v)", bv}};
+    const std::vector<std::pair<std::string, z3::expr>> show = {{"a - centre (u)", au},
+                                                                {"a - centre (v)", av},
+                                                                {"b - centre (u)", bu},
+                                                                {"b - centre (v)", bv}};
 
     pr.watch("b - centre (u)", bu, Unit::kCoordRaw);
     pr.watch("b - centre (v)", bv, Unit::kCoordRaw);
@@ -248,7 +259,6 @@ void prove_d3d_diamond_exit(Prover& pr, NraProver& nra) {
     with_t.emplace_back("t", t);
     nra.prove("a + t (b - a) in T for some t in [0, 1]  =>  meets<" + axis + ">(a, b - a)",
               {on_segment_in_t(t)}, kmeets, with_t);
-
   }
 }
 
@@ -281,8 +291,7 @@ void prove_d3d_diamond_exit(Prover& pr, NraProver& nra) {
 //         the Boolean skeleton (boolean_skeleton): a propositional tautology, no arithmetic.
 // Every lemma is always run; if one is not PROVED the theorem is UNKNOWN (skipped).
 // rule: LINE.D3D.TEST_AREA, LINE.DIAMOND.GEOMETRY
-template <class F>
-void prove_d3d_meets_witness(Prover& pr, NraProver& nra) {
+template <class F> void prove_d3d_meets_witness(Prover& pr, NraProver& nra) {
   z3::context& ctx = pr.ctx();
   const RealNum h(kSubpixelHalf);
   const z3::expr hv = h.expr();
@@ -293,16 +302,18 @@ void prove_d3d_meets_witness(Prover& pr, NraProver& nra) {
     bool strict;
   };
   const std::array<HalfPlane, 4> planes = {{
-      {+1, +1, false},  // u + v <= h   (lower-right edge included)
-      {-1, +1, false},  // -u + v <= h  (lower-left edge included)
-      {+1, -1, true},   // u - v < h    (upper-right edge excluded)
-      {-1, -1, true},   // -u - v < h   (upper-left edge excluded)
+      {+1, +1, false}, // u + v <= h   (lower-right edge included)
+      {-1, +1, false}, // -u + v <= h  (lower-left edge included)
+      {+1, -1, true},  // u - v < h    (upper-right edge excluded)
+      {-1, -1, true},  // -u - v < h   (upper-left edge excluded)
   }};
   for (const bool y_major : {false, true}) {
     const std::string axis = y_major ? "y-major" : "x-major";
     const std::string sfx = "_w" + std::string(y_major ? "y" : "x");
-    const z3::expr au = ctx.real_const(("au" + sfx).c_str()), av = ctx.real_const(("av" + sfx).c_str());
-    const z3::expr du = ctx.real_const(("du" + sfx).c_str()), dv = ctx.real_const(("dv" + sfx).c_str());
+    const z3::expr au = ctx.real_const(("au" + sfx).c_str()),
+                   av = ctx.real_const(("av" + sfx).c_str());
+    const z3::expr du = ctx.real_const(("du" + sfx).c_str()),
+                   dv = ctx.real_const(("dv" + sfx).c_str());
     const z3::expr t = ctx.real_const(("t" + sfx).c_str());
     const z3::expr tc = ctx.real_const(("tc" + sfx).c_str());
     auto sgn = [](int s, const z3::expr& x) { return s > 0 ? x : -x; };
@@ -315,15 +326,18 @@ void prove_d3d_meets_witness(Prover& pr, NraProver& nra) {
       q.push_back(ctx.real_const(("q" + std::to_string(k) + sfx).c_str()));
       strict.push_back(pl.strict);
     }
-    m.push_back(-one), r.push_back(zero), q.push_back(zero), strict.push_back(false);  // -t <= 0
-    m.push_back(one), r.push_back(one), q.push_back(one), strict.push_back(false);     // t <= 1
+    m.push_back(-one), r.push_back(zero), q.push_back(zero), strict.push_back(false); // -t <= 0
+    m.push_back(one), r.push_back(one), q.push_back(one), strict.push_back(false);    // t <= 1
     const std::size_t n = m.size();
 
-    std::vector<z3::expr> defs;  // q_k is r_k / m_k
-    for (std::size_t k = 0; k < 4; ++k) defs.push_back(z3::implies(m[k] != 0, q[k] * m[k] == r[k]));
+    std::vector<z3::expr> defs; // q_k is r_k / m_k
+    for (std::size_t k = 0; k < 4; ++k)
+      defs.push_back(z3::implies(m[k] != 0, q[k] * m[k] == r[k]));
     auto rel = [](bool s, const z3::expr& x, const z3::expr& y) { return s ? x < y : x <= y; };
     // Constraint k at t, and its form as a bound on t.
-    auto holds_at = [&](std::size_t k, const z3::expr& tt) { return rel(strict[k], tt * m[k], r[k]); };
+    auto holds_at = [&](std::size_t k, const z3::expr& tt) {
+      return rel(strict[k], tt * m[k], r[k]);
+    };
     auto bound_ok = [&](std::size_t k, const z3::expr& tt) {
       return z3::implies(m[k] < 0, rel(strict[k], q[k], tt)) &&
              z3::implies(m[k] > 0, rel(strict[k], tt, q[k])) &&
@@ -331,7 +345,8 @@ void prove_d3d_meets_witness(Prover& pr, NraProver& nra) {
     };
     // FM's conclusion.
     z3::expr fm = ctx.bool_val(true);
-    for (std::size_t k = 0; k < n; ++k) fm = fm && z3::implies(m[k] == 0, rel(strict[k], zero, r[k]));
+    for (std::size_t k = 0; k < n; ++k)
+      fm = fm && z3::implies(m[k] == 0, rel(strict[k], zero, r[k]));
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = 0; j < n; ++j)
         if (i != j)
@@ -346,7 +361,8 @@ void prove_d3d_meets_witness(Prover& pr, NraProver& nra) {
     const z3::expr t_fm = (lo + up) / ctx.real_val(2);
     // The corner witness tc = dot / len2 for q = (h, 0).
     const z3::expr dot = (hv - au) * du + (zero - av) * dv, len2 = du * du + dv * dv;
-    const z3::expr tc_def = z3::implies(len2 != 0, tc * len2 == dot) && z3::implies(len2 == 0, tc == 0);
+    const z3::expr tc_def =
+        z3::implies(len2 != 0, tc * len2 == dot) && z3::implies(len2 == 0, tc == 0);
     const RealNum A(au), B(av), Du(du), Dv(dv);
     const z3::expr kmeets = y_major ? F::template meets<true>(A, B, Du, Dv, h).expr()
                                     : F::template meets<false>(A, B, Du, Dv, h).expr();
@@ -357,14 +373,15 @@ void prove_d3d_meets_witness(Prover& pr, NraProver& nra) {
     std::vector<std::pair<std::string, z3::expr>> show = {
         {"a - centre (u)", au}, {"a - centre (v)", av}, {"d (u)", du}, {"d (v)", dv}};
     const std::string pre = "reverse<" + axis + "> ";
-    std::vector<z3::expr> lemmas;  // proved lemma statements, for the theorem
+    std::vector<z3::expr> lemmas; // proved lemma statements, for the theorem
     bool ok = true;
     auto run_nra = [&](const std::string& name, std::vector<z3::expr> hyps, const z3::expr& goal,
                        const std::vector<std::pair<std::string, z3::expr>>& sh) {
       z3::expr stmt = goal;
       if (!hyps.empty()) {
         z3::expr all = hyps[0];
-        for (std::size_t k = 1; k < hyps.size(); ++k) all = all && hyps[k];
+        for (std::size_t k = 1; k < hyps.size(); ++k)
+          all = all && hyps[k];
         stmt = z3::implies(all, goal);
       }
       ok = (nra.prove(pre + name, hyps, goal, sh) == Status::kProved) && ok;
@@ -374,18 +391,21 @@ void prove_d3d_meets_witness(Prover& pr, NraProver& nra) {
     // FM (the only lemma about the kernel's formula).
     std::vector<z3::expr> fm_hyps = defs;
     fm_hyps.push_back(kmeets);
-    if (y_major) fm_hyps.push_back(!on_corner);
+    if (y_major)
+      fm_hyps.push_back(!on_corner);
     run_nra("lemma FM: meets (off the right corner) => bounds compatible", fm_hyps, fm, show);
     // ORDER (linear).
     {
       z3::expr goal = ctx.bool_val(true);
-      for (std::size_t k = 0; k < n; ++k) goal = goal && bound_ok(k, t_fm);
+      for (std::size_t k = 0; k < n; ++k)
+        goal = goal && bound_ok(k, t_fm);
       run_nra("lemma ORDER: t_fm = (L + U) / 2 within every bound", {fm}, goal, show);
     }
     // BACK_k at a free t, then instantiated at t_fm for the theorem.
     for (std::size_t k = 0; k < n; ++k) {
       std::vector<z3::expr> hyps;
-      if (k < 4) hyps.push_back(defs[k]);
+      if (k < 4)
+        hyps.push_back(defs[k]);
       hyps.push_back(bound_ok(k, t));
       auto sh = show;
       sh.emplace_back("t", t);
@@ -398,12 +418,15 @@ void prove_d3d_meets_witness(Prover& pr, NraProver& nra) {
     // SPEC at a free t.
     {
       std::vector<z3::expr> hyps;
-      for (std::size_t k = 0; k < n; ++k) hyps.push_back(holds_at(k, t));
+      for (std::size_t k = 0; k < n; ++k)
+        hyps.push_back(holds_at(k, t));
       auto sh = show;
       sh.emplace_back("t", t);
-      run_nra("lemma SPEC: every t m_k (<|<=) r_k => a + t d in T (spec words)", hyps, in_t_at(t), sh);
+      run_nra("lemma SPEC: every t m_k (<|<=) r_k => a + t d in T (spec words)", hyps, in_t_at(t),
+              sh);
       z3::expr all = holds_at(0, t_fm);
-      for (std::size_t k = 1; k < n; ++k) all = all && holds_at(k, t_fm);
+      for (std::size_t k = 1; k < n; ++k)
+        all = all && holds_at(k, t_fm);
       lemmas.back() = z3::implies(all, in_t_at(t_fm));
     }
     z3::expr witness = t_fm;
@@ -454,7 +477,8 @@ void prove_d3d_meets_witness(Prover& pr, NraProver& nra) {
     base.push_back(kmeets);
     {
       z3::solver sat = z3::tactic(ctx, "qfnra-nlsat").mk_solver();
-      for (const z3::expr& b : base) sat.add(b);
+      for (const z3::expr& b : base)
+        sat.add(b);
       if (sat.check() != z3::sat) {
         pr.skip(thm, "hypotheses not shown satisfiable");
         continue;
@@ -464,8 +488,10 @@ void prove_d3d_meets_witness(Prover& pr, NraProver& nra) {
     const z3::expr goal = y_major ? z3::ite(on_corner, in_t_at(tc), in_t_at(t_fm)) : in_t_at(t_fm);
     std::vector<std::pair<z3::expr, z3::expr>> atoms;
     std::vector<z3::expr> skel_hyps;
-    for (const z3::expr& b : base) skel_hyps.push_back(boolean_skeleton(b, atoms));
-    for (const z3::expr& l : lemmas) skel_hyps.push_back(boolean_skeleton(l, atoms));
+    for (const z3::expr& b : base)
+      skel_hyps.push_back(boolean_skeleton(b, atoms));
+    for (const z3::expr& l : lemmas)
+      skel_hyps.push_back(boolean_skeleton(l, atoms));
     const z3::expr skel_goal = boolean_skeleton(goal, atoms);
     pr.prove(thm, skel_hyps, skel_goal);
   }
@@ -473,16 +499,17 @@ void prove_d3d_meets_witness(Prover& pr, NraProver& nra) {
 
 // vk_contains(p) <=> p in the Vulkan point test area (spec words), over all real positions.
 // rule: LINE.VK.TEST_AREA
-template <class F>
-void prove_vk_point_area(Prover& pr) {
+template <class F> void prove_vk_point_area(Prover& pr) {
   z3::context& ctx = pr.ctx();
   const RealNum h(kSubpixelHalf);
   const z3::expr pu = ctx.real_const("pu_vk"), pv = ctx.real_const("pv_vk");
   pr.watch("p - centre (u)", pu, Unit::kCoordRaw);
   pr.watch("p - centre (v)", pv, Unit::kCoordRaw);
-  pr.prove("vk_contains(p) <=> p - (e, e^2) in the open diamond for small e: interior, right edges, right corner",
-           {}, F::vk_contains(RealNum(pu), RealNum(pv), h).expr() ==
-                   spec_in_vk_point_area(pu, pv, h.expr()));
+  pr.prove("vk_contains(p) <=> p - (e, e^2) in the open diamond for small e: interior, right "
+           "edges, right corner",
+           {},
+           F::vk_contains(RealNum(pu), RealNum(pv), h).expr() ==
+               spec_in_vk_point_area(pu, pv, h.expr()));
 }
 
 // Every intermediate of d3d_exits (x-major and y-major) and vk_exits, evaluated on std::int64_t
@@ -490,8 +517,7 @@ void prove_vk_point_area(Prover& pr) {
 // (-2^24, 2^24) raw: a, b in SNAP.VERTEX.RANGE ([-2^23, 2^23)) and a centre of a pixel of a
 // target of at most kMaxTargetSide pixels (in [128, 2^22 + 128)).
 // rule: LINE.D3D.EXIT, LINE.VK.EXIT
-template <class Acc>
-void prove_diamond_no_overflow(Prover& pr) {
+template <class Acc> void prove_diamond_no_overflow(Prover& pr) {
   Domain& dom = pr.domain();
   const Acc au = dom.var<typename Acc::rep>("au", Unit::kCoordRaw);
   const Acc av = dom.var<typename Acc::rep>("av", Unit::kCoordRaw);
@@ -527,4 +553,4 @@ void prove_diamond_no_overflow(Prover& pr) {
   }
 }
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs

@@ -37,7 +37,8 @@ int main() {
   prove_d3d_meets_witness<DiamondKernelModel>(pr, nra);
   prove_vk_point_area<DiamondKernelModel>(pr);
   std::size_t nra_ok = 0;
-  for (const auto& r : nra.results()) nra_ok += r.second == Status::kProved;
+  for (const auto& r : nra.results())
+    nra_ok += r.second == Status::kProved;
   std::cout << "nonlinear and division theorems (NraProver): " << nra_ok << " passed, "
             << nra.results().size() - nra_ok << " failed\n";
   const int status = pr.finish();

@@ -19,8 +19,7 @@ namespace rastrules::proofs {
 namespace {
 
 // A test area given by four edge strictness flags (no corner added for y-major lines).
-template <bool S0, bool S1, bool S2, bool S3>
-struct StrictnessModel : DiamondKernelModel {
+template <bool S0, bool S1, bool S2, bool S3> struct StrictnessModel : DiamondKernelModel {
   template <bool YMajor, class M>
   static auto meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
     const M zero(0), one(1);
@@ -28,8 +27,7 @@ struct StrictnessModel : DiamondKernelModel {
                                    au, av, du, dv, {h, h, h, h}, {S0, S1, S2, S3}, zero, one, one),
                                zero);
   }
-  template <bool YMajor, class M>
-  static auto contains(const M& pu, const M& pv, const M& h) {
+  template <bool YMajor, class M> static auto contains(const M& pu, const M& pv, const M& h) {
     const M zero(0);
     return meets<YMajor, M>(pu, pv, zero, zero, h);
   }
@@ -46,8 +44,7 @@ struct RightCornerNeverIncluded : DiamondKernelModel {
   static auto meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
     return DiamondKernelModel::meets<false, M>(au, av, du, dv, h);
   }
-  template <bool YMajor, class M>
-  static auto contains(const M& pu, const M& pv, const M& h) {
+  template <bool YMajor, class M> static auto contains(const M& pu, const M& pv, const M& h) {
     return DiamondKernelModel::contains<false, M>(pu, pv, h);
   }
   template <bool YMajor, class M>
@@ -63,8 +60,7 @@ struct MajorSwapped : DiamondKernelModel {
   static auto meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
     return DiamondKernelModel::meets<!YMajor, M>(au, av, du, dv, h);
   }
-  template <bool YMajor, class M>
-  static auto contains(const M& pu, const M& pv, const M& h) {
+  template <bool YMajor, class M> static auto contains(const M& pu, const M& pv, const M& h) {
     return DiamondKernelModel::contains<!YMajor, M>(pu, pv, h);
   }
   template <bool YMajor, class M>
@@ -91,7 +87,8 @@ struct LowerLeftExcluded : StrictnessModel<false, true, true, true> {
 // and "exits" theorems and the forward direction of "touches" still hold; only the reverse
 // direction (prove_d3d_meets_witness) can refute it.
 struct MeetsUpperEdgesClosed : DiamondKernelModel {
-  static constexpr const char* kName = "touch test with closed upper edges (end-point test correct)";
+  static constexpr const char* kName =
+      "touch test with closed upper edges (end-point test correct)";
   template <bool YMajor, class M>
   static auto meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
     const M zero(0), one(1);
@@ -117,22 +114,25 @@ struct Mutant {
   std::function<void(Prover&, NraProver&)> run;
 };
 
-template <class F>
-Mutant mutant() {
+template <class F> Mutant mutant() {
   return Mutant{F::kName, [](Prover& pr, NraProver& nra) {
                   prove_d3d_diamond_exit<F>(pr, nra);
                   prove_d3d_meets_witness<F>(pr, nra);
                 }};
 }
 
-}  // namespace
-}  // namespace rastrules::proofs
+} // namespace
+} // namespace rastrules::proofs
 
 int main() {
   using namespace rastrules::proofs;
   const std::vector<Mutant> mutants = {
-      mutant<RightCornerNeverIncluded>(), mutant<MajorSwapped>(),  mutant<UpperEdgesIncluded>(),
-      mutant<OpenDiamond>(),              mutant<ClosedDiamond>(), mutant<LowerLeftExcluded>(),
+      mutant<RightCornerNeverIncluded>(),
+      mutant<MajorSwapped>(),
+      mutant<UpperEdgesIncluded>(),
+      mutant<OpenDiamond>(),
+      mutant<ClosedDiamond>(),
+      mutant<LowerLeftExcluded>(),
       mutant<MeetsUpperEdgesClosed>(),
   };
   std::vector<std::string> summary;
@@ -145,14 +145,17 @@ int main() {
     NraProver nra(dom.ctx());
     m.run(pr, nra);
     int refuted = 0;
-    for (const auto& [theorem, status] : pr.results()) refuted += status == Status::kRefuted;
-    for (const auto& [theorem, status] : nra.results()) refuted += status == Status::kRefuted;
+    for (const auto& [theorem, status] : pr.results())
+      refuted += status == Status::kRefuted;
+    for (const auto& [theorem, status] : nra.results())
+      refuted += status == Status::kRefuted;
     survived += refuted > 0 ? 0 : 1;
     summary.push_back(std::string(refuted > 0 ? "REFUTED  " : "SURVIVED ") + m.name + " (" +
                       std::to_string(refuted) + " theorems refuted)");
   }
   std::cout << "\nmutation self-check (line):\n";
-  for (const std::string& line : summary) std::cout << "  " << line << "\n";
+  for (const std::string& line : summary)
+    std::cout << "  " << line << "\n";
   std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " passed, " << survived
             << " failed\n";
   return survived == 0 ? 0 : 1;

@@ -22,7 +22,7 @@ struct AAModel {
   static constexpr const char* kName = "kernel";
   // The kernel evaluates the blend numerator in std::int64_t (kernel/src/line_aa.cpp).
   using Acc = Sym<std::int64_t>;
-  static constexpr std::int64_t kCoverageOne = std::int64_t{1} << 16;  // kAACoverageBits
+  static constexpr std::int64_t kCoverageOne = std::int64_t{1} << 16; // kAACoverageBits
 
   // On real-valued Z3 terms: the comparison is an algebraic fact, proved over the reals
   // (it then holds for the integers the kernel passes, whose squares are budgeted in
@@ -92,4 +92,4 @@ template <class F> void prove_blend(Prover& pr) {
                        N == src.expr() * k(den_value)));
 }
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs

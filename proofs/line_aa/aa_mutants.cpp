@@ -55,8 +55,8 @@ struct Run {
   std::function<void(Prover&)> prove;
 };
 
-}  // namespace
-}  // namespace rastrules::proofs
+} // namespace
+} // namespace rastrules::proofs
 
 int main() {
   using namespace rastrules::proofs;
@@ -76,14 +76,16 @@ int main() {
               kernel_constants());
     r.prove(pr);
     int refuted = 0;
-    for (const auto& [theorem, status] : pr.results()) refuted += status == Status::kRefuted;
+    for (const auto& [theorem, status] : pr.results())
+      refuted += status == Status::kRefuted;
     survived += refuted > 0 ? 0 : 1;
     summary.push_back(std::string(refuted > 0 ? "REFUTED  " : "SURVIVED ") + r.name + " (" +
                       std::to_string(refuted) + " of " + std::to_string(pr.results().size()) +
                       " theorems refuted)");
   }
   std::cout << "\nmutation self-check (line_aa):\n";
-  for (const std::string& line : summary) std::cout << "  " << line << "\n";
+  for (const std::string& line : summary)
+    std::cout << "  " << line << "\n";
   std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " mutant runs refuted, "
             << survived << " survived\n";
   return survived == 0 ? 0 : 1;

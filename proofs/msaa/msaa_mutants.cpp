@@ -28,7 +28,8 @@ struct PositionsInInt16 : MsaaKernelModel {
 struct GridUnitTooLarge : MsaaKernelModel {
   static constexpr const char* kName = "sample grid unit 1/8 px";
   static constexpr std::int64_t kUnit = 2 * kSampleGridUnit;
-  template <class P> static Point<P> sample_position(const P& px, const P& py, const P& ox, const P& oy) {
+  template <class P>
+  static Point<P> sample_position(const P& px, const P& py, const P& ox, const P& oy) {
     return Point<P>{px * P(kSubpixelOne) + P(kSubpixelHalf) + ox * P(kUnit),
                     py * P(kSubpixelOne) + P(kSubpixelHalf) + oy * P(kUnit)};
   }
@@ -38,7 +39,8 @@ struct GridUnitTooLarge : MsaaKernelModel {
 // [-8, 7] offsets reach into the neighbouring pixels.
 struct OffsetsFromTheCorner : MsaaKernelModel {
   static constexpr const char* kName = "offsets from the pixel corner";
-  template <class P> static Point<P> sample_position(const P& px, const P& py, const P& ox, const P& oy) {
+  template <class P>
+  static Point<P> sample_position(const P& px, const P& py, const P& ox, const P& oy) {
     return Point<P>{px * P(kSubpixelOne) + ox * P(kSampleGridUnit),
                     py * P(kSubpixelOne) + oy * P(kSampleGridUnit)};
   }
@@ -71,7 +73,9 @@ struct MovedSample : MsaaKernelModel {
   }
 };
 
-template <class F> void all_position_theorems(Prover& pr) { prove_sample_position<F>(pr); }
+template <class F> void all_position_theorems(Prover& pr) {
+  prove_sample_position<F>(pr);
+}
 
 struct Mutant {
   std::string name;
@@ -79,15 +83,16 @@ struct Mutant {
   std::function<void(Prover&)> prove;
 };
 
-}  // namespace
-}  // namespace rastrules::proofs
+} // namespace
+} // namespace rastrules::proofs
 
 int main() {
   using namespace rastrules::proofs;
   const std::vector<Mutant> mutants = {
       {PositionsInInt16::kName, "msaa/sample_position", all_position_theorems<PositionsInInt16>},
       {GridUnitTooLarge::kName, "msaa/sample_position", all_position_theorems<GridUnitTooLarge>},
-      {OffsetsFromTheCorner::kName, "msaa/sample_position", all_position_theorems<OffsetsFromTheCorner>},
+      {OffsetsFromTheCorner::kName, "msaa/sample_position",
+       all_position_theorems<OffsetsFromTheCorner>},
       // Theorems 1 and 2 only: theorem 3 (the edge budget) still holds there but takes Z3
       // about 30 s outside the vertex range.
       {TargetTooLarge::kName, "msaa/sample_position",
@@ -104,7 +109,8 @@ int main() {
               {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE"}, MsaaKernelModel::constants());
     m.prove(pr);
     int refuted = 0;
-    for (const auto& [theorem, status] : pr.results()) refuted += status == Status::kRefuted;
+    for (const auto& [theorem, status] : pr.results())
+      refuted += status == Status::kRefuted;
     const bool killed = refuted > 0;
     survived += killed ? 0 : 1;
     summary.push_back(std::string(killed ? "REFUTED  " : "SURVIVED ") + m.name + " (" +
@@ -112,7 +118,8 @@ int main() {
                       " theorems refuted)");
   }
   std::cout << "\nmsaa mutation self-check:\n";
-  for (const std::string& line : summary) std::cout << "  " << line << "\n";
+  for (const std::string& line : summary)
+    std::cout << "  " << line << "\n";
   std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " mutants refuted, "
             << survived << " survived\n";
   return survived == 0 ? 0 : 1;

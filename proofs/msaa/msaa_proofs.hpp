@@ -40,7 +40,8 @@ struct NamedPattern {
 
 inline NamedPattern named(const std::string& name, const SamplePattern& p) {
   NamedPattern n{name, {}};
-  for (const SampleOffset& o : p.positions) n.offsets.emplace_back(o.x, o.y);
+  for (const SampleOffset& o : p.positions)
+    n.offsets.emplace_back(o.x, o.y);
   return n;
 }
 
@@ -65,7 +66,8 @@ struct MsaaKernelModel : KernelModel {
   }
 
   // Mirrors rastrules::sample_position: pixel_center(px, py) + o * kSampleGridUnit in int32_t.
-  template <class P> static Point<P> sample_position(const P& px, const P& py, const P& ox, const P& oy) {
+  template <class P>
+  static Point<P> sample_position(const P& px, const P& py, const P& ox, const P& oy) {
     return Point<P>{px * P(kSubpixelOne) + P(kSubpixelHalf) + ox * P(kSampleGridUnit),
                     py * P(kSubpixelOne) + P(kSubpixelHalf) + oy * P(kSampleGridUnit)};
   }
@@ -97,15 +99,15 @@ template <class P> Point<Sym<std::int64_t>> widen(const Point<P>& p) {
 // the compiled rastrules::sample_position at every grid offset of the corner pixels.
 template <class F> bool restatement_matches_kernel() {
   if constexpr (!std::is_same_v<F, MsaaKernelModel>) {
-    return true;  // mutants differ on purpose
+    return true; // mutants differ on purpose
   } else {
     const std::int32_t last = kMaxTargetSide - 1;
     for (const std::int32_t px : {0, 1, last}) {
       for (const std::int32_t py : {0, 7, last}) {
         for (std::int32_t ox = kSampleGridMin; ox <= kSampleGridMax; ++ox) {
           for (std::int32_t oy = kSampleGridMin; oy <= kSampleGridMax; ++oy) {
-            const Vec2 k = sample_position(px, py, SampleOffset{static_cast<std::int8_t>(ox),
-                                                                 static_cast<std::int8_t>(oy)});
+            const Vec2 k = sample_position(
+                px, py, SampleOffset{static_cast<std::int8_t>(ox), static_cast<std::int8_t>(oy)});
             const std::int64_t mx = std::int64_t{px} * F::kPixel + F::kHalf + ox * F::kUnit;
             const std::int64_t my = std::int64_t{py} * F::kPixel + F::kHalf + oy * F::kUnit;
             if (k.x.raw() != mx || k.y.raw() != my) {
@@ -222,7 +224,8 @@ template <class F> void prove_centroid_within(Prover& pr) {
   const std::vector<z3::expr> hyps = {in(px, 0, F::kMaxSide - 1), in(py, 0, F::kMaxSide - 1),
                                       in_vertex_range<F>(a), in_vertex_range<F>(b)};
   const auto linear = [&](std::int64_t ox, std::int64_t oy) {
-    return ecv.expr() + ctx.int_val(F::kUnit) * (ctx.int_val(oy) * u.expr() - ctx.int_val(ox) * v.expr());
+    return ecv.expr() +
+           ctx.int_val(F::kUnit) * (ctx.int_val(oy) * u.expr() - ctx.int_val(ox) * v.expr());
   };
   for (const NamedPattern& pat : F::patterns()) {
     // Lemma L on the kernel's formula.
@@ -264,4 +267,4 @@ template <class F> void prove_centroid_within(Prover& pr) {
   }
 }
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs

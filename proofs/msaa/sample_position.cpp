@@ -15,7 +15,8 @@
 
 int main() {
   using namespace rastrules::proofs;
-  if (!restatement_matches_kernel<MsaaKernelModel>()) return 1;
+  if (!restatement_matches_kernel<MsaaKernelModel>())
+    return 1;
   Domain dom;
   Prover pr(dom, "msaa/sample_position", "MSAA.SAMPLE.POSITION, MSAA.PATTERN.GRID",
             {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE"},

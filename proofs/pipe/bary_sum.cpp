@@ -7,16 +7,17 @@
 // int64_t, so lambda0 + lambda1 + lambda2 == 1 exactly; |e_i|, |A| and |e0 + e1| < 2^53, so
 // the conversions to double in PIPE.INTERP.* and PIPE.DEPTH.INTERP are exact.
 // rule: PIPE.BARY.SUM, PIPE.BARY.DOUBLE_EXACT
-// Assumes: SNAP.VERTEX.RANGE, PIPE.BARY.EXACT (the order of e0, e1, e2), TRI.EDGE.FUNCTION, TRI.ORIENT.AREA
-// Expected: PROVED. Exit status 0 iff every theorem is PROVED; a counterexample is printed
-// otherwise.
+// Assumes: SNAP.VERTEX.RANGE, PIPE.BARY.EXACT (the order of e0, e1, e2), TRI.EDGE.FUNCTION,
+// TRI.ORIENT.AREA Expected: PROVED. Exit status 0 iff every theorem is PROVED; a counterexample is
+// printed otherwise.
 
 #include "pipe/pipe_proofs.hpp"
 #include "support/prover.hpp"
 
 int main() {
   using namespace rastrules::proofs;
-  if (!barycentrics_match_kernel()) return 1;
+  if (!barycentrics_match_kernel())
+    return 1;
   Domain dom;
   Prover pr(dom, "pipe/bary_sum", "PIPE.BARY.SUM, PIPE.BARY.DOUBLE_EXACT",
             {"SNAP.VERTEX.RANGE", "PIPE.BARY.EXACT", "TRI.EDGE.FUNCTION", "TRI.ORIENT.AREA"},

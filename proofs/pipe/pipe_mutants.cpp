@@ -76,22 +76,21 @@ struct GuardBandNoMargin : PipeModel {
   static constexpr double kGuardBand = 32768.0;
 };
 
-}  // namespace
-}  // namespace rastrules::proofs
+} // namespace
+} // namespace rastrules::proofs
 
 int main() {
   using namespace rastrules::proofs;
-  return run_mutation_selfcheck(
-      "pipe",
-      {
-          {WrongEdgeOrder::kName, prove_bary_sum<WrongEdgeOrder>},
-          {AreaReversed::kName, prove_bary_sum<AreaReversed>},
-          {BaryInt32::kName, prove_bary_sum<BaryInt32>},
-          {Coordinates2To26::kName, prove_bary_sum<Coordinates2To26>},
-          {UnormScale2n::kName, prove_depth_format<UnormScale2n>},
-          {UnormTruncate::kName, prove_depth_format<UnormTruncate>},
-          {UnormInFloat::kName, prove_depth_format<UnormInFloat>},
-          {GuardBandNoMargin::kName, prove_guard_band<GuardBandNoMargin>},
-      },
-      PipeModel::constants());
+  return run_mutation_selfcheck("pipe",
+                                {
+                                    {WrongEdgeOrder::kName, prove_bary_sum<WrongEdgeOrder>},
+                                    {AreaReversed::kName, prove_bary_sum<AreaReversed>},
+                                    {BaryInt32::kName, prove_bary_sum<BaryInt32>},
+                                    {Coordinates2To26::kName, prove_bary_sum<Coordinates2To26>},
+                                    {UnormScale2n::kName, prove_depth_format<UnormScale2n>},
+                                    {UnormTruncate::kName, prove_depth_format<UnormTruncate>},
+                                    {UnormInFloat::kName, prove_depth_format<UnormInFloat>},
+                                    {GuardBandNoMargin::kName, prove_guard_band<GuardBandNoMargin>},
+                                },
+                                PipeModel::constants());
 }

@@ -211,8 +211,8 @@ template <class F> void prove_bary_sum(Prover& pr) {
     const auto small = [&](const z3::expr& x) { return -bound < x && x < bound; };
     watch_all(e, area);
     pr.prove("|e0|, |e1|, |e2|, |A|, |e0 + e1| < 2^53: each is a double exactly", hyps,
-             small(e[0].expr()) && small(e[1].expr()) && small(e[2].expr()) &&
-                 small(area.expr()) && small(e[0].expr() + e[1].expr()),
+             small(e[0].expr()) && small(e[1].expr()) && small(e[2].expr()) && small(area.expr()) &&
+                 small(e[0].expr() + e[1].expr()),
              dom.obligations_since(mark));
   }
 }

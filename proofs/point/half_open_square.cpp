@@ -6,9 +6,9 @@
 // half-open square of side 1 px centred on c, never both cover p, and the other diagonal would
 // give the same coverage.
 // rule: POINT.COVER.HALF_OPEN, POINT.RANGE, POINT.SHAPE.TWO_TRIANGLES, POINT.SHAPE.SQUARE
-// Assumes: POINT.RANGE, SNAP.VERTEX.RANGE, TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION, TRI.ORIENT.NORMALISE
-// Expected: PROVED. Exit status 0 iff every theorem is PROVED; a counterexample is printed
-// otherwise.
+// Assumes: POINT.RANGE, SNAP.VERTEX.RANGE, TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION,
+// TRI.ORIENT.NORMALISE Expected: PROVED. Exit status 0 iff every theorem is PROVED; a
+// counterexample is printed otherwise.
 
 #include "point/half_open_square.hpp"
 #include "point/point_model.hpp"

@@ -46,7 +46,8 @@ template <class F> void prove_point_half_open_square(Prover& pr) {
     const std::array<Triangle<S>, 2> t = F::template point_triangles<S>(c);
     z3::expr goal = ctx.bool_val(true);
     for (const Triangle<S>& tri : t) {
-      for (const Point<S>& v : tri) goal = goal && in_vertex_range<F>(v);
+      for (const Point<S>& v : tri)
+        goal = goal && in_vertex_range<F>(v);
       goal = goal && F::twice_signed_area(tri).expr() > 0;
     }
     pr.prove("both triangles lie in the vertex range and are clockwise", hyps, goal,
@@ -73,11 +74,13 @@ template <class F> void prove_point_half_open_square(Prover& pr) {
              !(in0 && in1), obl);
     // The other diagonal, built from the same corners.
     const Point<S> tl = t[0][0], tr = t[0][1], bl = t[0][2], br = t[1][2];
-    const z3::expr alt0 = covers_normalised<F, TopInclusive, LeftInclusive>(Triangle<S>{tl, tr, br}, p).expr();
-    const z3::expr alt1 = covers_normalised<F, TopInclusive, LeftInclusive>(Triangle<S>{tl, br, bl}, p).expr();
+    const z3::expr alt0 =
+        covers_normalised<F, TopInclusive, LeftInclusive>(Triangle<S>{tl, tr, br}, p).expr();
+    const z3::expr alt1 =
+        covers_normalised<F, TopInclusive, LeftInclusive>(Triangle<S>{tl, br, bl}, p).expr();
     pr.prove(std::string(convention) + ": the other diagonal covers the same samples", hyps,
              (alt0 || alt1) == (in0 || in1), dom.obligations_since(mark));
   });
 }
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs

@@ -45,4 +45,4 @@ struct PointKernelModel : KernelModel {
   }
 };
 
-}  // namespace rastrules::proofs
+} // namespace rastrules::proofs

@@ -82,17 +82,19 @@ struct Mutant {
   std::function<void(Prover&)> prove;
 };
 
-template <class F> Mutant mutant() { return Mutant{F::kName, prove_point_half_open_square<F>}; }
+template <class F> Mutant mutant() {
+  return Mutant{F::kName, prove_point_half_open_square<F>};
+}
 
-}  // namespace
-}  // namespace rastrules::proofs
+} // namespace
+} // namespace rastrules::proofs
 
 int main() {
   using namespace rastrules::proofs;
   const std::vector<Mutant> mutants = {
-      mutant<GapOnDiagonal>(),   mutant<FlippedDiagonalWrongWinding>(),
+      mutant<GapOnDiagonal>(),     mutant<FlippedDiagonalWrongWinding>(),
       mutant<OverlappingHalves>(), mutant<SquareTooSmall>(),
-      mutant<TiesNeverInside>(), mutant<PointRangeTooWide>(),
+      mutant<TiesNeverInside>(),   mutant<PointRangeTooWide>(),
   };
   std::vector<std::string> summary;
   int survived = 0;
@@ -103,7 +105,8 @@ int main() {
               {"POINT.RANGE", "SNAP.VERTEX.RANGE"}, PointKernelModel::constants());
     m.prove(pr);
     int refuted = 0;
-    for (const auto& [theorem, status] : pr.results()) refuted += status == Status::kRefuted;
+    for (const auto& [theorem, status] : pr.results())
+      refuted += status == Status::kRefuted;
     const bool killed = refuted > 0;
     survived += killed ? 0 : 1;
     summary.push_back(std::string(killed ? "REFUTED  " : "SURVIVED ") + m.name + " (" +
@@ -111,7 +114,8 @@ int main() {
                       " theorems refuted)");
   }
   std::cout << "\npoint mutation self-check:\n";
-  for (const std::string& line : summary) std::cout << "  " << line << "\n";
+  for (const std::string& line : summary)
+    std::cout << "  " << line << "\n";
   std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " mutants refuted, "
             << survived << " survived\n";
   return survived == 0 ? 0 : 1;

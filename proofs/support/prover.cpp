@@ -130,8 +130,7 @@ std::string float_value(const z3::model& m, const z3::expr& e) {
     float f = 0.0f;
     static_assert(sizeof f == sizeof u32);
     std::memcpy(&f, &u32, sizeof f);
-    std::snprintf(buf, sizeof buf, "%.9g (%a)", static_cast<double>(f),
-                  static_cast<double>(f));
+    std::snprintf(buf, sizeof buf, "%.9g (%a)", static_cast<double>(f), static_cast<double>(f));
   } else {
     std::snprintf(buf, sizeof buf, "IEEE bits 0x%llx", static_cast<unsigned long long>(u));
   }

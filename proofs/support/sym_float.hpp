@@ -50,18 +50,10 @@ public:
 
   [[nodiscard]] const z3::expr& expr() const { return e_; }
 
-  friend SymFloat operator+(const SymFloat& a, const SymFloat& b) {
-    return a.op(Z3_mk_fpa_add, b);
-  }
-  friend SymFloat operator-(const SymFloat& a, const SymFloat& b) {
-    return a.op(Z3_mk_fpa_sub, b);
-  }
-  friend SymFloat operator*(const SymFloat& a, const SymFloat& b) {
-    return a.op(Z3_mk_fpa_mul, b);
-  }
-  friend SymFloat operator/(const SymFloat& a, const SymFloat& b) {
-    return a.op(Z3_mk_fpa_div, b);
-  }
+  friend SymFloat operator+(const SymFloat& a, const SymFloat& b) { return a.op(Z3_mk_fpa_add, b); }
+  friend SymFloat operator-(const SymFloat& a, const SymFloat& b) { return a.op(Z3_mk_fpa_sub, b); }
+  friend SymFloat operator*(const SymFloat& a, const SymFloat& b) { return a.op(Z3_mk_fpa_mul, b); }
+  friend SymFloat operator/(const SymFloat& a, const SymFloat& b) { return a.op(Z3_mk_fpa_div, b); }
 
   friend SymBool operator<(const SymFloat& a, const SymFloat& b) { return a.cmp(Z3_mk_fpa_lt, b); }
   friend SymBool operator<=(const SymFloat& a, const SymFloat& b) {
@@ -72,9 +64,7 @@ public:
     return a.cmp(Z3_mk_fpa_geq, b);
   }
   // IEEE equality: +0 == -0, NaN != NaN (not Z3's structural `==`).
-  friend SymBool operator==(const SymFloat& a, const SymFloat& b) {
-    return a.cmp(Z3_mk_fpa_eq, b);
-  }
+  friend SymBool operator==(const SymFloat& a, const SymFloat& b) { return a.cmp(Z3_mk_fpa_eq, b); }
 
 private:
   using Binary = Z3_ast (*)(Z3_context, Z3_ast, Z3_ast, Z3_ast);

@@ -48,16 +48,23 @@ rc::Gen<float> coordinate(std::int64_t raw) {
 // lengths 8 and 16 px (where the lanes change form) made likely.
 rc::Gen<fg::RawTri> small_triangle(std::int32_t w, std::int32_t h) {
   return rc::gen::exec([=] {
-    const std::int64_t s = *rc::gen::element<std::int64_t>(16383, 16384, 16385, 8000, 4096, 2048, 1024, 600, 64, 3);
+    const std::int64_t s =
+        *rc::gen::element<std::int64_t>(16383, 16384, 16385, 8000, 4096, 2048, 1024, 600, 64, 3);
     const std::int64_t x = *fg::near_raw(w, 18), y = *fg::near_raw(h, 18);
     fg::RawTri t;
     for (auto& p : t)
-      p = {x + *rc::gen::inRange<std::int64_t>(-s, s + 1), y + *rc::gen::inRange<std::int64_t>(-s, s + 1)};
-    if (*rc::gen::arbitrary<bool>()) t[1][0] = t[0][0] + s;  // the span exactly s
-    if (*rc::gen::arbitrary<bool>()) t[2][1] = t[0][1] - s;
-    if (*rc::gen::inRange(0, 4) == 0) t[1][1] = t[0][1];  // a horizontal edge
-    if (*rc::gen::inRange(0, 4) == 0) t[2][0] = t[1][0];  // a vertical edge
-    for (auto& p : t) p = {fg::clamp_raw(p[0]), fg::clamp_raw(p[1])};
+      p = {x + *rc::gen::inRange<std::int64_t>(-s, s + 1),
+           y + *rc::gen::inRange<std::int64_t>(-s, s + 1)};
+    if (*rc::gen::arbitrary<bool>())
+      t[1][0] = t[0][0] + s; // the span exactly s
+    if (*rc::gen::arbitrary<bool>())
+      t[2][1] = t[0][1] - s;
+    if (*rc::gen::inRange(0, 4) == 0)
+      t[1][1] = t[0][1]; // a horizontal edge
+    if (*rc::gen::inRange(0, 4) == 0)
+      t[2][0] = t[1][0]; // a vertical edge
+    for (auto& p : t)
+      p = {fg::clamp_raw(p[0]), fg::clamp_raw(p[1])};
     return t;
   });
 }
@@ -70,10 +77,10 @@ struct Batch {
 rc::Gen<Batch> batch() {
   return mg::full_size<Batch>(rc::gen::exec([] {
     Batch b;
-    b.w = *rc::gen::weightedOneOf<std::int32_t>({{3, rc::gen::inRange<std::int32_t>(1, 70)},
-                                                 {1, rc::gen::inRange<std::int32_t>(70, 200)}});
-    b.h = *rc::gen::weightedOneOf<std::int32_t>({{3, rc::gen::inRange<std::int32_t>(1, 70)},
-                                                 {1, rc::gen::inRange<std::int32_t>(70, 200)}});
+    b.w = *rc::gen::weightedOneOf<std::int32_t>(
+        {{3, rc::gen::inRange<std::int32_t>(1, 70)}, {1, rc::gen::inRange<std::int32_t>(70, 200)}});
+    b.h = *rc::gen::weightedOneOf<std::int32_t>(
+        {{3, rc::gen::inRange<std::int32_t>(1, 70)}, {1, rc::gen::inRange<std::int32_t>(70, 200)}});
     const auto n = *rc::gen::inRange<std::size_t>(1, 41);
     for (std::size_t i = 0; i < n; ++i) {
       const fg::RawTri t = *rc::gen::weightedOneOf<fg::RawTri>(
@@ -108,10 +115,12 @@ Expected plain(const Batch& b, const rastrules::RasterState& state) {
       v[k] = rastrules::Vec2{x.value, y.value};
     }
     const rastrules::TriangleSetup t = rastrules::setup_triangle(v, state);
-    if (t.status == rastrules::TriangleStatus::kRasterized) ++e.rasterized;
+    if (t.status == rastrules::TriangleStatus::kRasterized)
+      ++e.rasterized;
     std::uint64_t n = 0;
     raster::walk_triangle(t, b.w, b.h, [&](std::int32_t x, std::int32_t y) {
-      ++e.hits[static_cast<std::size_t>(y) * static_cast<std::size_t>(b.w) + static_cast<std::size_t>(x)];
+      ++e.hits[static_cast<std::size_t>(y) * static_cast<std::size_t>(b.w) +
+               static_cast<std::size_t>(x)];
       ++n;
     });
     e.per_triangle.push_back(n);
@@ -129,16 +138,19 @@ RC_GTEST_PROP(FastBatch, EveryIsaCountsEachTrianglesPlainPixels, ()) {
   for (Isa isa : fg::supported_isas()) {
     std::vector<std::uint64_t> per(n, 99);
     std::vector<std::uint32_t> hits(e.hits.size(), 0);
-    const raster::FastBatchResult r = raster::fast_count_batch(b.xy, b.w, b.h, state, isa, per, hits);
+    const raster::FastBatchResult r =
+        raster::fast_count_batch(b.xy, b.w, b.h, state, isa, per, hits);
     RC_ASSERT(r.status == raster::BatchStatus::kOk);
     RC_CLASSIFY(r.small > 0 && r.small < n, "small and large triangles");
     for (std::size_t i = 0; i < n; ++i) {
       if (per[i] != e.per_triangle[i]) {
         std::string tri;
-        for (int k = 0; k < 6; ++k) tri += " " + std::to_string(b.xy[6 * i + static_cast<std::size_t>(k)]);
+        for (int k = 0; k < 6; ++k)
+          tri += " " + std::to_string(b.xy[6 * i + static_cast<std::size_t>(k)]);
         RC_FAIL(std::string(rastrules::to_string(isa)) + ": triangle " + std::to_string(i) +
-                " counts " + std::to_string(per[i]) + ", plain " + std::to_string(e.per_triangle[i]) +
-                " on " + std::to_string(b.w) + " x " + std::to_string(b.h) + ":" + tri);
+                " counts " + std::to_string(per[i]) + ", plain " +
+                std::to_string(e.per_triangle[i]) + " on " + std::to_string(b.w) + " x " +
+                std::to_string(b.h) + ":" + tri);
       }
     }
     RC_ASSERT(hits == e.hits);
@@ -188,4 +200,4 @@ RC_GTEST_PROP(FastBatch, EveryIsaNamesTheFirstCoordinateThatDoesNotSnap, ()) {
   }
 }
 
-}  // namespace
+} // namespace

@@ -73,4 +73,4 @@ RC_GTEST_PROP(FastScene, TriangleScenesWithSharedEdgesEqualThePlainTraversal, ()
   check_scene(rastrules::gen::to_kernel_scene(s), rastrules::gen::to_json(s));
 }
 
-}  // namespace
+} // namespace

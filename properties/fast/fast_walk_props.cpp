@@ -28,8 +28,8 @@ namespace mg = rastrules::msaa_gen;
 namespace raster = rastrules::raster;
 using rastrules::Isa;
 
-using Px = std::pair<std::int32_t, std::int32_t>;                 // y, x
-using MaskedPx = std::tuple<std::int32_t, std::int32_t, std::uint32_t>;  // y, x, mask
+using Px = std::pair<std::int32_t, std::int32_t>;                       // y, x
+using MaskedPx = std::tuple<std::int32_t, std::int32_t, std::uint32_t>; // y, x, mask
 
 rc::Gen<std::int32_t> side() {
   return mg::full_size(rc::gen::weightedOneOf<std::int32_t>(
@@ -73,16 +73,14 @@ RC_GTEST_PROP(FastWalk, EveryIsaEmitsThePlainSampleWalksMasksInOrder, ()) {
   RC_CLASSIFY(g.shape == fg::Shape::kTies, "tie-heavy");
   const rastrules::TriangleSetup t = fg::setup(g, state);
   std::vector<MaskedPx> plain;
-  raster::walk_triangle_samples(t, pattern.kernel, w, h,
-                                [&](std::int32_t x, std::int32_t y, std::uint32_t m) {
-                                  plain.emplace_back(y, x, m);
-                                });
+  raster::walk_triangle_samples(
+      t, pattern.kernel, w, h,
+      [&](std::int32_t x, std::int32_t y, std::uint32_t m) { plain.emplace_back(y, x, m); });
   for (Isa isa : fg::supported_isas()) {
     std::vector<MaskedPx> fast;
-    raster::walk_triangle_samples_fast(t, pattern.kernel, w, h, isa,
-                                       [&](std::int32_t x, std::int32_t y, std::uint32_t m) {
-                                         fast.emplace_back(y, x, m);
-                                       });
+    raster::walk_triangle_samples_fast(
+        t, pattern.kernel, w, h, isa,
+        [&](std::int32_t x, std::int32_t y, std::uint32_t m) { fast.emplace_back(y, x, m); });
     if (fast != plain) {
       RC_FAIL(std::string(rastrules::to_string(isa)) + " " + pattern.name() + ": fast " +
               std::to_string(fast.size()) + " pixels, plain " + std::to_string(plain.size()) +
@@ -91,4 +89,4 @@ RC_GTEST_PROP(FastWalk, EveryIsaEmitsThePlainSampleWalksMasksInOrder, ()) {
   }
 }
 
-}  // namespace
+} // namespace

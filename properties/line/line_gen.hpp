@@ -24,8 +24,8 @@ namespace rastrules::linegen {
 inline constexpr std::int32_t kTarget = 16;
 
 struct RawLine {
-  std::int64_t ax = 0, ay = 0, bx = 0, by = 0;  // raw 16.8
-  std::string kind;                              // how it was built
+  std::int64_t ax = 0, ay = 0, bx = 0, by = 0; // raw 16.8
+  std::string kind;                            // how it was built
 };
 
 inline void showValue(const RawLine& l, std::ostream& os) {
@@ -39,10 +39,18 @@ inline Vec2 vec(std::int64_t x, std::int64_t y) {
   return Vec2{Subpixel::from_raw(static_cast<std::int32_t>(x)),
               Subpixel::from_raw(static_cast<std::int32_t>(y))};
 }
-inline Vec2 start(const RawLine& l) { return vec(l.ax, l.ay); }
-inline Vec2 end(const RawLine& l) { return vec(l.bx, l.by); }
-inline oracle::LineRaw ostart(const RawLine& l) { return {l.ax, l.ay}; }
-inline oracle::LineRaw oend(const RawLine& l) { return {l.bx, l.by}; }
+inline Vec2 start(const RawLine& l) {
+  return vec(l.ax, l.ay);
+}
+inline Vec2 end(const RawLine& l) {
+  return vec(l.bx, l.by);
+}
+inline oracle::LineRaw ostart(const RawLine& l) {
+  return {l.ax, l.ay};
+}
+inline oracle::LineRaw oend(const RawLine& l) {
+  return {l.bx, l.by};
+}
 
 // A raw coordinate near the target (two pixels of margin each side).
 inline rc::Gen<std::int64_t> coord() {
@@ -57,7 +65,8 @@ inline rc::Gen<std::int64_t> centre() {
 inline rc::Gen<std::array<std::int64_t, 2>> diamond_point() {
   return rc::gen::apply(
       [](std::int64_t cx, std::int64_t cy, int which) {
-        static constexpr std::int64_t kOff[5][2] = {{0, 0}, {128, 0}, {-128, 0}, {0, 128}, {0, -128}};
+        static constexpr std::int64_t kOff[5][2] = {
+            {0, 0}, {128, 0}, {-128, 0}, {0, 128}, {0, -128}};
         return std::array<std::int64_t, 2>{cx + kOff[which][0], cy + kOff[which][1]};
       },
       centre(), centre(), rc::gen::inRange(0, 5));
@@ -76,7 +85,8 @@ inline rc::Gen<RawLine> through_diamond_point() {
   return rc::gen::apply(
       [](std::array<std::int64_t, 2> p, std::int64_t dx, std::int64_t dy, std::int64_t s,
          std::int64_t t, std::int64_t scale) {
-        if (dx == 0 && dy == 0) dx = 1;
+        if (dx == 0 && dy == 0)
+          dx = 1;
         dx *= scale;
         dy *= scale;
         return RawLine{p[0] - s * dx, p[1] - s * dy, p[0] + t * dx, p[1] + t * dy,
@@ -114,18 +124,21 @@ inline rc::Gen<RawLine> between_diamond_points() {
 
 inline rc::Gen<RawLine> zero_length() {
   return rc::gen::apply(
-      [](std::int64_t x, std::int64_t y) { return RawLine{x, y, x, y, "zero-length"}; },
+      [](std::int64_t x, std::int64_t y) {
+        return RawLine{x, y, x, y, "zero-length"};
+      },
       rc::gen::oneOf(coord(), centre()), rc::gen::oneOf(coord(), centre()));
 }
 
 inline rc::Gen<RawLine> axis_aligned() {
   return rc::gen::apply(
       [](std::int64_t a, std::int64_t b, std::int64_t c, bool horizontal) {
-        return horizontal ? RawLine{a, c, b, c, "axis-aligned"} : RawLine{c, a, c, b, "axis-aligned"};
+        return horizontal ? RawLine{a, c, b, c, "axis-aligned"}
+                          : RawLine{c, a, c, b, "axis-aligned"};
       },
-      coord(), coord(), rc::gen::oneOf(coord(), centre(), rc::gen::map(centre(), [](std::int64_t v) {
-                                         return v + 128;
-                                       })),
+      coord(), coord(),
+      rc::gen::oneOf(coord(), centre(),
+                     rc::gen::map(centre(), [](std::int64_t v) { return v + 128; })),
       rc::gen::arbitrary<bool>());
 }
 
@@ -180,18 +193,22 @@ inline Ties ties(const RawLine& l) {
     const std::int64_t x0 = std::min(l.ax, l.bx), x1 = std::max(l.ax, l.bx);
     const std::int64_t y0 = std::min(l.ay, l.by), y1 = std::max(l.ay, l.by);
     for (std::int64_t x = (x0 / 128 - 1) * 128; x <= x1 && !t.through_corner; x += 128) {
-      if (x < x0) continue;
+      if (x < x0)
+        continue;
       // y on the line at x, when exact.
       if (dx == 0) {
         for (std::int64_t y = (y0 / 128 - 1) * 128; y <= y1; y += 128) {
-          if (y >= y0 && is_corner_point(x, y)) t.through_corner = true;
+          if (y >= y0 && is_corner_point(x, y))
+            t.through_corner = true;
         }
         continue;
       }
       const std::int64_t num = l.ay * dx + (x - l.ax) * dy;
-      if (num % dx != 0) continue;
+      if (num % dx != 0)
+        continue;
       const std::int64_t y = num / dx;
-      if (is_corner_point(x, y)) t.through_corner = true;
+      if (is_corner_point(x, y))
+        t.through_corner = true;
     }
   }
   auto out = [](std::int64_t v) { return v < 0 || v >= kTarget * 256; };
@@ -199,4 +216,4 @@ inline Ties ties(const RawLine& l) {
   return t;
 }
 
-}  // namespace rastrules::linegen
+} // namespace rastrules::linegen

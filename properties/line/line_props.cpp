@@ -32,21 +32,22 @@ using Px = std::array<std::int32_t, 2>;
 std::vector<Px> kernel_pixels(rastrules::Vec2 a, rastrules::Vec2 b, LineMode mode, std::int32_t w,
                               std::int32_t h) {
   std::vector<Px> out;
-  rastrules::rasterize_aliased_line(a, b, mode, w, h,
-                                    [&](std::int32_t x, std::int32_t y) { out.push_back({x, y}); });
+  rastrules::rasterize_aliased_line(a, b, mode, w, h, [&](std::int32_t x, std::int32_t y) {
+    out.push_back({x, y});
+  });
   return out;
 }
 
 std::vector<Px> by_row(std::vector<Px> v) {
-  std::sort(v.begin(), v.end(), [](const Px& p, const Px& q) {
-    return p[1] != q[1] ? p[1] < q[1] : p[0] < q[0];
-  });
+  std::sort(v.begin(), v.end(),
+            [](const Px& p, const Px& q) { return p[1] != q[1] ? p[1] < q[1] : p[0] < q[0]; });
   return v;
 }
 
 std::string show(const std::vector<Px>& v) {
   std::ostringstream os;
-  for (const Px& p : v) os << "(" << p[0] << "," << p[1] << ") ";
+  for (const Px& p : v)
+    os << "(" << p[0] << "," << p[1] << ") ";
   return os.str();
 }
 
@@ -64,9 +65,11 @@ void classify(const lg::RawLine& l) {
 
 void check_against_oracle(const lg::RawLine& l, LineMode mode) {
   classify(l);
-  const auto kernel = by_row(kernel_pixels(lg::start(l), lg::end(l), mode, lg::kTarget, lg::kTarget));
+  const auto kernel =
+      by_row(kernel_pixels(lg::start(l), lg::end(l), mode, lg::kTarget, lg::kTarget));
   const auto oracle = rastrules::oracle::aliased_line_pixels(
-      lg::ostart(l), lg::oend(l), std::string(rastrules::to_string(mode)), lg::kTarget, lg::kTarget);
+      lg::ostart(l), lg::oend(l), std::string(rastrules::to_string(mode)), lg::kTarget,
+      lg::kTarget);
   if (kernel != oracle) {
     RC_FAIL("kernel " + show(kernel) + "\noracle " + show(oracle));
   }
@@ -89,15 +92,19 @@ RC_GTEST_PROP(LineStrip, StripEqualsTheSequenceOfIndependentLines, ()) {
       {{1, rc::gen::inRange<std::size_t>(0, 2)}, {6, rc::gen::inRange<std::size_t>(2, 7)}});
   std::vector<rastrules::Vec2> vs;
   for (std::size_t i = 0; i < n; ++i) {
-    const auto p = *rc::gen::oneOf(
-        rc::gen::apply([](std::int64_t x, std::int64_t y) { return std::array<std::int64_t, 2>{x, y}; },
-                       lg::coord(), lg::coord()),
-        lg::diamond_point());
+    const auto p = *rc::gen::oneOf(rc::gen::apply(
+                                       [](std::int64_t x, std::int64_t y) {
+                                         return std::array<std::int64_t, 2>{x, y};
+                                       },
+                                       lg::coord(), lg::coord()),
+                                   lg::diamond_point());
     vs.push_back(lg::vec(p[0], p[1]));
   }
   std::vector<Px> strip, lines;
   rastrules::rasterize_aliased_line_strip(vs, mode, lg::kTarget, lg::kTarget,
-                                          [&](std::int32_t x, std::int32_t y) { strip.push_back({x, y}); });
+                                          [&](std::int32_t x, std::int32_t y) {
+                                            strip.push_back({x, y});
+                                          });
   for (std::size_t i = 0; i + 1 < vs.size(); ++i) {
     const auto seg = kernel_pixels(vs[i], vs[i + 1], mode, lg::kTarget, lg::kTarget);
     lines.insert(lines.end(), seg.begin(), seg.end());
@@ -110,9 +117,11 @@ RC_GTEST_PROP(LineStrip, StripEqualsTheSequenceOfIndependentLines, ()) {
 RC_GTEST_PROP(LineInvariance, WholePixelTranslationMovesPixelsExactly, ()) {
   const LineMode mode = *rc::gen::element(LineMode::kD3DDiamond, LineMode::kVulkanBresenham);
   // Lines near the small target (not the partly-outside family, which reaches beyond kBig).
-  const lg::RawLine l = *rc::gen::weightedOneOf<lg::RawLine>(
-      {{2, lg::random_line()}, {2, lg::through_diamond_point()}, {2, lg::along_edge()},
-       {1, lg::between_diamond_points()}, {1, lg::axis_aligned()}});
+  const lg::RawLine l = *rc::gen::weightedOneOf<lg::RawLine>({{2, lg::random_line()},
+                                                              {2, lg::through_diamond_point()},
+                                                              {2, lg::along_edge()},
+                                                              {1, lg::between_diamond_points()},
+                                                              {1, lg::axis_aligned()}});
   const auto i = *rc::gen::inRange<std::int64_t>(-3, 4);
   const auto j = *rc::gen::inRange<std::int64_t>(-3, 4);
   // A target large enough that neither line is clipped: 16 + 2 + 3 pixels margin on each side,
@@ -134,8 +143,8 @@ RC_GTEST_PROP(LineInvariance, WholePixelTranslationMovesPixelsExactly, ()) {
 // ties (the line's y exactly on a row boundary at a column centre) broken as
 // LINE.VK.BRESENHAM_CENTRES says: x-major to the row below for positive slope and above for
 // negative slope; y-major to the column on the left. Integer only; written independently.
-std::vector<Px> textbook_bresenham(std::int64_t x0, std::int64_t y0, std::int64_t x1, std::int64_t y1,
-                                   int& ties) {
+std::vector<Px> textbook_bresenham(std::int64_t x0, std::int64_t y0, std::int64_t x1,
+                                   std::int64_t y1, int& ties) {
   std::vector<Px> out;
   ties = 0;
   const std::int64_t dx = x1 - x0, dy = y1 - y0;
@@ -148,7 +157,7 @@ std::vector<Px> textbook_bresenham(std::int64_t x0, std::int64_t y0, std::int64_
     // Minor centre coordinate in half-pixels: 2 n0 + 1 + 2 i dn / |dm|; the pixel is
     // floor((2 n0 + 1) / 2 + i dn / |dm|). With err = 2 i dn + |dm| (2 n0 + 1) over 2 |dm|:
     const std::int64_t adm = dm < 0 ? -dm : dm;
-    const std::int64_t num = adm * (2 * n0 + 1) + 2 * i * dn;  // twice the centre, times |dm|
+    const std::int64_t num = adm * (2 * n0 + 1) + 2 * i * dn; // twice the centre, times |dm|
     const std::int64_t den = 2 * adm;
     std::int64_t q = num / den;
     std::int64_t r = num % den;
@@ -156,10 +165,11 @@ std::vector<Px> textbook_bresenham(std::int64_t x0, std::int64_t y0, std::int64_
       r += den;
       --q;
     }
-    if (r == 0) {  // exactly on a boundary between pixel q - 1 and q
+    if (r == 0) { // exactly on a boundary between pixel q - 1 and q
       ++ties;
       const bool to_lower = x_major ? (dy * dx > 0) : false;
-      if (!to_lower) --q;
+      if (!to_lower)
+        --q;
     }
     const std::int64_t m = m0 + sm * i;
     out.push_back(x_major ? Px{static_cast<std::int32_t>(m), static_cast<std::int32_t>(q)}
@@ -183,7 +193,8 @@ RC_GTEST_PROP(LineVulkan, EndPointsOnPixelCentresGiveBresenhamWithoutTheLastPixe
   RC_CLASSIFY(x0 == x1 && y0 == y1, "zero length");
   RC_CLASSIFY(ties > 0, "line passes exactly between two pixel centres (tie)");
   RC_CLASSIFY(std::abs(x1 - x0) == std::abs(y1 - y0), "exactly 45 degrees");
-  if (kernel != expected) RC_FAIL("kernel " + show(kernel) + "\nbresenham " + show(expected));
+  if (kernel != expected)
+    RC_FAIL("kernel " + show(kernel) + "\nbresenham " + show(expected));
 }
 
 // rule: LINE.ORDER.TRAVEL
@@ -195,8 +206,10 @@ RC_GTEST_PROP(LineOrder, PixelsComeInTheOrderTheLineTravels, ()) {
   const std::int64_t sm = x_major ? (l.bx > l.ax ? 1 : -1) : (l.by > l.ay ? 1 : -1);
   const std::int64_t sn = x_major ? (l.by >= l.ay ? 1 : -1) : (l.bx >= l.ax ? 1 : -1);
   for (std::size_t k = 1; k < px.size(); ++k) {
-    const std::int64_t m0 = x_major ? px[k - 1][0] : px[k - 1][1], m1 = x_major ? px[k][0] : px[k][1];
-    const std::int64_t n0 = x_major ? px[k - 1][1] : px[k - 1][0], n1 = x_major ? px[k][1] : px[k][0];
+    const std::int64_t m0 = x_major ? px[k - 1][0] : px[k - 1][1],
+                       m1 = x_major ? px[k][0] : px[k][1];
+    const std::int64_t n0 = x_major ? px[k - 1][1] : px[k - 1][0],
+                       n1 = x_major ? px[k][1] : px[k][0];
     RC_ASSERT((m1 - m0) * sm > 0 || (m1 == m0 && (n1 - n0) * sn > 0));
   }
 }
@@ -209,11 +222,13 @@ RC_GTEST_PROP(LineExplain, ExplanationAgreesWithTheDecision, ()) {
   const auto py = *rc::gen::inRange<std::int32_t>(0, lg::kTarget);
   const auto d = rastrules::explain_aliased_line_pixel(lg::start(l), lg::end(l), mode, px, py);
   RC_ASSERT(d.covered == rastrules::aliased_line_covers(lg::start(l), lg::end(l), mode, px, py));
-  RC_ASSERT(d.covered == rastrules::oracle::aliased_line_covers(
-                             lg::ostart(l), lg::oend(l), std::string(rastrules::to_string(mode)), px, py));
+  RC_ASSERT(d.covered ==
+            rastrules::oracle::aliased_line_covers(
+                lg::ostart(l), lg::oend(l), std::string(rastrules::to_string(mode)), px, py));
   RC_ASSERT(!d.reason.empty());
   // Entering requires meeting the closed diamond somewhere.
-  if (d.entered) RC_ASSERT(d.met_features != 0u);
+  if (d.entered)
+    RC_ASSERT(d.met_features != 0u);
 }
 
-}  // namespace
+} // namespace

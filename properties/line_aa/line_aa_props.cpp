@@ -45,7 +45,9 @@ std::string show(const AALine& l) {
 }
 
 // A coordinate near the target: [-3, kW + 3) px, in raw 16.8 units.
-rc::Gen<std::int64_t> near_coord() { return rc::gen::inRange<std::int64_t>(-3 * 256, (kW + 3) * 256); }
+rc::Gen<std::int64_t> near_coord() {
+  return rc::gen::inRange<std::int64_t>(-3 * 256, (kW + 3) * 256);
+}
 
 // Lines around the 10 x 10 target, in tie classes chosen to hit the rule's special cases.
 AALine gen_line() {
@@ -54,44 +56,52 @@ AALine gen_line() {
   AALine l;
   const std::int64_t x0 = *near_coord(), y0 = *near_coord();
   switch (kind) {
-    case 0: l = {"random", {x0, y0}, {*near_coord(), *near_coord()}}; break;
-    case 1: l = {"horizontal", {x0, y0}, {*near_coord(), y0}}; break;
-    case 2: l = {"vertical", {x0, y0}, {x0, *near_coord()}}; break;
-    case 3: {
-      const std::int64_t t = *rc::gen::inRange<std::int64_t>(-8 * 256, 8 * 256);
-      const std::int64_t s = *rc::gen::element<std::int64_t>(-1, 1);
-      l = {"diagonal45", {x0, y0}, {x0 + t, y0 + s * t}};
-      break;
-    }
-    case 4: {  // endpoints on pixel centres
-      auto c = [] { return *rc::gen::inRange<std::int64_t>(-2, kW + 2) * 256 + 128; };
-      l = {"centres", {c(), c()}, {c(), c()}};
-      break;
-    }
-    case 5: {  // endpoints on pixel corners
-      auto c = [] { return *rc::gen::inRange<std::int64_t>(-2, kW + 3) * 256; };
-      l = {"corners", {c(), c()}, {c(), c()}};
-      break;
-    }
-    case 6: {  // very short: at most 4 subpixels each way, possibly zero
-      auto s = [] { return *rc::gen::inRange<std::int64_t>(-4, 5); };
-      l = {"short", {x0, y0}, {x0 + s(), y0 + s()}};
-      break;
-    }
-    case 7: {  // long, partly outside the target
-      auto far = [] { return *rc::gen::inRange<std::int64_t>(-40000, 40000); };
-      l = {"long_partly_outside", {x0, y0}, {far(), far()}};
-      break;
-    }
-    case 8: l = {"zero_length", {x0, y0}, {x0, y0}}; break;
-    default: {  // small direction with a common factor: slopes like 1/2, 2/3 through centres
-      const std::int64_t k = *rc::gen::inRange<std::int64_t>(1, 6);
-      const std::int64_t ux = *rc::gen::inRange<std::int64_t>(-3, 4);
-      const std::int64_t uy = *rc::gen::inRange<std::int64_t>(-3, 4);
-      const std::int64_t cx = (x0 / 256) * 256 + 128, cy = (y0 / 256) * 256 + 128;
-      l = {"small_slope_centres", {cx, cy}, {cx + k * ux * 128, cy + k * uy * 128}};
-      break;
-    }
+  case 0:
+    l = {"random", {x0, y0}, {*near_coord(), *near_coord()}};
+    break;
+  case 1:
+    l = {"horizontal", {x0, y0}, {*near_coord(), y0}};
+    break;
+  case 2:
+    l = {"vertical", {x0, y0}, {x0, *near_coord()}};
+    break;
+  case 3: {
+    const std::int64_t t = *rc::gen::inRange<std::int64_t>(-8 * 256, 8 * 256);
+    const std::int64_t s = *rc::gen::element<std::int64_t>(-1, 1);
+    l = {"diagonal45", {x0, y0}, {x0 + t, y0 + s * t}};
+    break;
+  }
+  case 4: { // endpoints on pixel centres
+    auto c = [] { return *rc::gen::inRange<std::int64_t>(-2, kW + 2) * 256 + 128; };
+    l = {"centres", {c(), c()}, {c(), c()}};
+    break;
+  }
+  case 5: { // endpoints on pixel corners
+    auto c = [] { return *rc::gen::inRange<std::int64_t>(-2, kW + 3) * 256; };
+    l = {"corners", {c(), c()}, {c(), c()}};
+    break;
+  }
+  case 6: { // very short: at most 4 subpixels each way, possibly zero
+    auto s = [] { return *rc::gen::inRange<std::int64_t>(-4, 5); };
+    l = {"short", {x0, y0}, {x0 + s(), y0 + s()}};
+    break;
+  }
+  case 7: { // long, partly outside the target
+    auto far = [] { return *rc::gen::inRange<std::int64_t>(-40000, 40000); };
+    l = {"long_partly_outside", {x0, y0}, {far(), far()}};
+    break;
+  }
+  case 8:
+    l = {"zero_length", {x0, y0}, {x0, y0}};
+    break;
+  default: { // small direction with a common factor: slopes like 1/2, 2/3 through centres
+    const std::int64_t k = *rc::gen::inRange<std::int64_t>(1, 6);
+    const std::int64_t ux = *rc::gen::inRange<std::int64_t>(-3, 4);
+    const std::int64_t uy = *rc::gen::inRange<std::int64_t>(-3, 4);
+    const std::int64_t cx = (x0 / 256) * 256 + 128, cy = (y0 / 256) * 256 + 128;
+    l = {"small_slope_centres", {cx, cy}, {cx + k * ux * 128, cy + k * uy * 128}};
+    break;
+  }
   }
   RC_CLASSIFY(true, l.kind);
   return l;
@@ -120,7 +130,8 @@ RC_GTEST_PROP(LineAA, KernelCoverageIsWithinTheStatedBoundAndFragmentsMatchTheOr
   const std::vector<Frag> k = kernel_frags(l.a, l.b, kW, kH);
   // Fragment set: exactly the pixels whose exact coverage is > 0, in row order.
   std::vector<std::array<std::int32_t, 2>> kp;
-  for (const Frag& f : k) kp.push_back({f.x, f.y});
+  for (const Frag& f : k)
+    kp.push_back({f.x, f.y});
   RC_ASSERT(kp == rastrules::oracle::aa_pixels(l.a, l.b, kW, kH));
   bool floor_used = false;
   for (const Frag& f : k) {
@@ -160,7 +171,8 @@ RC_GTEST_PROP(LineAA, CoverageIsWithinTheBoundAnywhereInTheVertexRange, ()) {
   const std::int64_t t = *rc::gen::inRange<std::int64_t>(0, 1025);
   const std::int64_t mx = a[0] + (b[0] - a[0]) * t / 1024;
   const std::int64_t my = a[1] + (b[1] - a[1]) * t / 1024;
-  const std::int32_t cx = static_cast<std::int32_t>(mx >> 8), cy = static_cast<std::int32_t>(my >> 8);
+  const std::int32_t cx = static_cast<std::int32_t>(mx >> 8),
+                     cy = static_cast<std::int32_t>(my >> 8);
   RC_LOG() << "a=(" << a[0] << "," << a[1] << ") b=(" << b[0] << "," << b[1] << ")\n";
   for (std::int32_t dy = -2; dy <= 2; ++dy) {
     for (std::int32_t dx = -2; dx <= 2; ++dx) {
@@ -184,7 +196,7 @@ RC_GTEST_PROP(LineAA, WholePixelTranslationMovesCoverageExactly, ()) {
   const Raw b2{l.b[0] + tx * 256, l.b[1] + ty * 256};
   // On a target big enough for both, every fragment moves by (tx, ty) with identical coverage.
   const std::int32_t W = 4 * kW, H = 4 * kH;
-  const Raw off{kW * 256, kH * 256};  // keep both copies inside the big target
+  const Raw off{kW * 256, kH * 256}; // keep both copies inside the big target
   auto sh = [&](const Raw& r) { return Raw{r[0] + off[0], r[1] + off[1]}; };
   std::vector<Frag> k1 = kernel_frags(sh(l.a), sh(l.b), W, H);
   const std::vector<Frag> k2 = kernel_frags(sh(a2), sh(b2), W, H);
@@ -192,9 +204,10 @@ RC_GTEST_PROP(LineAA, WholePixelTranslationMovesCoverageExactly, ()) {
     f.x += static_cast<std::int32_t>(tx);
     f.y += static_cast<std::int32_t>(ty);
   }
-  k1.erase(std::remove_if(k1.begin(), k1.end(),
-                          [&](const Frag& f) { return f.x < 0 || f.y < 0 || f.x >= W || f.y >= H; }),
-           k1.end());
+  k1.erase(
+      std::remove_if(k1.begin(), k1.end(),
+                     [&](const Frag& f) { return f.x < 0 || f.y < 0 || f.x >= W || f.y >= H; }),
+      k1.end());
   std::vector<Frag> k2in = k2;
   // Fragments of the moved line that came from pixels outside the target before the move.
   k2in.erase(std::remove_if(k2in.begin(), k2in.end(),
@@ -226,14 +239,16 @@ RC_GTEST_PROP(LineAA, ReversalAndMirrorsPreserveCoverageExactly, ()) {
   // Mirror in x about the target's centre line: x -> kW * 256 - x, pixel i -> kW - 1 - i.
   auto mx = [](const Raw& r) { return Raw{kW * 256 - r[0], r[1]}; };
   std::vector<Frag> m = kernel_frags(mx(l.a), mx(l.b), kW, kH);
-  for (Frag& f : m) f.x = kW - 1 - f.x;
+  for (Frag& f : m)
+    f.x = kW - 1 - f.x;
   std::sort(m.begin(), m.end(),
             [](const Frag& p, const Frag& q) { return std::tie(p.y, p.x) < std::tie(q.y, q.x); });
   RC_ASSERT(m == k);
   // Mirror in y likewise.
   auto my = [](const Raw& r) { return Raw{r[0], kH * 256 - r[1]}; };
   std::vector<Frag> n = kernel_frags(my(l.a), my(l.b), kW, kH);
-  for (Frag& f : n) f.y = kH - 1 - f.y;
+  for (Frag& f : n)
+    f.y = kH - 1 - f.y;
   std::sort(n.begin(), n.end(),
             [](const Frag& p, const Frag& q) { return std::tie(p.y, p.x) < std::tie(q.y, q.x); });
   RC_ASSERT(n == k);
@@ -246,10 +261,10 @@ RC_GTEST_PROP(LineAA, BlendIsTheExactValueRoundedHalvesUp, ()) {
   const auto dst = *rc::gen::inRange<std::uint32_t>(0, 256);
   const auto cov = *rc::gen::oneOf(rc::gen::inRange<std::uint32_t>(0, 65537),
                                    rc::gen::element<std::uint32_t>(0, 1, 32768, 65535, 65536));
-  const std::uint8_t out = rastrules::aa_blend_unorm8(static_cast<std::uint8_t>(src),
-                                                      static_cast<std::uint8_t>(sa),
-                                                      static_cast<std::uint8_t>(dst), cov);
+  const std::uint8_t out =
+      rastrules::aa_blend_unorm8(static_cast<std::uint8_t>(src), static_cast<std::uint8_t>(sa),
+                                 static_cast<std::uint8_t>(dst), cov);
   RC_ASSERT(rastrules::oracle::aa_blend_ok(src, sa, dst, cov, out));
 }
 
-}  // namespace
+} // namespace

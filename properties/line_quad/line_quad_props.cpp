@@ -36,12 +36,16 @@ using rastrules::LineMode;
 using rastrules::Vec2;
 using Raw2 = oracle::Raw2;
 
-constexpr std::int32_t kSide = 10;  // target side for the window properties
+constexpr std::int32_t kSide = 10; // target side for the window properties
 
 // The fill convention spelled as in spec/scene.md, for the string-typed oracle.
-std::string fill_name(rastrules::FillConvention f) { return std::string(rastrules::to_string(f)); }
+std::string fill_name(rastrules::FillConvention f) {
+  return std::string(rastrules::to_string(f));
+}
 
-std::string mode_name(LineMode m) { return m == LineMode::kQuadWide ? "quad-wide" : "quad-narrow"; }
+std::string mode_name(LineMode m) {
+  return m == LineMode::kQuadWide ? "quad-wide" : "quad-narrow";
+}
 
 Vec2 vec(const Raw2& r) {
   return Vec2{rastrules::Subpixel::from_raw(static_cast<std::int32_t>(r[0])),
@@ -51,7 +55,7 @@ Vec2 vec(const Raw2& r) {
 struct Line {
   Raw2 a;
   Raw2 b;
-  std::string kind;  // tie class, for the classification output
+  std::string kind; // tie class, for the classification output
 };
 
 // A line near a kSide x kSide target, from one of the tie classes.
@@ -67,15 +71,25 @@ rc::Gen<Line> line_near() {
           const auto [ax, ay, bx, by, fx, fy, gx, gy, len] = t;
           const Raw2 a{ax * 256 + fx, ay * 256 + fy};
           switch (kind) {
-            case 0: return Line{a, Raw2{bx * 256 + gx, a[1]}, "horizontal"};
-            case 1: return Line{a, Raw2{a[0], by * 256 + gy}, "vertical"};
-            case 2: return Line{a, Raw2{a[0] + len * 3, a[1] + (gx % 2 ? len : -len) * 3}, "45 degrees"};
-            case 3: return Line{Raw2{ax * 256 + 128, ay * 256 + 128}, Raw2{bx * 256 + 128, by * 256 + 128},
-                                "endpoints on pixel centres"};
-            case 4: return Line{Raw2{ax * 256, ay * 256}, Raw2{bx * 256, by * 256}, "endpoints on pixel corners"};
-            case 5: return Line{a, Raw2{a[0] + gx % 5 - 2, a[1] + gy % 5 - 2}, "at most 2 raw long (or zero)"};
-            case 6: return Line{a, a, "zero length"};
-            default: return Line{a, Raw2{bx * 256 + gx, by * 256 + gy}, "anywhere"};
+          case 0:
+            return Line{a, Raw2{bx * 256 + gx, a[1]}, "horizontal"};
+          case 1:
+            return Line{a, Raw2{a[0], by * 256 + gy}, "vertical"};
+          case 2:
+            return Line{a, Raw2{a[0] + len * 3, a[1] + (gx % 2 ? len : -len) * 3}, "45 degrees"};
+          case 3:
+            return Line{Raw2{ax * 256 + 128, ay * 256 + 128}, Raw2{bx * 256 + 128, by * 256 + 128},
+                        "endpoints on pixel centres"};
+          case 4:
+            return Line{Raw2{ax * 256, ay * 256}, Raw2{bx * 256, by * 256},
+                        "endpoints on pixel corners"};
+          case 5:
+            return Line{a, Raw2{a[0] + gx % 5 - 2, a[1] + gy % 5 - 2},
+                        "at most 2 raw long (or zero)"};
+          case 6:
+            return Line{a, a, "zero length"};
+          default:
+            return Line{a, Raw2{bx * 256 + gx, by * 256 + gy}, "anywhere"};
           }
         });
   });
@@ -86,10 +100,12 @@ rc::Gen<Line> line_near() {
 std::map<std::pair<int, int>, int> kernel_hits(const Raw2& a, const Raw2& b, LineMode mode,
                                                const rastrules::RasterState& state) {
   std::map<std::pair<int, int>, int> hits;
-  for (const rastrules::TriangleSetup& t : rastrules::setup_quad_line(vec(a), vec(b), mode, state)) {
+  for (const rastrules::TriangleSetup& t :
+       rastrules::setup_quad_line(vec(a), vec(b), mode, state)) {
     RC_ASSERT(t.status == rastrules::TriangleStatus::kRasterized);
-    rastrules::raster::walk_triangle(t, kSide, kSide,
-                                     [&](std::int32_t x, std::int32_t y) { ++hits[{x, y}]; });
+    rastrules::raster::walk_triangle(t, kSide, kSide, [&](std::int32_t x, std::int32_t y) {
+      ++hits[{x, y}];
+    });
   }
   return hits;
 }
@@ -98,7 +114,7 @@ std::map<std::pair<int, int>, int> kernel_hits(const Raw2& a, const Raw2& b, Lin
 RC_GTEST_PROP(LineQuad, KernelEqualsExactOracleOnRandomAndTieHeavyLines, ()) {
   const Line line = *line_near();
   const LineMode mode = *rc::gen::element(LineMode::kQuadWide, LineMode::kQuadNarrow);
-  const rastrules::RasterState state = *gen::raster_state();  // cull must not matter
+  const rastrules::RasterState state = *gen::raster_state(); // cull must not matter
   RC_TAG(line.kind);
 
   // Corners: the kernel's triangles are (a-o, b-o, b+o), (a-o, b+o, a+o).
@@ -121,9 +137,8 @@ RC_GTEST_PROP(LineQuad, KernelEqualsExactOracleOnRandomAndTieHeavyLines, ()) {
       const auto it = hits.find({x, y});
       const int n = it == hits.end() ? 0 : it->second;
       RC_ASSERT(n <= 1);
-      const bool exact = oracle::quad_line_covers(line.a, line.b, mode_name(mode),
-                                                  {256 * x + 128, 256 * y + 128},
-                                                  fill_name(state.fill));
+      const bool exact = oracle::quad_line_covers(
+          line.a, line.b, mode_name(mode), {256 * x + 128, 256 * y + 128}, fill_name(state.fill));
       if ((n == 1) != exact) {
         RC_FAIL("pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): kernel " +
                 std::to_string(n) + ", oracle " + (exact ? "covered" : "not covered"));
@@ -150,9 +165,10 @@ RC_GTEST_PROP(LineQuad, CornerOffsetsEqualTheOracleAnywhereInRange, ()) {
   b[1] = std::clamp(b[1], lo, hi);
   RC_PRE(a != b);
   const LineMode mode = *rc::gen::element(LineMode::kQuadWide, LineMode::kQuadNarrow);
-  const rastrules::QuadOffset o = rastrules::quad_line_offset(
-      b[0] - a[0], b[1] - a[1],
-      mode == LineMode::kQuadWide ? rastrules::kQuadWideHalfWidth : rastrules::kQuadNarrowHalfWidth);
+  const rastrules::QuadOffset o =
+      rastrules::quad_line_offset(b[0] - a[0], b[1] - a[1],
+                                  mode == LineMode::kQuadWide ? rastrules::kQuadWideHalfWidth
+                                                              : rastrules::kQuadNarrowHalfWidth);
   const Raw2 expected = oracle::quad_line_offset(a, b, mode_name(mode));
   RC_ASSERT(std::int64_t{o.x} == expected[0]);
   RC_ASSERT(std::int64_t{o.y} == expected[1]);
@@ -176,11 +192,14 @@ RC_GTEST_PROP(LineQuad, DrawingBToAEqualsDrawingAToB, ()) {
     const auto key = [](const Vec2& v) { return std::make_pair(v.x.raw(), v.y.raw()); };
     std::set<std::pair<std::int32_t, std::int32_t>> fc, rc_;
     for (const auto& t : f)
-      for (const Vec2& v : t) fc.insert(key(v));
+      for (const Vec2& v : t)
+        fc.insert(key(v));
     for (const auto& t : r)
-      for (const Vec2& v : t) rc_.insert(key(v));
+      for (const Vec2& v : t)
+        rc_.insert(key(v));
     RC_ASSERT(fc == rc_);
-    RC_ASSERT(std::make_pair(key(f[0][0]), key(f[0][2])) == std::make_pair(key(r[0][2]), key(r[0][0])));
+    RC_ASSERT(std::make_pair(key(f[0][0]), key(f[0][2])) ==
+              std::make_pair(key(r[0][2]), key(r[0][0])));
   }
 }
 
@@ -199,11 +218,11 @@ RC_GTEST_PROP(LineQuad, WholePixelTranslationMovesCoverageExactly, ()) {
   for (std::int32_t y = 0; y < kSide; ++y) {
     for (std::int32_t x = 0; x < kSide; ++x) {
       const std::int64_t tx = x + dx, ty = y + dy;
-      if (tx < 0 || ty < 0 || tx >= kSide || ty >= kSide) continue;
-      RC_ASSERT(before.count({x, y}) ==
-                after.count({static_cast<int>(tx), static_cast<int>(ty)}));
+      if (tx < 0 || ty < 0 || tx >= kSide || ty >= kSide)
+        continue;
+      RC_ASSERT(before.count({x, y}) == after.count({static_cast<int>(tx), static_cast<int>(ty)}));
     }
   }
 }
 
-}  // namespace
+} // namespace

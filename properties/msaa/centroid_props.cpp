@@ -32,7 +32,9 @@ namespace om = rastrules::oracle::msaa;
 namespace oracle = rastrules::oracle;
 using rastrules::CentroidRule;
 
-std::string rule_name(CentroidRule r) { return r == CentroidRule::kD3D11 ? "d3d11" : "d3d10"; }
+std::string rule_name(CentroidRule r) {
+  return r == CentroidRule::kD3D11 ? "d3d11" : "d3d10";
+}
 
 void check_centroid(const mg::Pattern& p, CentroidRule r, std::uint32_t c, std::uint32_t m) {
   const om::CentroidPoint want = om::centroid(rule_name(r), c, m, p.oracle);
@@ -57,11 +59,11 @@ TEST(MsaaCentroid, EqualsTheOracleForEveryCoverageAndMaskOfStandardPatternsUpTo8
         for (std::uint32_t m = 0; m <= all; ++m) {
           const om::CentroidPoint want = om::centroid(rule_name(r), c, m, p.oracle);
           const om::CentroidPoint got = mg::to_oracle(rastrules::centroid(r, c, m, p.kernel));
-          ASSERT_TRUE(got == want) << p.name() << " " << rule_name(r) << " c " << c << " m " << m
-                                   << ": kernel (" << got.offset.x << "," << got.offset.y
-                                   << ") branch " << static_cast<int>(got.branch) << ", oracle ("
-                                   << want.offset.x << "," << want.offset.y << ") branch "
-                                   << static_cast<int>(want.branch);
+          ASSERT_TRUE(got == want)
+              << p.name() << " " << rule_name(r) << " c " << c << " m " << m << ": kernel ("
+              << got.offset.x << "," << got.offset.y << ") branch " << static_cast<int>(got.branch)
+              << ", oracle (" << want.offset.x << "," << want.offset.y << ") branch "
+              << static_cast<int>(want.branch);
         }
       }
     }
@@ -74,8 +76,9 @@ RC_GTEST_PROP(MsaaCentroid, EqualsTheOracleOnAnyPatternCoverageAndMask, ()) {
   const CentroidRule r = *rc::gen::element(CentroidRule::kD3D11, CentroidRule::kD3D10);
   const std::uint32_t all = rastrules::full_mask(p.count());
   const std::uint32_t c = *rc::gen::weightedOneOf<std::uint32_t>(
-      {{1, rc::gen::just(all)}, {3, rc::gen::map(rc::gen::arbitrary<std::uint32_t>(),
-                                                 [all](std::uint32_t v) { return v & all; })}});
+      {{1, rc::gen::just(all)},
+       {3, rc::gen::map(rc::gen::arbitrary<std::uint32_t>(),
+                        [all](std::uint32_t v) { return v & all; })}});
   const std::uint32_t m = *mg::sample_mask(p.count());
   RC_TAG(p.name());
   check_centroid(p, r, c, m);
@@ -88,7 +91,8 @@ RC_GTEST_PROP(MsaaCentroid, OutwardOrderIsByExactSquaredDistanceThenIndex, ()) {
   RC_ASSERT(order.size() == p.count());
   std::vector<std::uint32_t> sorted = order;
   std::sort(sorted.begin(), sorted.end());
-  for (std::uint32_t k = 0; k < p.count(); ++k) RC_ASSERT(sorted[k] == k);  // a permutation
+  for (std::uint32_t k = 0; k < p.count(); ++k)
+    RC_ASSERT(sorted[k] == k); // a permutation
   const auto d2 = [&](std::uint32_t k) {
     const om::Offset& o = p.oracle[k];
     return std::int64_t{o.x} * o.x + std::int64_t{o.y} * o.y;
@@ -104,16 +108,16 @@ bool unit_covers(const mg::MsScene& s, const rastrules::Fragment& f, const om::R
   const mg::Prim& p = s.prims[f.prim];
   const std::string fill(rastrules::to_string(s.state.fill));
   switch (p.type) {
-    case rastrules::PrimitiveType::kTriangle:
-      return oracle::covers({p.v[0], p.v[1], p.v[2]}, e, rastrules::gen::to_oracle_state(s.state));
-    case rastrules::PrimitiveType::kPoint:
-      return oracle::point_covers(p.v[0], e, fill);
-    default: {
-      const std::size_t k = f.seg.value_or(0);
-      const std::string mode =
-          s.line_mode == rastrules::LineMode::kQuadNarrow ? "quad-narrow" : "quad-wide";
-      return oracle::quad_line_covers(p.v[k], p.v[k + 1], mode, e, fill);
-    }
+  case rastrules::PrimitiveType::kTriangle:
+    return oracle::covers({p.v[0], p.v[1], p.v[2]}, e, rastrules::gen::to_oracle_state(s.state));
+  case rastrules::PrimitiveType::kPoint:
+    return oracle::point_covers(p.v[0], e, fill);
+  default: {
+    const std::size_t k = f.seg.value_or(0);
+    const std::string mode =
+        s.line_mode == rastrules::LineMode::kQuadNarrow ? "quad-narrow" : "quad-wide";
+    return oracle::quad_line_covers(p.v[k], p.v[k + 1], mode, e, fill);
+  }
   }
 }
 
@@ -122,17 +126,17 @@ std::uint32_t unit_coverage(const mg::MsScene& s, const rastrules::Fragment& f) 
   const mg::Prim& p = s.prims[f.prim];
   const std::string fill(rastrules::to_string(s.state.fill));
   switch (p.type) {
-    case rastrules::PrimitiveType::kTriangle:
-      return om::triangle_mask({p.v[0], p.v[1], p.v[2]}, rastrules::gen::to_oracle_state(s.state),
-                               f.x, f.y, s.pattern.oracle);
-    case rastrules::PrimitiveType::kPoint:
-      return om::point_mask(p.v[0], fill, f.x, f.y, s.pattern.oracle);
-    default: {
-      const std::size_t k = f.seg.value_or(0);
-      const std::string mode =
-          s.line_mode == rastrules::LineMode::kQuadNarrow ? "quad-narrow" : "quad-wide";
-      return om::quad_line_mask(p.v[k], p.v[k + 1], mode, fill, f.x, f.y, s.pattern.oracle);
-    }
+  case rastrules::PrimitiveType::kTriangle:
+    return om::triangle_mask({p.v[0], p.v[1], p.v[2]}, rastrules::gen::to_oracle_state(s.state),
+                             f.x, f.y, s.pattern.oracle);
+  case rastrules::PrimitiveType::kPoint:
+    return om::point_mask(p.v[0], fill, f.x, f.y, s.pattern.oracle);
+  default: {
+    const std::size_t k = f.seg.value_or(0);
+    const std::string mode =
+        s.line_mode == rastrules::LineMode::kQuadNarrow ? "quad-narrow" : "quad-wide";
+    return om::quad_line_mask(p.v[k], p.v[k + 1], mode, fill, f.x, f.y, s.pattern.oracle);
+  }
   }
 }
 
@@ -145,16 +149,20 @@ RC_GTEST_PROP(MsaaCentroid, WithinCoverageWheneverAnySampleIsCovered, ()) {
   s.line_mode = *rc::gen::element(rastrules::LineMode::kQuadWide, rastrules::LineMode::kQuadNarrow);
   s.shading = rastrules::ShadingRate::kPixel;
   s.centroid = *rc::gen::element(CentroidRule::kD3D11, CentroidRule::kD3D10);
-  for (mg::Prim& p : s.prims) p.aa = false;
+  for (mg::Prim& p : s.prims)
+    p.aa = false;
   const bool hull = om::centre_in_hull(pat.oracle);
-  if (pat.family != mg::PatternFamily::kCustom) RC_ASSERT(hull);  // MSAA.CENTROID.WITHIN's premise
+  if (pat.family != mg::PatternFamily::kCustom)
+    RC_ASSERT(hull); // MSAA.CENTROID.WITHIN's premise
 
   auto r = rastrules::render(mg::to_kernel(s));
-  if (const auto* err = std::get_if<rastrules::SceneError>(&r)) RC_FAIL(err->what());
+  if (const auto* err = std::get_if<rastrules::SceneError>(&r))
+    RC_FAIL(err->what());
   const std::uint32_t m = s.sample_mask & rastrules::full_mask(pat.count());
   bool left = false, branch1 = false;
   for (const rastrules::Fragment& f : std::get<std::vector<rastrules::Fragment>>(r)) {
-    if (f.helper) continue;
+    if (f.helper)
+      continue;
     RC_ASSERT(f.mask != 0u);
     RC_ASSERT(f.centroid.has_value());
     const rastrules::SampleOffset o = f.centroid->offset;
@@ -174,7 +182,8 @@ RC_GTEST_PROP(MsaaCentroid, WithinCoverageWheneverAnySampleIsCovered, ()) {
       mg::show(s, os);
       os << "centroid (" << int{o.x} << "," << int{o.y} << ") of fragment (" << f.x << "," << f.y
          << ") mask 0x" << std::hex << f.mask << std::dec << " is not covered";
-      if (hull) RC_FAIL(os.str());
+      if (hull)
+        RC_FAIL(os.str());
       // Outside the hull only branch 1 (the centre) can leave the primitive.
       RC_ASSERT(f.centroid->branch == rastrules::CentroidBranch::kFullCoverageCenter);
       left = true;
@@ -196,7 +205,8 @@ TEST(MsaaCentroid, CustomPatternWhoseHullMissesTheCentreCanLeaveThePrimitive) {
   s.pattern = mg::custom(offs);
   s.centroid = CentroidRule::kD3D11;
   s.sample_mask = 7;
-  s.prims.push_back(mg::Prim{rastrules::PrimitiveType::kTriangle, {{170, 10}, {250, 10}, {170, 90}}});
+  s.prims.push_back(
+      mg::Prim{rastrules::PrimitiveType::kTriangle, {{170, 10}, {250, 10}, {170, 90}}});
   for (const CentroidRule r : {CentroidRule::kD3D11, CentroidRule::kD3D10}) {
     s.centroid = r;
     const auto out = rastrules::render(mg::to_kernel(s));
@@ -212,4 +222,4 @@ TEST(MsaaCentroid, CustomPatternWhoseHullMissesTheCentreCanLeaveThePrimitive) {
   }
 }
 
-}  // namespace
+} // namespace

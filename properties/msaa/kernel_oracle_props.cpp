@@ -107,7 +107,8 @@ RC_GTEST_PROP(MsaaKernelOracle, EqualOnRandomScenesForEveryStandardPattern, ()) 
     s.sample_mask = full ? 0xFFFFFFFFu : raw_mask;
     mg::make_valid(s);
     check_scene(s);
-    if (n == 16) classify(seen(s));
+    if (n == 16)
+      classify(seen(s));
   }
 }
 
@@ -129,4 +130,4 @@ RC_GTEST_PROP(MsaaKernelOracle, EqualOnRandomScenesWithCustomPatterns, ()) {
   classify(seen(s));
 }
 
-}  // namespace
+} // namespace

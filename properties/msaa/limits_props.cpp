@@ -25,7 +25,8 @@ using rastrules::SceneError;
 
 std::string error_field(const rastrules::Scene& s) {
   const auto r = rastrules::prepare(s);
-  if (const auto* e = std::get_if<SceneError>(&r)) return e->field;
+  if (const auto* e = std::get_if<SceneError>(&r))
+    return e->field;
   return "";
 }
 
@@ -46,75 +47,78 @@ RC_GTEST_PROP(MsaaLimits, EachBrokenFieldIsNamedAndValidScenesPass, ()) {
   const int what = *rc::gen::inRange(0, 7);
   std::string want;
   switch (what) {
-    case 0: {  // a custom pattern of 0 or 17 positions
-      const std::size_t count = *rc::gen::element<std::size_t>(0, 17);
-      s.msaa.pattern = rastrules::SamplePattern{rastrules::PatternKind::kCustom,
-                                                std::vector<rastrules::SampleOffset>(count)};
-      s.msaa.sample_mask = 0xFFFFFFFFu;
-      want = "sample_pattern";
-      break;
-    }
-    case 1: {  // one offset off the grid
-      std::vector<rastrules::SampleOffset> o = pat.kernel.positions;
-      const std::size_t k = *rc::gen::inRange<std::size_t>(0, o.size());
-      const auto bad = static_cast<std::int8_t>(*rc::gen::element(-9, 8, -128, 127));
-      const bool y = *rc::gen::arbitrary<bool>();
-      (y ? o[k].y : o[k].x) = bad;
-      s.msaa.pattern = rastrules::SamplePattern{rastrules::PatternKind::kCustom, o};
-      s.primitives.clear();  // only the pattern is wrong
-      want = "sample_pattern[" + std::to_string(k) + "][" + (y ? "1" : "0") + "]";
-      break;
-    }
-    case 2: {  // a standard or centre kind with a count that has no pattern
-      const std::size_t count = *rc::gen::element<std::size_t>(3, 5, 6, 7, 9, 15, 17);
-      s.msaa.pattern = rastrules::SamplePattern{
-          *rc::gen::element(rastrules::PatternKind::kStandard, rastrules::PatternKind::kCenter),
-          std::vector<rastrules::SampleOffset>(count)};
-      s.msaa.sample_mask = 0xFFFFFFFFu;
-      want = "samples";
-      break;
-    }
-    case 3: {  // a mask bit beyond the pattern
-      s.msaa.sample_mask = rastrules::full_mask(n) | (1u << *rc::gen::inRange(n, 31u));
-      want = "sample_mask";
-      break;
-    }
-    case 4: {  // quadrilateral lines on a centre pattern of several samples
-      const std::uint32_t c = *rc::gen::element(2u, 4u, 8u, 16u);
-      s.msaa.pattern = rastrules::center_pattern(c);
-      s.msaa.sample_mask = 0xFFFFFFFFu;
-      s.msaa.shading = rastrules::ShadingRate::kPixel;
-      s.line_mode = *rc::gen::element(rastrules::LineMode::kD3DDiamond, rastrules::LineMode::kQuadWide,
-                                      rastrules::LineMode::kQuadNarrow);
-      for (auto& p : s.primitives) p.aa = false;
-      s.primitives.push_back(line_prim());
-      want = "sample_pattern";
-      break;
-    }
-    case 5: {  // sample shading of Bresenham lines with several samples
-      RC_PRE(n > 1u);
-      s.msaa.shading = rastrules::ShadingRate::kSample;
-      s.line_mode = rastrules::LineMode::kVulkanBresenham;
-      for (auto& p : s.primitives) p.aa = false;
-      s.primitives.push_back(line_prim());
-      want = "shading";
-      break;
-    }
-    default: {  // a resolve of more than 2^26 samples
-      rastrules::Scene big;
-      big.width = 2049;
-      big.height = 2048;
-      big.msaa.pattern = rastrules::standard_pattern(16);
-      const auto prepared = rastrules::prepare(big);
-      RC_ASSERT(std::holds_alternative<rastrules::PreparedScene>(prepared));
-      const auto r = rastrules::resolve(std::get<rastrules::PreparedScene>(prepared), {});
-      RC_ASSERT(std::holds_alternative<SceneError>(r));
-      RC_ASSERT(std::get<SceneError>(r).field == "target");
-      return;
-    }
+  case 0: { // a custom pattern of 0 or 17 positions
+    const std::size_t count = *rc::gen::element<std::size_t>(0, 17);
+    s.msaa.pattern = rastrules::SamplePattern{rastrules::PatternKind::kCustom,
+                                              std::vector<rastrules::SampleOffset>(count)};
+    s.msaa.sample_mask = 0xFFFFFFFFu;
+    want = "sample_pattern";
+    break;
+  }
+  case 1: { // one offset off the grid
+    std::vector<rastrules::SampleOffset> o = pat.kernel.positions;
+    const std::size_t k = *rc::gen::inRange<std::size_t>(0, o.size());
+    const auto bad = static_cast<std::int8_t>(*rc::gen::element(-9, 8, -128, 127));
+    const bool y = *rc::gen::arbitrary<bool>();
+    (y ? o[k].y : o[k].x) = bad;
+    s.msaa.pattern = rastrules::SamplePattern{rastrules::PatternKind::kCustom, o};
+    s.primitives.clear(); // only the pattern is wrong
+    want = "sample_pattern[" + std::to_string(k) + "][" + (y ? "1" : "0") + "]";
+    break;
+  }
+  case 2: { // a standard or centre kind with a count that has no pattern
+    const std::size_t count = *rc::gen::element<std::size_t>(3, 5, 6, 7, 9, 15, 17);
+    s.msaa.pattern = rastrules::SamplePattern{
+        *rc::gen::element(rastrules::PatternKind::kStandard, rastrules::PatternKind::kCenter),
+        std::vector<rastrules::SampleOffset>(count)};
+    s.msaa.sample_mask = 0xFFFFFFFFu;
+    want = "samples";
+    break;
+  }
+  case 3: { // a mask bit beyond the pattern
+    s.msaa.sample_mask = rastrules::full_mask(n) | (1u << *rc::gen::inRange(n, 31u));
+    want = "sample_mask";
+    break;
+  }
+  case 4: { // quadrilateral lines on a centre pattern of several samples
+    const std::uint32_t c = *rc::gen::element(2u, 4u, 8u, 16u);
+    s.msaa.pattern = rastrules::center_pattern(c);
+    s.msaa.sample_mask = 0xFFFFFFFFu;
+    s.msaa.shading = rastrules::ShadingRate::kPixel;
+    s.line_mode =
+        *rc::gen::element(rastrules::LineMode::kD3DDiamond, rastrules::LineMode::kQuadWide,
+                          rastrules::LineMode::kQuadNarrow);
+    for (auto& p : s.primitives)
+      p.aa = false;
+    s.primitives.push_back(line_prim());
+    want = "sample_pattern";
+    break;
+  }
+  case 5: { // sample shading of Bresenham lines with several samples
+    RC_PRE(n > 1u);
+    s.msaa.shading = rastrules::ShadingRate::kSample;
+    s.line_mode = rastrules::LineMode::kVulkanBresenham;
+    for (auto& p : s.primitives)
+      p.aa = false;
+    s.primitives.push_back(line_prim());
+    want = "shading";
+    break;
+  }
+  default: { // a resolve of more than 2^26 samples
+    rastrules::Scene big;
+    big.width = 2049;
+    big.height = 2048;
+    big.msaa.pattern = rastrules::standard_pattern(16);
+    const auto prepared = rastrules::prepare(big);
+    RC_ASSERT(std::holds_alternative<rastrules::PreparedScene>(prepared));
+    const auto r = rastrules::resolve(std::get<rastrules::PreparedScene>(prepared), {});
+    RC_ASSERT(std::holds_alternative<SceneError>(r));
+    RC_ASSERT(std::get<SceneError>(r).field == "target");
+    return;
+  }
   }
   RC_TAG(want.substr(0, want.find('[')));
   RC_ASSERT(error_field(s) == want);
 }
 
-}  // namespace
+} // namespace

@@ -73,7 +73,9 @@ inline const std::vector<std::uint32_t>& standard_counts() {
 
 // RapidCheck scales integer ranges with the test's size (small values first); these
 // generators run at full size so that early cases are as varied as late ones.
-template <class T> rc::Gen<T> full_size(rc::Gen<T> g) { return rc::gen::resize(100, std::move(g)); }
+template <class T> rc::Gen<T> full_size(rc::Gen<T> g) {
+  return rc::gen::resize(100, std::move(g));
+}
 
 // Custom offsets: anywhere on the grid, clustered in one quadrant (hull misses the centre),
 // on the grid's limits (-8 and 7), with repeats.
@@ -85,19 +87,19 @@ inline rc::Gen<std::vector<om::Offset>> custom_offsets() {
     for (std::size_t i = 0; i < n; ++i) {
       om::Offset o;
       switch (style) {
-        case 0:  // anywhere
-          o = {*rc::gen::inRange(-8, 8), *rc::gen::inRange(-8, 8)};
-          break;
-        case 1:  // one quadrant, off the axes: the centre is outside the hull
-          o = {*rc::gen::inRange(1, 8), *rc::gen::inRange(-8, 0)};
-          break;
-        case 2:  // the corners and edges of the grid
-          o = {*rc::gen::element(-8, 7, 0), *rc::gen::element(-8, 7, 0, 3)};
-          break;
-        default:  // repeats of a few positions
-          o = i > 0 && *rc::gen::inRange(0, 3) == 0
-                  ? v[static_cast<std::size_t>(*rc::gen::inRange<std::size_t>(0, i))]
-                  : om::Offset{*rc::gen::inRange(-8, 8), *rc::gen::inRange(-8, 8)};
+      case 0: // anywhere
+        o = {*rc::gen::inRange(-8, 8), *rc::gen::inRange(-8, 8)};
+        break;
+      case 1: // one quadrant, off the axes: the centre is outside the hull
+        o = {*rc::gen::inRange(1, 8), *rc::gen::inRange(-8, 0)};
+        break;
+      case 2: // the corners and edges of the grid
+        o = {*rc::gen::element(-8, 7, 0), *rc::gen::element(-8, 7, 0, 3)};
+        break;
+      default: // repeats of a few positions
+        o = i > 0 && *rc::gen::inRange(0, 3) == 0
+                ? v[static_cast<std::size_t>(*rc::gen::inRange<std::size_t>(0, i))]
+                : om::Offset{*rc::gen::inRange(-8, 8), *rc::gen::inRange(-8, 8)};
       }
       v.push_back(o);
     }
@@ -107,9 +109,12 @@ inline rc::Gen<std::vector<om::Offset>> custom_offsets() {
 
 inline rc::Gen<Pattern> any_pattern() {
   return full_size(rc::gen::weightedOneOf<Pattern>(
-      {{3, rc::gen::map(rc::gen::elementOf(standard_counts()), [](std::uint32_t n) { return standard(n); })},
-       {1, rc::gen::map(rc::gen::elementOf(standard_counts()), [](std::uint32_t n) { return centre(n); })},
-       {2, rc::gen::map(custom_offsets(), [](const std::vector<om::Offset>& o) { return custom(o); })}}));
+      {{3, rc::gen::map(rc::gen::elementOf(standard_counts()),
+                        [](std::uint32_t n) { return standard(n); })},
+       {1, rc::gen::map(rc::gen::elementOf(standard_counts()),
+                        [](std::uint32_t n) { return centre(n); })},
+       {2, rc::gen::map(custom_offsets(),
+                        [](const std::vector<om::Offset>& o) { return custom(o); })}}));
 }
 
 // A sample mask within the pattern: full (often), random, one bit, empty.
@@ -117,8 +122,10 @@ inline rc::Gen<std::uint32_t> sample_mask(std::uint32_t n) {
   const std::uint32_t all = full_mask(n);
   return full_size(rc::gen::weightedOneOf<std::uint32_t>(
       {{3, rc::gen::just(all)},
-       {3, rc::gen::map(rc::gen::arbitrary<std::uint32_t>(), [all](std::uint32_t r) { return r & all; })},
-       {1, rc::gen::map(rc::gen::inRange<std::uint32_t>(0, n), [](std::uint32_t k) { return 1u << k; })},
+       {3, rc::gen::map(rc::gen::arbitrary<std::uint32_t>(),
+                        [all](std::uint32_t r) { return r & all; })},
+       {1, rc::gen::map(rc::gen::inRange<std::uint32_t>(0, n),
+                        [](std::uint32_t k) { return 1u << k; })},
        {1, rc::gen::map(rc::gen::inRange<std::uint32_t>(0, n),
                         [all](std::uint32_t k) { return all & ~(1u << k); })}}));
 }
@@ -142,7 +149,9 @@ inline rc::Gen<std::int64_t> coord(std::int32_t side) {
 
 inline rc::Gen<Raw2> vertex(std::int32_t w, std::int32_t h) {
   return rc::gen::map(rc::gen::pair(coord(w), coord(h)),
-                      [](const std::pair<std::int64_t, std::int64_t>& p) { return Raw2{p.first, p.second}; });
+                      [](const std::pair<std::int64_t, std::int64_t>& p) {
+                        return Raw2{p.first, p.second};
+                      });
 }
 
 struct Prim {
@@ -159,38 +168,45 @@ inline rc::Gen<Prim> prim(std::int32_t w, std::int32_t h, bool lines, bool point
         {{4, 0}, {points ? 2u : 0u, 1}, {lines ? 2u : 0u, 2}, {lines ? 1u : 0u, 3}});
     const auto v = vertex(w, h);
     switch (t) {
-      case 0: {
-        p.type = PrimitiveType::kTriangle;
-        p.v = {*v, *v, *v};
-        // A shared axis now and then: horizontal and vertical edges.
-        const int tie = *rc::gen::inRange(0, 4);
-        if (tie == 1) p.v[1][1] = p.v[0][1];
-        if (tie == 2) p.v[2][0] = p.v[1][0];
-        break;
-      }
-      case 1:
-        p.type = PrimitiveType::kPoint;
-        p.v = {*v};
-        break;
-      case 2: {
-        p.type = PrimitiveType::kLine;
-        const Raw2 a = *v;
-        const int shape = *rc::gen::inRange(0, 5);
-        Raw2 b = *v;
-        if (shape == 1) b[1] = a[1];                                   // horizontal
-        if (shape == 2) b[0] = a[0];                                   // vertical
-        if (shape == 3) b = {a[0] + (b[0] - a[0]), a[1] + (b[0] - a[0])};  // 45 degrees
-        if (shape == 4 && *rc::gen::inRange(0, 4) == 0) b = a;         // zero length
-        p.v = {a, b};
-        p.aa = *rc::gen::inRange(0, 4) == 0;
-        break;
-      }
-      default: {
-        p.type = PrimitiveType::kLineStrip;
-        const auto k = *rc::gen::inRange(2, 5);
-        for (int i = 0; i < k; ++i) p.v.push_back(*v);
-        p.aa = *rc::gen::inRange(0, 4) == 0;
-      }
+    case 0: {
+      p.type = PrimitiveType::kTriangle;
+      p.v = {*v, *v, *v};
+      // A shared axis now and then: horizontal and vertical edges.
+      const int tie = *rc::gen::inRange(0, 4);
+      if (tie == 1)
+        p.v[1][1] = p.v[0][1];
+      if (tie == 2)
+        p.v[2][0] = p.v[1][0];
+      break;
+    }
+    case 1:
+      p.type = PrimitiveType::kPoint;
+      p.v = {*v};
+      break;
+    case 2: {
+      p.type = PrimitiveType::kLine;
+      const Raw2 a = *v;
+      const int shape = *rc::gen::inRange(0, 5);
+      Raw2 b = *v;
+      if (shape == 1)
+        b[1] = a[1]; // horizontal
+      if (shape == 2)
+        b[0] = a[0]; // vertical
+      if (shape == 3)
+        b = {a[0] + (b[0] - a[0]), a[1] + (b[0] - a[0])}; // 45 degrees
+      if (shape == 4 && *rc::gen::inRange(0, 4) == 0)
+        b = a; // zero length
+      p.v = {a, b};
+      p.aa = *rc::gen::inRange(0, 4) == 0;
+      break;
+    }
+    default: {
+      p.type = PrimitiveType::kLineStrip;
+      const auto k = *rc::gen::inRange(2, 5);
+      for (int i = 0; i < k; ++i)
+        p.v.push_back(*v);
+      p.aa = *rc::gen::inRange(0, 4) == 0;
+    }
     }
     p.color = *rc::gen::arbitrary<std::array<std::uint8_t, 4>>();
     return p;
@@ -232,9 +248,11 @@ inline void make_valid(MsScene& s) {
   if (has_lines && s.pattern.family == PatternFamily::kCenter && n > 1 &&
       is_quad_line_mode(s.line_mode, n))
     s.line_mode = LineMode::kVulkanBresenham;
-  if (has_lines && n > 1 && !is_quad_line_mode(s.line_mode, n)) s.shading = ShadingRate::kPixel;
+  if (has_lines && n > 1 && !is_quad_line_mode(s.line_mode, n))
+    s.shading = ShadingRate::kPixel;
   for (Prim& p : s.prims) {
-    if (!(s.line_mode == LineMode::kD3DDiamond && n > 1)) p.aa = false;
+    if (!(s.line_mode == LineMode::kD3DDiamond && n > 1))
+      p.aa = false;
   }
   s.sample_mask &= full_mask(n);
 }
@@ -245,7 +263,8 @@ inline rc::Gen<MsScene> scene_on(const Pattern& pattern, std::int32_t max_side, 
   return full_size<MsScene>(rc::gen::exec([=] {
     MsScene s;
     const auto side = rc::gen::weightedOneOf<std::int32_t>(
-        {{1, rc::gen::inRange(1, max_side + 1)}, {3, rc::gen::inRange(max_side / 2 + 1, max_side + 1)}});
+        {{1, rc::gen::inRange(1, max_side + 1)},
+         {3, rc::gen::inRange(max_side / 2 + 1, max_side + 1)}});
     s.width = *side;
     s.height = *side;
     s.state = *gen::raster_state();
@@ -257,11 +276,12 @@ inline rc::Gen<MsScene> scene_on(const Pattern& pattern, std::int32_t max_side, 
       s.centroid = *rc::gen::element(CentroidRule::kD3D11, CentroidRule::kD3D10);
     s.shading = *rc::gen::element(ShadingRate::kPixel, ShadingRate::kPixel, ShadingRate::kSample);
     s.quads = *rc::gen::arbitrary<bool>();
-    s.derivatives = *rc::gen::element(DerivativeMode::kNone, DerivativeMode::kFine,
-                                      DerivativeMode::kCoarse);
+    s.derivatives =
+        *rc::gen::element(DerivativeMode::kNone, DerivativeMode::kFine, DerivativeMode::kCoarse);
     s.clear_color = *rc::gen::arbitrary<std::array<std::uint8_t, 4>>();
     const auto k = *rc::gen::inRange(1, 5);
-    for (int i = 0; i < k; ++i) s.prims.push_back(*prim(s.width, s.height, lines, points));
+    for (int i = 0; i < k; ++i)
+      s.prims.push_back(*prim(s.width, s.height, lines, points));
     make_valid(s);
     return s;
   }));
@@ -289,7 +309,8 @@ inline Scene to_kernel(const MsScene& s) {
     Primitive q;
     q.type = p.type;
     q.v.clear();
-    for (const Raw2& r : p.v) q.v.push_back(to_float(r));
+    for (const Raw2& r : p.v)
+      q.v.push_back(to_float(r));
     q.aa = p.aa;
     q.color = p.color;
     k.primitives.push_back(q);
@@ -299,10 +320,14 @@ inline Scene to_kernel(const MsScene& s) {
 
 inline std::string line_mode_name(LineMode m) {
   switch (m) {
-    case LineMode::kD3DDiamond: return "d3d";
-    case LineMode::kVulkanBresenham: return "vulkan-bresenham";
-    case LineMode::kQuadWide: return "quad-wide";
-    case LineMode::kQuadNarrow: return "quad-narrow";
+  case LineMode::kD3DDiamond:
+    return "d3d";
+  case LineMode::kVulkanBresenham:
+    return "vulkan-bresenham";
+  case LineMode::kQuadWide:
+    return "quad-wide";
+  case LineMode::kQuadNarrow:
+    return "quad-narrow";
   }
   return "?";
 }
@@ -315,7 +340,8 @@ inline om::Input to_oracle(const MsScene& s) {
   o.line_mode = line_mode_name(s.line_mode);
   o.pattern = s.pattern.oracle;
   o.sample_mask = s.sample_mask;
-  if (s.centroid) o.centroid = *s.centroid == CentroidRule::kD3D11 ? "d3d11" : "d3d10";
+  if (s.centroid)
+    o.centroid = *s.centroid == CentroidRule::kD3D11 ? "d3d11" : "d3d10";
   o.shading = s.shading == ShadingRate::kSample ? "sample" : "pixel";
   o.quads = s.quads;
   o.derivatives = s.derivatives == DerivativeMode::kFine     ? "fine"
@@ -337,14 +363,16 @@ inline void show(const MsScene& s, std::ostream& os) {
   os << "scene " << s.width << "x" << s.height << " cull " << to_string(s.state.cull) << " front "
      << to_string(s.state.front_face) << " fill " << to_string(s.state.fill) << " line_mode "
      << line_mode_name(s.line_mode) << "\n  pattern " << s.pattern.name() << ":";
-  for (const om::Offset& o : s.pattern.oracle) os << " (" << o.x << "," << o.y << ")";
+  for (const om::Offset& o : s.pattern.oracle)
+    os << " (" << o.x << "," << o.y << ")";
   os << "\n  sample_mask 0x" << std::hex << s.sample_mask << std::dec << " centroid "
      << (s.centroid ? std::string(to_string(*s.centroid)) : "none") << " shading "
      << to_string(s.shading) << " quads " << s.quads << " derivatives " << to_string(s.derivatives)
      << "\n";
   for (const Prim& p : s.prims) {
     os << "  " << to_string(p.type) << (p.aa ? " aa" : "") << " raw";
-    for (const Raw2& r : p.v) os << " (" << r[0] << "," << r[1] << ")";
+    for (const Raw2& r : p.v)
+      os << " (" << r[0] << "," << r[1] << ")";
     os << "\n";
   }
 }
@@ -354,11 +382,16 @@ inline void show(const MsScene& s, std::ostream& os) {
 
 inline om::Branch to_oracle(CentroidBranch b) {
   switch (b) {
-    case CentroidBranch::kFullCoverageCenter: return om::Branch::kFullCoverageCenter;
-    case CentroidBranch::kFirstCovered: return om::Branch::kFirstCovered;
-    case CentroidBranch::kNearestCovered: return om::Branch::kNearestCovered;
-    case CentroidBranch::kNoneCoveredMaskSample: return om::Branch::kNoneCoveredMaskSample;
-    case CentroidBranch::kNoneCoveredCenter: return om::Branch::kNoneCoveredCenter;
+  case CentroidBranch::kFullCoverageCenter:
+    return om::Branch::kFullCoverageCenter;
+  case CentroidBranch::kFirstCovered:
+    return om::Branch::kFirstCovered;
+  case CentroidBranch::kNearestCovered:
+    return om::Branch::kNearestCovered;
+  case CentroidBranch::kNoneCoveredMaskSample:
+    return om::Branch::kNoneCoveredMaskSample;
+  case CentroidBranch::kNoneCoveredCenter:
+    return om::Branch::kNoneCoveredCenter;
   }
   return om::Branch::kFullCoverageCenter;
 }
@@ -377,7 +410,8 @@ inline om::Fragment to_oracle(const Fragment& f) {
   o.seg = f.seg;
   o.sample = f.sample;
   o.helper = f.helper;
-  if (f.centroid) o.centroid = to_oracle(*f.centroid);
+  if (f.centroid)
+    o.centroid = to_oracle(*f.centroid);
   if (f.derivatives)
     o.derivatives = om::Deriv{f.derivatives->ddx_x, f.derivatives->ddx_y, f.derivatives->ddy_x,
                               f.derivatives->ddy_y};
@@ -388,9 +422,12 @@ inline std::string show(const om::Fragment& f) {
   std::ostringstream os;
   os << "{prim " << f.prim << " (" << f.x << "," << f.y << ") mask 0x" << std::hex << f.mask
      << std::dec;
-  if (f.seg) os << " seg " << *f.seg;
-  if (f.sample) os << " sample " << *f.sample;
-  if (f.helper) os << " helper";
+  if (f.seg)
+    os << " seg " << *f.seg;
+  if (f.sample)
+    os << " sample " << *f.sample;
+  if (f.helper)
+    os << " helper";
   if (f.centroid)
     os << " centroid (" << f.centroid->offset.x << "," << f.centroid->offset.y << ") branch "
        << static_cast<int>(f.centroid->branch);
@@ -408,7 +445,8 @@ inline std::string difference(const std::vector<Fragment>& kernel,
   std::size_t shown = 0;
   for (const Fragment& f : kernel) {
     if (f.coverage_q16) {
-      os << "kernel fragment carries a coverage on a multisampled line: " << show(to_oracle(f)) << "\n";
+      os << "kernel fragment carries a coverage on a multisampled line: " << show(to_oracle(f))
+         << "\n";
       ++shown;
       break;
     }
@@ -425,9 +463,10 @@ inline std::string difference(const std::vector<Fragment>& kernel,
       ++shown;
     }
   }
-  if (shown == 0) return "";
+  if (shown == 0)
+    return "";
   return "kernel " + std::to_string(kernel.size()) + " fragments, oracle " +
          std::to_string(oracle.size()) + "\n" + os.str();
 }
 
-}  // namespace rastrules::msaa_gen
+} // namespace rastrules::msaa_gen

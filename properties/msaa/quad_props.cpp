@@ -66,7 +66,7 @@ RC_GTEST_PROP(MsaaQuads, HelperLanesAreExactlyTheUncoveredLanesOfTouchedQuads, (
     const auto key = std::make_pair(f.x, f.y);
     if (f.helper) {
       RC_ASSERT(f.mask == 0u);
-      RC_ASSERT(helpers[group_of(f)].insert(key).second);  // listed once
+      RC_ASSERT(helpers[group_of(f)].insert(key).second); // listed once
     } else {
       RC_ASSERT(f.mask != 0u);
       RC_ASSERT(covered[group_of(f)].insert(key).second);
@@ -90,8 +90,10 @@ RC_GTEST_PROP(MsaaQuads, HelperLanesAreExactlyTheUncoveredLanesOfTouchedQuads, (
         // Lane order (x & 1) + 2 (y & 1).
         const std::int32_t lx = qx + (lane & 1), ly = qy + (lane >> 1);
         RC_ASSERT(rastrules::quad_lane(lx, ly) == static_cast<std::uint32_t>(lane));
-        if (lx >= s.width || ly >= s.height) continue;
-        if (pixels.count({lx, ly}) == 0) expect[g].insert({lx, ly});
+        if (lx >= s.width || ly >= s.height)
+          continue;
+        if (pixels.count({lx, ly}) == 0)
+          expect[g].insert({lx, ly});
       }
     }
   }
@@ -102,7 +104,8 @@ RC_GTEST_PROP(MsaaQuads, HelperLanesAreExactlyTheUncoveredLanesOfTouchedQuads, (
   const auto b = rastrules::resolve(ps, without);
   RC_ASSERT(std::holds_alternative<rastrules::ResolvedImage>(a));
   RC_ASSERT(std::holds_alternative<rastrules::ResolvedImage>(b));
-  RC_ASSERT(std::get<rastrules::ResolvedImage>(a).pixels == std::get<rastrules::ResolvedImage>(b).pixels);
+  RC_ASSERT(std::get<rastrules::ResolvedImage>(a).pixels ==
+            std::get<rastrules::ResolvedImage>(b).pixels);
   RC_CLASSIFY(!helpers.empty(), "helper lanes");
 }
 
@@ -110,27 +113,34 @@ RC_GTEST_PROP(MsaaQuads, HelperLanesAreExactlyTheUncoveredLanesOfTouchedQuads, (
 RC_GTEST_PROP(MsaaQuads, DerivativesFollowTheLaneStructure, ()) {
   const mg::Pattern p = *mg::any_pattern();
   mg::MsScene s = *mg::scene_on(p, 9);
-  s.derivatives = *rc::gen::element(rastrules::DerivativeMode::kFine, rastrules::DerivativeMode::kCoarse);
+  s.derivatives =
+      *rc::gen::element(rastrules::DerivativeMode::kFine, rastrules::DerivativeMode::kCoarse);
   const std::vector<Fragment> frags = render_ok(mg::to_kernel(s));
   const bool fixed_point = !s.centroid || s.shading == rastrules::ShadingRate::kSample;
   // Per (group, quad): the derivatives of each listed lane.
-  std::map<std::tuple<Group, std::int32_t, std::int32_t>, std::array<std::optional<rastrules::EvalDerivatives>, 4>> quads;
+  std::map<std::tuple<Group, std::int32_t, std::int32_t>,
+           std::array<std::optional<rastrules::EvalDerivatives>, 4>>
+      quads;
   for (const Fragment& f : frags) {
     RC_ASSERT(f.derivatives.has_value());
     const rastrules::EvalDerivatives d = *f.derivatives;
-    if (fixed_point) RC_ASSERT((d == rastrules::EvalDerivatives{16, 0, 0, 16}));
+    if (fixed_point)
+      RC_ASSERT((d == rastrules::EvalDerivatives{16, 0, 0, 16}));
     quads[{group_of(f), f.x & ~1, f.y & ~1}][rastrules::quad_lane(f.x, f.y)] = d;
   }
   for (const auto& [key, lanes] : quads) {
     for (std::size_t i = 0; i < 4; ++i) {
       for (std::size_t j = 0; j < 4; ++j) {
-        if (!lanes[i] || !lanes[j]) continue;
+        if (!lanes[i] || !lanes[j])
+          continue;
         if (s.derivatives == rastrules::DerivativeMode::kCoarse) {
           RC_ASSERT(*lanes[i] == *lanes[j]);
         } else {
           const bool same_row = (i & 2u) == (j & 2u), same_col = (i & 1u) == (j & 1u);
-          if (same_row) RC_ASSERT(lanes[i]->ddx_x == lanes[j]->ddx_x && lanes[i]->ddx_y == lanes[j]->ddx_y);
-          if (same_col) RC_ASSERT(lanes[i]->ddy_x == lanes[j]->ddy_x && lanes[i]->ddy_y == lanes[j]->ddy_y);
+          if (same_row)
+            RC_ASSERT(lanes[i]->ddx_x == lanes[j]->ddx_x && lanes[i]->ddx_y == lanes[j]->ddx_y);
+          if (same_col)
+            RC_ASSERT(lanes[i]->ddy_x == lanes[j]->ddy_x && lanes[i]->ddy_y == lanes[j]->ddy_y);
         }
       }
     }
@@ -148,4 +158,4 @@ TEST(MsaaQuads, FineAndCoarseTemplatesOnAQuad) {
   EXPECT_EQ(rastrules::coarse_derivatives(v), (rastrules::Derivatives<int>{9, 99}));
 }
 
-}  // namespace
+} // namespace

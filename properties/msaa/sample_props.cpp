@@ -47,7 +47,8 @@ TEST(MsaaSamples, StandardAndCentreTablesEqualTheOraclesTables) {
   for (std::uint32_t n = 0; n <= 17; ++n) {
     const bool standard = n == 1 || n == 2 || n == 4 || n == 8 || n == 16;
     EXPECT_EQ(rastrules::is_standard_count(n), standard) << n;
-    if (!standard) continue;
+    if (!standard)
+      continue;
     const rastrules::SamplePattern k = rastrules::standard_pattern(n);
     const std::vector<om::Offset> o = om::standard_pattern(n);
     EXPECT_EQ(k.kind, rastrules::PatternKind::kStandard);
@@ -59,7 +60,8 @@ TEST(MsaaSamples, StandardAndCentreTablesEqualTheOraclesTables) {
     const rastrules::SamplePattern c = rastrules::center_pattern(n);
     EXPECT_EQ(c.kind, rastrules::PatternKind::kCenter);
     ASSERT_EQ(c.count(), n);
-    for (const rastrules::SampleOffset& s : c.positions) EXPECT_EQ(s, (rastrules::SampleOffset{0, 0}));
+    for (const rastrules::SampleOffset& s : c.positions)
+      EXPECT_EQ(s, (rastrules::SampleOffset{0, 0}));
   }
 }
 
@@ -89,10 +91,13 @@ RC_GTEST_PROP(MsaaSamples, MaskBitsEqualTheTriangleRuleAtEachSample, ()) {
   // Mostly a pixel the triangle touches (a vertex's pixel), so that coverage is partial.
   const std::size_t near = *rc::gen::inRange<std::size_t>(0, 4);
   const auto clamp_px = [](std::int64_t raw) {
-    return static_cast<std::int32_t>(std::clamp<std::int64_t>((raw + 256 * 8) / 256 - 8, 0, kSide - 1));
+    return static_cast<std::int32_t>(
+        std::clamp<std::int64_t>((raw + 256 * 8) / 256 - 8, 0, kSide - 1));
   };
-  const std::int32_t px = near < 3 ? clamp_px(t[near][0]) : *mg::full_size(rc::gen::inRange(0, kSide));
-  const std::int32_t py = near < 3 ? clamp_px(t[near][1]) : *mg::full_size(rc::gen::inRange(0, kSide));
+  const std::int32_t px =
+      near < 3 ? clamp_px(t[near][0]) : *mg::full_size(rc::gen::inRange(0, kSide));
+  const std::int32_t py =
+      near < 3 ? clamp_px(t[near][1]) : *mg::full_size(rc::gen::inRange(0, kSide));
   std::array<rastrules::Vec2, 3> kv{};
   for (std::size_t i = 0; i < 3; ++i) {
     kv[i] = rastrules::Vec2{rastrules::Subpixel::from_raw(static_cast<std::int32_t>(t[i][0])),
@@ -105,8 +110,9 @@ RC_GTEST_PROP(MsaaSamples, MaskBitsEqualTheTriangleRuleAtEachSample, ()) {
   RC_ASSERT(got == want);
   for (std::uint32_t k = 0; k < p.count(); ++k) {
     const bool bit = ((got >> k) & 1u) != 0;
-    const bool single = setup.status == rastrules::TriangleStatus::kRasterized &&
-                        rastrules::covers(setup, rastrules::sample_position(px, py, p.kernel.positions[k]));
+    const bool single =
+        setup.status == rastrules::TriangleStatus::kRasterized &&
+        rastrules::covers(setup, rastrules::sample_position(px, py, p.kernel.positions[k]));
     RC_ASSERT(bit == single);
   }
   RC_ASSERT((got & ~rastrules::full_mask(p.count())) == 0u);
@@ -122,7 +128,7 @@ RC_GTEST_PROP(MsaaSamples, OneSampleAtTheCentreEqualsTheSingleSampleResult, ()) 
   s.quads = false;
   s.derivatives = rastrules::DerivativeMode::kNone;
   rastrules::Scene single = mg::to_kernel(s);
-  single.msaa = rastrules::MultisampleState{};  // the default: single-sample rendering
+  single.msaa = rastrules::MultisampleState{}; // the default: single-sample rendering
   const std::vector<Fragment> want = render_ok(single);
   // The same scene through the multisample state with one sample at (0, 0): standard and
   // custom.
@@ -153,7 +159,8 @@ RC_GTEST_PROP(MsaaSamples, OneSampleAtTheCentreEqualsTheSingleSampleResult, ()) 
   if (m != 0) {
     for (const Fragment& f : want) {
       const auto it = std::find(kept.begin(), kept.end(), f.prim);
-      if (it == kept.end()) continue;
+      if (it == kept.end())
+        continue;
       Fragment g = f;
       g.prim = static_cast<std::uint32_t>(it - kept.begin());
       g.mask = m;
@@ -169,9 +176,11 @@ RC_GTEST_PROP(MsaaSamples, OneSampleAtTheCentreEqualsTheSingleSampleResult, ()) 
   os.state = rastrules::gen::to_oracle_state(s.state);
   std::vector<std::uint32_t> index;
   for (std::size_t i = 0; i < s.prims.size(); ++i) {
-    if (s.prims[i].type != rastrules::PrimitiveType::kTriangle) continue;
+    if (s.prims[i].type != rastrules::PrimitiveType::kTriangle)
+      continue;
     rastrules::oracle::FloatTriangle ft{};
-    for (std::size_t j = 0; j < 3; ++j) ft[j] = mg::to_float(s.prims[i].v[j]);
+    for (std::size_t j = 0; j < 3; ++j)
+      ft[j] = mg::to_float(s.prims[i].v[j]);
     os.triangles.push_back(ft);
     index.push_back(static_cast<std::uint32_t>(i));
   }
@@ -190,7 +199,7 @@ RC_GTEST_PROP(MsaaSamples, OneSampleAtTheCentreEqualsTheSingleSampleResult, ()) 
 RC_GTEST_PROP(MsaaSamples, TheSampleMaskOnlyRemovesSamples, ()) {
   const mg::Pattern p = *mg::any_pattern();
   mg::MsScene s = *mg::scene_on(p, 7);
-  s.centroid.reset();  // the centroid depends on the mask on purpose
+  s.centroid.reset(); // the centroid depends on the mask on purpose
   s.quads = false;
   s.derivatives = rastrules::DerivativeMode::kNone;
   const std::uint32_t all = rastrules::full_mask(p.count());
@@ -206,7 +215,8 @@ RC_GTEST_PROP(MsaaSamples, TheSampleMaskOnlyRemovesSamples, ()) {
     RC_ASSERT((f.mask & ~all) == 0u);
     Fragment g = f;
     g.mask = f.mask & t.sample_mask;
-    if (g.mask != 0) expect.push_back(g);
+    if (g.mask != 0)
+      expect.push_back(g);
   }
   RC_ASSERT(sub == expect);
   RC_CLASSIFY(sub.size() < full.size(), "the mask removed whole fragments");
@@ -219,10 +229,11 @@ RC_GTEST_PROP(MsaaSamples, ResolvePixelIsTheExactAverageRoundedHalfToEven, ()) {
       {{3, rc::gen::arbitrary<std::uint8_t>()},
        {1, rc::gen::element<std::uint8_t>(0, 1, 127, 128, 254, 255)}});
   std::vector<rastrules::Rgba8> samples;
-  for (std::size_t i = 0; i < n; ++i) samples.push_back({*value, *value, *value, *value});
+  for (std::size_t i = 0; i < n; ++i)
+    samples.push_back({*value, *value, *value, *value});
   const rastrules::Rgba8 got = rastrules::resolve_pixel(samples);
   const om::Rgba want = om::resolve_pixel(samples);
   RC_ASSERT(got == want);
 }
 
-}  // namespace
+} // namespace

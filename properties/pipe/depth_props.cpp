@@ -43,14 +43,16 @@ RC_GTEST_PROP(PipeDepth, InterpolatedAndStoredWithinTheBound, ()) {
   const kp::Barycentrics b = kp::barycentrics(pg::to_vec2(t), pg::to_vec2(s));
   const op::Bary ob = op::barycentrics(t, s);
   const double zi = kp::interpolate_depth(b, z);
-  const std::string where = "triangle " + pg::rs(t) + ", sample " + pg::rs(s) + ", Z " +
-                            pg::fs(z) + ", range [" + pg::fs(lo) + ", " + pg::fs(hi) + "]";
+  const std::string where = "triangle " + pg::rs(t) + ", sample " + pg::rs(s) + ", Z " + pg::fs(z) +
+                            ", range [" + pg::fs(lo) + ", " + pg::fs(hi) + "]";
   const op::DepthCheck ci = op::check_depth_interp(ob, z, zi);
-  if (!ci.ok) RC_FAIL(where + ": interpolate_depth: " + ci.describe(fname));
+  if (!ci.ok)
+    RC_FAIL(where + ": interpolate_depth: " + ci.describe(fname));
   const kp::DepthValue v = kp::to_depth_format(zi, lo, hi, f);
   op::DepthCheck cs = op::check_depth_stored(ob, z, lo, hi, fname, pg::to_oracle(v));
   cs.got_z = zi;
-  if (!cs.ok) RC_FAIL(where + ": to_depth_format: " + cs.describe(fname));
+  if (!cs.ok)
+    RC_FAIL(where + ": to_depth_format: " + cs.describe(fname));
   if (f == kp::DepthFormat::kD32F) {
     RC_ASSERT(v.f >= lo);
     RC_ASSERT(v.f <= hi);
@@ -72,7 +74,8 @@ rc::Gen<std::pair<float, float>> tie_depths() {
       return std::pair{z, std::nextafter(z, 2.0f)};
     }
     const double scale = *rc::gen::element(65535.0, 16777215.0);
-    const double k = static_cast<double>(*rc::gen::inRange<std::int64_t>(0, static_cast<std::int64_t>(scale)));
+    const double k =
+        static_cast<double>(*rc::gen::inRange<std::int64_t>(0, static_cast<std::int64_t>(scale)));
     const double t = (k + 0.5) / scale;
     const int ulps = *rc::gen::inRange(0, 4);
     float lo = static_cast<float>(t), hi = lo;
@@ -88,7 +91,8 @@ rc::Gen<std::pair<float, float>> tie_depths() {
 RC_GTEST_PROP(PipeDepth, StoredWithinTheBoundAtTies, ()) {
   pg::RawTri t = *pg::full_size(pg::raw_triangle(false));
   for (auto& v : t) {
-    for (auto& c : v) c = std::clamp<std::int64_t>(c / 2 * 2, pg::kRawMin, pg::kRawMax - 1);
+    for (auto& c : v)
+      c = std::clamp<std::int64_t>(c / 2 * 2, pg::kRawMin, pg::kRawMax - 1);
   }
   RC_PRE(pg::twice_area(t) != 0);
   const auto k = static_cast<std::size_t>(*rc::gen::inRange(0, 3));
@@ -106,7 +110,9 @@ RC_GTEST_PROP(PipeDepth, StoredWithinTheBoundAtTies, ()) {
   const kp::DepthValue v = kp::to_depth_format(zi, 0.0f, 1.0f, f);
   op::DepthCheck c = op::check_depth_stored(ob, z, 0.0f, 1.0f, fname, pg::to_oracle(v));
   c.got_z = zi;
-  if (!c.ok) RC_FAIL("triangle " + pg::rs(t) + ", sample " + pg::rs(s) + ", Z " + pg::fs(z) + ": " + c.describe(fname));
+  if (!c.ok)
+    RC_FAIL("triangle " + pg::rs(t) + ", sample " + pg::rs(s) + ", Z " + pg::fs(z) + ": " +
+            c.describe(fname));
   RC_CLASSIFY(!(c.lo == c.hi), "two stored values allowed");
   RC_CLASSIFY(!(c.expected == pg::to_oracle(v)), "one step off the exactly rounded value");
 }
@@ -123,7 +129,8 @@ RC_GTEST_PROP(PipeDepth, Float32DepthsConvertExactly, ()) {
   if (!(pg::to_oracle(got) == want)) {
     RC_FAIL("z " + pg::fs(z) + ", range [" + pg::fs(lo) + ", " + pg::fs(hi) + "], " +
             pg::depth_format_name(f) + ": kernel (" + std::to_string(got.unorm) + ", " +
-            pg::fs(got.f) + "), exact (" + std::to_string(want.unorm) + ", " + pg::fs(want.f) + ")");
+            pg::fs(got.f) + "), exact (" + std::to_string(want.unorm) + ", " + pg::fs(want.f) +
+            ")");
   }
 }
 
@@ -133,9 +140,11 @@ RC_GTEST_PROP(PipeDepth, BiasIsTheSpecFormula, ()) {
   // Sometimes every depth subnormal (where the d32f exponent is at its floor).
   const std::array<float, 3> z = *rc::gen::weightedOneOf<std::array<float, 3>>({
       {5, pg::full_size(pg::depth_triple())},
-      {1, rc::gen::apply([](float a, float b, float c) {
-         return std::array<float, 3>{std::fabs(a), std::fabs(b), std::fabs(c)};
-       }, pg::scaled(-149, -127), pg::scaled(-149, -127), pg::scaled(-149, -127))},
+      {1, rc::gen::apply(
+              [](float a, float b, float c) {
+                return std::array<float, 3>{std::fabs(a), std::fabs(b), std::fabs(c)};
+              },
+              pg::scaled(-149, -127), pg::scaled(-149, -127), pg::scaled(-149, -127))},
   });
   const kp::DepthBias b = *pg::depth_bias_state();
   const int fi = *rc::gen::inRange(0, 4);
@@ -146,12 +155,13 @@ RC_GTEST_PROP(PipeDepth, BiasIsTheSpecFormula, ()) {
   const float want = op::depth_bias(t, z, b.bias, b.slope_scaled, b.clamp, fname);
   if (!pg::same_bits(got, want)) {
     RC_FAIL("triangle " + pg::rs(t) + ", Z " + pg::fs(z) + ", bias " + std::to_string(b.bias) +
-            ", slope_scaled " + pg::fs(b.slope_scaled) + ", clamp " + pg::fs(b.clamp) + ", format '" +
-            fname + "': kernel " + pg::fs(got) + ", oracle " + pg::fs(want));
+            ", slope_scaled " + pg::fs(b.slope_scaled) + ", clamp " + pg::fs(b.clamp) +
+            ", format '" + fname + "': kernel " + pg::fs(got) + ", oracle " + pg::fs(want));
   }
   RC_CLASSIFY(b.slope_scaled != 0.0f, "slope term");
   RC_CLASSIFY(pg::twice_area(t) == 0, "degenerate");
-  RC_CLASSIFY(std::fabs(z[0]) < 0x1p-126f && std::fabs(z[1]) < 0x1p-126f && std::fabs(z[2]) < 0x1p-126f,
+  RC_CLASSIFY(std::fabs(z[0]) < 0x1p-126f && std::fabs(z[1]) < 0x1p-126f &&
+                  std::fabs(z[2]) < 0x1p-126f,
               "subnormal depths");
 }
 
@@ -172,4 +182,4 @@ RC_GTEST_PROP(PipeDepth, TestFollowsTheComparisonTable, ()) {
   RC_CLASSIFY(now == old, "equal values");
 }
 
-}  // namespace
+} // namespace

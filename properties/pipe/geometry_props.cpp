@@ -67,7 +67,8 @@ RC_GTEST_PROP(PipeGeometry, ToWindowIsBitIdenticalToTheSpecFormula, ()) {
   const std::array<float, 4> g{got.x, got.y, got.z, got.w}, o{want.x, want.y, want.z, want.w};
   for (std::size_t i = 0; i < 4; ++i) {
     if (!pg::same_bits(g[i], o[i])) {
-      RC_FAIL("p " + pg::fs(p) + ", " + vps(vp) + ": kernel " + pg::fs(g) + ", oracle " + pg::fs(o));
+      RC_FAIL("p " + pg::fs(p) + ", " + vps(vp) + ": kernel " + pg::fs(g) + ", oracle " +
+              pg::fs(o));
     }
   }
 }
@@ -90,7 +91,8 @@ std::vector<kp::ClipVertex> clip_triangle(std::size_t nattr) {
   for (kp::ClipVertex& v : t) {
     v.pos = *pg::clip_vertex();
     RC_PRE(pg::position_ok(v.pos));
-    for (std::size_t k = 0; k < nattr; ++k) v.attr.push_back(*pg::attr_value());
+    for (std::size_t k = 0; k < nattr; ++k)
+      v.attr.push_back(*pg::attr_value());
   }
   // Sometimes two vertices share coordinates (an edge on a plane, a repeated vertex).
   if (*rc::gen::inRange(0, 6) == 0) {
@@ -102,12 +104,14 @@ std::vector<kp::ClipVertex> clip_triangle(std::size_t nattr) {
 
 std::string show(const std::vector<kp::ClipVertex>& vs) {
   std::string s;
-  for (const auto& v : vs) s += "  pos " + pg::fs(v.pos) + " attr " + pg::fs(v.attr) + "\n";
+  for (const auto& v : vs)
+    s += "  pos " + pg::fs(v.pos) + " attr " + pg::fs(v.attr) + "\n";
   return s;
 }
 std::string show(const std::vector<op::ClipVertex>& vs) {
   std::string s;
-  for (const auto& v : vs) s += "  pos " + pg::fs(v.pos) + " attr " + pg::fs(v.attr) + "\n";
+  for (const auto& v : vs)
+    s += "  pos " + pg::fs(v.pos) + " attr " + pg::fs(v.attr) + "\n";
   return s;
 }
 
@@ -117,19 +121,23 @@ RC_GTEST_PROP(PipeGeometry, ClipperIsBitIdenticalToTheSpecAlgorithm, ()) {
   const std::int32_t w = *rc::gen::inRange(1, 64), h = *rc::gen::inRange(1, 64);
   const kp::Viewport vp = *pg::viewport(w, h);
   const bool depth_clip = *rc::gen::inRange(0, 4) != 0;
-  const std::vector<kp::ClipVertex> t = clip_triangle(static_cast<std::size_t>(*rc::gen::inRange(0, 3)));
+  const std::vector<kp::ClipVertex> t =
+      clip_triangle(static_cast<std::size_t>(*rc::gen::inRange(0, 3)));
   std::vector<kp::Vec4f> pos;
-  for (const auto& v : t) pos.push_back(v.pos);
+  for (const auto& v : t)
+    pos.push_back(v.pos);
   const kp::ClipVolume vol = kp::clip_volume(pos, vp, depth_clip);
   const op::Volume ovol = op::clip_volume(pos, pg::to_oracle(vp), depth_clip);
-  const std::string where = vps(vp) + (depth_clip ? ", depth clip" : ", no depth clip") +
-                            ", triangle\n" + show(t);
+  const std::string where =
+      vps(vp) + (depth_clip ? ", depth clip" : ", no depth clip") + ", triangle\n" + show(t);
   const std::array<double, 5> kv{vol.w_min, vol.gx_lo, vol.gx_hi, vol.gy_lo, vol.gy_hi};
   const std::array<double, 5> ov{ovol.w_min, ovol.gx_lo, ovol.gx_hi, ovol.gy_lo, ovol.gy_hi};
   for (std::size_t i = 0; i < 5; ++i) {
     if (!pg::same_bits(kv[i], ov[i])) {
-      RC_FAIL(where + "clip volume field " + std::to_string(i) + " (w_min, gx_lo, gx_hi, gy_lo, "
-              "gy_hi): kernel " + pg::fs(kv[i]) + ", oracle " + pg::fs(ov[i]));
+      RC_FAIL(where + "clip volume field " + std::to_string(i) +
+              " (w_min, gx_lo, gx_hi, gy_lo, "
+              "gy_hi): kernel " +
+              pg::fs(kv[i]) + ", oracle " + pg::fs(ov[i]));
     }
   }
   RC_ASSERT(vol.depth_clip == depth_clip);
@@ -141,12 +149,14 @@ RC_GTEST_PROP(PipeGeometry, ClipperIsBitIdenticalToTheSpecAlgorithm, ()) {
   const std::vector<op::ClipVertex> want = op::clip_polygon(pg::to_oracle(t), ovol);
   bool same = got.size() == want.size();
   for (std::size_t i = 0; same && i < got.size(); ++i) {
-    for (std::size_t c = 0; c < 4; ++c) same = same && pg::same_bits(got[i].pos[c], want[i].pos[c]);
+    for (std::size_t c = 0; c < 4; ++c)
+      same = same && pg::same_bits(got[i].pos[c], want[i].pos[c]);
     same = same && got[i].attr.size() == want[i].attr.size();
     for (std::size_t a = 0; same && a < got[i].attr.size(); ++a)
       same = same && pg::same_bits(got[i].attr[a], want[i].attr[a]);
   }
-  if (!same) RC_FAIL(where + "kernel clip_polygon:\n" + show(got) + "oracle:\n" + show(want));
+  if (!same)
+    RC_FAIL(where + "kernel clip_polygon:\n" + show(got) + "oracle:\n" + show(want));
   // PIPE.CLIP.GUARD_BAND_SNAP: a clipped vertex lies on the guard band up to the clipper's
   // rounding, which stays well inside the 1023 px margin that keeps it snappable, so the
   // saturation of PIPE.CLIP.SATURATE never has to act (more than 1 px has been seen: regression
@@ -155,12 +165,13 @@ RC_GTEST_PROP(PipeGeometry, ClipperIsBitIdenticalToTheSpecAlgorithm, ()) {
     const kp::WindowVertex wv = kp::to_window(v.pos, vp);
     const double g = kp::kGuardBand + 1023.0;
     if (!(std::fabs(static_cast<double>(wv.x)) <= g && std::fabs(static_cast<double>(wv.y)) <= g))
-      RC_FAIL(where + "clipped vertex " + pg::fs(v.pos) + " lands at window (" + pg::fs(wv.x) + ", " +
-              pg::fs(wv.y) + "), beyond the guard band + 1023 px");
+      RC_FAIL(where + "clipped vertex " + pg::fs(v.pos) + " lands at window (" + pg::fs(wv.x) +
+              ", " + pg::fs(wv.y) + "), beyond the guard band + 1023 px");
   }
-  const bool all_inside = op::inside(ovol, t[0].pos) && op::inside(ovol, t[1].pos) &&
-                          op::inside(ovol, t[2].pos);
-  if (all_inside) RC_ASSERT(got == t);  // PIPE.CLIP.UNCLIPPED
+  const bool all_inside =
+      op::inside(ovol, t[0].pos) && op::inside(ovol, t[1].pos) && op::inside(ovol, t[2].pos);
+  if (all_inside)
+    RC_ASSERT(got == t); // PIPE.CLIP.UNCLIPPED
   RC_CLASSIFY(all_inside, "unclipped");
   RC_CLASSIFY(got.empty(), "clipped away");
   RC_CLASSIFY(!all_inside && !got.empty(), "clipped");
@@ -172,26 +183,30 @@ RC_GTEST_PROP(PipeGeometry, SegmentClipperIsBitIdenticalToTheSpecAlgorithm, ()) 
   const std::int32_t w = *rc::gen::inRange(1, 64), h = *rc::gen::inRange(1, 64);
   const kp::Viewport vp = *pg::viewport(w, h);
   const bool depth_clip = *rc::gen::inRange(0, 4) != 0;
-  const std::vector<kp::ClipVertex> t = clip_triangle(static_cast<std::size_t>(*rc::gen::inRange(0, 3)));
+  const std::vector<kp::ClipVertex> t =
+      clip_triangle(static_cast<std::size_t>(*rc::gen::inRange(0, 3)));
   const kp::ClipVolume vol = kp::clip_volume({t[0].pos, t[1].pos}, vp, depth_clip);
   const op::Volume ovol = op::clip_volume({t[0].pos, t[1].pos}, pg::to_oracle(vp), depth_clip);
   const auto got = kp::clip_segment(t[0], t[1], vol);
-  const auto want = op::clip_segment(op::ClipVertex{t[0].pos, t[0].attr}, op::ClipVertex{t[1].pos, t[1].attr}, ovol);
+  const auto want = op::clip_segment(op::ClipVertex{t[0].pos, t[0].attr},
+                                     op::ClipVertex{t[1].pos, t[1].attr}, ovol);
   const std::string where = vps(vp) + (depth_clip ? ", depth clip" : ", no depth clip") +
                             ", segment\n" + show(std::vector<kp::ClipVertex>{t[0], t[1]});
   if (got.has_value() != want.has_value())
-    RC_FAIL(where + (got ? "kernel keeps it, the oracle discards it" : "kernel discards it, the oracle keeps it"));
+    RC_FAIL(where + (got ? "kernel keeps it, the oracle discards it"
+                         : "kernel discards it, the oracle keeps it"));
   if (got) {
     bool same = true;
     for (std::size_t i = 0; i < 2; ++i) {
-      for (std::size_t c = 0; c < 4; ++c) same = same && pg::same_bits((*got)[i].pos[c], (*want)[i].pos[c]);
+      for (std::size_t c = 0; c < 4; ++c)
+        same = same && pg::same_bits((*got)[i].pos[c], (*want)[i].pos[c]);
       same = same && (*got)[i].attr.size() == (*want)[i].attr.size();
       for (std::size_t a = 0; same && a < (*got)[i].attr.size(); ++a)
         same = pg::same_bits((*got)[i].attr[a], (*want)[i].attr[a]);
     }
     if (!same) {
-      RC_FAIL(where + "kernel:\n" + show(std::vector<kp::ClipVertex>{(*got)[0], (*got)[1]}) + "oracle:\n" +
-              show(std::vector<op::ClipVertex>{(*want)[0], (*want)[1]}));
+      RC_FAIL(where + "kernel:\n" + show(std::vector<kp::ClipVertex>{(*got)[0], (*got)[1]}) +
+              "oracle:\n" + show(std::vector<op::ClipVertex>{(*want)[0], (*want)[1]}));
     }
   }
   RC_CLASSIFY(!got, "discarded");
@@ -203,10 +218,12 @@ rc::Gen<kp::Viewport> any_viewport() {
   return rc::gen::exec([] {
     const auto coord = [] {
       return *rc::gen::weightedOneOf<float>({
-          {3, rc::gen::map(rc::gen::inRange(-40000, 40001), [](int k) { return static_cast<float>(k); })},
-          {2, rc::gen::element(-32768.0f, 32767.0f, std::nextafter(-32768.0f, -1e9f), std::nextafter(32767.0f, 1e9f),
-                               0.0f, -0.0f, 0.5f, 1e-4f)},
-          {1, rc::gen::element(std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+          {3, rc::gen::map(rc::gen::inRange(-40000, 40001),
+                           [](int k) { return static_cast<float>(k); })},
+          {2, rc::gen::element(-32768.0f, 32767.0f, std::nextafter(-32768.0f, -1e9f),
+                               std::nextafter(32767.0f, 1e9f), 0.0f, -0.0f, 0.5f, 1e-4f)},
+          {1, rc::gen::element(std::numeric_limits<float>::quiet_NaN(),
+                               std::numeric_limits<float>::infinity(),
                                -std::numeric_limits<float>::infinity())},
           {1, pg::attr_value()},
       });
@@ -236,8 +253,10 @@ RC_GTEST_PROP(PipeGeometry, ViewportLimitsAreTheSpecRanges, ()) {
   const std::vector<std::string> want = op::viewport_violations(pg::to_oracle(vp));
   if (got.has_value() == want.empty()) {
     std::string fields;
-    for (const auto& f : want) fields += " " + f;
-    RC_FAIL(vps(vp) + ": kernel " + (got ? "rejects it (" + got->first + ": " + got->second + ")" : "accepts it") +
+    for (const auto& f : want)
+      fields += " " + f;
+    RC_FAIL(vps(vp) + ": kernel " +
+            (got ? "rejects it (" + got->first + ": " + got->second + ")" : "accepts it") +
             ", oracle violations:" + (fields.empty() ? " none" : fields));
   }
   if (got && std::find(want.begin(), want.end(), got->first) == want.end())
@@ -257,7 +276,8 @@ rc::Gen<kp::Vec4f> guard_band_vertex() {
       // Mostly just beyond the band; sometimes far: m < 16 = 2^4 and e <= 58 keep |ndc| below
       // 2^62 and |ndc * w| (w <= 3) below the position limit 2^64 (PIPE.INPUT.POSITION; e up
       // to 60 once generated 1.8447307e19 > 2^64, which the kernel rightly rejected).
-      const int e = *rc::gen::inRange(0, 5) == 0 ? *rc::gen::inRange(23, 59) : *rc::gen::inRange(11, 23);
+      const int e =
+          *rc::gen::inRange(0, 5) == 0 ? *rc::gen::inRange(23, 59) : *rc::gen::inRange(11, 23);
       return std::ldexp(m, e) * (*rc::gen::arbitrary<bool>() ? 1.0f : -1.0f);
     };
     const float z = static_cast<float>(*rc::gen::inRange(0, 257)) / 256.0f * w;
@@ -269,7 +289,8 @@ rc::Gen<kp::Vec4f> guard_band_vertex() {
 RC_GTEST_PROP(PipeGeometry, GuardBandClippingKeepsCoverageAwayFromEdges, ()) {
   const std::int32_t w = *rc::gen::inRange(1, 17), h = *rc::gen::inRange(1, 17);
   const kp::Viewport vp = *pg::viewport(w, h);
-  const std::array<kp::Vec4f, 3> tri{*guard_band_vertex(), *guard_band_vertex(), *guard_band_vertex()};
+  const std::array<kp::Vec4f, 3> tri{*guard_band_vertex(), *guard_band_vertex(),
+                                     *guard_band_vertex()};
   kp::PipeScene s;
   s.base.width = w;
   s.base.height = h;
@@ -281,11 +302,12 @@ RC_GTEST_PROP(PipeGeometry, GuardBandClippingKeepsCoverageAwayFromEdges, ()) {
   std::string where = vps(vp) + ", target " + std::to_string(w) + "x" + std::to_string(h) +
                       ", clip-space triangle " + pg::fs(tri[0]) + " " + pg::fs(tri[1]) + " " +
                       pg::fs(tri[2]);
-  if (const auto* e = std::get_if<rastrules::SceneError>(&res)) RC_FAIL(where + ": " + e->what());
+  if (const auto* e = std::get_if<rastrules::SceneError>(&res))
+    RC_FAIL(where + ": " + e->what());
   const kp::PipeResult& r = std::get<kp::PipeResult>(res);
   std::map<std::pair<std::int32_t, std::int32_t>, int> count;
   bool clipped = false;
-  RC_ASSERT(r.data.size() == r.fragments.size());  // clip-space input: data for every fragment
+  RC_ASSERT(r.data.size() == r.fragments.size()); // clip-space input: data for every fragment
   for (std::size_t i = 0; i < r.fragments.size(); ++i) {
     ++count[{r.fragments[i].x, r.fragments[i].y}];
     clipped = clipped || r.data[i].part.has_value();
@@ -296,14 +318,16 @@ RC_GTEST_PROP(PipeGeometry, GuardBandClippingKeepsCoverageAwayFromEdges, ()) {
   for (std::int32_t y = 0; y < h; ++y) {
     for (std::int32_t x = 0; x < w; ++x) {
       const int n = count.count({x, y}) ? count.at({x, y}) : 0;
-      if (n > 1) RC_FAIL(where + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                         ") covered " + std::to_string(n) + " times by the fan");
+      if (n > 1)
+        RC_FAIL(where + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") covered " +
+                std::to_string(n) + " times by the fan");
       const bool in_scissor = x >= sc.x0 && x < sc.x1 && y >= sc.y0 && y < sc.y1;
       if (!in_scissor) {
         RC_ASSERT(n == 0);
         continue;
       }
-      const auto side = exact.classify({256 * std::int64_t{x} + 128, 256 * std::int64_t{y} + 128}, 4);
+      const auto side =
+          exact.classify({256 * std::int64_t{x} + 128, 256 * std::int64_t{y} + 128}, 4);
       if (side == op::ExactRegion::Side::kNear) {
         ++near;
         continue;
@@ -311,7 +335,8 @@ RC_GTEST_PROP(PipeGeometry, GuardBandClippingKeepsCoverageAwayFromEdges, ()) {
       const bool want = side == op::ExactRegion::Side::kInside;
       if (want != (n == 1)) {
         std::string verts;
-        for (const auto& v : exact.vertices_px()) verts += " (" + pg::fs(v[0]) + ", " + pg::fs(v[1]) + ")";
+        for (const auto& v : exact.vertices_px())
+          verts += " (" + pg::fs(v[0]) + ", " + pg::fs(v[1]) + ")";
         RC_FAIL(where + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") " +
                 (want ? "inside" : "outside") + " the exact unclipped triangle" + verts +
                 " (farther than 1/64 px from its edges) but covered " + std::to_string(n) +
@@ -324,4 +349,4 @@ RC_GTEST_PROP(PipeGeometry, GuardBandClippingKeepsCoverageAwayFromEdges, ()) {
   RC_CLASSIFY(near > 0, "pixel centres within 1/64 px of an edge");
 }
 
-}  // namespace
+} // namespace

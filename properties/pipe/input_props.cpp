@@ -39,7 +39,8 @@ kp::PipeScene valid_scene(std::size_t nattr) {
   kp::PipeScene s;
   s.base.width = 8;
   s.base.height = 8;
-  for (std::size_t k = 0; k < nattr; ++k) s.attributes.push_back(kp::AttributeDecl{"a" + std::to_string(k), {}, {}});
+  for (std::size_t k = 0; k < nattr; ++k)
+    s.attributes.push_back(kp::AttributeDecl{"a" + std::to_string(k), {}, {}});
   const int n = *rc::gen::inRange(1, 4);
   for (int i = 0; i < n; ++i) {
     kp::PipePrimitive p;
@@ -49,7 +50,8 @@ kp::PipeScene valid_scene(std::size_t nattr) {
     } else {
       p.base.v = {FloatPoint{1.0f, 1.0f}, FloatPoint{6.0f, 1.0f}, FloatPoint{3.0f, 6.0f}};
     }
-    for (int j = 0; j < 3 && nattr > 0; ++j) p.attr.push_back(std::vector<float>(nattr, 0.25f));
+    for (int j = 0; j < 3 && nattr > 0; ++j)
+      p.attr.push_back(std::vector<float>(nattr, 0.25f));
     s.primitives.push_back(p);
   }
   return s;
@@ -63,49 +65,56 @@ bool names(const rastrules::SceneError& e, const std::string& prefix, const std:
 RC_GTEST_PROP(PipeInput, OneBadValueIsRejectedByName, ()) {
   const std::size_t nattr = static_cast<std::size_t>(*rc::gen::inRange(0, 3));
   kp::PipeScene s = valid_scene(nattr);
-  const std::size_t i = static_cast<std::size_t>(*rc::gen::inRange<std::size_t>(0, s.primitives.size()));
+  const std::size_t i =
+      static_cast<std::size_t>(*rc::gen::inRange<std::size_t>(0, s.primitives.size()));
   const std::size_t j = static_cast<std::size_t>(*rc::gen::inRange(0, 3));
   kp::PipePrimitive& p = s.primitives[i];
   const std::string prim = "primitives[" + std::to_string(i) + "]";
   const float huge = std::nextafter(kTwo64, std::numeric_limits<float>::infinity());
-  const float bad = *rc::gen::element(std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+  const float bad = *rc::gen::element(std::numeric_limits<float>::quiet_NaN(),
+                                      std::numeric_limits<float>::infinity(),
                                       -std::numeric_limits<float>::infinity(), huge, -huge);
   const int where = *rc::gen::inRange(0, 5);
   std::string expect_prefix = prim, expect_part, planted;
   bool expect_error = true;
-  if (where == 0 && !p.pos.empty()) {  // a position
-    const float v = *rc::gen::inRange(0, 4) == 0 ? kTwo64 : bad;  // 2^64 itself is allowed
+  if (where == 0 && !p.pos.empty()) {                            // a position
+    const float v = *rc::gen::inRange(0, 4) == 0 ? kTwo64 : bad; // 2^64 itself is allowed
     p.pos[j][static_cast<std::size_t>(*rc::gen::inRange(0, 4))] = v;
     expect_error = v != kTwo64;
     expect_part = ".pos[" + std::to_string(j) + "]";
     planted = expect_error ? "position" : "position 2^64";
-  } else if (where == 1 && nattr > 0) {  // an attribute
+  } else if (where == 1 && nattr > 0) { // an attribute
     p.attr[j][static_cast<std::size_t>(*rc::gen::inRange<std::size_t>(0, nattr))] =
-        *rc::gen::element(std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+        *rc::gen::element(std::numeric_limits<float>::quiet_NaN(),
+                          std::numeric_limits<float>::infinity(),
                           -std::numeric_limits<float>::infinity());
     expect_part = ".attr[" + std::to_string(j) + "]";
     planted = "attribute";
-  } else if (where == 2 && !p.pos.empty()) {  // a transform that overflows 2^64
+  } else if (where == 2 && !p.pos.empty()) { // a transform that overflows 2^64
     kp::Mat4f m{};
-    for (std::size_t r = 0; r < 4; ++r) m[5 * r] = 1.0f;
+    for (std::size_t r = 0; r < 4; ++r)
+      m[5 * r] = 1.0f;
     m[0] = std::ldexp(1.0f, 70);
     s.model = m;
     p.pos[j][0] = 1.0f;
     // Every primitive with positions overflows (x = +-0.5 or 1): the first one is named.
     for (std::size_t q = i + 1; q-- > 0;) {
-      if (!s.primitives[q].pos.empty()) expect_prefix = "primitives[" + std::to_string(q) + "]";
+      if (!s.primitives[q].pos.empty())
+        expect_prefix = "primitives[" + std::to_string(q) + "]";
     }
     expect_part = ".pos[";
     planted = "transform overflow";
-  } else if (where == 3) {  // a matrix entry that is not finite
+  } else if (where == 3) { // a matrix entry that is not finite
     kp::Mat4f m{};
-    for (std::size_t r = 0; r < 4; ++r) m[5 * r] = 1.0f;
-    m[static_cast<std::size_t>(*rc::gen::inRange(0, 16))] = bad == huge || bad == -huge ? std::numeric_limits<float>::quiet_NaN() : bad;
+    for (std::size_t r = 0; r < 4; ++r)
+      m[5 * r] = 1.0f;
+    m[static_cast<std::size_t>(*rc::gen::inRange(0, 16))] =
+        bad == huge || bad == -huge ? std::numeric_limits<float>::quiet_NaN() : bad;
     s.projection = m;
     expect_prefix = "transform.projection";
     expect_part = "";
     planted = "matrix entry";
-  } else if (p.pos.empty()) {  // a window-space vertex that does not snap
+  } else if (p.pos.empty()) { // a window-space vertex that does not snap
     p.base.v[j][static_cast<std::size_t>(*rc::gen::inRange(0, 2))] =
         *rc::gen::element(std::numeric_limits<float>::quiet_NaN(), 40000.0f, -1e30f);
     expect_part = ".v[" + std::to_string(j) + "]";
@@ -117,14 +126,18 @@ RC_GTEST_PROP(PipeInput, OneBadValueIsRejectedByName, ()) {
   const auto r = kp::run_pipeline(s);
   const std::string scene = ps::show(s);
   if (!expect_error) {
-    if (const auto* e = std::get_if<rastrules::SceneError>(&r)) RC_FAIL("rejected a valid scene: " + e->what() + "\n" + scene);
+    if (const auto* e = std::get_if<rastrules::SceneError>(&r))
+      RC_FAIL("rejected a valid scene: " + e->what() + "\n" + scene);
     RC_TAG(planted);
     return;
   }
   const auto* e = std::get_if<rastrules::SceneError>(&r);
-  if (!e) RC_FAIL("accepted a scene with a bad value (expected " + expect_prefix + expect_part + ")\n" + scene);
+  if (!e)
+    RC_FAIL("accepted a scene with a bad value (expected " + expect_prefix + expect_part + ")\n" +
+            scene);
   if (!names(*e, expect_prefix, expect_part))
-    RC_FAIL("the error names " + e->field + " (" + e->message + "), expected " + expect_prefix + "..." + expect_part + "\n" + scene);
+    RC_FAIL("the error names " + e->field + " (" + e->message + "), expected " + expect_prefix +
+            "..." + expect_part + "\n" + scene);
   if (planted == "transform overflow" && e->message.find("transform") == std::string::npos)
     RC_FAIL("an overflowing transform is not said to be one: " + e->what());
   RC_TAG(planted);
@@ -141,9 +154,10 @@ rc::Gen<kp::PipeScene> coverage_only_scene() {
     const int n = *rc::gen::inRange(1, 5);
     for (int i = 0; i < n; ++i) {
       kp::PipePrimitive p;
-      const rastrules::gen::GenTriangle t = *rastrules::gen::triangle_near(s.base.width, s.base.height);
-      p.base.type = *rc::gen::element(PrimitiveType::kTriangle, PrimitiveType::kTriangle, PrimitiveType::kPoint,
-                                      PrimitiveType::kLine);
+      const rastrules::gen::GenTriangle t =
+          *rastrules::gen::triangle_near(s.base.width, s.base.height);
+      p.base.type = *rc::gen::element(PrimitiveType::kTriangle, PrimitiveType::kTriangle,
+                                      PrimitiveType::kPoint, PrimitiveType::kLine);
       const std::size_t nv = rastrules::required_vertex_count(p.base.type);
       p.base.v.assign(t.v.begin(), t.v.begin() + static_cast<std::ptrdiff_t>(nv));
       s.primitives.push_back(p);
@@ -155,15 +169,19 @@ rc::Gen<kp::PipeScene> coverage_only_scene() {
 // rule: PIPE.EFFECTS.ON_DEMAND
 RC_GTEST_PROP(PipeInput, CoverageOnlyScenesAreTheCoverageKernel, ()) {
   const kp::PipeScene s = *coverage_only_scene();
-  const auto r = kp::run_pipeline(s, *rc::gen::element(kp::PipeOptions{}, kp::PipeOptions::plain()));
+  const auto r =
+      kp::run_pipeline(s, *rc::gen::element(kp::PipeOptions{}, kp::PipeOptions::plain()));
   rastrules::Scene ws = s.base;
-  for (const kp::PipePrimitive& p : s.primitives) ws.primitives.push_back(p.base);
+  for (const kp::PipePrimitive& p : s.primitives)
+    ws.primitives.push_back(p.base);
   const auto want = rastrules::render(ws);
   if (std::holds_alternative<rastrules::SceneError>(want)) {
-    RC_ASSERT(std::holds_alternative<rastrules::SceneError>(r));  // both reject (a point out of range, ...)
+    RC_ASSERT(std::holds_alternative<rastrules::SceneError>(
+        r)); // both reject (a point out of range, ...)
     return;
   }
-  if (const auto* e = std::get_if<rastrules::SceneError>(&r)) RC_FAIL("rejected: " + e->what() + "\n" + ps::show(s));
+  if (const auto* e = std::get_if<rastrules::SceneError>(&r))
+    RC_FAIL("rejected: " + e->what() + "\n" + ps::show(s));
   const kp::PipeResult& got = std::get<kp::PipeResult>(r);
   RC_ASSERT(got.effects.coverage_only());
   RC_ASSERT(got.data.empty());
@@ -172,4 +190,4 @@ RC_GTEST_PROP(PipeInput, CoverageOnlyScenesAreTheCoverageKernel, ()) {
     RC_FAIL("fragments differ from rastrules::render\n" + ps::show(s));
 }
 
-}  // namespace
+} // namespace

@@ -32,12 +32,12 @@ RC_GTEST_PROP(PipeBary, EqualTheExactEdgeValuesAndSumToTheArea, ()) {
   const kp::Barycentrics k = kp::barycentrics(pg::to_vec2(t), pg::to_vec2(s));
   const op::Bary o = op::barycentrics(t, s);
   const std::string where = "triangle " + pg::rs(t) + ", sample " + pg::rs(s);
-  RC_ASSERT_FALSE(o.e[0] + o.e[1] + o.e[2] != o.area);  // the oracle's own identity
+  RC_ASSERT_FALSE(o.e[0] + o.e[1] + o.e[2] != o.area); // the oracle's own identity
   if (pg::to_oracle(k) != o) {
     RC_FAIL(where + ": kernel e = (" + std::to_string(k.e[0]) + ", " + std::to_string(k.e[1]) +
             ", " + std::to_string(k.e[2]) + ") area " + std::to_string(k.area) + ", oracle e = (" +
-            std::to_string(o.e[0]) + ", " + std::to_string(o.e[1]) + ", " +
-            std::to_string(o.e[2]) + ") area " + std::to_string(o.area));
+            std::to_string(o.e[0]) + ", " + std::to_string(o.e[1]) + ", " + std::to_string(o.e[2]) +
+            ") area " + std::to_string(o.area));
   }
   RC_ASSERT(k.e[0] + k.e[1] + k.e[2] == k.area);
   RC_CLASSIFY(o.area == 0, "degenerate");
@@ -97,7 +97,8 @@ RC_GTEST_PROP(PipeInterp, InsideTheTriangleWithinTheVertexValues, ()) {
     s = {(s[0] + c[0]) / 2, (s[1] + c[1]) / 2};
     ob = op::barycentrics(t, s);
   }
-  if (!op::inside_closed(ob)) s = t[0];
+  if (!op::inside_closed(ob))
+    s = t[0];
   ob = op::barycentrics(t, s);
   RC_ASSERT(op::inside_closed(ob));
   const std::array<float, 3> a = *pg::full_size(pg::attr_triple());
@@ -106,11 +107,13 @@ RC_GTEST_PROP(PipeInterp, InsideTheTriangleWithinTheVertexValues, ()) {
   const op::InterpCheck cp =
       op::check_perspective(ob, a, w, a[0], kp::interpolate_perspective(b, a, w, a[0]));
   const op::InterpCheck cl = op::check_linear(ob, a, kp::interpolate_linear(b, a));
-  const std::string where = "triangle " + pg::rs(t) + ", sample " + pg::rs(s) + ", a " +
-                            pg::fs(a) + ", w " + pg::fs(w);
-  if (!cp.ok || cp.horizon) RC_FAIL(where + ": perspective: " + cp.describe());
-  if (!cl.ok) RC_FAIL(where + ": linear: " + cl.describe());
+  const std::string where =
+      "triangle " + pg::rs(t) + ", sample " + pg::rs(s) + ", a " + pg::fs(a) + ", w " + pg::fs(w);
+  if (!cp.ok || cp.horizon)
+    RC_FAIL(where + ": perspective: " + cp.describe());
+  if (!cl.ok)
+    RC_FAIL(where + ": linear: " + cl.describe());
   RC_CLASSIFY(cp.near_horizon, "near the horizon (inside: a sliver)");
 }
 
-}  // namespace
+} // namespace

@@ -29,8 +29,10 @@ rc::Gen<std::pair<float, float>> float_pair() {
     const float a = *rc::gen::oneOf(pg::any_finite(), pg::attr_value(), pg::scaled(-149, -100));
     const int kind = *rc::gen::inRange(0, 3);
     float b = *pg::any_finite();
-    if (kind == 1) b = -std::nextafter(a, *rc::gen::element(0.0f, 1e30f, -1e30f));
-    if (kind == 2) b = *pg::attr_value();
+    if (kind == 1)
+      b = -std::nextafter(a, *rc::gen::element(0.0f, 1e30f, -1e30f));
+    if (kind == 2)
+      b = *pg::attr_value();
     return std::pair{a, b};
   });
 }
@@ -38,7 +40,8 @@ rc::Gen<std::pair<float, float>> float_pair() {
 rc::Gen<double> any_double() {
   return rc::gen::map(rc::gen::arbitrary<std::uint64_t>(), [](std::uint64_t b) {
     double d = std::bit_cast<double>(b);
-    if (!std::isfinite(d)) d = std::copysign(std::numeric_limits<double>::max(), d);
+    if (!std::isfinite(d))
+      d = std::copysign(std::numeric_limits<double>::max(), d);
     return d;
   });
 }
@@ -46,7 +49,7 @@ rc::Gen<double> any_double() {
 // rule: PIPE.TRANSFORM.FLOAT32
 RC_GTEST_PROP(PipeOracle, Float32RoundingEqualsTheHardware, ()) {
   const auto [a, b] = *float_pair();
-  volatile float va = a, vb = b;  // one operation each, no contraction
+  volatile float va = a, vb = b; // one operation each, no contraction
   const float m = va * vb, s = va + vb;
   RC_ASSERT(pg::same_bits(op::fl32_mul(a, b), m));
   RC_ASSERT(pg::same_bits(op::fl32_add(a, b), s));
@@ -58,11 +61,14 @@ RC_GTEST_PROP(PipeOracle, Float32RoundingEqualsTheHardware, ()) {
 
 // rule: PIPE.CLIP.COMPUTE
 RC_GTEST_PROP(PipeOracle, Float64RoundingEqualsTheHardware, ()) {
-  const double a = *rc::gen::oneOf(any_double(), rc::gen::map(pg::attr_value(), [](float f) { return static_cast<double>(f); }));
+  const double a = *rc::gen::oneOf(
+      any_double(), rc::gen::map(pg::attr_value(), [](float f) { return static_cast<double>(f); }));
   const int kind = *rc::gen::inRange(0, 3);
   double b = *any_double();
-  if (kind == 1) b = -std::nextafter(a, 0.0);
-  if (kind == 2) b = static_cast<double>(*pg::attr_value());
+  if (kind == 1)
+    b = -std::nextafter(a, 0.0);
+  if (kind == 2)
+    b = static_cast<double>(*pg::attr_value());
   volatile double va = a, vb = b;
   const double m = va * vb, s = va + vb;
   RC_ASSERT(pg::same_bits(op::fl64_mul(a, b), m));
@@ -81,8 +87,9 @@ RC_GTEST_PROP(PipeOracle, Ulp32IsTheFloatSpacing, ()) {
   const float f = std::fabs(*pg::any_finite());
   RC_PRE(f < std::numeric_limits<float>::max());
   const double u = op::ulp32(static_cast<double>(f));
-  const double next = static_cast<double>(std::nextafter(f, std::numeric_limits<float>::infinity()));
+  const double next =
+      static_cast<double>(std::nextafter(f, std::numeric_limits<float>::infinity()));
   RC_ASSERT(u == next - static_cast<double>(f));
 }
 
-}  // namespace
+} // namespace

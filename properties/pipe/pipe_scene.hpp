@@ -48,17 +48,23 @@ using Raw2 = op::Raw2;
 
 inline std::string interpolation_name(kp::Interpolation i) {
   switch (i) {
-  case kp::Interpolation::kPerspective: return "perspective";
-  case kp::Interpolation::kLinear: return "linear";
-  case kp::Interpolation::kFlat: return "flat";
+  case kp::Interpolation::kPerspective:
+    return "perspective";
+  case kp::Interpolation::kLinear:
+    return "linear";
+  case kp::Interpolation::kFlat:
+    return "flat";
   }
   return "?";
 }
 inline std::string location_name(kp::Location l) {
   switch (l) {
-  case kp::Location::kCenter: return "center";
-  case kp::Location::kCentroid: return "centroid";
-  case kp::Location::kSample: return "sample";
+  case kp::Location::kCenter:
+    return "center";
+  case kp::Location::kCentroid:
+    return "centroid";
+  case kp::Location::kSample:
+    return "sample";
   }
   return "?";
 }
@@ -82,7 +88,8 @@ inline void show(const kp::PipeScene& s, std::ostream& os) {
     os << "\n";
   }
   const auto mat = [&](const char* name, const std::optional<kp::Mat4f>& m) {
-    if (m) os << "  " << name << " " << pg::fs(*m) << "\n";
+    if (m)
+      os << "  " << name << " " << pg::fs(*m) << "\n";
   };
   mat("model", s.model);
   mat("view", s.view);
@@ -100,13 +107,18 @@ inline void show(const kp::PipeScene& s, std::ostream& os) {
     const kp::PipePrimitive& p = s.primitives[i];
     os << "  prim " << i << " " << to_string(p.base.type) << (p.base.aa ? " aa" : "") << ":";
     if (!p.pos.empty()) {
-      for (const kp::Vec4f& v : p.pos) os << " pos " << pg::fs(v);
+      for (const kp::Vec4f& v : p.pos)
+        os << " pos " << pg::fs(v);
     } else {
-      for (const FloatPoint& v : p.base.v) os << " v " << pg::fs(v);
-      if (!p.z.empty()) os << " z " << pg::fs(p.z);
-      if (!p.w.empty()) os << " w " << pg::fs(p.w);
+      for (const FloatPoint& v : p.base.v)
+        os << " v " << pg::fs(v);
+      if (!p.z.empty())
+        os << " z " << pg::fs(p.z);
+      if (!p.w.empty())
+        os << " w " << pg::fs(p.w);
     }
-    for (const auto& a : p.attr) os << " attr " << pg::fs(a);
+    for (const auto& a : p.attr)
+      os << " attr " << pg::fs(a);
     os << "\n";
   }
 }
@@ -120,32 +132,33 @@ inline std::string show(const kp::PipeScene& s) {
 // The oracle's geometry of a primitive
 
 inline op::Viewport viewport_of(const kp::PipeScene& s) {
-  if (s.viewport) return pg::to_oracle(*s.viewport);
-  return op::Viewport{0.0f, 0.0f, static_cast<float>(s.base.width),
-                      static_cast<float>(s.base.height), 0.0f, 1.0f};
+  if (s.viewport)
+    return pg::to_oracle(*s.viewport);
+  return op::Viewport{
+      0.0f, 0.0f, static_cast<float>(s.base.width), static_cast<float>(s.base.height), 0.0f, 1.0f};
 }
 
 // One fan triangle (or the unclipped triangle) in window space.
 struct Part {
   std::array<op::WindowVertex, 3> wv{};
   std::array<Raw2, 3> raw{};
-  std::array<std::vector<float>, 3> attr;  // per vertex, one per attribute
+  std::array<std::vector<float>, 3> attr; // per vertex, one per attribute
 };
 
 // One segment of a line or line strip (a point: both ends its vertex) in window space.
 struct Seg {
   std::array<op::WindowVertex, 2> wv{};
   std::array<Raw2, 2> raw{};
-  std::array<std::vector<float>, 2> attr;  // per end, one per attribute
-  std::vector<float> flat;                 // per attribute: the segment's provoking vertex
+  std::array<std::vector<float>, 2> attr; // per end, one per attribute
+  std::vector<float> flat;                // per attribute: the segment's provoking vertex
 };
 
 struct PrimGeometry {
-  bool transform_error = false;  // a clip-space position beyond the limit after the transform
+  bool transform_error = false; // a clip-space position beyond the limit after the transform
   bool clipped = false;
   std::vector<Part> parts;
-  std::vector<float> flat;  // per attribute
-  std::string problem;      // a window vertex that does not snap (the guard band's promise)
+  std::vector<float> flat; // per attribute
+  std::string problem;     // a window vertex that does not snap (the guard band's promise)
   // A clip-space point or line: its window vertices after clipping (empty: discarded).
   std::vector<op::WindowVertex> other;
   // Points, lines and strips: one entry per segment (a point or line: one), empty where the
@@ -158,7 +171,8 @@ struct PrimGeometry {
 // (a point is a segment whose ends are its vertex), a zero-length line's (0, 0, 0) / 0.
 // rule: PIPE.BARY.LINE
 inline op::Bary line_bary(const std::array<Raw2, 2>& v, const Raw2& s, bool point) {
-  if (point) return op::Bary{{1, 0, 0}, 1};
+  if (point)
+    return op::Bary{{1, 0, 0}, 1};
   const std::int64_t dx = v[1][0] - v[0][0], dy = v[1][1] - v[0][1];
   const std::int64_t den = dx * dx + dy * dy;
   const std::int64_t num = (s[0] - v[0][0]) * dx + (s[1] - v[0][1]) * dy;
@@ -167,7 +181,8 @@ inline op::Bary line_bary(const std::array<Raw2, 2>& v, const Raw2& s, bool poin
 
 inline std::optional<Raw2> snap2(float x, float y) {
   const auto rx = oracle::snap(x), ry = oracle::snap(y);
-  if (!rx || !ry) return std::nullopt;
+  if (!rx || !ry)
+    return std::nullopt;
   return Raw2{*rx, *ry};
 }
 
@@ -184,7 +199,8 @@ inline void add_segment(PrimGeometry& g, const kp::PipeScene& s, std::size_t pri
   Seg seg;
   seg.wv = wv;
   seg.attr = attr;
-  for (std::size_t a = 0; a < s.attributes.size(); ++a) seg.flat.push_back(p.attr.at(provoking).at(a));
+  for (std::size_t a = 0; a < s.attributes.size(); ++a)
+    seg.flat.push_back(p.attr.at(provoking).at(a));
   for (std::size_t i = 0; i < 2; ++i) {
     const auto r = snap2(wv[i].x, wv[i].y);
     if (!r) {
@@ -205,8 +221,10 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
   const std::size_t nattr = s.attributes.size();
   for (std::size_t k = 0; k < nattr; ++k) {
     std::vector<float> values;
-    for (std::size_t j = 0; j < nv; ++j) values.push_back(p.attr.at(j).at(k));
-    g.flat.push_back(op::flat_value(values, s.provoking == kp::Provoking::kFirst ? "first" : "last"));
+    for (std::size_t j = 0; j < nv; ++j)
+      values.push_back(p.attr.at(j).at(k));
+    g.flat.push_back(
+        op::flat_value(values, s.provoking == kp::Provoking::kFirst ? "first" : "last"));
   }
   const auto vertex_attr = [&](std::size_t j) {
     return nattr == 0 ? std::vector<float>{} : p.attr.at(j);
@@ -228,14 +246,19 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
     std::vector<op::Vec4> pos;
     for (std::size_t j = 0; j < nv; ++j) {
       op::Vec4 c = p.pos[j];
-      if (s.model) c = op::transform(*s.model, c);
-      if (s.view) c = op::transform(*s.view, c);
-      if (s.projection) c = op::transform(*s.projection, c);
-      if (!pg::position_ok(c)) g.transform_error = true;
+      if (s.model)
+        c = op::transform(*s.model, c);
+      if (s.view)
+        c = op::transform(*s.view, c);
+      if (s.projection)
+        c = op::transform(*s.projection, c);
+      if (!pg::position_ok(c))
+        g.transform_error = true;
       cv.push_back(op::ClipVertex{c, vertex_attr(j)});
       pos.push_back(c);
     }
-    if (g.transform_error) return g;
+    if (g.transform_error)
+      return g;
     const bool depth_clip = !s.depth || s.depth->clip;
     const op::Volume vol = op::clip_volume(pos, vp, depth_clip);
     // PIPE.CLIP.SATURATE: clip-space window positions are clamped to the snap range.
@@ -257,27 +280,32 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
       return g;
     }
     if (p.base.type == PrimitiveType::kLine || p.base.type == PrimitiveType::kLineStrip) {
-      const bool all_in = std::all_of(pos.begin(), pos.end(), [&](const op::Vec4& c) { return op::inside(vol, c); });
+      const bool all_in = std::all_of(pos.begin(), pos.end(),
+                                      [&](const op::Vec4& c) { return op::inside(vol, c); });
       g.clipped = !all_in;
       for (std::size_t k = 0; k + 1 < nv; ++k) {
         if (all_in) {
-          add_segment(g, s, prim, {window(pos[k]), window(pos[k + 1])}, {cv[k].attr, cv[k + 1].attr}, k);
+          add_segment(g, s, prim, {window(pos[k]), window(pos[k + 1])},
+                      {cv[k].attr, cv[k + 1].attr}, k);
         } else if (const auto seg = op::clip_segment(cv[k], cv[k + 1], vol)) {
           add_segment(g, s, prim, {window((*seg)[0].pos), window((*seg)[1].pos)},
                       {(*seg)[0].attr, (*seg)[1].attr}, k);
         } else {
           g.segs.emplace_back();
         }
-        if (!g.problem.empty()) return g;
+        if (!g.problem.empty())
+          return g;
       }
-      if (p.base.type == PrimitiveType::kLine && g.segs[0]) g.other = {g.segs[0]->wv[0], g.segs[0]->wv[1]};
+      if (p.base.type == PrimitiveType::kLine && g.segs[0])
+        g.other = {g.segs[0]->wv[0], g.segs[0]->wv[1]};
       // A line inside the volume is not clipped (no part), like an unclipped strip.
       return g;
     }
     const std::vector<op::ClipVertex> poly = op::clip_polygon(cv, vol);
     bool same = poly.size() == cv.size();
     for (std::size_t j = 0; same && j < poly.size(); ++j) {
-      for (std::size_t c = 0; c < 4; ++c) same = same && pg::same_bits(poly[j].pos[c], cv[j].pos[c]);
+      for (std::size_t c = 0; c < 4; ++c)
+        same = same && pg::same_bits(poly[j].pos[c], cv[j].pos[c]);
     }
     g.clipped = !same;
     for (const op::ClipVertex& c : poly) {
@@ -290,7 +318,8 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
     for (std::size_t k = 0; k == 0 || k + 1 < nv; ++k) {
       const std::size_t k1 = std::min(k + 1, nv - 1);
       add_segment(g, s, prim, {wv[k], wv[k1]}, {attrs[k], attrs[k1]}, k);
-      if (!g.problem.empty()) return g;
+      if (!g.problem.empty())
+        return g;
     }
     return g;
   }
@@ -311,10 +340,11 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
     // PIPE.DEPTH.BIAS: each fan triangle from its own snapped vertices and depths.
     if (s.depth && (s.depth->bias.bias != 0 || s.depth->bias.slope_scaled != 0.0f)) {
       const kp::DepthBias& b = s.depth->bias;
-      const float bias = op::depth_bias(part.raw, {part.wv[0].z, part.wv[1].z, part.wv[2].z},
-                                        b.bias, b.slope_scaled, b.clamp,
-                                        pg::depth_format_name(s.depth->format));
-      for (op::WindowVertex& v : part.wv) v.z = op::sat32(op::fl32_add(v.z, bias));
+      const float bias =
+          op::depth_bias(part.raw, {part.wv[0].z, part.wv[1].z, part.wv[2].z}, b.bias,
+                         b.slope_scaled, b.clamp, pg::depth_format_name(s.depth->format));
+      for (op::WindowVertex& v : part.wv)
+        v.z = op::sat32(op::fl32_add(v.z, bias));
     }
     g.parts.push_back(part);
   }
@@ -347,14 +377,22 @@ inline bool some_value_fails(const std::string& func, const op::Stored& lo, cons
     return d32f ? a.f < b.f : a.unorm < b.unorm;
   };
   const auto eq = [&](const op::Stored& a, const op::Stored& b) { return !lt(a, b) && !lt(b, a); };
-  if (func == "never") return true;
-  if (func == "always") return false;
-  if (func == "less") return !lt(hi, old);              // some v >= old
-  if (func == "less_equal") return lt(old, hi);         // some v > old
-  if (func == "greater") return !lt(old, lo);           // some v <= old
-  if (func == "greater_equal") return lt(lo, old);      // some v < old
-  if (func == "equal") return !(eq(lo, old) && eq(hi, old));
-  if (func == "not_equal") return !lt(old, lo) && !lt(hi, old);  // old in [lo, hi]
+  if (func == "never")
+    return true;
+  if (func == "always")
+    return false;
+  if (func == "less")
+    return !lt(hi, old); // some v >= old
+  if (func == "less_equal")
+    return lt(old, hi); // some v > old
+  if (func == "greater")
+    return !lt(old, lo); // some v <= old
+  if (func == "greater_equal")
+    return lt(lo, old); // some v < old
+  if (func == "equal")
+    return !(eq(lo, old) && eq(hi, old));
+  if (func == "not_equal")
+    return !lt(old, lo) && !lt(hi, old); // old in [lo, hi]
   return false;
 }
 
@@ -391,14 +429,16 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
   std::vector<PrimGeometry> geo;
   for (std::size_t i = 0; i < s.primitives.size(); ++i) {
     geo.push_back(geometry(s, i));
-    if (!geo.back().problem.empty()) return geo.back().problem;
-    if (geo.back().clipped) ++st.clipped_prims;
+    if (!geo.back().problem.empty())
+      return geo.back().problem;
+    if (geo.back().clipped)
+      ++st.clipped_prims;
   }
-  const bool first_attr_centroid = !s.attributes.empty() &&
-                                   s.attributes[0].location == kp::Location::kCentroid;
+  const bool first_attr_centroid =
+      !s.attributes.empty() && s.attributes[0].location == kp::Location::kCentroid;
   (void)first_attr_centroid;
-  std::tuple<std::uint32_t, std::int64_t, std::int32_t, std::int32_t, std::int64_t, std::int64_t> last{
-      0, -1, -1, -1, -1, -1};
+  std::tuple<std::uint32_t, std::int64_t, std::int32_t, std::int32_t, std::int64_t, std::int64_t>
+      last{0, -1, -1, -1, -1, -1};
   for (std::size_t i = 0; i < r.fragments.size(); ++i) {
     const Fragment& f = r.fragments[i];
     const kp::FragmentData* d = need_data ? &r.data[i] : nullptr;
@@ -408,23 +448,32 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
                            std::to_string(f.mask) + ")";
     ++st.fragments;
     // Order (prim, part, y, x, seg, sample) and position.
-    const std::tuple<std::uint32_t, std::int64_t, std::int32_t, std::int32_t, std::int64_t, std::int64_t> key{
-        f.prim, d && d->part ? std::int64_t{*d->part} : -1, f.y, f.x, f.seg ? std::int64_t{*f.seg} : -1,
-        f.sample ? std::int64_t{*f.sample} : -1};
-    if (i > 0 && !(last < key)) return at + ": out of order";
+    const std::tuple<std::uint32_t, std::int64_t, std::int32_t, std::int32_t, std::int64_t,
+                     std::int64_t>
+        key{f.prim,
+            d && d->part ? std::int64_t{*d->part} : -1,
+            f.y,
+            f.x,
+            f.seg ? std::int64_t{*f.seg} : -1,
+            f.sample ? std::int64_t{*f.sample} : -1};
+    if (i > 0 && !(last < key))
+      return at + ": out of order";
     last = key;
-    if (f.x < 0 || f.y < 0 || f.x >= W || f.y >= H) return at + ": outside the target";
+    if (f.x < 0 || f.y < 0 || f.x >= W || f.y >= H)
+      return at + ": outside the target";
     if (f.x < sc.x0 || f.x >= sc.x1 || f.y < sc.y0 || f.y >= sc.y1)
       return at + ": outside the viewport scissor";
-    if (f.prim >= s.primitives.size()) return at + ": no such primitive";
+    if (f.prim >= s.primitives.size())
+      return at + ": no such primitive";
     const kp::PipePrimitive& pp = s.primitives[f.prim];
     const PrimGeometry& g = geo[f.prim];
-    if (g.transform_error) return at + ": the scene should have been rejected (transform)";
+    if (g.transform_error)
+      return at + ": the scene should have been rejected (transform)";
     const bool triangle = pp.base.type == PrimitiveType::kTriangle;
     const bool strip = pp.base.type == PrimitiveType::kLineStrip;
     const bool point = pp.base.type == PrimitiveType::kPoint;
     const Part* part = nullptr;
-    const Seg* seg = nullptr;  // points, lines, strip segments (PIPE.BARY.LINE)
+    const Seg* seg = nullptr; // points, lines, strip segments (PIPE.BARY.LINE)
     std::size_t seg_index = 0;
     if (!triangle) {
       if (d && d->part.has_value() != g.clipped)
@@ -449,10 +498,12 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
     }
     // The drawn primitive the kernel reports equals the oracle's part, bit for bit.
     if (d && !r.drawn.empty()) {
-      if (d->drawn >= r.drawn.size()) return at + ": no drawn primitive " + std::to_string(d->drawn);
+      if (d->drawn >= r.drawn.size())
+        return at + ": no drawn primitive " + std::to_string(d->drawn);
       const kp::DrawnPrimitive& dp = r.drawn[d->drawn];
       const PrimitiveType drawn_type = strip ? PrimitiveType::kLine : pp.base.type;
-      const std::int64_t drawn_seg = strip && !g.clipped ? static_cast<std::int64_t>(seg_index) : -1;
+      const std::int64_t drawn_seg =
+          strip && !g.clipped ? static_cast<std::int64_t>(seg_index) : -1;
       if (dp.prim != f.prim || dp.part != d->part || dp.type != drawn_type ||
           (dp.seg ? std::int64_t{*dp.seg} : -1) != drawn_seg)
         return at + ": its drawn primitive names another primitive, part, segment or type";
@@ -461,32 +512,38 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
         bool same = dp.snapped.size() == ends && dp.attr.size() == s.attributes.size() &&
                     dp.flat.size() == seg->flat.size();
         for (std::size_t j = 0; same && j < ends; ++j) {
-          same = dp.snapped[j].x.raw() == seg->raw[j][0] && dp.snapped[j].y.raw() == seg->raw[j][1] &&
-                 pg::same_bits(dp.z[j], seg->wv[j].z) && pg::same_bits(dp.w[j], seg->wv[j].w);
+          same = dp.snapped[j].x.raw() == seg->raw[j][0] &&
+                 dp.snapped[j].y.raw() == seg->raw[j][1] && pg::same_bits(dp.z[j], seg->wv[j].z) &&
+                 pg::same_bits(dp.w[j], seg->wv[j].w);
           for (std::size_t k = 0; same && k < s.attributes.size(); ++k)
             same = pg::same_bits(dp.attr[k][j], seg->attr[j].at(k));
         }
-        for (std::size_t k = 0; same && k < seg->flat.size(); ++k) same = pg::same_bits(dp.flat[k], seg->flat[k]);
+        for (std::size_t k = 0; same && k < seg->flat.size(); ++k)
+          same = pg::same_bits(dp.flat[k], seg->flat[k]);
         if (!same)
-          return at + ": drawn " + std::string(to_string(drawn_type)) + " (segment " + std::to_string(seg_index) +
-                 ") differs from the oracle's: oracle ends " + pg::rs(seg->raw[0]) + " " + pg::rs(seg->raw[1]) +
-                 " z " + pg::fs(std::array<float, 2>{seg->wv[0].z, seg->wv[1].z}) + " w " +
-                 pg::fs(std::array<float, 2>{seg->wv[0].w, seg->wv[1].w}) + ", kernel z " + pg::fs(dp.z) +
-                 " w " + pg::fs(dp.w);
+          return at + ": drawn " + std::string(to_string(drawn_type)) + " (segment " +
+                 std::to_string(seg_index) + ") differs from the oracle's: oracle ends " +
+                 pg::rs(seg->raw[0]) + " " + pg::rs(seg->raw[1]) + " z " +
+                 pg::fs(std::array<float, 2>{seg->wv[0].z, seg->wv[1].z}) + " w " +
+                 pg::fs(std::array<float, 2>{seg->wv[0].w, seg->wv[1].w}) + ", kernel z " +
+                 pg::fs(dp.z) + " w " + pg::fs(dp.w);
       }
       if (part) {
         bool same = dp.snapped.size() == 3 && dp.attr.size() == s.attributes.size() &&
                     dp.flat.size() == g.flat.size();
         for (std::size_t j = 0; same && j < 3; ++j) {
-          same = dp.snapped[j].x.raw() == part->raw[j][0] && dp.snapped[j].y.raw() == part->raw[j][1] &&
+          same = dp.snapped[j].x.raw() == part->raw[j][0] &&
+                 dp.snapped[j].y.raw() == part->raw[j][1] &&
                  pg::same_bits(dp.z[j], part->wv[j].z) && pg::same_bits(dp.w[j], part->wv[j].w);
           for (std::size_t k = 0; same && k < s.attributes.size(); ++k)
             same = pg::same_bits(dp.attr[k][j], part->attr[j].at(k));
         }
-        for (std::size_t k = 0; same && k < g.flat.size(); ++k) same = pg::same_bits(dp.flat[k], g.flat[k]);
+        for (std::size_t k = 0; same && k < g.flat.size(); ++k)
+          same = pg::same_bits(dp.flat[k], g.flat[k]);
         if (!same) {
           std::string got;
-          for (const Vec2& v : dp.snapped) got += " (" + std::to_string(v.x.raw()) + ", " + std::to_string(v.y.raw()) + ")";
+          for (const Vec2& v : dp.snapped)
+            got += " (" + std::to_string(v.x.raw()) + ", " + std::to_string(v.y.raw()) + ")";
           return at + ": drawn primitive differs from the oracle's: kernel snapped" + got + " z " +
                  pg::fs(dp.z) + " w " + pg::fs(dp.w) + "; oracle " + pg::rs(part->raw) + " z " +
                  pg::fs(std::array<float, 3>{part->wv[0].z, part->wv[1].z, part->wv[2].z}) + " w " +
@@ -504,19 +561,22 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
         return at + ": killed but carries depth, attributes or barycentrics";
       std::size_t j = 0;
       for (std::uint32_t smp = 0; smp < n; ++smp) {
-        if ((f.mask & (1u << smp)) == 0) continue;
+        if ((f.mask & (1u << smp)) == 0)
+          continue;
         const std::size_t idx = static_cast<std::size_t>((f.y * W + f.x) * n + smp);
         const Raw2 pos = offset_raw(f.x, f.y, pattern[smp]);
         // The exact barycentrics and vertex depths of the sample (PIPE.BARY.EXACT, PIPE.BARY.LINE).
         std::optional<std::pair<op::Bary, std::array<float, 3>>> exact;
         if (part)
           exact = {op::barycentrics(part->raw, pos), {part->wv[0].z, part->wv[1].z, part->wv[2].z}};
-        if (seg) exact = {line_bary(seg->raw, pos, point), {seg->wv[0].z, seg->wv[1].z, 0.0f}};
-        if (exact && exact->first.area == 0) exact.reset();  // a zero-length line: vertex 0's depth
+        if (seg)
+          exact = {line_bary(seg->raw, pos, point), {seg->wv[0].z, seg->wv[1].z, 0.0f}};
+        if (exact && exact->first.area == 0)
+          exact.reset(); // a zero-length line: vertex 0's depth
         if (killed) {
           if (exact) {
-            const op::DepthCheck c = op::check_depth_stored(exact->first, exact->second, vp.min_depth,
-                                                            vp.max_depth, fmt, op::Stored{});
+            const op::DepthCheck c = op::check_depth_stored(
+                exact->first, exact->second, vp.min_depth, vp.max_depth, fmt, op::Stored{});
             if (!some_value_fails(func, c.lo, c.hi, buffer[idx], fmt))
               return at + ": killed, but sample " + std::to_string(smp) +
                      " passes for every allowed depth: " + c.describe(fmt);
@@ -525,53 +585,66 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
         }
         const op::Stored now = pg::to_oracle(d->depth[j++]);
         if (exact) {
-          op::DepthCheck c = op::check_depth_stored(exact->first, exact->second, vp.min_depth, vp.max_depth, fmt, now);
+          op::DepthCheck c = op::check_depth_stored(exact->first, exact->second, vp.min_depth,
+                                                    vp.max_depth, fmt, now);
           ++st.depth_checks;
-          if (!c.ok) return at + ": depth of sample " + std::to_string(smp) + ": " + c.describe(fmt);
+          if (!c.ok)
+            return at + ": depth of sample " + std::to_string(smp) + ": " + c.describe(fmt);
         }
         if (op::depth_test(func, now, buffer[idx], fmt)) {
           passed |= 1u << smp;
-          if (s.depth->write) buffer[idx] = now;
+          if (s.depth->write)
+            buffer[idx] = now;
         }
       }
-      if (killed) ++st.killed;
+      if (killed)
+        ++st.killed;
       if (!killed && passed != d->passed)
         return at + ": passed " + std::to_string(d->passed) + ", the replayed test gives " +
                std::to_string(passed);
     } else if (d && d->passed != f.mask) {
       return at + ": passed " + std::to_string(d->passed) + " without a depth test";
     }
-    if ((!part && !seg) || killed || d == nullptr) continue;
+    if ((!part && !seg) || killed || d == nullptr)
+      continue;
     const std::vector<float>& flat = seg ? seg->flat : g.flat;
     // The exact barycentrics at an evaluation point, and the vertex values they weigh.
     const auto bary_at = [&](const Raw2& q) {
       return part ? op::barycentrics(part->raw, q) : line_bary(seg->raw, q, point);
     };
     const auto vertex_values = [&](std::size_t k) {
-      return part ? std::array<float, 3>{part->attr[0].at(k), part->attr[1].at(k), part->attr[2].at(k)}
+      return part ? std::array<float, 3>{part->attr[0].at(k), part->attr[1].at(k),
+                                         part->attr[2].at(k)}
                   : std::array<float, 3>{seg->attr[0].at(k), seg->attr[1].at(k), 0.0f};
     };
-    const std::array<float, 3> vertex_w = part ? std::array<float, 3>{part->wv[0].w, part->wv[1].w, part->wv[2].w}
-                                               : std::array<float, 3>{seg->wv[0].w, seg->wv[1].w, 1.0f};
-    const std::string vertices = part ? pg::rs(part->raw) : pg::rs(seg->raw[0]) + " " + pg::rs(seg->raw[1]);
+    const std::array<float, 3> vertex_w =
+        part ? std::array<float, 3>{part->wv[0].w, part->wv[1].w, part->wv[2].w}
+             : std::array<float, 3>{seg->wv[0].w, seg->wv[1].w, 1.0f};
+    const std::string vertices =
+        part ? pg::rs(part->raw) : pg::rs(seg->raw[0]) + " " + pg::rs(seg->raw[1]);
     // Barycentrics and attributes.
     const auto location_raw = [&](kp::Location l) -> std::optional<Raw2> {
       switch (l) {
-      case kp::Location::kCenter: return centre_raw(f.x, f.y);
+      case kp::Location::kCenter:
+        return centre_raw(f.x, f.y);
       case kp::Location::kSample:
-        if (!f.sample) return std::nullopt;
+        if (!f.sample)
+          return std::nullopt;
         return offset_raw(f.x, f.y, pattern.at(*f.sample));
       case kp::Location::kCentroid: {
         // The fragment's own centroid: check_coverage compares it with rastrules::render's,
         // whose centroids the MSAA properties check against the oracle (with partial masks,
         // helper lanes and sample shading, where the pixel's coverage before the mask is not
         // in the fragment). Here, where the fragment determines it, against the oracle too.
-        const std::string rule = s.base.msaa.centroid_rule == CentroidRule::kD3D11 ? "d3d11" : "d3d10";
+        const std::string rule =
+            s.base.msaa.centroid_rule == CentroidRule::kD3D11 ? "d3d11" : "d3d10";
         const bool determined = !f.helper && s.base.msaa.shading == ShadingRate::kPixel &&
                                 (s.base.msaa.sample_mask & full_mask(n)) == full_mask(n);
-        if (!f.centroid) return std::nullopt;
+        if (!f.centroid)
+          return std::nullopt;
         const om::Offset o{f.centroid->offset.x, f.centroid->offset.y};
-        if (determined && !(om::centroid(rule, f.mask, 0xFFFFFFFFu, pattern).offset == o)) return std::nullopt;
+        if (determined && !(om::centroid(rule, f.mask, 0xFFFFFFFFu, pattern).offset == o))
+          return std::nullopt;
         return offset_raw(f.x, f.y, o);
       }
       }
@@ -581,9 +654,11 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
     if (want_bary != d->bary.has_value())
       return at + ": barycentrics " + (d->bary ? "present" : "absent");
     if (d->bary) {
-      const auto loc = location_raw(s.attributes.empty() ? kp::Location::kCenter : s.attributes[0].location);
+      const auto loc =
+          location_raw(s.attributes.empty() ? kp::Location::kCenter : s.attributes[0].location);
       if (loc && pg::to_oracle(*d->bary) != bary_at(*loc))
-        return at + ": barycentrics differ from the exact ones at " + pg::rs(*loc) + " of " + vertices;
+        return at + ": barycentrics differ from the exact ones at " + pg::rs(*loc) + " of " +
+               vertices;
     }
     if (d->attr.size() != s.attributes.size())
       return at + ": " + std::to_string(d->attr.size()) + " attributes";
@@ -598,7 +673,8 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
       }
       const auto loc = location_raw(a.location);
       if (!loc)
-        return at + ": attribute " + std::to_string(k) + " at a sample or centroid the fragment lacks, or a centroid " +
+        return at + ": attribute " + std::to_string(k) +
+               " at a sample or centroid the fragment lacks, or a centroid " +
                "other than the oracle's";
       const op::Bary b = bary_at(*loc);
       const std::array<float, 3> av = vertex_values(k);
@@ -606,21 +682,21 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
         // A zero-length line (PIPE.BARY.LINE): vertex 0's value, or the flat one in perspective.
         const float want = a.interpolation == kp::Interpolation::kPerspective ? flat[k] : av[0];
         if (!pg::same_bits(got, want))
-          return at + ": attribute " + std::to_string(k) + " of a zero-length line " + pg::fs(got) + ", want " +
-                 pg::fs(want);
+          return at + ": attribute " + std::to_string(k) + " of a zero-length line " + pg::fs(got) +
+                 ", want " + pg::fs(want);
         continue;
       }
-      const op::InterpCheck c =
-          a.interpolation == kp::Interpolation::kPerspective
-              ? op::check_perspective(b, av, vertex_w, flat[k], got)
-              : op::check_linear(b, av, got);
+      const op::InterpCheck c = a.interpolation == kp::Interpolation::kPerspective
+                                    ? op::check_perspective(b, av, vertex_w, flat[k], got)
+                                    : op::check_linear(b, av, got);
       ++st.attr_checks;
       st.horizon = st.horizon || c.horizon;
       st.saturated = st.saturated || c.saturated;
       if (!c.ok)
-        return at + ": attribute " + std::to_string(k) + " (" + interpolation_name(a.interpolation) +
-               ") at " + pg::rs(*loc) + ", vertices " + vertices + ", values " + pg::fs(av) + ", w " +
-               pg::fs(vertex_w) + ": " + c.describe();
+        return at + ": attribute " + std::to_string(k) + " (" +
+               interpolation_name(a.interpolation) + ") at " + pg::rs(*loc) + ", vertices " +
+               vertices + ", values " + pg::fs(av) + ", w " + pg::fs(vertex_w) + ": " +
+               c.describe();
     }
   }
   if (has_depth) {
@@ -651,29 +727,35 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
     f.prim = 0;
     got[{prim, part}].push_back(f);
   }
-  const bool any_centroid = std::any_of(s.attributes.begin(), s.attributes.end(), [](const kp::AttributeDecl& a) {
-    return a.location == kp::Location::kCentroid;
-  });
-  const auto render_one = [&](const Primitive& prim) -> std::variant<std::vector<Fragment>, std::string> {
+  const bool any_centroid =
+      std::any_of(s.attributes.begin(), s.attributes.end(),
+                  [](const kp::AttributeDecl& a) { return a.location == kp::Location::kCentroid; });
+  const auto render_one =
+      [&](const Primitive& prim) -> std::variant<std::vector<Fragment>, std::string> {
     Scene ws = s.base;
-    if (any_centroid) ws.msaa.has_centroid = true;
+    if (any_centroid)
+      ws.msaa.has_centroid = true;
     ws.primitives = {prim};
     const auto rendered = render(ws);
-    if (const auto* e = std::get_if<SceneError>(&rendered)) return e->what();
+    if (const auto* e = std::get_if<SceneError>(&rendered))
+      return e->what();
     std::vector<Fragment> want;
     for (const Fragment& f : std::get<std::vector<Fragment>>(rendered)) {
-      if (f.x >= sc.x0 && f.x < sc.x1 && f.y >= sc.y0 && f.y < sc.y1) want.push_back(f);
+      if (f.x >= sc.x0 && f.x < sc.x1 && f.y >= sc.y0 && f.y < sc.y1)
+        want.push_back(f);
     }
     return want;
   };
   for (std::size_t p = 0; p < s.primitives.size(); ++p) {
     const kp::PipePrimitive& pp = s.primitives[p];
-    const bool point_or_line = pp.base.type == PrimitiveType::kPoint || pp.base.type == PrimitiveType::kLine;
+    const bool point_or_line =
+        pp.base.type == PrimitiveType::kPoint || pp.base.type == PrimitiveType::kLine;
     if (point_or_line && !pp.pos.empty()) {
       // A clip-space point or line: all its fragments (whatever their part) against the coverage
       // kernel's for its clipped window-space vertices.
       const PrimGeometry g = geometry(s, p);
-      if (g.transform_error) continue;
+      if (g.transform_error)
+        continue;
       std::vector<Fragment> have;
       for (auto it = got.begin(); it != got.end();) {
         if (it->first.first == p) {
@@ -687,15 +769,17 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
       if (!g.other.empty()) {
         Primitive prim = pp.base;
         prim.v.clear();
-        for (const op::WindowVertex& v : g.other) prim.v.push_back(FloatPoint{v.x, v.y});
+        for (const op::WindowVertex& v : g.other)
+          prim.v.push_back(FloatPoint{v.x, v.y});
         auto rendered = render_one(prim);
         if (const auto* e = std::get_if<std::string>(&rendered))
           return "render of primitive " + std::to_string(p) + ": " + *e;
         want = std::get<std::vector<Fragment>>(rendered);
       }
       if (have != want)
-        return "coverage of " + std::string(to_string(pp.base.type)) + " " + std::to_string(p) + ": pipeline " +
-               std::to_string(have.size()) + " fragments, window-space render " + std::to_string(want.size());
+        return "coverage of " + std::string(to_string(pp.base.type)) + " " + std::to_string(p) +
+               ": pipeline " + std::to_string(have.size()) + " fragments, window-space render " +
+               std::to_string(want.size());
       continue;
     }
     if (pp.base.type == PrimitiveType::kLineStrip) {
@@ -704,12 +788,14 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
       // the strip of its window vertices; a clipped one, segment by segment, what it draws for
       // each cut segment as a line (part = segment).
       const PrimGeometry g = geometry(s, p);
-      if (g.transform_error) continue;
+      if (g.transform_error)
+        continue;
       std::vector<std::pair<std::int64_t, Primitive>> units;
       Primitive whole = pp.base;
       whole.v.clear();
       for (std::size_t k = 0; k < g.segs.size(); ++k) {
-        if (!g.segs[k]) continue;
+        if (!g.segs[k])
+          continue;
         const Seg& sg = *g.segs[k];
         if (g.clipped) {
           Primitive line = pp.base;
@@ -717,22 +803,26 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
           line.v = {FloatPoint{sg.wv[0].x, sg.wv[0].y}, FloatPoint{sg.wv[1].x, sg.wv[1].y}};
           units.emplace_back(static_cast<std::int64_t>(k), line);
         } else {
-          if (k == 0) whole.v.push_back(FloatPoint{sg.wv[0].x, sg.wv[0].y});
+          if (k == 0)
+            whole.v.push_back(FloatPoint{sg.wv[0].x, sg.wv[0].y});
           whole.v.push_back(FloatPoint{sg.wv[1].x, sg.wv[1].y});
         }
       }
-      if (!g.clipped) units.emplace_back(-1, whole);
+      if (!g.clipped)
+        units.emplace_back(-1, whole);
       for (const auto& [key, prim] : units) {
         auto rendered = render_one(prim);
         if (const auto* e = std::get_if<std::string>(&rendered))
-          return "render of strip " + std::to_string(p) + " part " + std::to_string(key) + ": " + *e;
+          return "render of strip " + std::to_string(p) + " part " + std::to_string(key) + ": " +
+                 *e;
         const auto it = got.find({static_cast<std::uint32_t>(p), key});
         const std::vector<Fragment> have = it == got.end() ? std::vector<Fragment>{} : it->second;
         if (have != std::get<std::vector<Fragment>>(rendered))
-          return "coverage of strip " + std::to_string(p) + " part " + std::to_string(key) + ": pipeline " +
-                 std::to_string(have.size()) + " fragments, window-space render " +
+          return "coverage of strip " + std::to_string(p) + " part " + std::to_string(key) +
+                 ": pipeline " + std::to_string(have.size()) + " fragments, window-space render " +
                  std::to_string(std::get<std::vector<Fragment>>(rendered).size());
-        if (it != got.end()) got.erase(it);
+        if (it != got.end())
+          got.erase(it);
       }
       for (auto it = got.begin(); it != got.end(); ++it)
         if (it->first.first == p && !it->second.empty())
@@ -740,21 +830,26 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
                  ": fragments of a segment the oracle's clipper discards";
       continue;
     }
-    if (pp.base.type != PrimitiveType::kTriangle) continue;
+    if (pp.base.type != PrimitiveType::kTriangle)
+      continue;
     const PrimGeometry g = geometry(s, p);
-    if (g.transform_error) continue;
+    if (g.transform_error)
+      continue;
     for (std::size_t k = 0; k < g.parts.size(); ++k) {
       Scene ws = s.base;
-      if (any_centroid) ws.msaa.has_centroid = true;
+      if (any_centroid)
+        ws.msaa.has_centroid = true;
       ws.primitives = {make_triangle({FloatPoint{g.parts[k].wv[0].x, g.parts[k].wv[0].y},
                                       FloatPoint{g.parts[k].wv[1].x, g.parts[k].wv[1].y},
                                       FloatPoint{g.parts[k].wv[2].x, g.parts[k].wv[2].y}})};
       const auto rendered = render(ws);
       if (const auto* e = std::get_if<SceneError>(&rendered))
-        return "render of primitive " + std::to_string(p) + " part " + std::to_string(k) + ": " + e->what();
+        return "render of primitive " + std::to_string(p) + " part " + std::to_string(k) + ": " +
+               e->what();
       std::vector<Fragment> want;
       for (const Fragment& f : std::get<std::vector<Fragment>>(rendered)) {
-        if (f.x >= sc.x0 && f.x < sc.x1 && f.y >= sc.y0 && f.y < sc.y1) want.push_back(f);
+        if (f.x >= sc.x0 && f.x < sc.x1 && f.y >= sc.y0 && f.y < sc.y1)
+          want.push_back(f);
       }
       const std::int64_t key = g.clipped ? static_cast<std::int64_t>(k) : -1;
       const auto it = got.find({static_cast<std::uint32_t>(p), key});
@@ -762,19 +857,24 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
       if (have != want) {
         std::ostringstream os;
         os << "coverage of primitive " << p << " part " << key << ": pipeline " << have.size()
-           << " fragments, window-space render " << want.size() << " (vertices " << pg::rs(g.parts[k].raw) << ")";
+           << " fragments, window-space render " << want.size() << " (vertices "
+           << pg::rs(g.parts[k].raw) << ")";
         for (std::size_t i = 0; i < std::max(have.size(), want.size()); ++i) {
           const bool same = i < have.size() && i < want.size() && have[i] == want[i];
-          if (same) continue;
+          if (same)
+            continue;
           os << "; first difference at " << i << ": pipeline ";
-          if (i < have.size()) os << "(" << have[i].x << ", " << have[i].y << ", mask " << have[i].mask << ")";
+          if (i < have.size())
+            os << "(" << have[i].x << ", " << have[i].y << ", mask " << have[i].mask << ")";
           os << ", render ";
-          if (i < want.size()) os << "(" << want[i].x << ", " << want[i].y << ", mask " << want[i].mask << ")";
+          if (i < want.size())
+            os << "(" << want[i].x << ", " << want[i].y << ", mask " << want[i].mask << ")";
           break;
         }
         return os.str();
       }
-      if (it != got.end()) got.erase(it);
+      if (it != got.end())
+        got.erase(it);
     }
   }
   for (const auto& [key, frags] : got) {
@@ -785,4 +885,4 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
   return "";
 }
 
-}  // namespace rastrules::pipe_scene
+} // namespace rastrules::pipe_scene

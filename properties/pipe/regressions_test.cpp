@@ -10,10 +10,10 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <variant>
 #include <limits>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -46,7 +46,8 @@ TEST(PipeRegression, ClipVerticesStayDoubleBetweenPlanes) {
   ASSERT_EQ(got.size(), 4u);
   ASSERT_EQ(want.size(), 4u);
   for (std::size_t i = 0; i < 4; ++i) {
-    for (std::size_t c = 0; c < 4; ++c) EXPECT_TRUE(pg::same_bits(got[i].pos[c], want[i].pos[c])) << i << " " << c;
+    for (std::size_t c = 0; c < 4; ++c)
+      EXPECT_TRUE(pg::same_bits(got[i].pos[c], want[i].pos[c])) << i << " " << c;
   }
   // -0.861101 once rounded; rounded between the planes it would be -0.86110103 (0xBF5C711E).
   EXPECT_EQ(std::bit_cast<std::uint32_t>(got[2].pos[0]), 0xBF5C711Du);
@@ -68,7 +69,8 @@ TEST(PipeRegression, BiasOfSubnormalDepthsForD32f) {
 
 // Returns the pixel centres (farther than 1/64 px from every edge of the exactly projected and
 // snapped unclipped triangle) whose coverage by run_pipeline differs from that triangle's.
-std::string guard_band_mismatches(const std::array<kp::Vec4f, 3>& tri, std::int32_t w, std::int32_t h) {
+std::string guard_band_mismatches(const std::array<kp::Vec4f, 3>& tri, std::int32_t w,
+                                  std::int32_t h) {
   kp::PipeScene s;
   s.base.width = w;
   s.base.height = h;
@@ -76,7 +78,8 @@ std::string guard_band_mismatches(const std::array<kp::Vec4f, 3>& tri, std::int3
   p.pos = {tri[0], tri[1], tri[2]};
   s.primitives.push_back(p);
   const auto r = kp::run_pipeline(s);
-  if (const auto* e = std::get_if<rastrules::SceneError>(&r)) return "error " + e->what();
+  if (const auto* e = std::get_if<rastrules::SceneError>(&r))
+    return "error " + e->what();
   std::vector<int> count(static_cast<std::size_t>(w * h), 0);
   for (const rastrules::Fragment& f : std::get<kp::PipeResult>(r).fragments)
     ++count[static_cast<std::size_t>(f.y * w + f.x)];
@@ -85,8 +88,10 @@ std::string guard_band_mismatches(const std::array<kp::Vec4f, 3>& tri, std::int3
   std::string out;
   for (std::int32_t y = 0; y < h; ++y) {
     for (std::int32_t x = 0; x < w; ++x) {
-      const auto side = exact.classify({256 * std::int64_t{x} + 128, 256 * std::int64_t{y} + 128}, 4);
-      if (side == op::ExactRegion::Side::kNear) continue;
+      const auto side =
+          exact.classify({256 * std::int64_t{x} + 128, 256 * std::int64_t{y} + 128}, 4);
+      if (side == op::ExactRegion::Side::kNear)
+        continue;
       const int want = side == op::ExactRegion::Side::kInside ? 1 : 0;
       if (count[static_cast<std::size_t>(y * w + x)] != want)
         out += " (" + std::to_string(x) + ", " + std::to_string(y) + ")";
@@ -129,17 +134,19 @@ TEST(PipeRegression, FarVertexMustNotDiscardTheVisibleTriangleShrunk) {
 // rule: PIPE.CLIP.GUARD_BAND_SNAP, PIPE.CLIP.COMPUTE, PIPE.CLIP.SATURATE
 TEST(PipeRegression, GuardBandVertexMovedMoreThanOnePixel) {
   const kp::Viewport vp{-32768.0f, -200.0f, 42636.0f, 1.0f, 0.0f, 0.0f};
-  const std::vector<kp::ClipVertex> t{{{270569799680.0f, 8.271806e-25f, 8.271806e-25f, 10981424.0f}, {}},
-                                      {{270569799680.0f, -0.5f, 0.0f, 0.5f}, {}},
-                                      {{-0.5f, -0.5f, 0.5f, 0.5f}, {}}};
+  const std::vector<kp::ClipVertex> t{
+      {{270569799680.0f, 8.271806e-25f, 8.271806e-25f, 10981424.0f}, {}},
+      {{270569799680.0f, -0.5f, 0.0f, 0.5f}, {}},
+      {{-0.5f, -0.5f, 0.5f, 0.5f}, {}}};
   const kp::ClipVolume vol = kp::clip_volume({t[0].pos, t[1].pos, t[2].pos}, vp, false);
   const std::vector<kp::ClipVertex> poly = kp::clip_polygon(t, vol);
   ASSERT_FALSE(poly.empty());
   double worst = 0.0;
   for (const kp::ClipVertex& v : poly) {
     const kp::WindowVertex w = kp::to_window(v.pos, vp);
-    worst = std::max({worst, std::fabs(static_cast<double>(w.x)), std::fabs(static_cast<double>(w.y))});
-    EXPECT_TRUE(rastrules::oracle::snap(w.x).has_value());  // the 1023 px margin holds
+    worst =
+        std::max({worst, std::fabs(static_cast<double>(w.x)), std::fabs(static_cast<double>(w.y))});
+    EXPECT_TRUE(rastrules::oracle::snap(w.x).has_value()); // the 1023 px margin holds
   }
   // Since the intersection starts from the endpoint nearer the plane (t <= 1/2) the
   // cancellation is gone: the vertex lands on the band (it was 1.26 px beyond).
@@ -166,12 +173,13 @@ TEST(PipeRegression, GuardBandVertexMovedMoreThanOnePixel) {
 TEST(PipeRegression, ViewportEndIsTheExactSum) {
   const kp::Viewport vp{0.0f, 32767.0f, 8.0f, 1e-45f, 0.0f, 1.0f};
   EXPECT_FALSE(op::viewport_violations(pg::to_oracle(vp)).empty());
-  EXPECT_TRUE(kp::check_viewport(vp).has_value()) << "the kernel accepts y + height = 32767 + 2^-149";
+  EXPECT_TRUE(kp::check_viewport(vp).has_value())
+      << "the kernel accepts y + height = 32767 + 2^-149";
   const kp::Viewport vx{1e-4f, 0.0f, 32767.0f, 8.0f, 0.0f, 1.0f};
   EXPECT_TRUE(kp::check_viewport(vx).has_value()) << "the kernel accepts x + width = 32767.0001";
 }
 
-}  // namespace
+} // namespace
 
 // Found by PipeScene.FragmentsAgreeWithTheOracle (after the w plane became absolute): a vertex
 // behind the eye at w = -3e-45 cut against w >= 2^-126 from the inside endpoint (w = 1e-6) gave
@@ -223,15 +231,17 @@ TEST(PipeRegression, HugeSlopeBiasSaturates) {
   s.depth->format = kp::DepthFormat::kD16;
   s.depth->bias.slope_scaled = 10.0f;
   kp::PipePrimitive p;
-  p.base = rastrules::make_triangle({rastrules::FloatPoint{0, 0}, rastrules::FloatPoint{8, 0},
-                                     rastrules::FloatPoint{0, 8}});
+  p.base = rastrules::make_triangle(
+      {rastrules::FloatPoint{0, 0}, rastrules::FloatPoint{8, 0}, rastrules::FloatPoint{0, 8}});
   p.z = {3e38f, -3e38f, 3e38f};
   s.primitives.push_back(p);
   const auto r = kp::run_pipeline(s);
   ASSERT_TRUE(std::holds_alternative<kp::PipeResult>(r));
   const kp::PipeResult& res = std::get<kp::PipeResult>(r);
   ASSERT_FALSE(res.drawn.empty());
-  for (const float zi : res.drawn[0].z) EXPECT_TRUE(std::isfinite(zi)) << zi;
+  for (const float zi : res.drawn[0].z)
+    EXPECT_TRUE(std::isfinite(zi)) << zi;
   for (const kp::FragmentData& d : res.data)
-    for (const kp::DepthValue& dv : d.depth) EXPECT_LE(dv.unorm, 65535u);
+    for (const kp::DepthValue& dv : d.depth)
+      EXPECT_LE(dv.unorm, 65535u);
 }

@@ -51,7 +51,9 @@ using rastrules::PrimitiveType;
 rc::Gen<kp::Vec4f> view_vertex() {
   return rc::gen::exec([] {
     const float w = *rc::gen::element(1.0f, 0.5f, 2.0f, 8.0f, 1e-3f, 1e3f, 1e-6f, 1e6f, 0.3f);
-    const auto ndc = [](int lo, int hi) { return static_cast<float>(*rc::gen::inRange(lo, hi + 1)) / 256.0f; };
+    const auto ndc = [](int lo, int hi) {
+      return static_cast<float>(*rc::gen::inRange(lo, hi + 1)) / 256.0f;
+    };
     return kp::Vec4f{ndc(-384, 384) * w, ndc(-384, 384) * w, ndc(-26, 282) * w, w};
   });
 }
@@ -74,11 +76,13 @@ rc::Gen<kp::PipePrimitive> primitive(const kp::PipeScene& scene, PrimitiveType t
   return rc::gen::exec([s, type] {
     kp::PipePrimitive p;
     p.base.type = type;
-    p.base.v.clear();  // a default Primitive is a triangle with three vertices
+    p.base.v.clear(); // a default Primitive is a triangle with three vertices
     const bool linelike = type == PrimitiveType::kLine || type == PrimitiveType::kLineStrip;
-    p.base.aa = linelike && s.line_mode == rastrules::LineMode::kD3DDiamond && *rc::gen::inRange(0, 6) == 0;
-    const std::size_t nv = type == PrimitiveType::kLineStrip ? static_cast<std::size_t>(*rc::gen::inRange(2, 6))
-                                                             : rastrules::required_vertex_count(type);
+    p.base.aa =
+        linelike && s.line_mode == rastrules::LineMode::kD3DDiamond && *rc::gen::inRange(0, 6) == 0;
+    const std::size_t nv = type == PrimitiveType::kLineStrip
+                               ? static_cast<std::size_t>(*rc::gen::inRange(2, 6))
+                               : rastrules::required_vertex_count(type);
     if (*rc::gen::inRange(0, 10) < 3) {
       const bool with_z = *rc::gen::inRange(0, 4) != 0, with_w = *rc::gen::arbitrary<bool>();
       while (p.base.v.size() < nv) {
@@ -87,20 +91,24 @@ rc::Gen<kp::PipePrimitive> primitive(const kp::PipeScene& scene, PrimitiveType t
         const auto w = *pg::w_triple();
         for (std::size_t j = 0; j < 3 && p.base.v.size() < nv; ++j) {
           p.base.v.push_back(t.v[j]);
-          if (with_z) p.z.push_back(z[j]);
-          if (with_w) p.w.push_back(w[j]);
+          if (with_z)
+            p.z.push_back(z[j]);
+          if (with_w)
+            p.w.push_back(w[j]);
         }
       }
     } else {
       for (std::size_t j = 0; j < nv; ++j) {
         kp::Vec4f v = *scene_vertex();
-        if (!pg::position_ok(v)) v = {0.0f, 0.0f, 0.5f, 1.0f};
+        if (!pg::position_ok(v))
+          v = {0.0f, 0.0f, 0.5f, 1.0f};
         p.pos.push_back(v);
       }
     }
     for (std::size_t j = 0; j < nv && s.nattr > 0; ++j) {
       std::vector<float> a;
-      for (std::size_t k = 0; k < s.nattr; ++k) a.push_back(*pg::attr_value());
+      for (std::size_t k = 0; k < s.nattr; ++k)
+        a.push_back(*pg::attr_value());
       p.attr.push_back(a);
     }
     return p;
@@ -114,18 +122,23 @@ rc::Gen<kp::PipeScene> pipe_scene(std::int32_t max_side, int max_prims) {
     s.base.height = *rc::gen::inRange(2, max_side + 1);
     s.base.state.cull = *rc::gen::weightedElement<CullMode>(
         {{3, CullMode::kNone}, {1, CullMode::kBack}, {1, CullMode::kFront}});
-    s.base.state.front_face = *rc::gen::element(FrontFace::kClockwise, FrontFace::kCounterClockwise);
-    s.base.state.fill = *rc::gen::element(FillConvention::kTopLeft, FillConvention::kTopRight,
-                                          FillConvention::kBottomLeft, FillConvention::kBottomRight);
+    s.base.state.front_face =
+        *rc::gen::element(FrontFace::kClockwise, FrontFace::kCounterClockwise);
+    s.base.state.fill =
+        *rc::gen::element(FillConvention::kTopLeft, FillConvention::kTopRight,
+                          FillConvention::kBottomLeft, FillConvention::kBottomRight);
     const std::uint32_t n = *rc::gen::element(1u, 1u, 4u, 8u);
     s.base.msaa.pattern = rastrules::standard_pattern(n);
     const bool sample_shading = n > 1 && *rc::gen::inRange(0, 4) == 0;
-    s.base.msaa.shading = sample_shading ? rastrules::ShadingRate::kSample : rastrules::ShadingRate::kPixel;
-    s.base.msaa.centroid_rule = *rc::gen::element(rastrules::CentroidRule::kD3D11, rastrules::CentroidRule::kD3D10);
+    s.base.msaa.shading =
+        sample_shading ? rastrules::ShadingRate::kSample : rastrules::ShadingRate::kPixel;
+    s.base.msaa.centroid_rule =
+        *rc::gen::element(rastrules::CentroidRule::kD3D11, rastrules::CentroidRule::kD3D10);
     // Partial sample masks (MSAA.MASK.AND), and 2x2 quads with helper lanes, with or without the
     // derivatives that need them (MSAA.QUAD.HELPER, MSAA.QUAD.DERIVATIVES): helper lanes carry
     // the attributes a shader's derivatives are formed from.
-    if (n > 1 && *rc::gen::inRange(0, 4) == 0) s.base.msaa.sample_mask = *rc::gen::inRange<std::uint32_t>(0, 1u << n);
+    if (n > 1 && *rc::gen::inRange(0, 4) == 0)
+      s.base.msaa.sample_mask = *rc::gen::inRange<std::uint32_t>(0, 1u << n);
     const int quads = *rc::gen::inRange(0, 8);
     s.base.msaa.quads = quads == 0;
     s.base.msaa.derivatives = quads == 1   ? rastrules::DerivativeMode::kFine
@@ -135,17 +148,23 @@ rc::Gen<kp::PipeScene> pipe_scene(std::int32_t max_side, int max_prims) {
     for (int k = 0; k < nattr; ++k) {
       kp::AttributeDecl a;
       a.name = "a" + std::to_string(k);
-      a.interpolation = *rc::gen::element(kp::Interpolation::kPerspective, kp::Interpolation::kPerspective,
-                                          kp::Interpolation::kLinear, kp::Interpolation::kFlat);
+      a.interpolation =
+          *rc::gen::element(kp::Interpolation::kPerspective, kp::Interpolation::kPerspective,
+                            kp::Interpolation::kLinear, kp::Interpolation::kFlat);
       // Centroid under sample shading too (PIPE.INTERP.LOCATION).
-      a.location = sample_shading ? *rc::gen::element(kp::Location::kCenter, kp::Location::kSample, kp::Location::kCentroid)
-                                  : *rc::gen::element(kp::Location::kCenter, kp::Location::kCentroid);
+      a.location = sample_shading
+                       ? *rc::gen::element(kp::Location::kCenter, kp::Location::kSample,
+                                           kp::Location::kCentroid)
+                       : *rc::gen::element(kp::Location::kCenter, kp::Location::kCentroid);
       s.attributes.push_back(a);
     }
     const int vp_kind = *rc::gen::inRange(0, 10);
-    if (vp_kind >= 5) s.viewport = *pg::viewport(s.base.width, s.base.height, vp_kind == 9);
-    if (*rc::gen::inRange(0, 10) == 0) s.model = *pg::matrix();
-    if (*rc::gen::inRange(0, 10) == 0) s.projection = *pg::matrix();
+    if (vp_kind >= 5)
+      s.viewport = *pg::viewport(s.base.width, s.base.height, vp_kind == 9);
+    if (*rc::gen::inRange(0, 10) == 0)
+      s.model = *pg::matrix();
+    if (*rc::gen::inRange(0, 10) == 0)
+      s.projection = *pg::matrix();
     if (*rc::gen::inRange(0, 10) < 7) {
       kp::DepthState d;
       d.format = *pg::depth_format();
@@ -153,16 +172,19 @@ rc::Gen<kp::PipeScene> pipe_scene(std::int32_t max_side, int max_prims) {
       d.write = *rc::gen::inRange(0, 4) != 0;
       d.clear = std::min(1.0f, std::fabs(*pg::depth_value()));
       d.clip = *rc::gen::inRange(0, 5) != 0;
-      if (*rc::gen::inRange(0, 10) < 3) d.bias = *pg::depth_bias_state();
+      if (*rc::gen::inRange(0, 10) < 3)
+        d.bias = *pg::depth_bias_state();
       s.depth = d;
     }
     s.provoking = *rc::gen::element(kp::Provoking::kFirst, kp::Provoking::kLast);
     // Vulkan's Bresenham lines have no sample shading (MSAA.SHADING.SAMPLE).
-    s.base.line_mode = sample_shading ? *rc::gen::element(rastrules::LineMode::kD3DDiamond, rastrules::LineMode::kQuadWide,
-                                                          rastrules::LineMode::kQuadNarrow)
-                                      : *rc::gen::element(rastrules::LineMode::kD3DDiamond,
-                                                          rastrules::LineMode::kVulkanBresenham,
-                                                          rastrules::LineMode::kQuadWide, rastrules::LineMode::kQuadNarrow);
+    s.base.line_mode =
+        sample_shading
+            ? *rc::gen::element(rastrules::LineMode::kD3DDiamond, rastrules::LineMode::kQuadWide,
+                                rastrules::LineMode::kQuadNarrow)
+            : *rc::gen::element(rastrules::LineMode::kD3DDiamond,
+                                rastrules::LineMode::kVulkanBresenham,
+                                rastrules::LineMode::kQuadWide, rastrules::LineMode::kQuadNarrow);
     const int nprims = *rc::gen::inRange(1, max_prims + 1);
     for (int i = 0; i < nprims; ++i) {
       // Points, lines and strips (LINE.STRIP.SEQUENCE, PIPE.BARY.LINE) besides triangles.
@@ -178,9 +200,11 @@ rc::Gen<kp::PipeScene> pipe_scene(std::int32_t max_side, int max_prims) {
 }
 
 bool transform_rejected(const kp::PipeScene& s, const rastrules::SceneError& e) {
-  if (!s.model && !s.view && !s.projection) return false;
+  if (!s.model && !s.view && !s.projection)
+    return false;
   for (std::size_t i = 0; i < s.primitives.size(); ++i) {
-    if (ps::geometry(s, i).transform_error) return e.field.rfind("primitives[", 0) == 0;
+    if (ps::geometry(s, i).transform_error)
+      return e.field.rfind("primitives[", 0) == 0;
   }
   return false;
 }
@@ -189,7 +213,8 @@ bool transform_rejected(const kp::PipeScene& s, const rastrules::SceneError& e) 
 std::optional<kp::PipeResult> run(const kp::PipeScene& s, const kp::PipeOptions& o) {
   auto r = kp::run_pipeline(s, o);
   if (const auto* e = std::get_if<rastrules::SceneError>(&r)) {
-    if (transform_rejected(s, *e)) return std::nullopt;
+    if (transform_rejected(s, *e))
+      return std::nullopt;
     RC_FAIL("run_pipeline rejected a valid scene: " + e->what() + "\n" + ps::show(s));
   }
   return std::move(std::get<kp::PipeResult>(r));
@@ -209,53 +234,68 @@ RC_GTEST_PROP(PipeScene, FragmentsAgreeWithTheOracle, ()) {
   }
   ps::CheckStats st;
   const std::string problem = ps::check_result(s, *r, st);
-  if (!problem.empty()) RC_FAIL(problem + "\n" + ps::show(s));
+  if (!problem.empty())
+    RC_FAIL(problem + "\n" + ps::show(s));
   const std::string coverage = ps::check_coverage(s, *r);
-  if (!coverage.empty()) RC_FAIL(coverage + "\n" + ps::show(s));
+  if (!coverage.empty())
+    RC_FAIL(coverage + "\n" + ps::show(s));
   RC_CLASSIFY(st.clipped_prims > 0, "clipped primitives");
   RC_CLASSIFY(st.killed > 0, "killed fragments");
   RC_CLASSIFY(st.attr_checks > 0, "attributes checked");
   RC_CLASSIFY(st.depth_checks > 0, "depths checked");
   RC_CLASSIFY(st.horizon, "beyond the horizon");
   RC_CLASSIFY(st.fragments == 0, "no fragment");
-  RC_CLASSIFY(std::any_of(r->fragments.begin(), r->fragments.end(), [](const rastrules::Fragment& f) { return f.helper; }),
+  RC_CLASSIFY(std::any_of(r->fragments.begin(), r->fragments.end(),
+                          [](const rastrules::Fragment& f) { return f.helper; }),
               "helper lanes");
-  RC_CLASSIFY((s.base.msaa.sample_mask & rastrules::full_mask(s.base.msaa.count())) != rastrules::full_mask(s.base.msaa.count()),
+  RC_CLASSIFY((s.base.msaa.sample_mask & rastrules::full_mask(s.base.msaa.count())) !=
+                  rastrules::full_mask(s.base.msaa.count()),
               "partial sample mask");
   RC_CLASSIFY(std::any_of(s.primitives.begin(), s.primitives.end(),
-                          [](const kp::PipePrimitive& p) { return p.base.type == PrimitiveType::kLineStrip; }),
+                          [](const kp::PipePrimitive& p) {
+                            return p.base.type == PrimitiveType::kLineStrip;
+                          }),
               "line strips");
   RC_CLASSIFY(s.base.msaa.shading == rastrules::ShadingRate::kSample &&
                   std::any_of(s.attributes.begin(), s.attributes.end(),
-                              [](const kp::AttributeDecl& a) { return a.location == kp::Location::kCentroid; }),
+                              [](const kp::AttributeDecl& a) {
+                                return a.location == kp::Location::kCentroid;
+                              }),
               "centroid under sample shading");
-  if (st.fragments == 0 && std::getenv("PIPE_DEBUG")) std::cerr << ps::show(s) << "\n";
+  if (st.fragments == 0 && std::getenv("PIPE_DEBUG"))
+    std::cerr << ps::show(s) << "\n";
 }
 
 std::string first_difference(const kp::PipeResult& a, const kp::PipeResult& b) {
   if (a.fragments.size() != b.fragments.size())
-    return std::to_string(a.fragments.size()) + " vs " + std::to_string(b.fragments.size()) + " fragments";
+    return std::to_string(a.fragments.size()) + " vs " + std::to_string(b.fragments.size()) +
+           " fragments";
   for (std::size_t i = 0; i < a.fragments.size(); ++i) {
-    if (!(a.fragments[i] == b.fragments[i])) return "fragment " + std::to_string(i) + " differs";
+    if (!(a.fragments[i] == b.fragments[i]))
+      return "fragment " + std::to_string(i) + " differs";
   }
-  if (a.data.size() != b.data.size()) return "data sizes differ";
+  if (a.data.size() != b.data.size())
+    return "data sizes differ";
   for (std::size_t i = 0; i < a.data.size(); ++i) {
     if (!(a.data[i] == b.data[i])) {
-      std::string s = "data of fragment " + std::to_string(i) + " (x " + std::to_string(a.fragments[i].x) +
-                      ", y " + std::to_string(a.fragments[i].y) + ") differs: passed " +
-                      std::to_string(a.data[i].passed) + " vs " + std::to_string(b.data[i].passed) +
-                      ", attr " + pg::fs(a.data[i].attr) + " vs " + pg::fs(b.data[i].attr);
+      std::string s = "data of fragment " + std::to_string(i) + " (x " +
+                      std::to_string(a.fragments[i].x) + ", y " + std::to_string(a.fragments[i].y) +
+                      ") differs: passed " + std::to_string(a.data[i].passed) + " vs " +
+                      std::to_string(b.data[i].passed) + ", attr " + pg::fs(a.data[i].attr) +
+                      " vs " + pg::fs(b.data[i].attr);
       return s;
     }
   }
-  if (a.depth_buffer != b.depth_buffer) return "depth buffers differ";
+  if (a.depth_buffer != b.depth_buffer)
+    return "depth buffers differ";
   return "";
 }
 
 rc::Gen<kp::PipeOptions> options() {
   return rc::gen::exec([] {
     kp::PipeOptions o;
-    o.render.traversal = *rc::gen::element(rastrules::Traversal::kPlain, rastrules::Traversal::kFast);
+    o.render.traversal =
+        *rc::gen::element(rastrules::Traversal::kPlain, rastrules::Traversal::kFast);
     o.render.threads = *rc::gen::element(1u, 3u);
     o.tile_size = *rc::gen::element(16, 32);
     o.binning = *rc::gen::arbitrary<bool>();
@@ -267,8 +307,9 @@ rc::Gen<kp::PipeOptions> options() {
 }
 
 std::string describe(const kp::PipeOptions& o) {
-  return std::string("traversal ") + (o.render.traversal == rastrules::Traversal::kPlain ? "plain" : "fast") +
-         ", threads " + std::to_string(o.render.threads) + ", tile " + std::to_string(o.tile_size) +
+  return std::string("traversal ") +
+         (o.render.traversal == rastrules::Traversal::kPlain ? "plain" : "fast") + ", threads " +
+         std::to_string(o.render.threads) + ", tile " + std::to_string(o.tile_size) +
          (o.binning ? ", binning" : "") + (o.hiz ? ", hiz" : "") + (o.early_z ? ", early-z" : "") +
          (o.fast_clear ? ", fast clear" : "");
 }
@@ -279,18 +320,23 @@ RC_GTEST_PROP(PipeScene, OptimizationsTraversalsAndThreadsChangeNothing, ()) {
   // Larger targets than above, so that scenes span several 16 and 32 px tiles.
   const kp::PipeScene s = *pg::full_size(pipe_scene(70, 6));
   const auto plain = run(s, kp::PipeOptions::plain());
-  if (!plain) return;
+  if (!plain)
+    return;
   const auto again = run(s, kp::PipeOptions::plain());
   const std::string d0 = first_difference(*plain, *again);
-  if (!d0.empty()) RC_FAIL("two plain runs differ: " + d0 + "\n" + ps::show(s));
+  if (!d0.empty())
+    RC_FAIL("two plain runs differ: " + d0 + "\n" + ps::show(s));
   const kp::PipeOptions defaults;
   const auto fast = run(s, defaults);
   const std::string d1 = first_difference(*plain, *fast);
-  if (!d1.empty()) RC_FAIL("default options (" + describe(defaults) + ") differ from plain: " + d1 + "\n" + ps::show(s));
+  if (!d1.empty())
+    RC_FAIL("default options (" + describe(defaults) + ") differ from plain: " + d1 + "\n" +
+            ps::show(s));
   const kp::PipeOptions o = *options();
   const auto other = run(s, o);
   const std::string d2 = first_difference(*plain, *other);
-  if (!d2.empty()) RC_FAIL("options (" + describe(o) + ") differ from plain: " + d2 + "\n" + ps::show(s));
+  if (!d2.empty())
+    RC_FAIL("options (" + describe(o) + ") differ from plain: " + d2 + "\n" + ps::show(s));
   RC_CLASSIFY(fast->stats.hiz_rejected > 0, "Hi-Z rejected something");
   RC_CLASSIFY(s.base.width > 32 || s.base.height > 32, "several 32 px tiles");
 }
@@ -324,32 +370,38 @@ RC_GTEST_PROP(PipeStrip, EachSegmentEqualsTheSameSegmentDrawnAsALine, ()) {
   };
   const auto oa = order(*a, true), ob = order(*b, false);
   if (oa.size() != ob.size())
-    RC_FAIL("strip " + std::to_string(oa.size()) + " fragments, lines " + std::to_string(ob.size()) + "\n" +
-            ps::show(s));
-  const bool clipped = std::any_of(a->data.begin(), a->data.end(), [](const kp::FragmentData& d) { return d.part; });
+    RC_FAIL("strip " + std::to_string(oa.size()) + " fragments, lines " +
+            std::to_string(ob.size()) + "\n" + ps::show(s));
+  const bool clipped =
+      std::any_of(a->data.begin(), a->data.end(), [](const kp::FragmentData& d) { return d.part; });
   for (std::size_t j = 0; j < oa.size(); ++j) {
     const std::size_t ia = std::get<4>(oa[j]), ib = std::get<4>(ob[j]);
     rastrules::Fragment fa = a->fragments[ia], fb = b->fragments[ib];
-    const std::string at = "segment " + std::to_string(std::get<0>(oa[j])) + " at (" + std::to_string(fa.x) +
-                           ", " + std::to_string(fa.y) + ")";
+    const std::string at = "segment " + std::to_string(std::get<0>(oa[j])) + " at (" +
+                           std::to_string(fa.x) + ", " + std::to_string(fa.y) + ")";
     fa.prim = fb.prim = 0;
     fa.seg = fb.seg = std::nullopt;
     if (std::get<0>(oa[j]) != std::get<0>(ob[j]) || !(fa == fb))
       RC_FAIL(at + ": the strip's fragment differs from the line's\n" + ps::show(s));
-    if (a->data.empty() != b->data.empty()) RC_FAIL("one run has fragment data, the other not\n" + ps::show(s));
-    if (a->data.empty()) continue;
+    if (a->data.empty() != b->data.empty())
+      RC_FAIL("one run has fragment data, the other not\n" + ps::show(s));
+    if (a->data.empty())
+      continue;
     kp::FragmentData da = a->data[ia], db = b->data[ib];
     da.drawn = db.drawn = 0;
     da.part = db.part = std::nullopt;
     if (!(da == db))
-      RC_FAIL(at + ": values differ: strip attr " + pg::fs(da.attr) + ", line attr " + pg::fs(db.attr) +
-              (da.bary && db.bary ? ", strip bary e1 " + std::to_string(da.bary->e[1]) + "/" +
-                                        std::to_string(da.bary->area) + ", line " + std::to_string(db.bary->e[1]) +
-                                        "/" + std::to_string(db.bary->area)
-                                  : std::string()) +
+      RC_FAIL(at + ": values differ: strip attr " + pg::fs(da.attr) + ", line attr " +
+              pg::fs(db.attr) +
+              (da.bary && db.bary
+                   ? ", strip bary e1 " + std::to_string(da.bary->e[1]) + "/" +
+                         std::to_string(da.bary->area) + ", line " + std::to_string(db.bary->e[1]) +
+                         "/" + std::to_string(db.bary->area)
+                   : std::string()) +
               "\n" + ps::show(s));
   }
-  if (a->depth_buffer != b->depth_buffer) RC_FAIL("depth buffers differ\n" + ps::show(s));
+  if (a->depth_buffer != b->depth_buffer)
+    RC_FAIL("depth buffers differ\n" + ps::show(s));
   RC_CLASSIFY(clipped, "clipped");
   RC_CLASSIFY(s.primitives[0].pos.empty(), "window space");
   RC_CLASSIFY(!s.attributes.empty(), "attributes");
@@ -358,4 +410,4 @@ RC_GTEST_PROP(PipeStrip, EachSegmentEqualsTheSameSegmentDrawnAsALine, ()) {
   RC_TAG(std::string(to_string(s.base.line_mode)));
 }
 
-}  // namespace
+} // namespace

@@ -40,4 +40,4 @@ inline pipe::PipeScene strips_as_lines(const pipe::PipeScene& s) {
   return out;
 }
 
-}  // namespace rastrules::pipe_gen
+} // namespace rastrules::pipe_gen

@@ -37,7 +37,7 @@ namespace om = rastrules::oracle::msaa;
 namespace kp = rastrules::pipe;
 
 // Samples within this distance (raw units) of the image's boundary may go either way.
-constexpr std::int64_t kNearRaw = 8;  // 1/32 px
+constexpr std::int64_t kNearRaw = 8; // 1/32 px
 
 struct ClipMesh {
   std::int32_t width = 0, height = 0;
@@ -48,8 +48,10 @@ struct ClipMesh {
 
 void showValue(const ClipMesh& m, std::ostream& os) {
   os << "target " << m.width << "x" << m.height << ", " << m.samples << " samples\n";
-  for (std::size_t i = 0; i < m.vertices.size(); ++i) os << "  v" << i << " " << pg::fs(m.vertices[i]) << "\n";
-  for (const auto& t : m.triangles) os << "  tri " << t[0] << " " << t[1] << " " << t[2] << "\n";
+  for (std::size_t i = 0; i < m.vertices.size(); ++i)
+    os << "  v" << i << " " << pg::fs(m.vertices[i]) << "\n";
+  for (const auto& t : m.triangles)
+    os << "  tri " << t[0] << " " << t[1] << " " << t[2] << "\n";
 }
 
 // NDC coordinates of the grid lines: near the view, or far outside the guard band.
@@ -96,15 +98,18 @@ rc::Gen<ClipMesh> clip_mesh() {
           const float w = *rc::gen::element(1.0f, 0.5f, 2.0f, 4.0f, 0.25f, 1.5f);
           const float s = static_cast<float>(i) / static_cast<float>(nx);
           const float t = static_cast<float>(j) / static_cast<float>(ny);
-          const float zn = a + b * s + c * t + static_cast<float>(*rc::gen::inRange(-8, 9)) / 256.0f;
+          const float zn =
+              a + b * s + c * t + static_cast<float>(*rc::gen::inRange(-8, 9)) / 256.0f;
           m.vertices.push_back(kp::Vec4f{u[i] * w, v[j] * w, zn * w, w});
         }
       }
     } else {
       const auto coord = [] { return static_cast<float>(*rc::gen::inRange(-1024, 1025)) / 256.0f; };
       std::vector<float> xs, ys;
-      for (std::size_t i = 0; i <= nx; ++i) xs.push_back(coord());
-      for (std::size_t j = 0; j <= ny; ++j) ys.push_back(coord());
+      for (std::size_t i = 0; i <= nx; ++i)
+        xs.push_back(coord());
+      for (std::size_t j = 0; j <= ny; ++j)
+        ys.push_back(coord());
       std::sort(xs.begin(), xs.end());
       std::sort(ys.begin(), ys.end());
       RC_PRE(std::adjacent_find(xs.begin(), xs.end()) == xs.end());
@@ -124,7 +129,8 @@ rc::Gen<ClipMesh> clip_mesh() {
     const auto id = [nx](std::size_t i, std::size_t j) { return j * (nx + 1) + i; };
     for (std::size_t j = 0; j < ny; ++j) {
       for (std::size_t i = 0; i < nx; ++i) {
-        const std::size_t p00 = id(i, j), p10 = id(i + 1, j), p01 = id(i, j + 1), p11 = id(i + 1, j + 1);
+        const std::size_t p00 = id(i, j), p10 = id(i + 1, j), p01 = id(i, j + 1),
+                          p11 = id(i + 1, j + 1);
         if (*rc::gen::arbitrary<bool>()) {
           m.triangles.push_back({p00, p10, p11});
           m.triangles.push_back({p00, p11, p01});
@@ -151,7 +157,8 @@ RC_GTEST_PROP(PipeWatertight, ClippedMeshCoversEachSampleOnceInsideItsImage, ())
     s.primitives.push_back(p);
   }
   const auto res = kp::run_pipeline(s);
-  if (const auto* e = std::get_if<rastrules::SceneError>(&res)) RC_FAIL("rejected: " + e->what());
+  if (const auto* e = std::get_if<rastrules::SceneError>(&res))
+    RC_FAIL("rejected: " + e->what());
   const kp::PipeResult& r = std::get<kp::PipeResult>(res);
   // Coverage count per sample.
   const std::size_t n = m.samples;
@@ -159,7 +166,8 @@ RC_GTEST_PROP(PipeWatertight, ClippedMeshCoversEachSampleOnceInsideItsImage, ())
   std::vector<std::uint32_t> who(count.size(), 0);
   for (const rastrules::Fragment& f : r.fragments) {
     for (std::size_t k = 0; k < n; ++k) {
-      if ((f.mask & (1u << k)) == 0) continue;
+      if ((f.mask & (1u << k)) == 0)
+        continue;
       const std::size_t idx = (static_cast<std::size_t>(f.y * m.width + f.x)) * n + k;
       ++count[idx];
       who[idx] = f.prim;
@@ -170,7 +178,7 @@ RC_GTEST_PROP(PipeWatertight, ClippedMeshCoversEachSampleOnceInsideItsImage, ())
   const op::Viewport vp = ps::viewport_of(s);
   struct Poly {
     op::ExactRegion region;
-    std::vector<std::pair<std::size_t, std::size_t>> mesh_edge;  // per edge; (0, 0) on a plane
+    std::vector<std::pair<std::size_t, std::size_t>> mesh_edge; // per edge; (0, 0) on a plane
     std::vector<bool> boundary;
     std::array<std::int64_t, 4> box;
   };
@@ -195,14 +203,15 @@ RC_GTEST_PROP(PipeWatertight, ClippedMeshCoversEachSampleOnceInsideItsImage, ())
       }
       const auto k = static_cast<std::size_t>(o);
       edges.push_back(std::minmax(t[k], t[(k + 1) % 3]));
-      if (!seen[edges.back()]) ++kept[edges.back()];
+      if (!seen[edges.back()])
+        ++kept[edges.back()];
       seen[edges.back()] = true;
     }
     const auto box = region.bounds_raw();
     polys.push_back(Poly{std::move(region), std::move(edges), {}, box});
   }
   const std::pair<std::size_t, std::size_t> plane{0, 0};
-  bool cut_shared = false;  // a plane cuts an edge two triangles share: where cracks would be
+  bool cut_shared = false; // a plane cuts an edge two triangles share: where cracks would be
   for (Poly& p : polys) {
     const std::size_t ne = p.mesh_edge.size();
     for (std::size_t e = 0; e < ne; ++e) {
@@ -222,18 +231,23 @@ RC_GTEST_PROP(PipeWatertight, ClippedMeshCoversEachSampleOnceInsideItsImage, ())
         const op::Raw2 smp = ps::offset_raw(x, y, pattern[k]);
         const std::string at = "sample " + std::to_string(k) + " of pixel (" + std::to_string(x) +
                                ", " + std::to_string(y) + ") at raw " + pg::rs(smp);
-        if (count[idx] > 1) RC_FAIL(at + " covered " + std::to_string(count[idx]) + " times");
+        if (count[idx] > 1)
+          RC_FAIL(at + " covered " + std::to_string(count[idx]) + " times");
         bool near_boundary = false, in_image = false, near_shared = false;
         for (const Poly& p : polys) {
           if (smp[0] < p.box[0] - kNearRaw || smp[0] > p.box[2] + kNearRaw ||
               smp[1] < p.box[1] - kNearRaw || smp[1] > p.box[3] + kNearRaw)
             continue;
           for (std::size_t e = 0; e < p.boundary.size(); ++e) {
-            if (!p.region.near_edge(smp, kNearRaw, e)) continue;
-            if (p.boundary[e]) near_boundary = true;
-            else in_image = near_shared = true;  // near a shared edge, away from the boundary
+            if (!p.region.near_edge(smp, kNearRaw, e))
+              continue;
+            if (p.boundary[e])
+              near_boundary = true;
+            else
+              in_image = near_shared = true; // near a shared edge, away from the boundary
           }
-          if (p.region.strictly_inside(smp)) in_image = true;
+          if (p.region.strictly_inside(smp))
+            in_image = true;
         }
         if (near_boundary) {
           ++near;
@@ -243,9 +257,11 @@ RC_GTEST_PROP(PipeWatertight, ClippedMeshCoversEachSampleOnceInsideItsImage, ())
         shared += near_shared ? 1 : 0;
         const int want = in_image ? 1 : 0;
         if (count[idx] != want)
-          RC_FAIL(at + (in_image ? " inside" : " outside") + " the mesh's exact image (farther than "
-                  "1/32 px from its boundary) but covered " + std::to_string(count[idx]) +
-                  " times" + (count[idx] ? " (by triangle " + std::to_string(who[idx]) + ")" : ""));
+          RC_FAIL(at + (in_image ? " inside" : " outside") +
+                  " the mesh's exact image (farther than "
+                  "1/32 px from its boundary) but covered " +
+                  std::to_string(count[idx]) + " times" +
+                  (count[idx] ? " (by triangle " + std::to_string(who[idx]) + ")" : ""));
       }
     }
   }
@@ -255,4 +271,4 @@ RC_GTEST_PROP(PipeWatertight, ClippedMeshCoversEachSampleOnceInsideItsImage, ())
   RC_CLASSIFY(cut_shared && shared > 0, "samples near shared edges cut by a plane");
 }
 
-}  // namespace
+} // namespace

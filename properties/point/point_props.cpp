@@ -30,10 +30,12 @@ namespace gen = rastrules::gen;
 namespace oracle = rastrules::oracle;
 using rastrules::Vec2;
 
-constexpr std::int32_t kSide = 8;  // target side for the window properties
+constexpr std::int32_t kSide = 8; // target side for the window properties
 
 // The fill convention spelled as in spec/scene.md, for the string-typed oracle.
-std::string fill_name(rastrules::FillConvention f) { return std::string(rastrules::to_string(f)); }
+std::string fill_name(rastrules::FillConvention f) {
+  return std::string(rastrules::to_string(f));
+}
 
 Vec2 raw(std::int64_t x, std::int64_t y) {
   return Vec2{rastrules::Subpixel::from_raw(static_cast<std::int32_t>(x)),
@@ -44,24 +46,31 @@ Vec2 raw(std::int64_t x, std::int64_t y) {
 enum class Tie { kOnCentre, kOnEdge, kNearCentre, kNearEdge, kAny };
 const char* tie_name(Tie t) {
   switch (t) {
-    case Tie::kOnCentre: return "on a pixel centre";
-    case Tie::kOnEdge: return "on a pixel edge";
-    case Tie::kNearCentre: return "1 raw off a centre";
-    case Tie::kNearEdge: return "1 raw off an edge";
-    case Tie::kAny: return "anywhere";
+  case Tie::kOnCentre:
+    return "on a pixel centre";
+  case Tie::kOnEdge:
+    return "on a pixel edge";
+  case Tie::kNearCentre:
+    return "1 raw off a centre";
+  case Tie::kNearEdge:
+    return "1 raw off an edge";
+  case Tie::kAny:
+    return "anywhere";
   }
   return "?";
 }
 
 // The tie class of a centre, for the RapidCheck classification output.
 std::string centre_class(Tie x, Tie y) {
-  if (x == Tie::kOnCentre && y == Tie::kOnCentre) return "centre on a pixel centre";
-  if (x == Tie::kOnEdge && y == Tie::kOnEdge) return "centre on a pixel corner";
+  if (x == Tie::kOnCentre && y == Tie::kOnCentre)
+    return "centre on a pixel centre";
+  if (x == Tie::kOnEdge && y == Tie::kOnEdge)
+    return "centre on a pixel corner";
   if ((x == Tie::kOnEdge && y == Tie::kOnCentre) || (x == Tie::kOnCentre && y == Tie::kOnEdge))
     return "centre half-way between two pixel centres";
-  if (x == Tie::kOnEdge || y == Tie::kOnEdge) return "square side through pixel centres";
-  if (x == Tie::kNearCentre || x == Tie::kNearEdge || y == Tie::kNearCentre ||
-      y == Tie::kNearEdge)
+  if (x == Tie::kOnEdge || y == Tie::kOnEdge)
+    return "square side through pixel centres";
+  if (x == Tie::kNearCentre || x == Tie::kNearEdge || y == Tie::kNearCentre || y == Tie::kNearEdge)
     return "1 raw off a tie";
   return std::string("x ") + tie_name(x) + ", y " + tie_name(y);
 }
@@ -80,11 +89,16 @@ rc::Gen<Coord> coord(std::int64_t lo_px, std::int64_t hi_px) {
                           const std::int64_t base = p.first * 256;
                           const std::int64_t sign = (p.second % 2 == 0) ? 1 : -1;
                           switch (kind) {
-                            case 0: return Coord{base + 128, Tie::kOnCentre};
-                            case 1: return Coord{base, Tie::kOnEdge};
-                            case 2: return Coord{base + 128 + sign, Tie::kNearCentre};
-                            case 3: return Coord{base + sign, Tie::kNearEdge};
-                            default: return Coord{base + p.second, Tie::kAny};
+                          case 0:
+                            return Coord{base + 128, Tie::kOnCentre};
+                          case 1:
+                            return Coord{base, Tie::kOnEdge};
+                          case 2:
+                            return Coord{base + 128 + sign, Tie::kNearCentre};
+                          case 3:
+                            return Coord{base + sign, Tie::kNearEdge};
+                          default:
+                            return Coord{base + p.second, Tie::kAny};
                           }
                         });
   });
@@ -94,7 +108,7 @@ rc::Gen<Coord> coord(std::int64_t lo_px, std::int64_t hi_px) {
 RC_GTEST_PROP(PointCover, PointPathEqualsTrianglePathEqualsExactSquare, ()) {
   const Coord cx = *coord(-1, kSide);
   const Coord cy = *coord(-1, kSide);
-  const rastrules::RasterState state = *gen::raster_state();  // any cull mode: must not matter
+  const rastrules::RasterState state = *gen::raster_state(); // any cull mode: must not matter
   RC_TAG(centre_class(cx.tie, cy.tie));
   const Vec2 c = raw(cx.raw, cy.raw);
 
@@ -102,8 +116,9 @@ RC_GTEST_PROP(PointCover, PointPathEqualsTrianglePathEqualsExactSquare, ()) {
   std::map<std::pair<int, int>, int> hits;
   for (const rastrules::TriangleSetup& t : rastrules::setup_point(c, state)) {
     RC_ASSERT(t.status == rastrules::TriangleStatus::kRasterized);
-    rastrules::raster::walk_triangle(t, kSide, kSide,
-                                     [&](std::int32_t x, std::int32_t y) { ++hits[{x, y}]; });
+    rastrules::raster::walk_triangle(t, kSide, kSide, [&](std::int32_t x, std::int32_t y) {
+      ++hits[{x, y}];
+    });
   }
   // Kernel triangle path: the two triangles set up as ordinary triangles with culling off.
   rastrules::RasterState no_cull = state;
@@ -118,8 +133,8 @@ RC_GTEST_PROP(PointCover, PointPathEqualsTrianglePathEqualsExactSquare, ()) {
       const int by_triangles = int(rastrules::covers(t0, s)) + int(rastrules::covers(t1, s));
       const auto it = hits.find({x, y});
       const int by_point = it == hits.end() ? 0 : it->second;
-      const bool exact = oracle::point_covers({cx.raw, cy.raw}, {s.x.raw(), s.y.raw()},
-                                              fill_name(state.fill));
+      const bool exact =
+          oracle::point_covers({cx.raw, cy.raw}, {s.x.raw(), s.y.raw()}, fill_name(state.fill));
       RC_ASSERT(by_triangles <= 1);
       RC_ASSERT(by_point == by_triangles);
       RC_ASSERT((by_point == 1) == exact);
@@ -139,8 +154,8 @@ RC_GTEST_PROP(PointCover, AnywhereInRangeSamplesNearTheSquareFollowTheExactSquar
   const std::int64_t cx = *anywhere;
   const std::int64_t cy = *anywhere;
   const rastrules::FillConvention fill = *gen::fill_convention();
-  const auto setups = rastrules::setup_point(raw(cx, cy), {rastrules::CullMode::kNone,
-                                                           rastrules::FrontFace::kClockwise, fill});
+  const auto setups = rastrules::setup_point(
+      raw(cx, cy), {rastrules::CullMode::kNone, rastrules::FrontFace::kClockwise, fill});
   // Samples of the 16.8 grid on and around the square's sides and corners (any sample is a
   // valid sample position, not only pixel centres).
   for (const std::int64_t ox : {-129, -128, -127, -1, 0, 1, 127, 128, 129}) {
@@ -179,8 +194,10 @@ RC_GTEST_PROP(PointInvariance, WholePixelTranslationMovesTheCoveredPixel, ()) {
 // rule: POINT.RANGE
 RC_GTEST_PROP(PointRange, KernelRangeTestEqualsTheSpecRangeInPixels, ()) {
   const auto near_limit = rc::gen::weightedOneOf<std::int64_t>(
-      {{1, rc::gen::inRange<std::int64_t>(rastrules::kMinVertexRaw - 300, rastrules::kMinVertexRaw + 300)},
-       {1, rc::gen::inRange<std::int64_t>(rastrules::kMaxVertexRaw - 300, rastrules::kMaxVertexRaw + 300)},
+      {{1, rc::gen::inRange<std::int64_t>(rastrules::kMinVertexRaw - 300,
+                                          rastrules::kMinVertexRaw + 300)},
+       {1, rc::gen::inRange<std::int64_t>(rastrules::kMaxVertexRaw - 300,
+                                          rastrules::kMaxVertexRaw + 300)},
        {1, rc::gen::inRange<std::int64_t>(-100000, 100000)}});
   const std::int64_t x = *near_limit;
   const std::int64_t y = *near_limit;
@@ -190,4 +207,4 @@ RC_GTEST_PROP(PointRange, KernelRangeTestEqualsTheSpecRangeInPixels, ()) {
   RC_ASSERT(kernel == oracle::point_in_range({x, y}));
 }
 
-}  // namespace
+} // namespace

@@ -39,7 +39,8 @@ rc::Gen<mg::MsScene> scene() {
       s.derivatives = rastrules::DerivativeMode::kNone;
     }
     const auto more = *rc::gen::inRange(0, 21);
-    for (int i = 0; i < more; ++i) s.prims.push_back(*mg::prim(s.width, s.height, true, true));
+    for (int i = 0; i < more; ++i)
+      s.prims.push_back(*mg::prim(s.width, s.height, true, true));
     mg::make_valid(s);
     return s;
   });
@@ -74,4 +75,4 @@ RC_GTEST_PROP(ThreadsProps, AnyThreadCountGivesTheSingleThreadedFragments, ()) {
   }
 }
 
-}  // namespace
+} // namespace

@@ -21,23 +21,27 @@ using rastrules::test::TempDir;
 
 struct BadInput {
   std::string file;
-  std::string expected;  // substring of the error line
+  std::string expected; // substring of the error line
 };
 
 std::vector<BadInput> catalog() {
   std::vector<BadInput> cases;
   std::ifstream in(std::string(RASTRULES_BAD_INPUT_DIR) + "/expected.tsv");
   for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
+    if (line.empty() || line[0] == '#')
+      continue;
     const std::size_t tab = line.find('\t');
-    if (tab == std::string::npos) continue;
+    if (tab == std::string::npos)
+      continue;
     cases.push_back({line.substr(0, tab), line.substr(tab + 1)});
   }
   return cases;
 }
 
 // Test names show the catalog file (CTest's discovery puts the printed parameter in the name).
-void PrintTo(const BadInput& c, std::ostream* os) { *os << c.file; }
+void PrintTo(const BadInput& c, std::ostream* os) {
+  *os << c.file;
+}
 
 class BadInputCatalog : public testing::TestWithParam<BadInput> {};
 
@@ -46,7 +50,8 @@ void expect_one_error_line(const rastrules::test::RunResult& r, const std::strin
   const auto lines = r.err_lines();
   ASSERT_EQ(lines.size(), 1u) << r.err;
   EXPECT_EQ(lines[0].rfind("rastrules: error: ", 0), 0u) << lines[0];
-  EXPECT_NE(lines[0].find(expected), std::string::npos) << "expected \"" << expected << "\" in: " << lines[0];
+  EXPECT_NE(lines[0].find(expected), std::string::npos)
+      << "expected \"" << expected << "\" in: " << lines[0];
   EXPECT_EQ(r.err.back(), '\n');
 }
 
@@ -56,8 +61,8 @@ TEST_P(BadInputCatalog, RenderFailsWithOneLineAndWritesNothing) {
   const TempDir dir;
   const auto scene = std::filesystem::path(RASTRULES_BAD_INPUT_DIR) / c.file;
   ASSERT_TRUE(std::filesystem::exists(scene)) << scene;
-  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(), "--png",
-                          (dir / "out.png").string()});
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(),
+                          "--png", (dir / "out.png").string()});
   expect_one_error_line(r, c.expected);
   EXPECT_EQ(r.out, "");
   EXPECT_TRUE(std::filesystem::is_empty(dir.path())) << "an output file was left in " << dir.path();
@@ -85,7 +90,8 @@ TEST(BadInputCatalogFiles, EveryCatalogFileHasAnExpectedMessageAndNoneIsMissing)
     EXPECT_FALSE(c.expected.empty()) << c.file;
   }
   for (const auto& e : std::filesystem::directory_iterator(RASTRULES_BAD_INPUT_DIR)) {
-    if (e.path().extension() == ".json") present.insert(e.path().filename().string());
+    if (e.path().extension() == ".json")
+      present.insert(e.path().filename().string());
   }
   EXPECT_EQ(listed, present);
   EXPECT_GE(listed.size(), 40u);
@@ -98,7 +104,8 @@ TEST(BadInput, FilesLargerThanTheLimitAreRefusedBeforeParsing) {
   {
     std::ofstream out(big, std::ios::binary);
     const std::string chunk(1 << 20, ' ');
-    for (int i = 0; i < 65; ++i) out << chunk;  // 65 MiB of whitespace
+    for (int i = 0; i < 65; ++i)
+      out << chunk; // 65 MiB of whitespace
   }
   const auto r = run_cli({"render", big.string(), "--fragments", (dir / "out.json").string()});
   expect_one_error_line(r, "is larger than 64 MiB");
@@ -108,9 +115,10 @@ TEST(BadInput, FilesLargerThanTheLimitAreRefusedBeforeParsing) {
 // rule: SCENE.INPUT.ERRORS
 TEST(BadInput, MissingSceneFileIsReported) {
   const TempDir dir;
-  const auto r = run_cli({"render", (dir / "nope.json").string(), "--fragments", (dir / "out.json").string()});
+  const auto r =
+      run_cli({"render", (dir / "nope.json").string(), "--fragments", (dir / "out.json").string()});
   expect_one_error_line(r, "nope.json: cannot open");
   EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
 }
 
-}  // namespace
+} // namespace

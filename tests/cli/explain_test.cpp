@@ -36,11 +36,13 @@ TEST(CliExplain, NamesTheTopLeftRuleForACentreOnASharedDiagonal) {
   EXPECT_TRUE(contains(out, "E at the centre = 65536 raw = 1 px^2")) << out;
   EXPECT_TRUE(contains(out, "E at the centre = 196608 raw = 3 px^2")) << out;
   EXPECT_TRUE(contains(out, "TRI.FILL.TOP_LEFT: E == 0 on a left edge -> inside")) << out;
-  EXPECT_TRUE(contains(out, "TRI.FILL.TOP_LEFT: E == 0 on a right edge (neither top nor left) -> outside"))
+  EXPECT_TRUE(
+      contains(out, "TRI.FILL.TOP_LEFT: E == 0 on a right edge (neither top nor left) -> outside"))
       << out;
   EXPECT_TRUE(contains(out, "TRI.COVER.SAMPLE: inside all three edges -> covered")) << out;
   EXPECT_TRUE(contains(out, "v0 (1, 1) -> (1, 1) px = raw (256, 256)")) << out;
-  EXPECT_TRUE(contains(out, "twice signed area A = 262144 raw = 4 px^2: clockwise, front-facing")) << out;
+  EXPECT_TRUE(contains(out, "twice signed area A = 262144 raw = 4 px^2: clockwise, front-facing"))
+      << out;
   EXPECT_TRUE(contains(out, "pixel (1, 1): covered by primitive 0\n")) << out;
 }
 
@@ -50,7 +52,8 @@ TEST(CliExplain, VertexOnTheCentreIsInsideOnlyWhenBothEdgesAreTopOrLeft) {
   // has a top and a left edge there; the centre (3.5, 1.5) of pixel (3, 1), its top-right
   // vertex, lies on a top edge and a right edge.
   const TempDir dir;
-  const auto scene = dir.write("scene.json", R"({"target": {"width": 5, "height": 5}, "primitives": [
+  const auto scene =
+      dir.write("scene.json", R"({"target": {"width": 5, "height": 5}, "primitives": [
     {"type": "triangle", "v": [[1.5, 1.5], [3.5, 1.5], [1.5, 3.5]]}]})");
   const auto a = run_cli({"explain", scene.string(), "--pixel", "1,1"});
   ASSERT_EQ(a.status, 0) << a.err;
@@ -59,7 +62,8 @@ TEST(CliExplain, VertexOnTheCentreIsInsideOnlyWhenBothEdgesAreTopOrLeft) {
   EXPECT_TRUE(contains(a.out, "covered by primitive 0")) << a.out;
   const auto b = run_cli({"explain", scene.string(), "--pixel", "3,1"});
   ASSERT_EQ(b.status, 0) << b.err;
-  EXPECT_TRUE(contains(b.out, "TRI.FILL.TOP_LEFT: E == 0 on a right edge (neither top nor left) -> outside"))
+  EXPECT_TRUE(contains(
+      b.out, "TRI.FILL.TOP_LEFT: E == 0 on a right edge (neither top nor left) -> outside"))
       << b.out;
   EXPECT_TRUE(contains(b.out, "covered by no primitive")) << b.out;
 }
@@ -67,11 +71,14 @@ TEST(CliExplain, VertexOnTheCentreIsInsideOnlyWhenBothEdgesAreTopOrLeft) {
 // rule: TRI.FILL.CONVENTION
 TEST(CliExplain, OtherFillConventionsAreNamed) {
   const TempDir dir;
-  const auto scene = dir.write("scene.json", R"({"target": {"width": 4, "height": 4}, "fill": "top-right",
+  const auto scene =
+      dir.write("scene.json", R"({"target": {"width": 4, "height": 4}, "fill": "top-right",
     "primitives": [{"type": "triangle", "v": [[1, 1], [3, 1], [3, 3]]}]})");
   const auto r = run_cli({"explain", scene.string(), "--pixel", "1,1"});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_TRUE(contains(r.out, "TRI.FILL.CONVENTION: E == 0 on a left edge, not inclusive under top-right -> outside"))
+  EXPECT_TRUE(contains(
+      r.out,
+      "TRI.FILL.CONVENTION: E == 0 on a left edge, not inclusive under top-right -> outside"))
       << r.out;
   EXPECT_TRUE(contains(r.out, "covered by no primitive")) << r.out;
 }
@@ -81,16 +88,19 @@ TEST(CliExplain, CulledAndDegenerateTrianglesSayWhy) {
   const TempDir dir;
   // Primitive 0 is counter-clockwise (back-facing, culled); primitive 1 has a non-zero area
   // as floats but collinear snapped vertices (y = 1.001 and 1.0019 both snap to raw 256).
-  const auto scene = dir.write("scene.json", R"({"target": {"width": 4, "height": 4}, "cull": "back",
+  const auto scene =
+      dir.write("scene.json", R"({"target": {"width": 4, "height": 4}, "cull": "back",
     "primitives": [
       {"type": "triangle", "v": [[0, 0], [0, 4], [4, 0]]},
       {"type": "triangle", "v": [[0, 1], [2, 1.001], [4, 1.0019]]}]})");
   const auto r = run_cli({"explain", scene.string(), "--pixel", "0,0"});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_TRUE(contains(r.out, "TRI.CULL.MODE: back-facing (counter-clockwise on screen, front face cw) and cull back -> culled"))
+  EXPECT_TRUE(contains(r.out, "TRI.CULL.MODE: back-facing (counter-clockwise on screen, front face "
+                              "cw) and cull back -> culled"))
       << r.out;
   EXPECT_TRUE(contains(r.out, "(without culling the centre would be inside)")) << r.out;
-  EXPECT_TRUE(contains(r.out, "TRI.DEGENERATE.ZERO_AREA: A == 0 after snapping -> covers nothing")) << r.out;
+  EXPECT_TRUE(contains(r.out, "TRI.DEGENERATE.ZERO_AREA: A == 0 after snapping -> covers nothing"))
+      << r.out;
   EXPECT_TRUE(contains(r.out, "covered by no primitive")) << r.out;
 }
 
@@ -99,11 +109,13 @@ TEST(CliExplain, ShowsTheFloat32InputAndItsSnappedValue) {
   // 16384 + 1/256 + 1/1024 + 1e-20 becomes the float32 16384 + 3/512 (raw 4194305.5), which
   // snaps to the even 4194306; a detour through double would give 4194305.
   const TempDir dir;
-  const auto scene = dir.write("scene.json", R"({"target": {"width": 2, "height": 2}, "primitives": [
+  const auto scene =
+      dir.write("scene.json", R"({"target": {"width": 2, "height": 2}, "primitives": [
     {"type": "triangle", "v": [[16384.00488281250000000001, 0], [0, 0], [0, 1]]}]})");
   const auto r = run_cli({"explain", scene.string(), "--pixel", "0,0"});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_TRUE(contains(r.out, "v0 (16384.006, 0) -> (16384.0078125, 0) px = raw (4194306, 0)")) << r.out;
+  EXPECT_TRUE(contains(r.out, "v0 (16384.006, 0) -> (16384.0078125, 0) px = raw (4194306, 0)"))
+      << r.out;
 }
 
 TEST(CliExplain, JsonOutputCarriesTheSameDecisions) {
@@ -132,7 +144,8 @@ TEST(CliExplain, PixelOutsideTheTargetIsBadInput) {
   const auto r = run_cli({"explain", scene.string(), "--pixel", "4,0"});
   EXPECT_EQ(r.status, 2);
   ASSERT_EQ(r.err_lines().size(), 1u) << r.err;
-  EXPECT_TRUE(contains(r.err, "rastrules: error: --pixel: (4, 0) is outside the 4x4 target")) << r.err;
+  EXPECT_TRUE(contains(r.err, "rastrules: error: --pixel: (4, 0) is outside the 4x4 target"))
+      << r.err;
   EXPECT_EQ(r.out, "");
 }
 
@@ -148,4 +161,4 @@ TEST(CliExplain, MalformedPixelIsAUsageError) {
   }
 }
 
-}  // namespace
+} // namespace

@@ -23,11 +23,13 @@ const char* kTieScene = R"({"version": 1, "target": {"width": 1, "height": 1},
 TEST(CliFuzz, FindingsWriteReproducerPictureAndReportAndExitWith1) {
   TempDir dir;
   const auto out = dir / "out";
-  const RunResult r = run_cli({"fuzz", "--driver", "imprecise:fill-bottom-right", "--cases", "40", "--seed", "1", "--out", out.string()});
+  const RunResult r = run_cli({"fuzz", "--driver", "imprecise:fill-bottom-right", "--cases", "40",
+                               "--seed", "1", "--out", out.string()});
   ASSERT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.out.find("| cases"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("cases/s"), std::string::npos);
-  EXPECT_EQ(r.err.find("["), std::string::npos) << "no progress bar when standard error is not a terminal";
+  EXPECT_EQ(r.err.find("["), std::string::npos)
+      << "no progress bar when standard error is not a terminal";
   const auto report = nlohmann::json::parse(read_file(out / "report.json"));
   EXPECT_EQ(report["driver"], "imprecise:fill-bottom-right");
   EXPECT_EQ(report["profile"], "d3d11");
@@ -53,17 +55,26 @@ TEST(CliFuzz, FindingsWriteReproducerPictureAndReportAndExitWith1) {
 TEST(CliFuzz, CheckReportsTheLegalConventionUnderVulkan) {
   TempDir dir;
   const auto scene = dir.write("tie.json", kTieScene);
-  EXPECT_EQ(run_cli({"check", scene.string(), "--driver", "imprecise:fill-bottom-right"}).status, 1);
-  const RunResult legal = run_cli({"check", scene.string(), "--driver", "imprecise:fill-bottom-right", "--profile", "vulkan", "--mode", "legal"});
+  EXPECT_EQ(run_cli({"check", scene.string(), "--driver", "imprecise:fill-bottom-right"}).status,
+            1);
+  const RunResult legal =
+      run_cli({"check", scene.string(), "--driver", "imprecise:fill-bottom-right", "--profile",
+               "vulkan", "--mode", "legal"});
   EXPECT_EQ(legal.status, 0) << legal.err;
   EXPECT_NE(legal.out.find("bottom-right 1"), std::string::npos) << legal.out;
-  EXPECT_EQ(run_cli({"check", scene.string(), "--driver", "imprecise:fill-bottom-right", "--profile", "d3d11", "--mode", "legal"}).status, 1);
+  EXPECT_EQ(run_cli({"check", scene.string(), "--driver", "imprecise:fill-bottom-right",
+                     "--profile", "d3d11", "--mode", "legal"})
+                .status,
+            1);
 }
 
 // rule: FUZZ.REPORT
 TEST(CliFuzz, ReferenceFindsNothingAndExternalRenderIsAConformingDriver) {
-  EXPECT_EQ(run_cli({"fuzz", "--driver", "reference", "--cases", "50", "--profile", "vulkan"}).status, 0);
-  const RunResult ext = run_cli({"fuzz", "--driver", std::string("external:") + RASTRULES_CLI + " render - --fragments -", "--cases", "10"});
+  EXPECT_EQ(
+      run_cli({"fuzz", "--driver", "reference", "--cases", "50", "--profile", "vulkan"}).status, 0);
+  const RunResult ext = run_cli(
+      {"fuzz", "--driver", std::string("external:") + RASTRULES_CLI + " render - --fragments -",
+       "--cases", "10"});
   EXPECT_EQ(ext.status, 0) << ext.err;
   EXPECT_NE(ext.out.find("no difference"), std::string::npos);
 }
@@ -104,5 +115,5 @@ TEST(CliFuzz, BadUsageAndDriverFailuresExitWith2) {
   }
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

@@ -27,7 +27,8 @@ void expect_one_error_line(const rastrules::test::RunResult& r, const std::strin
   const auto lines = r.err_lines();
   ASSERT_EQ(lines.size(), 1u) << r.err.substr(0, 2000);
   EXPECT_EQ(lines[0].rfind("rastrules: error: ", 0), 0u) << lines[0];
-  EXPECT_NE(lines[0].find(expected), std::string::npos) << "expected \"" << expected << "\" in: " << lines[0];
+  EXPECT_NE(lines[0].find(expected), std::string::npos)
+      << "expected \"" << expected << "\" in: " << lines[0];
 }
 
 std::string head(int w, int h) {
@@ -70,19 +71,21 @@ TEST(Limits, FileOfExactlyTheSizeLimitIsReadAndOneByteMoreIsRefused) {
 
   const auto over = dir.write("over.json", pad + " " + scene);
   const auto r = run_cli({"render", over.string(), "--fragments", (dir / "out.json").string()});
-  expect_one_error_line(r, "is larger than 64 MiB, the largest scene file accepted (limit SCENE.INPUT.LIMITS)");
+  expect_one_error_line(
+      r, "is larger than 64 MiB, the largest scene file accepted (limit SCENE.INPUT.LIMITS)");
   EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
 }
 
 // rule: SCENE.INPUT.LIMITS
 TEST(Limits, PrimitiveCountLimitAcceptsTheLimitAndRefusesOneMore) {
   const auto at = io::read_scene(many_points(io::kMaxScenePrimitives));
-  ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(at)) << std::get<rastrules::SceneError>(at).what();
+  ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(at))
+      << std::get<rastrules::SceneError>(at).what();
   EXPECT_EQ(std::get<rastrules::Scene>(at).primitives.size(), io::kMaxScenePrimitives);
 
   const TempDir dir;
   const auto over = dir.write("over.json", many_points(io::kMaxScenePrimitives + 1));
-  ASSERT_LT(std::filesystem::file_size(over), io::kMaxSceneBytes);  // the count, not the size, fails
+  ASSERT_LT(std::filesystem::file_size(over), io::kMaxSceneBytes); // the count, not the size, fails
   const auto r = run_cli({"render", over.string(), "--fragments", (dir / "out.json").string()});
   expect_one_error_line(r, "primitives: more than 1048576 primitives (limit SCENE.INPUT.LIMITS)");
   EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
@@ -98,7 +101,8 @@ TEST(Limits, StripVertexLimitAcceptsTheLimitAndRefusesOneMore) {
 
   const auto over = dir.write("over.json", long_strip(io::kMaxStripVertices + 1));
   const auto r = run_cli({"render", over.string(), "--fragments", (dir / "out.json").string()});
-  expect_one_error_line(r, "primitives[0].v: more than 65536 vertices in one primitive (limit SCENE.INPUT.LIMITS)");
+  expect_one_error_line(
+      r, "primitives[0].v: more than 65536 vertices in one primitive (limit SCENE.INPUT.LIMITS)");
   EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
 }
 
@@ -111,7 +115,8 @@ TEST(Limits, NestingDeeperThanTheFormatStopsAtTheFirstExtraLevel) {
   const auto r = io::read_scene(text);
   ASSERT_TRUE(std::holds_alternative<rastrules::SceneError>(r));
   EXPECT_EQ(std::get<rastrules::SceneError>(r).what(),
-            "primitives[0].v[0][0]: must be a number, \"NaN\", \"Infinity\" or \"-Infinity\", got an array");
+            "primitives[0].v[0][0]: must be a number, \"NaN\", \"Infinity\" or \"-Infinity\", got "
+            "an array");
   EXPECT_EQ(io::kMaxSceneNesting, 5u);
 }
 
@@ -119,23 +124,25 @@ TEST(Limits, NestingDeeperThanTheFormatStopsAtTheFirstExtraLevel) {
 TEST(Limits, FragmentLimitIsExactAndLeavesNoOutput) {
   const TempDir dir;
   // Two triangles covering the 16x8 target: 128 fragments.
-  const auto scene = dir.write("full.json", head(16, 8) +
-                                                "{\"type\": \"triangle\", \"v\": [[0,0],[16,0],[0,8]]},"
-                                                "{\"type\": \"triangle\", \"v\": [[16,0],[16,8],[0,8]]}]}");
+  const auto scene = dir.write(
+      "full.json", head(16, 8) + "{\"type\": \"triangle\", \"v\": [[0,0],[16,0],[0,8]]},"
+                                 "{\"type\": \"triangle\", \"v\": [[16,0],[16,8],[0,8]]}]}");
   const auto ok = run_cli({"render", scene.string(), "--fragments", (dir / "ok.json").string(),
                            "--max-fragments", "128"});
   EXPECT_EQ(ok.status, 0) << ok.err;
   EXPECT_NE(ok.out.find("128 fragments"), std::string::npos) << ok.out;
 
-  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(), "--png",
-                          (dir / "out.png").string(), "--max-fragments=127"});
-  expect_one_error_line(r, "render: more than 127 fragments (limit SCENE.INPUT.LIMITS); raise it with --max-fragments N");
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(),
+                          "--png", (dir / "out.png").string(), "--max-fragments=127"});
+  expect_one_error_line(r, "render: more than 127 fragments (limit SCENE.INPUT.LIMITS); raise it "
+                           "with --max-fragments N");
   EXPECT_EQ(r.out, "");
   EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
   EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
   std::size_t files = 0;
-  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++files;
-  EXPECT_EQ(files, 2u);  // full.json and ok.json: no temporary file left behind
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path()))
+    ++files;
+  EXPECT_EQ(files, 2u); // full.json and ok.json: no temporary file left behind
 }
 
 // rule: SCENE.INPUT.LIMITS
@@ -143,8 +150,9 @@ TEST(Limits, FragmentLimitStopsAHugeRenderEarly) {
   // A full-screen triangle on the largest target has 2^28 fragments; the limit stops the
   // traversal at the first fragment beyond it instead of walking (and writing) them all.
   const TempDir dir;
-  const auto scene = dir.write("huge.json", head(16384, 16384) +
-                                                "{\"type\": \"triangle\", \"v\": [[0,0],[32000,0],[0,32000]]}]}");
+  const auto scene =
+      dir.write("huge.json", head(16384, 16384) +
+                                 "{\"type\": \"triangle\", \"v\": [[0,0],[32000,0],[0,32000]]}]}");
   const auto start = std::chrono::steady_clock::now();
   const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(),
                           "--max-fragments", "100000"});
@@ -169,9 +177,10 @@ TEST(Limits, CollectedPrimitivesAreBoundedBeforeTheyAreSorted) {
   const auto scene = dir.write("strip.json", head(1024, 1024) + strip);
   const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(),
                           "--max-fragments", "1000"});
-  expect_one_error_line(r, "render: primitives[0] touches more than 2000 pixels or fragments that must be held "
-                           "to be sorted (limit SCENE.INPUT.LIMITS, 2 x --max-fragments); raise it with "
-                           "--max-fragments N");
+  expect_one_error_line(
+      r, "render: primitives[0] touches more than 2000 pixels or fragments that must be held "
+         "to be sorted (limit SCENE.INPUT.LIMITS, 2 x --max-fragments); raise it with "
+         "--max-fragments N");
   EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
   const auto ok = run_cli({"render", scene.string(), "--fragments", (dir / "ok.json").string(),
                            "--max-fragments", "100000"});
@@ -185,10 +194,9 @@ TEST(Limits, CollectedPrimitivesAreBoundedBeforeTheyAreSorted) {
 TEST(Limits, TouchedPixelsOfAMaskedPrimitiveCountAgainstTheBound) {
   const TempDir dir;
   const auto scene = dir.write(
-      "sliver.json",
-      "{\"target\": {\"width\": 64, \"height\": 4}, \"samples\": 2, "
-      "\"sample_pattern\": [[-8, -8], [7, 7]], \"sample_mask\": 1, \"primitives\": ["
-      "{\"type\": \"triangle\", \"v\": [[0, 0.9], [64, 0.9], [0, 1.0]]}]}");
+      "sliver.json", "{\"target\": {\"width\": 64, \"height\": 4}, \"samples\": 2, "
+                     "\"sample_pattern\": [[-8, -8], [7, 7]], \"sample_mask\": 1, \"primitives\": ["
+                     "{\"type\": \"triangle\", \"v\": [[0, 0.9], [64, 0.9], [0, 1.0]]}]}");
   const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(),
                           "--max-fragments", "10"});
   EXPECT_EQ(r.status, 2) << r.err;
@@ -214,9 +222,10 @@ TEST(Limits, MaxFragmentsNeedsAPositiveInteger) {
     const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "o.json").string(),
                             "--max-fragments", bad});
     EXPECT_EQ(r.status, 2) << bad;
-    EXPECT_NE(r.err.find("--max-fragments needs an integer in [1, 2^40]"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--max-fragments needs an integer in [1, 2^40]"), std::string::npos)
+        << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "o.json"));
   }
 }
 
-}  // namespace
+} // namespace

@@ -29,7 +29,8 @@ using rastrules::test::read_file;
 using rastrules::test::run_cli;
 using rastrules::test::TempDir;
 
-constexpr const char* kTriangle = R"("primitives": [{"type": "triangle", "v": [[0, 0], [2, 0], [0, 2]]}]})";
+constexpr const char* kTriangle =
+    R"("primitives": [{"type": "triangle", "v": [[0, 0], [2, 0], [0, 2]]}]})";
 
 std::string scene(const std::string& keys) {
   return R"({"target": {"width": 2, "height": 2}, "samples": 4, )" + keys + kTriangle;
@@ -51,7 +52,8 @@ TEST(CliMsaaSceneIo, ReadsEveryKeyIntoTheScene) {
           "sample_mask": 5, "centroid": "d3d10", "shading": "sample", "quads": true,
           "derivatives": "coarse", "clear_color": [1, 2, 3, 4],
           "primitives": [{"type": "point", "v": [[1, 1]], "color": [10, 20, 30, 40]}]})");
-  ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(read)) << std::get<rastrules::SceneError>(read).what();
+  ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(read))
+      << std::get<rastrules::SceneError>(read).what();
   const rastrules::Scene& s = std::get<rastrules::Scene>(read);
   EXPECT_EQ(s.msaa.pattern.kind, rastrules::PatternKind::kCustom);
   ASSERT_EQ(s.msaa.pattern.count(), 3u);
@@ -78,7 +80,8 @@ TEST(CliMsaaSceneIo, SamplesAndPatternNameInEitherOrder) {
   ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(b));
   EXPECT_EQ(std::get<rastrules::Scene>(b).msaa.pattern, rastrules::standard_pattern(16));
   // Without the keys: one sample at the centre, all samples in the mask, white primitives.
-  const auto c = rastrules::io::read_scene(R"({"target": {"width": 1, "height": 1}, )" + std::string(kTriangle));
+  const auto c = rastrules::io::read_scene(R"({"target": {"width": 1, "height": 1}, )" +
+                                           std::string(kTriangle));
   ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(c));
   const rastrules::Scene& sc = std::get<rastrules::Scene>(c);
   EXPECT_EQ(sc.msaa.pattern, rastrules::standard_pattern(1));
@@ -96,13 +99,15 @@ TEST(CliMsaaSceneIo, WriterRoundTripsTheKeysAndSameSceneComparesThem) {
   s.primitives.push_back(rastrules::make_triangle({{{0, 0}, {4, 0}, {0, 4}}}));
   // Defaults write no multisampling key at all.
   const std::string plain = rastrules::io::write_scene(s);
-  for (const char* key : {"samples", "sample_pattern", "sample_mask", "centroid", "shading", "quads",
-                          "derivatives", "clear_color", "color"}) {
-    EXPECT_EQ(plain.find(std::string("\"") + key + "\""), std::string::npos) << key << "\n" << plain;
+  for (const char* key : {"samples", "sample_pattern", "sample_mask", "centroid", "shading",
+                          "quads", "derivatives", "clear_color", "color"}) {
+    EXPECT_EQ(plain.find(std::string("\"") + key + "\""), std::string::npos) << key << "\n"
+                                                                             << plain;
   }
   auto round_trips = [](const rastrules::Scene& scene) {
     const auto back = rastrules::io::read_scene(rastrules::io::write_scene(scene));
-    if (!std::holds_alternative<rastrules::Scene>(back)) return false;
+    if (!std::holds_alternative<rastrules::Scene>(back))
+      return false;
     return rastrules::io::same_scene(std::get<rastrules::Scene>(back), scene);
   };
   std::vector<rastrules::Scene> variants;
@@ -114,7 +119,9 @@ TEST(CliMsaaSceneIo, WriterRoundTripsTheKeysAndSameSceneComparesThem) {
   variant([](rastrules::Scene& v) { v.msaa.pattern = rastrules::standard_pattern(4); });
   variant([](rastrules::Scene& v) { v.msaa.pattern = rastrules::center_pattern(2); });
   variant([](rastrules::Scene& v) { v.msaa.pattern = rastrules::center_pattern(1); });
-  variant([](rastrules::Scene& v) { v.msaa.pattern = rastrules::custom_pattern({{-8, -8}, {7, 7}}); });
+  variant([](rastrules::Scene& v) {
+    v.msaa.pattern = rastrules::custom_pattern({{-8, -8}, {7, 7}});
+  });
   variant([](rastrules::Scene& v) { v.msaa.pattern = rastrules::custom_pattern({{0, 0}}); });
   variant([](rastrules::Scene& v) { v.msaa.sample_mask = 0; });
   variant([](rastrules::Scene& v) { v.msaa.has_centroid = true; });
@@ -132,18 +139,18 @@ TEST(CliMsaaSceneIo, WriterRoundTripsTheKeysAndSameSceneComparesThem) {
     SCOPED_TRACE(rastrules::io::write_scene(variants[i]));
     EXPECT_TRUE(round_trips(variants[i]));
     EXPECT_FALSE(rastrules::io::same_scene(variants[i], s));
-    for (std::size_t j = 0; j < i; ++j) EXPECT_FALSE(rastrules::io::same_scene(variants[i], variants[j])) << j;
+    for (std::size_t j = 0; j < i; ++j)
+      EXPECT_FALSE(rastrules::io::same_scene(variants[i], variants[j])) << j;
   }
 }
 
 // rule: SCENE.OUTPUT.MSAA, MSAA.COVER.SAMPLE, MSAA.MASK.AND
 TEST(CliMsaaFragments, FourSamplesGiveTheHandCheckedMasks) {
-  EXPECT_EQ(render_fragments(scene("")),
-            "{\"fragments\": [\n"
-            "  {\"prim\": 0, \"x\": 0, \"y\": 0, \"mask\": 15},\n"
-            "  {\"prim\": 0, \"x\": 1, \"y\": 0, \"mask\": 5},\n"
-            "  {\"prim\": 0, \"x\": 0, \"y\": 1, \"mask\": 5}\n"
-            "]}\n");
+  EXPECT_EQ(render_fragments(scene("")), "{\"fragments\": [\n"
+                                         "  {\"prim\": 0, \"x\": 0, \"y\": 0, \"mask\": 15},\n"
+                                         "  {\"prim\": 0, \"x\": 1, \"y\": 0, \"mask\": 5},\n"
+                                         "  {\"prim\": 0, \"x\": 0, \"y\": 1, \"mask\": 5}\n"
+                                         "]}\n");
   // The mask removes samples; a pixel left with none produces no fragment.
   EXPECT_EQ(render_fragments(scene("\"sample_mask\": 10, ")),
             "{\"fragments\": [\n"
@@ -161,7 +168,8 @@ TEST(CliMsaaFragments, CentroidD3D11AndAHelperLane) {
             "  {\"prim\": 0, \"x\": 0, \"y\": 0, \"mask\": 14, \"centroid\": [0.5, 0.5]},\n"
             "  {\"prim\": 0, \"x\": 1, \"y\": 0, \"mask\": 4, \"centroid\": [1.125, 0.625]},\n"
             "  {\"prim\": 0, \"x\": 0, \"y\": 1, \"mask\": 4, \"centroid\": [0.125, 1.625]},\n"
-            "  {\"prim\": 0, \"x\": 1, \"y\": 1, \"mask\": 0, \"helper\": true, \"centroid\": [1.875, 1.375]}\n"
+            "  {\"prim\": 0, \"x\": 1, \"y\": 1, \"mask\": 0, \"helper\": true, \"centroid\": "
+            "[1.875, 1.375]}\n"
             "]}\n");
 }
 
@@ -171,8 +179,9 @@ TEST(CliMsaaFragments, CentroidD3D11AndAHelperLane) {
 // rule: SCENE.OUTPUT.MSAA, MSAA.CENTROID.D3D10
 TEST(CliMsaaFragments, CentroidD3D10AppliesTheMaskFirst) {
   const std::string out = render_fragments(scene(R"("sample_mask": 14, "centroid": "d3d10", )"));
-  EXPECT_NE(out.find("{\"prim\": 0, \"x\": 0, \"y\": 0, \"mask\": 14, \"centroid\": [0.875, 0.375]}"),
-            std::string::npos)
+  EXPECT_NE(
+      out.find("{\"prim\": 0, \"x\": 0, \"y\": 0, \"mask\": 14, \"centroid\": [0.875, 0.375]}"),
+      std::string::npos)
       << out;
 }
 
@@ -180,10 +189,11 @@ TEST(CliMsaaFragments, CentroidD3D10AppliesTheMaskFirst) {
 // derivatives of a fixed sample position are one pixel across and down.
 // rule: SCENE.OUTPUT.MSAA, MSAA.SHADING.SAMPLE, MSAA.QUAD.HELPER, MSAA.DERIV.COARSE
 TEST(CliMsaaFragments, SampleShadingHelpersAndDerivatives) {
-  const std::string out = render_fragments(scene(R"("shading": "sample", "derivatives": "coarse", )"));
+  const std::string out =
+      render_fragments(scene(R"("shading": "sample", "derivatives": "coarse", )"));
   const auto doc = nlohmann::json::parse(out);
   const auto& list = doc.at("fragments");
-  ASSERT_EQ(list.size(), 16u) << out;  // 4 samples x 4 lanes of the one quad
+  ASSERT_EQ(list.size(), 16u) << out; // 4 samples x 4 lanes of the one quad
   int covered = 0, helpers = 0;
   for (const auto& f : list) {
     const auto k = f.at("sample").get<unsigned>();
@@ -198,16 +208,19 @@ TEST(CliMsaaFragments, SampleShadingHelpersAndDerivatives) {
       ++covered;
     }
   }
-  EXPECT_EQ(covered, 8);  // 4 + 2 + 2
+  EXPECT_EQ(covered, 8); // 4 + 2 + 2
   EXPECT_EQ(helpers, 8);
-  EXPECT_EQ(list[5].dump(), R"({"ddx":[1.0,0.0],"ddy":[0.0,1.0],"helper":true,"mask":0,"prim":0,"sample":1,"x":1,"y":0})");
+  EXPECT_EQ(
+      list[5].dump(),
+      R"({"ddx":[1.0,0.0],"ddy":[0.0,1.0],"helper":true,"mask":0,"prim":0,"sample":1,"x":1,"y":0})");
 }
 
 // rule: MSAA.RESOLVE.AVERAGE, SCENE.OUTPUT.MSAA
 TEST(CliMsaaResolve, AveragesTheSamplesRoundingHalfToEven) {
   const TempDir dir;
-  const auto path = dir.write(
-      "scene.json", R"({"target": {"width": 2, "height": 2}, "samples": 4, "clear_color": [0, 0, 0, 0],
+  const auto path =
+      dir.write("scene.json",
+                R"({"target": {"width": 2, "height": 2}, "samples": 4, "clear_color": [0, 0, 0, 0],
         "primitives": [{"type": "triangle", "v": [[0, 0], [2, 0], [0, 2]], "color": [255, 1, 3, 255]}]})");
   const auto r = run_cli({"render", path.string(), "--resolve", (dir / "r.png").string()});
   ASSERT_EQ(r.status, 0) << r.err;
@@ -227,9 +240,10 @@ TEST(CliMsaaResolve, AveragesTheSamplesRoundingHalfToEven) {
 TEST(CliMsaaResolve, ATooLargeSampleBufferIsBadInputNamingTheLimit) {
   const TempDir dir;
   const auto path = dir.write(
-      "scene.json", R"({"target": {"width": 16384, "height": 16384}, "samples": 16, "primitives": []})");
-  const auto r = run_cli({"render", path.string(), "--resolve", (dir / "r.png").string(), "--fragments",
-                          (dir / "f.json").string()});
+      "scene.json",
+      R"({"target": {"width": 16384, "height": 16384}, "samples": 16, "primitives": []})");
+  const auto r = run_cli({"render", path.string(), "--resolve", (dir / "r.png").string(),
+                          "--fragments", (dir / "f.json").string()});
   EXPECT_EQ(r.status, 2);
   ASSERT_EQ(r.err_lines().size(), 1u) << r.err;
   EXPECT_NE(r.err.find("--resolve: "), std::string::npos) << r.err;
@@ -237,10 +251,12 @@ TEST(CliMsaaResolve, ATooLargeSampleBufferIsBadInputNamingTheLimit) {
   EXPECT_FALSE(std::filesystem::exists(dir / "r.png"));
   EXPECT_FALSE(std::filesystem::exists(dir / "f.json"));
   // One sample fits: 2^28 > 2^26 still does not; a 4096 x 4096 target at 4 samples does.
-  const auto small = dir.write(
-      "small.json", R"({"target": {"width": 4096, "height": 4096}, "samples": 4, "primitives": []})");
+  const auto small =
+      dir.write("small.json",
+                R"({"target": {"width": 4096, "height": 4096}, "samples": 4, "primitives": []})");
   EXPECT_EQ(run_cli({"render", small.string(), "--resolve", (dir / "s.png").string()}).status, 0);
-  const auto big = dir.write("big.json", R"({"target": {"width": 8192, "height": 8193}, "primitives": []})");
+  const auto big =
+      dir.write("big.json", R"({"target": {"width": 8192, "height": 8193}, "primitives": []})");
   EXPECT_EQ(run_cli({"render", big.string(), "--resolve", (dir / "b.png").string()}).status, 2);
 }
 
@@ -250,7 +266,8 @@ TEST(CliMsaaResolve, OnlyOneOutputMayBeStandardOutput) {
   const auto path = dir.write("scene.json", scene(""));
   const auto r = run_cli({"render", path.string(), "--resolve", "-", "--fragments", "-"});
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("only one of --fragments, --png and --resolve can be standard output"), std::string::npos)
+  EXPECT_NE(r.err.find("only one of --fragments, --png and --resolve can be standard output"),
+            std::string::npos)
       << r.err;
   const auto s = run_cli({"render", path.string(), "--resolve"});
   EXPECT_EQ(s.status, 2);
@@ -264,7 +281,8 @@ TEST(CliMsaaResolve, OnlyOneOutputMayBeStandardOutput) {
 TEST(CliMsaaPicture, ShowsSamplesCoveredSamplesAndHelperLanes) {
   const TempDir dir;
   const auto path = dir.write("scene.json", scene(R"("quads": true, )"));
-  const auto r = run_cli({"render", path.string(), "--png", (dir / "p.png").string(), "--scale", "32"});
+  const auto r =
+      run_cli({"render", path.string(), "--png", (dir / "p.png").string(), "--scale", "32"});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto png = rastrules::test::read_png(dir / "p.png");
   ASSERT_TRUE(png.has_value());
@@ -294,23 +312,29 @@ TEST(CliMsaaExplain, ListsEverySampleWithItsEdgesTiesMaskAndCentroid) {
   const auto r = run_cli({"explain", path.string(), "--pixel", "1,0"});
   ASSERT_EQ(r.status, 0) << r.err;
   for (const char* line :
-       {"multisampling: 4 samples, standard pattern, sample mask 0b0111 (samples 0, 1, 2), centroid d3d11",
+       {"multisampling: 4 samples, standard pattern, sample mask 0b0111 (samples 0, 1, 2), "
+        "centroid d3d11",
         "  sample 0 at (-2, -6)/16 -> (1.375, 0.125) px = raw (352, 32)  [MSAA.SAMPLE.POSITION]\n",
         "  sample 2 at (-6, 2)/16 -> (1.125, 0.625) px = raw (288, 160)  [MSAA.SAMPLE.POSITION]\n"
-        "    edge 0 v0->v1 (top): E = 71680 raw = 1.09375 px^2 -> inside: TRI.EDGE.FUNCTION: E > 0 -> inside\n"
-        "    edge 1 v1->v2 (right): E = 0 raw = 0 px^2 -> outside: TRI.FILL.TOP_LEFT: E == 0 on a right edge "
+        "    edge 0 v0->v1 (top): E = 71680 raw = 1.09375 px^2 -> inside: TRI.EDGE.FUNCTION: E > 0 "
+        "-> inside\n"
+        "    edge 1 v1->v2 (right): E = 0 raw = 0 px^2 -> outside: TRI.FILL.TOP_LEFT: E == 0 on a "
+        "right edge "
         "(neither top nor left) -> outside\n",
         "  coverage 0b0001 (sample 0)  [MSAA.COVER.SAMPLE]\n",
-        "  sample mask 0b0111 (samples 0, 1, 2) -> fragment mask 0b0001 (sample 0)  [MSAA.MASK.AND]\n",
-        "  centroid (d3d11): first covered sample in index order -> (-2, -6)/16 = (1.375, 0.125) px  "
+        "  sample mask 0b0111 (samples 0, 1, 2) -> fragment mask 0b0001 (sample 0)  "
+        "[MSAA.MASK.AND]\n",
+        "  centroid (d3d11): first covered sample in index order -> (-2, -6)/16 = (1.375, 0.125) "
+        "px  "
         "[MSAA.CENTROID.D3D11]\n",
         "  verdict: fragment, mask 1\n", "pixel (1, 0): covered by primitive 0\n"}) {
     EXPECT_NE(r.out.find(line), std::string::npos) << line << "\n" << r.out;
   }
   // The fragment list agrees with the explanation.
   const auto f = run_cli({"render", path.string(), "--fragments", "-"});
-  EXPECT_NE(f.out.find("{\"prim\": 0, \"x\": 1, \"y\": 0, \"mask\": 1, \"centroid\": [1.375, 0.125]}"),
-            std::string::npos)
+  EXPECT_NE(
+      f.out.find("{\"prim\": 0, \"x\": 1, \"y\": 0, \"mask\": 1, \"centroid\": [1.375, 0.125]}"),
+      std::string::npos)
       << f.out;
 
   const auto j = run_cli({"explain", path.string(), "--pixel", "1,0", "--json"});
@@ -324,7 +348,8 @@ TEST(CliMsaaExplain, ListsEverySampleWithItsEdgesTiesMaskAndCentroid) {
   EXPECT_EQ(s2.at("offset"), nlohmann::json::parse("[-6, 2]"));
   EXPECT_EQ(s2.at("covered"), false);
   bool tie = false;
-  for (const auto& e : s2.at("triangles").at(0).at("edges")) tie = tie || (e.at("e_raw") == 0 && e.at("inside") == false);
+  for (const auto& e : s2.at("triangles").at(0).at("edges"))
+    tie = tie || (e.at("e_raw") == 0 && e.at("inside") == false);
   EXPECT_TRUE(tie) << s2.dump();
   EXPECT_EQ(m.at("samples").at(0).at("covered"), true);
   const auto& seg = m.at("segments").at(0);
@@ -341,7 +366,9 @@ TEST(CliMsaaExplain, APixelTheMaskEmptiesHasNoFragment) {
   const auto path = dir.write("scene.json", scene(R"("sample_mask": 2, )"));
   const auto r = run_cli({"explain", path.string(), "--pixel", "1,0"});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("  coverage 0b0101 (samples 0, 2)  [MSAA.COVER.SAMPLE]\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  coverage 0b0101 (samples 0, 2)  [MSAA.COVER.SAMPLE]\n"),
+            std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("-> fragment mask 0b0000 (no sample)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("  verdict: no fragment\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("pixel (1, 0): covered by no primitive\n"), std::string::npos) << r.out;
@@ -352,23 +379,27 @@ TEST(CliMsaaExplain, APixelTheMaskEmptiesHasNoFragment) {
 // rule: MSAA.POINT.PER_SAMPLE, MSAA.LINE.MODE
 TEST(CliMsaaExplain, PointsAndLinesPerSample) {
   const TempDir dir;
-  const auto point = dir.write(
-      "p.json", R"({"target": {"width": 4, "height": 4}, "samples": 4,
+  const auto point = dir.write("p.json", R"({"target": {"width": 4, "height": 4}, "samples": 4,
         "primitives": [{"type": "point", "v": [[2.0, 2.0]]}, {"type": "line", "v": [[0, 1.5], [4, 1.5]]}]})");
   const auto r = run_cli({"explain", point.string(), "--pixel", "1,1"});
   ASSERT_EQ(r.status, 0) << r.err;
   // The point's square [1.5, 2.5)^2 holds only sample 3 (1.625, 1.875) of the pixel: sample 0
   // (1.375, 1.125) and 2 (1.125, 1.625) lie left of it, sample 1 (1.875, 1.375) above it.
-  EXPECT_NE(r.out.find("  coverage 0b1000 (sample 3)  [MSAA.COVER.SAMPLE]\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  coverage 0b1000 (sample 3)  [MSAA.COVER.SAMPLE]\n"), std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("    triangle 1:\n"), std::string::npos) << r.out;
   // The line y = 1.5 drawn 1.4 px wide covers every sample of row 1.
-  EXPECT_NE(r.out.find("  coverage 0b1111 (samples 0, 1, 2, 3)  [MSAA.COVER.SAMPLE]\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  coverage 0b1111 (samples 0, 1, 2, 3)  [MSAA.COVER.SAMPLE]\n"),
+            std::string::npos)
+      << r.out;
   const auto vk = dir.write(
-      "v.json", R"({"target": {"width": 4, "height": 4}, "samples": 4, "line_mode": "vulkan-bresenham",
+      "v.json",
+      R"({"target": {"width": 4, "height": 4}, "samples": 4, "line_mode": "vulkan-bresenham",
         "primitives": [{"type": "line", "v": [[0, 1.5], [4, 1.5]]}]})");
   const auto v = run_cli({"explain", vk.string(), "--pixel", "1,1"});
   ASSERT_EQ(v.status, 0) << v.err;
-  EXPECT_NE(v.out.find("line covers every sample of each pixel it produces  [MSAA.LINE.MODE]"), std::string::npos)
+  EXPECT_NE(v.out.find("line covers every sample of each pixel it produces  [MSAA.LINE.MODE]"),
+            std::string::npos)
       << v.out;
 }
 
@@ -381,8 +412,9 @@ TEST(CliMsaaFragments, SixteenthsAreWrittenExactly) {
   f.sample = 2;
   f.helper = true;
   EXPECT_EQ(rastrules::io::fragments_to_json({f}),
-            "{\"fragments\": [\n  {\"prim\": 0, \"x\": 3, \"y\": 1, \"mask\": 4, \"sample\": 2, \"helper\": true, "
+            "{\"fragments\": [\n  {\"prim\": 0, \"x\": 3, \"y\": 1, \"mask\": 4, \"sample\": 2, "
+            "\"helper\": true, "
             "\"centroid\": [3.0, 1.9375], \"ddx\": [1.0625, -0.0625], \"ddy\": [-1.0, 0.0]}\n]}\n");
 }
 
-}  // namespace
+} // namespace

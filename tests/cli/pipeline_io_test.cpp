@@ -28,18 +28,24 @@ namespace pipe = rastrules::pipe;
 namespace io = rastrules::io;
 using rastrules::SceneError;
 
-std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f); }
+std::uint32_t bits(float f) {
+  return std::bit_cast<std::uint32_t>(f);
+}
 
 pipe::PipeScene pipe_ok(const std::string& text) {
   auto r = io::read_any_scene(text);
-  if (auto* e = std::get_if<SceneError>(&r)) ADD_FAILURE() << "unexpected error: " << e->what();
-  if (std::holds_alternative<rastrules::Scene>(r)) ADD_FAILURE() << "read as a plain scene: " << text;
-  return std::holds_alternative<pipe::PipeScene>(r) ? std::get<pipe::PipeScene>(r) : pipe::PipeScene{};
+  if (auto* e = std::get_if<SceneError>(&r))
+    ADD_FAILURE() << "unexpected error: " << e->what();
+  if (std::holds_alternative<rastrules::Scene>(r))
+    ADD_FAILURE() << "read as a plain scene: " << text;
+  return std::holds_alternative<pipe::PipeScene>(r) ? std::get<pipe::PipeScene>(r)
+                                                    : pipe::PipeScene{};
 }
 
 std::string error_of(const std::string& text) {
   auto r = io::read_any_scene(text);
-  if (auto* e = std::get_if<SceneError>(&r)) return e->what();
+  if (auto* e = std::get_if<SceneError>(&r))
+    return e->what();
   return "(no error)";
 }
 
@@ -74,7 +80,8 @@ TEST(PipelineSceneIo, ReadsEveryKey) {
   ASSERT_TRUE(s.viewport.has_value());
   EXPECT_EQ(*s.viewport, (pipe::Viewport{1.5f, -2.0f, 10.0f, 6.0f, 0.25f, 0.75f}));
   ASSERT_TRUE(s.model && s.view && s.projection);
-  for (std::size_t k = 0; k < 16; ++k) EXPECT_EQ((*s.model)[k], static_cast<float>(k + 1)) << k;
+  for (std::size_t k = 0; k < 16; ++k)
+    EXPECT_EQ((*s.model)[k], static_cast<float>(k + 1)) << k;
   EXPECT_EQ((*s.view)[0], 0.5f);
   EXPECT_EQ((*s.view)[15], 1.0f);
   EXPECT_EQ((*s.projection)[14], 1.0f);
@@ -100,9 +107,9 @@ TEST(PipelineSceneIo, ReadsEveryKey) {
   ASSERT_EQ(s.primitives.size(), 2u);
   const pipe::PipePrimitive& t = s.primitives[0];
   EXPECT_EQ(t.base.type, rastrules::PrimitiveType::kTriangle);
-  EXPECT_TRUE(t.base.v.empty());  // positions are in pos
+  EXPECT_TRUE(t.base.v.empty()); // positions are in pos
   ASSERT_EQ(t.pos.size(), 3u);
-  EXPECT_EQ(t.pos[0], (pipe::Vec4f{1, 2, 3, 1}));  // w = 1 when omitted
+  EXPECT_EQ(t.pos[0], (pipe::Vec4f{1, 2, 3, 1})); // w = 1 when omitted
   EXPECT_EQ(t.pos[1], (pipe::Vec4f{4, 5, 6, 7}));
   EXPECT_EQ(t.pos[2], (pipe::Vec4f{8, 9, 10, 11}));
   EXPECT_TRUE(t.z.empty());
@@ -144,7 +151,8 @@ TEST(PipelineSceneIo, DefaultsOfEveryKey) {
   EXPECT_TRUE(s.primitives[0].w.empty());
 
   // Without the keys: no viewport (run_pipeline's default), no depth, no attributes.
-  const pipe::PipeScene bare = pipe_ok(std::string("{") + kTarget + R"(, "primitives": [)" + kPosTriangle + "]}");
+  const pipe::PipeScene bare =
+      pipe_ok(std::string("{") + kTarget + R"(, "primitives": [)" + kPosTriangle + "]}");
   EXPECT_FALSE(bare.viewport.has_value());
   EXPECT_FALSE(bare.depth.has_value());
   EXPECT_TRUE(bare.attributes.empty());
@@ -171,7 +179,8 @@ TEST(PipelineSceneIo, EachPipelineKeyMakesAPipelineSceneAndPlainScenesStayPlain)
       head + R"("primitives": [)" + tri + R"(, "z": [0, 0, 0]}])",
       head + R"("primitives": [)" + tri + R"(, "w": [1, 1, 1]}])",
       head + R"("primitives": [)" + kPosTriangle + "]",
-      head + R"("attributes": [{"name": "a"}], "primitives": [)" + tri + R"(, "attr": [[0], [0], [0]]}])",
+      head + R"("attributes": [{"name": "a"}], "primitives": [)" + tri +
+          R"(, "attr": [[0], [0], [0]]}])",
   };
   for (const std::string& text : pipeline) {
     const auto r = io::read_any_scene(text + "}");
@@ -186,10 +195,12 @@ TEST(PipelineSceneIo, EachPipelineKeyMakesAPipelineSceneAndPlainScenesStayPlain)
   EXPECT_TRUE(io::same_scene(std::get<rastrules::Scene>(any), std::get<rastrules::Scene>(old)));
   // read_scene() reads window-space scenes only: a pipeline scene is an error naming its first
   // pipeline key.
-  const auto refused = io::read_scene(head + R"("primitives": [)" + tri + R"(, "w": [1, 1, 1]}], "depth": {}})");
+  const auto refused =
+      io::read_scene(head + R"("primitives": [)" + tri + R"(, "w": [1, 1, 1]}], "depth": {}})");
   ASSERT_TRUE(std::holds_alternative<SceneError>(refused));
   EXPECT_EQ(std::get<SceneError>(refused).field, "primitives[0].w");
-  EXPECT_NE(std::get<SceneError>(refused).message.find("is a pipeline key (SCENE.PIPELINE)"), std::string::npos);
+  EXPECT_NE(std::get<SceneError>(refused).message.find("is a pipeline key (SCENE.PIPELINE)"),
+            std::string::npos);
 }
 
 // rule: SCENE.PIPELINE, SCENE.NUMBER.FLOAT32
@@ -212,18 +223,23 @@ TEST(PipelineSceneIo, ErrorsNameTheFieldAndComeInReadingOrder) {
   const std::string head = std::string("{") + kTarget + ", ";
   // The NaN in primitives[1] is found while reading, before the missing attr of primitives[0]
   // (checked when the scene ends, since "attributes" may come after the primitives).
-  EXPECT_EQ(error_of(head + R"("primitives": [)" + kPosTriangle +
-                     R"(, {"type": "point", "pos": [[0, 0, "NaN"]], "attr": [[1]]}], "attributes": [{"name": "a"}]})"),
-            "primitives[1].pos[0][2]: is NaN");
-  EXPECT_EQ(error_of(head + R"("primitives": [)" + kPosTriangle + R"(], "attributes": [{"name": "a"}]})"),
-            "primitives[0].attr: is missing: the scene declares 1 attribute (PIPE.INPUT.ATTRIBUTES)");
+  EXPECT_EQ(
+      error_of(
+          head + R"("primitives": [)" + kPosTriangle +
+          R"(, {"type": "point", "pos": [[0, 0, "NaN"]], "attr": [[1]]}], "attributes": [{"name": "a"}]})"),
+      "primitives[1].pos[0][2]: is NaN");
+  EXPECT_EQ(
+      error_of(head + R"("primitives": [)" + kPosTriangle + R"(], "attributes": [{"name": "a"}]})"),
+      "primitives[0].attr: is missing: the scene declares 1 attribute (PIPE.INPUT.ATTRIBUTES)");
   // Counts in every list.
-  EXPECT_EQ(error_of(head + R"("primitives": [{"type": "line_strip", "v": [[0, 0], [1, 1]], "z": [0]}]})"),
+  EXPECT_EQ(error_of(head +
+                     R"("primitives": [{"type": "line_strip", "v": [[0, 0], [1, 1]], "z": [0]}]})"),
             "primitives[0].z: must have one number per vertex (2), got 1");
   EXPECT_EQ(error_of(head + R"("transform": {"view": []}, "primitives": []})"),
             "transform.view: must have exactly 16 numbers (a row-major 4x4 matrix), got 0");
   // The window-space coordinates keep their rules: NaN is the kernel's to reject.
-  const auto nan_v = io::read_any_scene(head + R"("depth": {}, "primitives": [{"type": "point", "v": [["NaN", 1]]}]})");
+  const auto nan_v = io::read_any_scene(
+      head + R"("depth": {}, "primitives": [{"type": "point", "v": [["NaN", 1]]}]})");
   ASSERT_TRUE(std::holds_alternative<pipe::PipeScene>(nan_v));
   EXPECT_TRUE(std::isnan(std::get<pipe::PipeScene>(nan_v).primitives[0].base.v[0][0]));
 }
@@ -309,7 +325,8 @@ Frag fragment(std::uint32_t prim, std::int32_t x, std::int32_t y, std::uint32_t 
   return r;
 }
 
-std::optional<std::string> to_json(const std::vector<Frag>& list, const io::PipeOutputFields& fields) {
+std::optional<std::string> to_json(const std::vector<Frag>& list,
+                                   const io::PipeOutputFields& fields) {
   std::vector<rastrules::Fragment> fragments;
   std::vector<pipe::FragmentData> data;
   for (const Frag& x : list) {
@@ -340,14 +357,16 @@ TEST(PipelineFragmentOutput, FieldsInOrderFloatsRoundTripDepthAsStored) {
   killed.d.passed = 0;
   const auto text = to_json({a, b, killed}, fields);
   ASSERT_TRUE(text.has_value());
-  EXPECT_EQ(*text,
-            "{\"fragments\": [\n"
-            "  {\"prim\": 0, \"part\": 1, \"x\": 3, \"y\": 1, \"mask\": 5, \"bary\": [120, 7, 129, 256], "
-            "\"attr\": {\"u\": 0.1, \"t\\\"q\": -3e-07}, \"depth\": [8388608, 16777215], \"passed\": 4},\n"
-            "  {\"prim\": 0, \"part\": 1, \"x\": 0, \"y\": 2, \"mask\": 1, \"bary\": [0, 0, 1, 1], "
-            "\"attr\": {\"u\": 1, \"t\\\"q\": 16777216}, \"depth\": [0], \"passed\": 1},\n"
-            "  {\"prim\": 1, \"x\": 0, \"y\": 0, \"mask\": 1, \"passed\": 0}\n"
-            "]}\n");
+  EXPECT_EQ(
+      *text,
+      "{\"fragments\": [\n"
+      "  {\"prim\": 0, \"part\": 1, \"x\": 3, \"y\": 1, \"mask\": 5, \"bary\": [120, 7, 129, 256], "
+      "\"attr\": {\"u\": 0.1, \"t\\\"q\": -3e-07}, \"depth\": [8388608, 16777215], \"passed\": "
+      "4},\n"
+      "  {\"prim\": 0, \"part\": 1, \"x\": 0, \"y\": 2, \"mask\": 1, \"bary\": [0, 0, 1, 1], "
+      "\"attr\": {\"u\": 1, \"t\\\"q\": 16777216}, \"depth\": [0], \"passed\": 1},\n"
+      "  {\"prim\": 1, \"x\": 0, \"y\": 0, \"mask\": 1, \"passed\": 0}\n"
+      "]}\n");
   // The floats read back to the same float32.
   const auto doc = nlohmann::json::parse(*text);
   EXPECT_EQ(static_cast<float>(doc["fragments"][0]["attr"]["u"].get<double>()), 0.1f);
@@ -359,16 +378,18 @@ TEST(PipelineFragmentOutput, FieldsInOrderFloatsRoundTripDepthAsStored) {
   f32.depth = pipe::DepthFormat::kD32F;
   Frag c = fragment(2, 1, 1, 1);
   c.d.depth = {pipe::DepthValue{0, 0.3f}};
-  EXPECT_EQ(to_json({c}, f32),
-            "{\"fragments\": [\n  {\"prim\": 2, \"x\": 1, \"y\": 1, \"mask\": 1, \"depth\": [0.3], \"passed\": 1}\n]}\n");
+  EXPECT_EQ(to_json({c}, f32), "{\"fragments\": [\n  {\"prim\": 2, \"x\": 1, \"y\": 1, \"mask\": "
+                               "1, \"depth\": [0.3], \"passed\": 1}\n]}\n");
   Frag d = fragment(0, 1, 1, 1);
   d.f.seg = 2;
   d.d.part = 3;
   EXPECT_EQ(to_json({d}, io::PipeOutputFields{}),
-            "{\"fragments\": [\n  {\"prim\": 0, \"part\": 3, \"x\": 1, \"y\": 1, \"mask\": 1, \"seg\": 2}\n]}\n");
+            "{\"fragments\": [\n  {\"prim\": 0, \"part\": 3, \"x\": 1, \"y\": 1, \"mask\": 1, "
+            "\"seg\": 2}\n]}\n");
   // No data at all (a window-space scene without depth or attributes).
-  EXPECT_EQ(io::pipe_fragments_to_json({d.f}, {}, io::PipeOutputFields{}),
-            "{\"fragments\": [\n  {\"prim\": 0, \"x\": 1, \"y\": 1, \"mask\": 1, \"seg\": 2}\n]}\n");
+  EXPECT_EQ(
+      io::pipe_fragments_to_json({d.f}, {}, io::PipeOutputFields{}),
+      "{\"fragments\": [\n  {\"prim\": 0, \"x\": 1, \"y\": 1, \"mask\": 1, \"seg\": 2}\n]}\n");
   EXPECT_EQ(io::pipe_fragments_to_json({}, {}, io::PipeOutputFields{}), "{\"fragments\": []}\n");
   EXPECT_FALSE(io::pipe_fragments_to_json({d.f, d.f}, {d.d}, io::PipeOutputFields{}).has_value());
 }
@@ -380,12 +401,12 @@ TEST(PipelineFragmentOutput, OrderIsPrimPartYXAndFieldsMustMatch) {
   Frag p1a = fragment(1, 5, 5, 1);
   p1a.d.part = 0;
   Frag p1b = fragment(1, 0, 0, 1);
-  p1b.d.part = 1;  // a later part may start above and left of the earlier one
+  p1b.d.part = 1; // a later part may start above and left of the earlier one
   const Frag unparted = fragment(1, 9, 9, 1);
   EXPECT_TRUE(to_json({p0, p1a, p1b}, none).has_value());
   EXPECT_FALSE(to_json({p1b, p1a}, none).has_value());
   EXPECT_FALSE(to_json({p1a, p1a}, none).has_value());
-  EXPECT_FALSE(to_json({p1a, unparted}, none).has_value());  // a missing part comes first
+  EXPECT_FALSE(to_json({p1a, unparted}, none).has_value()); // a missing part comes first
   EXPECT_TRUE(to_json({unparted, p1a}, none).has_value());
   // One value per attribute, one depth per covered sample; a killed fragment has neither.
   io::PipeOutputFields attrs;
@@ -400,7 +421,7 @@ TEST(PipelineFragmentOutput, OrderIsPrimPartYXAndFieldsMustMatch) {
   two.d.depth.push_back(pipe::DepthValue{65535, 0.0f});
   EXPECT_TRUE(to_json({two}, depth).has_value());
   two.d.passed = 0;
-  EXPECT_FALSE(to_json({two}, depth).has_value());  // killed, yet with depths
+  EXPECT_FALSE(to_json({two}, depth).has_value()); // killed, yet with depths
 
   // The streaming writer applies the same checks.
   std::FILE* out = std::tmpfile();
@@ -421,7 +442,7 @@ TEST(PipelineFragmentOutput, DepthBufferOneTargetRowPerLine) {
   std::FILE* out = std::fopen(path.c_str(), "wb");
   ASSERT_NE(out, nullptr);
   const std::vector<pipe::DepthValue> buffer = {{0, 0.5f}, {0, 1.0f}, {0, 0.25f}, {0, 1.0f},
-                                                {0, 0.0f}, {0, 1.0f}, {0, 1.0f}, {0, 1.0f}};
+                                                {0, 0.0f}, {0, 1.0f}, {0, 1.0f},  {0, 1.0f}};
   EXPECT_TRUE(io::write_depth_buffer(out, 2, 2, 2, pipe::DepthFormat::kD32F, buffer));
   EXPECT_FALSE(io::write_depth_buffer(out, 3, 2, 2, pipe::DepthFormat::kD32F, buffer));
   std::fclose(out);
@@ -435,4 +456,4 @@ TEST(PipelineFragmentOutput, DepthBufferOneTargetRowPerLine) {
   EXPECT_EQ(io::depth_text(pipe::DepthValue{0, 0.1f}, pipe::DepthFormat::kD32F), "0.1");
 }
 
-}  // namespace
+} // namespace

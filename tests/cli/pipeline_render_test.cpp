@@ -38,14 +38,16 @@ json render(const std::string& scene, const std::vector<std::string>& extra = {}
   const auto r = run_cli(args);
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");
-  if (r.status != 0) return json::object({{"fragments", json::array()}});
+  if (r.status != 0)
+    return json::object({{"fragments", json::array()}});
   return json::parse(r.out);
 }
 
 // (x, y, mask) of each fragment.
 std::vector<std::array<int, 3>> coverage(const json& doc) {
   std::vector<std::array<int, 3>> out;
-  for (const json& f : doc["fragments"]) out.push_back({f["x"].get<int>(), f["y"].get<int>(), f["mask"].get<int>()});
+  for (const json& f : doc["fragments"])
+    out.push_back({f["x"].get<int>(), f["y"].get<int>(), f["mask"].get<int>()});
   return out;
 }
 
@@ -65,7 +67,8 @@ TEST(CliPipeline, ClipSpaceTriangleCoversWhatItsWindowSpaceImageCovers) {
   // Neither depth nor attributes asked for: only the plain fields (no part: not clipped).
   for (const json& f : clip["fragments"]) {
     EXPECT_EQ(f.size(), 4u) << f.dump();
-    EXPECT_FALSE(f.contains("bary") || f.contains("attr") || f.contains("depth") || f.contains("part"));
+    EXPECT_FALSE(f.contains("bary") || f.contains("attr") || f.contains("depth") ||
+                 f.contains("part"));
   }
   // The transform applies: a model matrix halving x and y of doubled positions.
   const json transformed = render(
@@ -94,18 +97,22 @@ TEST(CliPipeline, AttributesAndBarycentricsAtPixelCentres) {
   EXPECT_EQ(f[1]["attr"], json::parse(R"({"x": 1.5, "p": 1.5, "id": 9})"));
   // Field order of SCENE.OUTPUT.PIPELINE (in the text: nlohmann::json sorts keys).
   const TempDir dir;
-  const auto path = dir.write("s.json", R"({"target": {"width": 1, "height": 1}, "depth": {}, "attributes": [{"name": "a"}],
+  const auto path = dir.write(
+      "s.json", R"({"target": {"width": 1, "height": 1}, "depth": {}, "attributes": [{"name": "a"}],
       "primitives": [{"type": "triangle", "v": [[0, 0], [4, 0], [0, 4]], "attr": [[1], [1], [1]]}]})");
   const auto r = run_cli({"render", path.string(), "--fragments", "-"});
   ASSERT_EQ(r.status, 0) << r.err;
-  const std::size_t prim = r.out.find("\"prim\""), x = r.out.find("\"x\""), mask = r.out.find("\"mask\""),
-                    bary = r.out.find("\"bary\""), attr = r.out.find("\"attr\""),
-                    depth = r.out.find("\"depth\""), passed = r.out.find("\"passed\"");
-  EXPECT_TRUE(prim < x && x < mask && mask < bary && bary < attr && attr < depth && depth < passed) << r.out;
+  const std::size_t prim = r.out.find("\"prim\""), x = r.out.find("\"x\""),
+                    mask = r.out.find("\"mask\""), bary = r.out.find("\"bary\""),
+                    attr = r.out.find("\"attr\""), depth = r.out.find("\"depth\""),
+                    passed = r.out.find("\"passed\"");
+  EXPECT_TRUE(prim < x && x < mask && mask < bary && bary < attr && attr < depth && depth < passed)
+      << r.out;
   // bary: e0 + e1 + e2 = A (PIPE.BARY.SUM).
   const json b = json::parse(r.out)["fragments"][0]["bary"];
   ASSERT_EQ(b.size(), 4u);
-  EXPECT_EQ(b[0].get<long long>() + b[1].get<long long>() + b[2].get<long long>(), b[3].get<long long>());
+  EXPECT_EQ(b[0].get<long long>() + b[1].get<long long>() + b[2].get<long long>(),
+            b[3].get<long long>());
 }
 
 // Three window-space triangles over the whole 2x2 target at depths 0.5, 0.25, 0.75.
@@ -120,8 +127,8 @@ std::string three_layers(const std::string& depth) {
 TEST(CliPipeline, DepthTestPassedMasksAndTheDepthBuffer) {
   const TempDir dir;
   const auto scene = dir.write("scene.json", three_layers(R"({"func": "less"})"));
-  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "f.json").string(), "--depth-out",
-                          (dir / "d.json").string()});
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "f.json").string(),
+                          "--depth-out", (dir / "d.json").string()});
   ASSERT_EQ(r.status, 0) << r.err;
   const json f = json::parse(read_file(dir / "f.json"))["fragments"];
   ASSERT_EQ(f.size(), 12u);
@@ -145,14 +152,21 @@ TEST(CliPipeline, DepthTestPassedMasksAndTheDepthBuffer) {
   for (const json& g : greater["fragments"]) {
     EXPECT_EQ(g["passed"].get<int>(), g["prim"].get<int>() == 1 ? 0 : 1) << g.dump();
   }
-  const auto a = dir.write("always.json", three_layers(R"({"func": "always", "write": false, "format": "d16"})"));
+  const auto a = dir.write("always.json",
+                           three_layers(R"({"func": "always", "write": false, "format": "d16"})"));
   ASSERT_EQ(run_cli({"render", a.string(), "--fragments", (dir / "fa.json").string(), "--depth-out",
-                     (dir / "da.json").string()}).status, 0);
+                     (dir / "da.json").string()})
+                .status,
+            0);
   const json always = json::parse(read_file(dir / "fa.json"));
-  for (const json& g : always["fragments"]) EXPECT_EQ(g["passed"].get<int>(), 1);
-  EXPECT_EQ(json::parse(read_file(dir / "da.json"))["depth"], json::array({65535, 65535, 65535, 65535}));
-  EXPECT_EQ(render(three_layers(R"({"format": "d16"})"))["fragments"][0]["depth"], json::array({32768}));
-  EXPECT_EQ(render(three_layers(R"({"format": "d32f"})"))["fragments"][0]["depth"], json::array({0.5}));
+  for (const json& g : always["fragments"])
+    EXPECT_EQ(g["passed"].get<int>(), 1);
+  EXPECT_EQ(json::parse(read_file(dir / "da.json"))["depth"],
+            json::array({65535, 65535, 65535, 65535}));
+  EXPECT_EQ(render(three_layers(R"({"format": "d16"})"))["fragments"][0]["depth"],
+            json::array({32768}));
+  EXPECT_EQ(render(three_layers(R"({"format": "d32f"})"))["fragments"][0]["depth"],
+            json::array({0.5}));
 }
 
 // rule: SCENE.OUTPUT.PIPELINE, PIPE.DEPTH.TEST
@@ -163,9 +177,12 @@ TEST(CliPipeline, MultisampledDepthHasOneValuePerCoveredSample) {
   // The hand-checked masks of tests/cli/msaa_test.cpp: pixel (0,0) 0b1111, (1,0) and (0,1) 0b101.
   for (const json& f : doc["fragments"]) {
     const int mask = f["mask"].get<int>();
-    EXPECT_EQ(f["depth"].size(), static_cast<std::size_t>(std::popcount(static_cast<unsigned>(mask)))) << f.dump();
+    EXPECT_EQ(f["depth"].size(),
+              static_cast<std::size_t>(std::popcount(static_cast<unsigned>(mask))))
+        << f.dump();
     EXPECT_EQ(f["passed"].get<int>(), mask);
-    for (const json& z : f["depth"]) EXPECT_EQ(z.get<double>(), 0.5);
+    for (const json& z : f["depth"])
+      EXPECT_EQ(z.get<double>(), 0.5);
   }
 }
 
@@ -186,7 +203,8 @@ TEST(CliPipeline, ClippedTrianglesCarryTheirPartAndTheViewportScissors) {
       R"({"target": {"width": 8, "height": 4}, "viewport": {"x": 4, "width": 4},
           "primitives": [{"type": "triangle", "pos": [[-1, -1, 0], [3, -1, 0], [-1, 3, 0]]}]})");
   EXPECT_EQ(half["fragments"].size(), 16u);
-  for (const json& f : half["fragments"]) EXPECT_GE(f["x"].get<int>(), 4);
+  for (const json& f : half["fragments"])
+    EXPECT_GE(f["x"].get<int>(), 4);
 }
 
 // rule: SCENE.OUTPUT.PIPELINE, FAST.THREADS.DETERMINISTIC, FAST.EQUALS.PLAIN
@@ -196,7 +214,8 @@ TEST(CliPipeline, ThreadsAndTraversalChangeNothing) {
   const auto base = run_cli({"render", scene.string(), "--fragments", "-"});
   ASSERT_EQ(base.status, 0) << base.err;
   for (const std::vector<std::string>& extra :
-       {std::vector<std::string>{"--threads", "2"}, std::vector<std::string>{"--traversal", "plain"},
+       {std::vector<std::string>{"--threads", "2"},
+        std::vector<std::string>{"--traversal", "plain"},
         std::vector<std::string>{"--traversal", "fast", "--threads", "3"}}) {
     std::vector<std::string> args = {"render", scene.string(), "--fragments", "-"};
     args.insert(args.end(), extra.begin(), extra.end());
@@ -209,9 +228,8 @@ TEST(CliPipeline, ThreadsAndTraversalChangeNothing) {
 // rule: SCENE.OUTPUT.PIPELINE, MSAA.RESOLVE.AVERAGE
 TEST(CliPipeline, PicturesOfCoverageAndDepthAndTheResolvedTarget) {
   const TempDir dir;
-  const auto scene = dir.write(
-      "scene.json",
-      R"({"target": {"width": 2, "height": 1}, "depth": {}, "primitives": [
+  const auto scene = dir.write("scene.json",
+                               R"({"target": {"width": 2, "height": 1}, "depth": {}, "primitives": [
           {"type": "triangle", "v": [[0, 0], [4, 0], [0, 4]], "z": [0, 0, 0], "color": [255, 0, 0, 255]},
           {"type": "triangle", "v": [[1, 0], [4, 0], [1, 4]], "z": [0.5, 0.5, 0.5], "color": [0, 255, 0, 255]}]})");
   const auto r = run_cli({"render", scene.string(), "--png", (dir / "c.png").string(), "--resolve",
@@ -224,7 +242,8 @@ TEST(CliPipeline, PicturesOfCoverageAndDepthAndTheResolvedTarget) {
   EXPECT_EQ(resolved->rgba_at(0, 0), (std::array<std::uint8_t, 4>{255, 0, 0, 255}));
   EXPECT_EQ(resolved->rgba_at(1, 0), (std::array<std::uint8_t, 4>{255, 0, 0, 255}));
   // --png-depth: black where depth 0 was written; magnified 32 times, the pixel centres.
-  const auto d = run_cli({"render", scene.string(), "--png", (dir / "d.png").string(), "--png-depth"});
+  const auto d =
+      run_cli({"render", scene.string(), "--png", (dir / "d.png").string(), "--png-depth"});
   ASSERT_EQ(d.status, 0) << d.err;
   const auto depth = read_png(dir / "d.png");
   ASSERT_TRUE(depth.has_value());
@@ -237,22 +256,28 @@ TEST(CliPipeline, DepthOutputsNeedDepthAndOtherCommandsRefusePipelineScenes) {
   const TempDir dir;
   const auto clip = dir.write("clip.json", kClipTriangle);
   const auto plain = dir.write("plain.json", kWindowTriangle);
-  const auto no_depth = run_cli({"render", clip.string(), "--png", (dir / "a.png").string(), "--png-depth"});
+  const auto no_depth =
+      run_cli({"render", clip.string(), "--png", (dir / "a.png").string(), "--png-depth"});
   EXPECT_EQ(no_depth.status, 2);
-  EXPECT_NE(no_depth.err.find("--png-depth: the scene has no \"depth\""), std::string::npos) << no_depth.err;
-  const auto plain_out = run_cli({"render", plain.string(), "--depth-out", (dir / "d.json").string()});
+  EXPECT_NE(no_depth.err.find("--png-depth: the scene has no \"depth\""), std::string::npos)
+      << no_depth.err;
+  const auto plain_out =
+      run_cli({"render", plain.string(), "--depth-out", (dir / "d.json").string()});
   EXPECT_EQ(plain_out.status, 2);
-  EXPECT_NE(plain_out.err.find("--depth-out: a window-space scene"), std::string::npos) << plain_out.err;
+  EXPECT_NE(plain_out.err.find("--depth-out: a window-space scene"), std::string::npos)
+      << plain_out.err;
   const auto without_png = run_cli({"render", clip.string(), "--fragments", "-", "--png-depth"});
   EXPECT_EQ(without_png.status, 2);
   EXPECT_FALSE(std::filesystem::exists(dir / "a.png"));
   EXPECT_FALSE(std::filesystem::exists(dir / "d.json"));
   const auto check = run_cli({"check", clip.string(), "--driver", "reference"});
   EXPECT_EQ(check.status, 2);
-  EXPECT_NE(check.err.find("primitives[0].pos: is a pipeline key (SCENE.PIPELINE)"), std::string::npos) << check.err;
+  EXPECT_NE(check.err.find("primitives[0].pos: is a pipeline key (SCENE.PIPELINE)"),
+            std::string::npos)
+      << check.err;
   // The fragment limit holds for pipeline scenes.
-  const auto limited = run_cli({"render", clip.string(), "--fragments", (dir / "f.json").string(),
-                                "--max-fragments", "3"});
+  const auto limited = run_cli(
+      {"render", clip.string(), "--fragments", (dir / "f.json").string(), "--max-fragments", "3"});
   EXPECT_EQ(limited.status, 2);
   EXPECT_NE(limited.err.find("(limit SCENE.INPUT.LIMITS)"), std::string::npos) << limited.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "f.json"));
@@ -266,9 +291,12 @@ TEST(CliPipeline, ExplainListsThePixelsFragments) {
   ASSERT_EQ(text.status, 0) << text.err;
   EXPECT_NE(text.out.find("3 fragments"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("depth [4194304] (d24), passed 0b1"), std::string::npos) << text.out;
-  EXPECT_NE(text.out.find("killed: no sample passed the depth test"), std::string::npos) << text.out;
-  EXPECT_NE(text.out.find("drawn triangle: snapped (0, 0), (4, 0), (0, 4), window z [0.25, 0.25, 0.25]"),
-            std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("killed: no sample passed the depth test"), std::string::npos)
+      << text.out;
+  EXPECT_NE(
+      text.out.find("drawn triangle: snapped (0, 0), (4, 0), (0, 4), window z [0.25, 0.25, 0.25]"),
+      std::string::npos)
+      << text.out;
   EXPECT_NE(text.out.find("covered by: primitives 0, 1"), std::string::npos) << text.out;
   const auto j = run_cli({"explain", scene.string(), "--pixel", "1,0", "--json"});
   ASSERT_EQ(j.status, 0) << j.err;
@@ -291,14 +319,15 @@ TEST(CliPipeline, TheReadmeExampleRenders) {
                           "attr": [[0], [1], [0.5]]}]})");
   ASSERT_FALSE(doc["fragments"].empty());
   for (const json& f : doc["fragments"]) {
-    EXPECT_TRUE(f.contains("bary") && f.contains("attr") && f.contains("depth") && f.contains("passed"));
+    EXPECT_TRUE(f.contains("bary") && f.contains("attr") && f.contains("depth") &&
+                f.contains("passed"));
     const double u = f["attr"]["u"].get<double>();
     EXPECT_GE(u, -0.01);
     EXPECT_LE(u, 1.01);
   }
 }
 
-}  // namespace
+} // namespace
 
 namespace {
 
@@ -315,7 +344,8 @@ TEST(CliPipeline, StripSegmentsAreInterpolatedFromTheirOwnVertices) {
   const json doc = render(kStrip);
   bool seen = false;
   for (const json& f : doc["fragments"]) {
-    if (f["x"] != 15 || f["y"] != 1 || !f.contains("seg") || f["seg"] != 1) continue;
+    if (f["x"] != 15 || f["y"] != 1 || !f.contains("seg") || f["seg"] != 1)
+      continue;
     seen = true;
     EXPECT_EQ(f["bary"], json::parse("[983040, 13762560, 0, 14745600]"));
     EXPECT_EQ(f["attr"]["k"], 20);
@@ -341,4 +371,4 @@ TEST(CliPipeline, PipelinePlainGivesTheSameBytes) {
   EXPECT_EQ(a.out, b.out);
 }
 
-}  // namespace
+} // namespace

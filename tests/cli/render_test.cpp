@@ -38,10 +38,22 @@ constexpr const char* kSplitSquare = R"({"target": {"width": 4, "height": 4}, "p
   {"type": "triangle", "v": [[0, 0], [4, 0], [0, 4]]},
   {"type": "triangle", "v": [[4, 0], [4, 4], [0, 4]]}]})";
 
-const std::string kSplitSquareFragments =
-    fragments({{0, 0, 0}, {0, 1, 0}, {0, 2, 0}, {0, 0, 1}, {0, 1, 1}, {0, 0, 2},
-               {1, 3, 0}, {1, 2, 1}, {1, 3, 1}, {1, 1, 2}, {1, 2, 2}, {1, 3, 2},
-               {1, 0, 3}, {1, 1, 3}, {1, 2, 3}, {1, 3, 3}});
+const std::string kSplitSquareFragments = fragments({{0, 0, 0},
+                                                     {0, 1, 0},
+                                                     {0, 2, 0},
+                                                     {0, 0, 1},
+                                                     {0, 1, 1},
+                                                     {0, 0, 2},
+                                                     {1, 3, 0},
+                                                     {1, 2, 1},
+                                                     {1, 3, 1},
+                                                     {1, 1, 2},
+                                                     {1, 2, 2},
+                                                     {1, 3, 2},
+                                                     {1, 0, 3},
+                                                     {1, 1, 3},
+                                                     {1, 2, 3},
+                                                     {1, 3, 3}});
 
 // rule: SCENE.OUTPUT.FRAGMENTS, TRI.FILL.TOP_LEFT
 TEST(CliRender, SplitSquareGivesEachDiagonalCentreToTheTriangleWithTheLeftEdge) {
@@ -60,7 +72,8 @@ TEST(CliRender, DiagonalThroughCentresGoesToTheLeftEdgeSide) {
   // (2.5, 2.5): for the upper triangle it is a left edge (included), for the lower one a
   // right edge (excluded).
   const TempDir dir;
-  const auto scene = dir.write("scene.json", R"({"target": {"width": 4, "height": 4}, "primitives": [
+  const auto scene =
+      dir.write("scene.json", R"({"target": {"width": 4, "height": 4}, "primitives": [
     {"type": "triangle", "v": [[1, 1], [3, 1], [3, 3]]},
     {"type": "triangle", "v": [[1, 1], [3, 3], [1, 3]]}]})");
   const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()});
@@ -71,7 +84,8 @@ TEST(CliRender, DiagonalThroughCentresGoesToTheLeftEdgeSide) {
 // rule: SCENE.OUTPUT.FRAGMENTS, TRI.CULL.MODE, TRI.DEGENERATE.ZERO_AREA
 TEST(CliRender, CulledAndDegenerateTrianglesProduceNoFragments) {
   const TempDir dir;
-  const auto scene = dir.write("scene.json", R"({"target": {"width": 4, "height": 4}, "cull": "back",
+  const auto scene =
+      dir.write("scene.json", R"({"target": {"width": 4, "height": 4}, "cull": "back",
     "primitives": [
       {"type": "triangle", "v": [[0, 0], [0, 4], [4, 0]]},
       {"type": "triangle", "v": [[0, 0], [2, 2], [4, 4]]},
@@ -86,7 +100,8 @@ TEST(CliRender, CulledAndDegenerateTrianglesProduceNoFragments) {
 // rule: SCENE.OUTPUT.FRAGMENTS, RASTER.TARGET.CLIP
 TEST(CliRender, FragmentsOutsideTheTargetAreNotWritten) {
   const TempDir dir;
-  const auto scene = dir.write("scene.json", R"({"target": {"width": 2, "height": 1}, "primitives": [
+  const auto scene =
+      dir.write("scene.json", R"({"target": {"width": 2, "height": 1}, "primitives": [
     {"type": "triangle", "v": [[-100, -100], [300, -100], [-100, 300]]}]})");
   const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()});
   ASSERT_EQ(r.status, 0) << r.err;
@@ -102,7 +117,8 @@ TEST(CliRender, CoordinatesAreReadAsFloat32BeforeSnapping) {
   // - 1.501953125 = raw 384.5 snaps to 384 = 1.5: on the centre, included.
   // - 2.505859375 = raw 641.5 snaps to 642 = 2.5078125: right of the centre, which is outside.
   const TempDir dir;
-  const auto scene = dir.write("scene.json", R"({"target": {"width": 3, "height": 1}, "primitives": [
+  const auto scene =
+      dir.write("scene.json", R"({"target": {"width": 3, "height": 1}, "primitives": [
     {"type": "triangle", "v": [[0.5019531251, -1], [1, -1], [0.5019531251, 3]]},
     {"type": "triangle", "v": [[1.501953125, -1], [2, -1], [1.501953125, 3]]},
     {"type": "triangle", "v": [[2.505859375, -1], [3, -1], [2.505859375, 3]]}]})");
@@ -124,8 +140,8 @@ TEST(CliRender, ReadsStandardInputAndWritesStandardOutput) {
 TEST(CliRender, WritesAPictureOfTheMagnifiedTarget) {
   const TempDir dir;
   const auto scene = dir.write("scene.json", kSplitSquare);
-  const auto r = run_cli({"render", scene.string(), "--png", (dir / "out.png").string(), "--fragments",
-                          (dir / "out.json").string()});
+  const auto r = run_cli({"render", scene.string(), "--png", (dir / "out.png").string(),
+                          "--fragments", (dir / "out.json").string()});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto png = rastrules::test::read_png(dir / "out.png");
   ASSERT_TRUE(png.has_value());
@@ -143,10 +159,12 @@ TEST(CliRender, WritesAPictureOfTheMagnifiedTarget) {
 
 TEST(CliRender, PictureMarksOverlapsAndUncoveredPixels) {
   const TempDir dir;
-  const auto scene = dir.write("scene.json", R"({"target": {"width": 3, "height": 2}, "primitives": [
+  const auto scene =
+      dir.write("scene.json", R"({"target": {"width": 3, "height": 2}, "primitives": [
     {"type": "triangle", "v": [[0, 0], [2, 0], [0, 2]]},
     {"type": "triangle", "v": [[0, 0], [2, 0], [0, 2]]}]})");
-  const auto r = run_cli({"render", scene.string(), "--png", (dir / "out.png").string(), "--scale", "16"});
+  const auto r =
+      run_cli({"render", scene.string(), "--png", (dir / "out.png").string(), "--scale", "16"});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto png = rastrules::test::read_png(dir / "out.png");
   ASSERT_TRUE(png.has_value());
@@ -163,9 +181,10 @@ TEST(CliRender, PictureMarksOverlapsAndUncoveredPixels) {
 // rule: SCENE.INPUT.ERRORS
 TEST(CliRender, RefusesPicturesLargerThanTheLimitWithoutWritingAnything) {
   const TempDir dir;
-  const auto scene = dir.write("scene.json", R"({"target": {"width": 5000, "height": 2}, "primitives": []})");
-  const auto r = run_cli({"render", scene.string(), "--png", (dir / "out.png").string(), "--fragments",
-                          (dir / "out.json").string()});
+  const auto scene =
+      dir.write("scene.json", R"({"target": {"width": 5000, "height": 2}, "primitives": []})");
+  const auto r = run_cli({"render", scene.string(), "--png", (dir / "out.png").string(),
+                          "--fragments", (dir / "out.json").string()});
   EXPECT_EQ(r.status, 2);
   ASSERT_EQ(r.err_lines().size(), 1u) << r.err;
   EXPECT_NE(r.err.find("--png"), std::string::npos) << r.err;
@@ -177,13 +196,14 @@ TEST(CliRender, RefusesPicturesLargerThanTheLimitWithoutWritingAnything) {
 TEST(CliRender, UnwritableOutputIsAnErrorAndLeavesNothing) {
   const TempDir dir;
   const auto scene = dir.write("scene.json", kSplitSquare);
-  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "no-such-dir" / "out.json").string()});
+  const auto r = run_cli(
+      {"render", scene.string(), "--fragments", (dir / "no-such-dir" / "out.json").string()});
   EXPECT_EQ(r.status, 2);
   ASSERT_EQ(r.err_lines().size(), 1u) << r.err;
   EXPECT_NE(r.err.find("cannot create"), std::string::npos) << r.err;
 }
 
-}  // namespace
+} // namespace
 
 namespace {
 
@@ -199,4 +219,4 @@ TEST(CliRender, OutputsThatAreNotRegularFilesAreWrittenInPlace) {
   EXPECT_EQ(read_file(real), kSplitSquareFragments);
 }
 
-}  // namespace
+} // namespace

@@ -19,17 +19,20 @@ namespace {
 using rastrules::Scene;
 using rastrules::SceneError;
 
-std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f); }
+std::uint32_t bits(float f) {
+  return std::bit_cast<std::uint32_t>(f);
+}
 
 Scene read_ok(const std::string& text) {
   auto r = rastrules::io::read_scene(text);
-  if (auto* e = std::get_if<SceneError>(&r)) ADD_FAILURE() << "unexpected error: " << e->what();
+  if (auto* e = std::get_if<SceneError>(&r))
+    ADD_FAILURE() << "unexpected error: " << e->what();
   return std::holds_alternative<Scene>(r) ? std::get<Scene>(r) : Scene{};
 }
 
 std::string one_triangle(const std::string& x0) {
-  return R"({"target": {"width": 4, "height": 4}, "primitives": [{"type": "triangle", "v": [[)" + x0 +
-         R"(, 0], [4, 0], [0, 4]]}]})";
+  return R"({"target": {"width": 4, "height": 4}, "primitives": [{"type": "triangle", "v": [[)" +
+         x0 + R"(, 0], [4, 0], [0, 4]]}]})";
 }
 
 // rule: SCENE.NUMBER.FLOAT32
@@ -41,7 +44,7 @@ TEST(SceneNumberFloat32, DecimalTextIsRoundedOnceStraightToFloat32) {
   const auto f = rastrules::io::decimal_to_float32(text);
   ASSERT_TRUE(f.has_value());
   EXPECT_EQ(bits(*f), bits(1.00000011920928955078125f));
-  EXPECT_EQ(bits(static_cast<float>(std::stod(text))), bits(1.0f));  // the double rounding avoided
+  EXPECT_EQ(bits(static_cast<float>(std::stod(text))), bits(1.0f)); // the double rounding avoided
 }
 
 // rule: SCENE.NUMBER.FLOAT32, SNAP.VERTEX.ROUND
@@ -66,7 +69,7 @@ TEST(SceneNumberFloat32, NumbersBeyondFloat32BecomeInfinitiesAndTinyOnesZeros) {
   const float inf = std::numeric_limits<float>::infinity();
   EXPECT_EQ(decimal_to_float32("1e39"), inf);
   EXPECT_EQ(decimal_to_float32("-1e39"), -inf);
-  EXPECT_EQ(decimal_to_float32("3.40282357e38"), inf);  // above FLT_MAX's rounding boundary
+  EXPECT_EQ(decimal_to_float32("3.40282357e38"), inf); // above FLT_MAX's rounding boundary
   EXPECT_EQ(bits(*decimal_to_float32("3.4028235e38")), bits(std::numeric_limits<float>::max()));
   EXPECT_EQ(bits(*decimal_to_float32("1e-50")), bits(0.0f));
   EXPECT_EQ(bits(*decimal_to_float32("-1e-50")), bits(-0.0f));
@@ -125,13 +128,23 @@ TEST(SceneFormatV1, WrittenScenesReadBackBitForBit) {
   s.height = 3;
   s.state.cull = rastrules::CullMode::kBack;
   s.state.fill = rastrules::FillConvention::kTopRight;
-  const float values[] = {0.1f, -0.0f, 1e-45f, 3.4028235e38f, 16384.005859375f, 1.0f / 3.0f,
-                          std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
-                          std::numeric_limits<float>::quiet_NaN(), 32767.99609375f, -32768.0f, 7.0f};
+  const float values[] = {0.1f,
+                          -0.0f,
+                          1e-45f,
+                          3.4028235e38f,
+                          16384.005859375f,
+                          1.0f / 3.0f,
+                          std::numeric_limits<float>::infinity(),
+                          -std::numeric_limits<float>::infinity(),
+                          std::numeric_limits<float>::quiet_NaN(),
+                          32767.99609375f,
+                          -32768.0f,
+                          7.0f};
   rastrules::Primitive p;
   for (std::size_t i = 0; i < std::size(values); ++i) {
     p.v[(i / 2) % 3][i % 2] = values[i];
-    if (i % 6 == 5) s.primitives.push_back(p);
+    if (i % 6 == 5)
+      s.primitives.push_back(p);
   }
   const std::string text = rastrules::io::write_scene(s);
   const Scene back = read_ok(text);
@@ -161,7 +174,8 @@ TEST(SceneInputErrors, TheFirstErrorInReadingOrderNamesItsField) {
 
 // rule: SCENE.INPUT.ERRORS
 TEST(SceneInputErrors, ControlAndNonAsciiBytesInMessagesAreEscaped) {
-  auto r = rastrules::io::read_scene("{\"fill\": \"top-\xc3\xa9\\n\", \"target\": {\"width\": 1, \"height\": 1}}");
+  auto r = rastrules::io::read_scene(
+      "{\"fill\": \"top-\xc3\xa9\\n\", \"target\": {\"width\": 1, \"height\": 1}}");
   ASSERT_TRUE(std::holds_alternative<SceneError>(r));
   const std::string what = std::get<SceneError>(r).what();
   EXPECT_EQ(what.find('\n'), std::string::npos);
@@ -175,23 +189,23 @@ TEST(SceneOutputFragments, WriterStreamsInOrderAndRefusesFragmentsOutOfOrder) {
   rastrules::io::FragmentWriter w(f);
   EXPECT_TRUE(w.add({0, 3, 1, 1}));
   EXPECT_TRUE(w.add({0, 0, 2, 1}));
-  EXPECT_FALSE(w.add({0, 5, 1, 1}));  // row 1 after row 2
-  EXPECT_FALSE(w.add({0, 0, 2, 1}));  // a duplicate
+  EXPECT_FALSE(w.add({0, 5, 1, 1})); // row 1 after row 2
+  EXPECT_FALSE(w.add({0, 0, 2, 1})); // a duplicate
   EXPECT_TRUE(w.add({1, 0, 0, 1}));
   ASSERT_TRUE(w.finish());
   EXPECT_EQ(w.count(), 3u);
   std::rewind(f);
   std::string text;
-  for (int c; (c = std::fgetc(f)) != EOF;) text += static_cast<char>(c);
+  for (int c; (c = std::fgetc(f)) != EOF;)
+    text += static_cast<char>(c);
   std::fclose(f);
-  EXPECT_EQ(text,
-            "{\"fragments\": [\n"
-            "  {\"prim\": 0, \"x\": 3, \"y\": 1, \"mask\": 1},\n"
-            "  {\"prim\": 0, \"x\": 0, \"y\": 2, \"mask\": 1},\n"
-            "  {\"prim\": 1, \"x\": 0, \"y\": 0, \"mask\": 1}\n"
-            "]}\n");
+  EXPECT_EQ(text, "{\"fragments\": [\n"
+                  "  {\"prim\": 0, \"x\": 3, \"y\": 1, \"mask\": 1},\n"
+                  "  {\"prim\": 0, \"x\": 0, \"y\": 2, \"mask\": 1},\n"
+                  "  {\"prim\": 1, \"x\": 0, \"y\": 0, \"mask\": 1}\n"
+                  "]}\n");
   EXPECT_EQ(rastrules::io::fragments_to_json({{0, 3, 1, 1}, {0, 0, 2, 1}, {1, 0, 0, 1}}), text);
   EXPECT_EQ(rastrules::io::fragments_to_json({}), "{\"fragments\": []}\n");
 }
 
-}  // namespace
+} // namespace

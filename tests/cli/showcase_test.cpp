@@ -2,10 +2,10 @@
 // rastrules showcase: every built-in scene agrees with the exact oracle, and its files are
 // what render produces from its scene file.
 
-#include <filesystem>
 #include <cstdio>
-#include <sstream>
+#include <filesystem>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -30,7 +30,8 @@ TEST(CliShowcase, EverySceneAgreesWithTheOracleAndItsFilesAreConsistent) {
   const std::size_t at = r.out.rfind("showcase: ");
   ASSERT_NE(at, std::string::npos) << r.out;
   int scenes = -1, agreeing = -1, differing = -1;
-  ASSERT_EQ(std::sscanf(r.out.c_str() + at, "showcase: %d scenes, %d agree with the oracle, %d differ;", &scenes,
+  ASSERT_EQ(std::sscanf(r.out.c_str() + at,
+                        "showcase: %d scenes, %d agree with the oracle, %d differ;", &scenes,
                         &agreeing, &differing),
             3)
       << r.out;
@@ -42,7 +43,8 @@ TEST(CliShowcase, EverySceneAgreesWithTheOracleAndItsFilesAreConsistent) {
   for (const auto& e : std::filesystem::directory_iterator(out)) {
     const std::string name = e.path().filename().string();
     const std::string suffix = ".scene.json";
-    if (name.size() > suffix.size() && name.ends_with(suffix)) stems.insert(name.substr(0, name.size() - suffix.size()));
+    if (name.size() > suffix.size() && name.ends_with(suffix))
+      stems.insert(name.substr(0, name.size() - suffix.size()));
   }
   ASSERT_EQ(stems.size(), static_cast<std::size_t>(scenes));
   for (const std::string& stem : stems) {
@@ -51,13 +53,15 @@ TEST(CliShowcase, EverySceneAgreesWithTheOracleAndItsFilesAreConsistent) {
     std::istringstream table(r.out);
     bool row_agrees = false;
     for (std::string line; std::getline(table, line);) {
-      if (line.rfind(stem + " ", 0) == 0) row_agrees = line.size() > 5 && line.ends_with("  yes");
+      if (line.rfind(stem + " ", 0) == 0)
+        row_agrees = line.size() > 5 && line.ends_with("  yes");
     }
     EXPECT_TRUE(row_agrees) << r.out;
     EXPECT_TRUE(rastrules::test::read_png(out / (stem + ".png")).has_value());
     // Rendering the written scene file reproduces the written fragment list byte for byte.
     const auto again = dir / (stem + ".again.json");
-    const auto rr = run_cli({"render", (out / (stem + ".scene.json")).string(), "--fragments", again.string()});
+    const auto rr =
+        run_cli({"render", (out / (stem + ".scene.json")).string(), "--fragments", again.string()});
     ASSERT_EQ(rr.status, 0) << rr.err;
     EXPECT_EQ(read_file(again), read_file(out / (stem + ".fragments.json")));
   }
@@ -98,4 +102,4 @@ TEST(CliShowcase, MissingOutputDirectoryIsAUsageError) {
   EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
 }
 
-}  // namespace
+} // namespace

@@ -33,14 +33,16 @@ std::string shell_quote(const std::string& s) {
 
 std::atomic<int> g_counter{0};
 
-}  // namespace
+} // namespace
 
 TempDir::TempDir() {
   const auto base = std::filesystem::temp_directory_path();
   for (;;) {
-    path_ = base / ("rastrules-cli-test-" + std::to_string(::getpid()) + "-" + std::to_string(g_counter++));
+    path_ = base / ("rastrules-cli-test-" + std::to_string(::getpid()) + "-" +
+                    std::to_string(g_counter++));
     std::error_code ec;
-    if (std::filesystem::create_directory(path_, ec)) break;
+    if (std::filesystem::create_directory(path_, ec))
+      break;
   }
 }
 
@@ -58,7 +60,8 @@ std::filesystem::path TempDir::write(const std::string& name, const std::string&
 std::vector<std::string> RunResult::err_lines() const {
   std::vector<std::string> lines;
   std::istringstream in(err);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  for (std::string line; std::getline(in, line);)
+    lines.push_back(line);
   return lines;
 }
 
@@ -67,7 +70,8 @@ RunResult run_cli(const std::vector<std::string>& args, const std::string& stdin
   const auto out_path = io / "stdout";
   const auto err_path = io / "stderr";
   std::string cmd = shell_quote(RASTRULES_CLI);
-  for (const std::string& a : args) cmd += " " + shell_quote(a);
+  for (const std::string& a : args)
+    cmd += " " + shell_quote(a);
   cmd += " <" + shell_quote(stdin_path) + " >" + shell_quote(out_path.string()) + " 2>" +
          shell_quote(err_path.string());
   const int raw = std::system(cmd.c_str());
@@ -90,7 +94,8 @@ namespace {
 // libpng reports errors by longjmp: only trivially destructible objects live in this frame.
 bool read_png_rows(std::FILE* f, Png* out, int color_type, std::size_t channels) {
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  if (png == nullptr) return false;
+  if (png == nullptr)
+    return false;
   png_infop info = png_create_info_struct(png);
   if (info == nullptr) {
     png_destroy_read_struct(&png, nullptr, nullptr);
@@ -102,7 +107,8 @@ bool read_png_rows(std::FILE* f, Png* out, int color_type, std::size_t channels)
   }
   png_init_io(png, f);
   png_read_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
-  const bool rgb8 = png_get_color_type(png, info) == color_type && png_get_bit_depth(png, info) == 8;
+  const bool rgb8 =
+      png_get_color_type(png, info) == color_type && png_get_bit_depth(png, info) == 8;
   if (rgb8) {
     out->width = png_get_image_width(png, info);
     out->height = png_get_image_height(png, info);
@@ -110,33 +116,38 @@ bool read_png_rows(std::FILE* f, Png* out, int color_type, std::size_t channels)
     out->rgb.resize(static_cast<std::size_t>(out->width) * out->height * channels);
     for (std::uint32_t y = 0; y < out->height; ++y) {
       std::copy(rows[y], rows[y] + static_cast<std::size_t>(out->width) * channels,
-                out->rgb.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) * out->width * channels));
+                out->rgb.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(y) *
+                                                               out->width * channels));
     }
   }
   png_destroy_read_struct(&png, &info, nullptr);
   return rgb8;
 }
 
-}  // namespace
+} // namespace
 
 std::optional<Png> read_png(const std::filesystem::path& path) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (f == nullptr) return std::nullopt;
+  if (f == nullptr)
+    return std::nullopt;
   Png png;
   const bool ok = read_png_rows(f, &png, PNG_COLOR_TYPE_RGB, 3);
   std::fclose(f);
-  if (!ok) return std::nullopt;
+  if (!ok)
+    return std::nullopt;
   return png;
 }
 
 std::optional<Png> read_png_rgba(const std::filesystem::path& path) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (f == nullptr) return std::nullopt;
+  if (f == nullptr)
+    return std::nullopt;
   Png png;
   const bool ok = read_png_rows(f, &png, PNG_COLOR_TYPE_RGB_ALPHA, 4);
   std::fclose(f);
-  if (!ok) return std::nullopt;
+  if (!ok)
+    return std::nullopt;
   return png;
 }
 
-}  // namespace rastrules::test
+} // namespace rastrules::test

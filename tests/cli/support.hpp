@@ -16,7 +16,7 @@ namespace rastrules::test {
 // A fresh directory under the system temporary directory, removed with its contents on
 // destruction.
 class TempDir {
- public:
+public:
   TempDir();
   TempDir(const TempDir&) = delete;
   TempDir& operator=(const TempDir&) = delete;
@@ -24,14 +24,16 @@ class TempDir {
   [[nodiscard]] const std::filesystem::path& path() const { return path_; }
   // Writes `text` to the file `name` in the directory and returns its path.
   std::filesystem::path write(const std::string& name, const std::string& text) const;
-  [[nodiscard]] std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+  [[nodiscard]] std::filesystem::path operator/(const std::string& name) const {
+    return path_ / name;
+  }
 
- private:
+private:
   std::filesystem::path path_;
 };
 
 struct RunResult {
-  int status = -1;  // exit status, or -1 when the process did not exit normally
+  int status = -1; // exit status, or -1 when the process did not exit normally
   std::string out;
   std::string err;
   [[nodiscard]] std::vector<std::string> err_lines() const;
@@ -39,13 +41,14 @@ struct RunResult {
 
 // Runs the rastrules binary with `args` (no shell interpretation of the arguments), with
 // standard input from `stdin_path` (or /dev/null).
-RunResult run_cli(const std::vector<std::string>& args, const std::string& stdin_path = "/dev/null");
+RunResult run_cli(const std::vector<std::string>& args,
+                  const std::string& stdin_path = "/dev/null");
 
 std::string read_file(const std::filesystem::path& path);
 
 struct Png {
   std::uint32_t width = 0, height = 0;
-  std::vector<std::uint8_t> rgb;  // 3 bytes per pixel, rows top first
+  std::vector<std::uint8_t> rgb; // 3 bytes per pixel, rows top first
   [[nodiscard]] std::array<std::uint8_t, 3> at(std::uint32_t x, std::uint32_t y) const {
     const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 3;
     return {rgb[i], rgb[i + 1], rgb[i + 2]};
@@ -64,4 +67,4 @@ std::optional<Png> read_png(const std::filesystem::path& path);
 // rgba_at); nullopt when the file is not one.
 std::optional<Png> read_png_rgba(const std::filesystem::path& path);
 
-}  // namespace rastrules::test
+} // namespace rastrules::test

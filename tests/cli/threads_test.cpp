@@ -3,8 +3,8 @@
 // --resolve, the same errors and limits, and a one-line error naming the flag for a bad
 // --threads, --traversal or --isa value.
 
-#include <filesystem>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -27,11 +27,13 @@ std::string mixed_scene(const std::string& extra_keys) {
   for (int i = 0; i < 15; ++i) {
     const std::string o = std::to_string(i), o2 = std::to_string(i + 4.5);
     const std::string c = std::to_string(15 * i);
-    s += std::string(i == 0 ? "" : ",") + R"({"type": "triangle", "v": [[)" + o + R"(, 0.5], [)" + o2 +
-         R"(, 3], [)" + o + R"(.25, 11.5]], "color": [)" + c + R"(, 40, 200, 255]},)";
+    s += std::string(i == 0 ? "" : ",") + R"({"type": "triangle", "v": [[)" + o + R"(, 0.5], [)" +
+         o2 + R"(, 3], [)" + o + R"(.25, 11.5]], "color": [)" + c + R"(, 40, 200, 255]},)";
     s += R"({"type": "point", "v": [[)" + o + R"(.5, 18.5]]},)";
-    s += R"({"type": "line", "v": [[0.5, )" + o + R"(.75], [19, )" + std::to_string(19 - i) + R"(]]},)";
-    s += R"({"type": "line_strip", "v": [[)" + o + R"(, 19], [)" + o2 + R"(, 12], [19.5, )" + o + R"(]]})";
+    s += R"({"type": "line", "v": [[0.5, )" + o + R"(.75], [19, )" + std::to_string(19 - i) +
+         R"(]]},)";
+    s += R"({"type": "line_strip", "v": [[)" + o + R"(, 19], [)" + o2 + R"(, 12], [19.5, )" + o +
+         R"(]]})";
   }
   return s + "]}";
 }
@@ -44,10 +46,12 @@ struct Outputs {
 Outputs render(const TempDir& dir, const std::string& scene, const std::string& threads,
                const std::vector<std::string>& extra = {}) {
   const std::string tag = "t" + threads;
-  std::vector<std::string> args = {"render", (dir / scene).string(), "--threads", threads,
+  std::vector<std::string> args = {"render",      (dir / scene).string(),
+                                   "--threads",   threads,
                                    "--fragments", (dir / (tag + ".json")).string(),
-                                   "--png", (dir / (tag + ".png")).string(), "--scale", "4",
-                                   "--resolve", (dir / (tag + ".resolve.png")).string()};
+                                   "--png",       (dir / (tag + ".png")).string(),
+                                   "--scale",     "4",
+                                   "--resolve",   (dir / (tag + ".resolve.png")).string()};
   args.insert(args.end(), extra.begin(), extra.end());
   Outputs o;
   o.run = run_cli(args);
@@ -119,15 +123,19 @@ TEST(CliThreads, LimitsGiveTheSameErrorForEveryThreadCount) {
       for (const std::string n : {"2", "5", "16"}) {
         const Outputs many = render(dir, "scene.json", n, {"--max-fragments", limit});
         EXPECT_EQ(many.run.status, 2);
-        EXPECT_EQ(many.run.err, one.run.err) << keys << " --max-fragments " << limit << " --threads " << n;
+        EXPECT_EQ(many.run.err, one.run.err)
+            << keys << " --max-fragments " << limit << " --threads " << n;
         EXPECT_FALSE(std::filesystem::exists(dir / ("t" + n + ".json")));
       }
     }
   }
   // A scene error is the same too.
-  dir.write("bad.json", R"({"target": {"width": 4, "height": 4}, "primitives": [{"type": "point", "v": [[1, 1]]}, {"type": "triangle", "v": [[0, 0], [1, 0]]}]})");
+  dir.write(
+      "bad.json",
+      R"({"target": {"width": 4, "height": 4}, "primitives": [{"type": "point", "v": [[1, 1]]}, {"type": "triangle", "v": [[0, 0], [1, 0]]}]})");
   const RunResult one = run_cli({"render", (dir / "bad.json").string(), "--fragments", "-"});
-  const RunResult four = run_cli({"render", (dir / "bad.json").string(), "--fragments", "-", "--threads", "4"});
+  const RunResult four =
+      run_cli({"render", (dir / "bad.json").string(), "--fragments", "-", "--threads", "4"});
   EXPECT_EQ(one.status, 2);
   EXPECT_EQ(four.status, 2);
   EXPECT_EQ(four.err, one.err);
@@ -184,12 +192,12 @@ TEST(CliThreads, AnIsaTheProcessorLacksIsAnErrorNamingIt) {
     EXPECT_EQ(r.status, 0) << ok << ": " << r.err;
   }
   ASSERT_EQ(setenv(rastrules::kMaxIsaVariable, "sse9", 1), 0);
-  const RunResult bad = run_cli({"render", (dir / "scene.json").string(), "--fragments",
-                                 (dir / "out.json").string()});
+  const RunResult bad = run_cli(
+      {"render", (dir / "scene.json").string(), "--fragments", (dir / "out.json").string()});
   EXPECT_EQ(bad.status, 2);
   ASSERT_EQ(bad.err_lines().size(), 1u) << bad.err;
   EXPECT_NE(bad.err_lines()[0].find("RASTRULES_MAX_ISA"), std::string::npos) << bad.err;
   ASSERT_EQ(unsetenv(rastrules::kMaxIsaVariable), 0);
 }
 
-}  // namespace
+} // namespace

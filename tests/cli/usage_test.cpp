@@ -42,7 +42,8 @@ TEST(CliUsage, UsageErrorsExitWithStatus2AndPrintUsage) {
   };
   for (const auto& args : cases) {
     std::string shown;
-    for (const auto& a : args) shown += a + " ";
+    for (const auto& a : args)
+      shown += a + " ";
     const auto r = run_cli(args);
     EXPECT_EQ(r.status, 2) << shown;
     EXPECT_EQ(r.err.rfind("rastrules: error: ", 0), 0u) << shown << ": " << r.err;
@@ -51,4 +52,4 @@ TEST(CliUsage, UsageErrorsExitWithStatus2AndPrintUsage) {
   }
 }
 
-}  // namespace
+} // namespace

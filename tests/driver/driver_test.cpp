@@ -49,16 +49,19 @@ TEST(ReferenceDriver, MatchesTheKernelWithoutUnobservableFields) {
   const auto& got = std::get<std::vector<Fragment>>(r);
   const auto kernel = std::get<std::vector<Fragment>>(render(s));
   // The kernel lists helper lanes and centroids here; the driver keeps only covered fragments.
-  ASSERT_TRUE(std::any_of(kernel.begin(), kernel.end(), [](const Fragment& f) { return f.helper; }));
+  ASSERT_TRUE(
+      std::any_of(kernel.begin(), kernel.end(), [](const Fragment& f) { return f.helper; }));
   std::vector<Fragment> expected;
   for (Fragment f : kernel) {
-    if (f.helper) continue;
+    if (f.helper)
+      continue;
     f.centroid.reset();
     f.derivatives.reset();
     expected.push_back(f);
   }
   EXPECT_EQ(got, expected);
-  for (const Fragment& f : got) EXPECT_NE(f.mask, 0U);
+  for (const Fragment& f : got)
+    EXPECT_NE(f.mask, 0U);
 }
 
 // rule: DRIVER.REFERENCE
@@ -68,12 +71,13 @@ TEST(ReferenceDriver, InvalidSceneIsAnErrorNamingTheField) {
   Scene s;
   s.width = 4;
   s.height = 4;
-  s.primitives.push_back(make_triangle({{{0.0F, 0.0F}, {std::numeric_limits<float>::quiet_NaN(), 1.0F}, {2.0F, 2.0F}}}));
+  s.primitives.push_back(make_triangle(
+      {{{0.0F, 0.0F}, {std::numeric_limits<float>::quiet_NaN(), 1.0F}, {2.0F, 2.0F}}}));
   const DrawResult r = d->draw(s);
   ASSERT_TRUE(std::holds_alternative<DriverError>(r));
   EXPECT_NE(std::get<DriverError>(r).message.find("primitives[0].v[1][0]"), std::string::npos)
       << std::get<DriverError>(r).message;
 }
 
-}  // namespace
-}  // namespace rastrules::driver
+} // namespace
+} // namespace rastrules::driver

@@ -40,17 +40,19 @@ inline Driver* shared_driver(const std::string& name, std::string* why) {
 }
 
 // Declares Driver* var, the shared driver `name`, or skips the test saying `missing` and why.
-#define RASTRULES_DRIVER_OR_SKIP(var, name, missing)                                  \
-  std::string var##_why;                                                              \
-  Driver* var = ::rastrules::driver::gpu_test::shared_driver(name, &var##_why);        \
-  if (var == nullptr) GTEST_SKIP() << missing << ": " << var##_why
+#define RASTRULES_DRIVER_OR_SKIP(var, name, missing)                                               \
+  std::string var##_why;                                                                           \
+  Driver* var = ::rastrules::driver::gpu_test::shared_driver(name, &var##_why);                    \
+  if (var == nullptr)                                                                              \
+  GTEST_SKIP() << missing << ": " << var##_why
 
 // The fragments as " {prim x,y mMASK[ sSEG]}..." for readable failures and comparisons.
 inline std::string describe(const std::vector<Fragment>& fs) {
   std::ostringstream os;
   for (const Fragment& f : fs) {
     os << " {" << f.prim << " " << f.x << "," << f.y << " m" << f.mask;
-    if (f.seg) os << " s" << *f.seg;
+    if (f.seg)
+      os << " s" << *f.seg;
     os << "}";
   }
   return os.str();
@@ -105,7 +107,9 @@ inline Primitive prim(PrimitiveType t, std::vector<FloatPoint> v) {
   return p;
 }
 
-inline Primitive line(FloatPoint a, FloatPoint b) { return prim(PrimitiveType::kLine, {a, b}); }
+inline Primitive line(FloatPoint a, FloatPoint b) {
+  return prim(PrimitiveType::kLine, {a, b});
+}
 
 // A fragment list written (x, y, mask) for one primitive without seg.
 inline std::vector<Fragment> frags(std::uint32_t prim_index,
@@ -117,4 +121,4 @@ inline std::vector<Fragment> frags(std::uint32_t prim_index,
   return out;
 }
 
-}  // namespace rastrules::driver::gpu_test
+} // namespace rastrules::driver::gpu_test

@@ -35,7 +35,8 @@ using gpu_test::reference;
 using gpu_test::scene;
 
 // One lavapipe driver for the whole program (gpu_test::shared_driver).
-#define RASTRULES_LAVAPIPE_OR_SKIP(var) RASTRULES_DRIVER_OR_SKIP(var, "lavapipe", "no CPU Vulkan device")
+#define RASTRULES_LAVAPIPE_OR_SKIP(var)                                                            \
+  RASTRULES_DRIVER_OR_SKIP(var, "lavapipe", "no CPU Vulkan device")
 
 // Draws s with lavapipe and the reference, expects the same non-empty fragments.
 void expect_same_as_reference(const Scene& s) {
@@ -67,7 +68,7 @@ TEST(Lavapipe, NamesWhatItCannotDraw) {
   RASTRULES_LAVAPIPE_OR_SKIP(d);
   Scene s = scene(8, 8);
   s.primitives.push_back(line({0.5F, 0.5F}, {5.5F, 2.5F}));
-  EXPECT_NE(d->unsupported(s).find("d3d"), std::string::npos);  // default line mode
+  EXPECT_NE(d->unsupported(s).find("d3d"), std::string::npos); // default line mode
   s.line_mode = LineMode::kQuadWide;
   EXPECT_NE(d->unsupported(s).find("quad-wide"), std::string::npos);
   s.line_mode = LineMode::kVulkanBresenham;
@@ -84,7 +85,7 @@ TEST(Lavapipe, NamesWhatItCannotDraw) {
   t.msaa.shading = ShadingRate::kSample;
   EXPECT_NE(d->unsupported(t).find("sample-frequency"), std::string::npos);
   t.msaa.shading = ShadingRate::kPixel;
-  t.primitives[0].v[0] = {30000.0F, 2.0F};  // needs a viewport wider than the device's
+  t.primitives[0].v[0] = {30000.0F, 2.0F}; // needs a viewport wider than the device's
   EXPECT_NE(d->unsupported(t).find("viewport"), std::string::npos);
   const DrawResult r = d->draw(t);
   ASSERT_TRUE(std::holds_alternative<DriverError>(r));
@@ -116,16 +117,17 @@ TEST(Lavapipe, TriangleSnappingTiesMatchTheReference) {
   std::mt19937 rng(20260611);
   const auto coord = [&] {
     const auto v = static_cast<float>(rng() % 4096U);
-    return (rng() % 2U == 0U) ? v / 512.0F : v / 1024.0F;  // ties at odd multiples of 1/512
+    return (rng() % 2U == 0U) ? v / 512.0F : v / 1024.0F; // ties at odd multiples of 1/512
   };
   for (std::uint32_t samples : {1U, 4U}) {
     for (int c = 0; c < 60; ++c) {
       Scene s = scene(8, 8, samples);
-      s.primitives.push_back(make_triangle({{{coord(), coord()}, {coord(), coord()}, {coord(), coord()}}}));
+      s.primitives.push_back(
+          make_triangle({{{coord(), coord()}, {coord(), coord()}, {coord(), coord()}}}));
       const auto got = draw_ok(*d, s);
       const auto want = reference(s);
-      ASSERT_EQ(got, want) << "case " << c << " samples " << samples << "\nlavapipe:" << describe(got)
-                           << "\nreference:" << describe(want);
+      ASSERT_EQ(got, want) << "case " << c << " samples " << samples
+                           << "\nlavapipe:" << describe(got) << "\nreference:" << describe(want);
     }
   }
 }
@@ -152,12 +154,12 @@ TEST(Lavapipe, CullingMapsWindingDirectly) {
 TEST(Lavapipe, PointsMatchTheReference) {
   Scene s = scene(8, 6);
   s.primitives.push_back(prim(PrimitiveType::kPoint, {{2.5F, 2.5F}}));
-  s.primitives.push_back(prim(PrimitiveType::kPoint, {{4.0F, 4.0F}}));  // edges through centres
+  s.primitives.push_back(prim(PrimitiveType::kPoint, {{4.0F, 4.0F}})); // edges through centres
   s.primitives.push_back(prim(PrimitiveType::kPoint, {{7.75F, 0.25F}}));
   expect_same_as_reference(s);
   Scene m = s;
   m.msaa.pattern = standard_pattern(4);
-  m.primitives.push_back(prim(PrimitiveType::kPoint, {{6.125F, 1.5F}}));  // samples on the edges
+  m.primitives.push_back(prim(PrimitiveType::kPoint, {{6.125F, 1.5F}})); // samples on the edges
   expect_same_as_reference(m);
 }
 
@@ -168,11 +170,12 @@ TEST(Lavapipe, PointsMatchTheReference) {
 TEST(Lavapipe, PointPositionTiesRoundUp) {
   RASTRULES_LAVAPIPE_OR_SKIP(d);
   Scene s = scene(8, 4);
-  s.primitives.push_back(prim(PrimitiveType::kPoint, {{6.001953125F, 1.5F}}));  // 1536.5 raw
-  EXPECT_EQ(describe(reference(s)), describe(frags(0, {{5, 1, 1}})));  // 1536 raw: square [5.5, 6.5), centre 5.5
-  EXPECT_EQ(describe(draw_ok(*d, s)), describe(frags(0, {{6, 1, 1}})));  // as if 1537 raw
+  s.primitives.push_back(prim(PrimitiveType::kPoint, {{6.001953125F, 1.5F}})); // 1536.5 raw
+  EXPECT_EQ(describe(reference(s)),
+            describe(frags(0, {{5, 1, 1}}))); // 1536 raw: square [5.5, 6.5), centre 5.5
+  EXPECT_EQ(describe(draw_ok(*d, s)), describe(frags(0, {{6, 1, 1}}))); // as if 1537 raw
   // Just below the tie both agree.
-  s.primitives[0].v[0] = {5.998046875F, 1.5F};  // 1535.5 raw: even and up are both 1536
+  s.primitives[0].v[0] = {5.998046875F, 1.5F}; // 1535.5 raw: even and up are both 1536
   EXPECT_EQ(describe(draw_ok(*d, s)), describe(reference(s)));
   // The same tie in y, and on a 4x target.
   Scene t = scene(8, 4);
@@ -180,9 +183,10 @@ TEST(Lavapipe, PointPositionTiesRoundUp) {
   EXPECT_EQ(describe(reference(t)), describe(frags(0, {{6, 1, 1}})));
   EXPECT_EQ(describe(draw_ok(*d, t)), describe(frags(0, {{6, 2, 1}})));
   Scene m = scene(8, 4, 4);
-  m.primitives.push_back(prim(PrimitiveType::kPoint, {{6.126953125F, 1.5F}}));  // 1568.5 raw
+  m.primitives.push_back(prim(PrimitiveType::kPoint, {{6.126953125F, 1.5F}})); // 1568.5 raw
   EXPECT_EQ(describe(reference(m)), describe(frags(0, {{5, 1, 10}, {6, 1, 5}})));
-  EXPECT_EQ(describe(draw_ok(*d, m)), describe(frags(0, {{5, 1, 2}, {6, 1, 13}})));  // as if 1569 raw
+  EXPECT_EQ(describe(draw_ok(*d, m)),
+            describe(frags(0, {{5, 1, 2}, {6, 1, 13}}))); // as if 1569 raw
 }
 
 // Bresenham lines whose end points are on pixel centres or away from every diamond: exactly
@@ -204,19 +208,22 @@ TEST(Lavapipe, BresenhamLinesMatchTheReferenceAwayFromTies) {
 // the pixel holding the start point.
 bool within_vulkan_allowance(const std::vector<Fragment>& got, const std::vector<Fragment>& exact,
                              bool x_major, FloatPoint start) {
-  if (got.size() + 1 < exact.size() || exact.size() + 1 < got.size()) return false;
+  if (got.size() + 1 < exact.size() || exact.size() + 1 < got.size())
+    return false;
   for (const Fragment& g : got) {
     const bool near = exact.empty()
-        ? std::abs(static_cast<float>(g.x) - std::floor(start[0])) <= 1.0F &&
-              std::abs(static_cast<float>(g.y) - std::floor(start[1])) <= 1.0F
-        : std::any_of(exact.begin(), exact.end(), [&](const Fragment& e) {
-            return std::abs(e.x - g.x) <= 1 && std::abs(e.y - g.y) <= 1;
-          });
-    if (!near) return false;
+                          ? std::abs(static_cast<float>(g.x) - std::floor(start[0])) <= 1.0F &&
+                                std::abs(static_cast<float>(g.y) - std::floor(start[1])) <= 1.0F
+                          : std::any_of(exact.begin(), exact.end(), [&](const Fragment& e) {
+                              return std::abs(e.x - g.x) <= 1 && std::abs(e.y - g.y) <= 1;
+                            });
+    if (!near)
+      return false;
   }
   std::set<std::int32_t> majors;
   for (const Fragment& g : got) {
-    if (!majors.insert(x_major ? g.x : g.y).second) return false;
+    if (!majors.insert(x_major ? g.x : g.y).second)
+      return false;
   }
   return true;
 }
@@ -228,16 +235,21 @@ TEST(Lavapipe, BresenhamEndsDeviateWithinVulkanAllowance) {
   RASTRULES_LAVAPIPE_OR_SKIP(d);
   // The minimal scenes of the finding.
   const Scene a = line_scene(8, 8, 1, LineMode::kVulkanBresenham,
-                             {line({1.25F, 1.5F}, {6.75F, 3.25F})});  // b on the diamond of (6, 3)
-  EXPECT_EQ(describe(reference(a)), describe(frags(0, {{1, 1, 1}, {2, 1, 1}, {3, 2, 1}, {4, 2, 1}, {5, 2, 1}})));
-  EXPECT_EQ(describe(draw_ok(*d, a)), describe(frags(0, {{1, 1, 1}, {2, 1, 1}, {3, 2, 1}, {4, 2, 1}, {5, 2, 1}, {6, 3, 1}})));
-  const Scene b = line_scene(8, 8, 1, LineMode::kVulkanBresenham,
-                             {line({7.75F, 6.5F}, {7.75F, 4.5F})});  // a inside the diamond of (7, 6)
+                             {line({1.25F, 1.5F}, {6.75F, 3.25F})}); // b on the diamond of (6, 3)
+  EXPECT_EQ(describe(reference(a)),
+            describe(frags(0, {{1, 1, 1}, {2, 1, 1}, {3, 2, 1}, {4, 2, 1}, {5, 2, 1}})));
+  EXPECT_EQ(describe(draw_ok(*d, a)),
+            describe(frags(0, {{1, 1, 1}, {2, 1, 1}, {3, 2, 1}, {4, 2, 1}, {5, 2, 1}, {6, 3, 1}})));
+  const Scene b =
+      line_scene(8, 8, 1, LineMode::kVulkanBresenham,
+                 {line({7.75F, 6.5F}, {7.75F, 4.5F})}); // a inside the diamond of (7, 6)
   EXPECT_EQ(describe(reference(b)), describe(frags(0, {{7, 5, 1}, {7, 6, 1}})));
   EXPECT_EQ(describe(draw_ok(*d, b)), describe(frags(0, {{7, 5, 1}})));
-  const Scene c = line_scene(8, 8, 1, LineMode::kVulkanBresenham,
-                             {line({3.5F, 6.5F}, {3.5F, 2.5F})});  // y-major, upwards, centre to centre
-  EXPECT_EQ(describe(reference(c)), describe(frags(0, {{3, 3, 1}, {3, 4, 1}, {3, 5, 1}, {3, 6, 1}})));
+  const Scene c =
+      line_scene(8, 8, 1, LineMode::kVulkanBresenham,
+                 {line({3.5F, 6.5F}, {3.5F, 2.5F})}); // y-major, upwards, centre to centre
+  EXPECT_EQ(describe(reference(c)),
+            describe(frags(0, {{3, 3, 1}, {3, 4, 1}, {3, 5, 1}, {3, 6, 1}})));
   EXPECT_EQ(describe(draw_ok(*d, c)), describe(frags(0, {{3, 3, 1}, {3, 4, 1}, {3, 5, 1}})));
   // Seeded lines with tie-heavy end points: every difference is an allowed one, and there
   // are differences (the finding still holds).
@@ -255,11 +267,12 @@ TEST(Lavapipe, BresenhamEndsDeviateWithinVulkanAllowance) {
     s.primitives.push_back(line(p, q));
     const auto got = draw_ok(*d, s);
     const auto want = reference(s);
-    if (got != want) ++differ;
+    if (got != want)
+      ++differ;
     const bool x_major = std::abs(q[0] - p[0]) >= std::abs(q[1] - p[1]);
     EXPECT_TRUE(within_vulkan_allowance(got, want, x_major, p))
-        << "(" << p[0] << "," << p[1] << ")-(" << q[0] << "," << q[1] << ")\nlavapipe:"
-        << describe(got) << "\nreference:" << describe(want);
+        << "(" << p[0] << "," << p[1] << ")-(" << q[0] << "," << q[1]
+        << ")\nlavapipe:" << describe(got) << "\nreference:" << describe(want);
   }
   EXPECT_GT(differ, 0);
 }
@@ -281,7 +294,8 @@ TEST(Lavapipe, LineStripIsItsSegmentsWithTheirIndex) {
     const auto strip = draw_ok(*d, s);
     Scene t = scene(12, 12);
     t.line_mode = mode;
-    for (std::size_t k = 0; k + 1 < v.size(); ++k) t.primitives.push_back(line(v[k], v[k + 1]));
+    for (std::size_t k = 0; k + 1 < v.size(); ++k)
+      t.primitives.push_back(line(v[k], v[k + 1]));
     std::vector<Fragment> lines;
     for (Fragment f : draw_ok(*d, t)) {
       f.seg = f.prim;
@@ -296,8 +310,8 @@ TEST(Lavapipe, LineStripIsItsSegmentsWithTheirIndex) {
     EXPECT_TRUE(std::any_of(strip_only.begin(), strip_only.end(),
                             [](const Fragment& f) { return f.seg == 2U; }));
     // End points on pixel centres: no tie, the reference agrees too.
-    EXPECT_EQ(strip, reference(s)) << "lavapipe:" << describe(strip) << "\nreference:"
-                                   << describe(reference(s));
+    EXPECT_EQ(strip, reference(s))
+        << "lavapipe:" << describe(strip) << "\nreference:" << describe(reference(s));
   }
 }
 
@@ -307,7 +321,7 @@ TEST(Lavapipe, RectangularLinesMatchTheReference) {
   s.line_mode = LineMode::kQuadNarrow;
   s.primitives.push_back(line({0.5F, 1.25F}, {10.5F, 5.25F}));
   s.primitives.push_back(line({3.0F, 10.0F}, {5.0F, 2.0F}));
-  s.primitives.push_back(line({0.5F, 3.0F}, {4.5F, 3.0F}));  // edges through centres
+  s.primitives.push_back(line({0.5F, 3.0F}, {4.5F, 3.0F})); // edges through centres
   expect_same_as_reference(s);
   Scene m = s;
   m.msaa.pattern = standard_pattern(4);
@@ -340,9 +354,12 @@ TEST(Lavapipe, Msaa4SampleMaskMatchesTheReference) {
 // rule: DRIVER.LAVAPIPE.COVERAGE, MSAA.LINE.MODE
 TEST(Lavapipe, Msaa4BresenhamCoversOnlySampleZero) {
   RASTRULES_LAVAPIPE_OR_SKIP(d);
-  const Scene s = line_scene(8, 4, 4, LineMode::kVulkanBresenham, {line({0.5F, 1.5F}, {4.5F, 1.5F})});
-  EXPECT_EQ(describe(reference(s)), describe(frags(0, {{0, 1, 15}, {1, 1, 15}, {2, 1, 15}, {3, 1, 15}})));
-  EXPECT_EQ(describe(draw_ok(*d, s)), describe(frags(0, {{0, 1, 1}, {1, 1, 1}, {2, 1, 1}, {3, 1, 1}})));
+  const Scene s =
+      line_scene(8, 4, 4, LineMode::kVulkanBresenham, {line({0.5F, 1.5F}, {4.5F, 1.5F})});
+  EXPECT_EQ(describe(reference(s)),
+            describe(frags(0, {{0, 1, 15}, {1, 1, 15}, {2, 1, 15}, {3, 1, 15}})));
+  EXPECT_EQ(describe(draw_ok(*d, s)),
+            describe(frags(0, {{0, 1, 1}, {1, 1, 1}, {2, 1, 1}, {3, 1, 1}})));
 }
 
 // FINDING.LAVAPIPE.MSAA_RECT_EDGE: on a 4x target lavapipe draws nothing for a rectangular
@@ -351,8 +368,8 @@ TEST(Lavapipe, Msaa4BresenhamCoversOnlySampleZero) {
 // rule: DRIVER.LAVAPIPE.COVERAGE, RASTER.TARGET.CLIP
 TEST(Lavapipe, Msaa4RectangularLineCrossingTheRightOrBottomEdgeIsDropped) {
   RASTRULES_LAVAPIPE_OR_SKIP(d);
-  const Primitive right = line({7.75F, 6.5F}, {7.75F, 4.5F});  // rectangle x in [7.25, 8.25]
-  const Primitive low = line({1.5F, 7.75F}, {5.5F, 7.75F});     // y in [7.25, 8.25]
+  const Primitive right = line({7.75F, 6.5F}, {7.75F, 4.5F}); // rectangle x in [7.25, 8.25]
+  const Primitive low = line({1.5F, 7.75F}, {5.5F, 7.75F});   // y in [7.25, 8.25]
   const Scene s = line_scene(8, 8, 4, LineMode::kQuadNarrow, {right});
   EXPECT_FALSE(reference(s).empty());
   EXPECT_TRUE(draw_ok(*d, s).empty());
@@ -360,8 +377,9 @@ TEST(Lavapipe, Msaa4RectangularLineCrossingTheRightOrBottomEdgeIsDropped) {
   EXPECT_FALSE(reference(bottom).empty());
   EXPECT_TRUE(draw_ok(*d, bottom).empty());
   // The same lines crossing the left and top edges are drawn like the reference.
-  expect_same_as_reference(line_scene(8, 8, 4, LineMode::kQuadNarrow,
-                                      {line({0.25F, 6.5F}, {0.25F, 4.5F}), line({1.5F, 0.25F}, {5.5F, 0.25F})}));
+  expect_same_as_reference(
+      line_scene(8, 8, 4, LineMode::kQuadNarrow,
+                 {line({0.25F, 6.5F}, {0.25F, 4.5F}), line({1.5F, 0.25F}, {5.5F, 0.25F})}));
   // One pixel wider and taller, nothing crosses the edge: the reference's fragments (the
   // extra column and row are outside the smaller target).
   expect_same_as_reference(line_scene(9, 9, 4, LineMode::kQuadNarrow, {right, low}));
@@ -378,8 +396,9 @@ TEST(Lavapipe, Msaa4ShortRectangularLineIsDropped) {
   const Scene s = line_scene(8, 8, 4, LineMode::kQuadNarrow, {short_line});
   EXPECT_EQ(describe(reference(s)), describe(frags(0, {{5, 1, 3}})));
   EXPECT_TRUE(draw_ok(*d, s).empty());
-  expect_same_as_reference(line_scene(8, 8, 1, LineMode::kQuadNarrow,
-                                      {short_line, line({2.5F, 2.0F}, {2.5F, 2.75F})}));  // covers the centre (2.5, 2.5)
+  expect_same_as_reference(
+      line_scene(8, 8, 1, LineMode::kQuadNarrow,
+                 {short_line, line({2.5F, 2.0F}, {2.5F, 2.75F})})); // covers the centre (2.5, 2.5)
 }
 
 // Draw state is reused: different target sizes, sample counts and line modes in sequence
@@ -411,12 +430,16 @@ TEST(Lavapipe, GrowingBuffersKeepWorking) {
   for (int round = 0; round < 4; ++round) {
     for (std::int32_t side = 4; side <= 40; side += 6) {
       Scene s = scene(side, side, round % 2 == 0 ? 1U : 4U);
-      const auto coord = [&] { return static_cast<float>(rng() % static_cast<unsigned>(side * 8)) / 8.0F; };
+      const auto coord = [&] {
+        return static_cast<float>(rng() % static_cast<unsigned>(side * 8)) / 8.0F;
+      };
       const int count = 1 + side / 2 + round * 4;
       for (int i = 0; i < count; ++i) {
-        s.primitives.push_back(make_triangle({{{coord(), coord()}, {coord(), coord()}, {coord(), coord()}}}));
+        s.primitives.push_back(
+            make_triangle({{{coord(), coord()}, {coord(), coord()}, {coord(), coord()}}}));
       }
-      ASSERT_EQ(describe(draw_ok(*d, s)), describe(reference(s))) << "round " << round << " side " << side;
+      ASSERT_EQ(describe(draw_ok(*d, s)), describe(reference(s)))
+          << "round " << round << " side " << side;
     }
   }
 }
@@ -434,5 +457,5 @@ TEST(Lavapipe, OpensAndClosesASecondDriver) {
   EXPECT_EQ(draw_ok(*d, s), reference(s));
 }
 
-}  // namespace
-}  // namespace rastrules::driver
+} // namespace
+} // namespace rastrules::driver

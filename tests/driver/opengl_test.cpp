@@ -35,7 +35,8 @@ using gpu_test::scene;
 
 // One OpenGL driver for the whole program (gpu_test::shared_driver): the context, program and
 // buffers are reused.
-#define RASTRULES_OPENGL_OR_SKIP(var) RASTRULES_DRIVER_OR_SKIP(var, "opengl", "no llvmpipe EGL device")
+#define RASTRULES_OPENGL_OR_SKIP(var)                                                              \
+  RASTRULES_DRIVER_OR_SKIP(var, "opengl", "no llvmpipe EGL device")
 
 // The reference under llvmpipe's tie rule (FINDING.OPENGL.FILL_BOTTOM_LEFT).
 std::vector<Fragment> reference_bottom_left(Scene s) {
@@ -70,7 +71,7 @@ TEST(OpenGL, NamesWhatItCannotDraw) {
   RASTRULES_OPENGL_OR_SKIP(d);
   Scene s = scene(8, 8);
   s.primitives.push_back(line({0.5F, 0.5F}, {5.5F, 2.5F}));
-  EXPECT_NE(d->unsupported(s).find("d3d"), std::string::npos);  // default line mode
+  EXPECT_NE(d->unsupported(s).find("d3d"), std::string::npos); // default line mode
   s.line_mode = LineMode::kVulkanBresenham;
   EXPECT_EQ(d->unsupported(s), "");
   s.msaa.pattern = standard_pattern(4);
@@ -100,7 +101,7 @@ TEST(OpenGL, NamesWhatItCannotDraw) {
 
 // rule: DRIVER.OPENGL.COVERAGE, DRIVER.OPENGL.POSITION, DRIVER.OPENGL.ORIGIN
 TEST(OpenGL, TriangleMatchesTheReference) {
-  Scene s = scene(8, 6);  // not square: a y flip would show
+  Scene s = scene(8, 6); // not square: a y flip would show
   s.primitives.push_back(make_triangle({{{0.3F, 0.7F}, {7.0F, 1.2F}, {2.1F, 5.75F}}}));
   expect_same_as(s, reference(s));
 }
@@ -129,7 +130,8 @@ TEST(OpenGL, SharedEdgePairFollowsTheBottomLeftRule) {
 TEST(OpenGL, FanWithTiesAtPixelCentres) {
   Scene s = scene(8, 8);
   const FloatPoint c{3.5F, 3.5F};
-  const std::array<FloatPoint, 6> ring{{{0.5F, 0.5F}, {6.5F, 0.5F}, {7.5F, 3.5F}, {6.5F, 7.5F}, {0.5F, 7.5F}, {0.5F, 3.5F}}};
+  const std::array<FloatPoint, 6> ring{
+      {{0.5F, 0.5F}, {6.5F, 0.5F}, {7.5F, 3.5F}, {6.5F, 7.5F}, {0.5F, 7.5F}, {0.5F, 3.5F}}};
   for (std::size_t i = 0; i < ring.size(); ++i) {
     s.primitives.push_back(make_triangle({{c, ring[i], ring[(i + 1) % ring.size()]}}));
   }
@@ -145,8 +147,10 @@ TEST(OpenGL, CullingWithBothFrontFaces) {
       Scene s = scene(8, 8);
       s.state.cull = cull;
       s.state.front_face = front;
-      s.primitives.push_back(make_triangle({{{0.3F, 0.2F}, {6.7F, 0.4F}, {0.2F, 6.6F}}}));  // clockwise
-      s.primitives.push_back(make_triangle({{{1.2F, 1.1F}, {1.3F, 7.1F}, {7.2F, 7.3F}}}));  // counter-clockwise
+      s.primitives.push_back(
+          make_triangle({{{0.3F, 0.2F}, {6.7F, 0.4F}, {0.2F, 6.6F}}})); // clockwise
+      s.primitives.push_back(
+          make_triangle({{{1.2F, 1.1F}, {1.3F, 7.1F}, {7.2F, 7.3F}}})); // counter-clockwise
       const auto want = reference(s);
       ASSERT_FALSE(want.empty());
       EXPECT_TRUE(std::all_of(want.begin(), want.end(), [&](const Fragment& f) {
@@ -166,11 +170,11 @@ TEST(OpenGL, PointsFollowTheBottomLeftRule) {
   s.primitives.push_back(prim(PrimitiveType::kPoint, {{2.5F, 2.5F}}));
   s.primitives.push_back(prim(PrimitiveType::kPoint, {{7.75F, 0.25F}}));
   EXPECT_EQ(draw_ok(*d, s), reference(s));
-  s.primitives.push_back(prim(PrimitiveType::kPoint, {{4.0F, 4.0F}}));  // edges through centres
+  s.primitives.push_back(prim(PrimitiveType::kPoint, {{4.0F, 4.0F}})); // edges through centres
   EXPECT_EQ(describe(draw_ok(*d, s)), describe(reference_bottom_left(s)));
   Scene m = s;
   m.msaa.pattern = standard_pattern(4);
-  m.primitives.push_back(prim(PrimitiveType::kPoint, {{6.125F, 1.5F}}));  // samples on the edges
+  m.primitives.push_back(prim(PrimitiveType::kPoint, {{6.125F, 1.5F}})); // samples on the edges
   EXPECT_EQ(describe(draw_ok(*d, m)), describe(reference_bottom_left(m)));
 }
 
@@ -180,12 +184,12 @@ TEST(OpenGL, PointsFollowTheBottomLeftRule) {
 TEST(OpenGL, PointPositionTiesRoundUp) {
   RASTRULES_OPENGL_OR_SKIP(d);
   Scene s = scene(8, 4);
-  s.primitives.push_back(prim(PrimitiveType::kPoint, {{6.001953125F, 1.5F}}));  // 1536.5 raw
+  s.primitives.push_back(prim(PrimitiveType::kPoint, {{6.001953125F, 1.5F}})); // 1536.5 raw
   // 1536 raw: square [5.5, 6.5), its left edge through the centre of (5, 1), which both the
   // top-left and the bottom-left rule keep.
   EXPECT_EQ(describe(reference_bottom_left(s)), " {0 5,1 m1}");
-  EXPECT_EQ(describe(draw_ok(*d, s)), " {0 6,1 m1}");  // as if 1537 raw
-  s.primitives[0].v[0] = {5.998046875F, 1.5F};  // 1535.5 raw: even and up are both 1536
+  EXPECT_EQ(describe(draw_ok(*d, s)), " {0 6,1 m1}"); // as if 1537 raw
+  s.primitives[0].v[0] = {5.998046875F, 1.5F};        // 1535.5 raw: even and up are both 1536
   EXPECT_EQ(describe(draw_ok(*d, s)), describe(reference_bottom_left(s)));
 }
 
@@ -230,11 +234,13 @@ TEST(OpenGL, LineStripIsItsSegments) {
     Scene strip = scene(8, 8);
     strip.line_mode = LineMode::kVulkanBresenham;
     std::vector<FloatPoint> v;
-    for (int i = 0; i < 4; ++i) v.push_back({coord(), coord()});
+    for (int i = 0; i < 4; ++i)
+      v.push_back({coord(), coord()});
     strip.primitives.push_back(prim(PrimitiveType::kLineStrip, v));
     Scene lines = strip;
     lines.primitives.clear();
-    for (std::size_t i = 0; i + 1 < v.size(); ++i) lines.primitives.push_back(line(v[i], v[i + 1]));
+    for (std::size_t i = 0; i + 1 < v.size(); ++i)
+      lines.primitives.push_back(line(v[i], v[i + 1]));
     std::vector<Fragment> want;
     for (Fragment f : draw_ok(*d, lines)) {
       f.seg = f.prim;
@@ -243,7 +249,8 @@ TEST(OpenGL, LineStripIsItsSegments) {
     }
     std::sort(want.begin(), want.end(), fragment_before);
     const auto got = draw_ok(*d, strip);
-    ASSERT_EQ(got, want) << "case " << c << "\nstrip:" << describe(got) << "\nlines:" << describe(want);
+    ASSERT_EQ(got, want) << "case " << c << "\nstrip:" << describe(got)
+                         << "\nlines:" << describe(want);
   }
 }
 
@@ -253,11 +260,12 @@ TEST(OpenGL, LineStripIsItsSegments) {
 TEST(OpenGL, Msaa4LinesAreRectangles) {
   RASTRULES_OPENGL_OR_SKIP(d);
   std::mt19937 rng(20261123);
-  const auto coord = [&] { return static_cast<float>(rng() % 49U) / 8.0F + 1.0F; };  // [1, 7]
+  const auto coord = [&] { return static_cast<float>(rng() % 49U) / 8.0F + 1.0F; }; // [1, 7]
   const auto point = [&](FloatPoint from) {
     for (;;) {
       const FloatPoint p{coord(), coord()};
-      if (std::hypot(p[0] - from[0], p[1] - from[1]) >= 1.0F) return p;
+      if (std::hypot(p[0] - from[0], p[1] - from[1]) >= 1.0F)
+        return p;
     }
   };
   for (int c = 0; c < 100; ++c) {
@@ -270,7 +278,8 @@ TEST(OpenGL, Msaa4LinesAreRectangles) {
     s.primitives.push_back(prim(PrimitiveType::kLineStrip, {b, b1, point(b1)}));
     const auto got = draw_ok(*d, s);
     const auto want = reference_bottom_left(s);
-    EXPECT_EQ(got, want) << "case " << c << "\nopengl:" << describe(got) << "\nexpected:" << describe(want);
+    EXPECT_EQ(got, want) << "case " << c << "\nopengl:" << describe(got)
+                         << "\nexpected:" << describe(want);
   }
 }
 
@@ -280,9 +289,10 @@ TEST(OpenGL, Msaa4LinesAreRectangles) {
 // rule: DRIVER.OPENGL.SUPPORT, RASTER.TARGET.CLIP, LINE.QUAD.SHAPE
 TEST(OpenGL, Msaa4RectangularLinesAtTheEdgeOrShortAreDropped) {
   RASTRULES_OPENGL_OR_SKIP(d);
-  for (const auto& [a, b] : {std::pair<FloatPoint, FloatPoint>{{7.75F, 6.5F}, {7.75F, 4.5F}},
-                             std::pair<FloatPoint, FloatPoint>{{1.5F, 7.75F}, {5.5F, 7.75F}},
-                             std::pair<FloatPoint, FloatPoint>{{5.625F, 1.625F}, {5.625F, 1.125F}}}) {
+  for (const auto& [a, b] :
+       {std::pair<FloatPoint, FloatPoint>{{7.75F, 6.5F}, {7.75F, 4.5F}},
+        std::pair<FloatPoint, FloatPoint>{{1.5F, 7.75F}, {5.5F, 7.75F}},
+        std::pair<FloatPoint, FloatPoint>{{5.625F, 1.625F}, {5.625F, 1.125F}}}) {
     const Scene s = line_scene(8, 8, 4, LineMode::kQuadNarrow, {line(a, b)});
     EXPECT_FALSE(reference(s).empty());
     EXPECT_EQ(describe(draw_ok(*d, s)), "");
@@ -305,5 +315,5 @@ TEST(OpenGL, Msaa4TieHeavyTriangleAndSampleMask) {
   }
 }
 
-}  // namespace
-}  // namespace rastrules::driver
+} // namespace
+} // namespace rastrules::driver

@@ -31,8 +31,8 @@ std::string lavapipe_missing() {
   return d ? std::string() : (error.empty() ? std::string("lavapipe not built") : error);
 }
 
-#define RASTRULES_NEED_LAVAPIPE()                                                       \
-  if (const std::string missing = lavapipe_missing(); !missing.empty())                 \
+#define RASTRULES_NEED_LAVAPIPE()                                                                  \
+  if (const std::string missing = lavapipe_missing(); !missing.empty())                            \
   GTEST_SKIP() << "no CPU Vulkan device: " << missing
 
 // Twice the edge function of (a, b) at p, all in 1/256 px (exact in 64 bits here).
@@ -56,8 +56,10 @@ Scene tie_free_scene(int w, int h, int n, std::uint32_t seed) {
     std::uniform_int_distribution<std::int64_t> d(-size, size);
     const std::int64_t ox = cx(rng), oy = cy(rng);
     std::array<std::array<std::int64_t, 2>, 3> v{};
-    for (auto& p : v) p = {ox + d(rng), oy + d(rng)};
-    if (edge(v[0], v[1], v[2]) == 0) continue;
+    for (auto& p : v)
+      p = {ox + d(rng), oy + d(rng)};
+    if (edge(v[0], v[1], v[2]) == 0)
+      continue;
     bool tie = false;
     std::int64_t x0 = std::min({v[0][0], v[1][0], v[2][0]}) / 256 - 1;
     std::int64_t x1 = std::max({v[0][0], v[1][0], v[2][0]}) / 256 + 1;
@@ -69,7 +71,8 @@ Scene tie_free_scene(int w, int h, int n, std::uint32_t seed) {
         tie = edge(v[0], v[1], c) == 0 || edge(v[1], v[2], c) == 0 || edge(v[2], v[0], c) == 0;
       }
     }
-    if (tie) continue;
+    if (tie)
+      continue;
     std::array<FloatPoint, 3> f{};
     for (std::size_t i = 0; i < 3; ++i) {
       f[i] = {static_cast<float>(v[i][0]) / 256.0F, static_cast<float>(v[i][1]) / 256.0F};
@@ -150,7 +153,8 @@ TEST(LavapipeTiming, ScenesItDoesNotTimeAreNotAvailableWithAReason) {
   auto expect_refused = [](const Scene& s, int repeats, const std::string& why) {
     const CoverageTiming t = time_lavapipe_coverage(s, repeats);
     EXPECT_FALSE(t.available);
-    EXPECT_NE(t.why_not.find(why), std::string::npos) << "expected \"" << why << "\" in: " << t.why_not;
+    EXPECT_NE(t.why_not.find(why), std::string::npos)
+        << "expected \"" << why << "\" in: " << t.why_not;
     EXPECT_EQ(t.samples_passed, 0U);
   };
   Scene lines = tie_free_scene(16, 16, 3, 5);
@@ -177,5 +181,5 @@ TEST(LavapipeTiming, ScenesItDoesNotTimeAreNotAvailableWithAReason) {
   expect_refused(tie_free_scene(16, 16, 3, 6), 0, "repeats must be at least 1");
 }
 
-}  // namespace
-}  // namespace rastrules::driver
+} // namespace
+} // namespace rastrules::driver

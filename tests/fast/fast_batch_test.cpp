@@ -18,11 +18,11 @@
 namespace {
 
 namespace raster = rastrules::raster;
+using raster::BatchStatus;
+using raster::fast_count_batch;
 using rastrules::FillConvention;
 using rastrules::Isa;
 using rastrules::RasterState;
-using raster::BatchStatus;
-using raster::fast_count_batch;
 
 // rule: FAST.BATCH.EQUALS.PLAIN, TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION
 TEST(FastBatch, CountsTheCentresOfARightTriangleUnderTwoConventions) {
@@ -75,7 +75,8 @@ TEST(FastBatch, AWatertightMeshOfSmallTrianglesDrawsEachCentreOnce) {
       EXPECT_EQ(r.small, xy.size() / 6);
     }
     std::uint64_t sum = 0;
-    for (std::uint64_t n : per) sum += n;
+    for (std::uint64_t n : per)
+      sum += n;
     EXPECT_EQ(sum, inside);
   }
 }
@@ -99,14 +100,14 @@ std::uint64_t plain_count(const float* v, std::int32_t w, std::int32_t h, const 
 // rule: FAST.BATCH.EQUALS.PLAIN, FAST.BATCH.SMALL_I32, RASTER.TARGET.CLIP, TRI.CULL.MODE
 TEST(FastBatch, MixedSizesClippingAndCullingEqualThePlainWalk) {
   const std::vector<float> xy = {
-      -3.2f, -2.7f, 5.9f, 1.1f, 0.3f, 6.6f,         // small, clipped at the left and top
-      40.5f, 5.5f, 104.49f, 5.5f, 40.5f, 69.49f,    // spans just under 64 px: small
-      40.5f, 5.5f, 104.5f, 5.5f, 40.5f, 69.5f,      // spans of exactly 64 px: not small
-      10.0f, 10.0f, 10.0f, 90.0f, 99.0f, 40.0f,     // large, counter-clockwise
-      10.0f, 10.0f, 90.0f, 40.0f, 10.0f, 90.0f,     // large, clockwise
-      120.1f, 70.3f, 125.7f, 79.9f, 119.0f, 78.2f,  // small, past the right and bottom sides
-      3.0f, 3.0f, 4.0f, 4.0f, 5.0f, 5.0f,           // degenerate
-      40.25f, 3.5f, 33.0f, 9.75f, 47.0f, 9.75f,     // small, counter-clockwise
+      -3.2f,  -2.7f, 5.9f,    1.1f,  0.3f,   6.6f,   // small, clipped at the left and top
+      40.5f,  5.5f,  104.49f, 5.5f,  40.5f,  69.49f, // spans just under 64 px: small
+      40.5f,  5.5f,  104.5f,  5.5f,  40.5f,  69.5f,  // spans of exactly 64 px: not small
+      10.0f,  10.0f, 10.0f,   90.0f, 99.0f,  40.0f,  // large, counter-clockwise
+      10.0f,  10.0f, 90.0f,   40.0f, 10.0f,  90.0f,  // large, clockwise
+      120.1f, 70.3f, 125.7f,  79.9f, 119.0f, 78.2f,  // small, past the right and bottom sides
+      3.0f,   3.0f,  4.0f,    4.0f,  5.0f,   5.0f,   // degenerate
+      40.25f, 3.5f,  33.0f,   9.75f, 47.0f,  9.75f,  // small, counter-clockwise
   };
   const std::int32_t w = 123, h = 77;
   for (const rastrules::CullMode cull :
@@ -117,10 +118,13 @@ TEST(FastBatch, MixedSizesClippingAndCullingEqualThePlainWalk) {
     std::uint64_t rasterized = 0;
     for (std::size_t i = 0; i < xy.size() / 6; ++i) {
       expected.push_back(plain_count(&xy[6 * i], w, h, s));
-      rasterized += plain_setup(&xy[6 * i], s).status == rastrules::TriangleStatus::kRasterized ? 1u : 0u;
+      rasterized +=
+          plain_setup(&xy[6 * i], s).status == rastrules::TriangleStatus::kRasterized ? 1u : 0u;
     }
     // Five run clockwise (front-facing by default), two counter-clockwise, one is degenerate.
-    EXPECT_EQ(rasterized, cull == rastrules::CullMode::kNone ? 7u : cull == rastrules::CullMode::kBack ? 5u : 2u);
+    EXPECT_EQ(rasterized, cull == rastrules::CullMode::kNone   ? 7u
+                          : cull == rastrules::CullMode::kBack ? 5u
+                                                               : 2u);
     for (Isa isa : rastrules::test::supported_isas()) {
       std::vector<std::uint64_t> per(expected.size(), 0);
       const raster::FastBatchResult r = fast_count_batch(xy, w, h, s, isa, per);
@@ -137,7 +141,8 @@ TEST(FastBatch, MixedSizesClippingAndCullingEqualThePlainWalk) {
 // rule: FAST.BATCH.EQUALS.PLAIN, SNAP.VERTEX.INVALID, FAST.ISA.DISPATCH
 TEST(FastBatch, NamesEveryBadArgument) {
   std::vector<float> xy(6 * 20, 1.0f);
-  for (std::size_t i = 0; i < 20; ++i) xy[6 * i + 2] = 5.0f, xy[6 * i + 5] = 7.0f;
+  for (std::size_t i = 0; i < 20; ++i)
+    xy[6 * i + 2] = 5.0f, xy[6 * i + 5] = 7.0f;
   xy[6 * 13 + 5] = std::numeric_limits<float>::quiet_NaN();
   xy[6 * 17 + 0] = 40000.0f;
   for (Isa isa : rastrules::test::supported_isas()) {
@@ -158,9 +163,11 @@ TEST(FastBatch, NamesEveryBadArgument) {
   EXPECT_EQ(fast_count_batch(xy, 10, 10, RasterState{}, Isa::kScalar).status, BatchStatus::kOk);
 
   const std::vector<float> seven(7, 1.0f);
-  EXPECT_EQ(fast_count_batch(seven, 10, 10, RasterState{}, Isa::kScalar).status, BatchStatus::kBadLength);
+  EXPECT_EQ(fast_count_batch(seven, 10, 10, RasterState{}, Isa::kScalar).status,
+            BatchStatus::kBadLength);
   std::vector<std::uint64_t> per(19);
-  EXPECT_EQ(fast_count_batch(xy, 10, 10, RasterState{}, Isa::kScalar, per).status, BatchStatus::kBadLength);
+  EXPECT_EQ(fast_count_batch(xy, 10, 10, RasterState{}, Isa::kScalar, per).status,
+            BatchStatus::kBadLength);
   std::vector<std::uint32_t> hits(99);
   EXPECT_EQ(fast_count_batch(xy, 10, 10, RasterState{}, Isa::kScalar, {}, hits).status,
             BatchStatus::kBadLength);
@@ -178,4 +185,4 @@ TEST(FastBatch, NamesEveryBadArgument) {
   EXPECT_EQ(fast_count_batch({}, 10, 10, RasterState{}, Isa::kScalar).covered, 0u);
 }
 
-}  // namespace
+} // namespace

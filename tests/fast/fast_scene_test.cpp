@@ -87,7 +87,8 @@ TEST(FastScene, DefaultOptionsRenderWhatThePlainTraversalRenders) {
   expect_traversals_agree(s);
   for (LineMode m : {LineMode::kQuadWide, LineMode::kQuadNarrow, LineMode::kVulkanBresenham}) {
     s.line_mode = m;
-    for (auto& p : s.primitives) p.aa = false;
+    for (auto& p : s.primitives)
+      p.aa = false;
     expect_traversals_agree(s);
   }
   // The render without options is the fast traversal with the best instruction set.
@@ -98,7 +99,7 @@ TEST(FastScene, DefaultOptionsRenderWhatThePlainTraversalRenders) {
 // rule: FAST.EQUALS.PLAIN, MSAA.LINE.MODE, MSAA.MASK.AND
 TEST(FastScene, MultisampledScenesWithMasksCentroidsAndQuads) {
   for (std::uint32_t n : {2u, 4u, 8u, 16u}) {
-    Scene s = mixed_scene(64, 48);  // diamond lines become quadrilaterals with several samples
+    Scene s = mixed_scene(64, 48); // diamond lines become quadrilaterals with several samples
     s.msaa.pattern = standard_pattern(n);
     expect_traversals_agree(s);
     s.msaa.sample_mask = full_mask(n) & 0x5555u;
@@ -113,7 +114,8 @@ TEST(FastScene, MultisampledScenesWithMasksCentroidsAndQuads) {
   }
   Scene c = mixed_scene(40, 40);
   c.line_mode = LineMode::kVulkanBresenham;
-  for (auto& p : c.primitives) p.aa = false;
+  for (auto& p : c.primitives)
+    p.aa = false;
   c.msaa.pattern = center_pattern(4);
   expect_traversals_agree(c);
   c.msaa.pattern = custom_pattern({{-8, -8}, {7, 3}, {2, 7}});
@@ -133,7 +135,8 @@ TEST(FastScene, LargeTargetsAndTheBoundedPath) {
   };
   s.line_mode = LineMode::kQuadWide;
   expect_traversals_agree(s);
-  // A bound of zero entries for a collected primitive (the point): both traversals refuse it the same way.
+  // A bound of zero entries for a collected primitive (the point): both traversals refuse it the
+  // same way.
   const PreparedScene ps = std::get<PreparedScene>(prepare(s));
   RenderOptions plain;
   plain.traversal = Traversal::kPlain;
@@ -144,5 +147,5 @@ TEST(FastScene, LargeTargetsAndTheBoundedPath) {
   }
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

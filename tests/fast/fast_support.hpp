@@ -23,19 +23,21 @@ inline constexpr Isa kAllIsas[] = {Isa::kScalar, Isa::kAvx2, Isa::kAvx512};
 inline std::vector<Isa> supported_isas() {
   std::vector<Isa> out;
   for (Isa isa : kAllIsas)
-    if (isa_supported(isa)) out.push_back(isa);
+    if (isa_supported(isa))
+      out.push_back(isa);
   return out;
 }
 
 inline std::vector<Pixel> fast_pixels(const TriangleSetup& t, std::int32_t w, std::int32_t h,
                                       Isa isa) {
   std::vector<Pixel> out;
-  raster::walk_triangle_fast(t, w, h, isa,
-                             [&](std::int32_t x, std::int32_t y) { out.push_back(Pixel{x, y}); });
+  raster::walk_triangle_fast(t, w, h, isa, [&](std::int32_t x, std::int32_t y) {
+    out.push_back(Pixel{x, y});
+  });
   return out;
 }
 
-using MaskedPixel = std::tuple<std::int32_t, std::int32_t, std::uint32_t>;  // y, x, mask
+using MaskedPixel = std::tuple<std::int32_t, std::int32_t, std::uint32_t>; // y, x, mask
 
 inline std::vector<MaskedPixel> plain_samples(const TriangleSetup& t, const SamplePattern& p,
                                               std::int32_t w, std::int32_t h) {
@@ -49,13 +51,14 @@ inline std::vector<MaskedPixel> plain_samples(const TriangleSetup& t, const Samp
 inline std::vector<MaskedPixel> fast_samples(const TriangleSetup& t, const SamplePattern& p,
                                              std::int32_t w, std::int32_t h, Isa isa) {
   std::vector<MaskedPixel> out;
-  raster::walk_triangle_samples_fast(t, p, w, h, isa,
-                                     [&](std::int32_t x, std::int32_t y, std::uint32_t m) {
-                                       out.emplace_back(y, x, m);
-                                     });
+  raster::walk_triangle_samples_fast(
+      t, p, w, h, isa,
+      [&](std::int32_t x, std::int32_t y, std::uint32_t m) { out.emplace_back(y, x, m); });
   return out;
 }
 
-inline std::string isa_name(Isa isa) { return std::string(to_string(isa)); }
+inline std::string isa_name(Isa isa) {
+  return std::string(to_string(isa));
+}
 
-}  // namespace rastrules::test
+} // namespace rastrules::test

@@ -45,7 +45,8 @@ TEST(FastTileClassify, TilesInsideATriangleAreAcceptedWhole) {
   EXPECT_EQ(c.accepted, 16u);
   EXPECT_EQ(c.rejected, 0u);
   EXPECT_EQ(c.partial, 0u);
-  for (Isa isa : supported_isas()) EXPECT_EQ(raster::fast_count_covered(t, 64, 64, isa), 64u * 64u);
+  for (Isa isa : supported_isas())
+    EXPECT_EQ(raster::fast_count_covered(t, 64, 64, isa), 64u * 64u);
   expect_fast_equals_plain(t, 64, 64);
 }
 
@@ -61,7 +62,8 @@ TEST(FastTileClassify, TilesBeyondTheHypotenuseAreRejectedAndCrossedOnesTestedPe
   EXPECT_EQ(c.partial, 4u);
   expect_fast_equals_plain(t, 64, 64);
   // The bounding box decides which tiles are looked at: a triangle in one tile classifies one.
-  const raster::FastTileCounts one = raster::fast_tile_counts(triangle_px({17, 17}, {30, 18}, {20, 29}), 64, 64);
+  const raster::FastTileCounts one =
+      raster::fast_tile_counts(triangle_px({17, 17}, {30, 18}, {20, 29}), 64, 64);
   EXPECT_EQ(one.accepted + one.rejected + one.partial, 1u);
 }
 
@@ -82,7 +84,8 @@ TEST(FastTileClassify, BlocksOf64PixelsAreDecidedBeforeTheirTiles) {
   EXPECT_EQ(c.partial, 4u * 4u);
   expect_fast_equals_plain(t, 256, 256);
   // Bounds within one block are not classified as a block (never decided whole).
-  const raster::FastTileCounts small = raster::fast_tile_counts(triangle_px({3, 3}, {60, 5}, {9, 50}), 256, 256);
+  const raster::FastTileCounts small =
+      raster::fast_tile_counts(triangle_px({3, 3}, {60, 5}, {9, 50}), 256, 256);
   EXPECT_EQ(small.blocks_accepted + small.blocks_rejected, 0u);
   EXPECT_EQ(small.blocks_partial, 1u);
 }
@@ -96,8 +99,10 @@ TEST(FastTileClassify, TiesInAPartialTileFollowTheFillRule) {
     std::vector<Pixel> want;
     for (std::int32_t y = 2; y < 16; ++y)
       for (std::int32_t x = 2; x < 16; ++x)
-        if (x + y < 14) want.push_back(Pixel{x, y});
-    for (Isa isa : supported_isas()) EXPECT_EQ(fast_pixels(t, 16, 16, isa), want) << isa_name(isa);
+        if (x + y < 14)
+          want.push_back(Pixel{x, y});
+    for (Isa isa : supported_isas())
+      EXPECT_EQ(fast_pixels(t, 16, 16, isa), want) << isa_name(isa);
     EXPECT_EQ(walk_pixels(t, 16, 16), want);
   }
   // The bottom edge y = 12.5 (running -x) and the diagonal y = x (running down) are exclusive.
@@ -105,8 +110,10 @@ TEST(FastTileClassify, TiesInAPartialTileFollowTheFillRule) {
     const TriangleSetup t = triangle_px({2.5, 2.5}, {12.5, 12.5}, {2.5, 12.5});
     std::vector<Pixel> want;
     for (std::int32_t y = 2; y < 12; ++y)
-      for (std::int32_t x = 2; x < y; ++x) want.push_back(Pixel{x, y});
-    for (Isa isa : supported_isas()) EXPECT_EQ(fast_pixels(t, 16, 16, isa), want) << isa_name(isa);
+      for (std::int32_t x = 2; x < y; ++x)
+        want.push_back(Pixel{x, y});
+    for (Isa isa : supported_isas())
+      EXPECT_EQ(fast_pixels(t, 16, 16, isa), want) << isa_name(isa);
     EXPECT_EQ(walk_pixels(t, 16, 16), want);
   }
   // The same shapes under the other fill conventions.
@@ -120,8 +127,10 @@ TEST(FastTileClassify, TiesInAPartialTileFollowTheFillRule) {
 
 // rule: FAST.EQUALS.PLAIN, FAST.TILE.CLASSIFY
 TEST(FastEqualsPlain, TrianglesCrossingTileBordersOnUnalignedTargets) {
-  expect_fast_equals_plain(triangle_px({5.3125, 7.125}, {40.6875, 13.1875}, {20.0625, 45.875}), 64, 64);
-  expect_fast_equals_plain(triangle_px({5.3125, 7.125}, {40.6875, 13.1875}, {20.0625, 45.875}), 37, 29);
+  expect_fast_equals_plain(triangle_px({5.3125, 7.125}, {40.6875, 13.1875}, {20.0625, 45.875}), 64,
+                           64);
+  expect_fast_equals_plain(triangle_px({5.3125, 7.125}, {40.6875, 13.1875}, {20.0625, 45.875}), 37,
+                           29);
   expect_fast_equals_plain(triangle_px({15.5, 15.5}, {16.5, 15.5}, {15.5, 16.5}), 40, 40);
   expect_fast_equals_plain(triangle_px({-20, 3}, {150, 60.25}, {70, 140}), 100, 70);
   // Wider than 64 pixels: a bit row spans several words, tiles straddle word borders.
@@ -174,11 +183,14 @@ TEST(FastLaneI32, SliversWithStepsNearTwoToTheTwentyFour) {
   const std::int32_t lo = kMinVertexRaw, hi = kMaxVertexRaw;
   // Nearly vertical slivers from the top of the range to the bottom: |A| = 2^24 - 1, B a few
   // units; they cross the target a few pixels wide.
-  expect_fast_equals_plain(raw_triangle(100 * 256, lo, 101 * 256 + 7, hi, 100 * 256 + 3, hi), 256, 256);
-  expect_fast_equals_plain(raw_triangle(40 * 256 + 128, lo, 40 * 256 + 128, hi, 43 * 256 + 1, hi), 256, 256);
+  expect_fast_equals_plain(raw_triangle(100 * 256, lo, 101 * 256 + 7, hi, 100 * 256 + 3, hi), 256,
+                           256);
+  expect_fast_equals_plain(raw_triangle(40 * 256 + 128, lo, 40 * 256 + 128, hi, 43 * 256 + 1, hi),
+                           256, 256);
   // Nearly horizontal: |B| = 2^24 - 1.
   expect_fast_equals_plain(raw_triangle(lo, 60 * 256, hi, 60 * 256 + 300, hi, 61 * 256), 256, 256);
-  expect_fast_equals_plain(raw_triangle(hi, 7 * 256 + 128, lo, 7 * 256 + 128, lo, 9 * 256 + 5), 256, 256);
+  expect_fast_equals_plain(raw_triangle(hi, 7 * 256 + 128, lo, 7 * 256 + 128, lo, 9 * 256 + 5), 256,
+                           256);
   // A long diagonal needle through the whole target.
   expect_fast_equals_plain(raw_triangle(lo, lo, hi, hi, hi, hi - 300), 1024, 1024);
 }
@@ -186,17 +198,20 @@ TEST(FastLaneI32, SliversWithStepsNearTwoToTheTwentyFour) {
 // rule: FAST.TILE.CLASSIFY, FAST.LANE.I32
 TEST(FastCoverRect, WritesEveryWordOfTheRectangleBitPerSample) {
   const TriangleSetup t = triangle_px({3.1875, 1.875}, {150.625, 20.3125}, {40.125, 33.6875});
-  const raster::PixelRect r{5, 3, 141, 29};  // unaligned on every side, three words per row
+  const raster::PixelRect r{5, 3, 141, 29}; // unaligned on every side, three words per row
   const std::size_t wpr = 3;
   const SampleOffset offsets[] = {{0, 0}, {-8, -8}, {7, 7}, {-3, 5}};
   for (Isa isa : supported_isas()) {
     for (const SampleOffset o : offsets) {
-      std::vector<std::uint64_t> out(static_cast<std::size_t>(r.y1 - r.y0 + 1) * wpr, ~std::uint64_t{0});
-      raster::fast_cover_rect(t, r, o.x * kSampleGridUnit, o.y * kSampleGridUnit, isa, out.data(), wpr);
+      std::vector<std::uint64_t> out(static_cast<std::size_t>(r.y1 - r.y0 + 1) * wpr,
+                                     ~std::uint64_t{0});
+      raster::fast_cover_rect(t, r, o.x * kSampleGridUnit, o.y * kSampleGridUnit, isa, out.data(),
+                              wpr);
       for (std::int32_t y = r.y0; y <= r.y1; ++y) {
         for (std::int32_t bit = 0; bit < static_cast<std::int32_t>(64 * wpr); ++bit) {
           const std::int32_t x = r.x0 + bit;
-          const std::uint64_t word = out[static_cast<std::size_t>(y - r.y0) * wpr + static_cast<std::size_t>(bit / 64)];
+          const std::uint64_t word =
+              out[static_cast<std::size_t>(y - r.y0) * wpr + static_cast<std::size_t>(bit / 64)];
           const bool set = ((word >> (bit % 64)) & 1u) != 0;
           const bool want = x <= r.x1 && covers(t, sample_position(x, y, o));
           ASSERT_EQ(set, want) << isa_name(isa) << " x " << x << " y " << y << " offset "
@@ -216,7 +231,7 @@ TEST_P(FastIsa, EqualsThePlainWalkOnACatalog) {
     GTEST_SKIP() << "this processor (or build) has no " << isa_name(isa) << " (FAST.ISA.DISPATCH)";
   const std::vector<TriangleSetup> catalog = {
       triangle_px({1, 1}, {60, 4}, {8, 50}),
-      triangle_px({60, 4}, {1, 1}, {8, 50}),  // counter-clockwise
+      triangle_px({60, 4}, {1, 1}, {8, 50}), // counter-clockwise
       triangle_px({0.5, 0.5}, {31.5, 0.5}, {0.5, 31.5}),
       triangle_px({16, 0}, {32, 16}, {16, 32}),
       triangle_px({-100, 10}, {300, 11}, {100, 12.5}),
@@ -228,7 +243,8 @@ TEST_P(FastIsa, EqualsThePlainWalkOnACatalog) {
     EXPECT_EQ(fast_pixels(catalog[i], 64, 48, isa), plain) << i;
     EXPECT_EQ(raster::fast_count_covered(catalog[i], 64, 48, isa), plain.size()) << i;
     // The scalar lanes are the reference the SIMD ones must equal (FAST.ISA.DISPATCH).
-    EXPECT_EQ(fast_pixels(catalog[i], 64, 48, isa), fast_pixels(catalog[i], 64, 48, Isa::kScalar)) << i;
+    EXPECT_EQ(fast_pixels(catalog[i], 64, 48, isa), fast_pixels(catalog[i], 64, 48, Isa::kScalar))
+        << i;
   }
   // Degenerate and culled triangles emit nothing.
   RasterState cull;
@@ -250,14 +266,15 @@ TEST_P(FastIsa, EqualsThePlainSampleWalkForEveryPattern) {
     patterns.push_back(center_pattern(n));
   }
   patterns.push_back(custom_pattern({{-8, -8}, {7, 7}, {-8, 7}, {7, -8}, {0, 0}}));
-  patterns.push_back(custom_pattern({{5, 6}, {7, 7}, {6, 5}}));  // hull misses the centre
+  patterns.push_back(custom_pattern({{5, 6}, {7, 7}, {6, 5}})); // hull misses the centre
   const std::vector<TriangleSetup> catalog = {
       triangle_px({1, 1}, {60, 4}, {8, 50}),
       triangle_px({0.5, 0.5}, {31.5, 0.5}, {0.5, 31.5}),
       triangle_px({15.5, 15.5}, {17, 15.5}, {15.5, 17}),
       triangle_px({0, 0}, {64, 0}, {0, 48}),
-      triangle_px({-3, 47.875}, {70, 47.875}, {30, 60}),  // only samples above the centre of row 47
-      triangle_px({63.875, -4}, {70, 50}, {63.875, 50}),  // only samples left of the centre of column 63
+      triangle_px({-3, 47.875}, {70, 47.875}, {30, 60}), // only samples above the centre of row 47
+      triangle_px({63.875, -4}, {70, 50},
+                  {63.875, 50}), // only samples left of the centre of column 63
   };
   for (const SamplePattern& p : patterns) {
     for (std::size_t i = 0; i < catalog.size(); ++i) {
@@ -268,11 +285,14 @@ TEST_P(FastIsa, EqualsThePlainSampleWalkForEveryPattern) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllIsas, FastIsa, ::testing::ValuesIn(kAllIsas),
-                         [](const ::testing::TestParamInfo<Isa>& param_info) { return isa_name(param_info.param); });
+                         [](const ::testing::TestParamInfo<Isa>& param_info) {
+                           return isa_name(param_info.param);
+                         });
 
 // rule: FAST.ISA.DISPATCH
 TEST(FastIsaDispatch, NamesParseAndTheBestIsTheWidestSupported) {
-  for (Isa isa : kAllIsas) EXPECT_EQ(parse_isa(to_string(isa)), isa);
+  for (Isa isa : kAllIsas)
+    EXPECT_EQ(parse_isa(to_string(isa)), isa);
   EXPECT_EQ(to_string(Isa::kScalar), "scalar");
   EXPECT_EQ(to_string(Isa::kAvx2), "avx2");
   EXPECT_EQ(to_string(Isa::kAvx512), "avx512");
@@ -298,5 +318,5 @@ TEST(FastIsaDispatch, NamesParseAndTheBestIsTheWidestSupported) {
   EXPECT_EQ(to_string(Traversal::kFast), "fast");
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

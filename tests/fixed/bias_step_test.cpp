@@ -21,9 +21,9 @@ __extension__ typedef __int128 Int128;
 
 // rule: FIX.BIAS.FORM
 TEST(FixBiasForm, BiasedSignTestEqualsTheRuleAtEveryBoundaryValue) {
-  constexpr std::int64_t kLimit = (std::int64_t{1} << 49) - 1;  // FIX.BUDGET.EDGE_VALUE
-  const std::int64_t values[] = {-kLimit, -kLimit + 1, -65536, -2, -1, 0, 1, 2, 65536,
-                                 kLimit - 1, kLimit};
+  constexpr std::int64_t kLimit = (std::int64_t{1} << 49) - 1; // FIX.BUDGET.EDGE_VALUE
+  const std::int64_t values[] = {-kLimit, -kLimit + 1, -65536, -2,         -1,    0,
+                                 1,       2,           65536,  kLimit - 1, kLimit};
   for (const std::int64_t e : values) {
     for (const bool inclusive : {false, true}) {
       const std::int64_t bias = formula::edge_bias<std::int64_t>(inclusive);
@@ -40,8 +40,8 @@ TEST(FixStepIncremental, OnePixelStepsEqualDirectEvaluationAtTheExtremes) {
   // Edges between opposite corners of the vertex range, stepped across a whole row and down
   // a whole column of the largest target, compared with 128-bit direct evaluation.
   const std::int32_t lo = kMinVertexRaw, hi = kMaxVertexRaw;
-  const std::array<std::array<std::int32_t, 4>, 4> edges = {{
-      {lo, lo, hi, hi}, {hi, lo, lo, hi}, {lo, hi, hi, hi}, {hi, hi, hi, lo}}};
+  const std::array<std::array<std::int32_t, 4>, 4> edges = {
+      {{lo, lo, hi, hi}, {hi, lo, lo, hi}, {lo, hi, hi, hi}, {hi, hi, hi, lo}}};
   for (const auto& ed : edges) {
     const std::int64_t sx = formula::edge_step_x<std::int64_t>(ed[1], ed[3], kSubpixelOne);
     const std::int64_t sy = formula::edge_step_y<std::int64_t>(ed[0], ed[2], kSubpixelOne);
@@ -50,9 +50,8 @@ TEST(FixStepIncremental, OnePixelStepsEqualDirectEvaluationAtTheExtremes) {
       return (Int128{ed[2]} - ed[0]) * (Int128{p.y.raw()} - ed[1]) -
              (Int128{ed[3]} - ed[1]) * (Int128{p.x.raw()} - ed[0]);
     };
-    std::int64_t e = formula::edge_value<std::int64_t>(ed[0], ed[1], ed[2], ed[3],
-                                                       pixel_center(0, 0).x.raw(),
-                                                       pixel_center(0, 0).y.raw());
+    std::int64_t e = formula::edge_value<std::int64_t>(
+        ed[0], ed[1], ed[2], ed[3], pixel_center(0, 0).x.raw(), pixel_center(0, 0).y.raw());
     for (std::int32_t x = 0; x < kMaxTargetSide; ++x) {
       ASSERT_EQ(Int128{e}, direct(x, 0)) << "x = " << x;
       e += sx;
@@ -90,5 +89,5 @@ TEST(FixStepIncremental, WalkAcrossTheWidestTargetEqualsTheDirectRule) {
   EXPECT_TRUE(covers(tri, pixel_center(8192, 2)));
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include <array>
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <type_traits>
 
@@ -27,7 +27,7 @@ Int128 edge_value_128(Int128 ax, Int128 ay, Int128 bx, Int128 by, Int128 px, Int
 TEST(FixBudgetEdgeValue, StaticBudgetsAreTheSpecsNumbers) {
   static_assert(kVertexMagBits == 23);
   static_assert(kMinVertexRaw == -(1 << 23) && kMaxVertexRaw == (1 << 23) - 1);
-  static_assert(kEdgeValueMagBits == 49);  // 2 * (23 + 1) + 1
+  static_assert(kEdgeValueMagBits == 49); // 2 * (23 + 1) + 1
   static_assert(kEdgeValueMagBits <= 63);
   static_assert(std::is_same_v<EdgeValue::rep, std::int64_t> && EdgeValue::kFracBits == 16);
   static_assert(std::is_same_v<Subpixel::rep, std::int32_t>);
@@ -40,8 +40,8 @@ TEST(FixBudgetEdgeValue, StaticBudgetsAreTheSpecsNumbers) {
 // rule: FIX.BUDGET.EDGE_VALUE, TRI.EDGE.FUNCTION
 TEST(FixBudgetEdgeValue, EveryCombinationOfExtremeCoordinatesIsExact) {
   // Each of the six coordinates takes each of these values: 5^6 = 15625 edge values.
-  const std::array<std::int32_t, 5> values = {kMinVertexRaw, kMinVertexRaw + 1, 0, kMaxVertexRaw - 1,
-                                              kMaxVertexRaw};
+  const std::array<std::int32_t, 5> values = {kMinVertexRaw, kMinVertexRaw + 1, 0,
+                                              kMaxVertexRaw - 1, kMaxVertexRaw};
   Int128 largest = 0;
   for (const auto ax : values)
     for (const auto ay : values)
@@ -51,8 +51,8 @@ TEST(FixBudgetEdgeValue, EveryCombinationOfExtremeCoordinatesIsExact) {
             for (const auto py : values) {
               const std::int64_t e = formula::edge_value<std::int64_t>(ax, ay, bx, by, px, py);
               const Int128 exact = edge_value_128(ax, ay, bx, by, px, py);
-              ASSERT_EQ(Int128{e}, exact) << ax << " " << ay << " " << bx << " " << by << " "
-                                          << px << " " << py;
+              ASSERT_EQ(Int128{e}, exact)
+                  << ax << " " << ay << " " << bx << " " << by << " " << px << " " << py;
               largest = std::max(largest, exact < 0 ? -exact : exact);
             }
   // The largest magnitude is (2^24 - 1)^2: twice the area of half the range square.
@@ -74,11 +74,10 @@ TEST(FixBudgetEdgeValue, TwiceTheAreaOfTheLargestTriangleIsExact) {
   // Evaluated at the far corner of the largest target through the typed API.
   const Vec2 s = pixel_center(kMaxTargetSide - 1, kMaxTargetSide - 1);
   for (const EdgeSetup& e : t.edges) {
-    EXPECT_EQ(Int128{e.value_at(s).raw()},
-              edge_value_128(e.a.x.raw(), e.a.y.raw(), e.b.x.raw(), e.b.y.raw(), s.x.raw(),
-                             s.y.raw()));
+    EXPECT_EQ(Int128{e.value_at(s).raw()}, edge_value_128(e.a.x.raw(), e.a.y.raw(), e.b.x.raw(),
+                                                          e.b.y.raw(), s.x.raw(), s.y.raw()));
   }
 }
 
-}  // namespace
-}  // namespace rastrules
+} // namespace
+} // namespace rastrules

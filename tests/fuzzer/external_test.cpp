@@ -20,7 +20,7 @@ namespace rastrules::driver {
 namespace {
 
 class TempDir {
- public:
+public:
   TempDir() {
     std::random_device rd;
     path_ = std::filesystem::temp_directory_path() / ("rastrules-external-" + std::to_string(rd()));
@@ -38,7 +38,7 @@ class TempDir {
     return p.string();
   }
 
- private:
+private:
   std::filesystem::path path_;
 };
 
@@ -54,9 +54,11 @@ std::string draw_error(const std::string& command, ExternalOptions options = {})
   std::string err;
   auto d = open_external_driver(command, &err, options);
   EXPECT_NE(d, nullptr) << err;
-  if (!d) return err;
+  if (!d)
+    return err;
   auto r = d->draw(small_scene());
-  if (auto* e = std::get_if<DriverError>(&r)) return e->message;
+  if (auto* e = std::get_if<DriverError>(&r))
+    return e->message;
   return "";
 }
 
@@ -84,7 +86,8 @@ TEST(ExternalDriver, RastrulesRenderIsAConformingExternalDriver) {
 
 // rule: DRIVER.EXTERNAL.PROTOCOL
 TEST(ExternalDriver, CommandsAreSplitOrGivenToTheShell) {
-  EXPECT_EQ(external_argv("/bin/prog  --a=1 x.json"), (std::vector<std::string>{"/bin/prog", "--a=1", "x.json"}));
+  EXPECT_EQ(external_argv("/bin/prog  --a=1 x.json"),
+            (std::vector<std::string>{"/bin/prog", "--a=1", "x.json"}));
   EXPECT_EQ(external_argv("prog 'a b'"), (std::vector<std::string>{"/bin/sh", "-c", "prog 'a b'"}));
   EXPECT_EQ(external_argv("a | b"), (std::vector<std::string>{"/bin/sh", "-c", "a | b"}));
   std::string err;
@@ -95,7 +98,9 @@ TEST(ExternalDriver, CommandsAreSplitOrGivenToTheShell) {
 // rule: DRIVER.EXTERNAL.PROTOCOL
 TEST(ExternalDriver, CrashNonZeroExitAndMissingProgramAreErrors) {
   TempDir dir;
-  EXPECT_NE(draw_error(dir.script("crash.sh", "kill -SEGV $$")).find("crashed: killed by signal 11"), std::string::npos);
+  EXPECT_NE(
+      draw_error(dir.script("crash.sh", "kill -SEGV $$")).find("crashed: killed by signal 11"),
+      std::string::npos);
   const std::string exit3 = draw_error(dir.script("exit3.sh", "echo 'no such mode' >&2; exit 3"));
   EXPECT_NE(exit3.find("exited with status 3"), std::string::npos) << exit3;
   EXPECT_NE(exit3.find("no such mode"), std::string::npos) << exit3;
@@ -128,31 +133,46 @@ TEST(ExternalDriver, MalformedOutputIsAnErrorNamingTheFragmentAndField) {
   TempDir dir;
   const auto out = [&](const std::string& json) {
     static int n = 0;
-    return draw_error(dir.script("out" + std::to_string(n++) + ".sh", "cat > /dev/null; cat <<'EOF'\n" + json + "\nEOF"));
+    return draw_error(dir.script("out" + std::to_string(n++) + ".sh",
+                                 "cat > /dev/null; cat <<'EOF'\n" + json + "\nEOF"));
   };
   EXPECT_NE(out("garbage").find("malformed output: not JSON"), std::string::npos);
   EXPECT_NE(out("[]").find("expected {\"fragments\": [...]}"), std::string::npos);
-  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 4, "y": 0}]})").find("fragments[0].x: 4 is outside the target"), std::string::npos);
-  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 1, "y": -1}]})").find("fragments[0].y: -1 is outside"), std::string::npos);
-  EXPECT_NE(out(R"({"fragments": [{"prim": 1, "x": 1, "y": 1}]})").find("fragments[0].prim: 1 is not a primitive"), std::string::npos);
-  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 1, "y": 1, "mask": 2}]})").find("fragments[0].mask: 2 has bits beyond the 1 sample"),
+  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 4, "y": 0}]})")
+                .find("fragments[0].x: 4 is outside the target"),
             std::string::npos);
-  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 1, "y": 1, "colour": 2}]})").find("fragments[0].colour: unknown key"), std::string::npos);
-  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 1.5, "y": 1}]})").find("fragments[0].x: must be an integer"), std::string::npos);
-  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 1, "y": 1}, {"prim": 0, "x": 1, "y": 1}]})").find("fragments[1]: duplicate"),
+  EXPECT_NE(
+      out(R"({"fragments": [{"prim": 0, "x": 1, "y": -1}]})").find("fragments[0].y: -1 is outside"),
+      std::string::npos);
+  EXPECT_NE(out(R"({"fragments": [{"prim": 1, "x": 1, "y": 1}]})")
+                .find("fragments[0].prim: 1 is not a primitive"),
+            std::string::npos);
+  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 1, "y": 1, "mask": 2}]})")
+                .find("fragments[0].mask: 2 has bits beyond the 1 sample"),
+            std::string::npos);
+  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 1, "y": 1, "colour": 2}]})")
+                .find("fragments[0].colour: unknown key"),
+            std::string::npos);
+  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 1.5, "y": 1}]})")
+                .find("fragments[0].x: must be an integer"),
+            std::string::npos);
+  EXPECT_NE(out(R"({"fragments": [{"prim": 0, "x": 1, "y": 1}, {"prim": 0, "x": 1, "y": 1}]})")
+                .find("fragments[1]: duplicate"),
             std::string::npos);
   // Unsorted but valid output is accepted and sorted.
   TempDir dir2;
   std::string err;
-  auto d = open_external_driver(dir2.script("ok.sh", "cat > /dev/null; echo '{\"fragments\": [{\"prim\": 0, \"x\": 2, \"y\": 1}, {\"prim\": 0, \"x\": 0, \"y\": 0, \"mask\": 1}]}'"),
-                                &err);
+  auto d = open_external_driver(
+      dir2.script("ok.sh", "cat > /dev/null; echo '{\"fragments\": [{\"prim\": 0, \"x\": 2, \"y\": "
+                           "1}, {\"prim\": 0, \"x\": 0, \"y\": 0, \"mask\": 1}]}'"),
+      &err);
   ASSERT_NE(d, nullptr);
   auto r = d->draw(small_scene());
   ASSERT_TRUE(std::holds_alternative<std::vector<Fragment>>(r)) << std::get<DriverError>(r).message;
   EXPECT_EQ(std::get<std::vector<Fragment>>(r), (std::vector<Fragment>{{0, 0, 0}, {0, 2, 1}}));
 }
 
-}  // namespace
+} // namespace
 // Regressions found by fuzz_external_protocol (fuzz/corpus/fuzz_external_protocol/regression_*):
 // a number too large for any JSON number type made the parser throw an exception that was not
 // caught (the process aborted), and nesting is bounded before the recursive parser sees it.
@@ -160,7 +180,8 @@ TEST(ExternalDriver, MalformedOutputIsAnErrorNamingTheFragmentAndField) {
 TEST(ExternalDriverRegression, NumberOverflowIsAnErrorNotAnAbort) {
   const auto r = parse_external_fragments("[555551e955]", small_scene());
   ASSERT_TRUE(std::holds_alternative<std::string>(r));
-  EXPECT_NE(std::get<std::string>(r).find("number overflow"), std::string::npos) << std::get<std::string>(r);
+  EXPECT_NE(std::get<std::string>(r).find("number overflow"), std::string::npos)
+      << std::get<std::string>(r);
   const auto r2 = parse_external_fragments(
       R"({"fragments": [{"prim": 0, "x": 1e999, "y": 0, "mask": 1}]})", small_scene());
   EXPECT_TRUE(std::holds_alternative<std::string>(r2));
@@ -168,15 +189,17 @@ TEST(ExternalDriverRegression, NumberOverflowIsAnErrorNotAnAbort) {
 
 // rule: DRIVER.EXTERNAL.PROTOCOL
 TEST(ExternalDriverRegression, DeepNestingIsRefusedBeforeParsing) {
-  const std::string deep = "{\"fragments\": " + std::string(100000, '[') + std::string(100000, ']') + "}";
+  const std::string deep =
+      "{\"fragments\": " + std::string(100000, '[') + std::string(100000, ']') + "}";
   const auto r = parse_external_fragments(deep, small_scene());
   ASSERT_TRUE(std::holds_alternative<std::string>(r));
   EXPECT_NE(std::get<std::string>(r).find("nesting deeper than 8 levels"), std::string::npos)
       << std::get<std::string>(r);
   // Brackets inside strings do not count.
-  const auto ok = parse_external_fragments(R"({"fragments": [], "note": "[[[[[[[[[[[["})", small_scene());
+  const auto ok =
+      parse_external_fragments(R"({"fragments": [], "note": "[[[[[[[[[[[["})", small_scene());
   EXPECT_FALSE(std::holds_alternative<std::string>(ok) &&
                std::get<std::string>(ok).find("nesting") != std::string::npos);
 }
 
-}  // namespace rastrules::driver
+} // namespace rastrules::driver

@@ -23,8 +23,8 @@ std::unique_ptr<driver::Driver> open(const std::string& name) {
   return d;
 }
 
-Summary campaign(driver::Driver& d, const std::string& name, Profile profile, Mode mode, std::uint64_t cases,
-                 std::uint64_t seed = 1) {
+Summary campaign(driver::Driver& d, const std::string& name, Profile profile, Mode mode,
+                 std::uint64_t cases, std::uint64_t seed = 1) {
   Settings s;
   s.driver_name = name;
   s.profile = profile;
@@ -42,15 +42,19 @@ bool multiple_of(float v, int denominator) {
 // Whether the centre of pixel (px, py) lies exactly on an edge of the triangle (coordinates
 // multiples of 1/256, exact in integers).
 bool centre_on_edge(const Primitive& t, std::int32_t px, std::int32_t py) {
-  const auto raw = [](float v) { return static_cast<std::int64_t>(std::lround(static_cast<double>(v) * 256)); };
+  const auto raw = [](float v) {
+    return static_cast<std::int64_t>(std::lround(static_cast<double>(v) * 256));
+  };
   const std::int64_t sx = px * 256 + 128, sy = py * 256 + 128;
   for (std::size_t i = 0; i < 3; ++i) {
     const auto& a = t.v[i];
     const auto& b = t.v[(i + 1) % 3];
     const std::int64_t ax = raw(a[0]), ay = raw(a[1]), bx = raw(b[0]), by = raw(b[1]);
     const std::int64_t e = (bx - ax) * (sy - ay) - (by - ay) * (sx - ax);
-    const bool within = std::min(ax, bx) <= sx && sx <= std::max(ax, bx) && std::min(ay, by) <= sy && sy <= std::max(ay, by);
-    if (e == 0 && within) return true;
+    const bool within = std::min(ax, bx) <= sx && sx <= std::max(ax, bx) &&
+                        std::min(ay, by) <= sy && sy <= std::max(ay, by);
+    if (e == 0 && within)
+      return true;
   }
   return false;
 }
@@ -75,9 +79,11 @@ TEST(PlantedBugs, FloatEdgesWithEGreaterOrEqualZeroShrinkToOneTriangleWithACentr
     // edge, which the top-left rule excludes.
     EXPECT_TRUE(f.comparison.missing.empty()) << f.key;
     ASSERT_FALSE(f.comparison.extra.empty()) << f.key;
-    for (const DiffEntry& e : f.comparison.extra) EXPECT_TRUE(centre_on_edge(t, e.x, e.y)) << f.key;
+    for (const DiffEntry& e : f.comparison.extra)
+      EXPECT_TRUE(centre_on_edge(t, e.x, e.y)) << f.key;
     EXPECT_LE(f.shrunk.width * f.shrunk.height, 32) << f.key;
-    if (halves && f.shrunk.width == 1 && f.shrunk.height == 1 && f.comparison.extra.size() == 1) ++simplest;
+    if (halves && f.shrunk.width == 1 && f.shrunk.height == 1 && f.comparison.extra.size() == 1)
+      ++simplest;
   }
   // The most frequent minimal scene: a 1x1 target, a triangle on integers and halves, the one
   // pixel centre on its right or bottom edge.
@@ -94,25 +100,34 @@ TEST(PlantedBugs, BottomRightFillIsFoundUnderD3D11AndLegalUnderVulkan) {
   for (const Finding& f : s.findings) {
     ASSERT_EQ(f.shrunk.primitives.size(), 1u) << f.key;
     const Primitive& t = f.shrunk.primitives[0];
-    for (const FloatPoint& v : t.v) EXPECT_TRUE(multiple_of(v[0], 16) && multiple_of(v[1], 16)) << f.key;
+    for (const FloatPoint& v : t.v)
+      EXPECT_TRUE(multiple_of(v[0], 16) && multiple_of(v[1], 16)) << f.key;
     EXPECT_FALSE(f.comparison.missing.empty() && f.comparison.extra.empty());
-    for (const DiffEntry& e : f.comparison.missing) EXPECT_TRUE(centre_on_edge(t, e.x, e.y)) << f.key;
-    for (const DiffEntry& e : f.comparison.extra) EXPECT_TRUE(centre_on_edge(t, e.x, e.y)) << f.key;
+    for (const DiffEntry& e : f.comparison.missing)
+      EXPECT_TRUE(centre_on_edge(t, e.x, e.y)) << f.key;
+    for (const DiffEntry& e : f.comparison.extra)
+      EXPECT_TRUE(centre_on_edge(t, e.x, e.y)) << f.key;
     unit_triangle = unit_triangle || (f.shrunk.width == 1 && f.shrunk.height == 1);
   }
   EXPECT_TRUE(unit_triangle) << "some finding shrinks to a 1x1 target";
   // d3d11 requires top-left: legal is exact there.
-  EXPECT_EQ(campaign(*d, "imprecise:fill-bottom-right", Profile::kD3D11, Mode::kLegal, 200).mismatches, s.mismatches);
+  EXPECT_EQ(
+      campaign(*d, "imprecise:fill-bottom-right", Profile::kD3D11, Mode::kLegal, 200).mismatches,
+      s.mismatches);
   // Vulkan allows any consistent convention: no mismatch, and bottom-right explains every case.
-  const Summary v = campaign(*d, "imprecise:fill-bottom-right", Profile::kVulkan, Mode::kLegal, 200);
+  const Summary v =
+      campaign(*d, "imprecise:fill-bottom-right", Profile::kVulkan, Mode::kLegal, 200);
   EXPECT_EQ(v.mismatches, 0u);
   std::uint64_t bottom_right = 0;
   for (const auto& [f, n] : v.legal_conventions) {
-    if (f == FillConvention::kBottomRight) bottom_right = n;
+    if (f == FillConvention::kBottomRight)
+      bottom_right = n;
   }
   EXPECT_EQ(bottom_right, v.cases);
   // ... but exact comparison under vulkan still reports it.
-  EXPECT_GT(campaign(*d, "imprecise:fill-bottom-right", Profile::kVulkan, Mode::kExact, 200).mismatches, 0u);
+  EXPECT_GT(
+      campaign(*d, "imprecise:fill-bottom-right", Profile::kVulkan, Mode::kExact, 200).mismatches,
+      0u);
 }
 
 // rule: DRIVER.IMPRECISE, FUZZ.SHRINK
@@ -129,7 +144,8 @@ TEST(PlantedBugs, FourBitSnappingShrinksToOneTriangleOffTheSixteenthGrid) {
     Scene rounded = f.shrunk;
     for (FloatPoint& v : rounded.primitives[0].v) {
       for (float& c : v) {
-        if (!multiple_of(c, 16)) ++off_grid;
+        if (!multiple_of(c, 16))
+          ++off_grid;
         c = static_cast<float>(std::nearbyint(static_cast<double>(c) * 16) / 16);
       }
     }
@@ -138,7 +154,8 @@ TEST(PlantedBugs, FourBitSnappingShrinksToOneTriangleOffTheSixteenthGrid) {
     auto drawn = d->draw(f.shrunk);
     ASSERT_TRUE(std::holds_alternative<std::vector<Fragment>>(drawn));
     std::string err;
-    auto c = compare(rounded, std::get<std::vector<Fragment>>(drawn), Profile::kD3D11, Mode::kExact, &err);
+    auto c = compare(rounded, std::get<std::vector<Fragment>>(drawn), Profile::kD3D11, Mode::kExact,
+                     &err);
     ASSERT_TRUE(c.has_value()) << err;
     EXPECT_TRUE(c->match) << f.key;
   }
@@ -151,7 +168,8 @@ TEST(PlantedBugs, AllBugsTogetherAreFoundAndEveryFindingIsOnePrimitive) {
   ASSERT_TRUE(s.error.empty()) << s.error;
   EXPECT_GT(s.unique, 0u);
   EXPECT_LE(s.unique, s.mismatches);
-  for (const Finding& f : s.findings) EXPECT_EQ(f.shrunk.primitives.size(), 1u) << f.key;
+  for (const Finding& f : s.findings)
+    EXPECT_EQ(f.shrunk.primitives.size(), 1u) << f.key;
 }
 
 // rule: FUZZ.COMPARE.EXACT, FUZZ.GENERATE
@@ -185,7 +203,8 @@ TEST(PlantedBugs, ImpreciseDriverNamesAndUnsupportedScenes) {
   EXPECT_EQ(d->unsupported(s), "");
   // With no planted bug on the way (vertices on the 1/16 grid, no ties), it agrees with the
   // reference: the bugs, not the driver, make the differences.
-  s.primitives[0] = make_triangle({FloatPoint{0.25f, 0.125f}, FloatPoint{3.8125f, 0.3125f}, FloatPoint{0.0625f, 3.9375f}});
+  s.primitives[0] = make_triangle(
+      {FloatPoint{0.25f, 0.125f}, FloatPoint{3.8125f, 0.3125f}, FloatPoint{0.0625f, 3.9375f}});
   auto drawn = d->draw(s);
   ASSERT_TRUE(std::holds_alternative<std::vector<Fragment>>(drawn));
   auto c = compare(s, std::get<std::vector<Fragment>>(drawn), Profile::kD3D11, Mode::kExact, &err);
@@ -194,5 +213,5 @@ TEST(PlantedBugs, ImpreciseDriverNamesAndUnsupportedScenes) {
   EXPECT_FALSE(c->expected.empty());
 }
 
-}  // namespace
-}  // namespace rastrules::fuzzer
+} // namespace
+} // namespace rastrules::fuzzer

@@ -14,7 +14,8 @@ ProbeReport probe_named(const std::string& name) {
   std::string err;
   auto d = driver::open_driver(name, &err);
   EXPECT_NE(d, nullptr) << err;
-  if (!d) return {};
+  if (!d)
+    return {};
   ProbeReport r = probe(*d);
   EXPECT_EQ(r.error, "") << name;
   return r;
@@ -25,7 +26,7 @@ TEST(Probe, ReferenceIsTopLeftWithEightBitsRoundHalfToEven) {
   const ProbeReport r = probe_named("reference");
   EXPECT_EQ(r.fill, "top-left");
   EXPECT_EQ(r.subpixel_bits, 8);
-  EXPECT_EQ(r.threshold_4096, 9);  // half a 1/256 step is 8/4096: a tie, kept at the even 0.5
+  EXPECT_EQ(r.threshold_4096, 9); // half a 1/256 step is 8/4096: a tie, kept at the even 0.5
   EXPECT_NE(r.rounding.find("half to even"), std::string::npos) << r.rounding;
   // Every line mode matches itself; the 4x scan finds the kernel's standard pattern.
   EXPECT_EQ(r.line_mode.find("differs"), std::string::npos) << r.line_mode;
@@ -59,7 +60,8 @@ TEST(Probe, FindsThePlantedConventions) {
 TEST(Probe, OpenGLIsBottomLeftUnderAnUpperLeftOrigin) {
   std::string err;
   auto d = driver::open_driver("opengl", &err);
-  if (!d) GTEST_SKIP() << "no opengl driver: " << err;
+  if (!d)
+    GTEST_SKIP() << "no opengl driver: " << err;
   const ProbeReport r = probe(*d);
   ASSERT_EQ(r.error, "");
   EXPECT_EQ(r.fill, "bottom-left");
@@ -70,5 +72,5 @@ TEST(Probe, OpenGLIsBottomLeftUnderAnUpperLeftOrigin) {
   EXPECT_EQ(r.samples_4x, standard_pattern(4).positions);
 }
 
-}  // namespace
-}  // namespace rastrules::fuzzer
+} // namespace
+} // namespace rastrules::fuzzer

@@ -52,7 +52,8 @@ TEST(Shrink, KeepsTheMismatchDropsUnrelatedPrimitivesAndIsDeterministic) {
   const auto differs = [](const Scene& s) {
     for (const Primitive& p : s.primitives) {
       for (const FloatPoint& v : p.v) {
-        if (v[0] >= 5.0f) return true;
+        if (v[0] >= 5.0f)
+          return true;
       }
     }
     return false;
@@ -60,9 +61,12 @@ TEST(Shrink, KeepsTheMismatchDropsUnrelatedPrimitivesAndIsDeterministic) {
   Scene s;
   s.width = 12;
   s.height = 9;
-  s.primitives.push_back(make_triangle({FloatPoint{1.5f, 2.25f}, FloatPoint{3.0f, 7.125f}, FloatPoint{2.0f, 1.0f}}));
-  s.primitives.push_back(make_triangle({FloatPoint{7.3359375f, 3.5f}, FloatPoint{9.0f, 8.75f}, FloatPoint{6.5f, 4.0f}}));
-  s.primitives.push_back(make_triangle({FloatPoint{0.5f, 0.5f}, FloatPoint{1.0f, 3.0f}, FloatPoint{2.0f, 2.0f}}));
+  s.primitives.push_back(
+      make_triangle({FloatPoint{1.5f, 2.25f}, FloatPoint{3.0f, 7.125f}, FloatPoint{2.0f, 1.0f}}));
+  s.primitives.push_back(make_triangle(
+      {FloatPoint{7.3359375f, 3.5f}, FloatPoint{9.0f, 8.75f}, FloatPoint{6.5f, 4.0f}}));
+  s.primitives.push_back(
+      make_triangle({FloatPoint{0.5f, 0.5f}, FloatPoint{1.0f, 3.0f}, FloatPoint{2.0f, 2.0f}}));
   const Scene a = shrink(s, differs);
   const Scene b = shrink(s, differs);
   EXPECT_EQ(io::write_scene(a), io::write_scene(b));
@@ -82,5 +86,5 @@ TEST(Shrink, KeepsTheMismatchDropsUnrelatedPrimitivesAndIsDeterministic) {
   EXPECT_EQ(a.height, 1);
 }
 
-}  // namespace
-}  // namespace rastrules::fuzzer
+} // namespace
+} // namespace rastrules::fuzzer

@@ -17,7 +17,9 @@ inline std::vector<Pixel> line_pixels(Px a, Px b, LineMode mode, std::int32_t w 
                                       std::int32_t h = 32) {
   std::vector<Pixel> out;
   rasterize_aliased_line(sample_px(a.x, a.y), sample_px(b.x, b.y), mode, w, h,
-                         [&](std::int32_t x, std::int32_t y) { out.push_back({x, y}); });
+                         [&](std::int32_t x, std::int32_t y) {
+                           out.push_back({x, y});
+                         });
   return out;
 }
 
@@ -25,4 +27,4 @@ inline bool covers_px(Px a, Px b, LineMode mode, std::int32_t px, std::int32_t p
   return aliased_line_covers(sample_px(a.x, a.y), sample_px(b.x, b.y), mode, px, py);
 }
 
-}  // namespace rastrules::test
+} // namespace rastrules::test

@@ -176,20 +176,22 @@ TEST(LineTargetClip, OnlyTargetPixelsAndNoGeometricClipping) {
 TEST(LineOrder, PixelsComeFromStartToEnd) {
   EXPECT_EQ(line_pixels({3.5, 0.5}, {0.5, 0.5}, kD3D),
             (std::vector<Pixel>{{3, 0}, {2, 0}, {1, 0}}));
-  EXPECT_EQ(line_pixels({0.5, 3.5}, {0.5, 0.5}, kVk),
-            (std::vector<Pixel>{{0, 3}, {0, 2}, {0, 1}}));
+  EXPECT_EQ(line_pixels({0.5, 3.5}, {0.5, 0.5}, kVk), (std::vector<Pixel>{{0, 3}, {0, 2}, {0, 1}}));
 }
 
 // rule: LINE.STRIP.SEQUENCE
 TEST(LineStrip, DrawsAsItsIndependentLinesInOrder) {
   const std::vector<Vec2> strip = {sample_px(0.5, 0.5), sample_px(3.5, 0.5), sample_px(3.5, 3.5)};
   std::vector<Pixel> got;
-  rasterize_aliased_line_strip(strip, kD3D, 8, 8,
-                               [&](std::int32_t x, std::int32_t y) { got.push_back({x, y}); });
+  rasterize_aliased_line_strip(strip, kD3D, 8, 8, [&](std::int32_t x, std::int32_t y) {
+    got.push_back({x, y});
+  });
   EXPECT_EQ(got, (std::vector<Pixel>{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1}, {3, 2}}));
   got.clear();
   rasterize_aliased_line_strip({sample_px(0.5, 0.5)}, kD3D, 8, 8,
-                               [&](std::int32_t x, std::int32_t y) { got.push_back({x, y}); });
+                               [&](std::int32_t x, std::int32_t y) {
+                                 got.push_back({x, y});
+                               });
   EXPECT_TRUE(got.empty());
 }
 
@@ -224,5 +226,5 @@ TEST(LineExplain, NamesTheFeaturesAndTheDecision) {
   EXPECT_EQ(to_string(LineMode::kVulkanBresenham), "vulkan-bresenham");
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

@@ -26,28 +26,28 @@ constexpr std::int32_t kW = 17, kH = 16;
 
 // '#' = grey (covered) in the picture.
 const std::vector<std::string> kDiagramGrey = {
-    "#..#.#.#.#.#..#..",  // 0
-    "..........#......",  // 1
-    ".#..##....#......",  // 2
-    "..#...##.#.......",  // 3
-    ".#.#.#...#.......",  // 4
-    "#....#...#..#..#.",  // 5
-    ".............#...",  // 6
-    "..##..#...##.....",  // 7
-    ".#..#..#.....#...",  // 8
-    "..#.....#.#......",  // 9
-    ".#..#..#...#.....",  // 10
-    "..#..#..#..#.#.#.",  // 11
-    "...#....#.#..#.#.",  // 12
-    "..#...#.....#.#..",  // 13
-    ".#.#.#..###.#..#.",  // 14
-    "...#.........#...",  // 15
+    "#..#.#.#.#.#..#..", // 0
+    "..........#......", // 1
+    ".#..##....#......", // 2
+    "..#...##.#.......", // 3
+    ".#.#.#...#.......", // 4
+    "#....#...#..#..#.", // 5
+    ".............#...", // 6
+    "..##..#...##.....", // 7
+    ".#..#..#.....#...", // 8
+    "..#.....#.#......", // 9
+    ".#..#..#...#.....", // 10
+    "..#..#..#..#.#.#.", // 11
+    "...#....#.#..#.#.", // 12
+    "..#...#.....#.#..", // 13
+    ".#.#.#..###.#..#.", // 14
+    "...#.........#...", // 15
 };
 
 struct DiagramLine {
   const char* what;
-  std::vector<Px> vertices;       // two for an independent line, more for a strip
-  std::vector<Pixel> expected;    // in the order the line travels
+  std::vector<Px> vertices;    // two for an independent line, more for a strip
+  std::vector<Pixel> expected; // in the order the line travels
 };
 
 const std::vector<DiagramLine>& diagram_lines() {
@@ -74,19 +74,25 @@ const std::vector<DiagramLine>& diagram_lines() {
       {"rows 7-9: strip up and down from left corners",
        {{1.0, 9.5}, {3.0, 7.5}, {5.0, 9.5}},
        {{1, 8}, {2, 7}, {3, 7}, {4, 8}}},
-      {"rows 9-11: 45 degrees up along lower-right edges", {{1.0, 11.5}, {3.0, 9.5}},
+      {"rows 9-11: 45 degrees up along lower-right edges",
+       {{1.0, 11.5}, {3.0, 9.5}},
        {{1, 10}, {2, 9}}},
-      {"rows 10-12: 45 degrees down along lower-left edges", {{4.0, 10.5}, {6.0, 12.5}},
+      {"rows 10-12: 45 degrees down along lower-left edges",
+       {{4.0, 10.5}, {6.0, 12.5}},
        {{4, 10}, {5, 11}}},
       {"rows 7-11: strip down-right then down-left from a bottom corner",
        {{6.5, 8.0}, {8.5, 10.0}, {6.5, 12.0}},
        {{6, 7}, {7, 8}, {8, 9}, {7, 10}}},
       {"row 11: horizontal between left and right corners", {{9.0, 11.5}, {8.0, 11.5}}, {{8, 11}}},
       {"row 12: horizontal between left and right corners", {{8.0, 12.5}, {9.0, 12.5}}, {{8, 12}}},
-      {"rows 11-13: 45 degrees from a bottom corner to a bottom corner", {{2.5, 12.0}, {4.5, 14.0}},
+      {"rows 11-13: 45 degrees from a bottom corner to a bottom corner",
+       {{2.5, 12.0}, {4.5, 14.0}},
        {{2, 11}, {3, 12}}},
-      {"rows 13-15: 45 degrees from a right corner", {{7.0, 13.5}, {5.0, 15.5}}, {{6, 13}, {5, 14}}},
-      {"rows 13-15: 45 degrees down-left to a bottom corner", {{2.5, 14.0}, {0.5, 16.0}},
+      {"rows 13-15: 45 degrees from a right corner",
+       {{7.0, 13.5}, {5.0, 15.5}},
+       {{6, 13}, {5, 14}}},
+      {"rows 13-15: 45 degrees down-left to a bottom corner",
+       {{2.5, 14.0}, {0.5, 16.0}},
        {{2, 13}, {1, 14}}},
       {"rows 14-15: strip up from the bottom edge, then up a lower-right edge",
        {{3.5, 16.0}, {3.5, 15.0}, {4.0, 14.5}},
@@ -98,11 +104,15 @@ const std::vector<DiagramLine>& diagram_lines() {
        {{10.5, 2.0}, {9.0, 6.5}},
        {{10, 1}, {10, 2}, {9, 3}, {9, 4}, {9, 5}}},
       {"rows 2-3: 45 degrees from an upper-left edge, away", {{14.25, 3.25}, {13.875, 2.875}}, {}},
-      {"row 3: from an upper-right edge to an upper-left edge", {{14.625, 3.125}, {15.125, 3.375}}, {}},
+      {"row 3: from an upper-right edge to an upper-left edge",
+       {{14.625, 3.125}, {15.125, 3.375}},
+       {}},
       {"row 2: short horizontal between diamonds", {{15.25, 2.875}, {14.875, 2.875}}, {}},
       {"rows 2-3: short vertical between diamonds", {{15.875, 3.125}, {15.875, 2.875}}, {}},
       {"row 4: along a lower-left edge to the bottom corner", {{14.0, 4.5}, {14.5, 5.0}}, {}},
-      {"row 5: along a lower-right edge to the right corner", {{12.5, 6.0}, {13.0, 5.5}}, {{12, 5}}},
+      {"row 5: along a lower-right edge to the right corner",
+       {{12.5, 6.0}, {13.0, 5.5}},
+       {{12, 5}}},
       {"row 6: vertical from bottom corner to top corner", {{13.5, 7.0}, {13.5, 6.0}}, {{13, 6}}},
       {"rows 5-6: down-left from a bottom corner", {{15.5, 6.0}, {15.0, 6.5}}, {{15, 5}}},
       {"row 7: strip along bottom corners",
@@ -110,15 +120,21 @@ const std::vector<DiagramLine>& diagram_lines() {
        {{11, 7}, {10, 7}}},
       {"rows 7-8: along an upper-left edge to a bottom corner", {{15.0, 8.5}, {15.5, 8.0}}, {}},
       {"rows 8-9: along an upper-right edge", {{13.0, 9.5}, {12.5, 9.0}}, {}},
-      {"rows 8-9: vertical from a bottom corner to a bottom corner", {{13.5, 9.0}, {13.5, 10.0}}, {{13, 8}}},
+      {"rows 8-9: vertical from a bottom corner to a bottom corner",
+       {{13.5, 9.0}, {13.5, 10.0}},
+       {{13, 8}}},
       {"rows 9-13: strip of two 45-degree lines along lower edges",
        {{10.0, 9.5}, {12.0, 11.5}, {10.0, 13.5}},
        {{10, 9}, {11, 10}, {11, 11}, {10, 12}}},
-      {"rows 10-13: y-major down-left", {{14.125, 10.75}, {12.25, 13.875}},
+      {"rows 10-13: y-major down-left",
+       {{14.125, 10.75}, {12.25, 13.875}},
        {{13, 11}, {13, 12}, {12, 13}}},
-      {"rows 10-14: y-major ending on a right corner", {{16.125, 10.75}, {14.0, 14.5}},
+      {"rows 10-14: y-major ending on a right corner",
+       {{16.125, 10.75}, {14.0, 14.5}},
        {{15, 11}, {15, 12}, {14, 13}}},
-      {"rows 14-15: y-major ending inside a diamond", {{15.875, 14.125}, {15.125, 15.5}}, {{15, 14}}},
+      {"rows 14-15: y-major ending inside a diamond",
+       {{15.875, 14.125}, {15.125, 15.5}},
+       {{15, 14}}},
       {"rows 14-15: strip along a centre row, then down a lower-left edge",
        {{8.0, 14.5}, {10.0, 14.5}, {11.0, 15.5}},
        {{8, 14}, {9, 14}, {10, 14}}},
@@ -131,10 +147,13 @@ const std::vector<DiagramLine>& diagram_lines() {
 
 std::vector<Pixel> draw(const DiagramLine& l) {
   std::vector<Vec2> vs;
-  for (const Px& p : l.vertices) vs.push_back(sample_px(p.x, p.y));
+  for (const Px& p : l.vertices)
+    vs.push_back(sample_px(p.x, p.y));
   std::vector<Pixel> out;
   rasterize_aliased_line_strip(vs, LineMode::kD3DDiamond, kW, kH,
-                               [&](std::int32_t x, std::int32_t y) { out.push_back({x, y}); });
+                               [&](std::int32_t x, std::int32_t y) {
+                                 out.push_back({x, y});
+                               });
   return out;
 }
 
@@ -165,5 +184,5 @@ TEST(LineRastDiagram, ExpectationsAreGreyInThePicture) {
   }
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

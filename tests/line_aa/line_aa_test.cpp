@@ -3,10 +3,10 @@
 // computed by hand for horizontal, vertical and 45-degree lines, the fragment rule at its
 // edge, zero-length lines and the 8-bit blend.
 
-#include <cmath>
 #include <climits>
-#include <cstdlib>
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <map>
 #include <utility>
 #include <vector>
@@ -31,18 +31,22 @@ Coverage aa_px(Px a, Px b, std::int32_t w, std::int32_t h) {
                       EXPECT_TRUE(out.emplace(Pixel{x, y}, c).second) << "pixel emitted twice";
                       order.push_back(Pixel{x, y});
                     });
-  for (std::size_t i = 1; i < order.size(); ++i) EXPECT_LT(order[i - 1], order[i]) << "not row order";
+  for (std::size_t i = 1; i < order.size(); ++i)
+    EXPECT_LT(order[i - 1], order[i]) << "not row order";
   return out;
 }
 
 std::vector<Pixel> keys(const Coverage& c) {
   std::vector<Pixel> v;
-  for (const auto& [p, q] : c) v.push_back(p);
+  for (const auto& [p, q] : c)
+    v.push_back(p);
   return v;
 }
 
 // Exact value v (a fraction of 1) in units of 1/65536.
-double q16(double v) { return v * 65536.0; }
+double q16(double v) {
+  return v * 65536.0;
+}
 
 // rule: LINE.AA.FRAGMENT, LINE.AA.COVERAGE, LINE.AA.RECT
 TEST(LineAADiagram, ReproducesTheD3DAALineDiagram) {
@@ -141,7 +145,8 @@ TEST(LineAACoverage, LineAcrossTheWholeVertexRangeKeepsItsPrecision) {
   // A diagonal band. On R4 of pixel (i, j), x - y ranges over the open interval
   // (i - j - 3, i - j + 3); the rectangle is the band |x - y| <= sqrt(2)/2 (away from the far
   // ends). They overlap in positive area iff |i - j| <= 3.
-  for (const auto& [p, q] : c) EXPECT_LE(std::abs(p.x - p.y), 3) << p;
+  for (const auto& [p, q] : c)
+    EXPECT_LE(std::abs(p.x - p.y), 3) << p;
   EXPECT_EQ(c.size(), 16u + 2u * (15u + 14u + 13u));
   EXPECT_EQ(c.count({0, 3}), 1u);
   EXPECT_EQ(c.count({0, 4}), 0u);
@@ -219,5 +224,5 @@ TEST(LineAABlend, EightBitBlendRoundsToNearestHalvesUp) {
   EXPECT_EQ(aa_blend_unorm8(255, 51, 0, 32768), 26);
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

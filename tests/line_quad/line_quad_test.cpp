@@ -79,7 +79,7 @@ TEST(LineQuadCorners, RoundingIsToNearestDecidedBySquares) {
   EXPECT_EQ(round_quad_offset(1, 1, QuadHalfWidth{7, 2}), 4);
   // Just below and above a half: sqrt(len2) slightly off.
   EXPECT_EQ(round_quad_offset(2, 4, QuadHalfWidth{5, 1}), 5);
-  EXPECT_EQ(round_quad_offset(100, 100 * 100 + 1, QuadHalfWidth{5, 2}), 2);  // 2.49999...
+  EXPECT_EQ(round_quad_offset(100, 100 * 100 + 1, QuadHalfWidth{5, 2}), 2); // 2.49999...
 }
 
 // rule: LINE.QUAD.SHAPE
@@ -156,13 +156,14 @@ TEST(LineQuadZeroLength, EqualEndpointsCoverNothing) {
 TEST(LineQuadNoCull, CullModesDoNotApply) {
   for (const CullMode cull : {CullMode::kNone, CullMode::kBack, CullMode::kFront}) {
     const RasterState state{cull, FrontFace::kClockwise, FillConvention::kTopLeft};
-    const auto setups = setup_quad_line(sample_px(0.5, 1.5), sample_px(3.5, 1.5),
-                                        LineMode::kQuadWide, state);
+    const auto setups =
+        setup_quad_line(sample_px(0.5, 1.5), sample_px(3.5, 1.5), LineMode::kQuadWide, state);
     ASSERT_EQ(setups.size(), 2u);
-    for (const TriangleSetup& s : setups) EXPECT_EQ(s.status, TriangleStatus::kRasterized);
-    EXPECT_EQ(quad_pixels(sample_px(0.5, 1.5), sample_px(3.5, 1.5), LineMode::kQuadWide, 5, 3,
-                          state),
-              pixels_in_picture({".....", "###.."}));
+    for (const TriangleSetup& s : setups)
+      EXPECT_EQ(s.status, TriangleStatus::kRasterized);
+    EXPECT_EQ(
+        quad_pixels(sample_px(0.5, 1.5), sample_px(3.5, 1.5), LineMode::kQuadWide, 5, 3, state),
+        pixels_in_picture({".....", "###.."}));
   }
 }
 
@@ -176,5 +177,5 @@ TEST(LineQuadCorners, CornersNearTheRangeLimitStayRepresentable) {
   EXPECT_EQ(t[1][2], raw(kMaxVertexRaw, kMaxVertexRaw - 179));
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

@@ -98,8 +98,8 @@ TEST(MsaaCoverageGaps, ForEachFragmentStreamsWhatRasterizeListsOnEveryPath) {
       std::vector<Fragment> streamed;
       for_each_fragment(s, p, [&](const Fragment& f) { streamed.push_back(f); });
       EXPECT_FALSE(streamed.empty()) << "primitive " << p << ", " << ms.count() << " samples";
-      EXPECT_EQ(streamed, rasterize_primitive(s, p)) << "primitive " << p << ", " << ms.count()
-                                                    << " samples";
+      EXPECT_EQ(streamed, rasterize_primitive(s, p))
+          << "primitive " << p << ", " << ms.count() << " samples";
     }
   }
 }
@@ -113,11 +113,11 @@ TEST(MsaaCoverageGaps, ResolveNamesEachFragmentOutsideTheScene) {
   const PreparedScene& s = std::get<PreparedScene>(prepared);
   const Fragment inside{0, 1, 1, 0xFu};
   const std::vector<Fragment> outside = {
-      Fragment{1, 0, 0, 0xFu},   // no primitive 1
-      Fragment{0, -1, 0, 0xFu},  // left of the target
-      Fragment{0, 3, 0, 0xFu},   // right of it
-      Fragment{0, 0, -1, 0xFu},  // above it
-      Fragment{0, 0, 2, 0xFu},   // below it
+      Fragment{1, 0, 0, 0xFu},  // no primitive 1
+      Fragment{0, -1, 0, 0xFu}, // left of the target
+      Fragment{0, 3, 0, 0xFu},  // right of it
+      Fragment{0, 0, -1, 0xFu}, // above it
+      Fragment{0, 0, 2, 0xFu},  // below it
   };
   for (const Fragment& bad : outside) {
     const auto r = resolve(s, {inside, bad});
@@ -179,8 +179,8 @@ TEST(MsaaCoverageGaps, DerivativesOfAQuadDifferPerLaneOnlyWhenFine) {
   const std::array<std::int32_t, 4> p = {0, 3, 10, 20};
   EXPECT_EQ(fine_derivatives(p, 0), (Derivatives<std::int32_t>{3, 10}));
   EXPECT_EQ(fine_derivatives(p, 3), (Derivatives<std::int32_t>{10, 17}));
-  EXPECT_FALSE(fine_derivatives(p, 1) == fine_derivatives(p, 2));  // ddx 3 vs 10, ddy 17 vs 10
-  EXPECT_FALSE(fine_derivatives(p, 0) == fine_derivatives(p, 1));  // same ddx, ddy 10 vs 17
+  EXPECT_FALSE(fine_derivatives(p, 1) == fine_derivatives(p, 2)); // ddx 3 vs 10, ddy 17 vs 10
+  EXPECT_FALSE(fine_derivatives(p, 0) == fine_derivatives(p, 1)); // same ddx, ddy 10 vs 17
   EXPECT_EQ(coarse_derivatives(p), fine_derivatives(p, 0));
   EXPECT_FALSE(coarse_derivatives(p) == fine_derivatives(p, 3));
 }

@@ -37,9 +37,9 @@ TEST(PipeCatalog, AWrongExpectationFails) {
   const CaseReport r = check_case(dir / "z.json");
   EXPECT_EQ(r.failures.size(), 2u) << format_report({r});
   std::filesystem::remove(dir / "z.expect.json");
-  EXPECT_FALSE(check_case(dir / "z.json").ok());  // no sidecar
+  EXPECT_FALSE(check_case(dir / "z.json").ok()); // no sidecar
   std::filesystem::remove_all(dir);
 }
 
-}  // namespace
-}  // namespace rastrules::cases
+} // namespace
+} // namespace rastrules::cases

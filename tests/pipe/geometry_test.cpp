@@ -44,7 +44,7 @@ TEST(PipeViewport, LimitsNameTheField) {
   EXPECT_EQ(field(Viewport{0, 32768, 10, 10, 0, 1}), "y");
   EXPECT_EQ(field(Viewport{0, 0, 0, 10, 0, 1}), "width");
   EXPECT_EQ(field(Viewport{0, 0, 10, -1, 0, 1}), "height");
-  EXPECT_EQ(field(Viewport{32000, 0, 768, 10, 0, 1}), "width");   // right edge 32768
+  EXPECT_EQ(field(Viewport{32000, 0, 768, 10, 0, 1}), "width"); // right edge 32768
   EXPECT_EQ(field(Viewport{0, 0, 10, 10, -0.5f, 1}), "min_depth");
   EXPECT_EQ(field(Viewport{0, 0, 10, 10, 0, 1.5f}), "max_depth");
   EXPECT_EQ(field(Viewport{0, 0, 10, 10, 0.75f, 0.25f}), "min_depth");
@@ -79,9 +79,9 @@ TEST(PipeViewport, EveryOperationIsRoundedToFloat32) {
 TEST(PipeViewport, ImplicitScissorRoundsTheExtentsDown) {
   const PixelRect r = viewport_scissor(Viewport{0.5f, -1.25f, 10.0f, 3.5f, 0, 1});
   EXPECT_EQ(r.x0, 0);
-  EXPECT_EQ(r.x1, 10);   // floor(10.5)
-  EXPECT_EQ(r.y0, -2);   // floor(-1.25)
-  EXPECT_EQ(r.y1, 2);    // floor(2.25)
+  EXPECT_EQ(r.x1, 10); // floor(10.5)
+  EXPECT_EQ(r.y0, -2); // floor(-1.25)
+  EXPECT_EQ(r.y1, 2);  // floor(2.25)
   EXPECT_TRUE(r.contains(9, 1));
   EXPECT_FALSE(r.contains(10, 1));
   EXPECT_FALSE(r.contains(0, 2));
@@ -99,9 +99,9 @@ TEST(PipeClip, GuardBandIsTheWindowSquareOf31744Pixels) {
   EXPECT_EQ(vol.w_min, std::ldexp(1.0, -126));
   EXPECT_TRUE(inside(vol, Vec4f{991, -991, 1, 1}));
   EXPECT_FALSE(inside(vol, Vec4f{992, 0, 0.5f, 1}));
-  EXPECT_FALSE(inside(vol, Vec4f{0, 0, -0.001f, 1}));  // z < 0
-  EXPECT_FALSE(inside(vol, Vec4f{0, 0, 1.001f, 1}));   // z > w
-  EXPECT_FALSE(inside(vol, Vec4f{0, 0, 0, 0}));        // w = 0
+  EXPECT_FALSE(inside(vol, Vec4f{0, 0, -0.001f, 1})); // z < 0
+  EXPECT_FALSE(inside(vol, Vec4f{0, 0, 1.001f, 1}));  // z > w
+  EXPECT_FALSE(inside(vol, Vec4f{0, 0, 0, 0}));       // w = 0
   const ClipVolume no_z = clip_volume({Vec4f{0, 0, 0, 1}}, vp, false);
   EXPECT_TRUE(inside(no_z, Vec4f{0, 0, -5, 1}));
   EXPECT_TRUE(inside(no_z, Vec4f{0, 0, 5, 1}));
@@ -112,7 +112,7 @@ TEST(PipeClip, TheWPlaneIsFloat32sSmallestNormal) {
   const Viewport vp{0, 0, 64, 64, 0, 1};
   const ClipVolume vol = clip_volume({}, vp, true);
   EXPECT_TRUE(inside(vol, Vec4f{0, 0, 0, 0x1p-126f}));
-  EXPECT_FALSE(inside(vol, Vec4f{0, 0, 0, 0x1p-127f}));  // subnormal w: behind the eye
+  EXPECT_FALSE(inside(vol, Vec4f{0, 0, 0, 0x1p-127f})); // subnormal w: behind the eye
   EXPECT_TRUE(inside(vol, Vec4f{1e-30f, 0, 1e-30f, 1e-20f}));
 }
 
@@ -121,9 +121,8 @@ TEST(PipeClip, AFarVertexDoesNotDiscardTheVisibleTriangle) {
   // (The regression FarVertexMustNotDiscardTheVisibleTriangle of properties/pipe: a w plane
   // relative to the largest coordinate once rose above every vertex's w here.)
   const Viewport vp{0, 0, 8, 8, 0, 1};
-  const std::vector<ClipVertex> t{{{0x1p41f, 0, 0.5f, 1}, {}},
-                                  {{-0.5f, -0.5f, 0.5f, 1}, {}},
-                                  {{-0.5f, 0.5f, 0.5f, 1}, {}}};
+  const std::vector<ClipVertex> t{
+      {{0x1p41f, 0, 0.5f, 1}, {}}, {{-0.5f, -0.5f, 0.5f, 1}, {}}, {{-0.5f, 0.5f, 0.5f, 1}, {}}};
   const auto poly = clip_polygon(t, clip_volume({}, vp, true));
   EXPECT_EQ(poly.size(), 4u);
 }
@@ -137,7 +136,8 @@ TEST(PipeClip, InsideTrianglesPassUnchanged) {
   const Viewport vp{0, 0, 64, 64, 0, 1};
   const auto t = tri({-1, -1, 0.5f, 1}, {1, -1, 0.5f, 1}, {0, 1, 0.5f, 1}, 1, 2, 3);
   std::vector<Vec4f> ps;
-  for (const auto& v : t) ps.push_back(v.pos);
+  for (const auto& v : t)
+    ps.push_back(v.pos);
   EXPECT_EQ(clip_polygon(t, clip_volume(ps, vp, true)), t);
 }
 
@@ -147,7 +147,8 @@ TEST(PipeClip, NearPlaneCutsATriangleIntoAQuadrilateral) {
   // Vertex 0 behind the near plane (z < 0, w > 0); vertices 1 and 2 in front.
   const auto t = tri({0, 0, -1, 1}, {1, 0, 1, 2}, {0, 1, 1, 2}, 0, 10, 20);
   std::vector<Vec4f> ps;
-  for (const auto& v : t) ps.push_back(v.pos);
+  for (const auto& v : t)
+    ps.push_back(v.pos);
   const auto poly = clip_polygon(t, clip_volume(ps, vp, true));
   ASSERT_EQ(poly.size(), 4u);
   // Walk: v0 out, v1 in -> I(v1 -> v0) then v1; v1 in, v2 in -> v2; v2 in, v0 out -> I(v2 -> v0).
@@ -172,16 +173,18 @@ TEST(PipeClip, ASharedEdgeIsCutAtTheSamePointFromBothSides) {
   const ClipVolume vol = clip_volume(all, vp, true);
   const auto p1 = clip_polygon(t1, vol), p2 = clip_polygon(t2, vol);
   const auto on_plane = [&](const std::vector<ClipVertex>& p) {
-    std::vector<Vec4f> r;  // the vertices the clipper created
+    std::vector<Vec4f> r; // the vertices the clipper created
     for (const auto& v : p)
-      if (v.pos != a && v.pos != b && v.pos != c && v.pos != d) r.push_back(v.pos);
+      if (v.pos != a && v.pos != b && v.pos != c && v.pos != d)
+        r.push_back(v.pos);
     return r;
   };
   const auto n1 = on_plane(p1), n2 = on_plane(p2);
   ASSERT_FALSE(n1.empty());
   bool shared = false;
   for (const Vec4f& x : n1)
-    for (const Vec4f& y : n2) shared = shared || x == y;
+    for (const Vec4f& y : n2)
+      shared = shared || x == y;
   EXPECT_TRUE(shared) << "the cut of edge a-b differs between the two triangles";
 }
 
@@ -190,15 +193,18 @@ TEST(PipeClip, WBehindTheEyeIsClippedAwayAndNothingLeftIsEmpty) {
   const Viewport vp{0, 0, 64, 64, 0, 1};
   const auto behind = tri({0, 0, -1, -1}, {1, 0, -1, -1}, {0, 1, -1, -1});
   std::vector<Vec4f> ps;
-  for (const auto& v : behind) ps.push_back(v.pos);
+  for (const auto& v : behind)
+    ps.push_back(v.pos);
   EXPECT_TRUE(clip_polygon(behind, clip_volume(ps, vp, false)).empty());
   // One vertex with w < 0: every vertex of the result has w > 0.
   const auto crossing = tri({0, 0, 0.5f, -1}, {1, 0, 0.5f, 1}, {0, 1, 0.5f, 1});
   ps.clear();
-  for (const auto& v : crossing) ps.push_back(v.pos);
+  for (const auto& v : crossing)
+    ps.push_back(v.pos);
   const auto poly = clip_polygon(crossing, clip_volume(ps, vp, false));
   ASSERT_GE(poly.size(), 3u);
-  for (const auto& v : poly) EXPECT_GT(v.pos[3], 0.0f);
+  for (const auto& v : poly)
+    EXPECT_GT(v.pos[3], 0.0f);
 }
 
 // rule: PIPE.CLIP.POLYGON, PIPE.CLIP.VOLUME
@@ -207,7 +213,8 @@ TEST(PipeClip, GuardBandCutsFarVerticesAndKeepsTheRest) {
   // A vertex at xn = 5000 (window x = 160032) is beyond the guard band (xn <= 991).
   const auto t = tri({-0.5f, -0.5f, 0.5f, 1}, {5000, 0, 0.5f, 1}, {-0.5f, 0.5f, 0.5f, 1});
   std::vector<Vec4f> ps;
-  for (const auto& v : t) ps.push_back(v.pos);
+  for (const auto& v : t)
+    ps.push_back(v.pos);
   const ClipVolume vol = clip_volume(ps, vp, true);
   const auto poly = clip_polygon(t, vol);
   ASSERT_EQ(poly.size(), 4u);
@@ -226,9 +233,8 @@ TEST(PipeClip, WindowPositionsSaturateToTheSnapRange) {
   EXPECT_EQ(saturate_to_snap_range(32767.99609375f), 32767.99609375f);
   // Every vertex the clipper creates at the guard band snaps (here with the widest viewport).
   const Viewport vp{-32768, -32768, 65535, 65535, 0, 1};
-  const std::vector<ClipVertex> t{{{-0.5f, -0.5f, 0.5f, 1}, {}},
-                                  {{5e4f, -0.5f, 0.5f, 1}, {}},
-                                  {{-0.5f, 7e4f, 0.5f, 1}, {}}};
+  const std::vector<ClipVertex> t{
+      {{-0.5f, -0.5f, 0.5f, 1}, {}}, {{5e4f, -0.5f, 0.5f, 1}, {}}, {{-0.5f, 7e4f, 0.5f, 1}, {}}};
   const auto poly = clip_polygon(t, clip_volume({}, vp, true));
   ASSERT_GE(poly.size(), 4u);
   for (const ClipVertex& v : poly) {
@@ -250,9 +256,9 @@ TEST(PipeClip, SegmentsAreCutFromTheInsideEndpoint) {
   EXPECT_EQ((*s)[1].pos, b.pos);
   const auto r = clip_segment(b, a, vol);
   ASSERT_TRUE(r.has_value());
-  EXPECT_EQ((*r)[1].pos, (*s)[0].pos);  // the same cut from the other direction
+  EXPECT_EQ((*r)[1].pos, (*s)[0].pos); // the same cut from the other direction
   EXPECT_FALSE(clip_segment(ClipVertex{{0, 0, -1, 1}, {0}}, ClipVertex{{0, 0, -2, 1}, {0}}, vol));
 }
 
-}  // namespace
-}  // namespace rastrules::pipe
+} // namespace
+} // namespace rastrules::pipe

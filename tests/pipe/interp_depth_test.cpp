@@ -21,7 +21,7 @@ Vec2 px(double x, double y) {
 
 // rule: PIPE.BARY.EXACT, PIPE.BARY.SUM
 TEST(PipeBary, EdgeValuesAreExactAndSumToTheArea) {
-  const std::array<Vec2, 3> v{px(0, 0), px(8, 0), px(0, 4)};  // counter-clockwise on screen
+  const std::array<Vec2, 3> v{px(0, 0), px(8, 0), px(0, 4)}; // counter-clockwise on screen
   const Barycentrics at0 = barycentrics(v, v[0]);
   EXPECT_EQ(at0.e[0], at0.area);
   EXPECT_EQ(at0.e[1], 0);
@@ -50,7 +50,7 @@ TEST(PipeInterp, LinearIsTheAreaWeightedMean) {
 // rule: PIPE.INTERP.PERSPECTIVE
 TEST(PipeInterp, PerspectiveWeighsByOneOverW) {
   const std::array<Vec2, 3> v{px(0, 0), px(8, 0), px(0, 4)};
-  const Barycentrics b = barycentrics(v, px(4, 0));  // lambda = (1/2, 1/2, 0)
+  const Barycentrics b = barycentrics(v, px(4, 0)); // lambda = (1/2, 1/2, 0)
   // (0.5 * 0 / 1 + 0.5 * 12 / 3) / (0.5 / 1 + 0.5 / 3) = 2 / (2/3) = 3.
   EXPECT_EQ(interpolate_perspective(b, {0.0f, 12.0f, 100.0f}, {1.0f, 3.0f, 5.0f}, -1.0f), 3.0f);
   // With equal w it equals linear interpolation.
@@ -66,10 +66,10 @@ TEST(PipeInterp, PerspectiveWeighsByOneOverW) {
 TEST(PipeInterp, BeyondTheHorizonTakesTheFlatValueAndNothingIsNaN) {
   const std::array<Vec2, 3> v{px(0, 0), px(8, 0), px(0, 8)};
   // w grows a million-fold towards vertex 1: far outside on that side, sum(lambda_i / w_i) < 0.
-  const Barycentrics b = barycentrics(v, px(-16, 0));  // lambda = (3, -2, 0)
+  const Barycentrics b = barycentrics(v, px(-16, 0)); // lambda = (3, -2, 0)
   EXPECT_EQ(interpolate_perspective(b, {1.0f, 2.0f, 3.0f}, {1e6f, 1.0f, 1.0f}, 7.0f), 7.0f);
   // Huge attribute values extrapolated beyond float32 saturate.
-  const Barycentrics out = barycentrics(v, px(32, 0));  // lambda = (-3, 4, 0)
+  const Barycentrics out = barycentrics(v, px(32, 0)); // lambda = (-3, 4, 0)
   const float max = std::numeric_limits<float>::max();
   EXPECT_EQ(interpolate_linear(out, {-max, max, 0.0f}), max);
   EXPECT_EQ(interpolate_perspective(out, {-max, max, 0.0f}, {1.0f, 1.0f, 1.0f}, 0.0f), max);
@@ -86,7 +86,7 @@ TEST(PipeDepth, DepthIsLinearInScreenSpace) {
 
 // rule: PIPE.DEPTH.CLAMP, PIPE.DEPTH.FORMAT
 TEST(PipeDepth, FormatsRoundToNearestAfterTheClamp) {
-  EXPECT_EQ(to_depth_format(0.5, 0, 1, DepthFormat::kD16).unorm, 32768u);  // 32767.5 + 0.5
+  EXPECT_EQ(to_depth_format(0.5, 0, 1, DepthFormat::kD16).unorm, 32768u); // 32767.5 + 0.5
   EXPECT_EQ(to_depth_format(1.0, 0, 1, DepthFormat::kD16).unorm, 65535u);
   EXPECT_EQ(to_depth_format(1.0, 0, 1, DepthFormat::kD24).unorm, 16777215u);
   EXPECT_EQ(to_depth_format(0.0, 0, 1, DepthFormat::kD24).unorm, 0u);
@@ -108,14 +108,14 @@ TEST(PipeDepth, EveryCompareFunction) {
     CompareFunc f;
     bool lt, eq, gt;
   };
-  for (const Case c : {Case{CompareFunc::kNever, false, false, false},
-                       Case{CompareFunc::kLess, true, false, false},
-                       Case{CompareFunc::kEqual, false, true, false},
-                       Case{CompareFunc::kLessEqual, true, true, false},
-                       Case{CompareFunc::kGreater, false, false, true},
-                       Case{CompareFunc::kNotEqual, true, false, true},
-                       Case{CompareFunc::kGreaterEqual, false, true, true},
-                       Case{CompareFunc::kAlways, true, true, true}}) {
+  for (const Case c :
+       {Case{CompareFunc::kNever, false, false, false},
+        Case{CompareFunc::kLess, true, false, false}, Case{CompareFunc::kEqual, false, true, false},
+        Case{CompareFunc::kLessEqual, true, true, false},
+        Case{CompareFunc::kGreater, false, false, true},
+        Case{CompareFunc::kNotEqual, true, false, true},
+        Case{CompareFunc::kGreaterEqual, false, true, true},
+        Case{CompareFunc::kAlways, true, true, true}}) {
     for (const DepthFormat fmt : {DepthFormat::kD24, DepthFormat::kD32F}) {
       EXPECT_EQ(depth_test(c.f, lo, hi, fmt), c.lt) << to_string(c.f);
       EXPECT_EQ(depth_test(c.f, lo, lo, fmt), c.eq) << to_string(c.f);
@@ -142,5 +142,5 @@ TEST(PipeDepth, BiasFollowsD3D) {
   EXPECT_EQ(depth_bias(v, slope, DepthBias{0, -2.0f, -0.1f}, DepthFormat::kD24), -0.1f);
 }
 
-}  // namespace
-}  // namespace rastrules::pipe
+} // namespace
+} // namespace rastrules::pipe

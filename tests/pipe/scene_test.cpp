@@ -73,7 +73,8 @@ SceneError run_error(const PipeScene& s) {
 
 std::set<std::tuple<std::uint32_t, std::int32_t, std::int32_t>> pixels(const PipeResult& r) {
   std::set<std::tuple<std::uint32_t, std::int32_t, std::int32_t>> s;
-  for (const auto& f : r.fragments) s.insert({f.prim, f.x, f.y});
+  for (const auto& f : r.fragments)
+    s.insert({f.prim, f.x, f.y});
   return s;
 }
 
@@ -105,14 +106,16 @@ TEST(PipeScene, NearClippedTriangleBecomesPartsThatCoverEachPixelOnce) {
   PipeScene s = scene(32, 32);
   s.depth = DepthState{};
   // One vertex behind the near plane (z < 0).
-  s.primitives.push_back(clip_tri({-0.9f, -0.9f, -0.5f, 1}, {0.9f, -0.8f, 0.5f, 1}, {0, 0.9f, 0.5f, 1}));
+  s.primitives.push_back(
+      clip_tri({-0.9f, -0.9f, -0.5f, 1}, {0.9f, -0.8f, 0.5f, 1}, {0, 0.9f, 0.5f, 1}));
   const PipeResult r = run(s);
   std::set<std::pair<std::int32_t, std::int32_t>> seen;
   std::set<std::uint32_t> parts;
   for (const auto& f : frags(r)) {
     ASSERT_TRUE(f.part.has_value());
     parts.insert(*f.part);
-    EXPECT_TRUE(seen.insert({f.f.x, f.f.y}).second) << "pixel drawn twice: " << f.f.x << "," << f.f.y;
+    EXPECT_TRUE(seen.insert({f.f.x, f.f.y}).second)
+        << "pixel drawn twice: " << f.f.x << "," << f.f.y;
     // Depth stays in the viewport's range and the near plane maps to depth 0.
     ASSERT_EQ(f.depth.size(), 1u);
     EXPECT_LE(f.depth[0].unorm, 16777215u);
@@ -171,7 +174,7 @@ TEST(PipeScene, ZFightingHasADeterministicWinner) {
     const PipeResult r = run(s);
     for (const auto& f : frags(r)) {
       if (f.f.prim == 0)
-        EXPECT_EQ(f.passed, 1u);  // first: passes against the clear value 1.0
+        EXPECT_EQ(f.passed, 1u); // first: passes against the clear value 1.0
       else
         EXPECT_EQ(f.passed, func == CompareFunc::kLess ? 0u : 1u);
     }
@@ -184,18 +187,21 @@ TEST(PipeScene, NearerTriangleWinsAndTheBufferHoldsItsDepth) {
   s.depth = DepthState{};
   s.depth->format = DepthFormat::kD16;
   s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.25f, 0.25f, 0.25f}));
-  s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.75f, 0.75f, 0.75f}));  // behind
+  s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.75f, 0.75f, 0.75f})); // behind
   const PipeResult r = run(s);
-  for (const auto& f : frags(r)) EXPECT_EQ(f.passed, f.f.prim == 0 ? 1u : 0u);
+  for (const auto& f : frags(r))
+    EXPECT_EQ(f.passed, f.f.prim == 0 ? 1u : 0u);
   const std::uint32_t quarter = to_depth_format(0.25, 0, 1, DepthFormat::kD16).unorm;
-  EXPECT_EQ(r.depth_buffer[0].unorm, quarter);                         // pixel (0, 0)
-  EXPECT_EQ(r.depth_buffer[7 * 8 + 7].unorm, 65535u);                  // pixel (7, 7): clear
+  EXPECT_EQ(r.depth_buffer[0].unorm, quarter);        // pixel (0, 0)
+  EXPECT_EQ(r.depth_buffer[7 * 8 + 7].unorm, 65535u); // pixel (7, 7): clear
   // Without writes the second still fails (the buffer holds the clear value only where the
   // first did not draw), and the buffer keeps the clear value everywhere.
   s.depth->write = false;
   const PipeResult nw = run(s);
-  for (const auto& v : nw.depth_buffer) EXPECT_EQ(v.unorm, 65535u);
-  for (const auto& f : frags(nw)) EXPECT_EQ(f.passed, 1u);
+  for (const auto& v : nw.depth_buffer)
+    EXPECT_EQ(v.unorm, 65535u);
+  for (const auto& f : frags(nw))
+    EXPECT_EQ(f.passed, 1u);
 }
 
 // rule: PIPE.DEPTH.TEST
@@ -213,7 +219,8 @@ TEST(PipeScene, DepthIsTestedPerSample) {
     // rule: PIPE.DEPTH.KILL
     EXPECT_EQ(f.depth.size(),
               f.passed == 0 ? 0u : static_cast<std::size_t>(std::popcount(f.f.mask)));
-    if (f.f.prim == 1 && f.passed != 0 && f.passed != f.f.mask) mixed = true;
+    if (f.f.prim == 1 && f.passed != 0 && f.passed != f.f.mask)
+      mixed = true;
   }
   EXPECT_TRUE(mixed) << "some pixel should pass the test on some samples only";
 }
@@ -230,7 +237,8 @@ TEST(PipeScene, SampleLocationNeedsSampleShading) {
   s.base.msaa.pattern = standard_pattern(4);
   s.base.msaa.shading = ShadingRate::kSample;
   const PipeResult r = run(s);
-  for (const auto& f : frags(r)) ASSERT_TRUE(f.f.sample.has_value());
+  for (const auto& f : frags(r))
+    ASSERT_TRUE(f.f.sample.has_value());
 }
 
 // rule: PIPE.INPUT.POSITION, PIPE.INPUT.ATTRIBUTES, PIPE.TRANSFORM.FLOAT32
@@ -262,17 +270,17 @@ TEST(PipeScene, PointsOutsideTheVolumeAreDiscardedAndLinesAreCut) {
   PipeScene s = scene(16, 16);
   PipePrimitive pt;
   pt.base.type = PrimitiveType::kPoint;
-  pt.pos = {{0, 0, -0.5f, 1}};  // in front of the near plane
+  pt.pos = {{0, 0, -0.5f, 1}}; // in front of the near plane
   s.primitives.push_back(pt);
   PipePrimitive line;
   line.base.type = PrimitiveType::kLine;
-  line.pos = {{-0.5f, 0.05f, -1, 1}, {0.5f, 0.05f, 1, 1}};  // crosses z = 0 half-way
+  line.pos = {{-0.5f, 0.05f, -1, 1}, {0.5f, 0.05f, 1, 1}}; // crosses z = 0 half-way
   s.primitives.push_back(line);
   const PipeResult r = run(s);
   for (const auto& f : frags(r)) {
     EXPECT_EQ(f.f.prim, 1u);
     EXPECT_EQ(f.part, std::optional<std::uint32_t>(0));
-    EXPECT_GE(f.f.x, 7);  // the clipped line starts at the centre, x = 8
+    EXPECT_GE(f.f.x, 7); // the clipped line starts at the centre, x = 8
   }
   EXPECT_FALSE(r.fragments.empty());
 }
@@ -290,7 +298,7 @@ TEST(PipeScene, BiasMovesTrianglesButNotPoints) {
   pt.z = {0.5f};
   s.primitives.push_back(pt);
   const PipeResult r = run(s);
-  const std::uint32_t half = to_depth_format(0.5, 0, 1, DepthFormat::kD24).unorm;  // 2^23
+  const std::uint32_t half = to_depth_format(0.5, 0, 1, DepthFormat::kD24).unorm; // 2^23
   for (const auto& f : frags(r)) {
     ASSERT_EQ(f.depth.size(), 1u);
     // r = fl32(1 / (2^24 - 1)) = 2^-24 exactly, so z = 0.5 + 1000 * 2^-24 and
@@ -320,7 +328,7 @@ TEST(PipeScene, ResultsDoNotDependOnTheTraversal) {
 
 // rule: PIPE.DEPTH.KILL, PIPE.OPT.EARLY_Z, PIPE.OPT.HIZ
 TEST(PipeScene, KilledFragmentsKeepTheirCoverageOnly) {
-  PipeScene s = scene(16, 16);  // one 16 x 16 tile
+  PipeScene s = scene(16, 16); // one 16 x 16 tile
   s.depth = DepthState{};
   s.attributes = {AttributeDecl{"u", Interpolation::kLinear, Location::kCenter}};
   // A full-target quad at depth 0.25, then a triangle behind it at 0.5.
@@ -401,5 +409,5 @@ TEST(PipeScene, EveryOptimizationGivesThePlainResult) {
   EXPECT_FALSE(plain.fragments.empty());
 }
 
-}  // namespace
-}  // namespace rastrules::pipe
+} // namespace
+} // namespace rastrules::pipe

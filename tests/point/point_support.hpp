@@ -21,8 +21,9 @@ inline std::map<Pixel, int> point_hits(Vec2 c, std::int32_t width, std::int32_t 
                                        const RasterState& state = {}) {
   std::map<Pixel, int> hits;
   for (const TriangleSetup& t : setup_point(c, state)) {
-    raster::walk_triangle(t, width, height,
-                          [&](std::int32_t x, std::int32_t y) { ++hits[Pixel{x, y}]; });
+    raster::walk_triangle(t, width, height, [&](std::int32_t x, std::int32_t y) {
+      ++hits[Pixel{x, y}];
+    });
   }
   return hits;
 }
@@ -31,8 +32,9 @@ inline std::map<Pixel, int> point_hits(Vec2 c, std::int32_t width, std::int32_t 
 inline std::vector<Pixel> point_pixels(Vec2 c, std::int32_t width, std::int32_t height,
                                        const RasterState& state = {}) {
   std::vector<Pixel> out;
-  for (const auto& [p, n] : point_hits(c, width, height, state)) out.push_back(p);
+  for (const auto& [p, n] : point_hits(c, width, height, state))
+    out.push_back(p);
   return out;
 }
 
-}  // namespace rastrules::test
+} // namespace rastrules::test

@@ -36,7 +36,7 @@ TEST(PointShape, BothTrianglesAreClockwiseWithHalfAPixelOfArea) {
   for (const TriangleSetup& s : setup_point(raw(1000, -777), RasterState{})) {
     EXPECT_EQ(s.status, TriangleStatus::kRasterized);
     EXPECT_TRUE(s.clockwise);
-    EXPECT_EQ(s.twice_area, 256 * 256);  // twice 1/2 px^2, in 1/65536 px^2
+    EXPECT_EQ(s.twice_area, 256 * 256); // twice 1/2 px^2, in 1/65536 px^2
   }
 }
 
@@ -104,8 +104,9 @@ TEST(PointCoverHalfOpen, TheDiagonalSampleIsCoveredByExactlyOneTriangle) {
   const auto tris = setup_point(sample_px(1.5, 1.5), RasterState{});
   const Vec2 s = pixel_center(1, 1);
   EXPECT_NE(covers(tris[0], s), covers(tris[1], s));
-  EXPECT_FALSE(covers(tris[0], s));  // on (TL, TR, BL)'s edge TR -> BL, which runs down: excluded
-  EXPECT_TRUE(covers(tris[1], s));   // on (BL, TR, BR)'s edge BL -> TR, which runs up: left, inclusive
+  EXPECT_FALSE(covers(tris[0], s)); // on (TL, TR, BL)'s edge TR -> BL, which runs down: excluded
+  EXPECT_TRUE(
+      covers(tris[1], s)); // on (BL, TR, BR)'s edge BL -> TR, which runs up: left, inclusive
 }
 
 // rule: POINT.RANGE
@@ -113,8 +114,8 @@ TEST(PointRange, CentresMustLeaveHalfAPixelInsideTheVertexRange) {
   const auto in_range = [](std::int64_t x, std::int64_t y) {
     return formula::point_centre_in_range<std::int64_t>(x, y, kMinPointRaw, kMaxPointRaw);
   };
-  EXPECT_EQ(kMinPointRaw, -8388608 + 128);  // -32767.5 px
-  EXPECT_EQ(kMaxPointRaw, 8388607 - 128);   // 32767.49609375 px
+  EXPECT_EQ(kMinPointRaw, -8388608 + 128); // -32767.5 px
+  EXPECT_EQ(kMaxPointRaw, 8388607 - 128);  // 32767.49609375 px
   EXPECT_TRUE(in_range(kMinPointRaw, kMaxPointRaw));
   EXPECT_TRUE(in_range(0, 0));
   EXPECT_FALSE(in_range(kMinPointRaw - 1, 0));
@@ -133,10 +134,10 @@ TEST(PointRange, CentresMustLeaveHalfAPixelInsideTheVertexRange) {
 
 // rule: POINT.RANGE, POINT.COVER.HALF_OPEN
 TEST(PointRange, PointsOutsideTheTargetCoverNothing) {
-  EXPECT_TRUE(point_pixels(sample_px(-0.5, 1.5), 4, 4).empty());  // square [-1, 0): no centre
+  EXPECT_TRUE(point_pixels(sample_px(-0.5, 1.5), 4, 4).empty()); // square [-1, 0): no centre
   EXPECT_EQ(point_pixels(sample_px(0.5, 1.5), 4, 4), (std::vector<Pixel>{{0, 1}}));
   EXPECT_TRUE(point_pixels(raw(kMaxPointRaw, kMaxPointRaw), 4, 4).empty());
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

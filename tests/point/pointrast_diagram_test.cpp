@@ -31,8 +31,8 @@ namespace {
 
 struct DiagramPoint {
   char name;
-  Px centre;               // as read, in pixels (multiples of 1/256)
-  std::string_view where;  // how to find it in the picture
+  Px centre;              // as read, in pixels (multiples of 1/256)
+  std::string_view where; // how to find it in the picture
 };
 
 // clang-format off
@@ -103,18 +103,19 @@ TEST(PointDiagram, EachPointCoversTheExpectedPixel) {
 TEST(PointDiagram, ReadingToleranceDoesNotChangeTheOffGridPoints) {
   // I, K and M moved by up to +-0.1 px (25 raw) in each direction cover the same pixel.
   for (const DiagramPoint& p : kPoints) {
-    if (p.name != 'I' && p.name != 'K' && p.name != 'M') continue;
+    if (p.name != 'I' && p.name != 'K' && p.name != 'M')
+      continue;
     const Vec2 c = sample_px(p.centre.x, p.centre.y);
     const auto base = point_pixels(c, 14, 6);
     for (int dx = -25; dx <= 25; dx += 5) {
       for (int dy = -25; dy <= 25; dy += 5) {
         const Vec2 m{Subpixel::from_raw(c.x.raw() + dx), Subpixel::from_raw(c.y.raw() + dy)};
-        EXPECT_EQ(point_pixels(m, 14, 6), base) << "point " << p.name << " moved by " << dx
-                                                << ", " << dy << " raw";
+        EXPECT_EQ(point_pixels(m, 14, 6), base)
+            << "point " << p.name << " moved by " << dx << ", " << dy << " raw";
       }
     }
   }
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

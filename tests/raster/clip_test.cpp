@@ -24,7 +24,8 @@ std::vector<Pixel> centres_in_window(const TriangleSetup& t, std::int32_t x0, st
     for (std::int32_t x = x0; x < x0 + w; ++x) {
       const Vec2 c{Subpixel::from_raw(x * kSubpixelOne + kSubpixelHalf),
                    Subpixel::from_raw(y * kSubpixelOne + kSubpixelHalf)};
-      if (covers(t, c)) out.push_back(Pixel{x, y});
+      if (covers(t, c))
+        out.push_back(Pixel{x, y});
     }
   }
   return out;
@@ -65,7 +66,7 @@ TEST(RasterTargetClip, NegativeCoordinatesAreDrawnOnlyWhereTheyReachTheTarget) {
 TEST(RasterTargetClip, TriangleWhollyOutsideDrawsNothing) {
   for (const auto& v : {std::array<Px, 3>{{{20, 0}, {30, 0}, {20, 8}}},      // right
                         std::array<Px, 3>{{{-10, 0}, {-5, 0}, {-10, 8}}},    // left
-                        std::array<Px, 3>{{{0, -10}, {16, -10}, {0, -0.5}}},  // above
+                        std::array<Px, 3>{{{0, -10}, {16, -10}, {0, -0.5}}}, // above
                         std::array<Px, 3>{{{0, 8}, {16, 8}, {0, 100}}}}) {   // below (y = 8 edge)
     const TriangleSetup t = triangle_px(v[0], v[1], v[2]);
     ASSERT_EQ(t.status, TriangleStatus::kRasterized);
@@ -103,8 +104,9 @@ TEST(RasterTargetClip, TrianglesSpanningTheWholeVertexRangeOnASmallTarget) {
                     "......##########",
                     ".......#########",
                 }));
-  EXPECT_EQ(up.size() + lo.size(), 128u);  // 100 + 28: every pixel exactly once
-  for (const Pixel& p : lo) EXPECT_GT(p.y, p.x);
+  EXPECT_EQ(up.size() + lo.size(), 128u); // 100 + 28: every pixel exactly once
+  for (const Pixel& p : lo)
+    EXPECT_GT(p.y, p.x);
   // The anti-diagonal from (M, m) to (m, M) is x + y = -1/256 px: no centre of the target
   // lies on or above-left of it.
   EXPECT_TRUE(walk_pixels(triangle_px({m, m}, {M, m}, {m, M}), 16, 8).empty());
@@ -113,8 +115,9 @@ TEST(RasterTargetClip, TrianglesSpanningTheWholeVertexRangeOnASmallTarget) {
 
 // rule: RASTER.TARGET.CLIP, SCENE.OUTPUT.FRAGMENTS
 TEST(RasterTargetClip, RenderNeverEmitsAFragmentOutsideTheTarget) {
-  const Scene s = scene_px(5, 3, RasterState{},
-                           {{{{-3, -3}, {9, -3}, {-3, 9}}}, {{{2.5, 1.5}, {100, 1.5}, {2.5, 100}}}});
+  const Scene s =
+      scene_px(5, 3, RasterState{},
+               {{{{-3, -3}, {9, -3}, {-3, 9}}}, {{{2.5, 1.5}, {100, 1.5}, {2.5, 100}}}});
   const auto r = render(s);
   ASSERT_TRUE(std::holds_alternative<std::vector<Fragment>>(r));
   const auto& f = std::get<std::vector<Fragment>>(r);
@@ -130,5 +133,5 @@ TEST(RasterTargetClip, RenderNeverEmitsAFragmentOutsideTheTarget) {
                              }));
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

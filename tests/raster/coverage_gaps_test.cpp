@@ -23,7 +23,9 @@
 namespace rastrules {
 namespace {
 
-Vec2 px(std::int32_t x, std::int32_t y) { return Vec2{Subpixel::from_int(x), Subpixel::from_int(y)}; }
+Vec2 px(std::int32_t x, std::int32_t y) {
+  return Vec2{Subpixel::from_int(x), Subpixel::from_int(y)};
+}
 
 std::string prepare_error(PrimitiveType type, std::size_t vertices) {
   Scene s;
@@ -34,7 +36,8 @@ std::string prepare_error(PrimitiveType type, std::size_t vertices) {
   p.v.assign(vertices, FloatPoint{1.0f, 1.0f});
   s.primitives.push_back(p);
   const auto r = prepare(s);
-  if (!std::holds_alternative<SceneError>(r)) return "accepted";
+  if (!std::holds_alternative<SceneError>(r))
+    return "accepted";
   return std::get<SceneError>(r).what();
 }
 
@@ -100,11 +103,11 @@ TEST(CoverageGaps, TriangleWhollyOutsideTheTargetVisitsNoPixel) {
     raster::walk_triangle(t, 8, 8, [&](std::int32_t, std::int32_t) { ++visited; });
     EXPECT_EQ(visited, 0);
     // The same triangle on a target large enough to hold it is drawn.
-    const TriangleSetup big = setup_triangle(
-        {Vec2{v[0].x + Subpixel::from_int(40), v[0].y + Subpixel::from_int(40)},
-         Vec2{v[1].x + Subpixel::from_int(40), v[1].y + Subpixel::from_int(40)},
-         Vec2{v[2].x + Subpixel::from_int(40), v[2].y + Subpixel::from_int(40)}},
-        RasterState{});
+    const TriangleSetup big =
+        setup_triangle({Vec2{v[0].x + Subpixel::from_int(40), v[0].y + Subpixel::from_int(40)},
+                        Vec2{v[1].x + Subpixel::from_int(40), v[1].y + Subpixel::from_int(40)},
+                        Vec2{v[2].x + Subpixel::from_int(40), v[2].y + Subpixel::from_int(40)}},
+                       RasterState{});
     raster::walk_triangle(big, 128, 128, [&](std::int32_t, std::int32_t) { ++visited; });
     EXPECT_GT(visited, 0);
   }
@@ -146,16 +149,18 @@ TEST(CoverageGaps, VulkanExplainsATouchAtACornerThatThePerturbationMisses) {
   // A horizontal line along y = 1 touches the closed diamond of pixel (3, 1) only at its top
   // corner (3.5, 1). Vulkan's endpoint perturbation (-e, -e^2) moves the line up, off that
   // corner and into the open diamond of pixel (3, 0) above it.
-  const LineDiamondDecision below = explain_aliased_line_pixel(px(0, 1), px(8, 1), LineMode::kVulkanBresenham, 3, 1);
+  const LineDiamondDecision below =
+      explain_aliased_line_pixel(px(0, 1), px(8, 1), LineMode::kVulkanBresenham, 3, 1);
   EXPECT_EQ(below.met_features, std::uint32_t{kFeatureCornerTop});
   EXPECT_FALSE(below.entered);
   EXPECT_FALSE(below.covered);
   EXPECT_EQ(below.reason, "the perturbed segment misses the open diamond (LINE.VK.TEST_AREA)");
   EXPECT_FALSE(aliased_line_covers(px(0, 1), px(8, 1), LineMode::kVulkanBresenham, 3, 1));
-  const LineDiamondDecision above = explain_aliased_line_pixel(px(0, 1), px(8, 1), LineMode::kVulkanBresenham, 3, 0);
+  const LineDiamondDecision above =
+      explain_aliased_line_pixel(px(0, 1), px(8, 1), LineMode::kVulkanBresenham, 3, 0);
   EXPECT_TRUE(above.covered);
   EXPECT_TRUE(aliased_line_covers(px(0, 1), px(8, 1), LineMode::kVulkanBresenham, 3, 0));
 }
 
-}  // namespace
-}  // namespace rastrules
+} // namespace
+} // namespace rastrules

@@ -44,13 +44,15 @@ TEST(RasterWalkBbox, BoundsAreThePixelsWhoseCentresLieInTheBoundingBox) {
   // Vertices on centres: the box is closed, so the end centres are included.
   expect_bounds(triangle_px({0.5, 0.5}, {3.5, 0.5}, {0.5, 2.5}), 16, 8, {0, 0, 3, 2});
   // One subpixel inside the centres: the end pixels drop out.
-  expect_bounds(triangle_px({0.50390625, 0.50390625}, {3.49609375, 0.50390625},
-                            {0.50390625, 2.49609375}),
-                16, 8, {1, 1, 2, 1});
+  expect_bounds(
+      triangle_px({0.50390625, 0.50390625}, {3.49609375, 0.50390625}, {0.50390625, 2.49609375}), 16,
+      8, {1, 1, 2, 1});
   // Vertices on pixel corners.
   expect_bounds(triangle_px({1, 1}, {6, 2}, {2, 4}), 16, 8, {1, 1, 5, 3});
   // A box containing no centre is empty.
-  EXPECT_TRUE(raster::pixel_bounds(triangle_px({1.625, 1.625}, {2.375, 1.625}, {1.625, 2.375}), 16, 8).empty());
+  EXPECT_TRUE(
+      raster::pixel_bounds(triangle_px({1.625, 1.625}, {2.375, 1.625}, {1.625, 2.375}), 16, 8)
+          .empty());
 }
 
 // rule: RASTER.WALK.BBOX, RASTER.TARGET.CLIP
@@ -71,7 +73,8 @@ TEST(RasterWalkBbox, EmitsRowByRowLeftToRight) {
   const auto got = walk_pixels(triangle_px({0.5, 0.5}, {6.5, 3.5}, {0.5, 6.5}), 8, 8);
   ASSERT_FALSE(got.empty());
   for (std::size_t i = 1; i < got.size(); ++i) {
-    const bool later = got[i].y > got[i - 1].y || (got[i].y == got[i - 1].y && got[i].x > got[i - 1].x);
+    const bool later =
+        got[i].y > got[i - 1].y || (got[i].y == got[i - 1].y && got[i].x > got[i - 1].x);
     EXPECT_TRUE(later) << got[i - 1] << " then " << got[i];
   }
 }
@@ -83,7 +86,7 @@ TEST(RasterWalkBbox, WalkEqualsTheRuleAtEveryCentreForTieHeavyTriangles) {
       {{{7.5, 0.5}, {7.5, 7.5}, {0.5, 7.5}}},        // the other half
       {{{3.5, 0.5}, {7.5, 4.5}, {3.5, 7.5}}},        // vertices on centres
       {{{0, 0}, {8, 1}, {1, 8}}},                    // corners
-      {{{2.25, 1.75}, {6.125, 3.5}, {0.75, 6.875}}},  // arbitrary quarter points
+      {{{2.25, 1.75}, {6.125, 3.5}, {0.75, 6.875}}}, // arbitrary quarter points
       {{{-3.5, 2.5}, {12.5, 2.5}, {4.5, 10.5}}},     // crossing the target
   };
   for (const auto& v : tris) {
@@ -101,20 +104,22 @@ TEST(RasterWalkBbox, WalkEqualsTheRuleAtEveryCentreForTieHeavyTriangles) {
 TEST(RasterWalkBbox, RenderSortsFragmentsByPrimThenYThenX) {
   // Three overlapping triangles, the last one first on the screen: output is still grouped
   // by primitive in scene order, each in (y, x) order, with mask 1.
-  const Scene s = scene_px(8, 8, RasterState{},
-                           {{{{4, 4}, {8, 4}, {4, 8}}}, {{{0, 0}, {8, 0}, {0, 8}}}, {{{0, 0}, {3, 0}, {0, 3}}}});
+  const Scene s = scene_px(
+      8, 8, RasterState{},
+      {{{{4, 4}, {8, 4}, {4, 8}}}, {{{0, 0}, {8, 0}, {0, 8}}}, {{{0, 0}, {3, 0}, {0, 3}}}});
   const auto r = render(s);
   ASSERT_TRUE(std::holds_alternative<std::vector<Fragment>>(r));
   const auto& f = std::get<std::vector<Fragment>>(r);
-  ASSERT_EQ(f.size(), 6u + 28u + 3u);  // 3+2+1, 7+6+...+1, 2+1
+  ASSERT_EQ(f.size(), 6u + 28u + 3u); // 3+2+1, 7+6+...+1, 2+1
   EXPECT_TRUE(std::is_sorted(f.begin(), f.end(), [](const Fragment& a, const Fragment& b) {
     return std::tie(a.prim, a.y, a.x) < std::tie(b.prim, b.y, b.x);
   }));
   EXPECT_EQ(f.front(), (Fragment{0, 4, 4, 1}));
   EXPECT_EQ(f.back(), (Fragment{2, 0, 1, 1}));
-  for (const Fragment& x : f) EXPECT_EQ(x.mask, 1u);
+  for (const Fragment& x : f)
+    EXPECT_EQ(x.mask, 1u);
   EXPECT_EQ(pixels_of(f, 2), (std::vector<Pixel>{{0, 0}, {1, 0}, {0, 1}}));
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

@@ -34,7 +34,7 @@ TEST(SnapCullAfterSnap, WindingThatFlipsBySnappingIsTheSnappedWinding) {
   const TriangleSetup none = triangle_px(v0, v1, v2);
   EXPECT_EQ(none.twice_area, 256);
   EXPECT_TRUE(none.clockwise);
-  EXPECT_TRUE(none.front_facing);  // front face clockwise (default)
+  EXPECT_TRUE(none.front_facing); // front face clockwise (default)
 
   RasterState back;
   back.cull = CullMode::kBack;
@@ -57,5 +57,5 @@ TEST(SnapCullAfterSnap, TheSnappedTriangleDecidesCoverageToo) {
   EXPECT_EQ(walk_pixels(t, 4, 4), (std::vector<Pixel>{{0, 0}, {1, 0}, {0, 1}}));
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

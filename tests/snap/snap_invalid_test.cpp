@@ -14,14 +14,16 @@ namespace rastrules::test {
 namespace {
 
 Scene three_triangles() {
-  return scene_px(16, 8, RasterState{},
-                  {{{{0, 0}, {4, 0}, {0, 4}}}, {{{4, 0}, {8, 0}, {4, 4}}}, {{{8, 0}, {12, 0}, {8, 4}}}});
+  return scene_px(
+      16, 8, RasterState{},
+      {{{{0, 0}, {4, 0}, {0, 4}}}, {{{4, 0}, {8, 0}, {4, 4}}}, {{{8, 0}, {12, 0}, {8, 4}}}});
 }
 
 // Returns the error of prepare(), or a SceneError with field "<none>" when it succeeded.
 SceneError error_of(const Scene& s) {
   const auto r = prepare(s);
-  if (const auto* e = std::get_if<SceneError>(&r)) return *e;
+  if (const auto* e = std::get_if<SceneError>(&r))
+    return *e;
   return SceneError{"<none>", "prepare succeeded"};
 }
 
@@ -45,13 +47,13 @@ TEST(SnapVertexInvalid, InfiniteAndOutOfRangeCoordinatesAreRejected) {
   EXPECT_EQ(error_of(s).message, "is infinite");
 
   s = three_triangles();
-  s.primitives[2].v[0][1] = 32767.998046875f;  // rounds to 2^23: out of range
+  s.primitives[2].v[0][1] = 32767.998046875f; // rounds to 2^23: out of range
   EXPECT_EQ(error_of(s).field, "primitives[2].v[0][1]");
   EXPECT_NE(error_of(s).message.find("outside the supported range"), std::string::npos)
       << error_of(s).message;
 
   s = three_triangles();
-  s.primitives[2].v[0][1] = 32767.99609375f;  // the largest value in range
+  s.primitives[2].v[0][1] = 32767.99609375f; // the largest value in range
   EXPECT_EQ(error_of(s).field, "<none>");
 }
 
@@ -98,5 +100,5 @@ TEST(KernelPrepare, AnEmptySceneIsValidAndDrawsNothing) {
   EXPECT_TRUE(std::get<std::vector<Fragment>>(r).empty());
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

@@ -24,7 +24,9 @@ std::int32_t raw_ok(float v) {
   return r.value.raw();
 }
 
-SnapStatus status_of(float v) { return snap_to_subpixel(v).status; }
+SnapStatus status_of(float v) {
+  return snap_to_subpixel(v).status;
+}
 
 // Every exponent that can reach the range (and the ones just beyond it), with a stride of
 // mantissas plus every bit pattern one step around each rounding tie, both signs, against a
@@ -48,7 +50,8 @@ TEST(SnapVertexRound, EqualsDoubleRoundingOverEveryExponentAndEveryTieNeighbourh
   for (std::uint32_t sign : {0u, 0x80000000u}) {
     for (std::uint32_t biased = 0; biased <= 145; ++biased) {
       const std::uint32_t e = sign | (biased << 23);
-      for (std::uint32_t m = 0; m <= 0x7FFFFFu; m += 997) check(e | m);
+      for (std::uint32_t m = 0; m <= 0x7FFFFFu; m += 997)
+        check(e | m);
       check(e | 0x7FFFFFu);
       // Ties: the bits below the rounding point equal one half (right = 142 - biased).
       const int right = biased == 0 ? 141 : 142 - static_cast<int>(biased);
@@ -56,7 +59,8 @@ TEST(SnapVertexRound, EqualsDoubleRoundingOverEveryExponentAndEveryTieNeighbourh
         const std::uint32_t half = 1u << (right - 1);
         for (std::uint32_t q = 0; q < (0x800000u >> right); q += 1 + (q / 64)) {
           const std::uint32_t m = (q << right) | half;
-          for (std::uint32_t d : {m - 1, m, m + 1}) check(e | (d & 0x7FFFFFu));
+          for (std::uint32_t d : {m - 1, m, m + 1})
+            check(e | (d & 0x7FFFFFu));
         }
       }
     }
@@ -71,7 +75,7 @@ TEST(SnapVertexFormat, SubpixelIsSigned16Dot8) {
   EXPECT_EQ(raw_ok(1.0f), 256);
   EXPECT_EQ(raw_ok(1.25f), 320);
   EXPECT_EQ(raw_ok(-3.5f), -896);
-  EXPECT_EQ(raw_ok(0.00390625f), 1);  // 2^-8 px, the grid step
+  EXPECT_EQ(raw_ok(0.00390625f), 1); // 2^-8 px, the grid step
   EXPECT_EQ(Subpixel::from_int(5).raw(), 1280);
 }
 
@@ -116,7 +120,7 @@ TEST(SnapVertexRound, TiesWhereTheFloatGridIsAsCoarseAsHalfASubpixel) {
   // In [2^14, 2^15) the float spacing is 2^-9 px, half a subpixel step: v * 256 is an
   // integer or an exact tie. 16384 + 2^-9 -> 2^22 + 0.5 -> 2^22 (even).
   EXPECT_EQ(raw_ok(16384.001953125f), 4194304);
-  EXPECT_EQ(raw_ok(16384.005859375f), 4194306);  // 2^22 + 1.5 -> 2^22 + 2
+  EXPECT_EQ(raw_ok(16384.005859375f), 4194306); // 2^22 + 1.5 -> 2^22 + 2
   EXPECT_EQ(raw_ok(-16384.001953125f), -4194304);
   EXPECT_EQ(raw_ok(-16384.005859375f), -4194306);
 }
@@ -130,22 +134,22 @@ TEST(SnapVertexRound, NegativeZeroSnapsToZero) {
 
 // rule: SNAP.VERTEX.ROUND
 TEST(SnapVertexRound, SubnormalsSnapToZero) {
-  const float smallest = std::numeric_limits<float>::denorm_min();  // 2^-149
+  const float smallest = std::numeric_limits<float>::denorm_min(); // 2^-149
   const float largest_subnormal = std::nextafter(std::numeric_limits<float>::min(), 0.0f);
   ASSERT_EQ(std::fpclassify(largest_subnormal), FP_SUBNORMAL);
   EXPECT_EQ(raw_ok(smallest), 0);
   EXPECT_EQ(raw_ok(-smallest), 0);
   EXPECT_EQ(raw_ok(largest_subnormal), 0);
   EXPECT_EQ(raw_ok(-largest_subnormal), 0);
-  EXPECT_EQ(raw_ok(std::numeric_limits<float>::min()), 0);  // smallest normal, 2^-126
+  EXPECT_EQ(raw_ok(std::numeric_limits<float>::min()), 0); // smallest normal, 2^-126
 }
 
 // rule: SNAP.VERTEX.RANGE
 TEST(SnapVertexRange, LimitsOfTheRangeAreInside) {
-  EXPECT_EQ(kMinVertexRaw, -8388608);  // -2^23
-  EXPECT_EQ(kMaxVertexRaw, 8388607);   // 2^23 - 1
+  EXPECT_EQ(kMinVertexRaw, -8388608); // -2^23
+  EXPECT_EQ(kMaxVertexRaw, 8388607);  // 2^23 - 1
   EXPECT_EQ(raw_ok(-32768.0f), -8388608);
-  EXPECT_EQ(raw_ok(32767.99609375f), 8388607);  // 2^15 - 2^-8
+  EXPECT_EQ(raw_ok(32767.99609375f), 8388607); // 2^15 - 2^-8
   EXPECT_EQ(raw_ok(32767.0f), 8388352);
   // 2^15 - 3 * 2^-9 = 32767.994140625 -> 2^23 - 1.5 -> tie -> 2^23 - 2 (even).
   EXPECT_EQ(raw_ok(32767.994140625f), 8388606);
@@ -157,7 +161,7 @@ TEST(SnapVertexRange, ValuesRoundingOutsideTheRangeAreRejected) {
   // goes to the even 2^23: one past the largest raw value.
   EXPECT_EQ(status_of(32767.998046875f), SnapStatus::kOutOfRange);
   EXPECT_EQ(status_of(32768.0f), SnapStatus::kOutOfRange);
-  EXPECT_EQ(status_of(-32768.00390625f), SnapStatus::kOutOfRange);  // -2^23 - 1 raw
+  EXPECT_EQ(status_of(-32768.00390625f), SnapStatus::kOutOfRange); // -2^23 - 1 raw
   EXPECT_EQ(status_of(1e10f), SnapStatus::kOutOfRange);
   EXPECT_EQ(status_of(std::numeric_limits<float>::max()), SnapStatus::kOutOfRange);
   EXPECT_EQ(status_of(std::numeric_limits<float>::lowest()), SnapStatus::kOutOfRange);
@@ -188,5 +192,5 @@ TEST(SnapVertexInvalid, NaNAndInfinitiesHaveTheirOwnStatus) {
   EXPECT_EQ(to_string(SnapStatus::kInfinite), "infinite");
 }
 
-}  // namespace
-}  // namespace rastrules
+} // namespace
+} // namespace rastrules

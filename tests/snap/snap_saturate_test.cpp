@@ -13,7 +13,9 @@
 namespace rastrules {
 namespace {
 
-std::int32_t sat(float v) { return snap_d3d_saturate(v).raw(); }
+std::int32_t sat(float v) {
+  return snap_d3d_saturate(v).raw();
+}
 
 // rule: SNAP.D3D.SATURATE
 TEST(SnapD3DSaturate, NaNGivesZero) {
@@ -24,8 +26,8 @@ TEST(SnapD3DSaturate, NaNGivesZero) {
 
 // rule: SNAP.D3D.SATURATE
 TEST(SnapD3DSaturate, InfinitiesGiveFixedMaxAndFixedMin) {
-  EXPECT_EQ(sat(std::numeric_limits<float>::infinity()), 8388607);    // FixedMax = 2^15 - 2^-8
-  EXPECT_EQ(sat(-std::numeric_limits<float>::infinity()), -8388608);  // FixedMin = -2^15
+  EXPECT_EQ(sat(std::numeric_limits<float>::infinity()), 8388607);   // FixedMax = 2^15 - 2^-8
+  EXPECT_EQ(sat(-std::numeric_limits<float>::infinity()), -8388608); // FixedMin = -2^15
 }
 
 // rule: SNAP.D3D.SATURATE
@@ -52,9 +54,9 @@ TEST(SnapD3DSaturate, LimitsAreKept) {
 TEST(SnapD3DSaturate, TinyValuesGiveZero) {
   EXPECT_EQ(sat(std::numeric_limits<float>::denorm_min()), 0);
   EXPECT_EQ(sat(-std::numeric_limits<float>::denorm_min()), 0);
-  EXPECT_EQ(sat(std::ldexp(1.0f, -10)), 0);   // below 2^-9: early exit
+  EXPECT_EQ(sat(std::ldexp(1.0f, -10)), 0); // below 2^-9: early exit
   EXPECT_EQ(sat(-std::ldexp(1.0f, -10)), 0);
-  EXPECT_EQ(sat(std::ldexp(1.0f, -9)), 0);    // exactly 2^-9: 0.5 raw, tie to even 0
+  EXPECT_EQ(sat(std::ldexp(1.0f, -9)), 0); // exactly 2^-9: 0.5 raw, tie to even 0
   EXPECT_EQ(sat(-0.0f), 0);
 }
 
@@ -72,5 +74,5 @@ TEST(SnapD3DSaturate, InRangeValuesRoundHalfToEven) {
   }
 }
 
-}  // namespace
-}  // namespace rastrules
+} // namespace
+} // namespace rastrules

@@ -39,9 +39,11 @@ Subpixel exact_subpixel(double v) {
   return Subpixel::from_raw(static_cast<std::int32_t>(scaled));
 }
 
-}  // namespace
+} // namespace
 
-Vec2 sample_px(double x, double y) { return Vec2{exact_subpixel(x), exact_subpixel(y)}; }
+Vec2 sample_px(double x, double y) {
+  return Vec2{exact_subpixel(x), exact_subpixel(y)};
+}
 
 TriangleSetup triangle_px(Px a, Px b, Px c, const RasterState& state) {
   const std::array<Vec2, 3> v{Vec2{snap_px(a.x), snap_px(a.y)}, Vec2{snap_px(b.x), snap_px(b.y)},
@@ -51,17 +53,18 @@ TriangleSetup triangle_px(Px a, Px b, Px c, const RasterState& state) {
 
 std::vector<Pixel> walk_pixels(const TriangleSetup& t, std::int32_t width, std::int32_t height) {
   std::vector<Pixel> out;
-  raster::walk_triangle(t, width, height,
-                        [&](std::int32_t x, std::int32_t y) { out.push_back(Pixel{x, y}); });
+  raster::walk_triangle(t, width, height, [&](std::int32_t x, std::int32_t y) {
+    out.push_back(Pixel{x, y});
+  });
   return out;
 }
 
-std::vector<Pixel> centre_pixels(const TriangleSetup& t, std::int32_t width,
-                                 std::int32_t height) {
+std::vector<Pixel> centre_pixels(const TriangleSetup& t, std::int32_t width, std::int32_t height) {
   std::vector<Pixel> out;
   for (std::int32_t y = 0; y < height; ++y) {
     for (std::int32_t x = 0; x < width; ++x) {
-      if (covers(t, pixel_center(x, y))) out.push_back(Pixel{x, y});
+      if (covers(t, pixel_center(x, y)))
+        out.push_back(Pixel{x, y});
     }
   }
   return out;
@@ -72,7 +75,8 @@ std::vector<Pixel> pixels_in_picture(std::initializer_list<std::string_view> row
   std::int32_t y = 0;
   for (const std::string_view row : rows) {
     for (std::size_t x = 0; x < row.size(); ++x) {
-      if (row[x] == mark) out.push_back(Pixel{static_cast<std::int32_t>(x), y});
+      if (row[x] == mark)
+        out.push_back(Pixel{static_cast<std::int32_t>(x), y});
     }
     ++y;
   }
@@ -109,9 +113,10 @@ Scene scene_px(std::int32_t width, std::int32_t height, const RasterState& state
 std::vector<Pixel> pixels_of(const std::vector<Fragment>& fragments, std::uint32_t prim) {
   std::vector<Pixel> out;
   for (const Fragment& f : fragments) {
-    if (f.prim == prim) out.push_back(Pixel{f.x, f.y});
+    if (f.prim == prim)
+      out.push_back(Pixel{f.x, f.y});
   }
   return out;
 }
 
-}  // namespace rastrules::test
+} // namespace rastrules::test

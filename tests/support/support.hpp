@@ -32,7 +32,8 @@ struct Pixel {
   std::int32_t y = 0;
   friend constexpr bool operator==(const Pixel&, const Pixel&) = default;
   friend constexpr std::strong_ordering operator<=>(const Pixel& a, const Pixel& b) {
-    if (const auto c = a.y <=> b.y; c != 0) return c;
+    if (const auto c = a.y <=> b.y; c != 0)
+      return c;
     return a.x <=> b.x;
   }
 };
@@ -82,4 +83,4 @@ inline constexpr FillConvention kAllConventions[] = {
     FillConvention::kTopLeft, FillConvention::kTopRight, FillConvention::kBottomLeft,
     FillConvention::kBottomRight};
 
-}  // namespace rastrules::test
+} // namespace rastrules::test

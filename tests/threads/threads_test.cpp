@@ -45,13 +45,16 @@ rastrules::Scene mixed_scene() {
   s.height = 24;
   for (int i = 0; i < 10; ++i) {
     const float o = static_cast<float>(i) * 2.0f;
-    s.primitives.push_back(prim(PrimitiveType::kTriangle, {{o, 0.5f}, {o + 7.25f, 3.0f}, {o + 1.5f, 12.5f}},
+    s.primitives.push_back(prim(PrimitiveType::kTriangle,
+                                {{o, 0.5f}, {o + 7.25f, 3.0f}, {o + 1.5f, 12.5f}},
                                 {static_cast<std::uint8_t>(20 * i), 10, 200, 255}));
     s.primitives.push_back(prim(PrimitiveType::kPoint, {{o + 0.5f, 20.5f}}));
     s.primitives.push_back(prim(PrimitiveType::kLine, {{0.5f, o + 0.75f}, {23.0f, 23.0f - o}}));
-    s.primitives.push_back(prim(PrimitiveType::kLineStrip, {{o, 23.0f}, {o + 3.5f, 14.0f}, {23.5f, o}}));
+    s.primitives.push_back(
+        prim(PrimitiveType::kLineStrip, {{o, 23.0f}, {o + 3.5f, 14.0f}, {23.5f, o}}));
   }
-  s.primitives.push_back(prim(PrimitiveType::kTriangle, {{-3.0f, -2.0f}, {30.0f, 1.0f}, {2.0f, 29.0f}}));
+  s.primitives.push_back(
+      prim(PrimitiveType::kTriangle, {{-3.0f, -2.0f}, {30.0f, 1.0f}, {2.0f, 29.0f}}));
   return s;
 }
 
@@ -67,7 +70,7 @@ rastrules::PreparedScene prepared(const rastrules::Scene& s) {
 void expect_same_for_every_thread_count(const rastrules::Scene& scene) {
   const rastrules::PreparedScene ps = prepared(scene);
   const std::vector<Fragment> single = rastrules::rasterize(ps);
-  ASSERT_GT(single.size(), 500u);  // enough work for every thread to take a unit
+  ASSERT_GT(single.size(), 500u); // enough work for every thread to take a unit
   for (const rastrules::Traversal t : {rastrules::Traversal::kPlain, rastrules::Traversal::kFast}) {
     RenderOptions one;
     one.traversal = t;
@@ -131,7 +134,8 @@ TEST(ThreadPool, RunsEveryUnitExactlyOnce) {
   for (const unsigned n : {0u, 1u, 2u, 3u, 8u, 64u, 1000u}) {
     std::vector<std::atomic<int>> runs(257);
     rastrules::run_units(runs.size(), n, [&](std::size_t i) { runs[i].fetch_add(1); });
-    for (std::size_t i = 0; i < runs.size(); ++i) EXPECT_EQ(runs[i].load(), 1) << "unit " << i << ", " << n << " threads";
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      EXPECT_EQ(runs[i].load(), 1) << "unit " << i << ", " << n << " threads";
   }
   rastrules::run_units(0, 8, [](std::size_t) { FAIL() << "no unit to run"; });
 }
@@ -145,7 +149,8 @@ TEST(ThreadPool, OneThreadRunsInlineInOrder) {
     order.push_back(i);
   });
   ASSERT_EQ(order.size(), 50u);
-  for (std::size_t i = 0; i < order.size(); ++i) EXPECT_EQ(order[i], i);
+  for (std::size_t i = 0; i < order.size(); ++i)
+    EXPECT_EQ(order[i], i);
   // One unit: no thread either, whatever is asked for.
   rastrules::run_units(1, 64, [&](std::size_t) { EXPECT_EQ(std::this_thread::get_id(), caller); });
 }
@@ -158,8 +163,10 @@ TEST(ThreadPool, SeveralThreadsAreUsed) {
   std::atomic<bool> met{false};
   rastrules::run_units(2, 2, [&](std::size_t) {
     arrived.fetch_add(1);
-    for (int spin = 0; spin < 2000000 && arrived.load() < 2; ++spin) std::this_thread::yield();
-    if (arrived.load() >= 2) met = true;
+    for (int spin = 0; spin < 2000000 && arrived.load() < 2; ++spin)
+      std::this_thread::yield();
+    if (arrived.load() >= 2)
+      met = true;
   });
   EXPECT_TRUE(met.load());
 }
@@ -171,13 +178,15 @@ TEST(ThreadPool, TheLowestFailingUnitsExceptionReachesTheCaller) {
     try {
       rastrules::run_units(runs.size(), n, [&](std::size_t i) {
         runs[i].fetch_add(1);
-        if (i == 37 || i == 150) throw std::runtime_error("unit " + std::to_string(i));
+        if (i == 37 || i == 150)
+          throw std::runtime_error("unit " + std::to_string(i));
       });
       ADD_FAILURE() << "no exception with " << n << " threads";
     } catch (const std::runtime_error& e) {
       EXPECT_EQ(std::string(e.what()), "unit 37") << n << " threads";
     }
-    for (std::size_t i = 0; i <= 37; ++i) EXPECT_EQ(runs[i].load(), 1) << "unit " << i << ", " << n << " threads";
+    for (std::size_t i = 0; i <= 37; ++i)
+      EXPECT_EQ(runs[i].load(), 1) << "unit " << i << ", " << n << " threads";
   }
 }
 
@@ -186,7 +195,8 @@ TEST(ThreadPool, OutOfMemoryInAWorkerReachesTheCaller) {
   for (const unsigned n : {1u, 4u}) {
     EXPECT_THROW(rastrules::run_units(16, n,
                                       [](std::size_t i) {
-                                        if (i == 9) throw std::bad_alloc();
+                                        if (i == 9)
+                                          throw std::bad_alloc();
                                       }),
                  std::bad_alloc)
         << n << " threads";
@@ -198,7 +208,7 @@ TEST(OrderedPool, ConsumesInOrderWithinTheWindowForEveryThreadCount) {
   for (const unsigned n : {1u, 2u, 3u, 8u, 64u}) {
     for (const std::size_t window : {std::size_t{1}, std::size_t{3}, std::size_t{32}}) {
       const std::size_t units = 300;
-      std::vector<std::size_t> slot(window, units);  // which unit each slot holds
+      std::vector<std::size_t> slot(window, units); // which unit each slot holds
       std::vector<std::atomic<int>> produced(units);
       std::atomic<std::size_t> consumed{0};
       std::atomic<bool> ahead_too_far{false};
@@ -206,7 +216,8 @@ TEST(OrderedPool, ConsumesInOrderWithinTheWindowForEveryThreadCount) {
       rastrules::run_ordered(
           units, n, window,
           [&](std::size_t i) {
-            if (i >= consumed.load() + window) ahead_too_far = true;
+            if (i >= consumed.load() + window)
+              ahead_too_far = true;
             produced[i].fetch_add(1);
             slot[i % window] = i;
           },
@@ -218,7 +229,8 @@ TEST(OrderedPool, ConsumesInOrderWithinTheWindowForEveryThreadCount) {
           });
       EXPECT_FALSE(ahead_too_far.load()) << n << " threads, window " << window;
       ASSERT_EQ(order.size(), units);
-      for (std::size_t i = 0; i < units; ++i) EXPECT_EQ(order[i], i);
+      for (std::size_t i = 0; i < units; ++i)
+        EXPECT_EQ(order[i], i);
     }
   }
 }
@@ -232,7 +244,8 @@ TEST(OrderedPool, TheFirstFailureInIndexOrderStopsItWhateverTheThreadCount) {
       rastrules::run_ordered(
           100, n, 8,
           [&](std::size_t i) {
-            if (i == 41 || i == 77) throw std::runtime_error("unit " + std::to_string(i));
+            if (i == 41 || i == 77)
+              throw std::runtime_error("unit " + std::to_string(i));
           },
           [&](std::size_t i) { order.push_back(i); });
       ADD_FAILURE() << "no exception with " << n << " threads";
@@ -246,7 +259,8 @@ TEST(OrderedPool, TheFirstFailureInIndexOrderStopsItWhateverTheThreadCount) {
                      100, n, 4, [](std::size_t) {},
                      [&](std::size_t i) {
                        last = i;
-                       if (i == 13) throw std::bad_alloc();
+                       if (i == 13)
+                         throw std::bad_alloc();
                      }),
                  std::bad_alloc)
         << n << " threads";
@@ -254,4 +268,4 @@ TEST(OrderedPool, TheFirstFailureInIndexOrderStopsItWhateverTheThreadCount) {
   }
 }
 
-}  // namespace
+} // namespace

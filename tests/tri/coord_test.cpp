@@ -65,13 +65,15 @@ TEST(TriInvarianceTranslation, WholePixelTranslationMovesCoverageExactly) {
     state.fill = f;
     auto moved = centre_pixels(triangle_px(a, b, c, state), 8, 8);
     ASSERT_FALSE(moved.empty());
-    for (Pixel& p : moved) p = Pixel{p.x + 3, p.y + 2};
-    EXPECT_EQ(centre_pixels(triangle_px({a.x + 3, a.y + 2}, {b.x + 3, b.y + 2}, {c.x + 3, c.y + 2}, state),
-                            8, 8),
-              moved)
+    for (Pixel& p : moved)
+      p = Pixel{p.x + 3, p.y + 2};
+    EXPECT_EQ(
+        centre_pixels(
+            triangle_px({a.x + 3, a.y + 2}, {b.x + 3, b.y + 2}, {c.x + 3, c.y + 2}, state), 8, 8),
+        moved)
         << "fill " << to_string(f);
   }
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

@@ -18,9 +18,12 @@ enum class Winding { kClockwise, kCounterClockwise, kZeroArea };
 
 TriangleSetup triangle_with(Winding w, const RasterState& state) {
   switch (w) {
-    case Winding::kClockwise: return triangle_px({0.5, 0.5}, {4.5, 0.5}, {0.5, 4.5}, state);
-    case Winding::kCounterClockwise: return triangle_px({0.5, 0.5}, {0.5, 4.5}, {4.5, 0.5}, state);
-    case Winding::kZeroArea: return triangle_px({0.5, 0.5}, {2.5, 2.5}, {4.5, 4.5}, state);
+  case Winding::kClockwise:
+    return triangle_px({0.5, 0.5}, {4.5, 0.5}, {0.5, 4.5}, state);
+  case Winding::kCounterClockwise:
+    return triangle_px({0.5, 0.5}, {0.5, 4.5}, {4.5, 0.5}, state);
+  case Winding::kZeroArea:
+    return triangle_px({0.5, 0.5}, {2.5, 2.5}, {4.5, 4.5}, state);
   }
   throw std::logic_error("winding");
 }
@@ -81,17 +84,19 @@ TEST_P(TriCullMode, FacingAndCullingFollowTheWindingAndTheState) {
   EXPECT_EQ(covered.size(), c.status == TriangleStatus::kRasterized ? 10u : 0u);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Table, TriCullMode, ::testing::ValuesIn(kCullCases),
-    [](const ::testing::TestParamInfo<CullCase>& param_info) {
-      const CullCase& c = param_info.param;
-      const char* w = c.winding == Winding::kClockwise          ? "Cw"
-                      : c.winding == Winding::kCounterClockwise ? "Ccw"
-                                                                : "ZeroArea";
-      const char* cull = c.cull == CullMode::kNone ? "None" : c.cull == CullMode::kBack ? "Back" : "Front";
-      const char* front = c.front == FrontFace::kClockwise ? "FrontCw" : "FrontCcw";
-      return std::string(w) + "Cull" + cull + front;
-    });
+INSTANTIATE_TEST_SUITE_P(Table, TriCullMode, ::testing::ValuesIn(kCullCases),
+                         [](const ::testing::TestParamInfo<CullCase>& param_info) {
+                           const CullCase& c = param_info.param;
+                           const char* w = c.winding == Winding::kClockwise          ? "Cw"
+                                           : c.winding == Winding::kCounterClockwise ? "Ccw"
+                                                                                     : "ZeroArea";
+                           const char* cull = c.cull == CullMode::kNone   ? "None"
+                                              : c.cull == CullMode::kBack ? "Back"
+                                                                          : "Front";
+                           const char* front =
+                               c.front == FrontFace::kClockwise ? "FrontCw" : "FrontCcw";
+                           return std::string(w) + "Cull" + cull + front;
+                         });
 
 // rule: TRI.CULL.MODE
 TEST(TriCullMode, SceneWithBothWindingsKeepsOnlyTheChosenOnes) {
@@ -99,13 +104,13 @@ TEST(TriCullMode, SceneWithBothWindingsKeepsOnlyTheChosenOnes) {
   const auto scene = [](CullMode cull) {
     RasterState state;
     state.cull = cull;
-    return scene_px(8, 4, state,
-                    {{{{0, 0}, {4, 0}, {0, 4}}}, {{{4, 0}, {4, 4}, {8, 0}}}});
+    return scene_px(8, 4, state, {{{{0, 0}, {4, 0}, {0, 4}}}, {{{4, 0}, {4, 4}, {8, 0}}}});
   };
   const auto prims = [](const std::variant<std::vector<Fragment>, SceneError>& r) {
     std::vector<std::uint32_t> out;
     for (const Fragment& f : std::get<std::vector<Fragment>>(r)) {
-      if (out.empty() || out.back() != f.prim) out.push_back(f.prim);
+      if (out.empty() || out.back() != f.prim)
+        out.push_back(f.prim);
     }
     return out;
   };
@@ -179,5 +184,5 @@ TEST(TriNeedle, LongNeedleBetweenRowsOfCentresCoversNothing) {
   EXPECT_EQ(triangle_px({0, 0.25}, {16, 0.25}, {16, 0.375}).status, TriangleStatus::kRasterized);
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

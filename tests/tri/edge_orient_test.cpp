@@ -13,7 +13,7 @@
 namespace rastrules::test {
 namespace {
 
-constexpr std::int64_t kPx2 = 65536;  // one square pixel in edge-value units
+constexpr std::int64_t kPx2 = 65536; // one square pixel in edge-value units
 
 // rule: TRI.EDGE.FUNCTION
 TEST(TriEdgeFunction, ValueIsTwiceTheSignedAreaInUnitsOf1Over65536SquarePixels) {
@@ -31,7 +31,7 @@ TEST(TriEdgeFunction, ValueIsTwiceTheSignedAreaInUnitsOf1Over65536SquarePixels) 
   e.a = sample_px(0, 0);
   e.b = sample_px(1, 0);
   EXPECT_EQ(e.value_at(sample_px(0, 0.00390625)).raw(), 256);
-  EXPECT_EQ(formula::edge_value<std::int64_t>(0, 0, 1, 0, 0, 1), 1);  // raw units throughout
+  EXPECT_EQ(formula::edge_value<std::int64_t>(0, 0, 1, 0, 0, 1), 1); // raw units throughout
 }
 
 // rule: TRI.EDGE.FUNCTION, COORD.PIXEL.ORIGIN
@@ -40,9 +40,9 @@ TEST(TriEdgeFunction, PositiveOnTheRightOfTheDirectionInYDownSpace) {
   EdgeSetup e;
   e.a = sample_px(0, 0);
   e.b = sample_px(4, 0);
-  EXPECT_GT(e.value_at(sample_px(2, 1)).raw(), 0);   // below the edge on screen
-  EXPECT_LT(e.value_at(sample_px(2, -1)).raw(), 0);  // above
-  EXPECT_EQ(e.value_at(sample_px(7, 0)).raw(), 0);   // on the line, beyond b
+  EXPECT_GT(e.value_at(sample_px(2, 1)).raw(), 0);  // below the edge on screen
+  EXPECT_LT(e.value_at(sample_px(2, -1)).raw(), 0); // above
+  EXPECT_EQ(e.value_at(sample_px(7, 0)).raw(), 0);  // on the line, beyond b
   // Reversing the direction negates the value.
   std::swap(e.a, e.b);
   EXPECT_EQ(e.value_at(sample_px(2, 1)).raw(), -4 * kPx2);
@@ -71,7 +71,7 @@ TEST(TriOrientArea, CollinearOrRepeatedVerticesGiveZero) {
 
 // rule: TRI.ORIENT.NORMALISE
 TEST(TriOrientNormalise, CounterClockwiseInputIsSwappedToClockwiseEdges) {
-  const TriangleSetup t = triangle_px({0, 0}, {0, 4}, {4, 0});  // counter-clockwise
+  const TriangleSetup t = triangle_px({0, 0}, {0, 4}, {4, 0}); // counter-clockwise
   ASSERT_EQ(t.status, TriangleStatus::kRasterized);
   // Edges (v0 v2), (v2 v1), (v1 v0) of the input: (0,0)->(4,0), (4,0)->(0,4), (0,4)->(0,0).
   EXPECT_EQ(t.edges[0].a, sample_px(0, 0));
@@ -83,7 +83,8 @@ TEST(TriOrientNormalise, CounterClockwiseInputIsSwappedToClockwiseEdges) {
   // The snapped vertices are kept as given.
   EXPECT_EQ(t.snapped[1], sample_px(0, 4));
   // Interior samples are positive on every normalised edge.
-  for (const EdgeSetup& e : t.edges) EXPECT_GT(e.value_at(sample_px(1, 1)).raw(), 0);
+  for (const EdgeSetup& e : t.edges)
+    EXPECT_GT(e.value_at(sample_px(1, 1)).raw(), 0);
 }
 
 // rule: TRI.ORIENT.NORMALISE, TRI.COVER.SAMPLE
@@ -103,5 +104,5 @@ TEST(TriOrientNormalise, AllSixVertexOrdersCoverTheSamePixels) {
   }
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

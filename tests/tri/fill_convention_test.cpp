@@ -20,7 +20,7 @@ namespace {
 // One sample on a triangle's boundary and whether it is inside under each convention.
 struct ConventionCase {
   const char* name;
-  std::array<Px, 3> tri;  // pixels, any winding
+  std::array<Px, 3> tri; // pixels, any winding
   Px sample;
   bool top_left, top_right, bottom_left, bottom_right;
 };
@@ -58,7 +58,9 @@ const ConventionCase kCases[] = {
 // clang-format on
 
 // Names the case in gtest output instead of dumping its bytes.
-void PrintTo(const ConventionCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const ConventionCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
 class TriFillConvention : public ::testing::TestWithParam<ConventionCase> {};
 
@@ -135,8 +137,8 @@ TEST(TriFillConventionSharedEdge, EveryGridPointOnASharedEdgeIsCoveredExactlyOnc
           const bool in_first = covers(first, s);
           const bool in_second = covers(second, s);
           ASSERT_NE(in_first, in_second)
-              << p.name << " fill " << to_string(state.fill) << " sample raw (" << s.x.raw()
-              << ", " << s.y.raw() << ")";
+              << p.name << " fill " << to_string(state.fill) << " sample raw (" << s.x.raw() << ", "
+              << s.y.raw() << ")";
           if (p.owner[k] >= 0) {
             EXPECT_EQ(in_second, p.owner[k] == 1) << p.name << " fill " << to_string(state.fill);
           }
@@ -162,11 +164,13 @@ TEST(TriFillConventionMirror, MirroringInXTurnsTopLeftIntoTopRight) {
   const auto mirror_x = [](Px p) { return Px{16 - p.x, p.y}; };
   const auto mirror_y = [](Px p) { return Px{p.x, 8 - p.y}; };
   const auto tl = centre_pixels(triangle_px(a, b, c), 16, 8);
-  const auto tr = centre_pixels(triangle_px(mirror_x(a), mirror_x(b), mirror_x(c), top_right), 16, 8);
-  const auto bl = centre_pixels(triangle_px(mirror_y(a), mirror_y(b), mirror_y(c), bottom_left), 16, 8);
-  const auto br = centre_pixels(
-      triangle_px(mirror_x(mirror_y(a)), mirror_x(mirror_y(b)), mirror_x(mirror_y(c)), bottom_right),
-      16, 8);
+  const auto tr =
+      centre_pixels(triangle_px(mirror_x(a), mirror_x(b), mirror_x(c), top_right), 16, 8);
+  const auto bl =
+      centre_pixels(triangle_px(mirror_y(a), mirror_y(b), mirror_y(c), bottom_left), 16, 8);
+  const auto br = centre_pixels(triangle_px(mirror_x(mirror_y(a)), mirror_x(mirror_y(b)),
+                                            mirror_x(mirror_y(c)), bottom_right),
+                                16, 8);
   EXPECT_EQ(tl, pixels_in_picture({
                     "######..........",
                     "#####...........",
@@ -179,8 +183,10 @@ TEST(TriFillConventionMirror, MirroringInXTurnsTopLeftIntoTopRight) {
                 }));
   const auto map = [](std::vector<Pixel> v, bool mx, bool my) {
     for (Pixel& p : v) {
-      if (mx) p.x = 15 - p.x;
-      if (my) p.y = 7 - p.y;
+      if (mx)
+        p.x = 15 - p.x;
+      if (my)
+        p.y = 7 - p.y;
     }
     std::sort(v.begin(), v.end());
     return v;
@@ -193,5 +199,5 @@ TEST(TriFillConventionMirror, MirroringInXTurnsTopLeftIntoTopRight) {
   EXPECT_NE(map(tr_as_tl, true, false), tl);
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

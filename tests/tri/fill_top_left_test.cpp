@@ -22,7 +22,9 @@ namespace {
 //         |   /
 //         | /
 //   (0,4) +
-TriangleSetup upper_left_half() { return triangle_px({0, 0}, {4, 0}, {0, 4}); }
+TriangleSetup upper_left_half() {
+  return triangle_px({0, 0}, {4, 0}, {0, 4});
+}
 
 // rule: TRI.FILL.TOP_EDGE
 TEST(TriFillTopEdge, HorizontalEdgeAboveTheThirdVertexIsTop) {
@@ -39,7 +41,8 @@ TEST(TriFillTopEdge, HorizontalEdgeBelowTheThirdVertexIsNotTop) {
   // Horizontal edge (0,4)-(4,4) with the third vertex (2,0) above it: a bottom edge.
   const TriangleSetup t = triangle_px({2, 0}, {4, 4}, {0, 4});
   ASSERT_EQ(t.status, TriangleStatus::kRasterized);
-  for (const EdgeSetup& e : t.edges) EXPECT_FALSE(e.is_top);
+  for (const EdgeSetup& e : t.edges)
+    EXPECT_FALSE(e.is_top);
 }
 
 // rule: TRI.FILL.TOP_EDGE
@@ -47,7 +50,8 @@ TEST(TriFillTopEdge, AlmostHorizontalEdgeIsNotTop) {
   // (0,0)-(4, 1/256): not exactly horizontal after snapping, so never a top edge.
   const TriangleSetup t = triangle_px({0, 0}, {4, 0.00390625}, {0, 4});
   ASSERT_EQ(t.status, TriangleStatus::kRasterized);
-  for (const EdgeSetup& e : t.edges) EXPECT_FALSE(e.is_top);
+  for (const EdgeSetup& e : t.edges)
+    EXPECT_FALSE(e.is_top);
   EXPECT_TRUE(t.edges[0].is_left || t.edges[1].is_left || t.edges[2].is_left);
 }
 
@@ -55,13 +59,13 @@ TEST(TriFillTopEdge, AlmostHorizontalEdgeIsNotTop) {
 TEST(TriFillLeftEdge, ATriangleCanHaveOneOrTwoLeftEdges) {
   const TriangleSetup one = upper_left_half();
   EXPECT_EQ(int{one.edges[0].is_left} + int{one.edges[1].is_left} + int{one.edges[2].is_left}, 1);
-  EXPECT_TRUE(one.edges[2].is_left);  // (0,4)->(0,0): interior on its +x side
+  EXPECT_TRUE(one.edges[2].is_left); // (0,4)->(0,0): interior on its +x side
   // Arrow pointing left: the left vertex (0,2) joins two left edges.
   const TriangleSetup two = triangle_px({4, 0}, {4, 4}, {0, 2});
   ASSERT_EQ(two.status, TriangleStatus::kRasterized);
-  EXPECT_FALSE(two.edges[0].is_left);  // (4,0)->(4,4): interior on its -x side (a right edge)
-  EXPECT_TRUE(two.edges[1].is_left);   // (4,4)->(0,2)
-  EXPECT_TRUE(two.edges[2].is_left);   // (0,2)->(4,0)
+  EXPECT_FALSE(two.edges[0].is_left); // (4,0)->(4,4): interior on its -x side (a right edge)
+  EXPECT_TRUE(two.edges[1].is_left);  // (4,4)->(0,2)
+  EXPECT_TRUE(two.edges[2].is_left);  // (0,2)->(4,0)
 }
 
 // rule: TRI.FILL.LEFT_EDGE, TRI.ORIENT.NORMALISE
@@ -85,9 +89,9 @@ TEST(TriFillLeftEdge, NearlyHorizontalEdgeBelowTheInteriorIsLeftWhenTheInteriorI
   // (8,1) -> (0,0) runs up the screen and the third vertex (8,0) is on its +x side: left.
   const TriangleSetup t = triangle_px({0, 0}, {8, 0}, {8, 1});
   ASSERT_EQ(t.status, TriangleStatus::kRasterized);
-  EXPECT_TRUE(t.edges[0].is_top);    // (0,0)->(8,0)
-  EXPECT_FALSE(t.edges[1].is_left);  // (8,0)->(8,1): right edge
-  EXPECT_TRUE(t.edges[2].is_left);   // (8,1)->(0,0)
+  EXPECT_TRUE(t.edges[0].is_top);   // (0,0)->(8,0)
+  EXPECT_FALSE(t.edges[1].is_left); // (8,0)->(8,1): right edge
+  EXPECT_TRUE(t.edges[2].is_left);  // (8,1)->(0,0)
 }
 
 // rule: TRI.FILL.TOP_LEFT
@@ -100,7 +104,7 @@ TEST(TriFillTopLeft, SampleOnBottomEdgeIsNotCovered) {
   // (0,4) -> (4,0) -> (4,4) is clockwise; (4,4)-(0,4) is a bottom edge.
   const TriangleSetup t = triangle_px({0, 4}, {4, 0}, {4, 4});
   EXPECT_FALSE(covers(t, sample_px(2.5, 4)));
-  EXPECT_TRUE(covers(t, sample_px(2.5, 3.99609375)));  // 1/256 px above it
+  EXPECT_TRUE(covers(t, sample_px(2.5, 3.99609375))); // 1/256 px above it
 }
 
 // rule: TRI.FILL.TOP_LEFT
@@ -111,9 +115,9 @@ TEST(TriFillTopLeft, SampleOnLeftEdgeIsCovered) {
 // rule: TRI.FILL.TOP_LEFT
 TEST(TriFillTopLeft, SampleOnRightEdgeIsNotCovered) {
   const TriangleSetup t = upper_left_half();
-  EXPECT_FALSE(covers(t, sample_px(2, 2)));                    // on the diagonal x + y = 4
-  EXPECT_TRUE(covers(t, sample_px(2, 1.99609375)));            // 1/256 px inside
-  EXPECT_FALSE(covers(t, sample_px(2.00390625, 2)));           // 1/256 px outside
+  EXPECT_FALSE(covers(t, sample_px(2, 2)));          // on the diagonal x + y = 4
+  EXPECT_TRUE(covers(t, sample_px(2, 1.99609375)));  // 1/256 px inside
+  EXPECT_FALSE(covers(t, sample_px(2.00390625, 2))); // 1/256 px outside
 }
 
 // rule: TRI.FILL.TOP_LEFT
@@ -193,5 +197,5 @@ TEST(TriFillTopLeft, TwoHalvesOfASquareShareTheirDiagonalExactlyOnce) {
                   }));
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

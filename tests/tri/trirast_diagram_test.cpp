@@ -32,9 +32,9 @@ namespace rastrules::test {
 namespace {
 
 struct DiagramTriangle {
-  char name;                 // the letter used in kExpected below
-  std::array<Px, 3> v;       // as read from the picture, in pixels
-  std::string_view where;    // how to find it in the picture
+  char name;              // the letter used in kExpected below
+  std::array<Px, 3> v;    // as read from the picture, in pixels
+  std::string_view where; // how to find it in the picture
 };
 
 // clang-format off
@@ -96,8 +96,8 @@ TEST(TriCoverSampleDiagram, EachTriangleCoversExactlyThePixelsShaded) {
     const DiagramTriangle& t = kDiagram[prim];
     const auto expected = pixels_in_picture(kExpected, t.name);
     const auto got = pixels_of(fragments, prim);
-    EXPECT_EQ(got, expected) << "triangle " << t.name << " (" << t.where << ")\nexpected:"
-                             << picture(expected, kWidth, kHeight)
+    EXPECT_EQ(got, expected) << "triangle " << t.name << " (" << t.where
+                             << ")\nexpected:" << picture(expected, kWidth, kHeight)
                              << "\ngot:" << picture(got, kWidth, kHeight);
   }
 }
@@ -116,7 +116,8 @@ TEST(TriCoverSampleDiagram, NoPixelIsCoveredTwiceAndTheCountMatchesThePicture) {
   const auto result = render(diagram_scene(false));
   ASSERT_TRUE(std::holds_alternative<std::vector<Fragment>>(result));
   std::vector<Pixel> all;
-  for (const Fragment& f : std::get<std::vector<Fragment>>(result)) all.push_back({f.x, f.y});
+  for (const Fragment& f : std::get<std::vector<Fragment>>(result))
+    all.push_back({f.x, f.y});
   std::sort(all.begin(), all.end());
   EXPECT_EQ(std::adjacent_find(all.begin(), all.end()), all.end());
   // 1 + 6 + 8 + 4 + 4 + 10 + 4 + 1 letters in kExpected.
@@ -128,7 +129,8 @@ TEST(TriCoverSampleDiagram, NoPixelIsCoveredTwiceAndTheCountMatchesThePicture) {
 TEST(TriCoverSampleDiagram, TheDiagramsTieBreaksOneByOne) {
   const auto tri = [](char name) {
     for (const DiagramTriangle& t : kDiagram) {
-      if (t.name == name) return triangle_px(t.v[0], t.v[1], t.v[2]);
+      if (t.name == name)
+        return triangle_px(t.v[0], t.v[1], t.v[2]);
     }
     throw std::logic_error("no such triangle");
   };
@@ -161,5 +163,5 @@ TEST(TriCoverSampleDiagram, TheDiagramsTieBreaksOneByOne) {
   EXPECT_TRUE(covers(tri('J'), sample_px(7.5, 5.5)));
 }
 
-}  // namespace
-}  // namespace rastrules::test
+} // namespace
+} // namespace rastrules::test

@@ -4,17 +4,17 @@
 // DIR/ladder.md, DIR/ladder.json and DIR/ladder.png and prints the table.
 // Implements: BENCH.REPORT, BENCH.LAVAPIPE (the call), BENCH.TARGETS (printed)
 
-#include <cstdio>
 #include <algorithm>
-#include <thread>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <system_error>
+#include <thread>
 
 #include "cli.hpp"
-#include "rastrules/parallel.hpp"
 #include "rastrules/bench/ladder.hpp"
 #include "rastrules/io/image.hpp"
+#include "rastrules/parallel.hpp"
 #ifdef RASTRULES_CLI_HAVE_LAVAPIPE_TIMING
 #include "rastrules/driver/timing.hpp"
 #endif
@@ -77,8 +77,8 @@ int run_bench(const Args& args) {
           i + 1 < args.size() ? std::optional<std::string>(args[++i]) : std::nullopt;
       const auto n = v ? parse_int(*v, 1, kMaxThreads) : std::nullopt;
       if (!n)
-        return error("--threads needs an integer in [1, " + std::to_string(kMaxThreads) + "], got " +
-                     (v ? "\"" + *v + "\"" : std::string("nothing")));
+        return error("--threads needs an integer in [1, " + std::to_string(kMaxThreads) +
+                     "], got " + (v ? "\"" + *v + "\"" : std::string("nothing")));
       config.threads = static_cast<unsigned>(*n);
     } else if (a == "--seed" || a == "--out") {
       if (i + 1 >= args.size())

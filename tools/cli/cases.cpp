@@ -18,8 +18,10 @@ int run_cases(const Args& args) {
       print_usage(stdout);
       return kExitOk;
     }
-    if (!a.empty() && a[0] == '-') return usage_error("cases: unexpected option \"" + a + "\"");
-    if (dir_given) return usage_error("cases: more than one directory");
+    if (!a.empty() && a[0] == '-')
+      return usage_error("cases: unexpected option \"" + a + "\"");
+    if (dir_given)
+      return usage_error("cases: more than one directory");
     dir = a;
     dir_given = true;
   }
@@ -27,14 +29,17 @@ int run_cases(const Args& args) {
   if (!std::filesystem::is_directory(dir, ec))
     return error(dir + ": not a directory (the catalog is spec/cases in the source tree)");
   const auto scenes = cases::catalog(dir);
-  if (scenes.empty()) return error(dir + ": no case (NAME.json with NAME.expect.json)");
+  if (scenes.empty())
+    return error(dir + ": no case (NAME.json with NAME.expect.json)");
   std::vector<cases::CaseReport> reports;
-  for (const auto& s : scenes) reports.push_back(cases::check_case(s));
+  for (const auto& s : scenes)
+    reports.push_back(cases::check_case(s));
   const std::string text = cases::format_report(reports);
   std::fputs(text.c_str(), stdout);
   for (const auto& r : reports)
-    if (!r.ok()) return kExitDifference;
+    if (!r.ok())
+      return kExitDifference;
   return kExitOk;
 }
 
-}  // namespace rastrules::cli
+} // namespace rastrules::cli

@@ -10,13 +10,16 @@ namespace rastrules::cli {
 
 int run_check(const Args& args) {
   auto o = parse_fuzz_options(args, true, false);
-  if (!o) return kExitBadInput;
+  if (!o)
+    return kExitBadInput;
   o->settings.cases = 1;
   o->settings.progress = false;
   auto loaded = load_scene(o->scene_path);
-  if (!loaded) return kExitBadInput;
+  if (!loaded)
+    return kExitBadInput;
   auto d = open_driver_or_report(o->settings.driver_name);
-  if (!d) return kExitBadInput;
+  if (!d)
+    return kExitBadInput;
   if (const std::string why = d->unsupported(loaded->scene); !why.empty()) {
     return error(o->settings.driver_name + " cannot draw this scene: " + why);
   }
@@ -24,4 +27,4 @@ int run_check(const Args& args) {
   return finish_campaign(*o, *d, s);
 }
 
-}  // namespace rastrules::cli
+} // namespace rastrules::cli

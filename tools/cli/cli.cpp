@@ -20,7 +20,8 @@ namespace rastrules::cli {
 int error(std::string_view message) {
   // One line, whatever the message holds.
   std::string line = "rastrules: error: ";
-  for (const char c : message) line += (c == '\n' || c == '\r') ? ' ' : c;
+  for (const char c : message)
+    line += (c == '\n' || c == '\r') ? ' ' : c;
   line += '\n';
   std::fputs(line.c_str(), stderr);
   return kExitBadInput;
@@ -97,7 +98,8 @@ void print_usage(std::FILE* out) {
       "  help\n"
       "      Show this text (also --help, -h).\n"
       "\n"
-      "exit status: 0 success, 1 a difference was found (showcase, fuzz, check, cases), 2 bad input\n"
+      "exit status: 0 success, 1 a difference was found (showcase, fuzz, check, cases), 2 bad "
+      "input\n"
       "or usage, or a driver failure.\n",
       out);
 }
@@ -112,7 +114,8 @@ namespace {
 // Reads a scene file's text and parses it with read (read_scene or read_any_scene); on failure
 // prints the one-line error (parse errors have no field: the file is named instead).
 template <class Read>
-auto read_and_parse(const std::string& path, Read read) -> std::optional<decltype(read(std::string()))> {
+auto read_and_parse(const std::string& path, Read read)
+    -> std::optional<decltype(read(std::string()))> {
   auto text = io::read_scene_file(path);
   if (auto* err = std::get_if<SceneError>(&text)) {
     error(err->what());
@@ -120,7 +123,8 @@ auto read_and_parse(const std::string& path, Read read) -> std::optional<decltyp
   }
   auto scene = read(std::get<std::string>(text));
   if (auto* err = std::get_if<SceneError>(&scene)) {
-    error(err->field.empty() ? (path == "-" ? "<stdin>" : path) + ": " + err->message : err->what());
+    error(err->field.empty() ? (path == "-" ? "<stdin>" : path) + ": " + err->message
+                             : err->what());
     return std::nullopt;
   }
   return scene;
@@ -138,15 +142,18 @@ std::optional<LoadedScene> prepare_loaded(Scene scene) {
   loaded.prepared = std::move(std::get<PreparedScene>(prepared));
   return loaded;
 }
-}  // namespace
+} // namespace
 
 // rule: SCENE.INPUT.ERRORS
 std::optional<std::variant<LoadedScene, pipe::PipeScene>> load_any_scene(const std::string& path) {
   auto scene = read_and_parse(path, [](const std::string& t) { return io::read_any_scene(t); });
-  if (!scene) return std::nullopt;
-  if (auto* p = std::get_if<pipe::PipeScene>(&*scene)) return std::move(*p);
+  if (!scene)
+    return std::nullopt;
+  if (auto* p = std::get_if<pipe::PipeScene>(&*scene))
+    return std::move(*p);
   auto loaded = prepare_loaded(std::move(std::get<Scene>(*scene)));
-  if (!loaded) return std::nullopt;
+  if (!loaded)
+    return std::nullopt;
   return std::move(*loaded);
 }
 
@@ -174,17 +181,22 @@ std::optional<pipe::PipeResult> run_pipeline_or_report(const pipe::PipeScene& sc
 // rule: SCENE.INPUT.ERRORS
 std::optional<LoadedScene> load_scene(const std::string& path) {
   auto scene = read_and_parse(path, [](const std::string& t) { return io::read_scene(t); });
-  if (!scene) return std::nullopt;
+  if (!scene)
+    return std::nullopt;
   return prepare_loaded(std::move(std::get<Scene>(*scene)));
 }
 
-OutputFile::~OutputFile() { discard(); }
+OutputFile::~OutputFile() {
+  discard();
+}
 
 void OutputFile::discard() {
-  if (is_stdout_ || file_ == nullptr) return;
+  if (is_stdout_ || file_ == nullptr)
+    return;
   std::fclose(file_);
   file_ = nullptr;
-  if (is_in_place_) return;
+  if (is_in_place_)
+    return;
   std::error_code ec;
   std::filesystem::remove(temp_path_, ec);
 }
@@ -203,25 +215,29 @@ std::optional<std::string> OutputFile::open(const std::string& path) {
   if (std::filesystem::exists(link) && !std::filesystem::is_regular_file(link)) {
     is_in_place_ = true;
     file_ = std::fopen(path.c_str(), "wb");
-    if (file_ == nullptr) return path + ": cannot open: " + std::strerror(errno);
+    if (file_ == nullptr)
+      return path + ": cannot open: " + std::strerror(errno);
     return std::nullopt;
   }
   temp_path_ = path + ".tmp-" + std::to_string(::getpid());
   file_ = std::fopen(temp_path_.c_str(), "wb");
-  if (file_ == nullptr) return path + ": cannot create: " + std::strerror(errno);
+  if (file_ == nullptr)
+    return path + ": cannot create: " + std::strerror(errno);
   return std::nullopt;
 }
 
 std::optional<std::string> OutputFile::commit() {
   if (is_stdout_) {
-    if (std::fflush(stdout) != 0) return std::string("<stdout>: write failed");
+    if (std::fflush(stdout) != 0)
+      return std::string("<stdout>: write failed");
     return std::nullopt;
   }
   const bool write_failed = std::ferror(file_) != 0;
   const bool close_failed = std::fclose(file_) != 0;
   file_ = nullptr;
   if (is_in_place_) {
-    if (write_failed || close_failed) return path_ + ": write failed";
+    if (write_failed || close_failed)
+      return path_ + ": write failed";
     return std::nullopt;
   }
   std::error_code ec;
@@ -241,24 +257,29 @@ std::optional<std::int64_t> parse_int(std::string_view text, std::int64_t lo, st
   std::int64_t v = 0;
   const char* last = text.data() + text.size();
   const auto r = std::from_chars(text.data(), last, v);
-  if (text.empty() || r.ec != std::errc{} || r.ptr != last || v < lo || v > hi) return std::nullopt;
+  if (text.empty() || r.ec != std::errc{} || r.ptr != last || v < lo || v > hi)
+    return std::nullopt;
   return v;
 }
 
 std::string fixed_decimal(std::int64_t raw, int frac_bits) {
   const bool negative = raw < 0;
-  const std::uint64_t mag = negative ? 0 - static_cast<std::uint64_t>(raw) : static_cast<std::uint64_t>(raw);
+  const std::uint64_t mag =
+      negative ? 0 - static_cast<std::uint64_t>(raw) : static_cast<std::uint64_t>(raw);
   const std::uint64_t whole = mag >> frac_bits;
   const std::uint64_t frac = mag & ((std::uint64_t{1} << frac_bits) - 1);
   std::string s = (negative ? "-" : "") + std::to_string(whole);
-  if (frac == 0) return s;
+  if (frac == 0)
+    return s;
   // frac / 2^k = frac * 5^k / 10^k; frac < 2^16 and 5^16 < 2^38, so no overflow.
   std::uint64_t pow5 = 1;
-  for (int i = 0; i < frac_bits; ++i) pow5 *= 5;
+  for (int i = 0; i < frac_bits; ++i)
+    pow5 *= 5;
   std::string digits = std::to_string(frac * pow5);
   digits.insert(0, static_cast<std::size_t>(frac_bits) - digits.size(), '0');
-  while (!digits.empty() && digits.back() == '0') digits.pop_back();
+  while (!digits.empty() && digits.back() == '0')
+    digits.pop_back();
   return s + "." + digits;
 }
 
-}  // namespace rastrules::cli
+} // namespace rastrules::cli

@@ -20,8 +20,8 @@ namespace rastrules::cli {
 
 // rule: SCENE.INPUT.ERRORS
 inline constexpr int kExitOk = 0;
-inline constexpr int kExitDifference = 1;  // a difference was found (showcase vs the oracle)
-inline constexpr int kExitBadInput = 2;    // bad input or usage
+inline constexpr int kExitDifference = 1; // a difference was found (showcase vs the oracle)
+inline constexpr int kExitBadInput = 2;   // bad input or usage
 
 using Args = std::vector<std::string>;
 
@@ -66,7 +66,7 @@ std::optional<pipe::PipeResult> run_pipeline_or_report(const pipe::PipeScene& sc
 // a failed run leaves no output file; "-" writes to standard output; an existing path that is
 // not a regular file (a device such as /dev/null, a pipe, a symbolic link) is written in place.
 class OutputFile {
- public:
+public:
   OutputFile() = default;
   OutputFile(const OutputFile&) = delete;
   OutputFile& operator=(const OutputFile&) = delete;
@@ -79,13 +79,13 @@ class OutputFile {
   // removes the temporary file).
   std::optional<std::string> commit();
 
- private:
+private:
   void discard();
   std::string path_;
   std::string temp_path_;
   std::FILE* file_ = nullptr;
   bool is_stdout_ = false;
-  bool is_in_place_ = false;  // not a regular file: written directly, never renamed
+  bool is_in_place_ = false; // not a regular file: written directly, never renamed
 };
 
 // Parses a decimal integer in [lo, hi]; nullopt when the text is anything else.
@@ -102,6 +102,7 @@ int run_fuzz(const Args& args);
 int run_check(const Args& args);
 int run_probe(const Args& args);
 int run_bench(const Args& args);
-int run_cases(const Args& args);  // cases.cpp: the hard-case catalog (PIPE.CATALOG)  // bench.cpp: the precision ladder (BENCH.REPORT)
+int run_cases(const Args& args); // cases.cpp: the hard-case catalog (PIPE.CATALOG)  // bench.cpp:
+                                 // the precision ladder (BENCH.REPORT)
 
-}  // namespace rastrules::cli
+} // namespace rastrules::cli

@@ -26,12 +26,12 @@ namespace rastrules::cli {
 namespace {
 
 struct EdgeReport {
-  int from = 0, to = 0;  // vertex indices as given in the scene
+  int from = 0, to = 0; // vertex indices as given in the scene
   Vec2 a, b;
-  std::int64_t e = 0;    // E at the sample, 1/65536 px^2
+  std::int64_t e = 0; // E at the sample, 1/65536 px^2
   bool top = false, left = false, horizontal = false, inclusive = false, inside = false;
-  std::string kind;      // "top", "bottom", "left", "right"
-  std::string decision;  // rule ID and reason
+  std::string kind;     // "top", "bottom", "left", "right"
+  std::string decision; // rule ID and reason
 };
 
 // One triangle's report: a triangle primitive, one half of a point, or one half of a
@@ -40,8 +40,8 @@ struct PrimitiveReport {
   std::size_t index = 0;
   Primitive input; // the triangle's own vertices (for a point or a quad line: its corners)
   TriangleSetup setup;
-  bool has_edges = false;    // false for degenerate triangles
-  bool culled = false;       // the edges are then shown for information only
+  bool has_edges = false; // false for degenerate triangles
+  bool culled = false;    // the edges are then shown for information only
   std::array<EdgeReport, 3> edges{};
   bool covered = false;
   bool inside_all_edges = false;
@@ -63,7 +63,7 @@ struct SampleReport {
   std::uint32_t index = 0;
   SampleOffset offset;
   Vec2 position;
-  std::vector<PrimitiveReport> tris;  // as Report::tris, at this sample
+  std::vector<PrimitiveReport> tris; // as Report::tris, at this sample
 };
 
 // The coverage of one segment (0 for triangles and points) of a multisampled primitive.
@@ -77,8 +77,8 @@ struct SegmentMask {
 
 // A multisampled primitive at the pixel.
 struct MsaaReport {
-  std::vector<SampleReport> samples;  // empty for lines drawn without triangles
-  bool whole_pixel = false;           // Bresenham lines: every sample of a produced pixel
+  std::vector<SampleReport> samples; // empty for lines drawn without triangles
+  bool whole_pixel = false;          // Bresenham lines: every sample of a produced pixel
   std::vector<SegmentMask> segments;
 };
 
@@ -94,36 +94,52 @@ struct Report {
   std::vector<std::uint32_t> tri_seg;
   std::vector<SegReport> segs;
   bool covered = false;
-  std::optional<MsaaReport> msaa;  // multisampled scenes only
+  std::optional<MsaaReport> msaa; // multisampled scenes only
 };
 
 // Whether explain reports samples: more than one sample, or a centroid asked for.
-bool multisampled(const PreparedScene& s) { return s.msaa.count() > 1 || s.msaa.has_centroid; }
+bool multisampled(const PreparedScene& s) {
+  return s.msaa.count() > 1 || s.msaa.has_centroid;
+}
 
 std::string mask_text(std::uint32_t m, std::uint32_t n) {
   std::string bits;
-  for (std::uint32_t k = n; k-- > 0;) bits += ((m >> k) & 1u) != 0 ? '1' : '0';
+  for (std::uint32_t k = n; k-- > 0;)
+    bits += ((m >> k) & 1u) != 0 ? '1' : '0';
   std::string list;
   for (std::uint32_t k = 0; k < n; ++k) {
-    if (((m >> k) & 1u) != 0) list += (list.empty() ? "" : ", ") + std::to_string(k);
+    if (((m >> k) & 1u) != 0)
+      list += (list.empty() ? "" : ", ") + std::to_string(k);
   }
-  return "0b" + bits + " (" + (list.empty() ? "no sample" : "sample" + std::string(list.find(',') == std::string::npos ? " " : "s ") + list) + ")";
+  return "0b" + bits + " (" +
+         (list.empty()
+              ? "no sample"
+              : "sample" + std::string(list.find(',') == std::string::npos ? " " : "s ") + list) +
+         ")";
 }
 
 std::string offset_text(SampleOffset o) {
   return "(" + std::to_string(o.x) + ", " + std::to_string(o.y) + ")/16";
 }
 
-std::string px(Subpixel v) { return fixed_decimal(v.raw(), kSubpixelBits); }
-std::string point_px(Vec2 v) { return "(" + px(v.x) + ", " + px(v.y) + ")"; }
+std::string px(Subpixel v) {
+  return fixed_decimal(v.raw(), kSubpixelBits);
+}
+std::string point_px(Vec2 v) {
+  return "(" + px(v.x) + ", " + px(v.y) + ")";
+}
 std::string point_raw(Vec2 v) {
   return "(" + std::to_string(v.x.raw()) + ", " + std::to_string(v.y.raw()) + ")";
 }
-std::string area_px2(std::int64_t raw) { return fixed_decimal(raw, 2 * kSubpixelBits); }
+std::string area_px2(std::int64_t raw) {
+  return fixed_decimal(raw, 2 * kSubpixelBits);
+}
 
 std::string edge_decision(const EdgeReport& e, FillConvention fill) {
-  if (e.e > 0) return "TRI.EDGE.FUNCTION: E > 0 -> inside";
-  if (e.e < 0) return "TRI.EDGE.FUNCTION: E < 0 -> outside";
+  if (e.e > 0)
+    return "TRI.EDGE.FUNCTION: E > 0 -> inside";
+  if (e.e < 0)
+    return "TRI.EDGE.FUNCTION: E < 0 -> outside";
   const std::string verdict = e.inclusive ? "inside" : "outside";
   if (fill == FillConvention::kTopLeft) {
     return "TRI.FILL.TOP_LEFT: E == 0 on a " + e.kind + " edge" +
@@ -154,8 +170,8 @@ PrimitiveReport explain_triangle(std::size_t index, const Primitive& input,
       setup.status == TriangleStatus::kRasterized ? setup : setup_triangle(setup.snapped, no_cull);
   r.has_edges = true;
   r.culled = setup.status != TriangleStatus::kRasterized;
-  const std::array<int, 3> order = setup.clockwise ? std::array<int, 3>{0, 1, 2}
-                                                   : std::array<int, 3>{0, 2, 1};
+  const std::array<int, 3> order =
+      setup.clockwise ? std::array<int, 3>{0, 1, 2} : std::array<int, 3>{0, 2, 1};
   r.inside_all_edges = true;
   for (std::size_t i = 0; i < 3; ++i) {
     const EdgeSetup& es = edges_of.edges[i];
@@ -185,15 +201,17 @@ PrimitiveReport explain_triangle(std::size_t index, const Primitive& input,
   }
   int on_edges = 0;
   for (const EdgeReport& e : r.edges) {
-    if (e.e == 0) ++on_edges;
+    if (e.e == 0)
+      ++on_edges;
     if (e.e == 0 || !e.inside) {
       r.decided_by.push_back("edge " + std::to_string(&e - r.edges.data()) + ": " + e.decision);
     }
   }
   if (on_edges == 2) {
-    r.decided_by.push_back(std::string(state.fill == FillConvention::kTopLeft ? "TRI.FILL.TOP_LEFT"
-                                                                              : "TRI.FILL.CONVENTION") +
-                           ": the centre is a vertex (on two edges): inside only if both edges are inclusive");
+    r.decided_by.push_back(
+        std::string(state.fill == FillConvention::kTopLeft ? "TRI.FILL.TOP_LEFT"
+                                                           : "TRI.FILL.CONVENTION") +
+        ": the centre is a vertex (on two edges): inside only if both edges are inclusive");
   }
   if (r.covered) {
     r.decided_by.push_back("TRI.COVER.SAMPLE: inside all three edges -> covered");
@@ -244,16 +262,16 @@ std::string triangle_text(const PrimitiveReport& r, const PreparedScene& s, cons
              " " + (e.inclusive ? "yes" : "no") + "  [TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE]\n";
       out += ind + "    " + std::string(e.inside ? "inside" : "outside") + ": " + e.decision + "\n";
     }
-    }
-    out += ind + "verdict: " + std::string(r.covered ? "covered" : "not covered") + "\n";
-    out += ind + "decided by:\n";
-    for (const std::string& d : r.decided_by)
-      out += ind + "  " + d + "\n";
-    if (r.culled) {
-      out += ind + std::string("  (without culling the centre would be ") +
-             (r.inside_all_edges ? "inside" : "outside") + ")\n";
-    }
-    return out;
+  }
+  out += ind + "verdict: " + std::string(r.covered ? "covered" : "not covered") + "\n";
+  out += ind + "decided by:\n";
+  for (const std::string& d : r.decided_by)
+    out += ind + "  " + d + "\n";
+  if (r.culled) {
+    out += ind + std::string("  (without culling the centre would be ") +
+           (r.inside_all_edges ? "inside" : "outside") + ")\n";
+  }
+  return out;
 }
 
 std::string fraction_q16(std::uint32_t q) {
@@ -361,7 +379,8 @@ MsaaReport explain_samples(const PreparedScene& s, const PreparedPrimitive& prim
   const std::uint32_t n = ms.count();
   auto segment = [&](std::uint32_t seg) -> SegmentMask& {
     for (SegmentMask& g : m.segments) {
-      if (g.seg == seg) return g;
+      if (g.seg == seg)
+        return g;
     }
     m.segments.push_back(SegmentMask{seg, 0, 0, 0, std::nullopt});
     return m.segments.back();
@@ -375,7 +394,8 @@ MsaaReport explain_samples(const PreparedScene& s, const PreparedPrimitive& prim
       for (std::size_t t = 0; t < prim.triangles.size(); ++t) {
         PrimitiveReport tr = explain_triangle(r.index, r.tris[t].input, prim.triangles[t].setup,
                                               s.state, sr.position);
-        if (tr.covered) segment(prim.triangles[t].seg).explained |= std::uint32_t{1} << k;
+        if (tr.covered)
+          segment(prim.triangles[t].seg).explained |= std::uint32_t{1} << k;
         sr.tris.push_back(std::move(tr));
       }
       m.samples.push_back(std::move(sr));
@@ -388,12 +408,14 @@ MsaaReport explain_samples(const PreparedScene& s, const PreparedPrimitive& prim
     m.whole_pixel = true;
     for (const SegReport& g : r.segs) {
       SegmentMask& sm = segment(g.seg);
-      if (g.covered) sm.coverage = sm.explained = full_mask(n);
+      if (g.covered)
+        sm.coverage = sm.explained = full_mask(n);
     }
   }
   for (SegmentMask& g : m.segments) {
     g.mask = g.coverage & ms.effective_mask();
-    if (ms.has_centroid) g.centroid = centroid(ms.centroid_rule, g.coverage, ms.sample_mask, ms.pattern);
+    if (ms.has_centroid)
+      g.centroid = centroid(ms.centroid_rule, g.coverage, ms.sample_mask, ms.pattern);
   }
   return m;
 }
@@ -446,7 +468,8 @@ Report explain_primitive(const LoadedScene& loaded, std::size_t p, std::int32_t 
     // A fragment exists when some sample in the mask is covered (MSAA.MASK.AND).
     r.msaa = explain_samples(s, prim, r, x, y);
     r.covered = false;
-    for (const SegmentMask& g : r.msaa->segments) r.covered = r.covered || g.mask != 0;
+    for (const SegmentMask& g : r.msaa->segments)
+      r.covered = r.covered || g.mask != 0;
   }
   return r;
 }
@@ -457,9 +480,12 @@ std::string centroid_rule_id(CentroidRule r) {
 
 std::string pattern_rule_id(PatternKind k) {
   switch (k) {
-    case PatternKind::kStandard: return "MSAA.PATTERN.STANDARD";
-    case PatternKind::kCenter: return "MSAA.PATTERN.CENTER";
-    case PatternKind::kCustom: return "MSAA.PATTERN.CUSTOM";
+  case PatternKind::kStandard:
+    return "MSAA.PATTERN.STANDARD";
+  case PatternKind::kCenter:
+    return "MSAA.PATTERN.CENTER";
+  case PatternKind::kCustom:
+    return "MSAA.PATTERN.CUSTOM";
   }
   return "MSAA.PATTERN.GRID";
 }
@@ -470,8 +496,8 @@ std::string msaa_text(const Report& r, const PreparedScene& s, std::int32_t x, s
   const MsaaReport& m = *r.msaa;
   const MultisampleState& ms = s.msaa;
   const std::uint32_t n = ms.count();
-  std::string out = "\nprimitive " + std::to_string(r.index) + ": " + std::string(to_string(r.type)) +
-                    (r.aa ? " (antialiased)" : "") + "\n";
+  std::string out = "\nprimitive " + std::to_string(r.index) + ": " +
+                    std::string(to_string(r.type)) + (r.aa ? " (antialiased)" : "") + "\n";
   out += "  vertices, input float32 -> snapped 16.8  [SNAP.VERTEX.ROUND]:\n";
   for (std::size_t i = 0; i < r.snapped.size(); ++i) {
     out += "    v" + std::to_string(i) + " (" + io::format_float(r.input.v[i][0]) + ", " +
@@ -488,13 +514,16 @@ std::string msaa_text(const Report& r, const PreparedScene& s, std::int32_t x, s
                                             : " (segment " + std::to_string(r.tri_seg[t]) + ")")
                                  : std::string("  triangle");
       out += name + ": twice signed area A = " + std::to_string(tr.setup.twice_area) + " raw, " +
-             (tr.setup.twice_area == 0 ? std::string("degenerate")
-                                       : std::string(tr.setup.clockwise ? "clockwise" : "counter-clockwise")) +
-             ", status " + std::string(to_string(tr.setup.status)) + "  [TRI.ORIENT.AREA, TRI.CULL.MODE]\n";
+             (tr.setup.twice_area == 0
+                  ? std::string("degenerate")
+                  : std::string(tr.setup.clockwise ? "clockwise" : "counter-clockwise")) +
+             ", status " + std::string(to_string(tr.setup.status)) +
+             "  [TRI.ORIENT.AREA, TRI.CULL.MODE]\n";
     }
   }
   out += "  " + std::to_string(n) + " sample" + (n == 1 ? "" : "s") + ", " +
-         std::string(to_string(ms.pattern.kind)) + " pattern  [" + pattern_rule_id(ms.pattern.kind) + "]\n";
+         std::string(to_string(ms.pattern.kind)) + " pattern  [" +
+         pattern_rule_id(ms.pattern.kind) + "]\n";
   if (m.whole_pixel) {
     out += "  a " + std::string(io::line_mode_name(s.line_mode)) +
            " line covers every sample of each pixel it produces  [MSAA.LINE.MODE]\n";
@@ -505,11 +534,13 @@ std::string msaa_text(const Report& r, const PreparedScene& s, std::int32_t x, s
   }
   for (const SampleReport& sr : m.samples) {
     out += "  sample " + std::to_string(sr.index) + " at " + offset_text(sr.offset) + " -> " +
-           point_px(sr.position) + " px = raw " + point_raw(sr.position) + "  [MSAA.SAMPLE.POSITION]\n";
+           point_px(sr.position) + " px = raw " + point_raw(sr.position) +
+           "  [MSAA.SAMPLE.POSITION]\n";
     for (std::size_t t = 0; t < sr.tris.size(); ++t) {
       const PrimitiveReport& tr = sr.tris[t];
       const std::string ind = several ? "      " : "    ";
-      if (several) out += "    triangle " + std::to_string(t) + ":\n";
+      if (several)
+        out += "    triangle " + std::to_string(t) + ":\n";
       if (!tr.has_edges) {
         out += ind + "degenerate: covers nothing  [TRI.DEGENERATE.ZERO_AREA]\n";
         continue;
@@ -517,10 +548,12 @@ std::string msaa_text(const Report& r, const PreparedScene& s, std::int32_t x, s
       for (std::size_t i = 0; i < 3; ++i) {
         const EdgeReport& e = tr.edges[i];
         out += ind + "edge " + std::to_string(i) + " v" + std::to_string(e.from) + "->v" +
-               std::to_string(e.to) + " (" + e.kind + "): E = " + std::to_string(e.e) + " raw = " +
-               area_px2(e.e) + " px^2 -> " + (e.inside ? "inside" : "outside") + ": " + e.decision + "\n";
+               std::to_string(e.to) + " (" + e.kind + "): E = " + std::to_string(e.e) +
+               " raw = " + area_px2(e.e) + " px^2 -> " + (e.inside ? "inside" : "outside") + ": " +
+               e.decision + "\n";
       }
-      if (tr.culled) out += ind + "culled: " + tr.decided_by.front() + "\n";
+      if (tr.culled)
+        out += ind + "culled: " + tr.decided_by.front() + "\n";
       out += ind + (tr.covered ? "covered" : "not covered") + "  [MSAA.COVER.SAMPLE]\n";
     }
   }
@@ -537,15 +570,18 @@ std::string msaa_text(const Report& r, const PreparedScene& s, std::int32_t x, s
     if (g.centroid) {
       const Centroid& c = *g.centroid;
       const Vec2 at = sample_position(x, y, c.offset);
-      out += seg + "centroid (" + std::string(to_string(ms.centroid_rule)) + "): " +
-             std::string(to_string(c.branch)) + " -> " + offset_text(c.offset) + " = " +
+      out += seg + "centroid (" + std::string(to_string(ms.centroid_rule)) +
+             "): " + std::string(to_string(c.branch)) + " -> " + offset_text(c.offset) + " = " +
              point_px(at) + " px  [" + centroid_rule_id(ms.centroid_rule) + "]" +
              (g.mask == 0 ? " (no fragment: the pixel is covered by no sample in the mask)" : "") +
              "\n";
     }
-    out += seg + "verdict: " + (g.mask != 0 ? "fragment, mask " + std::to_string(g.mask) : std::string("no fragment")) + "\n";
+    out += seg + "verdict: " +
+           (g.mask != 0 ? "fragment, mask " + std::to_string(g.mask) : std::string("no fragment")) +
+           "\n";
   }
-  if (m.segments.empty()) out += "  verdict: no fragment\n";
+  if (m.segments.empty())
+    out += "  verdict: no fragment\n";
   return out;
 }
 
@@ -576,7 +612,8 @@ void print_text(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
   for (const Report& report : reports) {
     if (report.msaa) {
       out += msaa_text(report, s, x, y);
-      if (report.covered) covering.push_back(report.index);
+      if (report.covered)
+        covering.push_back(report.index);
       continue;
     }
     if (report.type != PrimitiveType::kTriangle) {
@@ -588,14 +625,16 @@ void print_text(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
     const PrimitiveReport& r = report.tris[0];
     out += "\nprimitive " + std::to_string(r.index) + ": triangle\n";
     out += triangle_text(r, s, "  ");
-    if (r.covered) covering.push_back(r.index);
+    if (r.covered)
+      covering.push_back(r.index);
   }
   out += "\npixel (" + std::to_string(x) + ", " + std::to_string(y) + "): ";
   if (covering.empty()) {
     out += "covered by no primitive\n";
   } else {
     out += std::string("covered by primitive") + (covering.size() == 1 ? " " : "s ");
-    for (std::size_t i = 0; i < covering.size(); ++i) out += (i ? ", " : "") + std::to_string(covering[i]);
+    for (std::size_t i = 0; i < covering.size(); ++i)
+      out += (i ? ", " : "") + std::to_string(covering[i]);
     out += covering.size() > 1 ? " (overlap)\n" : "\n";
   }
   std::fputs(out.c_str(), stdout);
@@ -712,11 +751,17 @@ ojson msaa_json(const Report& r, const PreparedScene& s) {
       json edges = json::array();
       if (tr.has_edges) {
         for (const EdgeReport& e : tr.edges) {
-          edges.push_back({{"from", e.from}, {"to", e.to}, {"kind", e.kind}, {"e_raw", e.e},
-                           {"inclusive", e.inclusive}, {"inside", e.inside}, {"decision", e.decision}});
+          edges.push_back({{"from", e.from},
+                           {"to", e.to},
+                           {"kind", e.kind},
+                           {"e_raw", e.e},
+                           {"inclusive", e.inclusive},
+                           {"inside", e.inside},
+                           {"decision", e.decision}});
         }
       }
-      tris.push_back({{"status", to_string(tr.setup.status)}, {"edges", edges}, {"covered", tr.covered}});
+      tris.push_back(
+          {{"status", to_string(tr.setup.status)}, {"edges", edges}, {"covered", tr.covered}});
       covered = covered || tr.covered;
     }
     samples.push_back({{"sample", sr.index},
@@ -727,8 +772,11 @@ ojson msaa_json(const Report& r, const PreparedScene& s) {
   }
   json segs = json::array();
   for (const SegmentMask& g : m.segments) {
-    json j = {{"seg", g.seg}, {"coverage", g.coverage}, {"sample_mask", s.msaa.effective_mask()},
-              {"mask", g.mask}, {"fragment", g.mask != 0}};
+    json j = {{"seg", g.seg},
+              {"coverage", g.coverage},
+              {"sample_mask", s.msaa.effective_mask()},
+              {"mask", g.mask},
+              {"fragment", g.mask != 0}};
     if (g.centroid) {
       j["centroid"] = {{"rule", to_string(s.msaa.centroid_rule)},
                        {"branch", to_string(g.centroid->branch)},
@@ -738,7 +786,8 @@ ojson msaa_json(const Report& r, const PreparedScene& s) {
   }
   json out;
   out["samples"] = samples;
-  if (m.whole_pixel) out["every_sample_of_produced_pixels"] = true;
+  if (m.whole_pixel)
+    out["every_sample_of_produced_pixels"] = true;
   out["segments"] = segs;
   return out;
 }
@@ -762,7 +811,8 @@ void print_json(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
     doc["samples"] = s.msaa.count();
     doc["sample_pattern"] = to_string(s.msaa.pattern.kind);
     doc["sample_mask"] = s.msaa.effective_mask();
-    if (s.msaa.has_centroid) doc["centroid"] = to_string(s.msaa.centroid_rule);
+    if (s.msaa.has_centroid)
+      doc["centroid"] = to_string(s.msaa.centroid_rule);
   }
   for (const Report& r : reports) {
     ojson p = r.type == PrimitiveType::kTriangle ? triangle_json(r.tris[0]) : other_json(r);
@@ -771,7 +821,8 @@ void print_json(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
       p["msaa"] = msaa_json(r, s);
     }
     prims.push_back(p);
-    if (r.covered) covering.push_back(r.index);
+    if (r.covered)
+      covering.push_back(r.index);
   }
   doc["primitives"] = prims;
   doc["covered_by"] = covering;
@@ -792,24 +843,29 @@ int explain_pipeline(const pipe::PipeScene& scene, const pipe::PipeResult& resul
   std::vector<pipe::FragmentData> here_data;
   for (std::size_t i = 0; i < result.fragments.size(); ++i) {
     const Fragment& f = result.fragments[i];
-    if (f.x != x || f.y != y) continue;
+    if (f.x != x || f.y != y)
+      continue;
     here.push_back(f);
-    if (has_data) here_data.push_back(result.data[i]);
+    if (has_data)
+      here_data.push_back(result.data[i]);
   }
   std::vector<std::uint32_t> covering;
   for (std::size_t i = 0; i < here.size(); ++i) {
     const std::uint32_t passed = has_data ? here_data[i].passed : here[i].mask;
-    if (passed != 0 && (covering.empty() || covering.back() != here[i].prim)) covering.push_back(here[i].prim);
+    if (passed != 0 && (covering.empty() || covering.back() != here[i].prim))
+      covering.push_back(here[i].prim);
   }
   const io::PipeOutputFields fields = io::pipe_output_fields(scene);
   const std::uint32_t n = scene.base.msaa.count();
   const auto drawn_of = [&](std::size_t i) -> const pipe::DrawnPrimitive* {
-    if (!has_data || here_data[i].drawn >= result.drawn.size()) return nullptr;
+    if (!has_data || here_data[i].drawn >= result.drawn.size())
+      return nullptr;
     return &result.drawn[here_data[i].drawn];
   };
   if (as_json) {
     const std::optional<std::string> text = io::pipe_fragments_to_json(here, here_data, fields);
-    if (!text) return error("internal error: run_pipeline's fragments do not match the scene");
+    if (!text)
+      return error("internal error: run_pipeline's fragments do not match the scene");
     ojson doc;
     doc["target"] = {{"width", scene.base.width}, {"height", scene.base.height}};
     doc["pixel"] = {x, y};
@@ -822,11 +878,13 @@ int explain_pipeline(const pipe::PipeScene& scene, const pipe::PipeResult& resul
     doc["fragments"] = ojson::parse(*text)["fragments"];
     for (std::size_t i = 0; i < here.size(); ++i) {
       const pipe::DrawnPrimitive* d = drawn_of(i);
-      if (d == nullptr) continue;
+      if (d == nullptr)
+        continue;
       ojson snapped = ojson::array();
-      for (const Vec2& v : d->snapped) snapped.push_back(point_json(v));
-      doc["fragments"][i]["drawn"] = {{"type", to_string(d->type)}, {"snapped_raw", snapped},
-                                      {"z", d->z}, {"w", d->w}};
+      for (const Vec2& v : d->snapped)
+        snapped.push_back(point_json(v));
+      doc["fragments"][i]["drawn"] = {
+          {"type", to_string(d->type)}, {"snapped_raw", snapped}, {"z", d->z}, {"w", d->w}};
     }
     doc["covered_by"] = covering;
     std::fputs((doc.dump(2) + "\n").c_str(), stdout);
@@ -841,30 +899,34 @@ int explain_pipeline(const pipe::PipeScene& scene, const pipe::PipeResult& resul
     const Fragment& f = here[i];
     const pipe::FragmentData* data = has_data ? &here_data[i] : nullptr;
     out += "primitives[" + std::to_string(f.prim) + "]";
-    if (data != nullptr && data->part) out += " part " + std::to_string(*data->part);
-    if (f.seg) out += " seg " + std::to_string(*f.seg);
-    if (f.sample) out += " sample " + std::to_string(*f.sample);
+    if (data != nullptr && data->part)
+      out += " part " + std::to_string(*data->part);
+    if (f.seg)
+      out += " seg " + std::to_string(*f.seg);
+    if (f.sample)
+      out += " sample " + std::to_string(*f.sample);
     out += f.helper ? ": helper lane" : ": mask " + mask_text(f.mask, n);
     out += "\n";
     if (const pipe::DrawnPrimitive* d = drawn_of(i)) {
       std::string vs, zs, ws;
-      for (const Vec2& v : d->snapped) vs += (vs.empty() ? "" : ", ") + point_px(v);
+      for (const Vec2& v : d->snapped)
+        vs += (vs.empty() ? "" : ", ") + point_px(v);
       for (std::size_t k = 0; k < std::min<std::size_t>(d->snapped.size(), 3); ++k) {
         zs += (k == 0 ? "" : ", ") + io::format_float(d->z[k]);
         ws += (k == 0 ? "" : ", ") + io::format_float(d->w[k]);
       }
-      out += "  drawn " + std::string(to_string(d->type)) + ": snapped " + vs + ", window z [" + zs +
-             "], w [" + ws + "]\n";
+      out += "  drawn " + std::string(to_string(d->type)) + ": snapped " + vs + ", window z [" +
+             zs + "], w [" + ws + "]\n";
     }
-    if (data == nullptr) continue;
+    if (data == nullptr)
+      continue;
     if (data->bary) {
       const pipe::Barycentrics& b = *data->bary;
       const pipe::DrawnPrimitive* d = drawn_of(i);
       const bool triangle = d == nullptr || d->type == PrimitiveType::kTriangle;
-      out += std::string("  barycentrics (") + (triangle ? "PIPE.BARY.EXACT" : "PIPE.BARY.LINE") + "): e = [" +
-             std::to_string(b.e[0]) + ", " +
-             std::to_string(b.e[1]) + ", " + std::to_string(b.e[2]) + "], A = " +
-             std::to_string(b.area) + " (e0 + e1 + e2 = A)\n";
+      out += std::string("  barycentrics (") + (triangle ? "PIPE.BARY.EXACT" : "PIPE.BARY.LINE") +
+             "): e = [" + std::to_string(b.e[0]) + ", " + std::to_string(b.e[1]) + ", " +
+             std::to_string(b.e[2]) + "], A = " + std::to_string(b.area) + " (e0 + e1 + e2 = A)\n";
     }
     for (std::size_t k = 0; k < scene.attributes.size() && k < data->attr.size(); ++k) {
       const pipe::AttributeDecl& a = scene.attributes[k];
@@ -879,21 +941,23 @@ int explain_pipeline(const pipe::PipeScene& scene, const pipe::PipeResult& resul
         depths += (depths.empty() ? "" : ", ") + io::depth_text(d, scene.depth->format);
       }
       out += killed ? std::string("  killed: no sample passed the depth test (PIPE.DEPTH.KILL)")
-                    : "  depth [" + depths + "] (" + std::string(io::depth_format_name(scene.depth->format)) +
-                          "), passed " + mask_text(data->passed, n);
+                    : "  depth [" + depths + "] (" +
+                          std::string(io::depth_format_name(scene.depth->format)) + "), passed " +
+                          mask_text(data->passed, n);
       out += " (depth.func " + std::string(io::compare_func_name(scene.depth->func)) +
              ", PIPE.DEPTH.TEST)\n";
     }
   }
   std::string list;
-  for (const std::uint32_t p : covering) list += (list.empty() ? "" : ", ") + std::to_string(p);
+  for (const std::uint32_t p : covering)
+    list += (list.empty() ? "" : ", ") + std::to_string(p);
   out += "covered by: " + (list.empty() ? std::string("nothing") : "primitives " + list) +
          (scene.depth ? " (samples that passed the depth test)\n" : "\n");
   std::fputs(out.c_str(), stdout);
   return kExitOk;
 }
 
-}  // namespace
+} // namespace
 
 int run_explain(const Args& args) {
   std::optional<std::string> scene_path, pixel;
@@ -921,30 +985,37 @@ int run_explain(const Args& args) {
       scene_path = a;
     }
   }
-  if (!scene_path) return usage_error("explain: missing SCENE.json");
-  if (!pixel) return usage_error("explain: missing --pixel X,Y");
+  if (!scene_path)
+    return usage_error("explain: missing SCENE.json");
+  if (!pixel)
+    return usage_error("explain: missing --pixel X,Y");
   const std::size_t comma = pixel->find(',');
-  const auto px_x = comma == std::string::npos ? std::nullopt
-                                                : parse_int(pixel->substr(0, comma), 0, kMaxTargetSide - 1);
-  const auto px_y = comma == std::string::npos ? std::nullopt
-                                                : parse_int(pixel->substr(comma + 1), 0, kMaxTargetSide - 1);
+  const auto px_x = comma == std::string::npos
+                        ? std::nullopt
+                        : parse_int(pixel->substr(0, comma), 0, kMaxTargetSide - 1);
+  const auto px_y = comma == std::string::npos
+                        ? std::nullopt
+                        : parse_int(pixel->substr(comma + 1), 0, kMaxTargetSide - 1);
   if (!px_x || !px_y) {
-    return usage_error("--pixel needs two integers X,Y in [0, " + std::to_string(kMaxTargetSide - 1) + "]");
+    return usage_error("--pixel needs two integers X,Y in [0, " +
+                       std::to_string(kMaxTargetSide - 1) + "]");
   }
 
   const auto any = load_any_scene(*scene_path);
-  if (!any) return kExitBadInput;
+  if (!any)
+    return kExitBadInput;
   const auto x = static_cast<std::int32_t>(*px_x);
   const auto y = static_cast<std::int32_t>(*px_y);
   // rule: SCENE.OUTPUT.PIPELINE
   if (const auto* pipeline = std::get_if<pipe::PipeScene>(&*any)) {
-    const std::optional<pipe::PipeResult> result = run_pipeline_or_report(*pipeline, RenderOptions{},
-                                                                               io::kDefaultMaxFragments);
-    if (!result) return kExitBadInput;
+    const std::optional<pipe::PipeResult> result =
+        run_pipeline_or_report(*pipeline, RenderOptions{}, io::kDefaultMaxFragments);
+    if (!result)
+      return kExitBadInput;
     if (x >= pipeline->base.width || y >= pipeline->base.height) {
-      return error("--pixel: (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
-                   std::to_string(pipeline->base.width) + "x" + std::to_string(pipeline->base.height) +
-                   " target");
+      return error("--pixel: (" + std::to_string(x) + ", " + std::to_string(y) +
+                   ") is outside the " + std::to_string(pipeline->base.width) + "x" +
+                   std::to_string(pipeline->base.height) + " target");
     }
     return explain_pipeline(*pipeline, *result, x, y, as_json);
   }
@@ -952,8 +1023,8 @@ int run_explain(const Args& args) {
   // rule: SCENE.INPUT.ERRORS
   if (x >= loaded->prepared.width || y >= loaded->prepared.height) {
     return error("--pixel: (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
-                 std::to_string(loaded->prepared.width) + "x" + std::to_string(loaded->prepared.height) +
-                 " target");
+                 std::to_string(loaded->prepared.width) + "x" +
+                 std::to_string(loaded->prepared.height) + " target");
   }
   const Vec2 sample = pixel_center(x, y);
   std::vector<Report> reports;
@@ -969,4 +1040,4 @@ int run_explain(const Args& args) {
   return kExitOk;
 }
 
-}  // namespace rastrules::cli
+} // namespace rastrules::cli

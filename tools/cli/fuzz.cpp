@@ -13,7 +13,8 @@
 
 namespace rastrules::cli {
 
-std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene, bool allow_campaign) {
+std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
+                                              bool allow_campaign) {
   FuzzOptions o;
   o.settings.progress = ::isatty(2) != 0;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -27,11 +28,13 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
     };
     if (a == "--driver") {
       auto v = value("--driver");
-      if (!v) return std::nullopt;
+      if (!v)
+        return std::nullopt;
       o.settings.driver_name = *v;
     } else if (a == "--profile") {
       auto v = value("--profile");
-      if (!v) return std::nullopt;
+      if (!v)
+        return std::nullopt;
       auto p = fuzzer::parse_profile(*v);
       if (!p) {
         usage_error("--profile: unknown profile \"" + *v + "\" (d3d11, vulkan, opengl)");
@@ -40,7 +43,8 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
       o.settings.profile = *p;
     } else if (a == "--mode") {
       auto v = value("--mode");
-      if (!v) return std::nullopt;
+      if (!v)
+        return std::nullopt;
       auto m = fuzzer::parse_mode(*v);
       if (!m) {
         usage_error("--mode: unknown mode \"" + *v + "\" (exact, legal)");
@@ -49,14 +53,17 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
       o.settings.mode = *m;
     } else if (a == "--out") {
       auto v = value("--out");
-      if (!v) return std::nullopt;
+      if (!v)
+        return std::nullopt;
       o.settings.out_dir = *v;
     } else if (allow_campaign && (a == "--cases" || a == "--seed")) {
       auto v = value(a.c_str());
-      if (!v) return std::nullopt;
+      if (!v)
+        return std::nullopt;
       auto n = parse_int(*v, a == "--cases" ? 1 : 0, a == "--cases" ? 100000000 : INT64_MAX);
       if (!n) {
-        usage_error(a + ": must be an integer" + (a == "--cases" ? " in [1, 100000000]" : " >= 0") + ", got \"" + *v + "\"");
+        usage_error(a + ": must be an integer" + (a == "--cases" ? " in [1, 100000000]" : " >= 0") +
+                    ", got \"" + *v + "\"");
         return std::nullopt;
       }
       (a == "--cases" ? o.settings.cases : o.settings.seed) = static_cast<std::uint64_t>(*n);
@@ -83,17 +90,21 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
 std::unique_ptr<driver::Driver> open_driver_or_report(const std::string& name) {
   std::string err;
   auto d = driver::open_driver(name, &err);
-  if (!d) error("--driver: " + err);
+  if (!d)
+    error("--driver: " + err);
   return d;
 }
 
 int finish_campaign(const FuzzOptions& o, const driver::Driver& d, const fuzzer::Summary& s) {
-  if (!s.error.empty() && s.cases == 0) return error(s.error);
+  if (!s.error.empty() && s.cases == 0)
+    return error(s.error);
   fuzzer::print_summary(stdout, o.settings, d, s);
   std::fflush(stdout);
-  if (!s.error.empty()) return error(s.error);
+  if (!s.error.empty())
+    return error(s.error);
   if (s.mismatches != 0) {
-    std::printf("result      %llu difference(s) found\n", static_cast<unsigned long long>(s.mismatches));
+    std::printf("result      %llu difference(s) found\n",
+                static_cast<unsigned long long>(s.mismatches));
     return kExitDifference;
   }
   std::printf("result      no difference\n");
@@ -102,11 +113,13 @@ int finish_campaign(const FuzzOptions& o, const driver::Driver& d, const fuzzer:
 
 int run_fuzz(const Args& args) {
   auto o = parse_fuzz_options(args, false, true);
-  if (!o) return kExitBadInput;
+  if (!o)
+    return kExitBadInput;
   auto d = open_driver_or_report(o->settings.driver_name);
-  if (!d) return kExitBadInput;
+  if (!d)
+    return kExitBadInput;
   const fuzzer::Summary s = fuzzer::run_fuzz(*d, o->settings);
   return finish_campaign(*o, *d, s);
 }
 
-}  // namespace rastrules::cli
+} // namespace rastrules::cli

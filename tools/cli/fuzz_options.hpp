@@ -15,13 +15,14 @@ namespace rastrules::cli {
 
 struct FuzzOptions {
   fuzzer::Settings settings;
-  std::string scene_path;  // check only
+  std::string scene_path; // check only
 };
 
 // Parses --driver, --profile, --mode, --out, --no-progress, and --cases/--seed when
 // allow_campaign, and one scene path when want_scene. Prints the usage error and returns
 // nullopt on bad usage.
-std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene, bool allow_campaign);
+std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
+                                              bool allow_campaign);
 
 // Opens the driver, or prints "rastrules: error: --driver: REASON" and returns nullptr.
 std::unique_ptr<driver::Driver> open_driver_or_report(const std::string& name);
@@ -30,4 +31,4 @@ std::unique_ptr<driver::Driver> open_driver_or_report(const std::string& name);
 // an error).
 int finish_campaign(const FuzzOptions& o, const driver::Driver& d, const fuzzer::Summary& s);
 
-}  // namespace rastrules::cli
+} // namespace rastrules::cli

@@ -12,7 +12,8 @@
 int main(int argc, char** argv) {
   using namespace rastrules::cli;
   Args args(argv + 1, argv + argc);
-  if (args.empty()) return usage_error("missing command");
+  if (args.empty())
+    return usage_error("missing command");
   const std::string command = args.front();
   args.erase(args.begin());
   try {
@@ -20,14 +21,22 @@ int main(int argc, char** argv) {
       print_usage(stdout);
       return kExitOk;
     }
-    if (command == "render") return run_render(args);
-    if (command == "explain") return run_explain(args);
-    if (command == "showcase") return run_showcase(args);
-    if (command == "fuzz") return run_fuzz(args);
-    if (command == "check") return run_check(args);
-    if (command == "probe") return run_probe(args);
-    if (command == "bench") return run_bench(args);
-    if (command == "cases") return run_cases(args);
+    if (command == "render")
+      return run_render(args);
+    if (command == "explain")
+      return run_explain(args);
+    if (command == "showcase")
+      return run_showcase(args);
+    if (command == "fuzz")
+      return run_fuzz(args);
+    if (command == "check")
+      return run_check(args);
+    if (command == "probe")
+      return run_probe(args);
+    if (command == "bench")
+      return run_bench(args);
+    if (command == "cases")
+      return run_cases(args);
     return usage_error("unknown command \"" + command + "\"");
   } catch (const std::bad_alloc&) {
     return error("out of memory");

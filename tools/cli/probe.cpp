@@ -22,23 +22,28 @@ int run_probe(const Args& args) {
       return usage_error("unknown option \"" + args[i] + "\"");
     }
   }
-  if (name.empty()) return usage_error("--driver is required");
+  if (name.empty())
+    return usage_error("--driver is required");
   auto d = open_driver_or_report(name);
-  if (!d) return kExitBadInput;
+  if (!d)
+    return kExitBadInput;
   const fuzzer::ProbeReport r = fuzzer::probe(*d);
-  if (!r.error.empty()) return error("probe: " + r.error);
+  if (!r.error.empty())
+    return error("probe: " + r.error);
   const auto& info = d->info();
   std::printf("driver            %s (%s)\n", name.c_str(), info.description.c_str());
-  std::printf("fill convention   %s (on-edge samples inside: top %s, bottom %s, left %s, right %s)\n", r.fill.c_str(),
-              r.top ? "yes" : "no", r.bottom ? "yes" : "no", r.left ? "yes" : "no", r.right ? "yes" : "no");
+  std::printf(
+      "fill convention   %s (on-edge samples inside: top %s, bottom %s, left %s, right %s)\n",
+      r.fill.c_str(), r.top ? "yes" : "no", r.bottom ? "yes" : "no", r.left ? "yes" : "no",
+      r.right ? "yes" : "no");
   if (r.subpixel_bits >= 0) {
     std::printf("subpixel bits     %d (reported by the driver: %s)\n", r.subpixel_bits,
                 info.subpixel_bits >= 0 ? std::to_string(info.subpixel_bits).c_str() : "unknown");
   } else {
     std::printf("subpixel bits     not determined\n");
   }
-  std::printf("snapping          %s (an edge leaves the pixel centre %lld/4096 px away)\n", r.rounding.c_str(),
-              static_cast<long long>(r.threshold_4096));
+  std::printf("snapping          %s (an edge leaves the pixel centre %lld/4096 px away)\n",
+              r.rounding.c_str(), static_cast<long long>(r.threshold_4096));
   std::printf("line mode         %s\n", r.line_mode.c_str());
   std::printf("point rule        %s\n", r.point_rule.c_str());
   if (r.samples_4x.empty()) {
@@ -46,11 +51,13 @@ int run_probe(const Args& args) {
   } else {
     std::string list;
     for (const SampleOffset& o : r.samples_4x) {
-      list += (list.empty() ? "" : " ") + std::string("(") + std::to_string(o.x) + "," + std::to_string(o.y) + ")";
+      list += (list.empty() ? "" : " ") + std::string("(") + std::to_string(o.x) + "," +
+              std::to_string(o.y) + ")";
     }
-    std::printf("4x samples        %s in 1/16 px from the centre: %s\n", list.c_str(), r.samples_note.c_str());
+    std::printf("4x samples        %s in 1/16 px from the centre: %s\n", list.c_str(),
+                r.samples_note.c_str());
   }
   return kExitOk;
 }
 
-}  // namespace rastrules::cli
+} // namespace rastrules::cli

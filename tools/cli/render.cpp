@@ -9,10 +9,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <system_error>
 #include <memory>
 #include <optional>
 #include <string>
+#include <system_error>
 #include <variant>
 #include <vector>
 
@@ -38,11 +38,13 @@ struct Output {
 std::optional<std::string> commit_outputs(const std::vector<Output>& outputs) {
   std::vector<std::string> committed;
   for (const Output& o : outputs) {
-    if (!*o.path) continue;
+    if (!*o.path)
+      continue;
     if (auto err = o.file->commit()) {
       std::error_code ec;
       for (const std::string& done : committed) {
-        if (done != "-" && std::filesystem::is_regular_file(std::filesystem::symlink_status(done, ec))) {
+        if (done != "-" &&
+            std::filesystem::is_regular_file(std::filesystem::symlink_status(done, ec))) {
           std::filesystem::remove(done, ec);
         }
       }
@@ -54,10 +56,12 @@ std::optional<std::string> commit_outputs(const std::vector<Output>& outputs) {
 }
 
 // "render: N primitives, M fragments -> a, b" on standard output (unless an output is there).
-void print_summary(std::size_t primitives, std::uint64_t fragments, const std::vector<Output>& outputs) {
+void print_summary(std::size_t primitives, std::uint64_t fragments,
+                   const std::vector<Output>& outputs) {
   std::string names;
   for (const Output& o : outputs) {
-    if (*o.path) names += (names.empty() ? " -> " : ", ") + **o.path;
+    if (*o.path)
+      names += (names.empty() ? " -> " : ", ") + **o.path;
   }
   std::printf("render: %zu primitives, %llu fragments%s\n", primitives,
               static_cast<unsigned long long>(fragments), names.c_str());
@@ -65,12 +69,14 @@ void print_summary(std::size_t primitives, std::uint64_t fragments, const std::v
 
 // rule: MSAA.LIMITS
 // The resolve's sample buffer is checked before any work; resolve() checks it again.
-std::optional<std::string> resolve_too_large(std::int32_t width, std::int32_t height, std::uint32_t n) {
+std::optional<std::string> resolve_too_large(std::int32_t width, std::int32_t height,
+                                             std::uint32_t n) {
   const std::int64_t samples = std::int64_t{width} * height * n;
-  if (samples <= kMaxResolveSamples) return std::nullopt;
-  return "--resolve: the " + std::to_string(width) + "x" + std::to_string(height) + " target with " +
-         std::to_string(n) + " samples has " + std::to_string(samples) + " samples, more than " +
-         std::to_string(kMaxResolveSamples) + " (limit MSAA.LIMITS)";
+  if (samples <= kMaxResolveSamples)
+    return std::nullopt;
+  return "--resolve: the " + std::to_string(width) + "x" + std::to_string(height) +
+         " target with " + std::to_string(n) + " samples has " + std::to_string(samples) +
+         " samples, more than " + std::to_string(kMaxResolveSamples) + " (limit MSAA.LIMITS)";
 }
 
 // Returns the picture's magnification (--scale, or the default for the target), or the error
@@ -78,23 +84,28 @@ std::optional<std::string> resolve_too_large(std::int32_t width, std::int32_t he
 std::variant<int, std::string> picture_scale_for(std::int32_t width, std::int32_t height,
                                                  std::optional<int> scale) {
   const int s = scale ? *scale : io::default_picture_scale(width, height);
-  if (io::picture_fits(width, height, s)) return s;
-  return "--png: a picture of the " + std::to_string(width) + "x" + std::to_string(height) + " target" +
-         (scale ? " at --scale " + std::to_string(*scale) : std::string()) + " would be larger than " +
-         std::to_string(io::kMaxPictureSide) + " pixels a side";
+  if (io::picture_fits(width, height, s))
+    return s;
+  return "--png: a picture of the " + std::to_string(width) + "x" + std::to_string(height) +
+         " target" + (scale ? " at --scale " + std::to_string(*scale) : std::string()) +
+         " would be larger than " + std::to_string(io::kMaxPictureSide) + " pixels a side";
 }
 
 // rule: MSAA.RESOLVE.AVERAGE
 // Resolves the fragments' samples and writes the RGBA PNG; returns the error, if any.
-std::optional<std::string> write_resolved(const PreparedScene& scene, const std::vector<Fragment>& fragments,
-                                          std::FILE* out, const std::string& path) {
+std::optional<std::string> write_resolved(const PreparedScene& scene,
+                                          const std::vector<Fragment>& fragments, std::FILE* out,
+                                          const std::string& path) {
   const auto resolved = resolve(scene, fragments);
-  if (const auto* err = std::get_if<SceneError>(&resolved)) return "--resolve: " + err->what();
+  if (const auto* err = std::get_if<SceneError>(&resolved))
+    return "--resolve: " + err->what();
   const ResolvedImage& r = std::get<ResolvedImage>(resolved);
   std::vector<std::uint8_t> rgba;
   rgba.reserve(r.pixels.size() * 4);
-  for (const Rgba8& px : r.pixels) rgba.insert(rgba.end(), px.begin(), px.end());
-  if (auto err = io::write_png_rgba(out, r.width, r.height, rgba)) return path + ": " + *err;
+  for (const Rgba8& px : r.pixels)
+    rgba.insert(rgba.end(), px.begin(), px.end());
+  if (auto err = io::write_png_rgba(out, r.width, r.height, rgba))
+    return path + ": " + *err;
   return std::nullopt;
 }
 
@@ -112,9 +123,12 @@ struct RenderRequest {
 // Returns the stored depth as a value in [0, 1] (d16 and d24: the UNORM value over 2^n - 1).
 double depth_01(const pipe::DepthValue& d, pipe::DepthFormat f) {
   switch (f) {
-    case pipe::DepthFormat::kD16: return static_cast<double>(d.unorm) / 65535.0;
-    case pipe::DepthFormat::kD24: return static_cast<double>(d.unorm) / 16777215.0;
-    case pipe::DepthFormat::kD32F: return static_cast<double>(d.f);
+  case pipe::DepthFormat::kD16:
+    return static_cast<double>(d.unorm) / 65535.0;
+  case pipe::DepthFormat::kD24:
+    return static_cast<double>(d.unorm) / 16777215.0;
+  case pipe::DepthFormat::kD32F:
+    return static_cast<double>(d.f);
   }
   return 0.0;
 }
@@ -130,14 +144,16 @@ int render_pipeline(const pipe::PipeScene& scene, const RenderRequest& rq) {
                  ": the scene has no \"depth\" (SCENE.PIPELINE)");
   }
   if (rq.resolve_path) {
-    if (auto err = resolve_too_large(base.width, base.height, base.msaa.count())) return error(*err);
+    if (auto err = resolve_too_large(base.width, base.height, base.msaa.count()))
+      return error(*err);
   }
   // rule: SCENE.INPUT.LIMITS
   // run_pipeline stops at the first fragment beyond the limit (and at a primitive that would
   // hold more than it to sort them); its list is checked again here.
-  const std::optional<pipe::PipeResult> result = run_pipeline_or_report(scene, rq.options, rq.max_fragments,
-                                                                                rq.pipeline_plain);
-  if (!result) return kExitBadInput;
+  const std::optional<pipe::PipeResult> result =
+      run_pipeline_or_report(scene, rq.options, rq.max_fragments, rq.pipeline_plain);
+  if (!result)
+    return kExitBadInput;
   if (result->fragments.size() > rq.max_fragments) {
     return error("render: more than " + std::to_string(rq.max_fragments) +
                  " fragments (limit SCENE.INPUT.LIMITS); raise it with --max-fragments N");
@@ -147,13 +163,15 @@ int render_pipeline(const pipe::PipeScene& scene, const RenderRequest& rq) {
   Scene target = base;
   target.primitives.clear();
   auto prepared_or_error = prepare(target);
-  if (auto* err = std::get_if<SceneError>(&prepared_or_error)) return error(err->what());
+  if (auto* err = std::get_if<SceneError>(&prepared_or_error))
+    return error(err->what());
   PreparedScene& prepared = std::get<PreparedScene>(prepared_or_error);
 
   int picture_scale = 0;
   if (rq.png_path) {
     const auto s = picture_scale_for(base.width, base.height, rq.scale);
-    if (const auto* err = std::get_if<std::string>(&s)) return error(*err);
+    if (const auto* err = std::get_if<std::string>(&s))
+      return error(*err);
     picture_scale = std::get<int>(s);
   }
   OutputFile fragments_file, png_file, resolve_file, depth_file;
@@ -162,8 +180,10 @@ int render_pipeline(const pipe::PipeScene& scene, const RenderRequest& rq) {
                                        {&resolve_file, &rq.resolve_path},
                                        {&depth_file, &rq.depth_out_path}};
   for (const Output& o : outputs) {
-    if (!*o.path) continue;
-    if (auto err = o.file->open(**o.path)) return error(*err);
+    if (!*o.path)
+      continue;
+    if (auto err = o.file->open(**o.path))
+      return error(*err);
   }
   const std::vector<Fragment>& fragments = result->fragments;
   // data is empty when the scene has no clip space, depth or attributes, else one per fragment.
@@ -181,7 +201,8 @@ int render_pipeline(const pipe::PipeScene& scene, const RenderRequest& rq) {
                      "covered sample");
       }
     }
-    if (!writer.finish()) return error(*rq.fragments_path + ": write failed");
+    if (!writer.finish())
+      return error(*rq.fragments_path + ": write failed");
   }
   const std::uint32_t samples = base.msaa.count();
   if (rq.png_path) {
@@ -189,39 +210,49 @@ int render_pipeline(const pipe::PipeScene& scene, const RenderRequest& rq) {
     if (rq.png_depth) {
       std::vector<double> depth01;
       depth01.reserve(result->depth_buffer.size());
-      for (const pipe::DepthValue& d : result->depth_buffer) depth01.push_back(depth_01(d, scene.depth->format));
-      image.emplace(io::draw_depth_picture(base.width, base.height, samples, depth01, picture_scale));
+      for (const pipe::DepthValue& d : result->depth_buffer)
+        depth01.push_back(depth_01(d, scene.depth->format));
+      image.emplace(
+          io::draw_depth_picture(base.width, base.height, samples, depth01, picture_scale));
     } else {
       io::CoverageMap coverage(base.width, base.height);
-      if (io::samples_visible(prepared, picture_scale)) coverage.record_samples(samples);
-      for (const Fragment& f : fragments) coverage.add_fragment(f);
+      if (io::samples_visible(prepared, picture_scale))
+        coverage.record_samples(samples);
+      for (const Fragment& f : fragments)
+        coverage.add_fragment(f);
       image.emplace(io::draw_picture(prepared, coverage, picture_scale));
     }
-    if (auto err = io::write_png(png_file.get(), *image)) return error(*rq.png_path + ": " + *err);
+    if (auto err = io::write_png(png_file.get(), *image))
+      return error(*rq.png_path + ": " + *err);
   }
   // rule: MSAA.RESOLVE.AVERAGE, PIPE.DEPTH.TEST
   // Only the samples that passed the depth test write their primitive's colour.
   if (rq.resolve_path) {
     prepared.primitives.resize(scene.primitives.size());
-    for (std::size_t p = 0; p < scene.primitives.size(); ++p) prepared.primitives[p].color = scene.primitives[p].base.color;
+    for (std::size_t p = 0; p < scene.primitives.size(); ++p)
+      prepared.primitives[p].color = scene.primitives[p].base.color;
     std::vector<Fragment> written = fragments;
     if (!data.empty()) {
-      for (std::size_t i = 0; i < written.size(); ++i) written[i].mask = data[i].passed;
+      for (std::size_t i = 0; i < written.size(); ++i)
+        written[i].mask = data[i].passed;
     }
-    if (auto err = write_resolved(prepared, written, resolve_file.get(), *rq.resolve_path)) return error(*err);
+    if (auto err = write_resolved(prepared, written, resolve_file.get(), *rq.resolve_path))
+      return error(*err);
   }
   if (rq.depth_out_path &&
-      !io::write_depth_buffer(depth_file.get(), base.width, base.height, samples, scene.depth->format,
-                              result->depth_buffer)) {
+      !io::write_depth_buffer(depth_file.get(), base.width, base.height, samples,
+                              scene.depth->format, result->depth_buffer)) {
     return error(*rq.depth_out_path + ": write failed (or run_pipeline's depth buffer is not "
-                 "width x height x samples)");
+                                      "width x height x samples)");
   }
-  if (auto err = commit_outputs(outputs)) return error(*err);
-  if (rq.to_stdout == 0) print_summary(scene.primitives.size(), result->fragments.size(), outputs);
+  if (auto err = commit_outputs(outputs))
+    return error(*err);
+  if (rq.to_stdout == 0)
+    print_summary(scene.primitives.size(), result->fragments.size(), outputs);
   return kExitOk;
 }
 
-}  // namespace
+} // namespace
 
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.INPUT.ERRORS
 int run_render(const Args& args) {
@@ -234,23 +265,30 @@ int run_render(const Args& args) {
     const std::string& a = args[i];
     auto value = [&](const char* flag) -> std::optional<std::string> {
       const std::string prefix = std::string(flag) + "=";
-      if (a.rfind(prefix, 0) == 0) return a.substr(prefix.size());
-      if (i + 1 < args.size()) return args[++i];
+      if (a.rfind(prefix, 0) == 0)
+        return a.substr(prefix.size());
+      if (i + 1 < args.size())
+        return args[++i];
       return std::nullopt;
     };
-    auto is = [&](const char* flag) { return a == flag || a.rfind(std::string(flag) + "=", 0) == 0; };
+    auto is = [&](const char* flag) {
+      return a == flag || a.rfind(std::string(flag) + "=", 0) == 0;
+    };
     if (a == "--help" || a == "-h") {
       print_usage(stdout);
       return kExitOk;
     } else if (is("--fragments")) {
       fragments_path = value("--fragments");
-      if (!fragments_path || fragments_path->empty()) return usage_error("--fragments needs a file name");
+      if (!fragments_path || fragments_path->empty())
+        return usage_error("--fragments needs a file name");
     } else if (is("--png")) {
       png_path = value("--png");
-      if (!png_path || png_path->empty()) return usage_error("--png needs a file name");
+      if (!png_path || png_path->empty())
+        return usage_error("--png needs a file name");
     } else if (is("--resolve")) {
       resolve_path = value("--resolve");
-      if (!resolve_path || resolve_path->empty()) return usage_error("--resolve needs a file name");
+      if (!resolve_path || resolve_path->empty())
+        return usage_error("--resolve needs a file name");
     } else if (a == "--png-depth") {
       png_depth = true;
     } else if (a == "--pipeline-plain") {
@@ -260,25 +298,28 @@ int run_render(const Args& args) {
       options.traversal = Traversal::kPlain;
     } else if (is("--depth-out")) {
       depth_out_path = value("--depth-out");
-      if (!depth_out_path || depth_out_path->empty()) return usage_error("--depth-out needs a file name");
+      if (!depth_out_path || depth_out_path->empty())
+        return usage_error("--depth-out needs a file name");
     } else if (is("--scale")) {
       const std::optional<std::string> v = value("--scale");
       const auto n = v ? parse_int(*v, 1, io::kMaxPictureSide) : std::nullopt;
-      if (!n) return usage_error("--scale needs an integer in [1, 4096]");
+      if (!n)
+        return usage_error("--scale needs an integer in [1, 4096]");
       scale = static_cast<int>(*n);
     } else if (is("--max-fragments")) {
       // rule: SCENE.INPUT.LIMITS
       const std::optional<std::string> v = value("--max-fragments");
       const auto n = v ? parse_int(*v, 1, std::int64_t{1} << 40) : std::nullopt;
-      if (!n) return usage_error("--max-fragments needs an integer in [1, 2^40]");
+      if (!n)
+        return usage_error("--max-fragments needs an integer in [1, 2^40]");
       max_fragments = static_cast<std::uint64_t>(*n);
     } else if (is("--threads")) {
       // rule: FAST.THREADS.DETERMINISTIC
       const std::optional<std::string> v = value("--threads");
       const auto n = v ? parse_int(*v, 1, kMaxThreads) : std::nullopt;
       if (!n) {
-        return error("--threads needs an integer in [1, " + std::to_string(kMaxThreads) + "], got " +
-                     (v ? "\"" + *v + "\"" : std::string("nothing")));
+        return error("--threads needs an integer in [1, " + std::to_string(kMaxThreads) +
+                     "], got " + (v ? "\"" + *v + "\"" : std::string("nothing")));
       }
       options.threads = static_cast<unsigned>(*n);
     } else if (is("--traversal")) {
@@ -301,8 +342,8 @@ int run_render(const Args& args) {
                        (v ? "\"" + *v + "\"" : std::string("nothing")));
         }
         if (!isa_supported(*isa)) {
-          return error("--isa " + *v + ": this processor (or this build) cannot run " + *v +
-                       " (" + std::string(kMaxIsaVariable) + " may cap it); use --isa auto (here " +
+          return error("--isa " + *v + ": this processor (or this build) cannot run " + *v + " (" +
+                       std::string(kMaxIsaVariable) + " may cap it); use --isa auto (here " +
                        std::string(to_string(best_isa())) + ")");
         }
         options.isa = *isa;
@@ -316,29 +357,37 @@ int run_render(const Args& args) {
     }
   }
   // rule: FAST.ISA.DISPATCH
-  if (const char* cap = std::getenv(kMaxIsaVariable); cap != nullptr && *cap != '\0' && !parse_isa(cap)) {
-    return error(std::string(kMaxIsaVariable) + " needs \"scalar\", \"avx2\" or \"avx512\", got \"" +
-                 cap + "\"");
+  if (const char* cap = std::getenv(kMaxIsaVariable);
+      cap != nullptr && *cap != '\0' && !parse_isa(cap)) {
+    return error(std::string(kMaxIsaVariable) +
+                 " needs \"scalar\", \"avx2\" or \"avx512\", got \"" + cap + "\"");
   }
-  if (!scene_path) return usage_error("render: missing SCENE.json");
+  if (!scene_path)
+    return usage_error("render: missing SCENE.json");
   if (!fragments_path && !png_path && !resolve_path && !depth_out_path) {
-    return usage_error("render: give --fragments OUT.json, --png OUT.png, --resolve OUT.png or --depth-out OUT.json");
+    return usage_error("render: give --fragments OUT.json, --png OUT.png, --resolve OUT.png or "
+                       "--depth-out OUT.json");
   }
-  const int to_stdout = (fragments_path && *fragments_path == "-") + (png_path && *png_path == "-") +
-                        (resolve_path && *resolve_path == "-") + (depth_out_path && *depth_out_path == "-");
+  const int to_stdout = (fragments_path && *fragments_path == "-") +
+                        (png_path && *png_path == "-") + (resolve_path && *resolve_path == "-") +
+                        (depth_out_path && *depth_out_path == "-");
   if (to_stdout > 1) {
-    return usage_error("render: only one of --fragments, --png and --resolve can be standard output (--depth-out counts too)");
+    return usage_error("render: only one of --fragments, --png and --resolve can be standard "
+                       "output (--depth-out counts too)");
   }
-  if (scale && !png_path) return usage_error("render: --scale needs --png");
-  if (png_depth && !png_path) return usage_error("render: --png-depth needs --png");
+  if (scale && !png_path)
+    return usage_error("render: --scale needs --png");
+  if (png_depth && !png_path)
+    return usage_error("render: --png-depth needs --png");
 
   const auto any = load_any_scene(*scene_path);
-  if (!any) return kExitBadInput;
+  if (!any)
+    return kExitBadInput;
   // rule: SCENE.OUTPUT.PIPELINE
   if (const auto* pipeline = std::get_if<pipe::PipeScene>(&*any)) {
-    return render_pipeline(*pipeline, RenderRequest{fragments_path, png_path, resolve_path, depth_out_path,
-                                                    scale, png_depth, max_fragments, options, to_stdout,
-                                                    pipeline_plain});
+    return render_pipeline(*pipeline, RenderRequest{fragments_path, png_path, resolve_path,
+                                                    depth_out_path, scale, png_depth, max_fragments,
+                                                    options, to_stdout, pipeline_plain});
   }
   if (png_depth || depth_out_path) {
     return error(std::string(png_depth ? "--png-depth" : "--depth-out") +
@@ -350,24 +399,29 @@ int run_render(const Args& args) {
   int picture_scale = 0;
   if (png_path) {
     const auto s = picture_scale_for(scene.width, scene.height, scale);
-    if (const auto* err = std::get_if<std::string>(&s)) return error(*err);
+    if (const auto* err = std::get_if<std::string>(&s))
+      return error(*err);
     picture_scale = std::get<int>(s);
   }
 
   // rule: MSAA.LIMITS, MSAA.RESOLVE.AVERAGE
   if (resolve_path) {
-    if (auto err = resolve_too_large(scene.width, scene.height, scene.msaa.count())) return error(*err);
+    if (auto err = resolve_too_large(scene.width, scene.height, scene.msaa.count()))
+      return error(*err);
   }
 
   OutputFile fragments_file, png_file, resolve_file;
   if (fragments_path) {
-    if (auto err = fragments_file.open(*fragments_path)) return error(*err);
+    if (auto err = fragments_file.open(*fragments_path))
+      return error(*err);
   }
   if (png_path) {
-    if (auto err = png_file.open(*png_path)) return error(*err);
+    if (auto err = png_file.open(*png_path))
+      return error(*err);
   }
   if (resolve_path) {
-    if (auto err = resolve_file.open(*resolve_path)) return error(*err);
+    if (auto err = resolve_file.open(*resolve_path))
+      return error(*err);
   }
 
   // Fragments are streamed primitive by primitive in the (prim, y, x, seg) order of
@@ -375,11 +429,13 @@ int run_render(const Args& args) {
   // their number), a point's or line's after the kernel sorts that one primitive's list. The
   // coverage map (for the picture) is width * height.
   std::optional<io::FragmentWriter> writer;
-  if (fragments_path) writer.emplace(fragments_file.get());
+  if (fragments_path)
+    writer.emplace(fragments_file.get());
   std::unique_ptr<io::CoverageMap> coverage;
   if (png_path) {
     coverage = std::make_unique<io::CoverageMap>(scene.width, scene.height);
-    if (io::samples_visible(scene, picture_scale)) coverage->record_samples(scene.msaa.count());
+    if (io::samples_visible(scene, picture_scale))
+      coverage->record_samples(scene.msaa.count());
   }
   // The resolve needs every fragment (at most --max-fragments of them).
   std::vector<Fragment> all;
@@ -391,7 +447,8 @@ int run_render(const Args& args) {
   // temporary names, are removed by ~OutputFile.
   struct TooManyFragments {};
   const auto emit = [&](const Fragment& f) {
-    if (++fragment_count > max_fragments) throw TooManyFragments{};
+    if (++fragment_count > max_fragments)
+      throw TooManyFragments{};
     if (writer)
       in_order = writer->add(f) && in_order;
     if (coverage)
@@ -400,10 +457,11 @@ int run_render(const Args& args) {
       all.push_back(f);
   };
   const auto too_many_held = [&](std::size_t p) {
-    return error("render: primitives[" + std::to_string(p) + "] touches more than " +
-                 std::to_string(2 * max_fragments) +
-                 " pixels or fragments that must be held to be sorted (limit SCENE.INPUT.LIMITS, 2 x "
-                 "--max-fragments); raise it with --max-fragments N");
+    return error(
+        "render: primitives[" + std::to_string(p) + "] touches more than " +
+        std::to_string(2 * max_fragments) +
+        " pixels or fragments that must be held to be sorted (limit SCENE.INPUT.LIMITS, 2 x "
+        "--max-fragments); raise it with --max-fragments N");
   };
   // A primitive that is collected before it is emitted holds at most 2 * max_fragments
   // entries: a pixel is held at most twice (once per triangle of a point or quadrilateral
@@ -412,7 +470,8 @@ int run_render(const Args& args) {
   try {
     if (options.threads <= 1) {
       for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
-        if (!for_each_fragment_bounded(scene, p, 2 * max_fragments, options, emit)) return too_many_held(p);
+        if (!for_each_fragment_bounded(scene, p, 2 * max_fragments, options, emit))
+          return too_many_held(p);
       }
     } else {
       // rule: FAST.THREADS.DETERMINISTIC
@@ -423,10 +482,10 @@ int run_render(const Args& args) {
       // primitive that needs more than it may hold (reported when the chunk is emitted, after
       // the fragments before it) or when its buffer passes max_fragments + 1 fragments (enough
       // to pass the limit wherever it is emitted), so at most 4 * threads such buffers are held.
-      constexpr std::size_t kChunk = 64;  // primitives per unit: amortises the hand-over
+      constexpr std::size_t kChunk = 64; // primitives per unit: amortises the hand-over
       struct Unit {
         std::vector<Fragment> fragments;
-        std::optional<std::size_t> too_many_held;  // the primitive that did not fit, if any
+        std::optional<std::size_t> too_many_held; // the primitive that did not fit, if any
       };
       struct BufferFull {};
       struct TooManyHeld {
@@ -447,7 +506,8 @@ int run_render(const Args& args) {
                 for (std::size_t p = u * kChunk; p < end; ++p) {
                   const bool fits = for_each_fragment_bounded(
                       scene, p, 2 * max_fragments, options, [&](const Fragment& f) {
-                        if (unit.fragments.size() > max_fragments) throw BufferFull{};
+                        if (unit.fragments.size() > max_fragments)
+                          throw BufferFull{};
                         unit.fragments.push_back(f);
                       });
                   if (!fits) {
@@ -461,8 +521,10 @@ int run_render(const Args& args) {
             },
             [&](std::size_t u) {
               const Unit& unit = units[u % window];
-              for (const Fragment& f : unit.fragments) emit(f);
-              if (unit.too_many_held) throw TooManyHeld{*unit.too_many_held};
+              for (const Fragment& f : unit.fragments)
+                emit(f);
+              if (unit.too_many_held)
+                throw TooManyHeld{*unit.too_many_held};
             });
       } catch (const TooManyHeld& held) {
         return too_many_held(held.p);
@@ -475,24 +537,28 @@ int run_render(const Args& args) {
   if (!in_order)
     return error("internal error: the kernel emitted fragments out of (prim, y, x, seg) order");
   if (writer) {
-    if (!writer->finish()) return error(*fragments_path + ": write failed");
+    if (!writer->finish())
+      return error(*fragments_path + ": write failed");
   }
   if (png_path) {
     const io::Image image = io::draw_picture(scene, *coverage, picture_scale);
-    if (auto err = io::write_png(png_file.get(), image)) return error(*png_path + ": " + *err);
+    if (auto err = io::write_png(png_file.get(), image))
+      return error(*png_path + ": " + *err);
   }
   // rule: MSAA.RESOLVE.AVERAGE
   if (resolve_path) {
-    if (auto err = write_resolved(scene, all, resolve_file.get(), *resolve_path)) return error(*err);
+    if (auto err = write_resolved(scene, all, resolve_file.get(), *resolve_path))
+      return error(*err);
   }
   // No partial result: when one output cannot be moved into place, the ones already in place
   // are removed.
-  const std::vector<Output> outputs = {{&fragments_file, &fragments_path},
-                                       {&png_file, &png_path},
-                                       {&resolve_file, &resolve_path}};
-  if (auto err = commit_outputs(outputs)) return error(*err);
-  if (to_stdout == 0) print_summary(scene.primitives.size(), fragment_count, outputs);
+  const std::vector<Output> outputs = {
+      {&fragments_file, &fragments_path}, {&png_file, &png_path}, {&resolve_file, &resolve_path}};
+  if (auto err = commit_outputs(outputs))
+    return error(*err);
+  if (to_stdout == 0)
+    print_summary(scene.primitives.size(), fragment_count, outputs);
   return kExitOk;
 }
 
-}  // namespace rastrules::cli
+} // namespace rastrules::cli

@@ -247,9 +247,11 @@ oracle::msaa::Input oracle_msaa_input(const Scene& scene) {
   in.state = oracle_state(scene.state);
   in.line_mode = std::string(io::line_mode_name(scene.line_mode));
   in.pattern.clear();
-  for (const SampleOffset& o : scene.msaa.pattern.positions) in.pattern.push_back({o.x, o.y});
+  for (const SampleOffset& o : scene.msaa.pattern.positions)
+    in.pattern.push_back({o.x, o.y});
   in.sample_mask = scene.msaa.sample_mask;
-  if (scene.msaa.has_centroid) in.centroid = std::string(to_string(scene.msaa.centroid_rule));
+  if (scene.msaa.has_centroid)
+    in.centroid = std::string(to_string(scene.msaa.centroid_rule));
   in.shading = std::string(to_string(scene.msaa.shading));
   in.quads = scene.msaa.quads;
   in.derivatives = std::string(to_string(scene.msaa.derivatives));
@@ -257,7 +259,8 @@ oracle::msaa::Input oracle_msaa_input(const Scene& scene) {
   for (const Primitive& prim : scene.primitives) {
     oracle::msaa::Primitive op;
     op.type = std::string(to_string(prim.type));
-    for (const FloatPoint& v : prim.v) op.v.push_back(oracle_raw(v));
+    for (const FloatPoint& v : prim.v)
+      op.v.push_back(oracle_raw(v));
     op.aa = prim.aa;
     op.color = prim.color;
     in.primitives.push_back(std::move(op));
@@ -265,17 +268,22 @@ oracle::msaa::Input oracle_msaa_input(const Scene& scene) {
   return in;
 }
 
-std::string opt_text(const std::optional<std::uint32_t>& v) { return v ? std::to_string(*v) : "-"; }
+std::string opt_text(const std::optional<std::uint32_t>& v) {
+  return v ? std::to_string(*v) : "-";
+}
 
 // One fragment as text, the same for the kernel's and the oracle's.
 std::string msaa_text(std::uint32_t prim, std::int32_t x, std::int32_t y, std::uint32_t mask,
-                      const std::optional<std::uint32_t>& seg, const std::optional<std::uint32_t>& sample,
-                      bool helper, const std::optional<std::array<std::int64_t, 2>>& centroid,
+                      const std::optional<std::uint32_t>& seg,
+                      const std::optional<std::uint32_t>& sample, bool helper,
+                      const std::optional<std::array<std::int64_t, 2>>& centroid,
                       const std::optional<std::array<std::int64_t, 4>>& d) {
   std::string t = "prim " + std::to_string(prim) + " pixel (" + std::to_string(x) + ", " +
                   std::to_string(y) + ") seg " + opt_text(seg) + " sample " + opt_text(sample) +
                   " mask " + std::to_string(mask) + (helper ? " helper" : "");
-  if (centroid) t += " centroid (" + std::to_string((*centroid)[0]) + ", " + std::to_string((*centroid)[1]) + ")/16";
+  if (centroid)
+    t += " centroid (" + std::to_string((*centroid)[0]) + ", " + std::to_string((*centroid)[1]) +
+         ")/16";
   if (d) {
     t += " ddx (" + std::to_string((*d)[0]) + ", " + std::to_string((*d)[1]) + ") ddy (" +
          std::to_string((*d)[2]) + ", " + std::to_string((*d)[3]) + ")/16";
@@ -287,7 +295,8 @@ std::string msaa_text(std::uint32_t prim, std::int32_t x, std::int32_t y, std::u
 // rule: SCENE.OUTPUT.MSAA, MSAA.COVER.SAMPLE, MSAA.MASK.AND, MSAA.CENTROID.D3D11
 // rule: MSAA.CENTROID.D3D10, MSAA.QUAD.HELPER, MSAA.DERIV.FINE, MSAA.DERIV.COARSE
 // rule: MSAA.RESOLVE.AVERAGE
-Check check_msaa_scene(const Scene& scene, const PreparedScene& ps, const std::vector<Fragment>& kernel) {
+Check check_msaa_scene(const Scene& scene, const PreparedScene& ps,
+                       const std::vector<Fragment>& kernel) {
   Check check;
   check.used("multisampling oracle (msaa::render, msaa::resolve)");
   const oracle::msaa::Input in = oracle_msaa_input(scene);
@@ -295,22 +304,25 @@ Check check_msaa_scene(const Scene& scene, const PreparedScene& ps, const std::v
   std::vector<std::string> mine, theirs;
   for (const Fragment& f : kernel) {
     std::optional<std::array<std::int64_t, 2>> c;
-    if (f.centroid) c = std::array<std::int64_t, 2>{f.centroid->offset.x, f.centroid->offset.y};
+    if (f.centroid)
+      c = std::array<std::int64_t, 2>{f.centroid->offset.x, f.centroid->offset.y};
     std::optional<std::array<std::int64_t, 4>> d;
     if (f.derivatives) {
-      d = std::array<std::int64_t, 4>{f.derivatives->ddx_x, f.derivatives->ddx_y, f.derivatives->ddy_x,
-                                      f.derivatives->ddy_y};
+      d = std::array<std::int64_t, 4>{f.derivatives->ddx_x, f.derivatives->ddx_y,
+                                      f.derivatives->ddy_x, f.derivatives->ddy_y};
     }
-    if (f.coverage_q16) check.note("a coverage on a multisampled fragment at prim " + std::to_string(f.prim));
+    if (f.coverage_q16)
+      check.note("a coverage on a multisampled fragment at prim " + std::to_string(f.prim));
     mine.push_back(msaa_text(f.prim, f.x, f.y, f.mask, f.seg, f.sample, f.helper, c, d));
   }
   for (const oracle::msaa::Fragment& f : exact) {
     std::optional<std::array<std::int64_t, 2>> c;
-    if (f.centroid) c = std::array<std::int64_t, 2>{f.centroid->offset.x, f.centroid->offset.y};
+    if (f.centroid)
+      c = std::array<std::int64_t, 2>{f.centroid->offset.x, f.centroid->offset.y};
     std::optional<std::array<std::int64_t, 4>> d;
     if (f.derivatives) {
-      d = std::array<std::int64_t, 4>{f.derivatives->ddx_x, f.derivatives->ddx_y, f.derivatives->ddy_x,
-                                      f.derivatives->ddy_y};
+      d = std::array<std::int64_t, 4>{f.derivatives->ddx_x, f.derivatives->ddx_y,
+                                      f.derivatives->ddy_x, f.derivatives->ddy_y};
     }
     theirs.push_back(msaa_text(f.prim, f.x, f.y, f.mask, f.seg, f.sample, f.helper, c, d));
   }
@@ -319,7 +331,8 @@ Check check_msaa_scene(const Scene& scene, const PreparedScene& ps, const std::v
   for (std::size_t i = 0; i < n; ++i) {
     const std::string a = i < mine.size() ? mine[i] : "(nothing)";
     const std::string b = i < theirs.size() ? theirs[i] : "(nothing)";
-    if (a != b) check.note("fragment " + std::to_string(i) + ": kernel " + a + ", oracle " + b);
+    if (a != b)
+      check.note("fragment " + std::to_string(i) + ": kernel " + a + ", oracle " + b);
   }
   // The resolved target.
   const auto resolved = resolve(ps, kernel);
@@ -336,8 +349,9 @@ Check check_msaa_scene(const Scene& scene, const PreparedScene& ps, const std::v
   }
   for (std::size_t i = 0; i < pixels.size(); ++i) {
     if (pixels[i] != exact_pixels[i]) {
-      check.note("resolve differs at pixel (" + std::to_string(i % static_cast<std::size_t>(scene.width)) +
-                 ", " + std::to_string(i / static_cast<std::size_t>(scene.width)) + ")");
+      check.note("resolve differs at pixel (" +
+                 std::to_string(i % static_cast<std::size_t>(scene.width)) + ", " +
+                 std::to_string(i / static_cast<std::size_t>(scene.width)) + ")");
     }
   }
   return check;
@@ -345,40 +359,51 @@ Check check_msaa_scene(const Scene& scene, const PreparedScene& ps, const std::v
 
 std::optional<std::string> write_text(const std::filesystem::path& path, const std::string& text) {
   OutputFile f;
-  if (auto err = f.open(path.string())) return err;
-  if (std::fwrite(text.data(), 1, text.size(), f.get()) != text.size()) return path.string() + ": write failed";
+  if (auto err = f.open(path.string()))
+    return err;
+  if (std::fwrite(text.data(), 1, text.size(), f.get()) != text.size())
+    return path.string() + ": write failed";
   return f.commit();
 }
 
-std::optional<std::string> write_picture(const std::filesystem::path& path, const PreparedScene& scene,
+std::optional<std::string> write_picture(const std::filesystem::path& path,
+                                         const PreparedScene& scene,
                                          const std::vector<Fragment>& fragments) {
   io::CoverageMap coverage(scene.width, scene.height);
   const int scale = io::default_picture_scale(scene.width, scene.height);
-  if (io::samples_visible(scene, scale)) coverage.record_samples(scene.msaa.count());
+  if (io::samples_visible(scene, scale))
+    coverage.record_samples(scene.msaa.count());
   for (const Fragment& f : fragments)
     coverage.add_fragment(f);
   const io::Image image = io::draw_picture(scene, coverage, scale);
   OutputFile f;
-  if (auto err = f.open(path.string())) return err;
-  if (auto err = io::write_png(f.get(), image)) return path.string() + ": " + *err;
+  if (auto err = f.open(path.string()))
+    return err;
+  if (auto err = io::write_png(f.get(), image))
+    return path.string() + ": " + *err;
   return f.commit();
 }
 
 // Writes the resolved target of a multisampled scene (MSAA.RESOLVE.AVERAGE).
-std::optional<std::string> write_resolve(const std::filesystem::path& path, const PreparedScene& scene,
+std::optional<std::string> write_resolve(const std::filesystem::path& path,
+                                         const PreparedScene& scene,
                                          const std::vector<Fragment>& fragments) {
   const auto resolved = resolve(scene, fragments);
-  if (const auto* err = std::get_if<SceneError>(&resolved)) return path.string() + ": " + err->what();
+  if (const auto* err = std::get_if<SceneError>(&resolved))
+    return path.string() + ": " + err->what();
   const ResolvedImage& r = std::get<ResolvedImage>(resolved);
   std::vector<std::uint8_t> rgba;
-  for (const Rgba8& p : r.pixels) rgba.insert(rgba.end(), p.begin(), p.end());
+  for (const Rgba8& p : r.pixels)
+    rgba.insert(rgba.end(), p.begin(), p.end());
   OutputFile f;
-  if (auto err = f.open(path.string())) return err;
-  if (auto err = io::write_png_rgba(f.get(), r.width, r.height, rgba)) return path.string() + ": " + *err;
+  if (auto err = f.open(path.string()))
+    return err;
+  if (auto err = io::write_png_rgba(f.get(), r.width, r.height, rgba))
+    return path.string() + ": " + *err;
   return f.commit();
 }
 
-}  // namespace
+} // namespace
 
 int run_showcase(const Args& args) {
   std::optional<std::string> out_dir;
@@ -397,12 +422,14 @@ int run_showcase(const Args& args) {
       return usage_error("showcase: unexpected argument \"" + a + "\"");
     }
   }
-  if (!out_dir || out_dir->empty()) return usage_error("showcase: missing --out DIR");
+  if (!out_dir || out_dir->empty())
+    return usage_error("showcase: missing --out DIR");
   const std::filesystem::path dir(*out_dir);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir)) {
-    return error(*out_dir + ": cannot create the directory" + (ec ? ": " + ec.message() : std::string()));
+    return error(*out_dir + ": cannot create the directory" +
+                 (ec ? ": " + ec.message() : std::string()));
   }
 
   const std::vector<ShowcaseScene> scenes = showcase_scenes();
@@ -441,31 +468,37 @@ int run_showcase(const Args& args) {
     // The scene file must read back to exactly this scene (SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32).
     const std::string scene_text = io::write_scene(sc.scene);
     const auto reread = io::read_scene(scene_text);
-    if (!std::holds_alternative<Scene>(reread) || !io::same_scene(std::get<Scene>(reread), sc.scene)) {
+    if (!std::holds_alternative<Scene>(reread) ||
+        !io::same_scene(std::get<Scene>(reread), sc.scene)) {
       same = false;
       notes.push_back(sc.name + ": the written scene file does not read back to the same scene");
     }
-    for (const auto& err : {write_text(dir / (sc.name + ".scene.json"), scene_text),
-                            write_text(dir / (sc.name + ".fragments.json"), io::fragments_to_json(kernel)),
-                            write_picture(dir / (sc.name + ".png"), ps, kernel)}) {
-      if (err) return error(*err);
+    for (const auto& err :
+         {write_text(dir / (sc.name + ".scene.json"), scene_text),
+          write_text(dir / (sc.name + ".fragments.json"), io::fragments_to_json(kernel)),
+          write_picture(dir / (sc.name + ".png"), ps, kernel)}) {
+      if (err)
+        return error(*err);
     }
     if (multisampled(sc.scene)) {
-      if (auto err = write_resolve(dir / (sc.name + ".resolve.png"), ps, kernel)) return error(*err);
+      if (auto err = write_resolve(dir / (sc.name + ".resolve.png"), ps, kernel))
+        return error(*err);
     }
-    if (same) ++agree;
+    if (same)
+      ++agree;
     std::printf("%-22s %6zu %9zu %10.3f %10.3f  %s\n", sc.name.c_str(), sc.scene.primitives.size(),
                 kernel.size(), kernel_ms, oracle_ms, same ? "yes" : "NO");
   }
-  for (const std::string& n : notes) std::printf("  %s\n", n.c_str());
+  for (const std::string& n : notes)
+    std::printf("  %s\n", n.c_str());
   std::printf("oracles used:\n");
   for (const std::string& n : checked_by_lines)
     std::printf("  %s\n", n.c_str());
   const int differ = static_cast<int>(scenes.size()) - agree;
-  std::printf("showcase: %zu scenes, %d agree with the oracle, %d differ; pictures in %s\n", scenes.size(),
-              agree, differ, dir.string().c_str());
+  std::printf("showcase: %zu scenes, %d agree with the oracle, %d differ; pictures in %s\n",
+              scenes.size(), agree, differ, dir.string().c_str());
   std::fflush(stdout);
   return differ == 0 ? kExitOk : kExitDifference;
 }
 
-}  // namespace rastrules::cli
+} // namespace rastrules::cli

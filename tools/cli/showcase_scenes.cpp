@@ -41,18 +41,19 @@ Scene d3d_diagram() {
   p.push_back(tri({1.0f, 0.95f}, {6.0f, 2.0f}, {2.0f, 3.95f}));
   p.push_back(tri({5.25f, 1.2f}, {6.25f, 1.2f}, {6.25f, 0.3f}));
   p.push_back(tri({6.7f, 1.2f}, {7.75f, 1.2f}, {7.6f, 0.45f}));
-  p.push_back(tri({9.5f, 0.75f}, {11.75f, 2.5f}, {7.75f, 2.5f}));  // diamond, upper half
-  p.push_back(tri({7.75f, 2.5f}, {11.75f, 2.5f}, {9.5f, 5.25f}));  // diamond, lower half
-  const Point c{7.5f, 4.5f};                                        // fan centre: a pixel centre
+  p.push_back(tri({9.5f, 0.75f}, {11.75f, 2.5f}, {7.75f, 2.5f})); // diamond, upper half
+  p.push_back(tri({7.75f, 2.5f}, {11.75f, 2.5f}, {9.5f, 5.25f})); // diamond, lower half
+  const Point c{7.5f, 4.5f};                                      // fan centre: a pixel centre
   p.push_back(tri(c, {1.0f, 6.0f}, {3.5f, 4.5f}));
   p.push_back(tri(c, {5.5f, 7.5f}, {1.0f, 6.0f}));
   p.push_back(tri(c, {7.5f, 7.5f}, {5.5f, 7.5f}));
   p.push_back(tri(c, {9.5f, 6.0f}, {7.5f, 7.5f}));
-  p.push_back(tri({11.5f, 5.0f}, {12.5f, 5.5f}, {11.5f, 6.5f}));   // left edge through (11.5, 5.5)
-  p.push_back(tri({13.5f, 5.5f}, {15.5f, 5.5f}, {13.5f, 7.5f}));   // square, split on the diagonal
+  p.push_back(tri({11.5f, 5.0f}, {12.5f, 5.5f}, {11.5f, 6.5f})); // left edge through (11.5, 5.5)
+  p.push_back(tri({13.5f, 5.5f}, {15.5f, 5.5f}, {13.5f, 7.5f})); // square, split on the diagonal
   p.push_back(tri({15.5f, 5.5f}, {15.5f, 7.5f}, {13.5f, 7.5f}));
-  p.push_back(tri({14.5f, -0.2f}, {14.6f, 4.6f}, {13.5f, 1.5f}));  // tall sliver
-  p.push_back(tri({9.5f, 7.5f}, {10.5f, 7.5f}, {9.5f, 9.5f}));     // vertex on a centre, leaves the target
+  p.push_back(tri({14.5f, -0.2f}, {14.6f, 4.6f}, {13.5f, 1.5f})); // tall sliver
+  p.push_back(
+      tri({9.5f, 7.5f}, {10.5f, 7.5f}, {9.5f, 9.5f})); // vertex on a centre, leaves the target
   return s;
 }
 
@@ -60,10 +61,22 @@ Scene d3d_diagram() {
 // that every edge passes through centres: each centre inside the outline is covered once.
 Scene fan() {
   Scene s = make_scene(24, 24);
-  const std::array<Point, 16> rim = {{{22.5f, 12.5f}, {21.5f, 16.5f}, {19.5f, 19.5f}, {16.5f, 21.5f},
-                                      {12.5f, 22.5f}, {8.5f, 21.5f},  {5.5f, 19.5f},  {3.5f, 16.5f},
-                                      {2.5f, 12.5f},  {3.5f, 8.5f},   {5.5f, 5.5f},   {8.5f, 3.5f},
-                                      {12.5f, 2.5f},  {16.5f, 3.5f},  {19.5f, 5.5f},  {21.5f, 8.5f}}};
+  const std::array<Point, 16> rim = {{{22.5f, 12.5f},
+                                      {21.5f, 16.5f},
+                                      {19.5f, 19.5f},
+                                      {16.5f, 21.5f},
+                                      {12.5f, 22.5f},
+                                      {8.5f, 21.5f},
+                                      {5.5f, 19.5f},
+                                      {3.5f, 16.5f},
+                                      {2.5f, 12.5f},
+                                      {3.5f, 8.5f},
+                                      {5.5f, 5.5f},
+                                      {8.5f, 3.5f},
+                                      {12.5f, 2.5f},
+                                      {16.5f, 3.5f},
+                                      {19.5f, 5.5f},
+                                      {21.5f, 8.5f}}};
   for (std::size_t i = 0; i < rim.size(); ++i) {
     // Alternate the vertex order: coverage does not depend on the winding with culling off.
     const Point a = rim[i], b = rim[(i + 1) % rim.size()];
@@ -74,7 +87,7 @@ Scene fan() {
 
 // A deterministic generator (xorshift64*) for the jittered mesh.
 class Rng {
- public:
+public:
   explicit Rng(std::uint64_t seed) : s_(seed) {}
   std::uint64_t next() {
     s_ ^= s_ >> 12;
@@ -87,7 +100,7 @@ class Rng {
     return lo + static_cast<std::int32_t>(next() % static_cast<std::uint64_t>(hi - lo + 1));
   }
 
- private:
+private:
   std::uint64_t s_;
 };
 
@@ -104,7 +117,7 @@ Scene jittered_grid() {
       std::int32_t x = i * kCell * 256, y = j * kCell * 256;
       if (i > 0 && i < kNx && j > 0 && j < kNy) {
         if (rng.in(0, 2) == 0) {
-          x += 128;  // a pixel centre
+          x += 128; // a pixel centre
           y += 128;
         } else {
           x += rng.in(-300, 300);
@@ -123,7 +136,8 @@ Scene jittered_grid() {
                                             ? std::array<Primitive, 2>{tri(a, b, c), tri(a, c, d)}
                                             : std::array<Primitive, 2>{tri(a, b, d), tri(b, c, d)};
       for (Primitive& p : halves) {
-        if (n++ % 2 == 1) std::swap(p.v[1], p.v[2]);
+        if (n++ % 2 == 1)
+          std::swap(p.v[1], p.v[2]);
         s.primitives.push_back(p);
       }
     }
@@ -145,8 +159,8 @@ Scene ties(FillConvention fill) {
   p.push_back(tri(c, ne, se));
   p.push_back(tri(c, se, sw));
   p.push_back(tri(c, sw, nw));
-  p.push_back(tri({10.5f, 1.5f}, {12.5f, 1.5f}, {12.5f, 6.5f}));  // horizontal top, vertical right
-  p.push_back(tri({10.5f, 1.5f}, {12.5f, 6.5f}, {10.5f, 6.5f}));  // vertical left, horizontal bottom
+  p.push_back(tri({10.5f, 1.5f}, {12.5f, 1.5f}, {12.5f, 6.5f})); // horizontal top, vertical right
+  p.push_back(tri({10.5f, 1.5f}, {12.5f, 6.5f}, {10.5f, 6.5f})); // vertical left, horizontal bottom
   p.push_back(tri({10.5f, 8.5f}, {12.5f, 10.5f}, {10.5f, 10.5f}));
   return s;
 }
@@ -159,12 +173,12 @@ Scene culling(CullMode cull, FrontFace front) {
   state.front_face = front;
   Scene s = make_scene(16, 8, state);
   auto& p = s.primitives;
-  p.push_back(tri({0.5f, 0.5f}, {4.5f, 0.5f}, {0.5f, 4.5f}));   // clockwise
-  p.push_back(tri({4.5f, 0.5f}, {4.5f, 4.5f}, {0.5f, 4.5f}));   // clockwise
-  p.push_back(tri({5.5f, 0.5f}, {5.5f, 4.5f}, {9.5f, 0.5f}));   // counter-clockwise
-  p.push_back(tri({9.5f, 0.5f}, {5.5f, 4.5f}, {9.5f, 4.5f}));   // counter-clockwise
-  p.push_back(tri({10.5f, 1.5f}, {14.5f, 2.5f}, {11.5f, 6.5f}));  // clockwise
-  p.push_back(tri({10.5f, 1.5f}, {11.5f, 6.5f}, {14.5f, 2.5f}));  // the same, counter-clockwise
+  p.push_back(tri({0.5f, 0.5f}, {4.5f, 0.5f}, {0.5f, 4.5f}));    // clockwise
+  p.push_back(tri({4.5f, 0.5f}, {4.5f, 4.5f}, {0.5f, 4.5f}));    // clockwise
+  p.push_back(tri({5.5f, 0.5f}, {5.5f, 4.5f}, {9.5f, 0.5f}));    // counter-clockwise
+  p.push_back(tri({9.5f, 0.5f}, {5.5f, 4.5f}, {9.5f, 4.5f}));    // counter-clockwise
+  p.push_back(tri({10.5f, 1.5f}, {14.5f, 2.5f}, {11.5f, 6.5f})); // clockwise
+  p.push_back(tri({10.5f, 1.5f}, {11.5f, 6.5f}, {14.5f, 2.5f})); // the same, counter-clockwise
   // Degenerate after snapping: y = 1.001 and 1.0019 both snap to 1 (raw 256).
   p.push_back(tri({1.0f, 6.0f}, {5.0f, 6.001f}, {9.0f, 6.0019f}));
   // Clockwise as floats (A = 0.004 px^2), counter-clockwise once snapped.
@@ -178,14 +192,14 @@ Scene slivers() {
   Scene s = make_scene(32, 16);
   auto& p = s.primitives;
   constexpr float kSub = 1.0f / 256.0f;
-  p.push_back(tri({0.5f, 2.5f}, {31.5f, 2.5f}, {0.5f, 2.5f + kSub}));           // top edge on a row
-  p.push_back(tri({0.5f, 4.5f - kSub}, {31.5f, 4.5f}, {0.5f, 4.5f}));           // bottom edge on a row
-  p.push_back(tri({3.5f, 6.5f}, {3.5f + kSub, 15.5f}, {3.5f, 15.5f}));          // left edge on a column
-  p.push_back(tri({6.5f, 6.5f}, {6.5f, 15.5f}, {6.5f - kSub, 15.5f}));          // right edge on a column
-  p.push_back(tri({8.5f, 6.5f}, {15.5f, 13.5f}, {8.5f + kSub, 6.5f}));          // diagonal through centres
-  p.push_back(tri({-40.0f, 7.25f}, {70.0f, 7.75f}, {-40.0f, 7.2578125f}));      // long needle
-  p.push_back(tri({16.0f, 0.1f}, {31.9f, 15.9f}, {16.02f, 0.1f}));              // thin, steep
-  p.push_back(tri({17.5f, 5.5f}, {30.5f, 14.5f}, {17.5f + 2 * kSub, 5.5f}));    // needle from a centre
+  p.push_back(tri({0.5f, 2.5f}, {31.5f, 2.5f}, {0.5f, 2.5f + kSub}));  // top edge on a row
+  p.push_back(tri({0.5f, 4.5f - kSub}, {31.5f, 4.5f}, {0.5f, 4.5f}));  // bottom edge on a row
+  p.push_back(tri({3.5f, 6.5f}, {3.5f + kSub, 15.5f}, {3.5f, 15.5f})); // left edge on a column
+  p.push_back(tri({6.5f, 6.5f}, {6.5f, 15.5f}, {6.5f - kSub, 15.5f})); // right edge on a column
+  p.push_back(tri({8.5f, 6.5f}, {15.5f, 13.5f}, {8.5f + kSub, 6.5f})); // diagonal through centres
+  p.push_back(tri({-40.0f, 7.25f}, {70.0f, 7.75f}, {-40.0f, 7.2578125f}));   // long needle
+  p.push_back(tri({16.0f, 0.1f}, {31.9f, 15.9f}, {16.02f, 0.1f}));           // thin, steep
+  p.push_back(tri({17.5f, 5.5f}, {30.5f, 14.5f}, {17.5f + 2 * kSub, 5.5f})); // needle from a centre
   return s;
 }
 
@@ -217,7 +231,8 @@ Scene snap_ties() {
   // Top edge: y = 2.5 - 1/512 -> 2.5 (raw 639.5 -> 640); bottom y = 5.5 + 1/512 -> 5.5.
   p.push_back(tri({10.5f, 2.5f - kHalfSub}, {15.5f, 2.5f - kHalfSub}, {15.5f, 5.5f + kHalfSub}));
   // Near zero: -1/512 snaps to 0 (raw -0.5 -> 0), 1/512 to 0 as well.
-  p.push_back(tri({-kHalfSub, -kHalfSub}, {1.5f + kHalfSub, kHalfSub}, {kHalfSub, 1.5f - kHalfSub}));
+  p.push_back(
+      tri({-kHalfSub, -kHalfSub}, {1.5f + kHalfSub, kHalfSub}, {kHalfSub, 1.5f - kHalfSub}));
   return s;
 }
 
@@ -361,7 +376,7 @@ Scene msaa_ties() {
   p.push_back(coloured(tri(a, b, c), {230, 60, 40, 255}));
   p.push_back(coloured(tri(a, c, d), {40, 160, 60, 255}));
   p.push_back(coloured(tri(b, e, c), {40, 90, 220, 255}));
-  p.push_back(coloured(tri(c, e, d), {230, 200, 40, 255}));  // closes the fan at sample 0 of (5, 5)
+  p.push_back(coloured(tri(c, e, d), {230, 200, 40, 255})); // closes the fan at sample 0 of (5, 5)
   return s;
 }
 
@@ -451,24 +466,30 @@ Scene msaa_resolve() {
   return s;
 }
 
-}  // namespace
+} // namespace
 
 std::vector<ShowcaseScene> showcase_scenes() {
   std::vector<ShowcaseScene> out;
   out.push_back({"d3d-diagram", "the cases of the D3D11.3 triangle diagram", d3d_diagram()});
   out.push_back({"fan", "16 triangles around a pixel centre, all edges through centres", fan()});
-  out.push_back({"jittered-grid", "96-triangle mesh, jittered vertices, mixed windings", jittered_grid()});
-  out.push_back({"ties-top-left", "edge ties of every kind, fill top-left (D3D)", ties(FillConvention::kTopLeft)});
+  out.push_back(
+      {"jittered-grid", "96-triangle mesh, jittered vertices, mixed windings", jittered_grid()});
+  out.push_back({"ties-top-left", "edge ties of every kind, fill top-left (D3D)",
+                 ties(FillConvention::kTopLeft)});
   out.push_back({"ties-top-right", "the same, fill top-right", ties(FillConvention::kTopRight)});
-  out.push_back({"ties-bottom-left", "the same, fill bottom-left (GL read top-down)", ties(FillConvention::kBottomLeft)});
-  out.push_back({"ties-bottom-right", "the same, fill bottom-right", ties(FillConvention::kBottomRight)});
+  out.push_back({"ties-bottom-left", "the same, fill bottom-left (GL read top-down)",
+                 ties(FillConvention::kBottomLeft)});
+  out.push_back(
+      {"ties-bottom-right", "the same, fill bottom-right", ties(FillConvention::kBottomRight)});
   out.push_back({"cull-back", "cull back, front face cw, windings decided after snapping",
                  culling(CullMode::kBack, FrontFace::kClockwise)});
   out.push_back({"cull-front-ccw", "cull front, front face ccw",
                  culling(CullMode::kFront, FrontFace::kCounterClockwise)});
-  out.push_back({"slivers", "slivers one subpixel wide on rows, columns and diagonals; needles", slivers()});
+  out.push_back(
+      {"slivers", "slivers one subpixel wide on rows, columns and diagonals; needles", slivers()});
   out.push_back({"huge", "triangles at the ends of the coordinate range", huge()});
-  out.push_back({"snap-ties", "coordinates half-way between subpixels (round half to even)", snap_ties()});
+  out.push_back(
+      {"snap-ties", "coordinates half-way between subpixels (round half to even)", snap_ties()});
   out.push_back({"points", "points on centres, corners and edge midpoints, fill top-left",
                  points(FillConvention::kTopLeft)});
   out.push_back({"points-bottom-right", "the same points, fill bottom-right",
@@ -485,12 +506,12 @@ std::vector<ShowcaseScene> showcase_scenes() {
                  quad_lines(LineMode::kQuadWide)});
   out.push_back({"quad-lines-1.0", "quadrilateral lines 1.0 px wide (Vulkan strict)",
                  quad_lines(LineMode::kQuadNarrow)});
-  out.push_back({"msaa-4x-ties", "4x: shared edges through sample points, vertices on samples",
-                 msaa_ties()});
+  out.push_back(
+      {"msaa-4x-ties", "4x: shared edges through sample points, vertices on samples", msaa_ties()});
   out.push_back({"msaa-8x", "8x standard pattern: a fan, a point and a sliver", msaa_fan(8)});
   out.push_back({"msaa-16x", "the same at 16x", msaa_fan(16)});
-  out.push_back({"msaa-center-4x", "4 samples at the centre: all or nothing per pixel",
-                 msaa_center()});
+  out.push_back(
+      {"msaa-center-4x", "4 samples at the centre: all or nothing per pixel", msaa_center()});
   out.push_back({"msaa-custom", "a custom pattern on the grid's extremes, one position twice",
                  msaa_custom()});
   out.push_back({"msaa-centroid-d3d11", "centroids (D3D11 rule), sample mask 0b1101, fine ddx/ddy",
@@ -499,9 +520,9 @@ std::vector<ShowcaseScene> showcase_scenes() {
                  msaa_centroid(CentroidRule::kD3D10)});
   out.push_back({"msaa-sample-shading", "sample shading, quads per sample, coarse ddx/ddy",
                  msaa_sample_shading()});
-  out.push_back({"msaa-resolve", "colours over a clear colour, resolved by averaging",
-                 msaa_resolve()});
+  out.push_back(
+      {"msaa-resolve", "colours over a clear colour, resolved by averaging", msaa_resolve()});
   return out;
 }
 
-}  // namespace rastrules::cli
+} // namespace rastrules::cli

@@ -11,12 +11,12 @@
 namespace rastrules::cli {
 
 struct ShowcaseScene {
-  std::string name;         // file name stem, e.g. "d3d-diagram"
-  std::string description;  // one line
+  std::string name;        // file name stem, e.g. "d3d-diagram"
+  std::string description; // one line
   Scene scene;
 };
 
 // Returns the showcase scenes, always the same ones in the same order.
 [[nodiscard]] std::vector<ShowcaseScene> showcase_scenes();
 
-}  // namespace rastrules::cli
+} // namespace rastrules::cli

@@ -76,7 +76,8 @@ std::string to_markdown(const LadderReport& r) {
     << r.threads << " chunks on a pool of " << r.threads
     << " threads created before the timed repeats (its answers are reference-fast's). "
        "`reference-fast` is timed through the kernel's batch counter (snapping, setup and "
-       "coverage; triangles up to 64 px a side eight at a time in 32-bit lanes). The plot shows the single-thread rungs; "
+       "coverage; triangles up to 64 px a side eight at a time in 32-bit lanes). The plot shows "
+       "the single-thread rungs; "
        "`limit` has no error figure (no tie rule) and is drawn at error 0 only to show its "
        "speed.\n";
   o << "\nTriangles per second (small mesh):";

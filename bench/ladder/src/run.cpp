@@ -171,7 +171,7 @@ LadderReport run_ladder(const LadderConfig& c, const LavapipeTimer& lavapipe,
       f.scene = s.name;
       f.triangles = s.triangles.size();
       f.decisions = decisions;
-      FastPool pool(rep.threads);  // created once, outside the timed repeats
+      FastPool pool(rep.threads); // created once, outside the timed repeats
       const auto [sec, reps] = time_median(c.min_seconds, [&] {
         f.covered = pool.count(s);
         g_sink = g_sink + f.covered;

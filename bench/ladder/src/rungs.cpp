@@ -8,19 +8,19 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
+#include <cstdint>
 #include <exception>
 #include <functional>
 #include <mutex>
-#include <system_error>
-#include <thread>
-#include <cmath>
-#include <cstdint>
 #include <span>
 #include <stdexcept>
 #include <string>
-#include <vector>
+#include <system_error>
+#include <thread>
 #include <utility>
+#include <vector>
 
 #include "limit.hpp"
 #include "rastrules/bench/ladder.hpp"
@@ -391,7 +391,7 @@ std::uint64_t batch_count(std::span<const float> xy, const LadderScene& s, Isa i
                           std::size_t first = 0) {
   raster::FastBatchResult r = raster::fast_count_batch(xy, s.width, s.height, RasterState{}, isa);
   if (r.status != raster::BatchStatus::kOk) {
-    r.bad_triangle += first;  // the scene's index, not the chunk's
+    r.bad_triangle += first; // the scene's index, not the chunk's
     throw std::invalid_argument("ladder: scene " + s.name + ": " + raster::describe(r));
   }
   return r.covered;
@@ -458,7 +458,7 @@ struct FastPool::Impl {
     std::fill(errors.begin(), errors.end(), nullptr);
     pending.store(static_cast<unsigned>(workers.size()), std::memory_order_relaxed);
     {
-      const std::lock_guard<std::mutex> g(m);  // no worker misses the wake-up
+      const std::lock_guard<std::mutex> g(m); // no worker misses the wake-up
       generation.fetch_add(1, std::memory_order_release);
     }
     go.notify_all();
@@ -489,7 +489,7 @@ FastPool::FastPool(unsigned threads) : impl_(std::make_unique<Impl>()) {
     try {
       impl_->workers.emplace_back([this, k] { impl_->work(k); });
     } catch (const std::system_error&) {
-      break;  // fewer threads: fewer chunks, the same count
+      break; // fewer threads: fewer chunks, the same count
     }
   }
 }

@@ -13,9 +13,8 @@ namespace rastrules {
 // A signed fixed-point number whose real value is raw() / 2^FracBits.
 // Different (FracBits, Rep) pairs are different types; there are no implicit
 // conversions between formats or to floating point.
-template <int FracBits, std::signed_integral Rep>
-class Fixed {
- public:
+template <int FracBits, std::signed_integral Rep> class Fixed {
+public:
   static constexpr int kFracBits = FracBits;
   using rep = Rep;
 
@@ -31,10 +30,14 @@ class Fixed {
 
   // Same-format sum and difference. Overflow is a precondition violation, excluded by the
   // FIX.BUDGET.* rules for every format the kernel uses.
-  friend constexpr Fixed operator+(Fixed a, Fixed b) { return Fixed(static_cast<Rep>(a.raw_ + b.raw_)); }
-  friend constexpr Fixed operator-(Fixed a, Fixed b) { return Fixed(static_cast<Rep>(a.raw_ - b.raw_)); }
+  friend constexpr Fixed operator+(Fixed a, Fixed b) {
+    return Fixed(static_cast<Rep>(a.raw_ + b.raw_));
+  }
+  friend constexpr Fixed operator-(Fixed a, Fixed b) {
+    return Fixed(static_cast<Rep>(a.raw_ - b.raw_));
+  }
 
- private:
+private:
   constexpr explicit Fixed(Rep raw) : raw_(raw) {}
   Rep raw_ = 0;
 };
@@ -53,7 +56,7 @@ using EdgeValue = Fixed<2 * kSubpixelBits, std::int64_t>;
 // that is [-32768, 32767.99609375] pixels (D3D11.3's 16.8 format, FixedMin..FixedMax).
 // rule: SNAP.VERTEX.RANGE
 inline constexpr int kVertexIntBits = 16;
-inline constexpr int kVertexMagBits = kVertexIntBits - 1 + kSubpixelBits;  // 23
+inline constexpr int kVertexMagBits = kVertexIntBits - 1 + kSubpixelBits; // 23
 inline constexpr std::int32_t kMinVertexRaw = -(std::int32_t{1} << kVertexMagBits);
 inline constexpr std::int32_t kMaxVertexRaw = (std::int32_t{1} << kVertexMagBits) - 1;
 
@@ -89,4 +92,4 @@ struct Vec2 {
               Subpixel::from_raw(py * kSubpixelOne + kSubpixelHalf)};
 }
 
-}  // namespace rastrules
+} // namespace rastrules

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Instruction sets of the fast traversal and how one is chosen at run time (FAST.ISA.DISPATCH),
 // and the options every render entry point takes (traversal, instruction set, threads).
-// Implements: FAST.ISA.DISPATCH, FAST.EQUALS.PLAIN (choice of traversal), FAST.THREADS.DETERMINISTIC
+// Implements: FAST.ISA.DISPATCH, FAST.EQUALS.PLAIN (choice of traversal),
+// FAST.THREADS.DETERMINISTIC
 
 #pragma once
 
@@ -12,7 +13,7 @@ namespace rastrules {
 
 // rule: FAST.ISA.DISPATCH
 enum class Isa { kScalar, kAvx2, kAvx512 };
-[[nodiscard]] std::string_view to_string(Isa isa);  // "scalar", "avx2", "avx512"
+[[nodiscard]] std::string_view to_string(Isa isa); // "scalar", "avx2", "avx512"
 [[nodiscard]] std::optional<Isa> parse_isa(std::string_view name);
 // The environment variable that caps the instruction sets isa_supported() reports, to reproduce
 // a smaller processor: RASTRULES_MAX_ISA=scalar|avx2|avx512 (isa_cap() reads it; unset or empty:
@@ -30,16 +31,16 @@ inline constexpr const char* kMaxIsaVariable = "RASTRULES_MAX_ISA";
 // (FAST.EQUALS.PLAIN); kPlain is the bounding-box walk of RASTER.WALK.BBOX, kept as the
 // reference the fast one is compared against.
 enum class Traversal { kPlain, kFast };
-[[nodiscard]] std::string_view to_string(Traversal t);  // "plain", "fast"
+[[nodiscard]] std::string_view to_string(Traversal t); // "plain", "fast"
 [[nodiscard]] std::optional<Traversal> parse_traversal(std::string_view name);
 
 struct RenderOptions {
   Traversal traversal = Traversal::kFast;
-  std::optional<Isa> isa;  // nullopt: best_isa(); an unsupported one is a precondition violation
-  unsigned threads = 1;    // >= 1; results do not depend on it (FAST.THREADS.DETERMINISTIC)
+  std::optional<Isa> isa; // nullopt: best_isa(); an unsupported one is a precondition violation
+  unsigned threads = 1;   // >= 1; results do not depend on it (FAST.THREADS.DETERMINISTIC)
 };
 
 // Returns options.isa or best_isa().
 [[nodiscard]] Isa effective_isa(const RenderOptions& options);
 
-}  // namespace rastrules
+} // namespace rastrules

@@ -38,4 +38,4 @@ struct AACoverage {
 [[nodiscard]] std::uint8_t aa_blend_unorm8(std::uint8_t src, std::uint8_t src_alpha,
                                            std::uint8_t dst, std::uint32_t coverage_q16);
 
-}  // namespace rastrules
+} // namespace rastrules

@@ -53,16 +53,16 @@ enum DiamondFeature : std::uint32_t {
 // The decision for one pixel and one aliased line, for `rastrules explain`.
 struct LineDiamondDecision {
   LineMode mode = LineMode::kD3DDiamond;
-  bool x_major = true;        // LINE.MAJOR.AXIS
-  bool zero_length = false;   // LINE.ZERO_LENGTH
+  bool x_major = true;      // LINE.MAJOR.AXIS
+  bool zero_length = false; // LINE.ZERO_LENGTH
   // Features of the closed diamond the unperturbed closed segment meets (DiamondFeature bits).
   std::uint32_t met_features = 0;
   // Features whose points belong to the test area of this mode and axis (D3D), or to the
   // perturbed open diamond's limit set (Vulkan); see LINE.D3D.TEST_AREA / LINE.VK.TEST_AREA.
   std::uint32_t included_features = 0;
-  bool entered = false;       // the segment meets the test area (Vulkan: perturbed segment)
-  bool end_inside = false;    // the end point lies in the test area (Vulkan: perturbed end)
-  bool covered = false;       // entered && !end_inside: the line exits the diamond
+  bool entered = false;    // the segment meets the test area (Vulkan: perturbed segment)
+  bool end_inside = false; // the end point lies in the test area (Vulkan: perturbed end)
+  bool covered = false;    // entered && !end_inside: the line exits the diamond
   // A one-line reason naming the rule that decided.
   std::string_view reason;
 };
@@ -74,4 +74,4 @@ struct LineDiamondDecision {
 // Returns "upper-left edge", "bottom corner", ... for one feature bit; "" for none or several.
 [[nodiscard]] std::string_view to_string(DiamondFeature f);
 
-}  // namespace rastrules
+} // namespace rastrules

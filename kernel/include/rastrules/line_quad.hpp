@@ -22,8 +22,8 @@ struct QuadHalfWidth {
   std::int64_t num = 0;
   std::int64_t den = 1;
 };
-inline constexpr QuadHalfWidth kQuadWideHalfWidth{7 * kSubpixelOne / 2, 5};  // 896 / 5
-inline constexpr QuadHalfWidth kQuadNarrowHalfWidth{kSubpixelHalf, 1};     // 128 / 1
+inline constexpr QuadHalfWidth kQuadWideHalfWidth{7 * kSubpixelOne / 2, 5}; // 896 / 5
+inline constexpr QuadHalfWidth kQuadNarrowHalfWidth{kSubpixelHalf, 1};      // 128 / 1
 
 // The corner offset o of the quadrilateral line from a to b (raw 16.8): the exact offset is
 // (w/2) * (-dy, dx) / |d| with d = b - a; each component is rounded to the nearest integer
@@ -35,8 +35,8 @@ struct QuadOffset {
 };
 
 namespace detail {
-__extension__ typedef __int128 QuadWide;  // 128-bit products of squares (GCC/Clang)
-}  // namespace detail
+__extension__ typedef __int128 QuadWide; // 128-bit products of squares (GCC/Clang)
+} // namespace detail
 
 // Returns the integer nearest to the exact real m * hw.num / (hw.den * sqrt(len2)), ties to even,
 // decided only by exact comparisons of squares in 128-bit integers (no floating point, no
@@ -51,7 +51,7 @@ __extension__ typedef __int128 QuadWide;  // 128-bit products of squares (GCC/Cl
   const W target = mn * mn;
   const W den2_len2 = W{hw.den} * W{hw.den} * W{len2};
   // floor(v) by bisection on [0, 512): v <= 256 by the preconditions.
-  std::int64_t lo = 0, hi = 512;  // invariant: lo <= v < hi
+  std::int64_t lo = 0, hi = 512; // invariant: lo <= v < hi
   while (hi - lo > 1) {
     const std::int64_t mid = (lo + hi) / 2;
     if (W{mid} * W{mid} * den2_len2 <= target) {
@@ -62,10 +62,11 @@ __extension__ typedef __int128 QuadWide;  // 128-bit products of squares (GCC/Cl
   }
   // Compare v with lo + 1/2: 2v vs 2 lo + 1, squared (both sides >= 0).
   const W twice_lo_plus_1 = W{2 * lo + 1};
-  const W lhs = W{4} * target;                                  // (2v)^2 * den^2 * len2
-  const W rhs = twice_lo_plus_1 * twice_lo_plus_1 * den2_len2;  // (2 lo + 1)^2 * den^2 * len2
+  const W lhs = W{4} * target;                                 // (2v)^2 * den^2 * len2
+  const W rhs = twice_lo_plus_1 * twice_lo_plus_1 * den2_len2; // (2 lo + 1)^2 * den^2 * len2
   std::int64_t n = lo;
-  if (lhs > rhs || (lhs == rhs && lo % 2 != 0)) n = lo + 1;
+  if (lhs > rhs || (lhs == rhs && lo % 2 != 0))
+    n = lo + 1;
   return static_cast<std::int32_t>(n);
 }
 
@@ -97,4 +98,4 @@ static_assert(quad_line_offset(-7, 7, kQuadNarrowHalfWidth) == QuadOffset{-91, -
 [[nodiscard]] std::vector<TriangleSetup> setup_quad_line(Vec2 a, Vec2 b, LineMode mode,
                                                          const RasterState& state);
 
-}  // namespace rastrules
+} // namespace rastrules

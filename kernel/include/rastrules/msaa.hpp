@@ -46,11 +46,11 @@ struct SampleOffset {
 
 // rule: MSAA.PATTERN.STANDARD, MSAA.PATTERN.CENTER, MSAA.PATTERN.CUSTOM
 enum class PatternKind { kStandard, kCenter, kCustom };
-[[nodiscard]] std::string_view to_string(PatternKind k);  // "standard", "center", "custom"
+[[nodiscard]] std::string_view to_string(PatternKind k); // "standard", "center", "custom"
 
 struct SamplePattern {
   PatternKind kind = PatternKind::kStandard;
-  std::vector<SampleOffset> positions = {SampleOffset{}};  // in sample-index order
+  std::vector<SampleOffset> positions = {SampleOffset{}}; // in sample-index order
   [[nodiscard]] std::uint32_t count() const { return static_cast<std::uint32_t>(positions.size()); }
   friend bool operator==(const SamplePattern&, const SamplePattern&) = default;
 };
@@ -100,7 +100,7 @@ struct SamplePattern {
 
 // How the centroid evaluation point is chosen (MSAA.CENTROID.*).
 enum class CentroidRule { kD3D11, kD3D10 };
-[[nodiscard]] std::string_view to_string(CentroidRule r);  // "d3d11", "d3d10"
+[[nodiscard]] std::string_view to_string(CentroidRule r); // "d3d11", "d3d10"
 
 // Which branch of its rule chose a centroid (for explain and for the per-branch examples).
 enum class CentroidBranch {
@@ -113,7 +113,7 @@ enum class CentroidBranch {
 [[nodiscard]] std::string_view to_string(CentroidBranch b);
 
 struct Centroid {
-  SampleOffset offset;     // the evaluation point relative to the pixel centre, in 1/16 px
+  SampleOffset offset; // the evaluation point relative to the pixel centre, in 1/16 px
   CentroidBranch branch = CentroidBranch::kFullCoverageCenter;
   friend bool operator==(const Centroid&, const Centroid&) = default;
 };
@@ -137,8 +137,7 @@ struct Centroid {
 }
 
 // The derivatives of one value over a quad.
-template <class T>
-struct Derivatives {
+template <class T> struct Derivatives {
   T ddx{};
   T ddy{};
   friend bool operator==(const Derivatives&, const Derivatives&) = default;
@@ -150,8 +149,8 @@ struct Derivatives {
 template <class T>
 [[nodiscard]] constexpr Derivatives<T> fine_derivatives(const std::array<T, 4>& p,
                                                         std::uint32_t lane) {
-  const std::uint32_t row = lane & 2u;  // 0 (top row) or 2 (bottom row)
-  const std::uint32_t col = lane & 1u;  // 0 (left column) or 1 (right column)
+  const std::uint32_t row = lane & 2u; // 0 (top row) or 2 (bottom row)
+  const std::uint32_t col = lane & 1u; // 0 (left column) or 1 (right column)
   return Derivatives<T>{p[row + 1] - p[row], p[col + 2] - p[col]};
 }
 
@@ -164,22 +163,22 @@ template <class T>
 
 // How often the pixel shader runs (MSAA.SHADING.*).
 enum class ShadingRate { kPixel, kSample };
-[[nodiscard]] std::string_view to_string(ShadingRate r);  // "pixel", "sample"
+[[nodiscard]] std::string_view to_string(ShadingRate r); // "pixel", "sample"
 
 enum class DerivativeMode { kNone, kFine, kCoarse };
-[[nodiscard]] std::string_view to_string(DerivativeMode d);  // "none", "fine", "coarse"
+[[nodiscard]] std::string_view to_string(DerivativeMode d); // "none", "fine", "coarse"
 
 // The multisample state of a scene. The defaults are single-sample rendering: one sample at the
 // pixel centre, full mask, pixel shading, no centroid, no quads: coverage only.
 // rule: SCENE.MSAA
 struct MultisampleState {
-  SamplePattern pattern;                     // standard_pattern(1) by default
-  std::uint32_t sample_mask = 0xFFFFFFFFu;   // ANDed with coverage; bits >= count() ignored
-  bool has_centroid = false;                 // fragments carry a centroid evaluation point
+  SamplePattern pattern;                   // standard_pattern(1) by default
+  std::uint32_t sample_mask = 0xFFFFFFFFu; // ANDed with coverage; bits >= count() ignored
+  bool has_centroid = false;               // fragments carry a centroid evaluation point
   CentroidRule centroid_rule = CentroidRule::kD3D11;
   ShadingRate shading = ShadingRate::kPixel;
-  bool quads = false;                        // emit helper lanes of touched 2x2 quads
-  DerivativeMode derivatives = DerivativeMode::kNone;  // implies quads
+  bool quads = false;                                 // emit helper lanes of touched 2x2 quads
+  DerivativeMode derivatives = DerivativeMode::kNone; // implies quads
 
   [[nodiscard]] std::uint32_t count() const { return pattern.count(); }
   [[nodiscard]] std::uint32_t effective_mask() const {
@@ -207,4 +206,4 @@ using Rgba8 = std::array<std::uint8_t, 4>;
 // rule: MSAA.RESOLVE.AVERAGE
 [[nodiscard]] Rgba8 resolve_pixel(const std::vector<Rgba8>& samples);
 
-}  // namespace rastrules
+} // namespace rastrules

@@ -37,4 +37,4 @@ void run_ordered(std::size_t n, unsigned threads, std::size_t window,
                  const std::function<void(std::size_t)>& produce,
                  const std::function<void(std::size_t)>& consume);
 
-}  // namespace rastrules
+} // namespace rastrules

@@ -22,12 +22,12 @@ namespace rastrules::pipe {
 // ---------------------------------------------------------------------------------------------
 // Input and transforms
 
-using Vec4f = std::array<float, 4>;     // x, y, z, w
-using Mat4f = std::array<float, 16>;    // row-major, acting on column vectors
+using Vec4f = std::array<float, 4>;  // x, y, z, w
+using Mat4f = std::array<float, 16>; // row-major, acting on column vectors
 
 // The magnitude limit of positions before and after the transform (PIPE.INPUT.POSITION).
-inline constexpr double kMaxPosition = 18446744073709551616.0;  // 2^64
-inline constexpr std::size_t kMaxAttributes = 16;                 // PIPE.INPUT.ATTRIBUTES
+inline constexpr double kMaxPosition = 18446744073709551616.0; // 2^64
+inline constexpr std::size_t kMaxAttributes = 16;              // PIPE.INPUT.ATTRIBUTES
 
 // Returns m * v with each row fl32(((m0*x + m1*y) + m2*z) + m3*w).
 // rule: PIPE.TRANSFORM.FLOAT32
@@ -78,8 +78,8 @@ struct PixelRect {
 // ---------------------------------------------------------------------------------------------
 // Clipping
 
-inline constexpr double kGuardBand = 31744.0;  // px, PIPE.CLIP.VOLUME
-inline constexpr double kWMin = 0x1p-126;      // the w plane: float32's smallest normal
+inline constexpr double kGuardBand = 31744.0; // px, PIPE.CLIP.VOLUME
+inline constexpr double kWMin = 0x1p-126;     // the w plane: float32's smallest normal
 
 // The clip volume of one primitive (PIPE.CLIP.VOLUME).
 struct ClipVolume {
@@ -112,9 +112,8 @@ struct ClipVertex {
 
 // Returns the clipped segment (a, b), or nullopt when it lies outside.
 // rule: PIPE.CLIP.LINE
-[[nodiscard]] std::optional<std::array<ClipVertex, 2>> clip_segment(const ClipVertex& a,
-                                                                   const ClipVertex& b,
-                                                                   const ClipVolume& vol);
+[[nodiscard]] std::optional<std::array<ClipVertex, 2>>
+clip_segment(const ClipVertex& a, const ClipVertex& b, const ClipVolume& vol);
 
 // ---------------------------------------------------------------------------------------------
 // Barycentrics and interpolation
@@ -147,15 +146,24 @@ enum class Location { kCenter, kCentroid, kSample };
 // Depth
 
 enum class DepthFormat { kD16, kD24, kD32F };
-enum class CompareFunc { kNever, kLess, kEqual, kLessEqual, kGreater, kNotEqual, kGreaterEqual, kAlways };
+enum class CompareFunc {
+  kNever,
+  kLess,
+  kEqual,
+  kLessEqual,
+  kGreater,
+  kNotEqual,
+  kGreaterEqual,
+  kAlways
+};
 [[nodiscard]] std::string_view to_string(DepthFormat f);
 [[nodiscard]] std::string_view to_string(CompareFunc f);
 
 // A stored depth value: the UNORM integer for d16/d24, the float32 bits' value for d32f
 // (stored as the float itself; compared as floats).
 struct DepthValue {
-  std::uint32_t unorm = 0;  // d16, d24
-  float f = 0.0f;           // d32f
+  std::uint32_t unorm = 0; // d16, d24
+  float f = 0.0f;          // d32f
   friend bool operator==(const DepthValue&, const DepthValue&) = default;
 };
 
@@ -199,7 +207,7 @@ struct DepthState {
   CompareFunc func = CompareFunc::kLess;
   bool write = true;
   float clear = 1.0f;
-  bool clip = true;  // depth clipping (D3D DepthClipEnable)
+  bool clip = true; // depth clipping (D3D DepthClipEnable)
   DepthBias bias;
 };
 
@@ -216,10 +224,10 @@ struct PipePrimitive {
 };
 
 struct PipeScene {
-  Scene base;  // target, raster state, line mode, msaa, clear colour; base.primitives unused
-  std::optional<Viewport> viewport;     // default: the whole target, depth [0, 1]
+  Scene base; // target, raster state, line mode, msaa, clear colour; base.primitives unused
+  std::optional<Viewport> viewport; // default: the whole target, depth [0, 1]
   std::optional<Mat4f> model, view, projection;
-  std::optional<DepthState> depth;      // no depth test without it
+  std::optional<DepthState> depth; // no depth test without it
   std::vector<AttributeDecl> attributes;
   Provoking provoking = Provoking::kFirst;
   std::vector<PipePrimitive> primitives;
@@ -227,7 +235,7 @@ struct PipeScene {
 
 // Which stages a scene needs (PIPE.EFFECTS.ON_DEMAND).
 struct Effects {
-  bool clip_space = false;   // some primitive has pos
+  bool clip_space = false; // some primitive has pos
   bool depth = false;
   bool attributes = false;
   bool barycentrics = false; // depth or attributes
@@ -253,23 +261,23 @@ struct FragmentData {
 // fragment's values were interpolated from (for explanations and exact re-computation).
 struct DrawnPrimitive {
   PrimitiveType type = PrimitiveType::kTriangle;
-  std::uint32_t prim = 0;                  // the scene's primitive index
+  std::uint32_t prim = 0; // the scene's primitive index
   std::optional<std::uint32_t> part;
   // The segment of an unclipped line strip: each segment is drawn (and listed here) as a line
   // of its own (LINE.STRIP.SEQUENCE); a clipped strip's segments are parts instead.
   std::optional<std::uint32_t> seg;
-  std::vector<Vec2> snapped;               // 3 (triangle), 2 (line, strip segment), 1 (point)
-  std::array<float, 3> z{};                // window depth of the vertices (biased)
-  std::array<float, 3> w{1.0f, 1.0f, 1.0f};  // clip w of the vertices
-  std::vector<std::array<float, 3>> attr;  // per attribute, the vertices' values
-  std::vector<float> flat;                 // per attribute, the provoking vertex's value
+  std::vector<Vec2> snapped;                // 3 (triangle), 2 (line, strip segment), 1 (point)
+  std::array<float, 3> z{};                 // window depth of the vertices (biased)
+  std::array<float, 3> w{1.0f, 1.0f, 1.0f}; // clip w of the vertices
+  std::vector<std::array<float, 3>> attr;   // per attribute, the vertices' values
+  std::vector<float> flat;                  // per attribute, the provoking vertex's value
 };
 
 // What the optimizations saved (not part of the result: it differs between options).
 struct PipeStats {
-  std::uint64_t hiz_rejected = 0;       // (primitive, tile) pairs Hi-Z killed whole
-  std::uint64_t depth_samples = 0;      // sample depths computed
-  std::uint64_t attributes = 0;         // attribute values interpolated
+  std::uint64_t hiz_rejected = 0;        // (primitive, tile) pairs Hi-Z killed whole
+  std::uint64_t depth_samples = 0;       // sample depths computed
+  std::uint64_t attributes = 0;          // attribute values interpolated
   std::uint64_t tiles_never_written = 0; // tiles fast clear filled only at the end
 };
 
@@ -282,8 +290,8 @@ struct PipeStats {
 struct PipeResult {
   std::vector<Fragment> fragments;
   std::vector<FragmentData> data;
-  std::vector<DrawnPrimitive> drawn;         // with depth or attributes: every drawn primitive
-  std::vector<DepthValue> depth_buffer;      // width * height * samples, row-major, sample-minor
+  std::vector<DrawnPrimitive> drawn;    // with depth or attributes: every drawn primitive
+  std::vector<DepthValue> depth_buffer; // width * height * samples, row-major, sample-minor
   Effects effects;
   PipeStats stats;
 };
@@ -291,12 +299,12 @@ struct PipeResult {
 // Optimizations that never change a result (PIPE.OPT.*); all on by default. plain() turns
 // every one off: the reference path the properties compare them with.
 struct PipeOptions {
-  RenderOptions render;  // traversal and instruction set; threads shade tiles (binning only)
-  std::int32_t tile_size = 16;  // 16 or 32 px: the tiles of binning, fast clear and Hi-Z
-  bool binning = true;          // PIPE.OPT.TILES: depth and attributes computed tile by tile
-  bool hiz = true;              // PIPE.OPT.HIZ: per-tile depth bounds reject whole primitives
-  bool early_z = true;          // PIPE.OPT.EARLY_Z: depth test before attributes
-  bool fast_clear = true;       // PIPE.OPT.FAST_CLEAR: tiles cleared on their first write
+  RenderOptions render;        // traversal and instruction set; threads shade tiles (binning only)
+  std::int32_t tile_size = 16; // 16 or 32 px: the tiles of binning, fast clear and Hi-Z
+  bool binning = true;         // PIPE.OPT.TILES: depth and attributes computed tile by tile
+  bool hiz = true;             // PIPE.OPT.HIZ: per-tile depth bounds reject whole primitives
+  bool early_z = true;         // PIPE.OPT.EARLY_Z: depth test before attributes
+  bool fast_clear = true;      // PIPE.OPT.FAST_CLEAR: tiles cleared on their first write
   [[nodiscard]] static PipeOptions plain() {
     PipeOptions o;
     o.render.traversal = Traversal::kPlain;
@@ -313,4 +321,4 @@ struct PipeOptions {
 [[nodiscard]] std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s,
                                                                 const PipeOptions& o = {});
 
-}  // namespace rastrules::pipe
+} // namespace rastrules::pipe

@@ -27,4 +27,4 @@ inline constexpr std::int32_t kMaxPointRaw = kMaxVertexRaw - kSubpixelHalf;
 // Returns the set-up triangles of the point (culling off, the state's fill convention).
 [[nodiscard]] std::array<TriangleSetup, 2> setup_point(Vec2 c, const RasterState& state);
 
-}  // namespace rastrules
+} // namespace rastrules

@@ -37,7 +37,7 @@ struct Primitive {
   // Window coordinates in pixels, read as float32: 3 for a triangle, 1 for a point, 2 for a
   // line, at least 2 for a line strip. A default primitive is a triangle with 3 zero vertices.
   std::vector<FloatPoint> v = std::vector<FloatPoint>(3);
-  bool aa = false; // antialiased (lines and line strips only; SCENE.PRIM.LINE)
+  bool aa = false;                    // antialiased (lines and line strips only; SCENE.PRIM.LINE)
   Rgba8 color = {255, 255, 255, 255}; // written to covered samples by resolve() (SCENE.MSAA)
 };
 
@@ -95,8 +95,8 @@ struct Fragment {
 
 // A rejected scene: the JSON-pointer-like path of the offending field and what is wrong.
 struct SceneError {
-  std::string field;    // e.g. "primitives[3].v[1][0]"
-  std::string message;  // e.g. "is NaN"
+  std::string field;   // e.g. "primitives[3].v[1][0]"
+  std::string message; // e.g. "is NaN"
   [[nodiscard]] std::string what() const { return field + ": " + message; }
 };
 
@@ -186,7 +186,8 @@ void for_each_fragment(const PreparedScene& scene, std::size_t p, const RenderOp
 // The same with options: primitives are rasterized by options.threads threads and the result
 // is identical for every thread count (FAST.THREADS.DETERMINISTIC).
 // rule: FAST.THREADS.DETERMINISTIC
-[[nodiscard]] std::vector<Fragment> rasterize(const PreparedScene& scene, const RenderOptions& options);
+[[nodiscard]] std::vector<Fragment> rasterize(const PreparedScene& scene,
+                                              const RenderOptions& options);
 
 // A resolved target: one RGBA8 value per pixel, row-major, y down.
 struct ResolvedImage {
@@ -204,12 +205,12 @@ inline constexpr std::int64_t kMaxResolveSamples = std::int64_t{1} << 26;
 // pixel with resolve_pixel(). No blending: the coverage of antialiased lines is not applied.
 // Returns an error naming the limit when width * height * samples > kMaxResolveSamples.
 // rule: MSAA.RESOLVE.AVERAGE
-[[nodiscard]] std::variant<ResolvedImage, SceneError> resolve(const PreparedScene& scene,
-                                                              const std::vector<Fragment>& fragments);
+[[nodiscard]] std::variant<ResolvedImage, SceneError>
+resolve(const PreparedScene& scene, const std::vector<Fragment>& fragments);
 
 // prepare() then rasterize().
 [[nodiscard]] std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene);
 [[nodiscard]] std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene,
-                                                                    const RenderOptions& options);
+                                                                     const RenderOptions& options);
 
-}  // namespace rastrules
+} // namespace rastrules

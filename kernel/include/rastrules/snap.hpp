@@ -13,17 +13,17 @@
 namespace rastrules {
 
 enum class SnapStatus {
-  kOk,          // value snapped exactly (round half to even)
-  kNaN,         // input is a NaN
-  kInfinite,    // input is +Inf or -Inf
-  kOutOfRange,  // rounded value lies outside SNAP.VERTEX.RANGE
+  kOk,         // value snapped exactly (round half to even)
+  kNaN,        // input is a NaN
+  kInfinite,   // input is +Inf or -Inf
+  kOutOfRange, // rounded value lies outside SNAP.VERTEX.RANGE
 };
 
 [[nodiscard]] std::string_view to_string(SnapStatus s);
 
 struct SnapResult {
   SnapStatus status = SnapStatus::kOk;
-  Subpixel value;  // meaningful only when status == kOk
+  Subpixel value; // meaningful only when status == kOk
 };
 
 // Returns v * 2^8 rounded to the nearest integer, ties to even, computed from the bits of v
@@ -57,24 +57,29 @@ namespace detail {
   const std::uint32_t mantissa = bits & 0x7FFFFFu;
   const std::uint64_t sig = biased != 0 ? (mantissa | 0x800000u) : mantissa;
   const std::int32_t right = biased != 0 ? 142 - static_cast<std::int32_t>(biased) : 141;
-  if (right < 0) return std::uint64_t{1} << 24;
-  if (right == 0) return sig;
-  if (right > 25) return 0;
+  if (right < 0)
+    return std::uint64_t{1} << 24;
+  if (right == 0)
+    return sig;
+  if (right > 25)
+    return 0;
   const auto r = static_cast<std::uint32_t>(right);
   const std::uint64_t lsb = (sig >> r) & 1u;
   return (sig + (std::uint64_t{1} << (r - 1)) - 1u + lsb) >> r;
 }
 
-}  // namespace detail
+} // namespace detail
 
 constexpr SnapResult snap_to_subpixel(float v) {
   const auto bits = std::bit_cast<std::uint32_t>(v);
   if (((bits >> 23) & 0xFFu) == 0xFFu)
-    return SnapResult{(bits & 0x7FFFFFu) != 0 ? SnapStatus::kNaN : SnapStatus::kInfinite, Subpixel{}};
+    return SnapResult{(bits & 0x7FFFFFu) != 0 ? SnapStatus::kNaN : SnapStatus::kInfinite,
+                      Subpixel{}};
   const auto mag = static_cast<std::int64_t>(detail::scaled_magnitude_rne(bits));
   const std::int64_t raw = (bits >> 31) != 0 ? -mag : mag;
-  if (raw < kMinVertexRaw || raw > kMaxVertexRaw) return SnapResult{SnapStatus::kOutOfRange, Subpixel{}};
+  if (raw < kMinVertexRaw || raw > kMaxVertexRaw)
+    return SnapResult{SnapStatus::kOutOfRange, Subpixel{}};
   return SnapResult{SnapStatus::kOk, Subpixel::from_raw(static_cast<std::int32_t>(raw))};
 }
 
-}  // namespace rastrules
+} // namespace rastrules

@@ -42,10 +42,14 @@ struct RasterState {
 [[nodiscard]] constexpr bool is_inclusive(Vec2 a, Vec2 b, FillConvention f) {
   const std::int64_t ax = a.x.raw(), ay = a.y.raw(), bx = b.x.raw(), by = b.y.raw();
   switch (f) {
-    case FillConvention::kTopLeft: return formula::is_inclusive_edge<true, true>(ax, ay, bx, by);
-    case FillConvention::kTopRight: return formula::is_inclusive_edge<true, false>(ax, ay, bx, by);
-    case FillConvention::kBottomLeft: return formula::is_inclusive_edge<false, true>(ax, ay, bx, by);
-    case FillConvention::kBottomRight: return formula::is_inclusive_edge<false, false>(ax, ay, bx, by);
+  case FillConvention::kTopLeft:
+    return formula::is_inclusive_edge<true, true>(ax, ay, bx, by);
+  case FillConvention::kTopRight:
+    return formula::is_inclusive_edge<true, false>(ax, ay, bx, by);
+  case FillConvention::kBottomLeft:
+    return formula::is_inclusive_edge<false, true>(ax, ay, bx, by);
+  case FillConvention::kBottomRight:
+    return formula::is_inclusive_edge<false, false>(ax, ay, bx, by);
   }
   return false;
 }
@@ -54,15 +58,15 @@ struct RasterState {
 struct EdgeSetup {
   Vec2 a;
   Vec2 b;
-  bool is_top = false;      // TRI.FILL.TOP_EDGE (diagnostic; independent of the convention)
-  bool is_left = false;     // TRI.FILL.LEFT_EDGE (diagnostic; independent of the convention)
-  bool inclusive = false;   // under the state's fill convention
+  bool is_top = false;    // TRI.FILL.TOP_EDGE (diagnostic; independent of the convention)
+  bool is_left = false;   // TRI.FILL.LEFT_EDGE (diagnostic; independent of the convention)
+  bool inclusive = false; // under the state's fill convention
 
   // Returns E_ab(s), exact.
   // rule: TRI.EDGE.FUNCTION
   [[nodiscard]] constexpr EdgeValue value_at(Vec2 s) const {
-    return EdgeValue::from_raw(formula::edge_value<std::int64_t>(
-        a.x.raw(), a.y.raw(), b.x.raw(), b.y.raw(), s.x.raw(), s.y.raw()));
+    return EdgeValue::from_raw(formula::edge_value<std::int64_t>(a.x.raw(), a.y.raw(), b.x.raw(),
+                                                                 b.y.raw(), s.x.raw(), s.y.raw()));
   }
 };
 
@@ -74,20 +78,20 @@ struct EdgeSetup {
 }
 
 enum class TriangleStatus {
-  kRasterized,   // passes culling; coverage follows TRI.COVER.SAMPLE
-  kDegenerate,   // zero area after snapping: covers nothing (TRI.DEGENERATE.ZERO_AREA)
-  kCulledBack,   // back-facing and cull == kBack
-  kCulledFront,  // front-facing and cull == kFront
+  kRasterized,  // passes culling; coverage follows TRI.COVER.SAMPLE
+  kDegenerate,  // zero area after snapping: covers nothing (TRI.DEGENERATE.ZERO_AREA)
+  kCulledBack,  // back-facing and cull == kBack
+  kCulledFront, // front-facing and cull == kFront
 };
 [[nodiscard]] std::string_view to_string(TriangleStatus s);
 
 struct TriangleSetup {
   TriangleStatus status = TriangleStatus::kDegenerate;
-  std::array<Vec2, 3> snapped{};     // as given, after snapping
-  bool clockwise = false;            // winding on screen of the snapped vertices
-  bool front_facing = false;         // per RasterState::front_face; zero area is back-facing
-  std::int64_t twice_area = 0;       // signed, 1/65536 px^2; > 0 clockwise
-  std::array<EdgeSetup, 3> edges{};  // clockwise order; valid when status == kRasterized
+  std::array<Vec2, 3> snapped{};    // as given, after snapping
+  bool clockwise = false;           // winding on screen of the snapped vertices
+  bool front_facing = false;        // per RasterState::front_face; zero area is back-facing
+  std::int64_t twice_area = 0;      // signed, 1/65536 px^2; > 0 clockwise
+  std::array<EdgeSetup, 3> edges{}; // clockwise order; valid when status == kRasterized
 };
 
 // Returns the setup of the triangle with snapped vertices v (in the order given).
@@ -103,7 +107,7 @@ struct TriangleSetup {
   t.clockwise = t.twice_area > 0;
   // rule: TRI.DEGENERATE.ZERO_AREA
   if (t.twice_area == 0) {
-    t.front_facing = false;  // zero-area geometry is back-facing (D3D11.3 15.11.1)
+    t.front_facing = false; // zero-area geometry is back-facing (D3D11.3 15.11.1)
     t.status = TriangleStatus::kDegenerate;
     return t;
   }
@@ -141,4 +145,4 @@ struct TriangleSetup {
          inside(t.edges[1], s) && inside(t.edges[2], s);
 }
 
-}  // namespace rastrules
+} // namespace rastrules

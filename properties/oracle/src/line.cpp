@@ -32,7 +32,7 @@ using Point = K::Point_2;
 using Segment = K::Segment_2;
 using Triangle = K::Triangle_2;
 
-const Q kHalf(128);  // h: half a diamond diagonal, 1/2 px in raw units
+const Q kHalf(128); // h: half a diamond diagonal, 1/2 px in raw units
 
 // The Vulkan perturbation e = 2^-100 raw. Small enough: the answer of "does the perturbed
 // segment meet the open diamond / does the perturbed end lie in it" changes with e only where
@@ -42,7 +42,8 @@ const Q kHalf(128);  // h: half a diamond diagonal, 1/2 px in raw units
 // gives the same answers as an infinitesimal one.
 Q vulkan_e() {
   Q e(1);
-  for (int i = 0; i < 100; ++i) e /= Q(2);
+  for (int i = 0; i < 100; ++i)
+    e /= Q(2);
   return e;
 }
 
@@ -65,11 +66,16 @@ Where locate(const Point& p, const Point& c) {
   const Q u = p.x() - c.x(), v = p.y() - c.y();
   const Q au = u < 0 ? -u : u, av = v < 0 ? -v : v;
   const Q l1 = au + av;
-  if (l1 > kHalf) return Where::kOutside;
-  if (l1 < kHalf) return Where::kInterior;
-  if (u == 0) return v > 0 ? Where::kCornerBottom : Where::kCornerTop;
-  if (v == 0) return u > 0 ? Where::kCornerRight : Where::kCornerLeft;
-  if (v > 0) return u < 0 ? Where::kEdgeLowerLeft : Where::kEdgeLowerRight;
+  if (l1 > kHalf)
+    return Where::kOutside;
+  if (l1 < kHalf)
+    return Where::kInterior;
+  if (u == 0)
+    return v > 0 ? Where::kCornerBottom : Where::kCornerTop;
+  if (v == 0)
+    return u > 0 ? Where::kCornerRight : Where::kCornerLeft;
+  if (v > 0)
+    return u < 0 ? Where::kEdgeLowerLeft : Where::kEdgeLowerRight;
   return u < 0 ? Where::kEdgeUpperLeft : Where::kEdgeUpperRight;
 }
 
@@ -79,12 +85,15 @@ Where locate(const Point& p, const Point& c) {
 // rule: LINE.D3D.TEST_AREA
 bool d3d_included(Where w, bool x_major) {
   switch (w) {
-    case Where::kInterior:
-    case Where::kEdgeLowerLeft:
-    case Where::kEdgeLowerRight:
-    case Where::kCornerBottom: return true;
-    case Where::kCornerRight: return !x_major;
-    default: return false;
+  case Where::kInterior:
+  case Where::kEdgeLowerLeft:
+  case Where::kEdgeLowerRight:
+  case Where::kCornerBottom:
+    return true;
+  case Where::kCornerRight:
+    return !x_major;
+  default:
+    return false;
   }
 }
 
@@ -93,18 +102,21 @@ bool d3d_included(Where w, bool x_major) {
 std::optional<std::array<Point, 2>> clip_to_closed_diamond(const Point& a, const Point& b,
                                                            const Point& c) {
   if (a == b) {
-    if (locate(a, c) == Where::kOutside) return std::nullopt;
+    if (locate(a, c) == Where::kOutside)
+      return std::nullopt;
     return std::array<Point, 2>{a, a};
   }
   const Point left(c.x() - kHalf, c.y()), right(c.x() + kHalf, c.y());
   const Point top(c.x(), c.y() - kHalf), bottom(c.x(), c.y() + kHalf);
   // The closed diamond is the union of two closed triangles sharing its horizontal diagonal.
-  const std::array<Triangle, 2> halves = {Triangle(left, top, right), Triangle(left, right, bottom)};
+  const std::array<Triangle, 2> halves = {Triangle(left, top, right),
+                                          Triangle(left, right, bottom)};
   const Segment s(a, b);
   std::vector<Point> pts;
   for (const Triangle& t : halves) {
     const auto x = CGAL::intersection(s, t);
-    if (!x) continue;
+    if (!x)
+      continue;
     if (const Point* p = boost::get<Point>(&*x)) {
       pts.push_back(*p);
     } else if (const Segment* q = boost::get<Segment>(&*x)) {
@@ -112,14 +124,14 @@ std::optional<std::array<Point, 2>> clip_to_closed_diamond(const Point& a, const
       pts.push_back(q->target());
     }
   }
-  if (pts.empty()) return std::nullopt;
+  if (pts.empty())
+    return std::nullopt;
   // All points lie on s; the union of the pieces is convex (s meets a convex set), so it is
   // the span of the extreme points along s.
   const Q dx = b.x() - a.x(), dy = b.y() - a.y();
   auto along = [&](const Point& p) { return (p.x() - a.x()) * dx + (p.y() - a.y()) * dy; };
-  const auto [mn, mx] = std::minmax_element(pts.begin(), pts.end(), [&](const Point& p, const Point& q) {
-    return along(p) < along(q);
-  });
+  const auto [mn, mx] = std::minmax_element(
+      pts.begin(), pts.end(), [&](const Point& p, const Point& q) { return along(p) < along(q); });
   return std::array<Point, 2>{*mn, *mx};
 }
 
@@ -134,21 +146,25 @@ Point midpoint(const Point& p, const Point& q) {
 template <class Included>
 bool meets(const Point& a, const Point& b, const Point& c, Included included) {
   const auto part = clip_to_closed_diamond(a, b, c);
-  if (!part) return false;
+  if (!part)
+    return false;
   const auto& [p, q] = *part;
   return included(locate(p, c)) || included(locate(q, c)) || included(locate(midpoint(p, q), c));
 }
 
-Point to_point(const LineRaw& r) { return Point(Q(r[0]), Q(r[1])); }
+Point to_point(const LineRaw& r) {
+  return Point(Q(r[0]), Q(r[1]));
+}
 
-}  // namespace
+} // namespace
 
 bool aliased_line_covers(const LineRaw& ra, const LineRaw& rb, const std::string& mode,
                          std::int64_t px, std::int64_t py) {
   const Point c(Q(px * 256 + 128), Q(py * 256 + 128));
   const Point a = to_point(ra), b = to_point(rb);
   // rule: LINE.ZERO_LENGTH
-  if (a == b) return false;
+  if (a == b)
+    return false;
   if (mode == "d3d-diamond") {
     // rule: LINE.MAJOR.AXIS
     const Q dx = b.x() - a.x(), dy = b.y() - a.y();
@@ -187,4 +203,4 @@ std::vector<std::array<std::int32_t, 2>> aliased_line_pixels(const LineRaw& a, c
   return out;
 }
 
-}  // namespace rastrules::oracle
+} // namespace rastrules::oracle

@@ -36,15 +36,17 @@ struct Field {
     return {x.a * y.a + x.b * y.b * D, x.a * y.b + x.b * y.a};
   }
   Ext div(const Ext& x, const Ext& y) const {
-    const Q n = y.a * y.a - y.b * y.b * D;  // y * conj(y), rational, nonzero for y != 0
+    const Q n = y.a * y.a - y.b * y.b * D; // y * conj(y), rational, nonzero for y != 0
     const Ext c = mul(x, Ext{y.a, -y.b});
     return {c.a / n, c.b / n};
   }
   int sign(const Ext& x) const {
     const int sa = CGAL::sign(x.a);
     const int sb = CGAL::sign(x.b);
-    if (sb == 0) return sa;
-    if (sa == 0 || sa == sb) return sb;
+    if (sb == 0)
+      return sa;
+    if (sa == 0 || sa == sb)
+      return sb;
     // Opposite signs: the larger magnitude wins; a^2 == b^2 D is impossible here (D is not a
     // perfect square whenever b != 0).
     return (x.a * x.a > x.b * x.b * D) ? sa : sb;
@@ -54,7 +56,9 @@ struct Field {
   }
 };
 
-Ext rat(const Q& q) { return {q, Q(0)}; }
+Ext rat(const Q& q) {
+  return {q, Q(0)};
+}
 
 struct P2 {
   Ext x;
@@ -64,8 +68,10 @@ struct P2 {
 // Returns the integer square root when v is a perfect square, else -1.
 std::int64_t exact_root(std::int64_t v) {
   std::int64_t r = static_cast<std::int64_t>(std::sqrt(static_cast<long double>(v)));
-  while (r * r > v) --r;
-  while ((r + 1) * (r + 1) <= v) ++r;
+  while (r * r > v)
+    --r;
+  while ((r + 1) * (r + 1) <= v)
+    ++r;
   return r * r == v ? r : -1;
 }
 
@@ -87,11 +93,13 @@ std::vector<P2> clip_axis(const Field& F, const std::vector<P2>& poly, bool on_x
     const Ext vq = val(q);
     const bool pin = F.sign(vp) <= 0;
     const bool qin = F.sign(vq) <= 0;
-    if (pin) out.push_back(p);
+    if (pin)
+      out.push_back(p);
     if (pin != qin) {
       // The point of segment pq where coord == bound: p + t (q - p), t = vp / (vp - vq).
       const Ext t = F.div(vp, F.sub(vp, vq));
-      out.push_back(P2{F.add(p.x, F.mul(t, F.sub(q.x, p.x))), F.add(p.y, F.mul(t, F.sub(q.y, p.y)))});
+      out.push_back(
+          P2{F.add(p.x, F.mul(t, F.sub(q.x, p.x))), F.add(p.y, F.mul(t, F.sub(q.y, p.y)))});
     }
   }
   return out;
@@ -105,13 +113,14 @@ Ext polygon_area(const Field& F, const std::vector<P2>& poly) {
     const P2& q = poly[(i + 1) % n];
     s = F.add(s, F.sub(F.mul(p.x, q.y), F.mul(q.x, p.y)));
   }
-  if (F.sign(s) < 0) s = F.sub(rat(Q(0)), s);
+  if (F.sign(s) < 0)
+    s = F.sub(rat(Q(0)), s);
   return F.div(s, rat(Q(2)));
 }
 
 struct Line {
   Field F;
-  std::vector<P2> rect;  // empty for a zero-length line
+  std::vector<P2> rect; // empty for a zero-length line
 };
 
 // rule: LINE.AA.RECT, LINE.AA.ZERO_LENGTH
@@ -120,12 +129,13 @@ Line make_line(const AARaw& a, const AARaw& b) {
   const std::int64_t dxr = b[0] - a[0];
   const std::int64_t dyr = b[1] - a[1];
   const std::int64_t Dr = dxr * dxr + dyr * dyr;
-  l.F.D = Q(static_cast<double>(Dr));  // < 2^50: exact in a double
-  if (Dr == 0) return l;               // a 1 x 0 rectangle: area 0 against every square
+  l.F.D = Q(static_cast<double>(Dr)); // < 2^50: exact in a double
+  if (Dr == 0)
+    return l; // a 1 x 0 rectangle: area 0 against every square
   // Pixel units: p = raw / 256. Unit normal u = (-dy, dx) / L with L = sqrt(Dr) / 256 and
   // (dx, dy) = (dxr, dyr) / 256, so u = (-dyr, dxr) / sqrt(Dr) = (-dyr, dxr) * sqrt(Dr) / Dr.
   const std::int64_t r = exact_root(Dr);
-  Ext inv_root;  // 1 / sqrt(Dr)
+  Ext inv_root; // 1 / sqrt(Dr)
   if (r >= 0) {
     inv_root = rat(Q(1) / Q(static_cast<double>(r)));
   } else {
@@ -137,8 +147,10 @@ Line make_line(const AARaw& a, const AARaw& b) {
   const Ext hx = l.F.mul(ux, half);
   const Ext hy = l.F.mul(uy, half);
   const Q q256(256);
-  const Ext ax = rat(Q(static_cast<double>(a[0])) / q256), ay = rat(Q(static_cast<double>(a[1])) / q256);
-  const Ext bx = rat(Q(static_cast<double>(b[0])) / q256), by = rat(Q(static_cast<double>(b[1])) / q256);
+  const Ext ax = rat(Q(static_cast<double>(a[0])) / q256),
+            ay = rat(Q(static_cast<double>(a[1])) / q256);
+  const Ext bx = rat(Q(static_cast<double>(b[0])) / q256),
+            by = rat(Q(static_cast<double>(b[1])) / q256);
   const Field& F = l.F;
   l.rect = {P2{F.add(ax, hx), F.add(ay, hy)}, P2{F.add(bx, hx), F.add(by, hy)},
             P2{F.sub(bx, hx), F.sub(by, hy)}, P2{F.sub(ax, hx), F.sub(ay, hy)}};
@@ -148,7 +160,8 @@ Line make_line(const AARaw& a, const AARaw& b) {
 // Area of the rectangle inside the square of half-width `half` (pixels) centred on the centre
 // of pixel (px, py).
 Ext area_in_square(const Line& l, std::int32_t px, std::int32_t py, const Q& half) {
-  if (l.rect.empty()) return rat(Q(0));
+  if (l.rect.empty())
+    return rat(Q(0));
   const Q cx = Q(px) + Q(1, 2);
   const Q cy = Q(py) + Q(1, 2);
   std::vector<P2> p = l.rect;
@@ -156,7 +169,8 @@ Ext area_in_square(const Line& l, std::int32_t px, std::int32_t py, const Q& hal
   p = clip_axis(l.F, p, true, cx - half, -1);
   p = clip_axis(l.F, p, false, cy + half, +1);
   p = clip_axis(l.F, p, false, cy - half, -1);
-  if (p.size() < 3) return rat(Q(0));
+  if (p.size() < 3)
+    return rat(Q(0));
   return polygon_area(l.F, p);
 }
 
@@ -172,7 +186,7 @@ Ext coverage(const Line& l, std::int32_t px, std::int32_t py) {
   return sum;
 }
 
-}  // namespace
+} // namespace
 
 AACheck aa_check(const AARaw& a, const AARaw& b, std::int32_t px, std::int32_t py,
                  std::uint32_t q16) {
@@ -191,23 +205,24 @@ AACheck aa_check(const AARaw& a, const AARaw& b, std::int32_t px, std::int32_t p
   return r;
 }
 
-int aa_compare(const AARaw& a, const AARaw& b, std::int32_t px, std::int32_t py,
-               std::int64_t num, std::int64_t den) {
+int aa_compare(const AARaw& a, const AARaw& b, std::int32_t px, std::int32_t py, std::int64_t num,
+               std::int64_t den) {
   const Line l = make_line(a, b);
   const Ext c = coverage(l, px, py);
   return l.F.sign(l.F.sub(c, rat(Q(static_cast<double>(num)) / Q(static_cast<double>(den)))));
 }
 
 // rule: LINE.AA.FRAGMENT
-std::vector<std::array<std::int32_t, 2>> aa_pixels(const AARaw& a, const AARaw& b,
-                                                   std::int32_t w, std::int32_t h) {
+std::vector<std::array<std::int32_t, 2>> aa_pixels(const AARaw& a, const AARaw& b, std::int32_t w,
+                                                   std::int32_t h) {
   const Line l = make_line(a, b);
   std::vector<std::array<std::int32_t, 2>> out;
   for (std::int32_t y = 0; y < h; ++y) {
     for (std::int32_t x = 0; x < w; ++x) {
       // Coverage > 0 iff the rectangle meets the largest square R4 in positive area (every
       // term is >= 0 and R0..R3 lie inside R4).
-      if (l.F.sign(area_in_square(l, x, y, Q(3, 2))) > 0) out.push_back({x, y});
+      if (l.F.sign(area_in_square(l, x, y, Q(3, 2))) > 0)
+        out.push_back({x, y});
     }
   }
   return out;
@@ -217,10 +232,11 @@ std::vector<std::array<std::int32_t, 2>> aa_pixels(const AARaw& a, const AARaw& 
 bool aa_blend_ok(std::uint32_t src, std::uint32_t sa, std::uint32_t dst, std::uint32_t cov,
                  std::uint32_t out) {
   const Q alpha = Q(static_cast<int>(sa), 255) * Q(static_cast<double>(cov)) / Q(65536);
-  const Q exact = Q(static_cast<int>(dst)) + (Q(static_cast<int>(src)) - Q(static_cast<int>(dst))) * alpha;
+  const Q exact =
+      Q(static_cast<int>(dst)) + (Q(static_cast<int>(src)) - Q(static_cast<int>(dst))) * alpha;
   // out is the rounding, halves up: out - 1/2 <= exact < out + 1/2.
   const Q o(static_cast<int>(out));
   return o - Q(1, 2) <= exact && exact < o + Q(1, 2);
 }
 
-}  // namespace rastrules::oracle
+} // namespace rastrules::oracle

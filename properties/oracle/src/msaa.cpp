@@ -24,7 +24,9 @@
 namespace rastrules::oracle::msaa {
 namespace {
 
-mpq_class Q(std::int64_t v) { return mpq_class(mpz_class(static_cast<long>(v))); }
+mpq_class Q(std::int64_t v) {
+  return mpq_class(mpz_class(static_cast<long>(v)));
+}
 
 std::int64_t to_i64(const mpq_class& q) {
   if (q.get_den() != 1 || !q.get_num().fits_slong_p())
@@ -32,7 +34,9 @@ std::int64_t to_i64(const mpq_class& q) {
   return static_cast<std::int64_t>(q.get_num().get_si());
 }
 
-std::uint32_t bit(std::size_t k) { return std::uint32_t{1} << k; }
+std::uint32_t bit(std::size_t k) {
+  return std::uint32_t{1} << k;
+}
 
 std::uint32_t full(std::size_t n) {
   return n >= 32 ? 0xFFFFFFFFu : static_cast<std::uint32_t>((std::uint64_t{1} << n) - 1u);
@@ -43,7 +47,8 @@ void check_pattern(const std::vector<Offset>& pattern) {
   if (pattern.empty() || pattern.size() > 16)
     throw std::invalid_argument("oracle: a pattern has 1 to 16 samples");
   for (const Offset& o : pattern) {
-    if (!on_grid(o)) throw std::invalid_argument("oracle: sample offset off the [-8, 7] grid");
+    if (!on_grid(o))
+      throw std::invalid_argument("oracle: sample offset off the [-8, 7] grid");
   }
 }
 
@@ -86,15 +91,18 @@ mpq_class dist2(const Offset& o) {
 std::optional<std::size_t> nearest(std::uint32_t set, const std::vector<Offset>& pattern) {
   std::optional<std::size_t> best;
   for (std::size_t k = 0; k < pattern.size(); ++k) {
-    if ((set & bit(k)) == 0) continue;
-    if (!best || dist2(pattern[k]) < dist2(pattern[*best])) best = k;
+    if ((set & bit(k)) == 0)
+      continue;
+    if (!best || dist2(pattern[k]) < dist2(pattern[*best]))
+      best = k;
   }
   return best;
 }
 
 std::optional<std::size_t> first(std::uint32_t set, std::size_t n) {
   for (std::size_t k = 0; k < n; ++k) {
-    if (set & bit(k)) return k;
+    if (set & bit(k))
+      return k;
   }
   return std::nullopt;
 }
@@ -106,12 +114,14 @@ struct Unit {
   // 3 aliased line in every sample (v[0] -> v[1]), 4 aliased line, one sample.
   int kind = 0;
   std::vector<Raw2> v;
-  std::string mode;  // quad or aliased line mode
+  std::string mode; // quad or aliased line mode
 };
 
 std::string aliased_mode(const std::string& line_mode) {
-  if (line_mode == "d3d") return "d3d-diamond";
-  if (line_mode == "vulkan-bresenham") return "vulkan-bresenham";
+  if (line_mode == "d3d")
+    return "d3d-diamond";
+  if (line_mode == "vulkan-bresenham")
+    return "vulkan-bresenham";
   throw std::invalid_argument("oracle: unknown line mode '" + line_mode + "'");
 }
 
@@ -121,17 +131,20 @@ std::vector<Unit> units_of(const Primitive& p, const Input& in) {
   const std::size_t n = in.pattern.size();
   std::vector<Unit> out;
   if (p.type == "triangle") {
-    if (p.v.size() != 3) throw std::invalid_argument("oracle: a triangle has 3 vertices");
+    if (p.v.size() != 3)
+      throw std::invalid_argument("oracle: a triangle has 3 vertices");
     out.push_back(Unit{std::nullopt, 0, p.v, ""});
     return out;
   }
   if (p.type == "point") {
-    if (p.v.size() != 1) throw std::invalid_argument("oracle: a point has 1 vertex");
+    if (p.v.size() != 1)
+      throw std::invalid_argument("oracle: a point has 1 vertex");
     out.push_back(Unit{std::nullopt, 1, p.v, ""});
     return out;
   }
   const bool strip = p.type == "line_strip";
-  if (!strip && p.type != "line") throw std::invalid_argument("oracle: unknown type " + p.type);
+  if (!strip && p.type != "line")
+    throw std::invalid_argument("oracle: unknown type " + p.type);
   if (strip ? p.v.size() < 2 : p.v.size() != 2)
     throw std::invalid_argument("oracle: bad line vertex count");
   if (p.aa && in.line_mode != "d3d")
@@ -147,7 +160,9 @@ std::vector<Unit> units_of(const Primitive& p, const Input& in) {
     kind = 2;
     mode = "quad-wide";
   } else if (in.line_mode == "d3d" || in.line_mode == "vulkan-bresenham") {
-    if (p.aa) throw std::invalid_argument("oracle: antialiased lines with one sample are not modelled here");
+    if (p.aa)
+      throw std::invalid_argument(
+          "oracle: antialiased lines with one sample are not modelled here");
     kind = n > 1 ? 3 : 4;
     mode = aliased_mode(in.line_mode);
     if (n > 1 && in.shading == "sample")
@@ -156,9 +171,11 @@ std::vector<Unit> units_of(const Primitive& p, const Input& in) {
     throw std::invalid_argument("oracle: unknown line mode '" + in.line_mode + "'");
   }
   for (std::size_t k = 0; k + 1 < p.v.size(); ++k) {
-    out.push_back(Unit{strip ? std::optional<std::uint32_t>(static_cast<std::uint32_t>(k))
-                             : std::nullopt,
-                       kind, {p.v[k], p.v[k + 1]}, mode});
+    out.push_back(
+        Unit{strip ? std::optional<std::uint32_t>(static_cast<std::uint32_t>(k)) : std::nullopt,
+             kind,
+             {p.v[k], p.v[k + 1]},
+             mode});
   }
   return out;
 }
@@ -167,16 +184,20 @@ std::vector<Unit> units_of(const Primitive& p, const Input& in) {
 // rule: MSAA.COVER.SAMPLE, MSAA.POINT.PER_SAMPLE, MSAA.LINE.MODE
 std::uint32_t unit_mask(const Unit& u, const Input& in, std::int64_t px, std::int64_t py) {
   switch (u.kind) {
-    case 0: return triangle_mask({u.v[0], u.v[1], u.v[2]}, in.state, px, py, in.pattern);
-    case 1: return point_mask(u.v[0], in.state.fill, px, py, in.pattern);
-    case 2: return quad_line_mask(u.v[0], u.v[1], u.mode, in.state.fill, px, py, in.pattern);
-    default: {
-      // An aliased line: the pixel is the line's (centre test of its own rules), and then every
-      // sample of the pattern is covered.
-      const auto [lo, hi] = box_of(u.v.begin(), u.v.end());
-      if (misses_box(px, py, {lo[0] - 512, lo[1] - 512}, {hi[0] + 512, hi[1] + 512})) return 0;
-      return aliased_line_covers(u.v[0], u.v[1], u.mode, px, py) ? full(in.pattern.size()) : 0;
-    }
+  case 0:
+    return triangle_mask({u.v[0], u.v[1], u.v[2]}, in.state, px, py, in.pattern);
+  case 1:
+    return point_mask(u.v[0], in.state.fill, px, py, in.pattern);
+  case 2:
+    return quad_line_mask(u.v[0], u.v[1], u.mode, in.state.fill, px, py, in.pattern);
+  default: {
+    // An aliased line: the pixel is the line's (centre test of its own rules), and then every
+    // sample of the pattern is covered.
+    const auto [lo, hi] = box_of(u.v.begin(), u.v.end());
+    if (misses_box(px, py, {lo[0] - 512, lo[1] - 512}, {hi[0] + 512, hi[1] + 512}))
+      return 0;
+    return aliased_line_covers(u.v[0], u.v[1], u.mode, px, py) ? full(in.pattern.size()) : 0;
+  }
   }
 }
 
@@ -185,34 +206,42 @@ struct Eval {
   mpq_class x, y;
 };
 
-}  // namespace
+} // namespace
 
-bool on_grid(const Offset& o) { return o.x >= -8 && o.x <= 7 && o.y >= -8 && o.y <= 7; }
+bool on_grid(const Offset& o) {
+  return o.x >= -8 && o.x <= 7 && o.y >= -8 && o.y <= 7;
+}
 
 // rule: MSAA.PATTERN.STANDARD
 std::vector<Offset> standard_pattern(std::uint32_t n) {
   // Typed from the table of spec/rules/msaa.md, index for index.
   switch (n) {
-    case 1: return {{0, 0}};
-    case 2: return {{4, 4}, {-4, -4}};
-    case 4: return {{-2, -6}, {6, -2}, {-6, 2}, {2, 6}};
-    case 8: return {{1, -3}, {-1, 3}, {5, 1}, {-3, -5}, {-5, 5}, {-7, -1}, {3, 7}, {7, -7}};
-    case 16:
-      return {{1, 1},   {-1, -3}, {-3, 2}, {4, -1},  {-5, -2}, {2, 5},  {5, 3},  {3, -5},
-              {-2, 6},  {0, -7},  {-4, -6}, {-6, 4}, {-8, 0},  {7, -4}, {6, 7},  {-7, -8}};
-    default: throw std::invalid_argument("oracle: no standard pattern of " + std::to_string(n));
+  case 1:
+    return {{0, 0}};
+  case 2:
+    return {{4, 4}, {-4, -4}};
+  case 4:
+    return {{-2, -6}, {6, -2}, {-6, 2}, {2, 6}};
+  case 8:
+    return {{1, -3}, {-1, 3}, {5, 1}, {-3, -5}, {-5, 5}, {-7, -1}, {3, 7}, {7, -7}};
+  case 16:
+    return {{1, 1},  {-1, -3}, {-3, 2},  {4, -1}, {-5, -2}, {2, 5},  {5, 3}, {3, -5},
+            {-2, 6}, {0, -7},  {-4, -6}, {-6, 4}, {-8, 0},  {7, -4}, {6, 7}, {-7, -8}};
+  default:
+    throw std::invalid_argument("oracle: no standard pattern of " + std::to_string(n));
   }
 }
 
 // rule: MSAA.PATTERN.CENTER
 std::vector<Offset> center_pattern(std::uint32_t n) {
-  (void)standard_pattern(n);  // the same counts
+  (void)standard_pattern(n); // the same counts
   return std::vector<Offset>(n, Offset{0, 0});
 }
 
 // rule: MSAA.SAMPLE.POSITION, MSAA.PATTERN.GRID
 Raw2 sample_raw(std::int64_t px, std::int64_t py, const Offset& o) {
-  if (!on_grid(o)) throw std::invalid_argument("oracle: sample offset off the [-8, 7] grid");
+  if (!on_grid(o))
+    throw std::invalid_argument("oracle: sample offset off the [-8, 7] grid");
   const auto p = sample_px(px, py, o);
   return {to_i64(p[0] * 256), to_i64(p[1] * 256)};
 }
@@ -222,22 +251,26 @@ std::uint32_t triangle_mask(const std::array<Raw2, 3>& v, const State& state, st
                             std::int64_t py, const std::vector<Offset>& pattern) {
   check_pattern(pattern);
   const auto [lo, hi] = box_of(v.begin(), v.end());
-  if (misses_box(px, py, lo, hi)) return 0;  // no sample can lie in the closed triangle
+  if (misses_box(px, py, lo, hi))
+    return 0; // no sample can lie in the closed triangle
   std::uint32_t m = 0;
   for (std::size_t k = 0; k < pattern.size(); ++k) {
-    if (covers(v, sample_raw(px, py, pattern[k]), state)) m |= bit(k);
+    if (covers(v, sample_raw(px, py, pattern[k]), state))
+      m |= bit(k);
   }
   return m;
 }
 
 // rule: MSAA.POINT.PER_SAMPLE
-std::uint32_t point_mask(const Raw2& c, const std::string& fill, std::int64_t px,
-                         std::int64_t py, const std::vector<Offset>& pattern) {
+std::uint32_t point_mask(const Raw2& c, const std::string& fill, std::int64_t px, std::int64_t py,
+                         const std::vector<Offset>& pattern) {
   check_pattern(pattern);
-  if (misses_box(px, py, {c[0] - 128, c[1] - 128}, {c[0] + 128, c[1] + 128})) return 0;
+  if (misses_box(px, py, {c[0] - 128, c[1] - 128}, {c[0] + 128, c[1] + 128}))
+    return 0;
   std::uint32_t m = 0;
   for (std::size_t k = 0; k < pattern.size(); ++k) {
-    if (point_covers(c, sample_raw(px, py, pattern[k]), fill)) m |= bit(k);
+    if (point_covers(c, sample_raw(px, py, pattern[k]), fill))
+      m |= bit(k);
   }
   return m;
 }
@@ -248,12 +281,15 @@ std::uint32_t quad_line_mask(const Raw2& a, const Raw2& b, const std::string& mo
                              const std::vector<Offset>& pattern) {
   check_pattern(pattern);
   const std::vector<Raw2> corners = quad_line_corners(a, b, mode);
-  if (corners.empty()) return 0;  // LINE.QUAD.ZERO_LENGTH
+  if (corners.empty())
+    return 0; // LINE.QUAD.ZERO_LENGTH
   const auto [lo, hi] = box_of(corners.begin(), corners.end());
-  if (misses_box(px, py, lo, hi)) return 0;
+  if (misses_box(px, py, lo, hi))
+    return 0;
   std::uint32_t m = 0;
   for (std::size_t k = 0; k < pattern.size(); ++k) {
-    if (quad_line_covers(a, b, mode, sample_raw(px, py, pattern[k]), fill)) m |= bit(k);
+    if (quad_line_covers(a, b, mode, sample_raw(px, py, pattern[k]), fill))
+      m |= bit(k);
   }
   return m;
 }
@@ -270,21 +306,26 @@ CentroidPoint centroid(const std::string& rule, std::uint32_t c, std::uint32_t m
   const CentroidPoint centre_none{Offset{0, 0}, Branch::kNoneCoveredCenter};
   if (rule == "d3d11") {
     // 1. Every sample covered (before the mask): the pixel centre.
-    if (c == all) return centre_full;
+    if (c == all)
+      return centre_full;
     // 2. The first sample, in index order, covered and in the mask.
-    if (const auto k = first(c & m, n)) return CentroidPoint{pattern[*k], Branch::kFirstCovered};
+    if (const auto k = first(c & m, n))
+      return CentroidPoint{pattern[*k], Branch::kFirstCovered};
     // 3. Nothing covered: the first sample of a partial mask, or the centre for a full mask
     //    (and for an empty one, which has no sample).
     if (m != all) {
-      if (const auto k = first(m, n)) return CentroidPoint{pattern[*k], Branch::kNoneCoveredMaskSample};
+      if (const auto k = first(m, n))
+        return CentroidPoint{pattern[*k], Branch::kNoneCoveredMaskSample};
     }
     return centre_none;
   }
   if (rule == "d3d10") {
-    const std::uint32_t cm = c & m;  // the mask is applied first
-    if (c == all && m == all) return centre_full;
+    const std::uint32_t cm = c & m; // the mask is applied first
+    if (c == all && m == all)
+      return centre_full;
     if (cm == 0) {
-      if (m == all) return centre_none;
+      if (m == all)
+        return centre_none;
       if (const auto k = nearest(m, pattern))
         return CentroidPoint{pattern[*k], Branch::kNoneCoveredMaskSample};
       return centre_none;
@@ -307,9 +348,11 @@ bool centre_in_hull(const std::vector<Offset>& pattern) {
   };
   const std::size_t n = pattern.size();
   for (std::size_t i = 0; i < n; ++i) {
-    if (pattern[i] == Offset{0, 0}) return true;
+    if (pattern[i] == Offset{0, 0})
+      return true;
     for (std::size_t j = i + 1; j < n; ++j) {
-      if (on_segment(pattern[i], pattern[j])) return true;
+      if (on_segment(pattern[i], pattern[j]))
+        return true;
       for (std::size_t k = j + 1; k < n; ++k) {
         const std::int64_t d0 = cross(pattern[i], pattern[j], 0, 0);
         const std::int64_t d1 = cross(pattern[j], pattern[k], 0, 0);
@@ -318,7 +361,8 @@ bool centre_in_hull(const std::vector<Offset>& pattern) {
           // Inside or on the closed triangle; a degenerate triple is covered by the segment
           // tests (all three crosses 0 with the centre off every segment means the centre lies
           // on the line but outside the points: reject that case).
-          if (d0 == 0 && d1 == 0 && d2 == 0) continue;
+          if (d0 == 0 && d1 == 0 && d2 == 0)
+            continue;
           return true;
         }
       }
@@ -329,17 +373,20 @@ bool centre_in_hull(const std::vector<Offset>& pattern) {
 
 // rule: MSAA.RESOLVE.AVERAGE
 Rgba resolve_pixel(const std::vector<Rgba>& samples) {
-  if (samples.empty()) throw std::invalid_argument("oracle: resolve of no samples");
+  if (samples.empty())
+    throw std::invalid_argument("oracle: resolve of no samples");
   Rgba out{};
   for (std::size_t ch = 0; ch < 4; ++ch) {
     mpq_class sum = 0;
-    for (const Rgba& s : samples) sum += s[ch];
+    for (const Rgba& s : samples)
+      sum += s[ch];
     const mpq_class avg = sum / Q(static_cast<std::int64_t>(samples.size()));
     // Nearest integer, ties to even: fl = floor(avg), frac = avg - fl.
-    const mpz_class fl = avg.get_num() / avg.get_den();  // avg >= 0: truncation is floor
+    const mpz_class fl = avg.get_num() / avg.get_den(); // avg >= 0: truncation is floor
     const mpq_class frac = avg - mpq_class(fl);
     mpz_class r = fl;
-    if (frac > mpq_class(1, 2) || (frac == mpq_class(1, 2) && fl % 2 != 0)) r = fl + 1;
+    if (frac > mpq_class(1, 2) || (frac == mpq_class(1, 2) && fl % 2 != 0))
+      r = fl + 1;
     out[ch] = static_cast<std::uint8_t>(r.get_ui());
   }
   return out;
@@ -349,13 +396,14 @@ Rgba resolve_pixel(const std::vector<Rgba>& samples) {
 // rule: MSAA.QUAD.ALIGN, MSAA.QUAD.LANE, MSAA.DERIV.FINE, MSAA.DERIV.COARSE
 std::vector<Fragment> render(const Input& in) {
   check_pattern(in.pattern);
-  if (in.width < 0 || in.height < 0) throw std::invalid_argument("oracle: negative target size");
+  if (in.width < 0 || in.height < 0)
+    throw std::invalid_argument("oracle: negative target size");
   if (in.shading != "pixel" && in.shading != "sample")
     throw std::invalid_argument("oracle: unknown shading '" + in.shading + "'");
   if (in.derivatives != "none" && in.derivatives != "fine" && in.derivatives != "coarse")
     throw std::invalid_argument("oracle: unknown derivatives '" + in.derivatives + "'");
   const std::size_t n = in.pattern.size();
-  const std::uint32_t m = in.sample_mask & full(n);  // the mask restricted to the pattern
+  const std::uint32_t m = in.sample_mask & full(n); // the mask restricted to the pattern
   const bool per_sample = in.shading == "sample";
   const bool quads = in.quads || in.derivatives != "none";
   std::vector<Fragment> out;
@@ -364,11 +412,12 @@ std::vector<Fragment> render(const Input& in) {
       // Coverage of every pixel this unit may need: the target, and the lanes of quads that
       // stick out of it (odd width or height).
       const std::int32_t qw = in.width + (in.width & 1), qh = in.height + (in.height & 1);
-      std::map<std::pair<std::int32_t, std::int32_t>, std::uint32_t> cov;  // (y, x) -> c
+      std::map<std::pair<std::int32_t, std::int32_t>, std::uint32_t> cov; // (y, x) -> c
       const auto c_at = [&](std::int32_t x, std::int32_t y) -> std::uint32_t {
         const auto key = std::make_pair(y, x);
         const auto it = cov.find(key);
-        if (it != cov.end()) return it->second;
+        if (it != cov.end())
+          return it->second;
         return cov[key] = unit_mask(u, in, x, y);
       };
       // The shading invocations: (x, y, sample or none) -> mask after the sample mask.
@@ -377,7 +426,8 @@ std::vector<Fragment> render(const Input& in) {
       const std::vector<std::optional<std::uint32_t>> indices = [&] {
         std::vector<std::optional<std::uint32_t>> v;
         if (per_sample) {
-          for (std::uint32_t k = 0; k < n; ++k) v.emplace_back(k);
+          for (std::uint32_t k = 0; k < n; ++k)
+            v.emplace_back(k);
         } else {
           v.emplace_back(std::nullopt);
         }
@@ -385,7 +435,8 @@ std::vector<Fragment> render(const Input& in) {
       }();
       // The live mask of pixel (x, y) for one index: what the pixel writes there.
       const auto live = [&](std::int32_t x, std::int32_t y, const std::optional<std::uint32_t>& k) {
-        if (x >= in.width || y >= in.height) return std::uint32_t{0};  // RASTER.TARGET.CLIP
+        if (x >= in.width || y >= in.height)
+          return std::uint32_t{0}; // RASTER.TARGET.CLIP
         const std::uint32_t a = c_at(x, y) & m;
         return k ? (a & bit(*k)) : a;
       };
@@ -419,11 +470,13 @@ std::vector<Fragment> render(const Input& in) {
               a[l] = live(lanes[l][0], lanes[l][1], k);
               touched = touched || a[l] != 0;
             }
-            if (!touched) continue;
+            if (!touched)
+              continue;
             std::optional<std::array<Deriv, 4>> d;
             if (in.derivatives != "none") {
               std::array<Eval, 4> e;
-              for (std::size_t l = 0; l < 4; ++l) e[l] = eval(lanes[l][0], lanes[l][1], a[l], k);
+              for (std::size_t l = 0; l < 4; ++l)
+                e[l] = eval(lanes[l][0], lanes[l][1], a[l], k);
               std::array<Deriv, 4> dd{};
               for (std::size_t l = 0; l < 4; ++l) {
                 // Fine: ddx across the lane's row, ddy across its column; coarse: lane 0's.
@@ -436,9 +489,11 @@ std::vector<Fragment> render(const Input& in) {
             }
             for (std::size_t l = 0; l < 4; ++l) {
               const std::int32_t x = lanes[l][0], y = lanes[l][1];
-              if (x >= in.width || y >= in.height) continue;  // not listed (MSAA.QUAD.HELPER)
+              if (x >= in.width || y >= in.height)
+                continue; // not listed (MSAA.QUAD.HELPER)
               const bool helper = a[l] == 0;
-              if (helper && !quads) continue;
+              if (helper && !quads)
+                continue;
               Fragment f;
               f.prim = static_cast<std::uint32_t>(p);
               f.x = x;
@@ -447,8 +502,10 @@ std::vector<Fragment> render(const Input& in) {
               f.seg = u.seg;
               f.sample = k;
               f.helper = helper;
-              if (in.centroid) f.centroid = centroid(*in.centroid, lane_c(x, y, a[l]), m, in.pattern);
-              if (d) f.derivatives = (*d)[l];
+              if (in.centroid)
+                f.centroid = centroid(*in.centroid, lane_c(x, y, a[l]), m, in.pattern);
+              if (d)
+                f.derivatives = (*d)[l];
               unit_frags.push_back(f);
             }
           }
@@ -474,18 +531,21 @@ std::vector<Rgba> resolve(const Input& in, const std::vector<Fragment>& fragment
   const auto w = static_cast<std::size_t>(in.width), h = static_cast<std::size_t>(in.height);
   std::vector<std::vector<Rgba>> samples(w * h, std::vector<Rgba>(n, in.clear_color));
   for (const Fragment& f : fragments) {
-    if (f.helper) continue;  // helper lanes write nothing
+    if (f.helper)
+      continue; // helper lanes write nothing
     if (f.prim >= in.primitives.size() || f.x < 0 || f.y < 0 || f.x >= in.width || f.y >= in.height)
       throw std::invalid_argument("oracle: fragment outside the scene");
     auto& px = samples[static_cast<std::size_t>(f.y) * w + static_cast<std::size_t>(f.x)];
     for (std::size_t k = 0; k < n; ++k) {
-      if (f.mask & bit(k)) px[k] = in.primitives[f.prim].color;
+      if (f.mask & bit(k))
+        px[k] = in.primitives[f.prim].color;
     }
   }
   std::vector<Rgba> out;
   out.reserve(w * h);
-  for (const auto& s : samples) out.push_back(resolve_pixel(s));
+  for (const auto& s : samples)
+    out.push_back(resolve_pixel(s));
   return out;
 }
 
-}  // namespace rastrules::oracle::msaa
+} // namespace rastrules::oracle::msaa

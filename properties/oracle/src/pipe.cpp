@@ -33,10 +33,13 @@ using Z = mpz_class;
 // Exact rationals and rounding
 
 Q exact(double d) {
-  if (!std::isfinite(d)) throw std::logic_error("oracle: exact() of a non-finite value");
-  return Q(d);  // mpq_set_d is exact
+  if (!std::isfinite(d))
+    throw std::logic_error("oracle: exact() of a non-finite value");
+  return Q(d); // mpq_set_d is exact
 }
-Q exact_i(std::int64_t v) { return Q(Z(static_cast<long>(v))); }
+Q exact_i(std::int64_t v) {
+  return Q(Z(static_cast<long>(v)));
+}
 
 // 2^e as a rational, any sign of e.
 Q pow2(long e) {
@@ -56,7 +59,7 @@ Q pow2(long e) {
 long floor_log2(const Q& a) {
   const long nb = static_cast<long>(mpz_sizeinbase(a.get_num_mpz_t(), 2));
   const long db = static_cast<long>(mpz_sizeinbase(a.get_den_mpz_t(), 2));
-  const long e = nb - db;  // a in [2^(e - 1), 2^(e + 1))
+  const long e = nb - db; // a in [2^(e - 1), 2^(e + 1))
   return a >= pow2(e) ? e : e - 1;
 }
 
@@ -71,53 +74,74 @@ Z round_half_even(const Q& q) {
   const Z fl = floor_q(q);
   const Q frac = q - Q(fl);
   const Q half(1, 2);
-  if (frac < half) return fl;
-  if (frac > half) return fl + 1;
+  if (frac < half)
+    return fl;
+  if (frac > half)
+    return fl + 1;
   return mpz_even_p(fl.get_mpz_t()) != 0 ? fl : Z(fl + 1);
 }
 
-Q abs_q(const Q& q) { return q < 0 ? Q(-q) : q; }
+Q abs_q(const Q& q) {
+  return q < 0 ? Q(-q) : q;
+}
 
 // The binary floating-point value nearest to q (p significand bits, normal exponents
 // [emin, emax], subnormals below), ties to even; +-infinity when it overflows. A nonzero q that
 // rounds to zero keeps its sign. Returned as a double (binary32 values are doubles exactly).
 double round_binary(const Q& q, long p, long emin, long emax) {
   const int sign = sgn(q);
-  if (sign == 0) return 0.0;
+  if (sign == 0)
+    return 0.0;
   const Q a = abs_q(q);
   long e = floor_log2(a);
-  if (e < emin) e = emin;           // subnormal: the spacing of the smallest binade
-  const long shift = e - (p - 1);   // the spacing is 2^shift
+  if (e < emin)
+    e = emin;                     // subnormal: the spacing of the smallest binade
+  const long shift = e - (p - 1); // the spacing is 2^shift
   const Z n = round_half_even(a * pow2(-shift));
-  if (n == 0) return sign < 0 ? -0.0 : 0.0;
+  if (n == 0)
+    return sign < 0 ? -0.0 : 0.0;
   // n * 2^shift >= 2^(emax + 1) overflows.
   const long top = static_cast<long>(mpz_sizeinbase(n.get_mpz_t(), 2)) - 1 + shift;
   if (top > emax) {
     return sign < 0 ? -std::numeric_limits<double>::infinity()
                     : std::numeric_limits<double>::infinity();
   }
-  const double mag = std::ldexp(n.get_d(), static_cast<int>(shift));  // n < 2^54: exact
+  const double mag = std::ldexp(n.get_d(), static_cast<int>(shift)); // n < 2^54: exact
   return sign < 0 ? -mag : mag;
 }
 
-float rn32(const Q& q) { return static_cast<float>(round_binary(q, 24, -126, 127)); }
-double rn64(const Q& q) { return round_binary(q, 53, -1022, 1023); }
+float rn32(const Q& q) {
+  return static_cast<float>(round_binary(q, 24, -126, 127));
+}
+double rn64(const Q& q) {
+  return round_binary(q, 53, -1022, 1023);
+}
 
-bool neg(double d) { return std::signbit(d); }
+bool neg(double d) {
+  return std::signbit(d);
+}
 
 // fl32(x - y) and fl64(x - y): x + (-y) exactly as IEEE 754 defines subtraction.
-float fl32_sub(float a, float b) { return fl32_add(a, -b); }
-double fl64_sub(double a, double b) { return fl64_add(a, -b); }
+float fl32_sub(float a, float b) {
+  return fl32_add(a, -b);
+}
+double fl64_sub(double a, double b) {
+  return fl64_add(a, -b);
+}
 
 // Exactly: ulp32 of the exact value x.
 Q ulp32_q(const Q& x) {
-  if (x == 0) return pow2(-149);
+  if (x == 0)
+    return pow2(-149);
   long e = floor_log2(abs_q(x));
-  if (e < -126) e = -126;
+  if (e < -126)
+    e = -126;
   return pow2(e - 23);
 }
 
-Q clamp_q(const Q& v, const Q& lo, const Q& hi) { return v < lo ? lo : (v > hi ? hi : v); }
+Q clamp_q(const Q& v, const Q& lo, const Q& hi) {
+  return v < lo ? lo : (v > hi ? hi : v);
+}
 
 std::string show(double d) {
   std::ostringstream os;
@@ -125,7 +149,7 @@ std::string show(double d) {
   return os.str();
 }
 
-}  // namespace
+} // namespace
 
 // ---------------------------------------------------------------------------------------------
 // Rounding
@@ -146,29 +170,46 @@ template <class T> T rounded(T a, T b, Op op) {
     const bool negative = op == Op::kAdd ? (neg(a) && neg(b)) : (neg(a) != neg(b));
     return negative ? -T(0) : T(0);
   }
-  if constexpr (sizeof(T) == sizeof(float)) return rn32(r);
-  else return rn64(r);
+  if constexpr (sizeof(T) == sizeof(float))
+    return rn32(r);
+  else
+    return rn64(r);
 }
 
-}  // namespace
+} // namespace
 
-float fl32_mul(float a, float b) { return rounded(a, b, Op::kMul); }
-float fl32_add(float a, float b) { return rounded(a, b, Op::kAdd); }
-float fl32_div(float a, float b) { return rounded(a, b, Op::kDiv); }
-double fl64_mul(double a, double b) { return rounded(a, b, Op::kMul); }
-double fl64_add(double a, double b) { return rounded(a, b, Op::kAdd); }
-double fl64_div(double a, double b) { return rounded(a, b, Op::kDiv); }
+float fl32_mul(float a, float b) {
+  return rounded(a, b, Op::kMul);
+}
+float fl32_add(float a, float b) {
+  return rounded(a, b, Op::kAdd);
+}
+float fl32_div(float a, float b) {
+  return rounded(a, b, Op::kDiv);
+}
+double fl64_mul(double a, double b) {
+  return rounded(a, b, Op::kMul);
+}
+double fl64_add(double a, double b) {
+  return rounded(a, b, Op::kAdd);
+}
+double fl64_div(double a, double b) {
+  return rounded(a, b, Op::kDiv);
+}
 
 float nearest_float(double d) {
-  if (!std::isfinite(d)) return static_cast<float>(d);
+  if (!std::isfinite(d))
+    return static_cast<float>(d);
   const Q r = exact(d);
-  if (r == 0) return neg(d) ? -0.0f : 0.0f;
+  if (r == 0)
+    return neg(d) ? -0.0f : 0.0f;
   return rn32(r);
 }
 
 double ulp32(double x) {
-  if (!std::isfinite(x)) throw std::invalid_argument("oracle: ulp32 of a non-finite value");
-  return rn64(ulp32_q(exact(x)));  // a power of two: exact
+  if (!std::isfinite(x))
+    throw std::invalid_argument("oracle: ulp32 of a non-finite value");
+  return rn64(ulp32_q(exact(x))); // a power of two: exact
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -196,7 +237,8 @@ WindowVertex to_window(const Vec4& p, const Viewport& vp) {
   const float yn = fl32_div(p[1], p[3]);
   float zn = fl32_div(p[2], p[3]);
   // Beyond float32 (only without depth clipping) zn saturates (PIPE.VIEWPORT.TRANSFORM).
-  if (std::isinf(zn)) zn = zn > 0 ? FLT_MAX : -FLT_MAX;
+  if (std::isinf(zn))
+    zn = zn > 0 ? FLT_MAX : -FLT_MAX;
   WindowVertex out;
   out.x = fl32_add(fl32_mul(fl32_mul(fl32_add(xn, 1.0f), vp.width), 0.5f), vp.x);
   out.y = fl32_add(fl32_mul(fl32_mul(fl32_sub(1.0f, yn), vp.height), 0.5f), vp.y);
@@ -218,8 +260,8 @@ Rect viewport_scissor(const Viewport& vp) {
 Volume clip_volume(const std::vector<Vec4>& vs, const Viewport& vp, bool depth_clip) {
   Volume vol;
   vol.depth_clip = depth_clip;
-  (void)vs;  // the volume does not depend on the primitive (PIPE.CLIP.VOLUME)
-  vol.w_min = rn64(pow2(kWMinLog2));  // a power of two: exact
+  (void)vs; // the volume does not depend on the primitive (PIPE.CLIP.VOLUME)
+  vol.w_min = rn64(pow2(kWMinLog2)); // a power of two: exact
   const double g = kGuardBand;
   const double x0 = vp.x, y0 = vp.y, w = vp.width, h = vp.height;
   // gx_lo = fl64((-G - X0) * 2 / W - 1), gx_hi = fl64((G - X0) * 2 / W - 1),
@@ -233,9 +275,11 @@ Volume clip_volume(const std::vector<Vec4>& vs, const Viewport& vp, bool depth_c
 
 namespace {
 
-constexpr std::size_t kPlaneCount = 7;  // w, x_lo, x_hi, y_lo, y_hi, z_near, z_far
+constexpr std::size_t kPlaneCount = 7; // w, x_lo, x_hi, y_lo, y_hi, z_near, z_far
 
-bool plane_used(const Volume& vol, std::size_t plane) { return plane < 5 || vol.depth_clip; }
+bool plane_used(const Volume& vol, std::size_t plane) {
+  return plane < 5 || vol.depth_clip;
+}
 
 // A vertex between planes: doubles (PIPE.CLIP.COMPUTE rounds to float32 once, at the end).
 struct DVertex {
@@ -249,13 +293,20 @@ struct DVertex {
 double distance(const Volume& vol, std::size_t plane, const std::array<double, 4>& p) {
   const double x = p[0], y = p[1], z = p[2], w = p[3];
   switch (plane) {
-  case 0: return fl64_sub(w, vol.w_min);
-  case 1: return fl64_sub(x, fl64_mul(vol.gx_lo, w));
-  case 2: return fl64_sub(fl64_mul(vol.gx_hi, w), x);
-  case 3: return fl64_sub(y, fl64_mul(vol.gy_lo, w));
-  case 4: return fl64_sub(fl64_mul(vol.gy_hi, w), y);
-  case 5: return z;
-  default: return fl64_sub(w, z);
+  case 0:
+    return fl64_sub(w, vol.w_min);
+  case 1:
+    return fl64_sub(x, fl64_mul(vol.gx_lo, w));
+  case 2:
+    return fl64_sub(fl64_mul(vol.gx_hi, w), x);
+  case 3:
+    return fl64_sub(y, fl64_mul(vol.gy_lo, w));
+  case 4:
+    return fl64_sub(fl64_mul(vol.gy_hi, w), y);
+  case 5:
+    return z;
+  default:
+    return fl64_sub(w, z);
   }
 }
 
@@ -264,17 +315,19 @@ double lerp_component(double i, double o, double t) {
   return fl64_add(i, fl64_mul(t, fl64_sub(o, i)));
 }
 
-std::array<double, 4> widen(const Vec4& p) { return {p[0], p[1], p[2], p[3]}; }
+std::array<double, 4> widen(const Vec4& p) {
+  return {p[0], p[1], p[2], p[3]};
+}
 
-}  // namespace
+} // namespace
 
 bool inside(const Volume& vol, const Vec4& p) {
   for (std::size_t k = 0; k < kPlaneCount; ++k) {
-    if (plane_used(vol, k) && !(distance(vol, k, widen(p)) >= 0.0)) return false;
+    if (plane_used(vol, k) && !(distance(vol, k, widen(p)) >= 0.0))
+      return false;
   }
   return true;
 }
-
 
 namespace {
 // The intersection of the edge (in, out), d_in >= 0 > d_out, with a plane, as PIPE.CLIP.POLYGON
@@ -282,30 +335,35 @@ namespace {
 // e + t (f - e) with t = d_e / (d_e - d_f) in fl64, then w raised to kWMin when below.
 DVertex cut_edge(const Volume& vol, const DVertex& in, double d_in, const DVertex& out,
                  double d_out) {
-  const bool from_in = !(fl64_add(d_in, d_out) > 0.0);  // d_in <= -d_out, exactly
+  const bool from_in = !(fl64_add(d_in, d_out) > 0.0); // d_in <= -d_out, exactly
   const DVertex& e = from_in ? in : out;
   const DVertex& f = from_in ? out : in;
   const double de = from_in ? d_in : d_out, df = from_in ? d_out : d_in;
   const double t = fl64_div(de, fl64_sub(de, df));
   DVertex v;
-  for (std::size_t c = 0; c < 4; ++c) v.pos[c] = lerp_component(e.pos[c], f.pos[c], t);
+  for (std::size_t c = 0; c < 4; ++c)
+    v.pos[c] = lerp_component(e.pos[c], f.pos[c], t);
   v.attr.resize(e.attr.size());
-  for (std::size_t a = 0; a < e.attr.size(); ++a) v.attr[a] = lerp_component(e.attr[a], f.attr.at(a), t);
-  if (v.pos[3] < vol.w_min) v.pos[3] = vol.w_min;
+  for (std::size_t a = 0; a < e.attr.size(); ++a)
+    v.attr[a] = lerp_component(e.attr[a], f.attr.at(a), t);
+  if (v.pos[3] < vol.w_min)
+    v.pos[3] = vol.w_min;
   return v;
 }
-}  // namespace
+} // namespace
 
 // rule: PIPE.CLIP.POLYGON, PIPE.CLIP.COMPUTE
 std::vector<ClipVertex> clip_polygon(const std::vector<ClipVertex>& polygon, const Volume& vol) {
   std::vector<DVertex> cur;
   for (const ClipVertex& v : polygon) {
     DVertex d{widen(v.pos), {}};
-    for (const float a : v.attr) d.attr.push_back(a);
+    for (const float a : v.attr)
+      d.attr.push_back(a);
     cur.push_back(std::move(d));
   }
   for (std::size_t plane = 0; plane < kPlaneCount && !cur.empty(); ++plane) {
-    if (!plane_used(vol, plane)) continue;
+    if (!plane_used(vol, plane))
+      continue;
     std::vector<DVertex> next;
     const std::size_t n = cur.size();
     for (std::size_t i = 0; i < n; ++i) {
@@ -314,7 +372,8 @@ std::vector<ClipVertex> clip_polygon(const std::vector<ClipVertex>& polygon, con
       const double dp = distance(vol, plane, p.pos);
       const double dq = distance(vol, plane, q.pos);
       const bool pin = dp >= 0.0, qin = dq >= 0.0;
-      if (pin) next.push_back(p);
+      if (pin)
+        next.push_back(p);
       if (pin != qin) {
         // From the endpoint e nearer the plane (the inside one on a tie) towards the other f:
         // e + t (f - e), t = d_e / (d_e - d_f), whichever of p, q comes first in the walk;
@@ -326,11 +385,14 @@ std::vector<ClipVertex> clip_polygon(const std::vector<ClipVertex>& polygon, con
   }
   // Fewer than 3 vertices draw no fan triangle: the triangle is discarded.
   std::vector<ClipVertex> out;
-  if (cur.size() < 3) return out;
+  if (cur.size() < 3)
+    return out;
   for (const DVertex& d : cur) {
     ClipVertex v;
-    for (std::size_t c = 0; c < 4; ++c) v.pos[c] = nearest_float(d.pos[c]);
-    for (const double a : d.attr) v.attr.push_back(nearest_float(a));
+    for (std::size_t c = 0; c < 4; ++c)
+      v.pos[c] = nearest_float(d.pos[c]);
+    for (const double a : d.attr)
+      v.attr.push_back(nearest_float(a));
     out.push_back(std::move(v));
   }
   return out;
@@ -338,19 +400,23 @@ std::vector<ClipVertex> clip_polygon(const std::vector<ClipVertex>& polygon, con
 
 // rule: PIPE.CLIP.LINE, PIPE.CLIP.COMPUTE
 std::optional<std::array<ClipVertex, 2>> clip_segment(const ClipVertex& a, const ClipVertex& b,
-                                                     const Volume& vol) {
+                                                      const Volume& vol) {
   const auto to_d = [](const ClipVertex& v) {
     DVertex d{widen(v.pos), {}};
-    for (const float x : v.attr) d.attr.push_back(x);
+    for (const float x : v.attr)
+      d.attr.push_back(x);
     return d;
   };
   std::array<DVertex, 2> e{to_d(a), to_d(b)};
   for (std::size_t plane = 0; plane < kPlaneCount; ++plane) {
-    if (!plane_used(vol, plane)) continue;
+    if (!plane_used(vol, plane))
+      continue;
     const double d0 = distance(vol, plane, e[0].pos), d1 = distance(vol, plane, e[1].pos);
     const bool in0 = d0 >= 0.0, in1 = d1 >= 0.0;
-    if (!in0 && !in1) return std::nullopt;
-    if (in0 == in1) continue;
+    if (!in0 && !in1)
+      return std::nullopt;
+    if (in0 == in1)
+      continue;
     // Move the outside endpoint to the intersection (cut_edge: from the nearer endpoint).
     const std::size_t o = in0 ? 1 : 0, i = 1 - o;
     const double di = in0 ? d0 : d1, dout = in0 ? d1 : d0;
@@ -358,8 +424,10 @@ std::optional<std::array<ClipVertex, 2>> clip_segment(const ClipVertex& a, const
   }
   std::array<ClipVertex, 2> out;
   for (std::size_t j = 0; j < 2; ++j) {
-    for (std::size_t c = 0; c < 4; ++c) out[j].pos[c] = nearest_float(e[j].pos[c]);
-    for (const double x : e[j].attr) out[j].attr.push_back(nearest_float(x));
+    for (std::size_t c = 0; c < 4; ++c)
+      out[j].pos[c] = nearest_float(e[j].pos[c]);
+    for (const double x : e[j].attr)
+      out[j].attr.push_back(nearest_float(x));
   }
   return out;
 }
@@ -368,9 +436,12 @@ std::optional<std::array<ClipVertex, 2>> clip_segment(const ClipVertex& a, const
 std::vector<std::string> viewport_violations(const Viewport& vp) {
   std::vector<std::string> out;
   const Q lo(-32768), hi(32767);
-  const auto in_range = [&](float v) { return std::isfinite(v) && exact(v) >= lo && exact(v) <= hi; };
+  const auto in_range = [&](float v) {
+    return std::isfinite(v) && exact(v) >= lo && exact(v) <= hi;
+  };
   const auto axis = [&](float origin, float size, const char* o, const char* sz) {
-    if (!in_range(origin)) out.emplace_back(o);
+    if (!in_range(origin))
+      out.emplace_back(o);
     if (!std::isfinite(size) || !(size > 0.0f)) {
       out.emplace_back(sz);
     } else if (std::isfinite(origin)) {
@@ -384,8 +455,10 @@ std::vector<std::string> viewport_violations(const Viewport& vp) {
   axis(vp.x, vp.width, "x", "width");
   axis(vp.y, vp.height, "y", "height");
   const auto unit = [](float v) { return std::isfinite(v) && v >= 0.0f && v <= 1.0f; };
-  if (!unit(vp.min_depth)) out.emplace_back("min_depth");
-  if (!unit(vp.max_depth)) out.emplace_back("max_depth");
+  if (!unit(vp.min_depth))
+    out.emplace_back("min_depth");
+  if (!unit(vp.max_depth))
+    out.emplace_back("max_depth");
   if (unit(vp.min_depth) && unit(vp.max_depth) && vp.min_depth > vp.max_depth) {
     out.emplace_back("min_depth");
     out.emplace_back("max_depth");
@@ -398,7 +471,7 @@ std::vector<std::string> viewport_violations(const Viewport& vp) {
 
 namespace {
 
-using QPoint = std::array<Q, 2>;   // window position in raw 16.8 units
+using QPoint = std::array<Q, 2>; // window position in raw 16.8 units
 using QVec4 = std::array<Q, 4>;
 
 // Exact window x, y in raw units (256 per pixel), and z.
@@ -410,23 +483,33 @@ std::array<Q, 3> project_q(const QVec4& p, const Viewport& vp) {
   return {x * 256, y * 256, z};
 }
 
-QVec4 exact4(const Vec4& v) { return {exact(v[0]), exact(v[1]), exact(v[2]), exact(v[3])}; }
+QVec4 exact4(const Vec4& v) {
+  return {exact(v[0]), exact(v[1]), exact(v[2]), exact(v[3])};
+}
 
 // The exact signed distance to plane (coefficients: vol's doubles taken exactly).
 Q distance_q(const Volume& vol, std::size_t plane, const QVec4& p) {
   switch (plane) {
-  case 0: return p[3] - exact(vol.w_min);
-  case 1: return p[0] - exact(vol.gx_lo) * p[3];
-  case 2: return exact(vol.gx_hi) * p[3] - p[0];
-  case 3: return p[1] - exact(vol.gy_lo) * p[3];
-  case 4: return exact(vol.gy_hi) * p[3] - p[1];
-  case 5: return p[2];
-  default: return p[3] - p[2];
+  case 0:
+    return p[3] - exact(vol.w_min);
+  case 1:
+    return p[0] - exact(vol.gx_lo) * p[3];
+  case 2:
+    return exact(vol.gx_hi) * p[3] - p[0];
+  case 3:
+    return p[1] - exact(vol.gy_lo) * p[3];
+  case 4:
+    return exact(vol.gy_hi) * p[3] - p[1];
+  case 5:
+    return p[2];
+  default:
+    return p[3] - p[2];
   }
 }
 
 std::optional<std::int64_t> to_i64(const Z& z) {
-  if (!z.fits_slong_p()) return std::nullopt;
+  if (!z.fits_slong_p())
+    return std::nullopt;
   return static_cast<std::int64_t>(z.get_si());
 }
 
@@ -444,18 +527,22 @@ Q dist2_point(const QPoint& a, const QPoint& s) {
 Q dist2_segment(const QPoint& a, const QPoint& b, const QPoint& s) {
   const Q ex = b[0] - a[0], ey = b[1] - a[1];
   const Q len2 = ex * ex + ey * ey;
-  if (len2 == 0) return dist2_point(a, s);
+  if (len2 == 0)
+    return dist2_point(a, s);
   const Q dot = (s[0] - a[0]) * ex + (s[1] - a[1]) * ey;
-  if (dot <= 0) return dist2_point(a, s);
-  if (dot >= len2) return dist2_point(b, s);
+  if (dot <= 0)
+    return dist2_point(a, s);
+  if (dot >= len2)
+    return dist2_point(b, s);
   const Q cross = edge_q(a, b, s);
   return cross * cross / len2;
 }
 
-}  // namespace
+} // namespace
 
 ExactWindow project_exact(const Vec4& p, const Viewport& vp) {
-  if (!(p[3] > 0.0f)) throw std::invalid_argument("oracle: project_exact needs w > 0");
+  if (!(p[3] > 0.0f))
+    throw std::invalid_argument("oracle: project_exact needs w > 0");
   const auto q = project_q(exact4(p), vp);
   ExactWindow out;
   out.x = rn64(q[0] / 256);
@@ -467,19 +554,21 @@ ExactWindow project_exact(const Vec4& p, const Viewport& vp) {
 }
 
 std::optional<std::int64_t> snap_unbounded(double v) {
-  if (!std::isfinite(v)) return std::nullopt;
+  if (!std::isfinite(v))
+    return std::nullopt;
   return to_i64(round_half_even(exact(v) * 256));
 }
 
 struct ExactRegion::Impl {
   std::vector<QPoint> v;
-  std::vector<int> origin;  // of edge (v_i, v_i+1)
+  std::vector<int> origin; // of edge (v_i, v_i+1)
 };
 
 ExactRegion::ExactRegion(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 ExactRegion::ExactRegion(const ExactRegion& o) : impl_(std::make_unique<Impl>(*o.impl_)) {}
 ExactRegion& ExactRegion::operator=(const ExactRegion& o) {
-  if (this != &o) impl_ = std::make_unique<Impl>(*o.impl_);
+  if (this != &o)
+    impl_ = std::make_unique<Impl>(*o.impl_);
   return *this;
 }
 ExactRegion::ExactRegion(ExactRegion&&) noexcept = default;
@@ -490,7 +579,8 @@ ExactRegion::~ExactRegion() = default;
 ExactRegion ExactRegion::unclipped_triangle(const std::array<Vec4, 3>& clip, const Viewport& vp) {
   auto impl = std::make_unique<Impl>();
   for (const Vec4& c : clip) {
-    if (!(c[3] > 0.0f)) throw std::invalid_argument("oracle: unclipped_triangle needs w > 0");
+    if (!(c[3] > 0.0f))
+      throw std::invalid_argument("oracle: unclipped_triangle needs w > 0");
     const auto q = project_q(exact4(c), vp);
     impl->v.push_back({Q(round_half_even(q[0])), Q(round_half_even(q[1]))});
   }
@@ -504,9 +594,11 @@ ExactRegion ExactRegion::clipped_polygon(const std::array<Vec4, 3>& clip, const 
                                          const Viewport& vp) {
   // Each vertex carries the origin of its outgoing edge (to the next vertex).
   std::vector<std::pair<QVec4, int>> cur;
-  for (std::size_t i = 0; i < 3; ++i) cur.emplace_back(exact4(clip[i]), static_cast<int>(i));
+  for (std::size_t i = 0; i < 3; ++i)
+    cur.emplace_back(exact4(clip[i]), static_cast<int>(i));
   for (std::size_t plane = 0; plane < kPlaneCount && !cur.empty(); ++plane) {
-    if (!plane_used(vol, plane)) continue;
+    if (!plane_used(vol, plane))
+      continue;
     std::vector<std::pair<QVec4, int>> next;
     const std::size_t n = cur.size();
     for (std::size_t i = 0; i < n; ++i) {
@@ -515,7 +607,8 @@ ExactRegion ExactRegion::clipped_polygon(const std::array<Vec4, 3>& clip, const 
       const int edge = cur[i].second;
       const Q dp = distance_q(vol, plane, p), dq = distance_q(vol, plane, q);
       const bool pin = dp >= 0, qin = dq >= 0;
-      if (pin) next.emplace_back(p, edge);  // to q or to the intersection: the same line
+      if (pin)
+        next.emplace_back(p, edge); // to q or to the intersection: the same line
       if (pin != qin) {
         // The exact intersection does not depend on the direction; kept as the spec writes it.
         const QVec4& in = pin ? p : q;
@@ -523,7 +616,8 @@ ExactRegion ExactRegion::clipped_polygon(const std::array<Vec4, 3>& clip, const 
         const Q di = pin ? dp : dq, dout = pin ? dq : dp;
         const Q t = di / (di - dout);
         QVec4 v;
-        for (std::size_t c = 0; c < 4; ++c) v[c] = in[c] + t * (out[c] - in[c]);
+        for (std::size_t c = 0; c < 4; ++c)
+          v[c] = in[c] + t * (out[c] - in[c]);
         // Leaving the half-space the next edge runs along the plane; entering it, along p q.
         next.emplace_back(v, pin ? -1 - static_cast<int>(plane) : edge);
       }
@@ -532,7 +626,8 @@ ExactRegion ExactRegion::clipped_polygon(const std::array<Vec4, 3>& clip, const 
   }
   auto impl = std::make_unique<Impl>();
   for (const auto& [p, edge] : cur) {
-    if (!(p[3] > 0)) throw std::logic_error("oracle: exactly clipped vertex with w <= 0");
+    if (!(p[3] > 0))
+      throw std::logic_error("oracle: exactly clipped vertex with w <= 0");
     const auto q = project_q(p, vp);
     impl->v.push_back({q[0], q[1]});
     impl->origin.push_back(edge);
@@ -544,15 +639,19 @@ ExactRegion::Side ExactRegion::classify(const Raw2& sample, std::int64_t near_ra
   const std::vector<QPoint>& v = impl_->v;
   const QPoint s{exact_i(sample[0]), exact_i(sample[1])};
   const std::size_t n = v.size();
-  if (n == 0) return Side::kOutside;
+  if (n == 0)
+    return Side::kOutside;
   const Q near2 = exact_i(near_raw) * exact_i(near_raw);
   for (std::size_t i = 0; i < n; ++i) {
-    if (dist2_segment(v[i], v[(i + 1) % n], s) <= near2) return Side::kNear;
+    if (dist2_segment(v[i], v[(i + 1) % n], s) <= near2)
+      return Side::kNear;
   }
   return strictly_inside(sample) ? Side::kInside : Side::kOutside;
 }
 
-const std::vector<int>& ExactRegion::edge_origins() const { return impl_->origin; }
+const std::vector<int>& ExactRegion::edge_origins() const {
+  return impl_->origin;
+}
 
 bool ExactRegion::near_edge(const Raw2& sample, std::int64_t near_raw, std::size_t i) const {
   const std::vector<QPoint>& v = impl_->v;
@@ -564,25 +663,31 @@ bool ExactRegion::near_edge(const Raw2& sample, std::int64_t near_raw, std::size
 bool ExactRegion::strictly_inside(const Raw2& sample) const {
   const std::vector<QPoint>& v = impl_->v;
   const std::size_t n = v.size();
-  if (n < 3) return false;
+  if (n < 3)
+    return false;
   const QPoint s{exact_i(sample[0]), exact_i(sample[1])};
   // The orientation of the convex polygon: the sign of the sum of E_{v_i v_i+1}(v0).
   Q area(0);
-  for (std::size_t i = 0; i < n; ++i) area += edge_q(v[i], v[(i + 1) % n], v[0]);
-  if (area == 0) return false;
+  for (std::size_t i = 0; i < n; ++i)
+    area += edge_q(v[i], v[(i + 1) % n], v[0]);
+  if (area == 0)
+    return false;
   const int sigma = sgn(area);
   for (std::size_t i = 0; i < n; ++i) {
     const QPoint& a = v[i];
     const QPoint& b = v[(i + 1) % n];
-    if (a == b) continue;
-    if (sgn(edge_q(a, b, s)) != sigma) return false;
+    if (a == b)
+      continue;
+    if (sgn(edge_q(a, b, s)) != sigma)
+      return false;
   }
   return true;
 }
 
 std::array<std::int64_t, 4> ExactRegion::bounds_raw() const {
   const std::vector<QPoint>& v = impl_->v;
-  if (v.empty()) return {0, 0, -1, -1};
+  if (v.empty())
+    return {0, 0, -1, -1};
   Q x0 = v[0][0], y0 = v[0][1], x1 = v[0][0], y1 = v[0][1];
   for (const QPoint& p : v) {
     x0 = std::min(x0, p[0]);
@@ -594,16 +699,20 @@ std::array<std::int64_t, 4> ExactRegion::bounds_raw() const {
     const Z lo(std::numeric_limits<long>::min() / 2), hi(std::numeric_limits<long>::max() / 2);
     return static_cast<std::int64_t>((z < lo ? lo : (z > hi ? hi : z)).get_si());
   };
-  return {clamp64(floor_q(x0)), clamp64(floor_q(y0)), clamp64(floor_q(x1) + 1), clamp64(floor_q(y1) + 1)};
+  return {clamp64(floor_q(x0)), clamp64(floor_q(y0)), clamp64(floor_q(x1) + 1),
+          clamp64(floor_q(y1) + 1)};
 }
 
 std::vector<std::array<double, 2>> ExactRegion::vertices_px() const {
   std::vector<std::array<double, 2>> out;
-  for (const QPoint& p : impl_->v) out.push_back({rn64(p[0] / 256), rn64(p[1] / 256)});
+  for (const QPoint& p : impl_->v)
+    out.push_back({rn64(p[0] / 256), rn64(p[1] / 256)});
   return out;
 }
 
-std::size_t ExactRegion::size() const { return impl_->v.size(); }
+std::size_t ExactRegion::size() const {
+  return impl_->v.size();
+}
 
 // ---------------------------------------------------------------------------------------------
 // Barycentrics
@@ -617,7 +726,8 @@ Bary barycentrics(const std::array<Raw2, 3>& v, const Raw2& s) {
   };
   const auto i64 = [](const Z& x) {
     const auto r = to_i64(x);
-    if (!r) throw std::logic_error("oracle: an edge value does not fit in int64");
+    if (!r)
+      throw std::logic_error("oracle: an edge value does not fit in int64");
     return *r;
   };
   Bary b;
@@ -627,9 +737,11 @@ Bary barycentrics(const std::array<Raw2, 3>& v, const Raw2& s) {
 }
 
 bool inside_closed(const Bary& b) {
-  if (b.area == 0) return false;
+  if (b.area == 0)
+    return false;
   for (const std::int64_t e : b.e) {
-    if ((b.area > 0 && e < 0) || (b.area < 0 && e > 0)) return false;
+    if ((b.area > 0 && e < 0) || (b.area < 0 && e > 0))
+      return false;
   }
   return true;
 }
@@ -640,8 +752,8 @@ bool inside_closed(const Bary& b) {
 namespace {
 
 struct Perspective {
-  Q num, den;     // sum(e_i a_i / w_i), sum(e_i / w_i), exact
-  Q abs_den;      // sum |e_i / w_i|
+  Q num, den; // sum(e_i a_i / w_i), sum(e_i / w_i), exact
+  Q abs_den;  // sum |e_i / w_i|
 };
 
 Perspective perspective_parts(const Bary& b, const std::array<float, 3>& a,
@@ -656,42 +768,51 @@ Perspective perspective_parts(const Bary& b, const std::array<float, 3>& a,
   return p;
 }
 
-int area_sign(const Bary& b) { return b.area > 0 ? 1 : (b.area < 0 ? -1 : 0); }
+int area_sign(const Bary& b) {
+  return b.area > 0 ? 1 : (b.area < 0 ? -1 : 0);
+}
 
 // Whether got lies in [x - bound, x + bound], or is +-FLT_MAX with the interval reaching past it
 // (saturation, PIPE.INTERP.HORIZON).
 bool accept(float got, const Q& x, const Q& bound, bool& saturated) {
   const Q g = exact(got);
   const Q lo = x - bound, hi = x + bound;
-  if (lo <= g && g <= hi) return true;
+  if (lo <= g && g <= hi)
+    return true;
   const Q fmax = exact(FLT_MAX);
-  if (got == FLT_MAX && hi >= fmax) return saturated = true;
-  if (got == -FLT_MAX && lo <= -fmax) return saturated = true;
+  if (got == FLT_MAX && hi >= fmax)
+    return saturated = true;
+  if (got == -FLT_MAX && lo <= -fmax)
+    return saturated = true;
   return false;
 }
 
 void range_check(InterpCheck& c, const Bary& b, const std::array<float, 3>& a, const Q& bound) {
   c.inside = inside_closed(b);
-  if (!c.inside) return;
+  if (!c.inside)
+    return;
   const float lo = std::min({a[0], a[1], a[2]});
   const float hi = std::max({a[0], a[1], a[2]});
   const Q g = exact(c.got);
   c.in_range = exact(lo) - bound <= g && g <= exact(hi) + bound;
 }
 
-}  // namespace
+} // namespace
 
 std::optional<double> perspective_exact(const Bary& b, const std::array<float, 3>& a,
                                         const std::array<float, 3>& w) {
   const Perspective p = perspective_parts(b, a, w);
-  if (sgn(p.den) * area_sign(b) <= 0) return std::nullopt;
+  if (sgn(p.den) * area_sign(b) <= 0)
+    return std::nullopt;
   return rn64(p.num / p.den);
 }
 
 double linear_exact(const Bary& b, const std::array<float, 3>& a) {
-  if (b.area == 0) throw std::invalid_argument("oracle: linear_exact on a degenerate triangle");
+  if (b.area == 0)
+    throw std::invalid_argument("oracle: linear_exact on a degenerate triangle");
   Q sum;
-  for (std::size_t i = 0; i < 3; ++i) sum += exact_i(b.e[i]) * exact(a[i]);
+  for (std::size_t i = 0; i < 3; ++i)
+    sum += exact_i(b.e[i]) * exact(a[i]);
   return rn64(sum / exact_i(b.area));
 }
 
@@ -703,17 +824,19 @@ void judge(InterpCheck& c, const Bary& b, const std::array<float, 3>& a, const Q
   const Q bound = ulp32_q(x) + pow2(-48) * s;
   c.s = rn64(s);
   c.bound = rn64(bound);
-  if (!c.finite) return;
+  if (!c.finite)
+    return;
   c.ok = accept(got, x, bound, c.saturated);
   range_check(c, b, a, bound);
   c.ok = c.ok && c.in_range;
 }
-}  // namespace
+} // namespace
 
 // rule: PIPE.INTERP.PERSPECTIVE, PIPE.INTERP.HORIZON, PIPE.INTERP.BOUND
 InterpCheck check_perspective(const Bary& b, const std::array<float, 3>& a,
                               const std::array<float, 3>& w, float flat, float got) {
-  if (b.area == 0) throw std::invalid_argument("oracle: check_perspective on a degenerate triangle");
+  if (b.area == 0)
+    throw std::invalid_argument("oracle: check_perspective on a degenerate triangle");
   InterpCheck c;
   c.got = got;
   c.finite = std::isfinite(got);
@@ -742,7 +865,7 @@ InterpCheck check_perspective(const Bary& b, const std::array<float, 3>& a,
     dq += eq;
   }
   c.exact = rn64(x);
-  if (dq == 0) {  // unreachable beside the near-horizon test; kept for safety
+  if (dq == 0) { // unreachable beside the near-horizon test; kept for safety
     c.near_horizon = true;
     c.ok = c.finite;
     return c;
@@ -753,7 +876,8 @@ InterpCheck check_perspective(const Bary& b, const std::array<float, 3>& a,
 
 // rule: PIPE.INTERP.LINEAR, PIPE.INTERP.HORIZON, PIPE.INTERP.BOUND
 InterpCheck check_linear(const Bary& b, const std::array<float, 3>& a, float got) {
-  if (b.area == 0) throw std::invalid_argument("oracle: check_linear on a degenerate triangle");
+  if (b.area == 0)
+    throw std::invalid_argument("oracle: check_linear on a degenerate triangle");
   InterpCheck c;
   c.got = got;
   c.finite = std::isfinite(got);
@@ -783,9 +907,12 @@ std::string InterpCheck::describe() const {
 
 // rule: PIPE.INTERP.FLAT
 float flat_value(const std::vector<float>& vertex_values, const std::string& provoking) {
-  if (vertex_values.empty()) throw std::invalid_argument("oracle: flat_value of no vertex");
-  if (provoking == "first") return vertex_values.front();
-  if (provoking == "last") return vertex_values.back();
+  if (vertex_values.empty())
+    throw std::invalid_argument("oracle: flat_value of no vertex");
+  if (provoking == "first")
+    return vertex_values.front();
+  if (provoking == "last")
+    return vertex_values.back();
   throw std::invalid_argument("oracle: unknown provoking vertex '" + provoking + "'");
 }
 
@@ -795,9 +922,12 @@ float flat_value(const std::vector<float>& vertex_values, const std::string& pro
 namespace {
 
 int unorm_bits(const std::string& format) {
-  if (format == "d16") return 16;
-  if (format == "d24") return 24;
-  if (format == "d32f") return 0;
+  if (format == "d16")
+    return 16;
+  if (format == "d24")
+    return 24;
+  if (format == "d32f")
+    return 0;
   throw std::invalid_argument("oracle: unknown depth format '" + format + "'");
 }
 
@@ -812,7 +942,8 @@ Stored store_q(const Q& d, const std::string& format) {
   }
   const Q scale = pow2(bits) - 1;
   const Z u = floor_q(d * scale + Q(1, 2));
-  if (u < 0 || u > Z(scale)) throw std::logic_error("oracle: stored depth out of range");
+  if (u < 0 || u > Z(scale))
+    throw std::logic_error("oracle: stored depth out of range");
   s.unorm = static_cast<std::uint32_t>(u.get_ui());
   return s;
 }
@@ -822,11 +953,12 @@ bool stored_less(const Stored& a, const Stored& b, const std::string& format) {
 }
 
 struct DepthParts {
-  Q x, s;  // sum(e_i Z_i) / area, sum|e_i Z_i| / |area|
+  Q x, s; // sum(e_i Z_i) / area, sum|e_i Z_i| / |area|
 };
 
 DepthParts depth_parts(const Bary& b, const std::array<float, 3>& z) {
-  if (b.area == 0) throw std::invalid_argument("oracle: depth on a degenerate triangle");
+  if (b.area == 0)
+    throw std::invalid_argument("oracle: depth on a degenerate triangle");
   Q sum, sa;
   for (std::size_t i = 0; i < 3; ++i) {
     const Q ez = exact_i(b.e[i]) * exact(z[i]);
@@ -841,9 +973,11 @@ std::string show_stored(const Stored& s, const std::string& format) {
   return unorm_bits(format) == 0 ? show(static_cast<double>(s.f)) : std::to_string(s.unorm);
 }
 
-}  // namespace
+} // namespace
 
-double depth_exact(const Bary& b, const std::array<float, 3>& z) { return rn64(depth_parts(b, z).x); }
+double depth_exact(const Bary& b, const std::array<float, 3>& z) {
+  return rn64(depth_parts(b, z).x);
+}
 
 // rule: PIPE.DEPTH.CLAMP, PIPE.DEPTH.FORMAT
 Stored store_exact(double d, float min_depth, float max_depth, const std::string& format) {
@@ -901,18 +1035,21 @@ std::string DepthCheck::describe(const std::string& format) const {
 
 // rule: PIPE.DEPTH.BIAS
 // Every float32 step of the bias saturates at +-FLT_MAX (PIPE.DEPTH.BIAS).
-float sat32(float v) { return std::isinf(v) ? (v > 0 ? FLT_MAX : -FLT_MAX) : v; }
+float sat32(float v) {
+  return std::isinf(v) ? (v > 0 ? FLT_MAX : -FLT_MAX) : v;
+}
 
 float depth_bias(const std::array<Raw2, 3>& v, const std::array<float, 3>& z, std::int32_t bias,
                  float slope_scaled, float clamp, const std::string& format) {
-  if (bias == 0 && slope_scaled == 0.0f) return 0.0f;
+  if (bias == 0 && slope_scaled == 0.0f)
+    return 0.0f;
   float slope_term = 0.0f;
   if (slope_scaled != 0.0f) {
     const auto q = [](std::int64_t r) { return exact_i(r); };
     const Q x1 = q(v[1][0] - v[0][0]), y1 = q(v[1][1] - v[0][1]);
     const Q x2 = q(v[2][0] - v[0][0]), y2 = q(v[2][1] - v[0][1]);
     const Q z1 = exact(z[1]) - exact(z[0]), z2 = exact(z[2]) - exact(z[0]);
-    const Q den = x1 * y2 - x2 * y1;  // raw units squared
+    const Q den = x1 * y2 - x2 * y1; // raw units squared
     float max_slope = 0.0f;
     if (den != 0) {
       // Z = Z0 + a (x - x0) + b (y - y0) through the three vertices; positions in pixels are
@@ -926,18 +1063,22 @@ float depth_bias(const std::array<Raw2, 3>& v, const std::array<float, 3>& z, st
   float r = 0.0f;
   if (format == "d32f") {
     Q zmax(0);
-    for (const float zi : z) zmax = std::max(zmax, abs_q(exact(zi)));
+    for (const float zi : z)
+      zmax = std::max(zmax, abs_q(exact(zi)));
     const long e = zmax == 0 ? -126 : std::max(floor_log2(zmax), -126L);
     r = static_cast<float>(rn64(pow2(e - 23)));
   } else {
     const int bits = format.empty() ? 24 : unorm_bits(format);
-    if (bits == 0) throw std::invalid_argument("oracle: bad depth format for depth_bias");
+    if (bits == 0)
+      throw std::invalid_argument("oracle: bad depth format for depth_bias");
     r = rn32(Q(1) / (pow2(bits) - 1));
   }
   const float constant = fl32_mul(nearest_float(static_cast<double>(bias)), r);
   float total = sat32(fl32_add(constant, slope_term));
-  if (clamp > 0.0f) total = std::min(clamp, total);
-  else if (clamp < 0.0f) total = std::max(clamp, total);
+  if (clamp > 0.0f)
+    total = std::min(clamp, total);
+  else if (clamp < 0.0f)
+    total = std::max(clamp, total);
   return total;
 }
 
@@ -947,15 +1088,23 @@ bool depth_test(const std::string& func, const Stored& now, const Stored& old,
   const bool lt = stored_less(now, old, format);
   const bool gt = stored_less(old, now, format);
   const bool eq = !lt && !gt;
-  if (func == "never") return false;
-  if (func == "less") return lt;
-  if (func == "equal") return eq;
-  if (func == "less_equal") return lt || eq;
-  if (func == "greater") return gt;
-  if (func == "not_equal") return !eq;
-  if (func == "greater_equal") return gt || eq;
-  if (func == "always") return true;
+  if (func == "never")
+    return false;
+  if (func == "less")
+    return lt;
+  if (func == "equal")
+    return eq;
+  if (func == "less_equal")
+    return lt || eq;
+  if (func == "greater")
+    return gt;
+  if (func == "not_equal")
+    return !eq;
+  if (func == "greater_equal")
+    return gt || eq;
+  if (func == "always")
+    return true;
   throw std::invalid_argument("oracle: unknown depth function '" + func + "'");
 }
 
-}  // namespace rastrules::oracle::pipe
+} // namespace rastrules::oracle::pipe

@@ -38,7 +38,9 @@ std::string where(const Fragment& f) {
          std::to_string(f.y) + ")";
 }
 
-op::Raw2 raw(Vec2 v) { return {v.x.raw(), v.y.raw()}; }
+op::Raw2 raw(Vec2 v) {
+  return {v.x.raw(), v.y.raw()};
+}
 
 // The oracle's barycentrics of drawn primitive d at s: a triangle's exact edge values, a line's
 // projection parameter (as in the kernel's output, SCENE.OUTPUT.PIPELINE), a point's (1, 0, 0).
@@ -61,13 +63,15 @@ op::Bary bary_of(const kp::DrawnPrimitive& d, Vec2 s) {
   return b;
 }
 
-std::string format_name(kp::DepthFormat f) { return std::string(kp::to_string(f)); }
+std::string format_name(kp::DepthFormat f) {
+  return std::string(kp::to_string(f));
+}
 
 double stored_as_double(const kp::DepthValue& v, kp::DepthFormat f) {
   return f == kp::DepthFormat::kD32F ? static_cast<double>(v.f) : static_cast<double>(v.unorm);
 }
 
-}  // namespace
+} // namespace
 
 std::vector<std::filesystem::path> catalog(const std::filesystem::path& dir) {
   std::vector<std::filesystem::path> out;
@@ -147,7 +151,8 @@ CaseReport check_case(const std::filesystem::path& scene_path) {
   const kp::DepthValue hi = kp::to_depth_format(vp.max_depth, 0, 1, fmt);
   std::size_t reported = 0;
   const auto report = [&](const std::string& m) {
-    if (++reported <= 8) fail(m);
+    if (++reported <= 8)
+      fail(m);
   };
   for (std::size_t i = 0; i < res.data.size(); ++i) {
     const Fragment& f = res.fragments[i];
@@ -155,13 +160,15 @@ CaseReport check_case(const std::filesystem::path& scene_path) {
     if (d.bary && d.bary->e[0] + d.bary->e[1] + d.bary->e[2] != d.bary->area)
       report(where(f) + ": barycentrics do not sum to the area (PIPE.BARY.SUM)");
     for (const float a : d.attr)
-      if (!std::isfinite(a)) report(where(f) + ": an attribute is not finite (PIPE.INTERP.HORIZON)");
+      if (!std::isfinite(a))
+        report(where(f) + ": an attribute is not finite (PIPE.INTERP.HORIZON)");
     for (const kp::DepthValue& z : d.depth)
       if (stored_as_double(z, fmt) < stored_as_double(lo, fmt) ||
           stored_as_double(z, fmt) > stored_as_double(hi, fmt) ||
           (fmt == kp::DepthFormat::kD32F && !std::isfinite(z.f)))
         report(where(f) + ": a stored depth lies outside the viewport's range (PIPE.DEPTH.CLAMP)");
-    if (res.drawn.empty()) continue;
+    if (res.drawn.empty())
+      continue;
     const kp::DrawnPrimitive& dp = res.drawn[d.drawn];
     // Attributes against the exact oracle (PIPE.INTERP.BOUND).
     for (std::size_t a = 0; a < d.attr.size(); ++a) {
@@ -178,7 +185,8 @@ CaseReport check_case(const std::filesystem::path& scene_path) {
           report(where(f) + ": flat attribute " + decl.name + " is not the provoking vertex's");
         continue;
       }
-      if (b.area == 0) continue;  // a zero-length line: the flat value (PIPE.INTERP.HORIZON)
+      if (b.area == 0)
+        continue; // a zero-length line: the flat value (PIPE.INTERP.HORIZON)
       const op::InterpCheck c =
           decl.interpolation == kp::Interpolation::kPerspective
               ? op::check_perspective(b, dp.attr[a], dp.w, dp.flat[a], d.attr[a])
@@ -189,13 +197,15 @@ CaseReport check_case(const std::filesystem::path& scene_path) {
     // Depths against the exact oracle (PIPE.DEPTH.BOUND).
     std::size_t n = 0;
     for (std::uint32_t k = 0; k < pattern.count() && n < d.depth.size(); ++k) {
-      if ((f.mask & (1u << k)) == 0) continue;
+      if ((f.mask & (1u << k)) == 0)
+        continue;
       const op::Bary b = bary_of(dp, sample_position(f.x, f.y, pattern.positions[k]));
       const kp::DepthValue& got = d.depth[n++];
       ++r.oracle_checks;
-      if (b.area == 0) continue;
-      const op::DepthCheck c = op::check_depth_stored(b, dp.z, vp.min_depth, vp.max_depth,
-                                                      format_name(fmt), op::Stored{got.unorm, got.f});
+      if (b.area == 0)
+        continue;
+      const op::DepthCheck c = op::check_depth_stored(
+          b, dp.z, vp.min_depth, vp.max_depth, format_name(fmt), op::Stored{got.unorm, got.f});
       if (!c.ok)
         report(where(f) + ": sample " + std::to_string(k) + ": " + c.describe(format_name(fmt)));
     }
@@ -213,19 +223,26 @@ CaseReport check_case(const std::filesystem::path& scene_path) {
       ++per_prim[f.prim];
       const bool has_data = !res.data.empty();
       const std::uint32_t passed = has_data ? res.data[i].passed : f.mask;
-      if (passed != 0) ++passed_per_prim[f.prim];
-      if (s.depth && passed == 0 && !f.helper) ++killed_per_prim[f.prim];
-      if (has_data && res.data[i].part) parts.insert(*res.data[i].part);
+      if (passed != 0)
+        ++passed_per_prim[f.prim];
+      if (s.depth && passed == 0 && !f.helper)
+        ++killed_per_prim[f.prim];
+      if (has_data && res.data[i].part)
+        parts.insert(*res.data[i].part);
       if (has_data)
-        for (const auto& z : res.data[i].depth) depths.insert(stored_as_double(z, fmt));
+        for (const auto& z : res.data[i].depth)
+          depths.insert(stored_as_double(z, fmt));
     }
     const auto count_map = [](const json& j) {
       std::map<std::uint32_t, std::size_t> m;
-      for (const auto& [k, v] : j.items()) m[static_cast<std::uint32_t>(std::stoul(k))] = v.get<std::size_t>();
+      for (const auto& [k, v] : j.items())
+        m[static_cast<std::uint32_t>(std::stoul(k))] = v.get<std::size_t>();
       return m;
     };
-    const auto compare_counts = [&](const char* key, const std::map<std::uint32_t, std::size_t>& got) {
-      if (!expect.contains(key)) return;
+    const auto compare_counts = [&](const char* key,
+                                    const std::map<std::uint32_t, std::size_t>& got) {
+      if (!expect.contains(key))
+        return;
       for (const auto& [prim, want] : count_map(expect.at(key))) {
         const auto it = got.find(prim);
         const std::size_t have = it == got.end() ? 0 : it->second;
@@ -234,7 +251,8 @@ CaseReport check_case(const std::filesystem::path& scene_path) {
                std::to_string(want) + ", got " + std::to_string(have));
       }
     };
-    if (expect.contains("fragments") && expect.at("fragments").get<std::size_t>() != res.fragments.size())
+    if (expect.contains("fragments") &&
+        expect.at("fragments").get<std::size_t>() != res.fragments.size())
       fail("fragments: expected " + std::to_string(expect.at("fragments").get<std::size_t>()) +
            ", got " + std::to_string(res.fragments.size()));
     compare_counts("fragments_per_prim", per_prim);
@@ -242,13 +260,15 @@ CaseReport check_case(const std::filesystem::path& scene_path) {
     compare_counts("killed_per_prim", killed_per_prim);
     if (expect.contains("parts")) {
       const auto want = expect.at("parts").get<std::set<std::uint32_t>>();
-      if (want != parts) fail("parts: not the expected set");
+      if (want != parts)
+        fail("parts: not the expected set");
     }
     if (expect.contains("depth_values")) {
       const auto want = expect.at("depth_values").get<std::set<double>>();
       if (want != depths) {
         std::string got;
-        for (const double z : depths) got += " " + std::to_string(z);
+        for (const double z : depths)
+          got += " " + std::to_string(z);
         fail("depth_values: not the expected set; got" + got);
       }
     }
@@ -262,7 +282,8 @@ CaseReport check_case(const std::filesystem::path& scene_path) {
       for (const auto& [name, range_j] : expect.at("attr_range").items()) {
         const auto range = range_j.get<std::array<double, 2>>();
         std::size_t a = 0;
-        while (a < s.attributes.size() && s.attributes[a].name != name) ++a;
+        while (a < s.attributes.size() && s.attributes[a].name != name)
+          ++a;
         if (a == s.attributes.size()) {
           fail("attr_range: no attribute " + name);
           continue;
@@ -279,9 +300,10 @@ CaseReport check_case(const std::filesystem::path& scene_path) {
       fail("hiz_rejected_at_least: Hi-Z rejected " + std::to_string(res.stats.hiz_rejected));
     for (const auto& [key, v] : expect.items()) {
       static const std::set<std::string> known = {
-          "fragments", "fragments_per_prim", "passed_per_prim", "killed_per_prim", "parts",
-          "depth_values", "depth_range", "attr_range", "hiz_rejected_at_least"};
-      if (!known.contains(key)) fail("expect." + key + ": unknown expectation");
+          "fragments",    "fragments_per_prim", "passed_per_prim", "killed_per_prim",      "parts",
+          "depth_values", "depth_range",        "attr_range",      "hiz_rejected_at_least"};
+      if (!known.contains(key))
+        fail("expect." + key + ": unknown expectation");
       (void)v;
     }
   } catch (const std::exception& e) {
@@ -297,16 +319,18 @@ std::string format_report(const std::vector<CaseReport>& reports) {
     if (r.ok()) {
       o << "OK    " << r.name << "  (" << r.fragments << " fragments, " << r.oracle_checks
         << " values checked against the exact oracle)";
-      for (std::size_t i = 0; i < r.rules.size(); ++i) o << (i == 0 ? "  " : ", ") << r.rules[i];
+      for (std::size_t i = 0; i < r.rules.size(); ++i)
+        o << (i == 0 ? "  " : ", ") << r.rules[i];
       o << "\n";
     } else {
       ++failed;
       o << "FAIL  " << r.name << "\n";
-      for (const std::string& m : r.failures) o << "        " << m << "\n";
+      for (const std::string& m : r.failures)
+        o << "        " << m << "\n";
     }
   }
   o << reports.size() - failed << " of " << reports.size() << " cases hold\n";
   return o.str();
 }
 
-}  // namespace rastrules::cases
+} // namespace rastrules::cases

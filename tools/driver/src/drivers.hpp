@@ -38,4 +38,4 @@ std::unique_ptr<Driver> open_opengl(std::string_view arg, std::string* error);
 [[nodiscard]] DriverInfo full_capabilities(std::string name, std::string description,
                                            int subpixel_bits);
 
-}  // namespace rastrules::driver::detail
+} // namespace rastrules::driver::detail

@@ -36,7 +36,7 @@ namespace {
 constexpr std::size_t kMaxStderrBytes = 4096;
 
 struct ProcessResult {
-  std::string spawn_error;  // non-empty: the process could not be started
+  std::string spawn_error; // non-empty: the process could not be started
   bool timed_out = false;
   bool output_overflow = false;
   bool exited = false;
@@ -47,7 +47,8 @@ struct ProcessResult {
 };
 
 void close_fd(int& fd) {
-  if (fd >= 0) ::close(fd);
+  if (fd >= 0)
+    ::close(fd);
   fd = -1;
 }
 
@@ -58,9 +59,13 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
                           const ExternalOptions& options) {
   ProcessResult r;
   int in_pipe[2] = {-1, -1}, out_pipe[2] = {-1, -1}, err_pipe[2] = {-1, -1};
-  if (::pipe2(in_pipe, O_CLOEXEC) != 0 || ::pipe2(out_pipe, O_CLOEXEC) != 0 || ::pipe2(err_pipe, O_CLOEXEC) != 0) {
+  if (::pipe2(in_pipe, O_CLOEXEC) != 0 || ::pipe2(out_pipe, O_CLOEXEC) != 0 ||
+      ::pipe2(err_pipe, O_CLOEXEC) != 0) {
     r.spawn_error = std::string("pipe: ") + std::strerror(errno);
-    for (int* p : {in_pipe, out_pipe, err_pipe}) { close_fd(p[0]); close_fd(p[1]); }
+    for (int* p : {in_pipe, out_pipe, err_pipe}) {
+      close_fd(p[0]);
+      close_fd(p[1]);
+    }
     return r;
   }
   posix_spawn_file_actions_t actions;
@@ -70,14 +75,15 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
   posix_spawn_file_actions_adddup2(&actions, err_pipe[1], 2);
   posix_spawnattr_t attr;
   posix_spawnattr_init(&attr);
-  posix_spawnattr_setpgroup(&attr, 0);  // its own group, so that a timeout kills its children too
+  posix_spawnattr_setpgroup(&attr, 0); // its own group, so that a timeout kills its children too
   sigset_t default_signals;
   sigemptyset(&default_signals);
   sigaddset(&default_signals, SIGPIPE);
   posix_spawnattr_setsigdefault(&attr, &default_signals);
   posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF);
   std::vector<char*> args;
-  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  for (const std::string& a : argv)
+    args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
   pid_t pid = 0;
   const int rc = ::posix_spawnp(&pid, args[0], &actions, &attr, args.data(), environ);
@@ -93,11 +99,14 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
     close_fd(err_pipe[0]);
     return r;
   }
-  for (int fd : {in_pipe[1], out_pipe[0], err_pipe[0]}) ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
+  for (int fd : {in_pipe[1], out_pipe[0], err_pipe[0]})
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
 
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(options.timeout_ms);
+  const auto deadline =
+      std::chrono::steady_clock::now() + std::chrono::milliseconds(options.timeout_ms);
   std::size_t written = 0;
-  if (input.empty()) close_fd(in_pipe[1]);
+  if (input.empty())
+    close_fd(in_pipe[1]);
   bool kill_it = false;
   while (out_pipe[0] >= 0 || err_pipe[0] >= 0) {
     const auto now = std::chrono::steady_clock::now();
@@ -107,31 +116,43 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
       break;
     }
     std::vector<pollfd> fds;
-    if (in_pipe[1] >= 0) fds.push_back({in_pipe[1], POLLOUT, 0});
-    if (out_pipe[0] >= 0) fds.push_back({out_pipe[0], POLLIN, 0});
-    if (err_pipe[0] >= 0) fds.push_back({err_pipe[0], POLLIN, 0});
+    if (in_pipe[1] >= 0)
+      fds.push_back({in_pipe[1], POLLOUT, 0});
+    if (out_pipe[0] >= 0)
+      fds.push_back({out_pipe[0], POLLIN, 0});
+    if (err_pipe[0] >= 0)
+      fds.push_back({err_pipe[0], POLLIN, 0});
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count();
-    const int n = ::poll(fds.data(), static_cast<nfds_t>(fds.size()), static_cast<int>(std::min<long long>(left + 1, 1000)));
-    if (n < 0 && errno != EINTR) break;
+    const int n = ::poll(fds.data(), static_cast<nfds_t>(fds.size()),
+                         static_cast<int>(std::min<long long>(left + 1, 1000)));
+    if (n < 0 && errno != EINTR)
+      break;
     for (const pollfd& p : fds) {
-      if (p.revents == 0) continue;
+      if (p.revents == 0)
+        continue;
       if (p.fd == in_pipe[1]) {
         if ((p.revents & (POLLERR | POLLHUP)) != 0) {
-          close_fd(in_pipe[1]);  // the process closed its standard input: stop writing
+          close_fd(in_pipe[1]); // the process closed its standard input: stop writing
           continue;
         }
         const ssize_t w = ::write(in_pipe[1], input.data() + written, input.size() - written);
-        if (w > 0) written += static_cast<std::size_t>(w);
-        if ((w < 0 && errno != EAGAIN && errno != EINTR) || written == input.size()) close_fd(in_pipe[1]);
+        if (w > 0)
+          written += static_cast<std::size_t>(w);
+        if ((w < 0 && errno != EAGAIN && errno != EINTR) || written == input.size())
+          close_fd(in_pipe[1]);
         continue;
       }
       char buf[65536];
       const ssize_t got = ::read(p.fd, buf, sizeof buf);
       if (got == 0 || (got < 0 && errno != EAGAIN && errno != EINTR)) {
-        if (p.fd == out_pipe[0]) close_fd(out_pipe[0]); else close_fd(err_pipe[0]);
+        if (p.fd == out_pipe[0])
+          close_fd(out_pipe[0]);
+        else
+          close_fd(err_pipe[0]);
         continue;
       }
-      if (got < 0) continue;
+      if (got < 0)
+        continue;
       const auto g = static_cast<std::size_t>(got);
       if (p.fd == out_pipe[0]) {
         if (r.out.size() + g > options.max_output_bytes) {
@@ -144,7 +165,8 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
         r.err.append(buf, std::min(g, kMaxStderrBytes - r.err.size()));
       }
     }
-    if (kill_it) break;
+    if (kill_it)
+      break;
   }
   close_fd(in_pipe[1]);
   close_fd(out_pipe[0]);
@@ -154,8 +176,10 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
     // Both outputs are closed: wait for the exit, still under the deadline.
     while (true) {
       const pid_t w = ::waitpid(pid, &status, WNOHANG);
-      if (w == pid) break;
-      if (w < 0 && errno != EINTR) break;
+      if (w == pid)
+        break;
+      if (w < 0 && errno != EINTR)
+        break;
       if (std::chrono::steady_clock::now() >= deadline) {
         r.timed_out = true;
         kill_it = true;
@@ -179,18 +203,19 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
 
 std::string one_line(std::string s) {
   for (char& c : s) {
-    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+    if (c == '\n' || c == '\r' || c == '\t')
+      c = ' ';
   }
-  while (!s.empty() && s.back() == ' ') s.pop_back();
+  while (!s.empty() && s.back() == ' ')
+    s.pop_back();
   return io::printable(s, 300);
 }
 
 // rule: DRIVER.EXTERNAL.PROTOCOL
 class ExternalDriver final : public Driver {
- public:
+public:
   ExternalDriver(std::string command, ExternalOptions options)
-      : argv_(external_argv(command)),
-        options_(options),
+      : argv_(external_argv(command)), options_(options),
         info_(detail::full_capabilities("external", command, -1)) {
     // A process that exits without reading its input must not kill us with SIGPIPE.
     struct sigaction ignore {};
@@ -205,23 +230,27 @@ class ExternalDriver final : public Driver {
   [[nodiscard]] DrawResult draw(const Scene& scene) override {
     const std::string& cmd = info_.description;
     const ProcessResult r = run_process(argv_, io::write_scene(scene), options_);
-    if (!r.spawn_error.empty()) return DriverError{"external driver: " + r.spawn_error};
+    if (!r.spawn_error.empty())
+      return DriverError{"external driver: " + r.spawn_error};
     const std::string err = r.err.empty() ? "" : "; its standard error: " + one_line(r.err);
     if (r.timed_out) {
-      return DriverError{"external driver \"" + cmd + "\" timed out after " + std::to_string(options_.timeout_ms) +
-                         " ms and was killed" + err};
+      return DriverError{"external driver \"" + cmd + "\" timed out after " +
+                         std::to_string(options_.timeout_ms) + " ms and was killed" + err};
     }
     if (r.output_overflow) {
       return DriverError{"external driver \"" + cmd + "\" wrote more than " +
-                         std::to_string(options_.max_output_bytes) + " bytes on standard output and was killed"};
+                         std::to_string(options_.max_output_bytes) +
+                         " bytes on standard output and was killed"};
     }
     if (r.signal != 0) {
       const char* name = ::strsignal(r.signal);
-      return DriverError{"external driver \"" + cmd + "\" crashed: killed by signal " + std::to_string(r.signal) +
-                         " (" + (name != nullptr ? name : "?") + ")" + err};
+      return DriverError{"external driver \"" + cmd + "\" crashed: killed by signal " +
+                         std::to_string(r.signal) + " (" + (name != nullptr ? name : "?") + ")" +
+                         err};
     }
     if (!r.exited || r.exit_status != 0) {
-      return DriverError{"external driver \"" + cmd + "\" exited with status " + std::to_string(r.exit_status) + err};
+      return DriverError{"external driver \"" + cmd + "\" exited with status " +
+                         std::to_string(r.exit_status) + err};
     }
     auto parsed = parse_external_fragments(r.out, scene);
     if (auto* e = std::get_if<std::string>(&parsed)) {
@@ -230,29 +259,32 @@ class ExternalDriver final : public Driver {
     return std::get<std::vector<Fragment>>(std::move(parsed));
   }
 
- private:
+private:
   std::vector<std::string> argv_;
   ExternalOptions options_;
   DriverInfo info_;
 };
 
 std::optional<std::int64_t> get_int(const nlohmann::json& v) {
-  if (v.is_number_integer()) return v.get<std::int64_t>();
+  if (v.is_number_integer())
+    return v.get<std::int64_t>();
   if (v.is_number_unsigned()) {
     const auto u = v.get<std::uint64_t>();
-    if (u <= static_cast<std::uint64_t>(INT64_MAX)) return static_cast<std::int64_t>(u);
+    if (u <= static_cast<std::uint64_t>(INT64_MAX))
+      return static_cast<std::int64_t>(u);
   }
   return std::nullopt;
 }
 
-}  // namespace
+} // namespace
 
 ExternalOptions default_external_options() {
   ExternalOptions o;
   if (const char* t = std::getenv("RASTRULES_EXTERNAL_TIMEOUT_MS")) {
     char* end = nullptr;
     const long long v = std::strtoll(t, &end, 10);
-    if (end != t && *end == '\0' && v > 0) o.timeout_ms = v;
+    if (end != t && *end == '\0' && v > 0)
+      o.timeout_ms = v;
   }
   return o;
 }
@@ -262,18 +294,21 @@ std::vector<std::string> external_argv(std::string_view command) {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
            std::strchr("_-./:=,+@% \t", c) != nullptr;
   };
-  if (!std::all_of(command.begin(), command.end(), plain)) return {"/bin/sh", "-c", std::string(command)};
+  if (!std::all_of(command.begin(), command.end(), plain))
+    return {"/bin/sh", "-c", std::string(command)};
   std::vector<std::string> argv;
   std::string word;
   for (const char c : command) {
     if (c == ' ' || c == '\t') {
-      if (!word.empty()) argv.push_back(word);
+      if (!word.empty())
+        argv.push_back(word);
       word.clear();
     } else {
       word += c;
     }
   }
-  if (!word.empty()) argv.push_back(word);
+  if (!word.empty())
+    argv.push_back(word);
   return argv;
 }
 
@@ -308,7 +343,7 @@ std::size_t max_nesting_depth(std::string_view text) {
   return deepest;
 }
 
-}  // namespace
+} // namespace
 
 // rule: DRIVER.EXTERNAL.PROTOCOL
 std::variant<std::vector<Fragment>, std::string> parse_external_fragments(std::string_view text,
@@ -324,7 +359,7 @@ std::variant<std::vector<Fragment>, std::string> parse_external_fragments(std::s
     doc = nlohmann::json::parse(text.begin(), text.end());
   } catch (const nlohmann::json::parse_error& e) {
     return std::string("not JSON: ") + e.what();
-  } catch (const nlohmann::json::exception& e) {  // e.g. a number too large for any type
+  } catch (const nlohmann::json::exception& e) { // e.g. a number too large for any type
     return std::string("not JSON the protocol allows: ") + e.what();
   }
   if (!doc.is_object() || !doc.contains("fragments") || !doc["fragments"].is_array()) {
@@ -337,49 +372,63 @@ std::variant<std::vector<Fragment>, std::string> parse_external_fragments(std::s
   for (std::size_t i = 0; i < list.size(); ++i) {
     const auto& f = list[i];
     const std::string at = "fragments[" + std::to_string(i) + "]";
-    if (!f.is_object()) return at + ": must be an object";
+    if (!f.is_object())
+      return at + ": must be an object";
     for (const auto& [key, value] : f.items()) {
-      static const std::set<std::string> known = {"prim", "x", "y", "mask", "seg", "sample", "helper",
-                                                  "coverage", "centroid", "ddx", "ddy"};
-      if (known.count(key) == 0) return at + "." + key + ": unknown key";
+      static const std::set<std::string> known = {"prim",     "x",      "y",      "mask",
+                                                  "seg",      "sample", "helper", "coverage",
+                                                  "centroid", "ddx",    "ddy"};
+      if (known.count(key) == 0)
+        return at + "." + key + ": unknown key";
       (void)value;
     }
     Fragment frag;
     for (const char* key : {"prim", "x", "y"}) {
-      if (!f.contains(key)) return at + "." + key + ": missing";
-      if (!get_int(f[key])) return at + "." + key + ": must be an integer";
+      if (!f.contains(key))
+        return at + "." + key + ": missing";
+      if (!get_int(f[key]))
+        return at + "." + key + ": must be an integer";
     }
     const std::int64_t prim = *get_int(f["prim"]), x = *get_int(f["x"]), y = *get_int(f["y"]);
     if (prim < 0 || prim >= static_cast<std::int64_t>(scene.primitives.size())) {
       return at + ".prim: " + std::to_string(prim) + " is not a primitive of the scene (" +
              std::to_string(scene.primitives.size()) + " primitives)";
     }
-    if (x < 0 || x >= scene.width) return at + ".x: " + std::to_string(x) + " is outside the target (width " + std::to_string(scene.width) + ")";
-    if (y < 0 || y >= scene.height) return at + ".y: " + std::to_string(y) + " is outside the target (height " + std::to_string(scene.height) + ")";
+    if (x < 0 || x >= scene.width)
+      return at + ".x: " + std::to_string(x) + " is outside the target (width " +
+             std::to_string(scene.width) + ")";
+    if (y < 0 || y >= scene.height)
+      return at + ".y: " + std::to_string(y) + " is outside the target (height " +
+             std::to_string(scene.height) + ")";
     std::int64_t mask = 1;
     if (f.contains("mask")) {
       const auto m = get_int(f["mask"]);
-      if (!m) return at + ".mask: must be an integer";
+      if (!m)
+        return at + ".mask: must be an integer";
       mask = *m;
     }
     if (mask < 0 || mask > static_cast<std::int64_t>(full_mask(samples))) {
-      return at + ".mask: " + std::to_string(mask) + " has bits beyond the " + std::to_string(samples) + " sample(s) of the scene";
+      return at + ".mask: " + std::to_string(mask) + " has bits beyond the " +
+             std::to_string(samples) + " sample(s) of the scene";
     }
     std::int64_t seg = -1, sample = -1;
     if (f.contains("seg")) {
       const auto s = get_int(f["seg"]);
-      if (!s || *s < 0 || *s > UINT32_MAX) return at + ".seg: must be a non-negative integer";
+      if (!s || *s < 0 || *s > UINT32_MAX)
+        return at + ".seg: must be a non-negative integer";
       seg = *s;
       frag.seg = static_cast<std::uint32_t>(*s);
     }
     if (f.contains("sample")) {
       const auto s = get_int(f["sample"]);
-      if (!s || *s < 0 || *s >= samples) return at + ".sample: must be a sample index below " + std::to_string(samples);
+      if (!s || *s < 0 || *s >= samples)
+        return at + ".sample: must be a sample index below " + std::to_string(samples);
       sample = *s;
       frag.sample = static_cast<std::uint32_t>(*s);
     }
     if (f.contains("helper")) {
-      if (!f["helper"].is_boolean()) return at + ".helper: must be true or false";
+      if (!f["helper"].is_boolean())
+        return at + ".helper: must be true or false";
       frag.helper = f["helper"].get<bool>();
     }
     frag.prim = static_cast<std::uint32_t>(prim);
@@ -387,8 +436,8 @@ std::variant<std::vector<Fragment>, std::string> parse_external_fragments(std::s
     frag.y = static_cast<std::int32_t>(y);
     frag.mask = static_cast<std::uint32_t>(mask);
     if (!seen.emplace(frag.prim, frag.x, frag.y, seg, sample).second) {
-      return at + ": duplicate fragment (prim " + std::to_string(prim) + ", x " + std::to_string(x) + ", y " +
-             std::to_string(y) + ")";
+      return at + ": duplicate fragment (prim " + std::to_string(prim) + ", x " +
+             std::to_string(x) + ", y " + std::to_string(y) + ")";
     }
     out.push_back(frag);
   }
@@ -396,9 +445,11 @@ std::variant<std::vector<Fragment>, std::string> parse_external_fragments(std::s
   return out;
 }
 
-std::unique_ptr<Driver> open_external_driver(std::string_view command, std::string* error, ExternalOptions options) {
+std::unique_ptr<Driver> open_external_driver(std::string_view command, std::string* error,
+                                             ExternalOptions options) {
   if (external_argv(command).empty()) {
-    if (error != nullptr) *error = "external driver: empty command (use external:COMMAND)";
+    if (error != nullptr)
+      *error = "external driver: empty command (use external:COMMAND)";
     return nullptr;
   }
   return std::make_unique<ExternalDriver>(std::string(command), options);
@@ -408,6 +459,6 @@ namespace detail {
 std::unique_ptr<Driver> open_external(std::string_view arg, std::string* error) {
   return open_external_driver(arg, error);
 }
-}  // namespace detail
+} // namespace detail
 
-}  // namespace rastrules::driver
+} // namespace rastrules::driver

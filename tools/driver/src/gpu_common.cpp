@@ -9,7 +9,9 @@
 
 namespace rastrules::driver::detail {
 
-bool is_line(PrimitiveType t) { return t == PrimitiveType::kLine || t == PrimitiveType::kLineStrip; }
+bool is_line(PrimitiveType t) {
+  return t == PrimitiveType::kLine || t == PrimitiveType::kLineStrip;
+}
 
 std::uint32_t slot_count(const Primitive& p) {
   if (p.type == PrimitiveType::kLineStrip) {
@@ -20,11 +22,13 @@ std::uint32_t slot_count(const Primitive& p) {
 
 // rule: DRIVER.LAVAPIPE.POSITION, DRIVER.OPENGL.POSITION
 double position_scale(const Scene& scene) {
-  double extent = std::max({1.0, static_cast<double>(scene.width), static_cast<double>(scene.height)});
+  double extent =
+      std::max({1.0, static_cast<double>(scene.width), static_cast<double>(scene.height)});
   for (const Primitive& p : scene.primitives) {
     for (const FloatPoint& v : p.v) {
       for (float c : v) {
-        if (!std::isfinite(c)) return 0.0;
+        if (!std::isfinite(c))
+          return 0.0;
         extent = std::max(extent, std::fabs(static_cast<double>(c)));
       }
     }
@@ -34,14 +38,16 @@ double position_scale(const Scene& scene) {
   // dropped).
   extent += 2.0;
   double k = 1.0;
-  while (k < extent) k *= 2.0;
+  while (k < extent)
+    k *= 2.0;
   return k;
 }
 
 // rule: DRIVER.LAVAPIPE.POSITION, DRIVER.OPENGL.POSITION
 double max_position_scale(double max_dim, double bound) {
   double k = 1.0;
-  while (2.0 * (2.0 * k) <= max_dim && 2.0 * k <= bound) k *= 2.0;
+  while (2.0 * (2.0 * k) <= max_dim && 2.0 * k <= bound)
+    k *= 2.0;
   return k;
 }
 
@@ -59,7 +65,8 @@ std::string unsupported_scene(const Scene& scene, const DriverInfo& info, double
     return std::to_string(samples) + " samples not supported by " + checks.count_by;
   }
   if (checks.msaa) {
-    if (std::string why = checks.msaa(ms); !why.empty()) return why;
+    if (std::string why = checks.msaa(ms); !why.empty())
+      return why;
   }
   if (ms.shading == ShadingRate::kSample) {
     return "sample-frequency shading not supported (the adapter observes coverage per pixel)";
@@ -71,7 +78,8 @@ std::string unsupported_scene(const Scene& scene, const DriverInfo& info, double
   std::uint64_t slots = 0;
   for (const Primitive& p : scene.primitives) {
     if (is_line(p.type)) {
-      if (std::string why = checks.line(scene, p); !why.empty()) return why;
+      if (std::string why = checks.line(scene, p); !why.empty())
+        return why;
     }
     slots += slot_count(p);
   }
@@ -90,14 +98,16 @@ std::string unsupported_scene(const Scene& scene, const DriverInfo& info, double
 }
 
 DrawResult GpuDriver::draw(const Scene& scene) {
-  if (std::string why = unsupported(scene); !why.empty()) return DriverError{"unsupported: " + why};
+  if (std::string why = unsupported(scene); !why.empty())
+    return DriverError{"unsupported: " + why};
   auto prepared = prepare(scene);
   if (const auto* e = std::get_if<SceneError>(&prepared)) {
     return DriverError{"invalid scene: " + e->what()};
   }
   const auto w = static_cast<std::uint32_t>(scene.width);
   const auto h = static_cast<std::uint32_t>(scene.height);
-  if (w == 0 || h == 0 || scene.primitives.empty()) return std::vector<Fragment>{};
+  if (w == 0 || h == 0 || scene.primitives.empty())
+    return std::vector<Fragment>{};
   // Slots and vertices: one draw per scene primitive, vertices as float32 exactly as read.
   return draw_packed(scene, pack_scene(scene), w, h);
 }
@@ -129,10 +139,12 @@ std::vector<Fragment> decode_coverage(const Scene& scene, const PackedScene& pac
       for (std::uint32_t y = 0; y < h; ++y) {
         for (std::uint32_t x = 0; x < w; ++x) {
           const std::uint32_t m = coverage[plane + std::size_t{y} * w + x] & all;
-          if (m == 0) continue;
+          if (m == 0)
+            continue;
           Fragment f(static_cast<std::uint32_t>(i), static_cast<std::int32_t>(x),
                      static_cast<std::int32_t>(y), m);
-          if (strip) f.seg = s;
+          if (strip)
+            f.seg = s;
           out.push_back(f);
         }
       }
@@ -142,4 +154,4 @@ std::vector<Fragment> decode_coverage(const Scene& scene, const PackedScene& pac
   return out;
 }
 
-}  // namespace rastrules::driver::detail
+} // namespace rastrules::driver::detail

@@ -42,7 +42,8 @@ inline constexpr std::uint64_t kMaxCoverageBytes = std::uint64_t{256} << 20;
 
 // The adapter-specific parts of unsupported() (DRIVER.*.SUPPORT).
 struct SupportChecks {
-  // Why only the standard sample pattern is supported, e.g. "Vulkan standard sample locations only".
+  // Why only the standard sample pattern is supported, e.g. "Vulkan standard sample locations
+  // only".
   std::string_view pattern_note;
   // What follows "N samples not supported by " when the sample count is not in info.sample_counts.
   std::string count_by;
@@ -57,15 +58,15 @@ struct SupportChecks {
 // Returns why an adapter with this info and largest K cannot draw the scene, or "": the
 // sample pattern, the sample count, the shading rate, the target size, each line, K and the
 // coverage buffer's size, in that order.
-[[nodiscard]] std::string unsupported_scene(const Scene& scene, const DriverInfo& info, double max_k,
-                                            const SupportChecks& checks);
+[[nodiscard]] std::string unsupported_scene(const Scene& scene, const DriverInfo& info,
+                                            double max_k, const SupportChecks& checks);
 
 // A scene's vertices, packed for one draw per primitive, and the coverage slot of each
 // primitive's first segment.
 struct PackedScene {
-  std::vector<std::uint32_t> first_slot;  // per scene primitive
-  std::vector<float> vertices;            // x, y of every vertex, float32 exactly as read
-  std::uint32_t slots = 0;                // coverage slots in all
+  std::vector<std::uint32_t> first_slot; // per scene primitive
+  std::vector<float> vertices;           // x, y of every vertex, float32 exactly as read
+  std::uint32_t slots = 0;               // coverage slots in all
 };
 [[nodiscard]] PackedScene pack_scene(const Scene& scene);
 
@@ -80,7 +81,7 @@ struct PackedScene {
 // draw(), which rejects unsupported and invalid scenes, answers empty targets and scenes
 // without drawing, and hands the rest, packed, to the adapter's draw_packed().
 class GpuDriver : public Driver {
- public:
+public:
   GpuDriver() = default;
   GpuDriver(const GpuDriver&) = delete;
   GpuDriver& operator=(const GpuDriver&) = delete;
@@ -93,7 +94,7 @@ class GpuDriver : public Driver {
 
   [[nodiscard]] DrawResult draw(const Scene& scene) final;
 
- protected:
+protected:
   // The adapter's part of unsupported() (DRIVER.*.SUPPORT).
   [[nodiscard]] virtual SupportChecks support_checks() const = 0;
 
@@ -103,12 +104,13 @@ class GpuDriver : public Driver {
                                                std::uint32_t w, std::uint32_t h) = 0;
 
   DriverInfo info_;
-  double max_k_ = 1.0;  // the largest K the device allows (max_position_scale)
+  double max_k_ = 1.0; // the largest K the device allows (max_position_scale)
 };
 
 // Opens a GPU adapter that takes no argument: T() then T::init() (returns "" or the reason).
 template <class T>
-std::unique_ptr<Driver> open_gpu_driver(std::string_view name, std::string_view arg, std::string* error) {
+std::unique_ptr<Driver> open_gpu_driver(std::string_view name, std::string_view arg,
+                                        std::string* error) {
   if (!arg.empty()) {
     *error = "driver '" + std::string(name) + "' takes no argument";
     return nullptr;
@@ -121,4 +123,4 @@ std::unique_ptr<Driver> open_gpu_driver(std::string_view name, std::string_view 
   return d;
 }
 
-}  // namespace rastrules::driver::detail
+} // namespace rastrules::driver::detail

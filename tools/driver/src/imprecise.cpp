@@ -25,20 +25,25 @@ struct RawPoint {
 
 std::int64_t floor_div(std::int64_t a, std::int64_t b) {
   std::int64_t q = a / b;
-  if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
+  if ((a % b != 0) && ((a < 0) != (b < 0)))
+    --q;
   return q;
 }
 
 // rule: DRIVER.IMPRECISE
 class ImpreciseDriver final : public Driver {
- public:
+public:
   ImpreciseDriver(std::string name, ImpreciseBugs bugs) : bugs_(bugs) {
     info_.name = std::move(name);
     std::string what;
-    if (bugs_.float_edges) what += " float32 edge functions with E >= 0;";
-    if (bugs_.fill_bottom_right) what += " bottom-right fill convention;";
-    if (bugs_.four_bit_subpixel) what += " 4 subpixel bits;";
-    if (!what.empty()) what.pop_back();
+    if (bugs_.float_edges)
+      what += " float32 edge functions with E >= 0;";
+    if (bugs_.fill_bottom_right)
+      what += " bottom-right fill convention;";
+    if (bugs_.four_bit_subpixel)
+      what += " 4 subpixel bits;";
+    if (!what.empty())
+      what.pop_back();
     info_.description = "built-in imprecise rasterizer (planted bugs:" + what + ")";
     info_.subpixel_bits = bugs_.four_bit_subpixel ? 4 : 8;
     info_.sample_counts = {1};
@@ -48,8 +53,10 @@ class ImpreciseDriver final : public Driver {
   [[nodiscard]] const DriverInfo& info() const override { return info_; }
 
   [[nodiscard]] std::string unsupported(const Scene& scene) const override {
-    if (scene.msaa.count() != 1) return std::to_string(scene.msaa.count()) + " samples not supported";
-    if (scene.msaa.wants_quads() || scene.msaa.has_centroid) return "quads and centroids not supported";
+    if (scene.msaa.count() != 1)
+      return std::to_string(scene.msaa.count()) + " samples not supported";
+    if (scene.msaa.wants_quads() || scene.msaa.has_centroid)
+      return "quads and centroids not supported";
     for (const Primitive& p : scene.primitives) {
       if (p.type != PrimitiveType::kTriangle) {
         return std::string(to_string(p.type)) + " primitives not supported (triangles only)";
@@ -81,41 +88,50 @@ class ImpreciseDriver final : public Driver {
     return out;
   }
 
- private:
+private:
   // Rounds to the driver's subpixel grid (half to even, the default rounding mode), in raw
   // units of 1/256 px.
   [[nodiscard]] std::optional<std::int64_t> snap(float value) const {
-    if (!std::isfinite(value)) return std::nullopt;
+    if (!std::isfinite(value))
+      return std::nullopt;
     const int bits = bugs_.four_bit_subpixel ? 4 : kSubpixelBits;
     const double scaled = std::nearbyint(static_cast<double>(value) * std::ldexp(1.0, bits));
     const double raw = scaled * std::ldexp(1.0, kSubpixelBits - bits);
-    if (raw < kMinVertexRaw || raw > kMaxVertexRaw) return std::nullopt;
+    if (raw < kMinVertexRaw || raw > kMaxVertexRaw)
+      return std::nullopt;
     return static_cast<std::int64_t>(raw);
   }
 
   [[nodiscard]] static bool bottom_right_inclusive(RawPoint a, RawPoint b) {
     // Clockwise triangle, y down: a horizontal edge running in -x has the interior above it
     // (a bottom edge); a non-horizontal edge running down has the interior to its left.
-    if (a.y == b.y) return b.x < a.x;
+    if (a.y == b.y)
+      return b.x < a.x;
     return b.y > a.y;
   }
 
   [[nodiscard]] static bool scene_inclusive(RawPoint a, RawPoint b, FillConvention f) {
     const bool top_inclusive = f == FillConvention::kTopLeft || f == FillConvention::kTopRight;
     const bool left_inclusive = f == FillConvention::kTopLeft || f == FillConvention::kBottomLeft;
-    if (a.y == b.y) return top_inclusive ? (b.x > a.x) : (b.x < a.x);
+    if (a.y == b.y)
+      return top_inclusive ? (b.x > a.x) : (b.x < a.x);
     return left_inclusive ? (b.y < a.y) : (b.y > a.y);
   }
 
   void draw_triangle(const Scene& scene, std::uint32_t prim, std::array<RawPoint, 3> v,
                      std::vector<Fragment>& out) const {
-    const std::int64_t area = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
-    if (area == 0) return;
+    const std::int64_t area =
+        (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
+    if (area == 0)
+      return;
     const bool clockwise = area > 0;
     const bool front = (scene.state.front_face == FrontFace::kClockwise) == clockwise;
-    if (scene.state.cull == CullMode::kBack && !front) return;
-    if (scene.state.cull == CullMode::kFront && front) return;
-    if (!clockwise) std::swap(v[1], v[2]);
+    if (scene.state.cull == CullMode::kBack && !front)
+      return;
+    if (scene.state.cull == CullMode::kFront && front)
+      return;
+    if (!clockwise)
+      std::swap(v[1], v[2]);
     std::array<bool, 3> inclusive{};
     for (std::size_t i = 0; i < 3; ++i) {
       const RawPoint a = v[i];
@@ -131,16 +147,22 @@ class ImpreciseDriver final : public Driver {
       max_y = std::max(max_y, p.y);
     }
     // Pixels whose centre (i * 256 + 128) lies in the bounding box, clipped to the target.
-    const std::int64_t x0 = std::max<std::int64_t>(0, -floor_div(-(min_x - kSubpixelHalf), kSubpixelOne));
-    const std::int64_t x1 = std::min<std::int64_t>(scene.width - 1, floor_div(max_x - kSubpixelHalf, kSubpixelOne));
-    const std::int64_t y0 = std::max<std::int64_t>(0, -floor_div(-(min_y - kSubpixelHalf), kSubpixelOne));
-    const std::int64_t y1 = std::min<std::int64_t>(scene.height - 1, floor_div(max_y - kSubpixelHalf, kSubpixelOne));
+    const std::int64_t x0 =
+        std::max<std::int64_t>(0, -floor_div(-(min_x - kSubpixelHalf), kSubpixelOne));
+    const std::int64_t x1 =
+        std::min<std::int64_t>(scene.width - 1, floor_div(max_x - kSubpixelHalf, kSubpixelOne));
+    const std::int64_t y0 =
+        std::max<std::int64_t>(0, -floor_div(-(min_y - kSubpixelHalf), kSubpixelOne));
+    const std::int64_t y1 =
+        std::min<std::int64_t>(scene.height - 1, floor_div(max_y - kSubpixelHalf, kSubpixelOne));
     for (std::int64_t py = y0; py <= y1; ++py) {
       for (std::int64_t px = x0; px <= x1; ++px) {
         const RawPoint s{px * kSubpixelOne + kSubpixelHalf, py * kSubpixelOne + kSubpixelHalf};
         bool in = true;
-        for (std::size_t i = 0; i < 3 && in; ++i) in = inside(v[i], v[(i + 1) % 3], s, inclusive[i]);
-        if (in) out.emplace_back(prim, static_cast<std::int32_t>(px), static_cast<std::int32_t>(py));
+        for (std::size_t i = 0; i < 3 && in; ++i)
+          in = inside(v[i], v[(i + 1) % 3], s, inclusive[i]);
+        if (in)
+          out.emplace_back(prim, static_cast<std::int32_t>(px), static_cast<std::int32_t>(py));
       }
     }
   }
@@ -149,9 +171,12 @@ class ImpreciseDriver final : public Driver {
     if (bugs_.float_edges) {
       // The planted bug: float32 arithmetic in pixels, and (unless a tie rule is planted as
       // well) every sample with E >= 0 inside, whatever the edge.
-      const auto f = [](std::int64_t raw) { return static_cast<float>(raw) / static_cast<float>(kSubpixelOne); };
+      const auto f = [](std::int64_t raw) {
+        return static_cast<float>(raw) / static_cast<float>(kSubpixelOne);
+      };
       const float e = (f(b.x) - f(a.x)) * (f(s.y) - f(a.y)) - (f(b.y) - f(a.y)) * (f(s.x) - f(a.x));
-      if (bugs_.fill_bottom_right) return e > 0.0f || (e == 0.0f && inclusive);
+      if (bugs_.fill_bottom_right)
+        return e > 0.0f || (e == 0.0f && inclusive);
       return e >= 0.0f;
     }
     const std::int64_t e = (b.x - a.x) * (s.y - a.y) - (b.y - a.y) * (s.x - a.x);
@@ -162,7 +187,7 @@ class ImpreciseDriver final : public Driver {
   DriverInfo info_;
 };
 
-}  // namespace
+} // namespace
 
 bool parse_imprecise_variant(std::string_view name, ImpreciseBugs* bugs) {
   ImpreciseBugs b;
@@ -182,7 +207,8 @@ bool parse_imprecise_variant(std::string_view name, ImpreciseBugs* bugs) {
 }
 
 std::vector<std::string> imprecise_driver_names() {
-  return {"imprecise", "imprecise:float-edges", "imprecise:fill-bottom-right", "imprecise:4-bit-subpixel"};
+  return {"imprecise", "imprecise:float-edges", "imprecise:fill-bottom-right",
+          "imprecise:4-bit-subpixel"};
 }
 
 std::unique_ptr<Driver> open_imprecise_driver(std::string_view name, std::string* error) {
@@ -190,7 +216,8 @@ std::unique_ptr<Driver> open_imprecise_driver(std::string_view name, std::string
   if (!parse_imprecise_variant(name, &bugs)) {
     if (error != nullptr) {
       *error = "unknown imprecise driver \"" + std::string(name) +
-               "\" (imprecise, imprecise:float-edges, imprecise:fill-bottom-right, imprecise:4-bit-subpixel)";
+               "\" (imprecise, imprecise:float-edges, imprecise:fill-bottom-right, "
+               "imprecise:4-bit-subpixel)";
     }
     return nullptr;
   }
@@ -199,8 +226,9 @@ std::unique_ptr<Driver> open_imprecise_driver(std::string_view name, std::string
 
 namespace detail {
 std::unique_ptr<Driver> open_imprecise(std::string_view arg, std::string* error) {
-  return open_imprecise_driver(arg.empty() ? std::string("imprecise") : "imprecise:" + std::string(arg), error);
+  return open_imprecise_driver(
+      arg.empty() ? std::string("imprecise") : "imprecise:" + std::string(arg), error);
 }
-}  // namespace detail
+} // namespace detail
 
-}  // namespace rastrules::driver
+} // namespace rastrules::driver

@@ -17,9 +17,9 @@
 
 #include "drivers.hpp"
 #include "gpu_common.hpp"
-#include "vulkan_common.hpp"
 #include "rastrules/driver/coverage_frag.spv.h"
 #include "rastrules/scene.hpp"
+#include "vulkan_common.hpp"
 
 namespace rastrules::driver {
 namespace {
@@ -34,16 +34,19 @@ using Push = detail::CoveragePush;
 using PipelineKey = detail::CoveragePipelineState;
 
 class LavapipeDriver final : public detail::GpuDriver {
- public:
+public:
   ~LavapipeDriver() override { destroy(); }
 
   // Creates the instance, selects the CPU device and creates everything draws share.
   // Returns an empty string on success, else the reason.
   // rule: DRIVER.LAVAPIPE.DEVICE
   std::string init() {
-    if (std::string why = vk_.open(); !why.empty()) return why;
-    if (std::string why = check_features(); !why.empty()) return why;
-    if (std::string why = create_device(); !why.empty()) return why;
+    if (std::string why = vk_.open(); !why.empty())
+      return why;
+    if (std::string why = check_features(); !why.empty())
+      return why;
+    if (std::string why = create_device(); !why.empty())
+      return why;
     return create_shared();
   }
 
@@ -54,18 +57,22 @@ class LavapipeDriver final : public detail::GpuDriver {
     checks.count_by = vk_.props.deviceName;
     checks.k_limit = "device limit";
     checks.line = [this](const Scene& s, const Primitive& p) -> std::string {
-      if (p.aa) return "antialiased lines not supported";
+      if (p.aa)
+        return "antialiased lines not supported";
       switch (s.line_mode) {
-        case LineMode::kD3DDiamond:
-          return "line mode 'd3d' (diamond exit) has no Vulkan equivalent";
-        case LineMode::kQuadWide:
-          return "line mode 'quad-wide' (1.4 px) not supported (Vulkan rectangular lines are 1.0 px wide here)";
-        case LineMode::kVulkanBresenham:
-          if (!info_.lines_bresenham) return "Bresenham lines not supported by the device";
-          break;
-        case LineMode::kQuadNarrow:
-          if (!info_.lines_rectangular) return "rectangular lines not supported by the device";
-          break;
+      case LineMode::kD3DDiamond:
+        return "line mode 'd3d' (diamond exit) has no Vulkan equivalent";
+      case LineMode::kQuadWide:
+        return "line mode 'quad-wide' (1.4 px) not supported (Vulkan rectangular lines are 1.0 px "
+               "wide here)";
+      case LineMode::kVulkanBresenham:
+        if (!info_.lines_bresenham)
+          return "Bresenham lines not supported by the device";
+        break;
+      case LineMode::kQuadNarrow:
+        if (!info_.lines_rectangular)
+          return "rectangular lines not supported by the device";
+        break;
       }
       return {};
     };
@@ -78,10 +85,9 @@ class LavapipeDriver final : public detail::GpuDriver {
     const std::vector<float>& vertices = packed.vertices;
     const std::uint32_t slots = packed.slots;
     const VkDeviceSize cov_bytes = std::max<VkDeviceSize>(VkDeviceSize{slots} * w * h * 4U, 4U);
-    if (std::string why = detail::ensure_host_buffer(vk_.device, vk_.memory, cov_bytes,
-                                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                                         VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                                     &coverage_);
+    if (std::string why = detail::ensure_host_buffer(
+            vk_.device, vk_.memory, cov_bytes,
+            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, &coverage_);
         !why.empty()) {
       return DriverError{why};
     }
@@ -127,23 +133,23 @@ class LavapipeDriver final : public detail::GpuDriver {
       key.samples = samples;
       key.sample_mask = mask;
       switch (p.type) {
-        case PrimitiveType::kTriangle:
-          key.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-          // Both y-down: on-screen winding maps directly (DRIVER.LAVAPIPE.SUPPORT).
-          key.cull = detail::vk_cull_mode(scene.state.cull);
-          key.front = detail::vk_front_face(scene.state.front_face);
-          break;
-        case PrimitiveType::kPoint:
-          key.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-          break;
-        case PrimitiveType::kLine:
-        case PrimitiveType::kLineStrip:
-          key.topology = p.type == PrimitiveType::kLine ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST
-                                                        : VK_PRIMITIVE_TOPOLOGY_LINE_STRIP;
-          key.line_mode = scene.line_mode == LineMode::kVulkanBresenham
-                              ? VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT
-                              : VK_LINE_RASTERIZATION_MODE_RECTANGULAR_EXT;
-          break;
+      case PrimitiveType::kTriangle:
+        key.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+        // Both y-down: on-screen winding maps directly (DRIVER.LAVAPIPE.SUPPORT).
+        key.cull = detail::vk_cull_mode(scene.state.cull);
+        key.front = detail::vk_front_face(scene.state.front_face);
+        break;
+      case PrimitiveType::kPoint:
+        key.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
+        break;
+      case PrimitiveType::kLine:
+      case PrimitiveType::kLineStrip:
+        key.topology = p.type == PrimitiveType::kLine ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST
+                                                      : VK_PRIMITIVE_TOPOLOGY_LINE_STRIP;
+        key.line_mode = scene.line_mode == LineMode::kVulkanBresenham
+                            ? VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT
+                            : VK_LINE_RASTERIZATION_MODE_RECTANGULAR_EXT;
+        break;
       }
       auto pipeline = get_pipeline(key);
       if (const auto* e = std::get_if<std::string>(&pipeline)) {
@@ -171,14 +177,15 @@ class LavapipeDriver final : public detail::GpuDriver {
     }
     const std::string submitted = vk_.submit_and_wait();
     vkResetCommandBuffer(cmd, 0);
-    if (!submitted.empty()) return DriverError{submitted};
+    if (!submitted.empty())
+      return DriverError{submitted};
 
     // rule: DRIVER.LAVAPIPE.COVERAGE
-    return detail::decode_coverage(scene, packed, static_cast<const std::uint32_t*>(coverage_.mapped),
-                                   w, h);
+    return detail::decode_coverage(scene, packed,
+                                   static_cast<const std::uint32_t*>(coverage_.mapped), w, h);
   }
 
- private:
+private:
   std::string check_features() {
     VkPhysicalDeviceLineRasterizationFeaturesEXT line{};
     line.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT;
@@ -190,7 +197,8 @@ class LavapipeDriver final : public detail::GpuDriver {
       return "lavapipe: device lacks fragmentStoresAndAtomics (needed to observe coverage)";
     }
     if (f2.features.geometryShader != VK_TRUE) {
-      return "lavapipe: device lacks geometryShader (needed for gl_PrimitiveID in fragment shaders)";
+      return "lavapipe: device lacks geometryShader (needed for gl_PrimitiveID in fragment "
+             "shaders)";
     }
     std::uint32_t n = 0;
     vkEnumerateDeviceExtensionProperties(vk_.physical, nullptr, &n, nullptr);
@@ -306,7 +314,8 @@ class LavapipeDriver final : public detail::GpuDriver {
 
   // Returns the cached pipeline for key, creating it on first use.
   std::variant<VkPipeline, std::string> get_pipeline(const PipelineKey& key) {
-    if (auto it = pipelines_.find(key); it != pipelines_.end()) return it->second;
+    if (auto it = pipelines_.find(key); it != pipelines_.end())
+      return it->second;
     VkPipeline pipeline = VK_NULL_HANDLE;
     if (std::string why = program_.create_pipeline(vk_.device, key, &pipeline); !why.empty()) {
       return why;
@@ -318,7 +327,8 @@ class LavapipeDriver final : public detail::GpuDriver {
   void destroy() {
     if (const VkDevice device = vk_.device; device != VK_NULL_HANDLE) {
       vkDeviceWaitIdle(device);
-      for (auto& [key, p] : pipelines_) vkDestroyPipeline(device, p, nullptr);
+      for (auto& [key, p] : pipelines_)
+        vkDestroyPipeline(device, p, nullptr);
       pipelines_.clear();
       free_host_buffer(device, &coverage_);
       free_host_buffer(device, &vertex_);
@@ -326,7 +336,8 @@ class LavapipeDriver final : public detail::GpuDriver {
       if (descriptor_pool_ != VK_NULL_HANDLE) {
         vkDestroyDescriptorPool(device, descriptor_pool_, nullptr);
       }
-      if (set_layout_ != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
+      if (set_layout_ != VK_NULL_HANDLE)
+        vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
     }
     vk_.destroy();
   }
@@ -342,11 +353,11 @@ class LavapipeDriver final : public detail::GpuDriver {
   detail::CoverageProgram program_;
   HostBuffer coverage_;
   HostBuffer vertex_;
-  VkDeviceSize bound_size_ = 0;  // coverage_.size when the descriptor set was last written
+  VkDeviceSize bound_size_ = 0; // coverage_.size when the descriptor set was last written
   std::map<PipelineKey, VkPipeline> pipelines_;
 };
 
-}  // namespace
+} // namespace
 
 namespace detail {
 
@@ -355,5 +366,5 @@ std::unique_ptr<Driver> open_lavapipe(std::string_view arg, std::string* error) 
   return open_gpu_driver<LavapipeDriver>("lavapipe", arg, error);
 }
 
-}  // namespace detail
-}  // namespace rastrules::driver
+} // namespace detail
+} // namespace rastrules::driver

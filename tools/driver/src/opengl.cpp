@@ -46,41 +46,49 @@ std::string egl_failed(const char* what) {
 }
 
 bool has_extension(const char* list, std::string_view name) {
-  if (list == nullptr) return false;
+  if (list == nullptr)
+    return false;
   std::string_view all(list);
   std::size_t pos = 0;
   while (pos < all.size()) {
     const std::size_t end = std::min(all.find(' ', pos), all.size());
-    if (all.substr(pos, end - pos) == name) return true;
+    if (all.substr(pos, end - pos) == name)
+      return true;
     pos = end + 1;
   }
   return false;
 }
 
 class OpenGLDriver final : public detail::GpuDriver {
- public:
+public:
   ~OpenGLDriver() override { destroy(); }
 
   // Opens the display, creates the context and everything draws share. Returns an empty
   // string on success, else the reason.
   // rule: DRIVER.OPENGL.DEVICE
   std::string init() {
-    if (std::string why = open_display(); !why.empty()) return why;
-    if (std::string why = create_context(); !why.empty()) return why;
+    if (std::string why = open_display(); !why.empty())
+      return why;
+    if (std::string why = create_context(); !why.empty())
+      return why;
     const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
-    if (renderer == nullptr || std::string_view(renderer).find("llvmpipe") == std::string_view::npos) {
-      return std::string("opengl: the renderer is '") + (renderer != nullptr ? renderer : "unknown") +
+    if (renderer == nullptr ||
+        std::string_view(renderer).find("llvmpipe") == std::string_view::npos) {
+      return std::string("opengl: the renderer is '") +
+             (renderer != nullptr ? renderer : "unknown") +
              "', not llvmpipe (install libgl1-mesa-dri and libegl-mesa0)";
     }
     // Keep Mesa's EGL and DRI drivers loaded for the life of the process: their process-wide
     // state (LLVM, caches) is not meant to be torn down by every driver that is opened and
     // closed (it shows as leaks under LeakSanitizer). Only marks already loaded libraries.
-    for (const char* lib : {"libEGL_mesa.so.0", "swrast_dri.so", "libgallium_dri.so", "libglapi.so.0"}) {
+    for (const char* lib :
+         {"libEGL_mesa.so.0", "swrast_dri.so", "libgallium_dri.so", "libglapi.so.0"}) {
       void* pinned = dlopen(lib, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
-      (void)pinned;  // deliberately never closed
+      (void)pinned; // deliberately never closed
     }
-    if (std::string why = query_limits(renderer, version); !why.empty()) return why;
+    if (std::string why = query_limits(renderer, version); !why.empty())
+      return why;
     return create_shared();
   }
 
@@ -99,7 +107,8 @@ class OpenGLDriver final : public detail::GpuDriver {
     };
     checks.line = [](const Scene& s, const Primitive& p) -> std::string {
       const std::uint32_t samples = s.msaa.count();
-      if (p.aa) return "antialiased lines not supported (GL_LINE_SMOOTH is not used)";
+      if (p.aa)
+        return "antialiased lines not supported (GL_LINE_SMOOTH is not used)";
       if (samples == 1 && s.line_mode != LineMode::kVulkanBresenham) {
         return "line mode '" + std::string(to_string(s.line_mode)) +
                "' not supported on 1 sample (OpenGL aliased lines are 'vulkan-bresenham')";
@@ -127,13 +136,15 @@ class OpenGLDriver final : public detail::GpuDriver {
     const std::uint32_t slots = packed.slots;
     const std::size_t cov_words = std::max<std::size_t>(std::size_t{slots} * w * h, 1);
     const std::uint32_t samples = scene.msaa.count();
-    if (std::string why = ensure_framebuffer(w, h, samples); !why.empty()) return DriverError{why};
+    if (std::string why = ensure_framebuffer(w, h, samples); !why.empty())
+      return DriverError{why};
 
     // The coverage buffer: grown by doubling; its storage is re-specified in place and the
     // binding point is rewritten on every draw, so no stale binding can survive a regrowth.
     if (coverage_words_ < cov_words) {
       std::size_t words = 1024;
-      while (words < cov_words) words *= 2;
+      while (words < cov_words)
+        words *= 2;
       glBindBuffer(GL_SHADER_STORAGE_BUFFER, coverage_);
       glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(words * 4U), nullptr,
                    GL_DYNAMIC_READ);
@@ -179,28 +190,28 @@ class OpenGLDriver final : public detail::GpuDriver {
       const Primitive& p = scene.primitives[i];
       GLenum mode = GL_TRIANGLES;
       switch (p.type) {
-        case PrimitiveType::kTriangle:
-          mode = GL_TRIANGLES;
-          if (scene.state.cull == CullMode::kNone) {
-            glDisable(GL_CULL_FACE);
-          } else {
-            glEnable(GL_CULL_FACE);
-            glCullFace(scene.state.cull == CullMode::kBack ? GL_BACK : GL_FRONT);
-          }
-          // rule: DRIVER.OPENGL.ORIGIN
-          // Under GL_UPPER_LEFT the sign of GL's window-space area is reversed, so the
-          // orientation is the one seen in the y-down image: clockwise on screen is GL_CW.
-          glFrontFace(scene.state.front_face == FrontFace::kClockwise ? GL_CW : GL_CCW);
-          break;
-        case PrimitiveType::kPoint:
-          mode = GL_POINTS;
+      case PrimitiveType::kTriangle:
+        mode = GL_TRIANGLES;
+        if (scene.state.cull == CullMode::kNone) {
           glDisable(GL_CULL_FACE);
-          break;
-        case PrimitiveType::kLine:
-        case PrimitiveType::kLineStrip:
-          mode = p.type == PrimitiveType::kLine ? GL_LINES : GL_LINE_STRIP;
-          glDisable(GL_CULL_FACE);
-          break;
+        } else {
+          glEnable(GL_CULL_FACE);
+          glCullFace(scene.state.cull == CullMode::kBack ? GL_BACK : GL_FRONT);
+        }
+        // rule: DRIVER.OPENGL.ORIGIN
+        // Under GL_UPPER_LEFT the sign of GL's window-space area is reversed, so the
+        // orientation is the one seen in the y-down image: clockwise on screen is GL_CW.
+        glFrontFace(scene.state.front_face == FrontFace::kClockwise ? GL_CW : GL_CCW);
+        break;
+      case PrimitiveType::kPoint:
+        mode = GL_POINTS;
+        glDisable(GL_CULL_FACE);
+        break;
+      case PrimitiveType::kLine:
+      case PrimitiveType::kLineStrip:
+        mode = p.type == PrimitiveType::kLine ? GL_LINES : GL_LINE_STRIP;
+        glDisable(GL_CULL_FACE);
+        break;
       }
       glUniform1ui(kUniformSlot, packed.first_slot[i]);
       const auto count = static_cast<GLsizei>(p.v.size());
@@ -210,7 +221,8 @@ class OpenGLDriver final : public detail::GpuDriver {
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<std::uint32_t> cov(cov_words);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, coverage_);
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(cov_words * 4U), cov.data());
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(cov_words * 4U),
+                       cov.data());
     if (GLenum err = glGetError(); err != GL_NO_ERROR) {
       return DriverError{"opengl: GL error " + std::to_string(err) + " while drawing"};
     }
@@ -219,7 +231,7 @@ class OpenGLDriver final : public detail::GpuDriver {
     return detail::decode_coverage(scene, packed, cov.data(), w, h);
   }
 
- private:
+private:
   // rule: DRIVER.OPENGL.DEVICE
   std::string open_display() {
     const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
@@ -227,7 +239,8 @@ class OpenGLDriver final : public detail::GpuDriver {
       auto get_platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
           eglGetProcAddress("eglGetPlatformDisplayEXT"));
       if (get_platform_display != nullptr) {
-        display_ = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        display_ =
+            get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         platform_ = "surfaceless";
       }
     }
@@ -235,7 +248,8 @@ class OpenGLDriver final : public detail::GpuDriver {
       display_ = eglGetDisplay(EGL_DEFAULT_DISPLAY);
       platform_ = "default";
     }
-    if (display_ == EGL_NO_DISPLAY) return "opengl: no EGL display (install libegl-mesa0)";
+    if (display_ == EGL_NO_DISPLAY)
+      return "opengl: no EGL display (install libegl-mesa0)";
     EGLint major = 0;
     EGLint minor = 0;
     if (eglInitialize(display_, &major, &minor) != EGL_TRUE) {
@@ -243,7 +257,8 @@ class OpenGLDriver final : public detail::GpuDriver {
       return egl_failed("eglInitialize (is Mesa's EGL installed?)");
     }
     egl_version_ = std::to_string(major) + "." + std::to_string(minor);
-    if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE) return egl_failed("eglBindAPI(EGL_OPENGL_API)");
+    if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE)
+      return egl_failed("eglBindAPI(EGL_OPENGL_API)");
     return {};
   }
 
@@ -252,27 +267,34 @@ class OpenGLDriver final : public detail::GpuDriver {
     const bool no_config = has_extension(exts, "EGL_KHR_no_config_context") ||
                            has_extension(exts, "EGL_MESA_configless_context");
     const bool surfaceless = has_extension(exts, "EGL_KHR_surfaceless_context");
-    EGLConfig config = nullptr;  // EGL_NO_CONFIG_KHR
+    EGLConfig config = nullptr; // EGL_NO_CONFIG_KHR
     if (!no_config || !surfaceless) {
       // The fallback: a config with a 1x1 pbuffer to make the context current on.
-      const EGLint attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-                                EGL_NONE};
+      const EGLint attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE,
+                                EGL_OPENGL_BIT, EGL_NONE};
       EGLint n = 0;
       if (eglChooseConfig(display_, attribs, &config, 1, &n) != EGL_TRUE || n < 1) {
         return egl_failed("eglChooseConfig (no pbuffer OpenGL config)");
       }
       const EGLint pb[] = {EGL_WIDTH, 1, EGL_HEIGHT, 1, EGL_NONE};
       surface_ = eglCreatePbufferSurface(display_, config, pb);
-      if (surface_ == EGL_NO_SURFACE) return egl_failed("eglCreatePbufferSurface");
+      if (surface_ == EGL_NO_SURFACE)
+        return egl_failed("eglCreatePbufferSurface");
     }
     for (const auto& [maj, min] : {std::array<EGLint, 2>{4, 5}, std::array<EGLint, 2>{4, 3}}) {
-      const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, maj, EGL_CONTEXT_MINOR_VERSION, min,
-                                EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+      const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                maj,
+                                EGL_CONTEXT_MINOR_VERSION,
+                                min,
+                                EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                 EGL_NONE};
       context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, attribs);
-      if (context_ != EGL_NO_CONTEXT) break;
+      if (context_ != EGL_NO_CONTEXT)
+        break;
     }
-    if (context_ == EGL_NO_CONTEXT) return egl_failed("eglCreateContext (OpenGL 4.3 core)");
+    if (context_ == EGL_NO_CONTEXT)
+      return egl_failed("eglCreateContext (OpenGL 4.3 core)");
     if (eglMakeCurrent(display_, surface_, surface_, context_) != EGL_TRUE) {
       return egl_failed("eglMakeCurrent");
     }
@@ -294,10 +316,12 @@ class OpenGLDriver final : public detail::GpuDriver {
     GLint n_ext = 0;
     glGetIntegerv(GL_NUM_EXTENSIONS, &n_ext);
     for (GLint i = 0; i < n_ext && !clip_control; ++i) {
-      const char* e = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
+      const char* e =
+          reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
       clip_control = e != nullptr && std::string_view(e) == "GL_ARB_clip_control";
     }
-    if (!clip_control) return "opengl: no glClipControl (needs OpenGL 4.5 or ARB_clip_control)";
+    if (!clip_control)
+      return "opengl: no glClipControl (needs OpenGL 4.5 or ARB_clip_control)";
     renderer_ = renderer;
     info_.name = "opengl";
     info_.description = std::string(renderer) + ", OpenGL " + version + ", EGL " + egl_version_ +
@@ -308,10 +332,11 @@ class OpenGLDriver final : public detail::GpuDriver {
     GLint max_samples = 0;
     glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
     info_.sample_counts = {1};
-    if (max_samples >= 4 && standard_positions(4)) info_.sample_counts.push_back(4);
+    if (max_samples >= 4 && standard_positions(4))
+      info_.sample_counts.push_back(4);
     info_.points = true;
     info_.lines_bresenham = true;
-    info_.lines_rectangular = false;  // only on multisampled targets (DRIVER.OPENGL.SUPPORT)
+    info_.lines_rectangular = false; // only on multisampled targets (DRIVER.OPENGL.SUPPORT)
     info_.lines_d3d = false;
     info_.sample_mask = true;
     info_.sample_shading = false;
@@ -351,7 +376,8 @@ class OpenGLDriver final : public detail::GpuDriver {
       glGetMultisamplefv(GL_SAMPLE_POSITION, i, pos);
       const float sx = pos[0] * 16.0F - 8.0F;
       const float sy = pos[1] * 16.0F - 8.0F;
-      ok = sx == static_cast<float>(want.positions[i].x) && sy == static_cast<float>(want.positions[i].y);
+      ok = sx == static_cast<float>(want.positions[i].x) &&
+           sy == static_cast<float>(want.positions[i].y);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glDeleteFramebuffers(1, &fb);
@@ -365,7 +391,8 @@ class OpenGLDriver final : public detail::GpuDriver {
     glCompileShader(*shader);
     GLint ok = GL_FALSE;
     glGetShaderiv(*shader, GL_COMPILE_STATUS, &ok);
-    if (ok == GL_TRUE) return {};
+    if (ok == GL_TRUE)
+      return {};
     std::array<char, 1024> log{};
     glGetShaderInfoLog(*shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
     std::string msg(log.data());
@@ -379,7 +406,8 @@ class OpenGLDriver final : public detail::GpuDriver {
     GLuint vs = 0;
     GLuint fs = 0;
     std::string why = compile(GL_VERTEX_SHADER, kGlCoverage_vert, &vs);
-    if (why.empty()) why = compile(GL_FRAGMENT_SHADER, kGlCoverage_frag, &fs);
+    if (why.empty())
+      why = compile(GL_FRAGMENT_SHADER, kGlCoverage_frag, &fs);
     if (why.empty()) {
       program_ = glCreateProgram();
       glAttachShader(program_, vs);
@@ -387,20 +415,25 @@ class OpenGLDriver final : public detail::GpuDriver {
       glLinkProgram(program_);
       GLint ok = GL_FALSE;
       glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-      if (ok != GL_TRUE) why = "opengl: program link failed";
+      if (ok != GL_TRUE)
+        why = "opengl: program link failed";
     }
-    if (vs != 0) glDeleteShader(vs);
-    if (fs != 0) glDeleteShader(fs);
-    if (!why.empty()) return why;
+    if (vs != 0)
+      glDeleteShader(vs);
+    if (fs != 0)
+      glDeleteShader(fs);
+    if (!why.empty())
+      return why;
     glGenVertexArrays(1, &vao_);
     glGenBuffers(1, &vertex_buffer_);
     glGenBuffers(1, &coverage_);
     // Upper-left origin: window y runs down like the scene's (DRIVER.OPENGL.ORIGIN).
     glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
-    for (const GLenum cap : std::to_array<GLenum>({GL_DITHER, GL_BLEND, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_POLYGON_SMOOTH,
-                      GL_LINE_SMOOTH, GL_SAMPLE_SHADING, GL_SAMPLE_ALPHA_TO_COVERAGE,
-                      GL_SAMPLE_COVERAGE, GL_PROGRAM_POINT_SIZE, GL_POLYGON_OFFSET_FILL,
-                      GL_DEPTH_CLAMP, GL_RASTERIZER_DISCARD, GL_COLOR_LOGIC_OP})) {
+    for (const GLenum cap : std::to_array<GLenum>(
+             {GL_DITHER, GL_BLEND, GL_DEPTH_TEST, GL_STENCIL_TEST, GL_POLYGON_SMOOTH,
+              GL_LINE_SMOOTH, GL_SAMPLE_SHADING, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_COVERAGE,
+              GL_PROGRAM_POINT_SIZE, GL_POLYGON_OFFSET_FILL, GL_DEPTH_CLAMP, GL_RASTERIZER_DISCARD,
+              GL_COLOR_LOGIC_OP})) {
       glDisable(cap);
     }
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
@@ -416,12 +449,16 @@ class OpenGLDriver final : public detail::GpuDriver {
 
   // A framebuffer with one GL_R8 renderbuffer of the target's size and sample count.
   std::string ensure_framebuffer(std::uint32_t w, std::uint32_t h, std::uint32_t samples) {
-    if (framebuffer_ != 0 && fb_w_ == w && fb_h_ == h && fb_samples_ == samples) return {};
-    if (framebuffer_ == 0) glGenFramebuffers(1, &framebuffer_);
-    if (renderbuffer_ == 0) glGenRenderbuffers(1, &renderbuffer_);
+    if (framebuffer_ != 0 && fb_w_ == w && fb_h_ == h && fb_samples_ == samples)
+      return {};
+    if (framebuffer_ == 0)
+      glGenFramebuffers(1, &framebuffer_);
+    if (renderbuffer_ == 0)
+      glGenRenderbuffers(1, &renderbuffer_);
     glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer_);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? static_cast<GLsizei>(samples) : 0,
-                                     GL_R8, static_cast<GLsizei>(w), static_cast<GLsizei>(h));
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER,
+                                     samples > 1 ? static_cast<GLsizei>(samples) : 0, GL_R8,
+                                     static_cast<GLsizei>(w), static_cast<GLsizei>(h));
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffer_);
     if (GLenum st = glCheckFramebufferStatus(GL_FRAMEBUFFER); st != GL_FRAMEBUFFER_COMPLETE) {
@@ -432,7 +469,8 @@ class OpenGLDriver final : public detail::GpuDriver {
     glGetIntegerv(GL_SAMPLES, &got);
     if (got != static_cast<GLint>(samples > 1 ? samples : 0)) {
       fb_w_ = 0;
-      return "opengl: asked for " + std::to_string(samples) + " samples, got " + std::to_string(got);
+      return "opengl: asked for " + std::to_string(samples) + " samples, got " +
+             std::to_string(got);
     }
     fb_w_ = w;
     fb_h_ = h;
@@ -441,19 +479,28 @@ class OpenGLDriver final : public detail::GpuDriver {
   }
 
   void destroy() {
-    if (display_ == EGL_NO_DISPLAY) return;
+    if (display_ == EGL_NO_DISPLAY)
+      return;
     if (context_ != EGL_NO_CONTEXT &&
         eglMakeCurrent(display_, surface_, surface_, context_) == EGL_TRUE) {
-      if (program_ != 0) glDeleteProgram(program_);
-      if (vao_ != 0) glDeleteVertexArrays(1, &vao_);
-      if (vertex_buffer_ != 0) glDeleteBuffers(1, &vertex_buffer_);
-      if (coverage_ != 0) glDeleteBuffers(1, &coverage_);
-      if (framebuffer_ != 0) glDeleteFramebuffers(1, &framebuffer_);
-      if (renderbuffer_ != 0) glDeleteRenderbuffers(1, &renderbuffer_);
+      if (program_ != 0)
+        glDeleteProgram(program_);
+      if (vao_ != 0)
+        glDeleteVertexArrays(1, &vao_);
+      if (vertex_buffer_ != 0)
+        glDeleteBuffers(1, &vertex_buffer_);
+      if (coverage_ != 0)
+        glDeleteBuffers(1, &coverage_);
+      if (framebuffer_ != 0)
+        glDeleteFramebuffers(1, &framebuffer_);
+      if (renderbuffer_ != 0)
+        glDeleteRenderbuffers(1, &renderbuffer_);
     }
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-    if (surface_ != EGL_NO_SURFACE) eglDestroySurface(display_, surface_);
+    if (context_ != EGL_NO_CONTEXT)
+      eglDestroyContext(display_, context_);
+    if (surface_ != EGL_NO_SURFACE)
+      eglDestroySurface(display_, surface_);
     // No eglTerminate: the display is one per process and shared by every opened driver;
     // terminating it would destroy the contexts of the others (DRIVER.OPENGL.DEVICE).
     display_ = EGL_NO_DISPLAY;
@@ -477,7 +524,7 @@ class OpenGLDriver final : public detail::GpuDriver {
   std::uint32_t fb_samples_ = 0;
 };
 
-}  // namespace
+} // namespace
 
 namespace detail {
 
@@ -486,5 +533,5 @@ std::unique_ptr<Driver> open_opengl(std::string_view arg, std::string* error) {
   return open_gpu_driver<OpenGLDriver>("opengl", arg, error);
 }
 
-}  // namespace detail
-}  // namespace rastrules::driver
+} // namespace detail
+} // namespace rastrules::driver

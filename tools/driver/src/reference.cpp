@@ -41,15 +41,16 @@ DriverInfo full_capabilities(std::string name, std::string description, int subp
   return info;
 }
 
-}  // namespace detail
+} // namespace detail
 
 namespace {
 
 class ReferenceDriver final : public Driver {
- public:
+public:
   ReferenceDriver()
-      : info_(detail::full_capabilities("reference", "rastrules reference kernel (fixed point, 16.8 snapping)",
-                                kSubpixelBits)) {}
+      : info_(detail::full_capabilities("reference",
+                                        "rastrules reference kernel (fixed point, 16.8 snapping)",
+                                        kSubpixelBits)) {}
 
   [[nodiscard]] const DriverInfo& info() const override { return info_; }
 
@@ -65,11 +66,11 @@ class ReferenceDriver final : public Driver {
     return detail::observable(rasterize(std::get<PreparedScene>(prepared)));
   }
 
- private:
+private:
   DriverInfo info_;
 };
 
-}  // namespace
+} // namespace
 
 namespace detail {
 
@@ -81,5 +82,5 @@ std::unique_ptr<Driver> open_reference(std::string_view arg, std::string* error)
   return std::make_unique<ReferenceDriver>();
 }
 
-}  // namespace detail
-}  // namespace rastrules::driver
+} // namespace detail
+} // namespace rastrules::driver

@@ -15,27 +15,28 @@ namespace {
 using Opener = std::unique_ptr<Driver> (*)(std::string_view arg, std::string* error);
 
 struct Entry {
-  std::string_view name;   // the name, or the prefix when prefix is true ("external:")
-  bool prefix;             // the rest of the name is the driver's argument
-  std::string_view usage;  // how driver_names() shows it
+  std::string_view name;  // the name, or the prefix when prefix is true ("external:")
+  bool prefix;            // the rest of the name is the driver's argument
+  std::string_view usage; // how driver_names() shows it
   Opener open;
 };
 
 // rule: DRIVER.INTERFACE
 constexpr auto kEntries = std::to_array<Entry>({
-    {"reference", false, "reference", &detail::open_reference},
-    {"imprecise", false, "imprecise", &detail::open_imprecise},
-    {"imprecise:", true, "imprecise:float-edges|fill-bottom-right|4-bit-subpixel", &detail::open_imprecise},
-    {"external:", true, "external:COMMAND", &detail::open_external},
+  {"reference", false, "reference", &detail::open_reference},
+      {"imprecise", false, "imprecise", &detail::open_imprecise},
+      {"imprecise:", true, "imprecise:float-edges|fill-bottom-right|4-bit-subpixel",
+       &detail::open_imprecise},
+      {"external:", true, "external:COMMAND", &detail::open_external},
 #if defined(RASTRULES_HAVE_LAVAPIPE)
-    {"lavapipe", false, "lavapipe", &detail::open_lavapipe},
+      {"lavapipe", false, "lavapipe", &detail::open_lavapipe},
 #endif
 #if defined(RASTRULES_HAVE_OPENGL)
-    {"opengl", false, "opengl", &detail::open_opengl},
+      {"opengl", false, "opengl", &detail::open_opengl},
 #endif
 });
 
-}  // namespace
+} // namespace
 
 std::unique_ptr<Driver> open_driver(std::string_view name, std::string* error) {
   std::string ignored;
@@ -47,7 +48,8 @@ std::unique_ptr<Driver> open_driver(std::string_view name, std::string* error) {
     }
   }
   std::string known;
-  for (const std::string& n : driver_names()) known += (known.empty() ? "" : ", ") + n;
+  for (const std::string& n : driver_names())
+    known += (known.empty() ? "" : ", ") + n;
   *err = "unknown driver '" + std::string(name) + "' (this build has: " + known + ")";
   return nullptr;
 }
@@ -55,8 +57,9 @@ std::unique_ptr<Driver> open_driver(std::string_view name, std::string* error) {
 std::vector<std::string> driver_names() {
   std::vector<std::string> names;
   names.reserve(kEntries.size());
-  for (const Entry& e : kEntries) names.emplace_back(e.usage);
+  for (const Entry& e : kEntries)
+    names.emplace_back(e.usage);
   return names;
 }
 
-}  // namespace rastrules::driver
+} // namespace rastrules::driver

@@ -34,9 +34,11 @@ using Push = detail::CoveragePush;
 
 // Why the scene cannot be timed as BENCH.LAVAPIPE defines it, or "".
 std::string untimeable(const Scene& scene, int repeats) {
-  if (repeats < 1) return "repeats must be at least 1, got " + std::to_string(repeats);
+  if (repeats < 1)
+    return "repeats must be at least 1, got " + std::to_string(repeats);
   const auto prepared = prepare(scene);
-  if (const auto* e = std::get_if<SceneError>(&prepared)) return "invalid scene: " + e->what();
+  if (const auto* e = std::get_if<SceneError>(&prepared))
+    return "invalid scene: " + e->what();
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     if (scene.primitives[i].type != PrimitiveType::kTriangle) {
       return "primitives[" + std::to_string(i) + "] is a " +
@@ -45,7 +47,8 @@ std::string untimeable(const Scene& scene, int repeats) {
     }
   }
   const MultisampleState& ms = scene.msaa;
-  if (ms.count() != 1 || !(ms.pattern.positions[0] == SampleOffset{}) || ms.effective_mask() != 1U) {
+  if (ms.count() != 1 || !(ms.pattern.positions[0] == SampleOffset{}) ||
+      ms.effective_mask() != 1U) {
     return std::to_string(ms.count()) +
            " sample(s) off the pixel centre or masked: the coverage timing is single-sample only";
   }
@@ -58,16 +61,18 @@ std::string untimeable(const Scene& scene, int repeats) {
 
 // Every Vulkan object of one timing, destroyed in reverse order.
 class Timer {
- public:
+public:
   Timer() = default;
   Timer(const Timer&) = delete;
   Timer& operator=(const Timer&) = delete;
   ~Timer() {
     if (const VkDevice device = vk_.device; device != VK_NULL_HANDLE) {
       vkDeviceWaitIdle(device);
-      if (pipeline_ != VK_NULL_HANDLE) vkDestroyPipeline(device, pipeline_, nullptr);
+      if (pipeline_ != VK_NULL_HANDLE)
+        vkDestroyPipeline(device, pipeline_, nullptr);
       program_.destroy(device);
-      if (queries_ != VK_NULL_HANDLE) vkDestroyQueryPool(device, queries_, nullptr);
+      if (queries_ != VK_NULL_HANDLE)
+        vkDestroyQueryPool(device, queries_, nullptr);
       detail::free_host_buffer(device, &vertices_);
     }
     vk_.destroy();
@@ -77,20 +82,27 @@ class Timer {
   CoverageTiming run(const Scene& scene, int repeats) {
     CoverageTiming t;
     t.repeats = repeats;
-    if (std::string why = vk_.open(); !why.empty()) return unavailable(t, why);
+    if (std::string why = vk_.open(); !why.empty())
+      return unavailable(t, why);
     t.device = detail::device_description(vk_.physical, vk_.props);
-    if (std::string why = check_limits(scene); !why.empty()) return unavailable(t, why);
-    if (std::string why = create_device(); !why.empty()) return unavailable(t, why);
-    if (std::string why = create_pipeline(scene); !why.empty()) return unavailable(t, why);
-    if (std::string why = upload(scene); !why.empty()) return unavailable(t, why);
-    if (std::string why = record(); !why.empty()) return unavailable(t, why);
+    if (std::string why = check_limits(scene); !why.empty())
+      return unavailable(t, why);
+    if (std::string why = create_device(); !why.empty())
+      return unavailable(t, why);
+    if (std::string why = create_pipeline(scene); !why.empty())
+      return unavailable(t, why);
+    if (std::string why = upload(scene); !why.empty())
+      return unavailable(t, why);
+    if (std::string why = record(); !why.empty())
+      return unavailable(t, why);
 
     std::vector<double> seconds;
     std::uint64_t first_count = 0;
-    for (int i = 0; i <= repeats; ++i) {  // draw 0 is the warm-up
+    for (int i = 0; i <= repeats; ++i) { // draw 0 is the warm-up
       double s = 0.0;
       std::uint64_t count = 0;
-      if (std::string why = draw(&s, &count); !why.empty()) return unavailable(t, why);
+      if (std::string why = draw(&s, &count); !why.empty())
+        return unavailable(t, why);
       if (i == 0) {
         first_count = count;
         continue;
@@ -115,7 +127,7 @@ class Timer {
     return t;
   }
 
- private:
+private:
   static CoverageTiming unavailable(CoverageTiming t, const std::string& why) {
     t.available = false;
     t.why_not = why;
@@ -150,7 +162,8 @@ class Timer {
     VkPhysicalDeviceFeatures2 features{};
     features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
     features.features.occlusionQueryPrecise = VK_TRUE;
-    if (std::string why = vk_.create_device(features, 0, nullptr, 0); !why.empty()) return why;
+    if (std::string why = vk_.create_device(features, 0, nullptr, 0); !why.empty())
+      return why;
     VkQueryPoolCreateInfo qpi{};
     qpi.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO;
     qpi.queryType = VK_QUERY_TYPE_OCCLUSION;
@@ -192,13 +205,15 @@ class Timer {
   // rule: DRIVER.LAVAPIPE.POSITION, BENCH.LAVAPIPE
   std::string record() {
     const VkCommandBuffer cmd = vk_.cmd;
-    if (std::string why = detail::begin_commands(cmd, 0); !why.empty()) return why;
+    if (std::string why = detail::begin_commands(cmd, 0); !why.empty())
+      return why;
     vkCmdResetQueryPool(cmd, queries_, 0, 1);
     program_.begin_pass(cmd, vertices_.buffer, k_);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
     program_.push(cmd, Push{static_cast<float>(1.0 / k_), 0, program_.width, program_.height, 1});
     vkCmdBeginQuery(cmd, queries_, 0, VK_QUERY_CONTROL_PRECISE_BIT);
-    if (vertex_count_ > 0) vkCmdDraw(cmd, vertex_count_, 1, 0, 0);
+    if (vertex_count_ > 0)
+      vkCmdDraw(cmd, vertex_count_, 1, 0, 0);
     vkCmdEndQuery(cmd, queries_, 0);
     vkCmdEndRenderPass(cmd);
     if (VkResult r = vkEndCommandBuffer(cmd); r != VK_SUCCESS) {
@@ -213,7 +228,8 @@ class Timer {
     const auto start = std::chrono::steady_clock::now();
     const std::string why = vk_.submit_and_wait();
     const auto stop = std::chrono::steady_clock::now();
-    if (!why.empty()) return why;
+    if (!why.empty())
+      return why;
     *seconds = std::chrono::duration<double>(stop - start).count();
     std::uint64_t result = 0;
     if (VkResult r = vkGetQueryPoolResults(vk_.device, queries_, 0, 1, sizeof(result), &result,
@@ -235,7 +251,7 @@ class Timer {
   double k_ = 1.0;
 };
 
-}  // namespace
+} // namespace
 
 // rule: BENCH.LAVAPIPE
 CoverageTiming time_lavapipe_coverage(const Scene& scene, int repeats) {
@@ -257,4 +273,4 @@ CoverageTiming time_lavapipe_coverage(const Scene& scene, int repeats) {
   return t;
 }
 
-}  // namespace rastrules::driver
+} // namespace rastrules::driver

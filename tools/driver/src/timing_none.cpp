@@ -16,4 +16,4 @@ CoverageTiming time_lavapipe_coverage(const Scene& /*scene*/, int /*repeats*/) {
   return t;
 }
 
-}  // namespace rastrules::driver
+} // namespace rastrules::driver

@@ -52,7 +52,8 @@ std::string open_lavapipe_instance(VkInstance* instance, VkPhysicalDevice* physi
     }
   }
   if (*physical == VK_NULL_HANDLE) {
-    return "lavapipe: no CPU Vulkan device named llvmpipe (install mesa-vulkan-drivers); devices: " +
+    return "lavapipe: no CPU Vulkan device named llvmpipe (install mesa-vulkan-drivers); "
+           "devices: " +
            (seen.empty() ? std::string("none") : seen);
   }
   // Keep Mesa's ICD loaded for the life of the process: the loader unloads it with the last
@@ -108,7 +109,8 @@ std::string create_host_buffer(VkDevice device, const VkPhysicalDeviceMemoryProp
       VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
   std::uint32_t type = memory.memoryTypeCount;
   for (std::uint32_t i = 0; i < memory.memoryTypeCount; ++i) {
-    if ((req.memoryTypeBits & (1U << i)) != 0U && (memory.memoryTypes[i].propertyFlags & want) == want) {
+    if ((req.memoryTypeBits & (1U << i)) != 0U &&
+        (memory.memoryTypes[i].propertyFlags & want) == want) {
       type = i;
       break;
     }
@@ -127,7 +129,8 @@ std::string create_host_buffer(VkDevice device, const VkPhysicalDeviceMemoryProp
     return vk_failed("vkAllocateMemory", r);
   }
   vkBindBufferMemory(device, b->buffer, b->memory, 0);
-  if (VkResult r = vkMapMemory(device, b->memory, 0, VK_WHOLE_SIZE, 0, &b->mapped); r != VK_SUCCESS) {
+  if (VkResult r = vkMapMemory(device, b->memory, 0, VK_WHOLE_SIZE, 0, &b->mapped);
+      r != VK_SUCCESS) {
     b->mapped = nullptr;
     free_host_buffer(device, b);
     return vk_failed("vkMapMemory", r);
@@ -137,9 +140,12 @@ std::string create_host_buffer(VkDevice device, const VkPhysicalDeviceMemoryProp
 }
 
 void free_host_buffer(VkDevice device, HostBuffer* b) {
-  if (b->mapped != nullptr) vkUnmapMemory(device, b->memory);
-  if (b->buffer != VK_NULL_HANDLE) vkDestroyBuffer(device, b->buffer, nullptr);
-  if (b->memory != VK_NULL_HANDLE) vkFreeMemory(device, b->memory, nullptr);
+  if (b->mapped != nullptr)
+    vkUnmapMemory(device, b->memory);
+  if (b->buffer != VK_NULL_HANDLE)
+    vkDestroyBuffer(device, b->buffer, nullptr);
+  if (b->memory != VK_NULL_HANDLE)
+    vkFreeMemory(device, b->memory, nullptr);
   *b = HostBuffer{};
 }
 
@@ -310,7 +316,8 @@ std::string submit_and_wait(VkDevice device, VkQueue queue, VkCommandBuffer cmd,
   }
   const VkResult waited = vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX);
   vkResetFences(device, 1, &fence);
-  if (waited != VK_SUCCESS) return vk_failed("vkWaitForFences", waited);
+  if (waited != VK_SUCCESS)
+    return vk_failed("vkWaitForFences", waited);
   return {};
 }
 
@@ -326,13 +333,15 @@ VkFrontFace vk_front_face(FrontFace front) {
 
 std::string ensure_host_buffer(VkDevice device, const VkPhysicalDeviceMemoryProperties& memory,
                                VkDeviceSize bytes, VkBufferUsageFlags usage, HostBuffer* b) {
-  if (b->size >= bytes) return {};
+  if (b->size >= bytes)
+    return {};
   if (b->buffer != VK_NULL_HANDLE) {
     vkDeviceWaitIdle(device);
     free_host_buffer(device, b);
   }
   VkDeviceSize size = 4096;
-  while (size < bytes) size *= 2;
+  while (size < bytes)
+    size *= 2;
   return create_host_buffer(device, memory, size, usage, b);
 }
 
@@ -357,13 +366,16 @@ std::string begin_commands(VkCommandBuffer cmd, VkCommandBufferUsageFlags flags)
 }
 
 // rule: DRIVER.LAVAPIPE.DEVICE
-std::string LavapipeContext::open() { return open_lavapipe_instance(&instance, &physical, &props); }
+std::string LavapipeContext::open() {
+  return open_lavapipe_instance(&instance, &physical, &props);
+}
 
 std::string LavapipeContext::create_device(const VkPhysicalDeviceFeatures2& features,
                                            std::uint32_t extension_count,
                                            const char* const* extensions,
                                            VkCommandPoolCreateFlags pool_flags) {
-  if (std::string why = graphics_queue_family(physical, &family); !why.empty()) return why;
+  if (std::string why = graphics_queue_family(physical, &family); !why.empty())
+    return why;
   if (std::string why = detail::create_device(physical, family, features, extension_count,
                                               extensions, &device, &queue);
       !why.empty()) {
@@ -385,17 +397,21 @@ std::string LavapipeContext::upload_vertices(const std::vector<float>& vertices,
       !why.empty()) {
     return why;
   }
-  if (!vertices.empty()) std::memcpy(b->mapped, vertices.data(), bytes);
+  if (!vertices.empty())
+    std::memcpy(b->mapped, vertices.data(), bytes);
   return {};
 }
 
 void LavapipeContext::destroy() {
   if (device != VK_NULL_HANDLE) {
-    if (fence != VK_NULL_HANDLE) vkDestroyFence(device, fence, nullptr);
-    if (pool != VK_NULL_HANDLE) vkDestroyCommandPool(device, pool, nullptr);
+    if (fence != VK_NULL_HANDLE)
+      vkDestroyFence(device, fence, nullptr);
+    if (pool != VK_NULL_HANDLE)
+      vkDestroyCommandPool(device, pool, nullptr);
     vkDestroyDevice(device, nullptr);
   }
-  if (instance != VK_NULL_HANDLE) vkDestroyInstance(instance, nullptr);
+  if (instance != VK_NULL_HANDLE)
+    vkDestroyInstance(instance, nullptr);
   *this = LavapipeContext{};
 }
 
@@ -427,7 +443,8 @@ std::string CoverageProgram::create(VkDevice device, const std::uint32_t* frag_c
 }
 
 std::string CoverageProgram::ensure_framebuffer(VkDevice device, std::uint32_t w, std::uint32_t h) {
-  if (framebuffer != VK_NULL_HANDLE && width == w && height == h) return {};
+  if (framebuffer != VK_NULL_HANDLE && width == w && height == h)
+    return {};
   if (framebuffer != VK_NULL_HANDLE) {
     vkDeviceWaitIdle(device);
     vkDestroyFramebuffer(device, framebuffer, nullptr);
@@ -465,12 +482,17 @@ void CoverageProgram::push(VkCommandBuffer cmd, const CoveragePush& constants) c
 }
 
 void CoverageProgram::destroy(VkDevice device) {
-  if (framebuffer != VK_NULL_HANDLE) vkDestroyFramebuffer(device, framebuffer, nullptr);
-  if (render_pass != VK_NULL_HANDLE) vkDestroyRenderPass(device, render_pass, nullptr);
-  if (vert != VK_NULL_HANDLE) vkDestroyShaderModule(device, vert, nullptr);
-  if (frag != VK_NULL_HANDLE) vkDestroyShaderModule(device, frag, nullptr);
-  if (layout != VK_NULL_HANDLE) vkDestroyPipelineLayout(device, layout, nullptr);
+  if (framebuffer != VK_NULL_HANDLE)
+    vkDestroyFramebuffer(device, framebuffer, nullptr);
+  if (render_pass != VK_NULL_HANDLE)
+    vkDestroyRenderPass(device, render_pass, nullptr);
+  if (vert != VK_NULL_HANDLE)
+    vkDestroyShaderModule(device, vert, nullptr);
+  if (frag != VK_NULL_HANDLE)
+    vkDestroyShaderModule(device, frag, nullptr);
+  if (layout != VK_NULL_HANDLE)
+    vkDestroyPipelineLayout(device, layout, nullptr);
   *this = CoverageProgram{};
 }
 
-}  // namespace rastrules::driver::detail
+} // namespace rastrules::driver::detail

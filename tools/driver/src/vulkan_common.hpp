@@ -72,8 +72,9 @@ void free_host_buffer(VkDevice device, HostBuffer* b);
 // included) and the extensions, and gets its queue. On failure *device is VK_NULL_HANDLE.
 [[nodiscard]] std::string create_device(VkPhysicalDevice physical, std::uint32_t family,
                                         const VkPhysicalDeviceFeatures2& features,
-                                        std::uint32_t extension_count, const char* const* extensions,
-                                        VkDevice* device, VkQueue* queue);
+                                        std::uint32_t extension_count,
+                                        const char* const* extensions, VkDevice* device,
+                                        VkQueue* queue);
 
 // A command pool of `family` (with `flags`), one primary command buffer and one fence: what
 // every draw submits and waits on.
@@ -96,7 +97,7 @@ struct CoveragePipelineState {
   VkCullModeFlags cull = VK_CULL_MODE_NONE;
   VkFrontFace front = VK_FRONT_FACE_CLOCKWISE;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-  std::optional<VkSampleMask> sample_mask;  // none: pSampleMask is null (every sample)
+  std::optional<VkSampleMask> sample_mask; // none: pSampleMask is null (every sample)
   VkLineRasterizationModeEXT line_mode = VK_LINE_RASTERIZATION_MODE_DEFAULT_EXT;
 
   // An order, so that the state can key a cache of pipelines.
@@ -217,4 +218,4 @@ struct CoverageProgram {
   void destroy(VkDevice device);
 };
 
-}  // namespace rastrules::driver::detail
+} // namespace rastrules::driver::detail

@@ -22,14 +22,16 @@ using nlohmann::json;
 
 json diff_json(const std::vector<DiffEntry>& list) {
   json a = json::array();
-  for (const DiffEntry& d : list) a.push_back({{"prim", d.prim}, {"x", d.x}, {"y", d.y}, {"mask", d.mask}});
+  for (const DiffEntry& d : list)
+    a.push_back({{"prim", d.prim}, {"x", d.x}, {"y", d.y}, {"mask", d.mask}});
   return a;
 }
 
 std::string origin_note(Profile p) {
-  return p == Profile::kOpenGL
-             ? "lower-left in OpenGL; scenes and reports use the y-down frame of spec/conventions.md (the opengl adapter sets an upper-left origin with glClipControl)"
-             : "upper-left";
+  return p == Profile::kOpenGL ? "lower-left in OpenGL; scenes and reports use the y-down frame of "
+                                 "spec/conventions.md (the opengl adapter sets an upper-left "
+                                 "origin with glClipControl)"
+                               : "upper-left";
 }
 
 json finding_json(const Finding& f, const Settings& s, const std::string& driver) {
@@ -45,7 +47,8 @@ json finding_json(const Finding& f, const Settings& s, const std::string& driver
             {"primitives_after", f.shrunk.primitives.size()},
             {"missing", diff_json(f.comparison.missing)},
             {"extra", diff_json(f.comparison.extra)}};
-  if (f.duplicate_of) j["duplicate_of"] = *f.duplicate_of;
+  if (f.duplicate_of)
+    j["duplicate_of"] = *f.duplicate_of;
   if (!f.files.scene.empty()) {
     j["scene"] = f.files.scene;
     j["shrunk_scene"] = f.files.shrunk;
@@ -67,8 +70,9 @@ bool write_text(const std::string& path, const std::string& text, std::string* e
 }
 
 class Campaign {
- public:
-  Campaign(driver::Driver& driver, const Settings& settings) : driver_(driver), settings_(settings) {}
+public:
+  Campaign(driver::Driver& driver, const Settings& settings)
+      : driver_(driver), settings_(settings) {}
 
   // Compares one case; on a mismatch shrinks it and writes its outputs. Returns false when
   // the campaign must stop (s.error set).
@@ -80,8 +84,10 @@ class Campaign {
       return false;
     }
     ++s.cases;
-    for (const FillConvention f : c->conventions) ++tally_[f];
-    if (c->match) return true;
+    for (const FillConvention f : c->conventions)
+      ++tally_[f];
+    if (c->match)
+      return true;
     ++s.mismatches;
     Finding f;
     f.case_index = index;
@@ -94,14 +100,16 @@ class Campaign {
     });
     auto shrunk = draw_and_compare(driver_, f.shrunk, settings_.profile, settings_.mode, &error);
     f.comparison = shrunk ? std::move(*shrunk) : std::move(*c);
-    if (!shrunk) f.shrunk = scene;
+    if (!shrunk)
+      f.shrunk = scene;
     f.key = io::write_scene(f.shrunk);
     if (const auto it = first_.find(f.key); it != first_.end()) {
       f.duplicate_of = it->second;
     } else {
       first_.emplace(f.key, index);
       ++s.unique;
-      if (!settings_.out_dir.empty() && !write_outputs(f, s)) return false;
+      if (!settings_.out_dir.empty() && !write_outputs(f, s))
+        return false;
     }
     s.findings.push_back(std::move(f));
     return true;
@@ -119,7 +127,8 @@ class Campaign {
     std::string error;
     if (!write_text(f.files.scene, io::write_scene(f.original), &error) ||
         !write_text(f.files.shrunk, f.key, &error) ||
-        !write_text(f.files.report, finding_json(f, settings_, settings_.driver_name).dump(2) + "\n", &error)) {
+        !write_text(f.files.report,
+                    finding_json(f, settings_, settings_.driver_name).dump(2) + "\n", &error)) {
       s.error = error;
       return false;
     }
@@ -131,8 +140,10 @@ class Campaign {
   }
 
   bool finish(Summary& s) {
-    for (const auto& [f, n] : tally_) s.legal_conventions.emplace_back(f, n);
-    if (settings_.out_dir.empty()) return true;
+    for (const auto& [f, n] : tally_)
+      s.legal_conventions.emplace_back(f, n);
+    if (settings_.out_dir.empty())
+      return true;
     json j = {{"driver", settings_.driver_name},
               {"description", driver_.info().description},
               {"profile", std::string(to_string(settings_.profile))},
@@ -144,14 +155,17 @@ class Campaign {
               {"mismatches", s.mismatches},
               {"unique", s.unique},
               {"seconds", s.seconds}};
-    if (!s.error.empty()) j["error"] = s.error;
+    if (!s.error.empty())
+      j["error"] = s.error;
     if (settings_.mode == Mode::kLegal) {
       json t = json::object();
-      for (const auto& [f, n] : s.legal_conventions) t[std::string(to_string(f))] = n;
+      for (const auto& [f, n] : s.legal_conventions)
+        t[std::string(to_string(f))] = n;
       j["fill_conventions_matched"] = t;
     }
     json list = json::array();
-    for (const Finding& f : s.findings) list.push_back(finding_json(f, settings_, settings_.driver_name));
+    for (const Finding& f : s.findings)
+      list.push_back(finding_json(f, settings_, settings_.driver_name));
     j["findings"] = list;
     s.report_path = (std::filesystem::path(settings_.out_dir) / "report.json").string();
     std::string error;
@@ -162,7 +176,7 @@ class Campaign {
     return true;
   }
 
- private:
+private:
   driver::Driver& driver_;
   const Settings& settings_;
   std::map<std::string, std::uint64_t> first_;
@@ -170,7 +184,8 @@ class Campaign {
 };
 
 bool make_out_dir(const Settings& settings, Summary& s) {
-  if (settings.out_dir.empty()) return true;
+  if (settings.out_dir.empty())
+    return true;
   std::error_code ec;
   std::filesystem::create_directories(settings.out_dir, ec);
   if (ec) {
@@ -181,23 +196,29 @@ bool make_out_dir(const Settings& settings, Summary& s) {
 }
 
 void progress(const Settings& settings, std::uint64_t done, const Summary& s) {
-  if (!settings.progress) return;
+  if (!settings.progress)
+    return;
   constexpr int kWidth = 30;
-  const auto filled = static_cast<int>(settings.cases == 0 ? kWidth : done * kWidth / settings.cases);
+  const auto filled =
+      static_cast<int>(settings.cases == 0 ? kWidth : done * kWidth / settings.cases);
   std::string bar(static_cast<std::size_t>(filled), '#');
   bar.resize(kWidth, '.');
-  std::fprintf(stderr, "\r[%s] %llu/%llu cases, %llu mismatches", bar.c_str(), static_cast<unsigned long long>(done),
-               static_cast<unsigned long long>(settings.cases), static_cast<unsigned long long>(s.mismatches));
-  if (done == settings.cases) std::fputc('\n', stderr);
+  std::fprintf(stderr, "\r[%s] %llu/%llu cases, %llu mismatches", bar.c_str(),
+               static_cast<unsigned long long>(done),
+               static_cast<unsigned long long>(settings.cases),
+               static_cast<unsigned long long>(s.mismatches));
+  if (done == settings.cases)
+    std::fputc('\n', stderr);
   std::fflush(stderr);
 }
 
-}  // namespace
+} // namespace
 
 Summary run_fuzz(driver::Driver& driver, const Settings& settings) {
   Summary s;
   const auto start = std::chrono::steady_clock::now();
-  if (!make_out_dir(settings, s)) return s;
+  if (!make_out_dir(settings, s))
+    return s;
   Campaign campaign(driver, settings);
   for (std::uint64_t i = 0; i < settings.cases; ++i) {
     auto c = generate_case(settings.seed, i, settings.profile, driver);
@@ -208,7 +229,8 @@ Summary run_fuzz(driver::Driver& driver, const Settings& settings) {
     }
     progress(settings, i + 1, s);
   }
-  if (settings.progress && !s.error.empty()) std::fputc('\n', stderr);  // end the bar's line
+  if (settings.progress && !s.error.empty())
+    std::fputc('\n', stderr); // end the bar's line
   s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   campaign.finish(s);
   return s;
@@ -217,7 +239,8 @@ Summary run_fuzz(driver::Driver& driver, const Settings& settings) {
 Summary run_check(driver::Driver& driver, const Scene& scene, const Settings& settings) {
   Summary s;
   const auto start = std::chrono::steady_clock::now();
-  if (!make_out_dir(settings, s)) return s;
+  if (!make_out_dir(settings, s))
+    return s;
   Campaign campaign(driver, settings);
   campaign.run_case(0, "check", scene, s);
   s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -225,33 +248,45 @@ Summary run_check(driver::Driver& driver, const Scene& scene, const Settings& se
   return s;
 }
 
-void print_summary(std::FILE* out, const Settings& settings, const driver::Driver& driver, const Summary& s) {
-  std::fprintf(out, "driver      %s (%s)\n", settings.driver_name.c_str(), driver.info().description.c_str());
-  std::fprintf(out, "profile     %s, mode %s, seed %llu\n", std::string(to_string(settings.profile)).c_str(),
-               std::string(to_string(settings.mode)).c_str(), static_cast<unsigned long long>(settings.seed));
+void print_summary(std::FILE* out, const Settings& settings, const driver::Driver& driver,
+                   const Summary& s) {
+  std::fprintf(out, "driver      %s (%s)\n", settings.driver_name.c_str(),
+               driver.info().description.c_str());
+  std::fprintf(out, "profile     %s, mode %s, seed %llu\n",
+               std::string(to_string(settings.profile)).c_str(),
+               std::string(to_string(settings.mode)).c_str(),
+               static_cast<unsigned long long>(settings.seed));
   std::fprintf(out, "+------------+------------+---------+-----------+----------+\n");
   std::fprintf(out, "| cases      | mismatches | unique  | time (s)  | cases/s  |\n");
   std::fprintf(out, "+------------+------------+---------+-----------+----------+\n");
   const double rate = s.seconds > 0 ? static_cast<double>(s.cases) / s.seconds : 0.0;
-  std::fprintf(out, "| %-10llu | %-10llu | %-7llu | %-9.2f | %-8.1f |\n", static_cast<unsigned long long>(s.cases),
-               static_cast<unsigned long long>(s.mismatches), static_cast<unsigned long long>(s.unique), s.seconds, rate);
+  std::fprintf(out, "| %-10llu | %-10llu | %-7llu | %-9.2f | %-8.1f |\n",
+               static_cast<unsigned long long>(s.cases),
+               static_cast<unsigned long long>(s.mismatches),
+               static_cast<unsigned long long>(s.unique), s.seconds, rate);
   std::fprintf(out, "+------------+------------+---------+-----------+----------+\n");
-  if (s.skipped != 0) std::fprintf(out, "skipped     %llu cases the driver cannot draw\n", static_cast<unsigned long long>(s.skipped));
+  if (s.skipped != 0)
+    std::fprintf(out, "skipped     %llu cases the driver cannot draw\n",
+                 static_cast<unsigned long long>(s.skipped));
   if (settings.mode == Mode::kLegal && settings.profile != Profile::kD3D11) {
     std::string all;
     for (const auto& [f, n] : s.legal_conventions) {
       all += (all.empty() ? "" : ", ") + std::string(to_string(f)) + " " + std::to_string(n);
     }
-    std::fprintf(out, "fill conventions that explain the driver's results (cases): %s\n", all.empty() ? "none" : all.c_str());
+    std::fprintf(out, "fill conventions that explain the driver's results (cases): %s\n",
+                 all.empty() ? "none" : all.c_str());
   }
   for (const Finding& f : s.findings) {
-    if (f.duplicate_of) continue;
+    if (f.duplicate_of)
+      continue;
     std::fprintf(out, "case %llu (%s): %zu -> %zu primitive(s), %zu missing, %zu extra%s%s\n",
-                 static_cast<unsigned long long>(f.case_index), f.family.c_str(), f.original.primitives.size(),
-                 f.shrunk.primitives.size(), f.comparison.missing.size(), f.comparison.extra.size(),
+                 static_cast<unsigned long long>(f.case_index), f.family.c_str(),
+                 f.original.primitives.size(), f.shrunk.primitives.size(),
+                 f.comparison.missing.size(), f.comparison.extra.size(),
                  f.files.picture.empty() ? "" : ", picture ", f.files.picture.c_str());
   }
-  if (!s.report_path.empty()) std::fprintf(out, "report      %s\n", s.report_path.c_str());
+  if (!s.report_path.empty())
+    std::fprintf(out, "report      %s\n", s.report_path.c_str());
 }
 
-}  // namespace rastrules::fuzzer
+} // namespace rastrules::fuzzer

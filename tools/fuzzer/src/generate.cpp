@@ -13,25 +13,35 @@ namespace rastrules::fuzzer {
 
 std::string_view to_string(Profile p) {
   switch (p) {
-    case Profile::kD3D11: return "d3d11";
-    case Profile::kVulkan: return "vulkan";
-    case Profile::kOpenGL: return "opengl";
+  case Profile::kD3D11:
+    return "d3d11";
+  case Profile::kVulkan:
+    return "vulkan";
+  case Profile::kOpenGL:
+    return "opengl";
   }
   return "?";
 }
 
 std::optional<Profile> parse_profile(std::string_view s) {
-  if (s == "d3d11") return Profile::kD3D11;
-  if (s == "vulkan") return Profile::kVulkan;
-  if (s == "opengl") return Profile::kOpenGL;
+  if (s == "d3d11")
+    return Profile::kD3D11;
+  if (s == "vulkan")
+    return Profile::kVulkan;
+  if (s == "opengl")
+    return Profile::kOpenGL;
   return std::nullopt;
 }
 
-std::string_view to_string(Mode m) { return m == Mode::kExact ? "exact" : "legal"; }
+std::string_view to_string(Mode m) {
+  return m == Mode::kExact ? "exact" : "legal";
+}
 
 std::optional<Mode> parse_mode(std::string_view s) {
-  if (s == "exact") return Mode::kExact;
-  if (s == "legal") return Mode::kLegal;
+  if (s == "exact")
+    return Mode::kExact;
+  if (s == "legal")
+    return Mode::kLegal;
   return std::nullopt;
 }
 
@@ -50,11 +60,13 @@ std::uint64_t Rng::next() {
 
 std::int64_t Rng::uniform(std::int64_t lo, std::int64_t hi) {
   const auto span = static_cast<std::uint64_t>(hi - lo) + 1;
-  if (span == 0) return static_cast<std::int64_t>(next());
+  if (span == 0)
+    return static_cast<std::int64_t>(next());
   // Rejection sampling keeps the distribution exact (and the sequence deterministic).
   const std::uint64_t limit = UINT64_MAX - UINT64_MAX % span;
   std::uint64_t r = next();
-  while (r >= limit) r = next();
+  while (r >= limit)
+    r = next();
   return lo + static_cast<std::int64_t>(r % span);
 }
 
@@ -74,27 +86,32 @@ Grid pick_grid(Rng& rng) {
 // A coordinate on the grid in [lo, hi] px.
 float coord(Rng& rng, Grid g, float lo, float hi) {
   const auto scale = std::ldexp(1.0f, g.bits);
-  const auto k = rng.uniform(static_cast<std::int64_t>(std::ceil(lo * scale)), static_cast<std::int64_t>(std::floor(hi * scale)));
+  const auto k = rng.uniform(static_cast<std::int64_t>(std::ceil(lo * scale)),
+                             static_cast<std::int64_t>(std::floor(hi * scale)));
   return static_cast<float>(k) / scale;
 }
 
 FloatPoint point(Rng& rng, Grid g, const Scene& s) {
-  return {coord(rng, g, -1.0f, static_cast<float>(s.width) + 1.0f), coord(rng, g, -1.0f, static_cast<float>(s.height) + 1.0f)};
+  return {coord(rng, g, -1.0f, static_cast<float>(s.width) + 1.0f),
+          coord(rng, g, -1.0f, static_cast<float>(s.height) + 1.0f)};
 }
 
 Primitive triangle(Rng& rng, FloatPoint a, FloatPoint b, FloatPoint c) {
   // Either winding: counter-clockwise triangles are normalised by the rules (TRI.ORIENT.NORMALISE).
-  if (rng.chance(50)) std::swap(b, c);
+  if (rng.chance(50))
+    std::swap(b, c);
   return make_triangle({a, b, c});
 }
 
 void random_triangles(Rng& rng, Grid g, Scene& s) {
   const auto n = rng.uniform(1, 4);
-  for (std::int64_t i = 0; i < n; ++i) s.primitives.push_back(triangle(rng, point(rng, g, s), point(rng, g, s), point(rng, g, s)));
+  for (std::int64_t i = 0; i < n; ++i)
+    s.primitives.push_back(triangle(rng, point(rng, g, s), point(rng, g, s), point(rng, g, s)));
 }
 
 void shared_edge(Rng& rng, Grid g, Scene& s) {
-  const FloatPoint a = point(rng, g, s), b = point(rng, g, s), c = point(rng, g, s), d = point(rng, g, s);
+  const FloatPoint a = point(rng, g, s), b = point(rng, g, s), c = point(rng, g, s),
+                   d = point(rng, g, s);
   s.primitives.push_back(triangle(rng, a, b, c));
   s.primitives.push_back(triangle(rng, a, c, d));
 }
@@ -107,22 +124,26 @@ void fan(Rng& rng, Grid g, Scene& s) {
   for (std::int64_t i = 0; i < n; ++i) {
     // Ring points on the grid around the centre (exact directions: multiples of 45 degrees,
     // perturbed on the grid).
-    static constexpr std::array<std::array<int, 2>, 8> kDir = {{{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}}};
+    static constexpr std::array<std::array<int, 2>, 8> kDir = {
+        {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}}};
     const auto& d = kDir[static_cast<std::size_t>((i * 8) / n)];
     ring.push_back({centre[0] + r * static_cast<float>(d[0]) + coord(rng, g, -0.5f, 0.5f),
                     centre[1] + r * static_cast<float>(d[1]) + coord(rng, g, -0.5f, 0.5f)});
   }
-  for (std::size_t i = 0; i < ring.size(); ++i) s.primitives.push_back(triangle(rng, centre, ring[i], ring[(i + 1) % ring.size()]));
+  for (std::size_t i = 0; i < ring.size(); ++i)
+    s.primitives.push_back(triangle(rng, centre, ring[i], ring[(i + 1) % ring.size()]));
 }
 
 void grid_mesh(Rng& rng, Grid g, Scene& s) {
-  const float cell = g.bits == 0 ? static_cast<float>(rng.uniform(1, 3)) : coord(rng, g, 1.0f, 3.0f);
+  const float cell =
+      g.bits == 0 ? static_cast<float>(rng.uniform(1, 3)) : coord(rng, g, 1.0f, 3.0f);
   const FloatPoint origin = {coord(rng, g, -0.5f, 1.0f), coord(rng, g, -0.5f, 1.0f)};
   const auto cols = rng.uniform(1, 3), rows = rng.uniform(1, 3);
   const bool flip = rng.chance(50);
   for (std::int64_t j = 0; j < rows; ++j) {
     for (std::int64_t i = 0; i < cols; ++i) {
-      const float x0 = origin[0] + cell * static_cast<float>(i), y0 = origin[1] + cell * static_cast<float>(j);
+      const float x0 = origin[0] + cell * static_cast<float>(i),
+                  y0 = origin[1] + cell * static_cast<float>(j);
       const FloatPoint a{x0, y0}, b{x0 + cell, y0}, c{x0 + cell, y0 + cell}, d{x0, y0 + cell};
       if (flip) {
         s.primitives.push_back(triangle(rng, a, b, d));
@@ -138,7 +159,8 @@ void grid_mesh(Rng& rng, Grid g, Scene& s) {
 void sliver(Rng& rng, Grid g, Scene& s) {
   const FloatPoint a = point(rng, g, s), far = point(rng, g, s);
   const Grid fine{std::max(g.bits, 4)};
-  const FloatPoint b = {a[0] + coord(rng, fine, -0.25f, 0.25f), a[1] + coord(rng, fine, -0.25f, 0.25f)};
+  const FloatPoint b = {a[0] + coord(rng, fine, -0.25f, 0.25f),
+                        a[1] + coord(rng, fine, -0.25f, 0.25f)};
   s.primitives.push_back(triangle(rng, a, b, far));
 }
 
@@ -148,7 +170,8 @@ void points(Rng& rng, Scene& s) {
     Primitive p;
     p.type = PrimitiveType::kPoint;
     // On pixel boundaries and centres: integers and halves.
-    p.v = {{coord(rng, Grid{1}, 0.0f, static_cast<float>(s.width)), coord(rng, Grid{1}, 0.0f, static_cast<float>(s.height))}};
+    p.v = {{coord(rng, Grid{1}, 0.0f, static_cast<float>(s.width)),
+            coord(rng, Grid{1}, 0.0f, static_cast<float>(s.height))}};
     s.primitives.push_back(p);
   }
 }
@@ -160,48 +183,64 @@ void lines(Rng& rng, Grid g, Scene& s) {
     p.type = PrimitiveType::kLine;
     const FloatPoint a = point(rng, g, s);
     const float len = static_cast<float>(rng.uniform(1, 8));
-    static constexpr std::array<std::array<int, 2>, 8> kDir = {{{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}}};
+    static constexpr std::array<std::array<int, 2>, 8> kDir = {
+        {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}}};
     const auto& d = kDir[static_cast<std::size_t>(rng.uniform(0, 7))];
     FloatPoint b = {a[0] + len * static_cast<float>(d[0]), a[1] + len * static_cast<float>(d[1])};
-    if (rng.chance(30)) b = point(rng, g, s);  // any direction
+    if (rng.chance(30))
+      b = point(rng, g, s); // any direction
     p.v = {a, b};
     s.primitives.push_back(p);
   }
 }
 
-}  // namespace
+} // namespace
 
 // rule: FUZZ.GENERATE
-std::optional<Case> generate_case(std::uint64_t seed, std::uint64_t index, Profile profile, const driver::Driver& driver) {
+std::optional<Case> generate_case(std::uint64_t seed, std::uint64_t index, Profile profile,
+                                  const driver::Driver& driver) {
   const driver::DriverInfo& info = driver.info();
   std::vector<std::string> families = {"random", "shared-edge", "fan", "grid", "sliver"};
-  if (info.points) families.emplace_back("points");
-  if (profile == Profile::kD3D11 ? info.lines_d3d : info.lines_bresenham) families.emplace_back("lines");
-  const bool msaa4 = std::find(info.sample_counts.begin(), info.sample_counts.end(), 4u) != info.sample_counts.end();
+  if (info.points)
+    families.emplace_back("points");
+  if (profile == Profile::kD3D11 ? info.lines_d3d : info.lines_bresenham)
+    families.emplace_back("lines");
+  const bool msaa4 = std::find(info.sample_counts.begin(), info.sample_counts.end(), 4u) !=
+                     info.sample_counts.end();
   for (std::uint64_t attempt = 0; attempt < 16; ++attempt) {
-    Rng rng(seed * 0x9E3779B97F4A7C15ull ^ (index + 1) * 0xD1B54A32D192ED03ull ^ attempt * 0x8CB92BA72F3D8DD7ull);
+    Rng rng(seed * 0x9E3779B97F4A7C15ull ^ (index + 1) * 0xD1B54A32D192ED03ull ^
+            attempt * 0x8CB92BA72F3D8DD7ull);
     rng.next();
     Case c;
     Scene& s = c.scene;
     s.width = static_cast<std::int32_t>(rng.uniform(4, 16));
     s.height = static_cast<std::int32_t>(rng.uniform(4, 16));
     apply_profile(profile, s);
-    c.family = families[static_cast<std::size_t>(rng.uniform(0, static_cast<std::int64_t>(families.size()) - 1))];
+    c.family = families[static_cast<std::size_t>(
+        rng.uniform(0, static_cast<std::int64_t>(families.size()) - 1))];
     const Grid g = pick_grid(rng);
-    if (c.family == "random") random_triangles(rng, g, s);
-    else if (c.family == "shared-edge") shared_edge(rng, g, s);
-    else if (c.family == "fan") fan(rng, g, s);
-    else if (c.family == "grid") grid_mesh(rng, g, s);
-    else if (c.family == "sliver") sliver(rng, g, s);
-    else if (c.family == "points") points(rng, s);
-    else lines(rng, g, s);
+    if (c.family == "random")
+      random_triangles(rng, g, s);
+    else if (c.family == "shared-edge")
+      shared_edge(rng, g, s);
+    else if (c.family == "fan")
+      fan(rng, g, s);
+    else if (c.family == "grid")
+      grid_mesh(rng, g, s);
+    else if (c.family == "sliver")
+      sliver(rng, g, s);
+    else if (c.family == "points")
+      points(rng, s);
+    else
+      lines(rng, g, s);
     if (msaa4 && rng.chance(25)) {
       // The standard 4x pattern (MSAA.PATTERN.STANDARD).
       s.msaa.pattern = standard_pattern(4);
     }
-    if (driver.unsupported(s).empty()) return c;
+    if (driver.unsupported(s).empty())
+      return c;
   }
   return std::nullopt;
 }
 
-}  // namespace rastrules::fuzzer
+} // namespace rastrules::fuzzer

@@ -12,10 +12,10 @@
 namespace rastrules::fuzzer {
 namespace {
 
-constexpr std::int64_t kUnits = 4096;  // probe offsets in 1/4096 px
+constexpr std::int64_t kUnits = 4096; // probe offsets in 1/4096 px
 
 class Prober {
- public:
+public:
   explicit Prober(driver::Driver& d) : d_(d) {}
 
   // The driver's observable coverage, or nullopt (error_ set).
@@ -35,16 +35,18 @@ class Prober {
   // The mask of pixel (x, y) of primitive 0 (0 when not covered).
   std::optional<std::uint32_t> mask(const Scene& s, std::int32_t x, std::int32_t y) {
     auto f = draw(s);
-    if (!f) return std::nullopt;
+    if (!f)
+      return std::nullopt;
     for (const Fragment& g : *f) {
-      if (g.prim == 0 && g.x == x && g.y == y) return g.mask;
+      if (g.prim == 0 && g.x == x && g.y == y)
+        return g.mask;
     }
     return 0u;
   }
 
   std::string error_;
 
- private:
+private:
   driver::Driver& d_;
 };
 
@@ -59,22 +61,26 @@ Scene base_scene() {
 // a right edge at x, a top edge (interior below) at y, a bottom edge at y.
 Scene left_edge(float x) {
   Scene s = base_scene();
-  s.primitives.push_back(make_triangle({FloatPoint{x, 6.0f}, FloatPoint{x, -6.0f}, FloatPoint{x + 6.0f, 0.0f}}));
+  s.primitives.push_back(
+      make_triangle({FloatPoint{x, 6.0f}, FloatPoint{x, -6.0f}, FloatPoint{x + 6.0f, 0.0f}}));
   return s;
 }
 Scene right_edge(float x) {
   Scene s = base_scene();
-  s.primitives.push_back(make_triangle({FloatPoint{x, -6.0f}, FloatPoint{x, 6.0f}, FloatPoint{x - 6.0f, 0.0f}}));
+  s.primitives.push_back(
+      make_triangle({FloatPoint{x, -6.0f}, FloatPoint{x, 6.0f}, FloatPoint{x - 6.0f, 0.0f}}));
   return s;
 }
 Scene top_edge(float y) {
   Scene s = base_scene();
-  s.primitives.push_back(make_triangle({FloatPoint{-6.0f, y}, FloatPoint{6.0f, y}, FloatPoint{0.0f, y + 6.0f}}));
+  s.primitives.push_back(
+      make_triangle({FloatPoint{-6.0f, y}, FloatPoint{6.0f, y}, FloatPoint{0.0f, y + 6.0f}}));
   return s;
 }
 Scene bottom_edge(float y) {
   Scene s = base_scene();
-  s.primitives.push_back(make_triangle({FloatPoint{6.0f, y}, FloatPoint{-6.0f, y}, FloatPoint{0.0f, y - 6.0f}}));
+  s.primitives.push_back(
+      make_triangle({FloatPoint{6.0f, y}, FloatPoint{-6.0f, y}, FloatPoint{0.0f, y - 6.0f}}));
   return s;
 }
 
@@ -84,15 +90,19 @@ std::string convention_name(const ProbeReport& r) {
   }
   std::string s = "no consistent fill convention: samples on ";
   std::string on;
-  for (const auto& [name, in] : {std::pair{"top", r.top}, {"bottom", r.bottom}, {"left", r.left}, {"right", r.right}}) {
-    if (in) on += (on.empty() ? "" : ", ") + std::string(name);
+  for (const auto& [name, in] :
+       {std::pair{"top", r.top}, {"bottom", r.bottom}, {"left", r.left}, {"right", r.right}}) {
+    if (in)
+      on += (on.empty() ? "" : ", ") + std::string(name);
   }
   return s + (on.empty() ? "no" : on) + " edges are inside";
 }
 
-bool power_of_two(std::int64_t v) { return v > 0 && std::has_single_bit(static_cast<std::uint64_t>(v)); }
+bool power_of_two(std::int64_t v) {
+  return v > 0 && std::has_single_bit(static_cast<std::uint64_t>(v));
+}
 
-}  // namespace
+} // namespace
 
 // rule: FUZZ.PROBE
 ProbeReport probe(driver::Driver& driver) {
@@ -101,8 +111,8 @@ ProbeReport probe(driver::Driver& driver) {
   // Fill convention: an edge exactly through the centre (0.5, 0.5) of pixel (0, 0); halves are
   // exact on every grid of at least one subpixel bit.
   {
-    const auto t = p.mask(top_edge(0.5f), 0, 0), b = p.mask(bottom_edge(0.5f), 0, 0), l = p.mask(left_edge(0.5f), 0, 0),
-               rr = p.mask(right_edge(0.5f), 0, 0);
+    const auto t = p.mask(top_edge(0.5f), 0, 0), b = p.mask(bottom_edge(0.5f), 0, 0),
+               l = p.mask(left_edge(0.5f), 0, 0), rr = p.mask(right_edge(0.5f), 0, 0);
     if (!t || !b || !l || !rr) {
       r.error = p.error_;
       return r;
@@ -124,24 +134,28 @@ ProbeReport probe(driver::Driver& driver) {
         const float x = 0.5f + static_cast<float>(d) / static_cast<float>(kUnits);
         if (r.left) {
           auto m = p.mask(left_edge(x), 0, 0);
-          if (!m) return std::nullopt;
-          return *m == 0;  // covered iff snapped <= 0.5
+          if (!m)
+            return std::nullopt;
+          return *m == 0; // covered iff snapped <= 0.5
         }
         auto m = p.mask(right_edge(x), 0, 0);
-        if (!m) return std::nullopt;
-        return *m != 0;  // covered iff snapped > 0.5
+        if (!m)
+          return std::nullopt;
+        return *m != 0; // covered iff snapped > 0.5
       }
       const float x = 0.5f - static_cast<float>(d) / static_cast<float>(kUnits);
       if (!r.left) {
         auto m = p.mask(left_edge(x), 0, 0);
-        if (!m) return std::nullopt;
-        return *m != 0;  // covered iff snapped < 0.5
+        if (!m)
+          return std::nullopt;
+        return *m != 0; // covered iff snapped < 0.5
       }
       auto m = p.mask(right_edge(x), 0, 0);
-      if (!m) return std::nullopt;
-      return *m == 0;  // covered iff snapped >= 0.5
+      if (!m)
+        return std::nullopt;
+      return *m == 0; // covered iff snapped >= 0.5
     };
-    std::int64_t lo = 1, hi = kUnits - 1;  // find the smallest d in [lo, hi] that leaves
+    std::int64_t lo = 1, hi = kUnits - 1; // find the smallest d in [lo, hi] that leaves
     auto at_hi = leaves(hi);
     if (!at_hi) {
       r.error = p.error_;
@@ -155,7 +169,10 @@ ProbeReport probe(driver::Driver& driver) {
           r.error = p.error_;
           return r;
         }
-        if (*v) hi = mid; else lo = mid + 1;
+        if (*v)
+          hi = mid;
+        else
+          lo = mid + 1;
       }
       r.threshold_4096 = lo;
       const std::int64_t t = lo;
@@ -167,7 +184,8 @@ ProbeReport probe(driver::Driver& driver) {
         r.rounding = "finer than 1/4096 px";
       } else if (power_of_two(2 * (t - 1))) {
         step = 2 * (t - 1);
-        r.rounding = upward ? "round half to even (ties keep the even grid point 0.5)" : "round half to even or half up";
+        r.rounding = upward ? "round half to even (ties keep the even grid point 0.5)"
+                            : "round half to even or half up";
       } else if (power_of_two(2 * t)) {
         step = 2 * t;
         r.rounding = upward ? "round half up" : "round half down";
@@ -177,7 +195,8 @@ ProbeReport probe(driver::Driver& driver) {
       } else {
         r.rounding = "no power-of-two grid explains the threshold";
       }
-      if (step > 0) r.subpixel_bits = 12 - std::countr_zero(static_cast<std::uint64_t>(step));
+      if (step > 0)
+        r.subpixel_bits = 12 - std::countr_zero(static_cast<std::uint64_t>(step));
     } else {
       r.rounding = "the edge never left the centre within one pixel";
     }
@@ -185,14 +204,16 @@ ProbeReport probe(driver::Driver& driver) {
   // The measured fill convention, when consistent: points and lines are compared under it, so
   // a driver with another (legal) tie rule is not reported as drawing them differently.
   const bool consistent = r.top != r.bottom && r.left != r.right;
-  const FillConvention measured = !consistent ? FillConvention::kTopLeft
-                                  : r.top     ? (r.left ? FillConvention::kTopLeft : FillConvention::kTopRight)
-                                              : (r.left ? FillConvention::kBottomLeft : FillConvention::kBottomRight);
+  const FillConvention measured =
+      !consistent ? FillConvention::kTopLeft
+      : r.top     ? (r.left ? FillConvention::kTopLeft : FillConvention::kTopRight)
+                  : (r.left ? FillConvention::kBottomLeft : FillConvention::kBottomRight);
   // Points: compare with the reference's point rule.
   {
     Scene s = base_scene();
     s.state.fill = measured;
-    for (const FloatPoint v : {FloatPoint{1.0f, 1.0f}, FloatPoint{3.5f, 1.5f}, FloatPoint{5.25f, 2.0f}, FloatPoint{2.0f, 5.5f}}) {
+    for (const FloatPoint v : {FloatPoint{1.0f, 1.0f}, FloatPoint{3.5f, 1.5f},
+                               FloatPoint{5.25f, 2.0f}, FloatPoint{2.0f, 5.5f}}) {
       Primitive pt;
       pt.type = PrimitiveType::kPoint;
       pt.v = {v};
@@ -203,8 +224,9 @@ ProbeReport probe(driver::Driver& driver) {
     } else if (auto got = p.draw(s)) {
       std::string err;
       auto c = compare(s, *got, Profile::kD3D11, Mode::kExact, &err);
-      r.point_rule = c && c->match ? "1x1 squares around the snapped position, as POINT.SHAPE.SQUARE"
-                                   : "differs from POINT.SHAPE.SQUARE on the probe points";
+      r.point_rule = c && c->match
+                         ? "1x1 squares around the snapped position, as POINT.SHAPE.SQUARE"
+                         : "differs from POINT.SHAPE.SQUARE on the probe points";
     } else {
       r.point_rule = "not probed: " + p.error_;
     }
@@ -213,8 +235,10 @@ ProbeReport probe(driver::Driver& driver) {
   {
     Scene s = base_scene();
     s.state.fill = measured;
-    for (const auto& [a, b] : {std::pair{FloatPoint{0.5f, 0.5f}, FloatPoint{6.5f, 3.5f}}, {FloatPoint{1.0f, 1.0f}, FloatPoint{7.0f, 1.0f}},
-                               {FloatPoint{1.25f, 0.75f}, FloatPoint{2.75f, 6.25f}}, {FloatPoint{0.0f, 0.0f}, FloatPoint{5.0f, 5.0f}},
+    for (const auto& [a, b] : {std::pair{FloatPoint{0.5f, 0.5f}, FloatPoint{6.5f, 3.5f}},
+                               {FloatPoint{1.0f, 1.0f}, FloatPoint{7.0f, 1.0f}},
+                               {FloatPoint{1.25f, 0.75f}, FloatPoint{2.75f, 6.25f}},
+                               {FloatPoint{0.0f, 0.0f}, FloatPoint{5.0f, 5.0f}},
                                {FloatPoint{6.5f, 7.0f}, FloatPoint{1.5f, 4.0f}}}) {
       Primitive l;
       l.type = PrimitiveType::kLine;
@@ -223,9 +247,11 @@ ProbeReport probe(driver::Driver& driver) {
     }
     // Each line mode the driver accepts, drawn with that mode and compared with the reference.
     std::string modes;
-    for (const LineMode m : {LineMode::kD3DDiamond, LineMode::kVulkanBresenham, LineMode::kQuadNarrow, LineMode::kQuadWide}) {
+    for (const LineMode m : {LineMode::kD3DDiamond, LineMode::kVulkanBresenham,
+                             LineMode::kQuadNarrow, LineMode::kQuadWide}) {
       s.line_mode = m;
-      if (!driver.unsupported(s).empty()) continue;
+      if (!driver.unsupported(s).empty())
+        continue;
       auto got = p.draw(s);
       std::string verdict;
       if (!got) {
@@ -234,9 +260,10 @@ ProbeReport probe(driver::Driver& driver) {
         std::string err;
         auto c = compare(s, *got, Profile::kD3D11, Mode::kExact, &err);
         verdict = !c ? "not compared: " + err
-                     : c->match ? "matches the reference"
-                                : "differs from the reference (" + std::to_string(c->missing.size()) + " missing, " +
-                                      std::to_string(c->extra.size()) + " extra pixels)";
+                  : c->match
+                      ? "matches the reference"
+                      : "differs from the reference (" + std::to_string(c->missing.size()) +
+                            " missing, " + std::to_string(c->extra.size()) + " extra pixels)";
       }
       modes += (modes.empty() ? "" : "; ") + std::string(io::line_mode_name(m)) + " " + verdict;
     }
@@ -268,7 +295,8 @@ ProbeReport probe(driver::Driver& driver) {
             break;
           }
           for (std::size_t k = 0; k < 4; ++k) {
-            if ((*m & (1u << k)) != 0) found[k] = incl ? o : o + 1;
+            if ((*m & (1u << k)) != 0)
+              found[k] = incl ? o : o + 1;
           }
         }
         (axis == 0 ? sx : sy) = found;
@@ -276,13 +304,16 @@ ProbeReport probe(driver::Driver& driver) {
       if (!ok) {
         r.samples_note = "not probed: " + p.error_;
       } else {
-        for (std::size_t k = 0; k < 4; ++k) r.samples_4x.push_back({static_cast<std::int8_t>(sx[k]), static_cast<std::int8_t>(sy[k])});
-        r.samples_note = r.samples_4x == standard4.positions ? "the standard 4x pattern (MSAA.PATTERN.STANDARD)"
-                                                            : "differs from the standard 4x pattern";
+        for (std::size_t k = 0; k < 4; ++k)
+          r.samples_4x.push_back(
+              {static_cast<std::int8_t>(sx[k]), static_cast<std::int8_t>(sy[k])});
+        r.samples_note = r.samples_4x == standard4.positions
+                             ? "the standard 4x pattern (MSAA.PATTERN.STANDARD)"
+                             : "differs from the standard 4x pattern";
       }
     }
   }
   return r;
 }
 
-}  // namespace rastrules::fuzzer
+} // namespace rastrules::fuzzer

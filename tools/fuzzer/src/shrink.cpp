@@ -34,7 +34,8 @@ bool delete_primitives(Scene& s, const Pred& differs) {
 bool delete_vertices(Scene& s, const Pred& differs) {
   bool changed = false;
   for (std::size_t p = 0; p < s.primitives.size(); ++p) {
-    if (s.primitives[p].type != PrimitiveType::kLineStrip) continue;
+    if (s.primitives[p].type != PrimitiveType::kLineStrip)
+      continue;
     for (std::size_t i = 0; i < s.primitives[p].v.size() && s.primitives[p].v.size() > 2;) {
       Scene t = s;
       t.primitives[p].v.erase(t.primitives[p].v.begin() + static_cast<std::ptrdiff_t>(i));
@@ -61,7 +62,8 @@ bool delete_vertices(Scene& s, const Pred& differs) {
 std::vector<float> candidates(float c) {
   const double v = c;
   std::vector<double> out = {0.0};
-  if (std::fabs(v) >= 2) out.push_back(std::trunc(v / 2));
+  if (std::fabs(v) >= 2)
+    out.push_back(std::trunc(v / 2));
   out.push_back(std::trunc(v));
   out.push_back(std::floor(v + 0.5));
   // Fewer fraction bits: halves, quarters, ..., 1/128.
@@ -69,11 +71,13 @@ std::vector<float> candidates(float c) {
     const double scale = std::ldexp(1.0, bits);
     out.push_back(std::floor(v * scale + 0.5) / scale);
   }
-  if (std::fabs(v) >= 1) out.push_back(v > 0 ? v - 1 : v + 1);
+  if (std::fabs(v) >= 1)
+    out.push_back(v > 0 ? v - 1 : v + 1);
   std::vector<float> f;
   for (const double d : out) {
     const auto x = static_cast<float>(d);
-    if (x != c && std::find(f.begin(), f.end(), x) == f.end()) f.push_back(x);
+    if (x != c && std::find(f.begin(), f.end(), x) == f.end())
+      f.push_back(x);
   }
   return f;
 }
@@ -97,17 +101,20 @@ bool simplify_coordinates(Scene& s, const Pred& differs) {
         }
       }
     }
-    if (!any) break;
+    if (!any)
+      break;
     changed = true;
   }
   return changed;
 }
 
 bool fewer_samples(Scene& s, const Pred& differs) {
-  if (s.msaa.count() == 1) return false;
+  if (s.msaa.count() == 1)
+    return false;
   Scene t = s;
   t.msaa = MultisampleState{};
-  if (!differs(t)) return false;
+  if (!differs(t))
+    return false;
   s = std::move(t);
   return true;
 }
@@ -133,7 +140,8 @@ bool toward_origin(Scene& s, const Pred& differs) {
   }
   const float dx = std::max(0.0f, std::floor(min_x)), dy = std::max(0.0f, std::floor(min_y));
   for (const auto& [tx, ty] : {std::pair{dx, dy}, std::pair{dx, 0.0f}, std::pair{0.0f, dy}}) {
-    if (tx == 0 && ty == 0) continue;
+    if (tx == 0 && ty == 0)
+      continue;
     Scene t = translated(s, tx, ty);
     if (differs(t)) {
       s = std::move(t);
@@ -151,7 +159,8 @@ bool smaller_target(Scene& s, const Pred& differs) {
       Scene t = s;
       std::int32_t& ts = side == &s.width ? t.width : t.height;
       ts = *side / 2;
-      if (!differs(t)) break;
+      if (!differs(t))
+        break;
       s = std::move(t);
       changed = true;
     }
@@ -159,7 +168,8 @@ bool smaller_target(Scene& s, const Pred& differs) {
       Scene t = s;
       std::int32_t& ts = side == &s.width ? t.width : t.height;
       ts = *side - 1;
-      if (!differs(t)) break;
+      if (!differs(t))
+        break;
       s = std::move(t);
       changed = true;
     }
@@ -173,20 +183,24 @@ bool canonical_order(Scene& s, const Pred& differs) {
   Scene t = s;
   bool moved = false;
   for (Primitive& p : t.primitives) {
-    if (p.type != PrimitiveType::kTriangle || p.v.size() != 3) continue;
-    const auto first = std::min_element(p.v.begin(), p.v.end(), [](const FloatPoint& a, const FloatPoint& b) {
-      return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0];
-    });
-    if (first == p.v.begin()) continue;
+    if (p.type != PrimitiveType::kTriangle || p.v.size() != 3)
+      continue;
+    const auto first =
+        std::min_element(p.v.begin(), p.v.end(), [](const FloatPoint& a, const FloatPoint& b) {
+          return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0];
+        });
+    if (first == p.v.begin())
+      continue;
     std::rotate(p.v.begin(), first, p.v.end());
     moved = true;
   }
-  if (!moved || !differs(t)) return false;
+  if (!moved || !differs(t))
+    return false;
   s = std::move(t);
   return true;
 }
 
-}  // namespace
+} // namespace
 
 // rule: FUZZ.SHRINK
 Scene shrink(const Scene& scene, const std::function<bool(const Scene&)>& still_differs) {
@@ -199,9 +213,10 @@ Scene shrink(const Scene& scene, const std::function<bool(const Scene&)>& still_
     changed = toward_origin(s, still_differs) || changed;
     changed = smaller_target(s, still_differs) || changed;
     changed = canonical_order(s, still_differs) || changed;
-    if (!changed) break;
+    if (!changed)
+      break;
   }
   return s;
 }
 
-}  // namespace rastrules::fuzzer
+} // namespace rastrules::fuzzer

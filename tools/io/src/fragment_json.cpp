@@ -19,8 +19,7 @@ namespace {
 
 constexpr std::size_t kFlushBytes = std::size_t{1} << 16;
 
-template <class Int>
-void append_int(std::string& out, Int v) {
+template <class Int> void append_int(std::string& out, Int v) {
   std::array<char, 24> buf{};
   const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
   out.append(buf.data(), r.ptr);
@@ -53,7 +52,8 @@ void append_fragment_fields(std::string& out, const Fragment& f, bool first,
     out += ", \"sample\": ";
     append_int(out, *f.sample);
   }
-  if (f.helper) out += ", \"helper\": true";
+  if (f.helper)
+    out += ", \"helper\": true";
   // rule: SCENE.OUTPUT.COVERAGE
   if (f.coverage_q16) {
     out += ", \"coverage\": ";
@@ -88,10 +88,14 @@ std::string value_text(float v) {
 // attribute and one depth per sample of its mask, none of either for a fragment the depth test
 // killed (PIPE.DEPTH.KILL: passed 0 on a covered fragment); without data, no field asked for.
 bool matches(const Fragment& f, const pipe::FragmentData* d, const PipeOutputFields& fields) {
-  if (d == nullptr) return fields.attributes.empty() && !fields.depth;
-  if (fields.depth && !f.helper && d->passed == 0) return d->attr.empty() && d->depth.empty();
-  if (d->attr.size() != fields.attributes.size()) return false;
-  if (fields.depth) return d->depth.size() == static_cast<std::size_t>(std::popcount(f.mask));
+  if (d == nullptr)
+    return fields.attributes.empty() && !fields.depth;
+  if (fields.depth && !f.helper && d->passed == 0)
+    return d->attr.empty() && d->depth.empty();
+  if (d->attr.size() != fields.attributes.size())
+    return false;
+  if (fields.depth)
+    return d->depth.size() == static_cast<std::size_t>(std::popcount(f.mask));
   return d->depth.empty();
 }
 
@@ -99,8 +103,10 @@ bool matches(const Fragment& f, const pipe::FragmentData* d, const PipeOutputFie
 // sample), a missing part first.
 bool pipe_before(const Fragment& a, std::optional<std::uint32_t> part_a, const Fragment& b,
                  std::optional<std::uint32_t> part_b) {
-  if (a.prim != b.prim) return a.prim < b.prim;
-  if (part_a != part_b) return part_a < part_b;
+  if (a.prim != b.prim)
+    return a.prim < b.prim;
+  if (part_a != part_b)
+    return part_a < part_b;
   return fragment_before(a, b);
 }
 
@@ -125,7 +131,8 @@ void append_pipe_fragment(std::string& out, const Fragment& f, const pipe::Fragm
   if (!fields.attributes.empty() && !killed) {
     out += ", \"attr\": {";
     for (std::size_t k = 0; k < fields.attributes.size(); ++k) {
-      out += (k == 0 ? "" : ", ") + json_string(fields.attributes[k]) + ": " + value_text(d->attr[k]);
+      out +=
+          (k == 0 ? "" : ", ") + json_string(fields.attributes[k]) + ": " + value_text(d->attr[k]);
     }
     out += "}";
   }
@@ -143,7 +150,7 @@ void append_pipe_fragment(std::string& out, const Fragment& f, const pipe::Fragm
   out += "}";
 }
 
-}  // namespace
+} // namespace
 
 // rule: SCENE.OUTPUT.COVERAGE
 std::string format_coverage(std::uint32_t coverage_q16) {
@@ -171,10 +178,12 @@ std::string format_sixteenths(std::int64_t sixteenths) {
                                      : static_cast<std::uint64_t>(sixteenths);
   std::string out = (negative ? "-" : "") + std::to_string(mag >> 4) + ".";
   const std::uint64_t frac = (mag & 15u) * 625u;
-  if (frac == 0) return out + "0";
+  if (frac == 0)
+    return out + "0";
   std::string digits = std::to_string(frac);
   digits.insert(0, 4 - digits.size(), '0');
-  while (digits.back() == '0') digits.pop_back();
+  while (digits.back() == '0')
+    digits.pop_back();
   return out + digits;
 }
 
@@ -187,21 +196,23 @@ FragmentWriter::FragmentWriter(std::FILE* out) : out_(out) {
   buffer_ += "{\"fragments\": [";
 }
 
-FragmentWriter::FragmentWriter(std::FILE* out, PipeOutputFields fields)
-    : FragmentWriter(out) {
+FragmentWriter::FragmentWriter(std::FILE* out, PipeOutputFields fields) : FragmentWriter(out) {
   fields_ = std::move(fields);
 }
 
 // rule: SCENE.OUTPUT.PIPELINE
 bool FragmentWriter::add(const Fragment& f, const pipe::FragmentData* data) {
   const std::optional<std::uint32_t> part = data != nullptr ? data->part : std::nullopt;
-  if (count_ != 0 && !pipe_before(last_, last_part_, f, part)) return false;
-  if (!matches(f, data, fields_)) return false;
+  if (count_ != 0 && !pipe_before(last_, last_part_, f, part))
+    return false;
+  if (!matches(f, data, fields_))
+    return false;
   append_pipe_fragment(buffer_, f, data, count_ == 0, fields_);
   last_ = f;
   last_part_ = part;
   ++count_;
-  if (buffer_.size() >= kFlushBytes) flush_buffer();
+  if (buffer_.size() >= kFlushBytes)
+    flush_buffer();
   return true;
 }
 
@@ -212,14 +223,16 @@ bool FragmentWriter::add(const Fragment& f) {
   append_fragment(buffer_, f, count_ == 0);
   last_ = f;
   ++count_;
-  if (buffer_.size() >= kFlushBytes) flush_buffer();
+  if (buffer_.size() >= kFlushBytes)
+    flush_buffer();
   return true;
 }
 
 bool FragmentWriter::finish() {
   buffer_ += count_ == 0 ? "]}\n" : "\n]}\n";
   flush_buffer();
-  if (std::fflush(out_) != 0) failed_ = true;
+  if (std::fflush(out_) != 0)
+    failed_ = true;
   return !failed_;
 }
 
@@ -241,15 +254,18 @@ std::string fragments_to_json(const std::vector<Fragment>& fragments) {
 
 PipeOutputFields pipe_output_fields(const pipe::PipeScene& s) {
   PipeOutputFields fields;
-  for (const pipe::AttributeDecl& a : s.attributes) fields.attributes.push_back(a.name);
-  if (s.depth) fields.depth = s.depth->format;
+  for (const pipe::AttributeDecl& a : s.attributes)
+    fields.attributes.push_back(a.name);
+  if (s.depth)
+    fields.depth = s.depth->format;
   return fields;
 }
 
 std::optional<std::string> pipe_fragments_to_json(const std::vector<Fragment>& fragments,
                                                   const std::vector<pipe::FragmentData>& data,
                                                   const PipeOutputFields& fields) {
-  if (!data.empty() && data.size() != fragments.size()) return std::nullopt;
+  if (!data.empty() && data.size() != fragments.size())
+    return std::nullopt;
   const auto data_of = [&](std::size_t n) { return data.empty() ? nullptr : &data[n]; };
   const auto part_of = [&](std::size_t n) {
     return data.empty() ? std::optional<std::uint32_t>() : data[n].part;
@@ -259,7 +275,8 @@ std::optional<std::string> pipe_fragments_to_json(const std::vector<Fragment>& f
     if (n != 0 && !pipe_before(fragments[n - 1], part_of(n - 1), fragments[n], part_of(n))) {
       return std::nullopt;
     }
-    if (!matches(fragments[n], data_of(n), fields)) return std::nullopt;
+    if (!matches(fragments[n], data_of(n), fields))
+      return std::nullopt;
     append_pipe_fragment(out, fragments[n], data_of(n), n == 0, fields);
   }
   out += fragments.empty() ? "]}\n" : "\n]}\n";
@@ -268,7 +285,8 @@ std::optional<std::string> pipe_fragments_to_json(const std::vector<Fragment>& f
 
 // rule: SCENE.OUTPUT.PIPELINE
 std::string depth_text(const pipe::DepthValue& d, pipe::DepthFormat format) {
-  if (format == pipe::DepthFormat::kD32F) return value_text(d.f);
+  if (format == pipe::DepthFormat::kD32F)
+    return value_text(d.f);
   std::string out;
   append_int(out, d.unorm);
   return out;
@@ -279,11 +297,12 @@ bool write_depth_buffer(std::FILE* out, std::int32_t width, std::int32_t height,
                         std::uint32_t samples, pipe::DepthFormat format,
                         const std::vector<pipe::DepthValue>& buffer) {
   const std::size_t row = static_cast<std::size_t>(width < 0 ? 0 : width) * samples;
-  if (height < 0 || buffer.size() != row * static_cast<std::size_t>(height)) return false;
+  if (height < 0 || buffer.size() != row * static_cast<std::size_t>(height))
+    return false;
   std::string text = "{\"format\": \"" + std::string(depth_format_name(format)) +
-                     "\", \"width\": " + std::to_string(width) + ", \"height\": " +
-                     std::to_string(height) + ", \"samples\": " + std::to_string(samples) +
-                     ", \"depth\": [";
+                     "\", \"width\": " + std::to_string(width) +
+                     ", \"height\": " + std::to_string(height) +
+                     ", \"samples\": " + std::to_string(samples) + ", \"depth\": [";
   bool ok = true;
   for (std::size_t i = 0; i < buffer.size(); ++i) {
     text += i == 0 ? "\n  " : (i % row == 0 ? ",\n  " : ", ");
@@ -298,4 +317,4 @@ bool write_depth_buffer(std::FILE* out, std::int32_t width, std::int32_t height,
   return std::fflush(out) == 0 && ok;
 }
 
-}  // namespace rastrules::io
+} // namespace rastrules::io

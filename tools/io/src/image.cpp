@@ -25,15 +25,18 @@ Image::Image(int width, int height, Rgb background)
 }
 
 Rgb Image::at(int x, int y) const {
-  const std::size_t i =
-      (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) * 3;
+  const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+                         static_cast<std::size_t>(x)) *
+                        3;
   return Rgb{rgb_[i], rgb_[i + 1], rgb_[i + 2]};
 }
 
 void Image::set(int x, int y, Rgb c) {
-  if (x < 0 || y < 0 || x >= width_ || y >= height_) return;
-  const std::size_t i =
-      (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x)) * 3;
+  if (x < 0 || y < 0 || x >= width_ || y >= height_)
+    return;
+  const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+                         static_cast<std::size_t>(x)) *
+                        3;
   rgb_[i] = c.r;
   rgb_[i + 1] = c.g;
   rgb_[i + 2] = c.b;
@@ -45,7 +48,8 @@ void Image::fill_rect(int x0, int y0, int x1, int y1, Rgb c) {
   x1 = std::min(x1, width_);
   y1 = std::min(y1, height_);
   for (int y = y0; y < y1; ++y) {
-    for (int x = x0; x < x1; ++x) set(x, y, c);
+    for (int x = x0; x < x1; ++x)
+      set(x, y, c);
   }
 }
 
@@ -59,7 +63,8 @@ void Image::line(double x0, double y0, double x1, double y1, Rgb c, int dash) {
       {-dx, x0 - lo_x}, {dx, hi_x - x0}, {-dy, y0 - lo_y}, {dy, hi_y - y0}};
   for (const auto& [p, q] : checks) {
     if (p == 0.0) {
-      if (q < 0.0) return;
+      if (q < 0.0)
+        return;
       continue;
     }
     const double t = q / p;
@@ -68,7 +73,8 @@ void Image::line(double x0, double y0, double x1, double y1, Rgb c, int dash) {
     } else {
       t1 = std::min(t1, t);
     }
-    if (t0 > t1) return;
+    if (t0 > t1)
+      return;
   }
   int ax = static_cast<int>(std::lround(x0 + t0 * dx));
   int ay = static_cast<int>(std::lround(y0 + t0 * dy));
@@ -80,8 +86,10 @@ void Image::line(double x0, double y0, double x1, double y1, Rgb c, int dash) {
   const int ddy = -std::abs(by - ay);
   int err = ddx + ddy;
   for (int step = 0;; ++step) {
-    if (dash <= 0 || (step / dash) % 2 == 0) set(ax, ay, c);
-    if (ax == bx && ay == by) break;
+    if (dash <= 0 || (step / dash) % 2 == 0)
+      set(ax, ay, c);
+    if (ax == bx && ay == by)
+      break;
     const int e2 = 2 * err;
     if (e2 >= ddy) {
       err += ddy;
@@ -101,7 +109,8 @@ void Image::disc(int cx, int cy, int r, Rgb c, bool filled) {
   for (int y = -r; y <= r; ++y) {
     for (int x = -r; x <= r; ++x) {
       const int d = x * x + y * y;
-      if (d <= outer && (filled || d > inner)) set(cx + x, cy + y, c);
+      if (d <= outer && (filled || d > inner))
+        set(cx + x, cy + y, c);
     }
   }
 }
@@ -124,7 +133,8 @@ void on_png_warning(png_structp, png_const_charp) {}
 // libpng reports errors by longjmp: this frame holds only trivially destructible objects.
 bool write_png_rows(std::FILE* out, png_uint_32 width, png_uint_32 height, png_bytepp rows,
                     PngError* err, int color_type = PNG_COLOR_TYPE_RGB) {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, err, on_png_error, on_png_warning);
+  png_structp png =
+      png_create_write_struct(PNG_LIBPNG_VER_STRING, err, on_png_error, on_png_warning);
   if (png == nullptr) {
     std::strcpy(err->message, "cannot create the PNG writer");
     return false;
@@ -149,7 +159,7 @@ bool write_png_rows(std::FILE* out, png_uint_32 width, png_uint_32 height, png_b
   return true;
 }
 
-}  // namespace
+} // namespace
 
 std::optional<std::string> write_png(std::FILE* out, const Image& image) {
   std::vector<png_bytep> rows(static_cast<std::size_t>(image.height()));
@@ -163,7 +173,8 @@ std::optional<std::string> write_png(std::FILE* out, const Image& image) {
                       static_cast<png_uint_32>(image.height()), rows.data(), &err)) {
     return std::string("PNG: ") + err.message;
   }
-  if (std::fflush(out) != 0 || std::ferror(out) != 0) return std::string("PNG: write failed");
+  if (std::fflush(out) != 0 || std::ferror(out) != 0)
+    return std::string("PNG: write failed");
   return std::nullopt;
 }
 
@@ -183,8 +194,9 @@ std::optional<std::string> write_png_rgba(std::FILE* out, int width, int height,
                       rows.data(), &err, PNG_COLOR_TYPE_RGB_ALPHA)) {
     return std::string("PNG: ") + err.message;
   }
-  if (std::fflush(out) != 0 || std::ferror(out) != 0) return std::string("PNG: write failed");
+  if (std::fflush(out) != 0 || std::ferror(out) != 0)
+    return std::string("PNG: write failed");
   return std::nullopt;
 }
 
-}  // namespace rastrules::io
+} // namespace rastrules::io

@@ -45,11 +45,12 @@ double to_image(std::int32_t raw, int scale) {
   return static_cast<double>(raw) * scale / kSubpixelOne;
 }
 
-}  // namespace
+} // namespace
 
 int default_picture_scale(std::int32_t width, std::int32_t height) {
   const std::int32_t side = std::max(width, height);
-  if (side <= 0) return 0;
+  if (side <= 0)
+    return 0;
   return std::min<int>(kDefaultPixelScale, (kMaxPictureSide - 1) / side);
 }
 
@@ -64,7 +65,8 @@ CoverageMap::CoverageMap(std::int32_t width, std::int32_t height)
       count_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0) {}
 
 std::size_t CoverageMap::index(std::int32_t x, std::int32_t y) const {
-  return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) + static_cast<std::size_t>(x);
+  return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+         static_cast<std::size_t>(x);
 }
 
 void CoverageMap::add(std::uint32_t prim, std::int32_t x, std::int32_t y,
@@ -84,8 +86,10 @@ void CoverageMap::add(std::uint32_t prim, std::int32_t x, std::int32_t y,
     aa_seen_[i] = 1;
     return;
   }
-  if (count_[i] == 0) first_[i] = prim;
-  if (count_[i] < 255) ++count_[i];
+  if (count_[i] == 0)
+    first_[i] = prim;
+  if (count_[i] < 255)
+    ++count_[i];
 }
 
 void CoverageMap::record_samples(std::uint32_t sample_count) {
@@ -105,9 +109,11 @@ void CoverageMap::add_fragment(const Fragment& f) {
       helper_[i] = 1;
     } else {
       for (std::uint32_t k = 0; k < sample_count_ && k < 32; ++k) {
-        if (((f.mask >> k) & 1u) == 0) continue;
+        if (((f.mask >> k) & 1u) == 0)
+          continue;
         std::uint32_t& owner = owner_[i * sample_count_ + k];
-        if (owner != 0) sample_overlap_[i] = 1;
+        if (owner != 0)
+          sample_overlap_[i] = 1;
         owner = f.prim + 1;
       }
       if (f.centroid) {
@@ -116,7 +122,8 @@ void CoverageMap::add_fragment(const Fragment& f) {
       }
     }
   }
-  if (f.helper) return;
+  if (f.helper)
+    return;
   if (f.sample && last_counted_ && last_counted_->prim == f.prim && last_counted_->x == f.x &&
       last_counted_->y == f.y && last_counted_->seg == f.seg) {
     return;
@@ -129,14 +136,17 @@ std::uint32_t CoverageMap::sample_owner(std::int32_t x, std::int32_t y, std::uin
   return owner_[index(x, y) * sample_count_ + k];
 }
 
-bool CoverageMap::helper(std::int32_t x, std::int32_t y) const { return helper_[index(x, y)] != 0; }
+bool CoverageMap::helper(std::int32_t x, std::int32_t y) const {
+  return helper_[index(x, y)] != 0;
+}
 
 bool CoverageMap::sample_overlap(std::int32_t x, std::int32_t y) const {
   return sample_overlap_[index(x, y)] != 0;
 }
 
 std::optional<SampleOffset> CoverageMap::centroid(std::int32_t x, std::int32_t y) const {
-  if (has_centroid_[index(x, y)] == 0) return std::nullopt;
+  if (has_centroid_[index(x, y)] == 0)
+    return std::nullopt;
   return centroid_[index(x, y)];
 }
 
@@ -152,8 +162,12 @@ std::optional<Rgb> CoverageMap::aa_colour(std::int32_t x, std::int32_t y) const 
   return aa_[index(x, y)];
 }
 
-std::uint32_t CoverageMap::count(std::int32_t x, std::int32_t y) const { return count_[index(x, y)]; }
-std::uint32_t CoverageMap::first(std::int32_t x, std::int32_t y) const { return first_[index(x, y)]; }
+std::uint32_t CoverageMap::count(std::int32_t x, std::int32_t y) const {
+  return count_[index(x, y)];
+}
+std::uint32_t CoverageMap::first(std::int32_t x, std::int32_t y) const {
+  return first_[index(x, y)];
+}
 
 Rgb cover_colour(std::uint32_t prim) {
   const Rgb c = kPalette[prim % kPalette.size()];
@@ -198,8 +212,10 @@ Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int 
       const int border = std::max(1, s / 16);
       for (int y = 0; y <= s; ++y) {
         for (int x = 0; x <= s; ++x) {
-          const bool edge = x < border + 1 || y < border + 1 || x > s - border - 1 || y > s - border - 1;
-          if (edge || (x + y) % 6 < 2) img.set(x0 + x, y0 + y, kOverlapMark);
+          const bool edge =
+              x < border + 1 || y < border + 1 || x > s - border - 1 || y > s - border - 1;
+          if (edge || (x + y) % 6 < 2)
+            img.set(x0 + x, y0 + y, kOverlapMark);
         }
       }
     }
@@ -207,8 +223,10 @@ Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int 
 
   // Pixel grid.
   if (s >= 3) {
-    for (std::int32_t i = 0; i <= scene.width; ++i) img.fill_rect(i * s, 0, i * s + 1, img.height(), kGrid);
-    for (std::int32_t j = 0; j <= scene.height; ++j) img.fill_rect(0, j * s, img.width(), j * s + 1, kGrid);
+    for (std::int32_t i = 0; i <= scene.width; ++i)
+      img.fill_rect(i * s, 0, i * s + 1, img.height(), kGrid);
+    for (std::int32_t j = 0; j <= scene.height; ++j)
+      img.fill_rect(0, j * s, img.width(), j * s + 1, kGrid);
   }
 
   // Pixel centres, as small crosses (COORD.PIXEL.CENTER); multisampled pictures show the
@@ -282,7 +300,8 @@ Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int 
           const SampleOffset o = scene.msaa.pattern.positions[k];
           const int cx = x0 + s / 2 + (o.x * s) / 16, cy = y0 + s / 2 + (o.y * s) / 16;
           const std::uint32_t owner = coverage.sample_owner(i, j, k);
-          if (owner != 0) img.disc(cx, cy, sr, edge_colour(owner - 1), true);
+          if (owner != 0)
+            img.disc(cx, cy, sr, edge_colour(owner - 1), true);
           img.disc(cx, cy, sr, kSampleMark, false);
         }
         if (const std::optional<SampleOffset> c = coverage.centroid(i, j)) {
@@ -303,7 +322,8 @@ Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int 
     const Rgb c = inactive ? kInactiveEdge : edge_colour(static_cast<std::uint32_t>(p));
     for (const Vec2& v : prim.v) {
       const double x = to_image(v.x.raw(), s), y = to_image(v.y.raw(), s);
-      if (x < -r || y < -r || x > img.width() + r || y > img.height() + r) continue;
+      if (x < -r || y < -r || x > img.width() + r || y > img.height() + r)
+        continue;
       const int xi = static_cast<int>(x + 0.5), yi = static_cast<int>(y + 0.5);
       img.fill_rect(xi - r, yi - r, xi + r + 1, yi + r + 1, c);
     }
@@ -318,8 +338,9 @@ Image draw_depth_picture(std::int32_t width, std::int32_t height, std::uint32_t 
   const std::size_t n = samples;
   for (std::int32_t j = 0; j < height; ++j) {
     for (std::int32_t i = 0; i < width; ++i) {
-      const std::size_t base =
-          (static_cast<std::size_t>(j) * static_cast<std::size_t>(width) + static_cast<std::size_t>(i)) * n;
+      const std::size_t base = (static_cast<std::size_t>(j) * static_cast<std::size_t>(width) +
+                                static_cast<std::size_t>(i)) *
+                               n;
       double sum = 0.0;
       for (std::size_t k = 0; k < n && base + k < depth01.size(); ++k) {
         sum += std::clamp(depth01[base + k], 0.0, 1.0);
@@ -329,10 +350,12 @@ Image draw_depth_picture(std::int32_t width, std::int32_t height, std::uint32_t 
     }
   }
   if (s >= 3) {
-    for (std::int32_t i = 0; i <= width; ++i) img.fill_rect(i * s, 0, i * s + 1, img.height(), kGrid);
-    for (std::int32_t j = 0; j <= height; ++j) img.fill_rect(0, j * s, img.width(), j * s + 1, kGrid);
+    for (std::int32_t i = 0; i <= width; ++i)
+      img.fill_rect(i * s, 0, i * s + 1, img.height(), kGrid);
+    for (std::int32_t j = 0; j <= height; ++j)
+      img.fill_rect(0, j * s, img.width(), j * s + 1, kGrid);
   }
   return img;
 }
 
-}  // namespace rastrules::io
+} // namespace rastrules::io

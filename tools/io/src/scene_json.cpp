@@ -44,14 +44,17 @@ namespace {
 // where it tells overflow (|x| > FLT_MAX) from underflow (|x| < half the smallest subnormal).
 bool magnitude_at_least_one(std::string_view text) {
   std::size_t i = 0;
-  if (i < text.size() && text[i] == '-') ++i;
+  if (i < text.size() && text[i] == '-')
+    ++i;
   // order = decimal exponent of the first non-zero digit, before applying the exponent part.
   std::int64_t order = 0;
   bool found = false;
   std::int64_t int_digits_after_first = -1;
   for (; i < text.size() && text[i] >= '0' && text[i] <= '9'; ++i) {
-    if (!found && text[i] != '0') found = true;
-    if (found) ++int_digits_after_first;
+    if (!found && text[i] != '0')
+      found = true;
+    if (found)
+      ++int_digits_after_first;
   }
   if (found) {
     order = int_digits_after_first;
@@ -67,16 +70,20 @@ bool magnitude_at_least_one(std::string_view text) {
       }
     }
   }
-  while (i < text.size() && text[i] != 'e' && text[i] != 'E') ++i;
+  while (i < text.size() && text[i] != 'e' && text[i] != 'E')
+    ++i;
   std::int64_t exponent = 0;
   if (i < text.size()) {
     ++i;
     bool negative = false;
-    if (i < text.size() && (text[i] == '+' || text[i] == '-')) negative = text[i++] == '-';
+    if (i < text.size() && (text[i] == '+' || text[i] == '-'))
+      negative = text[i++] == '-';
     for (; i < text.size() && text[i] >= '0' && text[i] <= '9'; ++i) {
-      if (exponent < (std::int64_t{1} << 40)) exponent = exponent * 10 + (text[i] - '0');
+      if (exponent < (std::int64_t{1} << 40))
+        exponent = exponent * 10 + (text[i] - '0');
     }
-    if (negative) exponent = -exponent;
+    if (negative)
+      exponent = -exponent;
   }
   return found && order + exponent >= 0;
 }
@@ -88,21 +95,21 @@ enum class Ctx {
   kPrimitiveObject,
   kVertexArray,
   kCoordArray,
-  kPatternArray,  // "sample_pattern": [[i, j], ...]
-  kPatternPair,   // one [i, j]
-  kColorArray,    // "clear_color" or "primitives[i].color": [r, g, b, a]
+  kPatternArray, // "sample_pattern": [[i, j], ...]
+  kPatternPair,  // one [i, j]
+  kColorArray,   // "clear_color" or "primitives[i].color": [r, g, b, a]
   // Pipeline scenes (SCENE.PIPELINE).
   kViewportObject,
   kTransformObject,
-  kMatrixArray,      // "transform.model", ".view", ".projection": 16 numbers
+  kMatrixArray, // "transform.model", ".view", ".projection": 16 numbers
   kDepthObject,
-  kAttributesArray,  // "attributes": [{...}, ...]
+  kAttributesArray, // "attributes": [{...}, ...]
   kAttributeObject,
-  kNumberList,       // "primitives[i].z" or ".w": one number per vertex
-  kPosArray,         // "primitives[i].pos": [[x, y, z(, w)], ...]
-  kPosCoords,        // one [x, y, z(, w)]
-  kAttrArray,        // "primitives[i].attr": [[a0, a1, ...], ...]
-  kAttrValues,       // one vertex's values
+  kNumberList, // "primitives[i].z" or ".w": one number per vertex
+  kPosArray,   // "primitives[i].pos": [[x, y, z(, w)], ...]
+  kPosCoords,  // one [x, y, z(, w)]
+  kAttrArray,  // "primitives[i].attr": [[a0, a1, ...], ...]
+  kAttrValues, // one vertex's values
 };
 
 // Where a value goes.
@@ -183,31 +190,32 @@ struct KeySpec {
   std::string_view name;
   Slot slot;
   bool required;
-  bool pipeline = false;  // the key makes the scene a pipeline scene (SCENE.PIPELINE)
+  bool pipeline = false; // the key makes the scene a pipeline scene (SCENE.PIPELINE)
 };
 
-constexpr std::array<KeySpec, 20> kRootKeys = {{{"version", Slot::kVersion, false},
-                                                {"target", Slot::kTarget, true},
-                                                {"cull", Slot::kCull, false},
-                                                {"front_face", Slot::kFrontFace, false},
-                                                {"fill", Slot::kFill, false},
-                                                {"line_mode", Slot::kLineMode, false},
-                                                {"samples", Slot::kSamples, false},
-                                                {"sample_pattern", Slot::kSamplePattern, false},
-                                                {"sample_mask", Slot::kSampleMask, false},
-                                                {"centroid", Slot::kCentroid, false},
-                                                {"shading", Slot::kShading, false},
-                                                {"quads", Slot::kQuads, false},
-                                                {"derivatives", Slot::kDerivatives, false},
-                                                {"clear_color", Slot::kClearColor, false},
-                                                {"primitives", Slot::kPrimitives, true},
-                                                {"viewport", Slot::kViewport, false, true},
-                                                {"transform", Slot::kTransform, false, true},
-                                                {"depth", Slot::kDepth, false, true},
-                                                {"attributes", Slot::kAttributes, false, true},
-                                                {"provoking_vertex", Slot::kProvoking, false, true}}};
-constexpr std::array<KeySpec, 2> kTargetKeys = {{{"width", Slot::kWidth, true},
-                                                 {"height", Slot::kHeight, true}}};
+constexpr std::array<KeySpec, 20> kRootKeys = {
+    {{"version", Slot::kVersion, false},
+     {"target", Slot::kTarget, true},
+     {"cull", Slot::kCull, false},
+     {"front_face", Slot::kFrontFace, false},
+     {"fill", Slot::kFill, false},
+     {"line_mode", Slot::kLineMode, false},
+     {"samples", Slot::kSamples, false},
+     {"sample_pattern", Slot::kSamplePattern, false},
+     {"sample_mask", Slot::kSampleMask, false},
+     {"centroid", Slot::kCentroid, false},
+     {"shading", Slot::kShading, false},
+     {"quads", Slot::kQuads, false},
+     {"derivatives", Slot::kDerivatives, false},
+     {"clear_color", Slot::kClearColor, false},
+     {"primitives", Slot::kPrimitives, true},
+     {"viewport", Slot::kViewport, false, true},
+     {"transform", Slot::kTransform, false, true},
+     {"depth", Slot::kDepth, false, true},
+     {"attributes", Slot::kAttributes, false, true},
+     {"provoking_vertex", Slot::kProvoking, false, true}}};
+constexpr std::array<KeySpec, 2> kTargetKeys = {
+    {{"width", Slot::kWidth, true}, {"height", Slot::kHeight, true}}};
 // "v" is required unless "pos" is given (checked when the primitive ends).
 constexpr std::array<KeySpec, 8> kPrimitiveKeys = {{{"type", Slot::kType, true},
                                                     {"v", Slot::kVertices, false},
@@ -257,7 +265,9 @@ constexpr std::array<std::pair<std::string_view, pipe::Location>, 3> kLocationNa
      {"centroid", pipe::Location::kCentroid},
      {"sample", pipe::Location::kSample}}};
 constexpr std::array<std::pair<std::string_view, pipe::DepthFormat>, 3> kDepthFormatNames = {
-    {{"d16", pipe::DepthFormat::kD16}, {"d24", pipe::DepthFormat::kD24}, {"d32f", pipe::DepthFormat::kD32F}}};
+    {{"d16", pipe::DepthFormat::kD16},
+     {"d24", pipe::DepthFormat::kD24},
+     {"d32f", pipe::DepthFormat::kD32F}}};
 constexpr std::array<std::pair<std::string_view, pipe::CompareFunc>, 8> kCompareFuncNames = {
     {{"never", pipe::CompareFunc::kNever},
      {"less", pipe::CompareFunc::kLess},
@@ -274,7 +284,8 @@ constexpr std::array<std::pair<std::string_view, pipe::Provoking>, 2> kProvoking
 template <class Enum, std::size_t N>
 std::string_view name_of(const std::array<std::pair<std::string_view, Enum>, N>& names, Enum e) {
   for (const auto& [name, value] : names) {
-    if (value == e) return name;
+    if (value == e)
+      return name;
   }
   return "unknown";
 }
@@ -318,42 +329,52 @@ struct Value {
   bool b = false;
   std::int64_t i = 0;
   std::uint64_t u = 0;
-  std::string_view text;  // number text for kFloat, content for kString
+  std::string_view text; // number text for kFloat, content for kString
 };
 
 std::string describe(const Value& v) {
   switch (v.kind) {
-    case Kind::kNull: return "null";
-    case Kind::kBool: return v.b ? "true" : "false";
-    case Kind::kInt: return std::to_string(v.i);
-    case Kind::kUint: return std::to_string(v.u);
-    case Kind::kFloat: return printable(v.text);
-    case Kind::kString: return "the string \"" + printable(v.text) + "\"";
-    case Kind::kObject: return "an object";
-    case Kind::kArray: return "an array";
+  case Kind::kNull:
+    return "null";
+  case Kind::kBool:
+    return v.b ? "true" : "false";
+  case Kind::kInt:
+    return std::to_string(v.i);
+  case Kind::kUint:
+    return std::to_string(v.u);
+  case Kind::kFloat:
+    return printable(v.text);
+  case Kind::kString:
+    return "the string \"" + printable(v.text) + "\"";
+  case Kind::kObject:
+    return "an object";
+  case Kind::kArray:
+    return "an array";
   }
   return "a value";
 }
 
 struct Frame {
   Ctx ctx;
-  std::string path;        // field path of this object or array
-  unsigned seen = 0;       // objects: bit k set when key k was given
-  std::size_t count = 0;   // arrays: number of elements so far
+  std::string path;      // field path of this object or array
+  unsigned seen = 0;     // objects: bit k set when key k was given
+  std::size_t count = 0; // arrays: number of elements so far
   Slot key_slot = Slot::kRoot;
-  std::string key_path;    // objects: path of the value of the last key
+  std::string key_path; // objects: path of the value of the last key
 };
 
 // The SAX handler: validates the schema while the parser streams, so that memory stays
 // proportional to the scene, and stops at the first error.
 // rule: SCENE.FORMAT.V1, SCENE.INPUT.ERRORS
 class SceneReader {
- public:
+public:
   using json = nlohmann::json;
 
   bool null() { return value(Value{Kind::kNull, false, 0, 0, {}}); }
   bool boolean(bool b) { return value(Value{Kind::kBool, b, 0, 0, {}}); }
-  bool number_integer(json::number_integer_t i) { return value(Value{Kind::kInt, false, i, 0, {}}); }
+  bool number_integer(json::number_integer_t i) {
+    return value(Value{Kind::kInt, false, i, 0, {}});
+  }
   // nlohmann reports every non-negative integer here; those an int64_t holds go on as kInt.
   bool number_unsigned(json::number_unsigned_t u) {
     if (u <= static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
@@ -376,27 +397,39 @@ class SceneReader {
     const std::string field = f.path.empty() ? name : f.path + "." + name;
     auto check = [&](const auto& keys) {
       for (std::size_t n = 0; n < keys.size(); ++n) {
-        if (keys[n].name != k) continue;
-        if ((f.seen & (1u << n)) != 0) return fail(field, "duplicate key");
+        if (keys[n].name != k)
+          continue;
+        if ((f.seen & (1u << n)) != 0)
+          return fail(field, "duplicate key");
         f.seen |= 1u << n;
         f.key_slot = keys[n].slot;
         f.key_path = field;
-        if (keys[n].pipeline && pipeline_key_.empty()) pipeline_key_ = field;
+        if (keys[n].pipeline && pipeline_key_.empty())
+          pipeline_key_ = field;
         return true;
       }
       std::string expected;
-      for (const KeySpec& s : keys) expected += (expected.empty() ? "" : ", ") + std::string(s.name);
+      for (const KeySpec& s : keys)
+        expected += (expected.empty() ? "" : ", ") + std::string(s.name);
       return fail(field, "unknown key (expected " + expected + ")");
     };
     switch (f.ctx) {
-      case Ctx::kRootObject: return check(kRootKeys);
-      case Ctx::kTargetObject: return check(kTargetKeys);
-      case Ctx::kPrimitiveObject: return check(kPrimitiveKeys);
-      case Ctx::kViewportObject: return check(kViewportKeys);
-      case Ctx::kTransformObject: return check(kTransformKeys);
-      case Ctx::kDepthObject: return check(kDepthKeys);
-      case Ctx::kAttributeObject: return check(kAttributeKeys);
-      default: return fail(f.path, "internal error: key outside an object");
+    case Ctx::kRootObject:
+      return check(kRootKeys);
+    case Ctx::kTargetObject:
+      return check(kTargetKeys);
+    case Ctx::kPrimitiveObject:
+      return check(kPrimitiveKeys);
+    case Ctx::kViewportObject:
+      return check(kViewportKeys);
+    case Ctx::kTransformObject:
+      return check(kTransformKeys);
+    case Ctx::kDepthObject:
+      return check(kDepthKeys);
+    case Ctx::kAttributeObject:
+      return check(kAttributeKeys);
+    default:
+      return fail(f.path, "internal error: key outside an object");
     }
   }
 
@@ -414,83 +447,92 @@ class SceneReader {
       return true;
     };
     switch (f.ctx) {
-      case Ctx::kRootObject: return required(kRootKeys) && finish_pattern() && finish_pipeline();
-      case Ctx::kTargetObject: return required(kTargetKeys);
-      case Ctx::kPrimitiveObject: {
-        if (!required(kPrimitiveKeys)) return false;
-        const auto given = [&](std::size_t key) { return (f.seen & (1u << key)) != 0; };
-        // rule: SCENE.PIPELINE
-        const bool has_pos = given(kPosKeyIndex);
-        if (has_pos && given(kVKeyIndex)) {
-          return fail(f.path + ".pos", "a primitive has either \"v\" (window space) or \"pos\" "
-                                       "(positions before the transform), not both");
-        }
-        if (!has_pos && !given(kVKeyIndex)) return fail(f.path + ".v", "is missing");
-        // rule: SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP
-        // The type may come after "v" and "aa", so both are checked against it here.
-        const std::size_t n = has_pos ? extras_.pos.size() : current_.v.size();
-        const std::size_t need = required_vertex_count(current_.type);
-        if ((need != 0 && n != need) || (need == 0 && n < 2)) {
-          return fail(f.path + (has_pos ? ".pos" : ".v"),
-                      "a " + std::string(to_string(current_.type)) + " must have " +
-                          vertex_count_text(current_.type) +
-                          (has_pos ? " [x, y, z] or [x, y, z, w]" : " [x, y]") + ", got " +
-                          std::to_string(n));
-        }
-        const bool line =
-            current_.type == PrimitiveType::kLine || current_.type == PrimitiveType::kLineStrip;
-        if (given(kAAKeyIndex) && !line) {
-          return fail(f.path + ".aa", "only lines and line strips take \"aa\", not a " +
-                                          std::string(to_string(current_.type)));
-        }
-        // rule: SCENE.PIPELINE
-        for (const auto& [key, list, what] : {std::tuple{kZKeyIndex, &extras_.z, "z"},
-                                              std::tuple{kWKeyIndex, &extras_.w, "w"}}) {
-          if (!given(key)) continue;
-          const std::string field = f.path + "." + what;
-          if (has_pos) {
-            return fail(field, "goes with \"v\" only (window space); \"pos\" gives z and w in "
-                               "each position");
-          }
-          if (list->size() != n) {
-            return fail(field, "must have one number per vertex (" + std::to_string(n) +
-                                   "), got " + std::to_string(list->size()));
-          }
-        }
-        if (given(kAttrKeyIndex) && extras_.attr.size() != n) {
-          return fail(f.path + ".attr", "must have one list of attribute values per vertex (" +
-                                            std::to_string(n) + "), got " +
-                                            std::to_string(extras_.attr.size()));
-        }
-        const std::size_t index = scene_.primitives.size();
-        if (attributes_done_ && !check_attr(index, given(kAttrKeyIndex), extras_)) return false;
-        scene_.primitives.push_back(std::move(current_));
-        if (given(kZKeyIndex) || given(kWKeyIndex) || has_pos || given(kAttrKeyIndex)) {
-          extras_of_.resize(index);
-          extras_of_.push_back(std::move(extras_));
-          has_attr_.resize(index);
-          has_attr_.push_back(given(kAttrKeyIndex));
-        }
-        return true;
+    case Ctx::kRootObject:
+      return required(kRootKeys) && finish_pattern() && finish_pipeline();
+    case Ctx::kTargetObject:
+      return required(kTargetKeys);
+    case Ctx::kPrimitiveObject: {
+      if (!required(kPrimitiveKeys))
+        return false;
+      const auto given = [&](std::size_t key) { return (f.seen & (1u << key)) != 0; };
+      // rule: SCENE.PIPELINE
+      const bool has_pos = given(kPosKeyIndex);
+      if (has_pos && given(kVKeyIndex)) {
+        return fail(f.path + ".pos", "a primitive has either \"v\" (window space) or \"pos\" "
+                                     "(positions before the transform), not both");
+      }
+      if (!has_pos && !given(kVKeyIndex))
+        return fail(f.path + ".v", "is missing");
+      // rule: SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP
+      // The type may come after "v" and "aa", so both are checked against it here.
+      const std::size_t n = has_pos ? extras_.pos.size() : current_.v.size();
+      const std::size_t need = required_vertex_count(current_.type);
+      if ((need != 0 && n != need) || (need == 0 && n < 2)) {
+        return fail(f.path + (has_pos ? ".pos" : ".v"),
+                    "a " + std::string(to_string(current_.type)) + " must have " +
+                        vertex_count_text(current_.type) +
+                        (has_pos ? " [x, y, z] or [x, y, z, w]" : " [x, y]") + ", got " +
+                        std::to_string(n));
+      }
+      const bool line =
+          current_.type == PrimitiveType::kLine || current_.type == PrimitiveType::kLineStrip;
+      if (given(kAAKeyIndex) && !line) {
+        return fail(f.path + ".aa", "only lines and line strips take \"aa\", not a " +
+                                        std::string(to_string(current_.type)));
       }
       // rule: SCENE.PIPELINE
-      case Ctx::kViewportObject:
-        viewport_seen_ = f.seen;
-        return true;
-      case Ctx::kTransformObject:
-      case Ctx::kDepthObject: return true;
-      case Ctx::kAttributeObject: {
-        if (!required(kAttributeKeys)) return false;
-        for (std::size_t k = 0; k < pipe_.attributes.size(); ++k) {
-          if (pipe_.attributes[k].name == attribute_.name) {
-            return fail(f.path + ".name", "duplicate attribute name \"" + printable(attribute_.name) +
-                                              "\" (also attributes[" + std::to_string(k) + "])");
-          }
+      for (const auto& [key, list, what] :
+           {std::tuple{kZKeyIndex, &extras_.z, "z"}, std::tuple{kWKeyIndex, &extras_.w, "w"}}) {
+        if (!given(key))
+          continue;
+        const std::string field = f.path + "." + what;
+        if (has_pos) {
+          return fail(field, "goes with \"v\" only (window space); \"pos\" gives z and w in "
+                             "each position");
         }
-        pipe_.attributes.push_back(std::move(attribute_));
-        return true;
+        if (list->size() != n) {
+          return fail(field, "must have one number per vertex (" + std::to_string(n) + "), got " +
+                                 std::to_string(list->size()));
+        }
       }
-      default: return fail(f.path, "internal error: unbalanced object");
+      if (given(kAttrKeyIndex) && extras_.attr.size() != n) {
+        return fail(f.path + ".attr", "must have one list of attribute values per vertex (" +
+                                          std::to_string(n) + "), got " +
+                                          std::to_string(extras_.attr.size()));
+      }
+      const std::size_t index = scene_.primitives.size();
+      if (attributes_done_ && !check_attr(index, given(kAttrKeyIndex), extras_))
+        return false;
+      scene_.primitives.push_back(std::move(current_));
+      if (given(kZKeyIndex) || given(kWKeyIndex) || has_pos || given(kAttrKeyIndex)) {
+        extras_of_.resize(index);
+        extras_of_.push_back(std::move(extras_));
+        has_attr_.resize(index);
+        has_attr_.push_back(given(kAttrKeyIndex));
+      }
+      return true;
+    }
+    // rule: SCENE.PIPELINE
+    case Ctx::kViewportObject:
+      viewport_seen_ = f.seen;
+      return true;
+    case Ctx::kTransformObject:
+    case Ctx::kDepthObject:
+      return true;
+    case Ctx::kAttributeObject: {
+      if (!required(kAttributeKeys))
+        return false;
+      for (std::size_t k = 0; k < pipe_.attributes.size(); ++k) {
+        if (pipe_.attributes[k].name == attribute_.name) {
+          return fail(f.path + ".name", "duplicate attribute name \"" + printable(attribute_.name) +
+                                            "\" (also attributes[" + std::to_string(k) + "])");
+        }
+      }
+      pipe_.attributes.push_back(std::move(attribute_));
+      return true;
+    }
+    default:
+      return fail(f.path, "internal error: unbalanced object");
     }
   }
 
@@ -502,14 +544,15 @@ class SceneReader {
     }
     // rule: SCENE.MSAA, MSAA.PATTERN.CUSTOM
     if (f.ctx == Ctx::kPatternArray && f.count == 0) {
-      return fail(f.path, "must have 1 to " + std::to_string(kMaxSamples) +
-                              " positions [i, j], got none");
+      return fail(f.path,
+                  "must have 1 to " + std::to_string(kMaxSamples) + " positions [i, j], got none");
     }
     if (f.ctx == Ctx::kPatternPair && f.count != 2) {
       return fail(f.path, "must have exactly 2 offsets [i, j], got " + std::to_string(f.count));
     }
     if (f.ctx == Ctx::kColorArray && f.count != 4) {
-      return fail(f.path, "must have exactly 4 channels [r, g, b, a], got " + std::to_string(f.count));
+      return fail(f.path,
+                  "must have exactly 4 channels [r, g, b, a], got " + std::to_string(f.count));
     }
     // rule: SCENE.PIPELINE
     if (f.ctx == Ctx::kMatrixArray && f.count != 16) {
@@ -520,7 +563,8 @@ class SceneReader {
       return fail(f.path, "must have 3 or 4 coordinates [x, y, z] or [x, y, z, w], got " +
                               std::to_string(f.count));
     }
-    if (f.ctx == Ctx::kAttributesArray) attributes_done_ = true;
+    if (f.ctx == Ctx::kAttributesArray)
+      attributes_done_ = true;
     if (f.ctx == Ctx::kAttrValues && attributes_done_ && f.count != pipe_.attributes.size()) {
       return fail(f.path, attr_count_text(f.count));
     }
@@ -529,13 +573,16 @@ class SceneReader {
 
   bool parse_error(std::size_t, const std::string& last_token,
                    const nlohmann::detail::exception& ex) {
-    if (error_) return false;
+    if (error_)
+      return false;
     if (ex.id == 406) {
       // A number beyond double's range ("1e400"): nlohmann stops here. Treat it as the
       // number it is (an infinity in float32) and report what that value means in place.
-      if (!value(Value{Kind::kFloat, false, 0, 0, last_token})) return false;
-      return fail(last_path_, "is " + std::string(to_string(snap_to_subpixel(
-                                           std::numeric_limits<float>::infinity()).status)));
+      if (!value(Value{Kind::kFloat, false, 0, 0, last_token}))
+        return false;
+      return fail(last_path_,
+                  "is " + std::string(to_string(
+                              snap_to_subpixel(std::numeric_limits<float>::infinity()).status)));
     }
     std::string what = ex.what();
     const std::size_t close = what.find("] ");
@@ -547,18 +594,22 @@ class SceneReader {
   }
 
   [[nodiscard]] std::variant<Scene, pipe::PipeScene, SceneError> result(bool ok) {
-    if (error_) return *error_;
-    if (!ok) return SceneError{"", "parse error: input ended early"};
-    if (!pipeline_key_.empty()) return std::move(pipe_);
+    if (error_)
+      return *error_;
+    if (!ok)
+      return SceneError{"", "parse error: input ended early"};
+    if (!pipeline_key_.empty())
+      return std::move(pipe_);
     return std::move(scene_);
   }
 
   // The path of the first pipeline key read (empty for a plain scene).
   [[nodiscard]] const std::string& pipeline_key() const { return pipeline_key_; }
 
- private:
+private:
   bool fail(std::string field, std::string message) {
-    if (!error_) error_ = SceneError{std::move(field), std::move(message)};
+    if (!error_)
+      error_ = SceneError{std::move(field), std::move(message)};
     return false;
   }
 
@@ -573,279 +624,328 @@ class SceneReader {
     if (!stack_.empty()) {
       Frame& f = stack_.back();
       switch (f.ctx) {
-        case Ctx::kRootObject:
-        case Ctx::kTargetObject:
-        case Ctx::kPrimitiveObject:
-        case Ctx::kViewportObject:
-        case Ctx::kTransformObject:
-        case Ctx::kDepthObject:
-        case Ctx::kAttributeObject:
-          slot = f.key_slot;
-          field = f.key_path;
-          break;
-        default:  // an array: its next element
-          // rule: SCENE.INPUT.LIMITS, MSAA.LIMITS, SCENE.PIPELINE
-          if (f.count >= element_limit(f.ctx)) return fail(f.path, overflow_message(f.ctx));
-          slot = element_slot(f.ctx);
-          coord_ = f.count;
-          field = f.path + "[" + std::to_string(f.count++) + "]";
-          break;
+      case Ctx::kRootObject:
+      case Ctx::kTargetObject:
+      case Ctx::kPrimitiveObject:
+      case Ctx::kViewportObject:
+      case Ctx::kTransformObject:
+      case Ctx::kDepthObject:
+      case Ctx::kAttributeObject:
+        slot = f.key_slot;
+        field = f.key_path;
+        break;
+      default: // an array: its next element
+        // rule: SCENE.INPUT.LIMITS, MSAA.LIMITS, SCENE.PIPELINE
+        if (f.count >= element_limit(f.ctx))
+          return fail(f.path, overflow_message(f.ctx));
+        slot = element_slot(f.ctx);
+        coord_ = f.count;
+        field = f.path + "[" + std::to_string(f.count++) + "]";
+        break;
       }
     } else if (root_done_) {
       return fail("scene", "more than one JSON value");
     }
     last_path_ = field;
     switch (slot) {
-      case Slot::kRoot:
-        if (v.kind != Kind::kObject) return type_error("scene", "a JSON object", v);
-        root_done_ = true;
-        return push(Ctx::kRootObject, "");
-      case Slot::kVersion:
-        if (v.kind == Kind::kInt && v.i == 1) return true;
-        return type_error(field, "the integer 1", v);
-      case Slot::kTarget:
-        if (v.kind != Kind::kObject) return type_error(field, "an object {\"width\", \"height\"}", v);
-        return push(Ctx::kTargetObject, field);
-      case Slot::kWidth: return size(field, v, scene_.width);
-      case Slot::kHeight: return size(field, v, scene_.height);
-      case Slot::kCull:
-        return enumeration(field, v, std::array<std::pair<std::string_view, CullMode>, 3>{{
-                                         {"none", CullMode::kNone},
-                                         {"back", CullMode::kBack},
-                                         {"front", CullMode::kFront}}},
-                           scene_.state.cull);
-      case Slot::kFrontFace:
-        return enumeration(field, v, std::array<std::pair<std::string_view, FrontFace>, 2>{{
-                                         {"cw", FrontFace::kClockwise},
-                                         {"ccw", FrontFace::kCounterClockwise}}},
-                           scene_.state.front_face);
-      case Slot::kFill:
-        return enumeration(field, v, std::array<std::pair<std::string_view, FillConvention>, 4>{{
-                                         {"top-left", FillConvention::kTopLeft},
-                                         {"top-right", FillConvention::kTopRight},
-                                         {"bottom-left", FillConvention::kBottomLeft},
-                                         {"bottom-right", FillConvention::kBottomRight}}},
-                           scene_.state.fill);
-      case Slot::kLineMode:
-        // rule: SCENE.LINE_MODE
-        return enumeration(field, v, kLineModeNames, scene_.line_mode);
-      case Slot::kPrimitives:
-        if (v.kind != Kind::kArray) return type_error(field, "an array of primitives", v);
-        return push(Ctx::kPrimitiveArray, field);
-      case Slot::kPrimitive:
-        if (v.kind != Kind::kObject) return type_error(field, "an object {\"type\", \"v\"}", v);
-        current_ = Primitive{};
-        current_.v.clear();
-        extras_ = PipeExtras{};
-        return push(Ctx::kPrimitiveObject, field);
-      case Slot::kType:
-        if (v.kind != Kind::kString) return type_error(field, "a string", v);
-        for (const PrimitiveType t : {PrimitiveType::kTriangle, PrimitiveType::kPoint,
-                                      PrimitiveType::kLine, PrimitiveType::kLineStrip}) {
-          if (v.text == to_string(t)) {
-            current_.type = t;
-            return true;
-          }
-        }
-        return fail(field, "unknown primitive type \"" + printable(v.text) +
-                               "\" (expected \"triangle\", \"point\", \"line\" or \"line_strip\")");
-      case Slot::kVertices:
-        if (v.kind != Kind::kArray)
-          return type_error(field, "an array of vertices [x, y]", v);
-        return push(Ctx::kVertexArray, field);
-      case Slot::kAA:
-        // rule: SCENE.PRIM.LINE
-        if (v.kind != Kind::kBool)
-          return type_error(field, "true or false", v);
-        current_.aa = v.b;
+    case Slot::kRoot:
+      if (v.kind != Kind::kObject)
+        return type_error("scene", "a JSON object", v);
+      root_done_ = true;
+      return push(Ctx::kRootObject, "");
+    case Slot::kVersion:
+      if (v.kind == Kind::kInt && v.i == 1)
         return true;
-      case Slot::kVertex:
-        if (v.kind != Kind::kArray) return type_error(field, "an array [x, y]", v);
-        current_.v.push_back(FloatPoint{0.0f, 0.0f});
-        return push(Ctx::kCoordArray, field);
-      case Slot::kCoord: return coordinate(field, v);
-      // rule: SCENE.MSAA, MSAA.LIMITS
-      case Slot::kSamples:
-        if (v.kind == Kind::kInt && v.i >= 1 && v.i <= kMaxSamples) {
-          samples_ = static_cast<std::uint32_t>(v.i);
+      return type_error(field, "the integer 1", v);
+    case Slot::kTarget:
+      if (v.kind != Kind::kObject)
+        return type_error(field, "an object {\"width\", \"height\"}", v);
+      return push(Ctx::kTargetObject, field);
+    case Slot::kWidth:
+      return size(field, v, scene_.width);
+    case Slot::kHeight:
+      return size(field, v, scene_.height);
+    case Slot::kCull:
+      return enumeration(
+          field, v,
+          std::array<std::pair<std::string_view, CullMode>, 3>{
+              {{"none", CullMode::kNone}, {"back", CullMode::kBack}, {"front", CullMode::kFront}}},
+          scene_.state.cull);
+    case Slot::kFrontFace:
+      return enumeration(
+          field, v,
+          std::array<std::pair<std::string_view, FrontFace>, 2>{
+              {{"cw", FrontFace::kClockwise}, {"ccw", FrontFace::kCounterClockwise}}},
+          scene_.state.front_face);
+    case Slot::kFill:
+      return enumeration(field, v,
+                         std::array<std::pair<std::string_view, FillConvention>, 4>{
+                             {{"top-left", FillConvention::kTopLeft},
+                              {"top-right", FillConvention::kTopRight},
+                              {"bottom-left", FillConvention::kBottomLeft},
+                              {"bottom-right", FillConvention::kBottomRight}}},
+                         scene_.state.fill);
+    case Slot::kLineMode:
+      // rule: SCENE.LINE_MODE
+      return enumeration(field, v, kLineModeNames, scene_.line_mode);
+    case Slot::kPrimitives:
+      if (v.kind != Kind::kArray)
+        return type_error(field, "an array of primitives", v);
+      return push(Ctx::kPrimitiveArray, field);
+    case Slot::kPrimitive:
+      if (v.kind != Kind::kObject)
+        return type_error(field, "an object {\"type\", \"v\"}", v);
+      current_ = Primitive{};
+      current_.v.clear();
+      extras_ = PipeExtras{};
+      return push(Ctx::kPrimitiveObject, field);
+    case Slot::kType:
+      if (v.kind != Kind::kString)
+        return type_error(field, "a string", v);
+      for (const PrimitiveType t : {PrimitiveType::kTriangle, PrimitiveType::kPoint,
+                                    PrimitiveType::kLine, PrimitiveType::kLineStrip}) {
+        if (v.text == to_string(t)) {
+          current_.type = t;
           return true;
         }
-        return type_error(field, "an integer in [1, " + std::to_string(kMaxSamples) + "]", v);
-      case Slot::kSamplePattern:
-        if (v.kind == Kind::kString && v.text == "standard") {
-          pattern_kind_ = PatternKind::kStandard;
-          return true;
-        }
-        if (v.kind == Kind::kString && v.text == "center") {
-          pattern_kind_ = PatternKind::kCenter;
-          return true;
-        }
-        if (v.kind == Kind::kArray) {
-          pattern_kind_ = PatternKind::kCustom;
-          return push(Ctx::kPatternArray, field);
-        }
-        return type_error(field, "\"standard\", \"center\" or an array of [i, j] offsets", v);
-      case Slot::kPatternEntry:
-        if (v.kind != Kind::kArray) return type_error(field, "an array [i, j]", v);
-        custom_.push_back(SampleOffset{});
-        return push(Ctx::kPatternPair, field);
-      case Slot::kPatternCoord: {
-        // rule: MSAA.PATTERN.GRID
-        const bool on_grid = v.kind == Kind::kInt && v.i >= kSampleGridMin && v.i <= kSampleGridMax;
-        if (!on_grid) {
-          return type_error(field, "an integer in [" + std::to_string(kSampleGridMin) + ", " +
-                                       std::to_string(kSampleGridMax) + "]", v);
-        }
-        (coord_ == 0 ? custom_.back().x : custom_.back().y) = static_cast<std::int8_t>(v.i);
+      }
+      return fail(field, "unknown primitive type \"" + printable(v.text) +
+                             "\" (expected \"triangle\", \"point\", \"line\" or \"line_strip\")");
+    case Slot::kVertices:
+      if (v.kind != Kind::kArray)
+        return type_error(field, "an array of vertices [x, y]", v);
+      return push(Ctx::kVertexArray, field);
+    case Slot::kAA:
+      // rule: SCENE.PRIM.LINE
+      if (v.kind != Kind::kBool)
+        return type_error(field, "true or false", v);
+      current_.aa = v.b;
+      return true;
+    case Slot::kVertex:
+      if (v.kind != Kind::kArray)
+        return type_error(field, "an array [x, y]", v);
+      current_.v.push_back(FloatPoint{0.0f, 0.0f});
+      return push(Ctx::kCoordArray, field);
+    case Slot::kCoord:
+      return coordinate(field, v);
+    // rule: SCENE.MSAA, MSAA.LIMITS
+    case Slot::kSamples:
+      if (v.kind == Kind::kInt && v.i >= 1 && v.i <= kMaxSamples) {
+        samples_ = static_cast<std::uint32_t>(v.i);
         return true;
       }
-      case Slot::kSampleMask:
-        // rule: MSAA.MASK.AND
-        // Only the type and the 32-bit range here; bits beyond the pattern are prepare()'s.
-        if (v.kind == Kind::kInt && v.i >= 0 && v.i <= 0xFFFFFFFFll) {
-          scene_.msaa.sample_mask = static_cast<std::uint32_t>(v.i);
-          sample_mask_given_ = true;
-          return true;
-        }
-        return type_error(field, "an integer in [0, 4294967295]", v);
-      case Slot::kCentroid:
-        scene_.msaa.has_centroid = true;
-        return enumeration(field, v, kCentroidNames, scene_.msaa.centroid_rule);
-      case Slot::kShading: return enumeration(field, v, kShadingNames, scene_.msaa.shading);
-      case Slot::kQuads:
-        if (v.kind != Kind::kBool) return type_error(field, "true or false", v);
-        scene_.msaa.quads = v.b;
-        return true;
-      case Slot::kDerivatives:
-        return enumeration(field, v, kDerivativeNames, scene_.msaa.derivatives);
-      case Slot::kClearColor:
-      case Slot::kColor:
-        if (v.kind != Kind::kArray) return type_error(field, "an array [r, g, b, a]", v);
-        color_ = slot == Slot::kClearColor ? &scene_.clear_color : &current_.color;
-        return push(Ctx::kColorArray, field);
-      case Slot::kColorChannel:
-        if (v.kind == Kind::kInt && v.i >= 0 && v.i <= 255) {
-          (*color_)[coord_] = static_cast<std::uint8_t>(v.i);
-          return true;
-        }
-        return type_error(field, "an integer in [0, 255]", v);
-      // rule: SCENE.PIPELINE
-      case Slot::kViewport:
-        if (v.kind != Kind::kObject) {
-          return type_error(field, "an object {\"x\", \"y\", \"width\", \"height\", \"min_depth\", \"max_depth\"}", v);
-        }
-        pipe_.viewport.emplace();
-        return push(Ctx::kViewportObject, field);
-      case Slot::kViewportX: return finite_number(field, v, pipe_.viewport->x);
-      case Slot::kViewportY: return finite_number(field, v, pipe_.viewport->y);
-      case Slot::kViewportWidth: return finite_number(field, v, pipe_.viewport->width);
-      case Slot::kViewportHeight: return finite_number(field, v, pipe_.viewport->height);
-      case Slot::kViewportMinDepth: return finite_number(field, v, pipe_.viewport->min_depth);
-      case Slot::kViewportMaxDepth: return finite_number(field, v, pipe_.viewport->max_depth);
-      case Slot::kTransform:
-        if (v.kind != Kind::kObject) {
-          return type_error(field, "an object {\"model\", \"view\", \"projection\"}", v);
-        }
-        return push(Ctx::kTransformObject, field);
-      case Slot::kModel:
-      case Slot::kView:
-      case Slot::kProjection: {
-        if (v.kind != Kind::kArray) {
-          return type_error(field, "an array of 16 numbers (a row-major 4x4 matrix)", v);
-        }
-        std::optional<pipe::Mat4f>& m = slot == Slot::kModel ? pipe_.model
-                                        : slot == Slot::kView ? pipe_.view
-                                                              : pipe_.projection;
-        matrix_ = &m.emplace();
-        return push(Ctx::kMatrixArray, field);
-      }
-      case Slot::kMatrixEntry: return finite_number(field, v, (*matrix_)[coord_]);
-      case Slot::kDepth:
-        if (v.kind != Kind::kObject) return type_error(field, "an object", v);
-        pipe_.depth.emplace();
-        return push(Ctx::kDepthObject, field);
-      case Slot::kDepthFormat: return enumeration(field, v, kDepthFormatNames, pipe_.depth->format);
-      case Slot::kDepthFunc: return enumeration(field, v, kCompareFuncNames, pipe_.depth->func);
-      case Slot::kDepthWrite:
-      case Slot::kDepthClip:
-        if (v.kind != Kind::kBool) return type_error(field, "true or false", v);
-        (slot == Slot::kDepthWrite ? pipe_.depth->write : pipe_.depth->clip) = v.b;
-        return true;
-      case Slot::kDepthClear:
-        // rule: PIPE.DEPTH.FORMAT
-        if (!finite_number(field, v, pipe_.depth->clear)) return false;
-        if (pipe_.depth->clear >= 0.0f && pipe_.depth->clear <= 1.0f) return true;
-        return type_error(field, "a number in [0, 1]", v);
-      case Slot::kDepthBias:
-        if (v.kind == Kind::kInt && v.i >= std::numeric_limits<std::int32_t>::min() &&
-            v.i <= std::numeric_limits<std::int32_t>::max()) {
-          pipe_.depth->bias.bias = static_cast<std::int32_t>(v.i);
-          return true;
-        }
-        return type_error(field, "an integer in [-2147483648, 2147483647]", v);
-      case Slot::kDepthSlopeBias: return finite_number(field, v, pipe_.depth->bias.slope_scaled);
-      case Slot::kDepthBiasClamp: return finite_number(field, v, pipe_.depth->bias.clamp);
-      case Slot::kAttributes:
-        if (v.kind != Kind::kArray) return type_error(field, "an array of attributes", v);
-        return push(Ctx::kAttributesArray, field);
-      case Slot::kAttribute:
-        if (v.kind != Kind::kObject) {
-          return type_error(field, "an object {\"name\", \"interpolation\", \"location\"}", v);
-        }
-        attribute_ = pipe::AttributeDecl{};
-        return push(Ctx::kAttributeObject, field);
-      case Slot::kAttributeName:
-        if (v.kind != Kind::kString || v.text.empty()) return type_error(field, "a non-empty string", v);
-        attribute_.name = std::string(v.text);
-        return true;
-      case Slot::kAttributeInterpolation:
-        return enumeration(field, v, kInterpolationNames, attribute_.interpolation);
-      case Slot::kAttributeLocation: return enumeration(field, v, kLocationNames, attribute_.location);
-      case Slot::kProvoking: return enumeration(field, v, kProvokingNames, pipe_.provoking);
-      case Slot::kZ:
-      case Slot::kW:
-        if (v.kind != Kind::kArray) {
-          return type_error(field, slot == Slot::kZ ? "an array of one depth per vertex"
-                                                    : "an array of one positive w per vertex", v);
-        }
-        list_is_w_ = slot == Slot::kW;
-        return push(Ctx::kNumberList, field);
-      case Slot::kListNumber: {
-        float x = 0.0f;
-        if (!finite_number(field, v, x)) return false;
-        // rule: PIPE.INPUT.POSITION
-        if (list_is_w_ && !(x > 0.0f)) return type_error(field, "a positive number (a clip w)", v);
-        (list_is_w_ ? extras_.w : extras_.z).push_back(x);
+      return type_error(field, "an integer in [1, " + std::to_string(kMaxSamples) + "]", v);
+    case Slot::kSamplePattern:
+      if (v.kind == Kind::kString && v.text == "standard") {
+        pattern_kind_ = PatternKind::kStandard;
         return true;
       }
-      case Slot::kPos:
-        if (v.kind != Kind::kArray) return type_error(field, "an array of positions [x, y, z(, w)]", v);
-        return push(Ctx::kPosArray, field);
-      case Slot::kPosVertex:
-        if (v.kind != Kind::kArray) return type_error(field, "an array [x, y, z] or [x, y, z, w]", v);
-        extras_.pos.push_back(pipe::Vec4f{0.0f, 0.0f, 0.0f, 1.0f});
-        return push(Ctx::kPosCoords, field);
-      case Slot::kPosCoord: return finite_number(field, v, extras_.pos.back()[coord_]);
-      case Slot::kAttr:
-        if (v.kind != Kind::kArray) {
-          return type_error(field, "an array of one list of attribute values per vertex", v);
-        }
-        if (attributes_done_ && pipe_.attributes.empty()) {
-          return fail(field, "is given but the scene declares no \"attributes\" (PIPE.INPUT.ATTRIBUTES)");
-        }
-        return push(Ctx::kAttrArray, field);
-      case Slot::kAttrVertex:
-        if (v.kind != Kind::kArray) {
-          return type_error(field, "an array of one number per declared attribute", v);
-        }
-        extras_.attr.emplace_back();
-        return push(Ctx::kAttrValues, field);
-      case Slot::kAttrValue: {
-        float x = 0.0f;
-        if (!finite_number(field, v, x)) return false;
-        extras_.attr.back().push_back(x);
+      if (v.kind == Kind::kString && v.text == "center") {
+        pattern_kind_ = PatternKind::kCenter;
         return true;
       }
+      if (v.kind == Kind::kArray) {
+        pattern_kind_ = PatternKind::kCustom;
+        return push(Ctx::kPatternArray, field);
+      }
+      return type_error(field, "\"standard\", \"center\" or an array of [i, j] offsets", v);
+    case Slot::kPatternEntry:
+      if (v.kind != Kind::kArray)
+        return type_error(field, "an array [i, j]", v);
+      custom_.push_back(SampleOffset{});
+      return push(Ctx::kPatternPair, field);
+    case Slot::kPatternCoord: {
+      // rule: MSAA.PATTERN.GRID
+      const bool on_grid = v.kind == Kind::kInt && v.i >= kSampleGridMin && v.i <= kSampleGridMax;
+      if (!on_grid) {
+        return type_error(field,
+                          "an integer in [" + std::to_string(kSampleGridMin) + ", " +
+                              std::to_string(kSampleGridMax) + "]",
+                          v);
+      }
+      (coord_ == 0 ? custom_.back().x : custom_.back().y) = static_cast<std::int8_t>(v.i);
+      return true;
+    }
+    case Slot::kSampleMask:
+      // rule: MSAA.MASK.AND
+      // Only the type and the 32-bit range here; bits beyond the pattern are prepare()'s.
+      if (v.kind == Kind::kInt && v.i >= 0 && v.i <= 0xFFFFFFFFll) {
+        scene_.msaa.sample_mask = static_cast<std::uint32_t>(v.i);
+        sample_mask_given_ = true;
+        return true;
+      }
+      return type_error(field, "an integer in [0, 4294967295]", v);
+    case Slot::kCentroid:
+      scene_.msaa.has_centroid = true;
+      return enumeration(field, v, kCentroidNames, scene_.msaa.centroid_rule);
+    case Slot::kShading:
+      return enumeration(field, v, kShadingNames, scene_.msaa.shading);
+    case Slot::kQuads:
+      if (v.kind != Kind::kBool)
+        return type_error(field, "true or false", v);
+      scene_.msaa.quads = v.b;
+      return true;
+    case Slot::kDerivatives:
+      return enumeration(field, v, kDerivativeNames, scene_.msaa.derivatives);
+    case Slot::kClearColor:
+    case Slot::kColor:
+      if (v.kind != Kind::kArray)
+        return type_error(field, "an array [r, g, b, a]", v);
+      color_ = slot == Slot::kClearColor ? &scene_.clear_color : &current_.color;
+      return push(Ctx::kColorArray, field);
+    case Slot::kColorChannel:
+      if (v.kind == Kind::kInt && v.i >= 0 && v.i <= 255) {
+        (*color_)[coord_] = static_cast<std::uint8_t>(v.i);
+        return true;
+      }
+      return type_error(field, "an integer in [0, 255]", v);
+    // rule: SCENE.PIPELINE
+    case Slot::kViewport:
+      if (v.kind != Kind::kObject) {
+        return type_error(
+            field, "an object {\"x\", \"y\", \"width\", \"height\", \"min_depth\", \"max_depth\"}",
+            v);
+      }
+      pipe_.viewport.emplace();
+      return push(Ctx::kViewportObject, field);
+    case Slot::kViewportX:
+      return finite_number(field, v, pipe_.viewport->x);
+    case Slot::kViewportY:
+      return finite_number(field, v, pipe_.viewport->y);
+    case Slot::kViewportWidth:
+      return finite_number(field, v, pipe_.viewport->width);
+    case Slot::kViewportHeight:
+      return finite_number(field, v, pipe_.viewport->height);
+    case Slot::kViewportMinDepth:
+      return finite_number(field, v, pipe_.viewport->min_depth);
+    case Slot::kViewportMaxDepth:
+      return finite_number(field, v, pipe_.viewport->max_depth);
+    case Slot::kTransform:
+      if (v.kind != Kind::kObject) {
+        return type_error(field, "an object {\"model\", \"view\", \"projection\"}", v);
+      }
+      return push(Ctx::kTransformObject, field);
+    case Slot::kModel:
+    case Slot::kView:
+    case Slot::kProjection: {
+      if (v.kind != Kind::kArray) {
+        return type_error(field, "an array of 16 numbers (a row-major 4x4 matrix)", v);
+      }
+      std::optional<pipe::Mat4f>& m = slot == Slot::kModel  ? pipe_.model
+                                      : slot == Slot::kView ? pipe_.view
+                                                            : pipe_.projection;
+      matrix_ = &m.emplace();
+      return push(Ctx::kMatrixArray, field);
+    }
+    case Slot::kMatrixEntry:
+      return finite_number(field, v, (*matrix_)[coord_]);
+    case Slot::kDepth:
+      if (v.kind != Kind::kObject)
+        return type_error(field, "an object", v);
+      pipe_.depth.emplace();
+      return push(Ctx::kDepthObject, field);
+    case Slot::kDepthFormat:
+      return enumeration(field, v, kDepthFormatNames, pipe_.depth->format);
+    case Slot::kDepthFunc:
+      return enumeration(field, v, kCompareFuncNames, pipe_.depth->func);
+    case Slot::kDepthWrite:
+    case Slot::kDepthClip:
+      if (v.kind != Kind::kBool)
+        return type_error(field, "true or false", v);
+      (slot == Slot::kDepthWrite ? pipe_.depth->write : pipe_.depth->clip) = v.b;
+      return true;
+    case Slot::kDepthClear:
+      // rule: PIPE.DEPTH.FORMAT
+      if (!finite_number(field, v, pipe_.depth->clear))
+        return false;
+      if (pipe_.depth->clear >= 0.0f && pipe_.depth->clear <= 1.0f)
+        return true;
+      return type_error(field, "a number in [0, 1]", v);
+    case Slot::kDepthBias:
+      if (v.kind == Kind::kInt && v.i >= std::numeric_limits<std::int32_t>::min() &&
+          v.i <= std::numeric_limits<std::int32_t>::max()) {
+        pipe_.depth->bias.bias = static_cast<std::int32_t>(v.i);
+        return true;
+      }
+      return type_error(field, "an integer in [-2147483648, 2147483647]", v);
+    case Slot::kDepthSlopeBias:
+      return finite_number(field, v, pipe_.depth->bias.slope_scaled);
+    case Slot::kDepthBiasClamp:
+      return finite_number(field, v, pipe_.depth->bias.clamp);
+    case Slot::kAttributes:
+      if (v.kind != Kind::kArray)
+        return type_error(field, "an array of attributes", v);
+      return push(Ctx::kAttributesArray, field);
+    case Slot::kAttribute:
+      if (v.kind != Kind::kObject) {
+        return type_error(field, "an object {\"name\", \"interpolation\", \"location\"}", v);
+      }
+      attribute_ = pipe::AttributeDecl{};
+      return push(Ctx::kAttributeObject, field);
+    case Slot::kAttributeName:
+      if (v.kind != Kind::kString || v.text.empty())
+        return type_error(field, "a non-empty string", v);
+      attribute_.name = std::string(v.text);
+      return true;
+    case Slot::kAttributeInterpolation:
+      return enumeration(field, v, kInterpolationNames, attribute_.interpolation);
+    case Slot::kAttributeLocation:
+      return enumeration(field, v, kLocationNames, attribute_.location);
+    case Slot::kProvoking:
+      return enumeration(field, v, kProvokingNames, pipe_.provoking);
+    case Slot::kZ:
+    case Slot::kW:
+      if (v.kind != Kind::kArray) {
+        return type_error(field,
+                          slot == Slot::kZ ? "an array of one depth per vertex"
+                                           : "an array of one positive w per vertex",
+                          v);
+      }
+      list_is_w_ = slot == Slot::kW;
+      return push(Ctx::kNumberList, field);
+    case Slot::kListNumber: {
+      float x = 0.0f;
+      if (!finite_number(field, v, x))
+        return false;
+      // rule: PIPE.INPUT.POSITION
+      if (list_is_w_ && !(x > 0.0f))
+        return type_error(field, "a positive number (a clip w)", v);
+      (list_is_w_ ? extras_.w : extras_.z).push_back(x);
+      return true;
+    }
+    case Slot::kPos:
+      if (v.kind != Kind::kArray)
+        return type_error(field, "an array of positions [x, y, z(, w)]", v);
+      return push(Ctx::kPosArray, field);
+    case Slot::kPosVertex:
+      if (v.kind != Kind::kArray)
+        return type_error(field, "an array [x, y, z] or [x, y, z, w]", v);
+      extras_.pos.push_back(pipe::Vec4f{0.0f, 0.0f, 0.0f, 1.0f});
+      return push(Ctx::kPosCoords, field);
+    case Slot::kPosCoord:
+      return finite_number(field, v, extras_.pos.back()[coord_]);
+    case Slot::kAttr:
+      if (v.kind != Kind::kArray) {
+        return type_error(field, "an array of one list of attribute values per vertex", v);
+      }
+      if (attributes_done_ && pipe_.attributes.empty()) {
+        return fail(field,
+                    "is given but the scene declares no \"attributes\" (PIPE.INPUT.ATTRIBUTES)");
+      }
+      return push(Ctx::kAttrArray, field);
+    case Slot::kAttrVertex:
+      if (v.kind != Kind::kArray) {
+        return type_error(field, "an array of one number per declared attribute", v);
+      }
+      extras_.attr.emplace_back();
+      return push(Ctx::kAttrValues, field);
+    case Slot::kAttrValue: {
+      float x = 0.0f;
+      if (!finite_number(field, v, x))
+        return false;
+      extras_.attr.back().push_back(x);
+      return true;
+    }
     }
     return fail(field, "internal error: unknown slot");
   }
@@ -854,67 +954,98 @@ class SceneReader {
   // rule: SCENE.INPUT.LIMITS
   std::size_t element_limit(Ctx ctx) const {
     switch (ctx) {
-      case Ctx::kPrimitiveArray: return kMaxScenePrimitives;
-      case Ctx::kVertexArray:  // "v", and "z", "w", "pos" and "attr": one entry per vertex
-      case Ctx::kNumberList:
-      case Ctx::kPosArray:
-      case Ctx::kAttrArray: return kMaxStripVertices;
-      case Ctx::kCoordArray:
-      case Ctx::kPatternPair: return 2;
-      case Ctx::kColorArray:
-      case Ctx::kPosCoords: return 4;
-      case Ctx::kPatternArray: return kMaxSamples;
-      case Ctx::kMatrixArray: return 16;
-      case Ctx::kAttributesArray: return pipe::kMaxAttributes;
-      case Ctx::kAttrValues: return attributes_done_ ? pipe_.attributes.size() : pipe::kMaxAttributes;
-      default: return 0;
+    case Ctx::kPrimitiveArray:
+      return kMaxScenePrimitives;
+    case Ctx::kVertexArray: // "v", and "z", "w", "pos" and "attr": one entry per vertex
+    case Ctx::kNumberList:
+    case Ctx::kPosArray:
+    case Ctx::kAttrArray:
+      return kMaxStripVertices;
+    case Ctx::kCoordArray:
+    case Ctx::kPatternPair:
+      return 2;
+    case Ctx::kColorArray:
+    case Ctx::kPosCoords:
+      return 4;
+    case Ctx::kPatternArray:
+      return kMaxSamples;
+    case Ctx::kMatrixArray:
+      return 16;
+    case Ctx::kAttributesArray:
+      return pipe::kMaxAttributes;
+    case Ctx::kAttrValues:
+      return attributes_done_ ? pipe_.attributes.size() : pipe::kMaxAttributes;
+    default:
+      return 0;
     }
   }
 
   std::string overflow_message(Ctx ctx) const {
     switch (ctx) {
-      case Ctx::kPrimitiveArray:
-        return "more than " + std::to_string(kMaxScenePrimitives) + " primitives (limit SCENE.INPUT.LIMITS)";
-      case Ctx::kVertexArray:
-      case Ctx::kNumberList:
-      case Ctx::kPosArray:
-      case Ctx::kAttrArray:
-        return "more than " + std::to_string(kMaxStripVertices) +
-               " vertices in one primitive (limit SCENE.INPUT.LIMITS)";
-      case Ctx::kCoordArray: return "must have exactly 2 coordinates [x, y], got more";
-      case Ctx::kPatternPair: return "must have exactly 2 offsets [i, j], got more";
-      case Ctx::kColorArray: return "must have exactly 4 channels [r, g, b, a], got more";
-      case Ctx::kPosCoords: return "must have 3 or 4 coordinates [x, y, z] or [x, y, z, w], got more";
-      case Ctx::kPatternArray:
-        return "must have 1 to " + std::to_string(kMaxSamples) + " positions [i, j], got more";
-      case Ctx::kMatrixArray: return "must have exactly 16 numbers (a row-major 4x4 matrix), got more";
-      case Ctx::kAttributesArray:
-        return "must have at most " + std::to_string(pipe::kMaxAttributes) +
-               " attributes (PIPE.INPUT.ATTRIBUTES), got more";
-      case Ctx::kAttrValues:
-        if (attributes_done_) return attr_count_text(0, true);
-        return "must have one value per declared attribute (at most " +
-               std::to_string(pipe::kMaxAttributes) + "), got more";
-      default: return "internal error: not an array";
+    case Ctx::kPrimitiveArray:
+      return "more than " + std::to_string(kMaxScenePrimitives) +
+             " primitives (limit SCENE.INPUT.LIMITS)";
+    case Ctx::kVertexArray:
+    case Ctx::kNumberList:
+    case Ctx::kPosArray:
+    case Ctx::kAttrArray:
+      return "more than " + std::to_string(kMaxStripVertices) +
+             " vertices in one primitive (limit SCENE.INPUT.LIMITS)";
+    case Ctx::kCoordArray:
+      return "must have exactly 2 coordinates [x, y], got more";
+    case Ctx::kPatternPair:
+      return "must have exactly 2 offsets [i, j], got more";
+    case Ctx::kColorArray:
+      return "must have exactly 4 channels [r, g, b, a], got more";
+    case Ctx::kPosCoords:
+      return "must have 3 or 4 coordinates [x, y, z] or [x, y, z, w], got more";
+    case Ctx::kPatternArray:
+      return "must have 1 to " + std::to_string(kMaxSamples) + " positions [i, j], got more";
+    case Ctx::kMatrixArray:
+      return "must have exactly 16 numbers (a row-major 4x4 matrix), got more";
+    case Ctx::kAttributesArray:
+      return "must have at most " + std::to_string(pipe::kMaxAttributes) +
+             " attributes (PIPE.INPUT.ATTRIBUTES), got more";
+    case Ctx::kAttrValues:
+      if (attributes_done_)
+        return attr_count_text(0, true);
+      return "must have one value per declared attribute (at most " +
+             std::to_string(pipe::kMaxAttributes) + "), got more";
+    default:
+      return "internal error: not an array";
     }
   }
 
   static Slot element_slot(Ctx ctx) {
     switch (ctx) {
-      case Ctx::kPrimitiveArray: return Slot::kPrimitive;
-      case Ctx::kVertexArray: return Slot::kVertex;
-      case Ctx::kCoordArray: return Slot::kCoord;
-      case Ctx::kPatternArray: return Slot::kPatternEntry;
-      case Ctx::kPatternPair: return Slot::kPatternCoord;
-      case Ctx::kColorArray: return Slot::kColorChannel;
-      case Ctx::kMatrixArray: return Slot::kMatrixEntry;
-      case Ctx::kAttributesArray: return Slot::kAttribute;
-      case Ctx::kNumberList: return Slot::kListNumber;
-      case Ctx::kPosArray: return Slot::kPosVertex;
-      case Ctx::kPosCoords: return Slot::kPosCoord;
-      case Ctx::kAttrArray: return Slot::kAttrVertex;
-      case Ctx::kAttrValues: return Slot::kAttrValue;
-      default: return Slot::kRoot;
+    case Ctx::kPrimitiveArray:
+      return Slot::kPrimitive;
+    case Ctx::kVertexArray:
+      return Slot::kVertex;
+    case Ctx::kCoordArray:
+      return Slot::kCoord;
+    case Ctx::kPatternArray:
+      return Slot::kPatternEntry;
+    case Ctx::kPatternPair:
+      return Slot::kPatternCoord;
+    case Ctx::kColorArray:
+      return Slot::kColorChannel;
+    case Ctx::kMatrixArray:
+      return Slot::kMatrixEntry;
+    case Ctx::kAttributesArray:
+      return Slot::kAttribute;
+    case Ctx::kNumberList:
+      return Slot::kListNumber;
+    case Ctx::kPosArray:
+      return Slot::kPosVertex;
+    case Ctx::kPosCoords:
+      return Slot::kPosCoord;
+    case Ctx::kAttrArray:
+      return Slot::kAttrVertex;
+    case Ctx::kAttrValues:
+      return Slot::kAttrValue;
+    default:
+      return Slot::kRoot;
     }
   }
 
@@ -923,11 +1054,14 @@ class SceneReader {
   // strings "NaN", "Infinity" and "-Infinity" and numbers beyond float32 are named as such.
   bool finite_number(const std::string& field, const Value& v, float& out) {
     const std::optional<float> f = float32_value(field, v, "a number");
-    if (!f) return false;
-    if (std::isnan(*f)) return fail(field, "is NaN");
+    if (!f)
+      return false;
+    if (std::isnan(*f))
+      return fail(field, "is NaN");
     if (std::isinf(*f)) {
-      return fail(field, v.kind == Kind::kString ? std::string("is infinite")
-                                                 : "is infinite (beyond float32: " + printable(v.text) + ")");
+      return fail(field, v.kind == Kind::kString
+                             ? std::string("is infinite")
+                             : "is infinite (beyond float32: " + printable(v.text) + ")");
     }
     out = *f;
     return true;
@@ -937,7 +1071,8 @@ class SceneReader {
   std::string attr_count_text(std::size_t got, bool more = false) const {
     const std::size_t n = pipe_.attributes.size();
     return "must have " + std::to_string(n) + (n == 1 ? " value" : " values") +
-           " (one per declared attribute), got " + (more ? std::string("more") : std::to_string(got));
+           " (one per declared attribute), got " +
+           (more ? std::string("more") : std::to_string(got));
   }
 
   // rule: SCENE.PIPELINE
@@ -947,7 +1082,8 @@ class SceneReader {
     const std::string path = "primitives[" + std::to_string(p) + "].attr";
     const std::size_t n = pipe_.attributes.size();
     if (has_attr && n == 0) {
-      return fail(path, "is given but the scene declares no \"attributes\" (PIPE.INPUT.ATTRIBUTES)");
+      return fail(path,
+                  "is given but the scene declares no \"attributes\" (PIPE.INPUT.ATTRIBUTES)");
     }
     if (!has_attr && n != 0) {
       return fail(path, "is missing: the scene declares " + std::to_string(n) +
@@ -965,16 +1101,20 @@ class SceneReader {
   // Once the root object is complete: the viewport's defaults (the target may come after it),
   // the checks between keys given in any order, and the pipeline scene itself.
   bool finish_pipeline() {
-    if (pipeline_key_.empty()) return true;
+    if (pipeline_key_.empty())
+      return true;
     if (pipe_.viewport) {
       pipe::Viewport& vp = *pipe_.viewport;
       // Missing keys take the default viewport's values: the whole target, depth [0, 1].
-      const pipe::Viewport whole{0.0f, 0.0f, static_cast<float>(scene_.width),
-                                 static_cast<float>(scene_.height), 0.0f, 1.0f};
+      const pipe::Viewport whole{
+          0.0f, 0.0f, static_cast<float>(scene_.width), static_cast<float>(scene_.height),
+          0.0f, 1.0f};
       float* fields[] = {&vp.x, &vp.y, &vp.width, &vp.height, &vp.min_depth, &vp.max_depth};
-      const float defaults[] = {whole.x, whole.y, whole.width, whole.height, whole.min_depth, whole.max_depth};
+      const float defaults[] = {whole.x,      whole.y,         whole.width,
+                                whole.height, whole.min_depth, whole.max_depth};
       for (std::size_t k = 0; k < 6; ++k) {
-        if ((viewport_seen_ & (1u << k)) == 0) *fields[k] = defaults[k];
+        if ((viewport_seen_ & (1u << k)) == 0)
+          *fields[k] = defaults[k];
       }
     }
     // rule: PIPE.INTERP.LOCATION
@@ -988,14 +1128,16 @@ class SceneReader {
     extras_of_.resize(scene_.primitives.size());
     has_attr_.resize(scene_.primitives.size());
     for (std::size_t p = 0; p < scene_.primitives.size(); ++p) {
-      if (!check_attr(p, has_attr_[p], extras_of_[p])) return false;
+      if (!check_attr(p, has_attr_[p], extras_of_[p]))
+        return false;
     }
     pipe_.primitives.reserve(scene_.primitives.size());
     for (std::size_t p = 0; p < scene_.primitives.size(); ++p) {
       pipe::PipePrimitive prim;
       prim.base = std::move(scene_.primitives[p]);
       PipeExtras& e = extras_of_[p];
-      if (!e.pos.empty()) prim.base.v.clear();
+      if (!e.pos.empty())
+        prim.base.v.clear();
       prim.pos = std::move(e.pos);
       prim.z = std::move(e.z);
       prim.w = std::move(e.w);
@@ -1015,8 +1157,7 @@ class SceneReader {
     if (pattern_kind_ == PatternKind::kCustom) {
       if (samples_ && *samples_ != custom_.size()) {
         return fail("samples", std::to_string(*samples_) + " does not match the " +
-                                   std::to_string(custom_.size()) +
-                                   " positions of sample_pattern");
+                                   std::to_string(custom_.size()) + " positions of sample_pattern");
       }
       scene_.msaa.pattern = custom_pattern(std::move(custom_));
       return check_explicit_all_ones_mask();
@@ -1038,7 +1179,8 @@ class SceneReader {
   // rule: MSAA.LIMITS
   bool check_explicit_all_ones_mask() {
     const std::uint32_t n = scene_.msaa.pattern.count();
-    if (!sample_mask_given_ || scene_.msaa.sample_mask != 0xFFFFFFFFu || n >= 32) return true;
+    if (!sample_mask_given_ || scene_.msaa.sample_mask != 0xFFFFFFFFu || n >= 32)
+      return true;
     return fail("sample_mask", "must be an integer in [0, " + std::to_string(full_mask(n)) +
                                    "] (bit k is sample k of " + std::to_string(n) +
                                    "), got 4294967295 (0xffffffff)");
@@ -1069,7 +1211,8 @@ class SceneReader {
     for (std::size_t n = 0; n < N; ++n) {
       expected += (n == 0 ? " \"" : ", \"") + std::string(names[n].first) + "\"";
     }
-    if (v.kind != Kind::kString) return type_error(field, expected, v);
+    if (v.kind != Kind::kString)
+      return type_error(field, expected, v);
     for (const auto& [name, e] : names) {
       if (v.text == name) {
         out = e;
@@ -1083,21 +1226,29 @@ class SceneReader {
   // Returns the JSON number as the nearest float32, converted once from its text (integers
   // rounded once); the strings "NaN", "Infinity" and "-Infinity" give those values. Anything
   // else fails (expected says what is allowed) and returns nullopt.
-  std::optional<float> float32_value(const std::string& field, const Value& v, std::string_view expected) {
+  std::optional<float> float32_value(const std::string& field, const Value& v,
+                                     std::string_view expected) {
     switch (v.kind) {
-      case Kind::kInt: return static_cast<float>(v.i);   // one correct rounding
-      case Kind::kUint: return static_cast<float>(v.u);  // one correct rounding
-      case Kind::kFloat: {
-        const std::optional<float> d = decimal_to_float32(v.text);
-        if (!d) fail(field, "is not a number: " + printable(v.text));
-        return d;
-      }
-      case Kind::kString:
-        if (v.text == "NaN") return std::numeric_limits<float>::quiet_NaN();
-        if (v.text == "Infinity") return std::numeric_limits<float>::infinity();
-        if (v.text == "-Infinity") return -std::numeric_limits<float>::infinity();
-        break;
-      default: break;
+    case Kind::kInt:
+      return static_cast<float>(v.i); // one correct rounding
+    case Kind::kUint:
+      return static_cast<float>(v.u); // one correct rounding
+    case Kind::kFloat: {
+      const std::optional<float> d = decimal_to_float32(v.text);
+      if (!d)
+        fail(field, "is not a number: " + printable(v.text));
+      return d;
+    }
+    case Kind::kString:
+      if (v.text == "NaN")
+        return std::numeric_limits<float>::quiet_NaN();
+      if (v.text == "Infinity")
+        return std::numeric_limits<float>::infinity();
+      if (v.text == "-Infinity")
+        return -std::numeric_limits<float>::infinity();
+      break;
+    default:
+      break;
     }
     type_error(field, expected, v);
     return std::nullopt;
@@ -1107,7 +1258,8 @@ class SceneReader {
   bool coordinate(const std::string& field, const Value& v) {
     const std::optional<float> f =
         float32_value(field, v, "a number, \"NaN\", \"Infinity\" or \"-Infinity\"");
-    if (!f) return false;
+    if (!f)
+      return false;
     current_.v.back()[coord_] = *f;
     return true;
   }
@@ -1116,22 +1268,22 @@ class SceneReader {
   Scene scene_;
   Primitive current_;
   std::size_t coord_ = 0;
-  std::optional<std::uint32_t> samples_;  // "samples", when given
+  std::optional<std::uint32_t> samples_; // "samples", when given
   PatternKind pattern_kind_ = PatternKind::kStandard;
-  std::vector<SampleOffset> custom_;      // the positions of a custom "sample_pattern"
-  Rgba8* color_ = nullptr;                // the colour being read
+  std::vector<SampleOffset> custom_; // the positions of a custom "sample_pattern"
+  Rgba8* color_ = nullptr;           // the colour being read
   bool sample_mask_given_ = false;
   // Pipeline scenes (SCENE.PIPELINE).
-  std::string pipeline_key_;              // the first pipeline key read; empty: a plain scene
-  pipe::PipeScene pipe_;                  // its root keys (base and primitives set at the end)
-  unsigned viewport_seen_ = 0;            // the viewport keys given (kViewportKeys order)
-  pipe::Mat4f* matrix_ = nullptr;         // the matrix being read
-  pipe::AttributeDecl attribute_;         // the attribute being read
-  bool attributes_done_ = false;          // "attributes" read completely
-  bool list_is_w_ = false;                // the number list being read is "w" (else "z")
-  PipeExtras extras_;                     // the current primitive's pipeline keys
-  std::vector<PipeExtras> extras_of_;     // per primitive, up to the last one that has any
-  std::vector<bool> has_attr_;            // per primitive, up to the last one with extras
+  std::string pipeline_key_;          // the first pipeline key read; empty: a plain scene
+  pipe::PipeScene pipe_;              // its root keys (base and primitives set at the end)
+  unsigned viewport_seen_ = 0;        // the viewport keys given (kViewportKeys order)
+  pipe::Mat4f* matrix_ = nullptr;     // the matrix being read
+  pipe::AttributeDecl attribute_;     // the attribute being read
+  bool attributes_done_ = false;      // "attributes" read completely
+  bool list_is_w_ = false;            // the number list being read is "w" (else "z")
+  PipeExtras extras_;                 // the current primitive's pipeline keys
+  std::vector<PipeExtras> extras_of_; // per primitive, up to the last one that has any
+  std::vector<bool> has_attr_;        // per primitive, up to the last one with extras
   bool root_done_ = false;
   std::string last_path_;
   std::optional<SceneError> error_;
@@ -1144,7 +1296,7 @@ void append_escaped(std::string& out, unsigned char c) {
   out += kHex[c & 15u];
 }
 
-}  // namespace
+} // namespace
 
 std::string_view line_mode_name(LineMode m) {
   for (const auto& [name, mode] : kLineModeNames) {
@@ -1173,13 +1325,15 @@ std::string printable(std::string_view s, std::size_t max_len) {
 
 // rule: SCENE.NUMBER.FLOAT32
 std::optional<float> decimal_to_float32(std::string_view text) {
-  if (text.empty() || !(text[0] == '-' || (text[0] >= '0' && text[0] <= '9'))) return std::nullopt;
+  if (text.empty() || !(text[0] == '-' || (text[0] >= '0' && text[0] <= '9')))
+    return std::nullopt;
   float f = 0.0f;
   const char* first = text.data();
   const char* last = text.data() + text.size();
   // std::from_chars is correctly rounded (round to nearest, ties to even) from the text.
   const std::from_chars_result r = std::from_chars(first, last, f, std::chars_format::general);
-  if (r.ptr != last) return std::nullopt;
+  if (r.ptr != last)
+    return std::nullopt;
   if (r.ec == std::errc::result_out_of_range) {
     const bool negative = text[0] == '-';
     if (magnitude_at_least_one(text)) {
@@ -1188,15 +1342,19 @@ std::optional<float> decimal_to_float32(std::string_view text) {
     }
     return negative ? -0.0f : 0.0f;
   }
-  if (r.ec != std::errc{}) return std::nullopt;
+  if (r.ec != std::errc{})
+    return std::nullopt;
   return f;
 }
 
 std::string format_float(float v) {
-  if (std::isnan(v)) return "NaN";
-  if (std::isinf(v)) return v > 0 ? "Infinity" : "-Infinity";
+  if (std::isnan(v))
+    return "NaN";
+  if (std::isinf(v))
+    return v > 0 ? "Infinity" : "-Infinity";
   // "-0" would read back as the integer 0, that is +0.0; "-0.0" is a float and keeps the sign.
-  if (v == 0.0f && std::signbit(v)) return "-0.0";
+  if (v == 0.0f && std::signbit(v))
+    return "-0.0";
   std::array<char, 64> buf{};
   const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
   return std::string(buf.data(), r.ptr);
@@ -1204,7 +1362,8 @@ std::string format_float(float v) {
 
 namespace {
 // Reads any scene; pipeline_key receives the first pipeline key's path (empty for a plain one).
-std::variant<Scene, pipe::PipeScene, SceneError> read(std::string_view json_text, std::string& pipeline_key) {
+std::variant<Scene, pipe::PipeScene, SceneError> read(std::string_view json_text,
+                                                      std::string& pipeline_key) {
   SceneReader reader;
   const bool ok = nlohmann::json::sax_parse(json_text.begin(), json_text.end(), &reader,
                                             nlohmann::json::input_format_t::json,
@@ -1212,13 +1371,14 @@ std::variant<Scene, pipe::PipeScene, SceneError> read(std::string_view json_text
   pipeline_key = reader.pipeline_key();
   return reader.result(ok);
 }
-}  // namespace
+} // namespace
 
 // rule: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS
 std::variant<Scene, SceneError> read_scene(std::string_view json_text) {
   std::string pipeline_key;
   auto r = read(json_text, pipeline_key);
-  if (auto* err = std::get_if<SceneError>(&r)) return std::move(*err);
+  if (auto* err = std::get_if<SceneError>(&r))
+    return std::move(*err);
   if (std::holds_alternative<pipe::PipeScene>(r)) {
     return SceneError{pipeline_key, "is a pipeline key (SCENE.PIPELINE) and only window-space "
                                     "scenes are read here (rastrules render and explain read "
@@ -1233,11 +1393,21 @@ std::variant<Scene, pipe::PipeScene, SceneError> read_any_scene(std::string_view
   return read(json_text, pipeline_key);
 }
 
-std::string_view interpolation_name(pipe::Interpolation i) { return name_of(kInterpolationNames, i); }
-std::string_view location_name(pipe::Location l) { return name_of(kLocationNames, l); }
-std::string_view depth_format_name(pipe::DepthFormat f) { return name_of(kDepthFormatNames, f); }
-std::string_view compare_func_name(pipe::CompareFunc f) { return name_of(kCompareFuncNames, f); }
-std::string_view provoking_name(pipe::Provoking p) { return name_of(kProvokingNames, p); }
+std::string_view interpolation_name(pipe::Interpolation i) {
+  return name_of(kInterpolationNames, i);
+}
+std::string_view location_name(pipe::Location l) {
+  return name_of(kLocationNames, l);
+}
+std::string_view depth_format_name(pipe::DepthFormat f) {
+  return name_of(kDepthFormatNames, f);
+}
+std::string_view compare_func_name(pipe::CompareFunc f) {
+  return name_of(kCompareFuncNames, f);
+}
+std::string_view provoking_name(pipe::Provoking p) {
+  return name_of(kProvokingNames, p);
+}
 
 std::string json_string(std::string_view s) {
   std::string out = "\"";
@@ -1263,7 +1433,8 @@ std::variant<std::string, SceneError> read_scene_file(const std::string& path) {
   const bool is_stdin = path == "-";
   const std::string name = is_stdin ? "<stdin>" : path;
   std::FILE* file = is_stdin ? stdin : std::fopen(path.c_str(), "rb");
-  if (file == nullptr) return SceneError{name, std::string("cannot open: ") + std::strerror(errno)};
+  if (file == nullptr)
+    return SceneError{name, std::string("cannot open: ") + std::strerror(errno)};
   std::string text;
   std::array<char, 1 << 16> buf{};
   bool too_large = false;
@@ -1274,16 +1445,19 @@ std::variant<std::string, SceneError> read_scene_file(const std::string& path) {
       too_large = true;
       break;
     }
-    if (n < buf.size()) break;
+    if (n < buf.size())
+      break;
   }
   const bool failed = std::ferror(file) != 0;
   const int err = errno;
-  if (!is_stdin) std::fclose(file);
+  if (!is_stdin)
+    std::fclose(file);
   if (too_large) {
     return SceneError{name, "is larger than " + std::to_string(kMaxSceneBytes >> 20) +
                                 " MiB, the largest scene file accepted (limit SCENE.INPUT.LIMITS)"};
   }
-  if (failed) return SceneError{name, std::string("cannot read: ") + std::strerror(err)};
+  if (failed)
+    return SceneError{name, std::string("cannot read: ") + std::strerror(err)};
   return text;
 }
 
@@ -1303,7 +1477,8 @@ std::string float_text(float f) {
 // "[a, b, ...]" of n floats.
 std::string floats_text(const float* f, std::size_t n) {
   std::string out = "[";
-  for (std::size_t k = 0; k < n; ++k) out += (k == 0 ? "" : ", ") + float_text(f[k]);
+  for (std::size_t k = 0; k < n; ++k)
+    out += (k == 0 ? "" : ", ") + float_text(f[k]);
   return out + "]";
 }
 
@@ -1331,46 +1506,57 @@ std::string scene_head(const Scene& scene) {
     }
     out += "],\n";
   } else {
-    if (ms.pattern.count() != 1) out += "  \"samples\": " + std::to_string(ms.pattern.count()) + ",\n";
-    if (ms.pattern.kind == PatternKind::kCenter) out += "  \"sample_pattern\": \"center\",\n";
+    if (ms.pattern.count() != 1)
+      out += "  \"samples\": " + std::to_string(ms.pattern.count()) + ",\n";
+    if (ms.pattern.kind == PatternKind::kCenter)
+      out += "  \"sample_pattern\": \"center\",\n";
   }
   if (ms.sample_mask != MultisampleState{}.sample_mask) {
     out += "  \"sample_mask\": " + std::to_string(ms.sample_mask) + ",\n";
   }
-  if (ms.has_centroid) out += "  \"centroid\": \"" + std::string(to_string(ms.centroid_rule)) + "\",\n";
-  if (ms.shading != ShadingRate::kPixel) out += "  \"shading\": \"" + std::string(to_string(ms.shading)) + "\",\n";
-  if (ms.quads) out += "  \"quads\": true,\n";
+  if (ms.has_centroid)
+    out += "  \"centroid\": \"" + std::string(to_string(ms.centroid_rule)) + "\",\n";
+  if (ms.shading != ShadingRate::kPixel)
+    out += "  \"shading\": \"" + std::string(to_string(ms.shading)) + "\",\n";
+  if (ms.quads)
+    out += "  \"quads\": true,\n";
   if (ms.derivatives != DerivativeMode::kNone) {
     out += "  \"derivatives\": \"" + std::string(to_string(ms.derivatives)) + "\",\n";
   }
-  if (scene.clear_color != Rgba8{0, 0, 0, 0}) out += "  \"clear_color\": " + color_text(scene.clear_color) + ",\n";
+  if (scene.clear_color != Rgba8{0, 0, 0, 0})
+    out += "  \"clear_color\": " + color_text(scene.clear_color) + ",\n";
   return out;
 }
 
 // The start of one primitive's object: type, aa and color (when not the default).
 std::string primitive_head(const Primitive& prim) {
   std::string out = "    {\"type\": \"" + std::string(to_string(prim.type)) + "\", ";
-  if (prim.aa) out += "\"aa\": true, ";
-  if (prim.color != Primitive{}.color) out += "\"color\": " + color_text(prim.color) + ", ";
+  if (prim.aa)
+    out += "\"aa\": true, ";
+  if (prim.color != Primitive{}.color)
+    out += "\"color\": " + color_text(prim.color) + ", ";
   return out;
 }
 
 // "\"v\": [[x, y], ...]".
 std::string vertices_text(const std::vector<FloatPoint>& v) {
   std::string out = "\"v\": [";
-  for (std::size_t i = 0; i < v.size(); ++i) out += (i == 0 ? "" : ", ") + floats_text(v[i].data(), 2);
+  for (std::size_t i = 0; i < v.size(); ++i)
+    out += (i == 0 ? "" : ", ") + floats_text(v[i].data(), 2);
   return out + "]";
 }
 
 // Whether two floats are the same value bit for bit, any NaN equal to any NaN.
 bool same_float(float x, float y) {
-  if (std::isnan(x) && std::isnan(y)) return true;
+  if (std::isnan(x) && std::isnan(y))
+    return true;
   return std::bit_cast<std::uint32_t>(x) == std::bit_cast<std::uint32_t>(y);
 }
 
 bool same_floats(const float* a, const float* b, std::size_t n) {
   for (std::size_t k = 0; k < n; ++k) {
-    if (!same_float(a[k], b[k])) return false;
+    if (!same_float(a[k], b[k]))
+      return false;
   }
   return true;
 }
@@ -1384,7 +1570,8 @@ bool same_primitive(const Primitive& pa, const Primitive& pb) {
     return false;
   }
   for (std::size_t i = 0; i < pa.v.size(); ++i) {
-    if (!same_floats(pa.v[i].data(), pb.v[i].data(), 2)) return false;
+    if (!same_floats(pa.v[i].data(), pb.v[i].data(), 2))
+      return false;
   }
   return true;
 }
@@ -1405,10 +1592,11 @@ bool same_state(const Scene& a, const Scene& b) {
 }
 
 bool same_matrix(const std::optional<pipe::Mat4f>& a, const std::optional<pipe::Mat4f>& b) {
-  if (a.has_value() != b.has_value()) return false;
+  if (a.has_value() != b.has_value())
+    return false;
   return !a || same_floats(a->data(), b->data(), 16);
 }
-}  // namespace
+} // namespace
 
 // rule: SCENE.FORMAT.V1
 std::string write_scene(const Scene& scene) {
@@ -1438,7 +1626,8 @@ std::string write_pipe_scene(const pipe::PipeScene& s) {
     std::string matrices;
     for (const auto& [name, m] : {std::pair{"model", &s.model}, std::pair{"view", &s.view},
                                   std::pair{"projection", &s.projection}}) {
-      if (!*m) continue;
+      if (!*m)
+        continue;
       matrices += (matrices.empty() ? "\"" : ",\n                \"") + std::string(name) +
                   "\": " + floats_text((*m)->data(), 16);
     }
@@ -1448,8 +1637,9 @@ std::string write_pipe_scene(const pipe::PipeScene& s) {
     const pipe::DepthState& d = *s.depth;
     out += "  \"depth\": {\"format\": \"" + std::string(depth_format_name(d.format)) +
            "\", \"func\": \"" + std::string(compare_func_name(d.func)) +
-           "\", \"write\": " + (d.write ? "true" : "false") + ", \"clear\": " + float_text(d.clear) +
-           ", \"clip\": " + (d.clip ? "true" : "false") + ", \"bias\": " + std::to_string(d.bias.bias) +
+           "\", \"write\": " + (d.write ? "true" : "false") +
+           ", \"clear\": " + float_text(d.clear) + ", \"clip\": " + (d.clip ? "true" : "false") +
+           ", \"bias\": " + std::to_string(d.bias.bias) +
            ", \"slope_scaled_bias\": " + float_text(d.bias.slope_scaled) +
            ", \"bias_clamp\": " + float_text(d.bias.clamp) + "},\n";
   }
@@ -1476,8 +1666,10 @@ std::string write_pipe_scene(const pipe::PipeScene& s) {
       out += "]";
     } else {
       out += vertices_text(prim.base.v);
-      if (!prim.z.empty()) out += ", \"z\": " + floats_text(prim.z.data(), prim.z.size());
-      if (!prim.w.empty()) out += ", \"w\": " + floats_text(prim.w.data(), prim.w.size());
+      if (!prim.z.empty())
+        out += ", \"z\": " + floats_text(prim.z.data(), prim.z.size());
+      if (!prim.w.empty())
+        out += ", \"w\": " + floats_text(prim.w.data(), prim.w.size());
     }
     if (!prim.attr.empty()) {
       out += ", \"attr\": [";
@@ -1493,9 +1685,11 @@ std::string write_pipe_scene(const pipe::PipeScene& s) {
 }
 
 bool same_scene(const Scene& a, const Scene& b) {
-  if (!same_state(a, b) || a.primitives.size() != b.primitives.size()) return false;
+  if (!same_state(a, b) || a.primitives.size() != b.primitives.size())
+    return false;
   for (std::size_t p = 0; p < a.primitives.size(); ++p) {
-    if (!same_primitive(a.primitives[p], b.primitives[p])) return false;
+    if (!same_primitive(a.primitives[p], b.primitives[p]))
+      return false;
   }
   return true;
 }
@@ -1513,13 +1707,14 @@ bool same_pipe_scene(const pipe::PipeScene& a, const pipe::PipeScene& b) {
     const pipe::Viewport& vb = *b.viewport;
     const float fa[] = {va.x, va.y, va.width, va.height, va.min_depth, va.max_depth};
     const float fb[] = {vb.x, vb.y, vb.width, vb.height, vb.min_depth, vb.max_depth};
-    if (!same_floats(fa, fb, 6)) return false;
+    if (!same_floats(fa, fb, 6))
+      return false;
   }
   if (a.depth) {
     const pipe::DepthState& da = *a.depth;
     const pipe::DepthState& db = *b.depth;
-    if (da.format != db.format || da.func != db.func || da.write != db.write || da.clip != db.clip ||
-        da.bias.bias != db.bias.bias || !same_float(da.clear, db.clear) ||
+    if (da.format != db.format || da.func != db.func || da.write != db.write ||
+        da.clip != db.clip || da.bias.bias != db.bias.bias || !same_float(da.clear, db.clear) ||
         !same_float(da.bias.slope_scaled, db.bias.slope_scaled) ||
         !same_float(da.bias.clamp, db.bias.clamp)) {
       return false;
@@ -1528,7 +1723,8 @@ bool same_pipe_scene(const pipe::PipeScene& a, const pipe::PipeScene& b) {
   for (std::size_t k = 0; k < a.attributes.size(); ++k) {
     const pipe::AttributeDecl& x = a.attributes[k];
     const pipe::AttributeDecl& y = b.attributes[k];
-    if (x.name != y.name || x.interpolation != y.interpolation || x.location != y.location) return false;
+    if (x.name != y.name || x.interpolation != y.interpolation || x.location != y.location)
+      return false;
   }
   for (std::size_t p = 0; p < a.primitives.size(); ++p) {
     const pipe::PipePrimitive& pa = a.primitives[p];
@@ -1539,13 +1735,15 @@ bool same_pipe_scene(const pipe::PipeScene& a, const pipe::PipeScene& b) {
       return false;
     }
     for (std::size_t i = 0; i < pa.pos.size(); ++i) {
-      if (!same_floats(pa.pos[i].data(), pb.pos[i].data(), 4)) return false;
+      if (!same_floats(pa.pos[i].data(), pb.pos[i].data(), 4))
+        return false;
     }
     for (std::size_t i = 0; i < pa.attr.size(); ++i) {
-      if (!same_float_vector(pa.attr[i], pb.attr[i])) return false;
+      if (!same_float_vector(pa.attr[i], pb.attr[i]))
+        return false;
     }
   }
   return true;
 }
 
-}  // namespace rastrules::io
+} // namespace rastrules::io

@@ -12,8 +12,7 @@ namespace rastrules::formula {
 // the left side is negative and the right side is not; otherwise both sides are >= 0 and the
 // comparison survives squaring. Used with v, w, D such that v^2 D and w^2 fit the type.
 // rule: LINE.AA.FRAGMENT
-template <class Num>
-constexpr auto times_sqrt_less(Num v, Num w, Num D) {
+template <class Num> constexpr auto times_sqrt_less(Num v, Num w, Num D) {
   return (v < 0) || (v * v * D < w * w);
 }
 
@@ -26,4 +25,4 @@ constexpr Num aa_blend_numerator(Num src, Num src_alpha, Num dst, Num coverage, 
   return dst * den + (src - dst) * src_alpha * coverage;
 }
 
-}  // namespace rastrules::formula
+} // namespace rastrules::formula

@@ -25,9 +25,8 @@ constexpr std::uint32_t unorm_max(int bits) {
 // [0, max] and equals the spec's floor(fl64(z * max) + 0.5) with the exact + 0.5 (proved for
 // d16 and d24 in proofs/pipe/depth_format.cpp).
 // rule: PIPE.DEPTH.FORMAT
-template <class Real>
-constexpr Real unorm_rounding_argument(Real z, Real max) {
+template <class Real> constexpr Real unorm_rounding_argument(Real z, Real max) {
   return z * max + Real(0.5);
 }
 
-}  // namespace rastrules::formula
+} // namespace rastrules::formula

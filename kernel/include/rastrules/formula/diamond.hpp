@@ -24,18 +24,17 @@ namespace rastrules::formula {
 
 // The four diamond edges as sign pairs (s1, s2): the edge is s1 u + s2 v = h.
 inline constexpr std::array<std::array<int, 2>, 4> kDiamondEdgeSigns = {{
-    {{+1, +1}},  // lower-right (y down)
-    {{-1, +1}},  // lower-left
-    {{+1, -1}},  // upper-right
-    {{-1, -1}},  // upper-left
+    {{+1, +1}}, // lower-right (y down)
+    {{-1, +1}}, // lower-left
+    {{+1, -1}}, // upper-right
+    {{-1, -1}}, // upper-left
 }};
 inline constexpr std::size_t kLowerRight = 0, kLowerLeft = 1, kUpperRight = 2, kUpperLeft = 3;
 
 // One linear constraint on the segment parameter t: m t < r (strict) or m t <= r.
 // R is the type of the bound (a number, or an EpsPoly for the Vulkan perturbation), M the
 // type of the slope (a number). `strict` is a constant of the rule, never a value of the input.
-template <class R, class M>
-struct TConstraint {
+template <class R, class M> struct TConstraint {
   R r;
   M m;
   bool strict;
@@ -43,9 +42,9 @@ struct TConstraint {
 
 // Returns whether constraint c allows t when its slope is zero: 0 < r (strict) or 0 <= r.
 // `zero` is the value 0 of type R.
-template <class R, class M>
-auto zero_slope_ok(const TConstraint<R, M>& c, const R& zero) {
-  if (c.strict) return (c.m != M(0)) || (c.r > zero);
+template <class R, class M> auto zero_slope_ok(const TConstraint<R, M>& c, const R& zero) {
+  if (c.strict)
+    return (c.m != M(0)) || (c.r > zero);
   return (c.m != M(0)) || (c.r >= zero);
 }
 
@@ -58,7 +57,8 @@ auto bounds_compatible(const TConstraint<R, M>& ci, const TConstraint<R, M>& cj)
   const auto applies = (ci.m < M(0)) && (cj.m > M(0));
   const R lhs = ci.r * cj.m;
   const R rhs = cj.r * ci.m;
-  if (!ci.strict && !cj.strict) return !applies || (lhs > rhs) || (lhs == rhs);
+  if (!ci.strict && !cj.strict)
+    return !applies || (lhs > rhs) || (lhs == rhs);
   return !applies || (lhs > rhs);
 }
 
@@ -69,10 +69,12 @@ auto bounds_compatible(const TConstraint<R, M>& ci, const TConstraint<R, M>& cj)
 template <class R, class M, std::size_t N>
 auto t_feasible(const std::array<TConstraint<R, M>, N>& cs, const R& zero) {
   auto ok = zero_slope_ok(cs[0], zero);
-  for (std::size_t k = 1; k < N; ++k) ok = ok && zero_slope_ok(cs[k], zero);
+  for (std::size_t k = 1; k < N; ++k)
+    ok = ok && zero_slope_ok(cs[k], zero);
   for (std::size_t i = 0; i < N; ++i) {
     for (std::size_t j = 0; j < N; ++j) {
-      if (i != j) ok = ok && bounds_compatible(cs[i], cs[j]);
+      if (i != j)
+        ok = ok && bounds_compatible(cs[i], cs[j]);
     }
   }
   return ok;
@@ -83,18 +85,22 @@ auto t_feasible(const std::array<TConstraint<R, M>, N>& cs, const R& zero) {
 // dv) = b - a; bound_k and strict_k give edge k's threshold and strictness. zero and one are 0
 // and 1 of type R; m_one is 1 of type M.
 template <class R, class M>
-std::array<TConstraint<R, M>, 6> segment_in_diamond_constraints(
-    const M& au, const M& av, const M& du, const M& dv, const std::array<R, 4>& bound,
-    const std::array<bool, 4>& strict, const R& zero, const R& one, const M& m_one) {
+std::array<TConstraint<R, M>, 6>
+segment_in_diamond_constraints(const M& au, const M& av, const M& du, const M& dv,
+                               const std::array<R, 4>& bound, const std::array<bool, 4>& strict,
+                               const R& zero, const R& one, const M& m_one) {
   auto edge = [&](std::size_t k) {
     const int s1 = kDiamondEdgeSigns[k][0], s2 = kDiamondEdgeSigns[k][1];
     const M a_k = (s1 > 0 ? au : -au) + (s2 > 0 ? av : -av);
     const M m_k = (s1 > 0 ? du : -du) + (s2 > 0 ? dv : -dv);
     return TConstraint<R, M>{bound[k] - a_k, m_k, strict[k]};
   };
-  return {edge(0), edge(1), edge(2), edge(3),
-          TConstraint<R, M>{zero, -m_one, false},  // -t <= 0
-          TConstraint<R, M>{one, m_one, false}};   // t <= 1
+  return {edge(0),
+          edge(1),
+          edge(2),
+          edge(3),
+          TConstraint<R, M>{zero, -m_one, false}, // -t <= 0
+          TConstraint<R, M>{one, m_one, false}};  // t <= 1
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -109,8 +115,7 @@ inline constexpr std::array<bool, 4> kD3DEdgeStrict = {false, false, true, true}
 // the open diamond, its open lower edges and its bottom corner, plus its right corner for
 // y-major lines.
 // rule: LINE.D3D.TEST_AREA
-template <bool YMajor, class M>
-auto d3d_contains(const M& pu, const M& pv, const M& h) {
+template <bool YMajor, class M> auto d3d_contains(const M& pu, const M& pv, const M& h) {
   const auto base = (pu + pv <= h) && (-pu + pv <= h) && (pu - pv < h) && (-pu - pv < h);
   if constexpr (YMajor) {
     return base || ((pu == h) && (pv == M(0)));
@@ -140,10 +145,9 @@ template <bool YMajor, class M>
 auto d3d_meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
   const M zero(0);
   const M one(1);
-  const auto meets = t_feasible(
-      segment_in_diamond_constraints<M, M>(au, av, du, dv, {h, h, h, h}, kD3DEdgeStrict, zero,
-                                           one, one),
-      zero);
+  const auto meets = t_feasible(segment_in_diamond_constraints<M, M>(
+                                    au, av, du, dv, {h, h, h, h}, kD3DEdgeStrict, zero, one, one),
+                                zero);
   if constexpr (YMajor) {
     return meets || on_segment(h, zero, au, av, du, dv);
   } else {
@@ -164,8 +168,7 @@ auto d3d_exits(const M& au, const M& av, const M& bu, const M& bv, const M& h) {
 
 // A value c0 + c1 e + c2 e^2 for an infinitesimal e > 0: comparisons are lexicographic on
 // (c0, c1, c2), which is the order of the values for every small enough e.
-template <class Num>
-struct EpsPoly {
+template <class Num> struct EpsPoly {
   Num c0;
   Num c1;
   Num c2;
@@ -177,12 +180,15 @@ struct EpsPoly {
     return {a.c0 - b.c0, a.c1 - b.c1, a.c2 - b.c2};
   }
   friend EpsPoly operator-(const EpsPoly& a, const Num& b) { return {a.c0 - b, a.c1, a.c2}; }
-  friend EpsPoly operator*(const EpsPoly& a, const Num& k) { return {a.c0 * k, a.c1 * k, a.c2 * k}; }
+  friend EpsPoly operator*(const EpsPoly& a, const Num& k) {
+    return {a.c0 * k, a.c1 * k, a.c2 * k};
+  }
   friend auto operator==(const EpsPoly& a, const EpsPoly& b) {
     return (a.c0 == b.c0) && (a.c1 == b.c1) && (a.c2 == b.c2);
   }
   friend auto operator>(const EpsPoly& a, const EpsPoly& b) {
-    return (a.c0 > b.c0) || ((a.c0 == b.c0) && ((a.c1 > b.c1) || ((a.c1 == b.c1) && (a.c2 > b.c2))));
+    return (a.c0 > b.c0) ||
+           ((a.c0 == b.c0) && ((a.c1 > b.c1) || ((a.c1 == b.c1) && (a.c2 > b.c2))));
   }
   friend auto operator>=(const EpsPoly& a, const EpsPoly& b) { return (a > b) || (a == b); }
   friend auto operator<(const EpsPoly& a, const EpsPoly& b) { return b > a; }
@@ -192,8 +198,7 @@ struct EpsPoly {
 // |u| + |v| < h, for every small enough e > 0. This is the test area of LINE.VK.TEST_AREA: the
 // open diamond, its open right edges and its right corner.
 // rule: LINE.VK.TEST_AREA
-template <class M>
-auto vk_contains(const M& pu, const M& pv, const M& h) {
+template <class M> auto vk_contains(const M& pu, const M& pv, const M& h) {
   const M zero(0);
   const M one(1);
   auto edge_ok = [&](std::size_t k) {
@@ -209,8 +214,7 @@ auto vk_contains(const M& pu, const M& pv, const M& h) {
 // Returns whether the perturbed segment a - (e, e^2) + t d, t in [0, 1], meets the open
 // diamond of the pixel for every small enough e > 0.
 // rule: LINE.VK.TEST_AREA
-template <class M>
-auto vk_meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
+template <class M> auto vk_meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
   const M zero(0);
   const M one(1);
   using P = EpsPoly<M>;
@@ -220,20 +224,18 @@ auto vk_meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
   };
   const P pzero{zero, zero, zero};
   const P pone{one, zero, zero};
-  return t_feasible(segment_in_diamond_constraints<P, M>(au, av, du, dv,
-                                                         {bound(0), bound(1), bound(2), bound(3)},
-                                                         {true, true, true, true}, pzero, pone,
-                                                         one),
-                    pzero);
+  return t_feasible(
+      segment_in_diamond_constraints<P, M>(au, av, du, dv, {bound(0), bound(1), bound(2), bound(3)},
+                                           {true, true, true, true}, pzero, pone, one),
+      pzero);
 }
 
 // Returns whether the line from a to b (relative to the pixel centre) produces the pixel
 // under Vulkan's Bresenham rule: the perturbed segment meets the open diamond, except when the
 // perturbed end point lies in it.
 // rule: LINE.VK.EXIT
-template <class M>
-auto vk_exits(const M& au, const M& av, const M& bu, const M& bv, const M& h) {
+template <class M> auto vk_exits(const M& au, const M& av, const M& bu, const M& bv, const M& h) {
   return vk_meets(au, av, bu - au, bv - av, h) && !vk_contains(bu, bv, h);
 }
 
-}  // namespace rastrules::formula
+} // namespace rastrules::formula

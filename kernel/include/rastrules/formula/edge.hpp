@@ -14,8 +14,7 @@ namespace rastrules::formula {
 // every edge of a clockwise-on-screen triangle.
 // Units: inputs 1/256 px, result 1/65536 px^2.
 // rule: TRI.EDGE.FUNCTION
-template <class Num>
-constexpr Num edge_value(Num ax, Num ay, Num bx, Num by, Num px, Num py) {
+template <class Num> constexpr Num edge_value(Num ax, Num ay, Num bx, Num by, Num px, Num py) {
   return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
 }
 
@@ -30,16 +29,14 @@ constexpr Num twice_signed_area(Num x0, Num y0, Num x1, Num y1, Num x2, Num y2) 
 // Returns whether the directed edge (a -> b) of a clockwise triangle is a top edge: exactly
 // horizontal and running in +x, so that the interior lies below it (y down).
 // rule: TRI.FILL.TOP_EDGE
-template <class Num>
-constexpr auto is_top_edge(Num ax, Num ay, Num bx, Num by) {
+template <class Num> constexpr auto is_top_edge(Num ax, Num ay, Num bx, Num by) {
   return (by == ay) && (bx > ax);
 }
 
 // Returns whether the directed edge (a -> b) of a clockwise triangle is a left edge: not
 // horizontal and running up the screen (-y), so that the interior lies to its right.
 // rule: TRI.FILL.LEFT_EDGE
-template <class Num>
-constexpr auto is_left_edge(Num ax, Num ay, Num bx, Num by) {
+template <class Num> constexpr auto is_left_edge(Num ax, Num ay, Num bx, Num by) {
   (void)ax;
   (void)bx;
   return by < ay;
@@ -63,20 +60,17 @@ constexpr auto is_inclusive_edge(Num ax, Num ay, Num bx, Num by) {
 // bias is 0 for an inclusive edge and -1 (one unit of 1/65536 px^2) otherwise. Equal to
 // `E > 0 || (E == 0 && inclusive)` because E is an integer (proofs/tri/bias_form.cpp).
 // rule: FIX.BIAS.FORM
-template <class Num>
-constexpr Num edge_bias(bool inclusive) {
+template <class Num> constexpr Num edge_bias(bool inclusive) {
   return inclusive ? Num(0) : Num(-1);
 }
 
 // One-pixel steps of E: E(p + (256, 0)) = E(p) + step_x, E(p + (0, 256)) = E(p) + step_y.
 // rule: FIX.STEP.INCREMENTAL
-template <class Num>
-constexpr Num edge_step_x(Num ay, Num by, Num one) {
+template <class Num> constexpr Num edge_step_x(Num ay, Num by, Num one) {
   return (ay - by) * one;
 }
-template <class Num>
-constexpr Num edge_step_y(Num ax, Num bx, Num one) {
+template <class Num> constexpr Num edge_step_y(Num ax, Num bx, Num one) {
   return (bx - ax) * one;
 }
 
-}  // namespace rastrules::formula
+} // namespace rastrules::formula

@@ -13,16 +13,13 @@ namespace rastrules::formula {
 // Returns whether the snapped centre (cx, cy) lies in [lo, hi] in both coordinates, where
 // [lo, hi] is [kMinPointRaw, kMaxPointRaw]: the square around it then lies in SNAP.VERTEX.RANGE.
 // rule: POINT.RANGE
-template <class Num>
-constexpr auto point_centre_in_range(Num cx, Num cy, Num lo, Num hi) {
+template <class Num> constexpr auto point_centre_in_range(Num cx, Num cy, Num lo, Num hi) {
   return (lo <= cx) && (cx <= hi) && (lo <= cy) && (cy <= hi);
 }
 
 // A corner (x, y) of the point square, raw 16.8.
-template <class Num>
-using PointCorner = std::array<Num, 2>;
-template <class Num>
-using PointTriangle = std::array<PointCorner<Num>, 3>;
+template <class Num> using PointCorner = std::array<Num, 2>;
+template <class Num> using PointTriangle = std::array<PointCorner<Num>, 3>;
 
 // Returns the two triangles of the point square with centre (cx, cy) and half side `half`
 // (kSubpixelHalf: the square is one pixel wide), in the Z pattern of D3D11.3's point diagram:
@@ -44,4 +41,4 @@ constexpr std::array<PointTriangle<Num>, 2> point_z_triangles(Num cx, Num cy, Nu
   return {PointTriangle<Num>{tl, tr, bl}, PointTriangle<Num>{bl, tr, br}};
 }
 
-}  // namespace rastrules::formula
+} // namespace rastrules::formula

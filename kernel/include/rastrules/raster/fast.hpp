@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The fast exact traversal (layer 3: mechanism): tiles of kFastTileSize x kFastTileSize pixels
-// from the first pixel of the triangle's bounds, whole-tile rejection and acceptance, 32-bit SIMD lanes (FAST.LANE.I32),
-// incremental stepping, AVX-512 / AVX2 / scalar chosen at run time. Its only correctness
-// criterion: exactly the coverage of the plain walks (walk.hpp, walk_msaa.hpp), in the same
-// order (FAST.EQUALS.PLAIN).
-// Implements: FAST.TILE.CLASSIFY, FAST.LANE.I32, FAST.EQUALS.PLAIN
+// from the first pixel of the triangle's bounds, whole-tile rejection and acceptance, 32-bit SIMD
+// lanes (FAST.LANE.I32), incremental stepping, AVX-512 / AVX2 / scalar chosen at run time. Its only
+// correctness criterion: exactly the coverage of the plain walks (walk.hpp, walk_msaa.hpp), in the
+// same order (FAST.EQUALS.PLAIN). Implements: FAST.TILE.CLASSIFY, FAST.LANE.I32, FAST.EQUALS.PLAIN
 
 #pragma once
 
@@ -35,8 +34,8 @@ inline constexpr std::int32_t kFastBlockSize = 4 * kFastTileSize;
 // Preconditions: t.status == kRasterized; r not empty, inside [0, kMaxTargetSide)^2;
 // words_per_row >= (r.x1 - r.x0 + 64) / 64; isa_supported(isa); |dx|, |dy| <= 128.
 // rule: FAST.TILE.CLASSIFY, FAST.LANE.I32
-void fast_cover_rect(const TriangleSetup& t, PixelRect r, std::int32_t dx, std::int32_t dy,
-                     Isa isa, std::uint64_t* out, std::size_t words_per_row);
+void fast_cover_rect(const TriangleSetup& t, PixelRect r, std::int32_t dx, std::int32_t dy, Isa isa,
+                     std::uint64_t* out, std::size_t words_per_row);
 
 // Returns the number of pixels of the target whose centre t covers (what walk_triangle
 // emits, counted). The benchmarks' decision rate of the fast path.
@@ -48,12 +47,12 @@ void fast_cover_rect(const TriangleSetup& t, PixelRect r, std::int32_t dx, std::
 // per sample point. Each tile is classified whole, also where only part of it lies in the
 // rectangle.
 struct FastTileCounts {
-  std::uint64_t rejected = 0;  // tiles (also those of rejected blocks)
-  std::uint64_t accepted = 0;  // tiles (also those of accepted blocks)
-  std::uint64_t partial = 0;   // tiles decided per sample point
+  std::uint64_t rejected = 0; // tiles (also those of rejected blocks)
+  std::uint64_t accepted = 0; // tiles (also those of accepted blocks)
+  std::uint64_t partial = 0;  // tiles decided per sample point
   std::uint64_t blocks_rejected = 0;
   std::uint64_t blocks_accepted = 0;
-  std::uint64_t blocks_partial = 0;  // blocks whose tiles were classified one by one
+  std::uint64_t blocks_partial = 0; // blocks whose tiles were classified one by one
 };
 
 // Returns the classification of the tiles of the triangle's pixel bounds (pixel_bounds) at the
@@ -73,7 +72,7 @@ constexpr std::int32_t strip_rows(std::size_t words_per_row, std::size_t planes)
       kStackWords / (words_per_row * planes * static_cast<std::size_t>(kFastTileSize));
   return static_cast<std::int32_t>(tile_rows == 0 ? 1 : tile_rows) * kFastTileSize;
 }
-}  // namespace fast_detail
+} // namespace fast_detail
 
 // Calls emit(x, y) for exactly the pixels walk_triangle(t, width, height, emit) emits, in the
 // same order. Strips of whole tile rows (all of the pixel bounds when they fit 4 KiB of bits)
@@ -83,9 +82,11 @@ constexpr std::int32_t strip_rows(std::size_t words_per_row, std::size_t planes)
 template <class Emit>
 void walk_triangle_fast(const TriangleSetup& t, std::int32_t width, std::int32_t height, Isa isa,
                         Emit&& emit) {
-  if (t.status != TriangleStatus::kRasterized) return;
+  if (t.status != TriangleStatus::kRasterized)
+    return;
   const PixelRect r = pixel_bounds(t, width, height);
-  if (r.empty()) return;
+  if (r.empty())
+    return;
   const auto wpr = static_cast<std::size_t>(r.x1 - r.x0 + 64) / 64;
   const std::int32_t rows = fast_detail::strip_rows(wpr, 1);
   const std::size_t words = wpr * static_cast<std::size_t>(rows);
@@ -113,18 +114,21 @@ void walk_triangle_fast(const TriangleSetup& t, std::int32_t width, std::int32_t
 
 // Calls emit(x, y, mask) for exactly what walk_triangle_samples(t, pattern, width, height, emit)
 // emits, in the same order.
-// Preconditions: as walk_triangle_samples; width, height in [1, kMaxTargetSide]; isa_supported(isa).
+// Preconditions: as walk_triangle_samples; width, height in [1, kMaxTargetSide];
+// isa_supported(isa).
 // rule: FAST.EQUALS.PLAIN
 template <class Emit>
 void walk_triangle_samples_fast(const TriangleSetup& t, const SamplePattern& pattern,
                                 std::int32_t width, std::int32_t height, Isa isa, Emit&& emit) {
-  if (t.status != TriangleStatus::kRasterized) return;
+  if (t.status != TriangleStatus::kRasterized)
+    return;
   const PixelRect r = sample_pixel_bounds(t, pattern, width, height);
-  if (r.empty()) return;
+  if (r.empty())
+    return;
   const std::size_t n = pattern.count();
   const auto wpr = static_cast<std::size_t>(r.x1 - r.x0 + 64) / 64;
   const std::int32_t rows = fast_detail::strip_rows(wpr, n);
-  const std::size_t plane = wpr * static_cast<std::size_t>(rows);  // one sample's strip
+  const std::size_t plane = wpr * static_cast<std::size_t>(rows); // one sample's strip
   std::uint64_t stack[fast_detail::kStackWords];
   std::vector<std::uint64_t> heap;
   std::uint64_t* buf = stack;
@@ -143,7 +147,8 @@ void walk_triangle_samples_fast(const TriangleSetup& t, const SamplePattern& pat
       const std::size_t row = static_cast<std::size_t>(y - strip.y0) * wpr;
       for (std::size_t w = 0; w < wpr; ++w) {
         std::uint64_t any = 0;
-        for (std::size_t k = 0; k < n; ++k) any |= buf[k * plane + row + w];
+        for (std::size_t k = 0; k < n; ++k)
+          any |= buf[k * plane + row + w];
         const std::int32_t x_base = r.x0 + static_cast<std::int32_t>(w * 64);
         for (; any != 0; any &= any - 1) {
           const int bit = std::countr_zero(any);
@@ -157,4 +162,4 @@ void walk_triangle_samples_fast(const TriangleSetup& t, const SamplePattern& pat
   }
 }
 
-}  // namespace rastrules::raster
+} // namespace rastrules::raster

@@ -24,17 +24,17 @@ inline constexpr std::int32_t kBatchSmallSpan = 64 * kSubpixelOne;
 
 enum class BatchStatus {
   kOk,
-  kBadLength,  // xy.size() is not a multiple of 6, or an output span has the wrong size
-  kBadTarget,  // width or height outside [1, kMaxTargetSide]
-  kBadIsa,     // the instruction set is not supported here (isa_supported)
-  kBadVertex,  // a coordinate does not snap (SNAP.VERTEX.INVALID): see bad_*
+  kBadLength, // xy.size() is not a multiple of 6, or an output span has the wrong size
+  kBadTarget, // width or height outside [1, kMaxTargetSide]
+  kBadIsa,    // the instruction set is not supported here (isa_supported)
+  kBadVertex, // a coordinate does not snap (SNAP.VERTEX.INVALID): see bad_*
 };
 
 struct FastBatchResult {
   BatchStatus status = BatchStatus::kOk;
-  std::uint64_t covered = 0;     // pixel centres covered, summed over the triangles
-  std::uint64_t rasterized = 0;  // triangles with status kRasterized (not degenerate, not culled)
-  std::uint64_t small = 0;       // of all triangles, those decided in 32-bit lanes
+  std::uint64_t covered = 0;    // pixel centres covered, summed over the triangles
+  std::uint64_t rasterized = 0; // triangles with status kRasterized (not degenerate, not culled)
+  std::uint64_t small = 0;      // of all triangles, those decided in 32-bit lanes
   // kBadVertex: the first triangle (lowest index) with a coordinate that does not snap, its
   // first such vertex (0..2) and axis ('x' or 'y'), and why.
   std::size_t bad_triangle = 0;
@@ -60,8 +60,7 @@ struct FastBatchResult {
 // rule: FAST.BATCH.EQUALS.PLAIN
 [[nodiscard]] FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width,
                                                std::int32_t height, const RasterState& state,
-                                               Isa isa,
-                                               std::span<std::uint64_t> per_triangle = {},
+                                               Isa isa, std::span<std::uint64_t> per_triangle = {},
                                                std::span<std::uint32_t> hits = {});
 
-}  // namespace rastrules::raster
+} // namespace rastrules::raster

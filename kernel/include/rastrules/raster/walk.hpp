@@ -22,7 +22,7 @@ namespace rastrules::raster {
 }
 
 struct PixelRect {
-  std::int32_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // inclusive; empty when x1 < x0 or y1 < y0
+  std::int32_t x0 = 0, y0 = 0, x1 = -1, y1 = -1; // inclusive; empty when x1 < x0 or y1 < y0
   [[nodiscard]] constexpr bool empty() const { return x1 < x0 || y1 < y0; }
 };
 
@@ -30,10 +30,10 @@ struct PixelRect {
 // bounding box of the snapped vertices, for sample points at raw offsets [dx0, dx1] x [dy0, dy1]
 // from the pixel centre (all zero: the pixel centre itself).
 // rule: RASTER.WALK.BBOX, RASTER.TARGET.CLIP
-[[nodiscard]] constexpr PixelRect pixel_bounds_with_offsets(const TriangleSetup& t, std::int32_t width,
-                                                            std::int32_t height, std::int64_t dx0,
-                                                            std::int64_t dx1, std::int64_t dy0,
-                                                            std::int64_t dy1) {
+[[nodiscard]] constexpr PixelRect pixel_bounds_with_offsets(const TriangleSetup& t,
+                                                            std::int32_t width, std::int32_t height,
+                                                            std::int64_t dx0, std::int64_t dx1,
+                                                            std::int64_t dy0, std::int64_t dy1) {
   std::int64_t minx = t.snapped[0].x.raw(), maxx = minx;
   std::int64_t miny = t.snapped[0].y.raw(), maxy = miny;
   for (const Vec2& v : t.snapped) {
@@ -72,9 +72,11 @@ struct PixelRect {
 template <class Emit>
 constexpr void walk_triangle(const TriangleSetup& t, std::int32_t width, std::int32_t height,
                              Emit&& emit) {
-  if (t.status != TriangleStatus::kRasterized) return;
+  if (t.status != TriangleStatus::kRasterized)
+    return;
   const PixelRect r = pixel_bounds(t, width, height);
-  if (r.empty()) return;
+  if (r.empty())
+    return;
   std::int64_t bias[3];
   std::int64_t step_x[3];
   for (std::size_t i = 0; i < 3; ++i) {
@@ -88,7 +90,8 @@ constexpr void walk_triangle(const TriangleSetup& t, std::int32_t width, std::in
     std::int64_t e1 = t.edges[1].value_at(start).raw() + bias[1];
     std::int64_t e2 = t.edges[2].value_at(start).raw() + bias[2];
     for (std::int32_t x = r.x0; x <= r.x1; ++x) {
-      if ((e0 | e1 | e2) >= 0) emit(x, y);
+      if ((e0 | e1 | e2) >= 0)
+        emit(x, y);
       e0 += step_x[0];
       e1 += step_x[1];
       e2 += step_x[2];
@@ -96,4 +99,4 @@ constexpr void walk_triangle(const TriangleSetup& t, std::int32_t width, std::in
   }
 }
 
-}  // namespace rastrules::raster
+} // namespace rastrules::raster

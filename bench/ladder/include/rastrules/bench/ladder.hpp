@@ -11,8 +11,8 @@
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -165,8 +165,8 @@ struct LavapipeFigure {
   double seconds = 0;
   std::uint64_t samples_passed = 0;
   std::uint64_t triangles = 0;
-  unsigned threads = 0;        // lavapipe's rasterizer threads (0: unknown)
-  std::string threads_source;  // where that figure comes from
+  unsigned threads = 0;       // lavapipe's rasterizer threads (0: unknown)
+  std::string threads_source; // where that figure comes from
 };
 
 // Returns lavapipe's rasterizer thread count and where it comes from: LP_NUM_THREADS when set

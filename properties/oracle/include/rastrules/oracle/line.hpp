@@ -30,4 +30,4 @@ std::vector<std::array<std::int32_t, 2>> aliased_line_pixels(const LineRaw& a, c
                                                              const std::string& mode,
                                                              std::int32_t w, std::int32_t h);
 
-}  // namespace rastrules::oracle
+} // namespace rastrules::oracle

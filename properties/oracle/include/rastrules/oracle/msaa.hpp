@@ -71,7 +71,7 @@ enum class Branch {
 };
 
 struct CentroidPoint {
-  Offset offset;  // from the pixel centre, in 1/16 px
+  Offset offset; // from the pixel centre, in 1/16 px
   Branch branch = Branch::kFullCoverageCenter;
   friend bool operator==(const CentroidPoint&, const CentroidPoint&) = default;
 };
@@ -110,10 +110,10 @@ struct Input {
   std::string line_mode = "d3d";
   std::vector<Offset> pattern = {Offset{}};
   std::uint32_t sample_mask = 0xFFFFFFFFu;
-  std::optional<std::string> centroid;  // "d3d11" | "d3d10"
-  std::string shading = "pixel";        // "pixel" | "sample"
+  std::optional<std::string> centroid; // "d3d11" | "d3d10"
+  std::string shading = "pixel";       // "pixel" | "sample"
   bool quads = false;
-  std::string derivatives = "none";     // "none" | "fine" | "coarse" (not "none" implies quads)
+  std::string derivatives = "none"; // "none" | "fine" | "coarse" (not "none" implies quads)
   Rgba clear_color = {0, 0, 0, 0};
   std::vector<Primitive> primitives;
 };
@@ -152,4 +152,4 @@ std::vector<Fragment> render(const Input& in);
 // resolve_pixel on each pixel.
 std::vector<Rgba> resolve(const Input& in, const std::vector<Fragment>& fragments);
 
-}  // namespace rastrules::oracle::msaa
+} // namespace rastrules::oracle::msaa

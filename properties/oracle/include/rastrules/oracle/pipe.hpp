@@ -25,8 +25,8 @@ namespace rastrules::oracle::pipe {
 
 // A position in raw 16.8 units (1/256 px), y down.
 using Raw2 = std::array<std::int64_t, 2>;
-using Vec4 = std::array<float, 4>;   // x, y, z, w
-using Mat4 = std::array<float, 16>;  // row-major, acting on column vectors
+using Vec4 = std::array<float, 4>;  // x, y, z, w
+using Mat4 = std::array<float, 16>; // row-major, acting on column vectors
 
 // ---------------------------------------------------------------------------------------------
 // Rounding (the oracle's own, from exact rationals)
@@ -75,8 +75,8 @@ Rect viewport_scissor(const Viewport& vp);
 // ---------------------------------------------------------------------------------------------
 // Clipping (PIPE.CLIP.*): the double / float32 formulas of the spec
 
-inline constexpr double kGuardBand = 31744.0;  // px
-inline constexpr int kWMinLog2 = -126;  // the w plane: w >= 2^-126 (float32's smallest normal)
+inline constexpr double kGuardBand = 31744.0; // px
+inline constexpr int kWMinLog2 = -126; // the w plane: w >= 2^-126 (float32's smallest normal)
 
 struct Volume {
   double w_min = 0.0;
@@ -108,7 +108,7 @@ std::vector<ClipVertex> clip_polygon(const std::vector<ClipVertex>& polygon, con
 // plane has both endpoints outside.
 // rule: PIPE.CLIP.LINE
 std::optional<std::array<ClipVertex, 2>> clip_segment(const ClipVertex& a, const ClipVertex& b,
-                                                     const Volume& vol);
+                                                      const Volume& vol);
 
 // The fields of a viewport that violate PIPE.VIEWPORT.RANGE, decided exactly (x + width and
 // y + height as exact sums): "x" or "y" out of [-32768, 32767] or not finite; "width" or
@@ -139,7 +139,7 @@ std::optional<std::int64_t> snap_unbounded(double v);
 // A convex region of the window plane given by exact rational vertices (raw 16.8 units, not
 // necessarily integers), for deciding which samples it covers away from its edges.
 class ExactRegion {
- public:
+public:
   enum class Side { kInside, kOutside, kNear };
 
   // The unclipped triangle of PIPE.CLIP.GUARD_BAND_BOUND: the clip-space vertices (each with
@@ -175,7 +175,7 @@ class ExactRegion {
   // The number of vertices (repeated ones included).
   [[nodiscard]] std::size_t size() const;
 
- private:
+private:
   struct Impl;
   explicit ExactRegion(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
@@ -212,16 +212,16 @@ double linear_exact(const Bary& b, const std::array<float, 3>& a);
 // A kernel value checked against PIPE.INTERP.BOUND and PIPE.INTERP.HORIZON.
 struct InterpCheck {
   bool ok = false;
-  bool finite = true;         // got is neither NaN nor infinite
-  bool inside = false;        // the evaluation point is in the closed triangle
-  bool in_range = true;       // inside: got in [min a_i - bound, max a_i + bound] (exactly)
-  bool horizon = false;       // exact denominator (times sign(area)) <= 0: flat value expected
-  bool near_horizon = false;  // |denominator| <= 2^-48 sum|e_i / w_i|: fl64 may decide either
-                              // way, only finiteness is checked
-  bool saturated = false;     // accepted as +-FLT_MAX because the bound reaches beyond it
-  double exact = 0.0;         // x (nearest double; the flat value at the horizon)
-  double bound = 0.0;         // ulp32(x) + 2^-48 S (nearest double)
-  double s = 0.0;             // S of PIPE.INTERP.BOUND
+  bool finite = true;        // got is neither NaN nor infinite
+  bool inside = false;       // the evaluation point is in the closed triangle
+  bool in_range = true;      // inside: got in [min a_i - bound, max a_i + bound] (exactly)
+  bool horizon = false;      // exact denominator (times sign(area)) <= 0: flat value expected
+  bool near_horizon = false; // |denominator| <= 2^-48 sum|e_i / w_i|: fl64 may decide either
+                             // way, only finiteness is checked
+  bool saturated = false;    // accepted as +-FLT_MAX because the bound reaches beyond it
+  double exact = 0.0;        // x (nearest double; the flat value at the horizon)
+  double bound = 0.0;        // ulp32(x) + 2^-48 S (nearest double)
+  double s = 0.0;            // S of PIPE.INTERP.BOUND
   float got = 0.0f;
   [[nodiscard]] std::string describe() const;
 };
@@ -257,13 +257,13 @@ Stored store_exact(double d, float min_depth, float max_depth, const std::string
 
 struct DepthCheck {
   bool ok = false;
-  double exact = 0.0;       // sum(e_i Z_i) / area, before the clamp (nearest double)
-  double clamped = 0.0;     // after the clamp
-  double bound = 0.0;       // 2^-50 S
-  Stored expected;          // the exactly rounded value of `clamped`
-  Stored lo, hi;            // the stored values allowed (inclusive range)
-  double got_z = 0.0;       // check_depth_interp: the kernel's double
-  Stored got;               // check_depth_stored: the kernel's stored value
+  double exact = 0.0;   // sum(e_i Z_i) / area, before the clamp (nearest double)
+  double clamped = 0.0; // after the clamp
+  double bound = 0.0;   // 2^-50 S
+  Stored expected;      // the exactly rounded value of `clamped`
+  Stored lo, hi;        // the stored values allowed (inclusive range)
+  double got_z = 0.0;   // check_depth_interp: the kernel's double
+  Stored got;           // check_depth_stored: the kernel's stored value
   [[nodiscard]] std::string describe(const std::string& format) const;
 };
 
@@ -296,4 +296,4 @@ float depth_bias(const std::array<Raw2, 3>& v, const std::array<float, 3>& z, st
 bool depth_test(const std::string& func, const Stored& now, const Stored& old,
                 const std::string& format);
 
-}  // namespace rastrules::oracle::pipe
+} // namespace rastrules::oracle::pipe

@@ -43,4 +43,4 @@ std::vector<Raw2> quad_line_corners(const Raw2& a, const Raw2& b, const std::str
 bool quad_line_covers(const Raw2& a, const Raw2& b, const std::string& mode, const Raw2& s,
                       const std::string& fill);
 
-}  // namespace rastrules::oracle
+} // namespace rastrules::oracle

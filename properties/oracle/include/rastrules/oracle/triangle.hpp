@@ -19,9 +19,9 @@ namespace rastrules::oracle {
 // Raster state as plain strings, spelled as in spec/scene.md, so that the oracle does not
 // depend on the kernel's enums.
 struct State {
-  std::string cull = "none";        // "none" | "back" | "front"
-  std::string front_face = "cw";    // "cw" | "ccw"
-  std::string fill = "top-left";    // "top-left" | "top-right" | "bottom-left" | "bottom-right"
+  std::string cull = "none";     // "none" | "back" | "front"
+  std::string front_face = "cw"; // "cw" | "ccw"
+  std::string fill = "top-left"; // "top-left" | "top-right" | "bottom-left" | "bottom-right"
 };
 
 using FloatTriangle = std::array<std::array<float, 2>, 3>;
@@ -66,4 +66,4 @@ bool covers(const std::array<std::array<std::int64_t, 2>, 3>& snapped,
 // std::invalid_argument when a coordinate does not snap.
 std::vector<Fragment> render(const Scene& scene);
 
-}  // namespace rastrules::oracle
+} // namespace rastrules::oracle

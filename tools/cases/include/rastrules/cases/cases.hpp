@@ -17,12 +17,12 @@
 namespace rastrules::cases {
 
 struct CaseReport {
-  std::string name;                 // the scene file's stem
-  std::vector<std::string> rules;   // from the sidecar
-  std::string what;                 // from the sidecar
-  std::vector<std::string> failures;  // empty: the case holds
+  std::string name;                  // the scene file's stem
+  std::vector<std::string> rules;    // from the sidecar
+  std::string what;                  // from the sidecar
+  std::vector<std::string> failures; // empty: the case holds
   std::size_t fragments = 0;
-  std::size_t oracle_checks = 0;    // attribute and depth values compared with the oracle
+  std::size_t oracle_checks = 0; // attribute and depth values compared with the oracle
   [[nodiscard]] bool ok() const { return failures.empty(); }
 };
 
@@ -36,4 +36,4 @@ struct CaseReport {
 // One line per case: "OK   name  (N fragments, M oracle checks)  rules" or "FAIL name: ...".
 [[nodiscard]] std::string format_report(const std::vector<CaseReport>& reports);
 
-}  // namespace rastrules::cases
+} // namespace rastrules::cases

@@ -19,14 +19,14 @@ namespace rastrules::driver {
 
 // What a driver reports about itself, and what it can draw.
 struct DriverInfo {
-  std::string name;                 // "lavapipe", "opengl", "imprecise", "reference", "external"
-  std::string description;          // device name and version, or the command line
-  int subpixel_bits = -1;           // as the driver reports it (-1: unknown)
-  std::vector<std::uint32_t> sample_counts;  // supported rasterization sample counts
+  std::string name;        // "lavapipe", "opengl", "imprecise", "reference", "external"
+  std::string description; // device name and version, or the command line
+  int subpixel_bits = -1;  // as the driver reports it (-1: unknown)
+  std::vector<std::uint32_t> sample_counts; // supported rasterization sample counts
   bool points = false;
-  bool lines_bresenham = false;     // line_mode "vulkan-bresenham"
-  bool lines_rectangular = false;   // line_mode "quad-narrow" (Vulkan rectangular, 1.0 wide)
-  bool lines_d3d = false;           // line_mode "d3d" (diamond exit)
+  bool lines_bresenham = false;   // line_mode "vulkan-bresenham"
+  bool lines_rectangular = false; // line_mode "quad-narrow" (Vulkan rectangular, 1.0 wide)
+  bool lines_d3d = false;         // line_mode "d3d" (diamond exit)
   bool sample_mask = false;
   bool sample_shading = false;
   std::int32_t max_target_side = 0; // largest width or height it accepts
@@ -43,7 +43,7 @@ struct DriverError {
 using DrawResult = std::variant<std::vector<Fragment>, DriverError>;
 
 class Driver {
- public:
+public:
   virtual ~Driver() = default;
   [[nodiscard]] virtual const DriverInfo& info() const = 0;
   // Returns an empty string when the driver can draw the scene, else the reason it cannot
@@ -63,4 +63,4 @@ class Driver {
 // Returns the names open_driver accepts in this build, for usage messages.
 [[nodiscard]] std::vector<std::string> driver_names();
 
-}  // namespace rastrules::driver
+} // namespace rastrules::driver

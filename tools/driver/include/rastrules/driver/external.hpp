@@ -19,8 +19,8 @@
 namespace rastrules::driver {
 
 struct ExternalOptions {
-  std::int64_t timeout_ms = 10000;               // per scene; the process is killed after it
-  std::size_t max_output_bytes = std::size_t{64} << 20;  // standard output larger: an error
+  std::int64_t timeout_ms = 10000;                      // per scene; the process is killed after it
+  std::size_t max_output_bytes = std::size_t{64} << 20; // standard output larger: an error
 };
 
 // Returns the default options, with timeout_ms taken from the environment variable
@@ -36,12 +36,13 @@ struct ExternalOptions {
 // fragment inside the target, prim < number of primitives, mask < 2^samples, no duplicate
 // (prim, x, y, seg, sample). Returns the fragments sorted as SCENE.OUTPUT.FRAGMENTS or an
 // error message naming the fragment and field.
-[[nodiscard]] std::variant<std::vector<Fragment>, std::string> parse_external_fragments(
-    std::string_view text, const Scene& scene);
+[[nodiscard]] std::variant<std::vector<Fragment>, std::string>
+parse_external_fragments(std::string_view text, const Scene& scene);
 
 // Opens "external:COMMAND" given COMMAND. On failure (empty command) returns nullptr and sets
 // *error.
-[[nodiscard]] std::unique_ptr<Driver> open_external_driver(std::string_view command, std::string* error,
-                                                           ExternalOptions options = default_external_options());
+[[nodiscard]] std::unique_ptr<Driver>
+open_external_driver(std::string_view command, std::string* error,
+                     ExternalOptions options = default_external_options());
 
-}  // namespace rastrules::driver
+} // namespace rastrules::driver

@@ -16,9 +16,9 @@ namespace rastrules::driver {
 
 // The planted bugs.
 struct ImpreciseBugs {
-  bool float_edges = false;        // edge functions in float32, any sample with E >= 0 inside
-  bool fill_bottom_right = false;  // bottom-right tie rule whatever the scene's fill says
-  bool four_bit_subpixel = false;  // vertices snapped to 1/16 px instead of 1/256 px
+  bool float_edges = false;       // edge functions in float32, any sample with E >= 0 inside
+  bool fill_bottom_right = false; // bottom-right tie rule whatever the scene's fill says
+  bool four_bit_subpixel = false; // vertices snapped to 1/16 px instead of 1/256 px
 };
 
 // Returns the bugs of a variant name: "imprecise" (all three), "imprecise:float-edges",
@@ -27,9 +27,10 @@ struct ImpreciseBugs {
 
 // Opens the imprecise driver named `name` (see parse_imprecise_variant). On failure returns
 // nullptr and sets *error.
-[[nodiscard]] std::unique_ptr<Driver> open_imprecise_driver(std::string_view name, std::string* error);
+[[nodiscard]] std::unique_ptr<Driver> open_imprecise_driver(std::string_view name,
+                                                            std::string* error);
 
 // The names open_imprecise_driver accepts.
 [[nodiscard]] std::vector<std::string> imprecise_driver_names();
 
-}  // namespace rastrules::driver
+} // namespace rastrules::driver

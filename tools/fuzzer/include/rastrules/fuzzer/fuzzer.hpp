@@ -21,7 +21,7 @@ namespace rastrules::fuzzer {
 
 // rule: FUZZ.PROFILE
 enum class Profile { kD3D11, kVulkan, kOpenGL };
-[[nodiscard]] std::string_view to_string(Profile p);  // "d3d11", "vulkan", "opengl"
+[[nodiscard]] std::string_view to_string(Profile p); // "d3d11", "vulkan", "opengl"
 [[nodiscard]] std::optional<Profile> parse_profile(std::string_view s);
 
 // Sets the profile's conventions on a scene: fill top-left for all three; line_mode "d3d" for
@@ -31,26 +31,26 @@ void apply_profile(Profile p, Scene& scene);
 
 // rule: FUZZ.COMPARE.EXACT, FUZZ.COMPARE.LEGAL
 enum class Mode { kExact, kLegal };
-[[nodiscard]] std::string_view to_string(Mode m);  // "exact", "legal"
+[[nodiscard]] std::string_view to_string(Mode m); // "exact", "legal"
 [[nodiscard]] std::optional<Mode> parse_mode(std::string_view s);
 
 // A deterministic 64-bit generator (splitmix64).
 class Rng {
- public:
+public:
   explicit Rng(std::uint64_t seed) : state_(seed) {}
   std::uint64_t next();
   // Uniform in [lo, hi] (lo <= hi).
   std::int64_t uniform(std::int64_t lo, std::int64_t hi);
   bool chance(std::uint32_t percent) { return uniform(0, 99) < percent; }
 
- private:
+private:
   std::uint64_t state_;
 };
 
 // A generated case: the scene and the family that produced it.
 struct Case {
   Scene scene;
-  std::string family;  // "random", "shared-edge", "fan", "grid", "sliver", "points", "lines"
+  std::string family; // "random", "shared-edge", "fan", "grid", "sliver", "points", "lines"
 };
 
 // Returns case `index` of the campaign with seed `seed`: the same (seed, index) always gives
@@ -58,8 +58,8 @@ struct Case {
 // info and driver.unsupported()) are not generated; nullopt when no attempt gave a scene
 // the driver supports.
 // rule: FUZZ.GENERATE
-[[nodiscard]] std::optional<Case> generate_case(std::uint64_t seed, std::uint64_t index, Profile profile,
-                                                const driver::Driver& driver);
+[[nodiscard]] std::optional<Case> generate_case(std::uint64_t seed, std::uint64_t index,
+                                                Profile profile, const driver::Driver& driver);
 
 // One differing pixel of one primitive: mask holds the samples missing (or extra).
 struct DiffEntry {
@@ -76,11 +76,11 @@ struct Comparison {
   // (several when the scene has no tie that tells them apart); exact mode: the scene's own
   // when it matches.
   std::vector<FillConvention> conventions;
-  FillConvention compared_with = FillConvention::kTopLeft;  // the reference shown on a mismatch
-  std::vector<Fragment> expected;  // the reference under compared_with (observable fields)
-  std::vector<Fragment> actual;    // the driver's (observable fields)
-  std::vector<DiffEntry> missing;  // in expected, not in actual
-  std::vector<DiffEntry> extra;    // in actual, not in expected
+  FillConvention compared_with = FillConvention::kTopLeft; // the reference shown on a mismatch
+  std::vector<Fragment> expected; // the reference under compared_with (observable fields)
+  std::vector<Fragment> actual;   // the driver's (observable fields)
+  std::vector<DiffEntry> missing; // in expected, not in actual
+  std::vector<DiffEntry> extra;   // in actual, not in expected
 };
 
 // Reduces fragments to what every driver can observe: per (prim, x, y) the union of the masks
@@ -92,27 +92,30 @@ struct Comparison {
 // conventions is accepted (d3d11 allows top-left only). Returns nullopt and sets *error when
 // the kernel rejects the scene.
 // rule: FUZZ.COMPARE.EXACT, FUZZ.COMPARE.LEGAL
-[[nodiscard]] std::optional<Comparison> compare(const Scene& scene, const std::vector<Fragment>& actual,
+[[nodiscard]] std::optional<Comparison> compare(const Scene& scene,
+                                                const std::vector<Fragment>& actual,
                                                 Profile profile, Mode mode, std::string* error);
 
 // Draws the scene with the driver and compares; nullopt (and *error) when the driver or the
 // kernel fails, or the driver does not support the scene.
 [[nodiscard]] std::optional<Comparison> draw_and_compare(driver::Driver& driver, const Scene& scene,
-                                                         Profile profile, Mode mode, std::string* error);
+                                                         Profile profile, Mode mode,
+                                                         std::string* error);
 
 // Returns a minimal scene for which still_differs() holds, starting from `scene` (for which
 // it holds): fewest primitives, then fewest strip vertices, then simplest coordinates
 // (0, halved integers, integers, halves, 1/16, one pixel toward the origin), one sample, the
 // scene moved toward the origin, the smallest target. Deterministic.
 // rule: FUZZ.SHRINK
-[[nodiscard]] Scene shrink(const Scene& scene, const std::function<bool(const Scene&)>& still_differs);
+[[nodiscard]] Scene shrink(const Scene& scene,
+                           const std::function<bool(const Scene&)>& still_differs);
 
 // The outputs of one mismatch.
 struct FindingFiles {
-  std::string scene;     // the original scene
-  std::string shrunk;    // the shrunk scene
-  std::string picture;   // expected | actual | difference of the shrunk scene
-  std::string report;    // the JSON report of this finding
+  std::string scene;   // the original scene
+  std::string shrunk;  // the shrunk scene
+  std::string picture; // expected | actual | difference of the shrunk scene
+  std::string report;  // the JSON report of this finding
 };
 
 struct Finding {
@@ -120,9 +123,9 @@ struct Finding {
   std::string family;
   Scene original;
   Scene shrunk;
-  Comparison comparison;  // of the shrunk scene
-  std::string key;        // the shrunk scene's text: equal keys are the same finding
-  std::optional<std::uint64_t> duplicate_of;  // case index of the first finding with this key
+  Comparison comparison; // of the shrunk scene
+  std::string key;       // the shrunk scene's text: equal keys are the same finding
+  std::optional<std::uint64_t> duplicate_of; // case index of the first finding with this key
   FindingFiles files;
 };
 
@@ -133,50 +136,51 @@ struct Settings {
   Mode mode = Mode::kExact;
   std::uint64_t seed = 1;
   std::uint64_t cases = 100;
-  std::string out_dir;  // empty: write nothing
-  bool progress = false;  // draw a progress bar on standard error
+  std::string out_dir;   // empty: write nothing
+  bool progress = false; // draw a progress bar on standard error
 };
 
 struct Summary {
-  std::uint64_t cases = 0;       // cases drawn and compared
-  std::uint64_t skipped = 0;     // cases the driver could not draw
+  std::uint64_t cases = 0;   // cases drawn and compared
+  std::uint64_t skipped = 0; // cases the driver could not draw
   std::uint64_t mismatches = 0;
-  std::uint64_t unique = 0;      // distinct shrunk scenes
+  std::uint64_t unique = 0; // distinct shrunk scenes
   double seconds = 0;
   std::vector<Finding> findings;
-  std::vector<std::pair<FillConvention, std::uint64_t>> legal_conventions;  // legal mode: chosen
-  std::string error;  // non-empty: the campaign stopped on a driver error
+  std::vector<std::pair<FillConvention, std::uint64_t>> legal_conventions; // legal mode: chosen
+  std::string error; // non-empty: the campaign stopped on a driver error
   std::string report_path;
 };
 
 // Writes the picture of a comparison: expected | actual | difference, side by side, magnified,
 // with the pixel grid, the snapped edges and the sample points. Returns an error or nullopt.
 // rule: FUZZ.REPORT
-[[nodiscard]] std::optional<std::string> write_difference_png(const std::string& path, const Scene& scene,
-                                                              const Comparison& comparison);
+[[nodiscard]] std::optional<std::string>
+write_difference_png(const std::string& path, const Scene& scene, const Comparison& comparison);
 
 // Runs a campaign of settings.cases generated cases.
 // rule: FUZZ.GENERATE, FUZZ.SHRINK, FUZZ.REPORT
 [[nodiscard]] Summary run_fuzz(driver::Driver& driver, const Settings& settings);
 
 // Compares one scene (the same outputs as a campaign of one case).
-[[nodiscard]] Summary run_check(driver::Driver& driver, const Scene& scene, const Settings& settings);
+[[nodiscard]] Summary run_check(driver::Driver& driver, const Scene& scene,
+                                const Settings& settings);
 
 // What `rastrules probe` found out about a driver's conventions (spec/driver.md FUZZ.PROBE).
 struct ProbeReport {
   // Fill convention: whether samples exactly on a top, bottom, left, right edge are inside.
   bool top = false, bottom = false, left = false, right = false;
-  std::string fill;          // "top-left", ..., or a description when no convention fits
+  std::string fill; // "top-left", ..., or a description when no convention fits
   // Snapping: the threshold (in 1/4096 px) from a pixel centre at which an edge leaves the
   // centre's snapped position, the subpixel bits and rounding it implies.
   std::int64_t threshold_4096 = 0;
-  int subpixel_bits = -1;    // -1: not determined
-  std::string rounding;      // "round half to even", ...
-  std::string line_mode;     // the line modes matching the probe lines, or why not probed
-  std::string point_rule;    // whether points match POINT.SHAPE.SQUARE, or why not probed
-  std::vector<SampleOffset> samples_4x;  // the 4x positions found (1/16 px), empty: not probed
+  int subpixel_bits = -1; // -1: not determined
+  std::string rounding;   // "round half to even", ...
+  std::string line_mode;  // the line modes matching the probe lines, or why not probed
+  std::string point_rule; // whether points match POINT.SHAPE.SQUARE, or why not probed
+  std::vector<SampleOffset> samples_4x; // the 4x positions found (1/16 px), empty: not probed
   std::string samples_note;
-  std::string error;         // non-empty: a draw failed
+  std::string error; // non-empty: a draw failed
 };
 
 // Probes the driver with small scenes (half-planes through pixel centres, binary search of
@@ -185,6 +189,7 @@ struct ProbeReport {
 [[nodiscard]] ProbeReport probe(driver::Driver& driver);
 
 // Prints the summary table.
-void print_summary(std::FILE* out, const Settings& settings, const driver::Driver& driver, const Summary& s);
+void print_summary(std::FILE* out, const Settings& settings, const driver::Driver& driver,
+                   const Summary& s);
 
-}  // namespace rastrules::fuzzer
+} // namespace rastrules::fuzzer

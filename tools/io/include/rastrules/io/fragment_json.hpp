@@ -36,7 +36,7 @@ struct PipeOutputFields {
 // fragment has them (SCENE.OUTPUT.MSAA).
 // rule: SCENE.OUTPUT.FRAGMENTS
 class FragmentWriter {
- public:
+public:
   explicit FragmentWriter(std::FILE* out);
   // A writer of a pipeline scene's fragments (SCENE.OUTPUT.PIPELINE): add(f, data).
   FragmentWriter(std::FILE* out, PipeOutputFields fields);
@@ -62,7 +62,7 @@ class FragmentWriter {
 
   [[nodiscard]] std::uint64_t count() const { return count_; }
 
- private:
+private:
   void flush_buffer();
 
   std::FILE* out_;
@@ -95,9 +95,9 @@ class FragmentWriter {
 // The same for a pipeline scene's fragments and their data (SCENE.OUTPUT.PIPELINE; data empty
 // or one entry per fragment, as in PipeResult); nullopt when a fragment is out of order, does
 // not match the fields (as FragmentWriter::add) or the arrays differ in size.
-[[nodiscard]] std::optional<std::string> pipe_fragments_to_json(
-    const std::vector<Fragment>& fragments, const std::vector<pipe::FragmentData>& data,
-    const PipeOutputFields& fields);
+[[nodiscard]] std::optional<std::string>
+pipe_fragments_to_json(const std::vector<Fragment>& fragments,
+                       const std::vector<pipe::FragmentData>& data, const PipeOutputFields& fields);
 
 // Returns a stored depth value as written in the output: the UNORM integer for d16 and d24, the
 // float32 in its shortest round-trip form for d32f (SCENE.OUTPUT.PIPELINE).
@@ -112,4 +112,4 @@ class FragmentWriter {
                                       std::uint32_t samples, pipe::DepthFormat format,
                                       const std::vector<pipe::DepthValue>& buffer);
 
-}  // namespace rastrules::io
+} // namespace rastrules::io

@@ -18,7 +18,7 @@ struct Rgb {
 };
 
 class Image {
- public:
+public:
   // Preconditions: width, height >= 1.
   Image(int width, int height, Rgb background);
 
@@ -37,7 +37,7 @@ class Image {
   // Returns the rows, top first, 3 bytes per pixel.
   [[nodiscard]] const std::vector<std::uint8_t>& rgb() const { return rgb_; }
 
- private:
+private:
   int width_;
   int height_;
   std::vector<std::uint8_t> rgb_;
@@ -51,4 +51,4 @@ class Image {
 [[nodiscard]] std::optional<std::string> write_png_rgba(std::FILE* out, int width, int height,
                                                         const std::vector<std::uint8_t>& rgba);
 
-}  // namespace rastrules::io
+} // namespace rastrules::io

@@ -31,14 +31,14 @@ inline constexpr int kDefaultPixelScale = 32;
 
 // How many primitives cover each pixel of the target, and the first of them.
 class CoverageMap {
- public:
+public:
   CoverageMap(std::int32_t width, std::int32_t height);
   // coverage_q16: an antialiased line fragment's coverage: such fragments are blended by
   // coverage into the pixel's colour instead of being counted (so they never show as overlap).
   void add(std::uint32_t prim, std::int32_t x, std::int32_t y,
            std::optional<std::uint32_t> coverage_q16 = std::nullopt);
   [[nodiscard]] std::uint32_t count(std::int32_t x, std::int32_t y) const;
-  [[nodiscard]] std::uint32_t first(std::int32_t x, std::int32_t y) const;  // valid if count > 0
+  [[nodiscard]] std::uint32_t first(std::int32_t x, std::int32_t y) const; // valid if count > 0
   // The blended colour of the antialiased fragments added at the pixel; nullopt when none.
   [[nodiscard]] std::optional<Rgb> aa_colour(std::int32_t x, std::int32_t y) const;
   [[nodiscard]] std::int32_t width() const { return width_; }
@@ -61,21 +61,21 @@ class CoverageMap {
   [[nodiscard]] bool sample_overlap(std::int32_t x, std::int32_t y) const;
   [[nodiscard]] std::optional<SampleOffset> centroid(std::int32_t x, std::int32_t y) const;
 
- private:
+private:
   std::size_t index(std::int32_t x, std::int32_t y) const;
   std::int32_t width_;
   std::int32_t height_;
   std::vector<std::uint32_t> first_;
-  std::vector<std::uint8_t> count_;  // saturates at 255
-  std::vector<Rgb> aa_;              // allocated on the first antialiased fragment
+  std::vector<std::uint8_t> count_; // saturates at 255
+  std::vector<Rgb> aa_;             // allocated on the first antialiased fragment
   std::vector<std::uint8_t> aa_seen_;
   std::uint32_t sample_count_ = 0;
-  std::vector<std::uint32_t> owner_;        // width * height * sample_count_
-  std::vector<std::uint8_t> helper_;        // width * height
+  std::vector<std::uint32_t> owner_;         // width * height * sample_count_
+  std::vector<std::uint8_t> helper_;         // width * height
   std::vector<std::uint8_t> sample_overlap_; // width * height
-  std::vector<std::uint8_t> has_centroid_;  // width * height
-  std::vector<SampleOffset> centroid_;      // width * height
-  std::optional<Fragment> last_counted_;    // for sample shading: count a pixel once
+  std::vector<std::uint8_t> has_centroid_;   // width * height
+  std::vector<SampleOffset> centroid_;       // width * height
+  std::optional<Fragment> last_counted_;     // for sample shading: count a pixel once
 };
 
 // The smallest magnification at which pictures of multisampled scenes show sample points.
@@ -98,14 +98,16 @@ inline constexpr Rgb kBackground{255, 255, 255};
 // (width * scale + 1) x (height * scale + 1) pixels; target pixel (i, j) occupies image pixels
 // [i * scale + 1, (i + 1) * scale) in x (and likewise in y), between grid lines.
 // Preconditions: scale >= 1 and picture_fits(scene.width, scene.height, scale).
-[[nodiscard]] Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int scale);
+[[nodiscard]] Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage,
+                                 int scale);
 
 // Returns a picture of a depth buffer (`render --png-depth`, SCENE.OUTPUT.PIPELINE): each target
 // pixel grey, black at depth 0 (near) to white at 1 (far), from the mean of its samples' depths
 // (depth01: width * height * samples values in [0, 1], index (y * width + x) * samples + k,
 // clamped), with the pixel grid from scale 3 on. Image size as draw_picture().
 // Preconditions: scale >= 1, picture_fits(width, height, scale), samples >= 1.
-[[nodiscard]] Image draw_depth_picture(std::int32_t width, std::int32_t height, std::uint32_t samples,
-                                       const std::vector<double>& depth01, int scale);
+[[nodiscard]] Image draw_depth_picture(std::int32_t width, std::int32_t height,
+                                       std::uint32_t samples, const std::vector<double>& depth01,
+                                       int scale);
 
-}  // namespace rastrules::io
+} // namespace rastrules::io

@@ -26,19 +26,19 @@ namespace rastrules::io {
 // Largest scene file accepted, in bytes. Memory used by reading is proportional to the input
 // (about 40 bytes per primitive in memory for at least 40 bytes of text), so this bounds it.
 // rule: SCENE.INPUT.LIMITS
-inline constexpr std::size_t kMaxSceneBytes = std::size_t{64} << 20;  // 64 MiB
+inline constexpr std::size_t kMaxSceneBytes = std::size_t{64} << 20; // 64 MiB
 
 // The other limits of SCENE.INPUT.LIMITS (spec/scene.md states why and the memory each bounds).
 // Most primitives in one scene.
-inline constexpr std::size_t kMaxScenePrimitives = std::size_t{1} << 20;  // 1048576
+inline constexpr std::size_t kMaxScenePrimitives = std::size_t{1} << 20; // 1048576
 // Most vertices in one primitive's "v" (only a line strip can have more than 3).
-inline constexpr std::size_t kMaxStripVertices = std::size_t{1} << 16;  // 65536
+inline constexpr std::size_t kMaxStripVertices = std::size_t{1} << 16; // 65536
 // Deepest nesting of JSON arrays and objects: scene, primitives, primitive, v, vertex. The
 // schema itself enforces it (an array or object where a scalar belongs is a type error, found
 // at its first character), so the parser's stack never holds more than this many levels.
 inline constexpr std::size_t kMaxSceneNesting = 5;
 // Default of `rastrules render --max-fragments`: most fragments one render may produce.
-inline constexpr std::uint64_t kDefaultMaxFragments = std::uint64_t{1} << 26;  // 67108864
+inline constexpr std::uint64_t kDefaultMaxFragments = std::uint64_t{1} << 26; // 67108864
 
 // Returns the scene described by the JSON text, or the first error found in reading order.
 // Errors name the field path (`primitives[2].v[1][0]: must be a number ...`) or, for
@@ -57,7 +57,8 @@ inline constexpr std::uint64_t kDefaultMaxFragments = std::uint64_t{1} << 26;  /
 // (checks between keys that may come in any order, such as "attr" against "attributes", when
 // the root object ends), naming the field path (`primitives[2].attr[1][0]: is NaN`).
 // rule: SCENE.FORMAT.V1, SCENE.PIPELINE, SCENE.INPUT.ERRORS
-[[nodiscard]] std::variant<Scene, pipe::PipeScene, SceneError> read_any_scene(std::string_view json_text);
+[[nodiscard]] std::variant<Scene, pipe::PipeScene, SceneError>
+read_any_scene(std::string_view json_text);
 
 // Returns the whole content of a scene file ("-" is standard input), or an error naming the
 // file when it cannot be read or is larger than kMaxSceneBytes.
@@ -118,4 +119,4 @@ inline constexpr std::uint64_t kDefaultMaxFragments = std::uint64_t{1} << 26;  /
 // escaped; other bytes, valid UTF-8 as the reader checked, as they are).
 [[nodiscard]] std::string json_string(std::string_view s);
 
-}  // namespace rastrules::io
+} // namespace rastrules::io
