@@ -13,11 +13,9 @@
 
 #include "cli.hpp"
 #include "rastrules/bench/ladder.hpp"
+#include "rastrules/driver/timing.hpp"
 #include "rastrules/io/image.hpp"
 #include "rastrules/parallel.hpp"
-#ifdef RASTRULES_CLI_HAVE_LAVAPIPE_TIMING
-#include "rastrules/driver/timing.hpp"
-#endif
 
 namespace rastrules::cli {
 namespace {
@@ -26,7 +24,6 @@ namespace {
 // rule: BENCH.LAVAPIPE
 bench::LavapipeFigure time_lavapipe(const bench::LadderScene& s, int repeats) {
   bench::LavapipeFigure f;
-#ifdef RASTRULES_CLI_HAVE_LAVAPIPE_TIMING
   Scene scene;
   scene.width = s.width;
   scene.height = s.height;
@@ -40,11 +37,6 @@ bench::LavapipeFigure time_lavapipe(const bench::LadderScene& s, int repeats) {
   f.repeats = t.repeats;
   f.seconds = t.seconds_median;
   f.samples_passed = t.samples_passed;
-#else
-  (void)s;
-  (void)repeats;
-  f.why_not = "this build has no lavapipe timing (tools/driver)";
-#endif
   return f;
 }
 

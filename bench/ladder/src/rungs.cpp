@@ -29,10 +29,8 @@
 #include "rastrules/isa.hpp"
 #include "rastrules/oracle/triangle.hpp"
 #include "rastrules/parallel.hpp"
-#ifdef RASTRULES_LADDER_HAVE_FAST
 #include "rastrules/raster/fast.hpp"
 #include "rastrules/raster/fast_batch.hpp"
-#endif
 #include "rastrules/raster/walk.hpp"
 #include "rastrules/snap.hpp"
 #include "rastrules/triangle.hpp"
@@ -65,12 +63,9 @@ std::string_view to_string(Rung r) {
 
 const std::vector<Rung>& all_rungs() {
   // reference-fast exists when the kernel's fast traversal is built (bench/ladder/CMakeLists.txt).
-  static const std::vector<Rung> rungs = {Rung::kFloat,         Rung::kDouble,    Rung::kScanline,
-                                          Rung::kFixed4I32,     Rung::kReference,
-#ifdef RASTRULES_LADDER_HAVE_FAST
-                                          Rung::kReferenceFast,
-#endif
-                                          Rung::kFixed16I128,   Rung::kExact,     Rung::kLimit};
+  static const std::vector<Rung> rungs = {
+      Rung::kFloat,         Rung::kDouble,      Rung::kScanline, Rung::kFixed4I32, Rung::kReference,
+      Rung::kReferenceFast, Rung::kFixed16I128, Rung::kExact,    Rung::kLimit};
   return rungs;
 }
 
@@ -358,12 +353,8 @@ void run_one(Rung r, const FloatTriangle& tri, std::int32_t w, std::int32_t h, E
     raster::walk_triangle(reference_setup(tri), w, h, emit);
     return;
   case Rung::kReferenceFast:
-#ifdef RASTRULES_LADDER_HAVE_FAST
     raster::walk_triangle_fast(reference_setup(tri), w, h, best_isa(), emit);
     return;
-#else
-    throw std::logic_error("ladder: reference-fast is not built (no kernel fast traversal)");
-#endif
   case Rung::kFixed16I128:
     raster_fixed16(tri, w, h, emit);
     return;
@@ -375,7 +366,6 @@ void run_one(Rung r, const FloatTriangle& tri, std::int32_t w, std::int32_t h, E
   }
 }
 
-#ifdef RASTRULES_LADDER_HAVE_FAST
 // The scene's flat coordinates (LadderScene::xy), or a copy made now when a caller built the
 // scene without flatten().
 const std::vector<float>& coordinates(const LadderScene& s, std::vector<float>& tmp) {
@@ -396,7 +386,6 @@ std::uint64_t batch_count(std::span<const float> xy, const LadderScene& s, Isa i
   }
   return r.covered;
 }
-#endif
 
 } // namespace
 
@@ -509,7 +498,6 @@ unsigned FastPool::threads() const {
 }
 
 std::uint64_t FastPool::count(const LadderScene& s) {
-#ifdef RASTRULES_LADDER_HAVE_FAST
   std::vector<float> tmp;
   const std::vector<float>& xy = coordinates(s, tmp);
   const std::size_t n = s.triangles.size();
@@ -525,10 +513,6 @@ std::uint64_t FastPool::count(const LadderScene& s) {
   for (const std::uint64_t c : counts)
     total += c;
   return total;
-#else
-  (void)s;
-  throw std::logic_error("ladder: reference-fast is not built (no kernel fast traversal)");
-#endif
 }
 
 // rule: BENCH.METRIC.THROUGHPUT
@@ -545,14 +529,12 @@ std::uint64_t run_rung(Rung r, const LadderScene& s, Coverage* out) {
       n += limit_count(tri, s.width, s.height);
     return n;
   }
-#ifdef RASTRULES_LADDER_HAVE_FAST
   if (r == Rung::kReferenceFast && out == nullptr) {
     // The timed path: the kernel's batch counter (FAST.BATCH.EQUALS.PLAIN): snapping, setup
     // and coverage of every triangle, small ones eight at a time.
     std::vector<float> tmp;
     return batch_count(coordinates(s, tmp), s, best_isa());
   }
-#endif
   if (out == nullptr) {
     auto count = [&n](std::int32_t, std::int32_t) { ++n; };
     for (const auto& tri : s.triangles)
