@@ -2,7 +2,7 @@
 // libFuzzer target, differential: decodes the bytes into a small scene (support.hpp:
 // decode_scene; target 1..64 px, up to 8 primitives of every type, any state and line mode,
 // coordinates from raw 16.8 values and from arbitrary float bits) and compares the kernel
-// (rastrules::prepare + rasterize) with the exact oracles of properties/oracle. Aborts with a
+// (rastrules::prepare + rasterize) with the exact oracles of oracle/. Aborts with a
 // reproducer scene on any disagreement:
 // - prepare() rejects a scene the oracles find valid, or accepts one they find invalid;
 // - a pixel only one side covers (triangles, points, aliased, quadrilateral and antialiased

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // rastrules showcase: render the built-in scenes, write their files and pictures, and
-// compare every fragment list with the exact oracles (properties/oracle): triangles with the
+// compare every fragment list with the exact oracles (oracle/): triangles with the
 // triangle oracle, points with the triangle oracle on their exact squares (or the point
 // oracle), aliased lines with the line oracle, antialiased lines with the AA-line oracle
 // (pixels exactly, coverage within LINE.AA.PRECISION); multisampled scenes with the exact

@@ -6,7 +6,7 @@
 //   - every value is finite, every barycentric triple sums to its area, every stored depth lies
 //     in the viewport's range (PIPE.BARY.SUM, PIPE.INTERP.HORIZON, PIPE.DEPTH.CLAMP);
 //   - every attribute and depth agrees with the exact oracle within its stated bound
-//     (PIPE.INTERP.BOUND, PIPE.DEPTH.BOUND; properties/oracle, exact rationals);
+//     (PIPE.INTERP.BOUND, PIPE.DEPTH.BOUND; oracle/, exact rationals);
 //   - the sidecar's expectations (counts, parts, passed samples, depth values, ranges).
 #pragma once
 
