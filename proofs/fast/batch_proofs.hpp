@@ -2,7 +2,7 @@
 // The batch counter's SIMD unit (kernel/src/fast_batch_avx2.cpp) as the proofs see it, and the
 // obligations FAST.BATCH.SMALL_I32 and FAST.BATCH.SNAP_SIMD as templates over a model, so that
 // the same theorems run against the kernel (batch_small_i32.cpp, batch_snap_simd.cpp) and
-// against deliberately broken models (fast_mutants.cpp).
+// against deliberately broken models (mutants.cpp).
 //
 // The SIMD unit is written in intrinsics on __m256i / __m256, so it cannot be instantiated on
 // a symbolic type: its lines are restated here, each next to the intrinsic it mirrors, in the

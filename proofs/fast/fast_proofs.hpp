@@ -2,7 +2,7 @@
 // The fast traversal's lane arithmetic as the proofs see it, and the obligations FAST.LANE.I32
 // and FAST.TILE.CLASSIFY as templates over a model, so that the same theorems run against the
 // kernel (lane_budget.cpp, lane_equivalence.cpp, tile_classify.cpp) and against deliberately
-// broken models (fast_mutants.cpp).
+// broken models (mutants.cpp).
 //
 // FastKernelModel = KernelModel (support/kernel_model.hpp: the kernel's formula::edge_value,
 // edge_bias, edge_step_x/y on Sym<int64_t>) plus:

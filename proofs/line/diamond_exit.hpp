@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Obligations for the aliased-line diamond tests (formula/diamond.hpp), as templates over a
 // model policy so that the same theorems run against the kernel (diamond_exit_matches_spec.cpp,
-// diamond_no_overflow.cpp) and against broken models (selftest_mutants.cpp). The D3D "meets"
+// diamond_no_overflow.cpp) and against broken models (mutants.cpp). The D3D "meets"
 // test is proved equal to "some point of the segment lies in T" in both directions:
 // prove_d3d_diamond_exit (point in T => meets) and prove_d3d_meets_witness (meets => an
 // explicit point in T). Not proved: the same converse for the Vulkan vk_meets (its perturbed

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Obligations LINE.AA.FRAGMENT (the square-root-free comparison) and LINE.AA.BLEND (the blend
-// numerator), as templates over a model. Used by aa_formulas.cpp and aa_mutants.cpp.
+// numerator), as templates over a model. Used by aa_formulas.cpp and mutants.cpp.
 
 #pragma once
 

@@ -2,7 +2,7 @@
 // The kernel's multisampling arithmetic as the proofs see it, and the obligations
 // MSAA.SAMPLE.POSITION and MSAA.CENTROID.WITHIN as templates over a model, so that the same
 // theorems run against the kernel (sample_position.cpp, centroid_within.cpp) and against
-// deliberately broken models (msaa_mutants.cpp).
+// deliberately broken models (mutants.cpp).
 //
 // MsaaKernelModel = KernelModel (support/kernel_model.hpp: the kernel's formula::edge_value on
 // Sym<int64_t>, the per-edge test `inside`) plus:

@@ -3,7 +3,7 @@
 // model: the barycentric sum (PIPE.BARY.SUM, PIPE.BARY.DOUBLE_EXACT), the UNORM depth
 // conversion (PIPE.DEPTH.FORMAT, PIPE.DEPTH.UNORM_ROUND) and the guard band's snap margin
 // (PIPE.CLIP.GUARD_BAND_SNAP). Used by bary_sum.cpp, depth_format.cpp, guard_band.cpp (the
-// kernel) and pipe_mutants.cpp (broken models).
+// kernel) and mutants.cpp (broken models).
 
 #pragma once
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Obligation POINT.COVER.HALF_OPEN (with POINT.RANGE and POINT.SHAPE.TWO_TRIANGLES), as a
-// template over a point model. Used by half_open_square.cpp and point_mutants.cpp.
+// template over a point model. Used by half_open_square.cpp and mutants.cpp.
 
 #pragma once
 

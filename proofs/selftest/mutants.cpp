@@ -9,13 +9,10 @@
 // Expected: every mutant REFUTED; exit status 0 iff so.
 
 #include <cstdint>
-#include <functional>
-#include <iostream>
-#include <string>
-#include <vector>
 
 #include "fixed/edge_value_no_overflow.hpp"
 #include "support/kernel_model.hpp"
+#include "support/mutation.hpp"
 #include "support/prover.hpp"
 #include "support/sym.hpp"
 #include "tri/bias_form.hpp"
@@ -110,41 +107,28 @@ struct TiesNeverInside : KernelModel {
   template <class S> static SymBool inside(const S& e, const SymBool&) { return e > S(0); }
 };
 
-struct Run {
-  std::string obligation;
-  std::function<void(Prover&)> prove;
-  std::vector<Constant> constants;
-};
-
-template <class F> Run run_edge_value_no_overflow() {
-  std::vector<Constant> k = F::constants();
-  k.push_back({"model kMinRaw", F::kMinRaw, Unit::kCoordRaw});
-  k.push_back({"model kMaxRaw", F::kMaxRaw, Unit::kCoordRaw});
-  return {"fixed/edge_value_no_overflow", prove_edge_value_no_overflow<F>, k};
+// One run per obligation: broken model F against the obligation's template.
+template <class F> MutantRun run_edge_value_no_overflow() {
+  return {F::kName,
+          "fixed/edge_value_no_overflow",
+          prove_edge_value_no_overflow<F>,
+          {{"model kMinRaw", F::kMinRaw, Unit::kCoordRaw},
+           {"model kMaxRaw", F::kMaxRaw, Unit::kCoordRaw}}};
 }
-template <class F> Run run_top_left_matches_spec() {
-  return {"tri/top_left_matches_spec", prove_top_left_matches_spec<F>, F::constants()};
+template <class F> MutantRun run_top_left_matches_spec() {
+  return {F::kName, "tri/top_left_matches_spec", prove_top_left_matches_spec<F>};
 }
-template <class F> Run run_shared_edge_exactly_once() {
-  return {"tri/shared_edge_exactly_once", prove_shared_edge_exactly_once<F>, F::constants()};
+template <class F> MutantRun run_shared_edge_exactly_once() {
+  return {F::kName, "tri/shared_edge_exactly_once", prove_shared_edge_exactly_once<F>};
 }
-template <class F> Run run_bias_form() {
-  return {"tri/bias_form", prove_bias_form<F>, F::constants()};
+template <class F> MutantRun run_bias_form() {
+  return {F::kName, "tri/bias_form", prove_bias_form<F>};
 }
-template <class F> Run run_incremental_step() {
-  return {"tri/incremental_step", prove_incremental_step<F>, F::constants()};
+template <class F> MutantRun run_incremental_step() {
+  return {F::kName, "tri/incremental_step", prove_incremental_step<F>};
 }
-template <class F> Run run_degenerate_covers_nothing() {
-  return {"tri/degenerate_covers_nothing", prove_degenerate_covers_nothing<F>, F::constants()};
-}
-
-struct Mutant {
-  std::string name;
-  std::vector<Run> must_refute;
-};
-
-template <class F> Mutant mutant(std::vector<Run> runs) {
-  return Mutant{F::kName, std::move(runs)};
+template <class F> MutantRun run_degenerate_covers_nothing() {
+  return {F::kName, "tri/degenerate_covers_nothing", prove_degenerate_covers_nothing<F>};
 }
 
 } // namespace
@@ -152,46 +136,21 @@ template <class F> Mutant mutant(std::vector<Run> runs) {
 
 int main() {
   using namespace rastrules::proofs;
-  const std::vector<Mutant> mutants = {
-      mutant<TopRuleYUp>({run_top_left_matches_spec<TopRuleYUp>()}),
-      mutant<LeftRuleMirrored>({run_top_left_matches_spec<LeftRuleMirrored>()}),
-      mutant<HorizontalAlwaysInclusive>(
-          {run_top_left_matches_spec<HorizontalAlwaysInclusive>(),
-           run_shared_edge_exactly_once<HorizontalAlwaysInclusive>(),
-           run_degenerate_covers_nothing<HorizontalAlwaysInclusive>()}),
-      mutant<BiasSwapped>({run_bias_form<BiasSwapped>()}),
-      mutant<Int32Accumulator>({run_edge_value_no_overflow<Int32Accumulator>(),
-                                run_incremental_step<Int32Accumulator>()}),
-      mutant<RangeTooWide>({run_edge_value_no_overflow<RangeTooWide>()}),
-      mutant<StepXSignWrong>({run_incremental_step<StepXSignWrong>()}),
-      mutant<StepYUnscaled>({run_incremental_step<StepYUnscaled>()}),
-      mutant<NoNormalisation>({run_shared_edge_exactly_once<NoNormalisation>()}),
-      mutant<TiesNeverInside>({run_shared_edge_exactly_once<TiesNeverInside>()}),
-  };
-
-  std::vector<std::string> summary;
-  int survived = 0;
-  for (const Mutant& m : mutants) {
-    for (const Run& r : m.must_refute) {
-      std::cout << "\n=== mutant: " << m.name << " / " << r.obligation << "\n";
-      Domain dom;
-      Prover pr(dom, r.obligation + " [mutant: " + m.name + "]", "(self-check)",
-                {"SNAP.VERTEX.RANGE"}, r.constants);
-      r.prove(pr);
-      int refuted = 0;
-      for (const auto& [theorem, status] : pr.results())
-        refuted += status == Status::kRefuted;
-      const bool killed = refuted > 0;
-      survived += killed ? 0 : 1;
-      summary.push_back(std::string(killed ? "REFUTED  " : "SURVIVED ") + m.name + " / " +
-                        r.obligation + " (" + std::to_string(refuted) + " of " +
-                        std::to_string(pr.results().size()) + " theorems refuted)");
-    }
-  }
-  std::cout << "\nmutation self-check:\n";
-  for (const std::string& line : summary)
-    std::cout << "  " << line << "\n";
-  std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " mutant runs refuted, "
-            << survived << " survived\n";
-  return survived == 0 ? 0 : 1;
+  return run_mutation_selfcheck("fixed, tri",
+                                {
+                                    run_top_left_matches_spec<TopRuleYUp>(),
+                                    run_top_left_matches_spec<LeftRuleMirrored>(),
+                                    run_top_left_matches_spec<HorizontalAlwaysInclusive>(),
+                                    run_shared_edge_exactly_once<HorizontalAlwaysInclusive>(),
+                                    run_degenerate_covers_nothing<HorizontalAlwaysInclusive>(),
+                                    run_bias_form<BiasSwapped>(),
+                                    run_edge_value_no_overflow<Int32Accumulator>(),
+                                    run_incremental_step<Int32Accumulator>(),
+                                    run_edge_value_no_overflow<RangeTooWide>(),
+                                    run_incremental_step<StepXSignWrong>(),
+                                    run_incremental_step<StepYUnscaled>(),
+                                    run_shared_edge_exactly_once<NoNormalisation>(),
+                                    run_shared_edge_exactly_once<TiesNeverInside>(),
+                                },
+                                KernelModel::constants(), {"SNAP.VERTEX.RANGE"});
 }

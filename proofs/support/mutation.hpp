@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// The mutation self-check runner: runs obligation templates against deliberately broken models
-// and passes only if each broken model is REFUTED by at least one theorem (a model that
-// survives means the proofs cannot see that kind of bug). Each run gets a fresh Domain and
-// Prover, so variable names never clash between runs.
+// The mutation self-check runner every <area>/mutants.cpp uses: runs obligation templates
+// against deliberately broken models and passes only if each run (one broken model, one
+// obligation) is REFUTED by at least one theorem (a model that survives means the proofs cannot
+// see that kind of bug). Each run gets a fresh Domain and Prover, so variable names never clash
+// between runs.
 
 #pragma once
 
@@ -10,6 +11,8 @@
 #include <functional>
 #include <iostream>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "support/prover.hpp"
@@ -17,29 +20,59 @@
 
 namespace rastrules::proofs {
 
-// One broken model and the obligations that must refute it.
+// The theorems one prover ran, as Prover::results() lists them.
+using TheoremResults = std::vector<std::pair<std::string, Status>>;
+
+// One broken model and the obligation that must refute it.
 struct MutantRun {
-  std::string name;
-  std::function<void(Prover&)> prove;
+  // `prove_fn` runs the obligation on the run's Prover: any callable taking a Prover&. One that
+  // also proves theorems with a prover of its own (line's NraProver) returns that prover's
+  // results, and they count too.
+  template <class Prove>
+  MutantRun(std::string mutant, std::string obligation_file, Prove prove_fn,
+            std::vector<Constant> more_constants = {})
+      : name(std::move(mutant)), obligation(std::move(obligation_file)),
+        extra_constants(std::move(more_constants)) {
+    if constexpr (std::is_void_v<std::invoke_result_t<Prove&, Prover&>>) {
+      prove = [fn = std::move(prove_fn)](Prover& pr) {
+        fn(pr);
+        return TheoremResults{};
+      };
+    } else {
+      prove = std::move(prove_fn);
+    }
+  }
+
+  std::string name;       // the broken model (its kName)
+  std::string obligation; // the obligation, as "<area>/<file>", e.g. "fast/lane_budget"
+  std::function<TheoremResults(Prover&)> prove;
+  // Printed after the self-check's constants (selftest: edge_value_no_overflow's model range).
+  std::vector<Constant> extra_constants;
 };
 
-// Runs every mutant (report header "<area> [mutant: <name>]"), prints one summary line per
-// mutant and the totals, and returns the process exit status: 0 iff no mutant survived.
+// Runs every mutant (report header "<obligation> [mutant: <name>]", with `assumes` and
+// `constants`), prints one summary line per run and the totals, and returns the process exit
+// status: 0 iff no run survived (and at least one ran).
 inline int run_mutation_selfcheck(const std::string& area, const std::vector<MutantRun>& runs,
-                                  const std::vector<Constant>& constants) {
+                                  const std::vector<Constant>& constants,
+                                  const std::vector<std::string>& assumes = {}) {
   int survived = 0;
   std::vector<std::string> summary;
   for (const MutantRun& r : runs) {
-    std::cout << "\n=== mutant: " << r.name << "\n";
+    const std::string run_name = r.name + " / " + r.obligation;
+    std::cout << "\n=== mutant: " << run_name << "\n";
+    std::vector<Constant> k = constants;
+    k.insert(k.end(), r.extra_constants.begin(), r.extra_constants.end());
     Domain dom;
-    Prover pr(dom, area + " [mutant: " + r.name + "]", "(self-check)", {}, constants);
-    r.prove(pr);
+    Prover pr(dom, r.obligation + " [mutant: " + r.name + "]", "(self-check)", assumes, k);
+    TheoremResults results = r.prove(pr);
+    results.insert(results.begin(), pr.results().begin(), pr.results().end());
     int refuted = 0;
-    for (const auto& result : pr.results())
+    for (const auto& result : results)
       refuted += result.second == Status::kRefuted ? 1 : 0;
     survived += refuted > 0 ? 0 : 1;
-    summary.push_back(std::string(refuted > 0 ? "REFUTED  " : "SURVIVED ") + r.name + " (" +
-                      std::to_string(refuted) + " of " + std::to_string(pr.results().size()) +
+    summary.push_back(std::string(refuted > 0 ? "REFUTED  " : "SURVIVED ") + run_name + " (" +
+                      std::to_string(refuted) + " of " + std::to_string(results.size()) +
                       " theorems refuted)");
   }
   std::cout << "\nmutation self-check (" << area << "):\n";

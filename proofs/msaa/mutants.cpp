@@ -7,12 +7,11 @@
 // Assumes: SCENE.TARGET.LIMITS, SNAP.VERTEX.RANGE (as the obligations do)
 // Expected: every mutant REFUTED; exit status 0 iff so.
 
-#include <functional>
-#include <iostream>
-#include <string>
+#include <cstdint>
 #include <vector>
 
 #include "msaa/msaa_proofs.hpp"
+#include "support/mutation.hpp"
 #include "support/prover.hpp"
 
 namespace rastrules::proofs {
@@ -77,50 +76,26 @@ template <class F> void all_position_theorems(Prover& pr) {
   prove_sample_position<F>(pr);
 }
 
-struct Mutant {
-  std::string name;
-  std::string obligation;
-  std::function<void(Prover&)> prove;
-};
-
 } // namespace
 } // namespace rastrules::proofs
 
 int main() {
   using namespace rastrules::proofs;
-  const std::vector<Mutant> mutants = {
-      {PositionsInInt16::kName, "msaa/sample_position", all_position_theorems<PositionsInInt16>},
-      {GridUnitTooLarge::kName, "msaa/sample_position", all_position_theorems<GridUnitTooLarge>},
-      {OffsetsFromTheCorner::kName, "msaa/sample_position",
-       all_position_theorems<OffsetsFromTheCorner>},
-      // Theorems 1 and 2 only: theorem 3 (the edge budget) still holds there but takes Z3
-      // about 30 s outside the vertex range.
-      {TargetTooLarge::kName, "msaa/sample_position",
-       [](Prover& pr) { prove_sample_position<TargetTooLarge>(pr, false); }},
-      {QuadrantPattern::kName, "msaa/centroid_within", prove_centroid_within<QuadrantPattern>},
-      {MovedSample::kName, "msaa/centroid_within", prove_centroid_within<MovedSample>},
-  };
-  std::vector<std::string> summary;
-  int survived = 0;
-  for (const Mutant& m : mutants) {
-    std::cout << "\n=== mutant: " << m.name << " / " << m.obligation << "\n";
-    Domain dom;
-    Prover pr(dom, m.obligation + " [mutant: " + m.name + "]", "(self-check)",
-              {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE"}, MsaaKernelModel::constants());
-    m.prove(pr);
-    int refuted = 0;
-    for (const auto& [theorem, status] : pr.results())
-      refuted += status == Status::kRefuted;
-    const bool killed = refuted > 0;
-    survived += killed ? 0 : 1;
-    summary.push_back(std::string(killed ? "REFUTED  " : "SURVIVED ") + m.name + " (" +
-                      std::to_string(refuted) + " of " + std::to_string(pr.results().size()) +
-                      " theorems refuted)");
-  }
-  std::cout << "\nmsaa mutation self-check:\n";
-  for (const std::string& line : summary)
-    std::cout << "  " << line << "\n";
-  std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " mutants refuted, "
-            << survived << " survived\n";
-  return survived == 0 ? 0 : 1;
+  return run_mutation_selfcheck(
+      "msaa",
+      {
+          {PositionsInInt16::kName, "msaa/sample_position",
+           all_position_theorems<PositionsInInt16>},
+          {GridUnitTooLarge::kName, "msaa/sample_position",
+           all_position_theorems<GridUnitTooLarge>},
+          {OffsetsFromTheCorner::kName, "msaa/sample_position",
+           all_position_theorems<OffsetsFromTheCorner>},
+          // Theorems 1 and 2 only: theorem 3 (the edge budget) still holds there but takes Z3
+          // about 30 s outside the vertex range.
+          {TargetTooLarge::kName, "msaa/sample_position",
+           [](Prover& pr) { prove_sample_position<TargetTooLarge>(pr, false); }},
+          {QuadrantPattern::kName, "msaa/centroid_within", prove_centroid_within<QuadrantPattern>},
+          {MovedSample::kName, "msaa/centroid_within", prove_centroid_within<MovedSample>},
+      },
+      MsaaKernelModel::constants(), {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE"});
 }

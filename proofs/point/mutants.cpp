@@ -8,15 +8,12 @@
 // Expected: every mutant REFUTED; exit status 0 iff so.
 
 #include <array>
-#include <cstddef>
-#include <functional>
-#include <iostream>
-#include <string>
-#include <vector>
+#include <cstdint>
 
 #include "point/half_open_square.hpp"
 #include "point/point_model.hpp"
 #include "support/kernel_model.hpp"
+#include "support/mutation.hpp"
 #include "support/prover.hpp"
 #include "support/sym.hpp"
 
@@ -77,13 +74,9 @@ struct PointRangeTooWide : PointKernelModel {
   static constexpr std::int64_t kMaxPointCentreRaw = kMaxVertexRaw;
 };
 
-struct Mutant {
-  std::string name;
-  std::function<void(Prover&)> prove;
-};
-
-template <class F> Mutant mutant() {
-  return Mutant{F::kName, prove_point_half_open_square<F>};
+// The run of broken model F against the point obligation.
+template <class F> MutantRun mutant() {
+  return {F::kName, "point/half_open_square", prove_point_half_open_square<F>};
 }
 
 } // namespace
@@ -91,32 +84,15 @@ template <class F> Mutant mutant() {
 
 int main() {
   using namespace rastrules::proofs;
-  const std::vector<Mutant> mutants = {
-      mutant<GapOnDiagonal>(),     mutant<FlippedDiagonalWrongWinding>(),
-      mutant<OverlappingHalves>(), mutant<SquareTooSmall>(),
-      mutant<TiesNeverInside>(),   mutant<PointRangeTooWide>(),
-  };
-  std::vector<std::string> summary;
-  int survived = 0;
-  for (const Mutant& m : mutants) {
-    std::cout << "\n=== mutant: " << m.name << " / point/half_open_square\n";
-    Domain dom;
-    Prover pr(dom, "point/half_open_square [mutant: " + m.name + "]", "(self-check)",
-              {"POINT.RANGE", "SNAP.VERTEX.RANGE"}, PointKernelModel::constants());
-    m.prove(pr);
-    int refuted = 0;
-    for (const auto& [theorem, status] : pr.results())
-      refuted += status == Status::kRefuted;
-    const bool killed = refuted > 0;
-    survived += killed ? 0 : 1;
-    summary.push_back(std::string(killed ? "REFUTED  " : "SURVIVED ") + m.name + " (" +
-                      std::to_string(refuted) + " of " + std::to_string(pr.results().size()) +
-                      " theorems refuted)");
-  }
-  std::cout << "\npoint mutation self-check:\n";
-  for (const std::string& line : summary)
-    std::cout << "  " << line << "\n";
-  std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " mutants refuted, "
-            << survived << " survived\n";
-  return survived == 0 ? 0 : 1;
+  return run_mutation_selfcheck("point",
+                                {
+                                    mutant<GapOnDiagonal>(),
+                                    mutant<FlippedDiagonalWrongWinding>(),
+                                    mutant<OverlappingHalves>(),
+                                    mutant<SquareTooSmall>(),
+                                    mutant<TiesNeverInside>(),
+                                    mutant<PointRangeTooWide>(),
+                                },
+                                PointKernelModel::constants(),
+                                {"POINT.RANGE", "SNAP.VERTEX.RANGE"});
 }

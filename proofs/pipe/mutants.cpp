@@ -81,16 +81,17 @@ struct GuardBandNoMargin : PipeModel {
 
 int main() {
   using namespace rastrules::proofs;
-  return run_mutation_selfcheck("pipe",
-                                {
-                                    {WrongEdgeOrder::kName, prove_bary_sum<WrongEdgeOrder>},
-                                    {AreaReversed::kName, prove_bary_sum<AreaReversed>},
-                                    {BaryInt32::kName, prove_bary_sum<BaryInt32>},
-                                    {Coordinates2To26::kName, prove_bary_sum<Coordinates2To26>},
-                                    {UnormScale2n::kName, prove_depth_format<UnormScale2n>},
-                                    {UnormTruncate::kName, prove_depth_format<UnormTruncate>},
-                                    {UnormInFloat::kName, prove_depth_format<UnormInFloat>},
-                                    {GuardBandNoMargin::kName, prove_guard_band<GuardBandNoMargin>},
-                                },
-                                PipeModel::constants());
+  return run_mutation_selfcheck(
+      "pipe",
+      {
+          {WrongEdgeOrder::kName, "pipe/bary_sum", prove_bary_sum<WrongEdgeOrder>},
+          {AreaReversed::kName, "pipe/bary_sum", prove_bary_sum<AreaReversed>},
+          {BaryInt32::kName, "pipe/bary_sum", prove_bary_sum<BaryInt32>},
+          {Coordinates2To26::kName, "pipe/bary_sum", prove_bary_sum<Coordinates2To26>},
+          {UnormScale2n::kName, "pipe/depth_format", prove_depth_format<UnormScale2n>},
+          {UnormTruncate::kName, "pipe/depth_format", prove_depth_format<UnormTruncate>},
+          {UnormInFloat::kName, "pipe/depth_format", prove_depth_format<UnormInFloat>},
+          {GuardBandNoMargin::kName, "pipe/guard_band", prove_guard_band<GuardBandNoMargin>},
+      },
+      PipeModel::constants(), {"SNAP.VERTEX.RANGE", "PIPE.DEPTH.CLAMP"});
 }

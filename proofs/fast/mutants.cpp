@@ -9,13 +9,9 @@
 // Assumes: SNAP.VERTEX.RANGE (as the obligations do)
 // Expected: every mutant REFUTED; exit status 0 iff so.
 
-#include <functional>
-#include <iostream>
-#include <string>
-#include <vector>
-
 #include "fast/batch_proofs.hpp"
 #include "fast/fast_proofs.hpp"
+#include "support/mutation.hpp"
 #include "support/prover.hpp"
 
 namespace rastrules::proofs {
@@ -148,69 +144,42 @@ struct SnapScale128 : SnapKernelModel {
   static constexpr float kScale = static_cast<float>(kSubpixelOne / 2);
 };
 
-struct Mutant {
-  std::string name;
-  std::string obligation;
-  std::function<void(Prover&)> prove;
-};
+// prove_batch_snap_simd over every biased exponent in one range, as batch_snap_simd.cpp runs it.
+template <class F> void snap_every_exponent(Prover& pr) {
+  prove_batch_snap_simd<F>(pr, {{0, 255}});
+}
 
 } // namespace
 } // namespace rastrules::proofs
 
 int main() {
   using namespace rastrules::proofs;
-  const std::vector<Mutant> mutants = {
-      {Tile64::kName, "fast/lane_budget", prove_lane_budget<Tile64>},
-      // The same tile size breaks the decision too: some |L| exceeds the clamp bound.
-      {Tile64::kName, "fast/lane_equivalence", prove_lane_equivalence<Tile64>},
-      {WideCoordsTile32::kName, "fast/lane_budget", prove_lane_budget<WideCoordsTile32>},
-      {Int16Lanes::kName, "fast/lane_budget", prove_lane_budget<Int16Lanes>},
-      {Clamp20::kName, "fast/lane_equivalence", prove_lane_equivalence<Clamp20>},
-      {QOffByOne::kName, "fast/lane_equivalence", prove_lane_equivalence<QOffByOne>},
-      {Shift7::kName, "fast/lane_equivalence", prove_lane_equivalence<Shift7>},
-      {BiasDropped::kName, "fast/lane_equivalence", prove_lane_equivalence<BiasDropped>},
-      {LaneMaxWrongCorner::kName, "fast/tile_classify", prove_tile_classify<LaneMaxWrongCorner>},
-      {LaneMinShort::kName, "fast/tile_classify", prove_tile_classify<LaneMinShort>},
-      {BatchSpanTwice::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchSpanTwice>},
-      {BatchLaneBits29::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchLaneBits29>},
-      {BatchOneUpTo24::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchOneUpTo24>},
-      {BatchShift7::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchShift7>},
-      {BatchPoisonPositive::kName, "fast/batch_small_i32 (lane bits)",
-       prove_lane_bits<BatchPoisonPositive>},
-      {SnapRoundTowardZero::kName, "fast/batch_snap_simd",
-       [](Prover& pr) {
-         prove_batch_snap_simd<SnapRoundTowardZero>(pr, {{0, 255}});
-       }},
-      {SnapHighestTooLarge::kName, "fast/batch_snap_simd",
-       [](Prover& pr) {
-         prove_batch_snap_simd<SnapHighestTooLarge>(pr, {{0, 255}});
-       }},
-      {SnapScale128::kName, "fast/batch_snap_simd",
-       [](Prover& pr) {
-         prove_batch_snap_simd<SnapScale128>(pr, {{0, 255}});
-       }},
-  };
-  std::vector<std::string> summary;
-  int survived = 0;
-  for (const Mutant& m : mutants) {
-    std::cout << "\n=== mutant: " << m.name << " / " << m.obligation << "\n";
-    Domain dom;
-    Prover pr(dom, m.obligation + " [mutant: " + m.name + "]", "(self-check)",
-              {"SNAP.VERTEX.RANGE"}, FastKernelModel::constants());
-    m.prove(pr);
-    int refuted = 0;
-    for (const auto& [theorem, status] : pr.results())
-      refuted += status == Status::kRefuted;
-    const bool killed = refuted > 0;
-    survived += killed ? 0 : 1;
-    summary.push_back(std::string(killed ? "REFUTED  " : "SURVIVED ") + m.name + " (" +
-                      std::to_string(refuted) + " of " + std::to_string(pr.results().size()) +
-                      " theorems refuted)");
-  }
-  std::cout << "\nfast mutation self-check:\n";
-  for (const std::string& line : summary)
-    std::cout << "  " << line << "\n";
-  std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " mutants refuted, "
-            << survived << " survived\n";
-  return survived == 0 ? 0 : 1;
+  return run_mutation_selfcheck(
+      "fast",
+      {
+          {Tile64::kName, "fast/lane_budget", prove_lane_budget<Tile64>},
+          // The same tile size breaks the decision too: some |L| exceeds the clamp bound.
+          {Tile64::kName, "fast/lane_equivalence", prove_lane_equivalence<Tile64>},
+          {WideCoordsTile32::kName, "fast/lane_budget", prove_lane_budget<WideCoordsTile32>},
+          {Int16Lanes::kName, "fast/lane_budget", prove_lane_budget<Int16Lanes>},
+          {Clamp20::kName, "fast/lane_equivalence", prove_lane_equivalence<Clamp20>},
+          {QOffByOne::kName, "fast/lane_equivalence", prove_lane_equivalence<QOffByOne>},
+          {Shift7::kName, "fast/lane_equivalence", prove_lane_equivalence<Shift7>},
+          {BiasDropped::kName, "fast/lane_equivalence", prove_lane_equivalence<BiasDropped>},
+          {LaneMaxWrongCorner::kName, "fast/tile_classify",
+           prove_tile_classify<LaneMaxWrongCorner>},
+          {LaneMinShort::kName, "fast/tile_classify", prove_tile_classify<LaneMinShort>},
+          {BatchSpanTwice::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchSpanTwice>},
+          {BatchLaneBits29::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchLaneBits29>},
+          {BatchOneUpTo24::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchOneUpTo24>},
+          {BatchShift7::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchShift7>},
+          {BatchPoisonPositive::kName, "fast/batch_small_i32 (lane bits)",
+           prove_lane_bits<BatchPoisonPositive>},
+          {SnapRoundTowardZero::kName, "fast/batch_snap_simd",
+           snap_every_exponent<SnapRoundTowardZero>},
+          {SnapHighestTooLarge::kName, "fast/batch_snap_simd",
+           snap_every_exponent<SnapHighestTooLarge>},
+          {SnapScale128::kName, "fast/batch_snap_simd", snap_every_exponent<SnapScale128>},
+      },
+      FastKernelModel::constants(), {"SNAP.VERTEX.RANGE"});
 }

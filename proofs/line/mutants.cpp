@@ -6,13 +6,8 @@
 // Cites no rule: it is evidence about the proofs, not about the kernel.
 // Expected: every mutant REFUTED; exit status 0 iff so.
 
-#include <array>
-#include <functional>
-#include <iostream>
-#include <string>
-#include <vector>
-
 #include "line/diamond_exit.hpp"
+#include "support/mutation.hpp"
 #include "support/prover.hpp"
 
 namespace rastrules::proofs {
@@ -109,16 +104,15 @@ struct MeetsUpperEdgesClosed : DiamondKernelModel {
   }
 };
 
-struct Mutant {
-  std::string name;
-  std::function<void(Prover&, NraProver&)> run;
-};
-
-template <class F> Mutant mutant() {
-  return Mutant{F::kName, [](Prover& pr, NraProver& nra) {
-                  prove_d3d_diamond_exit<F>(pr, nra);
-                  prove_d3d_meets_witness<F>(pr, nra);
-                }};
+// The run of broken model F against both diamond-exit obligations; their NraProver theorems
+// count too.
+template <class F> MutantRun mutant() {
+  return {F::kName, "line/diamond_exit_matches_spec", [](Prover& pr) {
+            NraProver nra(pr.ctx());
+            prove_d3d_diamond_exit<F>(pr, nra);
+            prove_d3d_meets_witness<F>(pr, nra);
+            return nra.results();
+          }};
 }
 
 } // namespace
@@ -126,37 +120,15 @@ template <class F> Mutant mutant() {
 
 int main() {
   using namespace rastrules::proofs;
-  const std::vector<Mutant> mutants = {
-      mutant<RightCornerNeverIncluded>(),
-      mutant<MajorSwapped>(),
-      mutant<UpperEdgesIncluded>(),
-      mutant<OpenDiamond>(),
-      mutant<ClosedDiamond>(),
-      mutant<LowerLeftExcluded>(),
-      mutant<MeetsUpperEdgesClosed>(),
-  };
-  std::vector<std::string> summary;
-  int survived = 0;
-  for (const Mutant& m : mutants) {
-    std::cout << "\n=== mutant: " << m.name << "\n";
-    Domain dom;
-    Prover pr(dom, "line/diamond_exit_matches_spec [mutant: " + m.name + "]", "(self-check)", {},
-              kernel_constants());
-    NraProver nra(dom.ctx());
-    m.run(pr, nra);
-    int refuted = 0;
-    for (const auto& [theorem, status] : pr.results())
-      refuted += status == Status::kRefuted;
-    for (const auto& [theorem, status] : nra.results())
-      refuted += status == Status::kRefuted;
-    survived += refuted > 0 ? 0 : 1;
-    summary.push_back(std::string(refuted > 0 ? "REFUTED  " : "SURVIVED ") + m.name + " (" +
-                      std::to_string(refuted) + " theorems refuted)");
-  }
-  std::cout << "\nmutation self-check (line):\n";
-  for (const std::string& line : summary)
-    std::cout << "  " << line << "\n";
-  std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " passed, " << survived
-            << " failed\n";
-  return survived == 0 ? 0 : 1;
+  return run_mutation_selfcheck("line",
+                                {
+                                    mutant<RightCornerNeverIncluded>(),
+                                    mutant<MajorSwapped>(),
+                                    mutant<UpperEdgesIncluded>(),
+                                    mutant<OpenDiamond>(),
+                                    mutant<ClosedDiamond>(),
+                                    mutant<LowerLeftExcluded>(),
+                                    mutant<MeetsUpperEdgesClosed>(),
+                                },
+                                kernel_constants());
 }

@@ -5,12 +5,10 @@
 // rule: LINE.AA.FRAGMENT, LINE.AA.BLEND
 // Expected: every mutant REFUTED; exit status 0 iff so.
 
-#include <functional>
-#include <iostream>
-#include <string>
-#include <vector>
+#include <cstdint>
 
 #include "line_aa/aa_formulas.hpp"
+#include "support/mutation.hpp"
 #include "support/prover.hpp"
 
 namespace rastrules::proofs {
@@ -50,43 +48,19 @@ struct BlendInt32 : AAModel {
   using Acc = Sym<std::int32_t>;
 };
 
-struct Run {
-  std::string name;
-  std::function<void(Prover&)> prove;
-};
-
 } // namespace
 } // namespace rastrules::proofs
 
 int main() {
   using namespace rastrules::proofs;
-  const std::vector<Run> runs = {
-      {SqrtZeroLess::kName, prove_times_sqrt_less<SqrtZeroLess>},
-      {SqrtNonStrict::kName, prove_times_sqrt_less<SqrtNonStrict>},
-      {SqrtNoSign::kName, prove_times_sqrt_less<SqrtNoSign>},
-      {BlendSwapped::kName, prove_blend<BlendSwapped>},
-      {BlendInt32::kName, prove_blend<BlendInt32>},
-  };
-  int survived = 0;
-  std::vector<std::string> summary;
-  for (const Run& r : runs) {
-    std::cout << "\n=== mutant: " << r.name << "\n";
-    Domain dom;
-    Prover pr(dom, "line_aa/aa_formulas [mutant: " + r.name + "]", "(self-check)", {},
-              kernel_constants());
-    r.prove(pr);
-    int refuted = 0;
-    for (const auto& [theorem, status] : pr.results())
-      refuted += status == Status::kRefuted;
-    survived += refuted > 0 ? 0 : 1;
-    summary.push_back(std::string(refuted > 0 ? "REFUTED  " : "SURVIVED ") + r.name + " (" +
-                      std::to_string(refuted) + " of " + std::to_string(pr.results().size()) +
-                      " theorems refuted)");
-  }
-  std::cout << "\nmutation self-check (line_aa):\n";
-  for (const std::string& line : summary)
-    std::cout << "  " << line << "\n";
-  std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " mutant runs refuted, "
-            << survived << " survived\n";
-  return survived == 0 ? 0 : 1;
+  return run_mutation_selfcheck(
+      "line_aa",
+      {
+          {SqrtZeroLess::kName, "line_aa/aa_formulas", prove_times_sqrt_less<SqrtZeroLess>},
+          {SqrtNonStrict::kName, "line_aa/aa_formulas", prove_times_sqrt_less<SqrtNonStrict>},
+          {SqrtNoSign::kName, "line_aa/aa_formulas", prove_times_sqrt_less<SqrtNoSign>},
+          {BlendSwapped::kName, "line_aa/aa_formulas", prove_blend<BlendSwapped>},
+          {BlendInt32::kName, "line_aa/aa_formulas", prove_blend<BlendInt32>},
+      },
+      kernel_constants());
 }
