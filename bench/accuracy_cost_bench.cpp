@@ -180,8 +180,7 @@ void BM_OracleLines(benchmark::State& st) {
   for (auto _ : st) {
     n = 0;
     for (const auto& p : scene.primitives) {
-      n += rastrules::oracle::aliased_line_pixels(raw_of(p.v[0]), raw_of(p.v[1]), "d3d-diamond",
-                                                  size, size)
+      n += rastrules::oracle::aliased_line_pixels(raw_of(p.v[0]), raw_of(p.v[1]), "d3d", size, size)
                .size();
     }
     benchmark::DoNotOptimize(n);

@@ -309,7 +309,7 @@ std::vector<std::string> compare_with_oracles(const Scene& scene, const Prepared
           }
         } else {
           const std::string name =
-              ps.line_mode == LineMode::kD3DDiamond ? "d3d-diamond" : "vulkan-bresenham";
+              ps.line_mode == LineMode::kD3DDiamond ? "d3d" : "vulkan-bresenham";
           // The pixels of oracle::aliased_line_pixels, asked only of candidates.
           for (std::int32_t y = 0; y < scene.height; ++y) {
             for (std::int32_t x = 0; x < scene.width; ++x) {

@@ -2,28 +2,18 @@
 // Run-time choice of the fast traversal's instruction set (FAST.ISA.DISPATCH).
 
 #include "rastrules/isa.hpp"
+#include "rastrules/names.hpp"
 
 #include <cstdlib>
 
 namespace rastrules {
 
 std::string_view to_string(Isa isa) {
-  switch (isa) {
-  case Isa::kScalar:
-    return "scalar";
-  case Isa::kAvx2:
-    return "avx2";
-  case Isa::kAvx512:
-    return "avx512";
-  }
-  return "?";
+  return name_of(isa);
 }
 
 std::optional<Isa> parse_isa(std::string_view name) {
-  for (Isa isa : {Isa::kScalar, Isa::kAvx2, Isa::kAvx512})
-    if (name == to_string(isa))
-      return isa;
-  return std::nullopt;
+  return from_name<Isa>(name);
 }
 
 std::optional<Isa> isa_cap() {
@@ -71,15 +61,11 @@ Isa effective_isa(const RenderOptions& options) {
 }
 
 std::string_view to_string(Traversal t) {
-  return t == Traversal::kPlain ? "plain" : "fast";
+  return name_of(t);
 }
 
 std::optional<Traversal> parse_traversal(std::string_view name) {
-  if (name == "plain")
-    return Traversal::kPlain;
-  if (name == "fast")
-    return Traversal::kFast;
-  return std::nullopt;
+  return from_name<Traversal>(name);
 }
 
 } // namespace rastrules

@@ -15,21 +15,12 @@
 #include "rastrules/formula/diamond.hpp"
 #include "rastrules/line.hpp"
 #include "rastrules/line_aliased.hpp"
+#include "rastrules/names.hpp"
 
 namespace rastrules {
 
 std::string_view to_string(LineMode m) {
-  switch (m) {
-  case LineMode::kD3DDiamond:
-    return "d3d-diamond";
-  case LineMode::kVulkanBresenham:
-    return "vulkan-bresenham";
-  case LineMode::kQuadWide:
-    return "quad-wide";
-  case LineMode::kQuadNarrow:
-    return "quad-narrow";
-  }
-  return "?";
+  return name_of(m);
 }
 
 std::string_view to_string(DiamondFeature f) {

@@ -5,6 +5,7 @@
 //             MSAA.RESOLVE.AVERAGE
 
 #include "rastrules/msaa.hpp"
+#include "rastrules/names.hpp"
 
 #include <algorithm>
 #include <cstddef>
@@ -15,25 +16,11 @@
 namespace rastrules {
 
 std::string_view to_string(PatternKind k) {
-  switch (k) {
-  case PatternKind::kStandard:
-    return "standard";
-  case PatternKind::kCenter:
-    return "center";
-  case PatternKind::kCustom:
-    return "custom";
-  }
-  return "unknown";
+  return name_of(k);
 }
 
 std::string_view to_string(CentroidRule r) {
-  switch (r) {
-  case CentroidRule::kD3D11:
-    return "d3d11";
-  case CentroidRule::kD3D10:
-    return "d3d10";
-  }
-  return "unknown";
+  return name_of(r);
 }
 
 std::string_view to_string(CentroidBranch b) {
@@ -53,25 +40,11 @@ std::string_view to_string(CentroidBranch b) {
 }
 
 std::string_view to_string(ShadingRate r) {
-  switch (r) {
-  case ShadingRate::kPixel:
-    return "pixel";
-  case ShadingRate::kSample:
-    return "sample";
-  }
-  return "unknown";
+  return name_of(r);
 }
 
 std::string_view to_string(DerivativeMode d) {
-  switch (d) {
-  case DerivativeMode::kNone:
-    return "none";
-  case DerivativeMode::kFine:
-    return "fine";
-  case DerivativeMode::kCoarse:
-    return "coarse";
-  }
-  return "unknown";
+  return name_of(d);
 }
 
 namespace {

@@ -15,6 +15,7 @@
 #include "rastrules/formula/depth.hpp"
 #include "rastrules/formula/edge.hpp"
 #include "rastrules/msaa.hpp"
+#include "rastrules/names.hpp"
 
 namespace rastrules::pipe {
 
@@ -293,27 +294,11 @@ Barycentrics barycentrics(const std::array<Vec2, 3>& v, Vec2 s) {
 }
 
 std::string_view to_string(Interpolation i) {
-  switch (i) {
-  case Interpolation::kPerspective:
-    return "perspective";
-  case Interpolation::kLinear:
-    return "linear";
-  case Interpolation::kFlat:
-    return "flat";
-  }
-  return "?";
+  return name_of(i);
 }
 
 std::string_view to_string(Location l) {
-  switch (l) {
-  case Location::kCenter:
-    return "center";
-  case Location::kCentroid:
-    return "centroid";
-  case Location::kSample:
-    return "sample";
-  }
-  return "?";
+  return name_of(l);
 }
 
 namespace {
@@ -367,37 +352,11 @@ float interpolate_linear(const Barycentrics& b, const std::array<float, 3>& a) {
 // Depth
 
 std::string_view to_string(DepthFormat f) {
-  switch (f) {
-  case DepthFormat::kD16:
-    return "d16";
-  case DepthFormat::kD24:
-    return "d24";
-  case DepthFormat::kD32F:
-    return "d32f";
-  }
-  return "?";
+  return name_of(f);
 }
 
 std::string_view to_string(CompareFunc f) {
-  switch (f) {
-  case CompareFunc::kNever:
-    return "never";
-  case CompareFunc::kLess:
-    return "less";
-  case CompareFunc::kEqual:
-    return "equal";
-  case CompareFunc::kLessEqual:
-    return "less_equal";
-  case CompareFunc::kGreater:
-    return "greater";
-  case CompareFunc::kNotEqual:
-    return "not_equal";
-  case CompareFunc::kGreaterEqual:
-    return "greater_equal";
-  case CompareFunc::kAlways:
-    return "always";
-  }
-  return "?";
+  return name_of(f);
 }
 
 // rule: PIPE.DEPTH.INTERP

@@ -15,6 +15,7 @@
 #include <string>
 #include <tuple>
 
+#include "rastrules/names.hpp"
 #include "rastrules/point.hpp"
 #include "rastrules/raster/fast.hpp"
 #include "rastrules/raster/walk.hpp"
@@ -23,39 +24,15 @@
 namespace rastrules {
 
 std::string_view to_string(FillConvention f) {
-  switch (f) {
-  case FillConvention::kTopLeft:
-    return "top-left";
-  case FillConvention::kTopRight:
-    return "top-right";
-  case FillConvention::kBottomLeft:
-    return "bottom-left";
-  case FillConvention::kBottomRight:
-    return "bottom-right";
-  }
-  return "unknown";
+  return name_of(f);
 }
 
 std::string_view to_string(CullMode c) {
-  switch (c) {
-  case CullMode::kNone:
-    return "none";
-  case CullMode::kBack:
-    return "back";
-  case CullMode::kFront:
-    return "front";
-  }
-  return "unknown";
+  return name_of(c);
 }
 
 std::string_view to_string(FrontFace f) {
-  switch (f) {
-  case FrontFace::kClockwise:
-    return "cw";
-  case FrontFace::kCounterClockwise:
-    return "ccw";
-  }
-  return "unknown";
+  return name_of(f);
 }
 
 std::string_view to_string(TriangleStatus s) {
@@ -73,17 +50,7 @@ std::string_view to_string(TriangleStatus s) {
 }
 
 std::string_view to_string(PrimitiveType t) {
-  switch (t) {
-  case PrimitiveType::kTriangle:
-    return "triangle";
-  case PrimitiveType::kPoint:
-    return "point";
-  case PrimitiveType::kLine:
-    return "line";
-  case PrimitiveType::kLineStrip:
-    return "line_strip";
-  }
-  return "unknown";
+  return name_of(t);
 }
 
 Primitive make_triangle(const std::array<FloatPoint, 3>& v) {

@@ -165,7 +165,7 @@ bool aliased_line_covers(const LineRaw& ra, const LineRaw& rb, const std::string
   // rule: LINE.ZERO_LENGTH
   if (a == b)
     return false;
-  if (mode == "d3d-diamond") {
+  if (mode == "d3d") {
     // rule: LINE.MAJOR.AXIS
     const Q dx = b.x() - a.x(), dy = b.y() - a.y();
     const bool x_major = dx != 0 && dy / dx >= Q(-1) && dy / dx <= Q(1);

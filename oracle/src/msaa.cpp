@@ -118,10 +118,8 @@ struct Unit {
 };
 
 std::string aliased_mode(const std::string& line_mode) {
-  if (line_mode == "d3d")
-    return "d3d-diamond";
-  if (line_mode == "vulkan-bresenham")
-    return "vulkan-bresenham";
+  if (line_mode == "d3d" || line_mode == "vulkan-bresenham")
+    return line_mode;
   throw std::invalid_argument("oracle: unknown line mode '" + line_mode + "'");
 }
 

@@ -222,7 +222,7 @@ TEST(LineExplain, NamesTheFeaturesAndTheDecision) {
   const LineDiamondDecision end = explain_aliased_line_pixel(a, b, kVk, 4, 2);
   EXPECT_TRUE(end.end_inside);
   EXPECT_FALSE(end.covered);
-  EXPECT_EQ(to_string(LineMode::kD3DDiamond), "d3d-diamond");
+  EXPECT_EQ(to_string(LineMode::kD3DDiamond), "d3d");
   EXPECT_EQ(to_string(LineMode::kVulkanBresenham), "vulkan-bresenham");
 }
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The lines of D3D11.3's aliased-line diagram (D3D11_3_LineRast.png), reproduced under the
-// d3d-diamond profile. The diagram is a 17 x 16 pixel grid; end points were read off the
+// d3d profile. The diagram is a 17 x 16 pixel grid; end points were read off the
 // picture (dot = start or strip interior, square = end; every coordinate a multiple of 1/8 px)
 // and the covered pixels are the grey cells next to each line. kDiagramGrey is the picture's
 // grey map, row by row, so that every expectation is also checked against the picture itself.

@@ -62,7 +62,7 @@ TEST(CoverageGaps, PrepareChecksVertexCountsOnItsOwn) {
 
 // rule: SCENE.LINE_MODE
 TEST(CoverageGaps, LineModeNames) {
-  EXPECT_EQ(to_string(LineMode::kD3DDiamond), "d3d-diamond");
+  EXPECT_EQ(to_string(LineMode::kD3DDiamond), "d3d");
   EXPECT_EQ(to_string(LineMode::kVulkanBresenham), "vulkan-bresenham");
   EXPECT_EQ(to_string(LineMode::kQuadWide), "quad-wide");
   EXPECT_EQ(to_string(LineMode::kQuadNarrow), "quad-narrow");

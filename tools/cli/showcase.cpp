@@ -25,6 +25,7 @@
 #include "rastrules/io/image.hpp"
 #include "rastrules/io/picture.hpp"
 #include "rastrules/io/scene_json.hpp"
+#include "rastrules/names.hpp"
 #include "rastrules/oracle/line.hpp"
 #include "rastrules/oracle/line_aa.hpp"
 #include "rastrules/oracle/msaa.hpp"
@@ -137,7 +138,7 @@ bool line_oracle(const std::array<std::int64_t, 2>& a, const std::array<std::int
     return true;
   }
   check.used("line oracle (aliased_line_pixels)");
-  const std::string name = mode == LineMode::kD3DDiamond ? "d3d-diamond" : "vulkan-bresenham";
+  const std::string name(name_of(mode));
   for (const auto& px : oracle::aliased_line_pixels(a, b, name, scene.width, scene.height)) {
     out.push_back(Key{px[1], px[0], seg});
   }

@@ -34,6 +34,7 @@
 #include <nlohmann/json.hpp>
 
 #include "rastrules/fixed.hpp"
+#include "rastrules/names.hpp"
 #include "rastrules/snap.hpp"
 
 namespace rastrules::io {
@@ -255,41 +256,6 @@ constexpr std::array<KeySpec, 3> kAttributeKeys = {
      {"interpolation", Slot::kAttributeInterpolation, false},
      {"location", Slot::kAttributeLocation, false}}};
 
-// The scene-file names of the pipeline enumerations (SCENE.PIPELINE).
-constexpr std::array<std::pair<std::string_view, pipe::Interpolation>, 3> kInterpolationNames = {
-    {{"perspective", pipe::Interpolation::kPerspective},
-     {"linear", pipe::Interpolation::kLinear},
-     {"flat", pipe::Interpolation::kFlat}}};
-constexpr std::array<std::pair<std::string_view, pipe::Location>, 3> kLocationNames = {
-    {{"center", pipe::Location::kCenter},
-     {"centroid", pipe::Location::kCentroid},
-     {"sample", pipe::Location::kSample}}};
-constexpr std::array<std::pair<std::string_view, pipe::DepthFormat>, 3> kDepthFormatNames = {
-    {{"d16", pipe::DepthFormat::kD16},
-     {"d24", pipe::DepthFormat::kD24},
-     {"d32f", pipe::DepthFormat::kD32F}}};
-constexpr std::array<std::pair<std::string_view, pipe::CompareFunc>, 8> kCompareFuncNames = {
-    {{"never", pipe::CompareFunc::kNever},
-     {"less", pipe::CompareFunc::kLess},
-     {"equal", pipe::CompareFunc::kEqual},
-     {"less_equal", pipe::CompareFunc::kLessEqual},
-     {"greater", pipe::CompareFunc::kGreater},
-     {"not_equal", pipe::CompareFunc::kNotEqual},
-     {"greater_equal", pipe::CompareFunc::kGreaterEqual},
-     {"always", pipe::CompareFunc::kAlways}}};
-constexpr std::array<std::pair<std::string_view, pipe::Provoking>, 2> kProvokingNames = {
-    {{"first", pipe::Provoking::kFirst}, {"last", pipe::Provoking::kLast}}};
-
-// Returns the scene-file name of e in names ("unknown" when absent).
-template <class Enum, std::size_t N>
-std::string_view name_of(const std::array<std::pair<std::string_view, Enum>, N>& names, Enum e) {
-  for (const auto& [name, value] : names) {
-    if (value == e)
-      return name;
-  }
-  return "unknown";
-}
-
 // The pipeline keys of one primitive, kept beside it only when it has any.
 struct PipeExtras {
   std::vector<pipe::Vec4f> pos;
@@ -297,20 +263,9 @@ struct PipeExtras {
   std::vector<std::vector<float>> attr;
 };
 
-// The scene-file names of the multisampling enumerations (SCENE.MSAA).
-constexpr std::array<std::pair<std::string_view, CentroidRule>, 2> kCentroidNames = {
-    {{"d3d11", CentroidRule::kD3D11}, {"d3d10", CentroidRule::kD3D10}}};
-constexpr std::array<std::pair<std::string_view, ShadingRate>, 2> kShadingNames = {
-    {{"pixel", ShadingRate::kPixel}, {"sample", ShadingRate::kSample}}};
+// The multisampling words the reader accepts: "derivatives" has no "none" in a scene file.
 constexpr std::array<std::pair<std::string_view, DerivativeMode>, 2> kDerivativeNames = {
-    {{"fine", DerivativeMode::kFine}, {"coarse", DerivativeMode::kCoarse}}};
-
-// The scene-file names of the line modes (SCENE.LINE_MODE).
-constexpr std::array<std::pair<std::string_view, LineMode>, 4> kLineModeNames = {
-    {{"d3d", LineMode::kD3DDiamond},
-     {"vulkan-bresenham", LineMode::kVulkanBresenham},
-     {"quad-wide", LineMode::kQuadWide},
-     {"quad-narrow", LineMode::kQuadNarrow}}};
+    {Names<DerivativeMode>::table[1], Names<DerivativeMode>::table[2]}};
 
 // The vertex count a primitive type needs, for messages.
 std::string vertex_count_text(PrimitiveType t) {
@@ -666,28 +621,14 @@ private:
     case Slot::kHeight:
       return size(field, v, scene_.height);
     case Slot::kCull:
-      return enumeration(
-          field, v,
-          std::array<std::pair<std::string_view, CullMode>, 3>{
-              {{"none", CullMode::kNone}, {"back", CullMode::kBack}, {"front", CullMode::kFront}}},
-          scene_.state.cull);
+      return enumeration(field, v, Names<CullMode>::table, scene_.state.cull);
     case Slot::kFrontFace:
-      return enumeration(
-          field, v,
-          std::array<std::pair<std::string_view, FrontFace>, 2>{
-              {{"cw", FrontFace::kClockwise}, {"ccw", FrontFace::kCounterClockwise}}},
-          scene_.state.front_face);
+      return enumeration(field, v, Names<FrontFace>::table, scene_.state.front_face);
     case Slot::kFill:
-      return enumeration(field, v,
-                         std::array<std::pair<std::string_view, FillConvention>, 4>{
-                             {{"top-left", FillConvention::kTopLeft},
-                              {"top-right", FillConvention::kTopRight},
-                              {"bottom-left", FillConvention::kBottomLeft},
-                              {"bottom-right", FillConvention::kBottomRight}}},
-                         scene_.state.fill);
+      return enumeration(field, v, Names<FillConvention>::table, scene_.state.fill);
     case Slot::kLineMode:
       // rule: SCENE.LINE_MODE
-      return enumeration(field, v, kLineModeNames, scene_.line_mode);
+      return enumeration(field, v, Names<LineMode>::table, scene_.line_mode);
     case Slot::kPrimitives:
       if (v.kind != Kind::kArray)
         return type_error(field, "an array of primitives", v);
@@ -702,12 +643,9 @@ private:
     case Slot::kType:
       if (v.kind != Kind::kString)
         return type_error(field, "a string", v);
-      for (const PrimitiveType t : {PrimitiveType::kTriangle, PrimitiveType::kPoint,
-                                    PrimitiveType::kLine, PrimitiveType::kLineStrip}) {
-        if (v.text == to_string(t)) {
-          current_.type = t;
-          return true;
-        }
+      if (const auto t = from_name<PrimitiveType>(v.text)) {
+        current_.type = *t;
+        return true;
       }
       return fail(field, "unknown primitive type \"" + printable(v.text) +
                              "\" (expected \"triangle\", \"point\", \"line\" or \"line_strip\")");
@@ -736,11 +674,11 @@ private:
       }
       return type_error(field, "an integer in [1, " + std::to_string(kMaxSamples) + "]", v);
     case Slot::kSamplePattern:
-      if (v.kind == Kind::kString && v.text == "standard") {
+      if (v.kind == Kind::kString && v.text == name_of(PatternKind::kStandard)) {
         pattern_kind_ = PatternKind::kStandard;
         return true;
       }
-      if (v.kind == Kind::kString && v.text == "center") {
+      if (v.kind == Kind::kString && v.text == name_of(PatternKind::kCenter)) {
         pattern_kind_ = PatternKind::kCenter;
         return true;
       }
@@ -777,9 +715,9 @@ private:
       return type_error(field, "an integer in [0, 4294967295]", v);
     case Slot::kCentroid:
       scene_.msaa.has_centroid = true;
-      return enumeration(field, v, kCentroidNames, scene_.msaa.centroid_rule);
+      return enumeration(field, v, Names<CentroidRule>::table, scene_.msaa.centroid_rule);
     case Slot::kShading:
-      return enumeration(field, v, kShadingNames, scene_.msaa.shading);
+      return enumeration(field, v, Names<ShadingRate>::table, scene_.msaa.shading);
     case Slot::kQuads:
       if (v.kind != Kind::kBool)
         return type_error(field, "true or false", v);
@@ -845,9 +783,9 @@ private:
       pipe_.depth.emplace();
       return push(Ctx::kDepthObject, field);
     case Slot::kDepthFormat:
-      return enumeration(field, v, kDepthFormatNames, pipe_.depth->format);
+      return enumeration(field, v, Names<pipe::DepthFormat>::table, pipe_.depth->format);
     case Slot::kDepthFunc:
-      return enumeration(field, v, kCompareFuncNames, pipe_.depth->func);
+      return enumeration(field, v, Names<pipe::CompareFunc>::table, pipe_.depth->func);
     case Slot::kDepthWrite:
     case Slot::kDepthClip:
       if (v.kind != Kind::kBool)
@@ -888,11 +826,11 @@ private:
       attribute_.name = std::string(v.text);
       return true;
     case Slot::kAttributeInterpolation:
-      return enumeration(field, v, kInterpolationNames, attribute_.interpolation);
+      return enumeration(field, v, Names<pipe::Interpolation>::table, attribute_.interpolation);
     case Slot::kAttributeLocation:
-      return enumeration(field, v, kLocationNames, attribute_.location);
+      return enumeration(field, v, Names<pipe::Location>::table, attribute_.location);
     case Slot::kProvoking:
-      return enumeration(field, v, kProvokingNames, pipe_.provoking);
+      return enumeration(field, v, Names<pipe::Provoking>::table, pipe_.provoking);
     case Slot::kZ:
     case Slot::kW:
       if (v.kind != Kind::kArray) {
@@ -1299,11 +1237,7 @@ void append_escaped(std::string& out, unsigned char c) {
 } // namespace
 
 std::string_view line_mode_name(LineMode m) {
-  for (const auto& [name, mode] : kLineModeNames) {
-    if (mode == m)
-      return name;
-  }
-  return "unknown";
+  return name_of(m);
 }
 
 std::string printable(std::string_view s, std::size_t max_len) {
@@ -1394,19 +1328,19 @@ std::variant<Scene, pipe::PipeScene, SceneError> read_any_scene(std::string_view
 }
 
 std::string_view interpolation_name(pipe::Interpolation i) {
-  return name_of(kInterpolationNames, i);
+  return name_of(i);
 }
 std::string_view location_name(pipe::Location l) {
-  return name_of(kLocationNames, l);
+  return name_of(l);
 }
 std::string_view depth_format_name(pipe::DepthFormat f) {
-  return name_of(kDepthFormatNames, f);
+  return name_of(f);
 }
 std::string_view compare_func_name(pipe::CompareFunc f) {
-  return name_of(kCompareFuncNames, f);
+  return name_of(f);
 }
 std::string_view provoking_name(pipe::Provoking p) {
-  return name_of(kProvokingNames, p);
+  return name_of(p);
 }
 
 std::string json_string(std::string_view s) {

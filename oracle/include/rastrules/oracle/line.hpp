@@ -19,7 +19,7 @@ namespace rastrules::oracle {
 using LineRaw = std::array<std::int64_t, 2>;
 
 // Returns whether the aliased line from a to b (raw, snapped) covers pixel (px, py) under mode
-// "d3d-diamond" or "vulkan-bresenham" (spelled as to_string(LineMode) spells them).
+// "d3d" or "vulkan-bresenham" (spelled as spec/scene.md's line_mode spells them).
 bool aliased_line_covers(const LineRaw& a, const LineRaw& b, const std::string& mode,
                          std::int64_t px, std::int64_t py);
 
