@@ -5,6 +5,7 @@
 #                                    with their components the oracle's and io's headers
 #   lib/librastrules_kernel.a        rastrules::kernel
 #   lib/librastrules_oracle.a        rastrules::oracle  (component oracle: needs CGAL and GMP)
+#   lib/librastrules_check.a         rastrules::check   (component check: kernel against oracle)
 #   lib/librastrules_io.a            rastrules::io      (component io: needs libpng, nlohmann-json)
 #   lib/cmake/rastrules/             rastrulesConfig.cmake, its version file and target files
 #   lib/pkgconfig/rastrules.pc       the kernel for pkg-config users
@@ -16,22 +17,23 @@
 include(CMakePackageConfigHelpers)
 set(RASTRULES_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/rastrules)
 
-install(TARGETS rastrules_kernel EXPORT rastrulesKernelTargets
-        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/kernel/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(EXPORT rastrulesKernelTargets NAMESPACE rastrules:: DESTINATION ${RASTRULES_CMAKE_DIR})
-
-if(TARGET rastrules_oracle)
-  install(TARGETS rastrules_oracle EXPORT rastrulesOracleTargets
+# Installs a library, its headers and its export set rastrules<Export>Targets.
+function(rastrules_install_part target export include_dir)
+  install(TARGETS ${target} EXPORT rastrules${export}Targets
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/oracle/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-  install(EXPORT rastrulesOracleTargets NAMESPACE rastrules:: DESTINATION ${RASTRULES_CMAKE_DIR})
+  install(DIRECTORY ${include_dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(EXPORT rastrules${export}Targets NAMESPACE rastrules:: DESTINATION ${RASTRULES_CMAKE_DIR})
+endfunction()
+
+rastrules_install_part(rastrules_kernel Kernel ${PROJECT_SOURCE_DIR}/kernel/include)
+if(TARGET rastrules_oracle)
+  rastrules_install_part(rastrules_oracle Oracle ${PROJECT_SOURCE_DIR}/oracle/include)
+endif()
+if(TARGET rastrules_check)
+  rastrules_install_part(rastrules_check Check ${PROJECT_SOURCE_DIR}/check/include)
 endif()
 if(TARGET rastrules_io)
-  install(TARGETS rastrules_io EXPORT rastrulesIoTargets
-          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-  install(DIRECTORY ${PROJECT_SOURCE_DIR}/tools/io/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-  install(EXPORT rastrulesIoTargets NAMESPACE rastrules:: DESTINATION ${RASTRULES_CMAKE_DIR})
+  rastrules_install_part(rastrules_io Io ${PROJECT_SOURCE_DIR}/tools/io/include)
 endif()
 if(TARGET rastrules)
   install(TARGETS rastrules RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

@@ -18,6 +18,7 @@
 #include <variant>
 #include <vector>
 
+#include "rastrules/check/check.hpp"
 #include "rastrules/io/scene_json.hpp"
 #include "rastrules/scene.hpp"
 #include "support.hpp"
@@ -63,7 +64,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   std::vector<std::string> differences;
   try {
-    differences = fz::compare_with_oracles(scene, ps, kernel);
+    differences = rastrules::check::check_against_oracle(scene, ps, kernel).mismatches;
   } catch (const std::exception& e) {
     differences.push_back(std::string("the oracle failed: ") + e.what());
   }

@@ -4,10 +4,12 @@
 // never crash, leak or hit undefined behaviour, and
 // - an error names a field (or the parser's position);
 // - a pipeline scene that reads is written back to text that reads to the same scene;
-// - a small one that runs gives finite attributes, barycentrics summing to their area, stored
-//   depths inside the viewport's depth range, and the same result with every optimization as
-//   with none (PIPE.OPT.*).
+// - a small one that runs gives the same result with every optimization as with none
+//   (PIPE.OPT.*), finite attributes, barycentrics summing to their area, stored depths inside
+//   the viewport's depth range, and attributes and depths within the exact oracle's bounds
+//   (check::check_pipeline_values).
 // rule: SCENE.PIPELINE, SCENE.INPUT.ERRORS, PIPE.OPT.TILES, PIPE.INTERP.HORIZON, PIPE.DEPTH.CLAMP
+// rule: PIPE.INTERP.BOUND, PIPE.DEPTH.BOUND
 
 #include <cmath>
 #include <cstddef>
@@ -16,6 +18,7 @@
 #include <string_view>
 #include <variant>
 
+#include "rastrules/check/check.hpp"
 #include "rastrules/io/scene_json.hpp"
 #include "rastrules/pipeline.hpp"
 #include "support.hpp"
@@ -84,23 +87,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const kp::PipeResult& p = std::get<kp::PipeResult>(b);
   if (r.fragments != p.fragments || r.data != p.data || r.depth_buffer != p.depth_buffer)
     fail("the optimized result differs from the plain one (PIPE.OPT.*)", "", data, size);
-  const kp::Viewport vp = scene->viewport.value_or(kp::Viewport{
-      0, 0, static_cast<float>(scene->base.width), static_cast<float>(scene->base.height), 0, 1});
-  const kp::DepthFormat fmt = scene->depth ? scene->depth->format : kp::DepthFormat::kD24;
-  const kp::DepthValue lo = kp::to_depth_format(vp.min_depth, 0, 1, fmt);
-  const kp::DepthValue hi = kp::to_depth_format(vp.max_depth, 0, 1, fmt);
-  for (const kp::FragmentData& d : r.data) {
-    if (d.bary && d.bary->e[0] + d.bary->e[1] + d.bary->e[2] != d.bary->area)
-      fail("barycentrics that do not sum to the area (PIPE.BARY.SUM)", "", data, size);
-    for (const float v : d.attr)
-      if (!std::isfinite(v))
-        fail("an attribute that is not finite (PIPE.INTERP.HORIZON)", "", data, size);
-    for (const kp::DepthValue& z : d.depth) {
-      const bool ok = fmt == kp::DepthFormat::kD32F ? (z.f >= lo.f && z.f <= hi.f)
-                                                    : (z.unorm >= lo.unorm && z.unorm <= hi.unorm);
-      if (!ok)
-        fail("a stored depth outside the viewport's range (PIPE.DEPTH.CLAMP)", "", data, size);
-    }
-  }
+  // Invariants and the exact oracle's bounds, fragment by fragment (check/).
+  namespace check = rastrules::check;
+  const check::Mismatches values = check::check_pipeline_values(*scene, r, check::CheckOptions{1});
+  if (!values.agree())
+    fail("the result breaks a pipeline invariant or bound", values.mismatches.front(), data, size);
   return 0;
 }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Shared by the fuzz targets: a byte decoder (in the manner of libFuzzer's FuzzedDataProvider,
 // written here so that gcc builds need nothing from clang), the decoder of small scenes, the
-// comparison of the kernel with the exact oracles, and the failure report.
+// oracles' reading of a scene's validity, and the failure report. The comparison of the
+// kernel with the exact oracles is check::check_against_oracle (check/).
 
 #pragma once
 
@@ -45,17 +46,6 @@ inline constexpr std::size_t kMaxAaSegments = 2;
 // any raw 16.8 value of SNAP.VERTEX.RANGE, a rounding tie between two raw values, a few ulps
 // from a raw value, or arbitrary float32 bits (NaN, infinities, out of range).
 [[nodiscard]] Scene decode_scene(ByteReader& in);
-
-// Returns the differences (empty when none) between the kernel's fragments of `scene` and the
-// exact oracles: triangles against oracle::render, points against oracle::point_covers,
-// aliased lines against oracle::aliased_line_pixels, quadrilateral lines against
-// oracle::quad_line_covers, antialiased lines against oracle::aa_pixels (pixels exactly) and
-// oracle::aa_check (coverage within LINE.AA.PRECISION). Also checks the fragment list itself:
-// inside the target, sorted (SCENE.OUTPUT.FRAGMENTS), mask 1, seg on strips only, coverage on
-// antialiased lines only and in [1, 65536]. Preconditions: prepare(scene) succeeded.
-[[nodiscard]] std::vector<std::string> compare_with_oracles(const Scene& scene,
-                                                            const PreparedScene& ps,
-                                                            const std::vector<Fragment>& kernel);
 
 // Returns why `scene` is invalid by the oracles' reading of spec/scene.md (a coordinate that
 // does not snap, a point outside POINT.RANGE, aa outside line mode d3d, a wrong vertex count,

@@ -3,6 +3,8 @@
 
 #include "rastrules/gen/compare.hpp"
 
+#include "rastrules/check/check.hpp"
+
 #include <algorithm>
 #include <iterator>
 #include <sstream>
@@ -11,11 +13,7 @@
 namespace rastrules::gen {
 
 oracle::State to_oracle_state(const RasterState& s) {
-  oracle::State o;
-  o.cull = std::string(to_string(s.cull));
-  o.front_face = std::string(to_string(s.front_face));
-  o.fill = std::string(to_string(s.fill));
-  return o;
+  return check::oracle_state(s); // the one kernel->oracle adapter (check/)
 }
 
 oracle::Scene to_oracle_scene(const TriScene& s) {

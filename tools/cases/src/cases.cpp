@@ -12,9 +12,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "rastrules/check/check.hpp"
 #include "rastrules/io/scene_json.hpp"
 #include "rastrules/msaa.hpp"
-#include "rastrules/oracle/pipe.hpp"
 #include "rastrules/pipeline.hpp"
 
 namespace rastrules::cases {
@@ -22,7 +22,6 @@ namespace rastrules::cases {
 namespace {
 
 namespace kp = rastrules::pipe;
-namespace op = rastrules::oracle::pipe;
 using nlohmann::json;
 
 std::string read_text(const std::filesystem::path& p, bool& ok) {
@@ -31,40 +30,6 @@ std::string read_text(const std::filesystem::path& p, bool& ok) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-std::string where(const Fragment& f) {
-  return "prim " + std::to_string(f.prim) + " pixel (" + std::to_string(f.x) + ", " +
-         std::to_string(f.y) + ")";
-}
-
-op::Raw2 raw(Vec2 v) {
-  return {v.x.raw(), v.y.raw()};
-}
-
-// The oracle's barycentrics of drawn primitive d at s: a triangle's exact edge values, a line's
-// projection parameter (as in the kernel's output, SCENE.OUTPUT.PIPELINE), a point's (1, 0, 0).
-op::Bary bary_of(const kp::DrawnPrimitive& d, Vec2 s) {
-  if (d.type == PrimitiveType::kTriangle)
-    return op::barycentrics({raw(d.snapped[0]), raw(d.snapped[1]), raw(d.snapped[2])}, raw(s));
-  op::Bary b;
-  if (d.type == PrimitiveType::kPoint || d.snapped.size() < 2) {
-    b.e = {1, 0, 0};
-    b.area = 1;
-    return b;
-  }
-  const std::int64_t dx = d.snapped[1].x.raw() - d.snapped[0].x.raw();
-  const std::int64_t dy = d.snapped[1].y.raw() - d.snapped[0].y.raw();
-  const std::int64_t px = s.x.raw() - d.snapped[0].x.raw();
-  const std::int64_t py = s.y.raw() - d.snapped[0].y.raw();
-  const std::int64_t den = dx * dx + dy * dy, num = px * dx + py * dy;
-  b.e = {den - num, num, 0};
-  b.area = den;
-  return b;
-}
-
-std::string format_name(kp::DepthFormat f) {
-  return std::string(kp::to_string(f));
 }
 
 double stored_as_double(const kp::DepthValue& v, kp::DepthFormat f) {
@@ -142,76 +107,14 @@ CaseReport check_case(const std::filesystem::path& scene_path) {
       res.depth_buffer != plain.depth_buffer)
     fail("the optimized result differs from the plain path (PIPE.OPT.*)");
 
-  // Invariants and the oracle, fragment by fragment.
-  const kp::Viewport vp = s.viewport.value_or(kp::Viewport{
-      0, 0, static_cast<float>(s.base.width), static_cast<float>(s.base.height), 0, 1});
-  const SamplePattern& pattern = s.base.msaa.pattern;
+  // Invariants and the oracle, fragment by fragment (check/).
   const kp::DepthFormat fmt = s.depth ? s.depth->format : kp::DepthFormat::kD24;
-  const kp::DepthValue lo = kp::to_depth_format(vp.min_depth, 0, 1, fmt);
-  const kp::DepthValue hi = kp::to_depth_format(vp.max_depth, 0, 1, fmt);
-  std::size_t reported = 0;
-  const auto report = [&](const std::string& m) {
-    if (++reported <= 8)
-      fail(m);
-  };
-  for (std::size_t i = 0; i < res.data.size(); ++i) {
-    const Fragment& f = res.fragments[i];
-    const kp::FragmentData& d = res.data[i];
-    if (d.bary && d.bary->e[0] + d.bary->e[1] + d.bary->e[2] != d.bary->area)
-      report(where(f) + ": barycentrics do not sum to the area (PIPE.BARY.SUM)");
-    for (const float a : d.attr)
-      if (!std::isfinite(a))
-        report(where(f) + ": an attribute is not finite (PIPE.INTERP.HORIZON)");
-    for (const kp::DepthValue& z : d.depth)
-      if (stored_as_double(z, fmt) < stored_as_double(lo, fmt) ||
-          stored_as_double(z, fmt) > stored_as_double(hi, fmt) ||
-          (fmt == kp::DepthFormat::kD32F && !std::isfinite(z.f)))
-        report(where(f) + ": a stored depth lies outside the viewport's range (PIPE.DEPTH.CLAMP)");
-    if (res.drawn.empty())
-      continue;
-    const kp::DrawnPrimitive& dp = res.drawn[d.drawn];
-    // Attributes against the exact oracle (PIPE.INTERP.BOUND).
-    for (std::size_t a = 0; a < d.attr.size(); ++a) {
-      const kp::AttributeDecl& decl = s.attributes[a];
-      Vec2 at = pixel_center(f.x, f.y);
-      if (decl.location == kp::Location::kCentroid && f.centroid)
-        at = sample_position(f.x, f.y, f.centroid->offset);
-      if (decl.location == kp::Location::kSample && f.sample)
-        at = sample_position(f.x, f.y, pattern.positions[*f.sample]);
-      const op::Bary b = bary_of(dp, at);
-      ++r.oracle_checks;
-      if (decl.interpolation == kp::Interpolation::kFlat) {
-        if (d.attr[a] != dp.flat[a])
-          report(where(f) + ": flat attribute " + decl.name + " is not the provoking vertex's");
-        continue;
-      }
-      if (b.area == 0)
-        continue; // a zero-length line: the flat value (PIPE.INTERP.HORIZON)
-      const op::InterpCheck c =
-          decl.interpolation == kp::Interpolation::kPerspective
-              ? op::check_perspective(b, dp.attr[a], dp.w, dp.flat[a], d.attr[a])
-              : op::check_linear(b, dp.attr[a], d.attr[a]);
-      if (!c.ok)
-        report(where(f) + ": attribute " + decl.name + ": " + c.describe());
-    }
-    // Depths against the exact oracle (PIPE.DEPTH.BOUND).
-    std::size_t n = 0;
-    for (std::uint32_t k = 0; k < pattern.count() && n < d.depth.size(); ++k) {
-      if ((f.mask & (1u << k)) == 0)
-        continue;
-      const op::Bary b = bary_of(dp, sample_position(f.x, f.y, pattern.positions[k]));
-      const kp::DepthValue& got = d.depth[n++];
-      ++r.oracle_checks;
-      if (b.area == 0)
-        continue;
-      const op::DepthCheck c = op::check_depth_stored(
-          b, dp.z, vp.min_depth, vp.max_depth, format_name(fmt), op::Stored{got.unorm, got.f});
-      if (!c.ok)
-        report(where(f) + ": sample " + std::to_string(k) + ": " + c.describe(format_name(fmt)));
-    }
-  }
-  if (reported > 8)
-    fail("... and " + std::to_string(reported - 8) + " more");
+  const check::Mismatches values =
+      check::check_pipeline_values(s, res, check::CheckOptions{8}, &r.oracle_checks);
+  for (const std::string& m : values.mismatches)
+    fail(m);
+  if (values.count > 8)
+    fail("... and " + std::to_string(values.count - 8) + " more");
 
   // The sidecar's expectations.
   try {

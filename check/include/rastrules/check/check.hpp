@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+// Kernel against oracle, written once (in the manner of CGAL's Kernel_checker): the only place
+// that knows both the kernel's types and the exact oracle's, with the only kernel->oracle
+// adapter. The showcase, the libFuzzer targets and the properties call it; the kernel never
+// does, and the oracle never includes the kernel.
+// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.OUTPUT.MSAA (checks)
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "rastrules/oracle/msaa.hpp"
+#include "rastrules/oracle/triangle.hpp"
+#include "rastrules/pipeline.hpp"
+#include "rastrules/scene.hpp"
+
+namespace rastrules::check {
+
+// The kernel->oracle adapter: raster state as the oracle's words (rastrules/names.hpp), a
+// vertex by the oracle's own snapping (never the kernel's; throws std::invalid_argument when
+// it does not snap), and a whole scene as the multisampling oracle reads it.
+[[nodiscard]] oracle::State oracle_state(const RasterState& state);
+[[nodiscard]] std::array<std::int64_t, 2> oracle_raw(const FloatPoint& v);
+[[nodiscard]] oracle::msaa::Input oracle_msaa_input(const Scene& scene);
+
+// Whether a scene goes to the multisampling oracle: anything SCENE.MSAA asks for beyond one
+// sample at the centre with pixel shading.
+[[nodiscard]] bool multisampled(const Scene& scene);
+
+struct CheckOptions {
+  std::size_t max_mismatches = std::numeric_limits<std::size_t>::max(); // kept, in order
+};
+
+// What the check found: mismatches (empty when the kernel agrees with the oracle) and which
+// oracle checked what, in the order first used.
+struct Mismatches {
+  std::vector<std::string> mismatches;
+  std::size_t count = 0; // all found, also beyond max_mismatches
+  std::vector<std::string> oracles;
+  [[nodiscard]] bool agree() const { return count == 0; }
+};
+
+// Compares the kernel's fragments of a window-space scene with the exact oracles. One sample
+// at the centre: the fragment list itself (inside the target, sorted, mask 1, seg on strips
+// only, coverage on antialiased lines only and in [1, 65536]), triangles against
+// oracle::render, points against point_covers, aliased lines against aliased_line_pixels,
+// quadrilateral lines against quad_line_covers, antialiased lines against aa_pixels' set and
+// aa_check (coverage within LINE.AA.PRECISION). Multisampled scenes: every fragment field
+// against oracle::msaa::render and the resolved target against oracle::msaa::resolve.
+// Preconditions: ps is prepare(scene) and kernel its fragments (rasterize or render).
+// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.OUTPUT.MSAA, MSAA.RESOLVE.AVERAGE
+[[nodiscard]] Mismatches check_against_oracle(const Scene& scene, const PreparedScene& ps,
+                                              const std::vector<Fragment>& kernel,
+                                              const CheckOptions& options = {});
+
+// Checks a pipeline result fragment by fragment: barycentrics summing to their area
+// (PIPE.BARY.SUM), finite attributes (PIPE.INTERP.HORIZON), stored depths inside the
+// viewport's range (PIPE.DEPTH.CLAMP), and, against the exact oracle from each fragment's drawn
+// primitive, every attribute (PIPE.INTERP.BOUND, flat values exactly) and every sample depth
+// (PIPE.DEPTH.BOUND). oracle_checks counts the values compared with the oracle.
+// rule: PIPE.BARY.SUM, PIPE.INTERP.HORIZON, PIPE.DEPTH.CLAMP, PIPE.INTERP.BOUND, PIPE.DEPTH.BOUND
+[[nodiscard]] Mismatches check_pipeline_values(const pipe::PipeScene& scene,
+                                               const pipe::PipeResult& result,
+                                               const CheckOptions& options = {},
+                                               std::size_t* oracle_checks = nullptr);
+
+} // namespace rastrules::check

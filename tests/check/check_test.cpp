@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+// The checker (check/): the kernel's own fragments agree with the oracle, and every kind of
+// tampering with them is found and named, for one-sample, multisampled and pipeline scenes.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "rastrules/check/check.hpp"
+#include "rastrules/msaa.hpp"
+#include "rastrules/pipeline.hpp"
+
+namespace rastrules::check {
+namespace {
+
+Scene mixed_scene() {
+  Scene s;
+  s.width = 12;
+  s.height = 10;
+  s.primitives.push_back(
+      make_triangle({FloatPoint{0.5f, 0.5f}, FloatPoint{9.5f, 0.5f}, FloatPoint{0.5f, 8.5f}}));
+  Primitive point;
+  point.type = PrimitiveType::kPoint;
+  point.v = {FloatPoint{10.5f, 8.5f}};
+  s.primitives.push_back(point);
+  Primitive strip;
+  strip.type = PrimitiveType::kLineStrip;
+  strip.v = {FloatPoint{1.0f, 9.0f}, FloatPoint{11.0f, 6.0f}, FloatPoint{6.0f, 1.0f}};
+  s.primitives.push_back(strip);
+  return s;
+}
+
+struct Rasterized {
+  PreparedScene ps;
+  std::vector<Fragment> fragments;
+};
+Rasterized run(const Scene& s) {
+  auto prepared = prepare(s);
+  EXPECT_TRUE(std::holds_alternative<PreparedScene>(prepared));
+  Rasterized r{std::get<PreparedScene>(prepared), {}};
+  r.fragments = rasterize(r.ps);
+  return r;
+}
+
+bool mentions(const Mismatches& m, const std::string& what) {
+  return std::any_of(m.mismatches.begin(), m.mismatches.end(),
+                     [&](const std::string& s) { return s.find(what) != std::string::npos; });
+}
+
+// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.PRIM.LINE_STRIP, SCENE.PRIM.POINT
+TEST(Check, TheKernelAgreesAndTamperingIsNamed) {
+  const Scene s = mixed_scene();
+  const Rasterized r = run(s);
+  const Mismatches ok = check_against_oracle(s, r.ps, r.fragments);
+  EXPECT_TRUE(ok.agree()) << (ok.mismatches.empty() ? "" : ok.mismatches.front());
+  EXPECT_EQ(ok.oracles,
+            (std::vector<std::string>{"triangle oracle (render)", "point oracle (point_covers)",
+                                      "line oracle (aliased_line_pixels)"}));
+
+  std::vector<Fragment> missing = r.fragments;
+  missing.erase(missing.begin() + 3);
+  EXPECT_TRUE(mentions(check_against_oracle(s, r.ps, missing), "only the oracle covers prim 0"));
+
+  std::vector<Fragment> moved = r.fragments;
+  moved.back().x += 1;
+  const Mismatches m = check_against_oracle(s, r.ps, moved);
+  EXPECT_FALSE(m.agree());
+  EXPECT_TRUE(mentions(m, "only the kernel covers prim 2"));
+
+  std::vector<Fragment> masked = r.fragments;
+  masked.front().mask = 3;
+  EXPECT_TRUE(mentions(check_against_oracle(s, r.ps, masked), ": mask 3"));
+
+  std::vector<Fragment> no_seg = r.fragments;
+  no_seg.back().seg.reset();
+  EXPECT_TRUE(mentions(check_against_oracle(s, r.ps, no_seg), "seg on a non-strip or missing"));
+
+  // At most max_mismatches are kept, all are counted.
+  std::vector<Fragment> none;
+  const Mismatches capped = check_against_oracle(s, r.ps, none, CheckOptions{2});
+  EXPECT_EQ(capped.mismatches.size(), 2u);
+  EXPECT_EQ(capped.count, r.fragments.size());
+}
+
+// rule: SCENE.OUTPUT.MSAA, MSAA.CENTROID.D3D11, MSAA.RESOLVE.AVERAGE
+TEST(Check, MultisampledScenesGoToTheMultisamplingOracle) {
+  Scene s = mixed_scene();
+  s.msaa.pattern = standard_pattern(4);
+  s.msaa.has_centroid = true;
+  ASSERT_TRUE(multisampled(s));
+  const Rasterized r = run(s);
+  const Mismatches ok = check_against_oracle(s, r.ps, r.fragments);
+  EXPECT_TRUE(ok.agree()) << (ok.mismatches.empty() ? "" : ok.mismatches.front());
+  EXPECT_EQ(ok.oracles,
+            (std::vector<std::string>{"multisampling oracle (msaa::render, msaa::resolve)"}));
+  std::vector<Fragment> tampered = r.fragments;
+  auto partial = std::find_if(tampered.begin(), tampered.end(),
+                              [](const Fragment& f) { return f.mask != 15u && f.centroid; });
+  ASSERT_NE(partial, tampered.end());
+  partial->centroid->offset = SampleOffset{0, 0};
+  EXPECT_TRUE(mentions(check_against_oracle(s, r.ps, tampered), "centroid"));
+}
+
+// rule: PIPE.INTERP.BOUND, PIPE.DEPTH.BOUND, PIPE.BARY.SUM
+TEST(Check, PipelineValuesWithinTheOraclesBounds) {
+  pipe::PipeScene s;
+  s.base.width = s.base.height = 16;
+  s.attributes = {
+      pipe::AttributeDecl{"u", pipe::Interpolation::kPerspective, pipe::Location::kCenter}};
+  s.depth = pipe::DepthState{};
+  pipe::PipePrimitive p;
+  p.base.type = PrimitiveType::kTriangle;
+  p.pos = {{-0.9f, -0.9f, 0.2f, 1.0f}, {0.9f, -0.9f, 0.5f, 2.0f}, {-0.9f, 0.9f, 0.8f, 4.0f}};
+  p.attr = {{0.0f}, {1.0f}, {2.0f}};
+  s.primitives.push_back(p);
+  auto out = pipe::run_pipeline(s);
+  ASSERT_TRUE(std::holds_alternative<pipe::PipeResult>(out));
+  pipe::PipeResult r = std::get<pipe::PipeResult>(out);
+  std::size_t checks = 0;
+  EXPECT_TRUE(check_pipeline_values(s, r, {}, &checks).agree());
+  EXPECT_EQ(checks, 2 * r.fragments.size()); // one attribute and one depth per fragment
+  r.data[0].attr[0] += 0.25f;
+  EXPECT_TRUE(mentions(check_pipeline_values(s, r), "attribute u"));
+  r.data[1].bary->area += 1;
+  EXPECT_TRUE(mentions(check_pipeline_values(s, r), "PIPE.BARY.SUM"));
+}
+
+} // namespace
+} // namespace rastrules::check
