@@ -8,6 +8,8 @@ Reads the rule registry (level-3 headings `### <ID> — <title>` in spec/**/*.md
 
   * every rule ID is defined once, has a valid kind, and depends only on defined IDs;
   * every cited ID exists and every tag is well formed;
+  * every rule ID in a string literal of runtime code (kernel/, check/, tools/, bench/, fuzz/:
+    what users see printed) is defined, or names a family as "ID.*";
   * every normative rule has an implementation site (kernel/, bench/, tools/ except tools/trace/)
     and an example test (tests/).
 
@@ -209,6 +211,46 @@ def scan_tags(root, rules, report):
     return tags
 
 
+# Runtime code: what users see printed (error messages, explanations, reports). A rule ID in a
+# string literal there must name a rule of the registry (or, followed by ".*", a family of
+# them), so that renaming a rule cannot leave a stale ID in what the tool prints.
+RUNTIME_TOPS = ("kernel", "check", "tools", "bench", "fuzz")
+STRING_RE = re.compile(r'"(?:[^"\\\n]|\\.)*"')
+LITERAL_ID_RE = re.compile(r"\b(" + ID_RE + r")\b")
+
+
+def scan_runtime_strings(root, rules, report):
+    """Reports rule IDs in runtime string literals that the registry does not define."""
+    areas = {rule_id.split(".")[0] for rule_id in rules}
+    families = {".".join(rule_id.split(".")[:n]) for rule_id in rules
+                for n in range(1, rule_id.count(".") + 1)}
+    found = 0
+    for top in RUNTIME_TOPS:
+        base = os.path.join(root, top)
+        if not os.path.isdir(base):
+            continue
+        for path in walk_files(base, (".hpp", ".cpp", ".h", ".cc", ".hh")):
+            relpath = rel(root, path)
+            if category_of(relpath) is None:
+                continue
+            for number, text in enumerate(read_lines(path, report, root), start=1):
+                if TAG_RE.match(text):
+                    continue
+                for literal in STRING_RE.findall(text):
+                    for m in LITERAL_ID_RE.finditer(literal):
+                        token = m.group(1)
+                        if token.split(".")[0] not in areas:
+                            continue  # "D3D11.3", "VK_..." and the like
+                        found += 1
+                        family = literal[m.end():m.end() + 2] == ".*"
+                        if token in rules or (family and token in families):
+                            continue
+                        report.error(f"{relpath}:{number}",
+                                     f"unknown rule ID {token} printed at run time (a string "
+                                     f"literal; the registry has no such rule)")
+    return found
+
+
 # Rule areas whose normative and derived rules must have a property or a proof.
 STRICT_AREAS = ("TRI.", "SNAP.", "FIX.", "RASTER.", "POINT.", "LINE.", "MSAA.", "FAST.")
 
@@ -278,6 +320,7 @@ def main(argv=None):
         report.error("spec/", "no rules found")
     check_registry(rules, report)
     tags = scan_tags(root, rules, report)
+    printed = scan_runtime_strings(root, rules, report)
     check_evidence(rules, report)
     if args.matrix:
         write_matrix(rules, args.matrix, root, report)
@@ -287,7 +330,8 @@ def main(argv=None):
     for w in report.warnings:
         print(f"trace: warning: {w}")
     print(f"trace: {len(rules)} rules, {len(report.errors)} errors, {len(report.warnings)} warnings"
-          f" ({tags} tags" + (f"; matrix: {args.matrix})" if args.matrix else ")"))
+          f" ({tags} tags, {printed} rule IDs printed at run time"
+          + (f"; matrix: {args.matrix})" if args.matrix else ")"))
     return 1 if report.errors else 0
 
 

@@ -123,14 +123,31 @@ def main():
                    and "neither a property nor a proof" in l for l in lines),
                "warning for a rule with no property or proof", out)
 
-    # 4. Usage error: no spec/ folder.
+    # 4. Rule IDs printed at run time: a renamed rule left in a message is an error; a family
+    #    ("DEMO.EDGE.*"), a defined ID, a non-rule token and a comment are not.
+    with tempfile.TemporaryDirectory() as root:
+        good_tree(root)
+        write(root, "tools/cli/messages.cpp",
+              ['const char* a = "is NaN (DEMO.EDGE.ONE)";',
+               'const char* b = "see DEMO.EDGE.* and D3D11.3 15.4";',
+               '// a comment naming DEMO.EDGE.OLD is not printed',
+               'const char* c = "a stale DEMO.EDGE.OLD";'])
+        rc, out, _ = run(trace, root)
+        lines = out.splitlines()
+        expect(rc == 1, "stale printed ID: expected exit 1", out)
+        expect(any("unknown rule ID DEMO.EDGE.OLD printed at run time" in l
+                   and "tools/cli/messages.cpp:4" in l for l in lines),
+               "stale printed ID named with file:line", out)
+        expect("1 errors" in out, "stale printed ID: exactly one error", out)
+
+    # 5. Usage error: no spec/ folder.
     with tempfile.TemporaryDirectory() as root:
         rc, out, _ = run(trace, root)
         expect(rc == 2, "no spec/: expected exit 2", out)
 
     for f in FAILURES:
         print("FAILED:", f, file=sys.stderr)
-    print(f"trace.selftest: 4 scenarios, {len(FAILURES)} failed checks")
+    print(f"trace.selftest: 5 scenarios, {len(FAILURES)} failed checks")
     return 1 if FAILURES else 0
 
 
