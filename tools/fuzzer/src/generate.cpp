@@ -12,25 +12,11 @@
 namespace rastrules::fuzzer {
 
 std::string_view to_string(Profile p) {
-  switch (p) {
-  case Profile::kD3D11:
-    return "d3d11";
-  case Profile::kVulkan:
-    return "vulkan";
-  case Profile::kOpenGL:
-    return "opengl";
-  }
-  return "?";
+  return name_of(p);
 }
 
 std::optional<Profile> parse_profile(std::string_view s) {
-  if (s == "d3d11")
-    return Profile::kD3D11;
-  if (s == "vulkan")
-    return Profile::kVulkan;
-  if (s == "opengl")
-    return Profile::kOpenGL;
-  return std::nullopt;
+  return from_name<Profile>(s);
 }
 
 std::string_view to_string(Mode m) {
@@ -47,8 +33,9 @@ std::optional<Mode> parse_mode(std::string_view s) {
 
 // rule: FUZZ.PROFILE
 void apply_profile(Profile p, Scene& scene) {
-  scene.state.fill = FillConvention::kTopLeft;
-  scene.line_mode = p == Profile::kD3D11 ? LineMode::kD3DDiamond : LineMode::kVulkanBresenham;
+  const Conventions c = profile(p);
+  scene.state.fill = c.fill;
+  scene.line_mode = c.line_mode;
 }
 
 std::uint64_t Rng::next() {

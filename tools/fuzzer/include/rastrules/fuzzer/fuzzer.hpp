@@ -15,17 +15,21 @@
 #include <vector>
 
 #include "rastrules/driver/driver.hpp"
+#include "rastrules/profile.hpp"
 #include "rastrules/scene.hpp"
 
 namespace rastrules::fuzzer {
 
 // rule: FUZZ.PROFILE
-enum class Profile { kD3D11, kVulkan, kOpenGL };
+// The kernel's profiles (rastrules/profile.hpp, PROFILE.*), by name.
+using Profile = ProfileName;
 [[nodiscard]] std::string_view to_string(Profile p); // "d3d11", "vulkan", "opengl"
 [[nodiscard]] std::optional<Profile> parse_profile(std::string_view s);
 
-// Sets the profile's conventions on a scene: fill top-left for all three; line_mode "d3d" for
-// d3d11, "vulkan-bresenham" for vulkan and opengl.
+// Sets the conventions the fuzzer varies by profile on a generated scene: the profile's fill
+// convention and line mode (rastrules::profile). The other conventions stay the generator's:
+// it draws both windings under every cull mode, its own sample patterns and centroid rules,
+// and no pipeline state.
 // rule: FUZZ.PROFILE
 void apply_profile(Profile p, Scene& scene);
 
