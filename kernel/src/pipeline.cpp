@@ -105,10 +105,10 @@ WindowVertex to_window(const Vec4f& p, const Viewport& vp) {
 }
 
 // rule: PIPE.VIEWPORT.SCISSOR
-PixelRect viewport_scissor(const Viewport& vp) {
+ScissorRect viewport_scissor(const Viewport& vp) {
   const float right = vp.x + vp.width;
   const float bottom = vp.y + vp.height;
-  return PixelRect{
+  return ScissorRect{
       static_cast<std::int64_t>(std::floor(vp.x)), static_cast<std::int64_t>(std::floor(vp.y)),
       static_cast<std::int64_t>(std::floor(right)), static_cast<std::int64_t>(std::floor(bottom))};
 }

@@ -77,7 +77,7 @@ RC_GTEST_PROP(PipeGeometry, ToWindowIsBitIdenticalToTheSpecFormula, ()) {
 RC_GTEST_PROP(PipeGeometry, ScissorIsTheSpecRectangle, ()) {
   const std::int32_t w = *rc::gen::inRange(1, 64), h = *rc::gen::inRange(1, 64);
   const kp::Viewport vp = *pg::viewport(w, h);
-  const kp::PixelRect got = kp::viewport_scissor(vp);
+  const kp::ScissorRect got = kp::viewport_scissor(vp);
   const op::Rect want = op::viewport_scissor(pg::to_oracle(vp));
   RC_ASSERT(got.x0 == want.x0);
   RC_ASSERT(got.y0 == want.y0);

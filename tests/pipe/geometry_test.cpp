@@ -77,7 +77,7 @@ TEST(PipeViewport, EveryOperationIsRoundedToFloat32) {
 
 // rule: PIPE.VIEWPORT.SCISSOR
 TEST(PipeViewport, ImplicitScissorRoundsTheExtentsDown) {
-  const PixelRect r = viewport_scissor(Viewport{0.5f, -1.25f, 10.0f, 3.5f, 0, 1});
+  const ScissorRect r = viewport_scissor(Viewport{0.5f, -1.25f, 10.0f, 3.5f, 0, 1});
   EXPECT_EQ(r.x0, 0);
   EXPECT_EQ(r.x1, 10); // floor(10.5)
   EXPECT_EQ(r.y0, -2); // floor(-1.25)

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Lines: aliased (D3D diamond exit, Vulkan Bresenham), quadrilateral, antialiased.
 // Implements: LINE.* (spec/rules/line.md)
-// API contract (issue #3): signatures below are fixed; implementations may add helpers and
-// live in line_aliased.hpp / line_quad.hpp / line_aa.hpp and kernel/src/.
+// The three kinds live in line_aliased.hpp, line_quad.hpp and line_aa.hpp.
 
 #pragma once
 

@@ -65,15 +65,16 @@ struct WindowVertex {
   return v < -32768.0f ? -32768.0f : (v > 32767.99609375f ? 32767.99609375f : v);
 }
 
-// The implicit scissor of PIPE.VIEWPORT.SCISSOR: pixels [x0, x1) x [y0, y1).
-struct PixelRect {
+// The implicit scissor of PIPE.VIEWPORT.SCISSOR: pixels [x0, x1) x [y0, y1), half-open and
+// 64-bit (raster::PixelRect, the traversal's, is inclusive and 32-bit).
+struct ScissorRect {
   std::int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   [[nodiscard]] bool contains(std::int64_t px, std::int64_t py) const {
     return px >= x0 && px < x1 && py >= y0 && py < y1;
   }
 };
 // rule: PIPE.VIEWPORT.SCISSOR
-[[nodiscard]] PixelRect viewport_scissor(const Viewport& vp);
+[[nodiscard]] ScissorRect viewport_scissor(const Viewport& vp);
 
 // ---------------------------------------------------------------------------------------------
 // Clipping

@@ -2,7 +2,6 @@
 // Points: a one-pixel square centred on the snapped position, rasterized as two triangles in
 // a Z pattern under the triangle rules, never culled.
 // Implements: POINT.* (spec/rules/point.md)
-// API contract (issue #3): signatures below are fixed; the implementation may add helpers.
 
 #pragma once
 

@@ -19,7 +19,7 @@ struct Stop {
 
 // rule: PIPE.VIEWPORT.SCISSOR, SCENE.INPUT.LIMITS
 std::optional<SceneError> cover(const PreparedScene& ps, const std::vector<Source>& sources,
-                                const PixelRect& scissor, const PipeOptions& o,
+                                const ScissorRect& scissor, const PipeOptions& o,
                                 std::vector<Fragment>& fragments) {
   for (std::size_t p = 0; p < ps.primitives.size(); ++p) {
     const auto emit = [&](const Fragment& f) {

@@ -63,7 +63,7 @@ SceneError remap(SceneError e, const std::vector<Source>& sources);
 // (prim, part, y, x, seg, sample) order, f.prim being the index in ps; returns the error of a
 // scene beyond the fragment limit (SCENE.INPUT.LIMITS).
 std::optional<SceneError> cover(const PreparedScene& ps, const std::vector<Source>& sources,
-                                const PixelRect& scissor, const PipeOptions& o,
+                                const ScissorRect& scissor, const PipeOptions& o,
                                 std::vector<Fragment>& fragments);
 
 // Which drawn primitive each fragment belongs to: drawn primitives are one per coverage
