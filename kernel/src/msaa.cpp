@@ -136,7 +136,8 @@ Centroid centroid(CentroidRule rule, std::uint32_t coverage, std::uint32_t sampl
   const SampleOffset center{0, 0};
   if (rule == CentroidRule::kD3D11) {
     // rule: MSAA.CENTROID.D3D11
-    if (c == full)
+    // The mask is applied first: a masked-out sample is never "covered" (MSAA.CENTROID.D3D11).
+    if (cm == full)
       return Centroid{center, CentroidBranch::kFullCoverageCenter}; // (1)
     if (cm != 0) {                                                  // (2)
       return Centroid{pattern.positions[lowest_bit(cm)], CentroidBranch::kFirstCovered};

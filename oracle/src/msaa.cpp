@@ -303,8 +303,8 @@ CentroidPoint centroid(const std::string& rule, std::uint32_t c, std::uint32_t m
   const CentroidPoint centre_full{Offset{0, 0}, Branch::kFullCoverageCenter};
   const CentroidPoint centre_none{Offset{0, 0}, Branch::kNoneCoveredCenter};
   if (rule == "d3d11") {
-    // 1. Every sample covered (before the mask): the pixel centre.
-    if (c == all)
+    // 1. Every sample covered and in the mask (the mask applies first): the pixel centre.
+    if ((c & m) == all)
       return centre_full;
     // 2. The first sample, in index order, covered and in the mask.
     if (const auto k = first(c & m, n))

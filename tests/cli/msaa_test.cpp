@@ -158,14 +158,15 @@ TEST(CliMsaaFragments, FourSamplesGiveTheHandCheckedMasks) {
             "]}\n");
 }
 
-// Sample mask 0b1110. D3D11: pixel (0,0) is fully covered -> the centre; pixels (1,0) and
+// Sample mask 0b1110. D3D11 applies the mask first: pixel (0,0), fully covered, has covered
+// samples 1, 2, 3 in the mask, not all four -> the first, sample 1 at (6, -2)/16; pixels (1,0) and
 // (0,1) -> the first covered sample in the mask, sample 2 at (-6, 2)/16; the helper (1,1), with
 // nothing covered and a partial mask -> the mask's first sample, sample 1 at (6, -2)/16.
 // rule: SCENE.OUTPUT.MSAA, MSAA.CENTROID.D3D11, MSAA.QUAD.HELPER
 TEST(CliMsaaFragments, CentroidD3D11AndAHelperLane) {
   EXPECT_EQ(render_fragments(scene(R"("sample_mask": 14, "centroid": "d3d11", "quads": true, )")),
             "{\"fragments\": [\n"
-            "  {\"prim\": 0, \"x\": 0, \"y\": 0, \"mask\": 14, \"centroid\": [0.5, 0.5]},\n"
+            "  {\"prim\": 0, \"x\": 0, \"y\": 0, \"mask\": 14, \"centroid\": [0.875, 0.375]},\n"
             "  {\"prim\": 0, \"x\": 1, \"y\": 0, \"mask\": 4, \"centroid\": [1.125, 0.625]},\n"
             "  {\"prim\": 0, \"x\": 0, \"y\": 1, \"mask\": 4, \"centroid\": [0.125, 1.625]},\n"
             "  {\"prim\": 0, \"x\": 1, \"y\": 1, \"mask\": 0, \"helper\": true, \"centroid\": "

@@ -34,10 +34,21 @@ Centroid d3d10(std::uint32_t c, std::uint32_t m, const SamplePattern& p = kSkew)
 // rule: MSAA.CENTROID.D3D11
 TEST(CentroidD3D11, Branch1AllSamplesCoveredIsThePixelCentre) {
   EXPECT_EQ(d3d11(0xF, 0xF), (Centroid{kCentre, CentroidBranch::kFullCoverageCenter}));
-  // Coverage before the mask: a partial mask does not change branch 1.
-  EXPECT_EQ(d3d11(0xF, 0b0100), (Centroid{kCentre, CentroidBranch::kFullCoverageCenter}));
   // The default mask 0xFFFFFFFF is the full mask.
   EXPECT_EQ(d3d11(0xF, 0xFFFFFFFFu), (Centroid{kCentre, CentroidBranch::kFullCoverageCenter}));
+}
+
+// rule: MSAA.CENTROID.D3D11
+// The sample mask applies before the centroid: a fully covered pixel under a partial mask is
+// not "all samples covered" (branch 1) but takes the first unmasked sample (branch 2). The
+// reported case: 4 samples, mask 2: sample 1, at (0.875, 0.375) in the pixel, not the centre
+// (earlier the mask was read after branch 1). Multipass supersampling by cycling single-bit
+// masks needs exactly this.
+TEST(CentroidD3D11, AFullyCoveredPixelUnderAPartialMaskTakesTheFirstUnmaskedSample) {
+  EXPECT_EQ(d3d11(0xF, 0b0010), (Centroid{{6, -2}, CentroidBranch::kFirstCovered}));
+  for (std::uint32_t k = 0; k < 4; ++k)
+    EXPECT_EQ(d3d11(0xF, 1u << k), (Centroid{k4.positions[k], CentroidBranch::kFirstCovered}));
+  EXPECT_EQ(d3d11(0xF, 0b0100), (Centroid{{-6, 2}, CentroidBranch::kFirstCovered}));
 }
 
 // rule: MSAA.CENTROID.D3D11
@@ -72,9 +83,9 @@ TEST(CentroidD3D10, Branch1FullCoverageAndFullMaskIsThePixelCentre) {
 // rule: MSAA.CENTROID.D3D10
 TEST(CentroidD3D10, FullCoveragePartialMaskIsTheNearestSampleInTheMask) {
   // The mask is applied first: c' = {0, 2}; the nearer is 2 (distance^2 20 < 98). D3D11 takes
-  // the pixel centre here (its branch 1 reads coverage before the mask).
+  // the first of c' in index order, 0.
   EXPECT_EQ(d3d10(0xF, 0b0101), (Centroid{{-4, 2}, CentroidBranch::kNearestCovered}));
-  EXPECT_EQ(d3d11(0xF, 0b0101, kSkew), (Centroid{kCentre, CentroidBranch::kFullCoverageCenter}));
+  EXPECT_EQ(d3d11(0xF, 0b0101, kSkew), (Centroid{{7, 7}, CentroidBranch::kFirstCovered}));
 }
 
 // rule: MSAA.CENTROID.D3D10
