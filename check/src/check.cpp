@@ -209,10 +209,14 @@ void line_keys(const Scene& scene, const PreparedScene& ps, const std::vector<Fr
         exact.push_back(Key{y, x, seg});
     });
   } else {
+    // aliased_line_pixels' set, asked only of candidates: it tests the whole bounding box grown
+    // by 2 px, which for a long diagonal line is the whole target (20x the candidates).
     c.used("line oracle (aliased_line_pixels)");
-    for (const auto& px : oracle::aliased_line_pixels(a, b, std::string(name_of(ps.line_mode)),
-                                                      scene.width, scene.height))
-      exact.push_back(Key{px[1], px[0], seg});
+    const std::string name(name_of(ps.line_mode));
+    for_candidates(scene, a, b, [&](std::int32_t x, std::int32_t y) {
+      if (oracle::aliased_line_covers(a, b, name, x, y))
+        exact.push_back(Key{y, x, seg});
+    });
   }
 }
 
