@@ -29,7 +29,8 @@ inline pipe::PipeScene strips_as_lines(const pipe::PipeScene& s) {
         using V = std::decay_t<decltype(v)>;
         return v.empty() ? V{} : V{v[k], v[k + 1]};
       };
-      l.base.v = pick(p.base.v);
+      if (p.pos.empty()) // window space; in clip space base.v is unused (and may be the default)
+        l.base.v = pick(p.base.v);
       l.pos = pick(p.pos);
       l.z = pick(p.z);
       l.w = pick(p.w);
