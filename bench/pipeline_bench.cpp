@@ -25,22 +25,21 @@ constexpr std::int32_t kSize = 512;
 
 // n triangles of about 20 x 20 px at random places and depths, given in clip space with w in
 // [1, 4] (x, y, z scaled by w) or, when window is set, as their window-space images.
-rp::PipeScene make_scene(int n, bool window, std::uint32_t seed) {
+rastrules::Scene make_scene(int n, bool window, std::uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> pos(-0.95f, 0.95f), off(-0.08f, 0.08f), depth(0.05f, 0.95f),
       wdist(1.0f, 4.0f);
-  rp::PipeScene s;
-  s.base.width = kSize;
-  s.base.height = kSize;
+  rastrules::Scene s;
+  s.width = kSize;
+  s.height = kSize;
   for (int i = 0; i < n; ++i) {
     const float cx = pos(rng), cy = pos(rng), z = depth(rng);
-    rp::PipePrimitive p;
-    p.base.type = rastrules::PrimitiveType::kTriangle;
+    rastrules::Primitive p;
+    p.type = rastrules::PrimitiveType::kTriangle;
     for (int k = 0; k < 3; ++k) {
       const float x = cx + off(rng), y = cy + off(rng), zz = z + off(rng) * 0.5f;
       if (window) {
-        p.base.v[static_cast<std::size_t>(k)] = {(x + 1.0f) * kSize * 0.5f,
-                                                 (1.0f - y) * kSize * 0.5f};
+        p.v[static_cast<std::size_t>(k)] = {(x + 1.0f) * kSize * 0.5f, (1.0f - y) * kSize * 0.5f};
         p.z.push_back(zz);
       } else {
         const float w = wdist(rng);
@@ -65,8 +64,8 @@ enum Stage : int {
 const char* const kStageNames[] = {"kernel_only", "coverage_only", "+clip_space", "+depth",
                                    "+attributes", "+msaa4",        "+centroid",   "+derivatives"};
 
-rp::PipeScene stage_scene(int stage) {
-  rp::PipeScene s = make_scene(2000, stage < kClipSpace, 7);
+rastrules::Scene stage_scene(int stage) {
+  rastrules::Scene s = make_scene(2000, stage < kClipSpace, 7);
   if (stage >= kDepth)
     s.depth = rp::DepthState{};
   if (stage >= kAttributes) {
@@ -78,22 +77,24 @@ rp::PipeScene stage_scene(int stage) {
       p.attr = {{0, 1, 2, 3}, {1, 2, 3, 4}, {2, 3, 4, 5}};
   }
   if (stage >= kMsaa4)
-    s.base.msaa.pattern = rastrules::standard_pattern(4);
+    s.msaa.pattern = rastrules::standard_pattern(4);
   if (stage >= kDerivatives)
-    s.base.msaa.derivatives = rastrules::DerivativeMode::kFine;
+    s.msaa.derivatives = rastrules::DerivativeMode::kFine;
   return s;
 }
 
-rastrules::Scene kernel_scene(const rp::PipeScene& s) {
-  rastrules::Scene k = s.base;
+// The scene's coverage alone (its primitives without z and w): what rastrules::render draws
+// without the pipeline. s has no pipeline state of its own (the kernel-only and coverage stages).
+rastrules::Scene kernel_scene(const rastrules::Scene& s) {
+  rastrules::Scene k = rastrules::target_of(s);
   for (const auto& p : s.primitives)
-    k.primitives.push_back(p.base);
+    k.primitives.push_back(rastrules::coverage_of(p));
   return k;
 }
 
 void BM_PipelineStage(benchmark::State& st) {
   const int stage = static_cast<int>(st.range(0));
-  const rp::PipeScene s = stage_scene(stage);
+  const rastrules::Scene s = stage_scene(stage);
   const rastrules::Scene k = kernel_scene(s);
   std::size_t frags = 0;
   for (auto _ : st) {
@@ -133,7 +134,7 @@ template <class A, class B> void ratio(benchmark::State& st, A&& a, B&& b) {
 // A coverage-only scene through the pipeline against the kernel alone: the cost of having the
 // other stages in the build when the scene does not call for them.
 void BM_CoverageOnlyOverKernel(benchmark::State& st) {
-  const rp::PipeScene s = stage_scene(kCoverageOnly);
+  const rastrules::Scene s = stage_scene(kCoverageOnly);
   const rastrules::Scene k = kernel_scene(s);
   ratio(
       st, [&] { benchmark::DoNotOptimize(rastrules::render(k)); },
@@ -145,16 +146,15 @@ BENCHMARK(BM_CoverageOnlyOverKernel)->Unit(benchmark::kMillisecond);
 // Heavy overdraw, front to back (Hi-Z and early-Z reject most fragments), depth and attributes:
 // all optimizations against the plain path, and each one alone.
 void BM_OptimizationsOverPlain(benchmark::State& st) {
-  rp::PipeScene s = make_scene(0, true, 1);
-  s.base.width = s.base.height = 128;
+  rastrules::Scene s = make_scene(0, true, 1);
+  s.width = s.height = 128;
   // 32 full-target quads (two triangles each) from near to far, 4 attributes.
   for (int i = 0; i < 32; ++i) {
     const float z = 0.1f + 0.01f * static_cast<float>(i);
     const float n = 128.0f;
     for (const auto& t : {std::array<rastrules::FloatPoint, 3>{{{0, 0}, {n, 0}, {0, n}}},
                           std::array<rastrules::FloatPoint, 3>{{{n, 0}, {n, n}, {0, n}}}}) {
-      rp::PipePrimitive p;
-      p.base = rastrules::make_triangle(t);
+      rastrules::Primitive p = rastrules::make_triangle(t);
       p.z = {z, z, z};
       p.attr = {{0, 1, 2, 3}, {1, 2, 3, 4}, {2, 3, 4, 5}};
       s.primitives.push_back(p);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // libFuzzer target: pipeline scenes (SCENE.PIPELINE) from arbitrary bytes, through the reader
-// (rastrules::io::read_any_scene) and, when they read, the whole pipeline (run_pipeline). Must
+// (rastrules::io::read_scene) and, when they read, the whole pipeline (run_pipeline). Must
 // never crash, leak or hit undefined behaviour, and
 // - an error names a field (or the parser's position);
 // - a pipeline scene that reads is written back to text that reads to the same scene;
@@ -27,6 +27,7 @@ namespace {
 
 namespace kp = rastrules::pipe;
 namespace fz = rastrules::fuzz;
+using rastrules::Scene;
 using rastrules::SceneError;
 
 [[noreturn]] void fail(const std::string& what, const std::string& detail, const std::uint8_t* data,
@@ -48,25 +49,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size > rastrules::io::kMaxSceneBytes)
     return 0;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  const auto read = rastrules::io::read_any_scene(text);
+  const auto read = rastrules::io::read_scene(text);
   if (const auto* err = std::get_if<SceneError>(&read)) {
-    check_error(*err, "read_any_scene", data, size);
+    check_error(*err, "read_scene", data, size);
     return 0;
   }
-  const auto* scene = std::get_if<kp::PipeScene>(&read);
-  if (scene == nullptr)
+  const auto* scene = std::get_if<Scene>(&read);
+  if (!rastrules::has_pipeline_state(*scene))
     return 0; // a window-space scene: fuzz_scene_parser's
 
-  // Written back, the text reads to the same pipeline scene.
-  const auto reread = rastrules::io::read_any_scene(rastrules::io::write_pipe_scene(*scene));
+  // Written back, the text reads to the same scene.
+  const auto reread = rastrules::io::read_scene(rastrules::io::write_scene(*scene));
   if (const auto* err = std::get_if<SceneError>(&reread))
-    fail("write_pipe_scene wrote text that read_any_scene rejects", err->what(), data, size);
-  if (!std::holds_alternative<kp::PipeScene>(reread) ||
-      !rastrules::io::same_pipe_scene(std::get<kp::PipeScene>(reread), *scene))
-    fail("write_pipe_scene wrote text that reads back to another scene", "", data, size);
+    fail("write_scene wrote text that read_scene rejects", err->what(), data, size);
+  if (!rastrules::io::same_scene(std::get<Scene>(reread), *scene))
+    fail("write_scene wrote text that reads back to another scene", "", data, size);
 
   // Small scenes run (big targets make one input slow, not more interesting).
-  if (std::int64_t{scene->base.width} * scene->base.height > 4096 || scene->primitives.size() > 16)
+  if (std::int64_t{scene->width} * scene->height > 4096 || scene->primitives.size() > 16)
     return 0;
   kp::PipeOptions fast;
   fast.max_fragments = 1u << 16;

@@ -404,11 +404,11 @@ Mismatches check_against_oracle(const Scene& scene, const PreparedScene& ps,
   return c.take();
 }
 
-Mismatches check_pipeline_values(const kp::PipeScene& scene, const kp::PipeResult& result,
+Mismatches check_pipeline_values(const Scene& scene, const kp::PipeResult& result,
                                  const CheckOptions& options, std::size_t* oracle_checks) {
-  const kp::Viewport vp = scene.viewport.value_or(kp::Viewport{
-      0, 0, static_cast<float>(scene.base.width), static_cast<float>(scene.base.height), 0, 1});
-  const SamplePattern& pattern = scene.base.msaa.pattern;
+  const kp::Viewport vp = scene.viewport.value_or(
+      kp::Viewport{0, 0, static_cast<float>(scene.width), static_cast<float>(scene.height), 0, 1});
+  const SamplePattern& pattern = scene.msaa.pattern;
   const kp::DepthFormat fmt = scene.depth ? scene.depth->format : kp::DepthFormat::kD24;
   const kp::DepthValue lo = kp::to_depth_format(vp.min_depth, 0, 1, fmt);
   const kp::DepthValue hi = kp::to_depth_format(vp.max_depth, 0, 1, fmt);

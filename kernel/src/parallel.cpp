@@ -189,12 +189,4 @@ std::vector<Fragment> rasterize(const PreparedScene& scene, const RenderOptions&
   return out; // primitives in order, each sorted by (y, x, seg, sample)
 }
 
-std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene,
-                                                       const RenderOptions& options) {
-  auto prepared = prepare(scene);
-  if (auto* err = std::get_if<SceneError>(&prepared))
-    return *err;
-  return rasterize(std::get<PreparedScene>(prepared), options);
-}
-
 } // namespace rastrules

@@ -16,10 +16,6 @@ void apply(const Conventions& c, Scene& scene) {
     scene.msaa.pattern = center_pattern(n);
   if (c.pattern == PatternKind::kStandard && scene.msaa.pattern.kind == PatternKind::kCenter)
     scene.msaa.pattern = standard_pattern(n);
-}
-
-void apply(const Conventions& c, pipe::PipeScene& scene) {
-  apply(c, scene.base);
   scene.provoking = c.provoking;
   if (scene.depth)
     scene.depth->format = c.depth;
@@ -32,11 +28,6 @@ Conventions conventions_of(const Scene& scene) {
   c.line_mode = scene.line_mode;
   c.pattern = scene.msaa.pattern.kind;
   c.centroid = scene.msaa.centroid_rule;
-  return c;
-}
-
-Conventions conventions_of(const pipe::PipeScene& scene) {
-  Conventions c = conventions_of(scene.base);
   c.provoking = scene.provoking;
   if (scene.depth)
     c.depth = scene.depth->format;

@@ -60,6 +60,54 @@ Primitive make_triangle(const std::array<FloatPoint, 3>& v) {
   return p;
 }
 
+Primitive coverage_of(const Primitive& p) {
+  Primitive out;
+  out.type = p.type;
+  out.v = p.v;
+  out.aa = p.aa;
+  out.color = p.color;
+  return out;
+}
+
+// rule: SCENE.PIPELINE
+std::optional<std::string> first_pipeline_field(const Scene& scene) {
+  if (scene.viewport)
+    return "viewport";
+  if (scene.model)
+    return "transform.model";
+  if (scene.view)
+    return "transform.view";
+  if (scene.projection)
+    return "transform.projection";
+  if (scene.depth)
+    return "depth";
+  if (!scene.attributes.empty())
+    return "attributes";
+  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+    const Primitive& prim = scene.primitives[p];
+    const char* key = !prim.pos.empty()    ? "pos"
+                      : !prim.z.empty()    ? "z"
+                      : !prim.w.empty()    ? "w"
+                      : !prim.attr.empty() ? "attr"
+                                           : nullptr;
+    if (key != nullptr)
+      return "primitives[" + std::to_string(p) + "]." + key;
+  }
+  return std::nullopt;
+}
+
+Scene target_of(const Scene& scene) {
+  Scene out;
+  out.width = scene.width;
+  out.height = scene.height;
+  out.state = scene.state;
+  out.line_mode = scene.line_mode;
+  out.msaa = scene.msaa;
+  out.clear_color = scene.clear_color;
+  out.provoking = scene.provoking;
+  return out;
+}
+
 std::size_t required_vertex_count(PrimitiveType t) {
   switch (t) {
   case PrimitiveType::kTriangle:
@@ -731,13 +779,6 @@ std::variant<ResolvedImage, SceneError> resolve(const PreparedScene& scene,
     img.pixels.push_back(resolve_pixel(pixel));
   }
   return img;
-}
-
-std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene) {
-  auto prepared = prepare(scene);
-  if (auto* err = std::get_if<SceneError>(&prepared))
-    return *err;
-  return rasterize(std::get<PreparedScene>(prepared));
 }
 
 } // namespace rastrules

@@ -291,11 +291,11 @@ RC_GTEST_PROP(PipeGeometry, GuardBandClippingKeepsCoverageAwayFromEdges, ()) {
   const kp::Viewport vp = *pg::viewport(w, h);
   const std::array<kp::Vec4f, 3> tri{*guard_band_vertex(), *guard_band_vertex(),
                                      *guard_band_vertex()};
-  kp::PipeScene s;
-  s.base.width = w;
-  s.base.height = h;
+  rastrules::Scene s;
+  s.width = w;
+  s.height = h;
   s.viewport = vp;
-  kp::PipePrimitive p;
+  rastrules::Primitive p;
   p.pos = {tri[0], tri[1], tri[2]};
   s.primitives.push_back(p);
   const auto res = kp::run_pipeline(s);

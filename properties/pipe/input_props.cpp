@@ -35,20 +35,20 @@ using rastrules::PrimitiveType;
 constexpr float kTwo64 = 18446744073709551616.0f;
 
 // A small valid scene of clip-space and window-space triangles with n attributes.
-kp::PipeScene valid_scene(std::size_t nattr) {
-  kp::PipeScene s;
-  s.base.width = 8;
-  s.base.height = 8;
+rastrules::Scene valid_scene(std::size_t nattr) {
+  rastrules::Scene s;
+  s.width = 8;
+  s.height = 8;
   for (std::size_t k = 0; k < nattr; ++k)
     s.attributes.push_back(kp::AttributeDecl{"a" + std::to_string(k), {}, {}});
   const int n = *rc::gen::inRange(1, 4);
   for (int i = 0; i < n; ++i) {
-    kp::PipePrimitive p;
+    rastrules::Primitive p;
     if (*rc::gen::arbitrary<bool>()) {
       p.pos = {kp::Vec4f{-0.5f, -0.5f, 0.5f, 1.0f}, kp::Vec4f{0.5f, -0.5f, 0.5f, 1.0f},
                kp::Vec4f{0.0f, 0.5f, 0.5f, 1.0f}};
     } else {
-      p.base.v = {FloatPoint{1.0f, 1.0f}, FloatPoint{6.0f, 1.0f}, FloatPoint{3.0f, 6.0f}};
+      p.v = {FloatPoint{1.0f, 1.0f}, FloatPoint{6.0f, 1.0f}, FloatPoint{3.0f, 6.0f}};
     }
     for (int j = 0; j < 3 && nattr > 0; ++j)
       p.attr.push_back(std::vector<float>(nattr, 0.25f));
@@ -64,11 +64,11 @@ bool names(const rastrules::SceneError& e, const std::string& prefix, const std:
 // rule: PIPE.INPUT.POSITION, PIPE.INPUT.ATTRIBUTES, PIPE.TRANSFORM.FLOAT32
 RC_GTEST_PROP(PipeInput, OneBadValueIsRejectedByName, ()) {
   const std::size_t nattr = static_cast<std::size_t>(*rc::gen::inRange(0, 3));
-  kp::PipeScene s = valid_scene(nattr);
+  rastrules::Scene s = valid_scene(nattr);
   const std::size_t i =
       static_cast<std::size_t>(*rc::gen::inRange<std::size_t>(0, s.primitives.size()));
   const std::size_t j = static_cast<std::size_t>(*rc::gen::inRange(0, 3));
-  kp::PipePrimitive& p = s.primitives[i];
+  rastrules::Primitive& p = s.primitives[i];
   const std::string prim = "primitives[" + std::to_string(i) + "]";
   const float huge = std::nextafter(kTwo64, std::numeric_limits<float>::infinity());
   const float bad = *rc::gen::element(std::numeric_limits<float>::quiet_NaN(),
@@ -115,7 +115,7 @@ RC_GTEST_PROP(PipeInput, OneBadValueIsRejectedByName, ()) {
     expect_part = "";
     planted = "matrix entry";
   } else if (p.pos.empty()) { // a window-space vertex that does not snap
-    p.base.v[j][static_cast<std::size_t>(*rc::gen::inRange(0, 2))] =
+    p.v[j][static_cast<std::size_t>(*rc::gen::inRange(0, 2))] =
         *rc::gen::element(std::numeric_limits<float>::quiet_NaN(), 40000.0f, -1e30f);
     expect_part = ".v[" + std::to_string(j) + "]";
     planted = "window vertex";
@@ -144,22 +144,21 @@ RC_GTEST_PROP(PipeInput, OneBadValueIsRejectedByName, ()) {
 }
 
 // A window-space scene of triangles, points and lines, without depth and attributes.
-rc::Gen<kp::PipeScene> coverage_only_scene() {
+rc::Gen<rastrules::Scene> coverage_only_scene() {
   return rc::gen::exec([] {
-    kp::PipeScene s;
-    s.base.width = *rc::gen::inRange(1, 20);
-    s.base.height = *rc::gen::inRange(1, 20);
-    s.base.state = *rastrules::gen::raster_state();
-    s.base.msaa.pattern = rastrules::standard_pattern(*rc::gen::element(1u, 4u));
+    rastrules::Scene s;
+    s.width = *rc::gen::inRange(1, 20);
+    s.height = *rc::gen::inRange(1, 20);
+    s.state = *rastrules::gen::raster_state();
+    s.msaa.pattern = rastrules::standard_pattern(*rc::gen::element(1u, 4u));
     const int n = *rc::gen::inRange(1, 5);
     for (int i = 0; i < n; ++i) {
-      kp::PipePrimitive p;
-      const rastrules::gen::GenTriangle t =
-          *rastrules::gen::triangle_near(s.base.width, s.base.height);
-      p.base.type = *rc::gen::element(PrimitiveType::kTriangle, PrimitiveType::kTriangle,
-                                      PrimitiveType::kPoint, PrimitiveType::kLine);
-      const std::size_t nv = rastrules::required_vertex_count(p.base.type);
-      p.base.v.assign(t.v.begin(), t.v.begin() + static_cast<std::ptrdiff_t>(nv));
+      rastrules::Primitive p;
+      const rastrules::gen::GenTriangle t = *rastrules::gen::triangle_near(s.width, s.height);
+      p.type = *rc::gen::element(PrimitiveType::kTriangle, PrimitiveType::kTriangle,
+                                 PrimitiveType::kPoint, PrimitiveType::kLine);
+      const std::size_t nv = rastrules::required_vertex_count(p.type);
+      p.v.assign(t.v.begin(), t.v.begin() + static_cast<std::ptrdiff_t>(nv));
       s.primitives.push_back(p);
     }
     return s;
@@ -168,12 +167,12 @@ rc::Gen<kp::PipeScene> coverage_only_scene() {
 
 // rule: PIPE.EFFECTS.ON_DEMAND
 RC_GTEST_PROP(PipeInput, CoverageOnlyScenesAreTheCoverageKernel, ()) {
-  const kp::PipeScene s = *coverage_only_scene();
+  const rastrules::Scene s = *coverage_only_scene();
   const auto r =
       kp::run_pipeline(s, *rc::gen::element(kp::PipeOptions{}, kp::PipeOptions::plain()));
-  rastrules::Scene ws = s.base;
-  for (const kp::PipePrimitive& p : s.primitives)
-    ws.primitives.push_back(p.base);
+  rastrules::Scene ws = rastrules::target_of(s);
+  for (const rastrules::Primitive& p : s.primitives)
+    ws.primitives.push_back(rastrules::coverage_of(p));
   const auto want = rastrules::render(ws);
   if (std::holds_alternative<rastrules::SceneError>(want)) {
     RC_ASSERT(std::holds_alternative<rastrules::SceneError>(

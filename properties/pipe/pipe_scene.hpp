@@ -72,8 +72,8 @@ inline std::string cull_name(CullMode c) {
   return c == CullMode::kNone ? "none" : (c == CullMode::kBack ? "back" : "front");
 }
 
-inline void show(const kp::PipeScene& s, std::ostream& os) {
-  const Scene& b = s.base;
+inline void show(const rastrules::Scene& s, std::ostream& os) {
+  const Scene& b = s;
   os << "scene: target " << b.width << "x" << b.height << ", cull " << cull_name(b.state.cull)
      << ", front " << (b.state.front_face == FrontFace::kClockwise ? "cw" : "ccw") << ", fill "
      << static_cast<int>(b.state.fill) << ", samples " << b.msaa.count() << ", shading "
@@ -104,13 +104,13 @@ inline void show(const kp::PipeScene& s, std::ostream& os) {
     os << "  attribute " << a.name << " " << interpolation_name(a.interpolation) << " "
        << location_name(a.location) << "\n";
   for (std::size_t i = 0; i < s.primitives.size(); ++i) {
-    const kp::PipePrimitive& p = s.primitives[i];
-    os << "  prim " << i << " " << to_string(p.base.type) << (p.base.aa ? " aa" : "") << ":";
+    const rastrules::Primitive& p = s.primitives[i];
+    os << "  prim " << i << " " << to_string(p.type) << (p.aa ? " aa" : "") << ":";
     if (!p.pos.empty()) {
       for (const kp::Vec4f& v : p.pos)
         os << " pos " << pg::fs(v);
     } else {
-      for (const FloatPoint& v : p.base.v)
+      for (const FloatPoint& v : p.v)
         os << " v " << pg::fs(v);
       if (!p.z.empty())
         os << " z " << pg::fs(p.z);
@@ -122,7 +122,7 @@ inline void show(const kp::PipeScene& s, std::ostream& os) {
     os << "\n";
   }
 }
-inline std::string show(const kp::PipeScene& s) {
+inline std::string show(const rastrules::Scene& s) {
   std::ostringstream os;
   show(s, os);
   return os.str();
@@ -131,11 +131,11 @@ inline std::string show(const kp::PipeScene& s) {
 // ---------------------------------------------------------------------------------------------
 // The oracle's geometry of a primitive
 
-inline op::Viewport viewport_of(const kp::PipeScene& s) {
+inline op::Viewport viewport_of(const rastrules::Scene& s) {
   if (s.viewport)
     return pg::to_oracle(*s.viewport);
-  return op::Viewport{
-      0.0f, 0.0f, static_cast<float>(s.base.width), static_cast<float>(s.base.height), 0.0f, 1.0f};
+  return op::Viewport{0.0f, 0.0f, static_cast<float>(s.width), static_cast<float>(s.height),
+                      0.0f, 1.0f};
 }
 
 // One fan triangle (or the unclipped triangle) in window space.
@@ -188,12 +188,12 @@ inline std::optional<Raw2> snap2(float x, float y) {
 
 // Appends segment k of primitive prim with window ends wv and their attributes; its flat value
 // is that of the segment's provoking vertex (PIPE.INTERP.FLAT: of each segment of a strip).
-inline void add_segment(PrimGeometry& g, const kp::PipeScene& s, std::size_t prim,
+inline void add_segment(PrimGeometry& g, const rastrules::Scene& s, std::size_t prim,
                         const std::array<op::WindowVertex, 2>& wv,
                         const std::array<std::vector<float>, 2>& attr, std::size_t k) {
-  const kp::PipePrimitive& p = s.primitives[prim];
-  const std::size_t nv = p.pos.empty() ? p.base.v.size() : p.pos.size();
-  const bool strip = p.base.type == PrimitiveType::kLineStrip;
+  const rastrules::Primitive& p = s.primitives[prim];
+  const std::size_t nv = p.pos.empty() ? p.v.size() : p.pos.size();
+  const bool strip = p.type == PrimitiveType::kLineStrip;
   const std::size_t provoking =
       s.provoking == kp::Provoking::kFirst ? (strip ? k : 0) : (strip ? k + 1 : nv - 1);
   Seg seg;
@@ -213,11 +213,11 @@ inline void add_segment(PrimGeometry& g, const kp::PipeScene& s, std::size_t pri
   g.segs.emplace_back(std::move(seg));
 }
 
-inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
-  const kp::PipePrimitive& p = s.primitives[prim];
+inline PrimGeometry geometry(const rastrules::Scene& s, std::size_t prim) {
+  const rastrules::Primitive& p = s.primitives[prim];
   const op::Viewport vp = viewport_of(s);
   PrimGeometry g;
-  const std::size_t nv = p.pos.empty() ? p.base.v.size() : p.pos.size();
+  const std::size_t nv = p.pos.empty() ? p.v.size() : p.pos.size();
   const std::size_t nattr = s.attributes.size();
   for (std::size_t k = 0; k < nattr; ++k) {
     std::vector<float> values;
@@ -234,8 +234,8 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
   if (p.pos.empty()) {
     for (std::size_t j = 0; j < nv; ++j) {
       op::WindowVertex v;
-      v.x = p.base.v[j][0];
-      v.y = p.base.v[j][1];
+      v.x = p.v[j][0];
+      v.y = p.v[j][1];
       v.z = p.z.empty() ? 0.0f : p.z[j];
       v.w = p.w.empty() ? 1.0f : p.w[j];
       wv.push_back(v);
@@ -270,7 +270,7 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
     };
     // PIPE.CLIP.LINE: a point outside the volume is discarded, a line cut like an edge; a strip
     // with every vertex inside stays whole, otherwise each segment is cut on its own (a part).
-    if (p.base.type == PrimitiveType::kPoint) {
+    if (p.type == PrimitiveType::kPoint) {
       if (op::inside(vol, pos[0])) {
         g.other.push_back(window(pos[0]));
         add_segment(g, s, prim, {g.other[0], g.other[0]}, {cv[0].attr, cv[0].attr}, 0);
@@ -279,7 +279,7 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
       }
       return g;
     }
-    if (p.base.type == PrimitiveType::kLine || p.base.type == PrimitiveType::kLineStrip) {
+    if (p.type == PrimitiveType::kLine || p.type == PrimitiveType::kLineStrip) {
       const bool all_in = std::all_of(pos.begin(), pos.end(),
                                       [&](const op::Vec4& c) { return op::inside(vol, c); });
       g.clipped = !all_in;
@@ -296,7 +296,7 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
         if (!g.problem.empty())
           return g;
       }
-      if (p.base.type == PrimitiveType::kLine && g.segs[0])
+      if (p.type == PrimitiveType::kLine && g.segs[0])
         g.other = {g.segs[0]->wv[0], g.segs[0]->wv[1]};
       // A line inside the volume is not clipped (no part), like an unclipped strip.
       return g;
@@ -313,7 +313,7 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
       attrs.push_back(c.attr);
     }
   }
-  if (p.base.type != PrimitiveType::kTriangle) {
+  if (p.type != PrimitiveType::kTriangle) {
     // Window space: a point is one segment of no length, a line or strip one per segment.
     for (std::size_t k = 0; k == 0 || k + 1 < nv; ++k) {
       const std::size_t k1 = std::min(k + 1, nv - 1);
@@ -354,8 +354,8 @@ inline PrimGeometry geometry(const kp::PipeScene& s, std::size_t prim) {
 // ---------------------------------------------------------------------------------------------
 // Sample positions, from the oracle's pattern tables
 
-inline std::vector<om::Offset> pattern_of(const kp::PipeScene& s) {
-  return om::standard_pattern(s.base.msaa.count());
+inline std::vector<om::Offset> pattern_of(const rastrules::Scene& s) {
+  return om::standard_pattern(s.msaa.count());
 }
 inline Raw2 centre_raw(std::int32_t x, std::int32_t y) {
   return {256 * std::int64_t{x} + 128, 256 * std::int64_t{y} + 128};
@@ -404,23 +404,24 @@ struct CheckStats {
 // Returns "" when r is consistent with the oracle, else a description of the first problem.
 // Checks every primitive: triangles against their parts, points, lines and each segment of a
 // strip against their own segment (PIPE.BARY.LINE).
-inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r, CheckStats& st) {
+inline std::string check_result(const rastrules::Scene& s, const kp::PipeResult& r,
+                                CheckStats& st) {
   std::ostringstream err;
   const op::Viewport vp = viewport_of(s);
   const op::Rect sc = op::viewport_scissor(vp);
-  const std::uint32_t n = s.base.msaa.count();
+  const std::uint32_t n = s.msaa.count();
   const std::vector<om::Offset> pattern = pattern_of(s);
   const bool has_depth = s.depth.has_value();
   const bool need_data = has_depth || !s.attributes.empty() ||
                          std::any_of(s.primitives.begin(), s.primitives.end(),
-                                     [](const kp::PipePrimitive& p) { return !p.pos.empty(); });
+                                     [](const rastrules::Primitive& p) { return !p.pos.empty(); });
   if (need_data ? r.data.size() != r.fragments.size() : !r.data.empty()) {
     err << "data has " << r.data.size() << " entries for " << r.fragments.size() << " fragments";
     return err.str();
   }
   const std::string fmt = has_depth ? pg::depth_format_name(s.depth->format) : "";
   const std::string func = has_depth ? pg::compare_name(s.depth->func) : "";
-  const std::int64_t W = s.base.width, H = s.base.height;
+  const std::int64_t W = s.width, H = s.height;
   std::vector<op::Stored> buffer;
   if (has_depth) {
     const op::Stored clear = op::store_exact(static_cast<double>(s.depth->clear), 0.0f, 1.0f, fmt);
@@ -465,13 +466,13 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
       return at + ": outside the viewport scissor";
     if (f.prim >= s.primitives.size())
       return at + ": no such primitive";
-    const kp::PipePrimitive& pp = s.primitives[f.prim];
+    const rastrules::Primitive& pp = s.primitives[f.prim];
     const PrimGeometry& g = geo[f.prim];
     if (g.transform_error)
       return at + ": the scene should have been rejected (transform)";
-    const bool triangle = pp.base.type == PrimitiveType::kTriangle;
-    const bool strip = pp.base.type == PrimitiveType::kLineStrip;
-    const bool point = pp.base.type == PrimitiveType::kPoint;
+    const bool triangle = pp.type == PrimitiveType::kTriangle;
+    const bool strip = pp.type == PrimitiveType::kLineStrip;
+    const bool point = pp.type == PrimitiveType::kPoint;
     const Part* part = nullptr;
     const Seg* seg = nullptr; // points, lines, strip segments (PIPE.BARY.LINE)
     std::size_t seg_index = 0;
@@ -501,14 +502,14 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
       if (d->drawn >= r.drawn.size())
         return at + ": no drawn primitive " + std::to_string(d->drawn);
       const kp::DrawnPrimitive& dp = r.drawn[d->drawn];
-      const PrimitiveType drawn_type = strip ? PrimitiveType::kLine : pp.base.type;
+      const PrimitiveType drawn_type = strip ? PrimitiveType::kLine : pp.type;
       const std::int64_t drawn_seg =
           strip && !g.clipped ? static_cast<std::int64_t>(seg_index) : -1;
       if (dp.prim != f.prim || dp.part != d->part || dp.type != drawn_type ||
           (dp.seg ? std::int64_t{*dp.seg} : -1) != drawn_seg)
         return at + ": its drawn primitive names another primitive, part, segment or type";
       if (seg) {
-        const std::size_t ends = pp.base.type == PrimitiveType::kPoint ? 1 : 2;
+        const std::size_t ends = pp.type == PrimitiveType::kPoint ? 1 : 2;
         bool same = dp.snapped.size() == ends && dp.attr.size() == s.attributes.size() &&
                     dp.flat.size() == seg->flat.size();
         for (std::size_t j = 0; same && j < ends; ++j) {
@@ -636,10 +637,9 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
         // whose centroids the MSAA properties check against the oracle (with partial masks,
         // helper lanes and sample shading, where the pixel's coverage before the mask is not
         // in the fragment). Here, where the fragment determines it, against the oracle too.
-        const std::string rule =
-            s.base.msaa.centroid_rule == CentroidRule::kD3D11 ? "d3d11" : "d3d10";
-        const bool determined = !f.helper && s.base.msaa.shading == ShadingRate::kPixel &&
-                                (s.base.msaa.sample_mask & full_mask(n)) == full_mask(n);
+        const std::string rule = s.msaa.centroid_rule == CentroidRule::kD3D11 ? "d3d11" : "d3d10";
+        const bool determined = !f.helper && s.msaa.shading == ShadingRate::kPixel &&
+                                (s.msaa.sample_mask & full_mask(n)) == full_mask(n);
         if (!f.centroid)
           return std::nullopt;
         const om::Offset o{f.centroid->offset.x, f.centroid->offset.y};
@@ -716,7 +716,7 @@ inline std::string check_result(const kp::PipeScene& s, const kp::PipeResult& r,
 
 // The coverage of each part equals the window-space path (rastrules::render of that triangle
 // with the scene's raster and multisample state), cut to the viewport scissor.
-inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& r) {
+inline std::string check_coverage(const rastrules::Scene& s, const kp::PipeResult& r) {
   const op::Rect sc = op::viewport_scissor(viewport_of(s));
   std::map<std::pair<std::uint32_t, std::int64_t>, std::vector<Fragment>> got;
   const bool has_data = !r.data.empty();
@@ -732,7 +732,7 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
                   [](const kp::AttributeDecl& a) { return a.location == kp::Location::kCentroid; });
   const auto render_one =
       [&](const Primitive& prim) -> std::variant<std::vector<Fragment>, std::string> {
-    Scene ws = s.base;
+    Scene ws = rastrules::target_of(s);
     if (any_centroid)
       ws.msaa.has_centroid = true;
     ws.primitives = {prim};
@@ -747,9 +747,8 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
     return want;
   };
   for (std::size_t p = 0; p < s.primitives.size(); ++p) {
-    const kp::PipePrimitive& pp = s.primitives[p];
-    const bool point_or_line =
-        pp.base.type == PrimitiveType::kPoint || pp.base.type == PrimitiveType::kLine;
+    const rastrules::Primitive& pp = s.primitives[p];
+    const bool point_or_line = pp.type == PrimitiveType::kPoint || pp.type == PrimitiveType::kLine;
     if (point_or_line && !pp.pos.empty()) {
       // A clip-space point or line: all its fragments (whatever their part) against the coverage
       // kernel's for its clipped window-space vertices.
@@ -767,7 +766,7 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
       }
       std::vector<Fragment> want;
       if (!g.other.empty()) {
-        Primitive prim = pp.base;
+        Primitive prim = rastrules::coverage_of(pp);
         prim.v.clear();
         for (const op::WindowVertex& v : g.other)
           prim.v.push_back(FloatPoint{v.x, v.y});
@@ -777,12 +776,12 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
         want = std::get<std::vector<Fragment>>(rendered);
       }
       if (have != want)
-        return "coverage of " + std::string(to_string(pp.base.type)) + " " + std::to_string(p) +
+        return "coverage of " + std::string(to_string(pp.type)) + " " + std::to_string(p) +
                ": pipeline " + std::to_string(have.size()) + " fragments, window-space render " +
                std::to_string(want.size());
       continue;
     }
-    if (pp.base.type == PrimitiveType::kLineStrip) {
+    if (pp.type == PrimitiveType::kLineStrip) {
       // rule: PIPE.CLIP.LINE, LINE.STRIP.SEQUENCE
       // A strip inside the volume (or in window space) covers what the coverage kernel draws for
       // the strip of its window vertices; a clipped one, segment by segment, what it draws for
@@ -791,14 +790,14 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
       if (g.transform_error)
         continue;
       std::vector<std::pair<std::int64_t, Primitive>> units;
-      Primitive whole = pp.base;
+      Primitive whole = rastrules::coverage_of(pp);
       whole.v.clear();
       for (std::size_t k = 0; k < g.segs.size(); ++k) {
         if (!g.segs[k])
           continue;
         const Seg& sg = *g.segs[k];
         if (g.clipped) {
-          Primitive line = pp.base;
+          Primitive line = rastrules::coverage_of(pp);
           line.type = PrimitiveType::kLine;
           line.v = {FloatPoint{sg.wv[0].x, sg.wv[0].y}, FloatPoint{sg.wv[1].x, sg.wv[1].y}};
           units.emplace_back(static_cast<std::int64_t>(k), line);
@@ -830,13 +829,13 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
                  ": fragments of a segment the oracle's clipper discards";
       continue;
     }
-    if (pp.base.type != PrimitiveType::kTriangle)
+    if (pp.type != PrimitiveType::kTriangle)
       continue;
     const PrimGeometry g = geometry(s, p);
     if (g.transform_error)
       continue;
     for (std::size_t k = 0; k < g.parts.size(); ++k) {
-      Scene ws = s.base;
+      Scene ws = rastrules::target_of(s);
       if (any_centroid)
         ws.msaa.has_centroid = true;
       ws.primitives = {make_triangle({FloatPoint{g.parts[k].wv[0].x, g.parts[k].wv[0].y},
@@ -878,7 +877,7 @@ inline std::string check_coverage(const kp::PipeScene& s, const kp::PipeResult& 
     }
   }
   for (const auto& [key, frags] : got) {
-    if (s.primitives[key.first].base.type == PrimitiveType::kTriangle && !frags.empty())
+    if (s.primitives[key.first].type == PrimitiveType::kTriangle && !frags.empty())
       return "primitive " + std::to_string(key.first) + " part " + std::to_string(key.second) +
              ": fragments of a part the oracle does not have";
   }

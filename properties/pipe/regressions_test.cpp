@@ -71,10 +71,10 @@ TEST(PipeRegression, BiasOfSubnormalDepthsForD32f) {
 // snapped unclipped triangle) whose coverage by run_pipeline differs from that triangle's.
 std::string guard_band_mismatches(const std::array<kp::Vec4f, 3>& tri, std::int32_t w,
                                   std::int32_t h) {
-  kp::PipeScene s;
-  s.base.width = w;
-  s.base.height = h;
-  kp::PipePrimitive p;
+  rastrules::Scene s;
+  s.width = w;
+  s.height = h;
+  rastrules::Primitive p;
   p.pos = {tri[0], tri[1], tri[2]};
   s.primitives.push_back(p);
   const auto r = kp::run_pipeline(s);
@@ -152,13 +152,13 @@ TEST(PipeRegression, GuardBandVertexMovedMoreThanOnePixel) {
   // cancellation is gone: the vertex lands on the band (it was 1.26 px beyond).
   EXPECT_LE(worst, kp::kGuardBand + 1.0);
   // The whole scene draws (its vertices snap), whatever the rounding.
-  kp::PipeScene s;
-  s.base.width = 16;
-  s.base.height = 16;
+  rastrules::Scene s;
+  s.width = 16;
+  s.height = 16;
   s.viewport = vp;
   s.depth = kp::DepthState{};
   s.depth->clip = false;
-  kp::PipePrimitive p;
+  rastrules::Primitive p;
   p.pos = {t[0].pos, t[1].pos, t[2].pos};
   s.primitives.push_back(p);
   EXPECT_TRUE(std::holds_alternative<kp::PipeResult>(kp::run_pipeline(s)));
@@ -181,19 +181,19 @@ TEST(PipeRegression, ViewportEndIsTheExactSum) {
 
 } // namespace
 
-// Found by PipeScene.FragmentsAgreeWithTheOracle (after the w plane became absolute): a vertex
+// Found by Scene.FragmentsAgreeWithTheOracle (after the w plane became absolute): a vertex
 // behind the eye at w = -3e-45 cut against w >= 2^-126 from the inside endpoint (w = 1e-6) gave
 // t = 1 - 1e-32, which rounds to 1 in double, so the new vertex was the outside one with w < 0,
 // and its window position NaN. The intersection now starts from the endpoint nearer the plane
 // and its w is raised to kWMin when rounding leaves it below (PIPE.CLIP.POLYGON).
 // rule: PIPE.CLIP.POLYGON, PIPE.CLIP.COMPUTE, PIPE.CLIP.VOLUME
 TEST(PipeRegression, WPlaneCutKeepsWPositive) {
-  kp::PipeScene s;
-  s.base.width = 2;
-  s.base.height = 2;
+  rastrules::Scene s;
+  s.width = 2;
+  s.height = 2;
   s.depth = kp::DepthState{};
   s.depth->clip = false;
-  kp::PipePrimitive p;
+  rastrules::Primitive p;
   p.pos = {{-1.5e-06f, -1.5e-06f, -1.015625e-07f, 1e-06f},
            {-1.5e-06f, -1.5e-06f, -1.015625e-07f, 1e-06f},
            {-3e-45f, -3e-45f, 3e-45f, -3e-45f}};
@@ -209,7 +209,7 @@ TEST(PipeRegression, WPlaneCutKeepsWPositive) {
   }
 }
 
-// Found by PipeScene.FragmentsAgreeWithTheOracle at 6000 cases: with slope-scaled bias on a
+// Found by Scene.FragmentsAgreeWithTheOracle at 6000 cases: with slope-scaled bias on a
 // triangle whose window depths are near FLT_MAX (depth clipping off), the slope term overflowed
 // to an infinity, Zi + Bias became infinite and the interpolated depth non-finite (the oracle
 // refused it). Every float32 step of the bias now saturates at +-FLT_MAX (PIPE.DEPTH.BIAS).
@@ -224,14 +224,14 @@ TEST(PipeRegression, HugeSlopeBiasSaturates) {
   EXPECT_EQ(got, std::numeric_limits<float>::max());
   EXPECT_TRUE(pg::same_bits(got, want)) << "kernel " << got << ", oracle " << want;
 
-  kp::PipeScene s;
-  s.base.width = 8;
-  s.base.height = 8;
+  rastrules::Scene s;
+  s.width = 8;
+  s.height = 8;
   s.depth = kp::DepthState{};
   s.depth->format = kp::DepthFormat::kD16;
   s.depth->bias.slope_scaled = 10.0f;
-  kp::PipePrimitive p;
-  p.base = rastrules::make_triangle(
+  rastrules::Primitive p;
+  p = rastrules::make_triangle(
       {rastrules::FloatPoint{0, 0}, rastrules::FloatPoint{8, 0}, rastrules::FloatPoint{0, 8}});
   p.z = {3e38f, -3e38f, 3e38f};
   s.primitives.push_back(p);

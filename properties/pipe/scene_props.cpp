@@ -65,32 +65,32 @@ rc::Gen<kp::Vec4f> scene_vertex() {
 // A primitive of the given type for scene s (its target, line mode and attributes): in window
 // space with depths and w (a strip's vertices from several triangles) or in clip space; strips
 // have 2 to 5 vertices; lines are sometimes antialiased where the line mode allows it.
-rc::Gen<kp::PipePrimitive> primitive(const kp::PipeScene& scene, PrimitiveType type) {
+rc::Gen<rastrules::Primitive> primitive(const rastrules::Scene& scene, PrimitiveType type) {
   // By value: RapidCheck calls this again while shrinking, after the scene is gone.
   struct State {
     std::int32_t width, height;
     rastrules::LineMode line_mode;
     std::size_t nattr;
   };
-  const State s{scene.base.width, scene.base.height, scene.base.line_mode, scene.attributes.size()};
+  const State s{scene.width, scene.height, scene.line_mode, scene.attributes.size()};
   return rc::gen::exec([s, type] {
-    kp::PipePrimitive p;
-    p.base.type = type;
-    p.base.v.clear(); // a default Primitive is a triangle with three vertices
+    rastrules::Primitive p;
+    p.type = type;
+    p.v.clear(); // a default Primitive is a triangle with three vertices
     const bool linelike = type == PrimitiveType::kLine || type == PrimitiveType::kLineStrip;
-    p.base.aa =
+    p.aa =
         linelike && s.line_mode == rastrules::LineMode::kD3DDiamond && *rc::gen::inRange(0, 6) == 0;
     const std::size_t nv = type == PrimitiveType::kLineStrip
                                ? static_cast<std::size_t>(*rc::gen::inRange(2, 6))
                                : rastrules::required_vertex_count(type);
     if (*rc::gen::inRange(0, 10) < 3) {
       const bool with_z = *rc::gen::inRange(0, 4) != 0, with_w = *rc::gen::arbitrary<bool>();
-      while (p.base.v.size() < nv) {
+      while (p.v.size() < nv) {
         const rastrules::gen::GenTriangle t = *rastrules::gen::triangle_near(s.width, s.height);
         const auto z = *pg::depth_triple();
         const auto w = *pg::w_triple();
-        for (std::size_t j = 0; j < 3 && p.base.v.size() < nv; ++j) {
-          p.base.v.push_back(t.v[j]);
+        for (std::size_t j = 0; j < 3 && p.v.size() < nv; ++j) {
+          p.v.push_back(t.v[j]);
           if (with_z)
             p.z.push_back(z[j]);
           if (with_w)
@@ -115,35 +115,33 @@ rc::Gen<kp::PipePrimitive> primitive(const kp::PipeScene& scene, PrimitiveType t
   });
 }
 
-rc::Gen<kp::PipeScene> pipe_scene(std::int32_t max_side, int max_prims) {
+rc::Gen<rastrules::Scene> pipe_scene(std::int32_t max_side, int max_prims) {
   return rc::gen::exec([max_side, max_prims] {
-    kp::PipeScene s;
-    s.base.width = *rc::gen::inRange(2, max_side + 1);
-    s.base.height = *rc::gen::inRange(2, max_side + 1);
-    s.base.state.cull = *rc::gen::weightedElement<CullMode>(
+    rastrules::Scene s;
+    s.width = *rc::gen::inRange(2, max_side + 1);
+    s.height = *rc::gen::inRange(2, max_side + 1);
+    s.state.cull = *rc::gen::weightedElement<CullMode>(
         {{3, CullMode::kNone}, {1, CullMode::kBack}, {1, CullMode::kFront}});
-    s.base.state.front_face =
-        *rc::gen::element(FrontFace::kClockwise, FrontFace::kCounterClockwise);
-    s.base.state.fill =
-        *rc::gen::element(FillConvention::kTopLeft, FillConvention::kTopRight,
-                          FillConvention::kBottomLeft, FillConvention::kBottomRight);
+    s.state.front_face = *rc::gen::element(FrontFace::kClockwise, FrontFace::kCounterClockwise);
+    s.state.fill = *rc::gen::element(FillConvention::kTopLeft, FillConvention::kTopRight,
+                                     FillConvention::kBottomLeft, FillConvention::kBottomRight);
     const std::uint32_t n = *rc::gen::element(1u, 1u, 4u, 8u);
-    s.base.msaa.pattern = rastrules::standard_pattern(n);
+    s.msaa.pattern = rastrules::standard_pattern(n);
     const bool sample_shading = n > 1 && *rc::gen::inRange(0, 4) == 0;
-    s.base.msaa.shading =
+    s.msaa.shading =
         sample_shading ? rastrules::ShadingRate::kSample : rastrules::ShadingRate::kPixel;
-    s.base.msaa.centroid_rule =
+    s.msaa.centroid_rule =
         *rc::gen::element(rastrules::CentroidRule::kD3D11, rastrules::CentroidRule::kD3D10);
     // Partial sample masks (MSAA.MASK.AND), and 2x2 quads with helper lanes, with or without the
     // derivatives that need them (MSAA.QUAD.HELPER, MSAA.QUAD.DERIVATIVES): helper lanes carry
     // the attributes a shader's derivatives are formed from.
     if (n > 1 && *rc::gen::inRange(0, 4) == 0)
-      s.base.msaa.sample_mask = *rc::gen::inRange<std::uint32_t>(0, 1u << n);
+      s.msaa.sample_mask = *rc::gen::inRange<std::uint32_t>(0, 1u << n);
     const int quads = *rc::gen::inRange(0, 8);
-    s.base.msaa.quads = quads == 0;
-    s.base.msaa.derivatives = quads == 1   ? rastrules::DerivativeMode::kFine
-                              : quads == 2 ? rastrules::DerivativeMode::kCoarse
-                                           : rastrules::DerivativeMode::kNone;
+    s.msaa.quads = quads == 0;
+    s.msaa.derivatives = quads == 1   ? rastrules::DerivativeMode::kFine
+                         : quads == 2 ? rastrules::DerivativeMode::kCoarse
+                                      : rastrules::DerivativeMode::kNone;
     const int nattr = *rc::gen::inRange(0, 4);
     for (int k = 0; k < nattr; ++k) {
       kp::AttributeDecl a;
@@ -160,7 +158,7 @@ rc::Gen<kp::PipeScene> pipe_scene(std::int32_t max_side, int max_prims) {
     }
     const int vp_kind = *rc::gen::inRange(0, 10);
     if (vp_kind >= 5)
-      s.viewport = *pg::viewport(s.base.width, s.base.height, vp_kind == 9);
+      s.viewport = *pg::viewport(s.width, s.height, vp_kind == 9);
     if (*rc::gen::inRange(0, 10) == 0)
       s.model = *pg::matrix();
     if (*rc::gen::inRange(0, 10) == 0)
@@ -178,7 +176,7 @@ rc::Gen<kp::PipeScene> pipe_scene(std::int32_t max_side, int max_prims) {
     }
     s.provoking = *rc::gen::element(kp::Provoking::kFirst, kp::Provoking::kLast);
     // Vulkan's Bresenham lines have no sample shading (MSAA.SHADING.SAMPLE).
-    s.base.line_mode =
+    s.line_mode =
         sample_shading
             ? *rc::gen::element(rastrules::LineMode::kD3DDiamond, rastrules::LineMode::kQuadWide,
                                 rastrules::LineMode::kQuadNarrow)
@@ -199,7 +197,7 @@ rc::Gen<kp::PipeScene> pipe_scene(std::int32_t max_side, int max_prims) {
   });
 }
 
-bool transform_rejected(const kp::PipeScene& s, const rastrules::SceneError& e) {
+bool transform_rejected(const rastrules::Scene& s, const rastrules::SceneError& e) {
   if (!s.model && !s.view && !s.projection)
     return false;
   for (std::size_t i = 0; i < s.primitives.size(); ++i) {
@@ -210,7 +208,7 @@ bool transform_rejected(const kp::PipeScene& s, const rastrules::SceneError& e) 
 }
 
 // Runs s; fails on an error unless a transform overflowed (then returns nothing).
-std::optional<kp::PipeResult> run(const kp::PipeScene& s, const kp::PipeOptions& o) {
+std::optional<kp::PipeResult> run(const rastrules::Scene& s, const kp::PipeOptions& o) {
   auto r = kp::run_pipeline(s, o);
   if (const auto* e = std::get_if<rastrules::SceneError>(&r)) {
     if (transform_rejected(s, *e))
@@ -225,8 +223,8 @@ std::optional<kp::PipeResult> run(const kp::PipeScene& s, const kp::PipeOptions&
 // rule: PIPE.INTERP.BOUND, PIPE.DEPTH.INTERP, PIPE.DEPTH.BOUND, PIPE.DEPTH.TEST, PIPE.DEPTH.WRITE
 // rule: PIPE.DEPTH.KILL, PIPE.VIEWPORT.SCISSOR, PIPE.BARY.LINE, LINE.STRIP.SEQUENCE
 // rule: MSAA.QUAD.HELPER, MSAA.MASK.AND
-RC_GTEST_PROP(PipeScene, FragmentsAgreeWithTheOracle, ()) {
-  const kp::PipeScene s = *pg::full_size(pipe_scene(12, 4));
+RC_GTEST_PROP(Scene, FragmentsAgreeWithTheOracle, ()) {
+  const rastrules::Scene s = *pg::full_size(pipe_scene(12, 4));
   const auto r = run(s, kp::PipeOptions::plain());
   if (!r) {
     RC_TAG("rejected: transform overflow");
@@ -248,15 +246,15 @@ RC_GTEST_PROP(PipeScene, FragmentsAgreeWithTheOracle, ()) {
   RC_CLASSIFY(std::any_of(r->fragments.begin(), r->fragments.end(),
                           [](const rastrules::Fragment& f) { return f.helper; }),
               "helper lanes");
-  RC_CLASSIFY((s.base.msaa.sample_mask & rastrules::full_mask(s.base.msaa.count())) !=
-                  rastrules::full_mask(s.base.msaa.count()),
+  RC_CLASSIFY((s.msaa.sample_mask & rastrules::full_mask(s.msaa.count())) !=
+                  rastrules::full_mask(s.msaa.count()),
               "partial sample mask");
   RC_CLASSIFY(std::any_of(s.primitives.begin(), s.primitives.end(),
-                          [](const kp::PipePrimitive& p) {
-                            return p.base.type == PrimitiveType::kLineStrip;
+                          [](const rastrules::Primitive& p) {
+                            return p.type == PrimitiveType::kLineStrip;
                           }),
               "line strips");
-  RC_CLASSIFY(s.base.msaa.shading == rastrules::ShadingRate::kSample &&
+  RC_CLASSIFY(s.msaa.shading == rastrules::ShadingRate::kSample &&
                   std::any_of(s.attributes.begin(), s.attributes.end(),
                               [](const kp::AttributeDecl& a) {
                                 return a.location == kp::Location::kCentroid;
@@ -316,9 +314,9 @@ std::string describe(const kp::PipeOptions& o) {
 
 // rule: PIPE.OPT.TILES, PIPE.OPT.HIZ, PIPE.OPT.EARLY_Z, PIPE.OPT.FAST_CLEAR, PIPE.OPT.THREADS
 // rule: FAST.EQUALS.PLAIN, FAST.THREADS.DETERMINISTIC
-RC_GTEST_PROP(PipeScene, OptimizationsTraversalsAndThreadsChangeNothing, ()) {
+RC_GTEST_PROP(Scene, OptimizationsTraversalsAndThreadsChangeNothing, ()) {
   // Larger targets than above, so that scenes span several 16 and 32 px tiles.
-  const kp::PipeScene s = *pg::full_size(pipe_scene(70, 6));
+  const rastrules::Scene s = *pg::full_size(pipe_scene(70, 6));
   const auto plain = run(s, kp::PipeOptions::plain());
   if (!plain)
     return;
@@ -338,7 +336,7 @@ RC_GTEST_PROP(PipeScene, OptimizationsTraversalsAndThreadsChangeNothing, ()) {
   if (!d2.empty())
     RC_FAIL("options (" + describe(o) + ") differ from plain: " + d2 + "\n" + ps::show(s));
   RC_CLASSIFY(fast->stats.hiz_rejected > 0, "Hi-Z rejected something");
-  RC_CLASSIFY(s.base.width > 32 || s.base.height > 32, "several 32 px tiles");
+  RC_CLASSIFY(s.width > 32 || s.height > 32, "several 32 px tiles");
 }
 
 // rule: LINE.STRIP.SEQUENCE, PIPE.BARY.LINE, PIPE.INTERP.FLAT, PIPE.CLIP.LINE
@@ -346,9 +344,9 @@ RC_GTEST_PROP(PipeScene, OptimizationsTraversalsAndThreadsChangeNothing, ()) {
 // gives: coverage, barycentrics, attributes (flat ones from the segment's provoking vertex),
 // depths and the depth test, clipped or not, in every line mode, with either provoking vertex.
 RC_GTEST_PROP(PipeStrip, EachSegmentEqualsTheSameSegmentDrawnAsALine, ()) {
-  kp::PipeScene s = *pg::full_size(pipe_scene(16, 1));
+  rastrules::Scene s = *pg::full_size(pipe_scene(16, 1));
   s.primitives = {*primitive(s, PrimitiveType::kLineStrip)};
-  const kp::PipeScene lines = pg::strips_as_lines(s);
+  const rastrules::Scene lines = pg::strips_as_lines(s);
   const auto a = run(s, kp::PipeOptions::plain());
   const auto b = run(lines, kp::PipeOptions::plain());
   if (!a || !b) {
@@ -407,7 +405,7 @@ RC_GTEST_PROP(PipeStrip, EachSegmentEqualsTheSameSegmentDrawnAsALine, ()) {
   RC_CLASSIFY(!s.attributes.empty(), "attributes");
   RC_CLASSIFY(s.depth.has_value(), "depth");
   RC_CLASSIFY(oa.empty(), "no fragment");
-  RC_TAG(std::string(to_string(s.base.line_mode)));
+  RC_TAG(std::string(to_string(s.line_mode)));
 }
 
 } // namespace

@@ -13,24 +13,24 @@
 namespace rastrules::pipe_gen {
 
 // rule: LINE.STRIP.SEQUENCE
-inline pipe::PipeScene strips_as_lines(const pipe::PipeScene& s) {
-  pipe::PipeScene out = s;
+inline rastrules::Scene strips_as_lines(const rastrules::Scene& s) {
+  rastrules::Scene out = s;
   out.primitives.clear();
-  for (const pipe::PipePrimitive& p : s.primitives) {
-    if (p.base.type != PrimitiveType::kLineStrip) {
+  for (const rastrules::Primitive& p : s.primitives) {
+    if (p.type != PrimitiveType::kLineStrip) {
       out.primitives.push_back(p);
       continue;
     }
-    const std::size_t nv = p.pos.empty() ? p.base.v.size() : p.pos.size();
+    const std::size_t nv = p.pos.empty() ? p.v.size() : p.pos.size();
     for (std::size_t k = 0; k + 1 < nv; ++k) {
-      pipe::PipePrimitive l = p;
-      l.base.type = PrimitiveType::kLine;
+      rastrules::Primitive l = p;
+      l.type = PrimitiveType::kLine;
       const auto pick = [k](const auto& v) {
         using V = std::decay_t<decltype(v)>;
         return v.empty() ? V{} : V{v[k], v[k + 1]};
       };
       if (p.pos.empty()) // window space; in clip space base.v is unused (and may be the default)
-        l.base.v = pick(p.base.v);
+        l.v = pick(p.v);
       l.pos = pick(p.pos);
       l.z = pick(p.z);
       l.w = pick(p.w);

@@ -147,12 +147,12 @@ rc::Gen<ClipMesh> clip_mesh() {
 // rule: PIPE.CLIP.POLYGON, PIPE.CLIP.COMPUTE, PIPE.CLIP.VOLUME
 RC_GTEST_PROP(PipeWatertight, ClippedMeshCoversEachSampleOnceInsideItsImage, ()) {
   const ClipMesh m = *pg::full_size(clip_mesh());
-  kp::PipeScene s;
-  s.base.width = m.width;
-  s.base.height = m.height;
-  s.base.msaa.pattern = rastrules::standard_pattern(m.samples);
+  rastrules::Scene s;
+  s.width = m.width;
+  s.height = m.height;
+  s.msaa.pattern = rastrules::standard_pattern(m.samples);
   for (const auto& t : m.triangles) {
-    kp::PipePrimitive p;
+    rastrules::Primitive p;
     p.pos = {m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]};
     s.primitives.push_back(p);
   }

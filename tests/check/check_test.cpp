@@ -106,13 +106,13 @@ TEST(Check, MultisampledScenesGoToTheMultisamplingOracle) {
 
 // rule: PIPE.INTERP.BOUND, PIPE.DEPTH.BOUND, PIPE.BARY.SUM
 TEST(Check, PipelineValuesWithinTheOraclesBounds) {
-  pipe::PipeScene s;
-  s.base.width = s.base.height = 16;
+  rastrules::Scene s;
+  s.width = s.height = 16;
   s.attributes = {
       pipe::AttributeDecl{"u", pipe::Interpolation::kPerspective, pipe::Location::kCenter}};
   s.depth = pipe::DepthState{};
-  pipe::PipePrimitive p;
-  p.base.type = PrimitiveType::kTriangle;
+  rastrules::Primitive p;
+  p.type = PrimitiveType::kTriangle;
   p.pos = {{-0.9f, -0.9f, 0.2f, 1.0f}, {0.9f, -0.9f, 0.5f, 2.0f}, {-0.9f, 0.9f, 0.8f, 4.0f}};
   p.attr = {{0.0f}, {1.0f}, {2.0f}};
   s.primitives.push_back(p);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Pipeline scenes in tools/io, called directly: every key of SCENE.PIPELINE read into
-// rastrules::pipe::PipeScene, the defaults, plain scenes staying plain, the writer's round trip,
+// rastrules::Scene, the defaults, plain scenes staying plain, the writer's round trip,
 // and the fragment and depth-buffer output of SCENE.OUTPUT.PIPELINE on hand-made fragments.
 // (The bad-input catalog, tests/bad_input/pipe_*.json, checks the errors.)
 
@@ -32,18 +32,20 @@ std::uint32_t bits(float f) {
   return std::bit_cast<std::uint32_t>(f);
 }
 
-pipe::PipeScene pipe_ok(const std::string& text) {
-  auto r = io::read_any_scene(text);
+rastrules::Scene pipe_ok(const std::string& text) {
+  auto r = io::read_scene(text);
   if (auto* e = std::get_if<SceneError>(&r))
     ADD_FAILURE() << "unexpected error: " << e->what();
-  if (std::holds_alternative<rastrules::Scene>(r))
-    ADD_FAILURE() << "read as a plain scene: " << text;
-  return std::holds_alternative<pipe::PipeScene>(r) ? std::get<pipe::PipeScene>(r)
-                                                    : pipe::PipeScene{};
+  if (auto* s = std::get_if<rastrules::Scene>(&r)) {
+    if (!rastrules::has_pipeline_state(*s))
+      ADD_FAILURE() << "read without pipeline state: " << text;
+    return *s;
+  }
+  return rastrules::Scene{};
 }
 
 std::string error_of(const std::string& text) {
-  auto r = io::read_any_scene(text);
+  auto r = io::read_scene(text);
   if (auto* e = std::get_if<SceneError>(&r))
     return e->what();
   return "(no error)";
@@ -55,7 +57,7 @@ constexpr const char* kPosTriangle =
 
 // rule: SCENE.PIPELINE
 TEST(PipelineSceneIo, ReadsEveryKey) {
-  const pipe::PipeScene s = pipe_ok(
+  const rastrules::Scene s = pipe_ok(
       R"({"target": {"width": 16, "height": 8}, "cull": "back", "samples": 4, "shading": "sample",
           "viewport": {"x": 1.5, "y": -2, "width": 10, "height": 6, "min_depth": 0.25, "max_depth": 0.75},
           "transform": {"model": [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16],
@@ -72,11 +74,11 @@ TEST(PipelineSceneIo, ReadsEveryKey) {
              "attr": [[0, 1, 2], [3, 4, 5], [6, 7, 8]]},
             {"type": "line", "v": [[1, 1], [5, 2]], "z": [0.5, 1], "w": [1, 4], "aa": true,
              "attr": [[1, 2, 3], [4, 5, 6]], "color": [1, 2, 3, 4]}]})");
-  EXPECT_EQ(s.base.width, 16);
-  EXPECT_EQ(s.base.height, 8);
-  EXPECT_EQ(s.base.state.cull, rastrules::CullMode::kBack);
-  EXPECT_EQ(s.base.msaa.pattern.count(), 4u);
-  EXPECT_TRUE(s.base.primitives.empty());
+  EXPECT_EQ(s.width, 16);
+  EXPECT_EQ(s.height, 8);
+  EXPECT_EQ(s.state.cull, rastrules::CullMode::kBack);
+  EXPECT_EQ(s.msaa.pattern.count(), 4u);
+  ASSERT_EQ(s.primitives.size(), 2u);
   ASSERT_TRUE(s.viewport.has_value());
   EXPECT_EQ(*s.viewport, (pipe::Viewport{1.5f, -2.0f, 10.0f, 6.0f, 0.25f, 0.75f}));
   ASSERT_TRUE(s.model && s.view && s.projection);
@@ -105,9 +107,9 @@ TEST(PipelineSceneIo, ReadsEveryKey) {
   EXPECT_EQ(s.attributes[2].location, pipe::Location::kCenter);
   EXPECT_EQ(s.provoking, pipe::Provoking::kLast);
   ASSERT_EQ(s.primitives.size(), 2u);
-  const pipe::PipePrimitive& t = s.primitives[0];
-  EXPECT_EQ(t.base.type, rastrules::PrimitiveType::kTriangle);
-  EXPECT_TRUE(t.base.v.empty()); // positions are in pos
+  const rastrules::Primitive& t = s.primitives[0];
+  EXPECT_EQ(t.type, rastrules::PrimitiveType::kTriangle);
+  EXPECT_TRUE(t.v.empty()); // positions are in pos
   ASSERT_EQ(t.pos.size(), 3u);
   EXPECT_EQ(t.pos[0], (pipe::Vec4f{1, 2, 3, 1})); // w = 1 when omitted
   EXPECT_EQ(t.pos[1], (pipe::Vec4f{4, 5, 6, 7}));
@@ -115,11 +117,11 @@ TEST(PipelineSceneIo, ReadsEveryKey) {
   EXPECT_TRUE(t.z.empty());
   EXPECT_TRUE(t.w.empty());
   EXPECT_EQ(t.attr, (std::vector<std::vector<float>>{{0, 1, 2}, {3, 4, 5}, {6, 7, 8}}));
-  const pipe::PipePrimitive& l = s.primitives[1];
-  EXPECT_EQ(l.base.type, rastrules::PrimitiveType::kLine);
-  EXPECT_TRUE(l.base.aa);
-  EXPECT_EQ(l.base.color, (rastrules::Rgba8{1, 2, 3, 4}));
-  EXPECT_EQ(l.base.v, (std::vector<rastrules::FloatPoint>{{1, 1}, {5, 2}}));
+  const rastrules::Primitive& l = s.primitives[1];
+  EXPECT_EQ(l.type, rastrules::PrimitiveType::kLine);
+  EXPECT_TRUE(l.aa);
+  EXPECT_EQ(l.color, (rastrules::Rgba8{1, 2, 3, 4}));
+  EXPECT_EQ(l.v, (std::vector<rastrules::FloatPoint>{{1, 1}, {5, 2}}));
   EXPECT_TRUE(l.pos.empty());
   EXPECT_EQ(l.z, (std::vector<float>{0.5f, 1.0f}));
   EXPECT_EQ(l.w, (std::vector<float>{1.0f, 4.0f}));
@@ -128,8 +130,9 @@ TEST(PipelineSceneIo, ReadsEveryKey) {
 
 // rule: SCENE.PIPELINE
 TEST(PipelineSceneIo, DefaultsOfEveryKey) {
-  const pipe::PipeScene s = pipe_ok(std::string("{") + kTarget +
-                                    R"(, "viewport": {}, "depth": {}, "attributes": [{"name": "u"}],
+  const rastrules::Scene s =
+      pipe_ok(std::string("{") + kTarget +
+              R"(, "viewport": {}, "depth": {}, "attributes": [{"name": "u"}],
                                         "transform": {},
                                         "primitives": [{"type": "point", "v": [[1, 1]], "attr": [[2]]}]})");
   ASSERT_TRUE(s.viewport.has_value());
@@ -151,7 +154,7 @@ TEST(PipelineSceneIo, DefaultsOfEveryKey) {
   EXPECT_TRUE(s.primitives[0].w.empty());
 
   // Without the keys: no viewport (run_pipeline's default), no depth, no attributes.
-  const pipe::PipeScene bare =
+  const rastrules::Scene bare =
       pipe_ok(std::string("{") + kTarget + R"(, "primitives": [)" + kPosTriangle + "]}");
   EXPECT_FALSE(bare.viewport.has_value());
   EXPECT_FALSE(bare.depth.has_value());
@@ -160,54 +163,59 @@ TEST(PipelineSceneIo, DefaultsOfEveryKey) {
 
 // rule: SCENE.PIPELINE
 TEST(PipelineSceneIo, MissingViewportKeysTakeTheWholeTargetsValuesWhereverTheTargetComes) {
-  const pipe::PipeScene s = pipe_ok(
+  const rastrules::Scene s = pipe_ok(
       R"({"viewport": {"y": 2, "max_depth": 0.5}, "primitives": [], "target": {"width": 32, "height": 16}})");
   ASSERT_TRUE(s.viewport.has_value());
   EXPECT_EQ(*s.viewport, (pipe::Viewport{0.0f, 2.0f, 32.0f, 16.0f, 0.0f, 0.5f}));
 }
 
 // rule: SCENE.PIPELINE, SCENE.FORMAT.V1
-TEST(PipelineSceneIo, EachPipelineKeyMakesAPipelineSceneAndPlainScenesStayPlain) {
+TEST(PipelineSceneIo, KeysThatAskForAStageGivePipelineStateAndOthersDoNot) {
   const std::string head = std::string("{") + kTarget + ", ";
   const std::string tri = R"({"type": "triangle", "v": [[1, 1], [6, 2], [2, 3]])";
-  const std::vector<std::string> pipeline = {
-      head + R"("viewport": {}, "primitives": [])",
-      head + R"("transform": {}, "primitives": [])",
-      head + R"("depth": {}, "primitives": [])",
-      head + R"("attributes": [], "primitives": [])",
-      head + R"("provoking_vertex": "first", "primitives": [])",
-      head + R"("primitives": [)" + tri + R"(, "z": [0, 0, 0]}])",
-      head + R"("primitives": [)" + tri + R"(, "w": [1, 1, 1]}])",
-      head + R"("primitives": [)" + kPosTriangle + "]",
-      head + R"("attributes": [{"name": "a"}], "primitives": [)" + tri +
-          R"(, "attr": [[0], [0], [0]]}])",
+  // Each key that asks for a stage, with the field first_pipeline_field() names.
+  const std::vector<std::pair<std::string, std::string>> pipeline = {
+      {head + R"("viewport": {}, "primitives": [])", "viewport"},
+      {head + R"("transform": {"view": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]},
+                 "primitives": [])",
+       "transform.view"},
+      {head + R"("depth": {}, "primitives": [])", "depth"},
+      {head + R"("primitives": [)" + tri + R"(, "z": [0, 0, 0]}])", "primitives[0].z"},
+      {head + R"("primitives": [)" + tri + R"(, "w": [1, 1, 1]}])", "primitives[0].w"},
+      {head + R"("primitives": [)" + kPosTriangle + "]", "primitives[0].pos"},
+      {head + R"("attributes": [{"name": "a"}], "primitives": [)" + tri +
+           R"(, "attr": [[0], [0], [0]]}])",
+       "attributes"},
+      // Root keys come first, whatever the text's order.
+      {head + R"("primitives": [)" + tri + R"(, "w": [1, 1, 1]}], "depth": {})", "depth"},
   };
-  for (const std::string& text : pipeline) {
-    const auto r = io::read_any_scene(text + "}");
-    EXPECT_TRUE(std::holds_alternative<pipe::PipeScene>(r)) << text;
+  for (const auto& [text, field] : pipeline) {
+    const auto r = io::read_scene(text + "}");
+    ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(r)) << text;
+    EXPECT_EQ(rastrules::first_pipeline_field(std::get<rastrules::Scene>(r)), field) << text;
   }
-  // A plain scene reads into rastrules::Scene, exactly as read_scene() reads it.
+  // Keys that ask for nothing (an empty transform or attribute list, the default provoking
+  // vertex, which is a convention, not a stage) read as the scene without them.
   const std::string plain = head + R"("samples": 4, "primitives": [)" + tri + "}]}";
-  const auto any = io::read_any_scene(plain);
-  const auto old = io::read_scene(plain);
-  ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(any));
-  ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(old));
-  EXPECT_TRUE(io::same_scene(std::get<rastrules::Scene>(any), std::get<rastrules::Scene>(old)));
-  // read_scene() reads window-space scenes only: a pipeline scene is an error naming its first
-  // pipeline key.
-  const auto refused =
-      io::read_scene(head + R"("primitives": [)" + tri + R"(, "w": [1, 1, 1]}], "depth": {}})");
-  ASSERT_TRUE(std::holds_alternative<SceneError>(refused));
-  EXPECT_EQ(std::get<SceneError>(refused).field, "primitives[0].w");
-  EXPECT_NE(std::get<SceneError>(refused).message.find("is a pipeline key (SCENE.PIPELINE)"),
-            std::string::npos);
+  const auto without = io::read_scene(plain);
+  ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(without));
+  EXPECT_FALSE(rastrules::has_pipeline_state(std::get<rastrules::Scene>(without)));
+  for (const std::string key :
+       {R"("transform": {}, )", R"("attributes": [], )", R"("provoking_vertex": "first", )"}) {
+    const auto with = io::read_scene(head + key + plain.substr(head.size()));
+    ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(with)) << key;
+    EXPECT_FALSE(rastrules::has_pipeline_state(std::get<rastrules::Scene>(with))) << key;
+    EXPECT_TRUE(
+        io::same_scene(std::get<rastrules::Scene>(with), std::get<rastrules::Scene>(without)))
+        << key;
+  }
 }
 
 // rule: SCENE.PIPELINE, SCENE.NUMBER.FLOAT32
 TEST(PipelineSceneIo, NumbersAreReadAsFloat32LikeCoordinates) {
   // 16384 + 1/256 + 1/1024 + 1e-20 rounds straight to float32 as 16384 + 3/512 (through double:
   // 16384 + 2/512); integers round to float32 ties to even.
-  const pipe::PipeScene s = pipe_ok(
+  const rastrules::Scene s = pipe_ok(
       R"({"target": {"width": 4, "height": 4}, "attributes": [{"name": "a"}],
           "viewport": {"width": 16384.00488281250000000001},
           "primitives": [{"type": "point", "pos": [[16777217, 0.1, -0.0]], "attr": [[1e-45]]}]})");
@@ -238,15 +246,15 @@ TEST(PipelineSceneIo, ErrorsNameTheFieldAndComeInReadingOrder) {
   EXPECT_EQ(error_of(head + R"("transform": {"view": []}, "primitives": []})"),
             "transform.view: must have exactly 16 numbers (a row-major 4x4 matrix), got 0");
   // The window-space coordinates keep their rules: NaN is the kernel's to reject.
-  const auto nan_v = io::read_any_scene(
+  const auto nan_v = io::read_scene(
       head + R"("depth": {}, "primitives": [{"type": "point", "v": [["NaN", 1]]}]})");
-  ASSERT_TRUE(std::holds_alternative<pipe::PipeScene>(nan_v));
-  EXPECT_TRUE(std::isnan(std::get<pipe::PipeScene>(nan_v).primitives[0].base.v[0][0]));
+  ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(nan_v));
+  EXPECT_TRUE(std::isnan(std::get<rastrules::Scene>(nan_v).primitives[0].v[0][0]));
 }
 
 // rule: SCENE.PIPELINE
-TEST(PipelineSceneIo, WriterRoundTripsAndSamePipeSceneComparesEveryKey) {
-  const pipe::PipeScene s = pipe_ok(
+TEST(PipelineSceneIo, WriterRoundTripsAndSameSceneComparesEveryKey) {
+  const rastrules::Scene s = pipe_ok(
       R"({"target": {"width": 16, "height": 8}, "samples": 4, "shading": "sample",
           "viewport": {"x": 1.5, "y": -2, "width": 10, "height": 6, "min_depth": 0.25, "max_depth": 0.75},
           "transform": {"view": [0.1, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 1]},
@@ -260,49 +268,50 @@ TEST(PipelineSceneIo, WriterRoundTripsAndSamePipeSceneComparesEveryKey) {
              "attr": [[0, 1], [3, 4], [6, 7]]},
             {"type": "line_strip", "v": [[1, 1], [5, 2], [3, 3]], "z": [0.5, 1, 0], "w": [1, 4, 0.5],
              "attr": [[1, 2], [4, 5], [7, 8]], "color": [1, 2, 3, 4]}]})");
-  const std::string text = io::write_pipe_scene(s);
-  const auto back = io::read_any_scene(text);
-  ASSERT_TRUE(std::holds_alternative<pipe::PipeScene>(back)) << text;
-  EXPECT_TRUE(io::same_pipe_scene(std::get<pipe::PipeScene>(back), s)) << text;
-  EXPECT_EQ(io::write_pipe_scene(std::get<pipe::PipeScene>(back)), text);
+  const std::string text = io::write_scene(s);
+  const auto back = io::read_scene(text);
+  ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(back)) << text;
+  EXPECT_TRUE(io::same_scene(std::get<rastrules::Scene>(back), s)) << text;
+  EXPECT_EQ(io::write_scene(std::get<rastrules::Scene>(back)), text);
 
-  // A pipeline scene with nothing but pipeline defaults still writes a pipeline scene.
-  pipe::PipeScene minimal;
-  minimal.base.width = 2;
-  minimal.base.height = 2;
-  const auto min_back = io::read_any_scene(io::write_pipe_scene(minimal));
-  ASSERT_TRUE(std::holds_alternative<pipe::PipeScene>(min_back));
-  EXPECT_TRUE(io::same_pipe_scene(std::get<pipe::PipeScene>(min_back), minimal));
+  // A scene without pipeline state writes no pipeline key and reads back as itself.
+  rastrules::Scene minimal;
+  minimal.width = 2;
+  minimal.height = 2;
+  const auto min_back = io::read_scene(io::write_scene(minimal));
+  ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(min_back));
+  EXPECT_TRUE(io::same_scene(std::get<rastrules::Scene>(min_back), minimal));
+  EXPECT_EQ(io::write_scene(minimal).find("provoking_vertex"), std::string::npos);
 
   // Every change is seen.
-  std::vector<pipe::PipeScene> variants;
+  std::vector<rastrules::Scene> variants;
   auto variant = [&](auto change) {
-    pipe::PipeScene v = s;
+    rastrules::Scene v = s;
     change(v);
     variants.push_back(v);
   };
-  variant([](pipe::PipeScene& v) { v.viewport.reset(); });
-  variant([](pipe::PipeScene& v) { v.viewport->max_depth = 1.0f; });
-  variant([](pipe::PipeScene& v) { v.view.reset(); });
-  variant([](pipe::PipeScene& v) { (*v.view)[3] = -0.0f; });
-  variant([](pipe::PipeScene& v) { v.model = pipe::Mat4f{}; });
-  variant([](pipe::PipeScene& v) { v.depth.reset(); });
-  variant([](pipe::PipeScene& v) { v.depth->func = pipe::CompareFunc::kEqual; });
-  variant([](pipe::PipeScene& v) { v.depth->bias.clamp = 0.25f; });
-  variant([](pipe::PipeScene& v) { v.attributes[1].location = pipe::Location::kCenter; });
-  variant([](pipe::PipeScene& v) { v.attributes[0].name = "u"; });
-  variant([](pipe::PipeScene& v) { v.provoking = pipe::Provoking::kFirst; });
-  variant([](pipe::PipeScene& v) { v.primitives[0].pos[2][3] = 12.0f; });
-  variant([](pipe::PipeScene& v) { v.primitives[1].z[0] = 0.25f; });
-  variant([](pipe::PipeScene& v) { v.primitives[1].w.clear(); });
-  variant([](pipe::PipeScene& v) { v.primitives[1].attr[2][1] = 9.0f; });
-  variant([](pipe::PipeScene& v) { v.base.msaa.quads = true; });
+  variant([](rastrules::Scene& v) { v.viewport.reset(); });
+  variant([](rastrules::Scene& v) { v.viewport->max_depth = 1.0f; });
+  variant([](rastrules::Scene& v) { v.view.reset(); });
+  variant([](rastrules::Scene& v) { (*v.view)[3] = -0.0f; });
+  variant([](rastrules::Scene& v) { v.model = pipe::Mat4f{}; });
+  variant([](rastrules::Scene& v) { v.depth.reset(); });
+  variant([](rastrules::Scene& v) { v.depth->func = pipe::CompareFunc::kEqual; });
+  variant([](rastrules::Scene& v) { v.depth->bias.clamp = 0.25f; });
+  variant([](rastrules::Scene& v) { v.attributes[1].location = pipe::Location::kCenter; });
+  variant([](rastrules::Scene& v) { v.attributes[0].name = "u"; });
+  variant([](rastrules::Scene& v) { v.provoking = pipe::Provoking::kFirst; });
+  variant([](rastrules::Scene& v) { v.primitives[0].pos[2][3] = 12.0f; });
+  variant([](rastrules::Scene& v) { v.primitives[1].z[0] = 0.25f; });
+  variant([](rastrules::Scene& v) { v.primitives[1].w.clear(); });
+  variant([](rastrules::Scene& v) { v.primitives[1].attr[2][1] = 9.0f; });
+  variant([](rastrules::Scene& v) { v.msaa.quads = true; });
   for (std::size_t i = 0; i < variants.size(); ++i) {
-    SCOPED_TRACE(io::write_pipe_scene(variants[i]));
-    EXPECT_FALSE(io::same_pipe_scene(variants[i], s)) << i;
-    const auto r = io::read_any_scene(io::write_pipe_scene(variants[i]));
-    ASSERT_TRUE(std::holds_alternative<pipe::PipeScene>(r)) << i;
-    EXPECT_TRUE(io::same_pipe_scene(std::get<pipe::PipeScene>(r), variants[i])) << i;
+    SCOPED_TRACE(io::write_scene(variants[i]));
+    EXPECT_FALSE(io::same_scene(variants[i], s)) << i;
+    const auto r = io::read_scene(io::write_scene(variants[i]));
+    ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(r)) << i;
+    EXPECT_TRUE(io::same_scene(std::get<rastrules::Scene>(r), variants[i])) << i;
   }
 }
 

@@ -40,10 +40,10 @@ TEST(Profile, ApplyThenReadGivesTheProfileBack) {
     Scene s;
     apply(profile(name), s);
     Conventions want = profile(name);
-    want.provoking = pipe::Provoking::kFirst; // a plain scene has no pipeline state
-    want.depth = pipe::DepthFormat::kD24;
+    want.depth = pipe::DepthFormat::kD24; // a scene without a depth state has no depth format
     EXPECT_EQ(conventions_of(s), want) << word;
-    pipe::PipeScene ps;
+    EXPECT_FALSE(has_pipeline_state(s)) << word; // a convention asks for no stage
+    rastrules::Scene ps;
     ps.depth = pipe::DepthState{};
     apply(profile(name), ps);
     EXPECT_EQ(conventions_of(ps), profile(name)) << word;

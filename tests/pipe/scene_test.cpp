@@ -17,23 +17,23 @@
 namespace rastrules::pipe {
 namespace {
 
-PipeScene scene(std::int32_t w, std::int32_t h) {
-  PipeScene s;
-  s.base.width = w;
-  s.base.height = h;
+Scene scene(std::int32_t w, std::int32_t h) {
+  Scene s;
+  s.width = w;
+  s.height = h;
   return s;
 }
 
-PipePrimitive clip_tri(Vec4f a, Vec4f b, Vec4f c) {
-  PipePrimitive p;
-  p.base.type = PrimitiveType::kTriangle;
+Primitive clip_tri(Vec4f a, Vec4f b, Vec4f c) {
+  Primitive p;
+  p.type = PrimitiveType::kTriangle;
   p.pos = {a, b, c};
   return p;
 }
 
-PipePrimitive window_tri(FloatPoint a, FloatPoint b, FloatPoint c, std::array<float, 3> z = {}) {
-  PipePrimitive p;
-  p.base = make_triangle({a, b, c});
+Primitive window_tri(FloatPoint a, FloatPoint b, FloatPoint c, std::array<float, 3> z = {}) {
+  Primitive p;
+  p = make_triangle({a, b, c});
   p.z = {z[0], z[1], z[2]};
   return p;
 }
@@ -54,7 +54,7 @@ std::vector<Frag> frags(const PipeResult& r) {
   return v;
 }
 
-PipeResult run(const PipeScene& s, const PipeOptions& o = {}) {
+PipeResult run(const Scene& s, const PipeOptions& o = {}) {
   auto r = run_pipeline(s, o);
   if (auto* e = std::get_if<SceneError>(&r)) {
     ADD_FAILURE() << e->what();
@@ -63,7 +63,7 @@ PipeResult run(const PipeScene& s, const PipeOptions& o = {}) {
   return std::get<PipeResult>(r);
 }
 
-SceneError run_error(const PipeScene& s) {
+SceneError run_error(const Scene& s) {
   auto r = run_pipeline(s);
   if (auto* e = std::get_if<SceneError>(&r))
     return *e;
@@ -79,11 +79,11 @@ std::set<std::tuple<std::uint32_t, std::int32_t, std::int32_t>> pixels(const Pip
 }
 
 // rule: PIPE.CLIP.UNCLIPPED, PIPE.VIEWPORT.TRANSFORM, PIPE.EFFECTS.ON_DEMAND
-TEST(PipeScene, ClipSpaceTriangleCoversWhatItsWindowImageCovers) {
-  PipeScene c = scene(16, 16);
+TEST(Scene, ClipSpaceTriangleCoversWhatItsWindowImageCovers) {
+  Scene c = scene(16, 16);
   // NDC (-0.75, 0.75), (0.5, 0.5), (-0.5, -0.875) with w = 2: window (2, 2), (12, 4), (4, 15).
   c.primitives.push_back(clip_tri({-1.5f, 1.5f, 0.5f, 2}, {1, 1, 0.5f, 2}, {-1, -1.75f, 0.5f, 2}));
-  PipeScene w = scene(16, 16);
+  Scene w = scene(16, 16);
   w.primitives.push_back(window_tri({2, 2}, {12, 4}, {4, 15}));
   const PipeResult rc = run(c), rw = run(w);
   EXPECT_EQ(pixels(rc), pixels(rw));
@@ -102,8 +102,8 @@ TEST(PipeScene, ClipSpaceTriangleCoversWhatItsWindowImageCovers) {
 }
 
 // rule: PIPE.CLIP.POLYGON
-TEST(PipeScene, NearClippedTriangleBecomesPartsThatCoverEachPixelOnce) {
-  PipeScene s = scene(32, 32);
+TEST(Scene, NearClippedTriangleBecomesPartsThatCoverEachPixelOnce) {
+  Scene s = scene(32, 32);
   s.depth = DepthState{};
   // One vertex behind the near plane (z < 0).
   s.primitives.push_back(
@@ -124,8 +124,8 @@ TEST(PipeScene, NearClippedTriangleBecomesPartsThatCoverEachPixelOnce) {
 }
 
 // rule: PIPE.VIEWPORT.SCISSOR
-TEST(PipeScene, NothingIsDrawnOutsideTheViewport) {
-  PipeScene s = scene(32, 32);
+TEST(Scene, NothingIsDrawnOutsideTheViewport) {
+  Scene s = scene(32, 32);
   s.viewport = Viewport{8, 4, 8, 8, 0, 1};
   // A triangle much larger than the viewport (NDC -10..10), inside the guard band.
   s.primitives.push_back(clip_tri({-10, -10, 0.5f, 1}, {10, -10, 0.5f, 1}, {0, 10, 0.5f, 1}));
@@ -140,13 +140,13 @@ TEST(PipeScene, NothingIsDrawnOutsideTheViewport) {
 }
 
 // rule: PIPE.INTERP.FLAT, PIPE.INPUT.ATTRIBUTES
-TEST(PipeScene, FlatAttributesTakeTheProvokingVertex) {
+TEST(Scene, FlatAttributesTakeTheProvokingVertex) {
   for (const Provoking pv : {Provoking::kFirst, Provoking::kLast}) {
-    PipeScene s = scene(16, 16);
+    Scene s = scene(16, 16);
     s.provoking = pv;
     s.attributes = {AttributeDecl{"id", Interpolation::kFlat, Location::kCenter},
                     AttributeDecl{"u", Interpolation::kLinear, Location::kCenter}};
-    PipePrimitive p = window_tri({1, 1}, {15, 1}, {1, 15});
+    Primitive p = window_tri({1, 1}, {15, 1}, {1, 15});
     p.attr = {{10, 0}, {20, 1}, {30, 2}};
     s.primitives.push_back(p);
     const PipeResult r = run(s);
@@ -163,9 +163,9 @@ TEST(PipeScene, FlatAttributesTakeTheProvokingVertex) {
 }
 
 // rule: PIPE.DEPTH.TEST, PIPE.DEPTH.WRITE
-TEST(PipeScene, ZFightingHasADeterministicWinner) {
+TEST(Scene, ZFightingHasADeterministicWinner) {
   for (const CompareFunc func : {CompareFunc::kLess, CompareFunc::kLessEqual}) {
-    PipeScene s = scene(8, 8);
+    Scene s = scene(8, 8);
     s.depth = DepthState{};
     s.depth->func = func;
     // The same triangle twice at the same depth.
@@ -182,8 +182,8 @@ TEST(PipeScene, ZFightingHasADeterministicWinner) {
 }
 
 // rule: PIPE.DEPTH.TEST, PIPE.DEPTH.WRITE, PIPE.DEPTH.FORMAT
-TEST(PipeScene, NearerTriangleWinsAndTheBufferHoldsItsDepth) {
-  PipeScene s = scene(8, 8);
+TEST(Scene, NearerTriangleWinsAndTheBufferHoldsItsDepth) {
+  Scene s = scene(8, 8);
   s.depth = DepthState{};
   s.depth->format = DepthFormat::kD16;
   s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.25f, 0.25f, 0.25f}));
@@ -205,9 +205,9 @@ TEST(PipeScene, NearerTriangleWinsAndTheBufferHoldsItsDepth) {
 }
 
 // rule: PIPE.DEPTH.TEST
-TEST(PipeScene, DepthIsTestedPerSample) {
-  PipeScene s = scene(4, 4);
-  s.base.msaa.pattern = standard_pattern(4);
+TEST(Scene, DepthIsTestedPerSample) {
+  Scene s = scene(4, 4);
+  s.msaa.pattern = standard_pattern(4);
   s.depth = DepthState{};
   s.depth->format = DepthFormat::kD32F;
   // A steep depth ramp along x: within a pixel, samples to the left are nearer.
@@ -226,25 +226,25 @@ TEST(PipeScene, DepthIsTestedPerSample) {
 }
 
 // rule: PIPE.INTERP.LOCATION
-TEST(PipeScene, SampleLocationNeedsSampleShading) {
-  PipeScene s = scene(4, 4);
+TEST(Scene, SampleLocationNeedsSampleShading) {
+  Scene s = scene(4, 4);
   s.attributes = {AttributeDecl{"u", Interpolation::kPerspective, Location::kSample}};
-  PipePrimitive p = window_tri({0, 0}, {4, 0}, {0, 4});
+  Primitive p = window_tri({0, 0}, {4, 0}, {0, 4});
   p.attr = {{0}, {1}, {2}};
   s.primitives.push_back(p);
   const SceneError e = run_error(s);
   EXPECT_EQ(e.field, "attributes[0].location");
-  s.base.msaa.pattern = standard_pattern(4);
-  s.base.msaa.shading = ShadingRate::kSample;
+  s.msaa.pattern = standard_pattern(4);
+  s.msaa.shading = ShadingRate::kSample;
   const PipeResult r = run(s);
   for (const auto& f : frags(r))
     ASSERT_TRUE(f.f.sample.has_value());
 }
 
 // rule: PIPE.INPUT.POSITION, PIPE.INPUT.ATTRIBUTES, PIPE.TRANSFORM.FLOAT32
-TEST(PipeScene, BadInputNamesTheField) {
+TEST(Scene, BadInputNamesTheField) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  PipeScene s = scene(8, 8);
+  Scene s = scene(8, 8);
   s.primitives.push_back(clip_tri({0, 0, 0, 1}, {1, 0, 0, 1}, {0, nan, 0, 1}));
   EXPECT_EQ(run_error(s).field, "primitives[0].pos[2]");
   s.primitives[0].pos[2] = {0, 1e30f, 0, 1};
@@ -266,14 +266,14 @@ TEST(PipeScene, BadInputNamesTheField) {
 }
 
 // rule: PIPE.CLIP.LINE
-TEST(PipeScene, PointsOutsideTheVolumeAreDiscardedAndLinesAreCut) {
-  PipeScene s = scene(16, 16);
-  PipePrimitive pt;
-  pt.base.type = PrimitiveType::kPoint;
+TEST(Scene, PointsOutsideTheVolumeAreDiscardedAndLinesAreCut) {
+  Scene s = scene(16, 16);
+  Primitive pt;
+  pt.type = PrimitiveType::kPoint;
   pt.pos = {{0, 0, -0.5f, 1}}; // in front of the near plane
   s.primitives.push_back(pt);
-  PipePrimitive line;
-  line.base.type = PrimitiveType::kLine;
+  Primitive line;
+  line.type = PrimitiveType::kLine;
   line.pos = {{-0.5f, 0.05f, -1, 1}, {0.5f, 0.05f, 1, 1}}; // crosses z = 0 half-way
   s.primitives.push_back(line);
   const PipeResult r = run(s);
@@ -286,15 +286,15 @@ TEST(PipeScene, PointsOutsideTheVolumeAreDiscardedAndLinesAreCut) {
 }
 
 // rule: PIPE.DEPTH.BIAS
-TEST(PipeScene, BiasMovesTrianglesButNotPoints) {
-  PipeScene s = scene(8, 8);
+TEST(Scene, BiasMovesTrianglesButNotPoints) {
+  Scene s = scene(8, 8);
   s.depth = DepthState{};
   s.depth->func = CompareFunc::kAlways;
   s.depth->bias.bias = 1000;
   s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.5f, 0.5f, 0.5f}));
-  PipePrimitive pt;
-  pt.base.type = PrimitiveType::kPoint;
-  pt.base.v = {FloatPoint{5.5f, 5.5f}};
+  Primitive pt;
+  pt.type = PrimitiveType::kPoint;
+  pt.v = {FloatPoint{5.5f, 5.5f}};
   pt.z = {0.5f};
   s.primitives.push_back(pt);
   const PipeResult r = run(s);
@@ -311,11 +311,11 @@ TEST(PipeScene, BiasMovesTrianglesButNotPoints) {
 }
 
 // rule: PIPE.EFFECTS.ON_DEMAND
-TEST(PipeScene, ResultsDoNotDependOnTheTraversal) {
-  PipeScene s = scene(64, 64);
+TEST(Scene, ResultsDoNotDependOnTheTraversal) {
+  Scene s = scene(64, 64);
   s.depth = DepthState{};
   s.attributes = {AttributeDecl{"u", Interpolation::kPerspective, Location::kCenter}};
-  PipePrimitive p = clip_tri({-0.9f, -0.9f, 0.1f, 1}, {3, -0.5f, 2, 4}, {0, 0.9f, 0.4f, 0.5f});
+  Primitive p = clip_tri({-0.9f, -0.9f, 0.1f, 1}, {3, -0.5f, 2, 4}, {0, 0.9f, 0.4f, 0.5f});
   p.attr = {{0}, {1}, {2}};
   s.primitives.push_back(p);
   PipeOptions plain;
@@ -327,14 +327,14 @@ TEST(PipeScene, ResultsDoNotDependOnTheTraversal) {
 }
 
 // rule: PIPE.DEPTH.KILL, PIPE.OPT.EARLY_Z, PIPE.OPT.HIZ
-TEST(PipeScene, KilledFragmentsKeepTheirCoverageOnly) {
-  PipeScene s = scene(16, 16); // one 16 x 16 tile
+TEST(Scene, KilledFragmentsKeepTheirCoverageOnly) {
+  Scene s = scene(16, 16); // one 16 x 16 tile
   s.depth = DepthState{};
   s.attributes = {AttributeDecl{"u", Interpolation::kLinear, Location::kCenter}};
   // A full-target quad at depth 0.25, then a triangle behind it at 0.5.
-  PipePrimitive q0 = window_tri({0, 0}, {16, 0}, {0, 16}, {0.25f, 0.25f, 0.25f});
-  PipePrimitive q1 = window_tri({16, 0}, {16, 16}, {0, 16}, {0.25f, 0.25f, 0.25f});
-  PipePrimitive back = window_tri({0, 0}, {16, 0}, {0, 16}, {0.5f, 0.5f, 0.5f});
+  Primitive q0 = window_tri({0, 0}, {16, 0}, {0, 16}, {0.25f, 0.25f, 0.25f});
+  Primitive q1 = window_tri({16, 0}, {16, 16}, {0, 16}, {0.25f, 0.25f, 0.25f});
+  Primitive back = window_tri({0, 0}, {16, 0}, {0, 16}, {0.5f, 0.5f, 0.5f});
   q0.attr = q1.attr = {{1}, {2}, {3}};
   back.attr = {{4}, {5}, {6}};
   s.primitives = {q0, q1, back};
@@ -373,9 +373,9 @@ TEST(PipeScene, KilledFragmentsKeepTheirCoverageOnly) {
 }
 
 // rule: PIPE.OPT.TILES, PIPE.OPT.HIZ, PIPE.OPT.EARLY_Z, PIPE.OPT.FAST_CLEAR, PIPE.OPT.THREADS
-TEST(PipeScene, EveryOptimizationGivesThePlainResult) {
-  PipeScene s = scene(80, 48);
-  s.base.msaa.pattern = standard_pattern(4);
+TEST(Scene, EveryOptimizationGivesThePlainResult) {
+  Scene s = scene(80, 48);
+  s.msaa.pattern = standard_pattern(4);
   s.depth = DepthState{};
   s.depth->format = DepthFormat::kD16;
   s.attributes = {AttributeDecl{"u", Interpolation::kPerspective, Location::kCentroid}};
@@ -383,8 +383,8 @@ TEST(PipeScene, EveryOptimizationGivesThePlainResult) {
   const float zs[] = {0.9f, 0.2f, 0.6f, 0.1f, 0.95f};
   for (int i = 0; i < 5; ++i) {
     const float o = static_cast<float>(i) * 0.1f;
-    PipePrimitive p = clip_tri({-0.9f + o, -0.8f, zs[i], 1}, {0.9f, -0.7f + o, zs[i] * 0.5f, 1.5f},
-                               {o - 0.2f, 0.9f, i == 2 ? -0.4f : zs[i], 1});
+    Primitive p = clip_tri({-0.9f + o, -0.8f, zs[i], 1}, {0.9f, -0.7f + o, zs[i] * 0.5f, 1.5f},
+                           {o - 0.2f, 0.9f, i == 2 ? -0.4f : zs[i], 1});
     p.attr = {{0}, {static_cast<float>(i)}, {10}};
     s.primitives.push_back(p);
   }

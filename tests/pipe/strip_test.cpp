@@ -18,7 +18,7 @@
 namespace rastrules::pipe {
 namespace {
 
-PipeResult run(const PipeScene& s) {
+PipeResult run(const Scene& s) {
   auto r = run_pipeline(s);
   if (auto* e = std::get_if<SceneError>(&r)) {
     ADD_FAILURE() << e->what();
@@ -29,18 +29,18 @@ PipeResult run(const PipeScene& s) {
 
 // The scene of the report: a clip-space strip of two segments, a linear and a flat attribute,
 // d24 depth with the test always passing.
-PipeScene reported_scene() {
-  PipeScene s;
-  s.base.width = 16;
-  s.base.height = 16;
+Scene reported_scene() {
+  Scene s;
+  s.width = 16;
+  s.height = 16;
   s.attributes = {AttributeDecl{"u", Interpolation::kLinear, Location::kCenter},
                   AttributeDecl{"k", Interpolation::kFlat, Location::kCenter}};
   DepthState d;
   d.format = DepthFormat::kD24;
   d.func = CompareFunc::kAlways;
   s.depth = d;
-  PipePrimitive p;
-  p.base.type = PrimitiveType::kLineStrip;
+  Primitive p;
+  p.type = PrimitiveType::kLineStrip;
   p.pos = {{-0.9375f, -0.9375f, 0.25f, 1.0f},
            {0.9375f, -0.9375f, 0.5f, 1.0f},
            {0.9375f, 0.9375f, 0.75f, 1.0f}};
@@ -68,7 +68,7 @@ std::map<Key, std::pair<Fragment, FragmentData>> by_segment(const PipeResult& r,
 
 // Expects every fragment of the strip scene to equal, apart from prim, seg, part and the drawn
 // index, the fragment of the same segment drawn as a line.
-void expect_strip_equals_lines(const PipeScene& strip) {
+void expect_strip_equals_lines(const Scene& strip) {
   const PipeResult a = run(strip), b = run(pipe_gen::strips_as_lines(strip));
   ASSERT_FALSE(a.fragments.empty());
   const auto sa = by_segment(a, true), sb = by_segment(b, false);
@@ -119,7 +119,7 @@ TEST(PipeStrip, SecondSegmentIsInterpolatedFromItsOwnVertices) {
 TEST(PipeStrip, FlatAttributesTakeEachSegmentsProvokingVertex) {
   for (const Provoking pv : {Provoking::kFirst, Provoking::kLast}) {
     for (const bool clipped : {false, true}) {
-      PipeScene s = reported_scene();
+      Scene s = reported_scene();
       s.provoking = pv;
       if (clipped) // the last vertex behind the eye: every segment is clipped (a part each)
         s.primitives[0].pos[2] = {0.9375f, 0.9375f, 0.75f, -1.0f};
@@ -146,16 +146,16 @@ TEST(PipeStrip, EverySegmentEqualsTheSameSegmentDrawnAsALine) {
     for (const Provoking pv : {Provoking::kFirst, Provoking::kLast}) {
       for (const bool clipped : {false, true}) {
         for (const bool window : {false, true}) {
-          PipeScene s = reported_scene();
-          s.base.line_mode = mode;
+          Scene s = reported_scene();
+          s.line_mode = mode;
           s.provoking = pv;
           s.attributes.push_back(
               AttributeDecl{"p", Interpolation::kPerspective, Location::kCenter});
-          PipePrimitive& p = s.primitives[0];
+          Primitive& p = s.primitives[0];
           p.pos.push_back({-0.5f, 0.25f, 0.125f, 2.0f});
           p.attr = {{0, 10, 5}, {1, 20, -3}, {2, 30, 7}, {3, 40, 11}};
           if (window) {
-            p.base.v = {{1.5f, 14.5f}, {14.25f, 14.5f}, {14.5f, 1.75f}, {3.0f, 9.0f}};
+            p.v = {{1.5f, 14.5f}, {14.25f, 14.5f}, {14.5f, 1.75f}, {3.0f, 9.0f}};
             p.z = {0.25f, 0.5f, 0.75f, 0.0f};
             p.w = {1.0f, 4.0f, 0.5f, 2.0f};
             p.pos.clear();

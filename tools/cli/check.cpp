@@ -14,7 +14,7 @@ int run_check(const Args& args) {
     return kExitBadInput;
   o->settings.cases = 1;
   o->settings.progress = false;
-  auto loaded = load_scene(o->scene_path);
+  auto loaded = load_window_scene(o->scene_path);
   if (!loaded)
     return kExitBadInput;
   auto d = open_driver_or_report(o->settings.driver_name);

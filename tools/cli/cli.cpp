@@ -110,30 +110,24 @@ int usage_error(std::string_view reason) {
   return kExitBadInput;
 }
 
-namespace {
-// Reads a scene file's text and parses it with read (read_scene or read_any_scene); on failure
-// prints the one-line error (parse errors have no field: the file is named instead).
-template <class Read>
-auto read_and_parse(const std::string& path, Read read)
-    -> std::optional<decltype(read(std::string()))> {
+// rule: SCENE.INPUT.ERRORS
+std::optional<LoadedScene> load_scene(const std::string& path) {
   auto text = io::read_scene_file(path);
   if (auto* err = std::get_if<SceneError>(&text)) {
     error(err->what());
     return std::nullopt;
   }
-  auto scene = read(std::get<std::string>(text));
+  auto scene = io::read_scene(std::get<std::string>(text));
   if (auto* err = std::get_if<SceneError>(&scene)) {
+    // Parse errors have no field: the file is named instead.
     error(err->field.empty() ? (path == "-" ? "<stdin>" : path) + ": " + err->message
                              : err->what());
     return std::nullopt;
   }
-  return scene;
-}
-
-// Prepares a plain scene read from a file.
-std::optional<LoadedScene> prepare_loaded(Scene scene) {
   LoadedScene loaded;
-  loaded.scene = std::move(scene);
+  loaded.scene = std::move(std::get<Scene>(scene));
+  if (has_pipeline_state(loaded.scene))
+    return loaded;
   auto prepared = prepare(loaded.scene);
   if (auto* err = std::get_if<SceneError>(&prepared)) {
     error(err->what());
@@ -142,23 +136,21 @@ std::optional<LoadedScene> prepare_loaded(Scene scene) {
   loaded.prepared = std::move(std::get<PreparedScene>(prepared));
   return loaded;
 }
-} // namespace
 
 // rule: SCENE.INPUT.ERRORS
-std::optional<std::variant<LoadedScene, pipe::PipeScene>> load_any_scene(const std::string& path) {
-  auto scene = read_and_parse(path, [](const std::string& t) { return io::read_any_scene(t); });
-  if (!scene)
+std::optional<LoadedScene> load_window_scene(const std::string& path) {
+  auto loaded = load_scene(path);
+  if (loaded && !loaded->prepared) {
+    error(*first_pipeline_field(loaded->scene) +
+          ": is a pipeline key (SCENE.PIPELINE) and only window-space scenes are read here "
+          "(rastrules render and explain read pipeline scenes)");
     return std::nullopt;
-  if (auto* p = std::get_if<pipe::PipeScene>(&*scene))
-    return std::move(*p);
-  auto loaded = prepare_loaded(std::move(std::get<Scene>(*scene)));
-  if (!loaded)
-    return std::nullopt;
-  return std::move(*loaded);
+  }
+  return loaded;
 }
 
 // rule: SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
-std::optional<pipe::PipeResult> run_pipeline_or_report(const pipe::PipeScene& scene,
+std::optional<pipe::PipeResult> run_pipeline_or_report(const Scene& scene,
                                                        const RenderOptions& options,
                                                        std::uint64_t max_fragments, bool plain) {
   // rule: PIPE.OPT.TILES, PIPE.OPT.HIZ, PIPE.OPT.EARLY_Z, PIPE.OPT.FAST_CLEAR
@@ -176,14 +168,6 @@ std::optional<pipe::PipeResult> run_pipeline_or_report(const pipe::PipeScene& sc
     return std::nullopt;
   }
   return std::move(std::get<pipe::PipeResult>(result));
-}
-
-// rule: SCENE.INPUT.ERRORS
-std::optional<LoadedScene> load_scene(const std::string& path) {
-  auto scene = read_and_parse(path, [](const std::string& t) { return io::read_scene(t); });
-  if (!scene)
-    return std::nullopt;
-  return prepare_loaded(std::move(std::get<Scene>(*scene)));
 }
 
 OutputFile::~OutputFile() {

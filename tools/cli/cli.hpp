@@ -34,30 +34,28 @@ int usage_error(std::string_view reason);
 // Prints the usage text on `out`.
 void print_usage(std::FILE* out);
 
-// A scene read from a file and prepared by the kernel.
+// A scene read from a file; prepared by the kernel when it has no pipeline state (a scene with
+// pipeline state is validated and drawn by rastrules::pipe::run_pipeline()).
 struct LoadedScene {
   Scene scene;
-  PreparedScene prepared;
+  std::optional<PreparedScene> prepared;
 };
 
-// Reads, parses and prepares a scene ("-" is standard input). On failure prints the one-line
-// error (`rastrules: error: FIELD: PROBLEM`) and returns nullopt.
-// A pipeline scene (SCENE.PIPELINE: "pos", "depth", "attributes", ...) is bad input here, named
-// by its first pipeline key: only render and explain read pipeline scenes.
+// Reads, parses and, without pipeline state, prepares a scene ("-" is standard input). On
+// failure prints the one-line error (`rastrules: error: FIELD: PROBLEM`) and returns nullopt.
 // rule: SCENE.INPUT.ERRORS
 std::optional<LoadedScene> load_scene(const std::string& path);
 
-// Reads and parses any scene: a plain scene, prepared as load_scene() does, or a pipeline scene
-// (SCENE.PIPELINE) as read, for rastrules::pipe::run_pipeline() to validate and render. On
-// failure prints the one-line error and returns nullopt.
+// load_scene() for the commands that draw window-space scenes alone (check): a scene with
+// pipeline state (SCENE.PIPELINE) is bad input, named by its first pipeline field.
 // rule: SCENE.INPUT.ERRORS
-std::optional<std::variant<LoadedScene, pipe::PipeScene>> load_any_scene(const std::string& path);
+std::optional<LoadedScene> load_window_scene(const std::string& path);
 
-// Runs the pipeline on a scene read by load_any_scene(); on bad input (run_pipeline's SceneError,
+// Runs the pipeline on a scene read by load_scene(); on bad input (run_pipeline's SceneError,
 // also more than max_fragments fragments) prints the one-line error and returns nullopt.
 // plain: every optimization off (PipeOptions::plain(), `render --pipeline-plain`).
 // rule: SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
-std::optional<pipe::PipeResult> run_pipeline_or_report(const pipe::PipeScene& scene,
+std::optional<pipe::PipeResult> run_pipeline_or_report(const Scene& scene,
                                                        const RenderOptions& options,
                                                        std::uint64_t max_fragments,
                                                        bool plain = false);

@@ -423,7 +423,7 @@ MsaaReport explain_samples(const PreparedScene& s, const PreparedPrimitive& prim
 // rule: SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.LINE_MODE
 Report explain_primitive(const LoadedScene& loaded, std::size_t p, std::int32_t x, std::int32_t y,
                          Vec2 sample) {
-  const PreparedScene& s = loaded.prepared;
+  const PreparedScene& s = *loaded.prepared;
   const PreparedPrimitive& prim = s.primitives[p];
   Report r;
   r.index = p;
@@ -587,7 +587,7 @@ std::string msaa_text(const Report& r, const PreparedScene& s, std::int32_t x, s
 
 void print_text(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 sample,
                 const std::vector<Report>& reports) {
-  const PreparedScene& s = loaded.prepared;
+  const PreparedScene& s = *loaded.prepared;
   std::string out;
   out += "scene: " + std::to_string(s.width) + "x" + std::to_string(s.height) + " target, cull " +
          std::string(to_string(s.state.cull)) + ", front face " +
@@ -795,7 +795,7 @@ ojson msaa_json(const Report& r, const PreparedScene& s) {
 void print_json(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 sample,
                 const std::vector<Report>& reports) {
   using json = ojson;
-  const PreparedScene& s = loaded.prepared;
+  const PreparedScene& s = *loaded.prepared;
   auto point = point_json;
   json doc;
   doc["target"] = {{"width", s.width}, {"height", s.height}};
@@ -833,7 +833,7 @@ void print_json(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
 // A pipeline scene at one pixel: the fragments run_pipeline produced there, with what each
 // carries and the drawn primitive (after clipping, divide, viewport, snapping and depth bias)
 // it was interpolated from. Coverage itself is the kernel's; no edge values are shown.
-int explain_pipeline(const pipe::PipeScene& scene, const pipe::PipeResult& result, std::int32_t x,
+int explain_pipeline(const Scene& scene, const pipe::PipeResult& result, std::int32_t x,
                      std::int32_t y, bool as_json) {
   const bool has_data = !result.data.empty();
   if (has_data && result.data.size() != result.fragments.size()) {
@@ -856,7 +856,7 @@ int explain_pipeline(const pipe::PipeScene& scene, const pipe::PipeResult& resul
       covering.push_back(here[i].prim);
   }
   const io::PipeOutputFields fields = io::pipe_output_fields(scene);
-  const std::uint32_t n = scene.base.msaa.count();
+  const std::uint32_t n = scene.msaa.count();
   const auto drawn_of = [&](std::size_t i) -> const pipe::DrawnPrimitive* {
     if (!has_data || here_data[i].drawn >= result.drawn.size())
       return nullptr;
@@ -867,7 +867,7 @@ int explain_pipeline(const pipe::PipeScene& scene, const pipe::PipeResult& resul
     if (!text)
       return error("internal error: run_pipeline's fragments do not match the scene");
     ojson doc;
-    doc["target"] = {{"width", scene.base.width}, {"height", scene.base.height}};
+    doc["target"] = {{"width", scene.width}, {"height", scene.height}};
     doc["pixel"] = {x, y};
     doc["pipeline"] = true;
     doc["samples"] = n;
@@ -891,7 +891,7 @@ int explain_pipeline(const pipe::PipeScene& scene, const pipe::PipeResult& resul
     return kExitOk;
   }
   std::string out = "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") of a " +
-                    std::to_string(scene.base.width) + "x" + std::to_string(scene.base.height) +
+                    std::to_string(scene.width) + "x" + std::to_string(scene.height) +
                     " pipeline scene (SCENE.PIPELINE): " + std::to_string(here.size()) +
                     (here.size() == 1 ? " fragment" : " fragments") +
                     " (coverage after transform, clipping, divide, viewport and snapping)\n";
@@ -1001,35 +1001,30 @@ int run_explain(const Args& args) {
                        std::to_string(kMaxTargetSide - 1) + "]");
   }
 
-  const auto any = load_any_scene(*scene_path);
-  if (!any)
+  const auto loaded = load_scene(*scene_path);
+  if (!loaded)
     return kExitBadInput;
   const auto x = static_cast<std::int32_t>(*px_x);
   const auto y = static_cast<std::int32_t>(*px_y);
   // rule: SCENE.OUTPUT.PIPELINE
-  if (const auto* pipeline = std::get_if<pipe::PipeScene>(&*any)) {
-    const std::optional<pipe::PipeResult> result =
-        run_pipeline_or_report(*pipeline, RenderOptions{}, io::kDefaultMaxFragments);
+  std::optional<pipe::PipeResult> result;
+  if (!loaded->prepared) {
+    result = run_pipeline_or_report(loaded->scene, RenderOptions{}, io::kDefaultMaxFragments);
     if (!result)
       return kExitBadInput;
-    if (x >= pipeline->base.width || y >= pipeline->base.height) {
-      return error("--pixel: (" + std::to_string(x) + ", " + std::to_string(y) +
-                   ") is outside the " + std::to_string(pipeline->base.width) + "x" +
-                   std::to_string(pipeline->base.height) + " target");
-    }
-    return explain_pipeline(*pipeline, *result, x, y, as_json);
   }
-  const LoadedScene* loaded = &std::get<LoadedScene>(*any);
   // rule: SCENE.INPUT.ERRORS
-  if (x >= loaded->prepared.width || y >= loaded->prepared.height) {
+  if (x >= loaded->scene.width || y >= loaded->scene.height) {
     return error("--pixel: (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
-                 std::to_string(loaded->prepared.width) + "x" +
-                 std::to_string(loaded->prepared.height) + " target");
+                 std::to_string(loaded->scene.width) + "x" + std::to_string(loaded->scene.height) +
+                 " target");
   }
+  if (result)
+    return explain_pipeline(loaded->scene, *result, x, y, as_json);
   const Vec2 sample = pixel_center(x, y);
   std::vector<Report> reports;
-  reports.reserve(loaded->prepared.primitives.size());
-  for (std::size_t p = 0; p < loaded->prepared.primitives.size(); ++p) {
+  reports.reserve(loaded->prepared->primitives.size());
+  for (std::size_t p = 0; p < loaded->prepared->primitives.size(); ++p) {
     reports.push_back(explain_primitive(*loaded, p, x, y, sample));
   }
   if (as_json) {

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -111,6 +112,7 @@ std::optional<std::string> write_resolved(const PreparedScene& scene,
 
 // What `render` was asked for.
 struct RenderRequest {
+  std::string scene_path;
   std::optional<std::string> fragments_path, png_path, resolve_path, depth_out_path;
   std::optional<int> scale;
   bool png_depth = false;
@@ -119,6 +121,20 @@ struct RenderRequest {
   int to_stdout = 0;
   bool pipeline_plain = false;
 };
+
+// Returns the picture's magnification (0 without --png); prints the error and returns nullopt
+// when the picture would be too large.
+std::optional<int> picture_scale_of(std::int32_t width, std::int32_t height,
+                                    const RenderRequest& rq) {
+  if (!rq.png_path)
+    return 0;
+  const auto s = picture_scale_for(width, height, rq.scale);
+  if (const auto* err = std::get_if<std::string>(&s)) {
+    error(*err);
+    return std::nullopt;
+  }
+  return std::get<int>(s);
+}
 
 // Returns the stored depth as a value in [0, 1] (d16 and d24: the UNORM value over 2^n - 1).
 double depth_01(const pipe::DepthValue& d, pipe::DepthFormat f) {
@@ -137,14 +153,13 @@ double depth_01(const pipe::DepthValue& d, pipe::DepthFormat f) {
 // Renders a pipeline scene with run_pipeline: its fragments with the fields the scene asks for,
 // the coverage picture (or with --png-depth the depth buffer in grey), the resolved target of
 // the samples that passed the depth test, and with --depth-out the final depth buffer.
-int render_pipeline(const pipe::PipeScene& scene, const RenderRequest& rq) {
-  const Scene& base = scene.base;
+int render_pipeline(const Scene& scene, const RenderRequest& rq) {
   if ((rq.png_depth || rq.depth_out_path) && !scene.depth) {
     return error(std::string(rq.png_depth ? "--png-depth" : "--depth-out") +
                  ": the scene has no \"depth\" (SCENE.PIPELINE)");
   }
   if (rq.resolve_path) {
-    if (auto err = resolve_too_large(base.width, base.height, base.msaa.count()))
+    if (auto err = resolve_too_large(scene.width, scene.height, scene.msaa.count()))
       return error(*err);
   }
   // rule: SCENE.INPUT.LIMITS
@@ -160,20 +175,15 @@ int render_pipeline(const pipe::PipeScene& scene, const RenderRequest& rq) {
   }
   // The target, sample pattern and colours as a prepared scene without geometry: the picture's
   // grid and sample points, and the resolve (run_pipeline has checked the scene).
-  Scene target = base;
-  target.primitives.clear();
+  const Scene target = target_of(scene);
   auto prepared_or_error = prepare(target);
   if (auto* err = std::get_if<SceneError>(&prepared_or_error))
     return error(err->what());
   PreparedScene& prepared = std::get<PreparedScene>(prepared_or_error);
 
-  int picture_scale = 0;
-  if (rq.png_path) {
-    const auto s = picture_scale_for(base.width, base.height, rq.scale);
-    if (const auto* err = std::get_if<std::string>(&s))
-      return error(*err);
-    picture_scale = std::get<int>(s);
-  }
+  const std::optional<int> picture_scale = picture_scale_of(scene.width, scene.height, rq);
+  if (!picture_scale)
+    return kExitBadInput;
   OutputFile fragments_file, png_file, resolve_file, depth_file;
   const std::vector<Output> outputs = {{&fragments_file, &rq.fragments_path},
                                        {&png_file, &rq.png_path},
@@ -204,7 +214,7 @@ int render_pipeline(const pipe::PipeScene& scene, const RenderRequest& rq) {
     if (!writer.finish())
       return error(*rq.fragments_path + ": write failed");
   }
-  const std::uint32_t samples = base.msaa.count();
+  const std::uint32_t samples = scene.msaa.count();
   if (rq.png_path) {
     std::optional<io::Image> image;
     if (rq.png_depth) {
@@ -213,14 +223,14 @@ int render_pipeline(const pipe::PipeScene& scene, const RenderRequest& rq) {
       for (const pipe::DepthValue& d : result->depth_buffer)
         depth01.push_back(depth_01(d, scene.depth->format));
       image.emplace(
-          io::draw_depth_picture(base.width, base.height, samples, depth01, picture_scale));
+          io::draw_depth_picture(scene.width, scene.height, samples, depth01, *picture_scale));
     } else {
-      io::CoverageMap coverage(base.width, base.height);
-      if (io::samples_visible(prepared, picture_scale))
+      io::CoverageMap coverage(scene.width, scene.height);
+      if (io::samples_visible(prepared, *picture_scale))
         coverage.record_samples(samples);
       for (const Fragment& f : fragments)
         coverage.add_fragment(f);
-      image.emplace(io::draw_picture(prepared, coverage, picture_scale));
+      image.emplace(io::draw_picture(prepared, coverage, *picture_scale));
     }
     if (auto err = io::write_png(png_file.get(), *image))
       return error(*rq.png_path + ": " + *err);
@@ -230,7 +240,7 @@ int render_pipeline(const pipe::PipeScene& scene, const RenderRequest& rq) {
   if (rq.resolve_path) {
     prepared.primitives.resize(scene.primitives.size());
     for (std::size_t p = 0; p < scene.primitives.size(); ++p)
-      prepared.primitives[p].color = scene.primitives[p].base.color;
+      prepared.primitives[p].color = scene.primitives[p].color;
     std::vector<Fragment> written = fragments;
     if (!data.empty()) {
       for (std::size_t i = 0; i < written.size(); ++i)
@@ -240,7 +250,7 @@ int render_pipeline(const pipe::PipeScene& scene, const RenderRequest& rq) {
       return error(*err);
   }
   if (rq.depth_out_path &&
-      !io::write_depth_buffer(depth_file.get(), base.width, base.height, samples,
+      !io::write_depth_buffer(depth_file.get(), scene.width, scene.height, samples,
                               scene.depth->format, result->depth_buffer)) {
     return error(*rq.depth_out_path + ": write failed (or run_pipeline's depth buffer is not "
                                       "width x height x samples)");
@@ -252,15 +262,192 @@ int render_pipeline(const pipe::PipeScene& scene, const RenderRequest& rq) {
   return kExitOk;
 }
 
-} // namespace
+// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.INPUT.LIMITS, FAST.THREADS.DETERMINISTIC
+// Calls emit for every fragment of the prepared scene in (prim, y, x, seg, sample) order, on
+// rq.options.threads threads; exceptions thrown by emit stop it and pass through. Returns the
+// primitive that needs to hold more than 2 * rq.max_fragments entries to be sorted, if any
+// (nothing of it or after it is emitted).
+std::optional<std::size_t> stream_fragments(const PreparedScene& scene, const RenderRequest& rq,
+                                            const std::function<void(const Fragment&)>& emit) {
+  if (rq.options.threads <= 1) {
+    for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+      if (!for_each_fragment_bounded(scene, p, 2 * rq.max_fragments, rq.options, emit))
+        return p;
+    }
+    return std::nullopt;
+  }
+  // rule: FAST.THREADS.DETERMINISTIC
+  // A pool created once rasterizes chunks of kChunk consecutive primitives, each chunk into
+  // its own buffer (slot u % window), at most `window` chunks ahead of this thread, which
+  // emits the buffers in primitive order through the same checks as above: the outputs,
+  // the error and the primitive it names are those of one thread. A chunk stops at its first
+  // primitive that needs more than it may hold (reported when the chunk is emitted, after
+  // the fragments before it) or when its buffer passes rq.max_fragments + 1 fragments (enough
+  // to pass the limit wherever it is emitted), so at most 4 * threads such buffers are held.
+  constexpr std::size_t kChunk = 64; // primitives per unit: amortises the hand-over
+  struct Unit {
+    std::vector<Fragment> fragments;
+    std::optional<std::size_t> too_many_held; // the primitive that did not fit, if any
+  };
+  struct BufferFull {};
+  struct TooManyHeld {
+    std::size_t p;
+  };
+  const std::size_t window = std::size_t{4} * rq.options.threads;
+  const std::size_t n_units = (scene.primitives.size() + kChunk - 1) / kChunk;
+  std::vector<Unit> units(window);
+  try {
+    run_ordered(
+        n_units, rq.options.threads, window,
+        [&](std::size_t u) {
+          Unit& unit = units[u % window];
+          unit.fragments.clear();
+          unit.too_many_held.reset();
+          const std::size_t end = std::min(scene.primitives.size(), (u + 1) * kChunk);
+          try {
+            for (std::size_t p = u * kChunk; p < end; ++p) {
+              const bool fits = for_each_fragment_bounded(
+                  scene, p, 2 * rq.max_fragments, rq.options, [&](const Fragment& f) {
+                    if (unit.fragments.size() > rq.max_fragments)
+                      throw BufferFull{};
+                    unit.fragments.push_back(f);
+                  });
+              if (!fits) {
+                unit.too_many_held = p;
+                return;
+              }
+            }
+          } catch (const BufferFull&) {
+            // Emitting the buffer passes the limit: nothing after it is needed.
+          }
+        },
+        [&](std::size_t u) {
+          const Unit& unit = units[u % window];
+          for (const Fragment& f : unit.fragments)
+            emit(f);
+          if (unit.too_many_held)
+            throw TooManyHeld{*unit.too_many_held};
+        });
+  } catch (const TooManyHeld& held) {
+    return held.p;
+  }
+  return std::nullopt;
+}
 
-// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.INPUT.ERRORS
-int run_render(const Args& args) {
-  std::optional<std::string> scene_path, fragments_path, png_path, resolve_path, depth_out_path;
-  bool png_depth = false, pipeline_plain = false;
-  std::optional<int> scale;
-  std::uint64_t max_fragments = io::kDefaultMaxFragments;
-  RenderOptions options;
+// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.INPUT.LIMITS, SCENE.OUTPUT.MSAA
+// Renders a scene without pipeline state: fragments streamed primitive by primitive into the
+// outputs, the coverage picture and the resolved target.
+int render_window(const PreparedScene& scene, const RenderRequest& rq) {
+  if (rq.png_depth || rq.depth_out_path) {
+    return error(std::string(rq.png_depth ? "--png-depth" : "--depth-out") +
+                 ": a window-space scene without \"depth\" has no depth buffer (SCENE.PIPELINE)");
+  }
+  const std::optional<int> picture_scale = picture_scale_of(scene.width, scene.height, rq);
+  if (!picture_scale)
+    return kExitBadInput;
+
+  // rule: MSAA.LIMITS, MSAA.RESOLVE.AVERAGE
+  if (rq.resolve_path) {
+    if (auto err = resolve_too_large(scene.width, scene.height, scene.msaa.count()))
+      return error(*err);
+  }
+
+  OutputFile fragments_file, png_file, resolve_file;
+  if (rq.fragments_path) {
+    if (auto err = fragments_file.open(*rq.fragments_path))
+      return error(*err);
+  }
+  if (rq.png_path) {
+    if (auto err = png_file.open(*rq.png_path))
+      return error(*err);
+  }
+  if (rq.resolve_path) {
+    if (auto err = resolve_file.open(*rq.resolve_path))
+      return error(*err);
+  }
+
+  // Fragments are streamed primitive by primitive in the (prim, y, x, seg) order of
+  // SCENE.OUTPUT.FRAGMENTS: a triangle's as the traversal finds them (memory independent of
+  // their number), a point's or line's after the kernel sorts that one primitive's list. The
+  // coverage map (for the picture) is width * height.
+  std::optional<io::FragmentWriter> writer;
+  if (rq.fragments_path)
+    writer.emplace(fragments_file.get());
+  std::unique_ptr<io::CoverageMap> coverage;
+  if (rq.png_path) {
+    coverage = std::make_unique<io::CoverageMap>(scene.width, scene.height);
+    if (io::samples_visible(scene, *picture_scale))
+      coverage->record_samples(scene.msaa.count());
+  }
+  // The resolve needs every fragment (at most --max-fragments of them).
+  std::vector<Fragment> all;
+  bool in_order = true;
+  std::uint64_t fragment_count = 0;
+  // rule: SCENE.INPUT.LIMITS
+  // The work limit: counted while streaming; the first fragment beyond it stops the traversal
+  // (the exception unwinds out of the kernel's walk) and the outputs, still under their
+  // temporary names, are removed by ~OutputFile.
+  struct TooManyFragments {};
+  const auto emit = [&](const Fragment& f) {
+    if (++fragment_count > rq.max_fragments)
+      throw TooManyFragments{};
+    if (writer)
+      in_order = writer->add(f) && in_order;
+    if (coverage)
+      coverage->add_fragment(f);
+    if (rq.resolve_path)
+      all.push_back(f);
+  };
+  const auto too_many_held = [&](std::size_t p) {
+    return error(
+        "render: primitives[" + std::to_string(p) + "] touches more than " +
+        std::to_string(2 * rq.max_fragments) +
+        " pixels or fragments that must be held to be sorted (limit SCENE.INPUT.LIMITS, 2 x "
+        "--max-fragments); raise it with --max-fragments N");
+  };
+  // A primitive that is collected before it is emitted holds at most 2 * rq.max_fragments
+  // entries: a pixel is held at most twice (once per triangle of a point or quadrilateral
+  // segment), so one that needs more has more than rq.max_fragments fragments, except when
+  // the sample mask removes the samples it covers (then the limit counts touched pixels).
+  try {
+    if (const auto p = stream_fragments(scene, rq, emit))
+      return too_many_held(*p);
+  } catch (const TooManyFragments&) {
+    return error("render: more than " + std::to_string(rq.max_fragments) +
+                 " fragments (limit SCENE.INPUT.LIMITS); raise it with --max-fragments N");
+  }
+  if (!in_order)
+    return error("internal error: the kernel emitted fragments out of (prim, y, x, seg) order");
+  if (writer) {
+    if (!writer->finish())
+      return error(*rq.fragments_path + ": write failed");
+  }
+  if (rq.png_path) {
+    const io::Image image = io::draw_picture(scene, *coverage, *picture_scale);
+    if (auto err = io::write_png(png_file.get(), image))
+      return error(*rq.png_path + ": " + *err);
+  }
+  // rule: MSAA.RESOLVE.AVERAGE
+  if (rq.resolve_path) {
+    if (auto err = write_resolved(scene, all, resolve_file.get(), *rq.resolve_path))
+      return error(*err);
+  }
+  // No partial result: when one output cannot be moved into place, the ones already in place
+  // are removed.
+  const std::vector<Output> outputs = {{&fragments_file, &rq.fragments_path},
+                                       {&png_file, &rq.png_path},
+                                       {&resolve_file, &rq.resolve_path}};
+  if (auto err = commit_outputs(outputs))
+    return error(*err);
+  if (rq.to_stdout == 0)
+    print_summary(scene.primitives.size(), fragment_count, outputs);
+  return kExitOk;
+}
+
+// Reads render's arguments into rq. Returns the exit code when render stops here (--help, a
+// usage error), nullopt to go on.
+std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
+  std::optional<std::string> scene_path;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const char* flag) -> std::optional<std::string> {
@@ -278,41 +465,41 @@ int run_render(const Args& args) {
       print_usage(stdout);
       return kExitOk;
     } else if (is("--fragments")) {
-      fragments_path = value("--fragments");
-      if (!fragments_path || fragments_path->empty())
+      rq.fragments_path = value("--fragments");
+      if (!rq.fragments_path || rq.fragments_path->empty())
         return usage_error("--fragments needs a file name");
     } else if (is("--png")) {
-      png_path = value("--png");
-      if (!png_path || png_path->empty())
+      rq.png_path = value("--png");
+      if (!rq.png_path || rq.png_path->empty())
         return usage_error("--png needs a file name");
     } else if (is("--resolve")) {
-      resolve_path = value("--resolve");
-      if (!resolve_path || resolve_path->empty())
+      rq.resolve_path = value("--resolve");
+      if (!rq.resolve_path || rq.resolve_path->empty())
         return usage_error("--resolve needs a file name");
     } else if (a == "--png-depth") {
-      png_depth = true;
+      rq.png_depth = true;
     } else if (a == "--pipeline-plain") {
       // rule: PIPE.OPT.TILES
       // Pipeline scenes: every optimization off; coverage scenes: the plain traversal.
-      pipeline_plain = true;
-      options.traversal = Traversal::kPlain;
+      rq.pipeline_plain = true;
+      rq.options.traversal = Traversal::kPlain;
     } else if (is("--depth-out")) {
-      depth_out_path = value("--depth-out");
-      if (!depth_out_path || depth_out_path->empty())
+      rq.depth_out_path = value("--depth-out");
+      if (!rq.depth_out_path || rq.depth_out_path->empty())
         return usage_error("--depth-out needs a file name");
     } else if (is("--scale")) {
       const std::optional<std::string> v = value("--scale");
       const auto n = v ? parse_int(*v, 1, io::kMaxPictureSide) : std::nullopt;
       if (!n)
         return usage_error("--scale needs an integer in [1, 4096]");
-      scale = static_cast<int>(*n);
+      rq.scale = static_cast<int>(*n);
     } else if (is("--max-fragments")) {
       // rule: SCENE.INPUT.LIMITS
       const std::optional<std::string> v = value("--max-fragments");
       const auto n = v ? parse_int(*v, 1, std::int64_t{1} << 40) : std::nullopt;
       if (!n)
         return usage_error("--max-fragments needs an integer in [1, 2^40]");
-      max_fragments = static_cast<std::uint64_t>(*n);
+      rq.max_fragments = static_cast<std::uint64_t>(*n);
     } else if (is("--threads")) {
       // rule: FAST.THREADS.DETERMINISTIC
       const std::optional<std::string> v = value("--threads");
@@ -321,7 +508,7 @@ int run_render(const Args& args) {
         return error("--threads needs an integer in [1, " + std::to_string(kMaxThreads) +
                      "], got " + (v ? "\"" + *v + "\"" : std::string("nothing")));
       }
-      options.threads = static_cast<unsigned>(*n);
+      rq.options.threads = static_cast<unsigned>(*n);
     } else if (is("--traversal")) {
       const std::optional<std::string> v = value("--traversal");
       const auto t = v ? parse_traversal(*v) : std::nullopt;
@@ -329,12 +516,12 @@ int run_render(const Args& args) {
         return error("--traversal needs \"plain\" or \"fast\", got " +
                      (v ? "\"" + *v + "\"" : std::string("nothing")));
       }
-      options.traversal = *t;
+      rq.options.traversal = *t;
     } else if (is("--isa")) {
       // rule: FAST.ISA.DISPATCH
       const std::optional<std::string> v = value("--isa");
       if (v && *v == "auto") {
-        options.isa = std::nullopt;
+        rq.options.isa = std::nullopt;
       } else {
         const auto isa = v ? parse_isa(*v) : std::nullopt;
         if (!isa) {
@@ -346,7 +533,7 @@ int run_render(const Args& args) {
                        std::string(kMaxIsaVariable) + " may cap it); use --isa auto (here " +
                        std::string(to_string(best_isa())) + ")");
         }
-        options.isa = *isa;
+        rq.options.isa = *isa;
       }
     } else if (a.size() > 1 && a[0] == '-') {
       return usage_error("render: unknown option \"" + a + "\"");
@@ -364,201 +551,42 @@ int run_render(const Args& args) {
   }
   if (!scene_path)
     return usage_error("render: missing SCENE.json");
-  if (!fragments_path && !png_path && !resolve_path && !depth_out_path) {
+  if (!rq.fragments_path && !rq.png_path && !rq.resolve_path && !rq.depth_out_path) {
     return usage_error("render: give --fragments OUT.json, --png OUT.png, --resolve OUT.png or "
                        "--depth-out OUT.json");
   }
-  const int to_stdout = (fragments_path && *fragments_path == "-") +
-                        (png_path && *png_path == "-") + (resolve_path && *resolve_path == "-") +
-                        (depth_out_path && *depth_out_path == "-");
-  if (to_stdout > 1) {
+  rq.to_stdout = (rq.fragments_path && *rq.fragments_path == "-") +
+                 (rq.png_path && *rq.png_path == "-") +
+                 (rq.resolve_path && *rq.resolve_path == "-") +
+                 (rq.depth_out_path && *rq.depth_out_path == "-");
+  if (rq.to_stdout > 1) {
     return usage_error("render: only one of --fragments, --png and --resolve can be standard "
                        "output (--depth-out counts too)");
   }
-  if (scale && !png_path)
+  if (rq.scale && !rq.png_path)
     return usage_error("render: --scale needs --png");
-  if (png_depth && !png_path)
+  if (rq.png_depth && !rq.png_path)
     return usage_error("render: --png-depth needs --png");
 
-  const auto any = load_any_scene(*scene_path);
-  if (!any)
+  rq.scene_path = *scene_path;
+  return std::nullopt;
+}
+
+} // namespace
+
+// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.PIPELINE, SCENE.INPUT.ERRORS
+int run_render(const Args& args) {
+  RenderRequest rq;
+  if (const auto stop = parse_render_args(args, rq))
+    return *stop;
+  const auto loaded = load_scene(rq.scene_path);
+  if (!loaded)
     return kExitBadInput;
-  // rule: SCENE.OUTPUT.PIPELINE
-  if (const auto* pipeline = std::get_if<pipe::PipeScene>(&*any)) {
-    return render_pipeline(*pipeline, RenderRequest{fragments_path, png_path, resolve_path,
-                                                    depth_out_path, scale, png_depth, max_fragments,
-                                                    options, to_stdout, pipeline_plain});
-  }
-  if (png_depth || depth_out_path) {
-    return error(std::string(png_depth ? "--png-depth" : "--depth-out") +
-                 ": a window-space scene without \"depth\" has no depth buffer (SCENE.PIPELINE)");
-  }
-  const LoadedScene* loaded = &std::get<LoadedScene>(*any);
-  const PreparedScene& scene = loaded->prepared;
-
-  int picture_scale = 0;
-  if (png_path) {
-    const auto s = picture_scale_for(scene.width, scene.height, scale);
-    if (const auto* err = std::get_if<std::string>(&s))
-      return error(*err);
-    picture_scale = std::get<int>(s);
-  }
-
-  // rule: MSAA.LIMITS, MSAA.RESOLVE.AVERAGE
-  if (resolve_path) {
-    if (auto err = resolve_too_large(scene.width, scene.height, scene.msaa.count()))
-      return error(*err);
-  }
-
-  OutputFile fragments_file, png_file, resolve_file;
-  if (fragments_path) {
-    if (auto err = fragments_file.open(*fragments_path))
-      return error(*err);
-  }
-  if (png_path) {
-    if (auto err = png_file.open(*png_path))
-      return error(*err);
-  }
-  if (resolve_path) {
-    if (auto err = resolve_file.open(*resolve_path))
-      return error(*err);
-  }
-
-  // Fragments are streamed primitive by primitive in the (prim, y, x, seg) order of
-  // SCENE.OUTPUT.FRAGMENTS: a triangle's as the traversal finds them (memory independent of
-  // their number), a point's or line's after the kernel sorts that one primitive's list. The
-  // coverage map (for the picture) is width * height.
-  std::optional<io::FragmentWriter> writer;
-  if (fragments_path)
-    writer.emplace(fragments_file.get());
-  std::unique_ptr<io::CoverageMap> coverage;
-  if (png_path) {
-    coverage = std::make_unique<io::CoverageMap>(scene.width, scene.height);
-    if (io::samples_visible(scene, picture_scale))
-      coverage->record_samples(scene.msaa.count());
-  }
-  // The resolve needs every fragment (at most --max-fragments of them).
-  std::vector<Fragment> all;
-  bool in_order = true;
-  std::uint64_t fragment_count = 0;
-  // rule: SCENE.INPUT.LIMITS
-  // The work limit: counted while streaming; the first fragment beyond it stops the traversal
-  // (the exception unwinds out of the kernel's walk) and the outputs, still under their
-  // temporary names, are removed by ~OutputFile.
-  struct TooManyFragments {};
-  const auto emit = [&](const Fragment& f) {
-    if (++fragment_count > max_fragments)
-      throw TooManyFragments{};
-    if (writer)
-      in_order = writer->add(f) && in_order;
-    if (coverage)
-      coverage->add_fragment(f);
-    if (resolve_path)
-      all.push_back(f);
-  };
-  const auto too_many_held = [&](std::size_t p) {
-    return error(
-        "render: primitives[" + std::to_string(p) + "] touches more than " +
-        std::to_string(2 * max_fragments) +
-        " pixels or fragments that must be held to be sorted (limit SCENE.INPUT.LIMITS, 2 x "
-        "--max-fragments); raise it with --max-fragments N");
-  };
-  // A primitive that is collected before it is emitted holds at most 2 * max_fragments
-  // entries: a pixel is held at most twice (once per triangle of a point or quadrilateral
-  // segment), so one that needs more has more than max_fragments fragments, except when
-  // the sample mask removes the samples it covers (then the limit counts touched pixels).
-  try {
-    if (options.threads <= 1) {
-      for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
-        if (!for_each_fragment_bounded(scene, p, 2 * max_fragments, options, emit))
-          return too_many_held(p);
-      }
-    } else {
-      // rule: FAST.THREADS.DETERMINISTIC
-      // A pool created once rasterizes chunks of kChunk consecutive primitives, each chunk into
-      // its own buffer (slot u % window), at most `window` chunks ahead of this thread, which
-      // emits the buffers in primitive order through the same checks as above: the outputs,
-      // the error and the primitive it names are those of one thread. A chunk stops at its first
-      // primitive that needs more than it may hold (reported when the chunk is emitted, after
-      // the fragments before it) or when its buffer passes max_fragments + 1 fragments (enough
-      // to pass the limit wherever it is emitted), so at most 4 * threads such buffers are held.
-      constexpr std::size_t kChunk = 64; // primitives per unit: amortises the hand-over
-      struct Unit {
-        std::vector<Fragment> fragments;
-        std::optional<std::size_t> too_many_held; // the primitive that did not fit, if any
-      };
-      struct BufferFull {};
-      struct TooManyHeld {
-        std::size_t p;
-      };
-      const std::size_t window = std::size_t{4} * options.threads;
-      const std::size_t n_units = (scene.primitives.size() + kChunk - 1) / kChunk;
-      std::vector<Unit> units(window);
-      try {
-        run_ordered(
-            n_units, options.threads, window,
-            [&](std::size_t u) {
-              Unit& unit = units[u % window];
-              unit.fragments.clear();
-              unit.too_many_held.reset();
-              const std::size_t end = std::min(scene.primitives.size(), (u + 1) * kChunk);
-              try {
-                for (std::size_t p = u * kChunk; p < end; ++p) {
-                  const bool fits = for_each_fragment_bounded(
-                      scene, p, 2 * max_fragments, options, [&](const Fragment& f) {
-                        if (unit.fragments.size() > max_fragments)
-                          throw BufferFull{};
-                        unit.fragments.push_back(f);
-                      });
-                  if (!fits) {
-                    unit.too_many_held = p;
-                    return;
-                  }
-                }
-              } catch (const BufferFull&) {
-                // Emitting the buffer passes the limit: nothing after it is needed.
-              }
-            },
-            [&](std::size_t u) {
-              const Unit& unit = units[u % window];
-              for (const Fragment& f : unit.fragments)
-                emit(f);
-              if (unit.too_many_held)
-                throw TooManyHeld{*unit.too_many_held};
-            });
-      } catch (const TooManyHeld& held) {
-        return too_many_held(held.p);
-      }
-    }
-  } catch (const TooManyFragments&) {
-    return error("render: more than " + std::to_string(max_fragments) +
-                 " fragments (limit SCENE.INPUT.LIMITS); raise it with --max-fragments N");
-  }
-  if (!in_order)
-    return error("internal error: the kernel emitted fragments out of (prim, y, x, seg) order");
-  if (writer) {
-    if (!writer->finish())
-      return error(*fragments_path + ": write failed");
-  }
-  if (png_path) {
-    const io::Image image = io::draw_picture(scene, *coverage, picture_scale);
-    if (auto err = io::write_png(png_file.get(), image))
-      return error(*png_path + ": " + *err);
-  }
-  // rule: MSAA.RESOLVE.AVERAGE
-  if (resolve_path) {
-    if (auto err = write_resolved(scene, all, resolve_file.get(), *resolve_path))
-      return error(*err);
-  }
-  // No partial result: when one output cannot be moved into place, the ones already in place
-  // are removed.
-  const std::vector<Output> outputs = {
-      {&fragments_file, &fragments_path}, {&png_file, &png_path}, {&resolve_file, &resolve_path}};
-  if (auto err = commit_outputs(outputs))
-    return error(*err);
-  if (to_stdout == 0)
-    print_summary(scene.primitives.size(), fragment_count, outputs);
-  return kExitOk;
+  // A scene with pipeline state goes through the pipeline; one without, prepared by
+  // load_scene(), is the pipeline's identity case, streamed in constant memory.
+  if (!loaded->prepared)
+    return render_pipeline(loaded->scene, rq);
+  return render_window(*loaded->prepared, rq);
 }
 
 } // namespace rastrules::cli

@@ -15,15 +15,13 @@
 
 #include "rastrules/fixed.hpp"
 #include "rastrules/isa.hpp"
+#include "rastrules/pipe_state.hpp"
 #include "rastrules/scene.hpp"
 
 namespace rastrules::pipe {
 
 // ---------------------------------------------------------------------------------------------
 // Input and transforms
-
-using Vec4f = std::array<float, 4>;  // x, y, z, w
-using Mat4f = std::array<float, 16>; // row-major, acting on column vectors
 
 // The magnitude limit of positions before and after the transform (PIPE.INPUT.POSITION).
 inline constexpr double kMaxPosition = 18446744073709551616.0; // 2^64
@@ -35,12 +33,6 @@ inline constexpr std::size_t kMaxAttributes = 16;              // PIPE.INPUT.ATT
 
 // ---------------------------------------------------------------------------------------------
 // Viewport
-
-struct Viewport {
-  float x = 0.0f, y = 0.0f, width = 0.0f, height = 0.0f;
-  float min_depth = 0.0f, max_depth = 1.0f;
-  friend bool operator==(const Viewport&, const Viewport&) = default;
-};
 
 // Returns nullopt when vp satisfies PIPE.VIEWPORT.RANGE, else {field, message}, field one of
 // "x", "y", "width", "height", "min_depth", "max_depth".
@@ -130,11 +122,6 @@ struct Barycentrics {
 // rule: PIPE.BARY.EXACT
 [[nodiscard]] Barycentrics barycentrics(const std::array<Vec2, 3>& v, Vec2 s);
 
-enum class Interpolation { kPerspective, kLinear, kFlat };
-enum class Location { kCenter, kCentroid, kSample };
-[[nodiscard]] std::string_view to_string(Interpolation i);
-[[nodiscard]] std::string_view to_string(Location l);
-
 // Returns the perspective-correct value (PIPE.INTERP.PERSPECTIVE, PIPE.INTERP.HORIZON): a are
 // the vertex values, w the vertices' clip w, flat the provoking vertex's value.
 // rule: PIPE.INTERP.PERSPECTIVE, PIPE.INTERP.HORIZON
@@ -145,20 +132,6 @@ enum class Location { kCenter, kCentroid, kSample };
 
 // ---------------------------------------------------------------------------------------------
 // Depth
-
-enum class DepthFormat { kD16, kD24, kD32F };
-enum class CompareFunc {
-  kNever,
-  kLess,
-  kEqual,
-  kLessEqual,
-  kGreater,
-  kNotEqual,
-  kGreaterEqual,
-  kAlways
-};
-[[nodiscard]] std::string_view to_string(DepthFormat f);
-[[nodiscard]] std::string_view to_string(CompareFunc f);
 
 // A stored depth value: the UNORM integer for d16/d24, the float32 bits' value for d32f
 // (stored as the float itself; compared as floats).
@@ -181,12 +154,6 @@ struct DepthValue {
 [[nodiscard]] bool depth_test(CompareFunc func, const DepthValue& now, const DepthValue& old,
                               DepthFormat f);
 
-struct DepthBias {
-  std::int32_t bias = 0;
-  float slope_scaled = 0.0f;
-  float clamp = 0.0f;
-};
-
 // Returns the per-primitive bias of PIPE.DEPTH.BIAS for a triangle with snapped vertices v and
 // window depths z (0 when both bias terms are zero). format nullopt: no depth buffer (UNORM r
 // of 24 bits).
@@ -197,43 +164,6 @@ struct DepthBias {
 // ---------------------------------------------------------------------------------------------
 // The scene pipeline
 
-struct AttributeDecl {
-  std::string name;
-  Interpolation interpolation = Interpolation::kPerspective;
-  Location location = Location::kCenter;
-};
-
-struct DepthState {
-  DepthFormat format = DepthFormat::kD24;
-  CompareFunc func = CompareFunc::kLess;
-  bool write = true;
-  float clear = 1.0f;
-  bool clip = true; // depth clipping (D3D DepthClipEnable)
-  DepthBias bias;
-};
-
-enum class Provoking { kFirst, kLast };
-
-// One primitive of a pipeline scene: window-space (`v` of base, with optional z and w) or
-// positions before the transform (pos).
-struct PipePrimitive {
-  Primitive base;                       // type, aa, color; base.v used when pos is empty
-  std::vector<Vec4f> pos;               // PIPE.INPUT.POSITION; empty: window space
-  std::vector<float> z;                 // window-space only: depth per vertex (default 0)
-  std::vector<float> w;                 // window-space only: w per vertex (default 1)
-  std::vector<std::vector<float>> attr; // per vertex, one value per declared attribute
-};
-
-struct PipeScene {
-  Scene base; // target, raster state, line mode, msaa, clear colour; base.primitives unused
-  std::optional<Viewport> viewport; // default: the whole target, depth [0, 1]
-  std::optional<Mat4f> model, view, projection;
-  std::optional<DepthState> depth; // no depth test without it
-  std::vector<AttributeDecl> attributes;
-  Provoking provoking = Provoking::kFirst;
-  std::vector<PipePrimitive> primitives;
-};
-
 // Which stages a scene needs (PIPE.EFFECTS.ON_DEMAND).
 struct Effects {
   bool clip_space = false; // some primitive has pos
@@ -242,7 +172,7 @@ struct Effects {
   bool barycentrics = false; // depth or attributes
   [[nodiscard]] bool coverage_only() const { return !clip_space && !depth && !attributes; }
 };
-[[nodiscard]] Effects effects_of(const PipeScene& s);
+[[nodiscard]] Effects effects_of(const Scene& s);
 
 // What a fragment of a pipeline scene carries besides its coverage (PipeResult::data[i] goes
 // with PipeResult::fragments[i]).
@@ -319,7 +249,7 @@ struct PipeOptions {
 
 // Validates, transforms, clips, rasterizes (all rules of the other files), interpolates and
 // tests depth. Returns the first error (field, message) of bad input.
-[[nodiscard]] std::variant<PipeResult, SceneError> run_pipeline(const PipeScene& s,
+[[nodiscard]] std::variant<PipeResult, SceneError> run_pipeline(const Scene& s,
                                                                 const PipeOptions& o = {});
 
 } // namespace rastrules::pipe

@@ -52,17 +52,14 @@ template <> struct Names<ProfileName> {
   return c;
 }
 
-// Sets the conventions on a scene: raster state, line mode, centroid rule, and the sample
-// pattern's kind (a standard pattern or the centre pattern of the scene's sample count; a
-// custom pattern is left alone when the profile says standard).
+// Sets the conventions on a scene: raster state, line mode, centroid rule, the sample pattern's
+// kind (a standard pattern or the centre pattern of the scene's sample count; a custom pattern
+// is left alone when the profile says standard), the provoking vertex and, when the scene has a
+// depth state, the depth format.
 // rule: PROFILE.CONVENTIONS
 void apply(const Conventions& c, Scene& scene);
-// The same on a pipeline scene, with its provoking vertex and, when it has a depth state, the
-// depth format.
-void apply(const Conventions& c, pipe::PipeScene& scene);
 
-// Returns the conventions a scene follows (depth d24 and provoking first for a plain scene).
+// Returns the conventions a scene follows (depth d24 for a scene without a depth state).
 [[nodiscard]] Conventions conventions_of(const Scene& scene);
-[[nodiscard]] Conventions conventions_of(const pipe::PipeScene& scene);
 
 } // namespace rastrules

@@ -20,6 +20,7 @@
 #include "rastrules/isa.hpp"
 #include "rastrules/line.hpp"
 #include "rastrules/msaa.hpp"
+#include "rastrules/pipe_state.hpp"
 #include "rastrules/snap.hpp"
 #include "rastrules/triangle.hpp"
 
@@ -36,18 +37,35 @@ struct Primitive {
   PrimitiveType type = PrimitiveType::kTriangle;
   // Window coordinates in pixels, read as float32: 3 for a triangle, 1 for a point, 2 for a
   // line, at least 2 for a line strip. A default primitive is a triangle with 3 zero vertices.
+  // Empty when pos is given.
   std::vector<FloatPoint> v = std::vector<FloatPoint>(3);
   bool aa = false;                    // antialiased (lines and line strips only; SCENE.PRIM.LINE)
   Rgba8 color = {255, 255, 255, 255}; // written to covered samples by resolve() (SCENE.MSAA)
+  // The pipeline's inputs (SCENE.PIPELINE), all empty for a window-space primitive that asks
+  // for nothing more: positions before the transform (then v is empty: a window-space
+  // primitive is the identity case of a clip-space one), window depth and w per vertex of a
+  // window-space one (default 0 and 1), and per vertex one value per declared attribute.
+  std::vector<pipe::Vec4f> pos;         // PIPE.INPUT.POSITION
+  std::vector<float> z;                 // window space only (PIPE.DEPTH.INTERP)
+  std::vector<float> w;                 // window space only (PIPE.INTERP.PERSPECTIVE)
+  std::vector<std::vector<float>> attr; // PIPE.INPUT.ATTRIBUTES
 };
 
 // Returns a triangle primitive with the given vertices.
 [[nodiscard]] Primitive make_triangle(const std::array<FloatPoint, 3>& v);
 
+// Returns the primitive's coverage fields (type, v, aa, color) without its pipeline inputs.
+[[nodiscard]] Primitive coverage_of(const Primitive& p);
+
 // Returns the number of vertices a primitive of type t must have (0 for a line strip, whose
 // count is "at least 2").
 [[nodiscard]] std::size_t required_vertex_count(PrimitiveType t);
 
+// A scene: the target and its conventions, the primitives, and the pipeline state it asks for.
+// A scene without pipeline state (has_pipeline_state() false) is drawn by coverage alone;
+// otherwise rastrules::pipe::run_pipeline() draws it (transform, clipping, depth, attributes),
+// only the stages it asks for running (PIPE.EFFECTS.ON_DEMAND).
+// rule: SCENE.FORMAT.V1, SCENE.PIPELINE
 struct Scene {
   std::int32_t width = 0;
   std::int32_t height = 0;
@@ -56,7 +74,28 @@ struct Scene {
   MultisampleState msaa;                      // SCENE.MSAA; default: one sample at the centre
   Rgba8 clear_color = {0, 0, 0, 0};           // the samples' value before any primitive
   std::vector<Primitive> primitives;
+  // The pipeline state (SCENE.PIPELINE); absent or empty: not asked for.
+  std::optional<pipe::Viewport> viewport; // default: the whole target, depth [0, 1]
+  std::optional<pipe::Mat4f> model, view, projection;
+  std::optional<pipe::DepthState> depth; // no depth test without it
+  std::vector<pipe::AttributeDecl> attributes;
+  pipe::Provoking provoking = pipe::Provoking::kFirst;
 };
+
+// Returns the path of the scene's first pipeline field (SCENE.PIPELINE) in the order of
+// spec/scene.md ("viewport", "transform.model", ".view", ".projection", "depth", "attributes",
+// then per primitive "primitives[i].pos", ".z", ".w", ".attr"), or nullopt when it has none:
+// such a scene is drawn by coverage alone. The provoking vertex is a convention, not a stage:
+// it changes nothing without flat attributes.
+[[nodiscard]] std::optional<std::string> first_pipeline_field(const Scene& scene);
+[[nodiscard]] inline bool has_pipeline_state(const Scene& scene) {
+  return first_pipeline_field(scene).has_value();
+}
+
+// Returns a scene with the target, conventions (provoking vertex included) and sample state of
+// scene, without primitives and without pipeline state: the window-space scene the pipeline
+// draws into (the picture's grid, the resolve, the pipeline's internal scene of clipped parts).
+[[nodiscard]] Scene target_of(const Scene& scene);
 
 // One covered pixel of one primitive. mask has bit i set for covered sample i; without
 // multisampling the only sample is the pixel centre, so mask == 1. Antialiased line
@@ -208,7 +247,10 @@ inline constexpr std::int64_t kMaxResolveSamples = std::int64_t{1} << 26;
 [[nodiscard]] std::variant<ResolvedImage, SceneError>
 resolve(const PreparedScene& scene, const std::vector<Fragment>& fragments);
 
-// prepare() then rasterize().
+// Returns the fragments of the scene: prepare() then rasterize() for a scene without pipeline
+// state (the identity case of the pipeline, and its only cost), else the fragments of
+// rastrules::pipe::run_pipeline() with no fragment limit (PIPE.EFFECTS.ON_DEMAND).
+// rule: PIPE.EFFECTS.ON_DEMAND
 [[nodiscard]] std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene);
 [[nodiscard]] std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene,
                                                                      const RenderOptions& options);

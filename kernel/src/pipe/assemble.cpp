@@ -59,9 +59,8 @@ namespace {
 // Builds the internal window-space scene one source primitive at a time.
 class Assembler {
 public:
-  Assembler(const PipeScene& s, const Viewport& vp) : s_(s), vp_(vp), nattr_(s.attributes.size()) {
-    out_.ws = s.base;
-    out_.ws.primitives.clear();
+  Assembler(const Scene& s, const Viewport& vp) : s_(s), vp_(vp), nattr_(s.attributes.size()) {
+    out_.ws = target_of(s);
     out_.ws.primitives.reserve(s.primitives.size());
     out_.sources.reserve(s.primitives.size());
     // An attribute at the centroid makes every fragment carry its centroid
@@ -74,7 +73,7 @@ public:
   // Adds primitive i (window or clip space), or returns its first error.
   std::optional<SceneError> add_primitive(std::size_t i) {
     i_ = i;
-    const PipePrimitive& pp = s_.primitives[i];
+    const Primitive& pp = s_.primitives[i];
     if (auto bad = check_attributes(pp))
       return bad;
     return pp.pos.empty() ? add_window_space(pp) : add_clip_space(pp);
@@ -84,15 +83,15 @@ public:
 
 private:
   [[nodiscard]] std::string field() const { return idx("primitives", i_); }
-  [[nodiscard]] static std::size_t vertex_count(const PipePrimitive& pp) {
-    return pp.pos.empty() ? pp.base.v.size() : pp.pos.size();
+  [[nodiscard]] static std::size_t vertex_count(const Primitive& pp) {
+    return pp.pos.empty() ? pp.v.size() : pp.pos.size();
   }
-  [[nodiscard]] std::vector<float> vertex_attr(const PipePrimitive& pp, std::size_t j) const {
+  [[nodiscard]] std::vector<float> vertex_attr(const Primitive& pp, std::size_t j) const {
     return nattr_ == 0 ? std::vector<float>{} : pp.attr[j];
   }
 
   // rule: PIPE.INPUT.ATTRIBUTES
-  std::optional<SceneError> check_attributes(const PipePrimitive& pp) const {
+  std::optional<SceneError> check_attributes(const Primitive& pp) const {
     const std::string pf = field();
     const std::size_t nv = vertex_count(pp);
     const std::size_t nattr = nattr_;
@@ -113,10 +112,10 @@ private:
                      std::string(std::isnan(pp.attr[j][k]) ? "is NaN" : "is infinite") +
                          " (PIPE.INPUT.ATTRIBUTES)");
     }
-    const std::size_t required = required_vertex_count(pp.base.type);
+    const std::size_t required = required_vertex_count(pp.type);
     if ((required != 0 && nv != required) || (required == 0 && nv < 2))
       return err(pf + (pp.pos.empty() ? ".v" : ".pos"),
-                 "a " + std::string(to_string(pp.base.type)) + " needs " +
+                 "a " + std::string(to_string(pp.type)) + " needs " +
                      (required == 0 ? std::string("at least 2") : std::to_string(required)) +
                      " vertices");
     return std::nullopt;
@@ -125,17 +124,17 @@ private:
   // rule: PIPE.INTERP.FLAT
   // The provoking vertex of each segment: a strip's segment k runs from vertex k to k + 1 and
   // is an independent line (LINE.STRIP.SEQUENCE); any other primitive is one segment.
-  [[nodiscard]] std::vector<float> flat_of(const PipePrimitive& pp, std::size_t segment) const {
+  [[nodiscard]] std::vector<float> flat_of(const Primitive& pp, std::size_t segment) const {
     if (nattr_ == 0)
       return {};
-    const bool strip = pp.base.type == PrimitiveType::kLineStrip;
+    const bool strip = pp.type == PrimitiveType::kLineStrip;
     const std::size_t first = strip ? segment : 0,
                       last = strip ? segment + 1 : vertex_count(pp) - 1;
     return pp.attr[s_.provoking == Provoking::kFirst ? first : last];
   }
 
   // Adds a coverage primitive; segment: the strip segment a clipped line was cut from.
-  void add(const PipePrimitive& pp, const Primitive& prim, std::optional<std::uint32_t> part,
+  void add(const Primitive& pp, const Primitive& prim, std::optional<std::uint32_t> part,
            std::vector<WindowVertex> v, std::vector<std::vector<float>> attr,
            std::size_t segment = 0) {
     std::vector<std::vector<float>> flat;
@@ -147,9 +146,9 @@ private:
   }
 
   // Adds a drawn primitive of type t from clip-space vertices: divide and viewport.
-  void add_window(const PipePrimitive& pp, PrimitiveType t, std::optional<std::uint32_t> part,
+  void add_window(const Primitive& pp, PrimitiveType t, std::optional<std::uint32_t> part,
                   const std::vector<ClipVertex>& vs, std::size_t segment = 0) {
-    Primitive p = pp.base;
+    Primitive p = coverage_of(pp);
     p.type = t;
     p.v.clear();
     std::vector<WindowVertex> w;
@@ -168,7 +167,7 @@ private:
   }
 
   // Window space: v as given, z and w optional.
-  std::optional<SceneError> add_window_space(const PipePrimitive& pp) {
+  std::optional<SceneError> add_window_space(const Primitive& pp) {
     const std::string pf = field();
     const std::size_t nv = vertex_count(pp);
     if (!pp.z.empty() && pp.z.size() != nv)
@@ -177,8 +176,8 @@ private:
       return err(pf + ".w", "needs one value per vertex");
     std::vector<WindowVertex> v(nv);
     for (std::size_t j = 0; j < nv; ++j) {
-      v[j].x = pp.base.v[j][0];
-      v[j].y = pp.base.v[j][1];
+      v[j].x = pp.v[j][0];
+      v[j].y = pp.v[j][1];
       if (!pp.z.empty()) {
         if (!std::isfinite(pp.z[j]))
           return err(pf + ".z[" + std::to_string(j) + "]", "is not finite (PIPE.DEPTH.INTERP)");
@@ -194,12 +193,12 @@ private:
     std::vector<std::vector<float>> attr;
     for (std::size_t j = 0; j < nv; ++j)
       attr.push_back(vertex_attr(pp, j));
-    add(pp, pp.base, std::nullopt, std::move(v), std::move(attr));
+    add(pp, coverage_of(pp), std::nullopt, std::move(v), std::move(attr));
     return std::nullopt;
   }
 
   // Clip space: the transform, then the clip volume (PIPE.CLIP.*).
-  std::optional<SceneError> add_clip_space(const PipePrimitive& pp) {
+  std::optional<SceneError> add_clip_space(const Primitive& pp) {
     const std::string pf = field();
     const std::size_t nv = vertex_count(pp);
     const bool has_transform = s_.model || s_.view || s_.projection;
@@ -227,7 +226,7 @@ private:
       clip_pos.push_back(c.pos);
     const bool depth_clip = !s_.depth || s_.depth->clip;
     const ClipVolume vol = clip_volume(clip_pos, vp_, depth_clip);
-    switch (pp.base.type) {
+    switch (pp.type) {
     case PrimitiveType::kTriangle: {
       // rule: PIPE.CLIP.POLYGON, PIPE.CLIP.UNCLIPPED
       const std::vector<ClipVertex> poly = clip_polygon(cv, vol);
@@ -252,7 +251,7 @@ private:
       const bool all_in = std::all_of(cv.begin(), cv.end(),
                                       [&](const ClipVertex& c) { return inside(vol, c.pos); });
       if (all_in) {
-        add_window(pp, pp.base.type, std::nullopt, cv);
+        add_window(pp, pp.type, std::nullopt, cv);
         break;
       }
       for (std::size_t k = 0; k + 1 < cv.size(); ++k) {
@@ -267,7 +266,7 @@ private:
     return std::nullopt;
   }
 
-  const PipeScene& s_;
+  const Scene& s_;
   const Viewport& vp_;
   const std::size_t nattr_;
   std::size_t i_ = 0;
@@ -276,7 +275,7 @@ private:
 
 } // namespace
 
-std::variant<Assembled, SceneError> assemble(const PipeScene& s, const Viewport& vp) {
+std::variant<Assembled, SceneError> assemble(const Scene& s, const Viewport& vp) {
   Assembler a(s, vp);
   for (std::size_t i = 0; i < s.primitives.size(); ++i)
     if (auto bad = a.add_primitive(i))

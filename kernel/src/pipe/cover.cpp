@@ -22,18 +22,19 @@ std::optional<SceneError> cover(const PreparedScene& ps, const std::vector<Sourc
                                 const ScissorRect& scissor, const PipeOptions& o,
                                 std::vector<Fragment>& fragments) {
   for (std::size_t p = 0; p < ps.primitives.size(); ++p) {
+    const std::size_t prim = sources.empty() ? p : sources[p].prim;
     const auto emit = [&](const Fragment& f) {
       if (!scissor.contains(f.x, f.y))
         return;
       if (fragments.size() >= o.max_fragments)
-        throw Stop{err(idx("primitives", sources[p].prim),
-                       "the scene produces more than " + std::to_string(o.max_fragments) +
-                           " fragments (limit SCENE.INPUT.LIMITS)")};
+        throw Stop{err(idx("primitives", prim), "the scene produces more than " +
+                                                    std::to_string(o.max_fragments) +
+                                                    " fragments (limit SCENE.INPUT.LIMITS)")};
       fragments.push_back(f);
     };
     try {
       if (!for_each_fragment_bounded(ps, p, o.max_fragments, o.render, emit))
-        return err(idx("primitives", sources[p].prim),
+        return err(idx("primitives", prim),
                    "touches more than " + std::to_string(o.max_fragments) +
                        " pixels or fragments that must be held to be sorted (limit "
                        "SCENE.INPUT.LIMITS)");

@@ -14,8 +14,8 @@ namespace rastrules::pipe::detail {
 namespace {
 
 // Drawn primitive `segment` of coverage primitive p.
-Drawn draw_one(const PipeScene& s, const PreparedPrimitive& pr, const Source& src,
-               std::size_t segment, const Viewport& vp) {
+Drawn draw_one(const Scene& s, const PreparedPrimitive& pr, const Source& src, std::size_t segment,
+               const Viewport& vp) {
   const DepthFormat fmt = s.depth ? s.depth->format : DepthFormat::kD24;
   Drawn d;
   const bool strip = pr.type == PrimitiveType::kLineStrip;
@@ -68,9 +68,8 @@ Drawn draw_one(const PipeScene& s, const PreparedPrimitive& pr, const Source& sr
 
 } // namespace
 
-std::vector<Drawn> draw(const PipeScene& s, const PreparedScene& ps,
-                        const std::vector<Source>& sources, const Links& links, const Viewport& vp,
-                        std::vector<DrawnPrimitive>& out) {
+std::vector<Drawn> draw(const Scene& s, const PreparedScene& ps, const std::vector<Source>& sources,
+                        const Links& links, const Viewport& vp, std::vector<DrawnPrimitive>& out) {
   std::vector<Drawn> drawn;
   drawn.reserve(links.first_drawn.back());
   out.reserve(links.first_drawn.back());

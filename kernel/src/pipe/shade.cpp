@@ -43,11 +43,11 @@ Barycentrics eval_bary(PrimitiveType type, const std::vector<Vec2>& v, Vec2 s) {
 // state is touched only by fragments in that tile, so tiles may be shaded on several threads.
 class DepthTarget {
 public:
-  DepthTarget(const PipeScene& s, const PipeOptions& o, const std::vector<Drawn>& drawn,
+  DepthTarget(const Scene& s, const PipeOptions& o, const std::vector<Drawn>& drawn,
               std::vector<DepthValue>& buffer)
-      : s_(s), drawn_(drawn), buffer_(buffer), T_(o.tile_size), n_(s.base.msaa.count()),
-        fmt_(s.depth ? s.depth->format : DepthFormat::kD24), tiles_x_((s.base.width + T_ - 1) / T_),
-        tiles_y_((s.base.height + T_ - 1) / T_),
+      : s_(s), drawn_(drawn), buffer_(buffer), T_(o.tile_size), n_(s.msaa.count()),
+        fmt_(s.depth ? s.depth->format : DepthFormat::kD24), tiles_x_((s.width + T_ - 1) / T_),
+        tiles_y_((s.height + T_ - 1) / T_),
         clear_(s.depth ? to_depth_format(s.depth->clear, 0.0f, 1.0f, fmt_) : DepthValue{}) {
     const bool less_like = s.depth && (s.depth->func == CompareFunc::kLess ||
                                        s.depth->func == CompareFunc::kLessEqual);
@@ -58,7 +58,7 @@ public:
     if (!s.depth)
       return;
     const std::size_t samples =
-        static_cast<std::size_t>(s.base.width) * static_cast<std::size_t>(s.base.height) * n_;
+        static_cast<std::size_t>(s.width) * static_cast<std::size_t>(s.height) * n_;
     if (o.fast_clear) {
       buffer_.resize(samples);
       cleared_.assign(ntiles(), 1);
@@ -78,7 +78,7 @@ public:
     return static_cast<std::size_t>((y / T_) * tiles_x_ + x / T_);
   }
   [[nodiscard]] std::size_t sample_index(std::int64_t x, std::int64_t y, std::uint32_t k) const {
-    return (static_cast<std::size_t>(y) * static_cast<std::size_t>(s_.base.width) +
+    return (static_cast<std::size_t>(y) * static_cast<std::size_t>(s_.width) +
             static_cast<std::size_t>(x)) *
                n_ +
            k;
@@ -155,8 +155,8 @@ private:
   template <class Fn> void for_tile(std::size_t t, Fn&& fn) const {
     const std::int64_t tx = static_cast<std::int64_t>(t) % tiles_x_,
                        ty = static_cast<std::int64_t>(t) / tiles_x_;
-    for (std::int64_t y = ty * T_; y < std::min<std::int64_t>((ty + 1) * T_, s_.base.height); ++y)
-      for (std::int64_t x = tx * T_; x < std::min<std::int64_t>((tx + 1) * T_, s_.base.width); ++x)
+    for (std::int64_t y = ty * T_; y < std::min<std::int64_t>((ty + 1) * T_, s_.height); ++y)
+      for (std::int64_t x = tx * T_; x < std::min<std::int64_t>((tx + 1) * T_, s_.width); ++x)
         for (std::uint32_t k = 0; k < n_; ++k)
           fn(sample_index(x, y, k));
   }
@@ -171,7 +171,7 @@ private:
     return fmt_ == DepthFormat::kD32F ? a.f < b.f : a.unorm < b.unorm;
   }
 
-  const PipeScene& s_;
+  const Scene& s_;
   const std::vector<Drawn>& drawn_;
   std::vector<DepthValue>& buffer_;
   const std::int64_t T_;
@@ -189,12 +189,12 @@ private:
 
 } // namespace
 
-void shade(const PipeScene& s, const PreparedScene& ps, const Viewport& vp, const PipeOptions& o,
+void shade(const Scene& s, const PreparedScene& ps, const Viewport& vp, const PipeOptions& o,
            const std::vector<Drawn>& drawn, const Links& links, PipeResult& result) {
   const SamplePattern& pattern = ps.msaa.pattern;
   const DepthFormat fmt = s.depth ? s.depth->format : DepthFormat::kD24;
   const std::size_t nattr = s.attributes.size();
-  const std::uint32_t nsamples = s.base.msaa.count();
+  const std::uint32_t nsamples = s.msaa.count();
   const std::vector<Fragment>& fragments = result.fragments;
   DepthTarget target(s, o, drawn, result.depth_buffer);
   std::atomic<std::uint64_t> n_depth{0}, n_attr{0}; // PipeStats

@@ -44,7 +44,7 @@ std::size_t segments_of(PrimitiveType t, std::size_t nv);
 
 // validate.cpp. Returns the viewport (the whole target by default), or the first error of the
 // pipeline state; the primitives are checked by assemble() and prepare().
-std::variant<Viewport, SceneError> validate(const PipeScene& s, const PipeOptions& o);
+std::variant<Viewport, SceneError> validate(const Scene& s, const PipeOptions& o);
 
 // assemble.cpp. The internal window-space scene (one coverage primitive per unclipped primitive
 // or clipped part) and where each of its primitives came from; or the first error of a
@@ -53,14 +53,15 @@ struct Assembled {
   Scene ws;
   std::vector<Source> sources;
 };
-std::variant<Assembled, SceneError> assemble(const PipeScene& s, const Viewport& vp);
+std::variant<Assembled, SceneError> assemble(const Scene& s, const Viewport& vp);
 
 // Replaces the primitive index of an error field "primitives[N]..." of the internal scene with
 // the index of its source primitive.
 SceneError remap(SceneError e, const std::vector<Source>& sources);
 
 // cover.cpp. Appends the covered fragments of every prepared primitive inside the scissor, in
-// (prim, part, y, x, seg, sample) order, f.prim being the index in ps; returns the error of a
+// (prim, part, y, x, seg, sample) order, f.prim being the index in ps (empty sources: ps is the
+// scene itself, primitive p its primitive p); returns the error of a
 // scene beyond the fragment limit (SCENE.INPUT.LIMITS).
 std::optional<SceneError> cover(const PreparedScene& ps, const std::vector<Source>& sources,
                                 const ScissorRect& scissor, const PipeOptions& o,
@@ -88,13 +89,12 @@ struct Drawn {
 };
 // Returns every drawn primitive (window depths after bias, w, attribute values, Hi-Z bounds)
 // and appends its public record to out.
-std::vector<Drawn> draw(const PipeScene& s, const PreparedScene& ps,
-                        const std::vector<Source>& sources, const Links& links, const Viewport& vp,
-                        std::vector<DrawnPrimitive>& out);
+std::vector<Drawn> draw(const Scene& s, const PreparedScene& ps, const std::vector<Source>& sources,
+                        const Links& links, const Viewport& vp, std::vector<DrawnPrimitive>& out);
 
 // shade.cpp. Depth (test and write) and attributes of every fragment, on the depth target with
 // its tiles, fast clear and Hi-Z; fills result.data, depth_buffer and stats.
-void shade(const PipeScene& s, const PreparedScene& ps, const Viewport& vp, const PipeOptions& o,
+void shade(const Scene& s, const PreparedScene& ps, const Viewport& vp, const PipeOptions& o,
            const std::vector<Drawn>& drawn, const Links& links, PipeResult& result);
 
 } // namespace rastrules::pipe::detail

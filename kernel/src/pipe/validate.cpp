@@ -22,9 +22,8 @@ SceneError err(std::string field, std::string message) {
 }
 
 // rule: PIPE.VIEWPORT.RANGE, PIPE.TRANSFORM.FLOAT32, PIPE.INPUT.ATTRIBUTES, PIPE.INTERP.LOCATION
-std::variant<Viewport, SceneError> validate(const PipeScene& s, const PipeOptions& o) {
-  Viewport vp{0.0f, 0.0f, static_cast<float>(s.base.width), static_cast<float>(s.base.height),
-              0.0f, 1.0f};
+std::variant<Viewport, SceneError> validate(const Scene& s, const PipeOptions& o) {
+  Viewport vp{0.0f, 0.0f, static_cast<float>(s.width), static_cast<float>(s.height), 0.0f, 1.0f};
   if (s.viewport) {
     vp = *s.viewport;
     if (auto bad = check_viewport(vp))
@@ -45,7 +44,7 @@ std::variant<Viewport, SceneError> validate(const PipeScene& s, const PipeOption
     return err("attributes", "has more than 16 entries (limit PIPE.INPUT.ATTRIBUTES)");
   for (std::size_t a = 0; a < s.attributes.size(); ++a) {
     const AttributeDecl& d = s.attributes[a];
-    if (d.location == Location::kSample && s.base.msaa.shading != ShadingRate::kSample)
+    if (d.location == Location::kSample && s.msaa.shading != ShadingRate::kSample)
       return err(idx("attributes", a) + ".location",
                  "\"sample\" needs sample-frequency shading (PIPE.INTERP.LOCATION)");
   }
@@ -59,9 +58,9 @@ std::variant<Viewport, SceneError> validate(const PipeScene& s, const PipeOption
       return err("depth.bias_clamp", "is not finite (PIPE.DEPTH.BIAS)");
   }
   if (s.depth) {
-    const std::uint32_t nsamples = s.base.msaa.count();
-    const std::uint64_t total = static_cast<std::uint64_t>(std::max(s.base.width, 0)) *
-                                static_cast<std::uint64_t>(std::max(s.base.height, 0)) * nsamples;
+    const std::uint32_t nsamples = s.msaa.count();
+    const std::uint64_t total = static_cast<std::uint64_t>(std::max(s.width, 0)) *
+                                static_cast<std::uint64_t>(std::max(s.height, 0)) * nsamples;
     if (total > static_cast<std::uint64_t>(kMaxResolveSamples))
       return err("depth", "the depth buffer (width * height * samples) exceeds 2^26 samples "
                           "(limit SCENE.INPUT.LIMITS)");

@@ -83,16 +83,16 @@ CaseReport check_case(const std::filesystem::path& scene_path) {
     fail(scene_path.filename().string() + ": cannot be read");
     return r;
   }
-  auto read = io::read_any_scene(text);
+  auto read = io::read_scene(text);
   if (auto* e = std::get_if<SceneError>(&read)) {
     fail("scene: " + e->what());
     return r;
   }
-  if (!std::holds_alternative<kp::PipeScene>(read)) {
+  if (!has_pipeline_state(std::get<Scene>(read))) {
     fail("scene: not a pipeline scene (SCENE.PIPELINE)");
     return r;
   }
-  const kp::PipeScene& s = std::get<kp::PipeScene>(read);
+  const Scene& s = std::get<Scene>(read);
   auto fast_or = kp::run_pipeline(s);
   auto plain_or = kp::run_pipeline(s, kp::PipeOptions::plain());
   if (auto* e = std::get_if<SceneError>(&fast_or)) {

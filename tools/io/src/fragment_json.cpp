@@ -252,7 +252,7 @@ std::string fragments_to_json(const std::vector<Fragment>& fragments) {
   return out;
 }
 
-PipeOutputFields pipe_output_fields(const pipe::PipeScene& s) {
+PipeOutputFields pipe_output_fields(const Scene& s) {
   PipeOutputFields fields;
   for (const pipe::AttributeDecl& a : s.attributes)
     fields.attributes.push_back(a.name);

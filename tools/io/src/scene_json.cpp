@@ -548,18 +548,13 @@ public:
     return false;
   }
 
-  [[nodiscard]] std::variant<Scene, pipe::PipeScene, SceneError> result(bool ok) {
+  [[nodiscard]] std::variant<Scene, SceneError> result(bool ok) {
     if (error_)
       return *error_;
     if (!ok)
       return SceneError{"", "parse error: input ended early"};
-    if (!pipeline_key_.empty())
-      return std::move(pipe_);
     return std::move(scene_);
   }
-
-  // The path of the first pipeline key read (empty for a plain scene).
-  [[nodiscard]] const std::string& pipeline_key() const { return pipeline_key_; }
 
 private:
   bool fail(std::string field, std::string message) {
@@ -602,6 +597,18 @@ private:
       return fail("scene", "more than one JSON value");
     }
     last_path_ = field;
+    if (const auto r = scene_value(slot, field, v))
+      return *r;
+    if (const auto r = sample_value(slot, field, v))
+      return *r;
+    if (const auto r = pipeline_value(slot, field, v))
+      return *r;
+    return fail(field, "internal error: unknown slot");
+  }
+
+  // The root, the target, the raster state and the primitives' window-space keys. Returns nullopt
+  // for a slot of another group.
+  std::optional<bool> scene_value(Slot slot, const std::string& field, const Value& v) {
     switch (slot) {
     case Slot::kRoot:
       if (v.kind != Kind::kObject)
@@ -666,6 +673,15 @@ private:
       return push(Ctx::kCoordArray, field);
     case Slot::kCoord:
       return coordinate(field, v);
+    default:
+      return std::nullopt;
+    }
+  }
+
+  // The multisampling keys (SCENE.MSAA) and the colours. Returns nullopt for a slot of another
+  // group.
+  std::optional<bool> sample_value(Slot slot, const std::string& field, const Value& v) {
+    switch (slot) {
     // rule: SCENE.MSAA, MSAA.LIMITS
     case Slot::kSamples:
       if (v.kind == Kind::kInt && v.i >= 1 && v.i <= kMaxSamples) {
@@ -737,6 +753,14 @@ private:
         return true;
       }
       return type_error(field, "an integer in [0, 255]", v);
+    default:
+      return std::nullopt;
+    }
+  }
+
+  // The pipeline keys (SCENE.PIPELINE). Returns nullopt for a slot of another group.
+  std::optional<bool> pipeline_value(Slot slot, const std::string& field, const Value& v) {
+    switch (slot) {
     // rule: SCENE.PIPELINE
     case Slot::kViewport:
       if (v.kind != Kind::kObject) {
@@ -884,8 +908,9 @@ private:
       extras_.attr.back().push_back(x);
       return true;
     }
+    default:
+      return std::nullopt;
     }
-    return fail(field, "internal error: unknown slot");
   }
 
   // The most elements an array of this context holds; one more is an error (overflow_message).
@@ -1069,22 +1094,24 @@ private:
       if (!check_attr(p, has_attr_[p], extras_of_[p]))
         return false;
     }
-    pipe_.primitives.reserve(scene_.primitives.size());
     for (std::size_t p = 0; p < scene_.primitives.size(); ++p) {
-      pipe::PipePrimitive prim;
-      prim.base = std::move(scene_.primitives[p]);
+      Primitive& prim = scene_.primitives[p];
       PipeExtras& e = extras_of_[p];
       if (!e.pos.empty())
-        prim.base.v.clear();
+        prim.v.clear();
       prim.pos = std::move(e.pos);
       prim.z = std::move(e.z);
       prim.w = std::move(e.w);
       prim.attr = std::move(e.attr);
-      pipe_.primitives.push_back(std::move(prim));
     }
-    scene_.primitives.clear();
     extras_of_.clear();
-    pipe_.base = std::move(scene_);
+    scene_.viewport = pipe_.viewport;
+    scene_.model = pipe_.model;
+    scene_.view = pipe_.view;
+    scene_.projection = pipe_.projection;
+    scene_.depth = pipe_.depth;
+    scene_.attributes = std::move(pipe_.attributes);
+    scene_.provoking = pipe_.provoking;
     return true;
   }
 
@@ -1213,7 +1240,7 @@ private:
   bool sample_mask_given_ = false;
   // Pipeline scenes (SCENE.PIPELINE).
   std::string pipeline_key_;          // the first pipeline key read; empty: a plain scene
-  pipe::PipeScene pipe_;              // its root keys (base and primitives set at the end)
+  Scene pipe_;                        // its root keys, moved into scene_ at the end
   unsigned viewport_seen_ = 0;        // the viewport keys given (kViewportKeys order)
   pipe::Mat4f* matrix_ = nullptr;     // the matrix being read
   pipe::AttributeDecl attribute_;     // the attribute being read
@@ -1294,37 +1321,13 @@ std::string format_float(float v) {
   return std::string(buf.data(), r.ptr);
 }
 
-namespace {
-// Reads any scene; pipeline_key receives the first pipeline key's path (empty for a plain one).
-std::variant<Scene, pipe::PipeScene, SceneError> read(std::string_view json_text,
-                                                      std::string& pipeline_key) {
+// rule: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.PIPELINE, SCENE.INPUT.ERRORS
+std::variant<Scene, SceneError> read_scene(std::string_view json_text) {
   SceneReader reader;
   const bool ok = nlohmann::json::sax_parse(json_text.begin(), json_text.end(), &reader,
                                             nlohmann::json::input_format_t::json,
                                             /*strict=*/true, /*ignore_comments=*/false);
-  pipeline_key = reader.pipeline_key();
   return reader.result(ok);
-}
-} // namespace
-
-// rule: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS
-std::variant<Scene, SceneError> read_scene(std::string_view json_text) {
-  std::string pipeline_key;
-  auto r = read(json_text, pipeline_key);
-  if (auto* err = std::get_if<SceneError>(&r))
-    return std::move(*err);
-  if (std::holds_alternative<pipe::PipeScene>(r)) {
-    return SceneError{pipeline_key, "is a pipeline key (SCENE.PIPELINE) and only window-space "
-                                    "scenes are read here (rastrules render and explain read "
-                                    "pipeline scenes)"};
-  }
-  return std::move(std::get<Scene>(r));
-}
-
-// rule: SCENE.FORMAT.V1, SCENE.PIPELINE, SCENE.INPUT.ERRORS
-std::variant<Scene, pipe::PipeScene, SceneError> read_any_scene(std::string_view json_text) {
-  std::string pipeline_key;
-  return read(json_text, pipeline_key);
 }
 
 std::string_view interpolation_name(pipe::Interpolation i) {
@@ -1507,6 +1510,18 @@ bool same_primitive(const Primitive& pa, const Primitive& pb) {
     if (!same_floats(pa.v[i].data(), pb.v[i].data(), 2))
       return false;
   }
+  if (pa.pos.size() != pb.pos.size() || !same_float_vector(pa.z, pb.z) ||
+      !same_float_vector(pa.w, pb.w) || pa.attr.size() != pb.attr.size()) {
+    return false;
+  }
+  for (std::size_t i = 0; i < pa.pos.size(); ++i) {
+    if (!same_floats(pa.pos[i].data(), pb.pos[i].data(), 4))
+      return false;
+  }
+  for (std::size_t i = 0; i < pa.attr.size(); ++i) {
+    if (!same_float_vector(pa.attr[i], pb.attr[i]))
+      return false;
+  }
   return true;
 }
 
@@ -1533,22 +1548,12 @@ bool same_matrix(const std::optional<pipe::Mat4f>& a, const std::optional<pipe::
 } // namespace
 
 // rule: SCENE.FORMAT.V1
-std::string write_scene(const Scene& scene) {
-  std::string out = scene_head(scene);
-  out += "  \"primitives\": [";
-  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
-    out += p == 0 ? "\n" : ",\n";
-    out += primitive_head(scene.primitives[p]) + vertices_text(scene.primitives[p].v) + "}";
-  }
-  out += scene.primitives.empty() ? "]\n}\n" : "\n  ]\n}\n";
-  return out;
-}
 
 // rule: SCENE.PIPELINE
-std::string write_pipe_scene(const pipe::PipeScene& s) {
-  std::string out = scene_head(s.base);
-  // Always written, so that the text is a pipeline scene even without any other pipeline key.
-  out += "  \"provoking_vertex\": \"" + std::string(provoking_name(s.provoking)) + "\",\n";
+std::string write_scene(const Scene& s) {
+  std::string out = scene_head(s);
+  if (s.provoking != pipe::Provoking::kFirst)
+    out += "  \"provoking_vertex\": \"" + std::string(provoking_name(s.provoking)) + "\",\n";
   if (s.viewport) {
     const pipe::Viewport& vp = *s.viewport;
     out += "  \"viewport\": {\"x\": " + float_text(vp.x) + ", \"y\": " + float_text(vp.y) +
@@ -1589,9 +1594,9 @@ std::string write_pipe_scene(const pipe::PipeScene& s) {
   }
   out += "  \"primitives\": [";
   for (std::size_t p = 0; p < s.primitives.size(); ++p) {
-    const pipe::PipePrimitive& prim = s.primitives[p];
+    const Primitive& prim = s.primitives[p];
     out += p == 0 ? "\n" : ",\n";
-    out += primitive_head(prim.base);
+    out += primitive_head(prim);
     if (!prim.pos.empty()) {
       out += "\"pos\": [";
       for (std::size_t i = 0; i < prim.pos.size(); ++i) {
@@ -1599,7 +1604,7 @@ std::string write_pipe_scene(const pipe::PipeScene& s) {
       }
       out += "]";
     } else {
-      out += vertices_text(prim.base.v);
+      out += vertices_text(prim.v);
       if (!prim.z.empty())
         out += ", \"z\": " + floats_text(prim.z.data(), prim.z.size());
       if (!prim.w.empty())
@@ -1619,17 +1624,7 @@ std::string write_pipe_scene(const pipe::PipeScene& s) {
 }
 
 bool same_scene(const Scene& a, const Scene& b) {
-  if (!same_state(a, b) || a.primitives.size() != b.primitives.size())
-    return false;
-  for (std::size_t p = 0; p < a.primitives.size(); ++p) {
-    if (!same_primitive(a.primitives[p], b.primitives[p]))
-      return false;
-  }
-  return true;
-}
-
-bool same_pipe_scene(const pipe::PipeScene& a, const pipe::PipeScene& b) {
-  if (!same_scene(a.base, b.base) || a.provoking != b.provoking ||
+  if (!same_state(a, b) || a.provoking != b.provoking ||
       a.viewport.has_value() != b.viewport.has_value() || !same_matrix(a.model, b.model) ||
       !same_matrix(a.view, b.view) || !same_matrix(a.projection, b.projection) ||
       a.depth.has_value() != b.depth.has_value() || a.attributes.size() != b.attributes.size() ||
@@ -1661,21 +1656,8 @@ bool same_pipe_scene(const pipe::PipeScene& a, const pipe::PipeScene& b) {
       return false;
   }
   for (std::size_t p = 0; p < a.primitives.size(); ++p) {
-    const pipe::PipePrimitive& pa = a.primitives[p];
-    const pipe::PipePrimitive& pb = b.primitives[p];
-    if (!same_primitive(pa.base, pb.base) || pa.pos.size() != pb.pos.size() ||
-        !same_float_vector(pa.z, pb.z) || !same_float_vector(pa.w, pb.w) ||
-        pa.attr.size() != pb.attr.size()) {
+    if (!same_primitive(a.primitives[p], b.primitives[p]))
       return false;
-    }
-    for (std::size_t i = 0; i < pa.pos.size(); ++i) {
-      if (!same_floats(pa.pos[i].data(), pb.pos[i].data(), 4))
-        return false;
-    }
-    for (std::size_t i = 0; i < pa.attr.size(); ++i) {
-      if (!same_float_vector(pa.attr[i], pb.attr[i]))
-        return false;
-    }
   }
   return true;
 }

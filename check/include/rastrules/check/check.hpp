@@ -63,8 +63,7 @@ struct Mismatches {
 // primitive, every attribute (PIPE.INTERP.BOUND, flat values exactly) and every sample depth
 // (PIPE.DEPTH.BOUND). oracle_checks counts the values compared with the oracle.
 // rule: PIPE.BARY.SUM, PIPE.INTERP.HORIZON, PIPE.DEPTH.CLAMP, PIPE.INTERP.BOUND, PIPE.DEPTH.BOUND
-[[nodiscard]] Mismatches check_pipeline_values(const pipe::PipeScene& scene,
-                                               const pipe::PipeResult& result,
+[[nodiscard]] Mismatches check_pipeline_values(const Scene& scene, const pipe::PipeResult& result,
                                                const CheckOptions& options = {},
                                                std::size_t* oracle_checks = nullptr);
 

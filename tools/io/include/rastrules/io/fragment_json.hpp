@@ -26,7 +26,7 @@ struct PipeOutputFields {
 };
 
 // Returns the fields the scene asks for.
-[[nodiscard]] PipeOutputFields pipe_output_fields(const pipe::PipeScene& s);
+[[nodiscard]] PipeOutputFields pipe_output_fields(const Scene& s);
 
 // Writes {"fragments": [...]} to a FILE*, one fragment per line, without holding the list in
 // memory. The caller emits fragments in (prim, y, x, seg) order (SCENE.OUTPUT.FRAGMENTS); the

@@ -4,9 +4,8 @@
 //             SCENE.MSAA (the keys; the rules between them are prepare()'s, MSAA.LIMITS),
 //             SCENE.PIPELINE (the keys, their types, counts and finiteness)
 // Does not implement: target limits and vertex validity, which the kernel's prepare() checks
-// (SCENE.TARGET.LIMITS, SNAP.VERTEX.INVALID) after reading; for pipeline scenes the viewport's
-// ranges and the positions' magnitude, which run_pipeline() checks (PIPE.VIEWPORT.RANGE,
-// PIPE.INPUT.POSITION).
+// (SCENE.TARGET.LIMITS, SNAP.VERTEX.INVALID) after reading; the viewport's ranges and the
+// positions' magnitude, which run_pipeline() checks (PIPE.VIEWPORT.RANGE, PIPE.INPUT.POSITION).
 
 #pragma once
 
@@ -45,38 +44,25 @@ inline constexpr std::uint64_t kDefaultMaxFragments = std::uint64_t{1} << 26; //
 // malformed JSON, the parser's position (`(json): parse error at line 1, column 7: ...`).
 // Coordinates are converted from their decimal text directly to the nearest float32
 // (SCENE.NUMBER.FLOAT32); the strings "NaN", "Infinity" and "-Infinity" are accepted and left
-// for prepare() to reject.
-// rule: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS
+// for prepare() to reject. The pipeline keys (SCENE.PIPELINE: "viewport", "transform",
+// "depth", "attributes", "provoking_vertex", and "z", "w", "pos", "attr" in a primitive) fill
+// the scene's pipeline state; checks between keys that may come in any order, such as "attr"
+// against "attributes", are made when the root object ends.
+// rule: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.PIPELINE, SCENE.INPUT.ERRORS
 [[nodiscard]] std::variant<Scene, SceneError> read_scene(std::string_view json_text);
-
-// Returns the scene described by the JSON text: a plain scene (rastrules::Scene, exactly what
-// read_scene() returns) or, when the text has any pipeline key (SCENE.PIPELINE: "viewport",
-// "transform", "depth", "attributes", "provoking_vertex", or "z", "w", "pos", "attr" in a
-// primitive), a pipeline scene (rastrules::pipe::PipeScene: base holds everything but the
-// primitives, which are in primitives). Errors as read_scene(): the first in reading order
-// (checks between keys that may come in any order, such as "attr" against "attributes", when
-// the root object ends), naming the field path (`primitives[2].attr[1][0]: is NaN`).
-// rule: SCENE.FORMAT.V1, SCENE.PIPELINE, SCENE.INPUT.ERRORS
-[[nodiscard]] std::variant<Scene, pipe::PipeScene, SceneError>
-read_any_scene(std::string_view json_text);
 
 // Returns the whole content of a scene file ("-" is standard input), or an error naming the
 // file when it cannot be read or is larger than kMaxSceneBytes.
 [[nodiscard]] std::variant<std::string, SceneError> read_scene_file(const std::string& path);
 
-// Returns the scene as JSON text in the format read_scene() accepts, one primitive per line.
-// Floats are written in their shortest form that reads back to the same float32;
+// Returns the scene as JSON text that read_scene() reads back as the same scene (same_scene),
+// one primitive per line: the target, state and multisampling keys, then "provoking_vertex"
+// (when "last"), "viewport", "transform", "depth" and "attributes" when present (every sub-key
+// written), and per primitive "v" with "z" and "w" when given, or "pos" (4 coordinates each),
+// and "attr". Floats are written in their shortest form that reads back to the same float32;
 // NaN and infinities as the strings "NaN", "Infinity", "-Infinity".
-// rule: SCENE.FORMAT.V1
+// rule: SCENE.FORMAT.V1, SCENE.PIPELINE
 [[nodiscard]] std::string write_scene(const Scene& scene);
-
-// Returns the pipeline scene as JSON text that read_any_scene() reads back as the same
-// pipeline scene (same_pipe_scene): the keys of write_scene() (from s.base), then
-// "provoking_vertex" (always, so that the text is a pipeline scene), "viewport", "transform",
-// "depth" and "attributes" when present (every sub-key written), and per primitive "v" with
-// "z" and "w" when given, or "pos" (4 coordinates each), and "attr".
-// rule: SCENE.PIPELINE
-[[nodiscard]] std::string write_pipe_scene(const pipe::PipeScene& s);
 
 // Returns the scene-file name of a line mode: "d3d", "vulkan-bresenham", "quad-wide",
 // "quad-narrow" (SCENE.LINE_MODE).
@@ -97,14 +83,10 @@ read_any_scene(std::string_view json_text);
 // (with "..." appended when cut), so that it is safe inside a one-line error message.
 [[nodiscard]] std::string printable(std::string_view s, std::size_t max_len = 60);
 
-// Returns whether two scenes hold the same state and bit-identical coordinates (any NaN equals
-// any NaN: NaN payloads are not part of a scene file). Used to check that a written scene reads
-// back as itself (showcase, fuzz targets).
+// Returns whether two scenes hold the same state, pipeline state and bit-identical numbers
+// (any NaN equals any NaN: NaN payloads are not part of a scene file). Used to check that a
+// written scene reads back as itself (showcase, fuzz targets).
 [[nodiscard]] bool same_scene(const Scene& a, const Scene& b);
-
-// The same for pipeline scenes: base (without its primitives), every pipeline key, and each
-// primitive with bit-identical numbers.
-[[nodiscard]] bool same_pipe_scene(const pipe::PipeScene& a, const pipe::PipeScene& b);
 
 // The scene-file names of the pipeline enumerations (SCENE.PIPELINE): "perspective", "linear",
 // "flat"; "center", "centroid", "sample"; "d16", "d24", "d32f"; "never", "less", ...; "first",

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+// The pipeline state a scene may ask for (SCENE.PIPELINE): positions before the transform,
+// matrices, viewport, depth and attribute declarations. Every part is optional in a Scene
+// (rastrules/scene.hpp); the stages that use them are rastrules/pipeline.hpp's.
+// Implements: SCENE.PIPELINE (the state, in memory)
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace rastrules::pipe {
+
+// rule: PIPE.INPUT.POSITION, PIPE.TRANSFORM.FLOAT32
+using Vec4f = std::array<float, 4>;  // x, y, z, w
+using Mat4f = std::array<float, 16>; // row-major, acting on column vectors
+
+// The viewport (PIPE.VIEWPORT.TRANSFORM, PIPE.VIEWPORT.RANGE).
+struct Viewport {
+  float x = 0.0f, y = 0.0f, width = 0.0f, height = 0.0f;
+  float min_depth = 0.0f, max_depth = 1.0f;
+  friend bool operator==(const Viewport&, const Viewport&) = default;
+};
+
+// rule: PIPE.INTERP.PERSPECTIVE, PIPE.INTERP.LINEAR, PIPE.INTERP.FLAT, PIPE.INTERP.LOCATION
+enum class Interpolation { kPerspective, kLinear, kFlat };
+enum class Location { kCenter, kCentroid, kSample };
+[[nodiscard]] std::string_view to_string(Interpolation i);
+[[nodiscard]] std::string_view to_string(Location l);
+
+// rule: PIPE.DEPTH.FORMAT, PIPE.DEPTH.TEST
+enum class DepthFormat { kD16, kD24, kD32F };
+enum class CompareFunc {
+  kNever,
+  kLess,
+  kEqual,
+  kLessEqual,
+  kGreater,
+  kNotEqual,
+  kGreaterEqual,
+  kAlways
+};
+[[nodiscard]] std::string_view to_string(DepthFormat f);
+[[nodiscard]] std::string_view to_string(CompareFunc f);
+
+// The depth bias terms of PIPE.DEPTH.BIAS.
+struct DepthBias {
+  std::int32_t bias = 0;
+  float slope_scaled = 0.0f;
+  float clamp = 0.0f;
+};
+
+// One declared attribute (PIPE.INPUT.ATTRIBUTES).
+struct AttributeDecl {
+  std::string name;
+  Interpolation interpolation = Interpolation::kPerspective;
+  Location location = Location::kCenter;
+};
+
+// The depth buffer and test (PIPE.DEPTH.*).
+struct DepthState {
+  DepthFormat format = DepthFormat::kD24;
+  CompareFunc func = CompareFunc::kLess;
+  bool write = true;
+  float clear = 1.0f;
+  bool clip = true; // depth clipping (D3D DepthClipEnable)
+  DepthBias bias;
+};
+
+// Which vertex of each segment gives flat attributes (PIPE.INTERP.FLAT).
+enum class Provoking { kFirst, kLast };
+
+} // namespace rastrules::pipe
