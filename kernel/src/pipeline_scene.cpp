@@ -102,7 +102,13 @@ std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene,
 }
 
 std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene) {
-  return render(scene, RenderOptions{});
+  if (has_pipeline_state(scene))
+    return render(scene, RenderOptions{});
+  // The identity case on the calling thread alone.
+  auto prepared = prepare(scene);
+  if (auto* err = std::get_if<SceneError>(&prepared))
+    return *err;
+  return rasterize(std::get<PreparedScene>(prepared));
 }
 
 } // namespace rastrules
