@@ -36,6 +36,185 @@ double stored_as_double(const kp::DepthValue& v, kp::DepthFormat f) {
   return f == kp::DepthFormat::kD32F ? static_cast<double>(v.f) : static_cast<double>(v.unorm);
 }
 
+using Counts = std::map<std::uint32_t, std::size_t>;
+
+// What a pipeline result holds, counted as the sidecar's expectations name it.
+struct Tally {
+  Counts per_prim, passed_per_prim, killed_per_prim; // fragments per primitive
+  std::set<std::uint32_t> parts;                     // the parts fragments came from
+  std::set<double> depths;                           // every stored depth value
+};
+
+// Returns the expectations object of the sidecar `side` and sets r.rules and
+// r.what, or nullopt when the sidecar is missing or malformed (the failure
+// recorded in r).
+std::optional<json> read_sidecar(const std::filesystem::path& side, CaseReport& r) {
+  bool ok = false;
+  const std::string side_text = read_text(side, ok);
+  if (!ok) {
+    r.failures.push_back(side.filename().string() + ": missing");
+    return std::nullopt;
+  }
+  try {
+    const json j = json::parse(side_text);
+    for (const auto& id : j.at("rules"))
+      r.rules.push_back(id.get<std::string>());
+    r.what = j.at("what").get<std::string>();
+    return j.value("expect", json::object());
+  } catch (const std::exception& e) {
+    r.failures.push_back(side.filename().string() + ": " + e.what());
+    return std::nullopt;
+  }
+}
+
+// Returns the pipeline scene at `path`, or nullopt when it cannot be read or is
+// not a pipeline scene (the failure recorded in r).
+std::optional<Scene> read_pipe_scene(const std::filesystem::path& path, CaseReport& r) {
+  bool ok = false;
+  const std::string text = read_text(path, ok);
+  if (!ok) {
+    r.failures.push_back(path.filename().string() + ": cannot be read");
+    return std::nullopt;
+  }
+  auto read = io::read_scene(text);
+  if (auto* e = std::get_if<SceneError>(&read)) {
+    r.failures.push_back("scene: " + e->what());
+    return std::nullopt;
+  }
+  if (!has_pipeline_state(std::get<Scene>(read))) {
+    r.failures.push_back("scene: not a pipeline scene (SCENE.PIPELINE)");
+    return std::nullopt;
+  }
+  return std::get<Scene>(std::move(read));
+}
+
+// Returns the counts of res that the expectations compare with.
+Tally tally(const Scene& s, const kp::PipeResult& res) {
+  const kp::DepthFormat fmt = s.depth ? s.depth->format : kp::DepthFormat::kD24;
+  Tally t;
+  for (std::size_t i = 0; i < res.fragments.size(); ++i) {
+    const Fragment& f = res.fragments[i];
+    ++t.per_prim[f.prim];
+    const bool has_data = !res.data.empty();
+    const std::uint32_t passed = has_data ? res.data[i].passed : f.mask;
+    if (passed != 0)
+      ++t.passed_per_prim[f.prim];
+    if (s.depth && passed == 0 && !f.helper)
+      ++t.killed_per_prim[f.prim];
+    if (has_data && res.data[i].part)
+      t.parts.insert(*res.data[i].part);
+    if (has_data)
+      for (const auto& z : res.data[i].depth)
+        t.depths.insert(stored_as_double(z, fmt));
+  }
+  return t;
+}
+
+// Returns an object from primitive index to count as a map, sorted by primitive. Throws on bad
+// JSON.
+Counts count_map(const json& j) {
+  Counts m;
+  for (const auto& [k, v] : j.items())
+    m[static_cast<std::uint32_t>(std::stoul(k))] = v.get<std::size_t>();
+  return m;
+}
+
+// Records in `failures` each primitive whose count in `got` differs from expect[key], when the
+// sidecar has that key. Throws on bad JSON.
+void compare_counts(const json& expect, const char* key, const Counts& got,
+                    std::vector<std::string>& failures) {
+  if (!expect.contains(key))
+    return;
+  for (const auto& [prim, want] : count_map(expect.at(key))) {
+    const auto it = got.find(prim);
+    const std::size_t have = it == got.end() ? 0 : it->second;
+    if (have != want)
+      failures.push_back(std::string(key) + "[" + std::to_string(prim) + "]: expected " +
+                         std::to_string(want) + ", got " + std::to_string(have));
+  }
+}
+
+// Records in `failures` each stored depth that is not as expect's depth_values
+// and depth_range say. Throws on bad JSON.
+void compare_depths(const json& expect, const std::set<double>& depths,
+                    std::vector<std::string>& failures) {
+  if (expect.contains("depth_values")) {
+    const auto want = expect.at("depth_values").get<std::set<double>>();
+    if (want != depths) {
+      std::string got;
+      for (const double z : depths)
+        got += " " + std::to_string(z);
+      failures.push_back("depth_values: not the expected set; got" + got);
+    }
+  }
+  if (expect.contains("depth_range")) {
+    const auto range = expect.at("depth_range").get<std::array<double, 2>>();
+    if (!depths.empty() && (*depths.begin() < range[0] || *depths.rbegin() > range[1]))
+      failures.push_back("depth_range: a stored depth lies outside [" + std::to_string(range[0]) +
+                         ", " + std::to_string(range[1]) + "]");
+  }
+}
+
+// Records in `failures` each attribute of expect's attr_range that is unknown
+// or that some fragment interpolates outside its range (the first such value).
+// Throws on bad JSON.
+void compare_attr_ranges(const json& expect, const Scene& s, const kp::PipeResult& res,
+                         std::vector<std::string>& failures) {
+  if (!expect.contains("attr_range"))
+    return;
+  for (const auto& [name, range_j] : expect.at("attr_range").items()) {
+    const auto range = range_j.get<std::array<double, 2>>();
+    std::size_t a = 0;
+    while (a < s.attributes.size() && s.attributes[a].name != name)
+      ++a;
+    if (a == s.attributes.size()) {
+      failures.push_back("attr_range: no attribute " + name);
+      continue;
+    }
+    for (const auto& d : res.data)
+      if (a < d.attr.size() && (d.attr[a] < range[0] || d.attr[a] > range[1])) {
+        failures.push_back("attr_range: " + name + " = " + std::to_string(d.attr[a]) +
+                           " outside the range");
+        break;
+      }
+  }
+}
+
+// Records in `failures` every expectation of the sidecar that res does not
+// meet, and every key the sidecar names that is not an expectation. Throws on
+// bad JSON.
+void compare_expectations(const json& expect, const Scene& s, const kp::PipeResult& res,
+                          std::vector<std::string>& failures) {
+  const Tally t = tally(s, res);
+  if (expect.contains("fragments") &&
+      expect.at("fragments").get<std::size_t>() != res.fragments.size())
+    failures.push_back("fragments: expected " +
+                       std::to_string(expect.at("fragments").get<std::size_t>()) + ", got " +
+                       std::to_string(res.fragments.size()));
+  compare_counts(expect, "fragments_per_prim", t.per_prim, failures);
+  compare_counts(expect, "passed_per_prim", t.passed_per_prim, failures);
+  compare_counts(expect, "killed_per_prim", t.killed_per_prim, failures);
+  if (expect.contains("parts")) {
+    const auto want = expect.at("parts").get<std::set<std::uint32_t>>();
+    if (want != t.parts)
+      failures.push_back("parts: not the expected set");
+  }
+  compare_depths(expect, t.depths, failures);
+  compare_attr_ranges(expect, s, res, failures);
+  if (expect.contains("hiz_rejected_at_least") &&
+      res.stats.hiz_rejected < expect.at("hiz_rejected_at_least").get<std::uint64_t>())
+    failures.push_back("hiz_rejected_at_least: Hi-Z rejected " +
+                       std::to_string(res.stats.hiz_rejected));
+  static const std::set<std::string> known = {
+      "fragments",    "fragments_per_prim", "passed_per_prim", "killed_per_prim",      "parts",
+      "depth_values", "depth_range",        "attr_range",      "hiz_rejected_at_least"};
+  for (const auto& [key, v] : expect.items()) {
+    if (!known.contains(key))
+      failures.push_back("expect." + key + ": unknown expectation");
+    (void)v;
+  }
+}
+
 } // namespace
 
 std::vector<std::filesystem::path> catalog(const std::filesystem::path& dir) {
@@ -54,49 +233,20 @@ std::vector<std::filesystem::path> catalog(const std::filesystem::path& dir) {
 CaseReport check_case(const std::filesystem::path& scene_path) {
   CaseReport r;
   r.name = scene_path.stem().string();
-  const auto fail = [&](const std::string& m) { r.failures.push_back(m); };
-
-  // The sidecar.
   std::filesystem::path side = scene_path;
   side.replace_extension(".expect.json");
-  bool ok = false;
-  const std::string side_text = read_text(side, ok);
-  json expect;
-  if (!ok) {
-    fail(side.filename().string() + ": missing");
+  const std::optional<json> expect = read_sidecar(side, r);
+  if (!expect)
     return r;
-  }
-  try {
-    const json j = json::parse(side_text);
-    for (const auto& id : j.at("rules"))
-      r.rules.push_back(id.get<std::string>());
-    r.what = j.at("what").get<std::string>();
-    expect = j.value("expect", json::object());
-  } catch (const std::exception& e) {
-    fail(side.filename().string() + ": " + e.what());
-    return r;
-  }
 
   // The scene, through the pipeline with every optimization and with none.
-  const std::string text = read_text(scene_path, ok);
-  if (!ok) {
-    fail(scene_path.filename().string() + ": cannot be read");
+  const std::optional<Scene> s = read_pipe_scene(scene_path, r);
+  if (!s)
     return r;
-  }
-  auto read = io::read_scene(text);
-  if (auto* e = std::get_if<SceneError>(&read)) {
-    fail("scene: " + e->what());
-    return r;
-  }
-  if (!has_pipeline_state(std::get<Scene>(read))) {
-    fail("scene: not a pipeline scene (SCENE.PIPELINE)");
-    return r;
-  }
-  const Scene& s = std::get<Scene>(read);
-  auto fast_or = kp::run_pipeline(s);
-  auto plain_or = kp::run_pipeline(s, kp::PipeOptions::plain());
+  auto fast_or = kp::run_pipeline(*s);
+  auto plain_or = kp::run_pipeline(*s, kp::PipeOptions::plain());
   if (auto* e = std::get_if<SceneError>(&fast_or)) {
-    fail("run_pipeline: " + e->what());
+    r.failures.push_back("run_pipeline: " + e->what());
     return r;
   }
   const kp::PipeResult& res = std::get<kp::PipeResult>(fast_or);
@@ -105,112 +255,21 @@ CaseReport check_case(const std::filesystem::path& scene_path) {
   // rule: PIPE.OPT.TILES, PIPE.OPT.HIZ, PIPE.OPT.EARLY_Z, PIPE.OPT.FAST_CLEAR
   if (res.fragments != plain.fragments || res.data != plain.data ||
       res.depth_buffer != plain.depth_buffer)
-    fail("the optimized result differs from the plain path (PIPE.OPT.*)");
+    r.failures.push_back("the optimized result differs from the plain path (PIPE.OPT.*)");
 
   // Invariants and the oracle, fragment by fragment (check/).
-  const kp::DepthFormat fmt = s.depth ? s.depth->format : kp::DepthFormat::kD24;
   const check::Mismatches values =
-      check::check_pipeline_values(s, res, check::CheckOptions{8}, &r.oracle_checks);
+      check::check_pipeline_values(*s, res, check::CheckOptions{8}, &r.oracle_checks);
   for (const std::string& m : values.mismatches)
-    fail(m);
+    r.failures.push_back(m);
   if (values.count > 8)
-    fail("... and " + std::to_string(values.count - 8) + " more");
+    r.failures.push_back("... and " + std::to_string(values.count - 8) + " more");
 
   // The sidecar's expectations.
   try {
-    std::map<std::uint32_t, std::size_t> per_prim, passed_per_prim, killed_per_prim;
-    std::set<std::uint32_t> parts;
-    std::set<double> depths;
-    for (std::size_t i = 0; i < res.fragments.size(); ++i) {
-      const Fragment& f = res.fragments[i];
-      ++per_prim[f.prim];
-      const bool has_data = !res.data.empty();
-      const std::uint32_t passed = has_data ? res.data[i].passed : f.mask;
-      if (passed != 0)
-        ++passed_per_prim[f.prim];
-      if (s.depth && passed == 0 && !f.helper)
-        ++killed_per_prim[f.prim];
-      if (has_data && res.data[i].part)
-        parts.insert(*res.data[i].part);
-      if (has_data)
-        for (const auto& z : res.data[i].depth)
-          depths.insert(stored_as_double(z, fmt));
-    }
-    const auto count_map = [](const json& j) {
-      std::map<std::uint32_t, std::size_t> m;
-      for (const auto& [k, v] : j.items())
-        m[static_cast<std::uint32_t>(std::stoul(k))] = v.get<std::size_t>();
-      return m;
-    };
-    const auto compare_counts = [&](const char* key,
-                                    const std::map<std::uint32_t, std::size_t>& got) {
-      if (!expect.contains(key))
-        return;
-      for (const auto& [prim, want] : count_map(expect.at(key))) {
-        const auto it = got.find(prim);
-        const std::size_t have = it == got.end() ? 0 : it->second;
-        if (have != want)
-          fail(std::string(key) + "[" + std::to_string(prim) + "]: expected " +
-               std::to_string(want) + ", got " + std::to_string(have));
-      }
-    };
-    if (expect.contains("fragments") &&
-        expect.at("fragments").get<std::size_t>() != res.fragments.size())
-      fail("fragments: expected " + std::to_string(expect.at("fragments").get<std::size_t>()) +
-           ", got " + std::to_string(res.fragments.size()));
-    compare_counts("fragments_per_prim", per_prim);
-    compare_counts("passed_per_prim", passed_per_prim);
-    compare_counts("killed_per_prim", killed_per_prim);
-    if (expect.contains("parts")) {
-      const auto want = expect.at("parts").get<std::set<std::uint32_t>>();
-      if (want != parts)
-        fail("parts: not the expected set");
-    }
-    if (expect.contains("depth_values")) {
-      const auto want = expect.at("depth_values").get<std::set<double>>();
-      if (want != depths) {
-        std::string got;
-        for (const double z : depths)
-          got += " " + std::to_string(z);
-        fail("depth_values: not the expected set; got" + got);
-      }
-    }
-    if (expect.contains("depth_range")) {
-      const auto range = expect.at("depth_range").get<std::array<double, 2>>();
-      if (!depths.empty() && (*depths.begin() < range[0] || *depths.rbegin() > range[1]))
-        fail("depth_range: a stored depth lies outside [" + std::to_string(range[0]) + ", " +
-             std::to_string(range[1]) + "]");
-    }
-    if (expect.contains("attr_range")) {
-      for (const auto& [name, range_j] : expect.at("attr_range").items()) {
-        const auto range = range_j.get<std::array<double, 2>>();
-        std::size_t a = 0;
-        while (a < s.attributes.size() && s.attributes[a].name != name)
-          ++a;
-        if (a == s.attributes.size()) {
-          fail("attr_range: no attribute " + name);
-          continue;
-        }
-        for (const auto& d : res.data)
-          if (a < d.attr.size() && (d.attr[a] < range[0] || d.attr[a] > range[1])) {
-            fail("attr_range: " + name + " = " + std::to_string(d.attr[a]) + " outside the range");
-            break;
-          }
-      }
-    }
-    if (expect.contains("hiz_rejected_at_least") &&
-        res.stats.hiz_rejected < expect.at("hiz_rejected_at_least").get<std::uint64_t>())
-      fail("hiz_rejected_at_least: Hi-Z rejected " + std::to_string(res.stats.hiz_rejected));
-    for (const auto& [key, v] : expect.items()) {
-      static const std::set<std::string> known = {
-          "fragments",    "fragments_per_prim", "passed_per_prim", "killed_per_prim",      "parts",
-          "depth_values", "depth_range",        "attr_range",      "hiz_rejected_at_least"};
-      if (!known.contains(key))
-        fail("expect." + key + ": unknown expectation");
-      (void)v;
-    }
+    compare_expectations(*expect, *s, res, r.failures);
   } catch (const std::exception& e) {
-    fail(side.filename().string() + ": " + e.what());
+    r.failures.push_back(side.filename().string() + ": " + e.what());
   }
   return r;
 }
