@@ -179,11 +179,35 @@ Rgb edge_colour(std::uint32_t prim) {
   return Rgb{mix(c.r, 0, 75), mix(c.g, 0, 75), mix(c.b, 0, 75)};
 }
 
-Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int scale) {
-  const int s = scale;
-  Image img(scene.width * s + 1, scene.height * s + 1, kBackground);
+namespace {
 
-  // Covered pixels: the primitive's colour; overlaps: light red with a red hatch and border.
+// Whether a picture at scale s shows sample points rather than pixel centres.
+bool shows_samples(const CoverageMap& coverage, int s) {
+  return coverage.has_samples() && s >= kMinSampleScale;
+}
+
+// Draws an overlapping pixel with top-left image corner (x0, y0): light red with a red hatch
+// and border (all red below 4 image pixels per pixel).
+void draw_overlap_pixel(Image& img, int x0, int y0, int s) {
+  img.fill_rect(x0, y0, x0 + s + 1, y0 + s + 1, kOverlapColour);
+  if (s < 4) {
+    img.fill_rect(x0, y0, x0 + s + 1, y0 + s + 1, kOverlapMark);
+    return;
+  }
+  const int border = std::max(1, s / 16);
+  for (int y = 0; y <= s; ++y) {
+    for (int x = 0; x <= s; ++x) {
+      const bool edge =
+          x < border + 1 || y < border + 1 || x > s - border - 1 || y > s - border - 1;
+      if (edge || (x + y) % 6 < 2)
+        img.set(x0 + x, y0 + y, kOverlapMark);
+    }
+  }
+}
+
+// Draws covered pixels in the primitive's colour, antialiased ones in their blend, and
+// overlaps as draw_overlap_pixel does.
+void draw_coverage(Image& img, const PreparedScene& scene, const CoverageMap& coverage, int s) {
   for (std::int32_t j = 0; j < scene.height; ++j) {
     for (std::int32_t i = 0; i < scene.width; ++i) {
       const std::uint32_t n = coverage.count(i, j);
@@ -200,38 +224,26 @@ Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int 
       }
       // Multisampled: primitives sharing a pixel on different samples is no overlap; the
       // sample points show who covers what. Only a sample covered twice is hatched.
-      if (coverage.has_samples() && s >= kMinSampleScale && !coverage.sample_overlap(i, j)) {
+      if (shows_samples(coverage, s) && !coverage.sample_overlap(i, j)) {
         img.fill_rect(x0, y0, x0 + s + 1, y0 + s + 1, kSharedPixel);
         continue;
       }
-      img.fill_rect(x0, y0, x0 + s + 1, y0 + s + 1, kOverlapColour);
-      if (s < 4) {
-        img.fill_rect(x0, y0, x0 + s + 1, y0 + s + 1, kOverlapMark);
-        continue;
-      }
-      const int border = std::max(1, s / 16);
-      for (int y = 0; y <= s; ++y) {
-        for (int x = 0; x <= s; ++x) {
-          const bool edge =
-              x < border + 1 || y < border + 1 || x > s - border - 1 || y > s - border - 1;
-          if (edge || (x + y) % 6 < 2)
-            img.set(x0 + x, y0 + y, kOverlapMark);
-        }
-      }
+      draw_overlap_pixel(img, x0, y0, s);
     }
   }
+}
 
-  // Pixel grid.
+// Draws the pixel grid (from 3 image pixels per pixel) and the pixel centres as small crosses
+// (COORD.PIXEL.CENTER; from 6, and not where the picture shows sample points instead).
+void draw_grid_and_centres(Image& img, const PreparedScene& scene, const CoverageMap& coverage,
+                           int s) {
   if (s >= 3) {
     for (std::int32_t i = 0; i <= scene.width; ++i)
       img.fill_rect(i * s, 0, i * s + 1, img.height(), kGrid);
     for (std::int32_t j = 0; j <= scene.height; ++j)
       img.fill_rect(0, j * s, img.width(), j * s + 1, kGrid);
   }
-
-  // Pixel centres, as small crosses (COORD.PIXEL.CENTER); multisampled pictures show the
-  // sample points instead.
-  if (s >= 6 && !(coverage.has_samples() && s >= kMinSampleScale)) {
+  if (s >= 6 && !shows_samples(coverage, s)) {
     const int arm = std::max(1, s / 10);
     for (std::int32_t j = 0; j < scene.height; ++j) {
       for (std::int32_t i = 0; i < scene.width; ++i) {
@@ -243,91 +255,109 @@ Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int 
       }
     }
   }
+}
 
-  // Edges at their snapped positions: solid for drawn primitives, dashed grey for culled and
-  // degenerate ones; a point's square outline; a line's segments (and a quadrilateral line's
-  // two triangles). Then the vertices.
-  auto segment = [&](Vec2 a, Vec2 b, Rgb c, int dash) {
-    img.line(to_image(a.x.raw(), s), to_image(a.y.raw(), s), to_image(b.x.raw(), s),
-             to_image(b.y.raw(), s), c, dash);
-  };
-  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
-    const PreparedPrimitive& prim = scene.primitives[p];
-    const Rgb colour = edge_colour(static_cast<std::uint32_t>(p));
-    if (prim.type == PrimitiveType::kPoint) {
-      const Vec2 c = prim.v[0];
-      auto corner = [&](std::int32_t dx, std::int32_t dy) {
-        return Vec2{Subpixel::from_raw(c.x.raw() + dx), Subpixel::from_raw(c.y.raw() + dy)};
-      };
-      const std::int32_t h = kSubpixelHalf;
-      const std::array<Vec2, 4> sq = {corner(-h, -h), corner(h, -h), corner(h, h), corner(-h, h)};
-      for (std::size_t e = 0; e < 4; ++e)
-        segment(sq[e], sq[(e + 1) % 4], colour, 0);
-      continue;
-    }
-    for (const PreparedTriangle& pt : prim.triangles) {
-      const TriangleSetup& t = pt.setup;
-      const bool drawn = t.status == TriangleStatus::kRasterized;
-      const Rgb c = drawn ? colour : kInactiveEdge;
-      const bool quad = prim.type != PrimitiveType::kTriangle;
-      for (std::size_t e = 0; e < 3; ++e) {
-        segment(t.snapped[e], t.snapped[(e + 1) % 3], c, drawn && !quad ? 0 : 3);
-      }
-    }
-    if (prim.type == PrimitiveType::kLine || prim.type == PrimitiveType::kLineStrip) {
-      for (std::size_t i = 0; i + 1 < prim.v.size(); ++i)
-        segment(prim.v[i], prim.v[i + 1], colour, 0);
+// Draws the segment a-b at scale s, dashed when dash > 0.
+void draw_segment(Image& img, Vec2 a, Vec2 b, Rgb c, int dash, int s) {
+  img.line(to_image(a.x.raw(), s), to_image(a.y.raw(), s), to_image(b.x.raw(), s),
+           to_image(b.y.raw(), s), c, dash);
+}
+
+// Draws the edges of primitive p at their snapped positions: solid for drawn primitives,
+// dashed grey for culled and degenerate ones; a point's square outline; a line's segments
+// (and a quadrilateral line's two triangles).
+void draw_edges(Image& img, const PreparedPrimitive& prim, std::uint32_t p, int s) {
+  const Rgb colour = edge_colour(p);
+  if (prim.type == PrimitiveType::kPoint) {
+    const Vec2 c = prim.v[0];
+    auto corner = [&](std::int32_t dx, std::int32_t dy) {
+      return Vec2{Subpixel::from_raw(c.x.raw() + dx), Subpixel::from_raw(c.y.raw() + dy)};
+    };
+    const std::int32_t h = kSubpixelHalf;
+    const std::array<Vec2, 4> sq = {corner(-h, -h), corner(h, -h), corner(h, h), corner(-h, h)};
+    for (std::size_t e = 0; e < 4; ++e)
+      draw_segment(img, sq[e], sq[(e + 1) % 4], colour, 0, s);
+    return;
+  }
+  for (const PreparedTriangle& pt : prim.triangles) {
+    const TriangleSetup& t = pt.setup;
+    const bool drawn = t.status == TriangleStatus::kRasterized;
+    const Rgb c = drawn ? colour : kInactiveEdge;
+    const bool quad = prim.type != PrimitiveType::kTriangle;
+    for (std::size_t e = 0; e < 3; ++e) {
+      draw_segment(img, t.snapped[e], t.snapped[(e + 1) % 3], c, drawn && !quad ? 0 : 3, s);
     }
   }
-  // rule: SCENE.OUTPUT.MSAA
-  // Multisampled: helper lanes outlined dashed, every sample point hollow, covered samples
-  // filled in their primitive's colour, the centroid as a small cross.
-  if (coverage.has_samples() && s >= kMinSampleScale) {
-    const std::uint32_t n = std::min(coverage_sample_count(scene), coverage.sample_count());
-    const int sr = std::max(2, s / 14);
-    for (std::int32_t j = 0; j < scene.height; ++j) {
-      for (std::int32_t i = 0; i < scene.width; ++i) {
-        const int x0 = i * s, y0 = j * s;
-        if (coverage.helper(i, j)) {
-          const int m = std::max(2, s / 10);
-          const double a = x0 + m, b = y0 + m, c = x0 + s - m, d = y0 + s - m;
-          img.line(a, b, c, b, kHelperMark, 3);
-          img.line(c, b, c, d, kHelperMark, 3);
-          img.line(c, d, a, d, kHelperMark, 3);
-          img.line(a, d, a, b, kHelperMark, 3);
-        }
-        for (std::uint32_t k = 0; k < n; ++k) {
-          const SampleOffset o = scene.msaa.pattern.positions[k];
-          const int cx = x0 + s / 2 + (o.x * s) / 16, cy = y0 + s / 2 + (o.y * s) / 16;
-          const std::uint32_t owner = coverage.sample_owner(i, j, k);
-          if (owner != 0)
-            img.disc(cx, cy, sr, edge_colour(owner - 1), true);
-          img.disc(cx, cy, sr, kSampleMark, false);
-        }
-        if (const std::optional<SampleOffset> c = coverage.centroid(i, j)) {
-          const int cx = x0 + s / 2 + (c->x * s) / 16, cy = y0 + s / 2 + (c->y * s) / 16;
-          const int arm = sr + 1;
-          img.fill_rect(cx - arm, cy, cx + arm + 1, cy + 1, kCentroidMark);
-          img.fill_rect(cx, cy - arm, cx + 1, cy + arm + 1, kCentroidMark);
-        }
-      }
-    }
+  if (prim.type == PrimitiveType::kLine || prim.type == PrimitiveType::kLineStrip) {
+    for (std::size_t i = 0; i + 1 < prim.v.size(); ++i)
+      draw_segment(img, prim.v[i], prim.v[i + 1], colour, 0, s);
   }
+}
 
+// Draws pixel (i, j)'s multisampling marks: a helper lane outlined dashed, its first n sample
+// points hollow, covered samples filled in their primitive's colour, the centroid as a small
+// cross.
+// rule: SCENE.OUTPUT.MSAA
+void draw_pixel_samples(Image& img, const PreparedScene& scene, const CoverageMap& coverage,
+                        std::int32_t i, std::int32_t j, std::uint32_t n, int s) {
+  const int sr = std::max(2, s / 14);
+  const int x0 = i * s, y0 = j * s;
+  if (coverage.helper(i, j)) {
+    const int m = std::max(2, s / 10);
+    const double a = x0 + m, b = y0 + m, c = x0 + s - m, d = y0 + s - m;
+    img.line(a, b, c, b, kHelperMark, 3);
+    img.line(c, b, c, d, kHelperMark, 3);
+    img.line(c, d, a, d, kHelperMark, 3);
+    img.line(a, d, a, b, kHelperMark, 3);
+  }
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const SampleOffset o = scene.msaa.pattern.positions[k];
+    const int cx = x0 + s / 2 + (o.x * s) / 16, cy = y0 + s / 2 + (o.y * s) / 16;
+    const std::uint32_t owner = coverage.sample_owner(i, j, k);
+    if (owner != 0)
+      img.disc(cx, cy, sr, edge_colour(owner - 1), true);
+    img.disc(cx, cy, sr, kSampleMark, false);
+  }
+  if (const std::optional<SampleOffset> c = coverage.centroid(i, j)) {
+    const int cx = x0 + s / 2 + (c->x * s) / 16, cy = y0 + s / 2 + (c->y * s) / 16;
+    const int arm = sr + 1;
+    img.fill_rect(cx - arm, cy, cx + arm + 1, cy + 1, kCentroidMark);
+    img.fill_rect(cx, cy - arm, cx + 1, cy + arm + 1, kCentroidMark);
+  }
+}
+
+// Draws primitive p's vertices as small squares, grey for a culled or degenerate triangle.
+void draw_vertices(Image& img, const PreparedPrimitive& prim, std::uint32_t p, int s) {
   const int r = std::max(1, s / 16);
-  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
-    const PreparedPrimitive& prim = scene.primitives[p];
-    const bool inactive = prim.type == PrimitiveType::kTriangle &&
-                          prim.triangles[0].setup.status != TriangleStatus::kRasterized;
-    const Rgb c = inactive ? kInactiveEdge : edge_colour(static_cast<std::uint32_t>(p));
-    for (const Vec2& v : prim.v) {
-      const double x = to_image(v.x.raw(), s), y = to_image(v.y.raw(), s);
-      if (x < -r || y < -r || x > img.width() + r || y > img.height() + r)
-        continue;
-      const int xi = static_cast<int>(x + 0.5), yi = static_cast<int>(y + 0.5);
-      img.fill_rect(xi - r, yi - r, xi + r + 1, yi + r + 1, c);
-    }
+  const bool inactive = prim.type == PrimitiveType::kTriangle &&
+                        prim.triangles[0].setup.status != TriangleStatus::kRasterized;
+  const Rgb c = inactive ? kInactiveEdge : edge_colour(p);
+  for (const Vec2& v : prim.v) {
+    const double x = to_image(v.x.raw(), s), y = to_image(v.y.raw(), s);
+    if (x < -r || y < -r || x > img.width() + r || y > img.height() + r)
+      continue;
+    const int xi = static_cast<int>(x + 0.5), yi = static_cast<int>(y + 0.5);
+    img.fill_rect(xi - r, yi - r, xi + r + 1, yi + r + 1, c);
   }
+}
+
+} // namespace
+
+Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int scale) {
+  const int s = scale;
+  Image img(scene.width * s + 1, scene.height * s + 1, kBackground);
+  draw_coverage(img, scene, coverage, s);
+  draw_grid_and_centres(img, scene, coverage, s);
+  for (std::size_t p = 0; p < scene.primitives.size(); ++p)
+    draw_edges(img, scene.primitives[p], static_cast<std::uint32_t>(p), s);
+  if (shows_samples(coverage, s)) {
+    const std::uint32_t n = std::min(coverage_sample_count(scene), coverage.sample_count());
+    for (std::int32_t j = 0; j < scene.height; ++j)
+      for (std::int32_t i = 0; i < scene.width; ++i)
+        draw_pixel_samples(img, scene, coverage, i, j, n, s);
+  }
+  for (std::size_t p = 0; p < scene.primitives.size(); ++p)
+    draw_vertices(img, scene.primitives[p], static_cast<std::uint32_t>(p), s);
   return img;
 }
 
