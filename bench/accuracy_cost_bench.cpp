@@ -23,6 +23,31 @@
 
 namespace {
 
+// Returns a random coordinate in pixels from coord (in 1/256 px), moved to the pixel centre
+// when on_centre (the ties a quarter of every scene's primitives have).
+float grid_coord(std::mt19937& rng, std::uniform_int_distribution<int>& coord, bool on_centre) {
+  int raw = coord(rng);
+  if (on_centre)
+    raw = (raw / 256) * 256 + 128;
+  return static_cast<float>(raw) / 256.0f;
+}
+
+// Runs count() once per benchmark iteration and reports its last result as the "fragments"
+// counter.
+template <class Count> void measure_fragments(benchmark::State& st, Count count) {
+  std::size_t n = 0;
+  for (auto _ : st) {
+    n = count();
+    benchmark::DoNotOptimize(n);
+  }
+  st.counters["fragments"] = static_cast<double>(n);
+}
+
+// Returns the number of fragments the kernel's scene path draws for scene.
+std::size_t kernel_fragments(const rastrules::Scene& scene) {
+  return std::get<std::vector<rastrules::Fragment>>(rastrules::render(scene)).size();
+}
+
 // A deterministic scene: n triangles with vertices on the 1/256 grid, a quarter of them with
 // vertices on pixel centres (ties), inside a size x size target with a margin outside it.
 rastrules::Scene make_scene(std::int32_t size, int n, std::uint32_t seed) {
@@ -34,12 +59,8 @@ rastrules::Scene make_scene(std::int32_t size, int n, std::uint32_t seed) {
   for (int i = 0; i < n; ++i) {
     rastrules::Primitive p;
     for (auto& v : p.v) {
-      for (auto& c : v) {
-        int raw = coord(rng);
-        if (i % 4 == 0)
-          raw = (raw / 256) * 256 + 128;
-        c = static_cast<float>(raw) / 256.0f;
-      }
+      for (auto& c : v)
+        c = grid_coord(rng, coord, i % 4 == 0);
     }
     s.primitives.push_back(p);
   }
@@ -57,22 +78,15 @@ rastrules::oracle::Scene to_oracle(const rastrules::Scene& s) {
 
 void BM_KernelRender(benchmark::State& st) {
   const auto scene = make_scene(static_cast<std::int32_t>(st.range(0)), 16, 1);
-  std::size_t n = 0;
-  for (auto _ : st) {
-    auto r = rastrules::render(scene);
-    n = std::get<std::vector<rastrules::Fragment>>(r).size();
-    benchmark::DoNotOptimize(n);
-  }
-  st.counters["fragments"] = static_cast<double>(n);
+  measure_fragments(st, [&] { return kernel_fragments(scene); });
 }
 
 // The same coverage decided per pixel with the layer-2 rule (covers()), no stepping, no bias.
 void BM_KernelDirectCovers(benchmark::State& st) {
   const auto scene = make_scene(static_cast<std::int32_t>(st.range(0)), 16, 1);
   const auto prepared = std::get<rastrules::PreparedScene>(rastrules::prepare(scene));
-  std::size_t n = 0;
-  for (auto _ : st) {
-    n = 0;
+  measure_fragments(st, [&] {
+    std::size_t n = 0;
     for (const auto& prim : prepared.primitives) {
       const auto& t = prim.triangles[0].setup;
       const auto r = rastrules::raster::pixel_bounds(t, prepared.width, prepared.height);
@@ -80,19 +94,13 @@ void BM_KernelDirectCovers(benchmark::State& st) {
         for (std::int32_t x = r.x0; x <= r.x1; ++x)
           n += rastrules::covers(t, rastrules::pixel_center(x, y)) ? 1u : 0u;
     }
-    benchmark::DoNotOptimize(n);
-  }
-  st.counters["fragments"] = static_cast<double>(n);
+    return n;
+  });
 }
 
 void BM_OracleRender(benchmark::State& st) {
   const auto scene = to_oracle(make_scene(static_cast<std::int32_t>(st.range(0)), 16, 1));
-  std::size_t n = 0;
-  for (auto _ : st) {
-    n = rastrules::oracle::render(scene).size();
-    benchmark::DoNotOptimize(n);
-  }
-  st.counters["fragments"] = static_cast<double>(n);
+  measure_fragments(st, [&] { return rastrules::oracle::render(scene).size(); });
 }
 
 // n points or n aliased lines (D3D) with positions on the 1/256 grid inside a size x size
@@ -110,12 +118,8 @@ rastrules::Scene make_point_or_line_scene(std::int32_t size, int n, rastrules::P
     p.type = type;
     p.v.assign(count, {0.0f, 0.0f});
     for (auto& v : p.v) {
-      for (auto& c : v) {
-        int raw = coord(rng);
-        if (i % 4 == 0)
-          raw = (raw / 256) * 256 + 128;
-        c = static_cast<float>(raw) / 256.0f;
-      }
+      for (auto& c : v)
+        c = grid_coord(rng, coord, i % 4 == 0);
     }
     s.primitives.push_back(p);
   }
@@ -129,12 +133,7 @@ std::array<std::int64_t, 2> raw_of(const rastrules::FloatPoint& v) {
 void BM_KernelPoints(benchmark::State& st) {
   const auto scene = make_point_or_line_scene(static_cast<std::int32_t>(st.range(0)), 64,
                                               rastrules::PrimitiveType::kPoint, 2);
-  std::size_t n = 0;
-  for (auto _ : st) {
-    n = std::get<std::vector<rastrules::Fragment>>(rastrules::render(scene)).size();
-    benchmark::DoNotOptimize(n);
-  }
-  st.counters["fragments"] = static_cast<double>(n);
+  measure_fragments(st, [&] { return kernel_fragments(scene); });
 }
 
 // The point oracle decides each pixel of the 3x3 block around the point (a point's square
@@ -142,9 +141,8 @@ void BM_KernelPoints(benchmark::State& st) {
 void BM_OraclePoints(benchmark::State& st) {
   const auto size = static_cast<std::int32_t>(st.range(0));
   const auto scene = make_point_or_line_scene(size, 64, rastrules::PrimitiveType::kPoint, 2);
-  std::size_t n = 0;
-  for (auto _ : st) {
-    n = 0;
+  measure_fragments(st, [&] {
+    std::size_t n = 0;
     for (const auto& p : scene.primitives) {
       const auto c = raw_of(p.v[0]);
       const std::int64_t px = c[0] >> 8, py = c[1] >> 8;
@@ -157,35 +155,27 @@ void BM_OraclePoints(benchmark::State& st) {
         }
       }
     }
-    benchmark::DoNotOptimize(n);
-  }
-  st.counters["fragments"] = static_cast<double>(n);
+    return n;
+  });
 }
 
 void BM_KernelLines(benchmark::State& st) {
   const auto scene = make_point_or_line_scene(static_cast<std::int32_t>(st.range(0)), 16,
                                               rastrules::PrimitiveType::kLine, 3);
-  std::size_t n = 0;
-  for (auto _ : st) {
-    n = std::get<std::vector<rastrules::Fragment>>(rastrules::render(scene)).size();
-    benchmark::DoNotOptimize(n);
-  }
-  st.counters["fragments"] = static_cast<double>(n);
+  measure_fragments(st, [&] { return kernel_fragments(scene); });
 }
 
 void BM_OracleLines(benchmark::State& st) {
   const auto size = static_cast<std::int32_t>(st.range(0));
   const auto scene = make_point_or_line_scene(size, 16, rastrules::PrimitiveType::kLine, 3);
-  std::size_t n = 0;
-  for (auto _ : st) {
-    n = 0;
+  measure_fragments(st, [&] {
+    std::size_t n = 0;
     for (const auto& p : scene.primitives) {
       n += rastrules::oracle::aliased_line_pixels(raw_of(p.v[0]), raw_of(p.v[1]), "d3d", size, size)
                .size();
     }
-    benchmark::DoNotOptimize(n);
-  }
-  st.counters["fragments"] = static_cast<double>(n);
+    return n;
+  });
 }
 
 BENCHMARK(BM_KernelPoints)->Arg(16)->Arg(64)->Unit(benchmark::kMicrosecond);
