@@ -229,27 +229,31 @@ Plot make_plot(const LadderReport& r) {
         return true;
     return false;
   };
-  std::size_t k = 0;
-  for (const RungResult& rr : r.rungs) {
-    const auto c = colours[k++ % colours.size()];
+  // Each rung with a medium-scene ratio, at its place in the plot, in its colour (the colour
+  // follows the rung's index, so it does not change when another rung has no point).
+  struct Marker {
+    const RungResult* rung;
+    int x, y;
+    std::array<std::uint8_t, 3> colour;
+  };
+  std::vector<Marker> markers;
+  for (std::size_t k = 0; k < r.rungs.size(); ++k) {
+    const RungResult& rr = r.rungs[k];
     const double v = rr.medium_ratio();
     if (v <= 0)
       continue;
     // limit has no error figure: drawn on the "0" column.
     const double err = has_coverage(rr.rung) ? rr.error_fraction() : 0.0;
-    const int x = map_x(err), y = map_y(v);
-    cv.rect(x - 5, y - 5, x + 6, y + 6, c);
-    placed.push_back({x - 5, y - 5, x + 6, y + 6});
+    markers.push_back({&rr, map_x(err), map_y(v), colours[k % colours.size()]});
   }
-  k = 0;
-  for (const RungResult& rr : r.rungs) {
-    const auto c = colours[k++ % colours.size()];
-    const double v = rr.medium_ratio();
-    if (v <= 0)
-      continue;
-    const double err = has_coverage(rr.rung) ? rr.error_fraction() : 0.0;
-    const int x = map_x(err), y = map_y(v);
-    const std::string label(to_string(rr.rung));
+  for (const Marker& m : markers) {
+    cv.rect(m.x - 5, m.y - 5, m.x + 6, m.y + 6, m.colour);
+    placed.push_back({m.x - 5, m.y - 5, m.x + 6, m.y + 6});
+  }
+  for (const Marker& m : markers) {
+    const int x = m.x, y = m.y;
+    const auto c = m.colour;
+    const std::string label(to_string(m.rung->rung));
     const int w = Canvas::text_width(label);
     Box b{x + 12, y - 7, x + 12 + w, y + 7};
     for (int step = 1; overlaps(b) && step < 40; ++step) {
