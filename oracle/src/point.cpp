@@ -2,6 +2,7 @@
 // Exact oracle for points and quadrilateral lines (rastrules/oracle/point.hpp).
 
 #include "rastrules/oracle/point.hpp"
+#include "rastrules/oracle/triangle.hpp"
 
 #include <gmpxx.h>
 
@@ -21,23 +22,6 @@ mpq_class Px(std::int64_t raw) { // raw 16.8 -> exact pixels
   mpq_class q(Z(raw), mpz_class(256));
   q.canonicalize();
   return q;
-}
-
-struct Fill {
-  bool top = true;  // top-* (else bottom-*)
-  bool left = true; // *-left (else *-right)
-};
-
-Fill parse_fill(const std::string& fill) {
-  if (fill == "top-left")
-    return {true, true};
-  if (fill == "top-right")
-    return {true, false};
-  if (fill == "bottom-left")
-    return {false, true};
-  if (fill == "bottom-right")
-    return {false, false};
-  throw std::invalid_argument("oracle: unknown fill convention '" + fill + "'");
 }
 
 // Returns half the line width in pixels (LINE.QUAD.WIDTH).
@@ -82,7 +66,7 @@ bool point_in_range(const Raw2& c) {
 }
 
 bool point_covers(const Raw2& c, const Raw2& s, const std::string& fill) {
-  const Fill f = parse_fill(fill);
+  const FillSides f = parse_fill(fill);
   const mpq_class half(1, 2);
   const mpq_class x = Px(s[0]), y = Px(s[1]);
   const mpq_class l = Px(c[0]) - half, r = Px(c[0]) + half;
@@ -122,7 +106,7 @@ bool quad_line_covers(const Raw2& a, const Raw2& b, const std::string& mode, con
   const std::vector<Raw2> c = quad_line_corners(a, b, mode);
   if (c.empty())
     return false;
-  const Fill f = parse_fill(fill);
+  const FillSides f = parse_fill(fill);
   const mpq_class sx = Px(s[0]), sy = Px(s[1]);
   for (std::size_t i = 0; i < 4; ++i) {
     const Raw2& p = c[i];

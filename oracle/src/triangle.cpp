@@ -63,26 +63,8 @@ EdgeKind classify(const Raw& a, const Raw& b, const Raw& c) {
   return third_x > line_x ? EdgeKind::kLeft : EdgeKind::kRight;
 }
 
-struct Convention {
-  bool top;  // horizontal edges with the interior below are inclusive (else those above)
-  bool left; // other edges with the interior to the right are inclusive (else to the left)
-};
-
 // rule: TRI.FILL.CONVENTION
-Convention parse_fill(const std::string& fill) {
-  if (fill == "top-left")
-    return {true, true};
-  if (fill == "top-right")
-    return {true, false};
-  if (fill == "bottom-left")
-    return {false, true};
-  if (fill == "bottom-right")
-    return {false, false};
-  throw std::invalid_argument("oracle: unknown fill convention '" + fill + "'");
-}
-
-// rule: TRI.FILL.CONVENTION
-bool is_inclusive(EdgeKind k, Convention c) {
+bool is_inclusive(EdgeKind k, FillSides c) {
   switch (k) {
   case EdgeKind::kTop:
     return c.top;
@@ -104,7 +86,7 @@ struct Prepared {
 };
 
 Prepared prepare(const std::array<Raw, 3>& v, const State& state) {
-  const Convention conv = parse_fill(state.fill);
+  const FillSides conv = parse_fill(state.fill);
   Prepared t;
   for (std::size_t i = 0; i < 3; ++i)
     t.p[i] = to_point(v[i]);
@@ -172,6 +154,19 @@ bool covers_prepared(const Prepared& t, const Point& s) {
 }
 
 } // namespace
+
+// rule: TRI.FILL.CONVENTION
+FillSides parse_fill(const std::string& fill) {
+  if (fill == "top-left")
+    return {true, true};
+  if (fill == "top-right")
+    return {true, false};
+  if (fill == "bottom-left")
+    return {false, true};
+  if (fill == "bottom-right")
+    return {false, false};
+  throw std::invalid_argument("oracle: unknown fill convention '" + fill + "'");
+}
 
 // rule: TRI.ORIENT.AREA
 int winding(const std::array<std::array<std::int64_t, 2>, 3>& snapped) {

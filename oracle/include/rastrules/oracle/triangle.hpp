@@ -50,6 +50,17 @@ std::optional<std::int64_t> snap(float v);
 // v * 256 rounded half to even.
 std::int64_t snap_d3d_saturate(float v);
 
+// The two choices of a fill convention (TRI.FILL.CONVENTION).
+struct FillSides {
+  bool top;  // horizontal edges with the interior below are inclusive (else those above)
+  bool left; // other edges with the interior to the right are inclusive (else to the left)
+};
+
+// Returns the sides the fill convention `fill` ("top-left" | "top-right" | "bottom-left" |
+// "bottom-right") makes inclusive. Throws std::invalid_argument for any other string.
+// rule: TRI.FILL.CONVENTION
+FillSides parse_fill(const std::string& fill);
+
 // Returns +1 when the snapped vertices (raw 16.8) run clockwise on screen (y down), -1 when
 // counter-clockwise, 0 when they are collinear or two coincide (TRI.ORIENT.AREA).
 int winding(const std::array<std::array<std::int64_t, 2>, 3>& snapped);
