@@ -29,21 +29,10 @@
 
 int main() {
   using namespace rastrules::proofs;
-  int status = 0;
-  {
-    Domain dom;
-    Prover pr(dom, "fast/batch_small_i32", "FAST.BATCH.SMALL_I32",
-              {"SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE", "FIX.BIAS.FORM"},
-              BatchKernelModel::constants());
-    prove_batch_small_i32<BatchKernelModel>(pr);
-    status |= pr.finish();
-  }
-  {
-    Domain dom;
-    Prover pr(dom, "fast/batch_small_i32 (lane bits)", "FAST.BATCH.SMALL_I32", {},
-              BatchKernelModel::constants());
-    prove_lane_bits<BatchKernelModel>(pr);
-    status |= pr.finish();
-  }
+  int status = run_proof("fast/batch_small_i32", "FAST.BATCH.SMALL_I32",
+                         {"SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE", "FIX.BIAS.FORM"},
+                         BatchKernelModel::constants(), prove_batch_small_i32<BatchKernelModel>);
+  status |= run_proof("fast/batch_small_i32 (lane bits)", "FAST.BATCH.SMALL_I32", {},
+                      BatchKernelModel::constants(), prove_lane_bits<BatchKernelModel>);
   return status;
 }

@@ -23,10 +23,9 @@ int main() {
   using namespace rastrules::proofs;
   if (!snap_model_matches_kernel())
     return 1;
-  Domain dom;
-  Prover pr(dom, "fast/batch_snap_simd", "FAST.BATCH.SNAP_SIMD",
-            {"SNAP.VERTEX.ROUND", "SNAP.VERTEX.RANGE", "SNAP.VERTEX.INVALID"},
-            SnapKernelModel::constants());
-  prove_batch_snap_simd<SnapKernelModel>(pr, {{0, 255}});
-  return pr.finish();
+  return run_proof("fast/batch_snap_simd", "FAST.BATCH.SNAP_SIMD",
+                   {"SNAP.VERTEX.ROUND", "SNAP.VERTEX.RANGE", "SNAP.VERTEX.INVALID"},
+                   SnapKernelModel::constants(), [](Prover& pr) {
+                     prove_batch_snap_simd<SnapKernelModel>(pr, {{0, 255}});
+                   });
 }

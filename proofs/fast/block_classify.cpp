@@ -48,27 +48,11 @@ int main() {
                                             "FIX.BIAS.FORM", "FIX.STEP.INCREMENTAL",
                                             "TRI.FILL.TOP_LEFT"};
   // Each family declares its own variables: one domain and report per family.
-  int status = 0;
-  {
-    Domain dom;
-    Prover pr(dom, "fast/block_classify (budget)", "FAST.TILE.CLASSIFY", assumes,
-              FastBlockModel::constants());
-    prove_lane_budget<FastBlockModel>(pr);
-    status |= pr.finish();
-  }
-  {
-    Domain dom;
-    Prover pr(dom, "fast/block_classify (equivalence)", "FAST.TILE.CLASSIFY", assumes,
-              FastBlockModel::constants());
-    prove_lane_equivalence<FastBlockModel>(pr);
-    status |= pr.finish();
-  }
-  {
-    Domain dom;
-    Prover pr(dom, "fast/block_classify (classification)", "FAST.TILE.CLASSIFY", assumes,
-              FastBlockModel::constants());
-    prove_tile_classify<FastBlockModel>(pr);
-    status |= pr.finish();
-  }
+  int status = run_proof("fast/block_classify (budget)", "FAST.TILE.CLASSIFY", assumes,
+                         FastBlockModel::constants(), prove_lane_budget<FastBlockModel>);
+  status |= run_proof("fast/block_classify (equivalence)", "FAST.TILE.CLASSIFY", assumes,
+                      FastBlockModel::constants(), prove_lane_equivalence<FastBlockModel>);
+  status |= run_proof("fast/block_classify (classification)", "FAST.TILE.CLASSIFY", assumes,
+                      FastBlockModel::constants(), prove_tile_classify<FastBlockModel>);
   return status;
 }

@@ -14,9 +14,6 @@
 
 int main() {
   using namespace rastrules::proofs;
-  Domain dom;
-  Prover pr(dom, "fast/lane_budget", "FAST.LANE.I32", {"SNAP.VERTEX.RANGE"},
-            FastKernelModel::constants());
-  prove_lane_budget<FastKernelModel>(pr);
-  return pr.finish();
+  return run_proof("fast/lane_budget", "FAST.LANE.I32", {"SNAP.VERTEX.RANGE"},
+                   FastKernelModel::constants(), prove_lane_budget<FastKernelModel>);
 }

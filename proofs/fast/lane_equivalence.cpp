@@ -23,11 +23,8 @@ int main() {
   using namespace rastrules::proofs;
   if (!shift_restatement_matches_cpp())
     return 1;
-  Domain dom;
-  Prover pr(dom, "fast/lane_equivalence", "FAST.LANE.I32",
-            {"SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE", "FIX.BIAS.FORM", "FIX.STEP.INCREMENTAL",
-             "TRI.FILL.TOP_LEFT"},
-            FastKernelModel::constants());
-  prove_lane_equivalence<FastKernelModel>(pr);
-  return pr.finish();
+  return run_proof("fast/lane_equivalence", "FAST.LANE.I32",
+                   {"SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE", "FIX.BIAS.FORM",
+                    "FIX.STEP.INCREMENTAL", "TRI.FILL.TOP_LEFT"},
+                   FastKernelModel::constants(), prove_lane_equivalence<FastKernelModel>);
 }

@@ -14,9 +14,7 @@
 
 int main() {
   using namespace rastrules::proofs;
-  Domain dom;
-  Prover pr(dom, "fast/tile_classify", "FAST.TILE.CLASSIFY", {"SNAP.VERTEX.RANGE", "FAST.LANE.I32"},
-            FastKernelModel::constants());
-  prove_tile_classify<FastKernelModel>(pr);
-  return pr.finish();
+  return run_proof("fast/tile_classify", "FAST.TILE.CLASSIFY",
+                   {"SNAP.VERTEX.RANGE", "FAST.LANE.I32"}, FastKernelModel::constants(),
+                   prove_tile_classify<FastKernelModel>);
 }

@@ -18,9 +18,6 @@
 
 int main() {
   using namespace rastrules::proofs;
-  Domain dom;
-  Prover pr(dom, "fixed/edge_value_no_overflow", "FIX.BUDGET.EDGE_VALUE", {"SNAP.VERTEX.RANGE"},
-            KernelModel::constants());
-  prove_edge_value_no_overflow<KernelModel>(pr);
-  return pr.finish();
+  return run_proof("fixed/edge_value_no_overflow", "FIX.BUDGET.EDGE_VALUE", {"SNAP.VERTEX.RANGE"},
+                   KernelModel::constants(), prove_edge_value_no_overflow<KernelModel>);
 }

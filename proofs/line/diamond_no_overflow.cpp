@@ -15,9 +15,7 @@
 
 int main() {
   using namespace rastrules::proofs;
-  Domain dom;
-  Prover pr(dom, "line/diamond_no_overflow", "LINE.D3D.EXIT, LINE.VK.EXIT",
-            {"SNAP.VERTEX.RANGE", "SCENE.TARGET.LIMITS"}, kernel_constants());
-  prove_diamond_no_overflow<Sym<std::int64_t>>(pr);
-  return pr.finish();
+  return run_proof("line/diamond_no_overflow", "LINE.D3D.EXIT, LINE.VK.EXIT",
+                   {"SNAP.VERTEX.RANGE", "SCENE.TARGET.LIMITS"}, kernel_constants(),
+                   prove_diamond_no_overflow<Sym<std::int64_t>>);
 }

@@ -12,10 +12,9 @@
 
 int main() {
   using namespace rastrules::proofs;
-  Domain dom;
-  Prover pr(dom, "line_aa/aa_formulas", "LINE.AA.FRAGMENT, LINE.AA.BLEND", {"LINE.AA.PRECISION"},
-            kernel_constants());
-  prove_times_sqrt_less<AAModel>(pr);
-  prove_blend<AAModel>(pr);
-  return pr.finish();
+  return run_proof("line_aa/aa_formulas", "LINE.AA.FRAGMENT, LINE.AA.BLEND", {"LINE.AA.PRECISION"},
+                   kernel_constants(), [](Prover& pr) {
+                     prove_times_sqrt_less<AAModel>(pr);
+                     prove_blend<AAModel>(pr);
+                   });
 }

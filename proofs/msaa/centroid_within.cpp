@@ -19,11 +19,8 @@ int main() {
   using namespace rastrules::proofs;
   if (!restatement_matches_kernel<MsaaKernelModel>())
     return 1;
-  Domain dom;
-  Prover pr(
-      dom, "msaa/centroid_within", "MSAA.CENTROID.WITHIN",
+  return run_proof(
+      "msaa/centroid_within", "MSAA.CENTROID.WITHIN",
       {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE", "TRI.FILL.TOP_LEFT", "MSAA.SAMPLE.POSITION"},
-      MsaaKernelModel::constants());
-  prove_centroid_within<MsaaKernelModel>(pr);
-  return pr.finish();
+      MsaaKernelModel::constants(), prove_centroid_within<MsaaKernelModel>);
 }

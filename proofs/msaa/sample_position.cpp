@@ -17,10 +17,8 @@ int main() {
   using namespace rastrules::proofs;
   if (!restatement_matches_kernel<MsaaKernelModel>())
     return 1;
-  Domain dom;
-  Prover pr(dom, "msaa/sample_position", "MSAA.SAMPLE.POSITION, MSAA.PATTERN.GRID",
-            {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE"},
-            MsaaKernelModel::constants());
-  prove_sample_position<MsaaKernelModel>(pr);
-  return pr.finish();
+  return run_proof("msaa/sample_position", "MSAA.SAMPLE.POSITION, MSAA.PATTERN.GRID",
+                   {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE"},
+                   MsaaKernelModel::constants(),
+                   [](Prover& pr) { prove_sample_position<MsaaKernelModel>(pr); });
 }

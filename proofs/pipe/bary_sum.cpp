@@ -18,10 +18,7 @@ int main() {
   using namespace rastrules::proofs;
   if (!barycentrics_match_kernel())
     return 1;
-  Domain dom;
-  Prover pr(dom, "pipe/bary_sum", "PIPE.BARY.SUM, PIPE.BARY.DOUBLE_EXACT",
-            {"SNAP.VERTEX.RANGE", "PIPE.BARY.EXACT", "TRI.EDGE.FUNCTION", "TRI.ORIENT.AREA"},
-            PipeModel::constants());
-  prove_bary_sum<PipeModel>(pr);
-  return pr.finish();
+  return run_proof("pipe/bary_sum", "PIPE.BARY.SUM, PIPE.BARY.DOUBLE_EXACT",
+                   {"SNAP.VERTEX.RANGE", "PIPE.BARY.EXACT", "TRI.EDGE.FUNCTION", "TRI.ORIENT.AREA"},
+                   PipeModel::constants(), prove_bary_sum<PipeModel>);
 }

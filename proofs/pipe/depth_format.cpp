@@ -18,9 +18,7 @@ int main() {
   using namespace rastrules::proofs;
   if (!depth_format_matches_kernel())
     return 1;
-  Domain dom;
-  Prover pr(dom, "pipe/depth_format", "PIPE.DEPTH.FORMAT, PIPE.DEPTH.UNORM_ROUND",
-            {"PIPE.DEPTH.CLAMP", "PIPE.VIEWPORT.RANGE"}, PipeModel::constants());
-  prove_depth_format<PipeModel>(pr);
-  return pr.finish();
+  return run_proof("pipe/depth_format", "PIPE.DEPTH.FORMAT, PIPE.DEPTH.UNORM_ROUND",
+                   {"PIPE.DEPTH.CLAMP", "PIPE.VIEWPORT.RANGE"}, PipeModel::constants(),
+                   prove_depth_format<PipeModel>);
 }

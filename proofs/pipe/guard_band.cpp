@@ -16,10 +16,8 @@
 
 int main() {
   using namespace rastrules::proofs;
-  Domain dom;
-  Prover pr(dom, "pipe/guard_band", "PIPE.CLIP.GUARD_BAND_SNAP",
-            {"PIPE.CLIP.VOLUME", "SNAP.VERTEX.ROUND", "SNAP.VERTEX.RANGE", "SCENE.TARGET.LIMITS"},
-            PipeModel::constants());
-  prove_guard_band<PipeModel>(pr);
-  return pr.finish();
+  return run_proof(
+      "pipe/guard_band", "PIPE.CLIP.GUARD_BAND_SNAP",
+      {"PIPE.CLIP.VOLUME", "SNAP.VERTEX.ROUND", "SNAP.VERTEX.RANGE", "SCENE.TARGET.LIMITS"},
+      PipeModel::constants(), prove_guard_band<PipeModel>);
 }

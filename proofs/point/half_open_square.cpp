@@ -16,12 +16,10 @@
 
 int main() {
   using namespace rastrules::proofs;
-  Domain dom;
-  Prover pr(dom, "point/half_open_square",
-            "POINT.COVER.HALF_OPEN, POINT.RANGE, POINT.SHAPE.TWO_TRIANGLES, POINT.SHAPE.SQUARE",
-            {"POINT.RANGE", "SNAP.VERTEX.RANGE", "TRI.FILL.TOP_LEFT", "TRI.FILL.CONVENTION",
-             "TRI.ORIENT.NORMALISE"},
-            PointKernelModel::constants());
-  prove_point_half_open_square<PointKernelModel>(pr);
-  return pr.finish();
+  return run_proof(
+      "point/half_open_square",
+      "POINT.COVER.HALF_OPEN, POINT.RANGE, POINT.SHAPE.TWO_TRIANGLES, POINT.SHAPE.SQUARE",
+      {"POINT.RANGE", "SNAP.VERTEX.RANGE", "TRI.FILL.TOP_LEFT", "TRI.FILL.CONVENTION",
+       "TRI.ORIENT.NORMALISE"},
+      PointKernelModel::constants(), prove_point_half_open_square<PointKernelModel>);
 }

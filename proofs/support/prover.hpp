@@ -91,6 +91,18 @@ private:
   std::vector<std::pair<std::string, Status>> results_;
 };
 
+// Runs one report: a fresh Domain and a Prover that prints the header (see the constructor),
+// then prove(pr). Returns the report's exit status (Prover::finish): 0 iff every theorem was
+// PROVED.
+template <class Prove>
+int run_proof(std::string obligation, std::string rules, std::vector<std::string> assumes,
+              std::vector<Constant> constants, Prove&& prove) {
+  Domain dom;
+  Prover pr(dom, std::move(obligation), std::move(rules), std::move(assumes), std::move(constants));
+  prove(pr);
+  return pr.finish();
+}
+
 // Per-query time limit in seconds: RASTRULES_PROOF_TIMEOUT from the environment, else 30.
 [[nodiscard]] double query_timeout_seconds();
 

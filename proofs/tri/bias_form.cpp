@@ -16,9 +16,6 @@
 
 int main() {
   using namespace rastrules::proofs;
-  Domain dom;
-  Prover pr(dom, "tri/bias_form", "FIX.BIAS.FORM", {"SNAP.VERTEX.RANGE", "TRI.FILL.TOP_LEFT"},
-            KernelModel::constants());
-  prove_bias_form<KernelModel>(pr);
-  return pr.finish();
+  return run_proof("tri/bias_form", "FIX.BIAS.FORM", {"SNAP.VERTEX.RANGE", "TRI.FILL.TOP_LEFT"},
+                   KernelModel::constants(), prove_bias_form<KernelModel>);
 }

@@ -14,10 +14,8 @@
 
 int main() {
   using namespace rastrules::proofs;
-  Domain dom;
-  Prover pr(dom, "tri/degenerate_covers_nothing", "TRI.DEGENERATE.ZERO_AREA",
-            {"SNAP.VERTEX.RANGE", "TRI.ORIENT.AREA", "TRI.FILL.TOP_LEFT", "TRI.FILL.CONVENTION"},
-            KernelModel::constants());
-  prove_degenerate_covers_nothing<KernelModel>(pr);
-  return pr.finish();
+  return run_proof(
+      "tri/degenerate_covers_nothing", "TRI.DEGENERATE.ZERO_AREA",
+      {"SNAP.VERTEX.RANGE", "TRI.ORIENT.AREA", "TRI.FILL.TOP_LEFT", "TRI.FILL.CONVENTION"},
+      KernelModel::constants(), prove_degenerate_covers_nothing<KernelModel>);
 }

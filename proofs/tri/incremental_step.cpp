@@ -19,9 +19,7 @@
 
 int main() {
   using namespace rastrules::proofs;
-  Domain dom;
-  Prover pr(dom, "tri/incremental_step", "FIX.STEP.INCREMENTAL",
-            {"SNAP.VERTEX.RANGE", "SCENE.TARGET.LIMITS"}, KernelModel::constants());
-  prove_incremental_step<KernelModel>(pr);
-  return pr.finish();
+  return run_proof("tri/incremental_step", "FIX.STEP.INCREMENTAL",
+                   {"SNAP.VERTEX.RANGE", "SCENE.TARGET.LIMITS"}, KernelModel::constants(),
+                   prove_incremental_step<KernelModel>);
 }

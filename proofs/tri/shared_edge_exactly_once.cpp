@@ -18,11 +18,8 @@
 
 int main() {
   using namespace rastrules::proofs;
-  Domain dom;
-  Prover pr(
-      dom, "tri/shared_edge_exactly_once", "TRI.SHARED_EDGE.EXACTLY_ONCE",
+  return run_proof(
+      "tri/shared_edge_exactly_once", "TRI.SHARED_EDGE.EXACTLY_ONCE",
       {"SNAP.VERTEX.RANGE", "TRI.ORIENT.NORMALISE", "TRI.FILL.TOP_LEFT", "TRI.FILL.CONVENTION"},
-      KernelModel::constants());
-  prove_shared_edge_exactly_once<KernelModel>(pr);
-  return pr.finish();
+      KernelModel::constants(), prove_shared_edge_exactly_once<KernelModel>);
 }

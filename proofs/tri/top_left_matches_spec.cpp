@@ -21,11 +21,8 @@
 
 int main() {
   using namespace rastrules::proofs;
-  Domain dom;
-  Prover pr(dom, "tri/top_left_matches_spec",
-            "TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE, TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION",
-            {"SNAP.VERTEX.RANGE", "TRI.ORIENT.AREA", "TRI.ORIENT.NORMALISE"},
-            KernelModel::constants());
-  prove_top_left_matches_spec<KernelModel>(pr);
-  return pr.finish();
+  return run_proof("tri/top_left_matches_spec",
+                   "TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE, TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION",
+                   {"SNAP.VERTEX.RANGE", "TRI.ORIENT.AREA", "TRI.ORIENT.NORMALISE"},
+                   KernelModel::constants(), prove_top_left_matches_spec<KernelModel>);
 }
