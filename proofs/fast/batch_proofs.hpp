@@ -97,12 +97,6 @@ struct BatchKernelModel : KernelModel {
   }
 };
 
-// Returns lo <= v <= hi.
-inline z3::expr in_closed(const z3::expr& v, std::int64_t lo, std::int64_t hi) {
-  z3::context& ctx = v.ctx();
-  return ctx.int_val(lo) <= v && v <= ctx.int_val(hi);
-}
-
 // Returns |v| < 2^bits.
 inline z3::expr below_pow2(const z3::expr& v, int bits) {
   const std::int64_t m = std::int64_t{1} << bits;

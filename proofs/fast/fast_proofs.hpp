@@ -119,12 +119,6 @@ template <class L> Sym<std::int64_t> to_acc(const L& v) {
   return Sym<std::int64_t>(v.domain(), v.expr(), v.text());
 }
 
-// Returns lo <= v <= hi.
-inline z3::expr within(const z3::expr& v, std::int64_t lo, std::int64_t hi) {
-  z3::context& ctx = v.ctx();
-  return ctx.int_val(lo) <= v && v <= ctx.int_val(hi);
-}
-
 // The inputs every lane theorem shares: edge endpoints a, b (raw coordinates, lane type) and a
 // lane (i, j) of a tile, with A = ay - by and B = bx - ax computed as the kernel does.
 template <class F> struct LaneInputs {
@@ -140,8 +134,8 @@ template <class F> struct LaneInputs {
         i(dom.var<typename L::rep>("i", Unit::kInteger)),
         j(dom.var<typename L::rep>("j", Unit::kInteger)) {
     // Assumes: SNAP.VERTEX.RANGE; lanes 0 <= i, j < kFastTileSize
-    hyps = {in_vertex_range<F>(a), in_vertex_range<F>(b), within(i.expr(), 0, F::kTile - 1),
-            within(j.expr(), 0, F::kTile - 1)};
+    hyps = {in_vertex_range<F>(a), in_vertex_range<F>(b), in_closed(i.expr(), 0, F::kTile - 1),
+            in_closed(j.expr(), 0, F::kTile - 1)};
   }
   // A = ay - by (the x step in units of kSubpixelOne), B = bx - ax (the y step).
   [[nodiscard]] L step_a() const { return a.y - b.y; }
@@ -164,7 +158,7 @@ template <class F> void prove_lane_budget(Prover& pr) {
     const L l = F::lane_offset(in.i, in.j, in.step_a(), in.step_b());
     pr.watch("L = lane_offset(i, j, A, B)", l.expr(), Unit::kInteger);
     pr.prove("lane_offset fits the lane type and |L| < kLaneBound", in.hyps,
-             within(l.expr(), -F::kBound + 1, F::kBound - 1), dom.obligations_since(mark));
+             in_closed(l.expr(), -F::kBound + 1, F::kBound - 1), dom.obligations_since(mark));
   }
   {
     const std::size_t mark = dom.mark();
@@ -356,8 +350,8 @@ template <class F> void prove_tile_classify(Prover& pr) {
     pr.watch("Lmax", lmax.expr(), Unit::kInteger);
     pr.watch("Lmin", lmin.expr(), Unit::kInteger);
     pr.prove("lane_max and lane_min fit the lane type, |.| < kLaneBound", in.hyps,
-             within(lmax.expr(), -F::kBound + 1, F::kBound - 1) &&
-                 within(lmin.expr(), -F::kBound + 1, F::kBound - 1),
+             in_closed(lmax.expr(), -F::kBound + 1, F::kBound - 1) &&
+                 in_closed(lmin.expr(), -F::kBound + 1, F::kBound - 1),
              dom.obligations_since(mark));
   }
   {

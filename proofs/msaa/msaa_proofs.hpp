@@ -144,13 +144,11 @@ template <class F> void prove_sample_position(Prover& pr, bool with_edge_budget 
   const P py = dom.var<typename P::rep>("py", Unit::kInteger);
   const P ox = dom.var<typename P::rep>("ox", Unit::kInteger);
   const P oy = dom.var<typename P::rep>("oy", Unit::kInteger);
-  const auto in = [&](const P& v, std::int64_t lo, std::int64_t hi) {
-    return ctx.int_val(lo) <= v.expr() && v.expr() <= ctx.int_val(hi);
-  };
   // Assumes: SCENE.TARGET.LIMITS, MSAA.PATTERN.GRID
-  const std::vector<z3::expr> hyps = {in(px, 0, F::kMaxSide - 1), in(py, 0, F::kMaxSide - 1),
-                                      in(ox, F::kGridMin, F::kGridMax),
-                                      in(oy, F::kGridMin, F::kGridMax)};
+  const std::vector<z3::expr> hyps = {in_closed(px.expr(), 0, F::kMaxSide - 1),
+                                      in_closed(py.expr(), 0, F::kMaxSide - 1),
+                                      in_closed(ox.expr(), F::kGridMin, F::kGridMax),
+                                      in_closed(oy.expr(), F::kGridMin, F::kGridMax)};
   {
     const std::size_t mark = dom.mark();
     const Point<P> s = F::sample_position(px, py, ox, oy);
@@ -217,11 +215,9 @@ template <class F> void prove_centroid_within(Prover& pr) {
   const S ecv = dom.var<std::int64_t>("Ec", Unit::kEdgeRaw);
   const S u = dom.var<std::int64_t>("u", Unit::kCoordRaw);
   const S v = dom.var<std::int64_t>("v", Unit::kCoordRaw);
-  const auto in = [&](const P& x, std::int64_t lo, std::int64_t hi) {
-    return ctx.int_val(lo) <= x.expr() && x.expr() <= ctx.int_val(hi);
-  };
   // Assumes: SCENE.TARGET.LIMITS, SNAP.VERTEX.RANGE, TRI.FILL.TOP_LEFT
-  const std::vector<z3::expr> hyps = {in(px, 0, F::kMaxSide - 1), in(py, 0, F::kMaxSide - 1),
+  const std::vector<z3::expr> hyps = {in_closed(px.expr(), 0, F::kMaxSide - 1),
+                                      in_closed(py.expr(), 0, F::kMaxSide - 1),
                                       in_vertex_range<F>(a), in_vertex_range<F>(b)};
   const auto linear = [&](std::int64_t ox, std::int64_t oy) {
     return ecv.expr() +

@@ -132,6 +132,12 @@ template <class Fn> void for_each_convention(Fn&& fn) {
   fn.template operator()<false, false>("bottom-right");
 }
 
+// Returns lo <= v <= hi.
+inline z3::expr in_closed(const z3::expr& v, std::int64_t lo, std::int64_t hi) {
+  z3::context& ctx = v.ctx();
+  return ctx.int_val(lo) <= v && v <= ctx.int_val(hi);
+}
+
 // Returns "p lies in the supported vertex range" (SNAP.VERTEX.RANGE) for model F.
 template <class F, class S> z3::expr in_vertex_range(const Point<S>& p) {
   z3::context& ctx = p.x.expr().ctx();
