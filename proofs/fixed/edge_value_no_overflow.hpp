@@ -21,12 +21,9 @@ namespace rastrules::proofs {
 template <class F> void prove_edge_value_no_overflow(Prover& pr) {
   using S = typename F::Acc;
   Domain& dom = pr.domain();
-  const Point<S> a = point_var<S>(dom, "a");
-  const Point<S> b = point_var<S>(dom, "b");
-  const Point<S> p = point_var<S>(dom, "p");
   // Assumes: SNAP.VERTEX.RANGE
-  const std::vector<z3::expr> hyps = {in_vertex_range<F>(a), in_vertex_range<F>(b),
-                                      in_vertex_range<F>(p)};
+  std::vector<z3::expr> hyps;
+  const auto [a, b, p] = points_in_range<F>(dom, {"a", "b", "p"}, hyps);
   const std::string type = type_name<typename S::rep>();
 
   {

@@ -178,14 +178,10 @@ template <class F> void prove_bary_sum(Prover& pr) {
   using S = typename F::Acc;
   Domain& dom = pr.domain();
   z3::context& ctx = pr.ctx();
-  const Point<S> v0 = point_var<S>(dom, "v0");
-  const Point<S> v1 = point_var<S>(dom, "v1");
-  const Point<S> v2 = point_var<S>(dom, "v2");
-  const Point<S> s = point_var<S>(dom, "s");
-  const Triangle<S> t{v0, v1, v2};
   // Assumes: SNAP.VERTEX.RANGE (vertices and the evaluation point)
-  const std::vector<z3::expr> hyps = {in_vertex_range<F>(v0), in_vertex_range<F>(v1),
-                                      in_vertex_range<F>(v2), in_vertex_range<F>(s)};
+  std::vector<z3::expr> hyps;
+  const auto [v0, v1, v2, s] = points_in_range<F>(dom, {"v0", "v1", "v2", "s"}, hyps);
+  const Triangle<S> t{v0, v1, v2};
   const std::string type = type_name<typename S::rep>();
   const auto watch_all = [&](const std::array<S, 3>& e, const S& area) {
     pr.watch("e0 = E_v1v2(s)", e[0].expr(), Unit::kEdgeRaw);

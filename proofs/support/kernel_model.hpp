@@ -15,6 +15,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rastrules/fixed.hpp"
@@ -144,6 +145,23 @@ template <class F, class S> z3::expr in_vertex_range(const Point<S>& p) {
   const z3::expr lo = ctx.int_val(F::kMinRaw);
   const z3::expr hi = ctx.int_val(F::kMaxRaw);
   return lo <= p.x.expr() && p.x.expr() <= hi && lo <= p.y.expr() && p.y.expr() <= hi;
+}
+
+// Returns one point per name, with fresh coordinates "<name>x", "<name>y" declared in the names'
+// order, and appends "it lies in the supported vertex range" (in_vertex_range,
+// SNAP.VERTEX.RANGE) to hyps for each, in the same order.
+template <class F, std::size_t N>
+std::array<Point<typename F::Acc>, N> points_in_range(Domain& dom, const char* const (&names)[N],
+                                                      std::vector<z3::expr>& hyps) {
+  using S = typename F::Acc;
+  // A braced list is evaluated left to right.
+  const auto declare = [&]<std::size_t... I>(std::index_sequence<I...>) {
+    return std::array<Point<S>, N>{point_var<S>(dom, names[I])...};
+  };
+  const std::array<Point<S>, N> points = declare(std::make_index_sequence<N>{});
+  for (const Point<S>& p : points)
+    hyps.push_back(in_vertex_range<F>(p));
+  return points;
 }
 
 } // namespace rastrules::proofs

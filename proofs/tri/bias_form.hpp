@@ -26,12 +26,9 @@ template <class F> void prove_bias_form(Prover& pr) {
   using S = typename F::Acc;
   Domain& dom = pr.domain();
   z3::context& ctx = dom.ctx();
-  const Point<S> a = point_var<S>(dom, "a");
-  const Point<S> b = point_var<S>(dom, "b");
-  const Point<S> p = point_var<S>(dom, "p");
   // Assumes: SNAP.VERTEX.RANGE
-  const std::vector<z3::expr> hyps = {in_vertex_range<F>(a), in_vertex_range<F>(b),
-                                      in_vertex_range<F>(p)};
+  std::vector<z3::expr> hyps;
+  const auto [a, b, p] = points_in_range<F>(dom, {"a", "b", "p"}, hyps);
   for (const bool inclusive : {true, false}) {
     const std::size_t mark = dom.mark();
     const S e = F::edge_value(a, b, p);

@@ -22,15 +22,11 @@ namespace rastrules::proofs {
 template <class F> void prove_degenerate_covers_nothing(Prover& pr) {
   using S = typename F::Acc;
   Domain& dom = pr.domain();
-  const Point<S> a = point_var<S>(dom, "a");
-  const Point<S> b = point_var<S>(dom, "b");
-  const Point<S> c = point_var<S>(dom, "c");
-  const Point<S> p = point_var<S>(dom, "p");
-  const S area = F::twice_signed_area(Triangle<S>{a, b, c});
   // Assumes: SNAP.VERTEX.RANGE, TRI.ORIENT.AREA
-  const std::vector<z3::expr> hyps = {in_vertex_range<F>(a), in_vertex_range<F>(b),
-                                      in_vertex_range<F>(c), in_vertex_range<F>(p),
-                                      area.expr() == 0};
+  std::vector<z3::expr> hyps;
+  const auto [a, b, c, p] = points_in_range<F>(dom, {"a", "b", "c", "p"}, hyps);
+  const S area = F::twice_signed_area(Triangle<S>{a, b, c});
+  hyps.push_back(area.expr() == 0);
   for_each_convention([&]<bool TopInclusive, bool LeftInclusive>(const char* convention) {
     const std::size_t mark = dom.mark();
     const SymBool in = covers<F, TopInclusive, LeftInclusive>(Triangle<S>{a, b, c}, p);

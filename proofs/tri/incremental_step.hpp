@@ -23,15 +23,12 @@ namespace rastrules::proofs {
 template <class F> void prove_incremental_step(Prover& pr) {
   using S = typename F::Acc;
   Domain& dom = pr.domain();
-  const Point<S> a = point_var<S>(dom, "a");
-  const Point<S> b = point_var<S>(dom, "b");
-  const Point<S> p = point_var<S>(dom, "p");
+  // Assumes: SNAP.VERTEX.RANGE
+  std::vector<z3::expr> base;
+  const auto [a, b, p] = points_in_range<F>(dom, {"a", "b", "p"}, base);
   const S one(F::kOne);
   const Point<S> px{p.x + one, p.y};
   const Point<S> py{p.x, p.y + one};
-  // Assumes: SNAP.VERTEX.RANGE
-  const std::vector<z3::expr> base = {in_vertex_range<F>(a), in_vertex_range<F>(b),
-                                      in_vertex_range<F>(p)};
   std::vector<z3::expr> hyps_x = base;
   hyps_x.push_back(in_vertex_range<F>(px));
   std::vector<z3::expr> hyps_y = base;

@@ -75,13 +75,11 @@ template <class F> void prove_top_left_matches_spec(Prover& pr) {
   using S = typename F::Acc;
   Domain& dom = pr.domain();
   z3::context& ctx = dom.ctx();
-  const Point<S> a = point_var<S>(dom, "a");
-  const Point<S> b = point_var<S>(dom, "b");
-  const Point<S> c = point_var<S>(dom, "c");
-  const S area = F::twice_signed_area(Triangle<S>{a, b, c});
   // Assumes: SNAP.VERTEX.RANGE, TRI.ORIENT.AREA
-  const std::vector<z3::expr> hyps = {in_vertex_range<F>(a), in_vertex_range<F>(b),
-                                      in_vertex_range<F>(c), area.expr() > 0};
+  std::vector<z3::expr> hyps;
+  const auto [a, b, c] = points_in_range<F>(dom, {"a", "b", "c"}, hyps);
+  const S area = F::twice_signed_area(Triangle<S>{a, b, c});
+  hyps.push_back(area.expr() > 0);
 
   struct Edge {
     const Point<S>* from;
