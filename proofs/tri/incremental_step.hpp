@@ -34,24 +34,22 @@ template <class F> void prove_incremental_step(Prover& pr) {
   std::vector<z3::expr> hyps_y = base;
   hyps_y.push_back(in_vertex_range<F>(py));
 
-  {
+  // Proves E(moved) == E(p) + step, where moved is p + `offset` (text, e.g. "(1 px, 0)") and
+  // step is edge_step_x(a, b, one) when along_x, else edge_step_y(a, b, one).
+  const auto prove_step = [&](const std::string& offset, bool along_x, const Point<S>& moved,
+                              const std::vector<z3::expr>& hyps) {
+    const std::string axis = along_x ? "x" : "y";
     const std::size_t mark = dom.mark();
-    const S direct = F::edge_value(a, b, px);
-    const S stepped = F::edge_value(a, b, p) + F::edge_step_x(a, b, one);
-    pr.watch("E(p + (1 px, 0))", direct.expr(), Unit::kEdgeRaw);
-    pr.watch("E(p) + step_x", stepped.expr(), Unit::kEdgeRaw);
-    pr.prove("edge_value(p + (1 px, 0)) == edge_value(p) + edge_step_x", hyps_x,
+    const S direct = F::edge_value(a, b, moved);
+    const S stepped =
+        F::edge_value(a, b, p) + (along_x ? F::edge_step_x(a, b, one) : F::edge_step_y(a, b, one));
+    pr.watch("E(p + " + offset + ")", direct.expr(), Unit::kEdgeRaw);
+    pr.watch("E(p) + step_" + axis, stepped.expr(), Unit::kEdgeRaw);
+    pr.prove("edge_value(p + " + offset + ") == edge_value(p) + edge_step_" + axis, hyps,
              direct.expr() == stepped.expr(), dom.obligations_since(mark));
-  }
-  {
-    const std::size_t mark = dom.mark();
-    const S direct = F::edge_value(a, b, py);
-    const S stepped = F::edge_value(a, b, p) + F::edge_step_y(a, b, one);
-    pr.watch("E(p + (0, 1 px))", direct.expr(), Unit::kEdgeRaw);
-    pr.watch("E(p) + step_y", stepped.expr(), Unit::kEdgeRaw);
-    pr.prove("edge_value(p + (0, 1 px)) == edge_value(p) + edge_step_y", hyps_y,
-             direct.expr() == stepped.expr(), dom.obligations_since(mark));
-  }
+  };
+  prove_step("(1 px, 0)", true, px, hyps_x);
+  prove_step("(0, 1 px)", false, py, hyps_y);
   for (const bool inclusive : {true, false}) {
     const std::size_t mark = dom.mark();
     const S direct = F::edge_value(a, b, px) + F::template edge_bias<S>(inclusive);
