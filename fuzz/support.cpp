@@ -198,4 +198,16 @@ void fail(const std::string& what, const std::vector<std::string>& details, cons
   std::abort();
 }
 
+void check_prepare_verdict(const Scene& scene,
+                           const std::variant<PreparedScene, SceneError>& prepared,
+                           const std::uint8_t* data, std::size_t size) {
+  const std::string invalid = oracle_invalid_reason(scene);
+  if (const auto* err = std::get_if<SceneError>(&prepared)) {
+    if (invalid.empty())
+      fail("prepare rejects a scene the oracles find valid", {err->what()}, &scene, data, size);
+  } else if (!invalid.empty()) {
+    fail("prepare accepts a scene the oracles find invalid", {invalid}, &scene, data, size);
+  }
+}
+
 } // namespace rastrules::fuzz

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "rastrules/scene.hpp"
@@ -58,5 +59,11 @@ inline constexpr std::size_t kMaxAaSegments = 2;
 // then aborts (libFuzzer saves the input as crash-*).
 [[noreturn]] void fail(const std::string& what, const std::vector<std::string>& details,
                        const Scene* scene, const std::uint8_t* data, std::size_t size);
+
+// Fails when prepare()'s verdict on `scene` (`prepared`, its result) is not the oracles'
+// (oracle_invalid_reason): prepare() must accept exactly the scenes they find valid.
+void check_prepare_verdict(const Scene& scene,
+                           const std::variant<PreparedScene, SceneError>& prepared,
+                           const std::uint8_t* data, std::size_t size);
 
 } // namespace rastrules::fuzz
