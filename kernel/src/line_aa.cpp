@@ -55,16 +55,6 @@ U128 isqrt(U128 v) {
   return r;
 }
 
-I64 floor_div(I64 n, I64 d) { // d > 0
-  I64 q = n / d;
-  if ((n % d != 0) && (n < 0))
-    --q;
-  return q;
-}
-I64 ceil_div(I64 n, I64 d) { // d > 0
-  return -floor_div(-n, d);
-}
-
 // Returns num / den rounded to the nearest integer, halves away from zero (den != 0), so that
 // negating num negates the result exactly.
 I128 div_round(I128 num, I128 den) {

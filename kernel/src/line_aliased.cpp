@@ -61,12 +61,6 @@ Relative relative(Vec2 a, Vec2 b, std::int32_t px, std::int32_t py) {
   return {a.x.raw() - cx, a.y.raw() - cy, b.x.raw() - cx, b.y.raw() - cy};
 }
 
-// Floor of n / d for d > 0.
-std::int64_t floor_div(std::int64_t n, std::int64_t d) {
-  const std::int64_t q = n / d;
-  return (n % d != 0 && n < 0) ? q - 1 : q;
-}
-
 // rule: LINE.D3D.EXIT, LINE.VK.EXIT, LINE.MAJOR.AXIS
 bool covers_relative(const Relative& r, LineMode mode, bool x_major) {
   if (mode == LineMode::kVulkanBresenham) {

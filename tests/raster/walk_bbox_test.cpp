@@ -31,12 +31,12 @@ void expect_bounds(const TriangleSetup& t, std::int32_t w, std::int32_t h, Rect 
 
 // rule: RASTER.WALK.BBOX
 TEST(RasterWalkBbox, FloorDivRoundsTowardMinusInfinity) {
-  EXPECT_EQ(raster::floor_div(255, 256), 0);
-  EXPECT_EQ(raster::floor_div(256, 256), 1);
-  EXPECT_EQ(raster::floor_div(0, 256), 0);
-  EXPECT_EQ(raster::floor_div(-1, 256), -1);
-  EXPECT_EQ(raster::floor_div(-256, 256), -1);
-  EXPECT_EQ(raster::floor_div(-257, 256), -2);
+  EXPECT_EQ(rastrules::floor_div(255, 256), 0);
+  EXPECT_EQ(rastrules::floor_div(256, 256), 1);
+  EXPECT_EQ(rastrules::floor_div(0, 256), 0);
+  EXPECT_EQ(rastrules::floor_div(-1, 256), -1);
+  EXPECT_EQ(rastrules::floor_div(-256, 256), -1);
+  EXPECT_EQ(rastrules::floor_div(-257, 256), -2);
 }
 
 // rule: RASTER.WALK.BBOX

@@ -219,10 +219,10 @@ void raster_fixed4(const FloatTriangle& tri, std::int32_t w, std::int32_t h, Emi
   }
   const std::int64_t minx = std::min({vx[0], vx[1], vx[2]}), maxx = std::max({vx[0], vx[1], vx[2]});
   const std::int64_t miny = std::min({vy[0], vy[1], vy[2]}), maxy = std::max({vy[0], vy[1], vy[2]});
-  const std::int64_t px0 = std::max<std::int64_t>(-raster::floor_div(-(minx - 8), 16), 0);
-  const std::int64_t px1 = std::min<std::int64_t>(raster::floor_div(maxx - 8, 16), w - 1);
-  const std::int64_t py0 = std::max<std::int64_t>(-raster::floor_div(-(miny - 8), 16), 0);
-  const std::int64_t py1 = std::min<std::int64_t>(raster::floor_div(maxy - 8, 16), h - 1);
+  const std::int64_t px0 = std::max<std::int64_t>(-rastrules::floor_div(-(minx - 8), 16), 0);
+  const std::int64_t px1 = std::min<std::int64_t>(rastrules::floor_div(maxx - 8, 16), w - 1);
+  const std::int64_t py0 = std::max<std::int64_t>(-rastrules::floor_div(-(miny - 8), 16), 0);
+  const std::int64_t py1 = std::min<std::int64_t>(rastrules::floor_div(maxy - 8, 16), h - 1);
   for (std::int64_t py = py0; py <= py1; ++py) {
     const std::uint32_t sy = u32(py * 16 + 8), sx = u32(px0 * 16 + 8);
     std::uint32_t e[3];
@@ -270,13 +270,13 @@ void raster_fixed16(const FloatTriangle& tri, std::int32_t w, std::int32_t h, Em
     return static_cast<std::int64_t>(std::max({a, b, c}));
   };
   const std::int64_t px0 =
-      std::max<std::int64_t>(-raster::floor_div(-(lo(vx[0], vx[1], vx[2]) - kHalf), kOne), 0);
+      std::max<std::int64_t>(-rastrules::floor_div(-(lo(vx[0], vx[1], vx[2]) - kHalf), kOne), 0);
   const std::int64_t px1 =
-      std::min<std::int64_t>(raster::floor_div(hi(vx[0], vx[1], vx[2]) - kHalf, kOne), w - 1);
+      std::min<std::int64_t>(rastrules::floor_div(hi(vx[0], vx[1], vx[2]) - kHalf, kOne), w - 1);
   const std::int64_t py0 =
-      std::max<std::int64_t>(-raster::floor_div(-(lo(vy[0], vy[1], vy[2]) - kHalf), kOne), 0);
+      std::max<std::int64_t>(-rastrules::floor_div(-(lo(vy[0], vy[1], vy[2]) - kHalf), kOne), 0);
   const std::int64_t py1 =
-      std::min<std::int64_t>(raster::floor_div(hi(vy[0], vy[1], vy[2]) - kHalf, kOne), h - 1);
+      std::min<std::int64_t>(rastrules::floor_div(hi(vy[0], vy[1], vy[2]) - kHalf, kOne), h - 1);
   for (std::int64_t py = py0; py <= py1; ++py) {
     const Int128 sy = py * kOne + kHalf, sx = px0 * kOne + kHalf;
     Int128 e[3];
@@ -323,10 +323,10 @@ void raster_exact(const FloatTriangle& tri, std::int32_t w, std::int32_t h, Emit
                      maxx = std::max({v[0][0], v[1][0], v[2][0]});
   const std::int64_t miny = std::min({v[0][1], v[1][1], v[2][1]}),
                      maxy = std::max({v[0][1], v[1][1], v[2][1]});
-  const std::int64_t px0 = std::max<std::int64_t>(-raster::floor_div(-(minx - 128), 256), 0);
-  const std::int64_t px1 = std::min<std::int64_t>(raster::floor_div(maxx - 128, 256), w - 1);
-  const std::int64_t py0 = std::max<std::int64_t>(-raster::floor_div(-(miny - 128), 256), 0);
-  const std::int64_t py1 = std::min<std::int64_t>(raster::floor_div(maxy - 128, 256), h - 1);
+  const std::int64_t px0 = std::max<std::int64_t>(-rastrules::floor_div(-(minx - 128), 256), 0);
+  const std::int64_t px1 = std::min<std::int64_t>(rastrules::floor_div(maxx - 128, 256), w - 1);
+  const std::int64_t py0 = std::max<std::int64_t>(-rastrules::floor_div(-(miny - 128), 256), 0);
+  const std::int64_t py1 = std::min<std::int64_t>(rastrules::floor_div(maxy - 128, 256), h - 1);
   const oracle::State state;
   for (std::int64_t py = py0; py <= py1; ++py)
     for (std::int64_t px = px0; px <= px1; ++px)

@@ -42,6 +42,16 @@ private:
   Rep raw_ = 0;
 };
 
+// Returns floor(n / d) and ceil(n / d) for d > 0 (C++ division truncates toward zero): pixel
+// and sample indices of subpixel coordinates.
+[[nodiscard]] constexpr std::int64_t floor_div(std::int64_t n, std::int64_t d) {
+  const std::int64_t q = n / d;
+  return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+[[nodiscard]] constexpr std::int64_t ceil_div(std::int64_t n, std::int64_t d) {
+  return -floor_div(-n, d);
+}
+
 // Snapped positions: signed 16.8, units of 1/256 pixel.
 // rule: SNAP.VERTEX.FORMAT
 inline constexpr int kSubpixelBits = 8;

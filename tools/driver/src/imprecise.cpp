@@ -23,13 +23,6 @@ struct RawPoint {
   std::int64_t y = 0;
 };
 
-std::int64_t floor_div(std::int64_t a, std::int64_t b) {
-  std::int64_t q = a / b;
-  if ((a % b != 0) && ((a < 0) != (b < 0)))
-    --q;
-  return q;
-}
-
 // rule: DRIVER.IMPRECISE
 class ImpreciseDriver final : public Driver {
 public:

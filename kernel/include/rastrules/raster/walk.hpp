@@ -15,12 +15,6 @@
 
 namespace rastrules::raster {
 
-// Returns floor(n / d) for d > 0.
-[[nodiscard]] constexpr std::int64_t floor_div(std::int64_t n, std::int64_t d) {
-  const std::int64_t q = n / d;
-  return (n % d != 0 && n < 0) ? q - 1 : q;
-}
-
 struct PixelRect {
   std::int32_t x0 = 0, y0 = 0, x1 = -1, y1 = -1; // inclusive; empty when x1 < x0 or y1 < y0
   [[nodiscard]] constexpr bool empty() const { return x1 < x0 || y1 < y0; }
