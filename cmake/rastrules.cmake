@@ -29,3 +29,20 @@ function(rastrules_add_gtest)
     PROPERTIES LABELS "${A_KIND}" ${A_TEST_PROPERTIES})
   set_property(DIRECTORY APPEND PROPERTY LABELS "${A_AREA}")
 endfunction()
+
+# rastrules_check_headers(<library> <include dir>): every public header of the library under the
+# include dir compiles on its own (includes what it uses), one generated translation unit per
+# header in the object library <library>_headers, built with the rest.
+function(rastrules_check_headers library include_dir)
+  file(GLOB_RECURSE headers CONFIGURE_DEPENDS ${include_dir}/*.hpp)
+  set(sources)
+  foreach(header ${headers})
+    file(RELATIVE_PATH rel ${include_dir} ${header})
+    string(MAKE_C_IDENTIFIER ${rel} id)
+    set(source ${CMAKE_CURRENT_BINARY_DIR}/headers/${id}.cpp)
+    file(CONFIGURE OUTPUT ${source} CONTENT "#include \"${rel}\" // compiles alone\n")
+    list(APPEND sources ${source})
+  endforeach()
+  add_library(${library}_headers OBJECT ${sources})
+  target_link_libraries(${library}_headers PRIVATE ${library} rastrules_warnings)
+endfunction()
