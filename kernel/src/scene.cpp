@@ -98,13 +98,9 @@ std::optional<std::string> first_pipeline_field(const Scene& scene) {
 
 Scene target_of(const Scene& scene) {
   Scene out;
-  out.width = scene.width;
-  out.height = scene.height;
-  out.state = scene.state;
-  out.line_mode = scene.line_mode;
-  out.msaa = scene.msaa;
-  out.clear_color = scene.clear_color;
-  out.provoking = scene.provoking;
+  std::tie(out.width, out.height, out.state, out.line_mode, out.msaa, out.clear_color,
+           out.provoking) = std::tie(scene.width, scene.height, scene.state, scene.line_mode,
+                                     scene.msaa, scene.clear_color, scene.provoking);
   return out;
 }
 
@@ -269,12 +265,8 @@ std::variant<PreparedScene, SceneError> prepare(const Scene& scene) {
     return *err;
   const std::uint32_t samples = scene.msaa.count();
   PreparedScene out;
-  out.width = scene.width;
-  out.height = scene.height;
-  out.state = scene.state;
-  out.line_mode = scene.line_mode;
-  out.msaa = scene.msaa;
-  out.clear_color = scene.clear_color;
+  std::tie(out.width, out.height, out.state, out.line_mode, out.msaa, out.clear_color) = std::tie(
+      scene.width, scene.height, scene.state, scene.line_mode, scene.msaa, scene.clear_color);
   out.primitives.reserve(scene.primitives.size());
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     const Primitive& in = scene.primitives[p];

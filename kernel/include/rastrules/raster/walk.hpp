@@ -7,6 +7,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 
 #include "rastrules/fixed.hpp"
@@ -58,6 +59,23 @@ struct PixelRect {
   return pixel_bounds_with_offsets(t, width, height, 0, 0, 0, 0);
 }
 
+// Each edge's bias (E + bias >= 0 is the rule with its tie-break, FIX.BIAS.FORM) and its change
+// over one pixel along x (FIX.STEP.INCREMENTAL), for the walks that step edge values.
+struct EdgeSteps {
+  std::array<std::int64_t, 3> bias{};
+  std::array<std::int64_t, 3> step_x{};
+};
+// rule: FIX.BIAS.FORM, FIX.STEP.INCREMENTAL
+[[nodiscard]] constexpr EdgeSteps edge_steps(const TriangleSetup& t) {
+  EdgeSteps st;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const EdgeSetup& e = t.edges[i];
+    st.bias[i] = formula::edge_bias<std::int64_t>(e.inclusive);
+    st.step_x[i] = formula::edge_step_x<std::int64_t>(e.a.y.raw(), e.b.y.raw(), kSubpixelOne);
+  }
+  return st;
+}
+
 // Calls emit(x, y) for every covered pixel centre of t inside the target, row by row.
 // Each edge is evaluated directly at the start of a row and stepped by one pixel along it,
 // and tested in bias form (E + bias >= 0); both are proved equal to the direct rule
@@ -71,13 +89,9 @@ constexpr void walk_triangle(const TriangleSetup& t, std::int32_t width, std::in
   const PixelRect r = pixel_bounds(t, width, height);
   if (r.empty())
     return;
-  std::int64_t bias[3];
-  std::int64_t step_x[3];
-  for (std::size_t i = 0; i < 3; ++i) {
-    const EdgeSetup& e = t.edges[i];
-    bias[i] = formula::edge_bias<std::int64_t>(e.inclusive);
-    step_x[i] = formula::edge_step_x<std::int64_t>(e.a.y.raw(), e.b.y.raw(), kSubpixelOne);
-  }
+  const EdgeSteps st = edge_steps(t);
+  const auto& bias = st.bias;
+  const auto& step_x = st.step_x;
   for (std::int32_t y = r.y0; y <= r.y1; ++y) {
     const Vec2 start = pixel_center(r.x0, y);
     std::int64_t e0 = t.edges[0].value_at(start).raw() + bias[0];

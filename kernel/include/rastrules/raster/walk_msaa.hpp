@@ -57,13 +57,9 @@ constexpr void walk_triangle_samples(const TriangleSetup& t, const SamplePattern
   if (r.empty())
     return;
   const std::size_t n = pattern.count();
-  std::int64_t bias[3];
-  std::int64_t step_x[3];
-  for (std::size_t i = 0; i < 3; ++i) {
-    const EdgeSetup& e = t.edges[i];
-    bias[i] = formula::edge_bias<std::int64_t>(e.inclusive);
-    step_x[i] = formula::edge_step_x<std::int64_t>(e.a.y.raw(), e.b.y.raw(), kSubpixelOne);
-  }
+  const EdgeSteps st = edge_steps(t);
+  const auto& bias = st.bias;
+  const auto& step_x = st.step_x;
   std::array<std::array<std::int64_t, 3>, kMaxSamples> e{};
   for (std::int32_t y = r.y0; y <= r.y1; ++y) {
     for (std::size_t k = 0; k < n; ++k) {
