@@ -10,6 +10,8 @@ Reads the rule registry (level-3 headings `### <ID> — <title>` in spec/**/*.md
   * every cited ID exists and every tag is well formed;
   * every rule ID in a string literal of runtime code (kernel/, check/, tools/, bench/, fuzz/:
     what users see printed) is defined, or names a family as "ID.*";
+  * every entry of the rule-ID table (kernel/include/rastrules/rules.hpp, the IDs the kernel's
+    decision records name and the tools print) is defined, once, whatever its area;
   * every normative rule has an implementation site (kernel/, bench/, tools/ except tools/trace/)
     and an example test (tests/).
 
@@ -231,8 +233,8 @@ def scan_runtime_strings(root, rules, report):
             continue
         for path in walk_files(base, (".hpp", ".cpp", ".h", ".cc", ".hh")):
             relpath = rel(root, path)
-            if category_of(relpath) is None:
-                continue
+            if category_of(relpath) is None or relpath == RULE_TABLE:
+                continue  # the rule-ID table has its own, stricter check
             for number, text in enumerate(read_lines(path, report, root), start=1):
                 if TAG_RE.match(text):
                     continue
@@ -249,6 +251,46 @@ def scan_runtime_strings(root, rules, report):
                                      f"unknown rule ID {token} printed at run time (a string "
                                      f"literal; the registry has no such rule)")
     return found
+
+
+# The rule-ID table: the constants the kernel's decision records carry and the tools print.
+# Every entry must name a rule of the registry whatever its area (the string scan above skips
+# tokens of areas the registry does not know, such as "D3D11.3"; the table admits none), each
+# ID and each name once. A line that declares a RuleId constant in another form is an error,
+# so that no entry escapes the check.
+RULE_TABLE = "kernel/include/rastrules/rules.hpp"
+TABLE_ENTRY_RE = re.compile(r'^\s*inline\s+constexpr\s+RuleId\s+(k[A-Za-z0-9_]*)\s*'
+                            r'\{\s*"([^"\\]*)"\s*\}\s*;\s*(?://.*)?$')
+TABLE_LIKE_RE = re.compile(r"\bconstexpr\s+RuleId\b")
+
+
+def check_rule_table(root, rules, report):
+    """Checks the rule-ID table; returns the number of entries (0 when there is no table)."""
+    path = os.path.join(root, *RULE_TABLE.split("/"))
+    if not os.path.isfile(path):
+        return 0
+    names, ids = {}, {}
+    for number, text in enumerate(read_lines(path, report, root), start=1):
+        where = f"{RULE_TABLE}:{number}"
+        m = TABLE_ENTRY_RE.match(text)
+        if not m:
+            if TABLE_LIKE_RE.search(text) and not text.lstrip().startswith("//"):
+                report.error(where, "malformed rule table entry (expected "
+                                    "'inline constexpr RuleId kName{\"ID\"};' on one line): "
+                                    f"{text.strip()}")
+            continue
+        name, rule_id = m.groups()
+        if name in names:
+            report.error(where, f"rule table name {name} already declared at line {names[name]}")
+        if rule_id in ids:
+            report.error(where, f"rule table ID {rule_id} already named {ids[rule_id][0]} at "
+                                f"line {ids[rule_id][1]}")
+        if not FULL_ID_RE.match(rule_id) or rule_id not in rules:
+            report.error(where, f"rule table entry {name} names {rule_id}, which spec/ does not "
+                                f"define")
+        names.setdefault(name, number)
+        ids.setdefault(rule_id, (name, number))
+    return len(names)
 
 
 # Rule areas whose normative and derived rules must have a property or a proof.
@@ -321,6 +363,7 @@ def main(argv=None):
     check_registry(rules, report)
     tags = scan_tags(root, rules, report)
     printed = scan_runtime_strings(root, rules, report)
+    table = check_rule_table(root, rules, report)
     check_evidence(rules, report)
     if args.matrix:
         write_matrix(rules, args.matrix, root, report)
@@ -330,7 +373,7 @@ def main(argv=None):
     for w in report.warnings:
         print(f"trace: warning: {w}")
     print(f"trace: {len(rules)} rules, {len(report.errors)} errors, {len(report.warnings)} warnings"
-          f" ({tags} tags, {printed} rule IDs printed at run time"
+          f" ({tags} tags, {printed} rule IDs printed at run time, {table} in the rule table"
           + (f"; matrix: {args.matrix})" if args.matrix else ")"))
     return 1 if report.errors else 0
 

@@ -56,6 +56,17 @@ def run(trace, root):
     return p.returncode, p.stdout + p.stderr, matrix
 
 
+def run_on_good_tree(trace, files):
+    """Runs trace.py on the clean tree plus `files` ({relpath: lines}); returns the exit code,
+    the output and its lines."""
+    with tempfile.TemporaryDirectory() as root:
+        good_tree(root)
+        for relpath, lines in files.items():
+            write(root, relpath, lines)
+        rc, out, _ = run(trace, root)
+    return rc, out, out.splitlines()
+
+
 FAILURES = []
 
 
@@ -125,29 +136,49 @@ def main():
 
     # 4. Rule IDs printed at run time: a renamed rule left in a message is an error; a family
     #    ("DEMO.EDGE.*"), a defined ID, a non-rule token and a comment are not.
-    with tempfile.TemporaryDirectory() as root:
-        good_tree(root)
-        write(root, "tools/cli/messages.cpp",
-              ['const char* a = "is NaN (DEMO.EDGE.ONE)";',
-               'const char* b = "see DEMO.EDGE.* and D3D11.3 15.4";',
-               '// a comment naming DEMO.EDGE.OLD is not printed',
-               'const char* c = "a stale DEMO.EDGE.OLD";'])
-        rc, out, _ = run(trace, root)
-        lines = out.splitlines()
-        expect(rc == 1, "stale printed ID: expected exit 1", out)
-        expect(any("unknown rule ID DEMO.EDGE.OLD printed at run time" in l
-                   and "tools/cli/messages.cpp:4" in l for l in lines),
-               "stale printed ID named with file:line", out)
-        expect("1 errors" in out, "stale printed ID: exactly one error", out)
+    rc, out, lines = run_on_good_tree(trace, {"tools/cli/messages.cpp": [
+        'const char* a = "is NaN (DEMO.EDGE.ONE)";',
+        'const char* b = "see DEMO.EDGE.* and D3D11.3 15.4";',
+        '// a comment naming DEMO.EDGE.OLD is not printed',
+        'const char* c = "a stale DEMO.EDGE.OLD";']})
+    expect(rc == 1, "stale printed ID: expected exit 1", out)
+    expect(any("unknown rule ID DEMO.EDGE.OLD printed at run time" in l
+               and "tools/cli/messages.cpp:4" in l for l in lines),
+           "stale printed ID named with file:line", out)
+    expect("1 errors" in out, "stale printed ID: exactly one error", out)
 
-    # 5. Usage error: no spec/ folder.
+    # 5. The rule-ID table: a defined ID passes; an undefined ID of a known area, an ID of an
+    #    area the registry does not know (which the string scan would skip), a duplicate ID and
+    #    a malformed entry are errors, each named with file:line.
+    table = "kernel/include/rastrules/rules.hpp"
+    rc, out, lines = run_on_good_tree(trace, {table: [
+        "struct RuleId { const char* id; };",
+        'inline constexpr RuleId kDemoOne{"DEMO.EDGE.ONE"};',
+        'inline constexpr RuleId kDemoGone{"DEMO.EDGE.GONE"};',
+        'inline constexpr RuleId kOther{"OTHER.AREA.RULE"};',
+        'inline constexpr RuleId kDemoAgain{"DEMO.EDGE.ONE"};',
+        'constexpr RuleId kDemoBad = {"DEMO.EDGE.TWO"};']})
+    expect(rc == 1, "rule table: expected exit 1", out)
+    expect(not any(f"{table}:2" in l for l in lines), "rule table: a defined ID passes", out)
+    expect(any(f"{table}:3" in l and "DEMO.EDGE.GONE" in l and "does not define" in l
+               for l in lines), "rule table: undefined ID named with file:line", out)
+    expect(any(f"{table}:4" in l and "OTHER.AREA.RULE" in l for l in lines),
+           "rule table: an ID of an unknown area is an error", out)
+    expect(any(f"{table}:5" in l and "already named kDemoOne" in l for l in lines),
+           "rule table: duplicate ID named", out)
+    expect(any(f"{table}:6" in l and "malformed rule table entry" in l for l in lines),
+           "rule table: malformed entry named", out)
+    expect("4 errors" in out and "4 in the rule table" in out,
+           "rule table: exactly four errors, four entries", out)
+
+    # 6. Usage error: no spec/ folder.
     with tempfile.TemporaryDirectory() as root:
         rc, out, _ = run(trace, root)
         expect(rc == 2, "no spec/: expected exit 2", out)
 
     for f in FAILURES:
         print("FAILED:", f, file=sys.stderr)
-    print(f"trace.selftest: 5 scenarios, {len(FAILURES)} failed checks")
+    print(f"trace.selftest: 6 scenarios, {len(FAILURES)} failed checks")
     return 1 if FAILURES else 0
 
 
