@@ -400,10 +400,7 @@ void walk_samples(const PreparedScene& scene, const TriangleSetup& t, const Rend
 }
 
 bool is_single_sample(const PreparedScene& scene) {
-  const MultisampleState& ms = scene.msaa;
-  return ms.count() == 1 && ms.pattern.positions[0] == SampleOffset{} &&
-         ms.effective_mask() == 1u && ms.shading == ShadingRate::kPixel && !ms.has_centroid &&
-         !ms.wants_quads();
+  return rastrules::is_single_sample(scene.msaa);
 }
 
 // The single-sample path (issues #2 and #3).
@@ -535,9 +532,7 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p,
   auto seg_of = [&](std::uint32_t s) {
     return strip ? std::optional<std::uint32_t>(s) : std::nullopt;
   };
-  auto centroid_of = [&](std::uint32_t coverage) {
-    return centroid(ms.centroid_rule, coverage, em, pattern);
-  };
+  auto centroid_of = [&](std::uint32_t coverage) { return fragment_centroid(coverage, ms); };
 
   // rule: MSAA.MASK.AND
   if (em == 0)
@@ -550,7 +545,7 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p,
   std::map<LaneKey, LaneMasks> lanes;
   for (const PixelCoverage& c : cov) {
     // rule: MSAA.MASK.AND
-    const std::uint32_t mask = c.coverage & em;
+    const std::uint32_t mask = fragment_mask(c.coverage, ms);
     if (mask == 0)
       continue; // the mask removed every covered sample: nothing to write
     if (ms.wants_quads())

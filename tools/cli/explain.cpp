@@ -2,12 +2,13 @@
 // rastrules explain: why each primitive covers, or does not cover, one pixel centre; on a
 // multisampled scene, each sample of the pixel (MSAA.COVER.SAMPLE), the sample mask
 // (MSAA.MASK.AND) and the centroid branch (MSAA.CENTROID.*).
-// Every number shown is computed by the kernel (snap, setup_triangle, EdgeSetup::value_at,
-// covers, sample_position, sample_coverage, centroid); this file only reports them and names
-// the rule that decided.
+// The decisions are the kernel's records (rastrules/decision.hpp: decide_pixel), filled by the
+// functions that decide coverage and naming their rules from rastrules/rules.hpp; this file
+// only formats them, as text or JSON.
 
 #include <array>
 #include <cstdio>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,91 +16,46 @@
 #include <nlohmann/json.hpp>
 
 #include "cli.hpp"
+#include "rastrules/decision.hpp"
 #include "rastrules/io/fragment_json.hpp"
 #include "rastrules/io/scene_json.hpp"
 #include "rastrules/line_aa.hpp"
 #include "rastrules/line_aliased.hpp"
 #include "rastrules/msaa.hpp"
+#include "rastrules/rules.hpp"
 #include "rastrules/triangle.hpp"
 
 namespace rastrules::cli {
 namespace {
 
-struct EdgeReport {
-  int from = 0, to = 0; // vertex indices as given in the scene
-  Vec2 a, b;
-  std::int64_t e = 0; // E at the sample, 1/65536 px^2
-  bool top = false, left = false, horizontal = false, inclusive = false, inside = false;
-  std::string kind;     // "top", "bottom", "left", "right"
-  std::string decision; // rule ID and reason
-};
-
-// One triangle's report: a triangle primitive, one half of a point, or one half of a
-// quadrilateral line segment.
-struct PrimitiveReport {
-  std::size_t index = 0;
-  Primitive input; // the triangle's own vertices (for a point or a quad line: its corners)
-  TriangleSetup setup;
-  bool has_edges = false; // false for degenerate triangles
-  bool culled = false;    // the edges are then shown for information only
-  std::array<EdgeReport, 3> edges{};
-  bool covered = false;
-  bool inside_all_edges = false;
-  std::vector<std::string> decided_by;
-};
-
-// One segment of a line or line strip at the pixel (aliased or antialiased).
-struct SegReport {
-  std::uint32_t seg = 0;
-  Vec2 a, b;                      // snapped endpoints
-  bool x_major = false;           // |dx| >= |dy|
-  bool covered = false;           // the kernel's verdict for this pixel
-  std::uint32_t coverage_q16 = 0; // antialiased lines
-  LineDiamondDecision decision;   // aliased lines
-};
-
-// One sample of a multisampled pixel: each triangle of the primitive evaluated there.
-struct SampleReport {
-  std::uint32_t index = 0;
-  SampleOffset offset;
-  Vec2 position;
-  std::vector<PrimitiveReport> tris; // as Report::tris, at this sample
-};
-
-// The coverage of one segment (0 for triangles and points) of a multisampled primitive.
-struct SegmentMask {
-  std::uint32_t seg = 0;
-  std::uint32_t coverage = 0;  // the kernel's sample_coverage (before the mask)
-  std::uint32_t explained = 0; // the samples the per-sample reports find covered
-  std::uint32_t mask = 0;      // coverage & the sample mask (MSAA.MASK.AND)
-  std::optional<Centroid> centroid;
-};
-
-// A multisampled primitive at the pixel.
-struct MsaaReport {
-  std::vector<SampleReport> samples; // empty for lines drawn without triangles
-  bool whole_pixel = false;          // Bresenham lines: every sample of a produced pixel
-  std::vector<SegmentMask> segments;
-};
-
-// The report of one primitive: a triangle (tris[0]), a point (tris: its two triangles), a
-// quadrilateral line (tris: two per segment, tri_seg), or an aliased / antialiased line (segs).
+// The report of one primitive: the kernel's decision at the pixel, with the scene input it
+// was prepared from.
 struct Report {
   std::size_t index = 0;
   PrimitiveType type = PrimitiveType::kTriangle;
   bool aa = false;
   Primitive input;
   std::vector<Vec2> snapped;
-  std::vector<PrimitiveReport> tris;
-  std::vector<std::uint32_t> tri_seg;
-  std::vector<SegReport> segs;
-  bool covered = false;
-  std::optional<MsaaReport> msaa; // multisampled scenes only
+  PixelDecision d;
+  bool covered = false;      // the fragment masks when multisampled, else the centre
+  bool show_samples = false; // multisampled(): the samples are reported
 };
 
 // Whether explain reports samples: more than one sample, or a centroid asked for.
 bool multisampled(const PreparedScene& s) {
   return s.msaa.count() > 1 || s.msaa.has_centroid;
+}
+
+std::string id(RuleId r) {
+  return std::string(r.id);
+}
+
+// "[A, B]": the rules a line of the report follows.
+std::string cite(std::initializer_list<RuleId> ids) {
+  std::string out;
+  for (const RuleId r : ids)
+    out += (out.empty() ? "[" : ", ") + id(r);
+  return out + "]";
 }
 
 std::string mask_text(std::uint32_t m, std::uint32_t n) {
@@ -135,105 +91,99 @@ std::string area_px2(std::int64_t raw) {
   return fixed_decimal(raw, 2 * kSubpixelBits);
 }
 
-std::string edge_decision(const EdgeReport& e, FillConvention fill) {
-  if (e.e > 0)
-    return "TRI.EDGE.FUNCTION: E > 0 -> inside";
-  if (e.e < 0)
-    return "TRI.EDGE.FUNCTION: E < 0 -> outside";
-  const std::string verdict = e.inclusive ? "inside" : "outside";
-  if (fill == FillConvention::kTopLeft) {
-    return "TRI.FILL.TOP_LEFT: E == 0 on a " + e.kind + " edge" +
+// "top", "bottom", "left" or "right".
+std::string edge_kind(const EdgeDecision& e) {
+  return e.horizontal ? (e.top ? "top" : "bottom") : (e.left ? "left" : "right");
+}
+
+// The rule that decided an edge and why.
+// rule: TRI.EDGE.FUNCTION, TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION
+std::string edge_reason(const EdgeDecision& e, FillConvention fill) {
+  const std::int64_t v = e.e.raw();
+  if (v > 0)
+    return id(e.rule) + ": E > 0 -> inside";
+  if (v < 0)
+    return id(e.rule) + ": E < 0 -> outside";
+  const std::string verdict = e.inside ? "inside" : "outside";
+  if (e.rule == rules::kTriFillTopLeft) {
+    return id(e.rule) + ": E == 0 on a " + edge_kind(e) + " edge" +
            (e.inclusive ? "" : " (neither top nor left)") + " -> " + verdict;
   }
-  return "TRI.FILL.CONVENTION: E == 0 on a " + e.kind + " edge, " +
+  return id(e.rule) + ": E == 0 on a " + edge_kind(e) + " edge, " +
          (e.inclusive ? "inclusive" : "not inclusive") + " under " + std::string(to_string(fill)) +
          " -> " + verdict;
 }
 
-PrimitiveReport explain_triangle(std::size_t index, const Primitive& input,
-                                 const TriangleSetup& setup, const RasterState& state,
-                                 Vec2 sample) {
-  PrimitiveReport r;
-  r.index = index;
-  r.input = input;
-  r.setup = setup;
-  r.covered = covers(setup, sample);
-  if (setup.status == TriangleStatus::kDegenerate) {
-    r.decided_by.push_back("TRI.DEGENERATE.ZERO_AREA: A == 0 after snapping -> covers nothing");
-    return r;
+// The rules that decided a triangle, one line each.
+// rule: TRI.DEGENERATE.ZERO_AREA, TRI.CULL.MODE, SNAP.CULL.AFTER_SNAP, TRI.COVER.SAMPLE
+std::vector<std::string> decided_by(const TriangleDecision& d, const RasterState& state) {
+  std::vector<std::string> out;
+  const TriangleSetup& t = d.setup;
+  if (!d.has_edges) {
+    out.push_back(id(d.rule) + ": A == 0 after snapping -> covers nothing");
+    return out;
   }
-  // Culled triangles have no edges in their setup; show the edges they would have without
-  // culling, for information.
-  RasterState no_cull = state;
-  no_cull.cull = CullMode::kNone;
-  const TriangleSetup& edges_of =
-      setup.status == TriangleStatus::kRasterized ? setup : setup_triangle(setup.snapped, no_cull);
-  r.has_edges = true;
-  r.culled = setup.status != TriangleStatus::kRasterized;
-  const std::array<int, 3> order =
-      setup.clockwise ? std::array<int, 3>{0, 1, 2} : std::array<int, 3>{0, 2, 1};
-  r.inside_all_edges = true;
+  if (d.culled) {
+    const bool back = t.status == TriangleStatus::kCulledBack;
+    out.push_back(id(d.rule) + ": " + (back ? "back" : "front") + "-facing (" +
+                  (t.clockwise ? "clockwise" : "counter-clockwise") + " on screen, front face " +
+                  std::string(to_string(state.front_face)) + ") and cull " +
+                  std::string(to_string(state.cull)) + " -> culled");
+    out.push_back(id(rules::kSnapCullAfterSnap) + ": the winding is that of the snapped vertices");
+    return out;
+  }
   for (std::size_t i = 0; i < 3; ++i) {
-    const EdgeSetup& es = edges_of.edges[i];
-    EdgeReport& e = r.edges[i];
-    e.from = order[i];
-    e.to = order[(i + 1) % 3];
-    e.a = es.a;
-    e.b = es.b;
-    e.e = es.value_at(sample).raw();
-    e.top = es.is_top;
-    e.left = es.is_left;
-    e.horizontal = es.a.y == es.b.y;
-    e.kind = e.horizontal ? (es.is_top ? "top" : "bottom") : (es.is_left ? "left" : "right");
-    e.inclusive = es.inclusive;
-    e.inside = inside(es, sample);
-    e.decision = edge_decision(e, state.fill);
-    r.inside_all_edges = r.inside_all_edges && e.inside;
+    const EdgeDecision& e = d.edges[i];
+    if (e.e == EdgeValue{} || !e.inside)
+      out.push_back("edge " + std::to_string(i) + ": " + edge_reason(e, state.fill));
   }
-  if (r.culled) {
-    const bool back = setup.status == TriangleStatus::kCulledBack;
-    r.decided_by.push_back(std::string("TRI.CULL.MODE: ") + (back ? "back" : "front") +
-                           "-facing (" + (setup.clockwise ? "clockwise" : "counter-clockwise") +
-                           " on screen, front face " + std::string(to_string(state.front_face)) +
-                           ") and cull " + std::string(to_string(state.cull)) + " -> culled");
-    r.decided_by.push_back("SNAP.CULL.AFTER_SNAP: the winding is that of the snapped vertices");
-    return r;
+  if (d.on_edges == 2) {
+    out.push_back(id(fill_rule(state.fill)) +
+                  ": the centre is a vertex (on two edges): inside only if both edges are "
+                  "inclusive");
   }
-  int on_edges = 0;
-  for (const EdgeReport& e : r.edges) {
-    if (e.e == 0)
-      ++on_edges;
-    if (e.e == 0 || !e.inside) {
-      r.decided_by.push_back("edge " + std::to_string(&e - r.edges.data()) + ": " + e.decision);
-    }
+  out.push_back(id(d.rule) + (d.covered ? ": inside all three edges -> covered"
+                                        : ": outside at least one edge -> not covered"));
+  return out;
+}
+
+// The vertices of a primitive, input float32 and snapped, each line starting with ind.
+std::string vertices_text(const Primitive& input, const std::vector<Vec2>& snapped,
+                          const std::string& ind) {
+  std::string out =
+      ind + "vertices, input float32 -> snapped 16.8  " + cite({rules::kSnapVertexRound}) + ":\n";
+  for (std::size_t i = 0; i < snapped.size(); ++i) {
+    out += ind + "  v" + std::to_string(i) + " (" + io::format_float(input.v[i][0]) + ", " +
+           io::format_float(input.v[i][1]) + ") -> " + point_px(snapped[i]) + " px = raw " +
+           point_raw(snapped[i]) + "\n";
   }
-  if (on_edges == 2) {
-    r.decided_by.push_back(
-        std::string(state.fill == FillConvention::kTopLeft ? "TRI.FILL.TOP_LEFT"
-                                                           : "TRI.FILL.CONVENTION") +
-        ": the centre is a vertex (on two edges): inside only if both edges are inclusive");
-  }
-  if (r.covered) {
-    r.decided_by.push_back("TRI.COVER.SAMPLE: inside all three edges -> covered");
-  } else {
-    r.decided_by.push_back("TRI.COVER.SAMPLE: outside at least one edge -> not covered");
-  }
-  return r;
+  return out;
+}
+
+// The text of one edge of a triangle at the pixel centre.
+std::string edge_text(const EdgeDecision& e, std::size_t i, const PreparedScene& s,
+                      const std::string& ind) {
+  std::string out = ind + "  edge " + std::to_string(i) + ": v" + std::to_string(e.from) + " " +
+                    point_px(e.a) + " -> v" + std::to_string(e.to) + " " + point_px(e.b) + "\n";
+  out += ind + "    E at the centre = " + std::to_string(e.e.raw()) +
+         " raw = " + area_px2(e.e.raw()) + " px^2  " + cite({rules::kTriEdgeFunction}) + "\n";
+  out += ind + "    " + edge_kind(e) + " edge: top " + (e.top ? "yes" : "no") + ", left " +
+         (e.left ? "yes" : "no") + ", inclusive under " + std::string(to_string(s.state.fill)) +
+         " " + (e.inclusive ? "yes" : "no") + "  " +
+         cite({rules::kTriFillTopEdge, rules::kTriFillLeftEdge}) + "\n";
+  out += ind + "    " + std::string(e.inside ? "inside" : "outside") + ": " +
+         edge_reason(e, s.state.fill) + "\n";
+  return out;
 }
 
 // The text report of one triangle, each line starting with ind.
-std::string triangle_text(const PrimitiveReport& r, const PreparedScene& s, const std::string& ind,
-                          bool show_input = true) {
+std::string triangle_text(const TriangleDecision& d, const Primitive& input, const PreparedScene& s,
+                          const std::string& ind, bool show_input = true) {
   std::string out;
-  const TriangleSetup& t = r.setup;
+  const TriangleSetup& t = d.setup;
 
   if (show_input) {
-    out += ind + "vertices, input float32 -> snapped 16.8  [SNAP.VERTEX.ROUND]:\n";
-    for (std::size_t i = 0; i < 3; ++i) {
-      out += ind + "  v" + std::to_string(i) + " (" + io::format_float(r.input.v[i][0]) + ", " +
-             io::format_float(r.input.v[i][1]) + ") -> " + point_px(t.snapped[i]) + " px = raw " +
-             point_raw(t.snapped[i]) + "\n";
-    }
+    out += vertices_text(input, std::vector<Vec2>(t.snapped.begin(), t.snapped.end()), ind);
   } else {
     out += ind + "vertices (snapped 16.8):";
     for (std::size_t i = 0; i < 3; ++i)
@@ -245,31 +195,22 @@ std::string triangle_text(const PrimitiveReport& r, const PreparedScene& s, cons
          (t.twice_area == 0 ? std::string("degenerate")
                             : std::string(t.clockwise ? "clockwise" : "counter-clockwise") + ", " +
                                   (t.front_facing ? "front-facing" : "back-facing")) +
-         "  [TRI.ORIENT.AREA, TRI.CULL.MODE]\n";
+         "  " + cite({rules::kTriOrientArea, rules::kTriCullMode}) + "\n";
   out += ind + "status: " + std::string(to_string(t.status)) + "\n";
-  if (r.has_edges) {
-    out += ind + "edges in clockwise order" + (t.clockwise ? "" : " (v1 and v2 swapped)") +
-           "  [TRI.ORIENT.NORMALISE]" +
-           (r.culled ? ", for information only (the triangle is culled)" : "") + ":\n";
-    for (std::size_t i = 0; i < 3; ++i) {
-      const EdgeReport& e = r.edges[i];
-      out += ind + "  edge " + std::to_string(i) + ": v" + std::to_string(e.from) + " " +
-             point_px(e.a) + " -> v" + std::to_string(e.to) + " " + point_px(e.b) + "\n";
-      out += ind + "    E at the centre = " + std::to_string(e.e) + " raw = " + area_px2(e.e) +
-             " px^2  [TRI.EDGE.FUNCTION]\n";
-      out += ind + "    " + e.kind + " edge: top " + (e.top ? "yes" : "no") + ", left " +
-             (e.left ? "yes" : "no") + ", inclusive under " + std::string(to_string(s.state.fill)) +
-             " " + (e.inclusive ? "yes" : "no") + "  [TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE]\n";
-      out += ind + "    " + std::string(e.inside ? "inside" : "outside") + ": " + e.decision + "\n";
-    }
+  if (d.has_edges) {
+    out += ind + "edges in clockwise order" + (t.clockwise ? "" : " (v1 and v2 swapped)") + "  " +
+           cite({rules::kTriOrientNormalise}) +
+           (d.culled ? ", for information only (the triangle is culled)" : "") + ":\n";
+    for (std::size_t i = 0; i < 3; ++i)
+      out += edge_text(d.edges[i], i, s, ind);
   }
-  out += ind + "verdict: " + std::string(r.covered ? "covered" : "not covered") + "\n";
+  out += ind + "verdict: " + std::string(d.covered ? "covered" : "not covered") + "\n";
   out += ind + "decided by:\n";
-  for (const std::string& d : r.decided_by)
-    out += ind + "  " + d + "\n";
-  if (r.culled) {
+  for (const std::string& line : decided_by(d, s.state))
+    out += ind + "  " + line + "\n";
+  if (d.culled) {
     out += ind + std::string("  (without culling the centre would be ") +
-           (r.inside_all_edges ? "inside" : "outside") + ")\n";
+           (d.inside_all_edges ? "inside" : "outside") + ")\n";
   }
   return out;
 }
@@ -299,130 +240,82 @@ std::string diamond_text(Vec2 c) {
          at(-h, 0);
 }
 
+// The text of one aliased or antialiased line segment at the pixel.
+std::string segment_text(const LineSegmentDecision& g, bool aa, const PreparedScene& s) {
+  std::string out = "  segment " + std::to_string(g.seg) + ": " + point_px(g.a) + " -> " +
+                    point_px(g.b) + ", " + (g.x_major ? "x-major" : "y-major") + "\n";
+  if (aa) {
+    out += "    coverage = " + fraction_q16(g.coverage_q16) + " (" +
+           std::to_string(g.coverage_q16) +
+           "/65536): mean over the squares R0..R4 (widths 1, 1.5, 2, 2.5, 3) of area(line "
+           "rectangle & Ri) / area(Ri)  " +
+           cite({rules::kSceneOutputCoverage}) + "\n";
+  } else {
+    if (s.line_mode == LineMode::kD3DDiamond) {
+      out += std::string("    test area: the diamond's interior, its lower-left and "
+                         "lower-right edges and bottom corner") +
+             (g.x_major ? "" : ", and (y-major) its right corner") +
+             "; not the upper edges nor the other corners  " + cite({rules::kLineD3DTestArea}) +
+             "\n";
+    } else {
+      out += "    test area: the open diamond; both endpoints shifted by (-e, -e^2)  " +
+             cite({rules::kLineVkTestArea}) + "\n";
+    }
+    const LineDiamondDecision& d = g.diamond;
+    if (d.zero_length)
+      out += "    zero-length line  " + cite({rules::kLineZeroLength}) + "\n";
+    out += "    the segment meets: " + features_text(d.met_features) + "\n";
+    out += "    of which in the test area: " + features_text(d.met_features & d.included_features) +
+           "\n";
+    out += std::string("    enters the test area: ") + (d.entered ? "yes" : "no") +
+           "; ends inside it: " + (d.end_inside ? "yes" : "no") + "\n";
+    out += "    reason: " + std::string(d.reason) + "\n";
+  }
+  out += std::string("    verdict: ") +
+         (g.covered ? (aa ? "fragment (coverage > 0)" : "covered: the segment exits the diamond")
+                    : (aa ? "no fragment (coverage 0)"
+                          : "not covered: the segment does not exit the diamond")) +
+         "\n";
+  return out;
+}
+
 // The text of a point, a line or a line strip.
 std::string other_text(const Report& r, const PreparedScene& s, Vec2 sample) {
   std::string out = "\nprimitive " + std::to_string(r.index) + ": " +
                     std::string(to_string(r.type)) + (r.aa ? " (antialiased)" : "") + "\n";
-  out += "  vertices, input float32 -> snapped 16.8  [SNAP.VERTEX.ROUND]:\n";
-  for (std::size_t i = 0; i < r.snapped.size(); ++i) {
-    out += "    v" + std::to_string(i) + " (" + io::format_float(r.input.v[i][0]) + ", " +
-           io::format_float(r.input.v[i][1]) + ") -> " + point_px(r.snapped[i]) + " px = raw " +
-           point_raw(r.snapped[i]) + "\n";
-  }
+  out += vertices_text(r.input, r.snapped, "  ");
+  const PixelDecision& d = r.d;
   if (r.type == PrimitiveType::kPoint) {
     // rule: SCENE.PRIM.POINT
     out += "  a 1x1 square centred on v0, drawn as two triangles (Z pattern) under the triangle "
-           "rules, never culled  [SCENE.PRIM.POINT]\n";
-    for (std::size_t k = 0; k < r.tris.size(); ++k) {
+           "rules, never culled  " +
+           cite({rules::kScenePrimPoint}) + "\n";
+    for (std::size_t k = 0; k < d.triangles.size(); ++k) {
       out += "  triangle " + std::to_string(k) + " of the point:\n";
-      out += triangle_text(r.tris[k], s, "    ", false);
+      out += triangle_text(d.triangles[k], r.input, s, "    ", false);
     }
-  } else if (!r.tris.empty()) {
+  } else if (!d.triangles.empty()) {
     out += "  quadrilateral line (line_mode " + std::string(io::line_mode_name(s.line_mode)) +
-           "): a rectangle of two triangles per segment under the triangle rules, never culled  "
-           "[SCENE.LINE_MODE]\n";
-    for (std::size_t k = 0; k < r.tris.size(); ++k) {
-      out += "  segment " + std::to_string(r.tri_seg[k]) + ", triangle " + std::to_string(k % 2) +
-             ":\n";
-      out += triangle_text(r.tris[k], s, "    ", false);
+           "): a rectangle of two triangles per segment under the triangle rules, never culled  " +
+           cite({rules::kSceneLineMode}) + "\n";
+    for (std::size_t k = 0; k < d.triangles.size(); ++k) {
+      out += "  segment " + std::to_string(d.triangle_seg[k]) + ", triangle " +
+             std::to_string(k % 2) + ":\n";
+      out += triangle_text(d.triangles[k], r.input, s, "    ", false);
     }
   } else {
     if (!r.aa)
       out += "  pixel's diamond test area: " + diamond_text(sample) + "\n";
-    for (const SegReport& g : r.segs) {
-      out += "  segment " + std::to_string(g.seg) + ": " + point_px(g.a) + " -> " + point_px(g.b) +
-             ", " + (g.x_major ? "x-major" : "y-major") + "\n";
-      if (r.aa) {
-        out += "    coverage = " + fraction_q16(g.coverage_q16) + " (" +
-               std::to_string(g.coverage_q16) +
-               "/65536): mean over the squares R0..R4 (widths 1, 1.5, 2, 2.5, 3) of area(line "
-               "rectangle & Ri) / area(Ri)  [SCENE.OUTPUT.COVERAGE]\n";
-      } else {
-        if (s.line_mode == LineMode::kD3DDiamond) {
-          out += std::string("    test area: the diamond's interior, its lower-left and "
-                             "lower-right edges and bottom corner") +
-                 (g.x_major ? "" : ", and (y-major) its right corner") +
-                 "; not the upper edges nor the other corners  [LINE.D3D.TEST_AREA]\n";
-        } else {
-          out += "    test area: the open diamond; both endpoints shifted by (-e, -e^2)  "
-                 "[LINE.VK.TEST_AREA]\n";
-        }
-        const LineDiamondDecision& d = g.decision;
-        if (d.zero_length)
-          out += "    zero-length line  [LINE.ZERO_LENGTH]\n";
-        out += "    the segment meets: " + features_text(d.met_features) + "\n";
-        out += "    of which in the test area: " +
-               features_text(d.met_features & d.included_features) + "\n";
-        out += std::string("    enters the test area: ") + (d.entered ? "yes" : "no") +
-               "; ends inside it: " + (d.end_inside ? "yes" : "no") + "\n";
-        out += "    reason: " + std::string(d.reason) + "\n";
-      }
-      out +=
-          std::string("    verdict: ") +
-          (g.covered ? (r.aa ? "fragment (coverage > 0)" : "covered: the segment exits the diamond")
-                     : (r.aa ? "no fragment (coverage 0)"
-                             : "not covered: the segment does not exit the diamond")) +
-          "\n";
-    }
+    for (const LineSegmentDecision& g : d.segments)
+      out += segment_text(g, r.aa, s);
   }
   out += std::string("  verdict: ") + (r.covered ? "covered" : "not covered") + "\n";
   return out;
 }
 
-// Each sample of pixel (x, y) for one primitive: its triangles' edges at the sample, the
-// kernel's coverage mask per segment, the mask AND and the centroid.
-// rule: MSAA.COVER.SAMPLE, MSAA.MASK.AND, MSAA.CENTROID.D3D11, MSAA.CENTROID.D3D10
-MsaaReport explain_samples(const PreparedScene& s, const PreparedPrimitive& prim, const Report& r,
-                           std::int32_t x, std::int32_t y) {
-  MsaaReport m;
-  const MultisampleState& ms = s.msaa;
-  const std::uint32_t n = ms.count();
-  auto segment = [&](std::uint32_t seg) -> SegmentMask& {
-    for (SegmentMask& g : m.segments) {
-      if (g.seg == seg)
-        return g;
-    }
-    m.segments.push_back(SegmentMask{seg, 0, 0, 0, std::nullopt});
-    return m.segments.back();
-  };
-  if (!prim.triangles.empty()) {
-    for (std::uint32_t k = 0; k < n; ++k) {
-      SampleReport sr;
-      sr.index = k;
-      sr.offset = ms.pattern.positions[k];
-      sr.position = sample_position(x, y, sr.offset);
-      for (std::size_t t = 0; t < prim.triangles.size(); ++t) {
-        PrimitiveReport tr = explain_triangle(r.index, r.tris[t].input, prim.triangles[t].setup,
-                                              s.state, sr.position);
-        if (tr.covered)
-          segment(prim.triangles[t].seg).explained |= std::uint32_t{1} << k;
-        sr.tris.push_back(std::move(tr));
-      }
-      m.samples.push_back(std::move(sr));
-    }
-    for (const PreparedTriangle& t : prim.triangles) {
-      segment(t.seg).coverage |= sample_coverage(t.setup, x, y, ms.pattern);
-    }
-  } else {
-    // rule: MSAA.LINE.MODE
-    m.whole_pixel = true;
-    for (const SegReport& g : r.segs) {
-      SegmentMask& sm = segment(g.seg);
-      if (g.covered)
-        sm.coverage = sm.explained = full_mask(n);
-    }
-  }
-  for (SegmentMask& g : m.segments) {
-    g.mask = g.coverage & ms.effective_mask();
-    if (ms.has_centroid)
-      g.centroid = centroid(ms.centroid_rule, g.coverage, ms.sample_mask, ms.pattern);
-  }
-  return m;
-}
-
 // rule: SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.LINE_MODE
 Report explain_primitive(const LoadedScene& loaded, std::size_t p, std::int32_t x, std::int32_t y,
-                         Vec2 sample) {
+                         Vec2 /*sample*/) {
   const PreparedScene& s = *loaded.prepared;
   const PreparedPrimitive& prim = s.primitives[p];
   Report r;
@@ -431,154 +324,116 @@ Report explain_primitive(const LoadedScene& loaded, std::size_t p, std::int32_t 
   r.aa = prim.aa;
   r.input = loaded.scene.primitives[p];
   r.snapped = prim.v;
-  for (const PreparedTriangle& t : prim.triangles) {
-    Primitive corners = make_triangle({});
-    if (prim.type == PrimitiveType::kTriangle)
-      corners = r.input;
-    PrimitiveReport tr = explain_triangle(p, corners, t.setup, s.state, sample);
-    r.covered = r.covered || tr.covered;
-    r.tris.push_back(std::move(tr));
-    r.tri_seg.push_back(t.seg);
-  }
-  if (prim.triangles.empty() && prim.type != PrimitiveType::kTriangle) {
-    // The kernel's verdict per segment (aliased_line_covers' explanation, or the AA
-    // coverage); the fragment list agrees with it.
-    for (std::size_t k = 0; k + 1 < prim.v.size(); ++k) {
-      SegReport g;
-      g.seg = static_cast<std::uint32_t>(k);
-      g.a = prim.v[k];
-      g.b = prim.v[k + 1];
-      const std::int64_t dx = std::int64_t{g.b.x.raw()} - g.a.x.raw();
-      const std::int64_t dy = std::int64_t{g.b.y.raw()} - g.a.y.raw();
-      g.x_major = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy);
-      if (prim.aa) {
-        const AACoverage c = aa_line_coverage(g.a, g.b, x, y);
-        g.covered = c.positive;
-        g.coverage_q16 = c.q16;
-      } else {
-        g.decision = explain_aliased_line_pixel(g.a, g.b, s.line_mode, x, y);
-        g.covered = g.decision.covered;
-        g.x_major = g.decision.x_major;
-      }
-      r.covered = r.covered || g.covered;
-      r.segs.push_back(g);
-    }
-  }
-  if (multisampled(s)) {
-    // A fragment exists when some sample in the mask is covered (MSAA.MASK.AND).
-    r.msaa = explain_samples(s, prim, r, x, y);
-    r.covered = false;
-    for (const SegmentMask& g : r.msaa->segments)
-      r.covered = r.covered || g.mask != 0;
-  }
+  r.d = decide_pixel(s, p, x, y);
+  // A fragment exists when some sample in the mask is covered (MSAA.MASK.AND).
+  r.show_samples = multisampled(s) && r.d.msaa.has_value();
+  r.covered = r.show_samples ? r.d.covered : r.d.centre_covered;
   return r;
 }
 
-std::string centroid_rule_id(CentroidRule r) {
-  return r == CentroidRule::kD3D11 ? "MSAA.CENTROID.D3D11" : "MSAA.CENTROID.D3D10";
+// The per-sample lines of one sample of a multisampled primitive.
+// rule: MSAA.SAMPLE.POSITION, MSAA.COVER.SAMPLE
+std::string sample_text(const SampleDecision& sd, const PreparedScene& s, bool several) {
+  std::string out = "  sample " + std::to_string(sd.index) + " at " + offset_text(sd.offset) +
+                    " -> " + point_px(sd.position) + " px = raw " + point_raw(sd.position) + "  " +
+                    cite({rules::kMsaaSamplePosition}) + "\n";
+  for (std::size_t t = 0; t < sd.triangles.size(); ++t) {
+    const TriangleDecision& tr = sd.triangles[t];
+    const std::string ind = several ? "      " : "    ";
+    if (several)
+      out += "    triangle " + std::to_string(t) + ":\n";
+    if (!tr.has_edges) {
+      out += ind + "degenerate: covers nothing  " + cite({tr.rule}) + "\n";
+      continue;
+    }
+    for (std::size_t i = 0; i < 3; ++i) {
+      const EdgeDecision& e = tr.edges[i];
+      out += ind + "edge " + std::to_string(i) + " v" + std::to_string(e.from) + "->v" +
+             std::to_string(e.to) + " (" + edge_kind(e) + "): E = " + std::to_string(e.e.raw()) +
+             " raw = " + area_px2(e.e.raw()) + " px^2 -> " + (e.inside ? "inside" : "outside") +
+             ": " + edge_reason(e, s.state.fill) + "\n";
+    }
+    if (tr.culled)
+      out += ind + "culled: " + decided_by(tr, s.state).front() + "\n";
+    out += ind + (tr.covered ? "covered" : "not covered") + "  " + cite({rules::kMsaaCoverSample}) +
+           "\n";
+  }
+  return out;
 }
 
-std::string pattern_rule_id(PatternKind k) {
-  switch (k) {
-  case PatternKind::kStandard:
-    return "MSAA.PATTERN.STANDARD";
-  case PatternKind::kCenter:
-    return "MSAA.PATTERN.CENTER";
-  case PatternKind::kCustom:
-    return "MSAA.PATTERN.CUSTOM";
+// The mask lines of one segment of a multisampled primitive.
+// rule: MSAA.COVER.SAMPLE, MSAA.MASK.AND, MSAA.CENTROID.D3D11, MSAA.CENTROID.D3D10
+std::string segment_mask_text(const SegmentMaskDecision& g, const std::string& seg,
+                              const PreparedScene& s, std::int32_t x, std::int32_t y) {
+  const MultisampleState& ms = s.msaa;
+  const std::uint32_t n = ms.count();
+  std::string out =
+      seg + "coverage " + mask_text(g.coverage, n) + "  " + cite({rules::kMsaaCoverSample}) + "\n";
+  if (g.explained != g.coverage) {
+    out += seg + "internal error: the samples above say " + mask_text(g.explained, n) + "\n";
   }
-  return "MSAA.PATTERN.GRID";
+  out += seg + "sample mask " + mask_text(ms.effective_mask(), n) + " -> fragment mask " +
+         mask_text(g.mask, n) + "  " + cite({rules::kMsaaMaskAnd}) + "\n";
+  if (g.centroid) {
+    const Centroid& c = *g.centroid;
+    const Vec2 at = sample_position(x, y, c.offset);
+    out += seg + "centroid (" + std::string(to_string(ms.centroid_rule)) +
+           "): " + std::string(to_string(c.branch)) + " -> " + offset_text(c.offset) + " = " +
+           point_px(at) + " px  " + cite({centroid_rule(ms.centroid_rule)}) +
+           (g.mask == 0 ? " (no fragment: the pixel is covered by no sample in the mask)" : "") +
+           "\n";
+  }
+  out += seg + "verdict: " +
+         (g.mask != 0 ? "fragment, mask " + std::to_string(g.mask) : std::string("no fragment")) +
+         "\n";
+  return out;
 }
 
 // The text of one primitive of a multisampled scene: each sample of the pixel.
 // rule: MSAA.COVER.SAMPLE, MSAA.MASK.AND, MSAA.CENTROID.D3D11, MSAA.CENTROID.D3D10
 std::string msaa_text(const Report& r, const PreparedScene& s, std::int32_t x, std::int32_t y) {
-  const MsaaReport& m = *r.msaa;
+  const MsaaDecision& m = *r.d.msaa;
   const MultisampleState& ms = s.msaa;
   const std::uint32_t n = ms.count();
   std::string out = "\nprimitive " + std::to_string(r.index) + ": " +
                     std::string(to_string(r.type)) + (r.aa ? " (antialiased)" : "") + "\n";
-  out += "  vertices, input float32 -> snapped 16.8  [SNAP.VERTEX.ROUND]:\n";
-  for (std::size_t i = 0; i < r.snapped.size(); ++i) {
-    out += "    v" + std::to_string(i) + " (" + io::format_float(r.input.v[i][0]) + ", " +
-           io::format_float(r.input.v[i][1]) + ") -> " + point_px(r.snapped[i]) + " px = raw " +
-           point_raw(r.snapped[i]) + "\n";
-  }
-  const bool several = m.samples.empty() ? false : m.samples[0].tris.size() > 1;
+  out += vertices_text(r.input, r.snapped, "  ");
+  const bool several = m.samples.empty() ? false : m.samples[0].triangles.size() > 1;
   if (!m.samples.empty()) {
-    for (std::size_t t = 0; t < r.tris.size(); ++t) {
-      const PrimitiveReport& tr = r.tris[t];
-      std::string name = several ? "  triangle " + std::to_string(t) +
-                                       (r.type == PrimitiveType::kPoint
-                                            ? " of the point"
-                                            : " (segment " + std::to_string(r.tri_seg[t]) + ")")
-                                 : std::string("  triangle");
-      out += name + ": twice signed area A = " + std::to_string(tr.setup.twice_area) + " raw, " +
-             (tr.setup.twice_area == 0
+    for (std::size_t t = 0; t < r.d.triangles.size(); ++t) {
+      const TriangleSetup& setup = r.d.triangles[t].setup;
+      std::string name = several
+                             ? "  triangle " + std::to_string(t) +
+                                   (r.type == PrimitiveType::kPoint
+                                        ? " of the point"
+                                        : " (segment " + std::to_string(r.d.triangle_seg[t]) + ")")
+                             : std::string("  triangle");
+      out += name + ": twice signed area A = " + std::to_string(setup.twice_area) + " raw, " +
+             (setup.twice_area == 0
                   ? std::string("degenerate")
-                  : std::string(tr.setup.clockwise ? "clockwise" : "counter-clockwise")) +
-             ", status " + std::string(to_string(tr.setup.status)) +
-             "  [TRI.ORIENT.AREA, TRI.CULL.MODE]\n";
+                  : std::string(setup.clockwise ? "clockwise" : "counter-clockwise")) +
+             ", status " + std::string(to_string(setup.status)) + "  " +
+             cite({rules::kTriOrientArea, rules::kTriCullMode}) + "\n";
     }
   }
   out += "  " + std::to_string(n) + " sample" + (n == 1 ? "" : "s") + ", " +
-         std::string(to_string(ms.pattern.kind)) + " pattern  [" +
-         pattern_rule_id(ms.pattern.kind) + "]\n";
+         std::string(to_string(ms.pattern.kind)) + " pattern  " + cite({m.pattern_rule}) + "\n";
   if (m.whole_pixel) {
     out += "  a " + std::string(io::line_mode_name(s.line_mode)) +
-           " line covers every sample of each pixel it produces  [MSAA.LINE.MODE]\n";
-    for (const SegReport& g : r.segs) {
+           " line covers every sample of each pixel it produces  " + cite({rules::kMsaaLineMode}) +
+           "\n";
+    for (const LineSegmentDecision& g : r.d.segments) {
       out += "  segment " + std::to_string(g.seg) + ": " +
              (g.covered ? "produces the pixel" : "does not produce the pixel") + "\n";
     }
   }
-  for (const SampleReport& sr : m.samples) {
-    out += "  sample " + std::to_string(sr.index) + " at " + offset_text(sr.offset) + " -> " +
-           point_px(sr.position) + " px = raw " + point_raw(sr.position) +
-           "  [MSAA.SAMPLE.POSITION]\n";
-    for (std::size_t t = 0; t < sr.tris.size(); ++t) {
-      const PrimitiveReport& tr = sr.tris[t];
-      const std::string ind = several ? "      " : "    ";
-      if (several)
-        out += "    triangle " + std::to_string(t) + ":\n";
-      if (!tr.has_edges) {
-        out += ind + "degenerate: covers nothing  [TRI.DEGENERATE.ZERO_AREA]\n";
-        continue;
-      }
-      for (std::size_t i = 0; i < 3; ++i) {
-        const EdgeReport& e = tr.edges[i];
-        out += ind + "edge " + std::to_string(i) + " v" + std::to_string(e.from) + "->v" +
-               std::to_string(e.to) + " (" + e.kind + "): E = " + std::to_string(e.e) +
-               " raw = " + area_px2(e.e) + " px^2 -> " + (e.inside ? "inside" : "outside") + ": " +
-               e.decision + "\n";
-      }
-      if (tr.culled)
-        out += ind + "culled: " + tr.decided_by.front() + "\n";
-      out += ind + (tr.covered ? "covered" : "not covered") + "  [MSAA.COVER.SAMPLE]\n";
-    }
-  }
-  for (const SegmentMask& g : m.segments) {
+  for (const SampleDecision& sd : m.samples)
+    out += sample_text(sd, s, several);
+  for (const SegmentMaskDecision& g : m.segments) {
     const std::string seg = m.segments.size() > 1 || r.type == PrimitiveType::kLineStrip
                                 ? "  segment " + std::to_string(g.seg) + ": "
                                 : "  ";
-    out += seg + "coverage " + mask_text(g.coverage, n) + "  [MSAA.COVER.SAMPLE]\n";
-    if (g.explained != g.coverage) {
-      out += seg + "internal error: the samples above say " + mask_text(g.explained, n) + "\n";
-    }
-    out += seg + "sample mask " + mask_text(ms.effective_mask(), n) + " -> fragment mask " +
-           mask_text(g.mask, n) + "  [MSAA.MASK.AND]\n";
-    if (g.centroid) {
-      const Centroid& c = *g.centroid;
-      const Vec2 at = sample_position(x, y, c.offset);
-      out += seg + "centroid (" + std::string(to_string(ms.centroid_rule)) +
-             "): " + std::string(to_string(c.branch)) + " -> " + offset_text(c.offset) + " = " +
-             point_px(at) + " px  [" + centroid_rule_id(ms.centroid_rule) + "]" +
-             (g.mask == 0 ? " (no fragment: the pixel is covered by no sample in the mask)" : "") +
-             "\n";
-    }
-    out += seg + "verdict: " +
-           (g.mask != 0 ? "fragment, mask " + std::to_string(g.mask) : std::string("no fragment")) +
-           "\n";
+    out += segment_mask_text(g, seg, s, x, y);
   }
   if (m.segments.empty())
     out += "  verdict: no fragment\n";
@@ -599,34 +454,29 @@ void print_text(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
          ", " + std::to_string(reports.size()) + " primitive" + (reports.size() == 1 ? "" : "s") +
          "\n";
   out += "pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): centre " +
-         point_px(sample) + " px = raw " + point_raw(sample) + "  [COORD.PIXEL.CENTER]\n";
+         point_px(sample) + " px = raw " + point_raw(sample) + "  " +
+         cite({rules::kCoordPixelCenter}) + "\n";
   if (multisampled(s)) {
     const MultisampleState& ms = s.msaa;
     out += "multisampling: " + std::to_string(ms.count()) + " samples, " +
            std::string(to_string(ms.pattern.kind)) + " pattern, sample mask " +
            mask_text(ms.effective_mask(), ms.count()) + ", centroid " +
            (ms.has_centroid ? std::string(to_string(ms.centroid_rule)) : std::string("none")) +
-           ", shading " + std::string(to_string(ms.shading)) + "  [SCENE.MSAA]\n";
+           ", shading " + std::string(to_string(ms.shading)) + "  " + cite({rules::kSceneMsaa}) +
+           "\n";
   }
   std::vector<std::size_t> covering;
   for (const Report& report : reports) {
-    if (report.msaa) {
+    if (report.show_samples) {
       out += msaa_text(report, s, x, y);
-      if (report.covered)
-        covering.push_back(report.index);
-      continue;
-    }
-    if (report.type != PrimitiveType::kTriangle) {
+    } else if (report.type != PrimitiveType::kTriangle) {
       out += other_text(report, s, sample);
-      if (report.covered)
-        covering.push_back(report.index);
-      continue;
+    } else {
+      out += "\nprimitive " + std::to_string(report.index) + ": triangle\n";
+      out += triangle_text(report.d.triangles[0], report.input, s, "  ");
     }
-    const PrimitiveReport& r = report.tris[0];
-    out += "\nprimitive " + std::to_string(r.index) + ": triangle\n";
-    out += triangle_text(r, s, "  ");
-    if (r.covered)
-      covering.push_back(r.index);
+    if (report.covered)
+      covering.push_back(report.index);
   }
   out += "\npixel (" + std::to_string(x) + ", " + std::to_string(y) + "): ";
   if (covering.empty()) {
@@ -646,14 +496,15 @@ ojson point_json(Vec2 v) {
   return ojson::array({v.x.raw(), v.y.raw()});
 }
 
-ojson triangle_json(const PrimitiveReport& r) {
+ojson triangle_json(std::size_t index, const Primitive& input, const TriangleDecision& d,
+                    const RasterState& state) {
   using json = ojson;
   auto point = point_json;
-  const TriangleSetup& t = r.setup;
+  const TriangleSetup& t = d.setup;
   json p;
-  p["prim"] = r.index;
+  p["prim"] = index;
   json in = json::array();
-  for (const auto& v : r.input.v)
+  for (const auto& v : input.v)
     in.push_back({io::format_float(v[0]), io::format_float(v[1])});
   p["input"] = in;
   json snapped = json::array();
@@ -665,29 +516,29 @@ ojson triangle_json(const PrimitiveReport& r) {
   p["front_facing"] = t.front_facing;
   p["status"] = to_string(t.status);
   json edges = json::array();
-  if (r.has_edges) {
-    for (const EdgeReport& e : r.edges) {
+  if (d.has_edges) {
+    for (const EdgeDecision& e : d.edges) {
       edges.push_back({{"from", e.from},
                        {"to", e.to},
                        {"a_raw", point(e.a)},
                        {"b_raw", point(e.b)},
-                       {"e_raw", e.e},
-                       {"kind", e.kind},
+                       {"e_raw", e.e.raw()},
+                       {"kind", edge_kind(e)},
                        {"top", e.top},
                        {"left", e.left},
                        {"inclusive", e.inclusive},
                        {"inside", e.inside},
-                       {"decision", e.decision}});
+                       {"decision", edge_reason(e, state.fill)}});
     }
   }
   p["edges"] = edges;
-  p["edges_informative_only"] = r.culled;
-  p["covered"] = r.covered;
-  p["decided_by"] = r.decided_by;
+  p["edges_informative_only"] = d.culled;
+  p["covered"] = d.covered;
+  p["decided_by"] = decided_by(d, state);
   return p;
 }
 
-ojson other_json(const Report& r) {
+ojson other_json(const Report& r, const PreparedScene& s) {
   using json = ojson;
   json p;
   p["prim"] = r.index;
@@ -702,19 +553,19 @@ ojson other_json(const Report& r) {
   for (const Vec2& v : r.snapped)
     snapped.push_back(point_json(v));
   p["snapped_raw"] = snapped;
-  if (!r.tris.empty()) {
+  if (!r.d.triangles.empty()) {
     json tris = json::array();
-    for (std::size_t k = 0; k < r.tris.size(); ++k) {
-      json t = triangle_json(r.tris[k]);
+    for (std::size_t k = 0; k < r.d.triangles.size(); ++k) {
+      json t = triangle_json(r.index, r.input, r.d.triangles[k], s.state);
       t.erase("input");
       if (r.type != PrimitiveType::kPoint)
-        t["seg"] = r.tri_seg[k];
+        t["seg"] = r.d.triangle_seg[k];
       tris.push_back(t);
     }
     p["triangles"] = tris;
   } else {
     json segs = json::array();
-    for (const SegReport& g : r.segs) {
+    for (const LineSegmentDecision& g : r.d.segments) {
       json j = {{"seg", g.seg},
                 {"a_raw", point_json(g.a)},
                 {"b_raw", point_json(g.b)},
@@ -724,12 +575,11 @@ ojson other_json(const Report& r) {
         j["coverage_q16"] = g.coverage_q16;
         j["coverage"] = fraction_q16(g.coverage_q16);
       } else {
-        j["met"] = features_text(g.decision.met_features);
-        j["met_in_test_area"] =
-            features_text(g.decision.met_features & g.decision.included_features);
-        j["entered"] = g.decision.entered;
-        j["end_inside"] = g.decision.end_inside;
-        j["reason"] = g.decision.reason;
+        j["met"] = features_text(g.diamond.met_features);
+        j["met_in_test_area"] = features_text(g.diamond.met_features & g.diamond.included_features);
+        j["entered"] = g.diamond.entered;
+        j["end_inside"] = g.diamond.end_inside;
+        j["reason"] = g.diamond.reason;
       }
       segs.push_back(j);
     }
@@ -742,36 +592,36 @@ ojson other_json(const Report& r) {
 // rule: MSAA.COVER.SAMPLE, MSAA.MASK.AND, MSAA.CENTROID.D3D11, MSAA.CENTROID.D3D10
 ojson msaa_json(const Report& r, const PreparedScene& s) {
   using json = ojson;
-  const MsaaReport& m = *r.msaa;
+  const MsaaDecision& m = *r.d.msaa;
   json samples = json::array();
-  for (const SampleReport& sr : m.samples) {
+  for (const SampleDecision& sd : m.samples) {
     json tris = json::array();
     bool covered = false;
-    for (const PrimitiveReport& tr : sr.tris) {
+    for (const TriangleDecision& tr : sd.triangles) {
       json edges = json::array();
       if (tr.has_edges) {
-        for (const EdgeReport& e : tr.edges) {
+        for (const EdgeDecision& e : tr.edges) {
           edges.push_back({{"from", e.from},
                            {"to", e.to},
-                           {"kind", e.kind},
-                           {"e_raw", e.e},
+                           {"kind", edge_kind(e)},
+                           {"e_raw", e.e.raw()},
                            {"inclusive", e.inclusive},
                            {"inside", e.inside},
-                           {"decision", e.decision}});
+                           {"decision", edge_reason(e, s.state.fill)}});
         }
       }
       tris.push_back(
           {{"status", to_string(tr.setup.status)}, {"edges", edges}, {"covered", tr.covered}});
       covered = covered || tr.covered;
     }
-    samples.push_back({{"sample", sr.index},
-                       {"offset", {sr.offset.x, sr.offset.y}},
-                       {"position_raw", point_json(sr.position)},
+    samples.push_back({{"sample", sd.index},
+                       {"offset", {sd.offset.x, sd.offset.y}},
+                       {"position_raw", point_json(sd.position)},
                        {"triangles", tris},
                        {"covered", covered}});
   }
   json segs = json::array();
-  for (const SegmentMask& g : m.segments) {
+  for (const SegmentMaskDecision& g : m.segments) {
     json j = {{"seg", g.seg},
               {"coverage", g.coverage},
               {"sample_mask", s.msaa.effective_mask()},
@@ -815,8 +665,10 @@ void print_json(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
       doc["centroid"] = to_string(s.msaa.centroid_rule);
   }
   for (const Report& r : reports) {
-    ojson p = r.type == PrimitiveType::kTriangle ? triangle_json(r.tris[0]) : other_json(r);
-    if (r.msaa) {
+    ojson p = r.type == PrimitiveType::kTriangle
+                  ? triangle_json(r.index, r.input, r.d.triangles[0], s.state)
+                  : other_json(r, s);
+    if (r.show_samples) {
       p["covered"] = r.covered;
       p["msaa"] = msaa_json(r, s);
     }

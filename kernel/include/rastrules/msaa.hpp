@@ -187,6 +187,33 @@ struct MultisampleState {
   [[nodiscard]] bool wants_quads() const { return quads || derivatives != DerivativeMode::kNone; }
 };
 
+// Returns whether a scene with this state renders coverage only: one sample at the pixel
+// centre, full mask, pixel shading, no centroid, no quads (the single-sample path of
+// rasterize_primitive; any other state takes the multisampled path).
+[[nodiscard]] inline bool is_single_sample(const MultisampleState& ms) {
+  return ms.count() == 1 && ms.pattern.positions[0] == SampleOffset{} &&
+         ms.effective_mask() == 1u && ms.shading == ShadingRate::kPixel && !ms.has_centroid &&
+         !ms.wants_quads();
+}
+
+// Returns the fragment mask of a pixel whose coverage before the sample mask is `coverage`:
+// coverage & the effective sample mask. The multisampled path and the decision records
+// (rastrules/decision.hpp) both decide with this function.
+// rule: MSAA.MASK.AND
+[[nodiscard]] inline std::uint32_t fragment_mask(std::uint32_t coverage,
+                                                 const MultisampleState& ms) {
+  return coverage & ms.effective_mask();
+}
+
+// Returns the centroid evaluation point of a pixel whose coverage before the sample mask is
+// `coverage`, under the state's centroid rule, sample mask and pattern. The multisampled path
+// and the decision records both decide with this function.
+// rule: MSAA.CENTROID.D3D11, MSAA.CENTROID.D3D10
+[[nodiscard]] inline Centroid fragment_centroid(std::uint32_t coverage,
+                                                const MultisampleState& ms) {
+  return centroid(ms.centroid_rule, coverage, ms.effective_mask(), ms.pattern);
+}
+
 // The derivatives of a fragment's evaluation point (pixel centre, centroid or sample) across
 // its quad, in 1/16 px: ddx = (ddx_x, ddx_y), ddy = (ddy_x, ddy_y). With the pixel centre or a
 // fixed sample the result is ddx = (16, 0), ddy = (0, 16); centroid evaluation makes it vary

@@ -70,11 +70,18 @@ struct EdgeSetup {
   }
 };
 
+// Returns whether a sample whose edge value is v is inside an edge that is (or is not)
+// inclusive: E > 0, or E == 0 and the edge is inclusive. inside() and the decision records
+// (rastrules/decision.hpp) both decide with this function.
+// rule: TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION
+[[nodiscard]] constexpr bool inside_value(EdgeValue v, bool inclusive) {
+  return v > EdgeValue{} || (v == EdgeValue{} && inclusive);
+}
+
 // Returns whether sample s is inside edge e: E > 0, or E == 0 and the edge is inclusive.
 // rule: TRI.FILL.TOP_LEFT
 [[nodiscard]] constexpr bool inside(const EdgeSetup& e, Vec2 s) {
-  const EdgeValue v = e.value_at(s);
-  return v > EdgeValue{} || (v == EdgeValue{} && e.inclusive);
+  return inside_value(e.value_at(s), e.inclusive);
 }
 
 enum class TriangleStatus {
@@ -93,6 +100,28 @@ struct TriangleSetup {
   std::int64_t twice_area = 0;      // signed, 1/65536 px^2; > 0 clockwise
   std::array<EdgeSetup, 3> edges{}; // clockwise order; valid when status == kRasterized
 };
+
+// Returns the three edges of the triangle with snapped vertices v (in the order given) in
+// clockwise order: (v0, v1, v2) when `clockwise`, else (v0, v2, v1); each with its top, left and
+// inclusive flags under `fill`. setup_triangle() and the decision records (which show a culled
+// triangle's edges for information) both build edges with this function.
+// rule: TRI.ORIENT.NORMALISE, TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE, TRI.FILL.CONVENTION
+[[nodiscard]] constexpr std::array<EdgeSetup, 3> setup_edges(const std::array<Vec2, 3>& v,
+                                                             bool clockwise, FillConvention fill) {
+  std::array<EdgeSetup, 3> edges{};
+  const std::array<Vec2, 3> cw = clockwise ? v : std::array<Vec2, 3>{v[0], v[2], v[1]};
+  for (int i = 0; i < 3; ++i) {
+    const Vec2 a = cw[static_cast<std::size_t>(i)];
+    const Vec2 b = cw[static_cast<std::size_t>((i + 1) % 3)];
+    EdgeSetup& e = edges[static_cast<std::size_t>(i)];
+    e.a = a;
+    e.b = b;
+    e.is_top = formula::is_top_edge<std::int64_t>(a.x.raw(), a.y.raw(), b.x.raw(), b.y.raw());
+    e.is_left = formula::is_left_edge<std::int64_t>(a.x.raw(), a.y.raw(), b.x.raw(), b.y.raw());
+    e.inclusive = is_inclusive(a, b, fill);
+  }
+  return edges;
+}
 
 // Returns the setup of the triangle with snapped vertices v (in the order given).
 // Orientation, facing and culling are decided on the snapped positions
@@ -122,17 +151,7 @@ struct TriangleSetup {
     return t;
   }
   // rule: TRI.ORIENT.NORMALISE
-  const std::array<Vec2, 3> cw = t.clockwise ? v : std::array<Vec2, 3>{v[0], v[2], v[1]};
-  for (int i = 0; i < 3; ++i) {
-    const Vec2 a = cw[static_cast<std::size_t>(i)];
-    const Vec2 b = cw[static_cast<std::size_t>((i + 1) % 3)];
-    EdgeSetup& e = t.edges[static_cast<std::size_t>(i)];
-    e.a = a;
-    e.b = b;
-    e.is_top = formula::is_top_edge<std::int64_t>(a.x.raw(), a.y.raw(), b.x.raw(), b.y.raw());
-    e.is_left = formula::is_left_edge<std::int64_t>(a.x.raw(), a.y.raw(), b.x.raw(), b.y.raw());
-    e.inclusive = is_inclusive(a, b, state.fill);
-  }
+  t.edges = setup_edges(v, t.clockwise, state.fill);
   t.status = TriangleStatus::kRasterized;
   return t;
 }
