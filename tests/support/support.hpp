@@ -78,6 +78,28 @@ std::ostream& operator<<(std::ostream& os, const Pixel& p);
 [[nodiscard]] std::vector<Pixel> pixels_of(const std::vector<Fragment>& fragments,
                                            std::uint32_t prim);
 
+// Returns "" when the kernel's decision records agree with its rasterization: for every
+// primitive p and every pixel (x, y) of the target, decide_pixel(scene, p, x, y) says covered
+// exactly when rasterize_primitive(scene, p) has a fragment (not a helper) there; each
+// triangle's record is covered exactly when covers() says so and then was decided by
+// TRI.COVER.SAMPLE; each line segment's record equals the fragment of its segment (and its
+// antialiasing coverage); and, on the multisampled path, each segment's record has the
+// fragment's mask (the OR of its per-sample fragments under sample shading), its centroid,
+// its helper lanes, and a coverage that the per-sample triangle records explain. Otherwise a
+// description of the first disagreement. Preconditions: a prepared scene of at most 64x64.
+// rule: TRI.COVER.SAMPLE, MSAA.COVER.SAMPLE, MSAA.MASK.AND, MSAA.QUAD.HELPER
+[[nodiscard]] std::string decision_disagreement(const PreparedScene& scene);
+
+// Returns n primitives of type t (a line strip has three vertices) from a fixed seed, with
+// vertices on a grid of 1/steps px over the width x height target and a one-pixel margin, so
+// that many vertices, edges and pixel centres or samples tie.
+[[nodiscard]] std::vector<Primitive> tie_heavy_primitives(PrimitiveType t, std::size_t n,
+                                                          std::uint32_t seed, std::int32_t width,
+                                                          std::int32_t height, int steps = 2);
+
+// Returns prepare(scene); throws std::invalid_argument naming the error if it is rejected.
+[[nodiscard]] PreparedScene prepared(const Scene& scene);
+
 // The four fill conventions, for loops over all of them.
 inline constexpr FillConvention kAllConventions[] = {
     FillConvention::kTopLeft, FillConvention::kTopRight, FillConvention::kBottomLeft,
