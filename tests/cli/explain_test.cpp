@@ -161,4 +161,34 @@ TEST(CliExplain, MalformedPixelIsAUsageError) {
   }
 }
 
+// One sample whose coverage is not the centre's is explained per sample, as the kernel decides
+// it (before, explain judged the centre and could contradict render).
+// rule: MSAA.COVER.SAMPLE, MSAA.MASK.AND, MSAA.PATTERN.CUSTOM
+TEST(CliExplain, ASingleSampleAwayFromTheCentreOrMaskedAwayIsExplainedPerSample) {
+  const TempDir dir;
+  constexpr const char* kTriangle = R"("primitives": [
+    {"type": "triangle", "v": [[0, 0], [4, 0], [0, 4]]}]})";
+  // One custom sample at the pixel's top-left corner, (-8, -8)/16: pixel (2, 1) is decided at
+  // (2, 1), inside, though its centre (2.5, 1.5) lies on the right edge x + y = 4.
+  const auto custom = dir.write(
+      "custom.json",
+      std::string(R"({"target": {"width": 4, "height": 4}, "sample_pattern": [[-8, -8]], )") +
+          kTriangle);
+  const auto a = run_cli({"explain", custom.string(), "--pixel", "2,1"});
+  ASSERT_EQ(a.status, 0) << a.err;
+  EXPECT_TRUE(contains(a.out, "sample 0 at (-8, -8)/16 -> (2, 1) px")) << a.out;
+  EXPECT_TRUE(contains(a.out, "pixel (2, 1): covered by primitive 0\n")) << a.out;
+  const auto r = run_cli({"render", custom.string(), "--fragments", "-"});
+  EXPECT_TRUE(contains(r.out, R"({"prim": 0, "x": 2, "y": 1, "mask": 1})")) << r.out;
+  // A sample mask of 0 removes the only sample: no fragment, though the centre is covered.
+  const auto masked = dir.write(
+      "masked.json",
+      std::string(R"({"target": {"width": 4, "height": 4}, "sample_mask": 0, )") + kTriangle);
+  const auto b = run_cli({"explain", masked.string(), "--pixel", "0,0"});
+  ASSERT_EQ(b.status, 0) << b.err;
+  EXPECT_TRUE(contains(b.out, "sample mask 0b0 (no sample) -> fragment mask 0b0 (no sample)"))
+      << b.out;
+  EXPECT_TRUE(contains(b.out, "pixel (0, 0): covered by no primitive\n")) << b.out;
+}
+
 } // namespace

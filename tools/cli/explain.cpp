@@ -41,9 +41,14 @@ struct Report {
   bool show_samples = false; // multisampled(): the samples are reported
 };
 
-// Whether explain reports samples: more than one sample, or a centroid asked for.
+// Whether explain reports samples: more than one sample, a centroid asked for, or one sample
+// whose coverage is not the pixel centre's (a custom position elsewhere, or a sample mask that
+// removes it). Quads and sample shading alone do not change what a single centred sample covers.
+// rule: MSAA.COVER.SAMPLE, MSAA.MASK.AND
 bool multisampled(const PreparedScene& s) {
-  return s.msaa.count() > 1 || s.msaa.has_centroid;
+  const MultisampleState& ms = s.msaa;
+  return ms.count() > 1 || ms.has_centroid || !(ms.pattern.positions[0] == SampleOffset{}) ||
+         ms.effective_mask() != 1u;
 }
 
 std::string id(RuleId r) {
