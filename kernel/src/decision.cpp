@@ -28,7 +28,7 @@ LineSegmentDecision decide_line_segment(Vec2 a, Vec2 b, bool aa, LineMode mode, 
   d.diamond = explain_aliased_line_pixel(a, b, mode, x, y);
   d.x_major = d.diamond.x_major;
   d.covered = d.diamond.covered;
-  d.rule = mode == LineMode::kVulkanBresenham ? rules::kLineVkExit : rules::kLineD3DExit;
+  d.rule = d.diamond.rule;
   return d;
 }
 

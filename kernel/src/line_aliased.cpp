@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -202,24 +203,34 @@ LineDiamondDecision explain_aliased_line_pixel(Vec2 a, Vec2 b, LineMode mode, st
     }
   }
   d.covered = !d.zero_length && d.entered && !d.end_inside;
+  // The rule that decided, and the reason; the reason names the rule (from the one table,
+  // rastrules/rules.hpp) when it is not the exit rule itself.
+  const RuleId exit_rule =
+      mode == LineMode::kVulkanBresenham ? rules::kLineVkExit : rules::kLineD3DExit;
+  std::string_view why;
+  d.rule = exit_rule;
   if (d.zero_length) {
-    d.reason = "zero-length line: covers nothing (LINE.ZERO_LENGTH)";
+    d.rule = rules::kLineZeroLength;
+    why = "zero-length line: covers nothing";
+  } else if (!d.entered && d.met_features == 0) {
+    why = "the segment misses the diamond";
   } else if (!d.entered) {
-    d.reason =
-        (d.met_features == 0)
-            ? "the segment misses the diamond"
-            : (mode == LineMode::kVulkanBresenham
-                   ? "the perturbed segment misses the open diamond (LINE.VK.TEST_AREA)"
-                   : "the segment meets only excluded edges or corners (LINE.D3D.TEST_AREA)");
+    const bool vk = mode == LineMode::kVulkanBresenham;
+    d.rule = vk ? rules::kLineVkTestArea : rules::kLineD3DTestArea;
+    why = vk ? "the perturbed segment misses the open diamond"
+             : "the segment meets only excluded edges or corners";
   } else if (d.end_inside) {
-    d.reason = "the end point lies in the test area: the line does not exit";
+    why = "the end point lies in the test area: the line does not exit";
   } else if ((d.met_features & kFeatureInterior) != 0) {
-    d.reason = "the line crosses the diamond's interior and exits";
+    why = "the line crosses the diamond's interior and exits";
   } else {
-    d.reason = (mode == LineMode::kVulkanBresenham)
-                   ? "the perturbed segment enters the open diamond at a boundary tie and exits"
-                   : "the line meets an included edge or corner only, and exits";
+    why = (mode == LineMode::kVulkanBresenham)
+              ? "the perturbed segment enters the open diamond at a boundary tie and exits"
+              : "the line meets an included edge or corner only, and exits";
   }
+  d.reason = std::string(why);
+  if (d.rule != exit_rule)
+    d.reason += " (" + std::string(d.rule.id) + ")";
   return d;
 }
 

@@ -120,7 +120,7 @@ struct LineSegmentDecision {
   bool covered = false;           // the segment produces the pixel
   std::uint32_t coverage_q16 = 0; // antialiased lines: aa_line_coverage
   LineDiamondDecision diamond;    // aliased lines: explain_aliased_line_pixel
-  RuleId rule;                    // LINE.AA.FRAGMENT, LINE.D3D.EXIT or LINE.VK.EXIT
+  RuleId rule; // LINE.AA.FRAGMENT, or the aliased line's deciding rule (diamond.rule)
 };
 
 // Returns the decision of the segment a -> b (antialiased or aliased under `mode`) at pixel

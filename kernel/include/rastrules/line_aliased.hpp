@@ -7,11 +7,13 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "rastrules/fixed.hpp"
 #include "rastrules/line.hpp"
+#include "rastrules/rules.hpp"
 
 namespace rastrules {
 
@@ -63,8 +65,11 @@ struct LineDiamondDecision {
   bool entered = false;    // the segment meets the test area (Vulkan: perturbed segment)
   bool end_inside = false; // the end point lies in the test area (Vulkan: perturbed end)
   bool covered = false;    // entered && !end_inside: the line exits the diamond
-  // A one-line reason naming the rule that decided.
-  std::string_view reason;
+  // The rule that decided: LINE.ZERO_LENGTH, LINE.D3D.TEST_AREA or LINE.VK.TEST_AREA (the
+  // segment meets the diamond outside the test area only), else LINE.D3D.EXIT or LINE.VK.EXIT.
+  RuleId rule;
+  // A one-line reason, naming `rule` when it is not the exit rule.
+  std::string reason;
 };
 
 // Explains the decision of aliased_line_covers(a, b, mode, px, py).
