@@ -603,6 +603,8 @@ private:
       return *r;
     if (const auto r = pipeline_value(slot, field, v))
       return *r;
+    if (const auto r = primitive_pipeline_value(slot, field, v))
+      return *r;
     return fail(field, "internal error: unknown slot");
   }
 
@@ -758,7 +760,8 @@ private:
     }
   }
 
-  // The pipeline keys (SCENE.PIPELINE). Returns nullopt for a slot of another group.
+  // The pipeline keys of the scene (SCENE.PIPELINE): viewport, transform, depth, attributes,
+  // provoking vertex. Returns nullopt for a slot of another group.
   std::optional<bool> pipeline_value(Slot slot, const std::string& field, const Value& v) {
     switch (slot) {
     // rule: SCENE.PIPELINE
@@ -855,6 +858,16 @@ private:
       return enumeration(field, v, Names<pipe::Location>::table, attribute_.location);
     case Slot::kProvoking:
       return enumeration(field, v, Names<pipe::Provoking>::table, pipe_.provoking);
+    default:
+      return std::nullopt;
+    }
+  }
+
+  // The pipeline keys of a primitive (SCENE.PIPELINE): z, w, pos and attr. Returns nullopt for
+  // a slot of another group.
+  std::optional<bool> primitive_pipeline_value(Slot slot, const std::string& field,
+                                               const Value& v) {
+    switch (slot) {
     case Slot::kZ:
     case Slot::kW:
       if (v.kind != Kind::kArray) {
