@@ -65,7 +65,8 @@ TEST(TriDecision, ACulledTriangleIsDecidedByTheCullModeWithItsEdgesForInformatio
 TEST(TriDecision, ADegenerateTriangleIsDecidedByZeroArea) {
   const PreparedScene s =
       test::prepared(test::scene_px(4, 4, RasterState{}, {{{{0, 0.5}, {2, 0.5}, {4, 0.5}}}}));
-  const TriangleDecision& t = decide_pixel(s, 0, 1, 0).triangles[0];
+  const PixelDecision d = decide_pixel(s, 0, 1, 0);
+  const TriangleDecision& t = d.triangles[0];
   EXPECT_EQ(t.rule, rules::kTriDegenerateZeroArea);
   EXPECT_FALSE(t.has_edges || t.covered);
 }
