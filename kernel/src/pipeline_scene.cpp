@@ -81,17 +81,27 @@ std::variant<PipeResult, SceneError> run_pipeline(const Scene& s, const PipeOpti
 
 namespace rastrules {
 
+namespace {
+
+// A scene without pipeline state: prepare(), then the fragments `rasterize_with` gives.
+template <class Rasterize>
+std::variant<std::vector<Fragment>, SceneError> render_window(const Scene& scene,
+                                                              Rasterize&& rasterize_with) {
+  auto prepared = prepare(scene);
+  if (auto* err = std::get_if<SceneError>(&prepared))
+    return *err;
+  return rasterize_with(std::get<PreparedScene>(prepared));
+}
+
+} // namespace
+
 // rule: PIPE.EFFECTS.ON_DEMAND
 std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene,
                                                        const RenderOptions& options) {
-  if (!has_pipeline_state(scene)) {
-    // The identity case of run_pipeline (the whole target as viewport, no fragment limit),
-    // with the kernel's threads over primitives (FAST.THREADS.DETERMINISTIC).
-    auto prepared = prepare(scene);
-    if (auto* err = std::get_if<SceneError>(&prepared))
-      return *err;
-    return rasterize(std::get<PreparedScene>(prepared), options);
-  }
+  // The identity case of run_pipeline (the whole target as viewport, no fragment limit), with
+  // the kernel's threads over primitives (FAST.THREADS.DETERMINISTIC).
+  if (!has_pipeline_state(scene))
+    return render_window(scene, [&](const PreparedScene& ps) { return rasterize(ps, options); });
   pipe::PipeOptions o;
   o.render = options;
   o.max_fragments = std::numeric_limits<std::uint64_t>::max();
@@ -102,13 +112,10 @@ std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene,
 }
 
 std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene) {
-  if (has_pipeline_state(scene))
-    return render(scene, RenderOptions{});
   // The identity case on the calling thread alone.
-  auto prepared = prepare(scene);
-  if (auto* err = std::get_if<SceneError>(&prepared))
-    return *err;
-  return rasterize(std::get<PreparedScene>(prepared));
+  if (!has_pipeline_state(scene))
+    return render_window(scene, [](const PreparedScene& ps) { return rasterize(ps); });
+  return render(scene, RenderOptions{});
 }
 
 } // namespace rastrules

@@ -24,9 +24,14 @@ namespace {
 namespace kp = rastrules::pipe;
 using nlohmann::json;
 
-std::string read_text(const std::filesystem::path& p, bool& ok) {
+// Returns the file's bytes, or nullopt (and `problem` recorded in r) when it cannot be opened.
+std::optional<std::string> read_text(const std::filesystem::path& p, const char* problem,
+                                     CaseReport& r) {
   std::ifstream in(p, std::ios::binary);
-  ok = static_cast<bool>(in);
+  if (!in) {
+    r.failures.push_back(p.filename().string() + ": " + problem);
+    return std::nullopt;
+  }
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
@@ -49,14 +54,11 @@ struct Tally {
 // r.what, or nullopt when the sidecar is missing or malformed (the failure
 // recorded in r).
 std::optional<json> read_sidecar(const std::filesystem::path& side, CaseReport& r) {
-  bool ok = false;
-  const std::string side_text = read_text(side, ok);
-  if (!ok) {
-    r.failures.push_back(side.filename().string() + ": missing");
+  const std::optional<std::string> side_text = read_text(side, "missing", r);
+  if (!side_text)
     return std::nullopt;
-  }
   try {
-    const json j = json::parse(side_text);
+    const json j = json::parse(*side_text);
     for (const auto& id : j.at("rules"))
       r.rules.push_back(id.get<std::string>());
     r.what = j.at("what").get<std::string>();
@@ -70,13 +72,10 @@ std::optional<json> read_sidecar(const std::filesystem::path& side, CaseReport& 
 // Returns the pipeline scene at `path`, or nullopt when it cannot be read or is
 // not a pipeline scene (the failure recorded in r).
 std::optional<Scene> read_pipe_scene(const std::filesystem::path& path, CaseReport& r) {
-  bool ok = false;
-  const std::string text = read_text(path, ok);
-  if (!ok) {
-    r.failures.push_back(path.filename().string() + ": cannot be read");
+  const std::optional<std::string> text = read_text(path, "cannot be read", r);
+  if (!text)
     return std::nullopt;
-  }
-  auto read = io::read_scene(text);
+  auto read = io::read_scene(*text);
   if (auto* e = std::get_if<SceneError>(&read)) {
     r.failures.push_back("scene: " + e->what());
     return std::nullopt;
