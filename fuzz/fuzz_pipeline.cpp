@@ -6,8 +6,8 @@
 // - a pipeline scene that reads is written back to text that reads to the same scene;
 // - a small one that runs gives the same result with every optimization as with none
 //   (PIPE.OPT.*), finite attributes, barycentrics summing to their area, stored depths inside
-//   the viewport's depth range, and attributes and depths within the exact oracle's bounds
-//   (check::check_pipeline_values).
+//   the viewport's depth range, attributes and depths within the exact oracle's bounds, and
+//   everything the replay from the scene alone checks (check::check_pipeline).
 // rule: SCENE.PIPELINE, SCENE.INPUT.ERRORS, PIPE.OPT.TILES, PIPE.INTERP.HORIZON, PIPE.DEPTH.CLAMP
 // rule: PIPE.INTERP.BOUND, PIPE.DEPTH.BOUND
 
@@ -89,7 +89,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fail("the optimized result differs from the plain one (PIPE.OPT.*)", "", data, size);
   // Invariants and the exact oracle's bounds, fragment by fragment (check/).
   namespace check = rastrules::check;
-  const check::Mismatches values = check::check_pipeline_values(*scene, r, check::CheckOptions{1});
+  const check::Mismatches values = check::check_pipeline(*scene, r, check::CheckOptions{1});
   if (!values.agree())
     fail("the result breaks a pipeline invariant or bound", values.mismatches.front(), data, size);
   return 0;

@@ -2,6 +2,8 @@
 // Kernel against oracle (check.hpp).
 #include "rastrules/check/check.hpp"
 
+#include "checker.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -113,25 +115,7 @@ bool near_segment(const Raw& a, const Raw& b, const Raw& c, std::int64_t r) {
 // 3/2 px in raw units: the candidate radius of near_segment.
 constexpr std::int64_t kNearRaw = 384;
 
-// Collects mismatches and the oracles used.
-class Checker {
-public:
-  explicit Checker(const CheckOptions& o) : options_(o) {}
-  void note(std::string what) {
-    ++out_.count;
-    if (out_.mismatches.size() < options_.max_mismatches)
-      out_.mismatches.push_back(std::move(what));
-  }
-  void used(const std::string& oracle) {
-    if (std::find(out_.oracles.begin(), out_.oracles.end(), oracle) == out_.oracles.end())
-      out_.oracles.push_back(oracle);
-  }
-  Mismatches take() { return std::move(out_); }
-
-private:
-  CheckOptions options_;
-  Mismatches out_;
-};
+using detail::Checker;
 
 // Calls fn(x, y) for every pixel of the target whose centre is within 3/2 px of a -> b.
 template <class Fn> void for_candidates(const Scene& scene, const Raw& a, const Raw& b, Fn&& fn) {
@@ -351,47 +335,6 @@ void check_multisampled(const Scene& scene, const PreparedScene& ps,
   }
 }
 
-namespace kp = rastrules::pipe;
-namespace op = rastrules::oracle::pipe;
-
-std::string where(const Fragment& f) {
-  return "prim " + std::to_string(f.prim) + " pixel (" + std::to_string(f.x) + ", " +
-         std::to_string(f.y) + ")";
-}
-
-op::Raw2 raw(Vec2 v) {
-  return {v.x.raw(), v.y.raw()};
-}
-
-// The oracle's barycentrics of drawn primitive d at s: a triangle's exact edge values, a line's
-// projection parameter (as in the kernel's output, SCENE.OUTPUT.PIPELINE), a point's (1, 0, 0).
-op::Bary bary_of(const kp::DrawnPrimitive& d, Vec2 s) {
-  if (d.type == PrimitiveType::kTriangle)
-    return op::barycentrics({raw(d.snapped[0]), raw(d.snapped[1]), raw(d.snapped[2])}, raw(s));
-  op::Bary b;
-  if (d.type == PrimitiveType::kPoint || d.snapped.size() < 2) {
-    b.e = {1, 0, 0};
-    b.area = 1;
-    return b;
-  }
-  const std::int64_t dx = d.snapped[1].x.raw() - d.snapped[0].x.raw();
-  const std::int64_t dy = d.snapped[1].y.raw() - d.snapped[0].y.raw();
-  const std::int64_t px = s.x.raw() - d.snapped[0].x.raw();
-  const std::int64_t py = s.y.raw() - d.snapped[0].y.raw();
-  const std::int64_t den = dx * dx + dy * dy, num = px * dx + py * dy;
-  b.e = {den - num, num, 0};
-  b.area = den;
-  return b;
-}
-
-std::string format_name(kp::DepthFormat f) {
-  return std::string(kp::to_string(f));
-}
-
-double stored_as_double(const kp::DepthValue& v, kp::DepthFormat f) {
-  return f == kp::DepthFormat::kD32F ? static_cast<double>(v.f) : static_cast<double>(v.unorm);
-}
-
 } // namespace
 
 Mismatches check_against_oracle(const Scene& scene, const PreparedScene& ps,
@@ -402,78 +345,6 @@ Mismatches check_against_oracle(const Scene& scene, const PreparedScene& ps,
   else
     check_single_sample(scene, ps, kernel, c);
   return c.take();
-}
-
-Mismatches check_pipeline_values(const Scene& scene, const kp::PipeResult& result,
-                                 const CheckOptions& options, std::size_t* oracle_checks) {
-  const kp::Viewport vp = scene.viewport.value_or(
-      kp::Viewport{0, 0, static_cast<float>(scene.width), static_cast<float>(scene.height), 0, 1});
-  const SamplePattern& pattern = scene.msaa.pattern;
-  const kp::DepthFormat fmt = scene.depth ? scene.depth->format : kp::DepthFormat::kD24;
-  const kp::DepthValue lo = kp::to_depth_format(vp.min_depth, 0, 1, fmt);
-  const kp::DepthValue hi = kp::to_depth_format(vp.max_depth, 0, 1, fmt);
-  Checker out(options);
-  const auto report = [&](const std::string& m) { out.note(m); };
-  std::size_t checks = 0;
-  for (std::size_t i = 0; i < result.data.size(); ++i) {
-    const Fragment& f = result.fragments[i];
-    const kp::FragmentData& d = result.data[i];
-    if (d.bary && d.bary->e[0] + d.bary->e[1] + d.bary->e[2] != d.bary->area)
-      report(where(f) + ": barycentrics do not sum to the area (PIPE.BARY.SUM)");
-    for (const float a : d.attr)
-      if (!std::isfinite(a))
-        report(where(f) + ": an attribute is not finite (PIPE.INTERP.HORIZON)");
-    for (const kp::DepthValue& z : d.depth)
-      if (stored_as_double(z, fmt) < stored_as_double(lo, fmt) ||
-          stored_as_double(z, fmt) > stored_as_double(hi, fmt) ||
-          (fmt == kp::DepthFormat::kD32F && !std::isfinite(z.f)))
-        report(where(f) + ": a stored depth lies outside the viewport's range (PIPE.DEPTH.CLAMP)");
-    if (result.drawn.empty())
-      continue;
-    const kp::DrawnPrimitive& dp = result.drawn[d.drawn];
-    // Attributes against the exact oracle (PIPE.INTERP.BOUND).
-    for (std::size_t a = 0; a < d.attr.size(); ++a) {
-      const kp::AttributeDecl& decl = scene.attributes[a];
-      Vec2 at = pixel_center(f.x, f.y);
-      if (decl.location == kp::Location::kCentroid && f.centroid)
-        at = sample_position(f.x, f.y, f.centroid->offset);
-      if (decl.location == kp::Location::kSample && f.sample)
-        at = sample_position(f.x, f.y, pattern.positions[*f.sample]);
-      const op::Bary b = bary_of(dp, at);
-      ++checks;
-      if (decl.interpolation == kp::Interpolation::kFlat) {
-        if (d.attr[a] != dp.flat[a])
-          report(where(f) + ": flat attribute " + decl.name + " is not the provoking vertex's");
-        continue;
-      }
-      if (b.area == 0)
-        continue; // a zero-length line: the flat value (PIPE.INTERP.HORIZON)
-      const op::InterpCheck c =
-          decl.interpolation == kp::Interpolation::kPerspective
-              ? op::check_perspective(b, dp.attr[a], dp.w, dp.flat[a], d.attr[a])
-              : op::check_linear(b, dp.attr[a], d.attr[a]);
-      if (!c.ok)
-        report(where(f) + ": attribute " + decl.name + ": " + c.describe());
-    }
-    // Depths against the exact oracle (PIPE.DEPTH.BOUND).
-    std::size_t n = 0;
-    for (std::uint32_t k = 0; k < pattern.count() && n < d.depth.size(); ++k) {
-      if ((f.mask & (1u << k)) == 0)
-        continue;
-      const op::Bary b = bary_of(dp, sample_position(f.x, f.y, pattern.positions[k]));
-      const kp::DepthValue& got = d.depth[n++];
-      ++checks;
-      if (b.area == 0)
-        continue;
-      const op::DepthCheck c = op::check_depth_stored(
-          b, dp.z, vp.min_depth, vp.max_depth, format_name(fmt), op::Stored{got.unorm, got.f});
-      if (!c.ok)
-        report(where(f) + ": sample " + std::to_string(k) + ": " + c.describe(format_name(fmt)));
-    }
-  }
-  if (oracle_checks != nullptr)
-    *oracle_checks = checks;
-  return out.take();
 }
 
 } // namespace rastrules::check

@@ -7,7 +7,7 @@
 // near the format limits), and triangles, points, lines and line strips given in window space
 // or in clip space (inside the view, across the near and far planes, behind the eye, across the
 // guard band, w ratios of 1e6 and more). Checked against the oracle fragment by fragment
-// (pipe_scene.hpp): barycentrics, attributes and depths within the spec's bounds (each strip
+// (check::check_pipeline): barycentrics, attributes and depths within the spec's bounds (each strip
 // segment from its own vertices), coverage of every part equal to the window-space path, the
 // depth test replayed, killed fragments; each strip segment equals the same segment drawn as a
 // line; and the result is bit-identical across two runs and across every combination of the
@@ -34,6 +34,7 @@
 
 #include "pipe_gen.hpp"
 #include "pipe_scene.hpp"
+#include "rastrules/check/check.hpp"
 #include "strips.hpp"
 
 namespace {
@@ -201,7 +202,7 @@ bool transform_rejected(const rastrules::Scene& s, const rastrules::SceneError& 
   if (!s.model && !s.view && !s.projection)
     return false;
   for (std::size_t i = 0; i < s.primitives.size(); ++i) {
-    if (ps::geometry(s, i).transform_error)
+    if (rastrules::check::transform_overflows(s, i))
       return e.field.rfind("primitives[", 0) == 0;
   }
   return false;
@@ -230,13 +231,10 @@ RC_GTEST_PROP(Scene, FragmentsAgreeWithTheOracle, ()) {
     RC_TAG("rejected: transform overflow");
     return;
   }
-  ps::CheckStats st;
-  const std::string problem = ps::check_result(s, *r, st);
-  if (!problem.empty())
-    RC_FAIL(problem + "\n" + ps::show(s));
-  const std::string coverage = ps::check_coverage(s, *r);
-  if (!coverage.empty())
-    RC_FAIL(coverage + "\n" + ps::show(s));
+  rastrules::check::PipelineStats st;
+  const rastrules::check::Mismatches m = rastrules::check::check_pipeline(s, *r, {}, &st);
+  if (!m.agree())
+    RC_FAIL(m.mismatches.front() + "\n" + ps::show(s));
   RC_CLASSIFY(st.clipped_prims > 0, "clipped primitives");
   RC_CLASSIFY(st.killed > 0, "killed fragments");
   RC_CLASSIFY(st.attr_checks > 0, "attributes checked");

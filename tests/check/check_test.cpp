@@ -119,13 +119,16 @@ TEST(Check, PipelineValuesWithinTheOraclesBounds) {
   auto out = pipe::run_pipeline(s);
   ASSERT_TRUE(std::holds_alternative<pipe::PipeResult>(out));
   pipe::PipeResult r = std::get<pipe::PipeResult>(out);
-  std::size_t checks = 0;
-  EXPECT_TRUE(check_pipeline_values(s, r, {}, &checks).agree());
-  EXPECT_EQ(checks, 2 * r.fragments.size()); // one attribute and one depth per fragment
+  PipelineStats st;
+  EXPECT_TRUE(check_pipeline(s, r, {}, &st).agree());
+  EXPECT_EQ(st.values_checked, 2 * r.fragments.size()); // one attribute, one depth per fragment
+  EXPECT_EQ(st.fragments, r.fragments.size());          // the replay saw every fragment
+  EXPECT_GT(st.attr_checks, 0u);
+  EXPECT_GT(st.depth_checks, 0u);
   r.data[0].attr[0] += 0.25f;
-  EXPECT_TRUE(mentions(check_pipeline_values(s, r), "attribute u"));
+  EXPECT_TRUE(mentions(check_pipeline(s, r), "attribute u"));
   r.data[1].bary->area += 1;
-  EXPECT_TRUE(mentions(check_pipeline_values(s, r), "PIPE.BARY.SUM"));
+  EXPECT_TRUE(mentions(check_pipeline(s, r), "PIPE.BARY.SUM"));
 }
 
 } // namespace

@@ -257,8 +257,9 @@ CaseReport check_case(const std::filesystem::path& scene_path) {
     r.failures.push_back("the optimized result differs from the plain path (PIPE.OPT.*)");
 
   // Invariants and the oracle, fragment by fragment (check/).
-  const check::Mismatches values =
-      check::check_pipeline_values(*s, res, check::CheckOptions{8}, &r.oracle_checks);
+  check::PipelineStats stats;
+  const check::Mismatches values = check::check_pipeline(*s, res, check::CheckOptions{8}, &stats);
+  r.oracle_checks = stats.values_checked;
   for (const std::string& m : values.mismatches)
     r.failures.push_back(m);
   if (values.count > 8)

@@ -57,14 +57,38 @@ struct Mismatches {
                                               const std::vector<Fragment>& kernel,
                                               const CheckOptions& options = {});
 
-// Checks a pipeline result fragment by fragment: barycentrics summing to their area
-// (PIPE.BARY.SUM), finite attributes (PIPE.INTERP.HORIZON), stored depths inside the
-// viewport's range (PIPE.DEPTH.CLAMP), and, against the exact oracle from each fragment's drawn
-// primitive, every attribute (PIPE.INTERP.BOUND, flat values exactly) and every sample depth
-// (PIPE.DEPTH.BOUND). oracle_checks counts the values compared with the oracle.
+// What check_pipeline compared, for reports and the properties' statistics.
+struct PipelineStats {
+  std::size_t values_checked = 0; // attribute and depth values against each drawn primitive
+  std::size_t fragments = 0, killed = 0, clipped_prims = 0;
+  std::size_t attr_checks = 0, depth_checks = 0; // values in the replay from the scene alone
+  bool horizon = false, saturated = false;       // an attribute beyond the horizon, saturated
+};
+
+// Checks run_pipeline's result for scene against the exact oracle, in three passes.
+// 1. Fragment by fragment: barycentrics summing to their area (PIPE.BARY.SUM), finite
+//    attributes (PIPE.INTERP.HORIZON), stored depths inside the viewport's range
+//    (PIPE.DEPTH.CLAMP), and, from each fragment's drawn primitive, every attribute
+//    (PIPE.INTERP.BOUND, flat values exactly) and every sample depth (PIPE.DEPTH.BOUND).
+// 2. A replay from the scene alone, which trusts nothing the kernel reports: the oracle's
+//    transform, clip volume, clipper and fan give each primitive's parts (triangles) or
+//    segments (points, lines, each segment of a strip: PIPE.BARY.LINE, LINE.STRIP.SEQUENCE);
+//    every drawn primitive equals the oracle's bit for bit; barycentrics are the exact ones at
+//    the evaluation point (PIPE.BARY.EXACT, PIPE.INTERP.LOCATION); attributes and depths lie
+//    within the spec's bounds; the depth test is replayed sample by sample (PIPE.DEPTH.TEST,
+//    .WRITE, .KILL) into a depth buffer equal to the kernel's; fragments lie inside the
+//    viewport's scissor (PIPE.VIEWPORT.SCISSOR) in the output order.
+// 3. The coverage of every part equals the window-space render of that part (rastrules::render
+//    with the scene's raster and multisample state), cut to the scissor.
+// Passes 2 and 3 report their first problem only. Precondition: result is run_pipeline(scene).
 // rule: PIPE.BARY.SUM, PIPE.INTERP.HORIZON, PIPE.DEPTH.CLAMP, PIPE.INTERP.BOUND, PIPE.DEPTH.BOUND
-[[nodiscard]] Mismatches check_pipeline_values(const Scene& scene, const pipe::PipeResult& result,
-                                               const CheckOptions& options = {},
-                                               std::size_t* oracle_checks = nullptr);
+// rule: PIPE.CLIP.UNCLIPPED, PIPE.CLIP.POLYGON, PIPE.BARY.EXACT, PIPE.DEPTH.TEST, PIPE.DEPTH.KILL
+[[nodiscard]] Mismatches check_pipeline(const Scene& scene, const pipe::PipeResult& result,
+                                        const CheckOptions& options = {},
+                                        PipelineStats* stats = nullptr);
+
+// Whether primitive prim has a clip-space position beyond PIPE.INPUT.POSITION after the scene's
+// transform, by the oracle's float32 arithmetic (the pipeline must then reject the scene).
+[[nodiscard]] bool transform_overflows(const Scene& scene, std::size_t prim);
 
 } // namespace rastrules::check

@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// Internal to check/: how check.cpp and pipeline.cpp collect what they find.
+#pragma once
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+#include "rastrules/check/check.hpp"
+
+namespace rastrules::check::detail {
+
+// Collects mismatches (up to CheckOptions::max_mismatches, counting all) and the oracles used.
+class Checker {
+public:
+  explicit Checker(const CheckOptions& o) : options_(o) {}
+  void note(std::string what) {
+    ++out_.count;
+    if (out_.mismatches.size() < options_.max_mismatches)
+      out_.mismatches.push_back(std::move(what));
+  }
+  void used(const std::string& oracle) {
+    if (std::find(out_.oracles.begin(), out_.oracles.end(), oracle) == out_.oracles.end())
+      out_.oracles.push_back(oracle);
+  }
+  Mismatches take() { return std::move(out_); }
+
+private:
+  CheckOptions options_;
+  Mismatches out_;
+};
+
+} // namespace rastrules::check::detail
