@@ -749,7 +749,8 @@ int explain_pipeline(const Scene& scene, const pipe::PipeResult& result, std::in
   }
   std::string out = "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") of a " +
                     std::to_string(scene.width) + "x" + std::to_string(scene.height) +
-                    " pipeline scene (SCENE.PIPELINE): " + std::to_string(here.size()) +
+                    " pipeline scene (" + id(rules::kScenePipeline) +
+                    "): " + std::to_string(here.size()) +
                     (here.size() == 1 ? " fragment" : " fragments") +
                     " (coverage after transform, clipping, divide, viewport and snapping)\n";
   for (std::size_t i = 0; i < here.size(); ++i) {
@@ -781,8 +782,9 @@ int explain_pipeline(const Scene& scene, const pipe::PipeResult& result, std::in
       const pipe::Barycentrics& b = *data->bary;
       const pipe::DrawnPrimitive* d = drawn_of(i);
       const bool triangle = d == nullptr || d->type == PrimitiveType::kTriangle;
-      out += std::string("  barycentrics (") + (triangle ? "PIPE.BARY.EXACT" : "PIPE.BARY.LINE") +
-             "): e = [" + std::to_string(b.e[0]) + ", " + std::to_string(b.e[1]) + ", " +
+      out += std::string("  barycentrics (") +
+             id(triangle ? rules::kPipeBaryExact : rules::kPipeBaryLine) + "): e = [" +
+             std::to_string(b.e[0]) + ", " + std::to_string(b.e[1]) + ", " +
              std::to_string(b.e[2]) + "], A = " + std::to_string(b.area) + " (e0 + e1 + e2 = A)\n";
     }
     for (std::size_t k = 0; k < scene.attributes.size() && k < data->attr.size(); ++k) {
@@ -797,12 +799,13 @@ int explain_pipeline(const Scene& scene, const pipe::PipeResult& result, std::in
       for (const pipe::DepthValue& d : data->depth) {
         depths += (depths.empty() ? "" : ", ") + io::depth_text(d, scene.depth->format);
       }
-      out += killed ? std::string("  killed: no sample passed the depth test (PIPE.DEPTH.KILL)")
-                    : "  depth [" + depths + "] (" +
-                          std::string(io::depth_format_name(scene.depth->format)) + "), passed " +
-                          mask_text(data->passed, n);
-      out += " (depth.func " + std::string(io::compare_func_name(scene.depth->func)) +
-             ", PIPE.DEPTH.TEST)\n";
+      out += killed
+                 ? "  killed: no sample passed the depth test (" + id(rules::kPipeDepthKill) + ")"
+                 : "  depth [" + depths + "] (" +
+                       std::string(io::depth_format_name(scene.depth->format)) + "), passed " +
+                       mask_text(data->passed, n);
+      out += " (depth.func " + std::string(io::compare_func_name(scene.depth->func)) + ", " +
+             id(rules::kPipeDepthTest) + ")\n";
     }
   }
   std::string list;

@@ -61,5 +61,12 @@ inline constexpr RuleId kMsaaCentroidD3D11{"MSAA.CENTROID.D3D11"};
 inline constexpr RuleId kMsaaCentroidD3D10{"MSAA.CENTROID.D3D10"};
 inline constexpr RuleId kMsaaQuadHelper{"MSAA.QUAD.HELPER"};
 
+// The pipeline (spec/scene.md, spec/rules/pipe.md).
+inline constexpr RuleId kScenePipeline{"SCENE.PIPELINE"};
+inline constexpr RuleId kPipeBaryExact{"PIPE.BARY.EXACT"};
+inline constexpr RuleId kPipeBaryLine{"PIPE.BARY.LINE"};
+inline constexpr RuleId kPipeDepthKill{"PIPE.DEPTH.KILL"};
+inline constexpr RuleId kPipeDepthTest{"PIPE.DEPTH.TEST"};
+
 } // namespace rules
 } // namespace rastrules
