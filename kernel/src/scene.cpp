@@ -118,6 +118,17 @@ std::size_t required_vertex_count(PrimitiveType t) {
   return 0;
 }
 
+std::optional<std::string> vertex_count_problem(PrimitiveType t, std::size_t n, bool clip_space) {
+  const std::size_t need = required_vertex_count(t);
+  if (need == 0 ? n >= 2 : n == need)
+    return std::nullopt;
+  const std::string count = need == 0   ? "at least 2 vertices"
+                            : need == 1 ? "exactly 1 vertex"
+                                        : "exactly " + std::to_string(need) + " vertices";
+  return "a " + std::string(to_string(t)) + " must have " + count +
+         (clip_space ? " [x, y, z] or [x, y, z, w]" : " [x, y]") + ", got " + std::to_string(n);
+}
+
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.PRIM.LINE_STRIP, SCENE.OUTPUT.MSAA
 bool fragment_before(const Fragment& a, const Fragment& b) {
   // A missing seg or sample (-1) sorts before every index.
@@ -271,20 +282,13 @@ std::variant<PreparedScene, SceneError> prepare(const Scene& scene) {
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     const Primitive& in = scene.primitives[p];
     const std::size_t n = in.v.size();
-    const std::size_t need = required_vertex_count(in.type);
     // rule: SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP
-    if ((need != 0 && n != need) || (need == 0 && n < 2)) {
-      const std::string count = need == 0   ? "at least 2 vertices"
-                                : need == 1 ? "exactly 1 vertex"
-                                            : "exactly " + std::to_string(need) + " vertices";
-      return SceneError{field_of(p) + ".v", "a " + std::string(to_string(in.type)) + " must have " +
-                                                count + " [x, y], got " + std::to_string(n)};
-    }
+    if (auto bad = vertex_count_problem(in.type, n, false))
+      return SceneError{field_of(p) + ".v", std::move(*bad)};
     // rule: SCENE.PRIM.LINE, SCENE.LINE_MODE
     if (in.aa && !is_line(in.type)) {
-      return SceneError{field_of(p) + ".aa",
-                        "only lines and line strips can be antialiased, not a " +
-                            std::string(to_string(in.type))};
+      return SceneError{field_of(p) + ".aa", "only lines and line strips take \"aa\", not a " +
+                                                 std::string(to_string(in.type))};
     }
     if (in.aa && scene.line_mode != LineMode::kD3DDiamond) {
       return SceneError{field_of(p) + ".aa",

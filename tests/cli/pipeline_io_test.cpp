@@ -44,9 +44,13 @@ rastrules::Scene pipe_ok(const std::string& text) {
   return rastrules::Scene{};
 }
 
+// The error a scene file gets on loading: the reader's (syntax and types), else the kernel's
+// one validator's (pipe::validate), as rastrules load_scene reports them.
 std::string error_of(const std::string& text) {
   auto r = io::read_scene(text);
   if (auto* e = std::get_if<SceneError>(&r))
+    return e->what();
+  if (auto e = rastrules::pipe::validate(std::get<rastrules::Scene>(r)))
     return e->what();
   return "(no error)";
 }
@@ -229,8 +233,8 @@ TEST(PipelineSceneIo, NumbersAreReadAsFloat32LikeCoordinates) {
 // rule: SCENE.PIPELINE, SCENE.INPUT.ERRORS
 TEST(PipelineSceneIo, ErrorsNameTheFieldAndComeInReadingOrder) {
   const std::string head = std::string("{") + kTarget + ", ";
-  // The NaN in primitives[1] is found while reading, before the missing attr of primitives[0]
-  // (checked when the scene ends, since "attributes" may come after the primitives).
+  // The NaN in primitives[1] is found while reading (a type), before the missing attr of
+  // primitives[0] (a rule of the scene, which the kernel's validator checks once it is read).
   EXPECT_EQ(
       error_of(
           head + R"("primitives": [)" + kPosTriangle +

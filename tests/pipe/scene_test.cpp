@@ -8,7 +8,9 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
+#include <string>
 #include <tuple>
 #include <variant>
 
@@ -263,6 +265,50 @@ TEST(Scene, BadInputNamesTheField) {
   s.primitives[0].attr = {{0}, {1}, {2}};
   s.viewport = Viewport{0, 0, 8, 8, 0.5f, 0.25f};
   EXPECT_EQ(run_error(s).field, "viewport.min_depth");
+}
+
+// The one validator: a scene built in code gets from pipe::validate, and from run_pipeline,
+// the same field and words a scene file gets (the reader checks syntax and types only).
+// rule: SCENE.PIPELINE, PIPE.INPUT.ATTRIBUTES, SCENE.INPUT.ERRORS
+TEST(Scene, PerVertexListsAreCheckedByTheKernelWithTheReadersWords) {
+  Scene s = scene(8, 8);
+  s.primitives.push_back(window_tri({1, 1}, {6, 2}, {2, 6}));
+  EXPECT_FALSE(validate(s).has_value());
+  const auto expect = [&](const std::string& field, const std::string& message) {
+    const std::optional<SceneError> e = validate(s);
+    ASSERT_TRUE(e.has_value()) << field;
+    EXPECT_EQ(e->what(), field + ": " + message);
+    EXPECT_EQ(run_error(s).what(), e->what());
+  };
+  s.primitives[0].z = {0, 0.5f, 1, 1};
+  expect("primitives[0].z", "must have one number per vertex (3), got 4");
+  s.primitives[0].z = {0, 0.5f, 1};
+  s.primitives[0].w = {1, 2};
+  expect("primitives[0].w", "must have one number per vertex (3), got 2");
+  s.primitives[0].w.clear();
+  s.primitives[0].attr = {{0}, {1}, {2}};
+  expect("primitives[0].attr",
+         "is given but the scene declares no \"attributes\" (PIPE.INPUT.ATTRIBUTES)");
+  s.attributes = {AttributeDecl{"u", Interpolation::kLinear, Location::kCenter},
+                  AttributeDecl{"k", Interpolation::kFlat, Location::kCenter}};
+  expect("primitives[0].attr[0]", "must have 2 values (one per declared attribute), got 1");
+  s.primitives[0].attr = {{0, 1}, {1, 2}};
+  expect("primitives[0].attr", "must have one list of attribute values per vertex (3), got 2");
+  s.primitives[0].attr.clear();
+  expect("primitives[0].attr",
+         "is missing: the scene declares 2 attributes (PIPE.INPUT.ATTRIBUTES)");
+  s.primitives[0].attr = {{0, 1}, {1, 2}, {2, 3}};
+  EXPECT_FALSE(validate(s).has_value());
+  s.primitives.push_back(clip_tri({0, 0, 0, 1}, {1, 0, 0, 1}, {0, 1, 0, 1}));
+  s.primitives[1].pos.pop_back();
+  s.primitives[1].attr = {{0, 1}, {1, 2}};
+  expect("primitives[1].pos",
+         "a triangle must have exactly 3 vertices [x, y, z] or [x, y, z, w], got 2");
+  s.primitives[1].pos.push_back({0, 1, 0, 1});
+  s.primitives[1].attr.push_back({2, 3});
+  s.primitives[1].z = {0, 0, 0};
+  expect("primitives[1].z", "goes with \"v\" only (window space); \"pos\" gives z and w in each "
+                            "position");
 }
 
 // rule: PIPE.CLIP.LINE

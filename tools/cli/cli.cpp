@@ -126,8 +126,14 @@ std::optional<LoadedScene> load_scene(const std::string& path) {
   }
   LoadedScene loaded;
   loaded.scene = std::move(std::get<Scene>(scene));
-  if (has_pipeline_state(loaded.scene))
+  if (has_pipeline_state(loaded.scene)) {
+    // rule: SCENE.PIPELINE
+    if (auto err = pipe::validate(loaded.scene)) {
+      error(err->what());
+      return std::nullopt;
+    }
     return loaded;
+  }
   auto prepared = prepare(loaded.scene);
   if (auto* err = std::get_if<SceneError>(&prepared)) {
     error(err->what());

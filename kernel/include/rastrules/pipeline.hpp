@@ -247,6 +247,16 @@ struct PipeOptions {
   std::uint64_t max_fragments = std::uint64_t{1} << 26;
 };
 
+// Returns the first error of a scene's pipeline state and per-vertex lists, in field order: the
+// viewport (PIPE.VIEWPORT.RANGE), the matrices (PIPE.TRANSFORM.FLOAT32), the attribute
+// declarations (PIPE.INPUT.ATTRIBUTES, PIPE.INTERP.LOCATION), the depth state
+// (PIPE.DEPTH.FORMAT, PIPE.DEPTH.BIAS, SCENE.INPUT.LIMITS), then each primitive's vertex count,
+// z and w (window space only, one per vertex) and attr (exactly when attributes are declared,
+// one list per vertex, one finite value per attribute). run_pipeline checks the same first;
+// positions and what the transform makes of them are checked as it runs.
+// rule: SCENE.PIPELINE, PIPE.INPUT.ATTRIBUTES
+[[nodiscard]] std::optional<SceneError> validate(const Scene& s);
+
 // Validates, transforms, clips, rasterizes (all rules of the other files), interpolates and
 // tests depth. Returns the first error (field, message) of bad input.
 [[nodiscard]] std::variant<PipeResult, SceneError> run_pipeline(const Scene& s,

@@ -61,6 +61,13 @@ struct Primitive {
 // count is "at least 2").
 [[nodiscard]] std::size_t required_vertex_count(PrimitiveType t);
 
+// Returns what is wrong with n vertices for a primitive of type t, e.g. "a line must have
+// exactly 2 vertices [x, y], got 3" ("[x, y, z] or [x, y, z, w]" for clip-space positions), or
+// nullopt when n is right. The one wording of this rule for every reader of scenes.
+// rule: SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP
+[[nodiscard]] std::optional<std::string> vertex_count_problem(PrimitiveType t, std::size_t n,
+                                                              bool clip_space);
+
 // A scene: the target and its conventions, the primitives, and the pipeline state it asks for.
 // A scene without pipeline state (has_pipeline_state() false) is drawn by coverage alone;
 // otherwise rastrules::pipe::run_pipeline() draws it (transform, clipping, depth, attributes),

@@ -74,8 +74,6 @@ public:
   std::optional<SceneError> add_primitive(std::size_t i) {
     i_ = i;
     const Primitive& pp = s_.primitives[i];
-    if (auto bad = check_attributes(pp))
-      return bad;
     return pp.pos.empty() ? add_window_space(pp) : add_clip_space(pp);
   }
 
@@ -88,37 +86,6 @@ private:
   }
   [[nodiscard]] std::vector<float> vertex_attr(const Primitive& pp, std::size_t j) const {
     return nattr_ == 0 ? std::vector<float>{} : pp.attr[j];
-  }
-
-  // rule: PIPE.INPUT.ATTRIBUTES
-  std::optional<SceneError> check_attributes(const Primitive& pp) const {
-    const std::string pf = field();
-    const std::size_t nv = vertex_count(pp);
-    const std::size_t nattr = nattr_;
-    if (nattr > 0 && pp.attr.size() != nv)
-      return err(pf + ".attr",
-                 "needs one entry per vertex (" + std::to_string(nv) + ") (PIPE.INPUT.ATTRIBUTES)");
-    if (nattr == 0 && !pp.attr.empty())
-      return err(pf + ".attr",
-                 "is given but the scene declares no attributes (PIPE.INPUT.ATTRIBUTES)");
-    for (std::size_t j = 0; j < pp.attr.size(); ++j) {
-      if (pp.attr[j].size() != nattr)
-        return err(pf + ".attr" + "[" + std::to_string(j) + "]",
-                   "needs one value per declared attribute (" + std::to_string(nattr) +
-                       ") (PIPE.INPUT.ATTRIBUTES)");
-      for (std::size_t k = 0; k < nattr; ++k)
-        if (!std::isfinite(pp.attr[j][k]))
-          return err(pf + ".attr[" + std::to_string(j) + "][" + std::to_string(k) + "]",
-                     std::string(std::isnan(pp.attr[j][k]) ? "is NaN" : "is infinite") +
-                         " (PIPE.INPUT.ATTRIBUTES)");
-    }
-    const std::size_t required = required_vertex_count(pp.type);
-    if ((required != 0 && nv != required) || (required == 0 && nv < 2))
-      return err(pf + (pp.pos.empty() ? ".v" : ".pos"),
-                 "a " + std::string(to_string(pp.type)) + " needs " +
-                     (required == 0 ? std::string("at least 2") : std::to_string(required)) +
-                     " vertices");
-    return std::nullopt;
   }
 
   // rule: PIPE.INTERP.FLAT
@@ -170,10 +137,6 @@ private:
   std::optional<SceneError> add_window_space(const Primitive& pp) {
     const std::string pf = field();
     const std::size_t nv = vertex_count(pp);
-    if (!pp.z.empty() && pp.z.size() != nv)
-      return err(pf + ".z", "needs one value per vertex");
-    if (!pp.w.empty() && pp.w.size() != nv)
-      return err(pf + ".w", "needs one value per vertex");
     std::vector<WindowVertex> v(nv);
     for (std::size_t j = 0; j < nv; ++j) {
       v[j].x = pp.v[j][0];

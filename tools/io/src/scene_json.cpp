@@ -267,16 +267,6 @@ struct PipeExtras {
 constexpr std::array<std::pair<std::string_view, DerivativeMode>, 2> kDerivativeNames = {
     {Names<DerivativeMode>::table[1], Names<DerivativeMode>::table[2]}};
 
-// The vertex count a primitive type needs, for messages.
-std::string vertex_count_text(PrimitiveType t) {
-  const std::size_t need = required_vertex_count(t);
-  if (need == 0)
-    return "at least 2 vertices";
-  if (need == 1)
-    return "exactly 1 vertex";
-  return "exactly " + std::to_string(need) + " vertices";
-}
-
 enum class Kind { kNull, kBool, kInt, kUint, kFloat, kString, kObject, kArray };
 
 struct Value {
@@ -418,52 +408,21 @@ public:
       }
       if (!has_pos && !given(kVKeyIndex))
         return fail(f.path + ".v", "is missing");
-      // rule: SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP
-      // The type may come after "v" and "aa", so both are checked against it here.
-      const std::size_t n = has_pos ? extras_.pos.size() : current_.v.size();
-      const std::size_t need = required_vertex_count(current_.type);
-      if ((need != 0 && n != need) || (need == 0 && n < 2)) {
-        return fail(f.path + (has_pos ? ".pos" : ".v"),
-                    "a " + std::string(to_string(current_.type)) + " must have " +
-                        vertex_count_text(current_.type) +
-                        (has_pos ? " [x, y, z] or [x, y, z, w]" : " [x, y]") + ", got " +
-                        std::to_string(n));
-      }
-      const bool line =
-          current_.type == PrimitiveType::kLine || current_.type == PrimitiveType::kLineStrip;
-      if (given(kAAKeyIndex) && !line) {
+      // rule: SCENE.PRIM.LINE
+      // "aa" is a key of lines only, whatever its value (the type may come after it).
+      if (given(kAAKeyIndex) && current_.type != PrimitiveType::kLine &&
+          current_.type != PrimitiveType::kLineStrip) {
         return fail(f.path + ".aa", "only lines and line strips take \"aa\", not a " +
                                         std::string(to_string(current_.type)));
       }
-      // rule: SCENE.PIPELINE
-      for (const auto& [key, list, what] :
-           {std::tuple{kZKeyIndex, &extras_.z, "z"}, std::tuple{kWKeyIndex, &extras_.w, "w"}}) {
-        if (!given(key))
-          continue;
-        const std::string field = f.path + "." + what;
-        if (has_pos) {
-          return fail(field, "goes with \"v\" only (window space); \"pos\" gives z and w in "
-                             "each position");
-        }
-        if (list->size() != n) {
-          return fail(field, "must have one number per vertex (" + std::to_string(n) + "), got " +
-                                 std::to_string(list->size()));
-        }
-      }
-      if (given(kAttrKeyIndex) && extras_.attr.size() != n) {
-        return fail(f.path + ".attr", "must have one list of attribute values per vertex (" +
-                                          std::to_string(n) + "), got " +
-                                          std::to_string(extras_.attr.size()));
-      }
+      // Vertex counts, z and w with "v" only, and the per-vertex lists against the vertex count
+      // and the declared attributes are rules of the scene, checked once, by the kernel
+      // (prepare, run_pipeline): the reader checks syntax and types (SCENE.INPUT.ERRORS).
       const std::size_t index = scene_.primitives.size();
-      if (attributes_done_ && !check_attr(index, given(kAttrKeyIndex), extras_))
-        return false;
       scene_.primitives.push_back(std::move(current_));
       if (given(kZKeyIndex) || given(kWKeyIndex) || has_pos || given(kAttrKeyIndex)) {
         extras_of_.resize(index);
         extras_of_.push_back(std::move(extras_));
-        has_attr_.resize(index);
-        has_attr_.push_back(given(kAttrKeyIndex));
       }
       return true;
     }
@@ -514,14 +473,14 @@ public:
       return fail(f.path, "must have exactly 16 numbers (a row-major 4x4 matrix), got " +
                               std::to_string(f.count));
     }
+    // An empty per-vertex list would read as an absent key: refused as the empty array it is.
+    if ((f.ctx == Ctx::kNumberList || f.ctx == Ctx::kPosArray || f.ctx == Ctx::kAttrArray) &&
+        f.count == 0) {
+      return fail(f.path, "must have one entry per vertex, got none");
+    }
     if (f.ctx == Ctx::kPosCoords && f.count < 3) {
       return fail(f.path, "must have 3 or 4 coordinates [x, y, z] or [x, y, z, w], got " +
                               std::to_string(f.count));
-    }
-    if (f.ctx == Ctx::kAttributesArray)
-      attributes_done_ = true;
-    if (f.ctx == Ctx::kAttrValues && attributes_done_ && f.count != pipe_.attributes.size()) {
-      return fail(f.path, attr_count_text(f.count));
     }
     return true;
   }
@@ -903,10 +862,6 @@ private:
       if (v.kind != Kind::kArray) {
         return type_error(field, "an array of one list of attribute values per vertex", v);
       }
-      if (attributes_done_ && pipe_.attributes.empty()) {
-        return fail(field,
-                    "is given but the scene declares no \"attributes\" (PIPE.INPUT.ATTRIBUTES)");
-      }
       return push(Ctx::kAttrArray, field);
     case Slot::kAttrVertex:
       if (v.kind != Kind::kArray) {
@@ -950,7 +905,7 @@ private:
     case Ctx::kAttributesArray:
       return pipe::kMaxAttributes;
     case Ctx::kAttrValues:
-      return attributes_done_ ? pipe_.attributes.size() : pipe::kMaxAttributes;
+      return pipe::kMaxAttributes;
     default:
       return 0;
     }
@@ -983,8 +938,6 @@ private:
       return "must have at most " + std::to_string(pipe::kMaxAttributes) +
              " attributes (PIPE.INPUT.ATTRIBUTES), got more";
     case Ctx::kAttrValues:
-      if (attributes_done_)
-        return attr_count_text(0, true);
       return "must have one value per declared attribute (at most " +
              std::to_string(pipe::kMaxAttributes) + "), got more";
     default:
@@ -1043,39 +996,9 @@ private:
     return true;
   }
 
-  // "must have N values (one per declared attribute), got M" (more when `more`).
-  std::string attr_count_text(std::size_t got, bool more = false) const {
-    const std::size_t n = pipe_.attributes.size();
-    return "must have " + std::to_string(n) + (n == 1 ? " value" : " values") +
-           " (one per declared attribute), got " +
-           (more ? std::string("more") : std::to_string(got));
-  }
-
   // rule: SCENE.PIPELINE
-  // Checks primitive p's "attr" against the declared attributes: required when the scene
-  // declares any, forbidden otherwise, one value per attribute at each vertex.
-  bool check_attr(std::size_t p, bool has_attr, const PipeExtras& e) {
-    const std::string path = "primitives[" + std::to_string(p) + "].attr";
-    const std::size_t n = pipe_.attributes.size();
-    if (has_attr && n == 0) {
-      return fail(path,
-                  "is given but the scene declares no \"attributes\" (PIPE.INPUT.ATTRIBUTES)");
-    }
-    if (!has_attr && n != 0) {
-      return fail(path, "is missing: the scene declares " + std::to_string(n) +
-                            (n == 1 ? " attribute" : " attributes") + " (PIPE.INPUT.ATTRIBUTES)");
-    }
-    for (std::size_t j = 0; j < e.attr.size(); ++j) {
-      if (e.attr[j].size() != n) {
-        return fail(path + "[" + std::to_string(j) + "]", attr_count_text(e.attr[j].size()));
-      }
-    }
-    return true;
-  }
-
-  // rule: SCENE.PIPELINE
-  // Once the root object is complete: the viewport's defaults (the target may come after it),
-  // the checks between keys given in any order, and the pipeline scene itself.
+  // Once the root object is complete: the viewport's defaults (the target may come after it)
+  // and the pipeline scene itself.
   bool finish_pipeline() {
     if (pipeline_key_.empty())
       return true;
@@ -1093,20 +1016,7 @@ private:
           *fields[k] = defaults[k];
       }
     }
-    // rule: PIPE.INTERP.LOCATION
-    for (std::size_t k = 0; k < pipe_.attributes.size(); ++k) {
-      if (pipe_.attributes[k].location == pipe::Location::kSample &&
-          scene_.msaa.shading != ShadingRate::kSample) {
-        return fail("attributes[" + std::to_string(k) + "].location",
-                    "\"sample\" needs \"shading\": \"sample\" (PIPE.INTERP.LOCATION)");
-      }
-    }
     extras_of_.resize(scene_.primitives.size());
-    has_attr_.resize(scene_.primitives.size());
-    for (std::size_t p = 0; p < scene_.primitives.size(); ++p) {
-      if (!check_attr(p, has_attr_[p], extras_of_[p]))
-        return false;
-    }
     for (std::size_t p = 0; p < scene_.primitives.size(); ++p) {
       Primitive& prim = scene_.primitives[p];
       PipeExtras& e = extras_of_[p];
@@ -1257,11 +1167,9 @@ private:
   unsigned viewport_seen_ = 0;        // the viewport keys given (kViewportKeys order)
   pipe::Mat4f* matrix_ = nullptr;     // the matrix being read
   pipe::AttributeDecl attribute_;     // the attribute being read
-  bool attributes_done_ = false;      // "attributes" read completely
   bool list_is_w_ = false;            // the number list being read is "w" (else "z")
   PipeExtras extras_;                 // the current primitive's pipeline keys
   std::vector<PipeExtras> extras_of_; // per primitive, up to the last one that has any
-  std::vector<bool> has_attr_;        // per primitive, up to the last one with extras
   bool root_done_ = false;
   std::string last_path_;
   std::optional<SceneError> error_;
@@ -1618,11 +1526,13 @@ std::string write_scene(const Scene& s) {
       out += "]";
     } else {
       out += vertices_text(prim.v);
-      if (!prim.z.empty())
-        out += ", \"z\": " + floats_text(prim.z.data(), prim.z.size());
-      if (!prim.w.empty())
-        out += ", \"w\": " + floats_text(prim.w.data(), prim.w.size());
     }
+    // Written as held, also beside "pos" (which the kernel's validator refuses): the text reads
+    // back to the same scene whatever it holds.
+    if (!prim.z.empty())
+      out += ", \"z\": " + floats_text(prim.z.data(), prim.z.size());
+    if (!prim.w.empty())
+      out += ", \"w\": " + floats_text(prim.w.data(), prim.w.size());
     if (!prim.attr.empty()) {
       out += ", \"attr\": [";
       for (std::size_t i = 0; i < prim.attr.size(); ++i) {
