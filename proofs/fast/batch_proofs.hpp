@@ -50,6 +50,7 @@
 #include "rastrules/raster/fast_batch.hpp"
 #include "rastrules/snap.hpp"
 #include "support/kernel_model.hpp"
+#include "support/obligation.hpp"
 #include "support/prover.hpp"
 #include "support/sym.hpp"
 
@@ -599,6 +600,10 @@ template <class F> void prove_batch_small_i32(Prover& pr) {
   }
 }
 
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kBatchSmallI32{
+    "fast/batch_small_i32", []<class F>(Prover& pr) { prove_batch_small_i32<F>(pr); }};
+
 // The bit-level facts of the SIMD unit's lanes, on 32-bit bit-vectors (two's complement, as
 // the intrinsics compute; z3's < and > on bit-vectors are signed):
 //   1. the sign test: (l0 | l1 | l2) > -1 (_mm256_cmpgt_epi32 of the OR with minus1) iff
@@ -662,6 +667,10 @@ template <class F> void prove_lane_bits(Prover& pr) {
                  x40 * ctx.bv_val(std::int64_t{1} << k, 40));
   }
 }
+
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kLaneBits{"fast/batch_small_i32 (lane bits)",
+                                       []<class F>(Prover& pr) { prove_lane_bits<F>(pr); }};
 
 // ---------------------------------------------------------------------------------------------
 // FAST.BATCH.SNAP_SIMD
@@ -910,5 +919,10 @@ void prove_batch_snap_simd(Prover& pr, const std::vector<ExponentRange>& ranges)
                  daz.accept && daz.value == zero32 && ftz_accept && ftz_value == zero32);
   }
 }
+
+// The obligation as its proof and the self-check run it: every biased exponent in one range.
+inline const ProofObligation kBatchSnapSimd{"fast/batch_snap_simd", []<class F>(Prover& pr) {
+                                              prove_batch_snap_simd<F>(pr, {{0, 255}});
+                                            }};
 
 } // namespace rastrules::proofs

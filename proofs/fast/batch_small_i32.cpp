@@ -25,14 +25,13 @@
 // otherwise.
 
 #include "fast/batch_proofs.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
-  int status = run_proof("fast/batch_small_i32", "FAST.BATCH.SMALL_I32",
-                         {"SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE", "FIX.BIAS.FORM"},
-                         BatchKernelModel::constants(), prove_batch_small_i32<BatchKernelModel>);
-  status |= run_proof("fast/batch_small_i32 (lane bits)", "FAST.BATCH.SMALL_I32", {},
-                      BatchKernelModel::constants(), prove_lane_bits<BatchKernelModel>);
+  int status = run_obligation<BatchKernelModel>(
+      kBatchSmallI32, "FAST.BATCH.SMALL_I32",
+      {"SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE", "FIX.BIAS.FORM"});
+  status |= run_obligation<BatchKernelModel>(kLaneBits, "FAST.BATCH.SMALL_I32", {});
   return status;
 }

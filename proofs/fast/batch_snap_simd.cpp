@@ -17,15 +17,13 @@
 // otherwise.
 
 #include "fast/batch_proofs.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
   if (!snap_model_matches_kernel())
     return 1;
-  return run_proof("fast/batch_snap_simd", "FAST.BATCH.SNAP_SIMD",
-                   {"SNAP.VERTEX.ROUND", "SNAP.VERTEX.RANGE", "SNAP.VERTEX.INVALID"},
-                   SnapKernelModel::constants(), [](Prover& pr) {
-                     prove_batch_snap_simd<SnapKernelModel>(pr, {{0, 255}});
-                   });
+  return run_obligation<SnapKernelModel>(
+      kBatchSnapSimd, "FAST.BATCH.SNAP_SIMD",
+      {"SNAP.VERTEX.ROUND", "SNAP.VERTEX.RANGE", "SNAP.VERTEX.INVALID"});
 }

@@ -28,6 +28,7 @@
 #include "rastrules/formula/lane.hpp"
 #include "rastrules/raster/fast.hpp"
 #include "support/kernel_model.hpp"
+#include "support/obligation.hpp"
 #include "support/prover.hpp"
 #include "support/sym.hpp"
 
@@ -182,6 +183,10 @@ template <class F> void prove_lane_budget(Prover& pr) {
   }
 }
 
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kLaneBudget{"fast/lane_budget",
+                                         []<class F>(Prover& pr) { prove_lane_budget<F>(pr); }};
+
 // FAST.LANE.I32, the equivalence. Proved as a chain:
 //   E1. for a, b, p in SNAP.VERTEX.RANGE: |edge_value(a, b, p)| < 2^kEdgeBits and
 //       E + edge_bias(f) fits int64_t, for both flags (FIX.BUDGET.EDGE_VALUE, re-checked here on
@@ -323,6 +328,10 @@ template <class F> void prove_lane_equivalence(Prover& pr) {
   }
 }
 
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kLaneEquivalence{
+    "fast/lane_equivalence", []<class F>(Prover& pr) { prove_lane_equivalence<F>(pr); }};
+
 // FAST.TILE.CLASSIFY. For all a, b in SNAP.VERTEX.RANGE (A = ay - by, B = bx - ax on the lane
 // type), Lmax = lane_max(A, B, kTile - 1), Lmin = lane_min(A, B, kTile - 1) on the lane type,
 // every lane 0 <= i, j < kTile with L = lane_offset(i, j, A, B) and every integer C (an edge's
@@ -383,5 +392,9 @@ template <class F> void prove_tile_classify(Prover& pr) {
              in.hyps, lmax.expr() == hi.expr() && lmin.expr() == lo.expr());
   }
 }
+
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kTileClassify{"fast/tile_classify",
+                                           []<class F>(Prover& pr) { prove_tile_classify<F>(pr); }};
 
 } // namespace rastrules::proofs

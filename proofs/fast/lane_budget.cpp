@@ -10,10 +10,9 @@
 // otherwise.
 
 #include "fast/fast_proofs.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
-  return run_proof("fast/lane_budget", "FAST.LANE.I32", {"SNAP.VERTEX.RANGE"},
-                   FastKernelModel::constants(), prove_lane_budget<FastKernelModel>);
+  return run_obligation<FastKernelModel>(kLaneBudget, "FAST.LANE.I32", {"SNAP.VERTEX.RANGE"});
 }

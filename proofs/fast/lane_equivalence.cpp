@@ -17,14 +17,14 @@
 // otherwise.
 
 #include "fast/fast_proofs.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
   if (!shift_restatement_matches_cpp())
     return 1;
-  return run_proof("fast/lane_equivalence", "FAST.LANE.I32",
-                   {"SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE", "FIX.BIAS.FORM",
-                    "FIX.STEP.INCREMENTAL", "TRI.FILL.TOP_LEFT"},
-                   FastKernelModel::constants(), prove_lane_equivalence<FastKernelModel>);
+  return run_obligation<FastKernelModel>(kLaneEquivalence, "FAST.LANE.I32",
+                                         {"SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE",
+                                          "FIX.BIAS.FORM", "FIX.STEP.INCREMENTAL",
+                                          "TRI.FILL.TOP_LEFT"});
 }

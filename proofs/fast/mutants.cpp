@@ -144,42 +144,20 @@ struct SnapScale128 : SnapKernelModel {
   static constexpr float kScale = static_cast<float>(kSubpixelOne / 2);
 };
 
-// prove_batch_snap_simd over every biased exponent in one range, as batch_snap_simd.cpp runs it.
-template <class F> void snap_every_exponent(Prover& pr) {
-  prove_batch_snap_simd<F>(pr, {{0, 255}});
-}
-
 } // namespace
-} // namespace rastrules::proofs
 
-int main() {
-  using namespace rastrules::proofs;
-  return run_mutation_selfcheck(
-      "fast",
-      {
-          {Tile64::kName, "fast/lane_budget", prove_lane_budget<Tile64>},
-          // The same tile size breaks the decision too: some |L| exceeds the clamp bound.
-          {Tile64::kName, "fast/lane_equivalence", prove_lane_equivalence<Tile64>},
-          {WideCoordsTile32::kName, "fast/lane_budget", prove_lane_budget<WideCoordsTile32>},
-          {Int16Lanes::kName, "fast/lane_budget", prove_lane_budget<Int16Lanes>},
-          {Clamp20::kName, "fast/lane_equivalence", prove_lane_equivalence<Clamp20>},
-          {QOffByOne::kName, "fast/lane_equivalence", prove_lane_equivalence<QOffByOne>},
-          {Shift7::kName, "fast/lane_equivalence", prove_lane_equivalence<Shift7>},
-          {BiasDropped::kName, "fast/lane_equivalence", prove_lane_equivalence<BiasDropped>},
-          {LaneMaxWrongCorner::kName, "fast/tile_classify",
-           prove_tile_classify<LaneMaxWrongCorner>},
-          {LaneMinShort::kName, "fast/tile_classify", prove_tile_classify<LaneMinShort>},
-          {BatchSpanTwice::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchSpanTwice>},
-          {BatchLaneBits29::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchLaneBits29>},
-          {BatchOneUpTo24::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchOneUpTo24>},
-          {BatchShift7::kName, "fast/batch_small_i32", prove_batch_small_i32<BatchShift7>},
-          {BatchPoisonPositive::kName, "fast/batch_small_i32 (lane bits)",
-           prove_lane_bits<BatchPoisonPositive>},
-          {SnapRoundTowardZero::kName, "fast/batch_snap_simd",
-           snap_every_exponent<SnapRoundTowardZero>},
-          {SnapHighestTooLarge::kName, "fast/batch_snap_simd",
-           snap_every_exponent<SnapHighestTooLarge>},
-          {SnapScale128::kName, "fast/batch_snap_simd", snap_every_exponent<SnapScale128>},
-      },
-      FastKernelModel::constants(), {"SNAP.VERTEX.RANGE"});
+MutationSelfcheck mutation_selfcheck() {
+  return {"fast",
+          {refute<Tile64>(kLaneBudget),
+           // The same tile size breaks the decision too: some |L| exceeds the clamp bound.
+           refute<Tile64>(kLaneEquivalence), refute<WideCoordsTile32, Int16Lanes>(kLaneBudget),
+           refute<Clamp20, QOffByOne, Shift7, BiasDropped>(kLaneEquivalence),
+           refute<LaneMaxWrongCorner, LaneMinShort>(kTileClassify),
+           refute<BatchSpanTwice, BatchLaneBits29, BatchOneUpTo24, BatchShift7>(kBatchSmallI32),
+           refute<BatchPoisonPositive>(kLaneBits),
+           refute<SnapRoundTowardZero, SnapHighestTooLarge, SnapScale128>(kBatchSnapSimd)},
+          FastKernelModel::constants(),
+          {"SNAP.VERTEX.RANGE"}};
 }
+
+} // namespace rastrules::proofs

@@ -10,11 +10,10 @@
 // otherwise.
 
 #include "fast/fast_proofs.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
-  return run_proof("fast/tile_classify", "FAST.TILE.CLASSIFY",
-                   {"SNAP.VERTEX.RANGE", "FAST.LANE.I32"}, FastKernelModel::constants(),
-                   prove_tile_classify<FastKernelModel>);
+  return run_obligation<FastKernelModel>(kTileClassify, "FAST.TILE.CLASSIFY",
+                                         {"SNAP.VERTEX.RANGE", "FAST.LANE.I32"});
 }

@@ -14,10 +14,10 @@
 
 #include "fixed/edge_value_no_overflow.hpp"
 #include "support/kernel_model.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
-  return run_proof("fixed/edge_value_no_overflow", "FIX.BUDGET.EDGE_VALUE", {"SNAP.VERTEX.RANGE"},
-                   KernelModel::constants(), prove_edge_value_no_overflow<KernelModel>);
+  return run_obligation<KernelModel>(kEdgeValueNoOverflow, "FIX.BUDGET.EDGE_VALUE",
+                                     {"SNAP.VERTEX.RANGE"});
 }

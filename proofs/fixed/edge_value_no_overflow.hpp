@@ -7,6 +7,7 @@
 #include <string>
 
 #include "support/kernel_model.hpp"
+#include "support/obligation.hpp"
 #include "support/prover.hpp"
 
 namespace rastrules::proofs {
@@ -61,5 +62,10 @@ template <class F> void prove_edge_value_no_overflow(Prover& pr) {
              dom.ctx().bool_val(true), dom.obligations_since(mark));
   }
 }
+
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kEdgeValueNoOverflow{
+    "fixed/edge_value_no_overflow",
+    []<class F>(Prover& pr) { prove_edge_value_no_overflow<F>(pr); }};
 
 } // namespace rastrules::proofs

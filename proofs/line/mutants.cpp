@@ -104,31 +104,21 @@ struct MeetsUpperEdgesClosed : DiamondKernelModel {
   }
 };
 
-// The run of broken model F against both diamond-exit obligations; their NraProver theorems
-// count too.
-template <class F> MutantRun mutant() {
-  return {F::kName, "line/diamond_exit_matches_spec", [](Prover& pr) {
-            NraProver nra(pr.ctx());
-            prove_d3d_diamond_exit<F>(pr, nra);
-            prove_d3d_meets_witness<F>(pr, nra);
-            return nra.results();
-          }};
-}
-
 } // namespace
-} // namespace rastrules::proofs
 
-int main() {
-  using namespace rastrules::proofs;
-  return run_mutation_selfcheck("line",
-                                {
-                                    mutant<RightCornerNeverIncluded>(),
-                                    mutant<MajorSwapped>(),
-                                    mutant<UpperEdgesIncluded>(),
-                                    mutant<OpenDiamond>(),
-                                    mutant<ClosedDiamond>(),
-                                    mutant<LowerLeftExcluded>(),
-                                    mutant<MeetsUpperEdgesClosed>(),
-                                },
-                                kernel_constants());
+// Both diamond-exit obligations; their NraProver theorems count too.
+MutationSelfcheck mutation_selfcheck() {
+  return {"line",
+          {refute<RightCornerNeverIncluded, MajorSwapped, UpperEdgesIncluded, OpenDiamond,
+                  ClosedDiamond, LowerLeftExcluded, MeetsUpperEdgesClosed>(
+              "line/diamond_exit_matches_spec",
+              []<class F>(Prover& pr) {
+                NraProver nra(pr.ctx());
+                prove_d3d_diamond_exit<F>(pr, nra);
+                prove_d3d_meets_witness<F>(pr, nra);
+                return nra.results();
+              })},
+          kernel_constants()};
 }
+
+} // namespace rastrules::proofs

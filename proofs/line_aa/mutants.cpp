@@ -43,24 +43,20 @@ struct BlendSwapped : AAModel {
   }
 };
 // A 32-bit accumulator.
-struct BlendInt32 : AAModel {
+struct BlendInt32 : AccumulatorOf<AAModel, std::int32_t> {
   static constexpr const char* kName = "blend in int32_t";
-  using Acc = Sym<std::int32_t>;
 };
 
 } // namespace
-} // namespace rastrules::proofs
 
-int main() {
-  using namespace rastrules::proofs;
-  return run_mutation_selfcheck(
-      "line_aa",
-      {
-          {SqrtZeroLess::kName, "line_aa/aa_formulas", prove_times_sqrt_less<SqrtZeroLess>},
-          {SqrtNonStrict::kName, "line_aa/aa_formulas", prove_times_sqrt_less<SqrtNonStrict>},
-          {SqrtNoSign::kName, "line_aa/aa_formulas", prove_times_sqrt_less<SqrtNoSign>},
-          {BlendSwapped::kName, "line_aa/aa_formulas", prove_blend<BlendSwapped>},
-          {BlendInt32::kName, "line_aa/aa_formulas", prove_blend<BlendInt32>},
-      },
-      kernel_constants());
+// Both halves of the one proof line_aa/aa_formulas.cpp runs, one at a time.
+MutationSelfcheck mutation_selfcheck() {
+  return {"line_aa",
+          {refute<SqrtZeroLess, SqrtNonStrict, SqrtNoSign>(
+               "line_aa/aa_formulas", []<class F>(Prover& pr) { prove_times_sqrt_less<F>(pr); }),
+           refute<BlendSwapped, BlendInt32>("line_aa/aa_formulas",
+                                            []<class F>(Prover& pr) { prove_blend<F>(pr); })},
+          kernel_constants()};
 }
+
+} // namespace rastrules::proofs

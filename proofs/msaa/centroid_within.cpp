@@ -13,14 +13,13 @@
 // otherwise.
 
 #include "msaa/msaa_proofs.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
   if (!restatement_matches_kernel<MsaaKernelModel>())
     return 1;
-  return run_proof(
-      "msaa/centroid_within", "MSAA.CENTROID.WITHIN",
-      {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE", "TRI.FILL.TOP_LEFT", "MSAA.SAMPLE.POSITION"},
-      MsaaKernelModel::constants(), prove_centroid_within<MsaaKernelModel>);
+  return run_obligation<MsaaKernelModel>(
+      kCentroidWithin, "MSAA.CENTROID.WITHIN",
+      {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE", "TRI.FILL.TOP_LEFT", "MSAA.SAMPLE.POSITION"});
 }

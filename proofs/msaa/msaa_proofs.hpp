@@ -27,6 +27,7 @@
 #include "rastrules/fixed.hpp"
 #include "rastrules/msaa.hpp"
 #include "support/kernel_model.hpp"
+#include "support/obligation.hpp"
 #include "support/prover.hpp"
 #include "support/sym.hpp"
 
@@ -186,6 +187,10 @@ template <class F> void prove_sample_position(Prover& pr, bool with_edge_budget 
   }
 }
 
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kSamplePosition{
+    "msaa/sample_position", []<class F>(Prover& pr) { prove_sample_position<F>(pr); }};
+
 // MSAA.CENTROID.WITHIN, the arithmetic core. For each pattern of the model, every edge a -> b
 // with vertices in SNAP.VERTEX.RANGE, every pixel 0 <= px, py < kMaxTargetSide and either
 // inclusiveness of the edge:
@@ -262,5 +267,9 @@ template <class F> void prove_centroid_within(Prover& pr) {
     pr.prove(t2, {}, z3::implies(all_nonneg, ec >= 0 && z3::implies(ec == 0, all_zero)));
   }
 }
+
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kCentroidWithin{
+    "msaa/centroid_within", []<class F>(Prover& pr) { prove_centroid_within<F>(pr); }};
 
 } // namespace rastrules::proofs

@@ -72,30 +72,18 @@ struct MovedSample : MsaaKernelModel {
   }
 };
 
-template <class F> void all_position_theorems(Prover& pr) {
-  prove_sample_position<F>(pr);
-}
-
 } // namespace
-} // namespace rastrules::proofs
 
-int main() {
-  using namespace rastrules::proofs;
-  return run_mutation_selfcheck(
-      "msaa",
-      {
-          {PositionsInInt16::kName, "msaa/sample_position",
-           all_position_theorems<PositionsInInt16>},
-          {GridUnitTooLarge::kName, "msaa/sample_position",
-           all_position_theorems<GridUnitTooLarge>},
-          {OffsetsFromTheCorner::kName, "msaa/sample_position",
-           all_position_theorems<OffsetsFromTheCorner>},
-          // Theorems 1 and 2 only: theorem 3 (the edge budget) still holds there but takes Z3
-          // about 30 s outside the vertex range.
-          {TargetTooLarge::kName, "msaa/sample_position",
-           [](Prover& pr) { prove_sample_position<TargetTooLarge>(pr, false); }},
-          {QuadrantPattern::kName, "msaa/centroid_within", prove_centroid_within<QuadrantPattern>},
-          {MovedSample::kName, "msaa/centroid_within", prove_centroid_within<MovedSample>},
-      },
-      MsaaKernelModel::constants(), {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE"});
+MutationSelfcheck mutation_selfcheck() {
+  return {"msaa",
+          {refute<PositionsInInt16, GridUnitTooLarge, OffsetsFromTheCorner>(kSamplePosition),
+           // Theorems 1 and 2 only: theorem 3 (the edge budget) still holds there but takes Z3
+           // about 30 s outside the vertex range.
+           refute<TargetTooLarge>(kSamplePosition.file,
+                                  []<class F>(Prover& pr) { prove_sample_position<F>(pr, false); }),
+           refute<QuadrantPattern, MovedSample>(kCentroidWithin)},
+          MsaaKernelModel::constants(),
+          {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE"}};
 }
+
+} // namespace rastrules::proofs

@@ -11,14 +11,13 @@
 // otherwise.
 
 #include "msaa/msaa_proofs.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
   if (!restatement_matches_kernel<MsaaKernelModel>())
     return 1;
-  return run_proof("msaa/sample_position", "MSAA.SAMPLE.POSITION, MSAA.PATTERN.GRID",
-                   {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE"},
-                   MsaaKernelModel::constants(),
-                   [](Prover& pr) { prove_sample_position<MsaaKernelModel>(pr); });
+  return run_obligation<MsaaKernelModel>(
+      kSamplePosition, "MSAA.SAMPLE.POSITION, MSAA.PATTERN.GRID",
+      {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE"});
 }

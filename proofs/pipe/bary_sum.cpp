@@ -12,13 +12,13 @@
 // printed otherwise.
 
 #include "pipe/pipe_proofs.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
   if (!barycentrics_match_kernel())
     return 1;
-  return run_proof("pipe/bary_sum", "PIPE.BARY.SUM, PIPE.BARY.DOUBLE_EXACT",
-                   {"SNAP.VERTEX.RANGE", "PIPE.BARY.EXACT", "TRI.EDGE.FUNCTION", "TRI.ORIENT.AREA"},
-                   PipeModel::constants(), prove_bary_sum<PipeModel>);
+  return run_obligation<PipeModel>(
+      kBarySum, "PIPE.BARY.SUM, PIPE.BARY.DOUBLE_EXACT",
+      {"SNAP.VERTEX.RANGE", "PIPE.BARY.EXACT", "TRI.EDGE.FUNCTION", "TRI.ORIENT.AREA"});
 }

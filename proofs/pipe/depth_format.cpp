@@ -12,13 +12,12 @@
 // otherwise.
 
 #include "pipe/pipe_proofs.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
   if (!depth_format_matches_kernel())
     return 1;
-  return run_proof("pipe/depth_format", "PIPE.DEPTH.FORMAT, PIPE.DEPTH.UNORM_ROUND",
-                   {"PIPE.DEPTH.CLAMP", "PIPE.VIEWPORT.RANGE"}, PipeModel::constants(),
-                   prove_depth_format<PipeModel>);
+  return run_obligation<PipeModel>(kDepthFormat, "PIPE.DEPTH.FORMAT, PIPE.DEPTH.UNORM_ROUND",
+                                   {"PIPE.DEPTH.CLAMP", "PIPE.VIEWPORT.RANGE"});
 }

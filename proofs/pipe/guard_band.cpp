@@ -12,12 +12,11 @@
 // otherwise.
 
 #include "pipe/pipe_proofs.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
-  return run_proof(
-      "pipe/guard_band", "PIPE.CLIP.GUARD_BAND_SNAP",
-      {"PIPE.CLIP.VOLUME", "SNAP.VERTEX.ROUND", "SNAP.VERTEX.RANGE", "SCENE.TARGET.LIMITS"},
-      PipeModel::constants(), prove_guard_band<PipeModel>);
+  return run_obligation<PipeModel>(
+      kGuardBand, "PIPE.CLIP.GUARD_BAND_SNAP",
+      {"PIPE.CLIP.VOLUME", "SNAP.VERTEX.ROUND", "SNAP.VERTEX.RANGE", "SCENE.TARGET.LIMITS"});
 }

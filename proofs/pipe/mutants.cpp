@@ -34,17 +34,14 @@ struct AreaReversed : PipeModel {
 };
 
 // Barycentrics in 32-bit integers.
-struct BaryInt32 : PipeModel {
+struct BaryInt32 : AccumulatorOf<PipeModel, std::int32_t> {
   static constexpr const char* kName = "barycentrics in int32_t";
-  using Acc = Sym<std::int32_t>;
 };
 
 // Coordinates of 2^26 raw units (2^18 px) each side: still int64_t, but edge values reach
 // 2^55 and are no longer doubles exactly.
-struct Coordinates2To26 : PipeModel {
+struct Coordinates2To26 : CoordinateRangeOf<PipeModel, 26> {
   static constexpr const char* kName = "coordinate range [-2^26, 2^26)";
-  static constexpr std::int64_t kMinRaw = -(std::int64_t{1} << 26);
-  static constexpr std::int64_t kMaxRaw = (std::int64_t{1} << 26) - 1;
 };
 
 // The UNORM scale 2^n instead of 2^n - 1: depth 1.0 overflows the format.
@@ -77,21 +74,14 @@ struct GuardBandNoMargin : PipeModel {
 };
 
 } // namespace
-} // namespace rastrules::proofs
 
-int main() {
-  using namespace rastrules::proofs;
-  return run_mutation_selfcheck(
-      "pipe",
-      {
-          {WrongEdgeOrder::kName, "pipe/bary_sum", prove_bary_sum<WrongEdgeOrder>},
-          {AreaReversed::kName, "pipe/bary_sum", prove_bary_sum<AreaReversed>},
-          {BaryInt32::kName, "pipe/bary_sum", prove_bary_sum<BaryInt32>},
-          {Coordinates2To26::kName, "pipe/bary_sum", prove_bary_sum<Coordinates2To26>},
-          {UnormScale2n::kName, "pipe/depth_format", prove_depth_format<UnormScale2n>},
-          {UnormTruncate::kName, "pipe/depth_format", prove_depth_format<UnormTruncate>},
-          {UnormInFloat::kName, "pipe/depth_format", prove_depth_format<UnormInFloat>},
-          {GuardBandNoMargin::kName, "pipe/guard_band", prove_guard_band<GuardBandNoMargin>},
-      },
-      PipeModel::constants(), {"SNAP.VERTEX.RANGE", "PIPE.DEPTH.CLAMP"});
+MutationSelfcheck mutation_selfcheck() {
+  return {"pipe",
+          {refute<WrongEdgeOrder, AreaReversed, BaryInt32, Coordinates2To26>(kBarySum),
+           refute<UnormScale2n, UnormTruncate, UnormInFloat>(kDepthFormat),
+           refute<GuardBandNoMargin>(kGuardBand)},
+          PipeModel::constants(),
+          {"SNAP.VERTEX.RANGE", "PIPE.DEPTH.CLAMP"}};
 }
+
+} // namespace rastrules::proofs

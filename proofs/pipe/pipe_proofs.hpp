@@ -25,6 +25,7 @@
 #include "rastrules/formula/edge.hpp"
 #include "rastrules/pipeline.hpp"
 #include "support/kernel_model.hpp"
+#include "support/obligation.hpp"
 #include "support/prover.hpp"
 #include "support/sym.hpp"
 #include "support/sym_float.hpp"
@@ -213,6 +214,10 @@ template <class F> void prove_bary_sum(Prover& pr) {
   }
 }
 
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kBarySum{"pipe/bary_sum",
+                                      []<class F>(Prover& pr) { prove_bary_sum<F>(pr); }};
+
 // PIPE.DEPTH.FORMAT and PIPE.DEPTH.UNORM_ROUND, on IEEE-754 double (Z3's floating-point theory,
 // bit-exact). For every double z with 0 <= z <= 1 (a depth after PIPE.DEPTH.CLAMP, or a depth
 // clear value) and each UNORM format of n bits, with max = the model's scale (2^n - 1), y =
@@ -261,6 +266,10 @@ template <class F> void prove_depth_format(Prover& pr) {
   pr.use_solver(Solver::kArithmetic);
 }
 
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kDepthFormat{"pipe/depth_format",
+                                          []<class F>(Prover& pr) { prove_depth_format<F>(pr); }};
+
 // PIPE.CLIP.GUARD_BAND_SNAP. With G = the model's guard band (px, its exact value):
 //   1. every window coordinate X with |X| <= G + 1 (a point of the guard band, moved by a
 //      rounding error of at most 1 px) snaps inside SNAP.VERTEX.RANGE: every integer r within
@@ -304,5 +313,9 @@ template <class F> void prove_guard_band(Prover& pr) {
              -g + inset <= x && x <= g - inset);
   }
 }
+
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kGuardBand{"pipe/guard_band",
+                                        []<class F>(Prover& pr) { prove_guard_band<F>(pr); }};
 
 } // namespace rastrules::proofs

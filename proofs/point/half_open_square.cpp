@@ -12,14 +12,13 @@
 
 #include "point/half_open_square.hpp"
 #include "point/point_model.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
-  return run_proof(
-      "point/half_open_square",
+  return run_obligation<PointKernelModel>(
+      kHalfOpenSquare,
       "POINT.COVER.HALF_OPEN, POINT.RANGE, POINT.SHAPE.TWO_TRIANGLES, POINT.SHAPE.SQUARE",
       {"POINT.RANGE", "SNAP.VERTEX.RANGE", "TRI.FILL.TOP_LEFT", "TRI.FILL.CONVENTION",
-       "TRI.ORIENT.NORMALISE"},
-      PointKernelModel::constants(), prove_point_half_open_square<PointKernelModel>);
+       "TRI.ORIENT.NORMALISE"});
 }

@@ -10,6 +10,7 @@
 
 #include "point/point_model.hpp"
 #include "support/kernel_model.hpp"
+#include "support/obligation.hpp"
 #include "support/prover.hpp"
 
 namespace rastrules::proofs {
@@ -82,5 +83,9 @@ template <class F> void prove_point_half_open_square(Prover& pr) {
              (alt0 || alt1) == (in0 || in1), dom.obligations_since(mark));
   });
 }
+
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kHalfOpenSquare{
+    "point/half_open_square", []<class F>(Prover& pr) { prove_point_half_open_square<F>(pr); }};
 
 } // namespace rastrules::proofs

@@ -74,25 +74,14 @@ struct PointRangeTooWide : PointKernelModel {
   static constexpr std::int64_t kMaxPointCentreRaw = kMaxVertexRaw;
 };
 
-// The run of broken model F against the point obligation.
-template <class F> MutantRun mutant() {
-  return {F::kName, "point/half_open_square", prove_point_half_open_square<F>};
-}
-
 } // namespace
-} // namespace rastrules::proofs
 
-int main() {
-  using namespace rastrules::proofs;
-  return run_mutation_selfcheck("point",
-                                {
-                                    mutant<GapOnDiagonal>(),
-                                    mutant<FlippedDiagonalWrongWinding>(),
-                                    mutant<OverlappingHalves>(),
-                                    mutant<SquareTooSmall>(),
-                                    mutant<TiesNeverInside>(),
-                                    mutant<PointRangeTooWide>(),
-                                },
-                                PointKernelModel::constants(),
-                                {"POINT.RANGE", "SNAP.VERTEX.RANGE"});
+MutationSelfcheck mutation_selfcheck() {
+  return {"point",
+          {refute<GapOnDiagonal, FlippedDiagonalWrongWinding, OverlappingHalves, SquareTooSmall,
+                  TiesNeverInside, PointRangeTooWide>(kHalfOpenSquare)},
+          PointKernelModel::constants(),
+          {"POINT.RANGE", "SNAP.VERTEX.RANGE"}};
 }
+
+} // namespace rastrules::proofs

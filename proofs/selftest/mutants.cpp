@@ -66,16 +66,13 @@ struct BiasSwapped : KernelModel {
 };
 
 // A 32-bit accumulator, as a SIMD lane might use.
-struct Int32Accumulator : KernelModel {
+struct Int32Accumulator : AccumulatorOf<KernelModel, std::int32_t> {
   static constexpr const char* kName = "int32_t accumulator";
-  using Acc = Sym<std::int32_t>;
 };
 
 // A vertex range of 2^31 raw units each side (instead of SNAP.VERTEX.RANGE's 2^23).
-struct RangeTooWide : KernelModel {
+struct RangeTooWide : CoordinateRangeOf<KernelModel, 31> {
   static constexpr const char* kName = "vertex range [-2^31, 2^31)";
-  static constexpr std::int64_t kMinRaw = -(std::int64_t{1} << 31);
-  static constexpr std::int64_t kMaxRaw = (std::int64_t{1} << 31) - 1;
 };
 
 // The x step with the wrong sign.
@@ -107,50 +104,28 @@ struct TiesNeverInside : KernelModel {
   template <class S> static SymBool inside(const S& e, const SymBool&) { return e > S(0); }
 };
 
-// One run per obligation: broken model F against the obligation's template.
-template <class F> MutantRun run_edge_value_no_overflow() {
-  return {F::kName,
-          "fixed/edge_value_no_overflow",
-          prove_edge_value_no_overflow<F>,
-          {{"model kMinRaw", F::kMinRaw, Unit::kCoordRaw},
-           {"model kMaxRaw", F::kMaxRaw, Unit::kCoordRaw}}};
-}
-template <class F> MutantRun run_top_left_matches_spec() {
-  return {F::kName, "tri/top_left_matches_spec", prove_top_left_matches_spec<F>};
-}
-template <class F> MutantRun run_shared_edge_exactly_once() {
-  return {F::kName, "tri/shared_edge_exactly_once", prove_shared_edge_exactly_once<F>};
-}
-template <class F> MutantRun run_bias_form() {
-  return {F::kName, "tri/bias_form", prove_bias_form<F>};
-}
-template <class F> MutantRun run_incremental_step() {
-  return {F::kName, "tri/incremental_step", prove_incremental_step<F>};
-}
-template <class F> MutantRun run_degenerate_covers_nothing() {
-  return {F::kName, "tri/degenerate_covers_nothing", prove_degenerate_covers_nothing<F>};
+// The runs of broken models Fs against edge_value_no_overflow, which also report each model's
+// vertex range.
+template <class... Fs> std::vector<MutantRun> refute_edge_value_no_overflow() {
+  return {MutantRun(Fs::kName, kEdgeValueNoOverflow.file, prove_edge_value_no_overflow<Fs>,
+                    {{"model kMinRaw", Fs::kMinRaw, Unit::kCoordRaw},
+                     {"model kMaxRaw", Fs::kMaxRaw, Unit::kCoordRaw}})...};
 }
 
 } // namespace
-} // namespace rastrules::proofs
 
-int main() {
-  using namespace rastrules::proofs;
-  return run_mutation_selfcheck("fixed, tri",
-                                {
-                                    run_top_left_matches_spec<TopRuleYUp>(),
-                                    run_top_left_matches_spec<LeftRuleMirrored>(),
-                                    run_top_left_matches_spec<HorizontalAlwaysInclusive>(),
-                                    run_shared_edge_exactly_once<HorizontalAlwaysInclusive>(),
-                                    run_degenerate_covers_nothing<HorizontalAlwaysInclusive>(),
-                                    run_bias_form<BiasSwapped>(),
-                                    run_edge_value_no_overflow<Int32Accumulator>(),
-                                    run_incremental_step<Int32Accumulator>(),
-                                    run_edge_value_no_overflow<RangeTooWide>(),
-                                    run_incremental_step<StepXSignWrong>(),
-                                    run_incremental_step<StepYUnscaled>(),
-                                    run_shared_edge_exactly_once<NoNormalisation>(),
-                                    run_shared_edge_exactly_once<TiesNeverInside>(),
-                                },
-                                KernelModel::constants(), {"SNAP.VERTEX.RANGE"});
+MutationSelfcheck mutation_selfcheck() {
+  return {"fixed, tri",
+          {refute<TopRuleYUp, LeftRuleMirrored, HorizontalAlwaysInclusive>(kTopLeftMatchesSpec),
+           refute<HorizontalAlwaysInclusive>(kSharedEdgeExactlyOnce),
+           refute<HorizontalAlwaysInclusive>(kDegenerateCoversNothing),
+           refute<BiasSwapped>(kBiasForm), refute_edge_value_no_overflow<Int32Accumulator>(),
+           refute<Int32Accumulator>(kIncrementalStep),
+           refute_edge_value_no_overflow<RangeTooWide>(),
+           refute<StepXSignWrong, StepYUnscaled>(kIncrementalStep),
+           refute<NoNormalisation, TiesNeverInside>(kSharedEdgeExactlyOnce)},
+          KernelModel::constants(),
+          {"SNAP.VERTEX.RANGE"}};
 }
+
+} // namespace rastrules::proofs

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <iostream>
 #include <string>
@@ -15,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "support/obligation.hpp"
 #include "support/prover.hpp"
 #include "support/sym.hpp"
 
@@ -50,21 +52,58 @@ struct MutantRun {
   std::vector<Constant> extra_constants;
 };
 
-// Runs every mutant (report header "<obligation> [mutant: <name>]", with `assumes` and
-// `constants`), prints one summary line per run and the totals, and returns the process exit
-// status: 0 iff no run survived (and at least one ran).
-inline int run_mutation_selfcheck(const std::string& area, const std::vector<MutantRun>& runs,
-                                  const std::vector<Constant>& constants,
-                                  const std::vector<std::string>& assumes = {}) {
+// The runs of the broken models Mutants..., in that order, against one obligation
+// ("<area>/<file>"). `prove` is a generic lambda `[]<class F>(Prover& pr) { ... }` that runs the
+// obligation on model F (returning nothing, or TheoremResults as MutantRun's prove_fn may).
+template <class... Mutants, class Prove>
+std::vector<MutantRun> refute(const std::string& obligation, Prove prove) {
+  return {MutantRun(Mutants::kName, obligation,
+                    [prove](Prover& pr) { return prove.template operator()<Mutants>(pr); })...};
+}
+// The same for an obligation's own proof (support/obligation.hpp).
+template <class... Mutants, class Prove>
+std::vector<MutantRun> refute(const ProofObligation<Prove>& obligation) {
+  return refute<Mutants...>(obligation.file, obligation.prove);
+}
+
+// Broken models that several areas build from their own model Base. Each mutant names itself
+// (kName) in the area's words.
+// Base with its accumulator type replaced by Sym<Rep> (e.g. int32_t, as a SIMD lane might use).
+template <class Base, class Rep> struct AccumulatorOf : Base { using Acc = Sym<Rep>; };
+// Base with its coordinate range replaced by [-2^Bits, 2^Bits) raw units.
+template <class Base, int Bits> struct CoordinateRangeOf : Base {
+  static constexpr std::int64_t kMinRaw = -(std::int64_t{1} << Bits);
+  static constexpr std::int64_t kMaxRaw = (std::int64_t{1} << Bits) - 1;
+};
+
+// One area's mutation self-check: its runs in order (groups, as refute returns them), and the
+// constants and assumed rules every run's report lists.
+struct MutationSelfcheck {
+  std::string area;
+  std::vector<std::vector<MutantRun>> groups;
+  std::vector<Constant> constants;
+  std::vector<std::string> assumes = {};
+};
+
+// Each <area>/mutants.cpp defines the self-check it runs; support/mutation_main.cpp runs it.
+MutationSelfcheck mutation_selfcheck();
+
+// Runs every mutant of `check` in order (report header "<obligation> [mutant: <name>]", with its
+// assumes and constants), prints one summary line per run and the totals, and returns the
+// process exit status: 0 iff no run survived (and at least one ran).
+inline int run_mutation_selfcheck(const MutationSelfcheck& check) {
+  std::vector<MutantRun> runs;
+  for (const std::vector<MutantRun>& group : check.groups)
+    runs.insert(runs.end(), group.begin(), group.end());
   int survived = 0;
   std::vector<std::string> summary;
   for (const MutantRun& r : runs) {
     const std::string run_name = r.name + " / " + r.obligation;
     std::cout << "\n=== mutant: " << run_name << "\n";
-    std::vector<Constant> k = constants;
+    std::vector<Constant> k = check.constants;
     k.insert(k.end(), r.extra_constants.begin(), r.extra_constants.end());
     Domain dom;
-    Prover pr(dom, r.obligation + " [mutant: " + r.name + "]", "(self-check)", assumes, k);
+    Prover pr(dom, r.obligation + " [mutant: " + r.name + "]", "(self-check)", check.assumes, k);
     TheoremResults results = r.prove(pr);
     results.insert(results.begin(), pr.results().begin(), pr.results().end());
     int refuted = 0;
@@ -75,7 +114,7 @@ inline int run_mutation_selfcheck(const std::string& area, const std::vector<Mut
                       std::to_string(refuted) + " of " + std::to_string(results.size()) +
                       " theorems refuted)");
   }
-  std::cout << "\nmutation self-check (" << area << "):\n";
+  std::cout << "\nmutation self-check (" << check.area << "):\n";
   for (const std::string& line : summary)
     std::cout << "  " << line << "\n";
   std::cout << (summary.size() - static_cast<std::size_t>(survived)) << " mutant runs refuted, "

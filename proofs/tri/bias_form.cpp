@@ -12,10 +12,10 @@
 
 #include "tri/bias_form.hpp"
 #include "support/kernel_model.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
-  return run_proof("tri/bias_form", "FIX.BIAS.FORM", {"SNAP.VERTEX.RANGE", "TRI.FILL.TOP_LEFT"},
-                   KernelModel::constants(), prove_bias_form<KernelModel>);
+  return run_obligation<KernelModel>(kBiasForm, "FIX.BIAS.FORM",
+                                     {"SNAP.VERTEX.RANGE", "TRI.FILL.TOP_LEFT"});
 }

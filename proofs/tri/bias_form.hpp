@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "support/kernel_model.hpp"
+#include "support/obligation.hpp"
 #include "support/prover.hpp"
 
 namespace rastrules::proofs {
@@ -51,5 +52,9 @@ template <class F> void prove_bias_form(Prover& pr) {
   pr.prove("walk test: (e0 | e1 | e2) >= 0 <=> e0 >= 0 && e1 >= 0 && e2 >= 0 (int64_t)", {},
            ((e0 | e1 | e2) >= zero) == (e0 >= zero && e1 >= zero && e2 >= zero));
 }
+
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kBiasForm{"tri/bias_form",
+                                       []<class F>(Prover& pr) { prove_bias_form<F>(pr); }};
 
 } // namespace rastrules::proofs

@@ -10,12 +10,11 @@
 
 #include "tri/degenerate_covers_nothing.hpp"
 #include "support/kernel_model.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
-  return run_proof(
-      "tri/degenerate_covers_nothing", "TRI.DEGENERATE.ZERO_AREA",
-      {"SNAP.VERTEX.RANGE", "TRI.ORIENT.AREA", "TRI.FILL.TOP_LEFT", "TRI.FILL.CONVENTION"},
-      KernelModel::constants(), prove_degenerate_covers_nothing<KernelModel>);
+  return run_obligation<KernelModel>(
+      kDegenerateCoversNothing, "TRI.DEGENERATE.ZERO_AREA",
+      {"SNAP.VERTEX.RANGE", "TRI.ORIENT.AREA", "TRI.FILL.TOP_LEFT", "TRI.FILL.CONVENTION"});
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "support/kernel_model.hpp"
+#include "support/obligation.hpp"
 #include "support/prover.hpp"
 
 namespace rastrules::proofs {
@@ -37,5 +38,10 @@ template <class F> void prove_degenerate_covers_nothing(Prover& pr) {
              dom.obligations_since(mark));
   });
 }
+
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kDegenerateCoversNothing{
+    "tri/degenerate_covers_nothing",
+    []<class F>(Prover& pr) { prove_degenerate_covers_nothing<F>(pr); }};
 
 } // namespace rastrules::proofs

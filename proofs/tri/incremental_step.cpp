@@ -15,11 +15,10 @@
 
 #include "tri/incremental_step.hpp"
 #include "support/kernel_model.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
-  return run_proof("tri/incremental_step", "FIX.STEP.INCREMENTAL",
-                   {"SNAP.VERTEX.RANGE", "SCENE.TARGET.LIMITS"}, KernelModel::constants(),
-                   prove_incremental_step<KernelModel>);
+  return run_obligation<KernelModel>(kIncrementalStep, "FIX.STEP.INCREMENTAL",
+                                     {"SNAP.VERTEX.RANGE", "SCENE.TARGET.LIMITS"});
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "support/kernel_model.hpp"
+#include "support/obligation.hpp"
 #include "support/prover.hpp"
 
 namespace rastrules::proofs {
@@ -62,5 +63,9 @@ template <class F> void prove_incremental_step(Prover& pr) {
              hyps_x, direct.expr() == accumulated.expr(), dom.obligations_since(mark));
   }
 }
+
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kIncrementalStep{
+    "tri/incremental_step", []<class F>(Prover& pr) { prove_incremental_step<F>(pr); }};
 
 } // namespace rastrules::proofs

@@ -14,12 +14,11 @@
 
 #include "tri/shared_edge_exactly_once.hpp"
 #include "support/kernel_model.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
-  return run_proof(
-      "tri/shared_edge_exactly_once", "TRI.SHARED_EDGE.EXACTLY_ONCE",
-      {"SNAP.VERTEX.RANGE", "TRI.ORIENT.NORMALISE", "TRI.FILL.TOP_LEFT", "TRI.FILL.CONVENTION"},
-      KernelModel::constants(), prove_shared_edge_exactly_once<KernelModel>);
+  return run_obligation<KernelModel>(
+      kSharedEdgeExactlyOnce, "TRI.SHARED_EDGE.EXACTLY_ONCE",
+      {"SNAP.VERTEX.RANGE", "TRI.ORIENT.NORMALISE", "TRI.FILL.TOP_LEFT", "TRI.FILL.CONVENTION"});
 }

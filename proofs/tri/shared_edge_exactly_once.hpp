@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "support/kernel_model.hpp"
+#include "support/obligation.hpp"
 #include "support/prover.hpp"
 
 namespace rastrules::proofs {
@@ -169,5 +170,10 @@ template <class F> void prove_shared_edge_exactly_once(Prover& pr) {
     pr.prove(name, hyps, in1.expr() != in2.expr());
   });
 }
+
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kSharedEdgeExactlyOnce{
+    "tri/shared_edge_exactly_once",
+    []<class F>(Prover& pr) { prove_shared_edge_exactly_once<F>(pr); }};
 
 } // namespace rastrules::proofs

@@ -17,12 +17,12 @@
 
 #include "tri/top_left_matches_spec.hpp"
 #include "support/kernel_model.hpp"
-#include "support/prover.hpp"
+#include "support/obligation.hpp"
 
 int main() {
   using namespace rastrules::proofs;
-  return run_proof("tri/top_left_matches_spec",
-                   "TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE, TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION",
-                   {"SNAP.VERTEX.RANGE", "TRI.ORIENT.AREA", "TRI.ORIENT.NORMALISE"},
-                   KernelModel::constants(), prove_top_left_matches_spec<KernelModel>);
+  return run_obligation<KernelModel>(
+      kTopLeftMatchesSpec,
+      "TRI.FILL.TOP_EDGE, TRI.FILL.LEFT_EDGE, TRI.FILL.TOP_LEFT, TRI.FILL.CONVENTION",
+      {"SNAP.VERTEX.RANGE", "TRI.ORIENT.AREA", "TRI.ORIENT.NORMALISE"});
 }

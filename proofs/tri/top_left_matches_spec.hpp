@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "support/kernel_model.hpp"
+#include "support/obligation.hpp"
 #include "support/prover.hpp"
 
 namespace rastrules::proofs {
@@ -137,5 +138,9 @@ template <class F> void prove_top_left_matches_spec(Prover& pr) {
                   });
   });
 }
+
+// The obligation as its proof and the self-check run it.
+inline const ProofObligation kTopLeftMatchesSpec{
+    "tri/top_left_matches_spec", []<class F>(Prover& pr) { prove_top_left_matches_spec<F>(pr); }};
 
 } // namespace rastrules::proofs
