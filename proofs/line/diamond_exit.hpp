@@ -32,7 +32,7 @@
 namespace rastrules::proofs {
 
 // A real number term in the active Domain's context (see sym.hpp for the pattern).
-class RealNum {
+class RealNum : public TermComparisons<RealNum> {
 public:
   explicit RealNum(std::int64_t v) : e_(Domain::active().ctx().real_val(v)) {}
   explicit RealNum(z3::expr e) : e_(std::move(e)) {}
@@ -42,12 +42,6 @@ public:
   friend RealNum operator-(const RealNum& a, const RealNum& b) { return RealNum(a.e_ - b.e_); }
   friend RealNum operator*(const RealNum& a, const RealNum& b) { return RealNum(a.e_ * b.e_); }
   friend RealNum operator-(const RealNum& a) { return RealNum(-a.e_); }
-  friend SymBool operator==(const RealNum& a, const RealNum& b) { return SymBool(a.e_ == b.e_); }
-  friend SymBool operator!=(const RealNum& a, const RealNum& b) { return SymBool(a.e_ != b.e_); }
-  friend SymBool operator<(const RealNum& a, const RealNum& b) { return SymBool(a.e_ < b.e_); }
-  friend SymBool operator<=(const RealNum& a, const RealNum& b) { return SymBool(a.e_ <= b.e_); }
-  friend SymBool operator>(const RealNum& a, const RealNum& b) { return SymBool(a.e_ > b.e_); }
-  friend SymBool operator>=(const RealNum& a, const RealNum& b) { return SymBool(a.e_ >= b.e_); }
 
 private:
   z3::expr e_;

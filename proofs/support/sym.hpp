@@ -152,8 +152,19 @@ private:
   z3::expr e_;
 };
 
+// The six comparisons of a numeric term type T (one with expr()), as the SymBool of Z3's
+// comparison of the two terms. Sym and line/'s RealNum derive from it.
+template <class T> struct TermComparisons {
+  friend SymBool operator==(const T& a, const T& b) { return SymBool(a.expr() == b.expr()); }
+  friend SymBool operator!=(const T& a, const T& b) { return SymBool(a.expr() != b.expr()); }
+  friend SymBool operator<(const T& a, const T& b) { return SymBool(a.expr() < b.expr()); }
+  friend SymBool operator<=(const T& a, const T& b) { return SymBool(a.expr() <= b.expr()); }
+  friend SymBool operator>(const T& a, const T& b) { return SymBool(a.expr() > b.expr()); }
+  friend SymBool operator>=(const T& a, const T& b) { return SymBool(a.expr() >= b.expr()); }
+};
+
 // A symbolic value of C++ type Rep (see the file comment).
-template <std::signed_integral Rep> class Sym {
+template <std::signed_integral Rep> class Sym : public TermComparisons<Sym<Rep>> {
 public:
   using rep = Rep;
 
@@ -180,13 +191,6 @@ public:
     return a.arith(a.e_ * b.e_, "(" + a.text_ + " * " + b.text_ + ")");
   }
   friend Sym operator-(const Sym& a) { return a.arith(-a.e_, "(-" + a.text_ + ")"); }
-
-  friend SymBool operator==(const Sym& a, const Sym& b) { return SymBool(a.e_ == b.e_); }
-  friend SymBool operator!=(const Sym& a, const Sym& b) { return SymBool(a.e_ != b.e_); }
-  friend SymBool operator<(const Sym& a, const Sym& b) { return SymBool(a.e_ < b.e_); }
-  friend SymBool operator<=(const Sym& a, const Sym& b) { return SymBool(a.e_ <= b.e_); }
-  friend SymBool operator>(const Sym& a, const Sym& b) { return SymBool(a.e_ > b.e_); }
-  friend SymBool operator>=(const Sym& a, const Sym& b) { return SymBool(a.e_ >= b.e_); }
 
 private:
   Sym arith(z3::expr r, std::string text) const {
