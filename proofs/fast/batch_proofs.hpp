@@ -90,11 +90,9 @@ struct BatchKernelModel : KernelModel {
   static constexpr std::int64_t kPastColumns = 15;
 
   static std::vector<Constant> constants() {
-    std::vector<Constant> k = kernel_constants();
-    k.push_back({"raster::kBatchSmallSpan", kSpan, Unit::kCoordRaw});
-    k.push_back({"cover_one's pixels a row", kOneMaxCols, Unit::kInteger});
-    k.push_back({"cover_one's poison", kPoison, Unit::kInteger});
-    return k;
+    return kernel_constants_and({{"raster::kBatchSmallSpan", kSpan, Unit::kCoordRaw},
+                                 {"cover_one's pixels a row", kOneMaxCols, Unit::kInteger},
+                                 {"cover_one's poison", kPoison, Unit::kInteger}});
   }
 };
 
@@ -691,10 +689,7 @@ struct SnapKernelModel {
   static constexpr std::int64_t kMinRaw = kMinVertexRaw;
   static constexpr std::int64_t kMaxRaw = kMaxVertexRaw;
 
-  static std::vector<Constant> constants() {
-    std::vector<Constant> k = kernel_constants();
-    return k;
-  }
+  static std::vector<Constant> constants() { return kernel_constants(); }
 
   // detail::scaled_magnitude_rne (rastrules/snap.hpp), line by line: bits a 32-bit bit-vector,
   // the uint64_t result a 64-bit one (C++ unsigned arithmetic is bit-vector arithmetic; the

@@ -30,11 +30,9 @@ struct FastBlockModel : FastKernelModel {
   static constexpr std::int64_t kBound = formula::kBlockLaneBound;
 
   static std::vector<Constant> constants() {
-    std::vector<Constant> k = kernel_constants();
-    k.push_back({"kFastBlockSize", raster::kFastBlockSize, Unit::kInteger});
-    k.push_back({"kBlockLaneBound", formula::kBlockLaneBound, Unit::kInteger});
-    k.push_back({"kEdgeValueMagBits", kEdgeValueMagBits, Unit::kInteger});
-    return k;
+    return kernel_constants_and({{"kFastBlockSize", raster::kFastBlockSize, Unit::kInteger},
+                                 {"kBlockLaneBound", formula::kBlockLaneBound, Unit::kInteger},
+                                 {"kEdgeValueMagBits", kEdgeValueMagBits, Unit::kInteger}});
   }
 };
 

@@ -56,11 +56,9 @@ struct FastKernelModel : KernelModel {
   static constexpr int kEdgeBits = kEdgeValueMagBits;
 
   static std::vector<Constant> constants() {
-    std::vector<Constant> k = kernel_constants();
-    k.push_back({"kFastTileSize", raster::kFastTileSize, Unit::kInteger});
-    k.push_back({"kLaneBound", formula::kLaneBound, Unit::kInteger});
-    k.push_back({"kEdgeValueMagBits", kEdgeValueMagBits, Unit::kInteger});
-    return k;
+    return kernel_constants_and({{"kFastTileSize", raster::kFastTileSize, Unit::kInteger},
+                                 {"kLaneBound", formula::kLaneBound, Unit::kInteger},
+                                 {"kEdgeValueMagBits", kEdgeValueMagBits, Unit::kInteger}});
   }
 
   template <class L> static L lane_offset(const L& i, const L& j, const L& a, const L& b) {

@@ -59,11 +59,9 @@ struct MsaaKernelModel : KernelModel {
   static constexpr std::int64_t kHalf = kSubpixelHalf;
 
   static std::vector<Constant> constants() {
-    std::vector<Constant> k = kernel_constants();
-    k.push_back({"kSampleGridMin", kSampleGridMin, Unit::kInteger});
-    k.push_back({"kSampleGridMax", kSampleGridMax, Unit::kInteger});
-    k.push_back({"kSampleGridUnit", kSampleGridUnit, Unit::kCoordRaw});
-    return k;
+    return kernel_constants_and({{"kSampleGridMin", kSampleGridMin, Unit::kInteger},
+                                 {"kSampleGridMax", kSampleGridMax, Unit::kInteger},
+                                 {"kSampleGridUnit", kSampleGridUnit, Unit::kCoordRaw}});
   }
 
   // Mirrors rastrules::sample_position: pixel_center(px, py) + o * kSampleGridUnit in int32_t.

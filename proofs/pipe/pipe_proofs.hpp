@@ -73,18 +73,17 @@ struct PipeModel : KernelModel {
   static constexpr std::int64_t kTargetSide = kMaxTargetSide;
 
   static std::vector<Constant> constants() {
-    std::vector<Constant> c = kernel_constants();
     static_assert(static_cast<double>(static_cast<std::int64_t>(pipe::kGuardBand * kSubpixelOne)) ==
                       pipe::kGuardBand * kSubpixelOne,
                   "the report shows kGuardBand in raw 16.8 units");
-    c.push_back({"pipe::kGuardBand", static_cast<std::int64_t>(pipe::kGuardBand * kSubpixelOne),
-                 Unit::kCoordRaw});
-    c.push_back({"formula::unorm_max(kDepthD16Bits)", formula::unorm_max(formula::kDepthD16Bits),
-                 Unit::kInteger});
-    c.push_back({"formula::unorm_max(kDepthD24Bits)", formula::unorm_max(formula::kDepthD24Bits),
-                 Unit::kInteger});
-    c.push_back({"digits of double", kDoubleExactBits, Unit::kInteger});
-    return c;
+    return kernel_constants_and(
+        {{"pipe::kGuardBand", static_cast<std::int64_t>(pipe::kGuardBand * kSubpixelOne),
+          Unit::kCoordRaw},
+         {"formula::unorm_max(kDepthD16Bits)", formula::unorm_max(formula::kDepthD16Bits),
+          Unit::kInteger},
+         {"formula::unorm_max(kDepthD24Bits)", formula::unorm_max(formula::kDepthD24Bits),
+          Unit::kInteger},
+         {"digits of double", kDoubleExactBits, Unit::kInteger}});
   }
 };
 

@@ -32,10 +32,8 @@ struct PointKernelModel : KernelModel {
   static constexpr std::int64_t kMaxPointCentreRaw = kMaxPointRaw;
 
   static std::vector<Constant> constants() {
-    std::vector<Constant> k = kernel_constants();
-    k.push_back({"kMinPointRaw", kMinPointRaw, Unit::kCoordRaw});
-    k.push_back({"kMaxPointRaw", kMaxPointRaw, Unit::kCoordRaw});
-    return k;
+    return kernel_constants_and({{"kMinPointRaw", kMinPointRaw, Unit::kCoordRaw},
+                                 {"kMaxPointRaw", kMaxPointRaw, Unit::kCoordRaw}});
   }
 
   // The kernel's two triangles of the point with centre c (point_triangles in point.cpp).

@@ -172,6 +172,12 @@ std::vector<Constant> kernel_constants() {
   };
 }
 
+std::vector<Constant> kernel_constants_and(const std::vector<Constant>& more) {
+  std::vector<Constant> k = kernel_constants();
+  k.insert(k.end(), more.begin(), more.end());
+  return k;
+}
+
 std::string solver_version() {
   return std::string("Z3 ") + Z3_get_full_version();
 }

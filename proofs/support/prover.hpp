@@ -43,6 +43,8 @@ struct Constant {
 
 // The constants every report prints, from rastrules/fixed.hpp.
 [[nodiscard]] std::vector<Constant> kernel_constants();
+// kernel_constants() followed by `more` (a model's own constants, in the order given).
+[[nodiscard]] std::vector<Constant> kernel_constants_and(const std::vector<Constant>& more);
 
 // Returns "Z3 <full version>".
 [[nodiscard]] std::string solver_version();
