@@ -21,10 +21,9 @@
 
 int main() {
   using namespace rastrules::proofs;
-  if (!shift_restatement_matches_cpp())
-    return 1;
   return run_obligation<FastKernelModel>(kLaneEquivalence, "FAST.LANE.I32",
                                          {"SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE",
                                           "FIX.BIAS.FORM", "FIX.STEP.INCREMENTAL",
-                                          "TRI.FILL.TOP_LEFT"});
+                                          "TRI.FILL.TOP_LEFT"},
+                                         shift_restatement_matches_cpp);
 }

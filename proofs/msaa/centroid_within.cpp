@@ -17,9 +17,8 @@
 
 int main() {
   using namespace rastrules::proofs;
-  if (!restatement_matches_kernel<MsaaKernelModel>())
-    return 1;
   return run_obligation<MsaaKernelModel>(
       kCentroidWithin, "MSAA.CENTROID.WITHIN",
-      {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE", "TRI.FILL.TOP_LEFT", "MSAA.SAMPLE.POSITION"});
+      {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE", "TRI.FILL.TOP_LEFT", "MSAA.SAMPLE.POSITION"},
+      restatement_matches_kernel<MsaaKernelModel>);
 }

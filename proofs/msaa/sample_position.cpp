@@ -15,9 +15,8 @@
 
 int main() {
   using namespace rastrules::proofs;
-  if (!restatement_matches_kernel<MsaaKernelModel>())
-    return 1;
   return run_obligation<MsaaKernelModel>(
       kSamplePosition, "MSAA.SAMPLE.POSITION, MSAA.PATTERN.GRID",
-      {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE"});
+      {"SCENE.TARGET.LIMITS", "SNAP.VERTEX.RANGE", "FIX.BUDGET.EDGE_VALUE"},
+      restatement_matches_kernel<MsaaKernelModel>);
 }
