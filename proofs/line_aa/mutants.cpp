@@ -43,9 +43,7 @@ struct BlendSwapped : AAModel {
   }
 };
 // A 32-bit accumulator.
-struct BlendInt32 : AccumulatorOf<AAModel, std::int32_t> {
-  static constexpr const char* kName = "blend in int32_t";
-};
+using BlendInt32 = AccumulatorOf<AAModel, std::int32_t, "blend in int32_t">;
 
 } // namespace
 

@@ -34,15 +34,11 @@ struct AreaReversed : PipeModel {
 };
 
 // Barycentrics in 32-bit integers.
-struct BaryInt32 : AccumulatorOf<PipeModel, std::int32_t> {
-  static constexpr const char* kName = "barycentrics in int32_t";
-};
+using BaryInt32 = AccumulatorOf<PipeModel, std::int32_t, "barycentrics in int32_t">;
 
 // Coordinates of 2^26 raw units (2^18 px) each side: still int64_t, but edge values reach
 // 2^55 and are no longer doubles exactly.
-struct Coordinates2To26 : CoordinateRangeOf<PipeModel, 26> {
-  static constexpr const char* kName = "coordinate range [-2^26, 2^26)";
-};
+using Coordinates2To26 = CoordinateRangeOf<PipeModel, 26, "coordinate range [-2^26, 2^26)">;
 
 // The UNORM scale 2^n instead of 2^n - 1: depth 1.0 overflows the format.
 struct UnormScale2n : PipeModel {

@@ -66,14 +66,10 @@ struct BiasSwapped : KernelModel {
 };
 
 // A 32-bit accumulator, as a SIMD lane might use.
-struct Int32Accumulator : AccumulatorOf<KernelModel, std::int32_t> {
-  static constexpr const char* kName = "int32_t accumulator";
-};
+using Int32Accumulator = AccumulatorOf<KernelModel, std::int32_t, "int32_t accumulator">;
 
 // A vertex range of 2^31 raw units each side (instead of SNAP.VERTEX.RANGE's 2^23).
-struct RangeTooWide : CoordinateRangeOf<KernelModel, 31> {
-  static constexpr const char* kName = "vertex range [-2^31, 2^31)";
-};
+using RangeTooWide = CoordinateRangeOf<KernelModel, 31, "vertex range [-2^31, 2^31)">;
 
 // The x step with the wrong sign.
 struct StepXSignWrong : KernelModel {

@@ -7,6 +7,7 @@
 
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -66,12 +67,22 @@ std::vector<MutantRun> refute(const ProofObligation<Prove>& obligation) {
   return refute<Mutants...>(obligation.file, obligation.prove);
 }
 
-// Broken models that several areas build from their own model Base. Each mutant names itself
-// (kName) in the area's words.
+// A mutant's name (its kName) given as a template argument: a string literal.
+template <std::size_t N> struct MutantName {
+  // Implicit, so that a literal is the template argument.
+  constexpr MutantName(const char (&name)[N]) { std::copy_n(name, N, text); } // NOLINT
+  char text[N];
+};
+
+// Broken models that several areas build from their own model Base, named in the area's words.
 // Base with its accumulator type replaced by Sym<Rep> (e.g. int32_t, as a SIMD lane might use).
-template <class Base, class Rep> struct AccumulatorOf : Base { using Acc = Sym<Rep>; };
+template <class Base, class Rep, MutantName Name> struct AccumulatorOf : Base {
+  static constexpr const char* kName = Name.text;
+  using Acc = Sym<Rep>;
+};
 // Base with its coordinate range replaced by [-2^Bits, 2^Bits) raw units.
-template <class Base, int Bits> struct CoordinateRangeOf : Base {
+template <class Base, int Bits, MutantName Name> struct CoordinateRangeOf : Base {
+  static constexpr const char* kName = Name.text;
   static constexpr std::int64_t kMinRaw = -(std::int64_t{1} << Bits);
   static constexpr std::int64_t kMaxRaw = (std::int64_t{1} << Bits) - 1;
 };
