@@ -47,23 +47,32 @@ private:
   z3::expr e_;
 };
 
-// The kernel's D3D diamond formulas.
-struct DiamondKernelModel {
-  static constexpr const char* kName = "kernel";
+// The kernel's D3D diamond formulas, a line of major axis YMajor tested against the test area
+// of major axis AreaOf(YMajor): its own in the kernel (DiamondKernelModel), another one in
+// line/mutants.cpp.
+template <bool (*AreaOf)(bool)> struct DiamondAreaModel {
   template <bool YMajor, class M>
   static auto meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
-    return formula::d3d_meets<YMajor, M>(au, av, du, dv, h);
+    return formula::d3d_meets<AreaOf(YMajor), M>(au, av, du, dv, h);
   }
   template <bool YMajor, class M> static auto contains(const M& pu, const M& pv, const M& h) {
-    return formula::d3d_contains<YMajor, M>(pu, pv, h);
+    return formula::d3d_contains<AreaOf(YMajor), M>(pu, pv, h);
   }
   template <bool YMajor, class M>
   static auto exits(const M& au, const M& av, const M& bu, const M& bv, const M& h) {
-    return formula::d3d_exits<YMajor, M>(au, av, bu, bv, h);
+    return formula::d3d_exits<AreaOf(YMajor), M>(au, av, bu, bv, h);
   }
   template <class M> static auto vk_contains(const M& pu, const M& pv, const M& h) {
     return formula::vk_contains<M>(pu, pv, h);
   }
+};
+
+constexpr bool own_area(bool y_major) {
+  return y_major;
+}
+
+struct DiamondKernelModel : DiamondAreaModel<own_area> {
+  static constexpr const char* kName = "kernel";
 };
 
 // |x| as a Z3 term.

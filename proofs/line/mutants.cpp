@@ -32,36 +32,21 @@ template <bool S0, bool S1, bool S2, bool S3> struct StrictnessModel : DiamondKe
   }
 };
 
+constexpr bool x_major_area(bool) {
+  return false;
+}
+constexpr bool other_area(bool y_major) {
+  return !y_major;
+}
+
 // The right corner is never included (y-major lines use the x-major area).
-struct RightCornerNeverIncluded : DiamondKernelModel {
+struct RightCornerNeverIncluded : DiamondAreaModel<x_major_area> {
   static constexpr const char* kName = "right corner never included (y-major as x-major)";
-  template <bool YMajor, class M>
-  static auto meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
-    return DiamondKernelModel::meets<false, M>(au, av, du, dv, h);
-  }
-  template <bool YMajor, class M> static auto contains(const M& pu, const M& pv, const M& h) {
-    return DiamondKernelModel::contains<false, M>(pu, pv, h);
-  }
-  template <bool YMajor, class M>
-  static auto exits(const M& au, const M& av, const M& bu, const M& bv, const M& h) {
-    return DiamondKernelModel::exits<false, M>(au, av, bu, bv, h);
-  }
 };
 
 // x-major and y-major exchanged.
-struct MajorSwapped : DiamondKernelModel {
+struct MajorSwapped : DiamondAreaModel<other_area> {
   static constexpr const char* kName = "x-major and y-major areas swapped";
-  template <bool YMajor, class M>
-  static auto meets(const M& au, const M& av, const M& du, const M& dv, const M& h) {
-    return DiamondKernelModel::meets<!YMajor, M>(au, av, du, dv, h);
-  }
-  template <bool YMajor, class M> static auto contains(const M& pu, const M& pv, const M& h) {
-    return DiamondKernelModel::contains<!YMajor, M>(pu, pv, h);
-  }
-  template <bool YMajor, class M>
-  static auto exits(const M& au, const M& av, const M& bu, const M& bv, const M& h) {
-    return DiamondKernelModel::exits<!YMajor, M>(au, av, bu, bv, h);
-  }
 };
 
 struct UpperEdgesIncluded : StrictnessModel<true, true, false, false> {
