@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The mutation self-check runner every <area>/mutants.cpp uses: runs obligation templates
+// The mutation self-check that every <area>/mutants.cpp defines (mutation_selfcheck: groups of
+// runs made with refute) and support/mutation_main.cpp runs: runs obligation templates
 // against deliberately broken models and passes only if each run (one broken model, one
 // obligation) is REFUTED by at least one theorem (a model that survives means the proofs cannot
 // see that kind of bug). Each run gets a fresh Domain and Prover, so variable names never clash
