@@ -2,15 +2,10 @@
 // Run-time choice of the fast traversal's instruction set (FAST.ISA.DISPATCH).
 
 #include "rastrules/isa.hpp"
-#include "rastrules/names.hpp"
 
 #include <cstdlib>
 
 namespace rastrules {
-
-std::string_view to_string(Isa isa) {
-  return name_of(isa);
-}
 
 std::optional<Isa> parse_isa(std::string_view name) {
   return from_name<Isa>(name);
@@ -58,10 +53,6 @@ Isa best_isa() {
 
 Isa effective_isa(const RenderOptions& options) {
   return options.isa ? *options.isa : best_isa();
-}
-
-std::string_view to_string(Traversal t) {
-  return name_of(t);
 }
 
 std::optional<Traversal> parse_traversal(std::string_view name) {

@@ -16,36 +16,11 @@
 #include "rastrules/formula/diamond.hpp"
 #include "rastrules/line.hpp"
 #include "rastrules/line_aliased.hpp"
-#include "rastrules/names.hpp"
 
 namespace rastrules {
 
-std::string_view to_string(LineMode m) {
-  return name_of(m);
-}
-
 std::string_view to_string(DiamondFeature f) {
-  switch (f) {
-  case kFeatureInterior:
-    return "interior";
-  case kFeatureEdgeLowerRight:
-    return "lower-right edge";
-  case kFeatureEdgeLowerLeft:
-    return "lower-left edge";
-  case kFeatureEdgeUpperRight:
-    return "upper-right edge";
-  case kFeatureEdgeUpperLeft:
-    return "upper-left edge";
-  case kFeatureCornerBottom:
-    return "bottom corner";
-  case kFeatureCornerRight:
-    return "right corner";
-  case kFeatureCornerTop:
-    return "top corner";
-  case kFeatureCornerLeft:
-    return "left corner";
-  }
-  return "";
+  return name_of(f, "");
 }
 
 namespace {

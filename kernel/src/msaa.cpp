@@ -5,7 +5,6 @@
 //             MSAA.RESOLVE.AVERAGE
 
 #include "rastrules/msaa.hpp"
-#include "rastrules/names.hpp"
 
 #include <algorithm>
 #include <cstddef>
@@ -14,38 +13,6 @@
 #include <vector>
 
 namespace rastrules {
-
-std::string_view to_string(PatternKind k) {
-  return name_of(k);
-}
-
-std::string_view to_string(CentroidRule r) {
-  return name_of(r);
-}
-
-std::string_view to_string(CentroidBranch b) {
-  switch (b) {
-  case CentroidBranch::kFullCoverageCenter:
-    return "full coverage: pixel centre";
-  case CentroidBranch::kFirstCovered:
-    return "first covered sample in index order";
-  case CentroidBranch::kNearestCovered:
-    return "covered sample nearest the centre";
-  case CentroidBranch::kNoneCoveredMaskSample:
-    return "nothing covered: a sample of the mask";
-  case CentroidBranch::kNoneCoveredCenter:
-    return "nothing covered: pixel centre";
-  }
-  return "unknown";
-}
-
-std::string_view to_string(ShadingRate r) {
-  return name_of(r);
-}
-
-std::string_view to_string(DerivativeMode d) {
-  return name_of(d);
-}
 
 namespace {
 

@@ -15,7 +15,6 @@
 #include "rastrules/formula/depth.hpp"
 #include "rastrules/formula/edge.hpp"
 #include "rastrules/msaa.hpp"
-#include "rastrules/names.hpp"
 
 namespace rastrules::pipe {
 
@@ -293,14 +292,6 @@ Barycentrics barycentrics(const std::array<Vec2, 3>& v, Vec2 s) {
   return b;
 }
 
-std::string_view to_string(Interpolation i) {
-  return name_of(i);
-}
-
-std::string_view to_string(Location l) {
-  return name_of(l);
-}
-
 namespace {
 
 // Rounds a finite double to float32, saturating beyond the float32 range
@@ -350,14 +341,6 @@ float interpolate_linear(const Barycentrics& b, const std::array<float, 3>& a) {
 
 // ---------------------------------------------------------------------------------------------
 // Depth
-
-std::string_view to_string(DepthFormat f) {
-  return name_of(f);
-}
-
-std::string_view to_string(CompareFunc f) {
-  return name_of(f);
-}
 
 // rule: PIPE.DEPTH.INTERP
 double interpolate_depth(const Barycentrics& b, const std::array<float, 3>& z) {

@@ -15,43 +15,12 @@
 #include <string>
 #include <tuple>
 
-#include "rastrules/names.hpp"
 #include "rastrules/point.hpp"
 #include "rastrules/raster/fast.hpp"
 #include "rastrules/raster/walk.hpp"
 #include "rastrules/raster/walk_msaa.hpp"
 
 namespace rastrules {
-
-std::string_view to_string(FillConvention f) {
-  return name_of(f);
-}
-
-std::string_view to_string(CullMode c) {
-  return name_of(c);
-}
-
-std::string_view to_string(FrontFace f) {
-  return name_of(f);
-}
-
-std::string_view to_string(TriangleStatus s) {
-  switch (s) {
-  case TriangleStatus::kRasterized:
-    return "rasterized";
-  case TriangleStatus::kDegenerate:
-    return "degenerate (zero area after snapping)";
-  case TriangleStatus::kCulledBack:
-    return "culled (back-facing)";
-  case TriangleStatus::kCulledFront:
-    return "culled (front-facing)";
-  }
-  return "unknown";
-}
-
-std::string_view to_string(PrimitiveType t) {
-  return name_of(t);
-}
 
 Primitive make_triangle(const std::array<FloatPoint, 3>& v) {
   Primitive p;

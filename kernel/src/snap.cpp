@@ -9,20 +9,6 @@
 
 namespace rastrules {
 
-std::string_view to_string(SnapStatus s) {
-  switch (s) {
-  case SnapStatus::kOk:
-    return "ok";
-  case SnapStatus::kNaN:
-    return "NaN";
-  case SnapStatus::kInfinite:
-    return "infinite";
-  case SnapStatus::kOutOfRange:
-    return "outside the supported range [-32768, 32767.99609375]";
-  }
-  return "unknown";
-}
-
 // rule: SNAP.D3D.SATURATE
 Subpixel snap_d3d_saturate(float v) {
   const auto bits = std::bit_cast<std::uint32_t>(v);

@@ -37,30 +37,6 @@
 
 namespace rastrules::bench {
 
-std::string_view to_string(Rung r) {
-  switch (r) {
-  case Rung::kFloat:
-    return "float";
-  case Rung::kDouble:
-    return "double";
-  case Rung::kScanline:
-    return "scanline";
-  case Rung::kFixed4I32:
-    return "fixed4-i32";
-  case Rung::kReference:
-    return "reference";
-  case Rung::kReferenceFast:
-    return "reference-fast";
-  case Rung::kFixed16I128:
-    return "fixed16-i128";
-  case Rung::kExact:
-    return "exact";
-  case Rung::kLimit:
-    return "limit";
-  }
-  return "?";
-}
-
 const std::vector<Rung>& all_rungs() {
   // reference-fast exists when the kernel's fast traversal is built (bench/ladder/CMakeLists.txt).
   static const std::vector<Rung> rungs = {
@@ -70,10 +46,7 @@ const std::vector<Rung>& all_rungs() {
 }
 
 std::optional<Rung> parse_rung(std::string_view name) {
-  for (const Rung r : all_rungs())
-    if (to_string(r) == name)
-      return r;
-  return std::nullopt;
+  return from_name<Rung>(name);
 }
 
 bool has_coverage(Rung r) {

@@ -9,11 +9,15 @@
 #include <optional>
 #include <string_view>
 
+#include "rastrules/name_table.hpp"
+
 namespace rastrules {
 
 // rule: FAST.ISA.DISPATCH
 enum class Isa { kScalar, kAvx2, kAvx512 };
-[[nodiscard]] std::string_view to_string(Isa isa); // "scalar", "avx2", "avx512"
+template <> struct Names<Isa> {
+  static constexpr auto table = in_enum_order<Isa>({"scalar", "avx2", "avx512"});
+};
 [[nodiscard]] std::optional<Isa> parse_isa(std::string_view name);
 // The environment variable that caps the instruction sets isa_supported() reports, to reproduce
 // a smaller processor: RASTRULES_MAX_ISA=scalar|avx2|avx512 (isa_cap() reads it; unset or empty:
@@ -31,7 +35,9 @@ inline constexpr const char* kMaxIsaVariable = "RASTRULES_MAX_ISA";
 // (FAST.EQUALS.PLAIN); kPlain is the bounding-box walk of RASTER.WALK.BBOX, kept as the
 // reference the fast one is compared against.
 enum class Traversal { kPlain, kFast };
-[[nodiscard]] std::string_view to_string(Traversal t); // "plain", "fast"
+template <> struct Names<Traversal> {
+  static constexpr auto table = in_enum_order<Traversal>({"plain", "fast"});
+};
 [[nodiscard]] std::optional<Traversal> parse_traversal(std::string_view name);
 
 struct RenderOptions {

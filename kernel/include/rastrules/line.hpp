@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "rastrules/fixed.hpp"
+#include "rastrules/name_table.hpp"
 #include "rastrules/triangle.hpp"
 
 namespace rastrules {
@@ -23,7 +24,10 @@ enum class LineMode {
   kQuadWide,        // D3D quadrilateral line (multisampling): rectangle 1.4 px wide
   kQuadNarrow,      // Vulkan strict / D3D12 QUADRILATERAL_NARROW: rectangle 1.0 px wide
 };
-[[nodiscard]] std::string_view to_string(LineMode m);
+template <> struct Names<LineMode> {
+  static constexpr auto table =
+      in_enum_order<LineMode>({"d3d", "vulkan-bresenham", "quad-wide", "quad-narrow"});
+};
 
 // A covered pixel of an aliased or quadrilateral line.
 using PixelEmit = std::function<void(std::int32_t x, std::int32_t y)>;

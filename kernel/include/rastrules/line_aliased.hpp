@@ -13,6 +13,7 @@
 
 #include "rastrules/fixed.hpp"
 #include "rastrules/line.hpp"
+#include "rastrules/name_table.hpp"
 #include "rastrules/rules.hpp"
 
 namespace rastrules {
@@ -50,6 +51,17 @@ enum DiamondFeature : std::uint32_t {
   kFeatureCornerRight = 1u << 6,
   kFeatureCornerTop = 1u << 7,
   kFeatureCornerLeft = 1u << 8,
+};
+template <> struct Names<DiamondFeature> {
+  static constexpr NameTable<9, DiamondFeature> table{{{"interior", kFeatureInterior},
+                                                       {"lower-right edge", kFeatureEdgeLowerRight},
+                                                       {"lower-left edge", kFeatureEdgeLowerLeft},
+                                                       {"upper-right edge", kFeatureEdgeUpperRight},
+                                                       {"upper-left edge", kFeatureEdgeUpperLeft},
+                                                       {"bottom corner", kFeatureCornerBottom},
+                                                       {"right corner", kFeatureCornerRight},
+                                                       {"top corner", kFeatureCornerTop},
+                                                       {"left corner", kFeatureCornerLeft}}};
 };
 
 // The decision for one pixel and one aliased line, for `rastrules explain`.

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "rastrules/fixed.hpp"
+#include "rastrules/name_table.hpp"
 #include "rastrules/triangle.hpp"
 
 namespace rastrules {
@@ -46,7 +47,9 @@ struct SampleOffset {
 
 // rule: MSAA.PATTERN.STANDARD, MSAA.PATTERN.CENTER, MSAA.PATTERN.CUSTOM
 enum class PatternKind { kStandard, kCenter, kCustom };
-[[nodiscard]] std::string_view to_string(PatternKind k); // "standard", "center", "custom"
+template <> struct Names<PatternKind> {
+  static constexpr auto table = in_enum_order<PatternKind>({"standard", "center", "custom"});
+};
 
 struct SamplePattern {
   PatternKind kind = PatternKind::kStandard;
@@ -100,7 +103,9 @@ struct SamplePattern {
 
 // How the centroid evaluation point is chosen (MSAA.CENTROID.*).
 enum class CentroidRule { kD3D11, kD3D10 };
-[[nodiscard]] std::string_view to_string(CentroidRule r); // "d3d11", "d3d10"
+template <> struct Names<CentroidRule> {
+  static constexpr auto table = in_enum_order<CentroidRule>({"d3d11", "d3d10"});
+};
 
 // Which branch of its rule chose a centroid (for explain and for the per-branch examples).
 enum class CentroidBranch {
@@ -110,7 +115,12 @@ enum class CentroidBranch {
   kNoneCoveredMaskSample, // D3D11 (3) / D3D10: nothing covered, partial mask -> a mask sample
   kNoneCoveredCenter,     // D3D11 (3) / D3D10: nothing covered, full mask -> pixel centre
 };
-[[nodiscard]] std::string_view to_string(CentroidBranch b);
+template <> struct Names<CentroidBranch> {
+  static constexpr auto table = in_enum_order<CentroidBranch>(
+      {"full coverage: pixel centre", "first covered sample in index order",
+       "covered sample nearest the centre", "nothing covered: a sample of the mask",
+       "nothing covered: pixel centre"});
+};
 
 struct Centroid {
   SampleOffset offset; // the evaluation point relative to the pixel centre, in 1/16 px
@@ -163,10 +173,14 @@ template <class T>
 
 // How often the pixel shader runs (MSAA.SHADING.*).
 enum class ShadingRate { kPixel, kSample };
-[[nodiscard]] std::string_view to_string(ShadingRate r); // "pixel", "sample"
+template <> struct Names<ShadingRate> {
+  static constexpr auto table = in_enum_order<ShadingRate>({"pixel", "sample"});
+};
 
 enum class DerivativeMode { kNone, kFine, kCoarse };
-[[nodiscard]] std::string_view to_string(DerivativeMode d); // "none", "fine", "coarse"
+template <> struct Names<DerivativeMode> {
+  static constexpr auto table = in_enum_order<DerivativeMode>({"none", "fine", "coarse"});
+};
 
 // The multisample state of a scene. The defaults are single-sample rendering: one sample at the
 // pixel centre, full mask, pixel shading, no centroid, no quads: coverage only.

@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 
+#include "rastrules/name_table.hpp"
+
 namespace rastrules::pipe {
 
 // rule: PIPE.INPUT.POSITION, PIPE.TRANSFORM.FLOAT32
@@ -26,8 +28,6 @@ struct Viewport {
 // rule: PIPE.INTERP.PERSPECTIVE, PIPE.INTERP.LINEAR, PIPE.INTERP.FLAT, PIPE.INTERP.LOCATION
 enum class Interpolation { kPerspective, kLinear, kFlat };
 enum class Location { kCenter, kCentroid, kSample };
-[[nodiscard]] std::string_view to_string(Interpolation i);
-[[nodiscard]] std::string_view to_string(Location l);
 
 // rule: PIPE.DEPTH.FORMAT, PIPE.DEPTH.TEST
 enum class DepthFormat { kD16, kD24, kD32F };
@@ -41,8 +41,6 @@ enum class CompareFunc {
   kGreaterEqual,
   kAlways
 };
-[[nodiscard]] std::string_view to_string(DepthFormat f);
-[[nodiscard]] std::string_view to_string(CompareFunc f);
 
 // The depth bias terms of PIPE.DEPTH.BIAS.
 struct DepthBias {
@@ -71,4 +69,27 @@ struct DepthState {
 // Which vertex of each segment gives flat attributes (PIPE.INTERP.FLAT).
 enum class Provoking { kFirst, kLast };
 
+using rastrules::to_string; // the spellings below
+
 } // namespace rastrules::pipe
+
+// The words of the pipeline state (spec/scene.md).
+namespace rastrules {
+template <> struct Names<pipe::Interpolation> {
+  static constexpr auto table =
+      in_enum_order<pipe::Interpolation>({"perspective", "linear", "flat"});
+};
+template <> struct Names<pipe::Location> {
+  static constexpr auto table = in_enum_order<pipe::Location>({"center", "centroid", "sample"});
+};
+template <> struct Names<pipe::DepthFormat> {
+  static constexpr auto table = in_enum_order<pipe::DepthFormat>({"d16", "d24", "d32f"});
+};
+template <> struct Names<pipe::CompareFunc> {
+  static constexpr auto table = in_enum_order<pipe::CompareFunc>(
+      {"never", "less", "equal", "less_equal", "greater", "not_equal", "greater_equal", "always"});
+};
+template <> struct Names<pipe::Provoking> {
+  static constexpr auto table = in_enum_order<pipe::Provoking>({"first", "last"});
+};
+} // namespace rastrules

@@ -20,6 +20,7 @@
 #include "rastrules/isa.hpp"
 #include "rastrules/line.hpp"
 #include "rastrules/msaa.hpp"
+#include "rastrules/name_table.hpp"
 #include "rastrules/pipe_state.hpp"
 #include "rastrules/snap.hpp"
 #include "rastrules/triangle.hpp"
@@ -28,7 +29,10 @@ namespace rastrules {
 
 // rule: SCENE.FORMAT.V1, SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP
 enum class PrimitiveType { kTriangle, kPoint, kLine, kLineStrip };
-[[nodiscard]] std::string_view to_string(PrimitiveType t); // "triangle", "point", ...
+template <> struct Names<PrimitiveType> {
+  static constexpr auto table =
+      in_enum_order<PrimitiveType>({"triangle", "point", "line", "line_strip"});
+};
 
 // A window-space position in pixels, read as float32.
 using FloatPoint = std::array<float, 2>;

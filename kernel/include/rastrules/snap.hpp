@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "rastrules/fixed.hpp"
+#include "rastrules/name_table.hpp"
 
 namespace rastrules {
 
@@ -18,8 +19,10 @@ enum class SnapStatus {
   kInfinite,   // input is +Inf or -Inf
   kOutOfRange, // rounded value lies outside SNAP.VERTEX.RANGE
 };
-
-[[nodiscard]] std::string_view to_string(SnapStatus s);
+template <> struct Names<SnapStatus> {
+  static constexpr auto table = in_enum_order<SnapStatus>(
+      {"ok", "NaN", "infinite", "outside the supported range [-32768, 32767.99609375]"});
+};
 
 struct SnapResult {
   SnapStatus status = SnapStatus::kOk;

@@ -12,29 +12,36 @@
 
 #include "rastrules/fixed.hpp"
 #include "rastrules/formula/edge.hpp"
+#include "rastrules/name_table.hpp"
 
 namespace rastrules {
 
 // Which samples exactly on an edge are inside (TRI.FILL.CONVENTION). kTopLeft is D3D's rule
 // and the default of every profile in window space with y down.
 enum class FillConvention { kTopLeft, kTopRight, kBottomLeft, kBottomRight };
+template <> struct Names<FillConvention> {
+  static constexpr auto table =
+      in_enum_order<FillConvention>({"top-left", "top-right", "bottom-left", "bottom-right"});
+};
 
 // rule: TRI.CULL.MODE
 enum class CullMode { kNone, kBack, kFront };
+template <> struct Names<CullMode> {
+  static constexpr auto table = in_enum_order<CullMode>({"none", "back", "front"});
+};
 
 // Which on-screen winding is the front face (TRI.CULL.MODE). D3D's default
 // (FrontCounterClockwise = FALSE) is kClockwise.
 enum class FrontFace { kClockwise, kCounterClockwise };
+template <> struct Names<FrontFace> {
+  static constexpr auto table = in_enum_order<FrontFace>({"cw", "ccw"});
+};
 
 struct RasterState {
   CullMode cull = CullMode::kNone;
   FrontFace front_face = FrontFace::kClockwise;
   FillConvention fill = FillConvention::kTopLeft;
 };
-
-[[nodiscard]] std::string_view to_string(FillConvention f);
-[[nodiscard]] std::string_view to_string(CullMode c);
-[[nodiscard]] std::string_view to_string(FrontFace f);
 
 // Returns whether the directed edge (a -> b) of a clockwise triangle is inclusive under the
 // fill convention f.
@@ -90,7 +97,11 @@ enum class TriangleStatus {
   kCulledBack,  // back-facing and cull == kBack
   kCulledFront, // front-facing and cull == kFront
 };
-[[nodiscard]] std::string_view to_string(TriangleStatus s);
+template <> struct Names<TriangleStatus> {
+  static constexpr auto table =
+      in_enum_order<TriangleStatus>({"rasterized", "degenerate (zero area after snapping)",
+                                     "culled (back-facing)", "culled (front-facing)"});
+};
 
 struct TriangleSetup {
   TriangleStatus status = TriangleStatus::kDegenerate;

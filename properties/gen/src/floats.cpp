@@ -94,28 +94,6 @@ rc::Gen<FloatCase> tagged(rc::Gen<float> g, FloatClass c) {
 
 } // namespace
 
-std::string_view to_string(FloatClass c) {
-  switch (c) {
-  case FloatClass::kAnyBits:
-    return "any bits";
-  case FloatClass::kSubnormal:
-    return "subnormal";
-  case FloatClass::kSpecial:
-    return "special";
-  case FloatClass::kTie:
-    return "tie";
-  case FloatClass::kNearTie:
-    return "near tie";
-  case FloatClass::kExactSubpixel:
-    return "exact subpixel";
-  case FloatClass::kNearLimit:
-    return "near range limit";
-  case FloatClass::kInRange:
-    return "in range";
-  }
-  return "unknown";
-}
-
 rc::Gen<FloatCase> float_case() {
   return rc::gen::weightedOneOf<FloatCase>({
       {3, tagged(any_bits(), FloatClass::kAnyBits)},

@@ -241,50 +241,6 @@ rc::Gen<GenTriangle> floats_tri(std::int32_t w, std::int32_t h) {
 
 } // namespace
 
-std::string_view to_string(TriKind k) {
-  switch (k) {
-  case TriKind::kRandom:
-    return "random";
-  case TriKind::kPixelCentres:
-    return "pixel centres";
-  case TriKind::kSnapTies:
-    return "snap ties";
-  case TriKind::kHorizontalEdge:
-    return "horizontal edge";
-  case TriKind::kVerticalEdge:
-    return "vertical edge";
-  case TriKind::kThroughCentres:
-    return "edge through centres";
-  case TriKind::kSliver:
-    return "sliver";
-  case TriKind::kNeedle:
-    return "needle";
-  case TriKind::kHuge:
-    return "huge";
-  case TriKind::kRangeLimits:
-    return "range limits";
-  case TriKind::kDegenerate:
-    return "degenerate";
-  case TriKind::kFloats:
-    return "floats";
-  }
-  return "unknown";
-}
-
-std::string_view to_string(MeshKind k) {
-  switch (k) {
-  case MeshKind::kJitteredGrid:
-    return "jittered grid";
-  case MeshKind::kFan:
-    return "fan";
-  case MeshKind::kLatticeFan:
-    return "lattice fan";
-  case MeshKind::kDelaunay:
-    return "delaunay";
-  }
-  return "unknown";
-}
-
 float to_float(std::int32_t raw) {
   return static_cast<float>(raw) / 256.0f;
 }

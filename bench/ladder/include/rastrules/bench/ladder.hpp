@@ -18,6 +18,8 @@
 #include <utility>
 #include <vector>
 
+#include "rastrules/name_table.hpp"
+
 namespace rastrules::bench {
 
 // rule: BENCH.LADDER.RUNGS
@@ -32,7 +34,18 @@ enum class Rung {
   kExact,
   kLimit,
 };
-[[nodiscard]] std::string_view to_string(Rung r); // "float", "double", ..., "limit"
+} // namespace rastrules::bench
+
+namespace rastrules {
+template <> struct Names<bench::Rung> {
+  static constexpr auto table =
+      in_enum_order<bench::Rung>({"float", "double", "scanline", "fixed4-i32", "reference",
+                                  "reference-fast", "fixed16-i128", "exact", "limit"});
+};
+} // namespace rastrules
+
+namespace rastrules::bench {
+using rastrules::to_string; // "float", "double", ..., "limit"
 [[nodiscard]] std::optional<Rung> parse_rung(std::string_view name);
 // Every rung in ladder order (float .. exact, then limit).
 [[nodiscard]] const std::vector<Rung>& all_rungs();

@@ -11,6 +11,8 @@
 
 #include <rapidcheck.h>
 
+#include "rastrules/name_table.hpp"
+
 namespace rastrules::gen {
 
 enum class FloatClass {
@@ -23,8 +25,18 @@ enum class FloatClass {
   kNearLimit,     // within a few ulps of the ends of SNAP.VERTEX.RANGE
   kInRange,       // a random float in [-32768, 32768] with bits below 1/256
 };
+} // namespace rastrules::gen
 
-[[nodiscard]] std::string_view to_string(FloatClass c);
+namespace rastrules {
+template <> struct Names<gen::FloatClass> {
+  static constexpr auto table =
+      in_enum_order<gen::FloatClass>({"any bits", "subnormal", "special", "tie", "near tie",
+                                      "exact subpixel", "near range limit", "in range"});
+};
+} // namespace rastrules
+
+namespace rastrules::gen {
+using rastrules::to_string;
 
 // A float and the class it was built as (for RC_TAG / RC_CLASSIFY).
 struct FloatCase {

@@ -19,6 +19,7 @@
 #include <rapidcheck.h>
 
 #include "rastrules/fixed.hpp"
+#include "rastrules/name_table.hpp"
 #include "rastrules/scene.hpp"
 #include "rastrules/triangle.hpp"
 
@@ -44,8 +45,18 @@ enum class TriKind {
   kDegenerate,     // collinear or coincident snapped vertices
   kFloats,         // floats with bits below 1/256 (snapping rounds)
 };
+} // namespace rastrules::gen
 
-[[nodiscard]] std::string_view to_string(TriKind k);
+namespace rastrules {
+template <> struct Names<gen::TriKind> {
+  static constexpr auto table = in_enum_order<gen::TriKind>(
+      {"random", "pixel centres", "snap ties", "horizontal edge", "vertical edge",
+       "edge through centres", "sliver", "needle", "huge", "range limits", "degenerate", "floats"});
+};
+} // namespace rastrules
+
+namespace rastrules::gen {
+using rastrules::to_string; // the spellings of TriKind, MeshKind and FloatClass
 
 struct GenTriangle {
   FloatTriangle v{};
@@ -107,7 +118,16 @@ struct SharedEdgePair {
                                                            std::size_t limit);
 
 enum class MeshKind { kJitteredGrid, kFan, kLatticeFan, kDelaunay };
-[[nodiscard]] std::string_view to_string(MeshKind k);
+} // namespace rastrules::gen
+
+namespace rastrules {
+template <> struct Names<gen::MeshKind> {
+  static constexpr auto table =
+      in_enum_order<gen::MeshKind>({"jittered grid", "fan", "lattice fan", "delaunay"});
+};
+} // namespace rastrules
+
+namespace rastrules::gen {
 
 // A triangulation of a simple polygon: triangles meet only along full shared edges or at
 // vertices, all vertices exactly on the 1/256 grid (so snapping keeps it a triangulation).
