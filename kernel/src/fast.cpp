@@ -40,29 +40,30 @@ fast_detail::FastEdges prepare_edges(const TriangleSetup& t, PixelRect r, std::i
   return f;
 }
 
-} // namespace
-
-// rule: FAST.ISA.DISPATCH, FAST.TILE.CLASSIFY, FAST.LANE.I32
-void fast_cover_rect(const TriangleSetup& t, PixelRect r, std::int32_t dx, std::int32_t dy, Isa isa,
-                     std::uint64_t* out, std::size_t words_per_row) {
-  const fast_detail::FastEdges f = prepare_edges(t, r, dx, dy);
+// The lanes of isa (FAST.ISA.DISPATCH).
+const fast_detail::Lanes& lanes(Isa isa) {
   switch (isa) {
 #if RASTRULES_FAST_X86
   case Isa::kAvx512:
-    fast_detail::cover_rect_avx512(f, r, out, words_per_row);
-    return;
+    return fast_detail::kAvx512Lanes;
   case Isa::kAvx2:
-    fast_detail::cover_rect_avx2(f, r, out, words_per_row);
-    return;
+    return fast_detail::kAvx2Lanes;
 #else
   case Isa::kAvx512:
   case Isa::kAvx2: // never supported in this build (isa_supported): the same lanes, scalar
 #endif
   case Isa::kScalar:
-    fast_detail::cover_rect_scalar(f, r, out, words_per_row);
-    return;
+    return fast_detail::kScalarLanes;
   }
-  fast_detail::cover_rect_scalar(f, r, out, words_per_row);
+  return fast_detail::kScalarLanes;
+}
+
+} // namespace
+
+// rule: FAST.ISA.DISPATCH, FAST.TILE.CLASSIFY, FAST.LANE.I32
+void fast_cover_rect(const TriangleSetup& t, PixelRect r, std::int32_t dx, std::int32_t dy, Isa isa,
+                     std::uint64_t* out, std::size_t words_per_row) {
+  lanes(isa).cover_rect(prepare_edges(t, r, dx, dy), r, out, words_per_row);
 }
 
 // rule: FAST.EQUALS.PLAIN, FAST.ISA.DISPATCH
@@ -75,21 +76,7 @@ std::uint64_t fast_count_covered(const TriangleSetup& t, std::int32_t width, std
     return 0;
   // The whole rectangle at once, nothing stored: accepted tiles count their clipped area,
   // partial ones the popcount of each row's lane mask.
-  const fast_detail::FastEdges f = prepare_edges(t, r, 0, 0);
-  switch (isa) {
-#if RASTRULES_FAST_X86
-  case Isa::kAvx512:
-    return fast_detail::count_rect_avx512(f, r);
-  case Isa::kAvx2:
-    return fast_detail::count_rect_avx2(f, r);
-#else
-  case Isa::kAvx512:
-  case Isa::kAvx2:
-#endif
-  case Isa::kScalar:
-    return fast_detail::count_rect_scalar(f, r);
-  }
-  return fast_detail::count_rect_scalar(f, r);
+  return lanes(isa).count_rect(prepare_edges(t, r, 0, 0), r);
 }
 
 // rule: FAST.TILE.CLASSIFY

@@ -67,14 +67,7 @@ struct Avx2Kernel {
 
 } // namespace
 
-void cover_rect_avx2(const FastEdges& f, PixelRect r, std::uint64_t* out,
-                     std::size_t words_per_row) {
-  cover_rect_with<Avx2Kernel>(f, r, out, words_per_row);
-}
-
-std::uint64_t count_rect_avx2(const FastEdges& f, PixelRect r) {
-  return count_rect_with<Avx2Kernel>(f, r);
-}
+const Lanes kAvx2Lanes = lanes_of<Avx2Kernel>();
 
 } // namespace rastrules::raster::fast_detail
 

@@ -57,14 +57,7 @@ struct Avx512Kernel {
 
 } // namespace
 
-void cover_rect_avx512(const FastEdges& f, PixelRect r, std::uint64_t* out,
-                       std::size_t words_per_row) {
-  cover_rect_with<Avx512Kernel>(f, r, out, words_per_row);
-}
-
-std::uint64_t count_rect_avx512(const FastEdges& f, PixelRect r) {
-  return count_rect_with<Avx512Kernel>(f, r);
-}
+const Lanes kAvx512Lanes = lanes_of<Avx512Kernel>();
 
 } // namespace rastrules::raster::fast_detail
 

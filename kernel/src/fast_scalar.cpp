@@ -52,14 +52,7 @@ struct ScalarKernel {
 
 } // namespace
 
-void cover_rect_scalar(const FastEdges& f, PixelRect r, std::uint64_t* out,
-                       std::size_t words_per_row) {
-  cover_rect_with<ScalarKernel>(f, r, out, words_per_row);
-}
-
-std::uint64_t count_rect_scalar(const FastEdges& f, PixelRect r) {
-  return count_rect_with<ScalarKernel>(f, r);
-}
+const Lanes kScalarLanes = lanes_of<ScalarKernel>();
 
 TileCounts tile_counts_scalar(const FastEdges& f, PixelRect r) {
   ClassSink sink;

@@ -48,19 +48,20 @@ struct TileCounts {
   std::uint64_t blocks_partial = 0;
 };
 
-// The entry points of each instruction set. cover_rect writes fast_cover_rect's output;
-// count_rect returns the number of covered sample points of r; tile_counts the classification.
-void cover_rect_scalar(const FastEdges& f, PixelRect r, std::uint64_t* out,
-                       std::size_t words_per_row);
-std::uint64_t count_rect_scalar(const FastEdges& f, PixelRect r);
+// The entry points of one instruction set's lanes (lanes_of<Kernel>() below). cover_rect writes
+// fast_cover_rect's output; count_rect returns the number of covered sample points of r.
+struct Lanes {
+  void (*cover_rect)(const FastEdges& f, PixelRect r, std::uint64_t* out,
+                     std::size_t words_per_row);
+  std::uint64_t (*count_rect)(const FastEdges& f, PixelRect r);
+};
+
+// Each unit's lanes, and the classification (scalar only: it does not depend on the lanes).
+extern const Lanes kScalarLanes;
 TileCounts tile_counts_scalar(const FastEdges& f, PixelRect r);
 #if RASTRULES_FAST_X86
-void cover_rect_avx2(const FastEdges& f, PixelRect r, std::uint64_t* out,
-                     std::size_t words_per_row);
-std::uint64_t count_rect_avx2(const FastEdges& f, PixelRect r);
-void cover_rect_avx512(const FastEdges& f, PixelRect r, std::uint64_t* out,
-                       std::size_t words_per_row);
-std::uint64_t count_rect_avx512(const FastEdges& f, PixelRect r);
+extern const Lanes kAvx2Lanes;
+extern const Lanes kAvx512Lanes;
 #endif
 
 namespace {
@@ -274,6 +275,11 @@ template <class Kernel> inline std::uint64_t count_rect_with(const FastEdges& f,
   CountSink sink;
   drive<Kernel>(f, r, sink);
   return sink.n;
+}
+
+// The entry points of the unit whose lanes are Kernel, compiled for that unit's instruction set.
+template <class Kernel> constexpr Lanes lanes_of() {
+  return Lanes{&cover_rect_with<Kernel>, &count_rect_with<Kernel>};
 }
 
 } // namespace
