@@ -69,9 +69,7 @@ void fast_cover_rect(const TriangleSetup& t, PixelRect r, std::int32_t dx, std::
 // rule: FAST.EQUALS.PLAIN, FAST.ISA.DISPATCH
 std::uint64_t fast_count_covered(const TriangleSetup& t, std::int32_t width, std::int32_t height,
                                  Isa isa) {
-  if (t.status != TriangleStatus::kRasterized)
-    return 0;
-  const PixelRect r = pixel_bounds(t, width, height);
+  const PixelRect r = walk_bounds(t, width, height);
   if (r.empty())
     return 0;
   // The whole rectangle at once, nothing stored: accepted tiles count their clipped area,
@@ -81,9 +79,7 @@ std::uint64_t fast_count_covered(const TriangleSetup& t, std::int32_t width, std
 
 // rule: FAST.TILE.CLASSIFY
 FastTileCounts fast_tile_counts(const TriangleSetup& t, std::int32_t width, std::int32_t height) {
-  if (t.status != TriangleStatus::kRasterized)
-    return {};
-  const PixelRect r = pixel_bounds(t, width, height);
+  const PixelRect r = walk_bounds(t, width, height);
   if (r.empty())
     return {};
   const fast_detail::TileCounts c = fast_detail::tile_counts_scalar(prepare_edges(t, r, 0, 0), r);

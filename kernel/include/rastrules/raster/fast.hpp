@@ -82,9 +82,7 @@ constexpr std::int32_t strip_rows(std::size_t words_per_row, std::size_t planes)
 template <class Emit>
 void walk_triangle_fast(const TriangleSetup& t, std::int32_t width, std::int32_t height, Isa isa,
                         Emit&& emit) {
-  if (t.status != TriangleStatus::kRasterized)
-    return;
-  const PixelRect r = pixel_bounds(t, width, height);
+  const PixelRect r = walk_bounds(t, width, height);
   if (r.empty())
     return;
   const auto wpr = static_cast<std::size_t>(r.x1 - r.x0 + 64) / 64;
@@ -120,9 +118,7 @@ void walk_triangle_fast(const TriangleSetup& t, std::int32_t width, std::int32_t
 template <class Emit>
 void walk_triangle_samples_fast(const TriangleSetup& t, const SamplePattern& pattern,
                                 std::int32_t width, std::int32_t height, Isa isa, Emit&& emit) {
-  if (t.status != TriangleStatus::kRasterized)
-    return;
-  const PixelRect r = sample_pixel_bounds(t, pattern, width, height);
+  const PixelRect r = sample_walk_bounds(t, pattern, width, height);
   if (r.empty())
     return;
   const std::size_t n = pattern.count();

@@ -59,6 +59,14 @@ struct PixelRect {
   return pixel_bounds_with_offsets(t, width, height, 0, 0, 0, 0);
 }
 
+// The pixels a walk of t visits: pixel_bounds when t is rasterized, none when it is degenerate
+// or culled (it covers nothing).
+// rule: RASTER.WALK.BBOX
+[[nodiscard]] constexpr PixelRect walk_bounds(const TriangleSetup& t, std::int32_t width,
+                                              std::int32_t height) {
+  return t.status == TriangleStatus::kRasterized ? pixel_bounds(t, width, height) : PixelRect{};
+}
+
 // Each edge's bias (E + bias >= 0 is the rule with its tie-break, FIX.BIAS.FORM) and its change
 // over one pixel along x (FIX.STEP.INCREMENTAL), for the walks that step edge values.
 struct EdgeSteps {
@@ -84,9 +92,7 @@ struct EdgeSteps {
 template <class Emit>
 constexpr void walk_triangle(const TriangleSetup& t, std::int32_t width, std::int32_t height,
                              Emit&& emit) {
-  if (t.status != TriangleStatus::kRasterized)
-    return;
-  const PixelRect r = pixel_bounds(t, width, height);
+  const PixelRect r = walk_bounds(t, width, height);
   if (r.empty())
     return;
   const EdgeSteps st = edge_steps(t);

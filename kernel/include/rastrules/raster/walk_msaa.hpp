@@ -41,6 +41,16 @@ namespace rastrules::raster {
   return pixel_bounds_with_offsets(t, width, height, g * ox0, g * ox1, g * oy0, g * oy1);
 }
 
+// The pixels a per-sample walk of t visits: sample_pixel_bounds when t is rasterized, none when
+// it is degenerate or culled.
+// rule: MSAA.COVER.SAMPLE
+[[nodiscard]] constexpr PixelRect sample_walk_bounds(const TriangleSetup& t,
+                                                     const SamplePattern& pattern,
+                                                     std::int32_t width, std::int32_t height) {
+  return t.status == TriangleStatus::kRasterized ? sample_pixel_bounds(t, pattern, width, height)
+                                                 : PixelRect{};
+}
+
 // Calls emit(x, y, mask) for every pixel of the target where t covers at least one sample of
 // the pattern, row by row; bit k of mask is sample k (before any sample mask). Each sample's
 // edge values are evaluated directly at the start of a row and stepped by one pixel, in bias
@@ -51,9 +61,7 @@ namespace rastrules::raster {
 template <class Emit>
 constexpr void walk_triangle_samples(const TriangleSetup& t, const SamplePattern& pattern,
                                      std::int32_t width, std::int32_t height, Emit&& emit) {
-  if (t.status != TriangleStatus::kRasterized)
-    return;
-  const PixelRect r = sample_pixel_bounds(t, pattern, width, height);
+  const PixelRect r = sample_walk_bounds(t, pattern, width, height);
   if (r.empty())
     return;
   const std::size_t n = pattern.count();
