@@ -372,6 +372,31 @@ void walk_samples(const PreparedScene& scene, const TriangleSetup& t, const Rend
   }
 }
 
+// Calls put(seg, x, y, coverage) for every pixel each segment of the line primitive prim
+// produces, counting each against the budget: an antialiased segment's pixels with their
+// antialiasing coverage, an aliased one's (by the scene's line mode) with none.
+template <class Put>
+void walk_segments(const PreparedScene& scene, const PreparedPrimitive& prim, CollectBudget* budget,
+                   Put&& put) {
+  for (std::size_t s = 0; s + 1 < prim.v.size(); ++s) {
+    const auto seg = static_cast<std::uint32_t>(s);
+    if (prim.aa) {
+      // rule: SCENE.OUTPUT.COVERAGE
+      rasterize_aa_line(prim.v[s], prim.v[s + 1], scene.width, scene.height,
+                        [&](std::int32_t x, std::int32_t y, std::uint32_t c) {
+                          take(budget);
+                          put(seg, x, y, std::optional<std::uint32_t>(c));
+                        });
+    } else {
+      rasterize_aliased_line(prim.v[s], prim.v[s + 1], scene.line_mode, scene.width, scene.height,
+                             [&](std::int32_t x, std::int32_t y) {
+                               take(budget);
+                               put(seg, x, y, std::optional<std::uint32_t>());
+                             });
+    }
+  }
+}
+
 bool is_single_sample(const PreparedScene& scene) {
   return rastrules::is_single_sample(scene.msaa);
 }
@@ -396,23 +421,11 @@ std::vector<Fragment> rasterize_single(const PreparedScene& scene, std::size_t p
       });
     }
   } else {
-    for (std::size_t s = 0; s + 1 < prim.v.size(); ++s) {
-      const auto seg = static_cast<std::uint32_t>(s);
-      if (prim.aa) {
-        // rule: SCENE.OUTPUT.COVERAGE
-        rasterize_aa_line(prim.v[s], prim.v[s + 1], scene.width, scene.height,
-                          [&](std::int32_t x, std::int32_t y, std::uint32_t c) {
-                            take(budget);
-                            out.push_back(Fragment{id, x, y, 1u, seg_of(seg), c});
-                          });
-      } else {
-        rasterize_aliased_line(prim.v[s], prim.v[s + 1], scene.line_mode, scene.width, scene.height,
-                               [&](std::int32_t x, std::int32_t y) {
-                                 take(budget);
-                                 out.push_back(Fragment{id, x, y, 1u, seg_of(seg), std::nullopt});
-                               });
-      }
-    }
+    walk_segments(
+        scene, prim, budget,
+        [&](std::uint32_t seg, std::int32_t x, std::int32_t y, std::optional<std::uint32_t> c) {
+          out.push_back(Fragment{id, x, y, 1u, seg_of(seg), c});
+        });
   }
   // The triangle walk emits (y, x) per triangle; a point's two triangles, quadrilateral line
   // halves, strip segments and aliased lines (travel order) need a sort.
@@ -455,22 +468,11 @@ std::vector<PixelCoverage> sample_coverage_of(const PreparedScene& scene,
     // pixel the line produces.
     // rule: MSAA.LINE.MODE
     const std::uint32_t all = full_mask(pattern.count());
-    for (std::size_t s = 0; s + 1 < prim.v.size(); ++s) {
-      const auto seg = static_cast<std::uint32_t>(s);
-      if (prim.aa) {
-        rasterize_aa_line(prim.v[s], prim.v[s + 1], scene.width, scene.height,
-                          [&](std::int32_t x, std::int32_t y, std::uint32_t c) {
-                            take(budget);
-                            cov.push_back(PixelCoverage{seg, y, x, all, c});
-                          });
-      } else {
-        rasterize_aliased_line(prim.v[s], prim.v[s + 1], scene.line_mode, scene.width, scene.height,
-                               [&](std::int32_t x, std::int32_t y) {
-                                 take(budget);
-                                 cov.push_back(PixelCoverage{seg, y, x, all, std::nullopt});
-                               });
-      }
-    }
+    walk_segments(
+        scene, prim, budget,
+        [&](std::uint32_t seg, std::int32_t x, std::int32_t y, std::optional<std::uint32_t> c) {
+          cov.push_back(PixelCoverage{seg, y, x, all, c});
+        });
   }
   std::sort(cov.begin(), cov.end(), [](const PixelCoverage& a, const PixelCoverage& b) {
     return std::tie(a.y, a.x, a.seg) < std::tie(b.y, b.x, b.seg);
