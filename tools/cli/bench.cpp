@@ -40,15 +40,6 @@ bench::LavapipeFigure time_lavapipe(const bench::LadderScene& s, int repeats) {
   return f;
 }
 
-std::optional<std::string> write_text(const std::filesystem::path& path, const std::string& text) {
-  OutputFile out;
-  if (auto err = out.open(path.string()))
-    return err;
-  if (std::fwrite(text.data(), 1, text.size(), out.get()) != text.size())
-    return path.string() + ": write failed";
-  return out.commit();
-}
-
 } // namespace
 
 // rule: BENCH.REPORT

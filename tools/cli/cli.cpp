@@ -243,6 +243,26 @@ std::optional<std::string> OutputFile::commit() {
   return std::nullopt;
 }
 
+std::optional<std::string> write_text(const std::filesystem::path& path, const std::string& text) {
+  OutputFile out;
+  if (auto err = out.open(path.string()))
+    return err;
+  if (std::fwrite(text.data(), 1, text.size(), out.get()) != text.size())
+    return path.string() + ": write failed";
+  return out.commit();
+}
+
+std::optional<int> take_scene_argument(std::string_view command, const std::string& a,
+                                       std::optional<std::string>& scene_path) {
+  const std::string prefix = std::string(command) + ": ";
+  if (a.size() > 1 && a[0] == '-')
+    return usage_error(prefix + "unknown option \"" + a + "\"");
+  if (scene_path)
+    return usage_error(prefix + "more than one scene file");
+  scene_path = a;
+  return std::nullopt;
+}
+
 std::optional<std::int64_t> parse_int(std::string_view text, std::int64_t lo, std::int64_t hi) {
   std::int64_t v = 0;
   const char* last = text.data() + text.size();

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -85,6 +86,16 @@ private:
   bool is_stdout_ = false;
   bool is_in_place_ = false; // not a regular file: written directly, never renamed
 };
+
+// Writes `text` to `path` through an OutputFile: the file appears only when complete. Returns
+// an error message on failure.
+std::optional<std::string> write_text(const std::filesystem::path& path, const std::string& text);
+
+// Takes `a`, an argument of `command` (render, explain) that no option took, as the one scene
+// file. Returns nullopt when taken, else the exit status of the usage error (an unknown option,
+// a second scene file).
+std::optional<int> take_scene_argument(std::string_view command, const std::string& a,
+                                       std::optional<std::string>& scene_path);
 
 // Parses a decimal integer in [lo, hi]; nullopt when the text is anything else.
 std::optional<std::int64_t> parse_int(std::string_view text, std::int64_t lo, std::int64_t hi);

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -501,6 +502,22 @@ ojson point_json(Vec2 v) {
   return ojson::array({v.x.raw(), v.y.raw()});
 }
 
+// The primitive's vertices as given, each an array of two float texts.
+ojson input_json(const Primitive& input) {
+  ojson in = ojson::array();
+  for (const auto& v : input.v)
+    in.push_back({io::format_float(v[0]), io::format_float(v[1])});
+  return in;
+}
+
+// Snapped vertices, each an array of two raw values.
+ojson points_json(std::span<const Vec2> points) {
+  ojson out = ojson::array();
+  for (const Vec2& v : points)
+    out.push_back(point_json(v));
+  return out;
+}
+
 ojson triangle_json(std::size_t index, const Primitive& input, const TriangleDecision& d,
                     const RasterState& state) {
   using json = ojson;
@@ -508,14 +525,8 @@ ojson triangle_json(std::size_t index, const Primitive& input, const TriangleDec
   const TriangleSetup& t = d.setup;
   json p;
   p["prim"] = index;
-  json in = json::array();
-  for (const auto& v : input.v)
-    in.push_back({io::format_float(v[0]), io::format_float(v[1])});
-  p["input"] = in;
-  json snapped = json::array();
-  for (const Vec2& v : t.snapped)
-    snapped.push_back(point(v));
-  p["snapped_raw"] = snapped;
+  p["input"] = input_json(input);
+  p["snapped_raw"] = points_json(t.snapped);
   p["twice_area_raw"] = t.twice_area;
   p["winding"] = t.twice_area == 0 ? "degenerate" : (t.clockwise ? "cw" : "ccw");
   p["front_facing"] = t.front_facing;
@@ -550,14 +561,8 @@ ojson other_json(const Report& r, const PreparedScene& s) {
   p["type"] = to_string(r.type);
   if (r.aa)
     p["aa"] = true;
-  json in = json::array();
-  for (const auto& v : r.input.v)
-    in.push_back({io::format_float(v[0]), io::format_float(v[1])});
-  p["input"] = in;
-  json snapped = json::array();
-  for (const Vec2& v : r.snapped)
-    snapped.push_back(point_json(v));
-  p["snapped_raw"] = snapped;
+  p["input"] = input_json(r.input);
+  p["snapped_raw"] = points_json(r.snapped);
   if (!r.d.triangles.empty()) {
     json tris = json::array();
     for (std::size_t k = 0; k < r.d.triangles.size(); ++k) {
@@ -837,12 +842,8 @@ int run_explain(const Args& args) {
       } else {
         return usage_error("--pixel needs X,Y");
       }
-    } else if (a.size() > 1 && a[0] == '-') {
-      return usage_error("explain: unknown option \"" + a + "\"");
-    } else if (scene_path) {
-      return usage_error("explain: more than one scene file");
-    } else {
-      scene_path = a;
+    } else if (const auto status = take_scene_argument("explain", a, scene_path)) {
+      return *status;
     }
   }
   if (!scene_path)

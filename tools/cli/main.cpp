@@ -6,8 +6,25 @@
 #include <exception>
 #include <new>
 #include <string>
+#include <string_view>
 
 #include "cli.hpp"
+
+namespace {
+
+struct Command {
+  std::string_view name;
+  int (*run)(const rastrules::cli::Args&);
+};
+
+constexpr Command kCommands[] = {
+    {"render", rastrules::cli::run_render},     {"explain", rastrules::cli::run_explain},
+    {"showcase", rastrules::cli::run_showcase}, {"fuzz", rastrules::cli::run_fuzz},
+    {"check", rastrules::cli::run_check},       {"probe", rastrules::cli::run_probe},
+    {"bench", rastrules::cli::run_bench},       {"cases", rastrules::cli::run_cases},
+};
+
+} // namespace
 
 int main(int argc, char** argv) {
   using namespace rastrules::cli;
@@ -21,22 +38,10 @@ int main(int argc, char** argv) {
       print_usage(stdout);
       return kExitOk;
     }
-    if (command == "render")
-      return run_render(args);
-    if (command == "explain")
-      return run_explain(args);
-    if (command == "showcase")
-      return run_showcase(args);
-    if (command == "fuzz")
-      return run_fuzz(args);
-    if (command == "check")
-      return run_check(args);
-    if (command == "probe")
-      return run_probe(args);
-    if (command == "bench")
-      return run_bench(args);
-    if (command == "cases")
-      return run_cases(args);
+    for (const Command& c : kCommands) {
+      if (command == c.name)
+        return c.run(args);
+    }
     return usage_error("unknown command \"" + command + "\"");
   } catch (const std::bad_alloc&) {
     return error("out of memory");

@@ -535,12 +535,8 @@ std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
         }
         rq.options.isa = *isa;
       }
-    } else if (a.size() > 1 && a[0] == '-') {
-      return usage_error("render: unknown option \"" + a + "\"");
-    } else if (scene_path) {
-      return usage_error("render: more than one scene file");
-    } else {
-      scene_path = a;
+    } else if (const auto status = take_scene_argument("render", a, scene_path)) {
+      return *status;
     }
   }
   // rule: FAST.ISA.DISPATCH

@@ -37,15 +37,6 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-std::optional<std::string> write_text(const std::filesystem::path& path, const std::string& text) {
-  OutputFile f;
-  if (auto err = f.open(path.string()))
-    return err;
-  if (std::fwrite(text.data(), 1, text.size(), f.get()) != text.size())
-    return path.string() + ": write failed";
-  return f.commit();
-}
-
 std::optional<std::string> write_picture(const std::filesystem::path& path,
                                          const PreparedScene& scene,
                                          const std::vector<Fragment>& fragments) {
