@@ -5,7 +5,9 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "cli.hpp"
 #include "fuzz_options.hpp"
@@ -13,57 +15,56 @@
 
 namespace rastrules::cli {
 
+namespace {
+
+// Sets `out` to `parsed`, the value of `option` ("--profile") read from `value`; when there is
+// none, prints the usage error "OPTION: unknown NAME "VALUE" (CHOICES)" and returns false.
+template <class T>
+bool set_choice(const std::string& option, const std::string& value, std::optional<T> parsed,
+                std::string_view choices, T& out) {
+  if (!parsed) {
+    usage_error(option + ": unknown " + option.substr(2) + " \"" + value + "\" (" +
+                std::string(choices) + ")");
+    return false;
+  }
+  out = *parsed;
+  return true;
+}
+
+} // namespace
+
 std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
                                               bool allow_campaign) {
   FuzzOptions o;
   o.settings.progress = ::isatty(2) != 0;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    const auto value = [&](const char* name) -> std::optional<std::string> {
+    const bool campaign_option = allow_campaign && (a == "--cases" || a == "--seed");
+    const bool takes_value =
+        a == "--driver" || a == "--profile" || a == "--mode" || a == "--out" || campaign_option;
+    std::string v;
+    if (takes_value) {
       if (i + 1 >= args.size()) {
-        usage_error(std::string(name) + " needs a value");
+        usage_error(a + " needs a value");
         return std::nullopt;
       }
-      return args[++i];
-    };
+      v = args[++i];
+    }
     if (a == "--driver") {
-      auto v = value("--driver");
-      if (!v)
-        return std::nullopt;
-      o.settings.driver_name = *v;
+      o.settings.driver_name = v;
     } else if (a == "--profile") {
-      auto v = value("--profile");
-      if (!v)
+      if (!set_choice(a, v, fuzzer::parse_profile(v), "d3d11, vulkan, opengl", o.settings.profile))
         return std::nullopt;
-      auto p = fuzzer::parse_profile(*v);
-      if (!p) {
-        usage_error("--profile: unknown profile \"" + *v + "\" (d3d11, vulkan, opengl)");
-        return std::nullopt;
-      }
-      o.settings.profile = *p;
     } else if (a == "--mode") {
-      auto v = value("--mode");
-      if (!v)
+      if (!set_choice(a, v, fuzzer::parse_mode(v), "exact, legal", o.settings.mode))
         return std::nullopt;
-      auto m = fuzzer::parse_mode(*v);
-      if (!m) {
-        usage_error("--mode: unknown mode \"" + *v + "\" (exact, legal)");
-        return std::nullopt;
-      }
-      o.settings.mode = *m;
     } else if (a == "--out") {
-      auto v = value("--out");
-      if (!v)
-        return std::nullopt;
-      o.settings.out_dir = *v;
-    } else if (allow_campaign && (a == "--cases" || a == "--seed")) {
-      auto v = value(a.c_str());
-      if (!v)
-        return std::nullopt;
-      auto n = parse_int(*v, a == "--cases" ? 1 : 0, a == "--cases" ? 100000000 : INT64_MAX);
+      o.settings.out_dir = v;
+    } else if (campaign_option) {
+      auto n = parse_int(v, a == "--cases" ? 1 : 0, a == "--cases" ? 100000000 : INT64_MAX);
       if (!n) {
         usage_error(a + ": must be an integer" + (a == "--cases" ? " in [1, 100000000]" : " >= 0") +
-                    ", got \"" + *v + "\"");
+                    ", got \"" + v + "\"");
         return std::nullopt;
       }
       (a == "--cases" ? o.settings.cases : o.settings.seed) = static_cast<std::uint64_t>(*n);
