@@ -19,6 +19,18 @@ namespace {
 
 constexpr std::size_t kFlushBytes = std::size_t{1} << 16;
 
+// The digits of the fraction frac / 10^places (frac < 10^places) after the decimal point,
+// trailing zeros dropped; "0" for zero.
+std::string fraction_digits(std::uint64_t frac, std::size_t places) {
+  if (frac == 0)
+    return "0";
+  std::string digits = std::to_string(frac);
+  digits.insert(0, places - digits.size(), '0');
+  while (digits.back() == '0')
+    digits.pop_back();
+  return digits;
+}
+
 template <class Int> void append_int(std::string& out, Int v) {
   std::array<char, 24> buf{};
   const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
@@ -159,15 +171,7 @@ std::string format_coverage(std::uint32_t coverage_q16) {
   constexpr std::uint64_t kFive16 = 152587890625u; // 5^16
   const std::uint64_t whole = coverage_q16 >> 16;
   const std::uint64_t frac = (coverage_q16 & 0xffffu) * kFive16; // < 10^16
-  std::string out = std::to_string(whole);
-  out += '.';
-  if (frac == 0)
-    return out + "0";
-  std::string digits = std::to_string(frac);
-  digits.insert(0, 16 - digits.size(), '0');
-  while (digits.back() == '0')
-    digits.pop_back();
-  return out + digits;
+  return std::to_string(whole) + "." + fraction_digits(frac, 16);
 }
 
 // rule: SCENE.OUTPUT.MSAA
@@ -176,15 +180,8 @@ std::string format_sixteenths(std::int64_t sixteenths) {
   const bool negative = sixteenths < 0;
   const std::uint64_t mag = negative ? 0 - static_cast<std::uint64_t>(sixteenths)
                                      : static_cast<std::uint64_t>(sixteenths);
-  std::string out = (negative ? "-" : "") + std::to_string(mag >> 4) + ".";
   const std::uint64_t frac = (mag & 15u) * 625u;
-  if (frac == 0)
-    return out + "0";
-  std::string digits = std::to_string(frac);
-  digits.insert(0, 4 - digits.size(), '0');
-  while (digits.back() == '0')
-    digits.pop_back();
-  return out + digits;
+  return (negative ? "-" : "") + std::to_string(mag >> 4) + "." + fraction_digits(frac, 4);
 }
 
 std::array<std::int64_t, 2> centroid_sixteenths(std::int32_t x, std::int32_t y, SampleOffset o) {

@@ -25,6 +25,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <system_error>
 #include <tuple>
@@ -256,6 +257,25 @@ constexpr std::array<KeySpec, 3> kAttributeKeys = {
      {"interpolation", Slot::kAttributeInterpolation, false},
      {"location", Slot::kAttributeLocation, false}}};
 
+// The keys of each object; a context not listed is no object.
+constexpr std::array<std::pair<Ctx, std::span<const KeySpec>>, 7> kObjectKeys = {
+    {{Ctx::kRootObject, kRootKeys},
+     {Ctx::kTargetObject, kTargetKeys},
+     {Ctx::kPrimitiveObject, kPrimitiveKeys},
+     {Ctx::kViewportObject, kViewportKeys},
+     {Ctx::kTransformObject, kTransformKeys},
+     {Ctx::kDepthObject, kDepthKeys},
+     {Ctx::kAttributeObject, kAttributeKeys}}};
+
+// The keys an object of `ctx` takes (empty when `ctx` is no object).
+std::span<const KeySpec> object_keys(Ctx ctx) {
+  for (const auto& [c, keys] : kObjectKeys) {
+    if (c == ctx)
+      return keys;
+  }
+  return {};
+}
+
 // The pipeline keys of one primitive, kept beside it only when it has any.
 struct PipeExtras {
   std::vector<pipe::Vec4f> pos;
@@ -340,65 +360,45 @@ public:
     // An empty key is named "" so that the error still names a field (found by fuzz_scene_parser).
     const std::string name = k.empty() ? std::string("\"\"") : printable(k);
     const std::string field = f.path.empty() ? name : f.path + "." + name;
-    auto check = [&](const auto& keys) {
-      for (std::size_t n = 0; n < keys.size(); ++n) {
-        if (keys[n].name != k)
-          continue;
-        if ((f.seen & (1u << n)) != 0)
-          return fail(field, "duplicate key");
-        f.seen |= 1u << n;
-        f.key_slot = keys[n].slot;
-        f.key_path = field;
-        if (keys[n].pipeline && pipeline_key_.empty())
-          pipeline_key_ = field;
-        return true;
-      }
-      std::string expected;
-      for (const KeySpec& s : keys)
-        expected += (expected.empty() ? "" : ", ") + std::string(s.name);
-      return fail(field, "unknown key (expected " + expected + ")");
-    };
-    switch (f.ctx) {
-    case Ctx::kRootObject:
-      return check(kRootKeys);
-    case Ctx::kTargetObject:
-      return check(kTargetKeys);
-    case Ctx::kPrimitiveObject:
-      return check(kPrimitiveKeys);
-    case Ctx::kViewportObject:
-      return check(kViewportKeys);
-    case Ctx::kTransformObject:
-      return check(kTransformKeys);
-    case Ctx::kDepthObject:
-      return check(kDepthKeys);
-    case Ctx::kAttributeObject:
-      return check(kAttributeKeys);
-    default:
+    const std::span<const KeySpec> keys = object_keys(f.ctx);
+    if (keys.empty())
       return fail(f.path, "internal error: key outside an object");
+    for (std::size_t n = 0; n < keys.size(); ++n) {
+      if (keys[n].name != k)
+        continue;
+      if ((f.seen & (1u << n)) != 0)
+        return fail(field, "duplicate key");
+      f.seen |= 1u << n;
+      f.key_slot = keys[n].slot;
+      f.key_path = field;
+      if (keys[n].pipeline && pipeline_key_.empty())
+        pipeline_key_ = field;
+      return true;
     }
+    std::string expected;
+    for (const KeySpec& s : keys)
+      expected += (expected.empty() ? "" : ", ") + std::string(s.name);
+    return fail(field, "unknown key (expected " + expected + ")");
   }
 
   bool end_object() {
     const Frame f = std::move(stack_.back());
     stack_.pop_back();
-    auto required = [&](const auto& keys) {
-      for (std::size_t n = 0; n < keys.size(); ++n) {
-        if (keys[n].required && (f.seen & (1u << n)) == 0) {
-          return fail(f.path.empty() ? std::string(keys[n].name)
-                                     : f.path + "." + std::string(keys[n].name),
-                      "is missing");
-        }
+    // Every object first checks its required keys (the pipeline objects have none).
+    const std::span<const KeySpec> keys = object_keys(f.ctx);
+    for (std::size_t n = 0; n < keys.size(); ++n) {
+      if (keys[n].required && (f.seen & (1u << n)) == 0) {
+        return fail(f.path.empty() ? std::string(keys[n].name)
+                                   : f.path + "." + std::string(keys[n].name),
+                    "is missing");
       }
-      return true;
-    };
+    }
     switch (f.ctx) {
     case Ctx::kRootObject:
-      return required(kRootKeys) && finish_pattern() && finish_pipeline();
+      return finish_pattern() && finish_pipeline();
     case Ctx::kTargetObject:
-      return required(kTargetKeys);
+      return true;
     case Ctx::kPrimitiveObject: {
-      if (!required(kPrimitiveKeys))
-        return false;
       const auto given = [&](std::size_t key) { return (f.seen & (1u << key)) != 0; };
       // rule: SCENE.PIPELINE
       const bool has_pos = given(kPosKeyIndex);
@@ -434,8 +434,6 @@ public:
     case Ctx::kDepthObject:
       return true;
     case Ctx::kAttributeObject: {
-      if (!required(kAttributeKeys))
-        return false;
       for (std::size_t k = 0; k < pipe_.attributes.size(); ++k) {
         if (pipe_.attributes[k].name == attribute_.name) {
           return fail(f.path + ".name", "duplicate attribute name \"" + printable(attribute_.name) +
