@@ -15,11 +15,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
-#include <string_view>
 #include <variant>
 
 #include "rastrules/check/check.hpp"
-#include "rastrules/io/scene_json.hpp"
 #include "rastrules/pipeline.hpp"
 #include "support.hpp"
 
@@ -35,35 +33,13 @@ using rastrules::SceneError;
   fz::fail(what, {detail}, nullptr, data, size);
 }
 
-void check_error(const SceneError& e, const char* stage, const std::uint8_t* data,
-                 std::size_t size) {
-  const bool names_position = e.message.rfind("parse error", 0) == 0;
-  if (e.message.empty() || (e.field.empty() && !names_position))
-    fail(std::string(stage) + " returned an error that names no field or position",
-         "field \"" + e.field + "\", message \"" + e.message + "\"", data, size);
-}
-
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (size > rastrules::io::kMaxSceneBytes)
-    return 0;
-  const std::string_view text(reinterpret_cast<const char*>(data), size);
-  const auto read = rastrules::io::read_scene(text);
-  if (const auto* err = std::get_if<SceneError>(&read)) {
-    check_error(*err, "read_scene", data, size);
-    return 0;
-  }
-  const auto* scene = std::get_if<Scene>(&read);
-  if (!rastrules::has_pipeline_state(*scene))
-    return 0; // a window-space scene: fuzz_scene_parser's
-
-  // Written back, the text reads to the same scene.
-  const auto reread = rastrules::io::read_scene(rastrules::io::write_scene(*scene));
-  if (const auto* err = std::get_if<SceneError>(&reread))
-    fail("write_scene wrote text that read_scene rejects", err->what(), data, size);
-  if (!rastrules::io::same_scene(std::get<Scene>(reread), *scene))
-    fail("write_scene wrote text that reads back to another scene", "", data, size);
+  const auto scene = fz::read_input_scene(data, size);
+  if (!scene || !rastrules::has_pipeline_state(*scene))
+    return 0; // unread, or a window-space scene: fuzz_scene_parser's
+  fz::check_round_trip(*scene, data, size);
 
   // Small scenes run (big targets make one input slow, not more interesting).
   if (std::int64_t{scene->width} * scene->height > 4096 || scene->primitives.size() > 16)
@@ -75,7 +51,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto a = kp::run_pipeline(*scene, fast);
   const auto b = kp::run_pipeline(*scene, plain);
   if (const auto* err = std::get_if<SceneError>(&a)) {
-    check_error(*err, "run_pipeline", data, size);
+    fz::check_scene_error(*err, "run_pipeline", &*scene, data, size);
     if (!std::holds_alternative<SceneError>(b) || std::get<SceneError>(b).what() != err->what())
       fail("run_pipeline fails with every optimization but not without", err->what(), data, size);
     return 0;

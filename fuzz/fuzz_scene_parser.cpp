@@ -11,11 +11,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
-#include <string_view>
 #include <variant>
 #include <vector>
 
-#include "rastrules/io/scene_json.hpp"
 #include "rastrules/scene.hpp"
 #include "support.hpp"
 
@@ -25,42 +23,19 @@ using rastrules::Scene;
 using rastrules::SceneError;
 namespace fz = rastrules::fuzz;
 
-void check_error(const SceneError& e, const char* stage, const Scene* scene,
-                 const std::uint8_t* data, std::size_t size) {
-  const bool names_position = e.message.rfind("parse error", 0) == 0;
-  if (e.message.empty() || (e.field.empty() && !names_position)) {
-    fz::fail(std::string(stage) + " returned an error that names no field or position",
-             {"field: \"" + e.field + "\"", "message: \"" + e.message + "\""}, scene, data, size);
-  }
-}
-
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  if (size > rastrules::io::kMaxSceneBytes)
+  const auto read = fz::read_input_scene(data, size);
+  if (!read)
     return 0;
-  const std::string_view text(reinterpret_cast<const char*>(data), size);
-  const auto read = rastrules::io::read_scene(text);
-  if (const auto* err = std::get_if<SceneError>(&read)) {
-    check_error(*err, "read_scene", nullptr, data, size);
-    return 0;
-  }
-  const Scene& scene = std::get<Scene>(read);
-
-  // The writer's text reads back to the same scene (SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32).
-  const std::string written = rastrules::io::write_scene(scene);
-  const auto reread = rastrules::io::read_scene(written);
-  if (const auto* err = std::get_if<SceneError>(&reread)) {
-    fz::fail("write_scene wrote text that read_scene rejects", {err->what()}, &scene, data, size);
-  }
-  if (!rastrules::io::same_scene(std::get<Scene>(reread), scene)) {
-    fz::fail("write_scene wrote text that reads back to a different scene", {}, &scene, data, size);
-  }
+  const Scene& scene = *read;
+  fz::check_round_trip(scene, data, size);
 
   // prepare() accepts exactly the scenes the oracles find valid.
   const auto prepared = rastrules::prepare(scene);
   if (const auto* err = std::get_if<SceneError>(&prepared))
-    check_error(*err, "prepare", &scene, data, size);
+    fz::check_scene_error(*err, "prepare", &scene, data, size);
   fz::check_prepare_verdict(scene, prepared, data, size);
   if (!std::holds_alternative<rastrules::PreparedScene>(prepared))
     return 0;

@@ -12,6 +12,7 @@
 #include <exception>
 #include <optional>
 #include <stdexcept>
+#include <string_view>
 #include <tuple>
 #include <utility>
 
@@ -196,6 +197,35 @@ void fail(const std::string& what, const std::vector<std::string>& details, cons
   std::fprintf(stderr, "\n");
   std::fflush(stderr);
   std::abort();
+}
+
+void check_scene_error(const SceneError& e, const char* stage, const Scene* scene,
+                       const std::uint8_t* data, std::size_t size) {
+  const bool names_position = e.message.rfind("parse error", 0) == 0;
+  if (e.message.empty() || (e.field.empty() && !names_position)) {
+    fail(std::string(stage) + " returned an error that names no field or position",
+         {"field: \"" + e.field + "\"", "message: \"" + e.message + "\""}, scene, data, size);
+  }
+}
+
+std::optional<Scene> read_input_scene(const std::uint8_t* data, std::size_t size) {
+  if (size > io::kMaxSceneBytes)
+    return std::nullopt;
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  auto read = io::read_scene(text);
+  if (const auto* err = std::get_if<SceneError>(&read)) {
+    check_scene_error(*err, "read_scene", nullptr, data, size);
+    return std::nullopt;
+  }
+  return std::move(std::get<Scene>(read));
+}
+
+void check_round_trip(const Scene& scene, const std::uint8_t* data, std::size_t size) {
+  const auto reread = io::read_scene(io::write_scene(scene));
+  if (const auto* err = std::get_if<SceneError>(&reread))
+    fail("write_scene wrote text that read_scene rejects", {err->what()}, &scene, data, size);
+  if (!io::same_scene(std::get<Scene>(reread), scene))
+    fail("write_scene wrote text that reads back to a different scene", {}, &scene, data, size);
 }
 
 void check_prepare_verdict(const Scene& scene,

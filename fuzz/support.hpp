@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -59,6 +60,20 @@ inline constexpr std::size_t kMaxAaSegments = 2;
 // then aborts (libFuzzer saves the input as crash-*).
 [[noreturn]] void fail(const std::string& what, const std::vector<std::string>& details,
                        const Scene* scene, const std::uint8_t* data, std::size_t size);
+
+// Fails when `e`, an error of `stage` (read_scene, prepare, run_pipeline), has no message or
+// names neither a field nor the parser's position (SCENE.INPUT.ERRORS). scene: the reproducer,
+// or null.
+void check_scene_error(const SceneError& e, const char* stage, const Scene* scene,
+                       const std::uint8_t* data, std::size_t size);
+
+// Reads the input bytes as scene text: nullopt when they are longer than io::kMaxSceneBytes or
+// when read_scene rejects them (after check_scene_error on its error).
+[[nodiscard]] std::optional<Scene> read_input_scene(const std::uint8_t* data, std::size_t size);
+
+// Fails when the text write_scene writes for `scene` does not read back to the same scene
+// (SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32).
+void check_round_trip(const Scene& scene, const std::uint8_t* data, std::size_t size);
 
 // Fails when prepare()'s verdict on `scene` (`prepared`, its result) is not the oracles'
 // (oracle_invalid_reason): prepare() must accept exactly the scenes they find valid.
