@@ -10,6 +10,7 @@
 
 namespace {
 
+using rastrules::test::explain_pixel;
 using rastrules::test::run_cli;
 using rastrules::test::TempDir;
 
@@ -25,9 +26,7 @@ bool contains(const std::string& haystack, const std::string& needle) {
 
 // rule: TRI.FILL.TOP_LEFT, TRI.FILL.LEFT_EDGE, TRI.EDGE.FUNCTION
 TEST(CliExplain, NamesTheTopLeftRuleForACentreOnASharedDiagonal) {
-  const TempDir dir;
-  const auto scene = dir.write("scene.json", kSplit);
-  const auto r = run_cli({"explain", scene.string(), "--pixel", "1,1"});
+  const auto r = explain_pixel("1,1", kSplit);
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string& out = r.out;
   EXPECT_TRUE(contains(out, "pixel (1, 1): centre (1.5, 1.5) px = raw (384, 384)")) << out;
@@ -51,16 +50,14 @@ TEST(CliExplain, VertexOnTheCentreIsInsideOnlyWhenBothEdgesAreTopOrLeft) {
   // The top-left corner (1.5, 1.5) of [1.5, 3.5]^2 split along its anti-diagonal: primitive 0
   // has a top and a left edge there; the centre (3.5, 1.5) of pixel (3, 1), its top-right
   // vertex, lies on a top edge and a right edge.
-  const TempDir dir;
-  const auto scene =
-      dir.write("scene.json", R"({"target": {"width": 5, "height": 5}, "primitives": [
-    {"type": "triangle", "v": [[1.5, 1.5], [3.5, 1.5], [1.5, 3.5]]}]})");
-  const auto a = run_cli({"explain", scene.string(), "--pixel", "1,1"});
+  const std::string scene = R"({"target": {"width": 5, "height": 5}, "primitives": [
+    {"type": "triangle", "v": [[1.5, 1.5], [3.5, 1.5], [1.5, 3.5]]}]})";
+  const auto a = explain_pixel("1,1", scene);
   ASSERT_EQ(a.status, 0) << a.err;
   EXPECT_TRUE(contains(a.out, "TRI.FILL.TOP_LEFT: E == 0 on a top edge -> inside")) << a.out;
   EXPECT_TRUE(contains(a.out, "the centre is a vertex (on two edges)")) << a.out;
   EXPECT_TRUE(contains(a.out, "covered by primitive 0")) << a.out;
-  const auto b = run_cli({"explain", scene.string(), "--pixel", "3,1"});
+  const auto b = explain_pixel("3,1", scene);
   ASSERT_EQ(b.status, 0) << b.err;
   EXPECT_TRUE(contains(
       b.out, "TRI.FILL.TOP_LEFT: E == 0 on a right edge (neither top nor left) -> outside"))
@@ -70,11 +67,8 @@ TEST(CliExplain, VertexOnTheCentreIsInsideOnlyWhenBothEdgesAreTopOrLeft) {
 
 // rule: TRI.FILL.CONVENTION
 TEST(CliExplain, OtherFillConventionsAreNamed) {
-  const TempDir dir;
-  const auto scene =
-      dir.write("scene.json", R"({"target": {"width": 4, "height": 4}, "fill": "top-right",
+  const auto r = explain_pixel("1,1", R"({"target": {"width": 4, "height": 4}, "fill": "top-right",
     "primitives": [{"type": "triangle", "v": [[1, 1], [3, 1], [3, 3]]}]})");
-  const auto r = run_cli({"explain", scene.string(), "--pixel", "1,1"});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(contains(
       r.out,
@@ -85,15 +79,12 @@ TEST(CliExplain, OtherFillConventionsAreNamed) {
 
 // rule: TRI.CULL.MODE, SNAP.CULL.AFTER_SNAP, TRI.DEGENERATE.ZERO_AREA
 TEST(CliExplain, CulledAndDegenerateTrianglesSayWhy) {
-  const TempDir dir;
   // Primitive 0 is counter-clockwise (back-facing, culled); primitive 1 has a non-zero area
   // as floats but collinear snapped vertices (y = 1.001 and 1.0019 both snap to raw 256).
-  const auto scene =
-      dir.write("scene.json", R"({"target": {"width": 4, "height": 4}, "cull": "back",
+  const auto r = explain_pixel("0,0", R"({"target": {"width": 4, "height": 4}, "cull": "back",
     "primitives": [
       {"type": "triangle", "v": [[0, 0], [0, 4], [4, 0]]},
       {"type": "triangle", "v": [[0, 1], [2, 1.001], [4, 1.0019]]}]})");
-  const auto r = run_cli({"explain", scene.string(), "--pixel", "0,0"});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(contains(r.out, "TRI.CULL.MODE: back-facing (counter-clockwise on screen, front face "
                               "cw) and cull back -> culled"))
@@ -108,11 +99,8 @@ TEST(CliExplain, CulledAndDegenerateTrianglesSayWhy) {
 TEST(CliExplain, ShowsTheFloat32InputAndItsSnappedValue) {
   // 16384 + 1/256 + 1/1024 + 1e-20 becomes the float32 16384 + 3/512 (raw 4194305.5), which
   // snaps to the even 4194306; a detour through double would give 4194305.
-  const TempDir dir;
-  const auto scene =
-      dir.write("scene.json", R"({"target": {"width": 2, "height": 2}, "primitives": [
+  const auto r = explain_pixel("0,0", R"({"target": {"width": 2, "height": 2}, "primitives": [
     {"type": "triangle", "v": [[16384.00488281250000000001, 0], [0, 0], [0, 1]]}]})");
-  const auto r = run_cli({"explain", scene.string(), "--pixel", "0,0"});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(contains(r.out, "v0 (16384.006, 0) -> (16384.0078125, 0) px = raw (4194306, 0)"))
       << r.out;
@@ -139,9 +127,7 @@ TEST(CliExplain, JsonOutputCarriesTheSameDecisions) {
 
 // rule: SCENE.INPUT.ERRORS
 TEST(CliExplain, PixelOutsideTheTargetIsBadInput) {
-  const TempDir dir;
-  const auto scene = dir.write("scene.json", kSplit);
-  const auto r = run_cli({"explain", scene.string(), "--pixel", "4,0"});
+  const auto r = explain_pixel("4,0", kSplit);
   EXPECT_EQ(r.status, 2);
   ASSERT_EQ(r.err_lines().size(), 1u) << r.err;
   EXPECT_TRUE(contains(r.err, "rastrules: error: --pixel: (4, 0) is outside the 4x4 target"))

@@ -31,6 +31,13 @@ void expect_one_error_line(const rastrules::test::RunResult& r, const std::strin
       << "expected \"" << expected << "\" in: " << lines[0];
 }
 
+// Runs `rastrules render SCENE --fragments DIR/OUT --max-fragments LIMIT`.
+rastrules::test::RunResult render_with_limit(const TempDir& dir, const std::filesystem::path& scene,
+                                             const std::string& out, const std::string& limit) {
+  return run_cli(
+      {"render", scene.string(), "--fragments", (dir / out).string(), "--max-fragments", limit});
+}
+
 std::string head(int w, int h) {
   return "{\"version\": 1, \"target\": {\"width\": " + std::to_string(w) +
          ", \"height\": " + std::to_string(h) + "}, \"primitives\": [";
@@ -127,8 +134,7 @@ TEST(Limits, FragmentLimitIsExactAndLeavesNoOutput) {
   const auto scene = dir.write(
       "full.json", head(16, 8) + "{\"type\": \"triangle\", \"v\": [[0,0],[16,0],[0,8]]},"
                                  "{\"type\": \"triangle\", \"v\": [[16,0],[16,8],[0,8]]}]}");
-  const auto ok = run_cli({"render", scene.string(), "--fragments", (dir / "ok.json").string(),
-                           "--max-fragments", "128"});
+  const auto ok = render_with_limit(dir, scene, "ok.json", "128");
   EXPECT_EQ(ok.status, 0) << ok.err;
   EXPECT_NE(ok.out.find("128 fragments"), std::string::npos) << ok.out;
 
@@ -154,8 +160,7 @@ TEST(Limits, FragmentLimitStopsAHugeRenderEarly) {
       dir.write("huge.json", head(16384, 16384) +
                                  "{\"type\": \"triangle\", \"v\": [[0,0],[32000,0],[0,32000]]}]}");
   const auto start = std::chrono::steady_clock::now();
-  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(),
-                          "--max-fragments", "100000"});
+  const auto r = render_with_limit(dir, scene, "out.json", "100000");
   const auto seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   expect_one_error_line(r, "render: more than 100000 fragments (limit SCENE.INPUT.LIMITS)");
@@ -175,15 +180,13 @@ TEST(Limits, CollectedPrimitivesAreBoundedBeforeTheyAreSorted) {
   }
   strip += "]}]}";
   const auto scene = dir.write("strip.json", head(1024, 1024) + strip);
-  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(),
-                          "--max-fragments", "1000"});
+  const auto r = render_with_limit(dir, scene, "out.json", "1000");
   expect_one_error_line(
       r, "render: primitives[0] touches more than 2000 pixels or fragments that must be held "
          "to be sorted (limit SCENE.INPUT.LIMITS, 2 x --max-fragments); raise it with "
          "--max-fragments N");
   EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
-  const auto ok = run_cli({"render", scene.string(), "--fragments", (dir / "ok.json").string(),
-                           "--max-fragments", "100000"});
+  const auto ok = render_with_limit(dir, scene, "ok.json", "100000");
   EXPECT_EQ(ok.status, 0) << ok.err;
 }
 
@@ -197,12 +200,10 @@ TEST(Limits, TouchedPixelsOfAMaskedPrimitiveCountAgainstTheBound) {
       "sliver.json", "{\"target\": {\"width\": 64, \"height\": 4}, \"samples\": 2, "
                      "\"sample_pattern\": [[-8, -8], [7, 7]], \"sample_mask\": 1, \"primitives\": ["
                      "{\"type\": \"triangle\", \"v\": [[0, 0.9], [64, 0.9], [0, 1.0]]}]}");
-  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(),
-                          "--max-fragments", "10"});
+  const auto r = render_with_limit(dir, scene, "out.json", "10");
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find("primitives[0] touches more than 20 pixels"), std::string::npos) << r.err;
-  const auto ok = run_cli({"render", scene.string(), "--fragments", (dir / "ok.json").string(),
-                           "--max-fragments", "100"});
+  const auto ok = render_with_limit(dir, scene, "ok.json", "100");
   EXPECT_EQ(ok.status, 0) << ok.err;
   EXPECT_NE(ok.out.find("0 fragments"), std::string::npos) << ok.out;
 }

@@ -55,6 +55,18 @@ std::string error_of(const std::string& text) {
   return "(no error)";
 }
 
+// Checks every field of a depth state.
+void expect_depth_state(const pipe::DepthState& got, const pipe::DepthState& want) {
+  EXPECT_EQ(got.format, want.format);
+  EXPECT_EQ(got.func, want.func);
+  EXPECT_EQ(got.write, want.write);
+  EXPECT_EQ(got.clear, want.clear);
+  EXPECT_EQ(got.clip, want.clip);
+  EXPECT_EQ(got.bias.bias, want.bias.bias);
+  EXPECT_EQ(got.bias.slope_scaled, want.bias.slope_scaled);
+  EXPECT_EQ(got.bias.clamp, want.bias.clamp);
+}
+
 constexpr const char* kTarget = R"("target": {"width": 8, "height": 4})";
 constexpr const char* kPosTriangle =
     R"({"type": "triangle", "pos": [[-0.5, -0.5, 0.5], [0.5, -0.5, 0.25, 2], [0, 0.5, 0]]})";
@@ -93,14 +105,8 @@ TEST(PipelineSceneIo, ReadsEveryKey) {
   EXPECT_EQ((*s.projection)[14], 1.0f);
   EXPECT_EQ((*s.projection)[15], 0.0f);
   ASSERT_TRUE(s.depth.has_value());
-  EXPECT_EQ(s.depth->format, pipe::DepthFormat::kD16);
-  EXPECT_EQ(s.depth->func, pipe::CompareFunc::kGreaterEqual);
-  EXPECT_FALSE(s.depth->write);
-  EXPECT_EQ(s.depth->clear, 0.5f);
-  EXPECT_FALSE(s.depth->clip);
-  EXPECT_EQ(s.depth->bias.bias, -3);
-  EXPECT_EQ(s.depth->bias.slope_scaled, 1.25f);
-  EXPECT_EQ(s.depth->bias.clamp, -0.125f);
+  expect_depth_state(*s.depth, {pipe::DepthFormat::kD16, pipe::CompareFunc::kGreaterEqual, false,
+                                0.5f, false, pipe::DepthBias{-3, 1.25f, -0.125f}});
   ASSERT_EQ(s.attributes.size(), 3u);
   EXPECT_EQ(s.attributes[0].name, "u");
   EXPECT_EQ(s.attributes[0].interpolation, pipe::Interpolation::kLinear);
@@ -143,14 +149,9 @@ TEST(PipelineSceneIo, DefaultsOfEveryKey) {
   EXPECT_EQ(*s.viewport, (pipe::Viewport{0.0f, 0.0f, 8.0f, 4.0f, 0.0f, 1.0f}));
   EXPECT_FALSE(s.model || s.view || s.projection);
   ASSERT_TRUE(s.depth.has_value());
-  EXPECT_EQ(s.depth->format, pipe::DepthFormat::kD24);
-  EXPECT_EQ(s.depth->func, pipe::CompareFunc::kLess);
-  EXPECT_TRUE(s.depth->write);
-  EXPECT_EQ(s.depth->clear, 1.0f);
-  EXPECT_TRUE(s.depth->clip);
-  EXPECT_EQ(s.depth->bias.bias, 0);
-  EXPECT_EQ(s.depth->bias.slope_scaled, 0.0f);
-  EXPECT_EQ(s.depth->bias.clamp, 0.0f);
+  // Every field at its default: d24, less, write, clear 1, clip, no bias.
+  expect_depth_state(*s.depth, {pipe::DepthFormat::kD24, pipe::CompareFunc::kLess, true, 1.0f, true,
+                                pipe::DepthBias{0, 0.0f, 0.0f}});
   EXPECT_EQ(s.attributes[0].interpolation, pipe::Interpolation::kPerspective);
   EXPECT_EQ(s.attributes[0].location, pipe::Location::kCenter);
   EXPECT_EQ(s.provoking, pipe::Provoking::kFirst);

@@ -26,7 +26,7 @@ namespace {
 using rastrules::Fragment;
 using rastrules::LineMode;
 using rastrules::PrimitiveType;
-using rastrules::test::read_file;
+using rastrules::test::render_fragments;
 using rastrules::test::run_cli;
 using rastrules::test::TempDir;
 
@@ -70,11 +70,9 @@ TEST(CliPointsLines, HandCheckedFragmentsOfPointsLinesAndAStrip) {
   for (std::size_t i = 0; i < expected.size(); ++i)
     text += (i == 0 ? "\n" : ",\n") + expected[i];
   text += "\n]}\n";
-  const TempDir dir;
-  const auto scene = dir.write("scene.json", kScene);
-  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()});
+  const auto r = render_fragments(kScene);
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(read_file(dir / "out.json"), text);
+  EXPECT_EQ(r.fragments, text);
   EXPECT_NE(r.out.find("7 primitives, 21 fragments"), std::string::npos) << r.out;
 }
 
@@ -106,15 +104,12 @@ TEST(CoverageText, IsTheExactDecimalOfQ16Over65536) {
 
 // rule: SCENE.OUTPUT.COVERAGE, SCENE.PRIM.LINE
 TEST(CliPointsLines, AntialiasedFragmentsCarryCoverageAndOthersDoNot) {
-  const TempDir dir;
-  const auto scene =
-      dir.write("scene.json", R"({"target": {"width": 12, "height": 6}, "primitives": [
+  const auto r = render_fragments(R"({"target": {"width": 12, "height": 6}, "primitives": [
     {"type": "line", "v": [[7.0, 2.5], [11.0, 2.5]], "aa": true},
     {"type": "line", "v": [[0.5, 4.5], [6.5, 4.5]]},
     {"type": "line_strip", "aa": true, "v": [[1.5, 1.5], [3.5, 1.5], [3.5, 3.5]]}]})");
-  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()});
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto doc = nlohmann::json::parse(read_file(dir / "out.json"));
+  const auto doc = nlohmann::json::parse(r.fragments);
   std::size_t aa = 0;
   bool centre_seen = false;
   for (const auto& f : doc["fragments"]) {

@@ -13,6 +13,7 @@
 namespace {
 
 using rastrules::test::read_file;
+using rastrules::test::render_fragments;
 using rastrules::test::run_cli;
 using rastrules::test::TempDir;
 
@@ -55,14 +56,17 @@ const std::string kSplitSquareFragments = fragments({{0, 0, 0},
                                                      {1, 2, 3},
                                                      {1, 3, 3}});
 
+// A picture colour as Png::at() gives it.
+std::array<std::uint8_t, 3> rgb(rastrules::io::Rgb c) {
+  return {c.r, c.g, c.b};
+}
+
 // rule: SCENE.OUTPUT.FRAGMENTS, TRI.FILL.TOP_LEFT
 TEST(CliRender, SplitSquareGivesEachDiagonalCentreToTheTriangleWithTheLeftEdge) {
-  const TempDir dir;
-  const auto scene = dir.write("scene.json", kSplitSquare);
-  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()});
+  const auto r = render_fragments(kSplitSquare);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");
-  EXPECT_EQ(read_file(dir / "out.json"), kSplitSquareFragments);
+  EXPECT_EQ(r.fragments, kSplitSquareFragments);
   EXPECT_NE(r.out.find("2 primitives, 16 fragments"), std::string::npos) << r.out;
 }
 
@@ -71,41 +75,32 @@ TEST(CliRender, DiagonalThroughCentresGoesToTheLeftEdgeSide) {
   // Square [1, 3]^2 split along x = y, which runs through the centres (1.5, 1.5) and
   // (2.5, 2.5): for the upper triangle it is a left edge (included), for the lower one a
   // right edge (excluded).
-  const TempDir dir;
-  const auto scene =
-      dir.write("scene.json", R"({"target": {"width": 4, "height": 4}, "primitives": [
+  const auto r = render_fragments(R"({"target": {"width": 4, "height": 4}, "primitives": [
     {"type": "triangle", "v": [[1, 1], [3, 1], [3, 3]]},
     {"type": "triangle", "v": [[1, 1], [3, 3], [1, 3]]}]})");
-  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(read_file(dir / "out.json"), fragments({{0, 1, 1}, {0, 2, 1}, {0, 2, 2}, {1, 1, 2}}));
+  EXPECT_EQ(r.fragments, fragments({{0, 1, 1}, {0, 2, 1}, {0, 2, 2}, {1, 1, 2}}));
 }
 
 // rule: SCENE.OUTPUT.FRAGMENTS, TRI.CULL.MODE, TRI.DEGENERATE.ZERO_AREA
 TEST(CliRender, CulledAndDegenerateTrianglesProduceNoFragments) {
-  const TempDir dir;
-  const auto scene =
-      dir.write("scene.json", R"({"target": {"width": 4, "height": 4}, "cull": "back",
+  const auto r = render_fragments(R"({"target": {"width": 4, "height": 4}, "cull": "back",
     "primitives": [
       {"type": "triangle", "v": [[0, 0], [0, 4], [4, 0]]},
       {"type": "triangle", "v": [[0, 0], [2, 2], [4, 4]]},
       {"type": "triangle", "v": [[0, 0], [1, 0], [0, 1]]}]})");
-  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()});
   ASSERT_EQ(r.status, 0) << r.err;
   // Only the third (clockwise, front-facing) triangle draws: the centre (0.5, 0.5) lies on
   // its hypotenuse x + y = 1, a right edge, so it is not covered either.
-  EXPECT_EQ(read_file(dir / "out.json"), fragments({}));
+  EXPECT_EQ(r.fragments, fragments({}));
 }
 
 // rule: SCENE.OUTPUT.FRAGMENTS, RASTER.TARGET.CLIP
 TEST(CliRender, FragmentsOutsideTheTargetAreNotWritten) {
-  const TempDir dir;
-  const auto scene =
-      dir.write("scene.json", R"({"target": {"width": 2, "height": 1}, "primitives": [
+  const auto r = render_fragments(R"({"target": {"width": 2, "height": 1}, "primitives": [
     {"type": "triangle", "v": [[-100, -100], [300, -100], [-100, 300]]}]})");
-  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(read_file(dir / "out.json"), fragments({{0, 0, 0}, {0, 1, 0}}));
+  EXPECT_EQ(r.fragments, fragments({{0, 0, 0}, {0, 1, 0}}));
 }
 
 // rule: SCENE.NUMBER.FLOAT32, SNAP.VERTEX.ROUND
@@ -116,15 +111,12 @@ TEST(CliRender, CoordinatesAreReadAsFloat32BeforeSnapping) {
   //   a double, the text would snap to 129 and miss the centre.)
   // - 1.501953125 = raw 384.5 snaps to 384 = 1.5: on the centre, included.
   // - 2.505859375 = raw 641.5 snaps to 642 = 2.5078125: right of the centre, which is outside.
-  const TempDir dir;
-  const auto scene =
-      dir.write("scene.json", R"({"target": {"width": 3, "height": 1}, "primitives": [
+  const auto r = render_fragments(R"({"target": {"width": 3, "height": 1}, "primitives": [
     {"type": "triangle", "v": [[0.5019531251, -1], [1, -1], [0.5019531251, 3]]},
     {"type": "triangle", "v": [[1.501953125, -1], [2, -1], [1.501953125, 3]]},
     {"type": "triangle", "v": [[2.505859375, -1], [3, -1], [2.505859375, 3]]}]})");
-  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(read_file(dir / "out.json"), fragments({{0, 0, 0}, {1, 1, 0}}));
+  EXPECT_EQ(r.fragments, fragments({{0, 0, 0}, {1, 1, 0}}));
 }
 
 // rule: SCENE.OUTPUT.FRAGMENTS
@@ -148,7 +140,6 @@ TEST(CliRender, WritesAPictureOfTheMagnifiedTarget) {
   // Default scale: 32 image pixels per target pixel, plus the closing grid line.
   ASSERT_EQ(png->width, 4u * 32 + 1);
   ASSERT_EQ(png->height, 4u * 32 + 1);
-  auto rgb = [](rastrules::io::Rgb c) { return std::array<std::uint8_t, 3>{c.r, c.g, c.b}; };
   // Inside pixel (1, 0) (covered by primitive 0) and pixel (3, 3) (primitive 1), away from
   // the grid, the centre crosses and the edges.
   EXPECT_EQ(png->at(1 * 32 + 4, 0 * 32 + 28), rgb(rastrules::io::cover_colour(0)));
@@ -170,7 +161,6 @@ TEST(CliRender, PictureMarksOverlapsAndUncoveredPixels) {
   ASSERT_TRUE(png.has_value());
   ASSERT_EQ(png->width, 3u * 16 + 1);
   ASSERT_EQ(png->height, 2u * 16 + 1);
-  auto rgb = [](rastrules::io::Rgb c) { return std::array<std::uint8_t, 3>{c.r, c.g, c.b}; };
   // Pixel (0, 0) is covered twice: its border is the overlap mark.
   EXPECT_EQ(png->at(0 * 16 + 1, 0 * 16 + 8), rgb(rastrules::io::kOverlapMark));
   EXPECT_EQ(png->at(0 * 16 + 15, 0 * 16 + 8), rgb(rastrules::io::kOverlapMark));

@@ -89,6 +89,20 @@ std::string read_file(const std::filesystem::path& path) {
   return s.str();
 }
 
+RunResult explain_pixel(const std::string& pixel, const std::string& scene_json) {
+  const TempDir dir;
+  return run_cli({"explain", dir.write("scene.json", scene_json).string(), "--pixel", pixel});
+}
+
+RenderResult render_fragments(const std::string& scene_json) {
+  const TempDir dir;
+  const auto scene = dir.write("scene.json", scene_json);
+  RenderResult r{run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string()}),
+                 ""};
+  r.fragments = read_file(dir / "out.json");
+  return r;
+}
+
 namespace {
 
 // libpng reports errors by longjmp: only trivially destructible objects live in this frame.
@@ -124,30 +138,29 @@ bool read_png_rows(std::FILE* f, Png* out, int color_type, std::size_t channels)
   return rgb8;
 }
 
-} // namespace
-
-std::optional<Png> read_png(const std::filesystem::path& path) {
+// Reads an 8-bit PNG of `color_type` (`channels` bytes per pixel); nullopt when the file is not
+// one.
+std::optional<Png> read_png_file(const std::filesystem::path& path, int color_type,
+                                 std::size_t channels) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (f == nullptr)
     return std::nullopt;
   Png png;
-  const bool ok = read_png_rows(f, &png, PNG_COLOR_TYPE_RGB, 3);
+  const bool ok = read_png_rows(f, &png, color_type, channels);
   std::fclose(f);
   if (!ok)
     return std::nullopt;
   return png;
 }
 
+} // namespace
+
+std::optional<Png> read_png(const std::filesystem::path& path) {
+  return read_png_file(path, PNG_COLOR_TYPE_RGB, 3);
+}
+
 std::optional<Png> read_png_rgba(const std::filesystem::path& path) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (f == nullptr)
-    return std::nullopt;
-  Png png;
-  const bool ok = read_png_rows(f, &png, PNG_COLOR_TYPE_RGB_ALPHA, 4);
-  std::fclose(f);
-  if (!ok)
-    return std::nullopt;
-  return png;
+  return read_png_file(path, PNG_COLOR_TYPE_RGB_ALPHA, 4);
 }
 
 } // namespace rastrules::test

@@ -46,6 +46,19 @@ RunResult run_cli(const std::vector<std::string>& args,
 
 std::string read_file(const std::filesystem::path& path);
 
+// Writes `scene_json` to a fresh temporary directory and runs
+// `rastrules explain SCENE.json --pixel PIXEL` on it.
+RunResult explain_pixel(const std::string& pixel, const std::string& scene_json);
+
+// A run of `rastrules render SCENE.json --fragments OUT.json` and the text of OUT.json ("" when
+// it was not written).
+struct RenderResult : RunResult {
+  std::string fragments;
+};
+
+// Writes `scene_json` to a fresh temporary directory and renders its fragment list there.
+RenderResult render_fragments(const std::string& scene_json);
+
 struct Png {
   std::uint32_t width = 0, height = 0;
   std::vector<std::uint8_t> rgb; // 3 bytes per pixel, rows top first
