@@ -10,6 +10,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "ladder_test_util.hpp"
 #include "rastrules/bench/ladder.hpp"
 
 namespace rb = rastrules::bench;
@@ -139,10 +140,7 @@ TEST(LadderLavapipe, ThreadCountComesFromLpNumThreadsElseTheOnlineProcessors) {
 // the threaded row, its counts and lavapipe's thread count reach the table and the JSON.
 // rule: BENCH.METRIC.THROUGHPUT, BENCH.LAVAPIPE, BENCH.TARGETS
 TEST(LadderRun, FakeLavapipeAndThreeThreadsReachTheTableAndTheJson) {
-  bool has_fast = false;
-  for (const rb::Rung r : rb::all_rungs())
-    has_fast = has_fast || r == rb::Rung::kReferenceFast;
-  if (!has_fast)
+  if (!rb::test::has_reference_fast())
     GTEST_SKIP() << "reference-fast not built";
   const LpNumThreads env{std::string("5")};
   rb::LadderConfig c;
@@ -233,10 +231,7 @@ TEST(LadderReport, JsonHoldsEveryFigure) {
 
 // rule: BENCH.TARGETS
 TEST(LadderTargets, EachTargetSaysWhetherThisRunMetIt) {
-  bool has_fast = false;
-  for (const rb::Rung r : rb::all_rungs())
-    has_fast = has_fast || r == rb::Rung::kReferenceFast;
-  if (!has_fast)
+  if (!rb::test::has_reference_fast())
     GTEST_SKIP() << "reference-fast not built";
   // fast = 3.5 x reference: 87.5 % of limit (4), faster than float; 100 triangles in 1 s
   // for lavapipe against 3.5e5/s: 3500x.

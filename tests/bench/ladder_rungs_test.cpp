@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "ladder_test_util.hpp"
 #include "limit.hpp"
 #include "rastrules/bench/ladder.hpp"
 
@@ -173,10 +174,7 @@ TEST(LadderRungs, LimitLoopsAgreeAndCountInsideCentres) {
 
 // rule: BENCH.METRIC.THROUGHPUT
 TEST(LadderRungs, ReferenceFastOnThreadsCountsWhatOneThreadCounts) {
-  bool has_fast = false;
-  for (const rb::Rung r : rb::all_rungs())
-    has_fast = has_fast || r == rb::Rung::kReferenceFast;
-  if (!has_fast)
+  if (!rb::test::has_reference_fast())
     GTEST_SKIP() << "reference-fast not built";
   rb::LadderConfig c;
   c.quick = true;

@@ -27,6 +27,15 @@ TriangleSetup raw_triangle(std::int32_t ax, std::int32_t ay, std::int32_t bx, st
   return setup_triangle({v(ax, ay), v(bx, by), v(cx, cy)}, state);
 }
 
+// A classification's counts {accepted, rejected, partial}: of tiles, and of 64 x 64 blocks.
+using Counts = std::array<std::uint64_t, 3>;
+Counts tiles(const raster::FastTileCounts& c) {
+  return {c.accepted, c.rejected, c.partial};
+}
+Counts blocks(const raster::FastTileCounts& c) {
+  return {c.blocks_accepted, c.blocks_rejected, c.blocks_partial};
+}
+
 // Every supported instruction set: the fast walk emits the plain walk's pixels in its order,
 // and fast_count_covered counts them.
 void expect_fast_equals_plain(const TriangleSetup& t, std::int32_t w, std::int32_t h) {
@@ -42,9 +51,7 @@ TEST(FastTileClassify, TilesInsideATriangleAreAcceptedWhole) {
   // Larger than a 64 x 64 target on every side: all 16 tiles accepted, no lane tested.
   const TriangleSetup t = triangle_px({-10, -10}, {200, -10}, {-10, 200});
   const raster::FastTileCounts c = raster::fast_tile_counts(t, 64, 64);
-  EXPECT_EQ(c.accepted, 16u);
-  EXPECT_EQ(c.rejected, 0u);
-  EXPECT_EQ(c.partial, 0u);
+  EXPECT_EQ(tiles(c), (Counts{16, 0, 0}));
   for (Isa isa : supported_isas())
     EXPECT_EQ(raster::fast_count_covered(t, 64, 64, isa), 64u * 64u);
   expect_fast_equals_plain(t, 64, 64);
@@ -57,9 +64,7 @@ TEST(FastTileClassify, TilesBeyondTheHypotenuseAreRejectedAndCrossedOnesTestedPe
   // (6 tiles), a + b == 3 crossed (4 tiles), with centres exactly on the hypotenuse.
   const TriangleSetup t = triangle_px({0, 0}, {64, 0}, {0, 64});
   const raster::FastTileCounts c = raster::fast_tile_counts(t, 64, 64);
-  EXPECT_EQ(c.accepted, 6u);
-  EXPECT_EQ(c.rejected, 6u);
-  EXPECT_EQ(c.partial, 4u);
+  EXPECT_EQ(tiles(c), (Counts{6, 6, 4}));
   expect_fast_equals_plain(t, 64, 64);
   // The bounding box decides which tiles are looked at: a triangle in one tile classifies one.
   const raster::FastTileCounts one =
@@ -76,12 +81,8 @@ TEST(FastTileClassify, BlocksOf64PixelsAreDecidedBeforeTheirTiles) {
   // 4 per-lane tiles of each 64 x 64 hypotenuse, as in the test above).
   const TriangleSetup t = triangle_px({0, 0}, {256, 0}, {0, 256});
   const raster::FastTileCounts c = raster::fast_tile_counts(t, 256, 256);
-  EXPECT_EQ(c.blocks_accepted, 6u);
-  EXPECT_EQ(c.blocks_rejected, 6u);
-  EXPECT_EQ(c.blocks_partial, 4u);
-  EXPECT_EQ(c.accepted, 6u * 16u + 4u * 6u);
-  EXPECT_EQ(c.rejected, 6u * 16u + 4u * 6u);
-  EXPECT_EQ(c.partial, 4u * 4u);
+  EXPECT_EQ(blocks(c), (Counts{6, 6, 4}));
+  EXPECT_EQ(tiles(c), (Counts{6 * 16 + 4 * 6, 6 * 16 + 4 * 6, 4 * 4}));
   expect_fast_equals_plain(t, 256, 256);
   // Bounds within one block are not classified as a block (never decided whole).
   const raster::FastTileCounts small =

@@ -19,11 +19,15 @@ namespace {
 constexpr LineMode kD3D = LineMode::kD3DDiamond;
 constexpr LineMode kVk = LineMode::kVulkanBresenham;
 
+// Both profiles draw the line from a to b as `expected`.
+void expect_both_profiles(Px a, Px b, const std::vector<Pixel>& expected) {
+  EXPECT_EQ(line_pixels(a, b, kD3D), expected) << "d3d";
+  EXPECT_EQ(line_pixels(a, b, kVk), expected) << "vulkan";
+}
+
 // rule: LINE.DIAMOND.GEOMETRY, LINE.D3D.EXIT, LINE.VK.EXIT
 TEST(LineExit, CentreToCentreCoversEveryPixelButTheLast) {
-  const std::vector<Pixel> expected = {{0, 0}, {1, 0}, {2, 0}};
-  EXPECT_EQ(line_pixels({0.5, 0.5}, {3.5, 0.5}, kD3D), expected);
-  EXPECT_EQ(line_pixels({0.5, 0.5}, {3.5, 0.5}, kVk), expected);
+  expect_both_profiles({0.5, 0.5}, {3.5, 0.5}, {{0, 0}, {1, 0}, {2, 0}});
 }
 
 // rule: LINE.MAJOR.AXIS
@@ -39,9 +43,7 @@ TEST(LineMajorAxis, FortyFiveDegreesIsXMajor) {
 TEST(LineBottomCorner, HorizontalLineThroughBottomCornersCoversTheRowAbove) {
   // y = 3 passes the bottom corners of row 2 and the top corners of row 3. D3D includes the
   // bottom corner; Vulkan shifts the line up by e^2 into the row-2 diamonds.
-  const std::vector<Pixel> expected = {{1, 2}, {2, 2}, {3, 2}};
-  EXPECT_EQ(line_pixels({1.0, 3.0}, {4.0, 3.0}, kD3D), expected);
-  EXPECT_EQ(line_pixels({1.0, 3.0}, {4.0, 3.0}, kVk), expected);
+  expect_both_profiles({1.0, 3.0}, {4.0, 3.0}, {{1, 2}, {2, 2}, {3, 2}});
 }
 
 // rule: LINE.D3D.TEST_AREA, LINE.VK.TEST_AREA, LINE.VK.D3D.DIFFERENCE
@@ -70,9 +72,7 @@ TEST(LineBottomCorner, EndingOnTheBottomCornerDoesNotExitUnderD3D) {
 TEST(LineRightCorner, VerticalLineThroughRightCornersCoversTheLeftColumn) {
   // x = 3 passes the right corners of column 2 and the left corners of column 3. D3D y-major
   // includes the right corner; Vulkan shifts the line left into column 2.
-  const std::vector<Pixel> expected = {{2, 1}, {2, 2}, {2, 3}};
-  EXPECT_EQ(line_pixels({3.0, 1.0}, {3.0, 4.0}, kD3D), expected);
-  EXPECT_EQ(line_pixels({3.0, 1.0}, {3.0, 4.0}, kVk), expected);
+  expect_both_profiles({3.0, 1.0}, {3.0, 4.0}, {{2, 1}, {2, 2}, {2, 3}});
 }
 
 // rule: LINE.D3D.TEST_AREA, LINE.MAJOR.AXIS
