@@ -48,6 +48,22 @@ double q16(double v) {
   return v * 65536.0;
 }
 
+// A horizontal or vertical line through pixel centres (the values are computed in
+// LineAACoverage.HorizontalLineThroughPixelCentres): 29/50 at `mid`, away from the ends;
+// 21/100 one pixel `across` the line on either side; no fragment two pixels across; 29/100 at
+// `end`, the pixel centred on an endpoint.
+void expect_line_through_centres(const Coverage& c, Pixel mid, Pixel across, Pixel end) {
+  const auto off = [&](std::int32_t k) {
+    return Pixel{mid.x + k * across.x, mid.y + k * across.y};
+  };
+  EXPECT_NEAR(c.at(mid), q16(29.0 / 50.0), 1.0);
+  EXPECT_NEAR(c.at(off(-1)), q16(21.0 / 100.0), 1.0);
+  EXPECT_NEAR(c.at(off(1)), q16(21.0 / 100.0), 1.0);
+  EXPECT_NEAR(c.at(end), q16(29.0 / 100.0), 1.0);
+  EXPECT_EQ(c.count(off(-2)), 0u);
+  EXPECT_EQ(c.count(off(2)), 0u);
+}
+
 // rule: LINE.AA.FRAGMENT, LINE.AA.COVERAGE, LINE.AA.RECT
 TEST(LineAADiagram, ReproducesTheD3DAALineDiagram) {
   // D3D11.3 AA-line diagram: endpoints at about (2.2, 2.9) and (4.75, 2.23) in the drawn
@@ -86,13 +102,8 @@ TEST(LineAACoverage, HorizontalLineThroughPixelCentres) {
   //   coverage = 29/100.
   // Rows 0 and 4 touch the rectangle only along a line: no fragment.
   const Coverage c = aa_px({0.5, 2.5}, {10.5, 2.5}, 12, 5);
-  EXPECT_NEAR(c.at({5, 2}), q16(29.0 / 50.0), 1.0);
-  EXPECT_NEAR(c.at({5, 1}), q16(21.0 / 100.0), 1.0);
-  EXPECT_NEAR(c.at({5, 3}), q16(21.0 / 100.0), 1.0);
-  EXPECT_NEAR(c.at({0, 2}), q16(29.0 / 100.0), 1.0);
+  expect_line_through_centres(c, {5, 2}, {0, 1}, {0, 2});
   EXPECT_EQ(c.at({5, 1}), c.at({5, 3}));
-  EXPECT_EQ(c.count({5, 0}), 0u);
-  EXPECT_EQ(c.count({5, 4}), 0u);
   // Columns 0..11 all have fragments (R4 of column 11 reaches back to x = 10).
   EXPECT_EQ(c.count({11, 2}), 1u);
   // Away from the ends a column sums to 29/50 + 2 * 21/100 = 1: the line's area per column.
@@ -103,12 +114,7 @@ TEST(LineAACoverage, HorizontalLineThroughPixelCentres) {
 TEST(LineAACoverage, VerticalLineThroughPixelCentres) {
   // The horizontal case turned by 90 degrees: the same values by the same computation.
   const Coverage c = aa_px({3.5, 1.5}, {3.5, 9.5}, 7, 12);
-  EXPECT_NEAR(c.at({3, 5}), q16(29.0 / 50.0), 1.0);
-  EXPECT_NEAR(c.at({2, 5}), q16(21.0 / 100.0), 1.0);
-  EXPECT_NEAR(c.at({4, 5}), q16(21.0 / 100.0), 1.0);
-  EXPECT_NEAR(c.at({3, 1}), q16(29.0 / 100.0), 1.0);
-  EXPECT_EQ(c.count({1, 5}), 0u);
-  EXPECT_EQ(c.count({5, 5}), 0u);
+  expect_line_through_centres(c, {3, 5}, {1, 0}, {3, 1});
 }
 
 // rule: LINE.AA.COVERAGE, LINE.AA.PRECISION
