@@ -12,6 +12,7 @@
 #include "rastrules/check/check.hpp"
 #include "rastrules/msaa.hpp"
 #include "rastrules/pipeline.hpp"
+#include "support.hpp"
 
 namespace rastrules::check {
 namespace {
@@ -22,14 +23,9 @@ Scene mixed_scene() {
   s.height = 10;
   s.primitives.push_back(
       make_triangle({FloatPoint{0.5f, 0.5f}, FloatPoint{9.5f, 0.5f}, FloatPoint{0.5f, 8.5f}}));
-  Primitive point;
-  point.type = PrimitiveType::kPoint;
-  point.v = {FloatPoint{10.5f, 8.5f}};
-  s.primitives.push_back(point);
-  Primitive strip;
-  strip.type = PrimitiveType::kLineStrip;
-  strip.v = {FloatPoint{1.0f, 9.0f}, FloatPoint{11.0f, 6.0f}, FloatPoint{6.0f, 1.0f}};
-  s.primitives.push_back(strip);
+  s.primitives.push_back(test::prim_px(PrimitiveType::kPoint, {{10.5f, 8.5f}}));
+  s.primitives.push_back(
+      test::prim_px(PrimitiveType::kLineStrip, {{1.0f, 9.0f}, {11.0f, 6.0f}, {6.0f, 1.0f}}));
   return s;
 }
 

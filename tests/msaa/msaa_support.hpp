@@ -16,16 +16,9 @@
 
 #include "rastrules/msaa.hpp"
 #include "rastrules/scene.hpp"
+#include "support.hpp"
 
 namespace rastrules::test {
-
-// Returns a primitive of type t with vertices in pixels (exact float32 values).
-inline Primitive prim_px(PrimitiveType t, std::initializer_list<FloatPoint> v) {
-  Primitive p;
-  p.type = t;
-  p.v.assign(v.begin(), v.end());
-  return p;
-}
 
 // Returns a width x height scene with the given multisample state and primitives.
 inline Scene msaa_scene(std::int32_t width, std::int32_t height, MultisampleState ms,

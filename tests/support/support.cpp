@@ -99,6 +99,13 @@ std::string picture(const std::vector<Pixel>& pixels, std::int32_t width, std::i
   return s;
 }
 
+Primitive prim_px(PrimitiveType t, std::vector<FloatPoint> v) {
+  Primitive p;
+  p.type = t;
+  p.v = std::move(v);
+  return p;
+}
+
 Scene scene_px(std::int32_t width, std::int32_t height, const RasterState& state,
                std::initializer_list<std::array<Px, 3>> triangles) {
   Scene s;

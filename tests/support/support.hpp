@@ -70,6 +70,9 @@ std::ostream& operator<<(std::ostream& os, const Pixel& p);
 [[nodiscard]] std::string picture(const std::vector<Pixel>& pixels, std::int32_t width,
                                   std::int32_t height);
 
+// Returns a primitive of type t with vertices in pixels (exact float32 values).
+[[nodiscard]] Primitive prim_px(PrimitiveType t, std::vector<FloatPoint> v);
+
 // Returns a scene of triangles given in pixels.
 [[nodiscard]] Scene scene_px(std::int32_t width, std::int32_t height, const RasterState& state,
                              std::initializer_list<std::array<Px, 3>> triangles);
