@@ -43,6 +43,7 @@ oracle::msaa::Input oracle_msaa_input(const Scene& scene) {
   in.height = scene.height;
   in.state = oracle_state(scene.state);
   in.line_mode = std::string(name_of(scene.line_mode));
+  in.multisample_enable = scene.msaa.multisample_enable;
   in.pattern.clear();
   for (const SampleOffset& o : scene.msaa.pattern.positions)
     in.pattern.push_back({o.x, o.y});
@@ -300,8 +301,24 @@ void check_multisampled(const Scene& scene, const PreparedScene& ps,
   const std::vector<oracle::msaa::Fragment> exact = oracle::msaa::render(in);
   std::vector<std::string> mine, theirs;
   for (const Fragment& f : kernel) {
-    if (f.coverage_q16)
-      c.note("a coverage on a multisampled fragment at prim " + std::to_string(f.prim));
+    // Only an antialiased d3d line without MultisampleEnable keeps its coverage on a
+    // multisampled target (MSAA.LINE.MODE): the single-sample line's, within its bound.
+    const bool aa_line = f.prim < scene.primitives.size() && scene.primitives[f.prim].aa &&
+                         scene.line_mode == LineMode::kD3DDiamond &&
+                         !(scene.msaa.count() > 1 && scene.msaa.multisample_enable);
+    if (f.coverage_q16.has_value() != (aa_line && !f.helper))
+      c.note("a coverage " + std::string(f.coverage_q16 ? "on" : "missing from") +
+             " a multisampled fragment at " + msaa_text(f));
+    if (f.coverage_q16 && aa_line) {
+      c.used("AA-line oracle (aa_check within 1/65536)");
+      const Primitive& prim = scene.primitives[f.prim];
+      const std::size_t s = f.seg.value_or(0);
+      const oracle::AACheck r = oracle::aa_check(
+          oracle_raw(prim.v.at(s)), oracle_raw(prim.v.at(s + 1)), f.x, f.y, *f.coverage_q16);
+      if (!r.positive || !r.within_bound)
+        c.note("coverage " + std::to_string(*f.coverage_q16) + "/65536 at " + msaa_text(f) +
+               " is not within 1/65536 of the exact " + std::to_string(r.approx));
+    }
     mine.push_back(msaa_text(f));
   }
   for (const oracle::msaa::Fragment& f : exact)

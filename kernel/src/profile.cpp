@@ -11,6 +11,7 @@ void apply(const Conventions& c, Scene& scene) {
   scene.state.front_face = c.front_face;
   scene.line_mode = c.line_mode;
   scene.msaa.centroid_rule = c.centroid;
+  scene.msaa.multisample_enable = c.multisample_enable;
   const std::uint32_t n = scene.msaa.count();
   if (c.pattern == PatternKind::kCenter && scene.msaa.pattern.kind != PatternKind::kCenter)
     scene.msaa.pattern = center_pattern(n);
@@ -28,6 +29,7 @@ Conventions conventions_of(const Scene& scene) {
   c.line_mode = scene.line_mode;
   c.pattern = scene.msaa.pattern.kind;
   c.centroid = scene.msaa.centroid_rule;
+  c.multisample_enable = scene.msaa.multisample_enable;
   c.provoking = scene.provoking;
   if (scene.depth)
     c.depth = scene.depth->format;

@@ -123,12 +123,13 @@ std::string field_of(std::size_t p) {
 }
 
 // Returns whether lines of this scene are drawn as quadrilateral lines (two triangles per
-// segment): the quadrilateral line modes, and the D3D line mode on a multisampled target.
+// segment): the quadrilateral line modes, and the D3D line mode on a multisampled target with
+// D3D's MultisampleEnable set.
 // rule: SCENE.LINE_MODE, MSAA.LINE.MODE
-bool lines_as_quads(LineMode mode, bool aa, std::uint32_t samples) {
+bool lines_as_quads(LineMode mode, bool aa, const MultisampleState& ms) {
   if (is_quad(mode))
     return !aa;
-  return mode == LineMode::kD3DDiamond && samples > 1;
+  return mode == LineMode::kD3DDiamond && ms.count() > 1 && ms.multisample_enable;
 }
 
 std::string mask_hex(std::uint32_t m) {
@@ -214,7 +215,7 @@ std::optional<SceneError> validate_msaa(const Scene& scene) {
                                        ")"};
     }
     // rule: MSAA.LINE.MODE
-    if (pat.kind == PatternKind::kCenter && lines_as_quads(scene.line_mode, prim.aa, n)) {
+    if (pat.kind == PatternKind::kCenter && lines_as_quads(scene.line_mode, prim.aa, ms)) {
       return SceneError{"sample_pattern", "a \"center\" pattern of " + std::to_string(n) +
                                               " samples cannot draw quadrilateral lines (" +
                                               field_of(p) + " is a " +
@@ -243,7 +244,6 @@ std::variant<PreparedScene, SceneError> prepare(const Scene& scene) {
   // rule: MSAA.LIMITS
   if (auto err = validate_msaa(scene))
     return *err;
-  const std::uint32_t samples = scene.msaa.count();
   PreparedScene out;
   std::tie(out.width, out.height, out.state, out.line_mode, out.msaa, out.clear_color) = std::tie(
       scene.width, scene.height, scene.state, scene.line_mode, scene.msaa, scene.clear_color);
@@ -303,8 +303,9 @@ std::variant<PreparedScene, SceneError> prepare(const Scene& scene) {
     case PrimitiveType::kLine:
     case PrimitiveType::kLineStrip:
       // rule: SCENE.LINE_MODE, MSAA.LINE.MODE
-      if (lines_as_quads(scene.line_mode, in.aa, samples)) {
-        // D3D lines (aliased or antialiased) on a multisampled target are 1.4 px wide.
+      if (lines_as_quads(scene.line_mode, in.aa, scene.msaa)) {
+        // D3D lines (aliased or antialiased) on a multisampled target with MultisampleEnable
+        // are 1.4 px wide.
         const LineMode quad_mode = is_quad(scene.line_mode) ? scene.line_mode : LineMode::kQuadWide;
         RasterState no_cull = scene.state;
         no_cull.cull = CullMode::kNone;
@@ -453,7 +454,7 @@ std::vector<PixelCoverage> sample_coverage_of(const PreparedScene& scene,
                                               const RenderOptions& options, CollectBudget* budget) {
   const SamplePattern& pattern = scene.msaa.pattern;
   std::vector<PixelCoverage> cov;
-  if (!is_line(prim.type) || lines_as_quads(scene.line_mode, prim.aa, pattern.count())) {
+  if (!is_line(prim.type) || lines_as_quads(scene.line_mode, prim.aa, scene.msaa)) {
     // Triangles, a point's two triangles and quadrilateral lines: every sample tested.
     // rule: MSAA.COVER.SAMPLE, MSAA.POINT.PER_SAMPLE
     for (const PreparedTriangle& t : prim.triangles) {
@@ -464,8 +465,9 @@ std::vector<PixelCoverage> sample_coverage_of(const PreparedScene& scene,
                    });
     }
   } else {
-    // Vulkan Bresenham lines (any count) and D3D lines with one sample: every sample of each
-    // pixel the line produces.
+    // Vulkan Bresenham lines (any count) and D3D lines with one sample or without
+    // MultisampleEnable: every sample of each pixel the line produces, antialiased lines with
+    // their coverage.
     // rule: MSAA.LINE.MODE
     const std::uint32_t all = full_mask(pattern.count());
     walk_segments(

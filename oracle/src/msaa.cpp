@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "rastrules/oracle/line.hpp"
+#include "rastrules/oracle/line_aa.hpp"
 #include "rastrules/oracle/point.hpp"
 #include "rastrules/oracle/triangle.hpp"
 
@@ -111,7 +112,8 @@ std::optional<std::size_t> first(std::uint32_t set, std::size_t n) {
 struct Unit {
   std::optional<std::uint32_t> seg;
   // kind: 0 triangle (v[0..2]), 1 point (v[0]), 2 quadrilateral line (v[0] -> v[1]),
-  // 3 aliased line in every sample (v[0] -> v[1]), 4 aliased line, one sample.
+  // 3 aliased line in every sample (v[0] -> v[1]), 4 aliased line, one sample,
+  // 5 antialiased line in every sample of each pixel of positive coverage.
   int kind = 0;
   std::vector<Raw2> v;
   std::string mode; // quad or aliased line mode
@@ -152,18 +154,21 @@ std::vector<Unit> units_of(const Primitive& p, const Input& in) {
   if (in.line_mode == "quad-wide" || in.line_mode == "quad-narrow") {
     kind = 2;
     mode = in.line_mode;
-  } else if (in.line_mode == "d3d" && n > 1) {
-    // A d3d line, aliased or antialiased, on a multisampled target: a quadrilateral line 1.4 px
-    // wide without antialiasing.
+  } else if (in.line_mode == "d3d" && n > 1 && in.multisample_enable) {
+    // A d3d line, aliased or antialiased, on a multisampled target with MultisampleEnable: a
+    // quadrilateral line 1.4 px wide without antialiasing.
     kind = 2;
     mode = "quad-wide";
+  } else if (in.line_mode == "d3d" && p.aa) {
+    // Otherwise (one sample, or no MultisampleEnable) an antialiased line hits every sample of
+    // each pixel it produces (its coverage is the single-sample line's, checked by line_aa's
+    // oracle).
+    kind = 5;
+    mode = "d3d";
   } else if (in.line_mode == "d3d" || in.line_mode == "vulkan-bresenham") {
-    if (p.aa)
-      throw std::invalid_argument(
-          "oracle: antialiased lines with one sample are not modelled here");
     kind = n > 1 ? 3 : 4;
     mode = aliased_mode(in.line_mode);
-    if (n > 1 && in.shading == "sample")
+    if (n > 1 && in.shading == "sample" && in.line_mode == "vulkan-bresenham")
       throw std::invalid_argument("oracle: sample shading of Bresenham lines is bad input");
   } else {
     throw std::invalid_argument("oracle: unknown line mode '" + in.line_mode + "'");
@@ -190,11 +195,15 @@ std::uint32_t unit_mask(const Unit& u, const Input& in, std::int64_t px, std::in
     return quad_line_mask(u.v[0], u.v[1], u.mode, in.state.fill, px, py, in.pattern);
   default: {
     // An aliased line: the pixel is the line's (centre test of its own rules), and then every
-    // sample of the pattern is covered.
+    // sample of the pattern is covered; an antialiased one (kind 5): the pixel has positive
+    // exact coverage (LINE.AA.RECT: within 3/2 px of the segment).
     const auto [lo, hi] = box_of(u.v.begin(), u.v.end());
     if (misses_box(px, py, {lo[0] - 512, lo[1] - 512}, {hi[0] + 512, hi[1] + 512}))
       return 0;
-    return aliased_line_covers(u.v[0], u.v[1], u.mode, px, py) ? full(in.pattern.size()) : 0;
+    const bool on_line = u.kind == 5 ? aa_compare(u.v[0], u.v[1], static_cast<std::int32_t>(px),
+                                                  static_cast<std::int32_t>(py), 0, 1) > 0
+                                     : aliased_line_covers(u.v[0], u.v[1], u.mode, px, py);
+    return on_line ? full(in.pattern.size()) : 0;
   }
   }
 }

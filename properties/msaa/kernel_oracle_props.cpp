@@ -10,6 +10,7 @@
 //   MSAA.QUAD.ALIGN, MSAA.QUAD.LANE, MSAA.QUAD.HELPER, MSAA.DERIV.FINE, MSAA.DERIV.COARSE,
 //   MSAA.RESOLVE.AVERAGE
 
+#include <algorithm>
 #include <cstdint>
 #include <sstream>
 #include <string>
@@ -20,6 +21,7 @@
 #include <rapidcheck/gtest.h>
 
 #include "msaa_gen.hpp"
+#include "rastrules/check/check.hpp"
 #include "rastrules/oracle/msaa.hpp"
 #include "rastrules/scene.hpp"
 
@@ -128,6 +130,41 @@ RC_GTEST_PROP(MsaaKernelOracle, EqualOnRandomScenesWithCustomPatterns, ()) {
   RC_CLASSIFY(!om::centre_in_hull(p.oracle), "centre outside the pattern's hull");
   check_scene(s);
   classify(seen(s));
+}
+
+// Without D3D's MultisampleEnable a d3d line keeps its own rasterizer on a multisampled
+// target: an antialiased one hits every sample of each pixel of positive coverage and keeps
+// that coverage, an aliased one every sample of its diamond-exit pixels. Checked by the one
+// checker (check::check_against_oracle: the oracle's fragments, and each coverage within
+// LINE.AA.PRECISION of the exact one), with every pattern, mask, centroid and shading rate.
+// rule: MSAA.LINE.MODE, LINE.AA.FRAGMENT, MSAA.MASK.AND, MSAA.SHADING.SAMPLE
+RC_GTEST_PROP(MsaaKernelOracle, D3DLinesWithoutMultisampleEnableKeepTheirRasterizer, ()) {
+  const mg::Pattern p = *rc::gen::element(mg::standard(2), mg::standard(4), mg::standard(8),
+                                          mg::standard(16), mg::custom(*mg::custom_offsets()));
+  mg::MsScene s = *mg::scene_on(p, kMaxSide);
+  s.line_mode = rastrules::LineMode::kD3DDiamond;
+  s.multisample_enable = false;
+  const bool aa = *rc::gen::arbitrary<bool>();
+  for (mg::Prim& prim : s.prims)
+    prim.aa = aa && (prim.type == rastrules::PrimitiveType::kLine ||
+                     prim.type == rastrules::PrimitiveType::kLineStrip);
+  const rastrules::Scene k = mg::to_kernel(s);
+  const auto prepared = rastrules::prepare(k);
+  if (const auto* e = std::get_if<rastrules::SceneError>(&prepared))
+    RC_FAIL("prepare rejected a valid scene: " + e->what());
+  const rastrules::PreparedScene& ps = std::get<rastrules::PreparedScene>(prepared);
+  const std::vector<rastrules::Fragment> frags = rastrules::rasterize(ps);
+  const rastrules::check::Mismatches m = rastrules::check::check_against_oracle(k, ps, frags);
+  if (!m.agree()) {
+    std::ostringstream os;
+    mg::show(s, os);
+    RC_FAIL(m.mismatches.front() + "\n" + os.str());
+  }
+  RC_CLASSIFY(aa, "antialiased lines");
+  RC_CLASSIFY(s.shading == rastrules::ShadingRate::kSample, "sample shading");
+  RC_CLASSIFY(std::any_of(frags.begin(), frags.end(),
+                          [](const rastrules::Fragment& f) { return f.coverage_q16.has_value(); }),
+              "fragments with coverage");
 }
 
 } // namespace

@@ -88,6 +88,7 @@ RC_GTEST_PROP(MsaaLimits, EachBrokenFieldIsNamedAndValidScenesPass, ()) {
     s.line_mode =
         *rc::gen::element(rastrules::LineMode::kD3DDiamond, rastrules::LineMode::kQuadWide,
                           rastrules::LineMode::kQuadNarrow);
+    s.msaa.multisample_enable = true; // d3d lines are quadrilaterals only with it
     for (auto& p : s.primitives)
       p.aa = false;
     s.primitives.push_back(line_prim());

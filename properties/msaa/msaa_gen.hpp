@@ -221,6 +221,7 @@ struct MsScene {
   std::int32_t height = 1;
   RasterState state;
   LineMode line_mode = LineMode::kD3DDiamond;
+  bool multisample_enable = false; // D3D's MultisampleEnable (MSAA.LINE.MODE)
   Pattern pattern;
   std::uint32_t sample_mask = 0xFFFFFFFFu;
   std::optional<CentroidRule> centroid;
@@ -231,27 +232,29 @@ struct MsScene {
   std::vector<Prim> prims;
 };
 
-inline bool is_quad_line_mode(LineMode m, std::uint32_t n) {
+inline bool is_quad_line_mode(LineMode m, std::uint32_t n, bool multisample_enable) {
   return m == LineMode::kQuadWide || m == LineMode::kQuadNarrow ||
-         (m == LineMode::kD3DDiamond && n > 1);
+         (m == LineMode::kD3DDiamond && n > 1 && multisample_enable);
 }
 
 // Makes a scene valid input (spec/rules/msaa.md): no quadrilateral lines on a centre pattern of
 // several samples (Bresenham instead), no sample shading of Bresenham lines with several
 // samples (pixel shading instead), "aa" only on d3d lines drawn as quadrilaterals (with one
-// sample antialiased lines are the line_aa area's).
+// sample antialiased lines are the line_aa area's; without MultisampleEnable they keep their
+// coverage, which check_against_oracle compares: AntialiasedLinesWithoutMultisampleEnable).
 inline void make_valid(MsScene& s) {
   const std::uint32_t n = s.pattern.count();
   const bool has_lines = std::any_of(s.prims.begin(), s.prims.end(), [](const Prim& p) {
     return p.type == PrimitiveType::kLine || p.type == PrimitiveType::kLineStrip;
   });
   if (has_lines && s.pattern.family == PatternFamily::kCenter && n > 1 &&
-      is_quad_line_mode(s.line_mode, n))
+      is_quad_line_mode(s.line_mode, n, s.multisample_enable))
     s.line_mode = LineMode::kVulkanBresenham;
-  if (has_lines && n > 1 && !is_quad_line_mode(s.line_mode, n))
+  if (has_lines && n > 1 && s.line_mode == LineMode::kVulkanBresenham)
     s.shading = ShadingRate::kPixel;
   for (Prim& p : s.prims) {
-    if (!(s.line_mode == LineMode::kD3DDiamond && n > 1))
+    if (!is_quad_line_mode(s.line_mode, n, s.multisample_enable) ||
+        s.line_mode != LineMode::kD3DDiamond)
       p.aa = false;
   }
   s.sample_mask &= full_mask(n);
@@ -270,6 +273,7 @@ inline rc::Gen<MsScene> scene_on(const Pattern& pattern, std::int32_t max_side, 
     s.state = *gen::raster_state();
     s.line_mode = *rc::gen::element(LineMode::kD3DDiamond, LineMode::kVulkanBresenham,
                                     LineMode::kQuadWide, LineMode::kQuadNarrow);
+    s.multisample_enable = *rc::gen::arbitrary<bool>();
     s.pattern = pattern;
     s.sample_mask = *sample_mask(pattern.count());
     if (*rc::gen::inRange(0, 3) != 0)
@@ -297,6 +301,7 @@ inline Scene to_kernel(const MsScene& s) {
   k.height = s.height;
   k.state = s.state;
   k.line_mode = s.line_mode;
+  k.msaa.multisample_enable = s.multisample_enable;
   k.msaa.pattern = s.pattern.kernel;
   k.msaa.sample_mask = s.sample_mask;
   k.msaa.has_centroid = s.centroid.has_value();
@@ -338,6 +343,7 @@ inline om::Input to_oracle(const MsScene& s) {
   o.height = s.height;
   o.state = gen::to_oracle_state(s.state);
   o.line_mode = line_mode_name(s.line_mode);
+  o.multisample_enable = s.multisample_enable;
   o.pattern = s.pattern.oracle;
   o.sample_mask = s.sample_mask;
   if (s.centroid)
@@ -362,7 +368,8 @@ inline om::Input to_oracle(const MsScene& s) {
 inline void show(const MsScene& s, std::ostream& os) {
   os << "scene " << s.width << "x" << s.height << " cull " << to_string(s.state.cull) << " front "
      << to_string(s.state.front_face) << " fill " << to_string(s.state.fill) << " line_mode "
-     << line_mode_name(s.line_mode) << "\n  pattern " << s.pattern.name() << ":";
+     << line_mode_name(s.line_mode) << " multisample_enable " << s.multisample_enable
+     << "\n  pattern " << s.pattern.name() << ":";
   for (const om::Offset& o : s.pattern.oracle)
     os << " (" << o.x << "," << o.y << ")";
   os << "\n  sample_mask 0x" << std::hex << s.sample_mask << std::dec << " centroid "

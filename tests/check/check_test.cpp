@@ -100,6 +100,36 @@ TEST(Check, MultisampledScenesGoToTheMultisamplingOracle) {
   EXPECT_TRUE(mentions(check_against_oracle(s, r.ps, tampered), "centroid"));
 }
 
+// An antialiased d3d line on a multisampled target without MultisampleEnable keeps its
+// coverage (MSAA.LINE.MODE): the pixels and masks against the multisampling oracle, each
+// coverage against the antialiased-line oracle; with MultisampleEnable it has none.
+// rule: MSAA.LINE.MODE, LINE.AA.FRAGMENT
+TEST(Check, MultisampledAntialiasedLinesKeepTheirCoverageWithoutMultisampleEnable) {
+  Scene s = mixed_scene();
+  s.primitives[2].aa = true;
+  s.msaa.pattern = standard_pattern(4);
+  const Rasterized r = run(s);
+  const Mismatches ok = check_against_oracle(s, r.ps, r.fragments);
+  EXPECT_TRUE(ok.agree()) << (ok.mismatches.empty() ? "" : ok.mismatches.front());
+  EXPECT_NE(
+      std::find(ok.oracles.begin(), ok.oracles.end(), "AA-line oracle (aa_check within 1/65536)"),
+      ok.oracles.end());
+  std::vector<Fragment> tampered = r.fragments;
+  auto line = std::find_if(tampered.begin(), tampered.end(),
+                           [](const Fragment& f) { return f.coverage_q16.has_value(); });
+  ASSERT_NE(line, tampered.end());
+  *line->coverage_q16 += 2;
+  EXPECT_TRUE(mentions(check_against_oracle(s, r.ps, tampered), "coverage"));
+  line->coverage_q16.reset();
+  EXPECT_TRUE(mentions(check_against_oracle(s, r.ps, tampered), "coverage missing"));
+  s.msaa.multisample_enable = true; // quadrilaterals: no coverage
+  const Rasterized q = run(s);
+  EXPECT_TRUE(std::none_of(q.fragments.begin(), q.fragments.end(),
+                           [](const Fragment& f) { return f.coverage_q16.has_value(); }));
+  const Mismatches quads = check_against_oracle(s, q.ps, q.fragments);
+  EXPECT_TRUE(quads.agree()) << (quads.mismatches.empty() ? "" : quads.mismatches.front());
+}
+
 // rule: PIPE.INTERP.BOUND, PIPE.DEPTH.BOUND, PIPE.BARY.SUM
 TEST(Check, PipelineValuesWithinTheOraclesBounds) {
   rastrules::Scene s;

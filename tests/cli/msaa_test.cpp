@@ -50,7 +50,7 @@ TEST(CliMsaaSceneIo, ReadsEveryKeyIntoTheScene) {
   const auto read = rastrules::io::read_scene(
       R"({"target": {"width": 8, "height": 8}, "sample_pattern": [[-8, 7], [7, -8], [0, 0]],
           "sample_mask": 5, "centroid": "d3d10", "shading": "sample", "quads": true,
-          "derivatives": "coarse", "clear_color": [1, 2, 3, 4],
+          "multisample_enable": true, "derivatives": "coarse", "clear_color": [1, 2, 3, 4],
           "primitives": [{"type": "point", "v": [[1, 1]], "color": [10, 20, 30, 40]}]})");
   ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(read))
       << std::get<rastrules::SceneError>(read).what();
@@ -64,7 +64,18 @@ TEST(CliMsaaSceneIo, ReadsEveryKeyIntoTheScene) {
   EXPECT_EQ(s.msaa.centroid_rule, rastrules::CentroidRule::kD3D10);
   EXPECT_EQ(s.msaa.shading, rastrules::ShadingRate::kSample);
   EXPECT_TRUE(s.msaa.quads);
+  EXPECT_TRUE(s.msaa.multisample_enable);
   EXPECT_EQ(s.msaa.derivatives, rastrules::DerivativeMode::kCoarse);
+  // Written back only when set, and read back the same.
+  const std::string text = rastrules::io::write_scene(s);
+  EXPECT_NE(text.find("\"multisample_enable\": true"), std::string::npos);
+  const auto again = rastrules::io::read_scene(text);
+  ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(again));
+  EXPECT_TRUE(rastrules::io::same_scene(std::get<rastrules::Scene>(again), s));
+  rastrules::Scene off = s;
+  off.msaa.multisample_enable = false;
+  EXPECT_FALSE(rastrules::io::same_scene(off, s));
+  EXPECT_EQ(rastrules::io::write_scene(off).find("multisample_enable"), std::string::npos);
   EXPECT_EQ(s.clear_color, (rastrules::Rgba8{1, 2, 3, 4}));
   EXPECT_EQ(s.primitives[0].color, (rastrules::Rgba8{10, 20, 30, 40}));
 }

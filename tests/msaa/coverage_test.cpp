@@ -188,10 +188,11 @@ const MaskMap kWideLine4x = {{{0, 1}, 0b1000}, {{1, 1}, 0b1000}, {{2, 1}, 0b1000
                              {{2, 3}, 0b0001}, {{3, 3}, 0b0001}};
 
 // rule: MSAA.LINE.MODE
-TEST(LineMode, D3DLinesBecomeQuadrilateralLinesPerSample) {
+TEST(LineMode, D3DLinesWithMultisampleEnableBecomeQuadrilateralLinesPerSample) {
   const Primitive line = prim_px(PrimitiveType::kLine, {{0.5f, 2.5f}, {3.5f, 2.5f}});
   Scene s = msaa_scene(5, 5, four(), {line});
   s.line_mode = LineMode::kD3DDiamond;
+  s.msaa.multisample_enable = true;
   EXPECT_EQ(masks_of(frags_of(s)), kWideLine4x);
   // Antialiased: the same, with no coverage value.
   Primitive aa = line;
@@ -201,13 +202,66 @@ TEST(LineMode, D3DLinesBecomeQuadrilateralLinesPerSample) {
   EXPECT_EQ(masks_of(f), kWideLine4x);
   for (const Fragment& fr : f)
     EXPECT_FALSE(fr.coverage_q16.has_value());
-  // quad-wide is the same rectangle.
+  // quad-wide is the same rectangle, whatever MultisampleEnable says.
   s.primitives = {line};
   s.line_mode = LineMode::kQuadWide;
+  EXPECT_EQ(masks_of(frags_of(s)), kWideLine4x);
+  s.msaa.multisample_enable = false;
   EXPECT_EQ(masks_of(frags_of(s)), kWideLine4x);
   // With one sample nothing changes: the D3D aliased line stays aliased.
   Scene one = msaa_scene(5, 5, MultisampleState{}, {line});
   EXPECT_EQ(masks_of(frags_of(one)), (MaskMap{{{0, 2}, 1}, {{1, 2}, 1}, {{2, 2}, 1}}));
+}
+
+// Issue 15 part 1b, found 2026-11-25: D3D11's rasterizer state has MultisampleEnable false by
+// default, and then "all of the MSAA samples in the pixel are hit" by an aliased line (D3D11.3
+// 15.14.1); rastrules drew the 1.4 px quadrilateral instead (row 0 mask 8, (0, 1) = 10,
+// (4, 1) = 5, row 2 mask 1). The default is now the diamond-exit line in every sample.
+// rule: MSAA.LINE.MODE, LINE.D3D.EXIT
+TEST(LineMode, D3DLinesWithoutMultisampleEnableHitEverySampleOfTheirPixels) {
+  const Primitive line = prim_px(PrimitiveType::kLine, {{0.5f, 1.5f}, {4.5f, 1.5f}});
+  Scene s = msaa_scene(8, 4, four(), {line});
+  s.line_mode = LineMode::kD3DDiamond;
+  ASSERT_FALSE(s.msaa.multisample_enable); // the default, D3D11's
+  EXPECT_EQ(masks_of(frags_of(s)),
+            (MaskMap{{{0, 1}, 0xF}, {{1, 1}, 0xF}, {{2, 1}, 0xF}, {{3, 1}, 0xF}}));
+  // The same pixels as with one sample, each with the masked pattern.
+  Scene one = msaa_scene(8, 4, MultisampleState{}, {line});
+  s.msaa.sample_mask = 0b0101;
+  EXPECT_EQ(keys_of(frags_of(s)), keys_of(frags_of(one), 0b0101u));
+  // With MultisampleEnable: the quadrilateral the issue saw.
+  s.msaa.sample_mask = 0xFFFFFFFFu;
+  s.msaa.multisample_enable = true;
+  EXPECT_EQ(masks_of(frags_of(s)), (MaskMap{{{0, 0}, 8},
+                                            {{1, 0}, 8},
+                                            {{2, 0}, 8},
+                                            {{3, 0}, 8},
+                                            {{0, 1}, 10},
+                                            {{1, 1}, 0xF},
+                                            {{2, 1}, 0xF},
+                                            {{3, 1}, 0xF},
+                                            {{4, 1}, 5},
+                                            {{1, 2}, 1},
+                                            {{2, 2}, 1},
+                                            {{3, 2}, 1},
+                                            {{4, 2}, 1}}));
+}
+
+// Without MultisampleEnable an antialiased d3d line keeps the single-sample line's pixels and
+// coverage, each pixel with every sample (D3D11.3 15.14.1: alpha-AA lines hit every sample).
+// rule: MSAA.LINE.MODE, LINE.AA.FRAGMENT
+TEST(LineMode, AntialiasedD3DLinesWithoutMultisampleEnableKeepTheirCoverage) {
+  Primitive line = prim_px(PrimitiveType::kLine, {{0.5f, 1.3f}, {4.5f, 2.1f}});
+  line.aa = true;
+  const auto single = frags_of(msaa_scene(8, 4, MultisampleState{}, {line}));
+  Scene s = msaa_scene(8, 4, four(), {line});
+  const auto multi = frags_of(s);
+  ASSERT_EQ(multi.size(), single.size());
+  for (std::size_t i = 0; i < multi.size(); ++i) {
+    EXPECT_EQ(std::tie(multi[i].x, multi[i].y), std::tie(single[i].x, single[i].y));
+    EXPECT_EQ(multi[i].mask, 0xFu);
+    EXPECT_EQ(multi[i].coverage_q16, single[i].coverage_q16);
+  }
 }
 
 // rule: MSAA.LINE.MODE

@@ -109,9 +109,13 @@ TEST(Limits, QuadrilateralLinesOnACentrePatternOfSeveralSamples) {
   const SceneError e = error_of(s);
   EXPECT_EQ(e.field, "sample_pattern");
   EXPECT_NE(e.message.find("primitives[0]"), std::string::npos);
-  // D3D lines become quadrilateral lines with more than one sample: also rejected.
+  // D3D lines become quadrilateral lines with more than one sample and MultisampleEnable: also
+  // rejected; without it they keep their own rasterizer and are accepted.
   s.line_mode = LineMode::kD3DDiamond;
+  s.msaa.multisample_enable = true;
   EXPECT_EQ(error_of(s).field, "sample_pattern");
+  s.msaa.multisample_enable = false;
+  EXPECT_TRUE(std::holds_alternative<PreparedScene>(prepare(s)));
   // One sample, Bresenham lines, or no line: accepted.
   s.msaa = with_pattern(center_pattern(1));
   EXPECT_TRUE(std::holds_alternative<PreparedScene>(prepare(s)));

@@ -425,9 +425,10 @@ std::string msaa_text(const Report& r, const PreparedScene& s, std::int32_t x, s
   out += "  " + std::to_string(n) + " sample" + (n == 1 ? "" : "s") + ", " +
          std::string(to_string(ms.pattern.kind)) + " pattern  " + cite({m.pattern_rule}) + "\n";
   if (m.whole_pixel) {
-    out += "  a " + std::string(io::line_mode_name(s.line_mode)) +
-           " line covers every sample of each pixel it produces  " + cite({rules::kMsaaLineMode}) +
-           "\n";
+    const bool d3d = s.line_mode == LineMode::kD3DDiamond && n > 1;
+    out += "  a " + std::string(io::line_mode_name(s.line_mode)) + " line" +
+           (d3d ? " without MultisampleEnable" : "") +
+           " covers every sample of each pixel it produces  " + cite({rules::kMsaaLineMode}) + "\n";
     for (const LineSegmentDecision& g : r.d.segments) {
       out += "  segment " + std::to_string(g.seg) + ": " +
              (g.covered ? "produces the pixel" : "does not produce the pixel") + "\n";

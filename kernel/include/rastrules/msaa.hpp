@@ -191,6 +191,10 @@ struct MultisampleState {
   bool has_centroid = false;               // fragments carry a centroid evaluation point
   CentroidRule centroid_rule = CentroidRule::kD3D11;
   ShadingRate shading = ShadingRate::kPixel;
+  // D3D's MultisampleEnable (MSAA.LINE.MODE): with more than one sample, "d3d" lines are
+  // quadrilaterals 1.4 px wide when true; when false (D3D11's default) they keep their own
+  // rasterizer and cover every sample of each pixel they produce. Nothing else depends on it.
+  bool multisample_enable = false;
   bool quads = false;                                 // emit helper lanes of touched 2x2 quads
   DerivativeMode derivatives = DerivativeMode::kNone; // implies quads
 

@@ -19,11 +19,12 @@ namespace rastrules {
 
 // rule: PROFILE.CONVENTIONS
 struct Conventions {
-  FillConvention fill = FillConvention::kTopLeft;                // TRI.FILL.CONVENTION
-  FrontFace front_face = FrontFace::kClockwise;                  // TRI.CULL.MODE
-  LineMode line_mode = LineMode::kD3DDiamond;                    // SCENE.LINE_MODE
-  PatternKind pattern = PatternKind::kStandard;                  // MSAA.PATTERN.STANDARD
-  CentroidRule centroid = CentroidRule::kD3D11;                  // MSAA.CENTROID.*
+  FillConvention fill = FillConvention::kTopLeft; // TRI.FILL.CONVENTION
+  FrontFace front_face = FrontFace::kClockwise;   // TRI.CULL.MODE
+  LineMode line_mode = LineMode::kD3DDiamond;     // SCENE.LINE_MODE
+  PatternKind pattern = PatternKind::kStandard;   // MSAA.PATTERN.STANDARD
+  CentroidRule centroid = CentroidRule::kD3D11;   // MSAA.CENTROID.*
+  bool multisample_enable = false; // MSAA.LINE.MODE: D3D's MultisampleEnable, D3D11's default
   pipe::Provoking provoking = pipe::Provoking::kFirst;           // PIPE.INTERP.FLAT
   pipe::DepthFormat depth = pipe::DepthFormat::kD24;             // PIPE.DEPTH.FORMAT
   static constexpr int kSubpixelBits = rastrules::kSubpixelBits; // fixed: SNAP.VERTEX.FORMAT

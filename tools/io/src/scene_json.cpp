@@ -137,6 +137,7 @@ enum class Slot {
   kSampleMask,
   kCentroid,
   kShading,
+  kMultisampleEnable,
   kQuads,
   kDerivatives,
   kClearColor, // root object, multisampling (SCENE.MSAA)
@@ -195,7 +196,7 @@ struct KeySpec {
   bool pipeline = false; // the key makes the scene a pipeline scene (SCENE.PIPELINE)
 };
 
-constexpr std::array<KeySpec, 20> kRootKeys = {
+constexpr std::array<KeySpec, 21> kRootKeys = {
     {{"version", Slot::kVersion, false},
      {"target", Slot::kTarget, true},
      {"cull", Slot::kCull, false},
@@ -207,6 +208,7 @@ constexpr std::array<KeySpec, 20> kRootKeys = {
      {"sample_mask", Slot::kSampleMask, false},
      {"centroid", Slot::kCentroid, false},
      {"shading", Slot::kShading, false},
+     {"multisample_enable", Slot::kMultisampleEnable, false},
      {"quads", Slot::kQuads, false},
      {"derivatives", Slot::kDerivatives, false},
      {"clear_color", Slot::kClearColor, false},
@@ -693,6 +695,12 @@ private:
       return enumeration(field, v, Names<CentroidRule>::table, scene_.msaa.centroid_rule);
     case Slot::kShading:
       return enumeration(field, v, Names<ShadingRate>::table, scene_.msaa.shading);
+    case Slot::kMultisampleEnable:
+      // rule: MSAA.LINE.MODE
+      if (v.kind != Kind::kBool)
+        return type_error(field, "true or false", v);
+      scene_.msaa.multisample_enable = v.b;
+      return true;
     case Slot::kQuads:
       if (v.kind != Kind::kBool)
         return type_error(field, "true or false", v);
@@ -1374,6 +1382,8 @@ std::string scene_head(const Scene& scene) {
     out += "  \"centroid\": \"" + std::string(to_string(ms.centroid_rule)) + "\",\n";
   if (ms.shading != ShadingRate::kPixel)
     out += "  \"shading\": \"" + std::string(to_string(ms.shading)) + "\",\n";
+  if (ms.multisample_enable)
+    out += "  \"multisample_enable\": true,\n";
   if (ms.quads)
     out += "  \"quads\": true,\n";
   if (ms.derivatives != DerivativeMode::kNone) {
@@ -1456,7 +1466,8 @@ bool same_state(const Scene& a, const Scene& b) {
   return ma.pattern == mb.pattern && ma.sample_mask == mb.sample_mask &&
          ma.has_centroid == mb.has_centroid &&
          (!ma.has_centroid || ma.centroid_rule == mb.centroid_rule) && ma.shading == mb.shading &&
-         ma.quads == mb.quads && ma.derivatives == mb.derivatives && a.clear_color == b.clear_color;
+         ma.multisample_enable == mb.multisample_enable && ma.quads == mb.quads &&
+         ma.derivatives == mb.derivatives && a.clear_color == b.clear_color;
 }
 
 bool same_matrix(const std::optional<pipe::Mat4f>& a, const std::optional<pipe::Mat4f>& b) {

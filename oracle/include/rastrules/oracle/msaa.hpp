@@ -108,6 +108,7 @@ struct Input {
   std::int32_t height = 0;
   State state;
   std::string line_mode = "d3d";
+  bool multisample_enable = false; // D3D's MultisampleEnable (MSAA.LINE.MODE)
   std::vector<Offset> pattern = {Offset{}};
   std::uint32_t sample_mask = 0xFFFFFFFFu;
   std::optional<std::string> centroid; // "d3d11" | "d3d10"
