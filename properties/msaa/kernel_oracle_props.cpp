@@ -32,45 +32,23 @@ namespace om = rastrules::oracle::msaa;
 
 constexpr std::int32_t kMaxSide = 7;
 
-// Renders s with the kernel and the oracle and fails with both lists on any difference, then
-// compares the resolved targets.
+// Renders s with the kernel and checks it with the one checker (check::check_against_oracle:
+// every fragment field against the multisampling oracle, antialiased coverage against its
+// own, and the resolved target), failing with the scene and the first differences.
 void check_scene(const mg::MsScene& s) {
   const rastrules::Scene scene = mg::to_kernel(s);
   const auto prepared = rastrules::prepare(scene);
-  if (const auto* err = std::get_if<rastrules::SceneError>(&prepared)) {
-    std::ostringstream os;
-    mg::show(s, os);
+  std::ostringstream os;
+  mg::show(s, os);
+  if (const auto* err = std::get_if<rastrules::SceneError>(&prepared))
     RC_FAIL("kernel rejected a valid scene: " + err->what() + "\n" + os.str());
-  }
   const auto& ps = std::get<rastrules::PreparedScene>(prepared);
-  const std::vector<rastrules::Fragment> kernel = rastrules::rasterize(ps);
-  const om::Input in = mg::to_oracle(s);
-  const std::vector<om::Fragment> oracle = om::render(in);
-  const std::string diff = mg::difference(kernel, oracle);
-  if (!diff.empty()) {
-    std::ostringstream os;
-    mg::show(s, os);
-    RC_FAIL(os.str() + diff);
-  }
-  const auto resolved = rastrules::resolve(ps, kernel);
-  if (const auto* err = std::get_if<rastrules::SceneError>(&resolved)) {
-    RC_FAIL("kernel resolve failed: " + err->what());
-  }
-  const auto& img = std::get<rastrules::ResolvedImage>(resolved);
-  const std::vector<om::Rgba> want = om::resolve(in, oracle);
-  RC_ASSERT(img.width == s.width);
-  RC_ASSERT(img.height == s.height);
-  RC_ASSERT(img.pixels.size() == want.size());
-  for (std::size_t i = 0; i < want.size(); ++i) {
-    if (img.pixels[i] != want[i]) {
-      std::ostringstream os;
-      mg::show(s, os);
-      os << "resolve of pixel " << i << ": kernel (" << int{img.pixels[i][0]} << ","
-         << int{img.pixels[i][1]} << "," << int{img.pixels[i][2]} << "," << int{img.pixels[i][3]}
-         << "), oracle (" << int{want[i][0]} << "," << int{want[i][1]} << "," << int{want[i][2]}
-         << "," << int{want[i][3]} << ")";
-      RC_FAIL(os.str());
-    }
+  const rastrules::check::Mismatches m =
+      rastrules::check::check_against_oracle(scene, ps, rastrules::rasterize(ps), {12});
+  if (!m.agree()) {
+    for (const std::string& d : m.mismatches)
+      os << "  " << d << "\n";
+    RC_FAIL(std::to_string(m.count) + " differences\n" + os.str());
   }
 }
 
@@ -148,21 +126,13 @@ RC_GTEST_PROP(MsaaKernelOracle, D3DLinesWithoutMultisampleEnableKeepTheirRasteri
   for (mg::Prim& prim : s.prims)
     prim.aa = aa && (prim.type == rastrules::PrimitiveType::kLine ||
                      prim.type == rastrules::PrimitiveType::kLineStrip);
-  const rastrules::Scene k = mg::to_kernel(s);
-  const auto prepared = rastrules::prepare(k);
-  if (const auto* e = std::get_if<rastrules::SceneError>(&prepared))
-    RC_FAIL("prepare rejected a valid scene: " + e->what());
-  const rastrules::PreparedScene& ps = std::get<rastrules::PreparedScene>(prepared);
-  const std::vector<rastrules::Fragment> frags = rastrules::rasterize(ps);
-  const rastrules::check::Mismatches m = rastrules::check::check_against_oracle(k, ps, frags);
-  if (!m.agree()) {
-    std::ostringstream os;
-    mg::show(s, os);
-    RC_FAIL(m.mismatches.front() + "\n" + os.str());
-  }
+  check_scene(s);
+  const auto frags = rastrules::render(mg::to_kernel(s));
+  RC_ASSERT(std::holds_alternative<std::vector<rastrules::Fragment>>(frags));
+  const auto& list = std::get<std::vector<rastrules::Fragment>>(frags);
   RC_CLASSIFY(aa, "antialiased lines");
   RC_CLASSIFY(s.shading == rastrules::ShadingRate::kSample, "sample shading");
-  RC_CLASSIFY(std::any_of(frags.begin(), frags.end(),
+  RC_CLASSIFY(std::any_of(list.begin(), list.end(),
                           [](const rastrules::Fragment& f) { return f.coverage_q16.has_value(); }),
               "fragments with coverage");
 }
