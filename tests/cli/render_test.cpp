@@ -209,4 +209,63 @@ TEST(CliRender, OutputsThatAreNotRegularFilesAreWrittenInPlace) {
   EXPECT_EQ(read_file(real), kSplitSquareFragments);
 }
 
+// Issue 17 item 3, found 2026-11-25: a symlinked output was written in place, so a render that
+// failed half way destroyed the link's target (a 3 GB partial JSON replaced it). The temporary
+// now goes beside the real target and is renamed onto it only when complete.
+// rule: SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
+TEST(CliRender, AFailedRenderLeavesALinkedOutputsTargetAsItWas) {
+  const TempDir dir;
+  const auto scene = dir.write("scene.json", kSplitSquare);
+  const auto real = dir.write("real.json", "keep me");
+  std::filesystem::create_symlink(real, dir / "link.json");
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "link.json").string(),
+                          "--max-fragments", "1"});
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(read_file(real), "keep me");
+  EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.json"));
+  // No temporary is left beside the target or the link.
+  for (const auto& e : std::filesystem::directory_iterator(dir.path()))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+}
+
+// Issue 17 item 4, found 2026-11-25: two outputs naming one file ("F" and "F", or "F" and
+// "./F") deleted the existing F and printed "cannot write: Success". Refused before any work.
+// rule: SCENE.INPUT.ERRORS
+TEST(CliRender, TwoOutputsNamingOneFileAreRefusedBeforeAnyWork) {
+  const TempDir dir;
+  const auto scene = dir.write("scene.json", kSplitSquare);
+  const auto out = dir.write("out", "keep me");
+  const std::string same_by_dot = (dir.path() / "." / "out").string();
+  for (const auto& [first, second] :
+       {std::pair{"--fragments", "--png"}, std::pair{"--png", "--resolve"},
+        std::pair{"--fragments", "--depth-out"}}) {
+    const auto r = run_cli({"render", scene.string(), first, out.string(), second, same_by_dot});
+    EXPECT_EQ(r.status, 2) << first << " " << second;
+    ASSERT_EQ(r.err_lines().size(), 1u) << r.err;
+    EXPECT_NE(r.err.find("names the same file as"), std::string::npos) << r.err;
+    EXPECT_EQ(read_file(out), "keep me");
+  }
+  // Through a link too.
+  std::filesystem::create_symlink(out, dir / "alias");
+  const auto r = run_cli(
+      {"render", scene.string(), "--fragments", out.string(), "--png", (dir / "alias").string()});
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(read_file(out), "keep me");
+}
+
+// Issue 17 item 6, found 2026-11-25: a raw NUL byte ended the input (the JSON library's lexer
+// reads it as the end), so a valid scene followed by NUL and garbage rendered with exit 0.
+// rule: SCENE.INPUT.ERRORS
+TEST(CliRender, ARawNulByteIsAParseErrorWithItsPosition) {
+  const TempDir dir;
+  const auto scene =
+      dir.write("scene.json", std::string(kSplitSquare) + std::string(1, '\0') + "garbage");
+  const auto r = run_cli({"render", scene.string(), "--fragments", "-"});
+  EXPECT_EQ(r.status, 2);
+  ASSERT_EQ(r.err_lines().size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("a raw NUL byte"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("parse error at line"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty());
+}
+
 } // namespace

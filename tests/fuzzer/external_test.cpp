@@ -202,4 +202,16 @@ TEST(ExternalDriverRegression, DeepNestingIsRefusedBeforeParsing) {
                std::get<std::string>(ok).find("nesting") != std::string::npos);
 }
 
+// Issue 17 item 6, found 2026-11-25: a raw NUL byte ended a driver's output for the JSON
+// library, so valid output followed by NUL and garbage was accepted. Now a parse error with
+// the NUL's position.
+// rule: DRIVER.EXTERNAL.PROTOCOL
+TEST(ExternalDriverRegression, ARawNulByteIsNotTheEndOfTheOutput) {
+  const std::string text = std::string(R"({"fragments": []})") + std::string(1, '\0') + "junk";
+  const auto r = parse_external_fragments(text, small_scene());
+  ASSERT_TRUE(std::holds_alternative<std::string>(r));
+  EXPECT_NE(std::get<std::string>(r).find("line 1, column 18: a raw NUL byte"), std::string::npos)
+      << std::get<std::string>(r);
+}
+
 } // namespace rastrules::driver

@@ -176,6 +176,13 @@ std::optional<pipe::PipeResult> run_pipeline_or_report(const Scene& scene,
   return std::move(std::get<pipe::PipeResult>(result));
 }
 
+bool same_output_file(const std::string& a, const std::string& b) {
+  std::error_code ea, eb;
+  const std::filesystem::path ca = std::filesystem::weakly_canonical(a, ea);
+  const std::filesystem::path cb = std::filesystem::weakly_canonical(b, eb);
+  return ea || eb ? a == b : ca == cb;
+}
+
 OutputFile::~OutputFile() {
   discard();
 }
@@ -198,18 +205,32 @@ std::optional<std::string> OutputFile::open(const std::string& path) {
     file_ = stdout;
     return std::nullopt;
   }
-  // Devices, pipes and symbolic links (/dev/null, /dev/stdout, a FIFO) are written in place:
-  // renaming a temporary file over them would replace them.
+  // A symbolic link is followed: the temporary file is written beside the link's real target
+  // and renamed onto it, so the link stays and an error leaves the target as it was. Devices
+  // and pipes (/dev/null, /dev/stdout, a FIFO) are written in place: renaming a temporary file
+  // over them would replace them.
   std::error_code ec;
-  const auto link = std::filesystem::symlink_status(path, ec);
-  if (std::filesystem::exists(link) && !std::filesystem::is_regular_file(link)) {
+  std::filesystem::path target = path;
+  if (std::filesystem::is_symlink(std::filesystem::symlink_status(path, ec))) {
+    target = std::filesystem::weakly_canonical(path, ec);
+    if (ec)
+      return path + ": cannot follow the link: " + ec.message();
+  }
+  const auto st = std::filesystem::status(target, ec);
+  if (std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
     is_in_place_ = true;
     file_ = std::fopen(path.c_str(), "wb");
     if (file_ == nullptr)
       return path + ": cannot open: " + std::strerror(errno);
     return std::nullopt;
   }
-  temp_path_ = path + ".tmp-" + std::to_string(::getpid());
+  // The temporary's name is short (a name of NAME_MAX bytes has no room for a suffix) and
+  // unique within the process (render writes several outputs at once).
+  static unsigned serial = 0;
+  target_path_ = target.string();
+  temp_path_ = (target.parent_path() / (".rastrules-" + std::to_string(::getpid()) + "-" +
+                                        std::to_string(serial++) + ".tmp"))
+                   .string();
   file_ = std::fopen(temp_path_.c_str(), "wb");
   if (file_ == nullptr)
     return path + ": cannot create: " + std::strerror(errno);
@@ -235,7 +256,7 @@ std::optional<std::string> OutputFile::commit() {
     std::filesystem::remove(temp_path_, ec);
     return path_ + ": write failed";
   }
-  std::filesystem::rename(temp_path_, path_, ec);
+  std::filesystem::rename(temp_path_, target_path_, ec);
   if (ec) {
     std::filesystem::remove(temp_path_, ec);
     return path_ + ": cannot write: " + ec.message();

@@ -82,10 +82,15 @@ private:
   void discard();
   std::string path_;
   std::string temp_path_;
+  std::string target_path_; // path_, or the real file a link at path_ names
   std::FILE* file_ = nullptr;
   bool is_stdout_ = false;
   bool is_in_place_ = false; // not a regular file: written directly, never renamed
 };
+
+// Whether two output paths name one file: equal canonical paths, following links, for files
+// that exist or not (then their folders' canonical paths and the names).
+[[nodiscard]] bool same_output_file(const std::string& a, const std::string& b);
 
 // Writes `text` to `path` through an OutputFile: the file appears only when complete. Returns
 // an error message on failure.

@@ -559,6 +559,24 @@ std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
     return usage_error("render: only one of --fragments, --png and --resolve can be standard "
                        "output (--depth-out counts too)");
   }
+  // rule: SCENE.INPUT.ERRORS
+  // Two outputs naming one file ("F" and "./F", or a link to it) would overwrite each other:
+  // refused before any work, by the files' canonical paths.
+  const std::pair<const char*, const std::optional<std::string>*> outputs[] = {
+      {"--fragments", &rq.fragments_path},
+      {"--png", &rq.png_path},
+      {"--resolve", &rq.resolve_path},
+      {"--depth-out", &rq.depth_out_path}};
+  for (std::size_t i = 0; i < std::size(outputs); ++i) {
+    for (std::size_t j = i + 1; j < std::size(outputs); ++j) {
+      const std::optional<std::string>& a = *outputs[i].second;
+      const std::optional<std::string>& b = *outputs[j].second;
+      if (a && b && *a != "-" && *b != "-" && same_output_file(*a, *b)) {
+        return error(std::string("render: ") + outputs[j].first + " " + *b +
+                     " names the same file as " + outputs[i].first + " " + *a);
+      }
+    }
+  }
   if (rq.scale && !rq.png_path)
     return usage_error("render: --scale needs --png");
   if (rq.png_depth && !rq.png_path)

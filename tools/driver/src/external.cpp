@@ -354,6 +354,8 @@ std::variant<std::vector<Fragment>, std::string> parse_external_fragments(std::s
     return "nesting deeper than " + std::to_string(kMaxProtocolDepth) + " levels (" +
            std::to_string(depth) + ")";
   }
+  if (auto nul = io::nul_byte_problem(text))
+    return "not JSON: " + *nul;
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(text.begin(), text.end());

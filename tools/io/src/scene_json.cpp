@@ -14,6 +14,7 @@
 
 #include "rastrules/io/scene_json.hpp"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cerrno>
@@ -1249,7 +1250,23 @@ std::string format_float(float v) {
 }
 
 // rule: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.PIPELINE, SCENE.INPUT.ERRORS
+std::optional<std::string> nul_byte_problem(std::string_view text) {
+  const std::size_t at = text.find('\0');
+  if (at == std::string_view::npos)
+    return std::nullopt;
+  const std::string_view before = text.substr(0, at);
+  const std::size_t line =
+      1 + static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n'));
+  const std::size_t last_newline = before.rfind('\n');
+  const std::size_t column =
+      at - (last_newline == std::string_view::npos ? 0 : last_newline + 1) + 1;
+  return "parse error at line " + std::to_string(line) + ", column " + std::to_string(column) +
+         ": a raw NUL byte, which JSON text cannot hold";
+}
+
 std::variant<Scene, SceneError> read_scene(std::string_view json_text) {
+  if (auto nul = nul_byte_problem(json_text))
+    return SceneError{"", std::move(*nul)};
   SceneReader reader;
   const bool ok = nlohmann::json::sax_parse(json_text.begin(), json_text.end(), &reader,
                                             nlohmann::json::input_format_t::json,
