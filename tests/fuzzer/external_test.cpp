@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include <sys/stat.h>
 
 #include <chrono>
@@ -212,6 +214,29 @@ TEST(ExternalDriverRegression, ARawNulByteIsNotTheEndOfTheOutput) {
   ASSERT_TRUE(std::holds_alternative<std::string>(r));
   EXPECT_NE(std::get<std::string>(r).find("line 1, column 18: a raw NUL byte"), std::string::npos)
       << std::get<std::string>(r);
+}
+
+// Issue 17 item 10, found 2026-11-25: RASTRULES_EXTERNAL_TIMEOUT_MS above about 9.2e12
+// overflowed the clock (every draw then "timed out") and "abc", "0", "-5" silently fell back to
+// 10 s. Now one error line naming the variable and its range, and the driver is not opened.
+// rule: DRIVER.EXTERNAL.PROTOCOL
+TEST(ExternalDriverRegression, TheTimeoutVariableIsAnIntegerInItsRangeOrAnError) {
+  struct Restore {
+    ~Restore() { ::unsetenv("RASTRULES_EXTERNAL_TIMEOUT_MS"); }
+  } restore;
+  for (const char* bad : {"abc", "0", "-5", "9300000000000", "86400001", "12ms", ""}) {
+    ::setenv("RASTRULES_EXTERNAL_TIMEOUT_MS", bad, 1);
+    std::string err;
+    EXPECT_EQ(open_driver("external:/bin/true", &err), nullptr) << bad;
+    EXPECT_NE(err.find("RASTRULES_EXTERNAL_TIMEOUT_MS needs an integer in [1, 86400000]"),
+              std::string::npos)
+        << bad << ": " << err;
+  }
+  ::setenv("RASTRULES_EXTERNAL_TIMEOUT_MS", "86400000", 1);
+  std::string err;
+  EXPECT_EQ(default_external_options(&err).timeout_ms, 86400000);
+  EXPECT_TRUE(err.empty()) << err;
+  EXPECT_NE(open_driver("external:/bin/true", &err), nullptr) << err;
 }
 
 } // namespace rastrules::driver

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -278,13 +279,21 @@ std::optional<std::int64_t> get_int(const nlohmann::json& v) {
 
 } // namespace
 
-ExternalOptions default_external_options() {
+ExternalOptions default_external_options(std::string* error) {
   ExternalOptions o;
-  if (const char* t = std::getenv("RASTRULES_EXTERNAL_TIMEOUT_MS")) {
-    char* end = nullptr;
-    const long long v = std::strtoll(t, &end, 10);
-    if (end != t && *end == '\0' && v > 0)
-      o.timeout_ms = v;
+  const char* t = std::getenv("RASTRULES_EXTERNAL_TIMEOUT_MS");
+  if (t == nullptr)
+    return o;
+  const std::string_view text(t);
+  std::int64_t v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec == std::errc{} && end == text.data() + text.size() && v >= 1 &&
+      v <= kMaxExternalTimeoutMs) {
+    o.timeout_ms = v;
+  } else if (error != nullptr) {
+    *error = "RASTRULES_EXTERNAL_TIMEOUT_MS needs an integer in [1, " +
+             std::to_string(kMaxExternalTimeoutMs) + "] (milliseconds), got \"" +
+             io::printable(text, 40) + "\"";
   }
   return o;
 }
@@ -459,7 +468,14 @@ std::unique_ptr<Driver> open_external_driver(std::string_view command, std::stri
 
 namespace detail {
 std::unique_ptr<Driver> open_external(std::string_view arg, std::string* error) {
-  return open_external_driver(arg, error);
+  std::string bad;
+  ExternalOptions options = default_external_options(&bad);
+  if (!bad.empty()) {
+    if (error != nullptr)
+      *error = bad;
+    return nullptr;
+  }
+  return open_external_driver(arg, error, options);
 }
 } // namespace detail
 

@@ -23,9 +23,15 @@ struct ExternalOptions {
   std::size_t max_output_bytes = std::size_t{64} << 20; // standard output larger: an error
 };
 
+// The most RASTRULES_EXTERNAL_TIMEOUT_MS may say: one day, in milliseconds.
+inline constexpr std::int64_t kMaxExternalTimeoutMs = 86400000;
+
 // Returns the default options, with timeout_ms taken from the environment variable
-// RASTRULES_EXTERNAL_TIMEOUT_MS when it holds a positive integer.
-[[nodiscard]] ExternalOptions default_external_options();
+// RASTRULES_EXTERNAL_TIMEOUT_MS when it is set: an integer in [1, kMaxExternalTimeoutMs].
+// Anything else sets *error to one line naming the variable and its range (and the default
+// stays); error may be null.
+// rule: DRIVER.EXTERNAL.PROTOCOL
+[[nodiscard]] ExternalOptions default_external_options(std::string* error = nullptr);
 
 // Splits COMMAND into arguments: on spaces and tabs when it holds only characters that no
 // shell would treat specially (letters, digits, and _ - . / : = , + @ %); otherwise
