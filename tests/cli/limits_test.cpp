@@ -223,10 +223,25 @@ TEST(Limits, MaxFragmentsNeedsAPositiveInteger) {
     const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "o.json").string(),
                             "--max-fragments", bad});
     EXPECT_EQ(r.status, 2) << bad;
-    EXPECT_NE(r.err.find("--max-fragments needs an integer in [1, 2^40]"), std::string::npos)
+    EXPECT_NE(r.err.find("--max-fragments needs an integer in [1, 2^40], got \"" +
+                         std::string(bad) + "\""),
+              std::string::npos)
         << r.err;
+    EXPECT_EQ(r.err_lines().size(), 1u) << r.err; // one line, not the usage (issue 17 item 11)
     EXPECT_FALSE(std::filesystem::exists(dir / "o.json"));
   }
+  // --scale and explain's --pixel: the same, one line naming the value.
+  const auto scale =
+      run_cli({"render", scene.string(), "--png", (dir / "o.png").string(), "--scale", "0"});
+  EXPECT_EQ(scale.status, 2);
+  EXPECT_EQ(scale.err_lines(),
+            std::vector<std::string>{
+                "rastrules: error: --scale needs an integer in [1, 4096], got \"0\""});
+  const auto pixel = run_cli({"explain", scene.string(), "--pixel", "1;2"});
+  EXPECT_EQ(pixel.status, 2);
+  EXPECT_EQ(pixel.err_lines(),
+            std::vector<std::string>{
+                "rastrules: error: --pixel needs two integers X,Y in [0, 16383], got \"1;2\""});
 }
 
 } // namespace

@@ -32,8 +32,6 @@ TEST(CliUsage, UsageErrorsExitWithStatus2AndPrintUsage) {
       {"render", "scene.json", "--fragments"},
       {"render", "scene.json", "--fragments", "out.json", "--frobnicate"},
       {"render", "a.json", "b.json", "--fragments", "out.json"},
-      {"render", "scene.json", "--png", "out.png", "--scale", "0"},
-      {"render", "scene.json", "--png", "out.png", "--scale", "x"},
       {"render", "scene.json", "--fragments", "-", "--png", "-"},
       {"explain", "scene.json"},
       {"explain", "--pixel", "1,1"},
@@ -49,6 +47,19 @@ TEST(CliUsage, UsageErrorsExitWithStatus2AndPrintUsage) {
     EXPECT_EQ(r.err.rfind("rastrules: error: ", 0), 0u) << shown << ": " << r.err;
     EXPECT_NE(r.err.find("usage: rastrules"), std::string::npos) << shown;
     EXPECT_EQ(r.out, "") << shown;
+  }
+}
+
+// A bad value of an option is one line naming it, not the usage (issue 17 item 11).
+// rule: SCENE.INPUT.ERRORS
+TEST(CliUsage, BadOptionValuesAreOneLine) {
+  for (const char* scale : {"0", "x"}) {
+    const auto r = run_cli({"render", "scene.json", "--png", "out.png", "--scale", scale});
+    EXPECT_EQ(r.status, 2) << scale;
+    EXPECT_EQ(r.err,
+              std::string("rastrules: error: --scale needs an integer in [1, 4096], got \"") +
+                  scale + "\"\n");
+    EXPECT_EQ(r.out, "") << scale;
   }
 }
 

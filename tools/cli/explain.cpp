@@ -859,8 +859,9 @@ int run_explain(const Args& args) {
                         ? std::nullopt
                         : parse_int(pixel->substr(comma + 1), 0, kMaxTargetSide - 1);
   if (!px_x || !px_y) {
-    return usage_error("--pixel needs two integers X,Y in [0, " +
-                       std::to_string(kMaxTargetSide - 1) + "]");
+    // A bad value is one line, like every other option's (the usage is for a bad command).
+    return error("--pixel needs two integers X,Y in [0, " + std::to_string(kMaxTargetSide - 1) +
+                 "], got \"" + io::printable(*pixel, 40) + "\"");
   }
 
   const auto loaded = load_scene(*scene_path);

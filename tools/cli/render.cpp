@@ -491,14 +491,16 @@ std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
       const std::optional<std::string> v = value("--scale");
       const auto n = v ? parse_int(*v, 1, io::kMaxPictureSide) : std::nullopt;
       if (!n)
-        return usage_error("--scale needs an integer in [1, 4096]");
+        return error("--scale needs an integer in [1, 4096], got " +
+                     (v ? "\"" + io::printable(*v, 40) + "\"" : std::string("nothing")));
       rq.scale = static_cast<int>(*n);
     } else if (is("--max-fragments")) {
       // rule: SCENE.INPUT.LIMITS
       const std::optional<std::string> v = value("--max-fragments");
       const auto n = v ? parse_int(*v, 1, std::int64_t{1} << 40) : std::nullopt;
       if (!n)
-        return usage_error("--max-fragments needs an integer in [1, 2^40]");
+        return error("--max-fragments needs an integer in [1, 2^40], got " +
+                     (v ? "\"" + io::printable(*v, 40) + "\"" : std::string("nothing")));
       rq.max_fragments = static_cast<std::uint64_t>(*n);
     } else if (is("--threads")) {
       // rule: FAST.THREADS.DETERMINISTIC
