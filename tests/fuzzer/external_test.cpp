@@ -239,4 +239,24 @@ TEST(ExternalDriverRegression, TheTimeoutVariableIsAnIntegerInItsRangeOrAnError)
   EXPECT_NE(open_driver("external:/bin/true", &err), nullptr) << err;
 }
 
+// Issue 17 item 11, found 2026-11-25: duplicate and unknown keys in a driver's output were
+// accepted, the last value winning ({"fragments": [...], "fragments": []} became no fragment).
+// rule: DRIVER.EXTERNAL.PROTOCOL
+TEST(ExternalDriverRegression, DuplicateAndUnknownKeysAreErrors) {
+  const auto error_of = [](const std::string& text) {
+    const auto r = parse_external_fragments(text, small_scene());
+    return std::holds_alternative<std::string>(r) ? std::get<std::string>(r) : std::string();
+  };
+  const std::pair<const char*, const char*> bad[] = {
+      {R"({"fragments": [{"prim": 0, "x": 0, "y": 0}], "fragments": []})",
+       "\"fragments\" is given twice"},
+      {R"({"fragments": [{"prim": 0, "x": 0, "x": 1, "y": 0}]})", "\"x\" is given twice"},
+      {R"({"fragments": [], "fragment": []})", "fragment: unknown key"}};
+  for (const auto& [text, want] : bad)
+    EXPECT_NE(error_of(text).find(want), std::string::npos) << text << ": " << error_of(text);
+  // The same key in two objects is no repeat.
+  EXPECT_EQ(
+      error_of(R"({"fragments": [{"prim": 0, "x": 0, "y": 0}, {"prim": 0, "x": 1, "y": 0}]})"), "");
+}
+
 } // namespace rastrules::driver

@@ -365,16 +365,39 @@ std::variant<std::vector<Fragment>, std::string> parse_external_fragments(std::s
   }
   if (auto nul = io::nul_byte_problem(text))
     return "not JSON: " + *nul;
+  // A key given twice would silently keep the last value (a fragment list could become empty):
+  // every object's keys are tracked while parsing and the first repeat is reported.
+  std::vector<std::set<std::string>> keys;
+  std::string duplicate;
+  const nlohmann::json::parser_callback_t track = [&](int, nlohmann::json::parse_event_t event,
+                                                      nlohmann::json& parsed) {
+    using E = nlohmann::json::parse_event_t;
+    if (event == E::object_start)
+      keys.emplace_back();
+    else if (event == E::object_end && !keys.empty())
+      keys.pop_back();
+    else if (event == E::key && !keys.empty() &&
+             !keys.back().insert(parsed.get<std::string>()).second && duplicate.empty())
+      duplicate = parsed.get<std::string>();
+    return true;
+  };
   nlohmann::json doc;
   try {
-    doc = nlohmann::json::parse(text.begin(), text.end());
+    doc = nlohmann::json::parse(text.begin(), text.end(), track);
   } catch (const nlohmann::json::parse_error& e) {
     return std::string("not JSON: ") + e.what();
   } catch (const nlohmann::json::exception& e) { // e.g. a number too large for any type
     return std::string("not JSON the protocol allows: ") + e.what();
   }
+  if (!duplicate.empty())
+    return "the key \"" + io::printable(duplicate, 40) + "\" is given twice in one object";
   if (!doc.is_object() || !doc.contains("fragments") || !doc["fragments"].is_array()) {
     return std::string("expected {\"fragments\": [...]}");
+  }
+  for (const auto& [key, value] : doc.items()) {
+    if (key != "fragments")
+      return io::printable(key, 40) + ": unknown key (expected fragments)";
+    (void)value;
   }
   const std::uint32_t samples = scene.msaa.count();
   std::vector<Fragment> out;
