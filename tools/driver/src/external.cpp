@@ -174,11 +174,18 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
   close_fd(err_pipe[0]);
   int status = 0;
   if (!kill_it) {
-    // Both outputs are closed: wait for the exit, still under the deadline.
+    // Both outputs are closed: wait for the exit, still under the deadline. The exit is seen
+    // without reaping the process (WNOWAIT), so that its group can still be named safely: what
+    // it left running in the background is ended before the process is reaped.
     while (true) {
-      const pid_t w = ::waitpid(pid, &status, WNOHANG);
-      if (w == pid)
+      siginfo_t info{};
+      const int w = ::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT);
+      if (w == 0 && info.si_pid == pid) {
+        ::kill(-pid, SIGKILL); // the group's other members (a process that called setsid escapes)
+        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
         break;
+      }
       if (w < 0 && errno != EINTR)
         break;
       if (std::chrono::steady_clock::now() >= deadline) {
