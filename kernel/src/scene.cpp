@@ -702,8 +702,12 @@ std::vector<Fragment> rasterize(const PreparedScene& scene) {
 }
 
 // rule: MSAA.RESOLVE.AVERAGE, MSAA.LIMITS
-std::variant<ResolvedImage, SceneError> resolve(const PreparedScene& scene,
-                                                const std::vector<Fragment>& fragments) {
+Resolver::Resolver(const PreparedScene& scene)
+    : scene_(&scene), samples_(static_cast<std::size_t>(std::int64_t{scene.width} * scene.height *
+                                                        scene.msaa.count()),
+                               scene.clear_color) {}
+
+std::variant<Resolver, SceneError> Resolver::start(const PreparedScene& scene) {
   const std::uint32_t n = scene.msaa.count();
   const std::int64_t total = std::int64_t{scene.width} * scene.height * n;
   if (scene.width < 1 || scene.height < 1 || n < 1 || total > kMaxResolveSamples) {
@@ -713,36 +717,54 @@ std::variant<ResolvedImage, SceneError> resolve(const PreparedScene& scene,
                                     " x " + std::to_string(scene.height) + " x " +
                                     std::to_string(n)};
   }
-  std::vector<Rgba8> samples(static_cast<std::size_t>(total), scene.clear_color);
-  for (std::size_t i = 0; i < fragments.size(); ++i) {
-    const Fragment& f = fragments[i];
-    if (f.prim >= scene.primitives.size() || f.x < 0 || f.x >= scene.width || f.y < 0 ||
-        f.y >= scene.height) {
-      return SceneError{"fragments[" + std::to_string(i) + "]",
-                        "names a primitive or pixel outside the scene"};
-    }
-    if (f.helper)
-      continue; // helper lanes write nothing (MSAA.QUAD.HELPER)
-    const std::size_t base =
-        (static_cast<std::size_t>(f.y) * static_cast<std::size_t>(scene.width) +
-         static_cast<std::size_t>(f.x)) *
-        n;
-    for (std::uint32_t k = 0; k < n; ++k) {
-      if (((f.mask >> k) & 1u) != 0u)
-        samples[base + k] = scene.primitives[f.prim].color;
-    }
+  return Resolver(scene);
+}
+
+std::optional<SceneError> Resolver::add(const Fragment& f, std::size_t index) {
+  const PreparedScene& scene = *scene_;
+  if (f.prim >= scene.primitives.size() || f.x < 0 || f.x >= scene.width || f.y < 0 ||
+      f.y >= scene.height) {
+    return SceneError{"fragments[" + std::to_string(index) + "]",
+                      "names a primitive or pixel outside the scene"};
   }
+  if (f.helper)
+    return std::nullopt; // helper lanes write nothing (MSAA.QUAD.HELPER)
+  const std::uint32_t n = scene.msaa.count();
+  const std::size_t base = (static_cast<std::size_t>(f.y) * static_cast<std::size_t>(scene.width) +
+                            static_cast<std::size_t>(f.x)) *
+                           n;
+  for (std::uint32_t k = 0; k < n; ++k) {
+    if (((f.mask >> k) & 1u) != 0u)
+      samples_[base + k] = scene.primitives[f.prim].color;
+  }
+  return std::nullopt;
+}
+
+ResolvedImage Resolver::finish() const {
+  const std::uint32_t n = scene_->msaa.count();
   ResolvedImage img;
-  img.width = scene.width;
-  img.height = scene.height;
-  img.pixels.reserve(static_cast<std::size_t>(scene.width) *
-                     static_cast<std::size_t>(scene.height));
+  img.width = scene_->width;
+  img.height = scene_->height;
+  img.pixels.reserve(static_cast<std::size_t>(img.width) * static_cast<std::size_t>(img.height));
   std::vector<Rgba8> pixel(n);
-  for (std::size_t i = 0; i < samples.size(); i += n) {
-    std::copy_n(samples.begin() + static_cast<std::ptrdiff_t>(i), n, pixel.begin());
+  for (std::size_t i = 0; i < samples_.size(); i += n) {
+    std::copy_n(samples_.begin() + static_cast<std::ptrdiff_t>(i), n, pixel.begin());
     img.pixels.push_back(resolve_pixel(pixel));
   }
   return img;
+}
+
+std::variant<ResolvedImage, SceneError> resolve(const PreparedScene& scene,
+                                                const std::vector<Fragment>& fragments) {
+  auto started = Resolver::start(scene);
+  if (auto* e = std::get_if<SceneError>(&started))
+    return *e;
+  Resolver& r = std::get<Resolver>(started);
+  for (std::size_t i = 0; i < fragments.size(); ++i) {
+    if (auto e = r.add(fragments[i], i))
+      return *e;
+  }
+  return r.finish();
 }
 
 } // namespace rastrules

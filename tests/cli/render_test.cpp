@@ -2,10 +2,14 @@
 // rastrules render: exact fragment lists on hand-checked scenes, standard input and output,
 // and the picture.
 
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
+
+#include <sys/resource.h>
 
 #include "rastrules/io/picture.hpp"
 #include "support.hpp"
@@ -207,6 +211,34 @@ TEST(CliRender, OutputsThatAreNotRegularFilesAreWrittenInPlace) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.json"));
   EXPECT_EQ(read_file(real), kSplitSquareFragments);
+}
+
+// Issue 17 item 8, found 2026-11-25: --resolve kept every fragment (5.4 GB for a target whose
+// samples take 256 MiB). The samples are now written as the fragments stream. Scaled down: 32
+// triangles each covering a 512x512 target are 8.4 million fragments, over 600 MB as a list;
+// the resolve holds 1 MiB of samples. Peak memory is the child's maximum resident set.
+// rule: MSAA.RESOLVE.AVERAGE, MSAA.LIMITS, SCENE.INPUT.LIMITS
+TEST(CliRender, TheResolveHoldsTheSamplesNotTheFragments) {
+  const TempDir dir;
+  std::string prims;
+  for (int i = 0; i < 32; ++i) {
+    prims += std::string(i == 0 ? "" : ", ") +
+             R"({"type": "triangle", "v": [[0, 0], [1024, 0], [0, 1024]], "color": [)" +
+             std::to_string(i * 8) + ", 0, 0, 255]}";
+  }
+  const auto scene = dir.write(
+      "scene.json", R"({"target": {"width": 512, "height": 512}, "primitives": [)" + prims + "]}");
+  const auto r = run_cli({"render", scene.string(), "--resolve", (dir / "r.png").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  struct rusage usage {};
+  ASSERT_EQ(::getrusage(RUSAGE_CHILDREN, &usage), 0);
+  EXPECT_LT(usage.ru_maxrss, 300L * 1024) << "peak resident set in KiB";
+  // The last triangle's colour everywhere.
+  const auto png = rastrules::test::read_png_rgba(dir / "r.png");
+  ASSERT_TRUE(png.has_value());
+  ASSERT_EQ(png->width, 512u);
+  EXPECT_EQ(png->rgba_at(0, 0), (std::array<std::uint8_t, 4>{248, 0, 0, 255}));
+  EXPECT_EQ(png->rgba_at(511, 511), (std::array<std::uint8_t, 4>{248, 0, 0, 255}));
 }
 
 // Issue 17 item 3, found 2026-11-25: a symlinked output was written in place, so a render that

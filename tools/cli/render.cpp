@@ -92,6 +92,18 @@ std::variant<int, std::string> picture_scale_for(std::int32_t width, std::int32_
          " would be larger than " + std::to_string(io::kMaxPictureSide) + " pixels a side";
 }
 
+// Writes a resolved target as an RGBA PNG; returns the error, if any.
+std::optional<std::string> write_resolved_image(const ResolvedImage& r, std::FILE* out,
+                                                const std::string& path) {
+  std::vector<std::uint8_t> rgba;
+  rgba.reserve(r.pixels.size() * 4);
+  for (const Rgba8& px : r.pixels)
+    rgba.insert(rgba.end(), px.begin(), px.end());
+  if (auto err = io::write_png_rgba(out, r.width, r.height, rgba))
+    return path + ": " + *err;
+  return std::nullopt;
+}
+
 // rule: MSAA.RESOLVE.AVERAGE
 // Resolves the fragments' samples and writes the RGBA PNG; returns the error, if any.
 std::optional<std::string> write_resolved(const PreparedScene& scene,
@@ -100,14 +112,7 @@ std::optional<std::string> write_resolved(const PreparedScene& scene,
   const auto resolved = resolve(scene, fragments);
   if (const auto* err = std::get_if<SceneError>(&resolved))
     return "--resolve: " + err->what();
-  const ResolvedImage& r = std::get<ResolvedImage>(resolved);
-  std::vector<std::uint8_t> rgba;
-  rgba.reserve(r.pixels.size() * 4);
-  for (const Rgba8& px : r.pixels)
-    rgba.insert(rgba.end(), px.begin(), px.end());
-  if (auto err = io::write_png_rgba(out, r.width, r.height, rgba))
-    return path + ": " + *err;
-  return std::nullopt;
+  return write_resolved_image(std::get<ResolvedImage>(resolved), out, path);
 }
 
 // What `render` was asked for.
@@ -379,8 +384,18 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
     if (io::samples_visible(scene, *picture_scale))
       coverage->record_samples(scene.msaa.count());
   }
-  // The resolve needs every fragment (at most --max-fragments of them).
-  std::vector<Fragment> all;
+  // The resolve accumulates the fragments' samples as they stream (the target's samples, at
+  // most 256 MiB by MSAA.LIMITS, whatever the fragment count).
+  std::optional<Resolver> resolver;
+  if (rq.resolve_path) {
+    auto started = Resolver::start(scene);
+    if (const auto* err = std::get_if<SceneError>(&started))
+      return error("--resolve: " + err->what());
+    resolver.emplace(std::move(std::get<Resolver>(started)));
+  }
+  struct ResolveFailed {
+    SceneError error;
+  };
   bool in_order = true;
   std::uint64_t fragment_count = 0;
   // rule: SCENE.INPUT.LIMITS
@@ -395,8 +410,10 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
       in_order = writer->add(f) && in_order;
     if (coverage)
       coverage->add_fragment(f);
-    if (rq.resolve_path)
-      all.push_back(f);
+    if (resolver) {
+      if (auto err = resolver->add(f, fragment_count - 1))
+        throw ResolveFailed{*err};
+    }
   };
   const auto too_many_held = [&](std::size_t p) {
     return error(
@@ -415,6 +432,8 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
   } catch (const TooManyFragments&) {
     return error("render: more than " + std::to_string(rq.max_fragments) +
                  " fragments (limit SCENE.INPUT.LIMITS); raise it with --max-fragments N");
+  } catch (const ResolveFailed& e) {
+    return error("--resolve: " + e.error.what());
   }
   if (!in_order)
     return error("internal error: the kernel emitted fragments out of (prim, y, x, seg) order");
@@ -428,8 +447,8 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
       return error(*rq.png_path + ": " + *err);
   }
   // rule: MSAA.RESOLVE.AVERAGE
-  if (rq.resolve_path) {
-    if (auto err = write_resolved(scene, all, resolve_file.get(), *rq.resolve_path))
+  if (resolver) {
+    if (auto err = write_resolved_image(resolver->finish(), resolve_file.get(), *rq.resolve_path))
       return error(*err);
   }
   // No partial result: when one output cannot be moved into place, the ones already in place

@@ -258,6 +258,26 @@ inline constexpr std::int64_t kMaxResolveSamples = std::int64_t{1} << 26;
 [[nodiscard]] std::variant<ResolvedImage, SceneError>
 resolve(const PreparedScene& scene, const std::vector<Fragment>& fragments);
 
+// resolve() one fragment at a time, for fragments streamed as they are found: memory is the
+// target's samples (4 bytes each, at most kMaxResolveSamples), whatever the fragment count.
+// The scene must outlive the resolver.
+// rule: MSAA.RESOLVE.AVERAGE, MSAA.LIMITS
+class Resolver {
+public:
+  // Returns the resolver, or resolve()'s error for a target beyond kMaxResolveSamples.
+  [[nodiscard]] static std::variant<Resolver, SceneError> start(const PreparedScene& scene);
+  // Writes fragment f, the index-th, to the samples; an error names a primitive or pixel
+  // outside the scene.
+  [[nodiscard]] std::optional<SceneError> add(const Fragment& f, std::size_t index);
+  // Resolves every pixel (resolve_pixel()).
+  [[nodiscard]] ResolvedImage finish() const;
+
+private:
+  explicit Resolver(const PreparedScene& scene);
+  const PreparedScene* scene_;
+  std::vector<Rgba8> samples_;
+};
+
 // Returns the fragments of the scene: prepare() then rasterize() for a scene without pipeline
 // state (the identity case of the pipeline, and its only cost), else the fragments of
 // rastrules::pipe::run_pipeline() with no fragment limit (PIPE.EFFECTS.ON_DEMAND).
