@@ -13,6 +13,7 @@
 #include <system_error>
 #include <variant>
 
+#include "rastrules/io/interrupt.hpp"
 #include "rastrules/io/scene_json.hpp"
 
 namespace rastrules::cli {
@@ -196,6 +197,8 @@ void OutputFile::discard() {
     return;
   std::error_code ec;
   std::filesystem::remove(temp_path_, ec);
+  io::forget_temporary(interrupt_slot_);
+  interrupt_slot_ = -1;
 }
 
 std::optional<std::string> OutputFile::open(const std::string& path) {
@@ -231,9 +234,15 @@ std::optional<std::string> OutputFile::open(const std::string& path) {
   temp_path_ = (target.parent_path() / (".rastrules-" + std::to_string(::getpid()) + "-" +
                                         std::to_string(serial++) + ".tmp"))
                    .string();
+  // rule: SCENE.INPUT.ERRORS
+  // Registered before it exists, so that an interrupt never leaves it behind.
+  interrupt_slot_ = io::register_temporary(temp_path_);
   file_ = std::fopen(temp_path_.c_str(), "wb");
-  if (file_ == nullptr)
+  if (file_ == nullptr) {
+    io::forget_temporary(interrupt_slot_);
+    interrupt_slot_ = -1;
     return path + ": cannot create: " + std::strerror(errno);
+  }
   return std::nullopt;
 }
 
@@ -252,16 +261,20 @@ std::optional<std::string> OutputFile::commit() {
     return std::nullopt;
   }
   std::error_code ec;
+  std::optional<std::string> failure;
   if (write_failed || close_failed) {
     std::filesystem::remove(temp_path_, ec);
-    return path_ + ": write failed";
+    failure = path_ + ": write failed";
+  } else {
+    std::filesystem::rename(temp_path_, target_path_, ec);
+    if (ec) {
+      failure = path_ + ": cannot write: " + ec.message();
+      std::filesystem::remove(temp_path_, ec);
+    }
   }
-  std::filesystem::rename(temp_path_, target_path_, ec);
-  if (ec) {
-    std::filesystem::remove(temp_path_, ec);
-    return path_ + ": cannot write: " + ec.message();
-  }
-  return std::nullopt;
+  io::forget_temporary(interrupt_slot_);
+  interrupt_slot_ = -1;
+  return failure;
 }
 
 std::optional<std::string> write_text(const std::filesystem::path& path, const std::string& text) {

@@ -83,6 +83,7 @@ private:
   std::string path_;
   std::string temp_path_;
   std::string target_path_; // path_, or the real file a link at path_ names
+  int interrupt_slot_ = -1; // the temporary's slot in io::register_temporary
   std::FILE* file_ = nullptr;
   bool is_stdout_ = false;
   bool is_in_place_ = false; // not a regular file: written directly, never renamed

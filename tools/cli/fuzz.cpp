@@ -12,6 +12,7 @@
 #include "cli.hpp"
 #include "fuzz_options.hpp"
 #include "rastrules/fuzzer/fuzzer.hpp"
+#include "rastrules/io/interrupt.hpp"
 
 namespace rastrules::cli {
 
@@ -97,6 +98,15 @@ std::unique_ptr<driver::Driver> open_driver_or_report(const std::string& name) {
 }
 
 int finish_campaign(const FuzzOptions& o, const driver::Driver& d, const fuzzer::Summary& s) {
+  // rule: SCENE.INPUT.ERRORS, FUZZ.REPORT
+  if (s.interrupted || io::interrupted()) {
+    fuzzer::print_summary(stdout, o.settings, d, s);
+    std::printf("result      interrupted after %llu case(s)\n",
+                static_cast<unsigned long long>(s.cases));
+    std::fflush(stdout);
+    error("interrupted");
+    return io::kExitInterrupted;
+  }
   if (!s.error.empty() && s.cases == 0)
     return error(s.error);
   fuzzer::print_summary(stdout, o.settings, d, s);

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "cli.hpp"
+#include "rastrules/io/interrupt.hpp"
 
 namespace {
 
@@ -38,6 +39,12 @@ int main(int argc, char** argv) {
       print_usage(stdout);
       return kExitOk;
     }
+    // rule: SCENE.INPUT.ERRORS
+    // An interrupt removes the temporaries and ends the driver's process group; a campaign
+    // then stops after its case and writes what it has, anything else exits at once.
+    const bool campaign = command == "fuzz" || command == "check" || command == "probe";
+    rastrules::io::handle_interrupts(campaign ? rastrules::io::OnInterrupt::kRecord
+                                              : rastrules::io::OnInterrupt::kExit);
     for (const Command& c : kCommands) {
       if (command == c.name)
         return c.run(args);

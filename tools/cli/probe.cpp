@@ -8,6 +8,7 @@
 #include "cli.hpp"
 #include "fuzz_options.hpp"
 #include "rastrules/fuzzer/fuzzer.hpp"
+#include "rastrules/io/interrupt.hpp"
 
 namespace rastrules::cli {
 
@@ -28,6 +29,10 @@ int run_probe(const Args& args) {
   if (!d)
     return kExitBadInput;
   const fuzzer::ProbeReport r = fuzzer::probe(*d);
+  if (io::interrupted()) { // rule: SCENE.INPUT.ERRORS
+    error("interrupted");
+    return io::kExitInterrupted;
+  }
   if (!r.error.empty())
     return error("probe: " + r.error);
   const auto& info = d->info();

@@ -27,6 +27,7 @@
 #include <nlohmann/json.hpp>
 
 #include "drivers.hpp"
+#include "rastrules/io/interrupt.hpp"
 #include "rastrules/io/scene_json.hpp"
 
 extern char** environ;
@@ -102,6 +103,10 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
   }
   for (int fd : {in_pipe[1], out_pipe[0], err_pipe[0]})
     ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
+  io::set_driver_group(pid); // an interrupt of rastrules ends the driver's group too
+  struct ForgetGroup {
+    ~ForgetGroup() { io::set_driver_group(0); }
+  } forget_group;
 
   const auto deadline =
       std::chrono::steady_clock::now() + std::chrono::milliseconds(options.timeout_ms);
@@ -181,6 +186,7 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
       siginfo_t info{};
       const int w = ::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT);
       if (w == 0 && info.si_pid == pid) {
+        io::set_driver_group(0);
         ::kill(-pid, SIGKILL); // the group's other members (a process that called setsid escapes)
         while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
         }
@@ -202,6 +208,7 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
       return r;
     }
   }
+  io::set_driver_group(0);
   ::kill(-pid, SIGKILL);
   ::kill(pid, SIGKILL);
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "rastrules/fuzzer/fuzzer.hpp"
+#include "rastrules/io/interrupt.hpp"
 #include "rastrules/io/scene_json.hpp"
 
 namespace rastrules::fuzzer {
@@ -221,10 +222,17 @@ Summary run_fuzz(driver::Driver& driver, const Settings& settings) {
     return s;
   Campaign campaign(driver, settings);
   for (std::uint64_t i = 0; i < settings.cases; ++i) {
+    // rule: FUZZ.REPORT
+    // An interrupt stops the campaign between cases; the report holds what it has.
+    if (io::interrupted()) {
+      s.interrupted = true;
+      break;
+    }
     auto c = generate_case(settings.seed, i, settings.profile, driver);
     if (!c) {
       ++s.skipped;
     } else if (!campaign.run_case(i, c->family, c->scene, s)) {
+      s.interrupted = io::interrupted(); // the driver was killed by the interrupt
       break;
     }
     progress(settings, i + 1, s);

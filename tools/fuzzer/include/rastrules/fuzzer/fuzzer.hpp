@@ -152,7 +152,8 @@ struct Summary {
   double seconds = 0;
   std::vector<Finding> findings;
   std::vector<std::pair<FillConvention, std::uint64_t>> legal_conventions; // legal mode: chosen
-  std::string error; // non-empty: the campaign stopped on a driver error
+  std::string error;        // non-empty: the campaign stopped on a driver error
+  bool interrupted = false; // SIGINT or SIGTERM: the campaign stopped after its case
   std::string report_path;
 };
 
