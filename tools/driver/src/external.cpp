@@ -54,6 +54,31 @@ void close_fd(int& fd) {
   fd = -1;
 }
 
+// Waits until the deadline for process pid (the leader of its own group, both outputs closed)
+// to exit. The exit is seen without reaping the process (WNOWAIT), so that its group can still
+// be named safely: what it left running in the background is killed before the process is
+// reaped. Returns its wait status, or nullopt when the deadline came first (it still runs).
+// rule: DRIVER.EXTERNAL.PROTOCOL
+std::optional<int> wait_and_end_group(pid_t pid, std::chrono::steady_clock::time_point deadline) {
+  while (true) {
+    siginfo_t info{};
+    const int w = ::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT);
+    if (w == 0 && info.si_pid == pid) {
+      io::set_driver_group(0);
+      ::kill(-pid, SIGKILL); // the group's other members (a process that called setsid escapes)
+      int status = 0;
+      while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+      return status;
+    }
+    if (w < 0 && errno != EINTR)
+      return 0; // no such child: nothing left to wait for
+    if (std::chrono::steady_clock::now() >= deadline)
+      return std::nullopt;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
 // Runs argv with `input` on its standard input, collecting standard output (at most
 // max_output bytes) and the first bytes of standard error, killing it (and its process group)
 // after timeout_ms.
@@ -179,34 +204,13 @@ ProcessResult run_process(const std::vector<std::string>& argv, const std::strin
   close_fd(err_pipe[0]);
   int status = 0;
   if (!kill_it) {
-    // Both outputs are closed: wait for the exit, still under the deadline. The exit is seen
-    // without reaping the process (WNOWAIT), so that its group can still be named safely: what
-    // it left running in the background is ended before the process is reaped.
-    while (true) {
-      siginfo_t info{};
-      const int w = ::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT);
-      if (w == 0 && info.si_pid == pid) {
-        io::set_driver_group(0);
-        ::kill(-pid, SIGKILL); // the group's other members (a process that called setsid escapes)
-        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-        }
-        break;
-      }
-      if (w < 0 && errno != EINTR)
-        break;
-      if (std::chrono::steady_clock::now() >= deadline) {
-        r.timed_out = true;
-        kill_it = true;
-        break;
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-    if (!kill_it) {
-      r.exited = WIFEXITED(status);
-      r.exit_status = r.exited ? WEXITSTATUS(status) : 0;
-      r.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+    if (const auto exited = wait_and_end_group(pid, deadline)) {
+      r.exited = WIFEXITED(*exited);
+      r.exit_status = r.exited ? WEXITSTATUS(*exited) : 0;
+      r.signal = WIFSIGNALED(*exited) ? WTERMSIG(*exited) : 0;
       return r;
     }
+    r.timed_out = true;
   }
   io::set_driver_group(0);
   ::kill(-pid, SIGKILL);
