@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -155,6 +157,61 @@ TEST(Check, PipelineValuesWithinTheOraclesBounds) {
   EXPECT_TRUE(mentions(check_pipeline(s, r), "attribute u"));
   r.data[1].bary->area += 1;
   EXPECT_TRUE(mentions(check_pipeline(s, r), "PIPE.BARY.SUM"));
+}
+
+// The replay from the scene alone trusts nothing the kernel reports: each kind of tampering
+// that the value invariants cannot see is found and named by it.
+// rule: PIPE.DEPTH.TEST, PIPE.DEPTH.WRITE, PIPE.CLIP.UNCLIPPED, SCENE.OUTPUT.PIPELINE
+TEST(Check, ThePipelineReplayFindsWhatTheValuesCannotSee) {
+  rastrules::Scene s;
+  s.width = s.height = 16;
+  s.depth = pipe::DepthState{};
+  s.depth->func = pipe::CompareFunc::kLess;
+  for (const float z : {0.5f, 0.25f}) { // the second triangle is nearer: it passes everywhere
+    rastrules::Primitive p;
+    p.type = PrimitiveType::kTriangle;
+    p.pos = {{-0.9f, -0.9f, z, 1.0f}, {0.9f, -0.9f, z, 1.0f}, {-0.9f, 0.9f, z, 1.0f}};
+    s.primitives.push_back(p);
+  }
+  auto out = pipe::run_pipeline(s);
+  ASSERT_TRUE(std::holds_alternative<pipe::PipeResult>(out));
+  const pipe::PipeResult good = std::get<pipe::PipeResult>(out);
+  ASSERT_TRUE(check_pipeline(s, good).agree()) << check_pipeline(s, good).mismatches.front();
+  ASSERT_GT(good.fragments.size(), 2u);
+  const auto tampered = [&](auto&& change) {
+    pipe::PipeResult r = good;
+    change(r);
+    return check_pipeline(s, r);
+  };
+  // The output order (prim, part, y, x, ...).
+  EXPECT_TRUE(mentions(tampered([](pipe::PipeResult& r) {
+                         std::swap(r.fragments[0], r.fragments[1]);
+                         std::swap(r.data[0], r.data[1]);
+                       }),
+                       "out of order"));
+  // The final depth buffer against the replayed depth test.
+  EXPECT_TRUE(mentions(tampered([](pipe::PipeResult& r) { r.depth_buffer[0].unorm ^= 1u; }),
+                       "depth buffer sample 0"));
+  // The passed mask against the replayed depth test.
+  EXPECT_TRUE(mentions(tampered([](pipe::PipeResult& r) { r.data.back().passed = 0; }), "killed"));
+  // The drawn primitive against the oracle's transform and snapping.
+  EXPECT_TRUE(mentions(tampered([](pipe::PipeResult& r) {
+                         r.drawn[0].z[0] = std::nextafter(r.drawn[0].z[0], 1.0f);
+                       }),
+                       "drawn primitive differs"));
+  // A fragment outside the target.
+  EXPECT_TRUE(
+      mentions(tampered([](pipe::PipeResult& r) { r.fragments.back().x = 16; }), "outside"));
+  // Coverage against the window-space render: a fragment missing (without depth, so that no
+  // depth buffer tells first).
+  s.depth.reset();
+  auto plain = pipe::run_pipeline(s);
+  ASSERT_TRUE(std::holds_alternative<pipe::PipeResult>(plain));
+  pipe::PipeResult r = std::get<pipe::PipeResult>(plain);
+  ASSERT_TRUE(check_pipeline(s, r).agree());
+  r.fragments.pop_back();
+  r.data.pop_back();
+  EXPECT_TRUE(mentions(check_pipeline(s, r), "coverage of primitive 1"));
 }
 
 } // namespace
