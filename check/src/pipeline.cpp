@@ -469,42 +469,368 @@ bool some_value_fails(const std::string& func, const op::Stored& lo, const op::S
   return false;
 }
 
+// The scene-wide state of a replay: the oracle's viewport, scissor and pattern, the depth
+// format and test, each primitive's geometry and the replayed depth buffer.
+struct Replay {
+  const rastrules::Scene& s;
+  const kp::PipeResult& r;
+  PipelineStats& st;
+  op::Viewport vp{};
+  op::Rect sc{};
+  std::uint32_t n = 1;
+  std::vector<om::Offset> pattern{};
+  bool has_depth = false;
+  std::string fmt{}, func{};
+  std::int64_t W = 0, H = 0;
+  std::vector<op::Stored> buffer{};
+  std::vector<PrimGeometry> geo{};
+};
+
+// One fragment being replayed: its data, its name in messages, and the oracle's part or
+// segment that drew it (set by locate).
+struct FragmentReplay {
+  const Fragment& f;
+  const kp::FragmentData* d;
+  std::string at;
+  const Part* part = nullptr;
+  const Seg* seg = nullptr; // points, lines, strip segments (PIPE.BARY.LINE)
+  std::size_t seg_index = 0;
+  bool point = false, strip = false;
+  bool killed = false; // set by replay_depth
+
+  // Finds the oracle's part (a triangle) or segment (a point, line or strip segment) that drew
+  // the fragment, as its part and seg say; returns the first problem, or "".
+  std::string locate(const Replay& R);
+  // The drawn primitive the kernel reports equals the oracle's part or segment, bit for bit.
+  [[nodiscard]] std::string check_drawn(const Replay& R) const;
+  // The depth test replayed sample by sample into the oracle's depth buffer: each stored
+  // depth within its bound, a killed fragment one whose every allowed depth fails, the passed
+  // mask.
+  std::string replay_depth(Replay& R);
+  // Barycentrics and attributes at each evaluation point, within the spec's bounds of the
+  // exact values of the oracle's part or segment.
+  [[nodiscard]] std::string check_values(Replay& R) const;
+};
+
+std::string FragmentReplay::locate(const Replay& R) {
+  const rastrules::Scene& s = R.s;
+  const std::vector<PrimGeometry>& geo = R.geo;
+  if (f.prim >= s.primitives.size())
+    return at + ": no such primitive";
+  const rastrules::Primitive& pp = s.primitives[f.prim];
+  const PrimGeometry& g = geo[f.prim];
+  if (g.transform_error)
+    return at + ": the scene should have been rejected (transform)";
+  const bool triangle = pp.type == PrimitiveType::kTriangle;
+  strip = pp.type == PrimitiveType::kLineStrip;
+  point = pp.type == PrimitiveType::kPoint;
+  if (!triangle) {
+    if (d && d->part.has_value() != g.clipped)
+      return at + ": part " + (d->part ? "present" : "absent") + " but the oracle's clipper " +
+             (g.clipped ? "clips" : "does not clip");
+    if (strip && f.seg.has_value() == g.clipped)
+      return at + ": seg " + (f.seg ? "present" : "absent") + " on a strip the oracle " +
+             (g.clipped ? "clips into lines" : "draws whole");
+    seg_index = d && d->part ? *d->part : (f.seg ? *f.seg : 0);
+    if (seg_index >= g.segs.size() || !g.segs[seg_index])
+      return at + ": segment " + std::to_string(seg_index) + " the oracle's clipper discards";
+    seg = &*g.segs[seg_index];
+  }
+  if (triangle) {
+    const std::size_t k = d && d->part ? *d->part : 0;
+    if (d && d->part.has_value() != g.clipped)
+      return at + ": part " + (d->part ? "present" : "absent") + " but the oracle's clipper " +
+             (g.clipped ? "clips" : "does not clip");
+    if (k >= g.parts.size())
+      return at + ": part " + std::to_string(k) + " of " + std::to_string(g.parts.size());
+    part = &g.parts[k];
+  }
+  return "";
+}
+
+std::string FragmentReplay::check_drawn(const Replay& R) const {
+  const rastrules::Scene& s = R.s;
+  const kp::PipeResult& r = R.r;
+  const rastrules::Primitive& pp = R.s.primitives[f.prim];
+  const PrimGeometry& g = R.geo[f.prim];
+  if (d && !r.drawn.empty()) {
+    if (d->drawn >= r.drawn.size())
+      return at + ": no drawn primitive " + std::to_string(d->drawn);
+    const kp::DrawnPrimitive& dp = r.drawn[d->drawn];
+    const PrimitiveType drawn_type = strip ? PrimitiveType::kLine : pp.type;
+    const std::int64_t drawn_seg = strip && !g.clipped ? static_cast<std::int64_t>(seg_index) : -1;
+    if (dp.prim != f.prim || dp.part != d->part || dp.type != drawn_type ||
+        (dp.seg ? std::int64_t{*dp.seg} : -1) != drawn_seg)
+      return at + ": its drawn primitive names another primitive, part, segment or type";
+    if (seg) {
+      const std::size_t ends = pp.type == PrimitiveType::kPoint ? 1 : 2;
+      bool same = dp.snapped.size() == ends && dp.attr.size() == s.attributes.size() &&
+                  dp.flat.size() == seg->flat.size();
+      for (std::size_t j = 0; same && j < ends; ++j) {
+        same = dp.snapped[j].x.raw() == seg->raw[j][0] && dp.snapped[j].y.raw() == seg->raw[j][1] &&
+               same_bits(dp.z[j], seg->wv[j].z) && same_bits(dp.w[j], seg->wv[j].w);
+        for (std::size_t k = 0; same && k < s.attributes.size(); ++k)
+          same = same_bits(dp.attr[k][j], seg->attr[j].at(k));
+      }
+      for (std::size_t k = 0; same && k < seg->flat.size(); ++k)
+        same = same_bits(dp.flat[k], seg->flat[k]);
+      if (!same)
+        return at + ": drawn " + std::string(to_string(drawn_type)) + " (segment " +
+               std::to_string(seg_index) + ") differs from the oracle's: oracle ends " +
+               raw_text(seg->raw[0]) + " " + raw_text(seg->raw[1]) + " z " +
+               float_text(std::array<float, 2>{seg->wv[0].z, seg->wv[1].z}) + " w " +
+               float_text(std::array<float, 2>{seg->wv[0].w, seg->wv[1].w}) + ", kernel z " +
+               float_text(dp.z) + " w " + float_text(dp.w);
+    }
+    if (part) {
+      bool same = dp.snapped.size() == 3 && dp.attr.size() == s.attributes.size() &&
+                  dp.flat.size() == g.flat.size();
+      for (std::size_t j = 0; same && j < 3; ++j) {
+        same = dp.snapped[j].x.raw() == part->raw[j][0] &&
+               dp.snapped[j].y.raw() == part->raw[j][1] && same_bits(dp.z[j], part->wv[j].z) &&
+               same_bits(dp.w[j], part->wv[j].w);
+        for (std::size_t k = 0; same && k < s.attributes.size(); ++k)
+          same = same_bits(dp.attr[k][j], part->attr[j].at(k));
+      }
+      for (std::size_t k = 0; same && k < g.flat.size(); ++k)
+        same = same_bits(dp.flat[k], g.flat[k]);
+      if (!same) {
+        std::string got;
+        for (const Vec2& v : dp.snapped)
+          got += " (" + std::to_string(v.x.raw()) + ", " + std::to_string(v.y.raw()) + ")";
+        return at + ": drawn primitive differs from the oracle's: kernel snapped" + got + " z " +
+               float_text(dp.z) + " w " + float_text(dp.w) + "; oracle " + raw_text(part->raw) +
+               " z " +
+               float_text(std::array<float, 3>{part->wv[0].z, part->wv[1].z, part->wv[2].z}) +
+               " w " +
+               float_text(std::array<float, 3>{part->wv[0].w, part->wv[1].w, part->wv[2].w});
+      }
+    }
+  }
+  return "";
+}
+
+std::string FragmentReplay::replay_depth(Replay& R) {
+  const rastrules::Scene& s = R.s;
+  PipelineStats& st = R.st;
+  const op::Viewport& vp = R.vp;
+  const std::uint32_t n = R.n;
+  const std::vector<om::Offset>& pattern = R.pattern;
+  const bool has_depth = R.has_depth;
+  const std::string& fmt = R.fmt;
+  const std::string& func = R.func;
+  const std::int64_t W = R.W;
+  std::vector<op::Stored>& buffer = R.buffer;
+  killed = has_depth && d->passed == 0 && !f.helper;
+  std::uint32_t passed = 0;
+  if (has_depth && !f.helper) {
+    if (!killed && d->depth.size() != static_cast<std::size_t>(std::popcount(f.mask)))
+      return at + ": " + std::to_string(d->depth.size()) + " depth values";
+    if (killed && (!d->depth.empty() || !d->attr.empty() || d->bary))
+      return at + ": killed but carries depth, attributes or barycentrics";
+    std::size_t j = 0;
+    for (std::uint32_t smp = 0; smp < n; ++smp) {
+      if ((f.mask & (1u << smp)) == 0)
+        continue;
+      const std::size_t idx = static_cast<std::size_t>((f.y * W + f.x) * n + smp);
+      const Raw2 pos = offset_raw(f.x, f.y, pattern[smp]);
+      // The exact barycentrics and vertex depths of the sample (PIPE.BARY.EXACT, PIPE.BARY.LINE).
+      std::optional<std::pair<op::Bary, std::array<float, 3>>> exact;
+      if (part)
+        exact = {op::barycentrics(part->raw, pos), {part->wv[0].z, part->wv[1].z, part->wv[2].z}};
+      if (seg)
+        exact = {line_bary(seg->raw, pos, point), {seg->wv[0].z, seg->wv[1].z, 0.0f}};
+      if (exact && exact->first.area == 0)
+        exact.reset(); // a zero-length line: vertex 0's depth
+      if (killed) {
+        if (exact) {
+          const op::DepthCheck c = op::check_depth_stored(exact->first, exact->second, vp.min_depth,
+                                                          vp.max_depth, fmt, op::Stored{});
+          if (!some_value_fails(func, c.lo, c.hi, buffer[idx], fmt))
+            return at + ": killed, but sample " + std::to_string(smp) +
+                   " passes for every allowed depth: " + c.describe(fmt);
+        }
+        continue;
+      }
+      const op::Stored now = to_oracle(d->depth[j++]);
+      if (exact) {
+        op::DepthCheck c = op::check_depth_stored(exact->first, exact->second, vp.min_depth,
+                                                  vp.max_depth, fmt, now);
+        ++st.depth_checks;
+        if (!c.ok)
+          return at + ": depth of sample " + std::to_string(smp) + ": " + c.describe(fmt);
+      }
+      if (op::depth_test(func, now, buffer[idx], fmt)) {
+        passed |= 1u << smp;
+        if (s.depth->write)
+          buffer[idx] = now;
+      }
+    }
+    if (killed)
+      ++st.killed;
+    if (!killed && passed != d->passed)
+      return at + ": passed " + std::to_string(d->passed) + ", the replayed test gives " +
+             std::to_string(passed);
+  } else if (d && d->passed != f.mask) {
+    return at + ": passed " + std::to_string(d->passed) + " without a depth test";
+  }
+  return "";
+}
+
+std::string FragmentReplay::check_values(Replay& R) const {
+  const rastrules::Scene& s = R.s;
+  PipelineStats& st = R.st;
+  const std::uint32_t n = R.n;
+  const std::vector<om::Offset>& pattern = R.pattern;
+  const bool has_depth = R.has_depth;
+  const PrimGeometry& g = R.geo[f.prim];
+  const std::vector<float>& flat = seg ? seg->flat : g.flat;
+  // The exact barycentrics at an evaluation point, and the vertex values they weigh.
+  const auto bary_at = [&](const Raw2& q) {
+    return part ? op::barycentrics(part->raw, q) : line_bary(seg->raw, q, point);
+  };
+  const auto vertex_values = [&](std::size_t k) {
+    return part
+               ? std::array<float, 3>{part->attr[0].at(k), part->attr[1].at(k), part->attr[2].at(k)}
+               : std::array<float, 3>{seg->attr[0].at(k), seg->attr[1].at(k), 0.0f};
+  };
+  const std::array<float, 3> vertex_w =
+      part ? std::array<float, 3>{part->wv[0].w, part->wv[1].w, part->wv[2].w}
+           : std::array<float, 3>{seg->wv[0].w, seg->wv[1].w, 1.0f};
+  const std::string vertices =
+      part ? raw_text(part->raw) : raw_text(seg->raw[0]) + " " + raw_text(seg->raw[1]);
+  // Barycentrics and attributes.
+  const auto location_raw = [&](kp::Location l) -> std::optional<Raw2> {
+    switch (l) {
+    case kp::Location::kCenter:
+      return centre_raw(f.x, f.y);
+    case kp::Location::kSample:
+      if (!f.sample)
+        return std::nullopt;
+      return offset_raw(f.x, f.y, pattern.at(*f.sample));
+    case kp::Location::kCentroid: {
+      // The fragment's own centroid: coverage_problem compares it with rastrules::render's,
+      // whose centroids the MSAA properties check against the oracle (with partial masks,
+      // helper lanes and sample shading, where the pixel's coverage before the mask is not
+      // in the fragment). Here, where the fragment determines it, against the oracle too.
+      const std::string rule = s.msaa.centroid_rule == CentroidRule::kD3D11 ? "d3d11" : "d3d10";
+      const bool determined = !f.helper && s.msaa.shading == ShadingRate::kPixel &&
+                              (s.msaa.sample_mask & full_mask(n)) == full_mask(n);
+      if (!f.centroid)
+        return std::nullopt;
+      const om::Offset o{f.centroid->offset.x, f.centroid->offset.y};
+      if (determined && !(om::centroid(rule, f.mask, 0xFFFFFFFFu, pattern).offset == o))
+        return std::nullopt;
+      return offset_raw(f.x, f.y, o);
+    }
+    }
+    return std::nullopt;
+  };
+  const bool want_bary = has_depth || !s.attributes.empty();
+  if (want_bary != d->bary.has_value())
+    return at + ": barycentrics " + (d->bary ? "present" : "absent");
+  if (d->bary) {
+    const auto loc =
+        location_raw(s.attributes.empty() ? kp::Location::kCenter : s.attributes[0].location);
+    if (loc && to_oracle(*d->bary) != bary_at(*loc))
+      return at + ": barycentrics differ from the exact ones at " + raw_text(*loc) + " of " +
+             vertices;
+  }
+  if (d->attr.size() != s.attributes.size())
+    return at + ": " + std::to_string(d->attr.size()) + " attributes";
+  for (std::size_t k = 0; k < s.attributes.size(); ++k) {
+    const kp::AttributeDecl& a = s.attributes[k];
+    const float got = d->attr[k];
+    if (a.interpolation == kp::Interpolation::kFlat) {
+      if (!same_bits(got, flat[k]))
+        return at + ": flat attribute " + std::to_string(k) + " " + float_text(got) + ", want " +
+               float_text(flat[k]);
+      continue;
+    }
+    const auto loc = location_raw(a.location);
+    if (!loc)
+      return at + ": attribute " + std::to_string(k) +
+             " at a sample or centroid the fragment lacks, or a centroid " +
+             "other than the oracle's";
+    const op::Bary b = bary_at(*loc);
+    const std::array<float, 3> av = vertex_values(k);
+    if (b.area == 0) {
+      // A zero-length line (PIPE.BARY.LINE): vertex 0's value, or the flat one in perspective.
+      const float want = a.interpolation == kp::Interpolation::kPerspective ? flat[k] : av[0];
+      if (!same_bits(got, want))
+        return at + ": attribute " + std::to_string(k) + " of a zero-length line " +
+               float_text(got) + ", want " + float_text(want);
+      continue;
+    }
+    const op::InterpCheck c = a.interpolation == kp::Interpolation::kPerspective
+                                  ? op::check_perspective(b, av, vertex_w, flat[k], got)
+                                  : op::check_linear(b, av, got);
+    ++st.attr_checks;
+    st.horizon = st.horizon || c.horizon;
+    st.saturated = st.saturated || c.saturated;
+    if (!c.ok)
+      return at + ": attribute " + std::to_string(k) + " (" +
+             std::string(to_string(a.interpolation)) + ") at " + raw_text(*loc) + ", vertices " +
+             vertices + ", values " + float_text(av) + ", w " + float_text(vertex_w) + ": " +
+             c.describe();
+  }
+  return "";
+}
+
+// The final depth buffer equals the replayed one.
+std::string check_depth_buffer(const Replay& R) {
+  const kp::PipeResult& r = R.r;
+  const bool has_depth = R.has_depth;
+  const std::vector<op::Stored>& buffer = R.buffer;
+  if (has_depth) {
+    if (r.depth_buffer.size() != buffer.size())
+      return "depth buffer of " + std::to_string(r.depth_buffer.size()) + " samples";
+    for (std::size_t i = 0; i < buffer.size(); ++i) {
+      if (!(to_oracle(r.depth_buffer[i]) == buffer[i]))
+        return "depth buffer sample " + std::to_string(i) + ": kernel (" +
+               std::to_string(r.depth_buffer[i].unorm) + ", " + float_text(r.depth_buffer[i].f) +
+               "), replay (" + std::to_string(buffer[i].unorm) + ", " + float_text(buffer[i].f) +
+               ")";
+    }
+  } else if (!r.depth_buffer.empty()) {
+    return "a depth buffer without depth";
+  }
+  return "";
+}
+
 // Returns "" when r is consistent with the oracle, else a description of the first problem.
 // Checks every primitive: triangles against their parts, points, lines and each segment of a
 // strip against their own segment (PIPE.BARY.LINE).
 std::string replay(const rastrules::Scene& s, const kp::PipeResult& r, PipelineStats& st) {
-  std::ostringstream err;
-  const op::Viewport vp = viewport_of(s);
-  const op::Rect sc = op::viewport_scissor(vp);
-  const std::uint32_t n = s.msaa.count();
-  const std::vector<om::Offset> pattern = pattern_of(s);
-  const bool has_depth = s.depth.has_value();
-  const bool need_data = has_depth || !s.attributes.empty() ||
+  Replay R{s, r, st};
+  R.vp = viewport_of(s);
+  R.sc = op::viewport_scissor(R.vp);
+  R.n = s.msaa.count();
+  R.pattern = pattern_of(s);
+  R.has_depth = s.depth.has_value();
+  const bool need_data = R.has_depth || !s.attributes.empty() ||
                          std::any_of(s.primitives.begin(), s.primitives.end(),
                                      [](const rastrules::Primitive& p) { return !p.pos.empty(); });
   if (need_data ? r.data.size() != r.fragments.size() : !r.data.empty()) {
-    err << "data has " << r.data.size() << " entries for " << r.fragments.size() << " fragments";
-    return err.str();
+    return "data has " + std::to_string(r.data.size()) + " entries for " +
+           std::to_string(r.fragments.size()) + " fragments";
   }
-  const std::string fmt = has_depth ? format_name(s.depth->format) : "";
-  const std::string func = has_depth ? compare_name(s.depth->func) : "";
-  const std::int64_t W = s.width, H = s.height;
-  std::vector<op::Stored> buffer;
-  if (has_depth) {
-    const op::Stored clear = op::store_exact(static_cast<double>(s.depth->clear), 0.0f, 1.0f, fmt);
-    buffer.assign(static_cast<std::size_t>(W * H * n), clear);
+  R.fmt = R.has_depth ? format_name(s.depth->format) : "";
+  R.func = R.has_depth ? compare_name(s.depth->func) : "";
+  R.W = s.width;
+  R.H = s.height;
+  if (R.has_depth) {
+    const op::Stored clear =
+        op::store_exact(static_cast<double>(s.depth->clear), 0.0f, 1.0f, R.fmt);
+    R.buffer.assign(static_cast<std::size_t>(R.W * R.H * R.n), clear);
   }
-  std::vector<PrimGeometry> geo;
   for (std::size_t i = 0; i < s.primitives.size(); ++i) {
-    geo.push_back(geometry(s, i));
-    if (!geo.back().problem.empty())
-      return geo.back().problem;
-    if (geo.back().clipped)
+    R.geo.push_back(geometry(s, i));
+    if (!R.geo.back().problem.empty())
+      return R.geo.back().problem;
+    if (R.geo.back().clipped)
       ++st.clipped_prims;
   }
-  const bool first_attr_centroid =
-      !s.attributes.empty() && s.attributes[0].location == kp::Location::kCentroid;
-  (void)first_attr_centroid;
   std::tuple<std::uint32_t, std::int64_t, std::int32_t, std::int32_t, std::int64_t, std::int64_t>
       last{0, -1, -1, -1, -1, -1};
   for (std::size_t i = 0; i < r.fragments.size(); ++i) {
@@ -527,261 +853,23 @@ std::string replay(const rastrules::Scene& s, const kp::PipeResult& r, PipelineS
     if (i > 0 && !(last < key))
       return at + ": out of order";
     last = key;
-    if (f.x < 0 || f.y < 0 || f.x >= W || f.y >= H)
+    if (f.x < 0 || f.y < 0 || f.x >= R.W || f.y >= R.H)
       return at + ": outside the target";
-    if (f.x < sc.x0 || f.x >= sc.x1 || f.y < sc.y0 || f.y >= sc.y1)
+    if (f.x < R.sc.x0 || f.x >= R.sc.x1 || f.y < R.sc.y0 || f.y >= R.sc.y1)
       return at + ": outside the viewport scissor";
-    if (f.prim >= s.primitives.size())
-      return at + ": no such primitive";
-    const rastrules::Primitive& pp = s.primitives[f.prim];
-    const PrimGeometry& g = geo[f.prim];
-    if (g.transform_error)
-      return at + ": the scene should have been rejected (transform)";
-    const bool triangle = pp.type == PrimitiveType::kTriangle;
-    const bool strip = pp.type == PrimitiveType::kLineStrip;
-    const bool point = pp.type == PrimitiveType::kPoint;
-    const Part* part = nullptr;
-    const Seg* seg = nullptr; // points, lines, strip segments (PIPE.BARY.LINE)
-    std::size_t seg_index = 0;
-    if (!triangle) {
-      if (d && d->part.has_value() != g.clipped)
-        return at + ": part " + (d->part ? "present" : "absent") + " but the oracle's clipper " +
-               (g.clipped ? "clips" : "does not clip");
-      if (strip && f.seg.has_value() == g.clipped)
-        return at + ": seg " + (f.seg ? "present" : "absent") + " on a strip the oracle " +
-               (g.clipped ? "clips into lines" : "draws whole");
-      seg_index = d && d->part ? *d->part : (f.seg ? *f.seg : 0);
-      if (seg_index >= g.segs.size() || !g.segs[seg_index])
-        return at + ": segment " + std::to_string(seg_index) + " the oracle's clipper discards";
-      seg = &*g.segs[seg_index];
-    }
-    if (triangle) {
-      const std::size_t k = d && d->part ? *d->part : 0;
-      if (d && d->part.has_value() != g.clipped)
-        return at + ": part " + (d->part ? "present" : "absent") + " but the oracle's clipper " +
-               (g.clipped ? "clips" : "does not clip");
-      if (k >= g.parts.size())
-        return at + ": part " + std::to_string(k) + " of " + std::to_string(g.parts.size());
-      part = &g.parts[k];
-    }
-    // The drawn primitive the kernel reports equals the oracle's part, bit for bit.
-    if (d && !r.drawn.empty()) {
-      if (d->drawn >= r.drawn.size())
-        return at + ": no drawn primitive " + std::to_string(d->drawn);
-      const kp::DrawnPrimitive& dp = r.drawn[d->drawn];
-      const PrimitiveType drawn_type = strip ? PrimitiveType::kLine : pp.type;
-      const std::int64_t drawn_seg =
-          strip && !g.clipped ? static_cast<std::int64_t>(seg_index) : -1;
-      if (dp.prim != f.prim || dp.part != d->part || dp.type != drawn_type ||
-          (dp.seg ? std::int64_t{*dp.seg} : -1) != drawn_seg)
-        return at + ": its drawn primitive names another primitive, part, segment or type";
-      if (seg) {
-        const std::size_t ends = pp.type == PrimitiveType::kPoint ? 1 : 2;
-        bool same = dp.snapped.size() == ends && dp.attr.size() == s.attributes.size() &&
-                    dp.flat.size() == seg->flat.size();
-        for (std::size_t j = 0; same && j < ends; ++j) {
-          same = dp.snapped[j].x.raw() == seg->raw[j][0] &&
-                 dp.snapped[j].y.raw() == seg->raw[j][1] && same_bits(dp.z[j], seg->wv[j].z) &&
-                 same_bits(dp.w[j], seg->wv[j].w);
-          for (std::size_t k = 0; same && k < s.attributes.size(); ++k)
-            same = same_bits(dp.attr[k][j], seg->attr[j].at(k));
-        }
-        for (std::size_t k = 0; same && k < seg->flat.size(); ++k)
-          same = same_bits(dp.flat[k], seg->flat[k]);
-        if (!same)
-          return at + ": drawn " + std::string(to_string(drawn_type)) + " (segment " +
-                 std::to_string(seg_index) + ") differs from the oracle's: oracle ends " +
-                 raw_text(seg->raw[0]) + " " + raw_text(seg->raw[1]) + " z " +
-                 float_text(std::array<float, 2>{seg->wv[0].z, seg->wv[1].z}) + " w " +
-                 float_text(std::array<float, 2>{seg->wv[0].w, seg->wv[1].w}) + ", kernel z " +
-                 float_text(dp.z) + " w " + float_text(dp.w);
-      }
-      if (part) {
-        bool same = dp.snapped.size() == 3 && dp.attr.size() == s.attributes.size() &&
-                    dp.flat.size() == g.flat.size();
-        for (std::size_t j = 0; same && j < 3; ++j) {
-          same = dp.snapped[j].x.raw() == part->raw[j][0] &&
-                 dp.snapped[j].y.raw() == part->raw[j][1] && same_bits(dp.z[j], part->wv[j].z) &&
-                 same_bits(dp.w[j], part->wv[j].w);
-          for (std::size_t k = 0; same && k < s.attributes.size(); ++k)
-            same = same_bits(dp.attr[k][j], part->attr[j].at(k));
-        }
-        for (std::size_t k = 0; same && k < g.flat.size(); ++k)
-          same = same_bits(dp.flat[k], g.flat[k]);
-        if (!same) {
-          std::string got;
-          for (const Vec2& v : dp.snapped)
-            got += " (" + std::to_string(v.x.raw()) + ", " + std::to_string(v.y.raw()) + ")";
-          return at + ": drawn primitive differs from the oracle's: kernel snapped" + got + " z " +
-                 float_text(dp.z) + " w " + float_text(dp.w) + "; oracle " + raw_text(part->raw) +
-                 " z " +
-                 float_text(std::array<float, 3>{part->wv[0].z, part->wv[1].z, part->wv[2].z}) +
-                 " w " +
-                 float_text(std::array<float, 3>{part->wv[0].w, part->wv[1].w, part->wv[2].w});
-        }
-      }
-    }
-    // The depth test, replayed.
-    const bool killed = has_depth && d->passed == 0 && !f.helper;
-    std::uint32_t passed = 0;
-    if (has_depth && !f.helper) {
-      if (!killed && d->depth.size() != static_cast<std::size_t>(std::popcount(f.mask)))
-        return at + ": " + std::to_string(d->depth.size()) + " depth values";
-      if (killed && (!d->depth.empty() || !d->attr.empty() || d->bary))
-        return at + ": killed but carries depth, attributes or barycentrics";
-      std::size_t j = 0;
-      for (std::uint32_t smp = 0; smp < n; ++smp) {
-        if ((f.mask & (1u << smp)) == 0)
-          continue;
-        const std::size_t idx = static_cast<std::size_t>((f.y * W + f.x) * n + smp);
-        const Raw2 pos = offset_raw(f.x, f.y, pattern[smp]);
-        // The exact barycentrics and vertex depths of the sample (PIPE.BARY.EXACT, PIPE.BARY.LINE).
-        std::optional<std::pair<op::Bary, std::array<float, 3>>> exact;
-        if (part)
-          exact = {op::barycentrics(part->raw, pos), {part->wv[0].z, part->wv[1].z, part->wv[2].z}};
-        if (seg)
-          exact = {line_bary(seg->raw, pos, point), {seg->wv[0].z, seg->wv[1].z, 0.0f}};
-        if (exact && exact->first.area == 0)
-          exact.reset(); // a zero-length line: vertex 0's depth
-        if (killed) {
-          if (exact) {
-            const op::DepthCheck c = op::check_depth_stored(
-                exact->first, exact->second, vp.min_depth, vp.max_depth, fmt, op::Stored{});
-            if (!some_value_fails(func, c.lo, c.hi, buffer[idx], fmt))
-              return at + ": killed, but sample " + std::to_string(smp) +
-                     " passes for every allowed depth: " + c.describe(fmt);
-          }
-          continue;
-        }
-        const op::Stored now = to_oracle(d->depth[j++]);
-        if (exact) {
-          op::DepthCheck c = op::check_depth_stored(exact->first, exact->second, vp.min_depth,
-                                                    vp.max_depth, fmt, now);
-          ++st.depth_checks;
-          if (!c.ok)
-            return at + ": depth of sample " + std::to_string(smp) + ": " + c.describe(fmt);
-        }
-        if (op::depth_test(func, now, buffer[idx], fmt)) {
-          passed |= 1u << smp;
-          if (s.depth->write)
-            buffer[idx] = now;
-        }
-      }
-      if (killed)
-        ++st.killed;
-      if (!killed && passed != d->passed)
-        return at + ": passed " + std::to_string(d->passed) + ", the replayed test gives " +
-               std::to_string(passed);
-    } else if (d && d->passed != f.mask) {
-      return at + ": passed " + std::to_string(d->passed) + " without a depth test";
-    }
-    if ((!part && !seg) || killed || d == nullptr)
+    FragmentReplay x{f, d, at};
+    if (std::string problem = x.locate(R); !problem.empty())
+      return problem;
+    if (std::string problem = x.check_drawn(R); !problem.empty())
+      return problem;
+    if (std::string problem = x.replay_depth(R); !problem.empty())
+      return problem;
+    if ((!x.part && !x.seg) || x.killed || d == nullptr)
       continue;
-    const std::vector<float>& flat = seg ? seg->flat : g.flat;
-    // The exact barycentrics at an evaluation point, and the vertex values they weigh.
-    const auto bary_at = [&](const Raw2& q) {
-      return part ? op::barycentrics(part->raw, q) : line_bary(seg->raw, q, point);
-    };
-    const auto vertex_values = [&](std::size_t k) {
-      return part ? std::array<float, 3>{part->attr[0].at(k), part->attr[1].at(k),
-                                         part->attr[2].at(k)}
-                  : std::array<float, 3>{seg->attr[0].at(k), seg->attr[1].at(k), 0.0f};
-    };
-    const std::array<float, 3> vertex_w =
-        part ? std::array<float, 3>{part->wv[0].w, part->wv[1].w, part->wv[2].w}
-             : std::array<float, 3>{seg->wv[0].w, seg->wv[1].w, 1.0f};
-    const std::string vertices =
-        part ? raw_text(part->raw) : raw_text(seg->raw[0]) + " " + raw_text(seg->raw[1]);
-    // Barycentrics and attributes.
-    const auto location_raw = [&](kp::Location l) -> std::optional<Raw2> {
-      switch (l) {
-      case kp::Location::kCenter:
-        return centre_raw(f.x, f.y);
-      case kp::Location::kSample:
-        if (!f.sample)
-          return std::nullopt;
-        return offset_raw(f.x, f.y, pattern.at(*f.sample));
-      case kp::Location::kCentroid: {
-        // The fragment's own centroid: coverage_problem compares it with rastrules::render's,
-        // whose centroids the MSAA properties check against the oracle (with partial masks,
-        // helper lanes and sample shading, where the pixel's coverage before the mask is not
-        // in the fragment). Here, where the fragment determines it, against the oracle too.
-        const std::string rule = s.msaa.centroid_rule == CentroidRule::kD3D11 ? "d3d11" : "d3d10";
-        const bool determined = !f.helper && s.msaa.shading == ShadingRate::kPixel &&
-                                (s.msaa.sample_mask & full_mask(n)) == full_mask(n);
-        if (!f.centroid)
-          return std::nullopt;
-        const om::Offset o{f.centroid->offset.x, f.centroid->offset.y};
-        if (determined && !(om::centroid(rule, f.mask, 0xFFFFFFFFu, pattern).offset == o))
-          return std::nullopt;
-        return offset_raw(f.x, f.y, o);
-      }
-      }
-      return std::nullopt;
-    };
-    const bool want_bary = has_depth || !s.attributes.empty();
-    if (want_bary != d->bary.has_value())
-      return at + ": barycentrics " + (d->bary ? "present" : "absent");
-    if (d->bary) {
-      const auto loc =
-          location_raw(s.attributes.empty() ? kp::Location::kCenter : s.attributes[0].location);
-      if (loc && to_oracle(*d->bary) != bary_at(*loc))
-        return at + ": barycentrics differ from the exact ones at " + raw_text(*loc) + " of " +
-               vertices;
-    }
-    if (d->attr.size() != s.attributes.size())
-      return at + ": " + std::to_string(d->attr.size()) + " attributes";
-    for (std::size_t k = 0; k < s.attributes.size(); ++k) {
-      const kp::AttributeDecl& a = s.attributes[k];
-      const float got = d->attr[k];
-      if (a.interpolation == kp::Interpolation::kFlat) {
-        if (!same_bits(got, flat[k]))
-          return at + ": flat attribute " + std::to_string(k) + " " + float_text(got) + ", want " +
-                 float_text(flat[k]);
-        continue;
-      }
-      const auto loc = location_raw(a.location);
-      if (!loc)
-        return at + ": attribute " + std::to_string(k) +
-               " at a sample or centroid the fragment lacks, or a centroid " +
-               "other than the oracle's";
-      const op::Bary b = bary_at(*loc);
-      const std::array<float, 3> av = vertex_values(k);
-      if (b.area == 0) {
-        // A zero-length line (PIPE.BARY.LINE): vertex 0's value, or the flat one in perspective.
-        const float want = a.interpolation == kp::Interpolation::kPerspective ? flat[k] : av[0];
-        if (!same_bits(got, want))
-          return at + ": attribute " + std::to_string(k) + " of a zero-length line " +
-                 float_text(got) + ", want " + float_text(want);
-        continue;
-      }
-      const op::InterpCheck c = a.interpolation == kp::Interpolation::kPerspective
-                                    ? op::check_perspective(b, av, vertex_w, flat[k], got)
-                                    : op::check_linear(b, av, got);
-      ++st.attr_checks;
-      st.horizon = st.horizon || c.horizon;
-      st.saturated = st.saturated || c.saturated;
-      if (!c.ok)
-        return at + ": attribute " + std::to_string(k) + " (" +
-               std::string(to_string(a.interpolation)) + ") at " + raw_text(*loc) + ", vertices " +
-               vertices + ", values " + float_text(av) + ", w " + float_text(vertex_w) + ": " +
-               c.describe();
-    }
+    if (std::string problem = x.check_values(R); !problem.empty())
+      return problem;
   }
-  if (has_depth) {
-    if (r.depth_buffer.size() != buffer.size())
-      return "depth buffer of " + std::to_string(r.depth_buffer.size()) + " samples";
-    for (std::size_t i = 0; i < buffer.size(); ++i) {
-      if (!(to_oracle(r.depth_buffer[i]) == buffer[i]))
-        return "depth buffer sample " + std::to_string(i) + ": kernel (" +
-               std::to_string(r.depth_buffer[i].unorm) + ", " + float_text(r.depth_buffer[i].f) +
-               "), replay (" + std::to_string(buffer[i].unorm) + ", " + float_text(buffer[i].f) +
-               ")";
-    }
-  } else if (!r.depth_buffer.empty()) {
-    return "a depth buffer without depth";
-  }
-  return "";
+  return check_depth_buffer(R);
 }
 
 // The coverage of each part equals the window-space path (rastrules::render of that triangle
