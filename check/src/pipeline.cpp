@@ -872,26 +872,58 @@ std::string replay(const rastrules::Scene& s, const kp::PipeResult& r, PipelineS
   return check_depth_buffer(R);
 }
 
-// The coverage of each part equals the window-space path (rastrules::render of that triangle
-// with the scene's raster and multisample state), cut to the viewport scissor.
-std::string coverage_problem(const rastrules::Scene& s, const kp::PipeResult& r) {
-  const op::Rect sc = op::viewport_scissor(viewport_of(s));
-  std::map<std::pair<std::uint32_t, std::int64_t>, std::vector<Fragment>> got;
-  const bool has_data = !r.data.empty();
-  for (std::size_t i = 0; i < r.fragments.size(); ++i) {
-    Fragment f = r.fragments[i];
-    const std::int64_t part = has_data && r.data[i].part ? std::int64_t{*r.data[i].part} : -1;
-    const std::uint32_t prim = f.prim;
-    f.prim = 0;
-    got[{prim, part}].push_back(f);
+// The coverage of each part equals the window-space path (rastrules::render of that part with
+// the scene's raster and multisample state), cut to the viewport scissor.
+class CoverageReplay {
+public:
+  CoverageReplay(const rastrules::Scene& s, const kp::PipeResult& r)
+      : s_(s), sc_(op::viewport_scissor(viewport_of(s))),
+        any_centroid_(
+            std::any_of(s.attributes.begin(), s.attributes.end(), [](const kp::AttributeDecl& a) {
+              return a.location == kp::Location::kCentroid;
+            })) {
+    const bool has_data = !r.data.empty();
+    for (std::size_t i = 0; i < r.fragments.size(); ++i) {
+      Fragment f = r.fragments[i];
+      const std::int64_t part = has_data && r.data[i].part ? std::int64_t{*r.data[i].part} : -1;
+      const std::uint32_t prim = f.prim;
+      f.prim = 0;
+      got_[{prim, part}].push_back(f);
+    }
   }
-  const bool any_centroid =
-      std::any_of(s.attributes.begin(), s.attributes.end(),
-                  [](const kp::AttributeDecl& a) { return a.location == kp::Location::kCentroid; });
-  const auto render_one =
-      [&](const Primitive& prim) -> std::variant<std::vector<Fragment>, std::string> {
-    Scene ws = rastrules::target_of(s);
-    if (any_centroid)
+
+  std::string run() {
+    for (std::size_t p = 0; p < s_.primitives.size(); ++p) {
+      const rastrules::Primitive& pp = s_.primitives[p];
+      const PrimGeometry g = geometry(s_, p);
+      if (g.transform_error)
+        continue;
+      const bool point_or_line =
+          pp.type == PrimitiveType::kPoint || pp.type == PrimitiveType::kLine;
+      std::string problem;
+      if (point_or_line && !pp.pos.empty())
+        problem = clip_space_point_or_line(p, g);
+      else if (pp.type == PrimitiveType::kLineStrip)
+        problem = strip(p, g);
+      else if (pp.type == PrimitiveType::kTriangle)
+        problem = triangle(p, g);
+      if (!problem.empty())
+        return problem;
+    }
+    for (const auto& [key, frags] : got_) {
+      if (s_.primitives[key.first].type == PrimitiveType::kTriangle && !frags.empty())
+        return "primitive " + std::to_string(key.first) + " part " + std::to_string(key.second) +
+               ": fragments of a part the oracle does not have";
+    }
+    return "";
+  }
+
+private:
+  // The window-space render of one primitive with the scene's target and sample state, cut to
+  // the scissor, or render's error.
+  std::variant<std::vector<Fragment>, std::string> render_one(const Primitive& prim) const {
+    Scene ws = rastrules::target_of(s_);
+    if (any_centroid_)
       ws.msaa.has_centroid = true;
     ws.primitives = {prim};
     const auto rendered = render(ws);
@@ -899,147 +931,143 @@ std::string coverage_problem(const rastrules::Scene& s, const kp::PipeResult& r)
       return e->what();
     std::vector<Fragment> want;
     for (const Fragment& f : std::get<std::vector<Fragment>>(rendered)) {
-      if (f.x >= sc.x0 && f.x < sc.x1 && f.y >= sc.y0 && f.y < sc.y1)
+      if (f.x >= sc_.x0 && f.x < sc_.x1 && f.y >= sc_.y0 && f.y < sc_.y1)
         want.push_back(f);
     }
     return want;
-  };
-  for (std::size_t p = 0; p < s.primitives.size(); ++p) {
-    const rastrules::Primitive& pp = s.primitives[p];
-    const bool point_or_line = pp.type == PrimitiveType::kPoint || pp.type == PrimitiveType::kLine;
-    if (point_or_line && !pp.pos.empty()) {
-      // A clip-space point or line: all its fragments (whatever their part) against the coverage
-      // kernel's for its clipped window-space vertices.
-      const PrimGeometry g = geometry(s, p);
-      if (g.transform_error)
+  }
+
+  // Takes the pipeline's fragments of primitive p, part key (none: empty).
+  std::vector<Fragment> take(std::size_t p, std::int64_t key) {
+    const auto it = got_.find({static_cast<std::uint32_t>(p), key});
+    if (it == got_.end())
+      return {};
+    std::vector<Fragment> have = std::move(it->second);
+    got_.erase(it);
+    return have;
+  }
+
+  // A clip-space point or line: all its fragments (whatever their part) against the coverage
+  // kernel's for its clipped window-space vertices.
+  std::string clip_space_point_or_line(std::size_t p, const PrimGeometry& g) {
+    const rastrules::Primitive& pp = s_.primitives[p];
+    std::vector<Fragment> have;
+    for (auto it = got_.begin(); it != got_.end();) {
+      if (it->first.first == p) {
+        have.insert(have.end(), it->second.begin(), it->second.end());
+        it = got_.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    std::vector<Fragment> want;
+    if (!g.other.empty()) {
+      Primitive prim = rastrules::coverage_of(pp);
+      prim.v.clear();
+      for (const op::WindowVertex& v : g.other)
+        prim.v.push_back(FloatPoint{v.x, v.y});
+      auto rendered = render_one(prim);
+      if (const auto* e = std::get_if<std::string>(&rendered))
+        return "render of primitive " + std::to_string(p) + ": " + *e;
+      want = std::get<std::vector<Fragment>>(rendered);
+    }
+    if (have != want)
+      return "coverage of " + std::string(to_string(pp.type)) + " " + std::to_string(p) +
+             ": pipeline " + std::to_string(have.size()) + " fragments, window-space render " +
+             std::to_string(want.size());
+    return "";
+  }
+
+  // rule: PIPE.CLIP.LINE, LINE.STRIP.SEQUENCE
+  // A strip inside the volume (or in window space) covers what the coverage kernel draws for
+  // the strip of its window vertices; a clipped one, segment by segment, what it draws for
+  // each cut segment as a line (part = segment).
+  std::string strip(std::size_t p, const PrimGeometry& g) {
+    const rastrules::Primitive& pp = s_.primitives[p];
+    std::vector<std::pair<std::int64_t, Primitive>> units;
+    Primitive whole = rastrules::coverage_of(pp);
+    whole.v.clear();
+    for (std::size_t k = 0; k < g.segs.size(); ++k) {
+      if (!g.segs[k])
         continue;
-      std::vector<Fragment> have;
-      for (auto it = got.begin(); it != got.end();) {
-        if (it->first.first == p) {
-          have.insert(have.end(), it->second.begin(), it->second.end());
-          it = got.erase(it);
-        } else {
-          ++it;
-        }
+      const Seg& sg = *g.segs[k];
+      if (g.clipped) {
+        Primitive line = rastrules::coverage_of(pp);
+        line.type = PrimitiveType::kLine;
+        line.v = {FloatPoint{sg.wv[0].x, sg.wv[0].y}, FloatPoint{sg.wv[1].x, sg.wv[1].y}};
+        units.emplace_back(static_cast<std::int64_t>(k), line);
+      } else {
+        if (k == 0)
+          whole.v.push_back(FloatPoint{sg.wv[0].x, sg.wv[0].y});
+        whole.v.push_back(FloatPoint{sg.wv[1].x, sg.wv[1].y});
       }
-      std::vector<Fragment> want;
-      if (!g.other.empty()) {
-        Primitive prim = rastrules::coverage_of(pp);
-        prim.v.clear();
-        for (const op::WindowVertex& v : g.other)
-          prim.v.push_back(FloatPoint{v.x, v.y});
-        auto rendered = render_one(prim);
-        if (const auto* e = std::get_if<std::string>(&rendered))
-          return "render of primitive " + std::to_string(p) + ": " + *e;
-        want = std::get<std::vector<Fragment>>(rendered);
-      }
-      if (have != want)
-        return "coverage of " + std::string(to_string(pp.type)) + " " + std::to_string(p) +
+    }
+    if (!g.clipped)
+      units.emplace_back(-1, whole);
+    for (const auto& [key, prim] : units) {
+      auto rendered = render_one(prim);
+      if (const auto* e = std::get_if<std::string>(&rendered))
+        return "render of strip " + std::to_string(p) + " part " + std::to_string(key) + ": " + *e;
+      const std::vector<Fragment> have = take(p, key);
+      if (have != std::get<std::vector<Fragment>>(rendered))
+        return "coverage of strip " + std::to_string(p) + " part " + std::to_string(key) +
                ": pipeline " + std::to_string(have.size()) + " fragments, window-space render " +
-               std::to_string(want.size());
-      continue;
+               std::to_string(std::get<std::vector<Fragment>>(rendered).size());
     }
-    if (pp.type == PrimitiveType::kLineStrip) {
-      // rule: PIPE.CLIP.LINE, LINE.STRIP.SEQUENCE
-      // A strip inside the volume (or in window space) covers what the coverage kernel draws for
-      // the strip of its window vertices; a clipped one, segment by segment, what it draws for
-      // each cut segment as a line (part = segment).
-      const PrimGeometry g = geometry(s, p);
-      if (g.transform_error)
-        continue;
-      std::vector<std::pair<std::int64_t, Primitive>> units;
-      Primitive whole = rastrules::coverage_of(pp);
-      whole.v.clear();
-      for (std::size_t k = 0; k < g.segs.size(); ++k) {
-        if (!g.segs[k])
-          continue;
-        const Seg& sg = *g.segs[k];
-        if (g.clipped) {
-          Primitive line = rastrules::coverage_of(pp);
-          line.type = PrimitiveType::kLine;
-          line.v = {FloatPoint{sg.wv[0].x, sg.wv[0].y}, FloatPoint{sg.wv[1].x, sg.wv[1].y}};
-          units.emplace_back(static_cast<std::int64_t>(k), line);
-        } else {
-          if (k == 0)
-            whole.v.push_back(FloatPoint{sg.wv[0].x, sg.wv[0].y});
-          whole.v.push_back(FloatPoint{sg.wv[1].x, sg.wv[1].y});
-        }
-      }
-      if (!g.clipped)
-        units.emplace_back(-1, whole);
-      for (const auto& [key, prim] : units) {
-        auto rendered = render_one(prim);
-        if (const auto* e = std::get_if<std::string>(&rendered))
-          return "render of strip " + std::to_string(p) + " part " + std::to_string(key) + ": " +
-                 *e;
-        const auto it = got.find({static_cast<std::uint32_t>(p), key});
-        const std::vector<Fragment> have = it == got.end() ? std::vector<Fragment>{} : it->second;
-        if (have != std::get<std::vector<Fragment>>(rendered))
-          return "coverage of strip " + std::to_string(p) + " part " + std::to_string(key) +
-                 ": pipeline " + std::to_string(have.size()) + " fragments, window-space render " +
-                 std::to_string(std::get<std::vector<Fragment>>(rendered).size());
-        if (it != got.end())
-          got.erase(it);
-      }
-      for (auto it = got.begin(); it != got.end(); ++it)
-        if (it->first.first == p && !it->second.empty())
-          return "strip " + std::to_string(p) + " part " + std::to_string(it->first.second) +
-                 ": fragments of a segment the oracle's clipper discards";
-      continue;
-    }
-    if (pp.type != PrimitiveType::kTriangle)
-      continue;
-    const PrimGeometry g = geometry(s, p);
-    if (g.transform_error)
-      continue;
+    for (const auto& [key, frags] : got_)
+      if (key.first == p && !frags.empty())
+        return "strip " + std::to_string(p) + " part " + std::to_string(key.second) +
+               ": fragments of a segment the oracle's clipper discards";
+    return "";
+  }
+
+  // A triangle: each part of the oracle's fan against the render of that part.
+  std::string triangle(std::size_t p, const PrimGeometry& g) {
     for (std::size_t k = 0; k < g.parts.size(); ++k) {
-      Scene ws = rastrules::target_of(s);
-      if (any_centroid)
-        ws.msaa.has_centroid = true;
-      ws.primitives = {make_triangle({FloatPoint{g.parts[k].wv[0].x, g.parts[k].wv[0].y},
-                                      FloatPoint{g.parts[k].wv[1].x, g.parts[k].wv[1].y},
-                                      FloatPoint{g.parts[k].wv[2].x, g.parts[k].wv[2].y}})};
-      const auto rendered = render(ws);
-      if (const auto* e = std::get_if<SceneError>(&rendered))
+      const Part& part = g.parts[k];
+      auto rendered = render_one(make_triangle({FloatPoint{part.wv[0].x, part.wv[0].y},
+                                                FloatPoint{part.wv[1].x, part.wv[1].y},
+                                                FloatPoint{part.wv[2].x, part.wv[2].y}}));
+      if (const auto* e = std::get_if<std::string>(&rendered))
         return "render of primitive " + std::to_string(p) + " part " + std::to_string(k) + ": " +
-               e->what();
-      std::vector<Fragment> want;
-      for (const Fragment& f : std::get<std::vector<Fragment>>(rendered)) {
-        if (f.x >= sc.x0 && f.x < sc.x1 && f.y >= sc.y0 && f.y < sc.y1)
-          want.push_back(f);
-      }
+               *e;
+      const std::vector<Fragment>& want = std::get<std::vector<Fragment>>(rendered);
       const std::int64_t key = g.clipped ? static_cast<std::int64_t>(k) : -1;
-      const auto it = got.find({static_cast<std::uint32_t>(p), key});
-      const std::vector<Fragment> have = it == got.end() ? std::vector<Fragment>{} : it->second;
-      if (have != want) {
-        std::ostringstream os;
-        os << "coverage of primitive " << p << " part " << key << ": pipeline " << have.size()
-           << " fragments, window-space render " << want.size() << " (vertices "
-           << raw_text(g.parts[k].raw) << ")";
-        for (std::size_t i = 0; i < std::max(have.size(), want.size()); ++i) {
-          const bool same = i < have.size() && i < want.size() && have[i] == want[i];
-          if (same)
-            continue;
-          os << "; first difference at " << i << ": pipeline ";
-          if (i < have.size())
-            os << "(" << have[i].x << ", " << have[i].y << ", mask " << have[i].mask << ")";
-          os << ", render ";
-          if (i < want.size())
-            os << "(" << want[i].x << ", " << want[i].y << ", mask " << want[i].mask << ")";
-          break;
-        }
-        return os.str();
-      }
-      if (it != got.end())
-        got.erase(it);
+      const std::vector<Fragment> have = take(p, key);
+      if (have != want)
+        return "coverage of primitive " + std::to_string(p) + " part " + std::to_string(key) +
+               ": pipeline " + std::to_string(have.size()) + " fragments, window-space render " +
+               std::to_string(want.size()) + " (vertices " + raw_text(part.raw) + ")" +
+               first_difference(have, want);
     }
+    return "";
   }
-  for (const auto& [key, frags] : got) {
-    if (s.primitives[key.first].type == PrimitiveType::kTriangle && !frags.empty())
-      return "primitive " + std::to_string(key.first) + " part " + std::to_string(key.second) +
-             ": fragments of a part the oracle does not have";
+
+  // "; first difference at I: pipeline (x, y, mask m), render (x, y, mask m)", or "".
+  static std::string first_difference(const std::vector<Fragment>& have,
+                                      const std::vector<Fragment>& want) {
+    const auto text = [](const std::vector<Fragment>& l, std::size_t i) {
+      return i < l.size() ? "(" + std::to_string(l[i].x) + ", " + std::to_string(l[i].y) +
+                                ", mask " + std::to_string(l[i].mask) + ")"
+                          : std::string();
+    };
+    for (std::size_t i = 0; i < std::max(have.size(), want.size()); ++i) {
+      if (i < have.size() && i < want.size() && have[i] == want[i])
+        continue;
+      return "; first difference at " + std::to_string(i) + ": pipeline " + text(have, i) +
+             ", render " + text(want, i);
+    }
+    return "";
   }
-  return "";
+
+  const rastrules::Scene& s_;
+  op::Rect sc_;
+  bool any_centroid_;
+  std::map<std::pair<std::uint32_t, std::int64_t>, std::vector<Fragment>> got_;
+};
+
+std::string coverage_problem(const rastrules::Scene& s, const kp::PipeResult& r) {
+  return CoverageReplay(s, r).run();
 }
 } // namespace
 

@@ -212,6 +212,23 @@ TEST(Check, ThePipelineReplayFindsWhatTheValuesCannotSee) {
   r.fragments.pop_back();
   r.data.pop_back();
   EXPECT_TRUE(mentions(check_pipeline(s, r), "coverage of primitive 1"));
+  // And of a strip, and of a clip-space line.
+  for (const auto& [type, name] : {std::pair{PrimitiveType::kLineStrip, "coverage of strip 0"},
+                                   std::pair{PrimitiveType::kLine, "coverage of line 0"}}) {
+    rastrules::Primitive line;
+    line.type = type;
+    line.pos = {{-0.9f, -0.5f, 0.5f, 1.0f}, {0.9f, 0.5f, 0.5f, 1.0f}};
+    if (type == PrimitiveType::kLineStrip)
+      line.pos.push_back({-0.5f, 0.9f, 0.5f, 1.0f});
+    s.primitives = {line};
+    auto drawn = pipe::run_pipeline(s);
+    ASSERT_TRUE(std::holds_alternative<pipe::PipeResult>(drawn));
+    pipe::PipeResult lr = std::get<pipe::PipeResult>(drawn);
+    ASSERT_TRUE(check_pipeline(s, lr).agree()) << name;
+    lr.fragments.pop_back();
+    lr.data.pop_back();
+    EXPECT_TRUE(mentions(check_pipeline(s, lr), name)) << name;
+  }
 }
 
 } // namespace
