@@ -84,10 +84,7 @@ std::string key_text(std::size_t prim, const Key& k) {
          (std::get<2>(k) >= 0 ? " seg " + std::to_string(std::get<2>(k)) : std::string());
 }
 
-// The raw 16.8 position of the centre of pixel (x, y) (COORD.PIXEL.CENTER).
-Raw centre_raw(std::int32_t x, std::int32_t y) {
-  return {std::int64_t{x} * 256 + 128, std::int64_t{y} * 256 + 128};
-}
+using detail::centre_raw;
 
 __extension__ using Int128 = __int128;
 

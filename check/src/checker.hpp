@@ -3,12 +3,20 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <string>
 #include <utility>
 
 #include "rastrules/check/check.hpp"
 
 namespace rastrules::check::detail {
+
+// The raw 16.8 position of the centre of pixel (x, y) (COORD.PIXEL.CENTER).
+// rule: COORD.PIXEL.CENTER
+inline std::array<std::int64_t, 2> centre_raw(std::int32_t x, std::int32_t y) {
+  return {std::int64_t{x} * 256 + 128, std::int64_t{y} * 256 + 128};
+}
 
 // Collects mismatches (up to CheckOptions::max_mismatches, counting all) and the oracles used.
 class Checker {

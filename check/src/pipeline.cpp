@@ -38,6 +38,7 @@ namespace rastrules::check {
 
 namespace {
 
+using detail::centre_raw;
 using detail::Checker;
 namespace om = rastrules::oracle::msaa;
 using Raw2 = rastrules::oracle::pipe::Raw2;
@@ -105,25 +106,27 @@ op::Raw2 raw(Vec2 v) {
   return {v.x.raw(), v.y.raw()};
 }
 
+// The barycentrics of PIPE.BARY.LINE, written from the spec: the exact projection parameter
+// t = num / den of s onto the segment as (den - num, num, 0) / den; a point's are (1, 0, 0) / 1
+// (a point is a segment whose ends are its vertex), a zero-length line's (0, 0, 0) / 0.
+// rule: PIPE.BARY.LINE
+op::Bary line_bary(const std::array<Raw2, 2>& v, const Raw2& s, bool point) {
+  if (point)
+    return op::Bary{{1, 0, 0}, 1};
+  const std::int64_t dx = v[1][0] - v[0][0], dy = v[1][1] - v[0][1];
+  const std::int64_t den = dx * dx + dy * dy;
+  const std::int64_t num = (s[0] - v[0][0]) * dx + (s[1] - v[0][1]) * dy;
+  return op::Bary{{den - num, num, 0}, den};
+}
+
 // The oracle's barycentrics of drawn primitive d at s: a triangle's exact edge values, a line's
 // projection parameter (as in the kernel's output, SCENE.OUTPUT.PIPELINE), a point's (1, 0, 0).
 op::Bary bary_of(const kp::DrawnPrimitive& d, Vec2 s) {
   if (d.type == PrimitiveType::kTriangle)
     return op::barycentrics({raw(d.snapped[0]), raw(d.snapped[1]), raw(d.snapped[2])}, raw(s));
-  op::Bary b;
-  if (d.type == PrimitiveType::kPoint || d.snapped.size() < 2) {
-    b.e = {1, 0, 0};
-    b.area = 1;
-    return b;
-  }
-  const std::int64_t dx = d.snapped[1].x.raw() - d.snapped[0].x.raw();
-  const std::int64_t dy = d.snapped[1].y.raw() - d.snapped[0].y.raw();
-  const std::int64_t px = s.x.raw() - d.snapped[0].x.raw();
-  const std::int64_t py = s.y.raw() - d.snapped[0].y.raw();
-  const std::int64_t den = dx * dx + dy * dy, num = px * dx + py * dy;
-  b.e = {den - num, num, 0};
-  b.area = den;
-  return b;
+  if (d.type == PrimitiveType::kPoint || d.snapped.size() < 2)
+    return line_bary({raw(s), raw(s)}, raw(s), true);
+  return line_bary({raw(d.snapped[0]), raw(d.snapped[1])}, raw(s), false);
 }
 
 std::string format_name(kp::DepthFormat f) {
@@ -238,19 +241,6 @@ struct PrimGeometry {
   // clipper discarded the segment (PIPE.CLIP.LINE, LINE.STRIP.SEQUENCE, PIPE.INTERP.FLAT).
   std::vector<std::optional<Seg>> segs;
 };
-
-// The barycentrics of PIPE.BARY.LINE, written from the spec: the exact projection parameter
-// t = num / den of s onto the segment as (den - num, num, 0) / den; a point's are (1, 0, 0) / 1
-// (a point is a segment whose ends are its vertex), a zero-length line's (0, 0, 0) / 0.
-// rule: PIPE.BARY.LINE
-op::Bary line_bary(const std::array<Raw2, 2>& v, const Raw2& s, bool point) {
-  if (point)
-    return op::Bary{{1, 0, 0}, 1};
-  const std::int64_t dx = v[1][0] - v[0][0], dy = v[1][1] - v[0][1];
-  const std::int64_t den = dx * dx + dy * dy;
-  const std::int64_t num = (s[0] - v[0][0]) * dx + (s[1] - v[0][1]) * dy;
-  return op::Bary{{den - num, num, 0}, den};
-}
 
 std::optional<Raw2> snap2(float x, float y) {
   const auto rx = oracle::snap(x), ry = oracle::snap(y);
@@ -429,9 +419,6 @@ PrimGeometry geometry(const rastrules::Scene& s, std::size_t prim) {
 
 std::vector<om::Offset> pattern_of(const rastrules::Scene& s) {
   return om::standard_pattern(s.msaa.count());
-}
-Raw2 centre_raw(std::int32_t x, std::int32_t y) {
-  return {256 * std::int64_t{x} + 128, 256 * std::int64_t{y} + 128};
 }
 Raw2 offset_raw(std::int32_t x, std::int32_t y, const om::Offset& o) {
   const Raw2 c = centre_raw(x, y);
