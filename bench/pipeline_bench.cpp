@@ -77,7 +77,7 @@ rastrules::Scene stage_scene(int stage) {
       p.attr = {{0, 1, 2, 3}, {1, 2, 3, 4}, {2, 3, 4, 5}};
   }
   if (stage >= kMsaa4)
-    s.msaa.pattern = rastrules::standard_pattern(4);
+    set_sample_pattern(s, rastrules::standard_pattern(4));
   if (stage >= kDerivatives)
     s.msaa.derivatives = rastrules::DerivativeMode::kFine;
   return s;

@@ -35,7 +35,7 @@ Scene scene_for(std::uint8_t b) {
   s.width = kSides[b & 3u];
   s.height = kSides[(b >> 2) & 3u];
   if ((b & 16u) != 0)
-    s.msaa.pattern = rastrules::standard_pattern(4);
+    set_sample_pattern(s, rastrules::standard_pattern(4));
   const std::size_t prims = 1u + ((b >> 5) & 3u);
   for (std::size_t i = 0; i < prims; ++i) {
     rastrules::Primitive p;

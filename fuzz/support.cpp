@@ -86,10 +86,10 @@ Scene decode_scene(ByteReader& in) {
   s.width = 1 + in.byte() % kMaxFuzzTarget;
   s.height = 1 + in.byte() % kMaxFuzzTarget;
   const std::uint8_t st = in.byte();
-  s.state.cull = static_cast<CullMode>((st & 3u) % 3u);
-  s.state.front_face = (st & 4u) != 0 ? FrontFace::kCounterClockwise : FrontFace::kClockwise;
-  s.state.fill = static_cast<FillConvention>((st >> 3) & 3u);
-  s.line_mode = static_cast<LineMode>((st >> 5) & 3u);
+  s.cull = static_cast<CullMode>((st & 3u) % 3u);
+  s.conventions.front_face = (st & 4u) != 0 ? FrontFace::kCounterClockwise : FrontFace::kClockwise;
+  s.conventions.fill = static_cast<FillConvention>((st >> 3) & 3u);
+  s.conventions.line_mode = static_cast<LineMode>((st >> 5) & 3u);
   // Bit 7: keep "aa": true in every line mode (prepare must reject it outside d3d); otherwise
   // aa is dropped outside d3d, so that most antialiased lines get drawn.
   const bool keep_bad_aa = (st & 0x80u) != 0;
@@ -104,7 +104,8 @@ Scene decode_scene(ByteReader& in) {
       n = 2 + ((t >> 4) & 3u) % (kMaxStripVertices - 1);
     const bool is_line =
         prim.type == PrimitiveType::kLine || prim.type == PrimitiveType::kLineStrip;
-    prim.aa = is_line && (t & 8u) != 0 && (keep_bad_aa || s.line_mode == LineMode::kD3DDiamond) &&
+    prim.aa = is_line && (t & 8u) != 0 &&
+              (keep_bad_aa || s.conventions.line_mode == LineMode::kD3DDiamond) &&
               aa_segments + (n - 1) <= kMaxAaSegments;
     if (prim.aa)
       aa_segments += n - 1;
@@ -147,7 +148,7 @@ std::string oracle_invalid_reason(const Scene& scene) {
     if (prim.aa && (prim.type == PrimitiveType::kTriangle || prim.type == PrimitiveType::kPoint)) {
       return at + ": aa on a triangle or point";
     }
-    if (prim.aa && scene.line_mode != LineMode::kD3DDiamond)
+    if (prim.aa && scene.conventions.line_mode != LineMode::kD3DDiamond)
       return at + ": aa outside line mode d3d";
     for (std::size_t i = 0; i < n; ++i) {
       const auto x = oracle::snap(prim.v[i][0]);
@@ -171,7 +172,7 @@ std::string oracle_invalid_reason(const Scene& scene) {
     const bool line = prim.type == PrimitiveType::kLine || prim.type == PrimitiveType::kLineStrip;
     if (!line || n <= 1)
       continue;
-    const bool bresenham = scene.line_mode == LineMode::kVulkanBresenham;
+    const bool bresenham = scene.conventions.line_mode == LineMode::kVulkanBresenham;
     if (bresenham && scene.msaa.shading == ShadingRate::kSample)
       return "shading: sample shading of Bresenham lines";
     if (!bresenham && scene.msaa.pattern.kind == PatternKind::kCenter)

@@ -41,15 +41,15 @@ oracle::msaa::Input oracle_msaa_input(const Scene& scene) {
   oracle::msaa::Input in;
   in.width = scene.width;
   in.height = scene.height;
-  in.state = oracle_state(scene.state);
-  in.line_mode = std::string(name_of(scene.line_mode));
-  in.multisample_enable = scene.msaa.multisample_enable;
+  in.state = oracle_state(raster_state(scene));
+  in.line_mode = std::string(name_of(scene.conventions.line_mode));
+  in.multisample_enable = scene.conventions.multisample_enable;
   in.pattern.clear();
   for (const SampleOffset& o : scene.msaa.pattern.positions)
     in.pattern.push_back({o.x, o.y});
   in.sample_mask = scene.msaa.sample_mask;
   if (scene.msaa.has_centroid)
-    in.centroid = std::string(name_of(scene.msaa.centroid_rule));
+    in.centroid = std::string(name_of(scene.conventions.centroid));
   in.shading = std::string(name_of(scene.msaa.shading));
   in.quads = scene.msaa.quads;
   in.derivatives = std::string(name_of(scene.msaa.derivatives));
@@ -158,7 +158,7 @@ void line_keys(const Scene& scene, const PreparedScene& ps, const std::vector<Fr
                Checker& c) {
   const Primitive& prim = scene.primitives[p];
   const Raw a = oracle_raw(prim.v[s]), b = oracle_raw(prim.v[s + 1]);
-  const std::string fill(name_of(scene.state.fill));
+  const std::string fill(name_of(scene.conventions.fill));
   if (prim.aa) {
     // aa_pixels' set (exact coverage > 0), asked only of candidates: aa_check for the kernel's
     // own fragments (positive and coverage in one go), aa_compare with 0 for the others.
@@ -182,10 +182,11 @@ void line_keys(const Scene& scene, const PreparedScene& ps, const std::vector<Fr
           oracle::aa_compare(a, b, x, y, 0, 1) > 0)
         exact.push_back(Key{y, x, seg});
     });
-  } else if (ps.line_mode == LineMode::kQuadWide || ps.line_mode == LineMode::kQuadNarrow) {
+  } else if (ps.conventions.line_mode == LineMode::kQuadWide ||
+             ps.conventions.line_mode == LineMode::kQuadNarrow) {
     // rule: SCENE.LINE_MODE
     c.used("quad-line oracle (quad_line_covers)");
-    const std::string name(name_of(ps.line_mode));
+    const std::string name(name_of(ps.conventions.line_mode));
     for_candidates(scene, a, b, [&](std::int32_t x, std::int32_t y) {
       if (oracle::quad_line_covers(a, b, name, centre_raw(x, y), fill))
         exact.push_back(Key{y, x, seg});
@@ -194,7 +195,7 @@ void line_keys(const Scene& scene, const PreparedScene& ps, const std::vector<Fr
     // aliased_line_pixels' set, asked only of candidates: it tests the whole bounding box grown
     // by 2 px, which for a long diagonal line is the whole target (20x the candidates).
     c.used("line oracle (aliased_line_pixels)");
-    const std::string name(name_of(ps.line_mode));
+    const std::string name(name_of(ps.conventions.line_mode));
     for_candidates(scene, a, b, [&](std::int32_t x, std::int32_t y) {
       if (oracle::aliased_line_covers(a, b, name, x, y))
         exact.push_back(Key{y, x, seg});
@@ -231,7 +232,7 @@ void check_single_sample(const Scene& scene, const PreparedScene& ps,
   oracle::Scene tris;
   tris.width = scene.width;
   tris.height = scene.height;
-  tris.state = oracle_state(scene.state);
+  tris.state = oracle_state(raster_state(scene));
   std::vector<std::size_t> tri_prim;
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     const Primitive& prim = scene.primitives[p];
@@ -253,7 +254,7 @@ void check_single_sample(const Scene& scene, const PreparedScene& ps,
       const Raw centre = oracle_raw(prim.v[0]);
       if (!oracle::point_in_range(centre))
         throw std::invalid_argument("the kernel accepted a point outside POINT.RANGE");
-      const std::string fill(name_of(scene.state.fill));
+      const std::string fill(name_of(scene.conventions.fill));
       for_candidates(scene, centre, centre, [&](std::int32_t x, std::int32_t y) {
         if (oracle::point_covers(centre, centre_raw(x, y), fill))
           exact[p].push_back(Key{y, x, -1});
@@ -301,8 +302,8 @@ void check_multisampled(const Scene& scene, const PreparedScene& ps,
     // Only an antialiased d3d line without MultisampleEnable keeps its coverage on a
     // multisampled target (MSAA.LINE.MODE): the single-sample line's, within its bound.
     const bool aa_line = f.prim < scene.primitives.size() && scene.primitives[f.prim].aa &&
-                         scene.line_mode == LineMode::kD3DDiamond &&
-                         !(scene.msaa.count() > 1 && scene.msaa.multisample_enable);
+                         scene.conventions.line_mode == LineMode::kD3DDiamond &&
+                         !(scene.msaa.count() > 1 && scene.conventions.multisample_enable);
     if (f.coverage_q16.has_value() != (aa_line && !f.helper))
       c.note("a coverage " + std::string(f.coverage_q16 ? "on" : "missing from") +
              " a multisampled fragment at " + msaa_text(f));

@@ -143,7 +143,7 @@ std::size_t check_values(const Scene& scene, const kp::PipeResult& result, Check
   const kp::Viewport vp = scene.viewport.value_or(
       kp::Viewport{0, 0, static_cast<float>(scene.width), static_cast<float>(scene.height), 0, 1});
   const SamplePattern& pattern = scene.msaa.pattern;
-  const kp::DepthFormat fmt = scene.depth ? scene.depth->format : kp::DepthFormat::kD24;
+  const kp::DepthFormat fmt = scene.depth ? scene.conventions.depth : kp::DepthFormat::kD24;
   const kp::DepthValue lo = kp::to_depth_format(vp.min_depth, 0, 1, fmt);
   const kp::DepthValue hi = kp::to_depth_format(vp.max_depth, 0, 1, fmt);
   const auto report = [&](const std::string& m) { out.note(m); };
@@ -258,7 +258,7 @@ void add_segment(PrimGeometry& g, const rastrules::Scene& s, std::size_t prim,
   const std::size_t nv = p.pos.empty() ? p.v.size() : p.pos.size();
   const bool strip = p.type == PrimitiveType::kLineStrip;
   const std::size_t provoking =
-      s.provoking == kp::Provoking::kFirst ? (strip ? k : 0) : (strip ? k + 1 : nv - 1);
+      s.conventions.provoking == kp::Provoking::kFirst ? (strip ? k : 0) : (strip ? k + 1 : nv - 1);
   Seg seg;
   seg.wv = wv;
   seg.attr = attr;
@@ -286,8 +286,8 @@ PrimGeometry geometry(const rastrules::Scene& s, std::size_t prim) {
     std::vector<float> values;
     for (std::size_t j = 0; j < nv; ++j)
       values.push_back(p.attr.at(j).at(k));
-    g.flat.push_back(
-        op::flat_value(values, s.provoking == kp::Provoking::kFirst ? "first" : "last"));
+    g.flat.push_back(op::flat_value(
+        values, s.conventions.provoking == kp::Provoking::kFirst ? "first" : "last"));
   }
   const auto vertex_attr = [&](std::size_t j) {
     return nattr == 0 ? std::vector<float>{} : p.attr.at(j);
@@ -405,7 +405,7 @@ PrimGeometry geometry(const rastrules::Scene& s, std::size_t prim) {
       const kp::DepthBias& b = s.depth->bias;
       const float bias =
           op::depth_bias(part.raw, {part.wv[0].z, part.wv[1].z, part.wv[2].z}, b.bias,
-                         b.slope_scaled, b.clamp, format_name(s.depth->format));
+                         b.slope_scaled, b.clamp, format_name(s.conventions.depth));
       for (op::WindowVertex& v : part.wv)
         v.z = op::sat32(op::fl32_add(v.z, bias));
     }
@@ -700,7 +700,7 @@ std::string FragmentReplay::check_values(Replay& R) const {
       // whose centroids the MSAA properties check against the oracle (with partial masks,
       // helper lanes and sample shading, where the pixel's coverage before the mask is not
       // in the fragment). Here, where the fragment determines it, against the oracle too.
-      const std::string rule = s.msaa.centroid_rule == CentroidRule::kD3D11 ? "d3d11" : "d3d10";
+      const std::string rule = s.conventions.centroid == CentroidRule::kD3D11 ? "d3d11" : "d3d10";
       const bool determined = !f.helper && s.msaa.shading == ShadingRate::kPixel &&
                               (s.msaa.sample_mask & full_mask(n)) == full_mask(n);
       if (!f.centroid)
@@ -802,7 +802,7 @@ std::string replay(const rastrules::Scene& s, const kp::PipeResult& r, PipelineS
     return "data has " + std::to_string(r.data.size()) + " entries for " +
            std::to_string(r.fragments.size()) + " fragments";
   }
-  R.fmt = R.has_depth ? format_name(s.depth->format) : "";
+  R.fmt = R.has_depth ? format_name(s.conventions.depth) : "";
   R.func = R.has_depth ? compare_name(s.depth->func) : "";
   R.W = s.width;
   R.H = s.height;

@@ -76,7 +76,7 @@ std::uint32_t coverage_at(const PreparedScene& scene, const PreparedPrimitive& p
     return c;
   }
   const LineSegmentDecision g =
-      decide_line_segment(prim.v[seg], prim.v[seg + 1], prim.aa, scene.line_mode, x, y);
+      decide_line_segment(prim.v[seg], prim.v[seg + 1], prim.aa, scene.conventions.line_mode, x, y);
   return g.covered ? full_mask(scene.msaa.count()) : 0u;
 }
 
@@ -148,7 +148,7 @@ MsaaDecision decide_msaa(const PreparedScene& scene, const PreparedPrimitive& pr
   for (SegmentMaskDecision& g : m.segments) {
     g.mask = fragment_mask(g.coverage, ms);
     if (ms.has_centroid)
-      g.centroid = fragment_centroid(g.coverage, ms);
+      g.centroid = fragment_centroid(g.coverage, ms, scene.conventions.centroid);
   }
   decide_helpers(scene, prim, d.x, d.y, m);
   return m;
@@ -174,7 +174,7 @@ PixelDecision decide_pixel(const PreparedScene& scene, std::size_t p, std::int32
   if (prim.triangles.empty() && prim.type != PrimitiveType::kTriangle) {
     for (std::size_t k = 0; k + 1 < prim.v.size(); ++k) {
       LineSegmentDecision g =
-          decide_line_segment(prim.v[k], prim.v[k + 1], prim.aa, scene.line_mode, x, y);
+          decide_line_segment(prim.v[k], prim.v[k + 1], prim.aa, scene.conventions.line_mode, x, y);
       g.seg = static_cast<std::uint32_t>(k);
       d.centre_covered = d.centre_covered || g.covered;
       d.segments.push_back(g);

@@ -67,9 +67,8 @@ std::optional<std::string> first_pipeline_field(const Scene& scene) {
 
 Scene target_of(const Scene& scene) {
   Scene out;
-  std::tie(out.width, out.height, out.state, out.line_mode, out.msaa, out.clear_color,
-           out.provoking) = std::tie(scene.width, scene.height, scene.state, scene.line_mode,
-                                     scene.msaa, scene.clear_color, scene.provoking);
+  std::tie(out.width, out.height, out.conventions, out.cull, out.msaa, out.clear_color) = std::tie(
+      scene.width, scene.height, scene.conventions, scene.cull, scene.msaa, scene.clear_color);
   return out;
 }
 
@@ -126,10 +125,10 @@ std::string field_of(std::size_t p) {
 // segment): the quadrilateral line modes, and the D3D line mode on a multisampled target with
 // D3D's MultisampleEnable set.
 // rule: SCENE.LINE_MODE, MSAA.LINE.MODE
-bool lines_as_quads(LineMode mode, bool aa, const MultisampleState& ms) {
-  if (is_quad(mode))
+bool lines_as_quads(const Conventions& c, bool aa, const MultisampleState& ms) {
+  if (is_quad(c.line_mode))
     return !aa;
-  return mode == LineMode::kD3DDiamond && ms.count() > 1 && ms.multisample_enable;
+  return c.line_mode == LineMode::kD3DDiamond && ms.count() > 1 && c.multisample_enable;
 }
 
 std::string mask_hex(std::uint32_t m) {
@@ -146,6 +145,13 @@ std::optional<SceneError> validate_msaa(const Scene& scene) {
   const MultisampleState& ms = scene.msaa;
   const SamplePattern& pat = ms.pattern;
   const std::uint32_t n = pat.count();
+  // PROFILE.CONVENTIONS: the pattern is of the kind the conventions name.
+  if (pat.kind != scene.conventions.pattern) {
+    return SceneError{"sample_pattern", "is a \"" + std::string(to_string(pat.kind)) +
+                                            "\" pattern but conventions.pattern is \"" +
+                                            std::string(to_string(scene.conventions.pattern)) +
+                                            "\""};
+  }
   switch (pat.kind) {
   case PatternKind::kStandard:
   case PatternKind::kCenter: {
@@ -192,8 +198,8 @@ std::optional<SceneError> validate_msaa(const Scene& scene) {
                                          "), got " + std::to_string(ms.sample_mask) + " (" +
                                          mask_hex(ms.sample_mask) + ")"};
   }
-  if (ms.has_centroid && ms.centroid_rule != CentroidRule::kD3D11 &&
-      ms.centroid_rule != CentroidRule::kD3D10) {
+  if (ms.has_centroid && scene.conventions.centroid != CentroidRule::kD3D11 &&
+      scene.conventions.centroid != CentroidRule::kD3D10) {
     return SceneError{"centroid", "must be one of \"d3d11\", \"d3d10\""};
   }
   if (ms.shading != ShadingRate::kPixel && ms.shading != ShadingRate::kSample) {
@@ -208,14 +214,15 @@ std::optional<SceneError> validate_msaa(const Scene& scene) {
     if (!is_line(prim.type) || n <= 1)
       continue;
     // rule: MSAA.SHADING.SAMPLE
-    if (ms.shading == ShadingRate::kSample && scene.line_mode == LineMode::kVulkanBresenham) {
+    if (ms.shading == ShadingRate::kSample &&
+        scene.conventions.line_mode == LineMode::kVulkanBresenham) {
       return SceneError{"shading", "\"sample\" shading is undefined for \"vulkan-bresenham\" "
                                    "lines with more than one sample (" +
                                        field_of(p) + " is a " + std::string(to_string(prim.type)) +
                                        ")"};
     }
     // rule: MSAA.LINE.MODE
-    if (pat.kind == PatternKind::kCenter && lines_as_quads(scene.line_mode, prim.aa, ms)) {
+    if (pat.kind == PatternKind::kCenter && lines_as_quads(scene.conventions, prim.aa, ms)) {
       return SceneError{"sample_pattern", "a \"center\" pattern of " + std::to_string(n) +
                                               " samples cannot draw quadrilateral lines (" +
                                               field_of(p) + " is a " +
@@ -245,8 +252,9 @@ std::variant<PreparedScene, SceneError> prepare(const Scene& scene) {
   if (auto err = validate_msaa(scene))
     return *err;
   PreparedScene out;
-  std::tie(out.width, out.height, out.state, out.line_mode, out.msaa, out.clear_color) = std::tie(
-      scene.width, scene.height, scene.state, scene.line_mode, scene.msaa, scene.clear_color);
+  std::tie(out.width, out.height, out.conventions, out.msaa, out.clear_color) =
+      std::tie(scene.width, scene.height, scene.conventions, scene.msaa, scene.clear_color);
+  out.state = raster_state(scene);
   out.primitives.reserve(scene.primitives.size());
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     const Primitive& in = scene.primitives[p];
@@ -259,7 +267,7 @@ std::variant<PreparedScene, SceneError> prepare(const Scene& scene) {
       return SceneError{field_of(p) + ".aa", "only lines and line strips take \"aa\", not a " +
                                                  std::string(to_string(in.type))};
     }
-    if (in.aa && scene.line_mode != LineMode::kD3DDiamond) {
+    if (in.aa && scene.conventions.line_mode != LineMode::kD3DDiamond) {
       return SceneError{field_of(p) + ".aa",
                         "antialiased lines need line_mode \"d3d\" (the D3D reference algorithm)"};
     }
@@ -292,22 +300,23 @@ std::variant<PreparedScene, SceneError> prepare(const Scene& scene) {
     switch (in.type) {
     case PrimitiveType::kTriangle:
       prim.triangles.push_back(
-          PreparedTriangle{setup_triangle({prim.v[0], prim.v[1], prim.v[2]}, scene.state), 0});
+          PreparedTriangle{setup_triangle({prim.v[0], prim.v[1], prim.v[2]}, out.state), 0});
       break;
     case PrimitiveType::kPoint:
       // rule: SCENE.PRIM.POINT
-      for (const TriangleSetup& t : setup_point(prim.v[0], scene.state)) {
+      for (const TriangleSetup& t : setup_point(prim.v[0], out.state)) {
         prim.triangles.push_back(PreparedTriangle{t, 0});
       }
       break;
     case PrimitiveType::kLine:
     case PrimitiveType::kLineStrip:
       // rule: SCENE.LINE_MODE, MSAA.LINE.MODE
-      if (lines_as_quads(scene.line_mode, in.aa, scene.msaa)) {
+      if (lines_as_quads(scene.conventions, in.aa, scene.msaa)) {
         // D3D lines (aliased or antialiased) on a multisampled target with MultisampleEnable
         // are 1.4 px wide.
-        const LineMode quad_mode = is_quad(scene.line_mode) ? scene.line_mode : LineMode::kQuadWide;
-        RasterState no_cull = scene.state;
+        const LineMode mode = scene.conventions.line_mode;
+        const LineMode quad_mode = is_quad(mode) ? mode : LineMode::kQuadWide;
+        RasterState no_cull = out.state;
         no_cull.cull = CullMode::kNone;
         for (std::size_t s = 0; s + 1 < prim.v.size(); ++s) {
           for (const auto& tri : quad_line_triangles(prim.v[s], prim.v[s + 1], quad_mode)) {
@@ -389,8 +398,8 @@ void walk_segments(const PreparedScene& scene, const PreparedPrimitive& prim, Co
                           put(seg, x, y, std::optional<std::uint32_t>(c));
                         });
     } else {
-      rasterize_aliased_line(prim.v[s], prim.v[s + 1], scene.line_mode, scene.width, scene.height,
-                             [&](std::int32_t x, std::int32_t y) {
+      rasterize_aliased_line(prim.v[s], prim.v[s + 1], scene.conventions.line_mode, scene.width,
+                             scene.height, [&](std::int32_t x, std::int32_t y) {
                                take(budget);
                                put(seg, x, y, std::optional<std::uint32_t>());
                              });
@@ -454,7 +463,7 @@ std::vector<PixelCoverage> sample_coverage_of(const PreparedScene& scene,
                                               const RenderOptions& options, CollectBudget* budget) {
   const SamplePattern& pattern = scene.msaa.pattern;
   std::vector<PixelCoverage> cov;
-  if (!is_line(prim.type) || lines_as_quads(scene.line_mode, prim.aa, scene.msaa)) {
+  if (!is_line(prim.type) || lines_as_quads(scene.conventions, prim.aa, scene.msaa)) {
     // Triangles, a point's two triangles and quadrilateral lines: every sample tested.
     // rule: MSAA.COVER.SAMPLE, MSAA.POINT.PER_SAMPLE
     for (const PreparedTriangle& t : prim.triangles) {
@@ -509,7 +518,9 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p,
   auto seg_of = [&](std::uint32_t s) {
     return strip ? std::optional<std::uint32_t>(s) : std::nullopt;
   };
-  auto centroid_of = [&](std::uint32_t coverage) { return fragment_centroid(coverage, ms); };
+  auto centroid_of = [&](std::uint32_t coverage) {
+    return fragment_centroid(coverage, ms, scene.conventions.centroid);
+  };
 
   // rule: MSAA.MASK.AND
   if (em == 0)

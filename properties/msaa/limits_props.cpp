@@ -49,8 +49,8 @@ RC_GTEST_PROP(MsaaLimits, EachBrokenFieldIsNamedAndValidScenesPass, ()) {
   switch (what) {
   case 0: { // a custom pattern of 0 or 17 positions
     const std::size_t count = *rc::gen::element<std::size_t>(0, 17);
-    s.msaa.pattern = rastrules::SamplePattern{rastrules::PatternKind::kCustom,
-                                              std::vector<rastrules::SampleOffset>(count)};
+    set_sample_pattern(s, rastrules::SamplePattern{rastrules::PatternKind::kCustom,
+                                                   std::vector<rastrules::SampleOffset>(count)});
     s.msaa.sample_mask = 0xFFFFFFFFu;
     want = "sample_pattern";
     break;
@@ -61,16 +61,17 @@ RC_GTEST_PROP(MsaaLimits, EachBrokenFieldIsNamedAndValidScenesPass, ()) {
     const auto bad = static_cast<std::int8_t>(*rc::gen::element(-9, 8, -128, 127));
     const bool y = *rc::gen::arbitrary<bool>();
     (y ? o[k].y : o[k].x) = bad;
-    s.msaa.pattern = rastrules::SamplePattern{rastrules::PatternKind::kCustom, o};
+    set_sample_pattern(s, rastrules::SamplePattern{rastrules::PatternKind::kCustom, o});
     s.primitives.clear(); // only the pattern is wrong
     want = "sample_pattern[" + std::to_string(k) + "][" + (y ? "1" : "0") + "]";
     break;
   }
   case 2: { // a standard or centre kind with a count that has no pattern
     const std::size_t count = *rc::gen::element<std::size_t>(3, 5, 6, 7, 9, 15, 17);
-    s.msaa.pattern = rastrules::SamplePattern{
-        *rc::gen::element(rastrules::PatternKind::kStandard, rastrules::PatternKind::kCenter),
-        std::vector<rastrules::SampleOffset>(count)};
+    set_sample_pattern(s,
+                       rastrules::SamplePattern{*rc::gen::element(rastrules::PatternKind::kStandard,
+                                                                  rastrules::PatternKind::kCenter),
+                                                std::vector<rastrules::SampleOffset>(count)});
     s.msaa.sample_mask = 0xFFFFFFFFu;
     want = "samples";
     break;
@@ -82,13 +83,13 @@ RC_GTEST_PROP(MsaaLimits, EachBrokenFieldIsNamedAndValidScenesPass, ()) {
   }
   case 4: { // quadrilateral lines on a centre pattern of several samples
     const std::uint32_t c = *rc::gen::element(2u, 4u, 8u, 16u);
-    s.msaa.pattern = rastrules::center_pattern(c);
+    set_sample_pattern(s, rastrules::center_pattern(c));
     s.msaa.sample_mask = 0xFFFFFFFFu;
     s.msaa.shading = rastrules::ShadingRate::kPixel;
-    s.line_mode =
+    s.conventions.line_mode =
         *rc::gen::element(rastrules::LineMode::kD3DDiamond, rastrules::LineMode::kQuadWide,
                           rastrules::LineMode::kQuadNarrow);
-    s.msaa.multisample_enable = true; // d3d lines are quadrilaterals only with it
+    s.conventions.multisample_enable = true; // d3d lines are quadrilaterals only with it
     for (auto& p : s.primitives)
       p.aa = false;
     s.primitives.push_back(line_prim());
@@ -98,7 +99,7 @@ RC_GTEST_PROP(MsaaLimits, EachBrokenFieldIsNamedAndValidScenesPass, ()) {
   case 5: { // sample shading of Bresenham lines with several samples
     RC_PRE(n > 1u);
     s.msaa.shading = rastrules::ShadingRate::kSample;
-    s.line_mode = rastrules::LineMode::kVulkanBresenham;
+    s.conventions.line_mode = rastrules::LineMode::kVulkanBresenham;
     for (auto& p : s.primitives)
       p.aa = false;
     s.primitives.push_back(line_prim());
@@ -109,7 +110,7 @@ RC_GTEST_PROP(MsaaLimits, EachBrokenFieldIsNamedAndValidScenesPass, ()) {
     rastrules::Scene big;
     big.width = 2049;
     big.height = 2048;
-    big.msaa.pattern = rastrules::standard_pattern(16);
+    set_sample_pattern(big, rastrules::standard_pattern(16));
     const auto prepared = rastrules::prepare(big);
     RC_ASSERT(std::holds_alternative<rastrules::PreparedScene>(prepared));
     const auto r = rastrules::resolve(std::get<rastrules::PreparedScene>(prepared), {});

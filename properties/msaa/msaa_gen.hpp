@@ -299,13 +299,13 @@ inline Scene to_kernel(const MsScene& s) {
   Scene k;
   k.width = s.width;
   k.height = s.height;
-  k.state = s.state;
-  k.line_mode = s.line_mode;
-  k.msaa.multisample_enable = s.multisample_enable;
-  k.msaa.pattern = s.pattern.kernel;
+  set_raster_state(k, s.state);
+  k.conventions.line_mode = s.line_mode;
+  k.conventions.multisample_enable = s.multisample_enable;
+  set_sample_pattern(k, s.pattern.kernel);
   k.msaa.sample_mask = s.sample_mask;
   k.msaa.has_centroid = s.centroid.has_value();
-  k.msaa.centroid_rule = s.centroid.value_or(CentroidRule::kD3D11);
+  k.conventions.centroid = s.centroid.value_or(CentroidRule::kD3D11);
   k.msaa.shading = s.shading;
   k.msaa.quads = s.quads;
   k.msaa.derivatives = s.derivatives;

@@ -149,8 +149,8 @@ rc::Gen<rastrules::Scene> coverage_only_scene() {
     rastrules::Scene s;
     s.width = *rc::gen::inRange(1, 20);
     s.height = *rc::gen::inRange(1, 20);
-    s.state = *rastrules::gen::raster_state();
-    s.msaa.pattern = rastrules::standard_pattern(*rc::gen::element(1u, 4u));
+    set_raster_state(s, *rastrules::gen::raster_state());
+    set_sample_pattern(s, rastrules::standard_pattern(*rc::gen::element(1u, 4u)));
     const int n = *rc::gen::inRange(1, 5);
     for (int i = 0; i < n; ++i) {
       rastrules::Primitive p;

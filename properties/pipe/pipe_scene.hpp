@@ -60,14 +60,15 @@ inline std::string cull_name(CullMode c) {
 
 inline void show(const rastrules::Scene& s, std::ostream& os) {
   const Scene& b = s;
-  os << "scene: target " << b.width << "x" << b.height << ", cull " << cull_name(b.state.cull)
-     << ", front " << (b.state.front_face == FrontFace::kClockwise ? "cw" : "ccw") << ", fill "
-     << static_cast<int>(b.state.fill) << ", samples " << b.msaa.count() << ", shading "
-     << (b.msaa.shading == ShadingRate::kSample ? "sample" : "pixel") << ", centroid rule "
-     << (b.msaa.centroid_rule == CentroidRule::kD3D11 ? "d3d11" : "d3d10") << ", provoking "
-     << (s.provoking == kp::Provoking::kFirst ? "first" : "last") << ", line mode "
-     << to_string(b.line_mode) << ", sample mask " << b.msaa.sample_mask << ", quads "
-     << (b.msaa.quads ? "on" : "off") << ", derivatives " << to_string(b.msaa.derivatives) << "\n";
+  os << "scene: target " << b.width << "x" << b.height << ", cull " << cull_name(b.cull)
+     << ", front " << (b.conventions.front_face == FrontFace::kClockwise ? "cw" : "ccw")
+     << ", fill " << static_cast<int>(b.conventions.fill) << ", samples " << b.msaa.count()
+     << ", shading " << (b.msaa.shading == ShadingRate::kSample ? "sample" : "pixel")
+     << ", centroid rule " << (b.conventions.centroid == CentroidRule::kD3D11 ? "d3d11" : "d3d10")
+     << ", provoking " << (s.conventions.provoking == kp::Provoking::kFirst ? "first" : "last")
+     << ", line mode " << to_string(b.conventions.line_mode) << ", sample mask "
+     << b.msaa.sample_mask << ", quads " << (b.msaa.quads ? "on" : "off") << ", derivatives "
+     << to_string(b.msaa.derivatives) << "\n";
   if (s.viewport) {
     os << "  viewport ";
     kp::showValue(*s.viewport, os);
@@ -82,9 +83,9 @@ inline void show(const rastrules::Scene& s, std::ostream& os) {
   mat("projection", s.projection);
   if (s.depth) {
     const kp::DepthState& d = *s.depth;
-    os << "  depth " << pg::depth_format_name(d.format) << " " << pg::compare_name(d.func)
-       << (d.write ? " write" : " no-write") << " clear " << pg::fs(d.clear)
-       << (d.clip ? " clip" : " no-clip") << "\n";
+    os << "  depth " << pg::depth_format_name(s.conventions.depth) << " "
+       << pg::compare_name(d.func) << (d.write ? " write" : " no-write") << " clear "
+       << pg::fs(d.clear) << (d.clip ? " clip" : " no-clip") << "\n";
   }
   for (const kp::AttributeDecl& a : s.attributes)
     os << "  attribute " << a.name << " " << interpolation_name(a.interpolation) << " "

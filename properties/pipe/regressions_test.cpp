@@ -228,7 +228,7 @@ TEST(PipeRegression, HugeSlopeBiasSaturates) {
   s.width = 8;
   s.height = 8;
   s.depth = kp::DepthState{};
-  s.depth->format = kp::DepthFormat::kD16;
+  s.conventions.depth = kp::DepthFormat::kD16;
   s.depth->bias.slope_scaled = 10.0f;
   rastrules::Primitive p;
   p = rastrules::make_triangle(

@@ -73,7 +73,7 @@ rc::Gen<rastrules::Primitive> primitive(const rastrules::Scene& scene, Primitive
     rastrules::LineMode line_mode;
     std::size_t nattr;
   };
-  const State s{scene.width, scene.height, scene.line_mode, scene.attributes.size()};
+  const State s{scene.width, scene.height, scene.conventions.line_mode, scene.attributes.size()};
   return rc::gen::exec([s, type] {
     rastrules::Primitive p;
     p.type = type;
@@ -121,17 +121,19 @@ rc::Gen<rastrules::Scene> pipe_scene(std::int32_t max_side, int max_prims) {
     rastrules::Scene s;
     s.width = *rc::gen::inRange(2, max_side + 1);
     s.height = *rc::gen::inRange(2, max_side + 1);
-    s.state.cull = *rc::gen::weightedElement<CullMode>(
+    s.cull = *rc::gen::weightedElement<CullMode>(
         {{3, CullMode::kNone}, {1, CullMode::kBack}, {1, CullMode::kFront}});
-    s.state.front_face = *rc::gen::element(FrontFace::kClockwise, FrontFace::kCounterClockwise);
-    s.state.fill = *rc::gen::element(FillConvention::kTopLeft, FillConvention::kTopRight,
-                                     FillConvention::kBottomLeft, FillConvention::kBottomRight);
+    s.conventions.front_face =
+        *rc::gen::element(FrontFace::kClockwise, FrontFace::kCounterClockwise);
+    s.conventions.fill =
+        *rc::gen::element(FillConvention::kTopLeft, FillConvention::kTopRight,
+                          FillConvention::kBottomLeft, FillConvention::kBottomRight);
     const std::uint32_t n = *rc::gen::element(1u, 1u, 4u, 8u);
-    s.msaa.pattern = rastrules::standard_pattern(n);
+    set_sample_pattern(s, rastrules::standard_pattern(n));
     const bool sample_shading = n > 1 && *rc::gen::inRange(0, 4) == 0;
     s.msaa.shading =
         sample_shading ? rastrules::ShadingRate::kSample : rastrules::ShadingRate::kPixel;
-    s.msaa.centroid_rule =
+    s.conventions.centroid =
         *rc::gen::element(rastrules::CentroidRule::kD3D11, rastrules::CentroidRule::kD3D10);
     // Partial sample masks (MSAA.MASK.AND), and 2x2 quads with helper lanes, with or without the
     // derivatives that need them (MSAA.QUAD.HELPER, MSAA.QUAD.DERIVATIVES): helper lanes carry
@@ -166,7 +168,7 @@ rc::Gen<rastrules::Scene> pipe_scene(std::int32_t max_side, int max_prims) {
       s.projection = *pg::matrix();
     if (*rc::gen::inRange(0, 10) < 7) {
       kp::DepthState d;
-      d.format = *pg::depth_format();
+      s.conventions.depth = *pg::depth_format();
       d.func = *pg::compare_func();
       d.write = *rc::gen::inRange(0, 4) != 0;
       d.clear = std::min(1.0f, std::fabs(*pg::depth_value()));
@@ -175,9 +177,9 @@ rc::Gen<rastrules::Scene> pipe_scene(std::int32_t max_side, int max_prims) {
         d.bias = *pg::depth_bias_state();
       s.depth = d;
     }
-    s.provoking = *rc::gen::element(kp::Provoking::kFirst, kp::Provoking::kLast);
+    s.conventions.provoking = *rc::gen::element(kp::Provoking::kFirst, kp::Provoking::kLast);
     // Vulkan's Bresenham lines have no sample shading (MSAA.SHADING.SAMPLE).
-    s.line_mode =
+    s.conventions.line_mode =
         sample_shading
             ? *rc::gen::element(rastrules::LineMode::kD3DDiamond, rastrules::LineMode::kQuadWide,
                                 rastrules::LineMode::kQuadNarrow)
@@ -403,7 +405,7 @@ RC_GTEST_PROP(PipeStrip, EachSegmentEqualsTheSameSegmentDrawnAsALine, ()) {
   RC_CLASSIFY(!s.attributes.empty(), "attributes");
   RC_CLASSIFY(s.depth.has_value(), "depth");
   RC_CLASSIFY(oa.empty(), "no fragment");
-  RC_TAG(std::string(to_string(s.line_mode)));
+  RC_TAG(std::string(to_string(s.conventions.line_mode)));
 }
 
 } // namespace

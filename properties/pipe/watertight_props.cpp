@@ -150,7 +150,7 @@ RC_GTEST_PROP(PipeWatertight, ClippedMeshCoversEachSampleOnceInsideItsImage, ())
   rastrules::Scene s;
   s.width = m.width;
   s.height = m.height;
-  s.msaa.pattern = rastrules::standard_pattern(m.samples);
+  set_sample_pattern(s, rastrules::standard_pattern(m.samples));
   for (const auto& t : m.triangles) {
     rastrules::Primitive p;
     p.pos = {m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]};

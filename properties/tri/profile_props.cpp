@@ -64,7 +64,7 @@ RC_GTEST_PROP(Profile, BackFaceCullingRemovesWhatEachApiCallsBackFacing, ()) {
   }
   s.primitives.push_back(rastrules::make_triangle(v));
   rastrules::apply(rastrules::profile(api), s);
-  s.state.cull = rastrules::CullMode::kBack;
+  s.cull = rastrules::CullMode::kBack;
   const auto prepared = rastrules::prepare(s);
   RC_ASSERT(std::holds_alternative<rastrules::PreparedScene>(prepared));
   const rastrules::TriangleSetup& t =

@@ -86,7 +86,7 @@ TEST(Check, TheKernelAgreesAndTamperingIsNamed) {
 // rule: SCENE.OUTPUT.MSAA, MSAA.CENTROID.D3D11, MSAA.RESOLVE.AVERAGE
 TEST(Check, MultisampledScenesGoToTheMultisamplingOracle) {
   Scene s = mixed_scene();
-  s.msaa.pattern = standard_pattern(4);
+  set_sample_pattern(s, standard_pattern(4));
   s.msaa.has_centroid = true;
   ASSERT_TRUE(multisampled(s));
   const Rasterized r = run(s);
@@ -109,7 +109,7 @@ TEST(Check, MultisampledScenesGoToTheMultisamplingOracle) {
 TEST(Check, MultisampledAntialiasedLinesKeepTheirCoverageWithoutMultisampleEnable) {
   Scene s = mixed_scene();
   s.primitives[2].aa = true;
-  s.msaa.pattern = standard_pattern(4);
+  set_sample_pattern(s, standard_pattern(4));
   const Rasterized r = run(s);
   const Mismatches ok = check_against_oracle(s, r.ps, r.fragments);
   EXPECT_TRUE(ok.agree()) << (ok.mismatches.empty() ? "" : ok.mismatches.front());
@@ -124,7 +124,7 @@ TEST(Check, MultisampledAntialiasedLinesKeepTheirCoverageWithoutMultisampleEnabl
   EXPECT_TRUE(mentions(check_against_oracle(s, r.ps, tampered), "coverage"));
   line->coverage_q16.reset();
   EXPECT_TRUE(mentions(check_against_oracle(s, r.ps, tampered), "coverage missing"));
-  s.msaa.multisample_enable = true; // quadrilaterals: no coverage
+  s.conventions.multisample_enable = true; // quadrilaterals: no coverage
   const Rasterized q = run(s);
   EXPECT_TRUE(std::none_of(q.fragments.begin(), q.fragments.end(),
                            [](const Fragment& f) { return f.coverage_q16.has_value(); }));

@@ -61,10 +61,10 @@ TEST(CliMsaaSceneIo, ReadsEveryKeyIntoTheScene) {
   EXPECT_EQ(s.msaa.pattern.positions[1], (rastrules::SampleOffset{7, -8}));
   EXPECT_EQ(s.msaa.sample_mask, 5u);
   EXPECT_TRUE(s.msaa.has_centroid);
-  EXPECT_EQ(s.msaa.centroid_rule, rastrules::CentroidRule::kD3D10);
+  EXPECT_EQ(s.conventions.centroid, rastrules::CentroidRule::kD3D10);
   EXPECT_EQ(s.msaa.shading, rastrules::ShadingRate::kSample);
   EXPECT_TRUE(s.msaa.quads);
-  EXPECT_TRUE(s.msaa.multisample_enable);
+  EXPECT_TRUE(s.conventions.multisample_enable);
   EXPECT_EQ(s.msaa.derivatives, rastrules::DerivativeMode::kCoarse);
   // Written back only when set, and read back the same.
   const std::string text = rastrules::io::write_scene(s);
@@ -73,7 +73,7 @@ TEST(CliMsaaSceneIo, ReadsEveryKeyIntoTheScene) {
   ASSERT_TRUE(std::holds_alternative<rastrules::Scene>(again));
   EXPECT_TRUE(rastrules::io::same_scene(std::get<rastrules::Scene>(again), s));
   rastrules::Scene off = s;
-  off.msaa.multisample_enable = false;
+  off.conventions.multisample_enable = false;
   EXPECT_FALSE(rastrules::io::same_scene(off, s));
   EXPECT_EQ(rastrules::io::write_scene(off).find("multisample_enable"), std::string::npos);
   EXPECT_EQ(s.clear_color, (rastrules::Rgba8{1, 2, 3, 4}));
@@ -127,18 +127,18 @@ TEST(CliMsaaSceneIo, WriterRoundTripsTheKeysAndSameSceneComparesThem) {
     change(v);
     variants.push_back(v);
   };
-  variant([](rastrules::Scene& v) { v.msaa.pattern = rastrules::standard_pattern(4); });
-  variant([](rastrules::Scene& v) { v.msaa.pattern = rastrules::center_pattern(2); });
-  variant([](rastrules::Scene& v) { v.msaa.pattern = rastrules::center_pattern(1); });
+  variant([](rastrules::Scene& v) { set_sample_pattern(v, rastrules::standard_pattern(4)); });
+  variant([](rastrules::Scene& v) { set_sample_pattern(v, rastrules::center_pattern(2)); });
+  variant([](rastrules::Scene& v) { set_sample_pattern(v, rastrules::center_pattern(1)); });
   variant([](rastrules::Scene& v) {
-    v.msaa.pattern = rastrules::custom_pattern({{-8, -8}, {7, 7}});
+    set_sample_pattern(v, rastrules::custom_pattern({{-8, -8}, {7, 7}}));
   });
-  variant([](rastrules::Scene& v) { v.msaa.pattern = rastrules::custom_pattern({{0, 0}}); });
+  variant([](rastrules::Scene& v) { set_sample_pattern(v, rastrules::custom_pattern({{0, 0}})); });
   variant([](rastrules::Scene& v) { v.msaa.sample_mask = 0; });
   variant([](rastrules::Scene& v) { v.msaa.has_centroid = true; });
   variant([](rastrules::Scene& v) {
     v.msaa.has_centroid = true;
-    v.msaa.centroid_rule = rastrules::CentroidRule::kD3D10;
+    v.conventions.centroid = rastrules::CentroidRule::kD3D10;
   });
   variant([](rastrules::Scene& v) { v.msaa.shading = rastrules::ShadingRate::kSample; });
   variant([](rastrules::Scene& v) { v.msaa.quads = true; });

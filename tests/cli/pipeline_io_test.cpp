@@ -57,7 +57,6 @@ std::string error_of(const std::string& text) {
 
 // Checks every field of a depth state.
 void expect_depth_state(const pipe::DepthState& got, const pipe::DepthState& want) {
-  EXPECT_EQ(got.format, want.format);
   EXPECT_EQ(got.func, want.func);
   EXPECT_EQ(got.write, want.write);
   EXPECT_EQ(got.clear, want.clear);
@@ -92,7 +91,7 @@ TEST(PipelineSceneIo, ReadsEveryKey) {
              "attr": [[1, 2, 3], [4, 5, 6]], "color": [1, 2, 3, 4]}]})");
   EXPECT_EQ(s.width, 16);
   EXPECT_EQ(s.height, 8);
-  EXPECT_EQ(s.state.cull, rastrules::CullMode::kBack);
+  EXPECT_EQ(s.cull, rastrules::CullMode::kBack);
   EXPECT_EQ(s.msaa.pattern.count(), 4u);
   ASSERT_EQ(s.primitives.size(), 2u);
   ASSERT_TRUE(s.viewport.has_value());
@@ -105,8 +104,9 @@ TEST(PipelineSceneIo, ReadsEveryKey) {
   EXPECT_EQ((*s.projection)[14], 1.0f);
   EXPECT_EQ((*s.projection)[15], 0.0f);
   ASSERT_TRUE(s.depth.has_value());
-  expect_depth_state(*s.depth, {pipe::DepthFormat::kD16, pipe::CompareFunc::kGreaterEqual, false,
-                                0.5f, false, pipe::DepthBias{-3, 1.25f, -0.125f}});
+  EXPECT_EQ(s.conventions.depth, pipe::DepthFormat::kD16);
+  expect_depth_state(*s.depth, {pipe::CompareFunc::kGreaterEqual, false, 0.5f, false,
+                                pipe::DepthBias{-3, 1.25f, -0.125f}});
   ASSERT_EQ(s.attributes.size(), 3u);
   EXPECT_EQ(s.attributes[0].name, "u");
   EXPECT_EQ(s.attributes[0].interpolation, pipe::Interpolation::kLinear);
@@ -115,7 +115,7 @@ TEST(PipelineSceneIo, ReadsEveryKey) {
   EXPECT_EQ(s.attributes[1].location, pipe::Location::kSample);
   EXPECT_EQ(s.attributes[2].interpolation, pipe::Interpolation::kPerspective);
   EXPECT_EQ(s.attributes[2].location, pipe::Location::kCenter);
-  EXPECT_EQ(s.provoking, pipe::Provoking::kLast);
+  EXPECT_EQ(s.conventions.provoking, pipe::Provoking::kLast);
   ASSERT_EQ(s.primitives.size(), 2u);
   const rastrules::Primitive& t = s.primitives[0];
   EXPECT_EQ(t.type, rastrules::PrimitiveType::kTriangle);
@@ -150,11 +150,12 @@ TEST(PipelineSceneIo, DefaultsOfEveryKey) {
   EXPECT_FALSE(s.model || s.view || s.projection);
   ASSERT_TRUE(s.depth.has_value());
   // Every field at its default: d24, less, write, clear 1, clip, no bias.
-  expect_depth_state(*s.depth, {pipe::DepthFormat::kD24, pipe::CompareFunc::kLess, true, 1.0f, true,
-                                pipe::DepthBias{0, 0.0f, 0.0f}});
+  EXPECT_EQ(s.conventions.depth, pipe::DepthFormat::kD24);
+  expect_depth_state(*s.depth,
+                     {pipe::CompareFunc::kLess, true, 1.0f, true, pipe::DepthBias{0, 0.0f, 0.0f}});
   EXPECT_EQ(s.attributes[0].interpolation, pipe::Interpolation::kPerspective);
   EXPECT_EQ(s.attributes[0].location, pipe::Location::kCenter);
-  EXPECT_EQ(s.provoking, pipe::Provoking::kFirst);
+  EXPECT_EQ(s.conventions.provoking, pipe::Provoking::kFirst);
   EXPECT_TRUE(s.primitives[0].z.empty());
   EXPECT_TRUE(s.primitives[0].w.empty());
 
@@ -305,7 +306,7 @@ TEST(PipelineSceneIo, WriterRoundTripsAndSameSceneComparesEveryKey) {
   variant([](rastrules::Scene& v) { v.depth->bias.clamp = 0.25f; });
   variant([](rastrules::Scene& v) { v.attributes[1].location = pipe::Location::kCenter; });
   variant([](rastrules::Scene& v) { v.attributes[0].name = "u"; });
-  variant([](rastrules::Scene& v) { v.provoking = pipe::Provoking::kFirst; });
+  variant([](rastrules::Scene& v) { v.conventions.provoking = pipe::Provoking::kFirst; });
   variant([](rastrules::Scene& v) { v.primitives[0].pos[2][3] = 12.0f; });
   variant([](rastrules::Scene& v) { v.primitives[1].z[0] = 0.25f; });
   variant([](rastrules::Scene& v) { v.primitives[1].w.clear(); });

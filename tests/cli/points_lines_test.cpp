@@ -141,7 +141,7 @@ TEST(SceneModel, StripFragmentsAreSortedByPrimYXSegAndEqualTheirSegments) {
   s.height = 10;
   for (const LineMode mode : {LineMode::kD3DDiamond, LineMode::kVulkanBresenham,
                               LineMode::kQuadWide, LineMode::kQuadNarrow}) {
-    s.line_mode = mode;
+    s.conventions.line_mode = mode;
     s.primitives.clear();
     rastrules::Primitive strip;
     strip.type = PrimitiveType::kLineStrip;
@@ -247,9 +247,9 @@ TEST(SceneModel, PrepareRejectsWhatTheReaderRejects) {
   p.type = PrimitiveType::kLine;
   p.v = {{1.0f, 1.0f}, {5.0f, 2.0f}};
   s.primitives = {p};
-  s.line_mode = LineMode::kVulkanBresenham;
+  s.conventions.line_mode = LineMode::kVulkanBresenham;
   EXPECT_EQ(std::get<rastrules::SceneError>(rastrules::render(s)).field, "primitives[0].aa");
-  s.line_mode = LineMode::kD3DDiamond;
+  s.conventions.line_mode = LineMode::kD3DDiamond;
   EXPECT_TRUE(std::holds_alternative<std::vector<Fragment>>(rastrules::render(s)));
   // The point range: the largest centre whose square fits, and one subpixel beyond it.
   p = rastrules::Primitive{};
@@ -281,7 +281,7 @@ TEST(SceneIo, PointsLinesStripsAndLineModeRoundTrip) {
         << std::get<rastrules::SceneError>(first).what();
     const auto& s = std::get<rastrules::Scene>(first);
     ASSERT_EQ(s.primitives.size(), 4u);
-    EXPECT_EQ(rastrules::io::line_mode_name(s.line_mode), mode);
+    EXPECT_EQ(rastrules::io::line_mode_name(s.conventions.line_mode), mode);
     EXPECT_EQ(s.primitives[0].type, PrimitiveType::kPoint);
     EXPECT_EQ(s.primitives[1].aa, !aa.empty());
     EXPECT_EQ(s.primitives[2].v.size(), 4u);

@@ -95,9 +95,9 @@ TEST(SceneFormatV1, OptionalKeysTakeTheirDefaults) {
   const Scene s = read_ok(R"({"target": {"width": 16, "height": 8}, "primitives": []})");
   EXPECT_EQ(s.width, 16);
   EXPECT_EQ(s.height, 8);
-  EXPECT_EQ(s.state.cull, rastrules::CullMode::kNone);
-  EXPECT_EQ(s.state.front_face, rastrules::FrontFace::kClockwise);
-  EXPECT_EQ(s.state.fill, rastrules::FillConvention::kTopLeft);
+  EXPECT_EQ(s.cull, rastrules::CullMode::kNone);
+  EXPECT_EQ(s.conventions.front_face, rastrules::FrontFace::kClockwise);
+  EXPECT_EQ(s.conventions.fill, rastrules::FillConvention::kTopLeft);
   EXPECT_TRUE(s.primitives.empty());
 }
 
@@ -113,9 +113,9 @@ TEST(SceneFormatV1, EveryKeyOfTheSpecExampleIsRead) {
       {"type": "triangle", "v": [[1.0, 1.0], [9.5, 2.0], [2.0, 7.25]]}
     ]
   })");
-  EXPECT_EQ(s.state.cull, rastrules::CullMode::kFront);
-  EXPECT_EQ(s.state.front_face, rastrules::FrontFace::kCounterClockwise);
-  EXPECT_EQ(s.state.fill, rastrules::FillConvention::kBottomRight);
+  EXPECT_EQ(s.cull, rastrules::CullMode::kFront);
+  EXPECT_EQ(s.conventions.front_face, rastrules::FrontFace::kCounterClockwise);
+  EXPECT_EQ(s.conventions.fill, rastrules::FillConvention::kBottomRight);
   ASSERT_EQ(s.primitives.size(), 1u);
   EXPECT_EQ(s.primitives[0].v[1][0], 9.5f);
   EXPECT_EQ(s.primitives[0].v[2][1], 7.25f);
@@ -126,8 +126,8 @@ TEST(SceneFormatV1, WrittenScenesReadBackBitForBit) {
   Scene s;
   s.width = 7;
   s.height = 3;
-  s.state.cull = rastrules::CullMode::kBack;
-  s.state.fill = rastrules::FillConvention::kTopRight;
+  s.cull = rastrules::CullMode::kBack;
+  s.conventions.fill = rastrules::FillConvention::kTopRight;
   const float values[] = {0.1f,
                           -0.0f,
                           1e-45f,
@@ -159,8 +159,8 @@ TEST(SceneFormatV1, WrittenScenesReadBackBitForBit) {
       }
     }
   }
-  EXPECT_EQ(back.state.cull, rastrules::CullMode::kBack);
-  EXPECT_EQ(back.state.fill, rastrules::FillConvention::kTopRight);
+  EXPECT_EQ(back.cull, rastrules::CullMode::kBack);
+  EXPECT_EQ(back.conventions.fill, rastrules::FillConvention::kTopRight);
 }
 
 // rule: SCENE.INPUT.ERRORS

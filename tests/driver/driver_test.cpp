@@ -39,7 +39,7 @@ TEST(ReferenceDriver, MatchesTheKernelWithoutUnobservableFields) {
   Scene s;
   s.width = 8;
   s.height = 8;
-  s.msaa.pattern = standard_pattern(4);
+  set_sample_pattern(s, standard_pattern(4));
   s.msaa.has_centroid = true;
   s.msaa.derivatives = DerivativeMode::kFine;
   s.primitives.push_back(make_triangle({{{0.5F, 0.5F}, {6.0F, 1.0F}, {2.0F, 7.0F}}}));

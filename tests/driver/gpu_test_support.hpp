@@ -87,7 +87,7 @@ inline Scene scene(std::int32_t w, std::int32_t h, std::uint32_t samples = 1) {
   Scene s;
   s.width = w;
   s.height = h;
-  s.msaa.pattern = standard_pattern(samples);
+  set_sample_pattern(s, standard_pattern(samples));
   return s;
 }
 
@@ -95,7 +95,7 @@ inline Scene scene(std::int32_t w, std::int32_t h, std::uint32_t samples = 1) {
 inline Scene line_scene(std::int32_t w, std::int32_t h, std::uint32_t samples, LineMode mode,
                         std::vector<Primitive> prims) {
   Scene s = scene(w, h, samples);
-  s.line_mode = mode;
+  s.conventions.line_mode = mode;
   s.primitives = std::move(prims);
   return s;
 }

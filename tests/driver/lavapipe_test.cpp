@@ -69,19 +69,19 @@ TEST(Lavapipe, NamesWhatItCannotDraw) {
   Scene s = scene(8, 8);
   s.primitives.push_back(line({0.5F, 0.5F}, {5.5F, 2.5F}));
   EXPECT_NE(d->unsupported(s).find("d3d"), std::string::npos); // default line mode
-  s.line_mode = LineMode::kQuadWide;
+  s.conventions.line_mode = LineMode::kQuadWide;
   EXPECT_NE(d->unsupported(s).find("quad-wide"), std::string::npos);
-  s.line_mode = LineMode::kVulkanBresenham;
+  s.conventions.line_mode = LineMode::kVulkanBresenham;
   EXPECT_EQ(d->unsupported(s), "");
   // Triangles and points do not depend on the line mode.
   Scene t = scene(8, 8);
   t.primitives.push_back(prim(PrimitiveType::kPoint, {{2.0F, 2.0F}}));
   EXPECT_EQ(d->unsupported(t), "");
-  t.msaa.pattern = center_pattern(4);
+  set_sample_pattern(t, center_pattern(4));
   EXPECT_NE(d->unsupported(t).find("center"), std::string::npos);
-  t.msaa.pattern = standard_pattern(16);
+  set_sample_pattern(t, standard_pattern(16));
   EXPECT_NE(d->unsupported(t).find("16 samples"), std::string::npos);
-  t.msaa.pattern = standard_pattern(4);
+  set_sample_pattern(t, standard_pattern(4));
   t.msaa.shading = ShadingRate::kSample;
   EXPECT_NE(d->unsupported(t).find("sample-frequency"), std::string::npos);
   t.msaa.shading = ShadingRate::kPixel;
@@ -139,8 +139,8 @@ TEST(Lavapipe, CullingMapsWindingDirectly) {
   for (FrontFace front : {FrontFace::kClockwise, FrontFace::kCounterClockwise}) {
     for (CullMode cull : {CullMode::kBack, CullMode::kFront}) {
       Scene s = scene(8, 8);
-      s.state.cull = cull;
-      s.state.front_face = front;
+      s.cull = cull;
+      s.conventions.front_face = front;
       // Clockwise on screen (y down), then counter-clockwise.
       s.primitives.push_back(make_triangle({{{0.5F, 0.5F}, {6.5F, 0.5F}, {0.5F, 6.5F}}}));
       s.primitives.push_back(make_triangle({{{7.5F, 1.5F}, {7.5F, 7.5F}, {1.5F, 7.5F}}}));
@@ -158,7 +158,7 @@ TEST(Lavapipe, PointsMatchTheReference) {
   s.primitives.push_back(prim(PrimitiveType::kPoint, {{7.75F, 0.25F}}));
   expect_same_as_reference(s);
   Scene m = s;
-  m.msaa.pattern = standard_pattern(4);
+  set_sample_pattern(m, standard_pattern(4));
   m.primitives.push_back(prim(PrimitiveType::kPoint, {{6.125F, 1.5F}})); // samples on the edges
   expect_same_as_reference(m);
 }
@@ -194,7 +194,7 @@ TEST(Lavapipe, PointPositionTiesRoundUp) {
 // rule: DRIVER.LAVAPIPE.COVERAGE
 TEST(Lavapipe, BresenhamLinesMatchTheReferenceAwayFromTies) {
   Scene s = scene(12, 12);
-  s.line_mode = LineMode::kVulkanBresenham;
+  s.conventions.line_mode = LineMode::kVulkanBresenham;
   s.primitives.push_back(line({0.5F, 1.5F}, {10.5F, 5.5F}));
   s.primitives.push_back(line({5.5F, 2.5F}, {3.5F, 10.5F}));
   s.primitives.push_back(line({10.25F, 10.125F}, {1.375F, 7.0625F}));
@@ -261,7 +261,7 @@ TEST(Lavapipe, BresenhamEndsDeviateWithinVulkanAllowance) {
   int differ = 0;
   for (int n = 0; n < 150; ++n) {
     Scene s = scene(16, 16);
-    s.line_mode = LineMode::kVulkanBresenham;
+    s.conventions.line_mode = LineMode::kVulkanBresenham;
     const FloatPoint p{coord(), coord()};
     const FloatPoint q{coord(), coord()};
     s.primitives.push_back(line(p, q));
@@ -284,7 +284,7 @@ TEST(Lavapipe, LineStripIsItsSegmentsWithTheirIndex) {
   RASTRULES_LAVAPIPE_OR_SKIP(d);
   for (LineMode mode : {LineMode::kVulkanBresenham, LineMode::kQuadNarrow}) {
     Scene s = scene(12, 12);
-    s.line_mode = mode;
+    s.conventions.line_mode = mode;
     // Segments: x-major to the right, y-major downwards, x-major to the left, all from and to
     // pixel centres (lavapipe drops the first pixel of a y-major segment going up from a
     // centre, FINDING.LAVAPIPE.BRESENHAM).
@@ -293,7 +293,7 @@ TEST(Lavapipe, LineStripIsItsSegmentsWithTheirIndex) {
     s.primitives.push_back(prim(PrimitiveType::kLineStrip, v));
     const auto strip = draw_ok(*d, s);
     Scene t = scene(12, 12);
-    t.line_mode = mode;
+    t.conventions.line_mode = mode;
     for (std::size_t k = 0; k + 1 < v.size(); ++k)
       t.primitives.push_back(line(v[k], v[k + 1]));
     std::vector<Fragment> lines;
@@ -318,13 +318,13 @@ TEST(Lavapipe, LineStripIsItsSegmentsWithTheirIndex) {
 // rule: DRIVER.LAVAPIPE.COVERAGE
 TEST(Lavapipe, RectangularLinesMatchTheReference) {
   Scene s = scene(12, 12);
-  s.line_mode = LineMode::kQuadNarrow;
+  s.conventions.line_mode = LineMode::kQuadNarrow;
   s.primitives.push_back(line({0.5F, 1.25F}, {10.5F, 5.25F}));
   s.primitives.push_back(line({3.0F, 10.0F}, {5.0F, 2.0F}));
   s.primitives.push_back(line({0.5F, 3.0F}, {4.5F, 3.0F})); // edges through centres
   expect_same_as_reference(s);
   Scene m = s;
-  m.msaa.pattern = standard_pattern(4);
+  set_sample_pattern(m, standard_pattern(4));
   expect_same_as_reference(m);
 }
 

@@ -40,7 +40,7 @@ using gpu_test::scene;
 
 // The reference under llvmpipe's tie rule (FINDING.OPENGL.FILL_BOTTOM_LEFT).
 std::vector<Fragment> reference_bottom_left(Scene s) {
-  s.state.fill = FillConvention::kBottomLeft;
+  s.conventions.fill = FillConvention::kBottomLeft;
   return reference(s);
 }
 
@@ -72,11 +72,11 @@ TEST(OpenGL, NamesWhatItCannotDraw) {
   Scene s = scene(8, 8);
   s.primitives.push_back(line({0.5F, 0.5F}, {5.5F, 2.5F}));
   EXPECT_NE(d->unsupported(s).find("d3d"), std::string::npos); // default line mode
-  s.line_mode = LineMode::kVulkanBresenham;
+  s.conventions.line_mode = LineMode::kVulkanBresenham;
   EXPECT_EQ(d->unsupported(s), "");
-  s.msaa.pattern = standard_pattern(4);
+  set_sample_pattern(s, standard_pattern(4));
   EXPECT_NE(d->unsupported(s).find("rectangles"), std::string::npos);
-  s.line_mode = LineMode::kQuadNarrow;
+  s.conventions.line_mode = LineMode::kQuadNarrow;
   EXPECT_EQ(d->unsupported(s), "");
   Scene t = scene(8, 8);
   t.primitives.push_back(prim(PrimitiveType::kPoint, {{2.0F, 2.0F}}));
@@ -84,11 +84,11 @@ TEST(OpenGL, NamesWhatItCannotDraw) {
   EXPECT_NE(d->unsupported(t).find("sample mask"), std::string::npos);
   t.msaa.sample_mask = 0xFFFFFFFFU;
   EXPECT_EQ(d->unsupported(t), "");
-  t.msaa.pattern = center_pattern(4);
+  set_sample_pattern(t, center_pattern(4));
   EXPECT_NE(d->unsupported(t).find("center"), std::string::npos);
-  t.msaa.pattern = standard_pattern(8);
+  set_sample_pattern(t, standard_pattern(8));
   EXPECT_NE(d->unsupported(t).find("8 samples"), std::string::npos);
-  t.msaa.pattern = standard_pattern(4);
+  set_sample_pattern(t, standard_pattern(4));
   t.msaa.shading = ShadingRate::kSample;
   EXPECT_NE(d->unsupported(t).find("sample-frequency"), std::string::npos);
   t.msaa.shading = ShadingRate::kPixel;
@@ -145,8 +145,8 @@ TEST(OpenGL, CullingWithBothFrontFaces) {
   for (FrontFace front : {FrontFace::kClockwise, FrontFace::kCounterClockwise}) {
     for (CullMode cull : {CullMode::kBack, CullMode::kFront}) {
       Scene s = scene(8, 8);
-      s.state.cull = cull;
-      s.state.front_face = front;
+      s.cull = cull;
+      s.conventions.front_face = front;
       s.primitives.push_back(
           make_triangle({{{0.3F, 0.2F}, {6.7F, 0.4F}, {0.2F, 6.6F}}})); // clockwise
       s.primitives.push_back(
@@ -173,7 +173,7 @@ TEST(OpenGL, PointsFollowTheBottomLeftRule) {
   s.primitives.push_back(prim(PrimitiveType::kPoint, {{4.0F, 4.0F}})); // edges through centres
   EXPECT_EQ(describe(draw_ok(*d, s)), describe(reference_bottom_left(s)));
   Scene m = s;
-  m.msaa.pattern = standard_pattern(4);
+  set_sample_pattern(m, standard_pattern(4));
   m.primitives.push_back(prim(PrimitiveType::kPoint, {{6.125F, 1.5F}})); // samples on the edges
   EXPECT_EQ(describe(draw_ok(*d, m)), describe(reference_bottom_left(m)));
 }
@@ -197,7 +197,7 @@ TEST(OpenGL, PointPositionTiesRoundUp) {
 // rule: DRIVER.OPENGL.COVERAGE, DRIVER.OPENGL.SUPPORT
 TEST(OpenGL, LinesAwayFromTiesMatchTheReference) {
   Scene s = scene(8, 8);
-  s.line_mode = LineMode::kVulkanBresenham;
+  s.conventions.line_mode = LineMode::kVulkanBresenham;
   s.primitives.push_back(line({0.5F, 1.5F}, {6.5F, 1.5F}));
   s.primitives.push_back(line({1.5F, 0.5F}, {1.5F, 6.5F}));
   s.primitives.push_back(line({0.5F, 0.5F}, {6.5F, 3.5F}));
@@ -232,7 +232,7 @@ TEST(OpenGL, LineStripIsItsSegments) {
   const auto coord = [&] { return static_cast<float>(rng() % 33U) / 4.0F; };
   for (int c = 0; c < 40; ++c) {
     Scene strip = scene(8, 8);
-    strip.line_mode = LineMode::kVulkanBresenham;
+    strip.conventions.line_mode = LineMode::kVulkanBresenham;
     std::vector<FloatPoint> v;
     for (int i = 0; i < 4; ++i)
       v.push_back({coord(), coord()});
@@ -270,7 +270,7 @@ TEST(OpenGL, Msaa4LinesAreRectangles) {
   };
   for (int c = 0; c < 100; ++c) {
     Scene s = scene(8, 8, 4);
-    s.line_mode = LineMode::kQuadNarrow;
+    s.conventions.line_mode = LineMode::kQuadNarrow;
     const FloatPoint a{coord(), coord()};
     s.primitives.push_back(line(a, point(a)));
     const FloatPoint b{coord(), coord()};

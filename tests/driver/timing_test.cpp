@@ -98,7 +98,7 @@ TEST(LavapipeTiming, OcclusionCountEqualsTheReferenceOnTieFreeScenes) {
   for (const std::uint32_t seed : {1U, 2U, 3U}) {
     Scene s = tie_free_scene(96, 80, 300, seed);
     for (const CullMode cull : {CullMode::kNone, CullMode::kBack, CullMode::kFront}) {
-      s.state.cull = cull;
+      s.cull = cull;
       const std::uint64_t want = reference_count(s);
       ASSERT_GT(want, 1000U);
       const CoverageTiming t = time_lavapipe_coverage(s, 3);
@@ -170,10 +170,10 @@ TEST(LavapipeTiming, ScenesItDoesNotTimeAreNotAvailableWithAReason) {
   points.primitives.insert(points.primitives.begin(), point);
   expect_refused(points, 3, "primitives[0] is a point");
   Scene msaa = tie_free_scene(16, 16, 3, 6);
-  msaa.msaa.pattern = standard_pattern(4);
+  set_sample_pattern(msaa, standard_pattern(4));
   expect_refused(msaa, 3, "single-sample only");
   Scene fill = tie_free_scene(16, 16, 3, 6);
-  fill.state.fill = FillConvention::kBottomRight;
+  fill.conventions.fill = FillConvention::kBottomRight;
   expect_refused(fill, 3, "fill convention bottom-right");
   Scene nan = tie_free_scene(16, 16, 3, 6);
   nan.primitives[1].v[2][1] = std::numeric_limits<float>::quiet_NaN();

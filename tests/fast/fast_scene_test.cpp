@@ -86,7 +86,7 @@ TEST(FastScene, DefaultOptionsRenderWhatThePlainTraversalRenders) {
   Scene s = mixed_scene(64, 48);
   expect_traversals_agree(s);
   for (LineMode m : {LineMode::kQuadWide, LineMode::kQuadNarrow, LineMode::kVulkanBresenham}) {
-    s.line_mode = m;
+    s.conventions.line_mode = m;
     for (auto& p : s.primitives)
       p.aa = false;
     expect_traversals_agree(s);
@@ -100,11 +100,11 @@ TEST(FastScene, DefaultOptionsRenderWhatThePlainTraversalRenders) {
 TEST(FastScene, MultisampledScenesWithMasksCentroidsAndQuads) {
   for (std::uint32_t n : {2u, 4u, 8u, 16u}) {
     Scene s = mixed_scene(64, 48); // diamond lines become quadrilaterals with several samples
-    s.msaa.pattern = standard_pattern(n);
+    set_sample_pattern(s, standard_pattern(n));
     expect_traversals_agree(s);
     s.msaa.sample_mask = full_mask(n) & 0x5555u;
     s.msaa.has_centroid = true;
-    s.msaa.centroid_rule = CentroidRule::kD3D10;
+    s.conventions.centroid = CentroidRule::kD3D10;
     s.msaa.quads = true;
     s.msaa.derivatives = DerivativeMode::kFine;
     expect_traversals_agree(s);
@@ -113,13 +113,13 @@ TEST(FastScene, MultisampledScenesWithMasksCentroidsAndQuads) {
     expect_traversals_agree(s);
   }
   Scene c = mixed_scene(40, 40);
-  c.line_mode = LineMode::kVulkanBresenham;
+  c.conventions.line_mode = LineMode::kVulkanBresenham;
   for (auto& p : c.primitives)
     p.aa = false;
-  c.msaa.pattern = center_pattern(4);
+  set_sample_pattern(c, center_pattern(4));
   expect_traversals_agree(c);
-  c.msaa.pattern = custom_pattern({{-8, -8}, {7, 3}, {2, 7}});
-  c.line_mode = LineMode::kD3DDiamond;
+  set_sample_pattern(c, custom_pattern({{-8, -8}, {7, 3}, {2, 7}}));
+  c.conventions.line_mode = LineMode::kD3DDiamond;
   expect_traversals_agree(c);
 }
 
@@ -133,7 +133,7 @@ TEST(FastScene, LargeTargetsAndTheBoundedPath) {
       prim(PrimitiveType::kPoint, {{16383.75f, 299.5f}}),
       prim(PrimitiveType::kLine, {{16200.0f, 5.0f}, {16384.0f, 250.0f}}),
   };
-  s.line_mode = LineMode::kQuadWide;
+  s.conventions.line_mode = LineMode::kQuadWide;
   expect_traversals_agree(s);
   // A bound of zero entries for a collected primitive (the point): both traversals refuse it the
   // same way.

@@ -25,8 +25,8 @@ TEST(Generate, SameSeedAndIndexGiveTheSameSceneWhateverElseWasDrawn) {
   ASSERT_TRUE(a && b && c);
   EXPECT_EQ(io::write_scene(a->scene), io::write_scene(b->scene));
   EXPECT_NE(io::write_scene(a->scene), io::write_scene(c->scene));
-  EXPECT_EQ(a->scene.line_mode, LineMode::kVulkanBresenham);
-  EXPECT_EQ(a->scene.state.fill, FillConvention::kTopLeft);
+  EXPECT_EQ(a->scene.conventions.line_mode, LineMode::kVulkanBresenham);
+  EXPECT_EQ(a->scene.conventions.fill, FillConvention::kTopLeft);
 }
 
 // rule: FUZZ.GENERATE

@@ -70,7 +70,7 @@ TEST(LineDecision, EveryPixelsRecordAgreesWithTheRasterizedFragments) {
         Scene scene;
         scene.width = 10;
         scene.height = 8;
-        scene.line_mode = mode;
+        scene.conventions.line_mode = mode;
         scene.primitives = test::tie_heavy_primitives(type, 8, seed++, 10, 8, steps);
         EXPECT_EQ(test::decision_disagreement(test::prepared(scene)), "")
             << "line_mode " << to_string(mode) << ", " << to_string(type) << ", grid 1/" << steps

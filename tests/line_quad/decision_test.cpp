@@ -20,8 +20,8 @@ TEST(LineQuadDecision, ACentreOnTheDiagonalOfTheRectangleIsCoveredByOneTriangle)
   Scene scene;
   scene.width = 8;
   scene.height = 5;
-  scene.line_mode = LineMode::kQuadNarrow;
-  scene.state.cull = CullMode::kFront;
+  scene.conventions.line_mode = LineMode::kQuadNarrow;
+  scene.cull = CullMode::kFront;
   Primitive line;
   line.type = PrimitiveType::kLine;
   line.v = {{0.5f, 2.5f}, {6.5f, 2.5f}};
@@ -45,9 +45,9 @@ TEST(LineQuadDecision, EveryPixelsRecordAgreesWithTheRasterizedFragments) {
         Scene scene;
         scene.width = 10;
         scene.height = 9;
-        scene.line_mode = mode;
-        scene.state.fill = fill;
-        scene.state.cull = CullMode::kBack;
+        scene.conventions.line_mode = mode;
+        scene.conventions.fill = fill;
+        scene.cull = CullMode::kBack;
         scene.primitives = test::tie_heavy_primitives(type, 6, seed++, 10, 9);
         EXPECT_EQ(test::decision_disagreement(test::prepared(scene)), "")
             << "line_mode " << to_string(mode) << ", " << to_string(type) << ", fill "

@@ -191,8 +191,8 @@ const MaskMap kWideLine4x = {{{0, 1}, 0b1000}, {{1, 1}, 0b1000}, {{2, 1}, 0b1000
 TEST(LineMode, D3DLinesWithMultisampleEnableBecomeQuadrilateralLinesPerSample) {
   const Primitive line = prim_px(PrimitiveType::kLine, {{0.5f, 2.5f}, {3.5f, 2.5f}});
   Scene s = msaa_scene(5, 5, four(), {line});
-  s.line_mode = LineMode::kD3DDiamond;
-  s.msaa.multisample_enable = true;
+  s.conventions.line_mode = LineMode::kD3DDiamond;
+  s.conventions.multisample_enable = true;
   EXPECT_EQ(masks_of(frags_of(s)), kWideLine4x);
   // Antialiased: the same, with no coverage value.
   Primitive aa = line;
@@ -204,9 +204,9 @@ TEST(LineMode, D3DLinesWithMultisampleEnableBecomeQuadrilateralLinesPerSample) {
     EXPECT_FALSE(fr.coverage_q16.has_value());
   // quad-wide is the same rectangle, whatever MultisampleEnable says.
   s.primitives = {line};
-  s.line_mode = LineMode::kQuadWide;
+  s.conventions.line_mode = LineMode::kQuadWide;
   EXPECT_EQ(masks_of(frags_of(s)), kWideLine4x);
-  s.msaa.multisample_enable = false;
+  s.conventions.multisample_enable = false;
   EXPECT_EQ(masks_of(frags_of(s)), kWideLine4x);
   // With one sample nothing changes: the D3D aliased line stays aliased.
   Scene one = msaa_scene(5, 5, MultisampleState{}, {line});
@@ -221,8 +221,8 @@ TEST(LineMode, D3DLinesWithMultisampleEnableBecomeQuadrilateralLinesPerSample) {
 TEST(LineMode, D3DLinesWithoutMultisampleEnableHitEverySampleOfTheirPixels) {
   const Primitive line = prim_px(PrimitiveType::kLine, {{0.5f, 1.5f}, {4.5f, 1.5f}});
   Scene s = msaa_scene(8, 4, four(), {line});
-  s.line_mode = LineMode::kD3DDiamond;
-  ASSERT_FALSE(s.msaa.multisample_enable); // the default, D3D11's
+  s.conventions.line_mode = LineMode::kD3DDiamond;
+  ASSERT_FALSE(s.conventions.multisample_enable); // the default, D3D11's
   EXPECT_EQ(masks_of(frags_of(s)),
             (MaskMap{{{0, 1}, 0xF}, {{1, 1}, 0xF}, {{2, 1}, 0xF}, {{3, 1}, 0xF}}));
   // The same pixels as with one sample, each with the masked pattern.
@@ -231,7 +231,7 @@ TEST(LineMode, D3DLinesWithoutMultisampleEnableHitEverySampleOfTheirPixels) {
   EXPECT_EQ(keys_of(frags_of(s)), keys_of(frags_of(one), 0b0101u));
   // With MultisampleEnable: the quadrilateral the issue saw.
   s.msaa.sample_mask = 0xFFFFFFFFu;
-  s.msaa.multisample_enable = true;
+  s.conventions.multisample_enable = true;
   EXPECT_EQ(masks_of(frags_of(s)), (MaskMap{{{0, 0}, 8},
                                             {{1, 0}, 8},
                                             {{2, 0}, 8},
@@ -269,7 +269,7 @@ TEST(LineMode, BresenhamPixelsGetTheWholeMaskedPattern) {
   const Primitive strip =
       prim_px(PrimitiveType::kLineStrip, {{0.5f, 0.5f}, {4.5f, 2.5f}, {1.5f, 4.5f}});
   Scene one = msaa_scene(6, 6, MultisampleState{}, {strip});
-  one.line_mode = LineMode::kVulkanBresenham;
+  one.conventions.line_mode = LineMode::kVulkanBresenham;
   const auto single = frags_of(one);
   Scene s = one;
   s.msaa = four();

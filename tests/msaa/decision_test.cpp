@@ -20,7 +20,7 @@ TEST(MsaaDecision, AHalfCoveredPixelsRecordHasTheMaskCentroidAndHelpersOfItsFrag
   // The triangle (1, 1) -> (2, 1) -> (1, 2) covers the standard 4x samples 0 (-2, -6)/16 and
   // 2 (-6, 2)/16 of pixel (1, 1), left of the diagonal x + y = 3, and no other sample.
   Scene scene = test::scene_px(4, 4, RasterState{}, {{{{1, 1}, {2, 1}, {1, 2}}}});
-  scene.msaa.pattern = standard_pattern(4);
+  set_sample_pattern(scene, standard_pattern(4));
   scene.msaa.has_centroid = true;
   scene.msaa.quads = true;
   const PreparedScene s = test::prepared(scene);
@@ -46,16 +46,25 @@ TEST(MsaaDecision, AHalfCoveredPixelsRecordHasTheMaskCentroidAndHelpersOfItsFrag
   EXPECT_EQ(test::decision_disagreement(s), "");
 }
 
+// A multisample state and the centroid rule (a convention) it is checked with.
+struct MsaaState {
+  MultisampleState ms;
+  CentroidRule centroid = CentroidRule::kD3D11;
+};
+
 // A scene of every primitive kind (antialiased lines only in the D3D line mode; no Bresenham
 // lines under sample shading, which the scene format rejects) under ms.
-Scene msaa_scene(const MultisampleState& ms, LineMode mode, std::uint32_t seed) {
+Scene msaa_scene(const MsaaState& st, LineMode mode, std::uint32_t seed) {
+  const MultisampleState& ms = st.ms;
   const bool lines = mode != LineMode::kVulkanBresenham || ms.shading != ShadingRate::kSample;
   Scene scene;
   scene.width = 9;
   scene.height = 8;
-  scene.line_mode = mode;
+  scene.conventions.line_mode = mode;
   scene.msaa = ms;
-  scene.state.cull = CullMode::kBack;
+  scene.conventions.pattern = ms.pattern.kind;
+  scene.conventions.centroid = st.centroid;
+  scene.cull = CullMode::kBack;
   for (const auto& [type, n] : {std::pair{PrimitiveType::kTriangle, std::size_t{6}},
                                 {PrimitiveType::kPoint, std::size_t{4}},
                                 {PrimitiveType::kLine, std::size_t{3}},
@@ -77,41 +86,39 @@ Scene msaa_scene(const MultisampleState& ms, LineMode mode, std::uint32_t seed) 
 }
 
 // The multisample states the agreement is checked under.
-std::vector<MultisampleState> states() {
-  std::vector<MultisampleState> out;
+std::vector<MsaaState> states() {
+  std::vector<MsaaState> out;
   MultisampleState a; // 4x, partial mask, D3D11 centroid, pixel shading, quads
   a.pattern = standard_pattern(4);
   a.sample_mask = 0b1011u;
   a.has_centroid = true;
   a.quads = true;
-  out.push_back(a);
+  out.push_back({a});
   MultisampleState b = a; // D3D10 centroid, full mask, sample shading
   b.sample_mask = 0xFFFFFFFFu;
-  b.centroid_rule = CentroidRule::kD3D10;
   b.shading = ShadingRate::kSample;
-  out.push_back(b);
+  out.push_back({b, CentroidRule::kD3D10});
   MultisampleState c; // 8x, fine derivatives (quads), D3D10 centroid under a partial mask
   c.pattern = standard_pattern(8);
   c.derivatives = DerivativeMode::kFine;
   c.has_centroid = true;
-  c.centroid_rule = CentroidRule::kD3D10;
   c.sample_mask = 0b01100110u;
-  out.push_back(c);
+  out.push_back({c, CentroidRule::kD3D10});
   MultisampleState d; // 2x, one sample masked away, no centroid
   d.pattern = standard_pattern(2);
   d.sample_mask = 0b10u;
-  out.push_back(d);
+  out.push_back({d});
   MultisampleState e; // a custom pattern of 3 samples, sample shading, quads
   e.pattern = custom_pattern({SampleOffset{0, 0}, SampleOffset{-8, -8}, SampleOffset{7, 3}});
   e.shading = ShadingRate::kSample;
   e.quads = true;
-  out.push_back(e);
+  out.push_back({e});
   MultisampleState f; // one sample at the centre, with a centroid: the multisampled path
   f.has_centroid = true;
-  out.push_back(f);
+  out.push_back({f});
   MultisampleState g; // 16x, every sample
   g.pattern = standard_pattern(16);
-  out.push_back(g);
+  out.push_back({g});
   return out;
 }
 
@@ -120,7 +127,7 @@ std::vector<MultisampleState> states() {
 // rule: MSAA.POINT.PER_SAMPLE
 TEST(MsaaDecision, EveryPixelsRecordAgreesWithTheRasterizedFragments) {
   std::uint32_t seed = 41;
-  const std::vector<MultisampleState> all = states();
+  const std::vector<MsaaState> all = states();
   for (std::size_t i = 0; i < all.size(); ++i) {
     for (const LineMode mode :
          {LineMode::kD3DDiamond, LineMode::kVulkanBresenham, LineMode::kQuadNarrow}) {

@@ -87,8 +87,9 @@ TEST(Limits, SampleMaskHasNoBitsBeyondThePattern) {
 TEST(Limits, EnumerationsOutsideTheirValues) {
   MultisampleState ms;
   ms.has_centroid = true;
-  ms.centroid_rule = static_cast<CentroidRule>(7);
-  EXPECT_EQ(error_of(with(ms)).field, "centroid");
+  Scene bad_rule = with(ms);
+  bad_rule.conventions.centroid = static_cast<CentroidRule>(7);
+  EXPECT_EQ(error_of(bad_rule).field, "centroid");
   ms = MultisampleState{};
   ms.shading = static_cast<ShadingRate>(7);
   EXPECT_EQ(error_of(with(ms)).field, "shading");
@@ -105,24 +106,24 @@ TEST(Limits, EnumerationsOutsideTheirValues) {
 // rule: MSAA.LINE.MODE, MSAA.LIMITS
 TEST(Limits, QuadrilateralLinesOnACentrePatternOfSeveralSamples) {
   Scene s = with(with_pattern(center_pattern(4)), {line()});
-  s.line_mode = LineMode::kQuadWide;
+  s.conventions.line_mode = LineMode::kQuadWide;
   const SceneError e = error_of(s);
   EXPECT_EQ(e.field, "sample_pattern");
   EXPECT_NE(e.message.find("primitives[0]"), std::string::npos);
   // D3D lines become quadrilateral lines with more than one sample and MultisampleEnable: also
   // rejected; without it they keep their own rasterizer and are accepted.
-  s.line_mode = LineMode::kD3DDiamond;
-  s.msaa.multisample_enable = true;
+  s.conventions.line_mode = LineMode::kD3DDiamond;
+  s.conventions.multisample_enable = true;
   EXPECT_EQ(error_of(s).field, "sample_pattern");
-  s.msaa.multisample_enable = false;
+  s.conventions.multisample_enable = false;
   EXPECT_TRUE(std::holds_alternative<PreparedScene>(prepare(s)));
   // One sample, Bresenham lines, or no line: accepted.
   s.msaa = with_pattern(center_pattern(1));
   EXPECT_TRUE(std::holds_alternative<PreparedScene>(prepare(s)));
   s.msaa = with_pattern(center_pattern(4));
-  s.line_mode = LineMode::kVulkanBresenham;
+  s.conventions.line_mode = LineMode::kVulkanBresenham;
   EXPECT_TRUE(std::holds_alternative<PreparedScene>(prepare(s)));
-  s.line_mode = LineMode::kQuadNarrow;
+  s.conventions.line_mode = LineMode::kQuadNarrow;
   s.primitives = {prim_px(PrimitiveType::kPoint, {{1, 1}})};
   EXPECT_TRUE(std::holds_alternative<PreparedScene>(prepare(s)));
 }
@@ -132,12 +133,12 @@ TEST(Limits, SampleShadingOfBresenhamLinesWithSeveralSamples) {
   MultisampleState ms = with_pattern(standard_pattern(4));
   ms.shading = ShadingRate::kSample;
   Scene s = with(ms, {line()});
-  s.line_mode = LineMode::kVulkanBresenham;
+  s.conventions.line_mode = LineMode::kVulkanBresenham;
   EXPECT_EQ(error_of(s).field, "shading");
   // Quadrilateral lines are tested per sample: accepted; so is one sample.
-  s.line_mode = LineMode::kQuadNarrow;
+  s.conventions.line_mode = LineMode::kQuadNarrow;
   EXPECT_TRUE(std::holds_alternative<PreparedScene>(prepare(s)));
-  s.line_mode = LineMode::kVulkanBresenham;
+  s.conventions.line_mode = LineMode::kVulkanBresenham;
   s.msaa = with_pattern(standard_pattern(1));
   s.msaa.shading = ShadingRate::kSample;
   EXPECT_TRUE(std::holds_alternative<PreparedScene>(prepare(s)));
@@ -148,15 +149,15 @@ TEST(SceneMsaa, PrepareCopiesTheStateAndColours) {
   MultisampleState ms = with_pattern(standard_pattern(8));
   ms.sample_mask = 0x3C;
   ms.has_centroid = true;
-  ms.centroid_rule = CentroidRule::kD3D10;
   Primitive p = prim_px(PrimitiveType::kTriangle, {{0, 0}, {2, 0}, {0, 2}});
   p.color = {1, 2, 3, 4};
   Scene s = with(ms, {p});
+  s.conventions.centroid = CentroidRule::kD3D10;
   s.clear_color = {9, 8, 7, 6};
   const PreparedScene ps = std::get<PreparedScene>(prepare(s));
   EXPECT_EQ(ps.msaa.pattern, ms.pattern);
   EXPECT_EQ(ps.msaa.effective_mask(), 0x3Cu);
-  EXPECT_EQ(ps.msaa.centroid_rule, CentroidRule::kD3D10);
+  EXPECT_EQ(ps.conventions.centroid, CentroidRule::kD3D10);
   EXPECT_EQ(ps.clear_color, (Rgba8{9, 8, 7, 6}));
   EXPECT_EQ(ps.primitives[0].color, (Rgba8{1, 2, 3, 4}));
   // Field order: the target is checked before the multisample state.

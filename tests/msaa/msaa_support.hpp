@@ -27,6 +27,7 @@ inline Scene msaa_scene(std::int32_t width, std::int32_t height, MultisampleStat
   s.width = width;
   s.height = height;
   s.msaa = std::move(ms);
+  s.conventions.pattern = s.msaa.pattern.kind;
   s.primitives = std::move(prims);
   return s;
 }

@@ -35,34 +35,74 @@ TEST(Profile, EachProfileHasTheConventionsTheSpecLists) {
 }
 
 // rule: PROFILE.CONVENTIONS
-TEST(Profile, ApplyThenReadGivesTheProfileBack) {
+TEST(Profile, ApplyGivesTheSceneTheProfile) {
   for (const auto& [word, name] : Names<ProfileName>::table) {
     Scene s;
     apply(profile(name), s);
-    Conventions want = profile(name);
-    want.depth = pipe::DepthFormat::kD24; // a scene without a depth state has no depth format
-    EXPECT_EQ(conventions_of(s), want) << word;
+    EXPECT_EQ(s.conventions, profile(name)) << word;
     EXPECT_FALSE(has_pipeline_state(s)) << word; // a convention asks for no stage
-    rastrules::Scene ps;
-    ps.depth = pipe::DepthState{};
-    apply(profile(name), ps);
-    EXPECT_EQ(conventions_of(ps), profile(name)) << word;
   }
   // The sample pattern's kind follows the profile, keeping the sample count.
   Scene s;
-  s.msaa.pattern = standard_pattern(4);
+  set_sample_pattern(s, standard_pattern(4));
   Conventions c;
   c.pattern = PatternKind::kCenter;
   apply(c, s);
   EXPECT_EQ(s.msaa.pattern.kind, PatternKind::kCenter);
   EXPECT_EQ(s.msaa.count(), 4u);
+  EXPECT_EQ(s.conventions.pattern, PatternKind::kCenter);
+  // A custom pattern is left alone, and the conventions say so.
+  set_sample_pattern(s, custom_pattern({{1, 2}, {-3, 4}}));
+  apply(profile(ProfileName::kVulkan), s);
+  EXPECT_EQ(s.msaa.pattern.kind, PatternKind::kCustom);
+  EXPECT_EQ(s.conventions.pattern, PatternKind::kCustom);
+  EXPECT_EQ(s.conventions.front_face, FrontFace::kCounterClockwise);
+}
+
+// rule: PROFILE.CONVENTIONS
+TEST(Profile, APatternOfAnotherKindThanTheConventionsNameIsRejected) {
+  Scene s;
+  s.width = s.height = 4;
+  s.msaa.pattern = center_pattern(4); // conventions.pattern still says "standard"
+  const auto r = prepare(s);
+  ASSERT_TRUE(std::holds_alternative<SceneError>(r));
+  EXPECT_EQ(std::get<SceneError>(r).what(),
+            "sample_pattern: is a \"center\" pattern but conventions.pattern is \"standard\"");
+  set_sample_pattern(s, center_pattern(4));
+  EXPECT_TRUE(std::holds_alternative<PreparedScene>(prepare(s)));
+}
+
+// The pipeline reads the provoking vertex and the depth format from the one Conventions value.
+// rule: PROFILE.CONVENTIONS, PIPE.INTERP.FLAT, PIPE.DEPTH.FORMAT
+TEST(Profile, ThePipelineReadsItsConventionsFromTheScene) {
+  Scene s;
+  s.width = s.height = 4;
+  s.attributes = {pipe::AttributeDecl{"k", pipe::Interpolation::kFlat, pipe::Location::kCenter}};
+  s.depth = pipe::DepthState{};
+  s.depth->func = pipe::CompareFunc::kAlways;
+  Primitive t = make_triangle({FloatPoint{0, 0}, FloatPoint{4, 0}, FloatPoint{0, 4}});
+  t.z = {0.25f, 0.25f, 0.25f};
+  t.attr = {{1.0f}, {2.0f}, {3.0f}};
+  s.primitives.push_back(t);
+  const auto first = [](const Scene& scene) {
+    auto r = pipe::run_pipeline(scene);
+    EXPECT_TRUE(std::holds_alternative<pipe::PipeResult>(r));
+    return std::get<pipe::PipeResult>(std::move(r)).data.at(0);
+  };
+  const pipe::FragmentData d3d11 = first(s);
+  EXPECT_EQ(d3d11.attr.at(0), 1.0f);
+  EXPECT_EQ(d3d11.depth.at(0).unorm, 4194304u);  // d24: 0.25 * (2^24 - 1), rounded
+  s.conventions = profile(ProfileName::kOpenGL); // provoking vertex last
+  EXPECT_EQ(first(s).attr.at(0), 3.0f);
+  s.conventions = profile(ProfileName::kVulkan); // d32f: 0.25 is stored as the float
+  EXPECT_EQ(first(s).depth.at(0).f, 0.25f);
 }
 
 // rule: PROFILE.D3D11, PROFILE.VULKAN, TRI.CULL.MODE
 TEST(Profile, TheFrontFaceDecidesWhatBackFaceCullingRemoves) {
   Scene s;
   s.width = s.height = 4;
-  s.state.cull = CullMode::kBack;
+  s.cull = CullMode::kBack;
   // Clockwise on screen (y down): front under d3d11, back under vulkan.
   s.primitives.push_back(make_triangle({FloatPoint{0, 0}, FloatPoint{4, 0}, FloatPoint{0, 4}}));
   const auto count = [&](ProfileName p) {

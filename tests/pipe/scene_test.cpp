@@ -145,7 +145,7 @@ TEST(Scene, NothingIsDrawnOutsideTheViewport) {
 TEST(Scene, FlatAttributesTakeTheProvokingVertex) {
   for (const Provoking pv : {Provoking::kFirst, Provoking::kLast}) {
     Scene s = scene(16, 16);
-    s.provoking = pv;
+    s.conventions.provoking = pv;
     s.attributes = {AttributeDecl{"id", Interpolation::kFlat, Location::kCenter},
                     AttributeDecl{"u", Interpolation::kLinear, Location::kCenter}};
     Primitive p = window_tri({1, 1}, {15, 1}, {1, 15});
@@ -187,7 +187,7 @@ TEST(Scene, ZFightingHasADeterministicWinner) {
 TEST(Scene, NearerTriangleWinsAndTheBufferHoldsItsDepth) {
   Scene s = scene(8, 8);
   s.depth = DepthState{};
-  s.depth->format = DepthFormat::kD16;
+  s.conventions.depth = DepthFormat::kD16;
   s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.25f, 0.25f, 0.25f}));
   s.primitives.push_back(window_tri({0, 0}, {8, 0}, {0, 8}, {0.75f, 0.75f, 0.75f})); // behind
   const PipeResult r = run(s);
@@ -209,9 +209,9 @@ TEST(Scene, NearerTriangleWinsAndTheBufferHoldsItsDepth) {
 // rule: PIPE.DEPTH.TEST
 TEST(Scene, DepthIsTestedPerSample) {
   Scene s = scene(4, 4);
-  s.msaa.pattern = standard_pattern(4);
+  set_sample_pattern(s, standard_pattern(4));
   s.depth = DepthState{};
-  s.depth->format = DepthFormat::kD32F;
+  s.conventions.depth = DepthFormat::kD32F;
   // A steep depth ramp along x: within a pixel, samples to the left are nearer.
   s.primitives.push_back(window_tri({0, 0}, {4, 0}, {0, 4}, {0.0f, 1.0f, 0.0f}));
   s.primitives.push_back(window_tri({0, 0}, {4, 0}, {0, 4}, {0.2f, 0.2f, 0.2f}));
@@ -236,7 +236,7 @@ TEST(Scene, SampleLocationNeedsSampleShading) {
   s.primitives.push_back(p);
   const SceneError e = run_error(s);
   EXPECT_EQ(e.field, "attributes[0].location");
-  s.msaa.pattern = standard_pattern(4);
+  set_sample_pattern(s, standard_pattern(4));
   s.msaa.shading = ShadingRate::kSample;
   const PipeResult r = run(s);
   for (const auto& f : frags(r))
@@ -421,9 +421,9 @@ TEST(Scene, KilledFragmentsKeepTheirCoverageOnly) {
 // rule: PIPE.OPT.TILES, PIPE.OPT.HIZ, PIPE.OPT.EARLY_Z, PIPE.OPT.FAST_CLEAR, PIPE.OPT.THREADS
 TEST(Scene, EveryOptimizationGivesThePlainResult) {
   Scene s = scene(80, 48);
-  s.msaa.pattern = standard_pattern(4);
+  set_sample_pattern(s, standard_pattern(4));
   s.depth = DepthState{};
-  s.depth->format = DepthFormat::kD16;
+  s.conventions.depth = DepthFormat::kD16;
   s.attributes = {AttributeDecl{"u", Interpolation::kPerspective, Location::kCentroid}};
   // Overlapping triangles front to back and back to front, one crossing the near plane.
   const float zs[] = {0.9f, 0.2f, 0.6f, 0.1f, 0.95f};

@@ -36,7 +36,6 @@ Scene reported_scene() {
   s.attributes = {AttributeDecl{"u", Interpolation::kLinear, Location::kCenter},
                   AttributeDecl{"k", Interpolation::kFlat, Location::kCenter}};
   DepthState d;
-  d.format = DepthFormat::kD24;
   d.func = CompareFunc::kAlways;
   s.depth = d;
   Primitive p;
@@ -120,7 +119,7 @@ TEST(PipeStrip, FlatAttributesTakeEachSegmentsProvokingVertex) {
   for (const Provoking pv : {Provoking::kFirst, Provoking::kLast}) {
     for (const bool clipped : {false, true}) {
       Scene s = reported_scene();
-      s.provoking = pv;
+      s.conventions.provoking = pv;
       if (clipped) // the last vertex behind the eye: every segment is clipped (a part each)
         s.primitives[0].pos[2] = {0.9375f, 0.9375f, 0.75f, -1.0f};
       const PipeResult r = run(s);
@@ -147,8 +146,8 @@ TEST(PipeStrip, EverySegmentEqualsTheSameSegmentDrawnAsALine) {
       for (const bool clipped : {false, true}) {
         for (const bool window : {false, true}) {
           Scene s = reported_scene();
-          s.line_mode = mode;
-          s.provoking = pv;
+          s.conventions.line_mode = mode;
+          s.conventions.provoking = pv;
           s.attributes.push_back(
               AttributeDecl{"p", Interpolation::kPerspective, Location::kCenter});
           Primitive& p = s.primitives[0];

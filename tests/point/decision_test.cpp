@@ -17,8 +17,8 @@ Scene point_scene(std::vector<Primitive> points, FillConvention fill) {
   Scene scene;
   scene.width = 10;
   scene.height = 8;
-  scene.state.fill = fill;
-  scene.state.cull = CullMode::kBack; // never applied to points (POINT.CULL.NONE)
+  scene.conventions.fill = fill;
+  scene.cull = CullMode::kBack; // never applied to points (POINT.CULL.NONE)
   scene.primitives = std::move(points);
   return scene;
 }

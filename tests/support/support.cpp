@@ -111,7 +111,7 @@ Scene scene_px(std::int32_t width, std::int32_t height, const RasterState& state
   Scene s;
   s.width = width;
   s.height = height;
-  s.state = state;
+  set_raster_state(s, state);
   for (const auto& t : triangles) {
     Primitive p;
     for (std::size_t i = 0; i < 3; ++i) {

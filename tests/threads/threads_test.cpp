@@ -99,7 +99,7 @@ TEST(ThreadsDeterministic, MixedSingleSampleSceneIsTheSameForEveryThreadCount) {
 // rule: FAST.THREADS.DETERMINISTIC
 TEST(ThreadsDeterministic, MultisampledSceneWithQuadsIsTheSameForEveryThreadCount) {
   rastrules::Scene s = mixed_scene();
-  s.msaa.pattern = rastrules::standard_pattern(4);
+  set_sample_pattern(s, rastrules::standard_pattern(4));
   s.msaa.quads = true;
   s.msaa.derivatives = rastrules::DerivativeMode::kFine;
   s.msaa.has_centroid = true;

@@ -80,7 +80,7 @@ TEST(TriDecision, EveryPixelsRecordAgreesWithTheRasterizedFragments) {
         Scene scene;
         scene.width = 12;
         scene.height = 10;
-        scene.state = RasterState{cull, front, fill};
+        set_raster_state(scene, RasterState{cull, front, fill});
         scene.primitives = test::tie_heavy_primitives(PrimitiveType::kTriangle, 12, seed++,
                                                       scene.width, scene.height);
         EXPECT_EQ(test::decision_disagreement(test::prepared(scene)), "")

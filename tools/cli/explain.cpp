@@ -257,7 +257,7 @@ std::string segment_text(const LineSegmentDecision& g, bool aa, const PreparedSc
            "rectangle & Ri) / area(Ri)  " +
            cite({rules::kSceneOutputCoverage}) + "\n";
   } else {
-    if (s.line_mode == LineMode::kD3DDiamond) {
+    if (s.conventions.line_mode == LineMode::kD3DDiamond) {
       out += std::string("    test area: the diamond's interior, its lower-left and "
                          "lower-right edges and bottom corner") +
              (g.x_major ? "" : ", and (y-major) its right corner") +
@@ -301,7 +301,8 @@ std::string other_text(const Report& r, const PreparedScene& s, Vec2 sample) {
       out += triangle_text(d.triangles[k], r.input, s, "    ", false);
     }
   } else if (!d.triangles.empty()) {
-    out += "  quadrilateral line (line_mode " + std::string(io::line_mode_name(s.line_mode)) +
+    out += "  quadrilateral line (line_mode " +
+           std::string(io::line_mode_name(s.conventions.line_mode)) +
            "): a rectangle of two triangles per segment under the triangle rules, never culled  " +
            cite({rules::kSceneLineMode}) + "\n";
     for (std::size_t k = 0; k < d.triangles.size(); ++k) {
@@ -383,9 +384,9 @@ std::string segment_mask_text(const SegmentMaskDecision& g, const std::string& s
   if (g.centroid) {
     const Centroid& c = *g.centroid;
     const Vec2 at = sample_position(x, y, c.offset);
-    out += seg + "centroid (" + std::string(to_string(ms.centroid_rule)) +
+    out += seg + "centroid (" + std::string(to_string(s.conventions.centroid)) +
            "): " + std::string(to_string(c.branch)) + " -> " + offset_text(c.offset) + " = " +
-           point_px(at) + " px  " + cite({centroid_rule(ms.centroid_rule)}) +
+           point_px(at) + " px  " + cite({centroid_rule(s.conventions.centroid)}) +
            (g.mask == 0 ? " (no fragment: the pixel is covered by no sample in the mask)" : "") +
            "\n";
   }
@@ -425,8 +426,8 @@ std::string msaa_text(const Report& r, const PreparedScene& s, std::int32_t x, s
   out += "  " + std::to_string(n) + " sample" + (n == 1 ? "" : "s") + ", " +
          std::string(to_string(ms.pattern.kind)) + " pattern  " + cite({m.pattern_rule}) + "\n";
   if (m.whole_pixel) {
-    const bool d3d = s.line_mode == LineMode::kD3DDiamond && n > 1;
-    out += "  a " + std::string(io::line_mode_name(s.line_mode)) + " line" +
+    const bool d3d = s.conventions.line_mode == LineMode::kD3DDiamond && n > 1;
+    out += "  a " + std::string(io::line_mode_name(s.conventions.line_mode)) + " line" +
            (d3d ? " without MultisampleEnable" : "") +
            " covers every sample of each pixel it produces  " + cite({rules::kMsaaLineMode}) + "\n";
     for (const LineSegmentDecision& g : r.d.segments) {
@@ -455,8 +456,8 @@ void print_text(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
          std::string(to_string(s.state.cull)) + ", front face " +
          std::string(to_string(s.state.front_face)) + ", fill " +
          std::string(to_string(s.state.fill)) +
-         (s.line_mode != LineMode::kD3DDiamond
-              ? ", line_mode " + std::string(io::line_mode_name(s.line_mode))
+         (s.conventions.line_mode != LineMode::kD3DDiamond
+              ? ", line_mode " + std::string(io::line_mode_name(s.conventions.line_mode))
               : std::string()) +
          ", " + std::to_string(reports.size()) + " primitive" + (reports.size() == 1 ? "" : "s") +
          "\n";
@@ -465,12 +466,12 @@ void print_text(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
          cite({rules::kCoordPixelCenter}) + "\n";
   if (multisampled(s)) {
     const MultisampleState& ms = s.msaa;
-    out += "multisampling: " + std::to_string(ms.count()) + " samples, " +
-           std::string(to_string(ms.pattern.kind)) + " pattern, sample mask " +
-           mask_text(ms.effective_mask(), ms.count()) + ", centroid " +
-           (ms.has_centroid ? std::string(to_string(ms.centroid_rule)) : std::string("none")) +
-           ", shading " + std::string(to_string(ms.shading)) + "  " + cite({rules::kSceneMsaa}) +
-           "\n";
+    out +=
+        "multisampling: " + std::to_string(ms.count()) + " samples, " +
+        std::string(to_string(ms.pattern.kind)) + " pattern, sample mask " +
+        mask_text(ms.effective_mask(), ms.count()) + ", centroid " +
+        (ms.has_centroid ? std::string(to_string(s.conventions.centroid)) : std::string("none")) +
+        ", shading " + std::string(to_string(ms.shading)) + "  " + cite({rules::kSceneMsaa}) + "\n";
   }
   std::vector<std::size_t> covering;
   for (const Report& report : reports) {
@@ -639,7 +640,7 @@ ojson msaa_json(const Report& r, const PreparedScene& s) {
               {"mask", g.mask},
               {"fragment", g.mask != 0}};
     if (g.centroid) {
-      j["centroid"] = {{"rule", to_string(s.msaa.centroid_rule)},
+      j["centroid"] = {{"rule", to_string(s.conventions.centroid)},
                        {"branch", to_string(g.centroid->branch)},
                        {"offset", {g.centroid->offset.x, g.centroid->offset.y}}};
     }
@@ -663,7 +664,7 @@ void print_json(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
   doc["cull"] = to_string(s.state.cull);
   doc["front_face"] = to_string(s.state.front_face);
   doc["fill"] = to_string(s.state.fill);
-  doc["line_mode"] = io::line_mode_name(s.line_mode);
+  doc["line_mode"] = io::line_mode_name(s.conventions.line_mode);
   doc["pixel"] = {x, y};
   doc["sample_raw"] = point(sample);
   json prims = json::array();
@@ -673,7 +674,7 @@ void print_json(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
     doc["sample_pattern"] = to_string(s.msaa.pattern.kind);
     doc["sample_mask"] = s.msaa.effective_mask();
     if (s.msaa.has_centroid)
-      doc["centroid"] = to_string(s.msaa.centroid_rule);
+      doc["centroid"] = to_string(s.conventions.centroid);
   }
   for (const Report& r : reports) {
     ojson p = r.type == PrimitiveType::kTriangle
@@ -735,7 +736,7 @@ int explain_pipeline(const Scene& scene, const pipe::PipeResult& result, std::in
     doc["pipeline"] = true;
     doc["samples"] = n;
     if (scene.depth) {
-      doc["depth"] = {{"format", io::depth_format_name(scene.depth->format)},
+      doc["depth"] = {{"format", io::depth_format_name(scene.conventions.depth)},
                       {"func", io::compare_func_name(scene.depth->func)}};
     }
     doc["fragments"] = ojson::parse(*text)["fragments"];
@@ -803,12 +804,12 @@ int explain_pipeline(const Scene& scene, const pipe::PipeResult& result, std::in
       const bool killed = !f.helper && data->passed == 0;
       std::string depths;
       for (const pipe::DepthValue& d : data->depth) {
-        depths += (depths.empty() ? "" : ", ") + io::depth_text(d, scene.depth->format);
+        depths += (depths.empty() ? "" : ", ") + io::depth_text(d, scene.conventions.depth);
       }
       out += killed
                  ? "  killed: no sample passed the depth test (" + id(rules::kPipeDepthKill) + ")"
                  : "  depth [" + depths + "] (" +
-                       std::string(io::depth_format_name(scene.depth->format)) + "), passed " +
+                       std::string(io::depth_format_name(scene.conventions.depth)) + "), passed " +
                        mask_text(data->passed, n);
       out += " (depth.func " + std::string(io::compare_func_name(scene.depth->func)) + ", " +
              id(rules::kPipeDepthTest) + ")\n";

@@ -226,7 +226,7 @@ int render_pipeline(const Scene& scene, const RenderRequest& rq) {
       std::vector<double> depth01;
       depth01.reserve(result->depth_buffer.size());
       for (const pipe::DepthValue& d : result->depth_buffer)
-        depth01.push_back(depth_01(d, scene.depth->format));
+        depth01.push_back(depth_01(d, scene.conventions.depth));
       image.emplace(
           io::draw_depth_picture(scene.width, scene.height, samples, depth01, *picture_scale));
     } else {
@@ -256,7 +256,7 @@ int render_pipeline(const Scene& scene, const RenderRequest& rq) {
   }
   if (rq.depth_out_path &&
       !io::write_depth_buffer(depth_file.get(), scene.width, scene.height, samples,
-                              scene.depth->format, result->depth_buffer)) {
+                              scene.conventions.depth, result->depth_buffer)) {
     return error(*rq.depth_out_path + ": write failed (or run_pipeline's depth buffer is not "
                                       "width x height x samples)");
   }

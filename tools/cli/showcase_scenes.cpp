@@ -26,7 +26,7 @@ Scene make_scene(std::int32_t w, std::int32_t h, RasterState state = {}) {
   Scene s;
   s.width = w;
   s.height = h;
-  s.state = state;
+  set_raster_state(s, state);
   return s;
 }
 
@@ -288,7 +288,7 @@ Scene points(FillConvention fill) {
 // rule: SCENE.PRIM.LINE, SCENE.LINE_MODE
 Scene lines(LineMode mode) {
   Scene s = make_scene(16, 12);
-  s.line_mode = mode;
+  s.conventions.line_mode = mode;
   auto& p = s.primitives;
   p.push_back(line({0.5f, 0.5f}, {7.5f, 0.5f}));   // along centres: end on a centre
   p.push_back(line({0.0f, 2.0f}, {7.0f, 2.0f}));   // along top/bottom corners of the diamonds
@@ -333,8 +333,8 @@ Scene aa_lines() {
 // rule: SCENE.LINE_MODE
 Scene quad_lines(LineMode mode) {
   Scene s = make_scene(16, 12);
-  s.line_mode = mode;
-  s.state.cull = CullMode::kFront; // quadrilateral lines are never culled
+  s.conventions.line_mode = mode;
+  s.cull = CullMode::kFront; // quadrilateral lines are never culled
   auto& p = s.primitives;
   p.push_back(line({0.5f, 1.5f}, {7.5f, 1.5f}));
   p.push_back(line({1.0f, 4.0f}, {7.0f, 4.0f}));
@@ -357,7 +357,7 @@ Primitive coloured(Primitive p, Rgba8 c) {
 
 Scene msaa_scene(std::int32_t w, std::int32_t h, SamplePattern pattern) {
   Scene s = make_scene(w, h);
-  s.msaa.pattern = std::move(pattern);
+  set_sample_pattern(s, std::move(pattern));
   s.clear_color = {0, 0, 0, 255};
   return s;
 }
@@ -399,7 +399,7 @@ Scene msaa_fan(std::uint32_t samples) {
 // rule: MSAA.PATTERN.CENTER, MSAA.LINE.MODE
 Scene msaa_center() {
   Scene s = msaa_scene(10, 8, center_pattern(4));
-  s.line_mode = LineMode::kVulkanBresenham;
+  s.conventions.line_mode = LineMode::kVulkanBresenham;
   auto& p = s.primitives;
   p.push_back(coloured(tri({0.5f, 0.5f}, {6.5f, 0.5f}, {0.5f, 6.5f}), {220, 60, 40, 255}));
   p.push_back(coloured(tri({6.5f, 0.5f}, {6.5f, 6.5f}, {0.5f, 6.5f}), {40, 150, 220, 255}));
@@ -427,7 +427,7 @@ Scene msaa_custom() {
 Scene msaa_centroid(CentroidRule rule) {
   Scene s = msaa_scene(10, 8, standard_pattern(4));
   s.msaa.has_centroid = true;
-  s.msaa.centroid_rule = rule;
+  s.conventions.centroid = rule;
   s.msaa.sample_mask = 0b1101;
   s.msaa.derivatives = DerivativeMode::kFine;
   auto& p = s.primitives;

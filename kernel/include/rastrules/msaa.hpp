@@ -188,13 +188,8 @@ template <> struct Names<DerivativeMode> {
 struct MultisampleState {
   SamplePattern pattern;                   // standard_pattern(1) by default
   std::uint32_t sample_mask = 0xFFFFFFFFu; // ANDed with coverage; bits >= count() ignored
-  bool has_centroid = false;               // fragments carry a centroid evaluation point
-  CentroidRule centroid_rule = CentroidRule::kD3D11;
+  bool has_centroid = false; // fragments carry a centroid evaluation point (Conventions::centroid)
   ShadingRate shading = ShadingRate::kPixel;
-  // D3D's MultisampleEnable (MSAA.LINE.MODE): with more than one sample, "d3d" lines are
-  // quadrilaterals 1.4 px wide when true; when false (D3D11's default) they keep their own
-  // rasterizer and cover every sample of each pixel they produce. Nothing else depends on it.
-  bool multisample_enable = false;
   bool quads = false;                                 // emit helper lanes of touched 2x2 quads
   DerivativeMode derivatives = DerivativeMode::kNone; // implies quads
 
@@ -224,12 +219,12 @@ struct MultisampleState {
 }
 
 // Returns the centroid evaluation point of a pixel whose coverage before the sample mask is
-// `coverage`, under the state's centroid rule, sample mask and pattern. The multisampled path
-// and the decision records both decide with this function.
+// `coverage`, under the centroid rule and the state's sample mask and pattern. The
+// multisampled path and the decision records both decide with this function.
 // rule: MSAA.CENTROID.D3D11, MSAA.CENTROID.D3D10
-[[nodiscard]] inline Centroid fragment_centroid(std::uint32_t coverage,
-                                                const MultisampleState& ms) {
-  return centroid(ms.centroid_rule, coverage, ms.effective_mask(), ms.pattern);
+[[nodiscard]] inline Centroid fragment_centroid(std::uint32_t coverage, const MultisampleState& ms,
+                                                CentroidRule rule) {
+  return centroid(rule, coverage, ms.effective_mask(), ms.pattern);
 }
 
 // The derivatives of a fragment's evaluation point (pixel centre, centroid or sample) across

@@ -56,9 +56,8 @@ struct AttributeDecl {
   Location location = Location::kCenter;
 };
 
-// The depth buffer and test (PIPE.DEPTH.*).
+// The depth buffer and test (PIPE.DEPTH.*). Its format is a convention (Conventions::depth).
 struct DepthState {
-  DepthFormat format = DepthFormat::kD24;
   CompareFunc func = CompareFunc::kLess;
   bool write = true;
   float clear = 1.0f;

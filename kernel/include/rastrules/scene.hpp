@@ -16,6 +16,7 @@
 #include <variant>
 #include <vector>
 
+#include "rastrules/conventions.hpp"
 #include "rastrules/fixed.hpp"
 #include "rastrules/isa.hpp"
 #include "rastrules/line.hpp"
@@ -80,18 +81,39 @@ struct Primitive {
 struct Scene {
   std::int32_t width = 0;
   std::int32_t height = 0;
-  RasterState state;
-  LineMode line_mode = LineMode::kD3DDiamond; // SCENE.LINE_MODE
-  MultisampleState msaa;                      // SCENE.MSAA; default: one sample at the centre
-  Rgba8 clear_color = {0, 0, 0, 0};           // the samples' value before any primitive
+  // Every convention in one value (PROFILE.CONVENTIONS): fill, front face, line mode, pattern
+  // kind, centroid rule, MultisampleEnable, provoking vertex, depth format. D3D11's by default;
+  // `scene.conventions = profile(ProfileName::kVulkan)` or apply() gives another profile's.
+  Conventions conventions;
+  CullMode cull = CullMode::kNone;  // TRI.CULL.MODE: pipeline state, not a convention
+  MultisampleState msaa;            // SCENE.MSAA; default: one sample at the centre
+  Rgba8 clear_color = {0, 0, 0, 0}; // the samples' value before any primitive
   std::vector<Primitive> primitives;
   // The pipeline state (SCENE.PIPELINE); absent or empty: not asked for.
   std::optional<pipe::Viewport> viewport; // default: the whole target, depth [0, 1]
   std::optional<pipe::Mat4f> model, view, projection;
   std::optional<pipe::DepthState> depth; // no depth test without it
   std::vector<pipe::AttributeDecl> attributes;
-  pipe::Provoking provoking = pipe::Provoking::kFirst;
 };
+
+// Returns the triangle setup's state of a scene: its cull mode, front face and fill convention.
+[[nodiscard]] inline RasterState raster_state(const Scene& scene) {
+  return RasterState{scene.cull, scene.conventions.front_face, scene.conventions.fill};
+}
+
+// Sets a scene's cull mode, front face and fill convention from a triangle setup's state.
+inline void set_raster_state(Scene& scene, const RasterState& state) {
+  scene.cull = state.cull;
+  scene.conventions.front_face = state.front_face;
+  scene.conventions.fill = state.fill;
+}
+
+// Sets a scene's sample pattern and the conventions' pattern kind together (validate() and
+// prepare() require them to agree: PROFILE.CONVENTIONS).
+inline void set_sample_pattern(Scene& scene, SamplePattern pattern) {
+  scene.conventions.pattern = pattern.kind;
+  scene.msaa.pattern = std::move(pattern);
+}
 
 // Returns the path of the scene's first pipeline field (SCENE.PIPELINE) in the order of
 // spec/scene.md ("viewport", "transform.model", ".view", ".projection", "depth", "attributes",
@@ -103,9 +125,9 @@ struct Scene {
   return first_pipeline_field(scene).has_value();
 }
 
-// Returns a scene with the target, conventions (provoking vertex included) and sample state of
-// scene, without primitives and without pipeline state: the window-space scene the pipeline
-// draws into (the picture's grid, the resolve, the pipeline's internal scene of clipped parts).
+// Returns a scene with the target, conventions, cull mode and sample state of scene, without
+// primitives and without pipeline state: the window-space scene the pipeline draws into (the
+// picture's grid, the resolve, the pipeline's internal scene of clipped parts).
 [[nodiscard]] Scene target_of(const Scene& scene);
 
 // One covered pixel of one primitive. mask has bit i set for covered sample i; without
@@ -174,8 +196,8 @@ struct PreparedPrimitive {
 struct PreparedScene {
   std::int32_t width = 0;
   std::int32_t height = 0;
-  RasterState state;
-  LineMode line_mode = LineMode::kD3DDiamond;
+  Conventions conventions;
+  RasterState state; // the triangle setup's view: the scene's cull mode, fill and front face
   MultisampleState msaa;
   Rgba8 clear_color = {0, 0, 0, 0};
   std::vector<PreparedPrimitive> primitives;

@@ -97,7 +97,7 @@ private:
     const bool strip = pp.type == PrimitiveType::kLineStrip;
     const std::size_t first = strip ? segment : 0,
                       last = strip ? segment + 1 : vertex_count(pp) - 1;
-    return pp.attr[s_.provoking == Provoking::kFirst ? first : last];
+    return pp.attr[s_.conventions.provoking == Provoking::kFirst ? first : last];
   }
 
   // Adds a coverage primitive; segment: the strip segment a clipped line was cut from.

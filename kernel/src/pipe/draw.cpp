@@ -16,7 +16,7 @@ namespace {
 // Drawn primitive `segment` of coverage primitive p.
 Drawn draw_one(const Scene& s, const PreparedPrimitive& pr, const Source& src, std::size_t segment,
                const Viewport& vp) {
-  const DepthFormat fmt = s.depth ? s.depth->format : DepthFormat::kD24;
+  const DepthFormat fmt = s.depth ? s.conventions.depth : DepthFormat::kD24;
   Drawn d;
   const bool strip = pr.type == PrimitiveType::kLineStrip;
   d.type = strip ? PrimitiveType::kLine : pr.type;

@@ -46,7 +46,7 @@ public:
   DepthTarget(const Scene& s, const PipeOptions& o, const std::vector<Drawn>& drawn,
               std::vector<DepthValue>& buffer)
       : s_(s), drawn_(drawn), buffer_(buffer), T_(o.tile_size), n_(s.msaa.count()),
-        fmt_(s.depth ? s.depth->format : DepthFormat::kD24), tiles_x_((s.width + T_ - 1) / T_),
+        fmt_(s.depth ? s.conventions.depth : DepthFormat::kD24), tiles_x_((s.width + T_ - 1) / T_),
         tiles_y_((s.height + T_ - 1) / T_),
         clear_(s.depth ? to_depth_format(s.depth->clear, 0.0f, 1.0f, fmt_) : DepthValue{}) {
     const bool less_like = s.depth && (s.depth->func == CompareFunc::kLess ||
@@ -192,7 +192,7 @@ private:
 void shade(const Scene& s, const PreparedScene& ps, const Viewport& vp, const PipeOptions& o,
            const std::vector<Drawn>& drawn, const Links& links, PipeResult& result) {
   const SamplePattern& pattern = ps.msaa.pattern;
-  const DepthFormat fmt = s.depth ? s.depth->format : DepthFormat::kD24;
+  const DepthFormat fmt = s.depth ? s.conventions.depth : DepthFormat::kD24;
   const std::size_t nattr = s.attributes.size();
   const std::uint32_t nsamples = s.msaa.count();
   const std::vector<Fragment>& fragments = result.fragments;

@@ -654,7 +654,7 @@ Scene to_kernel_scene(const TriScene& s) {
   Scene k;
   k.width = s.width;
   k.height = s.height;
-  k.state = s.state;
+  set_raster_state(k, s.state);
   for (const GenTriangle& t : s.triangles) {
     Primitive p;
     p.type = PrimitiveType::kTriangle;

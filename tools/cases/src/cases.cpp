@@ -89,7 +89,7 @@ std::optional<Scene> read_pipe_scene(const std::filesystem::path& path, CaseRepo
 
 // Returns the counts of res that the expectations compare with.
 Tally tally(const Scene& s, const kp::PipeResult& res) {
-  const kp::DepthFormat fmt = s.depth ? s.depth->format : kp::DepthFormat::kD24;
+  const kp::DepthFormat fmt = s.depth ? s.conventions.depth : kp::DepthFormat::kD24;
   Tally t;
   for (std::size_t i = 0; i < res.fragments.size(); ++i) {
     const Fragment& f = res.fragments[i];

@@ -118,10 +118,10 @@ private:
     if (area == 0)
       return;
     const bool clockwise = area > 0;
-    const bool front = (scene.state.front_face == FrontFace::kClockwise) == clockwise;
-    if (scene.state.cull == CullMode::kBack && !front)
+    const bool front = (scene.conventions.front_face == FrontFace::kClockwise) == clockwise;
+    if (scene.cull == CullMode::kBack && !front)
       return;
-    if (scene.state.cull == CullMode::kFront && front)
+    if (scene.cull == CullMode::kFront && front)
       return;
     if (!clockwise)
       std::swap(v[1], v[2]);
@@ -130,7 +130,7 @@ private:
       const RawPoint a = v[i];
       const RawPoint b = v[(i + 1) % 3];
       inclusive[i] = bugs_.fill_bottom_right ? bottom_right_inclusive(a, b)
-                                             : scene_inclusive(a, b, scene.state.fill);
+                                             : scene_inclusive(a, b, scene.conventions.fill);
     }
     std::int64_t min_x = v[0].x, max_x = v[0].x, min_y = v[0].y, max_y = v[0].y;
     for (const RawPoint& p : v) {

@@ -59,7 +59,7 @@ public:
     checks.line = [this](const Scene& s, const Primitive& p) -> std::string {
       if (p.aa)
         return "antialiased lines not supported";
-      switch (s.line_mode) {
+      switch (s.conventions.line_mode) {
       case LineMode::kD3DDiamond:
         return "line mode 'd3d' (diamond exit) has no Vulkan equivalent";
       case LineMode::kQuadWide:
@@ -136,8 +136,8 @@ public:
       case PrimitiveType::kTriangle:
         key.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
         // Both y-down: on-screen winding maps directly (DRIVER.LAVAPIPE.SUPPORT).
-        key.cull = detail::vk_cull_mode(scene.state.cull);
-        key.front = detail::vk_front_face(scene.state.front_face);
+        key.cull = detail::vk_cull_mode(scene.cull);
+        key.front = detail::vk_front_face(scene.conventions.front_face);
         break;
       case PrimitiveType::kPoint:
         key.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
@@ -146,7 +146,7 @@ public:
       case PrimitiveType::kLineStrip:
         key.topology = p.type == PrimitiveType::kLine ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST
                                                       : VK_PRIMITIVE_TOPOLOGY_LINE_STRIP;
-        key.line_mode = scene.line_mode == LineMode::kVulkanBresenham
+        key.line_mode = scene.conventions.line_mode == LineMode::kVulkanBresenham
                             ? VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT
                             : VK_LINE_RASTERIZATION_MODE_RECTANGULAR_EXT;
         break;

@@ -109,12 +109,12 @@ public:
       const std::uint32_t samples = s.msaa.count();
       if (p.aa)
         return "antialiased lines not supported (GL_LINE_SMOOTH is not used)";
-      if (samples == 1 && s.line_mode != LineMode::kVulkanBresenham) {
-        return "line mode '" + std::string(to_string(s.line_mode)) +
+      if (samples == 1 && s.conventions.line_mode != LineMode::kVulkanBresenham) {
+        return "line mode '" + std::string(to_string(s.conventions.line_mode)) +
                "' not supported on 1 sample (OpenGL aliased lines are 'vulkan-bresenham')";
       }
-      if (samples > 1 && s.line_mode != LineMode::kQuadNarrow) {
-        return "line mode '" + std::string(to_string(s.line_mode)) +
+      if (samples > 1 && s.conventions.line_mode != LineMode::kQuadNarrow) {
+        return "line mode '" + std::string(to_string(s.conventions.line_mode)) +
                "' not supported on a multisampled target (OpenGL multisampled lines are "
                "rectangles, 'quad-narrow')";
       }
@@ -192,16 +192,16 @@ public:
       switch (p.type) {
       case PrimitiveType::kTriangle:
         mode = GL_TRIANGLES;
-        if (scene.state.cull == CullMode::kNone) {
+        if (scene.cull == CullMode::kNone) {
           glDisable(GL_CULL_FACE);
         } else {
           glEnable(GL_CULL_FACE);
-          glCullFace(scene.state.cull == CullMode::kBack ? GL_BACK : GL_FRONT);
+          glCullFace(scene.cull == CullMode::kBack ? GL_BACK : GL_FRONT);
         }
         // rule: DRIVER.OPENGL.ORIGIN
         // Under GL_UPPER_LEFT the sign of GL's window-space area is reversed, so the
         // orientation is the one seen in the y-down image: clockwise on screen is GL_CW.
-        glFrontFace(scene.state.front_face == FrontFace::kClockwise ? GL_CW : GL_CCW);
+        glFrontFace(scene.conventions.front_face == FrontFace::kClockwise ? GL_CW : GL_CCW);
         break;
       case PrimitiveType::kPoint:
         mode = GL_POINTS;

@@ -52,8 +52,8 @@ std::string untimeable(const Scene& scene, int repeats) {
     return std::to_string(ms.count()) +
            " sample(s) off the pixel centre or masked: the coverage timing is single-sample only";
   }
-  if (scene.state.fill != FillConvention::kTopLeft) {
-    return "fill convention " + std::string(to_string(scene.state.fill)) +
+  if (scene.conventions.fill != FillConvention::kTopLeft) {
+    return "fill convention " + std::string(to_string(scene.conventions.fill)) +
            ": lavapipe draws with the top-left rule only";
   }
   return {};
@@ -190,8 +190,8 @@ private:
     }
     // The scene's culling, as the adapter maps it (both y-down: the winding maps directly).
     detail::CoveragePipelineState state;
-    state.cull = detail::vk_cull_mode(scene.state.cull);
-    state.front = detail::vk_front_face(scene.state.front_face);
+    state.cull = detail::vk_cull_mode(scene.cull);
+    state.front = detail::vk_front_face(scene.conventions.front_face);
     return program_.create_pipeline(vk_.device, state, &pipeline_);
   }
 

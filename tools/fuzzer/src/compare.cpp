@@ -70,7 +70,7 @@ std::optional<Comparison> compare(const Scene& scene, const std::vector<Fragment
                                   Profile profile, Mode mode, std::string* error) {
   Comparison c;
   c.actual = observable(actual);
-  c.compared_with = scene.state.fill;
+  c.compared_with = scene.conventions.fill;
   auto own = reference(scene, error);
   if (!own)
     return std::nullopt;
@@ -78,7 +78,7 @@ std::optional<Comparison> compare(const Scene& scene, const std::vector<Fragment
   diff(c.expected, c.actual, c);
   c.match = c.missing.empty() && c.extra.empty();
   if (c.match)
-    c.conventions.push_back(scene.state.fill);
+    c.conventions.push_back(scene.conventions.fill);
   // d3d11 requires the top-left rule: legal is exact there.
   if (mode == Mode::kExact || profile == Profile::kD3D11)
     return c;
@@ -86,10 +86,10 @@ std::optional<Comparison> compare(const Scene& scene, const std::vector<Fragment
   // (the order of FillConvention), keeping the scene's own result as the one shown.
   for (const FillConvention f : {FillConvention::kTopLeft, FillConvention::kTopRight,
                                  FillConvention::kBottomLeft, FillConvention::kBottomRight}) {
-    if (f == scene.state.fill)
+    if (f == scene.conventions.fill)
       continue;
     Scene other = scene;
-    other.state.fill = f;
+    other.conventions.fill = f;
     auto expected = reference(other, error);
     if (!expected)
       return std::nullopt;

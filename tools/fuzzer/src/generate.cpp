@@ -34,8 +34,8 @@ std::optional<Mode> parse_mode(std::string_view s) {
 // rule: FUZZ.PROFILE
 void apply_profile(Profile p, Scene& scene) {
   const Conventions c = profile(p);
-  scene.state.fill = c.fill;
-  scene.line_mode = c.line_mode;
+  scene.conventions.fill = c.fill;
+  scene.conventions.line_mode = c.line_mode;
 }
 
 std::uint64_t Rng::next() {
@@ -222,7 +222,7 @@ std::optional<Case> generate_case(std::uint64_t seed, std::uint64_t index, Profi
       lines(rng, g, s);
     if (msaa4 && rng.chance(25)) {
       // The standard 4x pattern (MSAA.PATTERN.STANDARD).
-      s.msaa.pattern = standard_pattern(4);
+      set_sample_pattern(s, standard_pattern(4));
     }
     if (driver.unsupported(s).empty())
       return c;

@@ -224,7 +224,7 @@ FillConvention measured_convention(const ProbeReport& r) {
 // Returns r.point_rule's text: whether the driver's points match the reference's point rule.
 std::string probe_points(driver::Driver& driver, Prober& p, FillConvention measured) {
   Scene s = base_scene();
-  s.state.fill = measured;
+  s.conventions.fill = measured;
   for (const FloatPoint v : {FloatPoint{1.0f, 1.0f}, FloatPoint{3.5f, 1.5f},
                              FloatPoint{5.25f, 2.0f}, FloatPoint{2.0f, 5.5f}}) {
     Primitive pt;
@@ -247,7 +247,7 @@ std::string probe_points(driver::Driver& driver, Prober& p, FillConvention measu
 // compared with the reference.
 std::string probe_lines(driver::Driver& driver, Prober& p, FillConvention measured) {
   Scene s = base_scene();
-  s.state.fill = measured;
+  s.conventions.fill = measured;
   for (const auto& [a, b] : {std::pair{FloatPoint{0.5f, 0.5f}, FloatPoint{6.5f, 3.5f}},
                              {FloatPoint{1.0f, 1.0f}, FloatPoint{7.0f, 1.0f}},
                              {FloatPoint{1.25f, 0.75f}, FloatPoint{2.75f, 6.25f}},
@@ -261,7 +261,7 @@ std::string probe_lines(driver::Driver& driver, Prober& p, FillConvention measur
   std::string modes;
   for (const LineMode m : {LineMode::kD3DDiamond, LineMode::kVulkanBresenham, LineMode::kQuadNarrow,
                            LineMode::kQuadWide}) {
-    s.line_mode = m;
+    s.conventions.line_mode = m;
     if (!driver.unsupported(s).empty())
       continue;
     auto got = p.draw(s);
@@ -294,7 +294,7 @@ std::optional<std::array<int, 4>> scan_sample_axis(Prober& p, const SamplePatter
   for (int o = -9; o <= 8; ++o) {
     const float pos = 0.5f + static_cast<float>(o) / 16.0f;
     Scene s = axis == 0 ? left_edge(pos) : top_edge(pos);
-    s.msaa.pattern = standard4;
+    set_sample_pattern(s, standard4);
     auto m = p.mask(s, 0, 0);
     if (!m)
       return std::nullopt;

@@ -254,7 +254,7 @@ PipeOutputFields pipe_output_fields(const Scene& s) {
   for (const pipe::AttributeDecl& a : s.attributes)
     fields.attributes.push_back(a.name);
   if (s.depth)
-    fields.depth = s.depth->format;
+    fields.depth = s.conventions.depth;
   return fields;
 }
 

@@ -590,14 +590,14 @@ private:
     case Slot::kHeight:
       return size(field, v, scene_.height);
     case Slot::kCull:
-      return enumeration(field, v, Names<CullMode>::table, scene_.state.cull);
+      return enumeration(field, v, Names<CullMode>::table, scene_.cull);
     case Slot::kFrontFace:
-      return enumeration(field, v, Names<FrontFace>::table, scene_.state.front_face);
+      return enumeration(field, v, Names<FrontFace>::table, scene_.conventions.front_face);
     case Slot::kFill:
-      return enumeration(field, v, Names<FillConvention>::table, scene_.state.fill);
+      return enumeration(field, v, Names<FillConvention>::table, scene_.conventions.fill);
     case Slot::kLineMode:
       // rule: SCENE.LINE_MODE
-      return enumeration(field, v, Names<LineMode>::table, scene_.line_mode);
+      return enumeration(field, v, Names<LineMode>::table, scene_.conventions.line_mode);
     case Slot::kPrimitives:
       if (v.kind != Kind::kArray)
         return type_error(field, "an array of primitives", v);
@@ -693,14 +693,14 @@ private:
       return type_error(field, "an integer in [0, 4294967295]", v);
     case Slot::kCentroid:
       scene_.msaa.has_centroid = true;
-      return enumeration(field, v, Names<CentroidRule>::table, scene_.msaa.centroid_rule);
+      return enumeration(field, v, Names<CentroidRule>::table, scene_.conventions.centroid);
     case Slot::kShading:
       return enumeration(field, v, Names<ShadingRate>::table, scene_.msaa.shading);
     case Slot::kMultisampleEnable:
       // rule: MSAA.LINE.MODE
       if (v.kind != Kind::kBool)
         return type_error(field, "true or false", v);
-      scene_.msaa.multisample_enable = v.b;
+      scene_.conventions.multisample_enable = v.b;
       return true;
     case Slot::kQuads:
       if (v.kind != Kind::kBool)
@@ -776,7 +776,7 @@ private:
       pipe_.depth.emplace();
       return push(Ctx::kDepthObject, field);
     case Slot::kDepthFormat:
-      return enumeration(field, v, Names<pipe::DepthFormat>::table, pipe_.depth->format);
+      return enumeration(field, v, Names<pipe::DepthFormat>::table, pipe_.conventions.depth);
     case Slot::kDepthFunc:
       return enumeration(field, v, Names<pipe::CompareFunc>::table, pipe_.depth->func);
     case Slot::kDepthWrite:
@@ -823,7 +823,7 @@ private:
     case Slot::kAttributeLocation:
       return enumeration(field, v, Names<pipe::Location>::table, attribute_.location);
     case Slot::kProvoking:
-      return enumeration(field, v, Names<pipe::Provoking>::table, pipe_.provoking);
+      return enumeration(field, v, Names<pipe::Provoking>::table, pipe_.conventions.provoking);
     default:
       return std::nullopt;
     }
@@ -1041,7 +1041,8 @@ private:
     scene_.projection = pipe_.projection;
     scene_.depth = pipe_.depth;
     scene_.attributes = std::move(pipe_.attributes);
-    scene_.provoking = pipe_.provoking;
+    scene_.conventions.provoking = pipe_.conventions.provoking;
+    scene_.conventions.depth = pipe_.conventions.depth;
     return true;
   }
 
@@ -1055,6 +1056,7 @@ private:
                                    std::to_string(custom_.size()) + " positions of sample_pattern");
       }
       scene_.msaa.pattern = custom_pattern(std::move(custom_));
+      scene_.conventions.pattern = PatternKind::kCustom;
       return check_explicit_all_ones_mask();
     }
     const std::uint32_t n = samples_.value_or(1);
@@ -1065,6 +1067,7 @@ private:
     }
     scene_.msaa.pattern =
         pattern_kind_ == PatternKind::kCenter ? center_pattern(n) : standard_pattern(n);
+    scene_.conventions.pattern = scene_.msaa.pattern.kind;
     return check_explicit_all_ones_mask();
   }
 
@@ -1370,12 +1373,12 @@ std::string scene_head(const Scene& scene) {
   out += "{\n  \"version\": 1,\n";
   out += "  \"target\": {\"width\": " + std::to_string(scene.width) +
          ", \"height\": " + std::to_string(scene.height) + "},\n";
-  out += "  \"cull\": \"" + std::string(to_string(scene.state.cull)) + "\",\n";
-  out += "  \"front_face\": \"" + std::string(to_string(scene.state.front_face)) + "\",\n";
-  out += "  \"fill\": \"" + std::string(to_string(scene.state.fill)) + "\",\n";
-  if (scene.line_mode != LineMode::kD3DDiamond) {
-    out += "  \"line_mode\": \"" + std::string(line_mode_name(scene.line_mode)) + "\",\n";
-  }
+  const Conventions& c = scene.conventions;
+  out += "  \"cull\": \"" + std::string(to_string(scene.cull)) + "\",\n";
+  out += "  \"front_face\": \"" + std::string(to_string(c.front_face)) + "\",\n";
+  out += "  \"fill\": \"" + std::string(to_string(c.fill)) + "\",\n";
+  if (c.line_mode != LineMode::kD3DDiamond)
+    out += "  \"line_mode\": \"" + std::string(line_mode_name(c.line_mode)) + "\",\n";
   // rule: SCENE.MSAA
   // The multisampling keys, each only when it differs from its default.
   const MultisampleState& ms = scene.msaa;
@@ -1396,10 +1399,10 @@ std::string scene_head(const Scene& scene) {
     out += "  \"sample_mask\": " + std::to_string(ms.sample_mask) + ",\n";
   }
   if (ms.has_centroid)
-    out += "  \"centroid\": \"" + std::string(to_string(ms.centroid_rule)) + "\",\n";
+    out += "  \"centroid\": \"" + std::string(to_string(c.centroid)) + "\",\n";
   if (ms.shading != ShadingRate::kPixel)
     out += "  \"shading\": \"" + std::string(to_string(ms.shading)) + "\",\n";
-  if (ms.multisample_enable)
+  if (c.multisample_enable)
     out += "  \"multisample_enable\": true,\n";
   if (ms.quads)
     out += "  \"quads\": true,\n";
@@ -1473,18 +1476,19 @@ bool same_primitive(const Primitive& pa, const Primitive& pb) {
 
 // Everything of two scenes but their primitives.
 bool same_state(const Scene& a, const Scene& b) {
-  if (a.width != b.width || a.height != b.height || a.state.cull != b.state.cull ||
-      a.state.front_face != b.state.front_face || a.state.fill != b.state.fill ||
-      a.line_mode != b.line_mode) {
+  const Conventions& ca = a.conventions;
+  const Conventions& cb = b.conventions;
+  if (a.width != b.width || a.height != b.height || a.cull != b.cull ||
+      ca.front_face != cb.front_face || ca.fill != cb.fill || ca.line_mode != cb.line_mode ||
+      ca.pattern != cb.pattern || ca.multisample_enable != cb.multisample_enable) {
     return false;
   }
   const MultisampleState& ma = a.msaa;
   const MultisampleState& mb = b.msaa;
   return ma.pattern == mb.pattern && ma.sample_mask == mb.sample_mask &&
-         ma.has_centroid == mb.has_centroid &&
-         (!ma.has_centroid || ma.centroid_rule == mb.centroid_rule) && ma.shading == mb.shading &&
-         ma.multisample_enable == mb.multisample_enable && ma.quads == mb.quads &&
-         ma.derivatives == mb.derivatives && a.clear_color == b.clear_color;
+         ma.has_centroid == mb.has_centroid && (!ma.has_centroid || ca.centroid == cb.centroid) &&
+         ma.shading == mb.shading && ma.quads == mb.quads && ma.derivatives == mb.derivatives &&
+         a.clear_color == b.clear_color;
 }
 
 bool same_matrix(const std::optional<pipe::Mat4f>& a, const std::optional<pipe::Mat4f>& b) {
@@ -1499,8 +1503,9 @@ bool same_matrix(const std::optional<pipe::Mat4f>& a, const std::optional<pipe::
 // rule: SCENE.PIPELINE
 std::string write_scene(const Scene& s) {
   std::string out = scene_head(s);
-  if (s.provoking != pipe::Provoking::kFirst)
-    out += "  \"provoking_vertex\": \"" + std::string(provoking_name(s.provoking)) + "\",\n";
+  const pipe::Provoking provoking = s.conventions.provoking;
+  if (provoking != pipe::Provoking::kFirst)
+    out += "  \"provoking_vertex\": \"" + std::string(provoking_name(provoking)) + "\",\n";
   if (s.viewport) {
     const pipe::Viewport& vp = *s.viewport;
     out += "  \"viewport\": {\"x\": " + float_text(vp.x) + ", \"y\": " + float_text(vp.y) +
@@ -1521,7 +1526,7 @@ std::string write_scene(const Scene& s) {
   }
   if (s.depth) {
     const pipe::DepthState& d = *s.depth;
-    out += "  \"depth\": {\"format\": \"" + std::string(depth_format_name(d.format)) +
+    out += "  \"depth\": {\"format\": \"" + std::string(depth_format_name(s.conventions.depth)) +
            "\", \"func\": \"" + std::string(compare_func_name(d.func)) +
            "\", \"write\": " + (d.write ? "true" : "false") +
            ", \"clear\": " + float_text(d.clear) + ", \"clip\": " + (d.clip ? "true" : "false") +
@@ -1573,7 +1578,7 @@ std::string write_scene(const Scene& s) {
 }
 
 bool same_scene(const Scene& a, const Scene& b) {
-  if (!same_state(a, b) || a.provoking != b.provoking ||
+  if (!same_state(a, b) || a.conventions.provoking != b.conventions.provoking ||
       a.viewport.has_value() != b.viewport.has_value() || !same_matrix(a.model, b.model) ||
       !same_matrix(a.view, b.view) || !same_matrix(a.projection, b.projection) ||
       a.depth.has_value() != b.depth.has_value() || a.attributes.size() != b.attributes.size() ||
@@ -1591,7 +1596,7 @@ bool same_scene(const Scene& a, const Scene& b) {
   if (a.depth) {
     const pipe::DepthState& da = *a.depth;
     const pipe::DepthState& db = *b.depth;
-    if (da.format != db.format || da.func != db.func || da.write != db.write ||
+    if (a.conventions.depth != b.conventions.depth || da.func != db.func || da.write != db.write ||
         da.clip != db.clip || da.bias.bias != db.bias.bias || !same_float(da.clear, db.clear) ||
         !same_float(da.bias.slope_scaled, db.bias.slope_scaled) ||
         !same_float(da.bias.clamp, db.bias.clamp)) {
