@@ -4,16 +4,10 @@
 
 #include "cli.hpp"
 
-#include <unistd.h>
-
-#include <cerrno>
 #include <charconv>
-#include <cstring>
 #include <filesystem>
-#include <system_error>
 #include <variant>
 
-#include "rastrules/io/interrupt.hpp"
 #include "rastrules/io/scene_json.hpp"
 
 namespace rastrules::cli {
@@ -175,115 +169,6 @@ std::optional<pipe::PipeResult> run_pipeline_or_report(const Scene& scene,
     return std::nullopt;
   }
   return std::move(std::get<pipe::PipeResult>(result));
-}
-
-bool same_output_file(const std::string& a, const std::string& b) {
-  std::error_code ea, eb;
-  const std::filesystem::path ca = std::filesystem::weakly_canonical(a, ea);
-  const std::filesystem::path cb = std::filesystem::weakly_canonical(b, eb);
-  return ea || eb ? a == b : ca == cb;
-}
-
-OutputFile::~OutputFile() {
-  discard();
-}
-
-void OutputFile::discard() {
-  if (is_stdout_ || file_ == nullptr)
-    return;
-  std::fclose(file_);
-  file_ = nullptr;
-  if (is_in_place_)
-    return;
-  std::error_code ec;
-  std::filesystem::remove(temp_path_, ec);
-  io::forget_temporary(interrupt_slot_);
-  interrupt_slot_ = -1;
-}
-
-std::optional<std::string> OutputFile::open(const std::string& path) {
-  path_ = path;
-  if (path == "-") {
-    is_stdout_ = true;
-    file_ = stdout;
-    return std::nullopt;
-  }
-  // A symbolic link is followed: the temporary file is written beside the link's real target
-  // and renamed onto it, so the link stays and an error leaves the target as it was. Devices
-  // and pipes (/dev/null, /dev/stdout, a FIFO) are written in place: renaming a temporary file
-  // over them would replace them.
-  std::error_code ec;
-  std::filesystem::path target = path;
-  if (std::filesystem::is_symlink(std::filesystem::symlink_status(path, ec))) {
-    target = std::filesystem::weakly_canonical(path, ec);
-    if (ec)
-      return path + ": cannot follow the link: " + ec.message();
-  }
-  const auto st = std::filesystem::status(target, ec);
-  if (std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
-    is_in_place_ = true;
-    file_ = std::fopen(path.c_str(), "wb");
-    if (file_ == nullptr)
-      return path + ": cannot open: " + std::strerror(errno);
-    return std::nullopt;
-  }
-  // The temporary's name is short (a name of NAME_MAX bytes has no room for a suffix) and
-  // unique within the process (render writes several outputs at once).
-  static unsigned serial = 0;
-  target_path_ = target.string();
-  temp_path_ = (target.parent_path() / (".rastrules-" + std::to_string(::getpid()) + "-" +
-                                        std::to_string(serial++) + ".tmp"))
-                   .string();
-  // rule: SCENE.INPUT.ERRORS
-  // Registered before it exists, so that an interrupt never leaves it behind.
-  interrupt_slot_ = io::register_temporary(temp_path_);
-  file_ = std::fopen(temp_path_.c_str(), "wb");
-  if (file_ == nullptr) {
-    io::forget_temporary(interrupt_slot_);
-    interrupt_slot_ = -1;
-    return path + ": cannot create: " + std::strerror(errno);
-  }
-  return std::nullopt;
-}
-
-std::optional<std::string> OutputFile::commit() {
-  if (is_stdout_) {
-    if (std::fflush(stdout) != 0)
-      return std::string("<stdout>: write failed");
-    return std::nullopt;
-  }
-  const bool write_failed = std::ferror(file_) != 0;
-  const bool close_failed = std::fclose(file_) != 0;
-  file_ = nullptr;
-  if (is_in_place_) {
-    if (write_failed || close_failed)
-      return path_ + ": write failed";
-    return std::nullopt;
-  }
-  std::error_code ec;
-  std::optional<std::string> failure;
-  if (write_failed || close_failed) {
-    std::filesystem::remove(temp_path_, ec);
-    failure = path_ + ": write failed";
-  } else {
-    std::filesystem::rename(temp_path_, target_path_, ec);
-    if (ec) {
-      failure = path_ + ": cannot write: " + ec.message();
-      std::filesystem::remove(temp_path_, ec);
-    }
-  }
-  io::forget_temporary(interrupt_slot_);
-  interrupt_slot_ = -1;
-  return failure;
-}
-
-std::optional<std::string> write_text(const std::filesystem::path& path, const std::string& text) {
-  OutputFile out;
-  if (auto err = out.open(path.string()))
-    return err;
-  if (std::fwrite(text.data(), 1, text.size(), out.get()) != text.size())
-    return path.string() + ": write failed";
-  return out.commit();
 }
 
 std::optional<int> take_scene_argument(std::string_view command, const std::string& a,

@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "rastrules/io/output_file.hpp"
 #include "rastrules/pipeline.hpp"
 #include "rastrules/scene.hpp"
 
@@ -61,41 +62,11 @@ std::optional<pipe::PipeResult> run_pipeline_or_report(const Scene& scene,
                                                        std::uint64_t max_fragments,
                                                        bool plain = false);
 
-// An output file written under a temporary name and renamed into place by commit(), so that
-// a failed run leaves no output file; "-" writes to standard output; an existing path that is
-// not a regular file (a device such as /dev/null, a pipe, a symbolic link) is written in place.
-class OutputFile {
-public:
-  OutputFile() = default;
-  OutputFile(const OutputFile&) = delete;
-  OutputFile& operator=(const OutputFile&) = delete;
-  ~OutputFile();
-
-  // Opens the temporary file. Returns an error message on failure.
-  std::optional<std::string> open(const std::string& path);
-  [[nodiscard]] std::FILE* get() const { return file_; }
-  // Closes the file and moves it into place. Returns an error message on failure (and then
-  // removes the temporary file).
-  std::optional<std::string> commit();
-
-private:
-  void discard();
-  std::string path_;
-  std::string temp_path_;
-  std::string target_path_; // path_, or the real file a link at path_ names
-  int interrupt_slot_ = -1; // the temporary's slot in io::register_temporary
-  std::FILE* file_ = nullptr;
-  bool is_stdout_ = false;
-  bool is_in_place_ = false; // not a regular file: written directly, never renamed
-};
-
-// Whether two output paths name one file: equal canonical paths, following links, for files
-// that exist or not (then their folders' canonical paths and the names).
-[[nodiscard]] bool same_output_file(const std::string& a, const std::string& b);
-
-// Writes `text` to `path` through an OutputFile: the file appears only when complete. Returns
-// an error message on failure.
-std::optional<std::string> write_text(const std::filesystem::path& path, const std::string& text);
+// Output files (OutputFile, same_output_file, write_text) are rastrules::io's, shared with the
+// fuzzer's reports.
+using io::OutputFile;
+using io::same_output_file;
+using io::write_text;
 
 // Takes `a`, an argument of `command` (render, explain) that no option took, as the one scene
 // file. Returns nullopt when taken, else the exit status of the usage error (an unknown option,

@@ -7,13 +7,13 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 
 #include <nlohmann/json.hpp>
 
 #include "rastrules/fuzzer/fuzzer.hpp"
 #include "rastrules/io/interrupt.hpp"
+#include "rastrules/io/output_file.hpp"
 #include "rastrules/io/scene_json.hpp"
 
 namespace rastrules::fuzzer {
@@ -59,12 +59,10 @@ json finding_json(const Finding& f, const Settings& s, const std::string& driver
   return j;
 }
 
+// Writes a report file; it appears only when complete (io::write_text).
 bool write_text(const std::string& path, const std::string& text, std::string* error) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) {
-    *error = path + ": cannot write";
+  if (auto err = io::write_text(path, text)) {
+    *error = *err;
     return false;
   }
   return true;

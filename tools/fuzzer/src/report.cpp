@@ -10,6 +10,7 @@
 
 #include "rastrules/fuzzer/fuzzer.hpp"
 #include "rastrules/io/image.hpp"
+#include "rastrules/io/output_file.hpp"
 #include "rastrules/io/picture.hpp"
 
 namespace rastrules::fuzzer {
@@ -139,13 +140,13 @@ std::optional<std::string> write_difference_png(const std::string& path, const S
     }
     x0 += pw + kGap;
   }
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (f == nullptr)
-    return path + ": cannot create";
-  auto err = io::write_png(f, out);
-  if (std::fclose(f) != 0 && !err)
-    err = path + ": write failed";
-  return err;
+  // Written under a temporary name: a failed write leaves no truncated picture.
+  io::OutputFile file;
+  if (auto err = file.open(path))
+    return err;
+  if (auto err = io::write_png(file.get(), out))
+    return path + ": " + *err;
+  return file.commit();
 }
 
 } // namespace rastrules::fuzzer
