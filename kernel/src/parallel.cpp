@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Multithreaded rendering with results independent of the thread count: a pool of
 // standard-library threads, one work unit per primitive, results stored per unit and
-// concatenated in primitive order.
+// concatenated in primitive order; and a pool streaming work units' fragments in order
+// through bounded buffers.
 // Implements: FAST.THREADS.DETERMINISTIC
 
 #include "rastrules/parallel.hpp"
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <atomic>
 #include <condition_variable>
+#include <cstdint>
 #include <exception>
 #include <mutex>
 #include <system_error>
@@ -66,109 +68,262 @@ void run_units(std::size_t n, unsigned threads, const std::function<void(std::si
     std::rethrow_exception(failure);
 }
 
-// rule: FAST.THREADS.DETERMINISTIC
-void run_ordered(std::size_t n, unsigned threads, std::size_t window,
-                 const std::function<void(std::size_t)>& produce,
-                 const std::function<void(std::size_t)>& consume) {
-  const std::size_t wanted = std::min<std::size_t>(std::clamp(threads, 1U, kMaxThreads), n);
-  if (wanted <= 1) {
-    for (std::size_t i = 0; i < n; ++i) {
-      produce(i);
-      consume(i);
+namespace {
+
+// Thrown in a pool thread's put when the pool stops: unwinds its unit, never seen outside.
+struct PoolStopped {};
+
+// The shared state of stream_ordered: per unit of the window (slot i % window) the full
+// batches not yet consumed, whether the unit is done, and its exception.
+class StreamPool {
+public:
+  // A batch: one 16-byte entry a fragment; a fragment with more than (prim, x, y, mask 1) is
+  // kept whole beside it. A single-sample triangle's fragments take 16 bytes each.
+  struct Batch {
+    static constexpr std::uint32_t kPlain = ~std::uint32_t{0};
+    struct Entry {
+      std::uint32_t prim;
+      std::int32_t x, y;
+      std::uint32_t whole; // index in `whole`, or kPlain: Fragment{prim, x, y, 1}
+    };
+    std::vector<Entry> entries;
+    std::vector<Fragment> whole;
+
+    void push_back(const Fragment& f) {
+      const bool plain = f.mask == 1u && !f.seg && !f.coverage_q16 && !f.helper && !f.sample &&
+                         !f.centroid && !f.derivatives;
+      entries.push_back(
+          Entry{f.prim, f.x, f.y, plain ? kPlain : static_cast<std::uint32_t>(whole.size())});
+      if (!plain)
+        whole.push_back(f);
     }
-    return;
-  }
-  window = std::max<std::size_t>(window, 1);
-  struct Slot {
-    bool ready = false;
-    std::exception_ptr failure;
+    [[nodiscard]] std::size_t size() const { return entries.size(); }
+    [[nodiscard]] bool empty() const { return entries.empty(); }
+    void clear() {
+      entries.clear();
+      whole.clear();
+    }
+    void reserve(std::size_t n) { entries.reserve(n); }
+    template <class F> void for_each(F&& f) const {
+      for (const Entry& e : entries)
+        f(e.whole == kPlain ? Fragment{e.prim, e.x, e.y, 1u} : whole[e.whole]);
+    }
   };
-  std::mutex m;
-  std::condition_variable produced; // a slot became ready
-  std::condition_variable room;     // a unit was consumed, or stop
-  std::vector<Slot> slots(window);
-  std::size_t next = 0;     // the next unit to produce
-  std::size_t consumed = 0; // units consumed so far
-  bool stop = false;
-  auto work = [&] {
+
+  StreamPool(
+      const StreamBuffers& b, const std::function<bool(std::size_t)>& plan,
+      const std::function<void(std::size_t, const std::function<void(const Fragment&)>&)>& produce)
+      : b_(b), plan_(plan), produce_(produce), slots_(b.window) {}
+
+  // A pool thread: claims units in order while the window has room, produces them.
+  void work() {
     for (;;) {
       std::size_t i = 0;
       {
-        std::unique_lock<std::mutex> lock(m);
-        room.wait(lock, [&] { return stop || next >= n || next < consumed + window; });
-        if (stop || next >= n)
+        std::unique_lock<std::mutex> lock(m_);
+        room_.wait(lock, [&] { return stop_ || ended_ || next_ < consumed_ + b_.window; });
+        if (stop_ || ended_)
           return;
-        i = next++;
+        i = next_;
+        Slot& slot = slots_[i % b_.window];
+        slot = Slot{};
+        bool more = false;
+        try {
+          more = plan_(i);
+        } catch (...) {
+          // Unit i is its failure, and the last one.
+          slot.failure = std::current_exception();
+          slot.done = true;
+          next_ = i + 1;
+          ended_ = true;
+          end_ = i + 1;
+          produced_.notify_all();
+          room_.notify_all();
+          return;
+        }
+        if (!more) {
+          ended_ = true;
+          end_ = i;
+          produced_.notify_all();
+          room_.notify_all();
+          return;
+        }
+        ++next_;
       }
+      Batch batch = take_spare();
+      const auto put = [&](const Fragment& f) {
+        batch.push_back(f);
+        if (batch.size() >= b_.batch)
+          hand_over(i, batch);
+      };
       std::exception_ptr failure;
       try {
-        produce(i);
+        produce_(i, put);
+      } catch (const PoolStopped&) {
+        return;
       } catch (...) {
         failure = std::current_exception();
       }
       {
-        const std::lock_guard<std::mutex> lock(m);
-        slots[i % window].ready = true;
-        slots[i % window].failure = failure;
+        const std::lock_guard<std::mutex> lock(m_);
+        Slot& slot = slots_[i % b_.window];
+        if (!batch.empty())
+          slot.full.push_back(std::move(batch));
+        slot.done = true;
+        slot.failure = failure;
       }
-      produced.notify_one();
-    }
-  };
-  std::exception_ptr failure;
-  {
-    std::vector<std::jthread> pool;
-    pool.reserve(wanted);
-    // Stops and joins the pool however this scope is left (consume may throw).
-    struct Stopper {
-      std::mutex& m;
-      bool& stop;
-      std::condition_variable& room;
-      std::vector<std::jthread>& pool;
-      ~Stopper() {
-        {
-          const std::lock_guard<std::mutex> lock(m);
-          stop = true;
-        }
-        room.notify_all();
-        pool.clear(); // joins
-      }
-    } stopper{m, stop, room, pool};
-    for (std::size_t t = 0; t < wanted; ++t) {
-      try {
-        pool.emplace_back(work);
-      } catch (const std::system_error&) {
-        break; // fewer threads: the ones running take every unit
-      }
-    }
-    if (pool.empty()) {
-      // Not a single thread: produce on this one.
-      for (std::size_t i = 0; i < n; ++i) {
-        produce(i);
-        consume(i);
-      }
-      return;
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-      Slot* slot = nullptr;
-      {
-        std::unique_lock<std::mutex> lock(m);
-        produced.wait(lock, [&] { return slots[i % window].ready; });
-        slot = &slots[i % window];
-        failure = slot->failure;
-      }
-      if (failure)
-        break;    // the lowest-index failure: later units are not consumed
-      consume(i); // may throw: the stopper stops the pool
-      {
-        const std::lock_guard<std::mutex> lock(m);
-        slot->ready = false;
-        consumed = i + 1;
-      }
-      room.notify_all();
+      produced_.notify_all();
     }
   }
-  if (failure)
-    std::rethrow_exception(failure);
+
+  // The calling thread: consumes units 0, 1, ... in order until the plan ends or a unit fails.
+  void consume_all(const std::function<void(const Fragment&)>& consume) {
+    for (std::size_t i = 0;; ++i) {
+      Slot& slot = slots_[i % b_.window];
+      for (;;) {
+        Batch batch;
+        bool wake = false;
+        {
+          std::unique_lock<std::mutex> lock(m_);
+          produced_.wait(lock, [&] {
+            return (ended_ && end_ <= i) || (i < next_ && (!slot.full.empty() || slot.done));
+          });
+          if (ended_ && end_ <= i)
+            return;
+          if (slot.full.empty()) { // done, every batch consumed
+            if (slot.failure)
+              std::rethrow_exception(slot.failure);
+            consumed_ = i + 1;
+            break;
+          }
+          batch = std::move(slot.full.front());
+          slot.full.erase(slot.full.begin());
+          if (slot.full.size() == low_water())
+            wake = true; // the unit's producer may be waiting to fill more
+        }
+        if (wake)
+          room_.notify_all();
+        batch.for_each(consume);
+        batch.clear();
+        give_spare(std::move(batch));
+      }
+      room_.notify_all(); // the window moved
+    }
+  }
+
+  // Stops the pool: threads waiting in put or for room return.
+  void stop() {
+    {
+      const std::lock_guard<std::mutex> lock(m_);
+      stop_ = true;
+    }
+    room_.notify_all();
+  }
+
+private:
+  struct Slot {
+    std::vector<Batch> full; // at most b_.batches_per_unit
+    bool done = false;
+    std::exception_ptr failure;
+  };
+
+  // The number of full batches of a unit at which its waiting producer is woken.
+  [[nodiscard]] std::size_t low_water() const { return b_.batches_per_unit / 2; }
+
+  // Hands a full batch of unit i over; when the unit then holds batches_per_unit of them, waits
+  // until the writer has taken them down to low_water().
+  void hand_over(std::size_t i, Batch& batch) {
+    std::unique_lock<std::mutex> lock(m_);
+    Slot& slot = slots_[i % b_.window];
+    slot.full.push_back(std::move(batch));
+    produced_.notify_all();
+    if (slot.full.size() >= b_.batches_per_unit) {
+      // Full: wait until the writer has taken half of them (fewer wake-ups than one a batch).
+      room_.wait(lock, [&] { return stop_ || slot.full.size() <= low_water(); });
+    }
+    if (stop_)
+      throw PoolStopped{};
+    batch = take_spare_locked();
+  }
+
+  Batch take_spare() {
+    const std::lock_guard<std::mutex> lock(m_);
+    return take_spare_locked();
+  }
+  Batch take_spare_locked() {
+    Batch batch;
+    if (!spare_.empty()) {
+      batch = std::move(spare_.back());
+      spare_.pop_back();
+    }
+    batch.reserve(b_.batch);
+    return batch;
+  }
+  void give_spare(Batch&& batch) {
+    const std::lock_guard<std::mutex> lock(m_);
+    if (spare_.size() < b_.window) // beyond that, a freed batch is released
+      spare_.push_back(std::move(batch));
+  }
+
+  const StreamBuffers& b_;
+  const std::function<bool(std::size_t)>& plan_;
+  const std::function<void(std::size_t, const std::function<void(const Fragment&)>&)>& produce_;
+  std::mutex m_;
+  std::condition_variable produced_; // a batch was handed over, a unit is done, or the plan ended
+  std::condition_variable room_;     // a batch or a unit was consumed, or stop
+  std::vector<Slot> slots_;
+  std::vector<Batch> spare_; // emptied batches kept for reuse
+  std::size_t next_ = 0;     // the next unit to claim
+  std::size_t consumed_ = 0; // units consumed so far
+  std::size_t end_ = 0;      // with ended_: the first unit that is not consumed
+  bool ended_ = false;
+  bool stop_ = false;
+};
+
+} // namespace
+
+// rule: FAST.THREADS.DETERMINISTIC, SCENE.INPUT.LIMITS
+void stream_ordered(
+    unsigned threads, const StreamBuffers& buffers, const std::function<bool(std::size_t)>& plan,
+    const std::function<void(std::size_t, const std::function<void(const Fragment&)>&)>& produce,
+    const std::function<void(const Fragment&)>& consume) {
+  const unsigned wanted = std::clamp(threads, 1U, kMaxThreads);
+  const auto inline_all = [&] {
+    for (std::size_t i = 0; plan(i); ++i)
+      produce(i, consume);
+  };
+  if (wanted <= 1) {
+    inline_all();
+    return;
+  }
+  StreamBuffers b = buffers;
+  b.batch = std::max<std::size_t>(b.batch, 1);
+  b.batches_per_unit = std::max<std::size_t>(b.batches_per_unit, 1);
+  b.window = std::max<std::size_t>(b.window, 1);
+  StreamPool pool(b, plan, produce);
+  std::vector<std::jthread> threads_running;
+  threads_running.reserve(wanted);
+  // Stops and joins the pool however this scope is left (consume may throw).
+  struct Stopper {
+    StreamPool& pool;
+    std::vector<std::jthread>& running;
+    ~Stopper() {
+      pool.stop();
+      running.clear(); // joins
+    }
+  } stopper{pool, threads_running};
+  for (unsigned t = 0; t < wanted; ++t) {
+    try {
+      threads_running.emplace_back([&pool] { pool.work(); });
+    } catch (const std::system_error&) {
+      break; // fewer threads: the ones running take every unit
+    }
+  }
+  if (threads_running.empty()) {
+    inline_all(); // not a single thread: produce on this one
+    return;
+  }
+  pool.consume_all(consume);
 }
 
 // rule: FAST.THREADS.DETERMINISTIC, SCENE.OUTPUT.FRAGMENTS

@@ -368,6 +368,20 @@ void walk_centres(const PreparedScene& scene, const TriangleSetup& t, const Rend
   }
 }
 
+// walk_centres in the rows [y_first, y_last] only.
+// rule: FAST.EQUALS.PLAIN, RASTER.WALK.BBOX
+template <class Emit>
+void walk_centres_in_rows(const PreparedScene& scene, const TriangleSetup& t,
+                          const RenderOptions& options, std::int32_t y_first, std::int32_t y_last,
+                          Emit&& emit) {
+  if (options.traversal == Traversal::kFast) {
+    raster::walk_triangle_fast_rows(t, scene.width, scene.height, y_first, y_last,
+                                    effective_isa(options), emit);
+  } else {
+    raster::walk_triangle_rows(t, scene.width, scene.height, y_first, y_last, emit);
+  }
+}
+
 // Calls emit(x, y, mask) for the pixels with samples of the pattern t covers, by the traversal
 // of options (FAST.EQUALS.PLAIN).
 // rule: FAST.EQUALS.PLAIN, MSAA.COVER.SAMPLE
@@ -657,12 +671,12 @@ std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_
 // rule: SCENE.OUTPUT.FRAGMENTS, FAST.EQUALS.PLAIN
 void for_each_fragment(const PreparedScene& scene, std::size_t p, const RenderOptions& options,
                        const std::function<void(const Fragment&)>& emit) {
-  const PreparedPrimitive& prim = scene.primitives[p];
-  if (prim.type == PrimitiveType::kTriangle && is_single_sample(scene)) {
+  if (is_streamed(scene, p)) {
     const auto id = static_cast<std::uint32_t>(p);
-    walk_centres(scene, prim.triangles[0].setup, options, [&](std::int32_t x, std::int32_t y) {
-      emit(Fragment{id, x, y, 1u});
-    });
+    walk_centres(scene, scene.primitives[p].triangles[0].setup, options,
+                 [&](std::int32_t x, std::int32_t y) {
+                   emit(Fragment{id, x, y, 1u});
+                 });
     return;
   }
   for (const Fragment& f : rasterize_primitive(scene, p, options))
@@ -674,12 +688,33 @@ void for_each_fragment(const PreparedScene& scene, std::size_t p,
   for_each_fragment(scene, p, RenderOptions{}, emit);
 }
 
+// rule: SCENE.INPUT.LIMITS
+bool is_streamed(const PreparedScene& scene, std::size_t p) {
+  return scene.primitives[p].type == PrimitiveType::kTriangle && is_single_sample(scene);
+}
+
+PixelBounds streamed_bounds(const PreparedScene& scene, std::size_t p) {
+  const raster::PixelRect r =
+      raster::walk_bounds(scene.primitives[p].triangles[0].setup, scene.width, scene.height);
+  return PixelBounds{r.x0, r.y0, r.x1, r.y1};
+}
+
+// rule: FAST.THREADS.DETERMINISTIC, FAST.EQUALS.PLAIN
+void for_each_fragment_in_rows(const PreparedScene& scene, std::size_t p, std::int32_t y_first,
+                               std::int32_t y_last, const RenderOptions& options,
+                               const std::function<void(const Fragment&)>& emit) {
+  const auto id = static_cast<std::uint32_t>(p);
+  walk_centres_in_rows(scene, scene.primitives[p].triangles[0].setup, options, y_first, y_last,
+                       [&](std::int32_t x, std::int32_t y) {
+                         emit(Fragment{id, x, y, 1u});
+                       });
+}
+
 // rule: SCENE.INPUT.LIMITS, FAST.EQUALS.PLAIN
 bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p,
                                std::uint64_t max_collected, const RenderOptions& options,
                                const std::function<void(const Fragment&)>& emit) {
-  const PreparedPrimitive& prim = scene.primitives[p];
-  if (prim.type == PrimitiveType::kTriangle && is_single_sample(scene)) {
+  if (is_streamed(scene, p)) {
     for_each_fragment(scene, p, options, emit); // streamed: nothing is held
     return true;
   }

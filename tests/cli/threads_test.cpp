@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
 #include "rastrules/isa.hpp"
 #include "support.hpp"
@@ -139,6 +140,63 @@ TEST(CliThreads, LimitsGiveTheSameErrorForEveryThreadCount) {
   EXPECT_EQ(one.status, 2);
   EXPECT_EQ(four.status, 2);
   EXPECT_EQ(four.err, one.err);
+}
+
+// Two triangles each covering a width x height target (split into bands of rows by the
+// threads), a small one, a point and a large sliver.
+std::string large_triangles(int width, int height) {
+  const std::string w2 = std::to_string(2 * width), h2 = std::to_string(2 * height);
+  return R"({"target": {"width": )" + std::to_string(width) + R"(, "height": )" +
+         std::to_string(height) + R"(}, "primitives": [{"type": "triangle", "v": [[0.3, 0.7], [)" +
+         w2 + R"(.2, 0.1], [0.5, )" + h2 + R"(.9]]}, {"type": "point", "v": [[3.5, 3.5]]}, )" +
+         R"({"type": "triangle", "v": [[1, 1], [5, 1], [1, 5]]}, {"type": "triangle", "v": [[-3.3, 0], [)" +
+         w2 + R"(, )" + h2 + R"(.5], [0, )" + h2 +
+         R"(]]}, {"type": "triangle", "v": [[0.1, 0.2], [)" + std::to_string(width) +
+         R"(.7, 3], [2.5, )" + std::to_string(height) + R"(.25]]}]})";
+}
+
+// Issue 17 item 1, found 2026-11-25: one large triangle was one unit, drawn by one thread.
+// It is now split into bands of rows drawn on several threads; the bands' fragments,
+// concatenated in order, are the triangle's.
+// rule: FAST.THREADS.DETERMINISTIC
+TEST(CliThreads, LargeTrianglesSplitIntoBandsGiveTheSameBytesForEveryThreadCount) {
+  expect_same_bytes(large_triangles(700, 500));
+  expect_same_bytes(large_triangles(700, 500), {"--traversal", "plain"});
+  expect_same_bytes(large_triangles(1000, 90), {"--isa", "scalar"});
+}
+
+// Issue 17 item 1, found 2026-11-25: with --threads N >= 2 each chunk of primitives buffered
+// up to --max-fragments + 1 fragments (about 78 B each), 4 x N chunks at a time: two triangles
+// covering a 4096 x 4096 target took 1.25 GB, a scene of exactly 2^26 fragments 4.9 GB, and an
+// over-limit scene ended in "out of memory" instead of the limit's error. Threads now stream
+// through bounded buffers. Scaled down: two triangles covering a 2048 x 2048 target are
+// 8388608 fragments (over 650 MB as the old buffer); with the limit just below that count every
+// thread count gives the limit's error, with the count itself every one renders, and the peak
+// resident set of every child stays far below the old buffer.
+// rule: FAST.THREADS.DETERMINISTIC, SCENE.INPUT.LIMITS
+TEST(CliThreads, ThreadsStreamInBoundedMemoryAndGiveTheLimitsError) {
+  const TempDir dir;
+  const std::string full = R"({"type": "triangle", "v": [[0, 0], [4096, 0], [0, 4096]]})";
+  const auto scene = dir.write("scene.json", R"({"target": {"width": 2048, "height": 2048}, )"
+                                             R"("primitives": [)" +
+                                                 full + ", " + full + "]}");
+  const auto run = [&](const std::string& threads, const std::string& limit) {
+    return run_cli({"render", scene.string(), "--fragments", "/dev/null", "--threads", threads,
+                    "--max-fragments", limit});
+  };
+  const RunResult one = run("1", "8388607");
+  ASSERT_EQ(one.status, 2);
+  EXPECT_NE(one.err.find("more than 8388607 fragments"), std::string::npos) << one.err;
+  for (const std::string n : {"2", "4"}) {
+    const RunResult many = run(n, "8388607");
+    EXPECT_EQ(many.status, 2) << n;
+    EXPECT_EQ(many.err, one.err) << "--threads " << n;
+    const RunResult exact = run(n, "8388608");
+    EXPECT_EQ(exact.status, 0) << n << ": " << exact.err;
+  }
+  struct rusage usage {};
+  ASSERT_EQ(::getrusage(RUSAGE_CHILDREN, &usage), 0);
+  EXPECT_LT(usage.ru_maxrss, 64L * 1024) << "peak resident set in KiB";
 }
 
 // rule: FAST.THREADS.DETERMINISTIC

@@ -2,11 +2,14 @@
 // Threads change the time, not the result (FAST.THREADS.DETERMINISTIC): rasterize() with 1, 2,
 // 3, 8 and 64 threads gives the single-threaded fragments on scenes of mixed primitives, with
 // one sample and with 4 samples; the pool runs every unit once, inline for one thread, and
-// rethrows the exception of the lowest-index failing unit whatever the thread count.
+// rethrows the exception of the lowest-index failing unit whatever the thread count; the
+// streaming pool of the command line hands every fragment over in order through bounded
+// buffers and stops at the first failure in that order.
 
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <new>
 #include <stdexcept>
@@ -203,68 +206,108 @@ TEST(ThreadPool, OutOfMemoryInAWorkerReachesTheCaller) {
   }
 }
 
-// rule: FAST.THREADS.DETERMINISTIC
-TEST(OrderedPool, ConsumesInOrderWithinTheWindowForEveryThreadCount) {
+// Unit i puts i % 7 * 40 fragments (with prim = i and x counting up; every third unit's
+// fragments carry a sample, so they are kept whole) for i < units.
+void put_unit(std::size_t i, const std::function<void(const Fragment&)>& put) {
+  for (std::int32_t k = 0; k < static_cast<std::int32_t>(i % 7 * 40); ++k) {
+    Fragment f{static_cast<std::uint32_t>(i), k, 0};
+    if (i % 3 == 0)
+      f.sample = 2;
+    put(f);
+  }
+}
+
+// rule: FAST.THREADS.DETERMINISTIC, SCENE.INPUT.LIMITS
+TEST(StreamPool, ConsumesEveryFragmentInOrderWithBoundedBuffersForEveryThreadCount) {
+  const std::size_t units = 60;
+  std::vector<Fragment> expected;
+  for (std::size_t i = 0; i < units; ++i)
+    put_unit(i, [&](const Fragment& f) { expected.push_back(f); });
   for (const unsigned n : {1u, 2u, 3u, 8u, 64u}) {
-    for (const std::size_t window : {std::size_t{1}, std::size_t{3}, std::size_t{32}}) {
-      const std::size_t units = 300;
-      std::vector<std::size_t> slot(window, units); // which unit each slot holds
-      std::vector<std::atomic<int>> produced(units);
-      std::atomic<std::size_t> consumed{0};
-      std::atomic<bool> ahead_too_far{false};
-      std::vector<std::size_t> order;
-      rastrules::run_ordered(
-          units, n, window,
+    for (const rastrules::StreamBuffers b :
+         {rastrules::StreamBuffers{.batch = 1, .batches_per_unit = 1, .window = 1},
+          rastrules::StreamBuffers{.batch = 10, .batches_per_unit = 4, .window = 3},
+          rastrules::StreamBuffers{}}) {
+      std::atomic<std::size_t> planned{0}, live{0}, most_live{0};
+      std::vector<Fragment> got;
+      rastrules::stream_ordered(
+          n, b,
           [&](std::size_t i) {
-            if (i >= consumed.load() + window)
-              ahead_too_far = true;
-            produced[i].fetch_add(1);
-            slot[i % window] = i;
+            EXPECT_EQ(i, planned.load()) << "planned out of order";
+            planned = i + 1;
+            return i < units;
           },
-          [&](std::size_t i) {
-            EXPECT_EQ(produced[i].load(), 1) << "unit " << i;
-            EXPECT_EQ(slot[i % window], i) << "unit " << i << ": its slot was overwritten";
-            order.push_back(i);
-            consumed = i + 1;
-          });
-      EXPECT_FALSE(ahead_too_far.load()) << n << " threads, window " << window;
-      ASSERT_EQ(order.size(), units);
-      for (std::size_t i = 0; i < units; ++i)
-        EXPECT_EQ(order[i], i);
+          [&](std::size_t i, const std::function<void(const Fragment&)>& put) {
+            const std::size_t now = ++live;
+            for (std::size_t m = most_live.load();
+                 now > m && !most_live.compare_exchange_weak(m, now);) {
+            }
+            put_unit(i, put);
+            --live;
+          },
+          [&](const Fragment& f) { got.push_back(f); });
+      EXPECT_EQ(planned.load(), units + 1) << n << " threads";
+      EXPECT_LE(most_live.load(), std::max<std::size_t>(n, 1)) << n << " threads";
+      EXPECT_TRUE(got == expected) << n << " threads, batch " << b.batch;
     }
   }
 }
 
 // rule: FAST.THREADS.DETERMINISTIC
-TEST(OrderedPool, TheFirstFailureInIndexOrderStopsItWhateverTheThreadCount) {
+TEST(StreamPool, TheFirstFailureInOrderStopsItWhateverTheThreadCount) {
   for (const unsigned n : {1u, 2u, 8u}) {
-    // A producer failure: units before it are consumed, none after.
-    std::vector<std::size_t> order;
+    const rastrules::StreamBuffers b{.batch = 16, .batches_per_unit = 2, .window = n + 1u};
+    // A producer failure after some fragments: those are consumed first, nothing after.
+    std::vector<Fragment> got;
     try {
-      rastrules::run_ordered(
-          100, n, 8,
-          [&](std::size_t i) {
+      rastrules::stream_ordered(
+          n, b, [](std::size_t i) { return i < 100; },
+          [&](std::size_t i, const std::function<void(const Fragment&)>& put) {
+            for (std::int32_t k = 0; k < 50; ++k)
+              put(Fragment{static_cast<std::uint32_t>(i), k, 0});
             if (i == 41 || i == 77)
               throw std::runtime_error("unit " + std::to_string(i));
           },
-          [&](std::size_t i) { order.push_back(i); });
+          [&](const Fragment& f) { got.push_back(f); });
       ADD_FAILURE() << "no exception with " << n << " threads";
     } catch (const std::runtime_error& e) {
       EXPECT_EQ(std::string(e.what()), "unit 41") << n << " threads";
     }
-    ASSERT_EQ(order.size(), 41u) << n << " threads";
+    EXPECT_EQ(got.size(), 42u * 50u) << n << " threads";
     // A consumer failure: rethrown as it is, nothing consumed after it.
-    std::size_t last = 0;
-    EXPECT_THROW(rastrules::run_ordered(
-                     100, n, 4, [](std::size_t) {},
-                     [&](std::size_t i) {
-                       last = i;
-                       if (i == 13)
+    std::size_t count = 0;
+    EXPECT_THROW(rastrules::stream_ordered(
+                     n, b, [](std::size_t i) { return i < 100; },
+                     [&](std::size_t i, const std::function<void(const Fragment&)>& put) {
+                       for (std::int32_t k = 0; k < 50; ++k)
+                         put(Fragment{static_cast<std::uint32_t>(i), k, 0});
+                     },
+                     [&](const Fragment&) {
+                       if (++count == 1234)
                          throw std::bad_alloc();
                      }),
                  std::bad_alloc)
         << n << " threads";
-    EXPECT_EQ(last, 13u);
+    EXPECT_EQ(count, 1234u);
+    // A plan failure is the failure of the unit it plans.
+    got.clear();
+    try {
+      rastrules::stream_ordered(
+          n, b,
+          [](std::size_t i) {
+            if (i == 9)
+              throw std::runtime_error("plan 9");
+            return true;
+          },
+          [&](std::size_t i, const std::function<void(const Fragment&)>& put) {
+            put(Fragment{static_cast<std::uint32_t>(i), 0, 0});
+          },
+          [&](const Fragment& f) { got.push_back(f); });
+      ADD_FAILURE() << "no exception with " << n << " threads";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), "plan 9") << n << " threads";
+    }
+    EXPECT_EQ(got.size(), 9u) << n << " threads";
   }
 }
 

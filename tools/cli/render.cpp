@@ -281,58 +281,88 @@ std::optional<std::size_t> stream_fragments(const PreparedScene& scene, const Re
     }
     return std::nullopt;
   }
-  // rule: FAST.THREADS.DETERMINISTIC
-  // A pool created once rasterizes chunks of kChunk consecutive primitives, each chunk into
-  // its own buffer (slot u % window), at most `window` chunks ahead of this thread, which
-  // emits the buffers in primitive order through the same checks as above: the outputs,
-  // the error and the primitive it names are those of one thread. A chunk stops at its first
-  // primitive that needs more than it may hold (reported when the chunk is emitted, after
-  // the fragments before it) or when its buffer passes rq.max_fragments + 1 fragments (enough
-  // to pass the limit wherever it is emitted), so at most 4 * threads such buffers are held.
-  constexpr std::size_t kChunk = 64; // primitives per unit: amortises the hand-over
+  // rule: FAST.THREADS.DETERMINISTIC, SCENE.INPUT.LIMITS
+  // A pool created once produces work units in order: a band of rows of a streamed triangle
+  // whose walk visits more than kBandPixels pixels (so that several threads draw one large
+  // triangle), or up to kChunk consecutive other primitives. Their fragments reach this thread
+  // in order through the bounded buffers of stream_ordered (a unit ahead of the writer waits),
+  // where emit checks them as above: the outputs, the error and the primitive it names are
+  // those of one thread, and at most buffers.max_held() fragments are buffered, whatever the
+  // scene. A primitive that must be held to be sorted is held by the thread that draws it, as
+  // with one thread.
+  constexpr std::size_t kChunk = 64;            // primitives per unit: amortises the hand-over
+  constexpr std::int64_t kBandPixels = 1 << 16; // pixels visited per band (about)
+  const StreamBuffers buffers{
+      .batch = 2048, .batches_per_unit = 4, .window = std::size_t{rq.options.threads} + 1};
   struct Unit {
-    std::vector<Fragment> fragments;
-    std::optional<std::size_t> too_many_held; // the primitive that did not fit, if any
+    std::size_t first = 0, end = 0;        // whole primitives [first, end), or
+    std::int32_t y_first = 0, y_last = -1; // with end == first + 1 and banded: these rows
+    bool banded = false;
   };
-  struct BufferFull {};
   struct TooManyHeld {
     std::size_t p;
   };
-  const std::size_t window = std::size_t{4} * rq.options.threads;
-  const std::size_t n_units = (scene.primitives.size() + kChunk - 1) / kChunk;
-  std::vector<Unit> units(window);
+  const std::size_t n = scene.primitives.size();
+  // The rows of primitive p's bands, when it is split: at least one tile row, whole tile rows.
+  const auto band_rows = [&](std::size_t p) -> std::int32_t {
+    if (!is_streamed(scene, p))
+      return 0;
+    const PixelBounds b = streamed_bounds(scene, p);
+    const std::int64_t w = std::int64_t{b.x1} - b.x0 + 1, h = std::int64_t{b.y1} - b.y0 + 1;
+    if (b.y1 < b.y0 || w * h <= kBandPixels)
+      return 0;
+    const std::int64_t rows = std::max<std::int64_t>(16, kBandPixels / w / 16 * 16);
+    return rows >= h ? 0 : static_cast<std::int32_t>(rows);
+  };
+  // The plan, advanced under the pool's lock: unit i goes to slot i % window.
+  std::vector<Unit> units(buffers.window);
+  std::size_t next_p = 0;  // the first primitive not yet planned
+  std::int32_t next_y = 0; // within a banded primitive next_p: its next band's first row
+  bool in_bands = false;
+  const auto plan = [&](std::size_t i) {
+    if (next_p >= n)
+      return false;
+    Unit& u = units[i % buffers.window];
+    u = Unit{};
+    if (const std::int32_t rows = band_rows(next_p); rows > 0) {
+      const PixelBounds b = streamed_bounds(scene, next_p);
+      if (!in_bands) {
+        in_bands = true;
+        next_y = b.y0;
+      }
+      u = Unit{
+          next_p, next_p + 1, next_y,
+          static_cast<std::int32_t>(std::min<std::int64_t>(std::int64_t{next_y} + rows - 1, b.y1)),
+          true};
+      if (u.y_last >= b.y1) {
+        in_bands = false;
+        ++next_p;
+      } else {
+        next_y = u.y_last + 1;
+      }
+      return true;
+    }
+    u.first = next_p;
+    while (next_p < n && next_p - u.first < kChunk && (next_p == u.first || band_rows(next_p) == 0))
+      ++next_p;
+    u.end = next_p;
+    return true;
+  };
   try {
-    run_ordered(
-        n_units, rq.options.threads, window,
-        [&](std::size_t u) {
-          Unit& unit = units[u % window];
-          unit.fragments.clear();
-          unit.too_many_held.reset();
-          const std::size_t end = std::min(scene.primitives.size(), (u + 1) * kChunk);
-          try {
-            for (std::size_t p = u * kChunk; p < end; ++p) {
-              const bool fits = for_each_fragment_bounded(
-                  scene, p, 2 * rq.max_fragments, rq.options, [&](const Fragment& f) {
-                    if (unit.fragments.size() > rq.max_fragments)
-                      throw BufferFull{};
-                    unit.fragments.push_back(f);
-                  });
-              if (!fits) {
-                unit.too_many_held = p;
-                return;
-              }
-            }
-          } catch (const BufferFull&) {
-            // Emitting the buffer passes the limit: nothing after it is needed.
+    stream_ordered(
+        rq.options.threads, buffers, plan,
+        [&](std::size_t i, const std::function<void(const Fragment&)>& put) {
+          const Unit u = units[i % buffers.window];
+          if (u.banded) {
+            for_each_fragment_in_rows(scene, u.first, u.y_first, u.y_last, rq.options, put);
+            return;
+          }
+          for (std::size_t p = u.first; p < u.end; ++p) {
+            if (!for_each_fragment_bounded(scene, p, 2 * rq.max_fragments, rq.options, put))
+              throw TooManyHeld{p};
           }
         },
-        [&](std::size_t u) {
-          const Unit& unit = units[u % window];
-          for (const Fragment& f : unit.fragments)
-            emit(f);
-          if (unit.too_many_held)
-            throw TooManyHeld{*unit.too_many_held};
-        });
+        emit);
   } catch (const TooManyHeld& held) {
     return held.p;
   }

@@ -10,6 +10,8 @@
 #include <cstddef>
 #include <functional>
 
+#include "rastrules/scene.hpp"
+
 namespace rastrules {
 
 // The largest thread count a render accepts (`--threads`, RenderOptions::threads).
@@ -25,16 +27,38 @@ inline constexpr unsigned kMaxThreads = 256;
 // rule: FAST.THREADS.DETERMINISTIC
 void run_units(std::size_t n, unsigned threads, const std::function<void(std::size_t)>& unit);
 
-// Calls produce(i) for each i in [0, n) on a pool of min(threads, n) threads created once, and
-// consume(i) on the calling thread in increasing i, each after produce(i) has returned. At most
-// `window` units (>= 1) are produced ahead of the last consumed one, so produce(i) may write a
-// slot i % window that consume(i) reads. With one thread every produce(i) runs on the calling
-// thread just before consume(i), and no thread is created. The first exception in index order
-// (from produce(i) or consume(i)) stops the pool and is rethrown after every thread has
-// stopped; consume(j) never runs for j past it: the same outcome for every thread count.
-// rule: FAST.THREADS.DETERMINISTIC
-void run_ordered(std::size_t n, unsigned threads, std::size_t window,
-                 const std::function<void(std::size_t)>& produce,
-                 const std::function<void(std::size_t)>& consume);
+// The buffers of stream_ordered: fragments are handed from the pool to the calling thread in
+// batches of `batch` fragments; a unit holds at most `batches_per_unit` full batches and one it
+// fills, and at most `window` units (>= 1) are started ahead of the one being consumed.
+struct StreamBuffers {
+  std::size_t batch = 2048;
+  std::size_t batches_per_unit = 2;
+  std::size_t window = 2;
+  // The most fragments buffered at once: every unit of the window with its full batches and
+  // the one it fills, the batch the calling thread consumes, and up to `window` emptied batches
+  // kept for reuse. A buffered fragment takes 16 bytes, plus sizeof(Fragment) when it has more
+  // than (prim, x, y, mask 1): seg, coverage, sample, centroid, derivatives, helper.
+  [[nodiscard]] std::size_t max_held() const {
+    return (window * (batches_per_unit + 2) + 1) * batch;
+  }
+};
+
+// Streams the fragments of work units 0, 1, 2, ... produced on a pool of `threads` threads
+// created once to consume, called on the calling thread in unit order and, within a unit, in
+// the order produce(i, put) puts them: the calls consume sees do not depend on the thread count
+// or on scheduling. plan(i) is called once for i = 0, 1, ... in increasing order, under the
+// pool's lock, until it returns false (there is no unit i); units i and later are not produced.
+// A unit whose fragments are not consumed as fast as they are put waits in put when it holds
+// buffers.batches_per_unit full batches, so at most buffers.max_held() fragments are held,
+// whatever the number of fragments or units. With one thread (or none that can be created)
+// every unit is produced on the calling thread, its fragments passed straight to consume. An
+// exception from produce(i) is rethrown after consume has seen every fragment unit i put before
+// it; one from consume is rethrown at once; either way the pool stops first, and nothing after
+// it is consumed: the same outcome for every thread count.
+// rule: FAST.THREADS.DETERMINISTIC, SCENE.INPUT.LIMITS
+void stream_ordered(
+    unsigned threads, const StreamBuffers& buffers, const std::function<bool(std::size_t)>& plan,
+    const std::function<void(std::size_t, const std::function<void(const Fragment&)>&)>& produce,
+    const std::function<void(const Fragment&)>& consume);
 
 } // namespace rastrules

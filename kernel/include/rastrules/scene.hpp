@@ -251,6 +251,27 @@ void for_each_fragment(const PreparedScene& scene, std::size_t p, const RenderOp
                                              const RenderOptions& options,
                                              const std::function<void(const Fragment&)>& emit);
 
+// Whether primitive p is streamed as the traversal finds it (a triangle of a single-sample
+// scene): for_each_fragment holds nothing of it, and its rows can be drawn apart.
+// rule: SCENE.INPUT.LIMITS
+[[nodiscard]] bool is_streamed(const PreparedScene& scene, std::size_t p);
+
+// The pixels of the target a walk of streamed primitive p visits: rows [y0, y1], columns
+// [x0, x1], inclusive (empty when y1 < y0: degenerate, culled or outside the target).
+struct PixelBounds {
+  std::int32_t x0 = 0, y0 = 0, x1 = -1, y1 = -1;
+};
+[[nodiscard]] PixelBounds streamed_bounds(const PreparedScene& scene, std::size_t p);
+
+// Calls emit for the fragments of streamed primitive p in the rows [y_first, y_last], in the
+// order for_each_fragment emits them: the fragments of consecutive row ranges, concatenated,
+// are for_each_fragment's (FAST.THREADS.DETERMINISTIC splits a large triangle this way).
+// Preconditions: is_streamed(scene, p).
+// rule: FAST.THREADS.DETERMINISTIC, FAST.EQUALS.PLAIN
+void for_each_fragment_in_rows(const PreparedScene& scene, std::size_t p, std::int32_t y_first,
+                               std::int32_t y_last, const RenderOptions& options,
+                               const std::function<void(const Fragment&)>& emit);
+
 // Returns the fragments of a prepared scene sorted by (prim, y, x, seg, sample), only inside the
 // target.
 // rule: SCENE.OUTPUT.FRAGMENTS, RASTER.TARGET.CLIP

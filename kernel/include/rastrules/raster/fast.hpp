@@ -74,15 +74,16 @@ constexpr std::int32_t strip_rows(std::size_t words_per_row, std::size_t planes)
 }
 } // namespace fast_detail
 
-// Calls emit(x, y) for exactly the pixels walk_triangle(t, width, height, emit) emits, in the
-// same order. Strips of whole tile rows (all of the pixel bounds when they fit 4 KiB of bits)
-// are decided by fast_cover_rect, then their set bits emitted row by row.
+// Calls emit(x, y) for exactly the pixels walk_triangle_rows(t, width, height, y_first, y_last,
+// emit) emits, in the same order. Strips of whole tile rows from the first row (all of the
+// pixel bounds when they fit 4 KiB of bits) are decided by fast_cover_rect, then their set bits
+// emitted row by row.
 // Preconditions: width, height in [1, kMaxTargetSide]; isa_supported(isa).
 // rule: FAST.EQUALS.PLAIN
 template <class Emit>
-void walk_triangle_fast(const TriangleSetup& t, std::int32_t width, std::int32_t height, Isa isa,
-                        Emit&& emit) {
-  const PixelRect r = walk_bounds(t, width, height);
+void walk_triangle_fast_rows(const TriangleSetup& t, std::int32_t width, std::int32_t height,
+                             std::int32_t y_first, std::int32_t y_last, Isa isa, Emit&& emit) {
+  const PixelRect r = rows_of(walk_bounds(t, width, height), y_first, y_last);
   if (r.empty())
     return;
   const auto wpr = static_cast<std::size_t>(r.x1 - r.x0 + 64) / 64;
@@ -108,6 +109,15 @@ void walk_triangle_fast(const TriangleSetup& t, std::int32_t width, std::int32_t
       }
     }
   }
+}
+
+// Calls emit(x, y) for exactly the pixels walk_triangle(t, width, height, emit) emits, in the
+// same order.
+// rule: FAST.EQUALS.PLAIN
+template <class Emit>
+void walk_triangle_fast(const TriangleSetup& t, std::int32_t width, std::int32_t height, Isa isa,
+                        Emit&& emit) {
+  walk_triangle_fast_rows(t, width, height, 0, height - 1, isa, emit);
 }
 
 // Calls emit(x, y, mask) for exactly what walk_triangle_samples(t, pattern, width, height, emit)

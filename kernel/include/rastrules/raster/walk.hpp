@@ -84,15 +84,24 @@ struct EdgeSteps {
   return st;
 }
 
-// Calls emit(x, y) for every covered pixel centre of t inside the target, row by row.
+// Returns the rows [y_first, y_last] of r (empty when none of them is in r).
+[[nodiscard]] constexpr PixelRect rows_of(PixelRect r, std::int32_t y_first, std::int32_t y_last) {
+  r.y0 = std::max(r.y0, y_first);
+  r.y1 = std::min(r.y1, y_last);
+  return r;
+}
+
+// Calls emit(x, y) for every covered pixel centre of t inside the target in the rows
+// [y_first, y_last], row by row: what walk_triangle emits in those rows, in the same order, so
+// the walks of consecutive row ranges, concatenated, are walk_triangle's.
 // Each edge is evaluated directly at the start of a row and stepped by one pixel along it,
 // and tested in bias form (E + bias >= 0); both are proved equal to the direct rule
 // (proofs/tri/bias_form.cpp, proofs/tri/incremental_step.cpp).
 // rule: RASTER.WALK.BBOX, FIX.BIAS.FORM, FIX.STEP.INCREMENTAL
 template <class Emit>
-constexpr void walk_triangle(const TriangleSetup& t, std::int32_t width, std::int32_t height,
-                             Emit&& emit) {
-  const PixelRect r = walk_bounds(t, width, height);
+constexpr void walk_triangle_rows(const TriangleSetup& t, std::int32_t width, std::int32_t height,
+                                  std::int32_t y_first, std::int32_t y_last, Emit&& emit) {
+  const PixelRect r = rows_of(walk_bounds(t, width, height), y_first, y_last);
   if (r.empty())
     return;
   const EdgeSteps st = edge_steps(t);
@@ -111,6 +120,14 @@ constexpr void walk_triangle(const TriangleSetup& t, std::int32_t width, std::in
       e2 += step_x[2];
     }
   }
+}
+
+// Calls emit(x, y) for every covered pixel centre of t inside the target, row by row.
+// rule: RASTER.WALK.BBOX
+template <class Emit>
+constexpr void walk_triangle(const TriangleSetup& t, std::int32_t width, std::int32_t height,
+                             Emit&& emit) {
+  walk_triangle_rows(t, width, height, 0, height - 1, emit);
 }
 
 } // namespace rastrules::raster
