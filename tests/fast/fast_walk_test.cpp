@@ -196,6 +196,42 @@ TEST(FastLaneI32, SliversWithStepsNearTwoToTheTwentyFour) {
   expect_fast_equals_plain(raw_triangle(lo, lo, hi, hi, hi, hi - 300), 1024, 1024);
 }
 
+// Issue 17 item 2: a long diagonal sliver that covers no pixel centre cost the fast walk
+// every word of its bounding box (7.6 ms on the largest target). Each strip of rows is now
+// narrowed to the columns the triangle reaches there (narrow_to_rows), so it costs per row;
+// the coverage stays the plain walk's, at the centres and at every sample pattern.
+// rule: FAST.EQUALS.PLAIN
+TEST(FastEqualsPlain, LongSliversAreNarrowedToTheirColumnsPerStrip) {
+  const std::int32_t s = kMaxTargetSide;
+  // y - x in [0.25, 0.254]: no pixel centre, 16384 x 16384 bounding box.
+  const TriangleSetup none = triangle_px({0, 0.25}, {16384, 16384.25}, {16384, 16384.25390625});
+  ASSERT_EQ(none.status, TriangleStatus::kRasterized);
+  const raster::PixelRect r = raster::walk_bounds(none, s, s);
+  EXPECT_EQ(r.x1 - r.x0 + 1, s);
+  for (std::int32_t y0 : {0, 16, 8000, s - 16}) {
+    const raster::PixelRect n = raster::narrow_to_rows(none, {r.x0, y0, r.x1, y0 + 15}, 0);
+    EXPECT_EQ(n.y0, y0);
+    EXPECT_EQ(n.y1, y0 + 15);
+    EXPECT_LE(n.x1 - n.x0 + 1, 18) << y0; // the 16 rows' columns, not 16384
+    const raster::PixelRect m = raster::narrow_to_rows(none, {r.x0, y0, r.x1, y0 + 15}, 128);
+    EXPECT_LE(m.x1 - m.x0 + 1, 20) << y0;
+  }
+  // Rows the triangle does not reach are empty.
+  const TriangleSetup small = triangle_px({10, 10}, {20, 10}, {10, 20});
+  EXPECT_TRUE(raster::narrow_to_rows(small, {0, 30, 63, 45}, 0).empty());
+  expect_fast_equals_plain(none, s, s);
+  // Slivers that do cover a few centres, in both diagonal directions and nearly flat.
+  expect_fast_equals_plain(triangle_px({0, 0.5}, {3000, 3000.5}, {3000, 3000.625}), 3000, 3000);
+  expect_fast_equals_plain(triangle_px({3000, 0.5}, {0, 3000.5}, {0, 3001}), 3000, 3000);
+  expect_fast_equals_plain(triangle_px({-7, 3.5}, {5000, 9.5}, {-7, 4}), 4096, 64);
+  const TriangleSetup sliver = triangle_px({0, 0.1875}, {700, 700.1875}, {700, 700.875});
+  for (std::uint32_t n : {2u, 4u, 16u}) {
+    const SamplePattern p = standard_pattern(n);
+    for (Isa isa : supported_isas())
+      EXPECT_EQ(fast_samples(sliver, p, 700, 700, isa), plain_samples(sliver, p, 700, 700)) << n;
+  }
+}
+
 // rule: FAST.TILE.CLASSIFY, FAST.LANE.I32
 TEST(FastCoverRect, WritesEveryWordOfTheRectangleBitPerSample) {
   const TriangleSetup t = triangle_px({3.1875, 1.875}, {150.625, 20.3125}, {40.125, 33.6875});

@@ -74,6 +74,57 @@ constexpr std::int32_t strip_rows(std::size_t words_per_row, std::size_t planes)
 }
 } // namespace fast_detail
 
+// Returns r narrowed to the columns where t can cover a sample point in the rows of r: the
+// pixels whose sample points, at most `reach` raw units from the pixel centre on each axis,
+// can lie in the closed triangle within those rows (empty when it meets none of them). A
+// covered sample point lies in the closed triangle, so the coverage of the narrowed rectangle
+// is that of r: a long thin triangle costs per row, not per pixel of its bounding box.
+// Preconditions: t.status == kRasterized; reach >= 0.
+// rule: FAST.EQUALS.PLAIN
+[[nodiscard]] constexpr PixelRect narrow_to_rows(const TriangleSetup& t, PixelRect r,
+                                                 std::int64_t reach) {
+  const std::int64_t ya = std::int64_t{r.y0} * kSubpixelOne + kSubpixelHalf - reach;
+  const std::int64_t yb = std::int64_t{r.y1} * kSubpixelOne + kSubpixelHalf + reach;
+  std::int64_t lo = 0, hi = -1;
+  bool any = false;
+  const auto take = [&](std::int64_t x0, std::int64_t x1) {
+    lo = any ? std::min(lo, x0) : x0;
+    hi = any ? std::max(hi, x1) : x1;
+    any = true;
+  };
+  // The triangle's part in the band ya <= y <= yb is convex: its vertices are the triangle's
+  // vertices in the band and the edges' crossings of y = ya and y = yb (x rounded outwards).
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::int64_t px = t.snapped[i].x.raw(), py = t.snapped[i].y.raw();
+    const std::int64_t qx = t.snapped[(i + 1) % 3].x.raw(), qy = t.snapped[(i + 1) % 3].y.raw();
+    if (py >= ya && py <= yb)
+      take(px, px);
+    if (py == qy)
+      continue;
+    for (const std::int64_t y : {ya, yb}) {
+      if (y < std::min(py, qy) || y > std::max(py, qy))
+        continue;
+      // x = px + (y - py) (qx - px) / (qy - py), |numerator| < 2^50 (SNAP.VERTEX.RANGE).
+      std::int64_t num = (y - py) * (qx - px), den = qy - py;
+      if (den < 0) {
+        num = -num;
+        den = -den;
+      }
+      take(px + floor_div(num, den), px + ceil_div(num, den));
+    }
+  }
+  if (!any)
+    return PixelRect{};
+  // Pixel x has a sample point within reach of [lo, hi] when 256 x + 128 + reach >= lo and
+  // 256 x + 128 - reach <= hi.
+  const std::int64_t x0 = ceil_div(lo - kSubpixelHalf - reach, kSubpixelOne);
+  const std::int64_t x1 = floor_div(hi - kSubpixelHalf + reach, kSubpixelOne);
+  PixelRect n = r;
+  n.x0 = static_cast<std::int32_t>(std::max<std::int64_t>(r.x0, x0));
+  n.x1 = static_cast<std::int32_t>(std::min<std::int64_t>(r.x1, x1));
+  return n.x1 < n.x0 ? PixelRect{} : n;
+}
+
 // Calls emit(x, y) for exactly the pixels walk_triangle_rows(t, width, height, y_first, y_last,
 // emit) emits, in the same order. Strips of whole tile rows from the first row (all of the
 // pixel bounds when they fit 4 KiB of bits) are decided by fast_cover_rect, then their set bits
@@ -96,14 +147,19 @@ void walk_triangle_fast_rows(const TriangleSetup& t, std::int32_t width, std::in
     heap.resize(words);
     buf = heap.data();
   }
-  // Strips of whole tile rows from the first row of the bounds.
+  // Strips of whole tile rows from the first row of the bounds, each narrowed to the columns
+  // the triangle reaches in its rows (at most wpr words a row).
   for (std::int32_t sy = r.y0; sy <= r.y1; sy += rows) {
-    const PixelRect strip{r.x0, std::max(sy, r.y0), r.x1, std::min(sy + rows - 1, r.y1)};
-    fast_cover_rect(t, strip, 0, 0, isa, buf, wpr);
+    const PixelRect strip =
+        narrow_to_rows(t, PixelRect{r.x0, sy, r.x1, std::min(sy + rows - 1, r.y1)}, 0);
+    if (strip.empty())
+      continue;
+    const auto spr = static_cast<std::size_t>(strip.x1 - strip.x0 + 64) / 64;
+    fast_cover_rect(t, strip, 0, 0, isa, buf, spr);
     for (std::int32_t y = strip.y0; y <= strip.y1; ++y) {
-      const std::uint64_t* row = buf + static_cast<std::size_t>(y - strip.y0) * wpr;
-      for (std::size_t w = 0; w < wpr; ++w) {
-        const std::int32_t x_base = r.x0 + static_cast<std::int32_t>(w * 64);
+      const std::uint64_t* row = buf + static_cast<std::size_t>(y - strip.y0) * spr;
+      for (std::size_t w = 0; w < spr; ++w) {
+        const std::int32_t x_base = strip.x0 + static_cast<std::int32_t>(w * 64);
         for (std::uint64_t bits = row[w]; bits != 0; bits &= bits - 1)
           emit(x_base + std::countr_zero(bits), y);
       }
@@ -143,19 +199,24 @@ void walk_triangle_samples_fast(const TriangleSetup& t, const SamplePattern& pat
     buf = heap.data();
   }
   for (std::int32_t sy = r.y0; sy <= r.y1; sy += rows) {
-    const PixelRect strip{r.x0, std::max(sy, r.y0), r.x1, std::min(sy + rows - 1, r.y1)};
+    // Narrowed for sample points up to half a pixel from the centre (the sample grid's reach).
+    const PixelRect strip =
+        narrow_to_rows(t, PixelRect{r.x0, sy, r.x1, std::min(sy + rows - 1, r.y1)}, kSubpixelHalf);
+    if (strip.empty())
+      continue;
+    const auto spr = static_cast<std::size_t>(strip.x1 - strip.x0 + 64) / 64;
     for (std::size_t k = 0; k < n; ++k) {
       const SampleOffset o = pattern.positions[k];
       fast_cover_rect(t, strip, std::int32_t{o.x} * kSampleGridUnit,
-                      std::int32_t{o.y} * kSampleGridUnit, isa, buf + k * plane, wpr);
+                      std::int32_t{o.y} * kSampleGridUnit, isa, buf + k * plane, spr);
     }
     for (std::int32_t y = strip.y0; y <= strip.y1; ++y) {
-      const std::size_t row = static_cast<std::size_t>(y - strip.y0) * wpr;
-      for (std::size_t w = 0; w < wpr; ++w) {
+      const std::size_t row = static_cast<std::size_t>(y - strip.y0) * spr;
+      for (std::size_t w = 0; w < spr; ++w) {
         std::uint64_t any = 0;
         for (std::size_t k = 0; k < n; ++k)
           any |= buf[k * plane + row + w];
-        const std::int32_t x_base = r.x0 + static_cast<std::int32_t>(w * 64);
+        const std::int32_t x_base = strip.x0 + static_cast<std::int32_t>(w * 64);
         for (; any != 0; any &= any - 1) {
           const int bit = std::countr_zero(any);
           std::uint32_t mask = 0;
