@@ -105,6 +105,7 @@ std::variant<std::vector<Fragment>, SceneError> render(const Scene& scene,
   pipe::PipeOptions o;
   o.render = options;
   o.max_fragments = std::numeric_limits<std::uint64_t>::max();
+  o.max_work = std::numeric_limits<std::uint64_t>::max();
   auto result = pipe::run_pipeline(scene, o);
   if (auto* err = std::get_if<SceneError>(&result))
     return *err;

@@ -655,6 +655,73 @@ std::vector<Fragment> rasterize_msaa(const PreparedScene& scene, std::size_t p,
 
 } // namespace
 
+namespace {
+
+// Returns the pixel indices [lo, hi] within 2 of the raw interval [a, b], clipped to [0, n):
+// their count (0 when none).
+std::uint64_t clipped_span(std::int64_t a, std::int64_t b, std::int32_t n) {
+  const std::int64_t lo = std::max<std::int64_t>(floor_div(std::min(a, b), kSubpixelOne) - 2, 0);
+  const std::int64_t hi =
+      std::min<std::int64_t>(floor_div(std::max(a, b), kSubpixelOne) + 2, std::int64_t{n} - 1);
+  return hi < lo ? 0 : static_cast<std::uint64_t>(hi - lo + 1);
+}
+
+std::uint64_t area(const raster::PixelRect& r) {
+  return r.empty() ? 0
+                   : static_cast<std::uint64_t>(r.x1 - r.x0 + 1) *
+                         static_cast<std::uint64_t>(r.y1 - r.y0 + 1);
+}
+
+} // namespace
+
+// rule: SCENE.INPUT.LIMITS, RASTER.WALK.BBOX
+std::uint64_t primitive_work(const PreparedScene& scene, std::size_t p) {
+  const PreparedPrimitive& prim = scene.primitives[p];
+  const bool single = is_single_sample(scene);
+  // The same choice as rasterize_single and sample_coverage_of: the triangles it draws, or
+  // the segments the line rasterizers walk.
+  const bool triangles =
+      single ? !prim.triangles.empty() || !is_line(prim.type)
+             : !is_line(prim.type) || lines_as_quads(scene.conventions, prim.aa, scene.msaa);
+  std::uint64_t work = 0;
+  if (triangles) {
+    for (const PreparedTriangle& t : prim.triangles) {
+      work += single ? area(raster::walk_bounds(t.setup, scene.width, scene.height))
+                     : area(raster::sample_walk_bounds(t.setup, scene.msaa.pattern, scene.width,
+                                                       scene.height)) *
+                           scene.msaa.pattern.count();
+    }
+    return work;
+  }
+  // A step of a line rasterizer's walk (a column or row, its few candidate pixels) costs
+  // about as much as 16 sample tests of the plain triangle walk.
+  constexpr std::uint64_t kLineStepWork = 16;
+  for (std::size_t s = 0; s + 1 < prim.v.size(); ++s) {
+    const Vec2 a = prim.v[s], b = prim.v[s + 1];
+    work += kLineStepWork * (clipped_span(a.x.raw(), b.x.raw(), scene.width) +
+                             clipped_span(a.y.raw(), b.y.raw(), scene.height));
+  }
+  return work;
+}
+
+// rule: SCENE.INPUT.LIMITS
+std::optional<std::size_t> first_primitive_over_work(const PreparedScene& scene,
+                                                     std::uint64_t max_work) {
+  std::uint64_t total = 0; // at most 2^20 primitives of at most 2^35 each: no overflow
+  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+    total += primitive_work(scene, p);
+    if (total > max_work)
+      return p;
+  }
+  return std::nullopt;
+}
+
+// rule: SCENE.INPUT.LIMITS
+std::string work_limit_problem(std::uint64_t max_work) {
+  return "brings the work to more than " + std::to_string(max_work) +
+         " sample tests (limit SCENE.INPUT.LIMITS)";
+}
+
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.PRIM.LINE_STRIP, SCENE.OUTPUT.MSAA
 // rule: FAST.EQUALS.PLAIN
 std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_t p,

@@ -9,10 +9,12 @@
 #include <fstream>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "rastrules/io/scene_json.hpp"
+#include "rastrules/scene.hpp"
 #include "support.hpp"
 
 namespace {
@@ -213,6 +215,80 @@ TEST(Limits, DefaultFragmentLimitIsStatedInTheUsage) {
   EXPECT_EQ(io::kDefaultMaxFragments, std::uint64_t{1} << 26);
   const auto r = run_cli({"--help"});
   EXPECT_NE(r.out.find("--max-fragments fragments (default 67108864)"), std::string::npos) << r.out;
+}
+
+// `n` long diagonal slivers across a 1024 x 1024 target that cover no pixel centre (y - x
+// stays in [0.25, 0.254]): 0 fragments, yet each makes the plain traversal test every pixel
+// of its 1024 x 1024 bounding box. extra: more keys of each primitive (a pipeline key makes it
+// a pipeline scene).
+std::string slivers(std::size_t n, const std::string& extra = "") {
+  std::string s = head(1024, 1024);
+  for (std::size_t i = 0; i < n; ++i) {
+    s += i == 0 ? "" : ",";
+    s += "{\"type\": \"triangle\", \"v\": [[0,0.25],[1024,1024.25],[1024,1024.254]]" + extra + "}";
+  }
+  return s + "]}";
+}
+
+// Issue 17 item 2: a scene of slivers has no fragment for the fragment limit to count, so its
+// time was bounded by nothing. The work limit (--max-work, scaled down here from its default
+// of 2^36) counts the pixels of each bounding box before anything is drawn: the same error,
+// naming the primitive at which the sum passes it, for every thread count and traversal.
+// rule: SCENE.INPUT.LIMITS, FAST.THREADS.DETERMINISTIC, FAST.EQUALS.PLAIN
+TEST(Limits, WorkLimitRefusesSliversBeforeDrawingThem) {
+  const TempDir dir;
+  const auto scene = dir.write("slivers.json", slivers(3)); // 3 x 2^20 = 3145728 pixel tests
+  for (const char* threads : {"1", "2"}) {
+    for (const char* traversal : {"fast", "plain"}) {
+      const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(),
+                              "--png", (dir / "out.png").string(), "--max-work", "3145727",
+                              "--threads", threads, "--traversal", traversal});
+      expect_one_error_line(r, "render: primitives[2] brings the work to more than 3145727 "
+                               "sample tests (limit SCENE.INPUT.LIMITS); raise it with "
+                               "--max-work N");
+      EXPECT_EQ(r.out, "");
+      EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
+      EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+    }
+  }
+  // A pipeline scene (window-space depth per vertex): its clipped primitives are counted the
+  // same way, before they are rasterized.
+  const auto pipeline = dir.write("pipeline.json", slivers(3, ", \"z\": [0, 0, 0]"));
+  const auto p = run_cli({"render", pipeline.string(), "--fragments", (dir / "out.json").string(),
+                          "--max-work", "2097151"});
+  expect_one_error_line(p, "primitives[1]: brings the work to more than 2097151 sample "
+                           "tests (limit SCENE.INPUT.LIMITS); raise it with --max-work N");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
+}
+
+// rule: SCENE.INPUT.LIMITS
+TEST(Limits, MaxWorkRaisesTheWorkLimit) {
+  const TempDir dir;
+  const auto scene = dir.write("slivers.json", slivers(3));
+  for (const char* limit : {"3145728", "1152921504606846976"}) {
+    const auto ok = run_cli({"render", scene.string(), "--fragments", (dir / "ok.json").string(),
+                             "--threads", "2", "--max-work", limit});
+    EXPECT_EQ(ok.status, 0) << ok.err;
+    EXPECT_EQ(read_file(dir / "ok.json"), "{\"fragments\": []}\n");
+  }
+  // The default (2^36) is far above it, and stated in the usage.
+  EXPECT_EQ(rastrules::kDefaultMaxWork, std::uint64_t{1} << 36);
+  const auto dflt = run_cli({"render", scene.string(), "--fragments", (dir / "d.json").string()});
+  EXPECT_EQ(dflt.status, 0) << dflt.err;
+  const auto help = run_cli({"--help"});
+  EXPECT_NE(help.out.find("more work than --max-work sample tests (default 68719476736"),
+            std::string::npos)
+      << help.out;
+  for (const char* bad : {"0", "-1", "x", "1152921504606846977"}) {
+    const auto r = run_cli(
+        {"render", scene.string(), "--fragments", (dir / "o.json").string(), "--max-work", bad});
+    EXPECT_EQ(r.err_lines(),
+              std::vector<std::string>{
+                  "rastrules: error: --max-work needs an integer in [1, 2^60], got \"" +
+                  std::string(bad) + "\""})
+        << bad;
+    EXPECT_EQ(r.status, 2);
+  }
 }
 
 // rule: SCENE.INPUT.ERRORS

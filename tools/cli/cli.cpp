@@ -28,7 +28,7 @@ void print_usage(std::FILE* out) {
       "\n"
       "commands:\n"
       "  render SCENE.json [--fragments OUT.json] [--png OUT.png] [--scale N]\n"
-      "         [--resolve OUT.png] [--max-fragments N] [--threads N]\n"
+      "         [--resolve OUT.png] [--max-fragments N] [--max-work N] [--threads N]\n"
       "         [--traversal plain|fast] [--isa scalar|avx2|avx512|auto]\n"
       "         [--png-depth] [--depth-out OUT.json] [--pipeline-plain]\n"
       "      Rasterize a scene (spec/scene.md). --fragments writes the fragment list,\n"
@@ -40,7 +40,9 @@ void print_usage(std::FILE* out) {
       "      writes the resolved target as an RGBA PNG (MSAA.RESOLVE.AVERAGE; at most\n"
       "      2^26 samples in all, MSAA.LIMITS). At least one output is needed. \"-\" reads\n"
       "      the scene from standard input or writes one output to standard output. More\n"
-      "      than --max-fragments fragments (default 67108864) is an error\n"
+      "      than --max-fragments fragments (default 67108864) is an error, and so is\n"
+      "      more work than --max-work sample tests (default 68719476736: the pixels of\n"
+      "      each triangle's bounding box, counted before any is drawn)\n"
       "      (SCENE.INPUT.LIMITS). --threads N (1 to 256, default 1) renders with N\n"
       "      threads, the same bytes as with one (FAST.THREADS.DETERMINISTIC);\n"
       "      --traversal (default fast) and --isa (default auto: the widest the processor\n"
@@ -153,7 +155,8 @@ std::optional<LoadedScene> load_window_scene(const std::string& path) {
 // rule: SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
 std::optional<pipe::PipeResult> run_pipeline_or_report(const Scene& scene,
                                                        const RenderOptions& options,
-                                                       std::uint64_t max_fragments, bool plain) {
+                                                       std::uint64_t max_fragments, bool plain,
+                                                       std::uint64_t max_work) {
   // rule: PIPE.OPT.TILES, PIPE.OPT.HIZ, PIPE.OPT.EARLY_Z, PIPE.OPT.FAST_CLEAR
   pipe::PipeOptions o;
   o.render = options;
@@ -163,8 +166,14 @@ std::optional<pipe::PipeResult> run_pipeline_or_report(const Scene& scene,
     o.render.isa = options.isa;
   }
   o.max_fragments = max_fragments;
+  o.max_work = max_work;
   auto result = pipe::run_pipeline(scene, o);
   if (auto* err = std::get_if<SceneError>(&result)) {
+    // rule: SCENE.INPUT.LIMITS
+    if (err->message == work_limit_problem(max_work)) {
+      error(err->what() + "; raise it with --max-work N");
+      return std::nullopt;
+    }
     error(err->what());
     return std::nullopt;
   }

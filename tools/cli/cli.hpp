@@ -54,13 +54,15 @@ std::optional<LoadedScene> load_scene(const std::string& path);
 std::optional<LoadedScene> load_window_scene(const std::string& path);
 
 // Runs the pipeline on a scene read by load_scene(); on bad input (run_pipeline's SceneError,
-// also more than max_fragments fragments) prints the one-line error and returns nullopt.
-// plain: every optimization off (PipeOptions::plain(), `render --pipeline-plain`).
+// also more than max_fragments fragments or max_work sample tests) prints the one-line error
+// and returns nullopt. plain: every optimization off (PipeOptions::plain(), `render
+// --pipeline-plain`).
 // rule: SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
 std::optional<pipe::PipeResult> run_pipeline_or_report(const Scene& scene,
                                                        const RenderOptions& options,
                                                        std::uint64_t max_fragments,
-                                                       bool plain = false);
+                                                       bool plain = false,
+                                                       std::uint64_t max_work = kDefaultMaxWork);
 
 // Output files (OutputFile, same_output_file, write_text) are rastrules::io's, shared with the
 // fuzzer's reports.

@@ -122,6 +122,7 @@ struct RenderRequest {
   std::optional<int> scale;
   bool png_depth = false;
   std::uint64_t max_fragments = io::kDefaultMaxFragments;
+  std::uint64_t max_work = kDefaultMaxWork;
   RenderOptions options;
   int to_stdout = 0;
   bool pipeline_plain = false;
@@ -171,7 +172,7 @@ int render_pipeline(const Scene& scene, const RenderRequest& rq) {
   // run_pipeline stops at the first fragment beyond the limit (and at a primitive that would
   // hold more than it to sort them); its list is checked again here.
   const std::optional<pipe::PipeResult> result =
-      run_pipeline_or_report(scene, rq.options, rq.max_fragments, rq.pipeline_plain);
+      run_pipeline_or_report(scene, rq.options, rq.max_fragments, rq.pipeline_plain, rq.max_work);
   if (!result)
     return kExitBadInput;
   if (result->fragments.size() > rq.max_fragments) {
@@ -377,6 +378,12 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
     return error(std::string(rq.png_depth ? "--png-depth" : "--depth-out") +
                  ": a window-space scene without \"depth\" has no depth buffer (SCENE.PIPELINE)");
   }
+  // rule: SCENE.INPUT.LIMITS
+  // The work limit, checked before any primitive is rasterized: the plain traversal's sample
+  // tests, the same for every traversal, instruction set and thread count.
+  if (const auto p = first_primitive_over_work(scene, rq.max_work))
+    return error("render: primitives[" + std::to_string(*p) + "] " +
+                 work_limit_problem(rq.max_work) + "; raise it with --max-work N");
   const std::optional<int> picture_scale = picture_scale_of(scene.width, scene.height, rq);
   if (!picture_scale)
     return kExitBadInput;
@@ -493,6 +500,20 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
   return kExitOk;
 }
 
+// Reads the value v of a limit flag (--max-fragments, --max-work) into out: an integer in
+// [1, 2^max_bits]. Returns the exit code of the one-line error otherwise.
+// rule: SCENE.INPUT.LIMITS
+std::optional<int> parse_limit(const char* flag, const std::optional<std::string>& v, int max_bits,
+                               std::uint64_t& out) {
+  const auto n = v ? parse_int(*v, 1, std::int64_t{1} << max_bits) : std::nullopt;
+  if (!n) {
+    return error(std::string(flag) + " needs an integer in [1, 2^" + std::to_string(max_bits) +
+                 "], got " + (v ? "\"" + io::printable(*v, 40) + "\"" : std::string("nothing")));
+  }
+  out = static_cast<std::uint64_t>(*n);
+  return std::nullopt;
+}
+
 // Reads render's arguments into rq. Returns the exit code when render stops here (--help, a
 // usage error), nullopt to go on.
 std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
@@ -545,12 +566,13 @@ std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
       rq.scale = static_cast<int>(*n);
     } else if (is("--max-fragments")) {
       // rule: SCENE.INPUT.LIMITS
-      const std::optional<std::string> v = value("--max-fragments");
-      const auto n = v ? parse_int(*v, 1, std::int64_t{1} << 40) : std::nullopt;
-      if (!n)
-        return error("--max-fragments needs an integer in [1, 2^40], got " +
-                     (v ? "\"" + io::printable(*v, 40) + "\"" : std::string("nothing")));
-      rq.max_fragments = static_cast<std::uint64_t>(*n);
+      if (const auto status =
+              parse_limit("--max-fragments", value("--max-fragments"), 40, rq.max_fragments))
+        return *status;
+    } else if (is("--max-work")) {
+      // rule: SCENE.INPUT.LIMITS
+      if (const auto status = parse_limit("--max-work", value("--max-work"), 60, rq.max_work))
+        return *status;
     } else if (is("--threads")) {
       // rule: FAST.THREADS.DETERMINISTIC
       const std::optional<std::string> v = value("--threads");

@@ -245,6 +245,9 @@ struct PipeOptions {
   // The most fragments (helper lanes included) a run may produce, and the most one primitive
   // may hold to sort them (SCENE.INPUT.LIMITS); beyond it run_pipeline returns an error.
   std::uint64_t max_fragments = std::uint64_t{1} << 26;
+  // The most sample tests the plain traversal of the clipped primitives may make, checked
+  // before they are rasterized (primitive_work, SCENE.INPUT.LIMITS).
+  std::uint64_t max_work = kDefaultMaxWork;
 };
 
 // Returns the first error of a scene's pipeline state and per-vertex lists, in field order: the

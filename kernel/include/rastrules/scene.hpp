@@ -272,6 +272,33 @@ void for_each_fragment_in_rows(const PreparedScene& scene, std::size_t p, std::i
                                std::int32_t y_last, const RenderOptions& options,
                                const std::function<void(const Fragment&)>& emit);
 
+// The default work limit of a render (SCENE.INPUT.LIMITS): most sample tests the plain
+// traversal may make, summed over the primitives (primitive_work).
+inline constexpr std::uint64_t kDefaultMaxWork = std::uint64_t{1} << 36; // 68719476736
+
+// Returns the work of primitive p by the plain definition, known before it is rasterized: for
+// each triangle it draws (RASTER.WALK.BBOX), the pixels of its walk bounds clipped to the
+// target, times the samples tested per pixel (1 in a single-sample scene, else the pattern's
+// count); for each segment the line rasterizers draw, 16 times the columns plus the rows
+// (each clipped to the target) of its bounding box widened by 2 pixels, which bound their
+// per-row and per-column walks (a step costs about 16 sample tests). It depends on the scene alone:
+// equal for every traversal, instruction set and thread count. Preconditions: p <
+// scene.primitives.size().
+// rule: SCENE.INPUT.LIMITS
+[[nodiscard]] std::uint64_t primitive_work(const PreparedScene& scene, std::size_t p);
+
+// Returns the first primitive at which the sum of primitive_work in primitive order passes
+// max_work, or nullopt when the whole scene's work is within it.
+// rule: SCENE.INPUT.LIMITS
+[[nodiscard]] std::optional<std::size_t> first_primitive_over_work(const PreparedScene& scene,
+                                                                   std::uint64_t max_work);
+
+// Returns what is wrong with the primitive at which a scene's work passes max_work: "brings
+// the work to more than N sample tests (limit SCENE.INPUT.LIMITS)", the one wording of this
+// limit for every caller.
+// rule: SCENE.INPUT.LIMITS
+[[nodiscard]] std::string work_limit_problem(std::uint64_t max_work);
+
 // Returns the fragments of a prepared scene sorted by (prim, y, x, seg, sample), only inside the
 // target.
 // rule: SCENE.OUTPUT.FRAGMENTS, RASTER.TARGET.CLIP

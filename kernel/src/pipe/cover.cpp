@@ -21,6 +21,11 @@ struct Stop {
 std::optional<SceneError> cover(const PreparedScene& ps, const std::vector<Source>& sources,
                                 const ScissorRect& scissor, const PipeOptions& o,
                                 std::vector<Fragment>& fragments) {
+  // rule: SCENE.INPUT.LIMITS
+  // The work limit, before any primitive is rasterized.
+  if (const auto p = first_primitive_over_work(ps, o.max_work))
+    return err(idx("primitives", sources.empty() ? *p : sources[*p].prim),
+               work_limit_problem(o.max_work));
   for (std::size_t p = 0; p < ps.primitives.size(); ++p) {
     const std::size_t prim = sources.empty() ? p : sources[p].prim;
     const auto emit = [&](const Fragment& f) {
