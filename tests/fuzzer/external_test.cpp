@@ -179,10 +179,13 @@ TEST(ExternalDriver, MalformedOutputIsAnErrorNamingTheFragmentAndField) {
 } // namespace
 // Regressions found by fuzz_external_protocol (fuzz/corpus/fuzz_external_protocol/regression_*):
 // a number too large for any JSON number type made the parser throw an exception that was not
-// caught (the process aborted), and nesting is bounded before the recursive parser sees it.
+// caught (the process aborted), and deep nesting risked the recursive parser's stack. The
+// streaming reader reports the number where it is read, and an array or object where the
+// protocol has none is an error at its first character.
 // rule: DRIVER.EXTERNAL.PROTOCOL
 TEST(ExternalDriverRegression, NumberOverflowIsAnErrorNotAnAbort) {
-  const auto r = parse_external_fragments("[555551e955]", small_scene());
+  const auto r =
+      parse_external_fragments(R"({"fragments": [{"prim": 555551e955}]})", small_scene());
   ASSERT_TRUE(std::holds_alternative<std::string>(r));
   EXPECT_NE(std::get<std::string>(r).find("number overflow"), std::string::npos)
       << std::get<std::string>(r);
@@ -192,18 +195,19 @@ TEST(ExternalDriverRegression, NumberOverflowIsAnErrorNotAnAbort) {
 }
 
 // rule: DRIVER.EXTERNAL.PROTOCOL
-TEST(ExternalDriverRegression, DeepNestingIsRefusedBeforeParsing) {
-  const std::string deep =
-      "{\"fragments\": " + std::string(100000, '[') + std::string(100000, ']') + "}";
-  const auto r = parse_external_fragments(deep, small_scene());
-  ASSERT_TRUE(std::holds_alternative<std::string>(r));
-  EXPECT_NE(std::get<std::string>(r).find("nesting deeper than 8 levels"), std::string::npos)
-      << std::get<std::string>(r);
-  // Brackets inside strings do not count.
-  const auto ok =
-      parse_external_fragments(R"({"fragments": [], "note": "[[[[[[[[[[[["})", small_scene());
-  EXPECT_FALSE(std::holds_alternative<std::string>(ok) &&
-               std::get<std::string>(ok).find("nesting") != std::string::npos);
+TEST(ExternalDriverRegression, DeepNestingIsRefusedAtItsFirstBracket) {
+  const auto error_of = [](const std::string& text) {
+    const auto r = parse_external_fragments(text, small_scene());
+    return std::holds_alternative<std::string>(r) ? std::get<std::string>(r) : std::string();
+  };
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  EXPECT_EQ(error_of("{\"fragments\": " + deep + "}"), "fragments[0]: must be an object");
+  EXPECT_EQ(error_of(R"({"fragments": [{"prim": 0, "x": 0, "y": 0, "centroid": )" + deep + "}]}"),
+            "fragments[0].centroid: must be [x, y], two numbers");
+  EXPECT_EQ(error_of("[" + deep + "]"), "expected {\"fragments\": [...]}");
+  // Brackets inside strings are no nesting: the key is what is wrong.
+  EXPECT_EQ(error_of(R"({"fragments": [], "note": "[[[[[[[[[[[["})"),
+            "note: unknown key (expected fragments)");
 }
 
 // Issue 17 item 6, found 2026-11-25: a raw NUL byte ended a driver's output for the JSON
@@ -259,6 +263,69 @@ TEST(ExternalDriverRegression, DuplicateAndUnknownKeysAreErrors) {
   // The same key in two objects is no repeat.
   EXPECT_EQ(
       error_of(R"({"fragments": [{"prim": 0, "x": 0, "y": 0}, {"prim": 0, "x": 1, "y": 0}]})"), "");
+}
+
+// Issue 17 item 7, found 2026-11-25: a driver's output was parsed into a document tree before
+// any check: 66 MB of `{}` entries took 2.3 GB and 37 s, after the per-scene timeout. It is now
+// read by a strict streaming reader while the process runs, within the timeout, stopping at the
+// first bad fragment and holding only the fragments, at most ExternalOptions::max_fragments of
+// them (scaled down here to 3; the default is 2^26, and 64 MiB of output hold at most 2917776).
+// rule: DRIVER.EXTERNAL.PROTOCOL
+TEST(ExternalDriverRegression, OutputBeyondTheFragmentLimitIsRefusedNamingIt) {
+  TempDir dir;
+  ExternalOptions o;
+  o.max_fragments = 3;
+  const std::string three = R"({"prim": 0, "x": 0, "y": 0}, {"prim": 0, "x": 1, "y": 0}, )"
+                            R"({"prim": 0, "x": 2, "y": 0})";
+  const auto driver = [&](const std::string& name, const std::string& list) {
+    return dir.script(name, "cat > /dev/null; echo '{\"fragments\": [" + list + "]}'");
+  };
+  EXPECT_EQ(draw_error(driver("three.sh", three), o), "");
+  const std::string e =
+      draw_error(driver("four.sh", three + R"(, {"prim": 0, "x": 3, "y": 0})"), o);
+  EXPECT_NE(e.find("malformed output: fragments: more than 3 fragments (limit "
+                   "DRIVER.EXTERNAL.PROTOCOL)"),
+            std::string::npos)
+      << e;
+  EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+  // The byte limit still applies to the whole output, read or dropped.
+  o.max_output_bytes = 50;
+  EXPECT_NE(draw_error(driver("long.sh", three), o).find("wrote more than 50 bytes"),
+            std::string::npos);
+}
+
+// rule: DRIVER.EXTERNAL.PROTOCOL
+TEST(ExternalDriverRegression, OutputIsReadPieceByPieceUntilTheFirstBadFragment) {
+  // An endless output: the reader asks for the pieces it needs and no more.
+  int asked = 0;
+  const auto endless = [&]() -> std::string_view {
+    return ++asked == 1 ? std::string_view(R"({"fragments": [{"prim": 0, "x": 0, "y": 0}, {})")
+                        : std::string_view(", {}");
+  };
+  const auto r = read_external_fragments(endless, small_scene());
+  ASSERT_TRUE(std::holds_alternative<std::string>(r));
+  EXPECT_EQ(std::get<std::string>(r), "fragments[1].prim: missing");
+  EXPECT_LE(asked, 2);
+  // Pieces of any size read as the whole text does, a NUL byte's line and column included.
+  const std::string text = "{\"fragments\":\n [{\"prim\": 0, \"x\": 3, \"y\": 2, \"mask\": 1},\n"
+                           "  {\"prim\": 0, \"x\": 1, \"y\": 2}]}\n  ";
+  for (const std::string& t : {text, text + std::string(1, '\0') + "junk"}) {
+    const auto whole = parse_external_fragments(t, small_scene());
+    for (const std::size_t size :
+         {std::size_t{1}, std::size_t{2}, std::size_t{7}, std::size_t{1000}}) {
+      std::size_t at = 0;
+      const auto pieces = [&]() -> std::string_view {
+        const std::string_view piece = std::string_view(t).substr(at, size);
+        at += piece.size();
+        return piece;
+      };
+      EXPECT_EQ(read_external_fragments(pieces, small_scene()), whole) << size;
+    }
+  }
+  const auto nul = parse_external_fragments(text + std::string(1, '\0'), small_scene());
+  ASSERT_TRUE(std::holds_alternative<std::string>(nul));
+  EXPECT_NE(std::get<std::string>(nul).find("line 4, column 3: a raw NUL byte"), std::string::npos)
+      << std::get<std::string>(nul);
 }
 
 // Issue 17 item 9, found 2026-11-25: a driver's background children outlived it after a

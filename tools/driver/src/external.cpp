@@ -13,21 +13,18 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <charconv>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
-#include <map>
 #include <optional>
-#include <set>
 #include <thread>
-#include <tuple>
-
-#include <nlohmann/json.hpp>
 
 #include "drivers.hpp"
 #include "rastrules/io/interrupt.hpp"
+#include "rastrules/io/json_stream.hpp"
 #include "rastrules/io/scene_json.hpp"
 
 extern char** environ;
@@ -37,15 +34,14 @@ namespace {
 
 constexpr std::size_t kMaxStderrBytes = 4096;
 
+// How the process ended.
 struct ProcessResult {
-  std::string spawn_error; // non-empty: the process could not be started
   bool timed_out = false;
   bool output_overflow = false;
   bool exited = false;
   int exit_status = 0;
   int signal = 0;
-  std::string out;
-  std::string err;
+  std::string err; // the first kMaxStderrBytes of its standard error
 };
 
 void close_fd(int& fd) {
@@ -79,146 +75,204 @@ std::optional<int> wait_and_end_group(pid_t pid, std::chrono::steady_clock::time
   }
 }
 
-// Runs argv with `input` on its standard input, collecting standard output (at most
-// max_output bytes) and the first bytes of standard error, killing it (and its process group)
-// after timeout_ms.
-ProcessResult run_process(const std::vector<std::string>& argv, const std::string& input,
-                          const ExternalOptions& options) {
-  ProcessResult r;
-  int in_pipe[2] = {-1, -1}, out_pipe[2] = {-1, -1}, err_pipe[2] = {-1, -1};
-  if (::pipe2(in_pipe, O_CLOEXEC) != 0 || ::pipe2(out_pipe, O_CLOEXEC) != 0 ||
-      ::pipe2(err_pipe, O_CLOEXEC) != 0) {
-    r.spawn_error = std::string("pipe: ") + std::strerror(errno);
-    for (int* p : {in_pipe, out_pipe, err_pipe}) {
-      close_fd(p[0]);
-      close_fd(p[1]);
+// One run of the driver's command: argv gets `input` on its standard input, its standard output
+// is handed out piece by piece as it comes (next_output), at most max_output_bytes in all, and
+// the first bytes of its standard error are kept; after timeout_ms it is killed with its process
+// group. The deadline covers the reading of the output too, which runs between the pieces.
+// rule: DRIVER.EXTERNAL.PROTOCOL
+class DriverProcess {
+public:
+  DriverProcess(const std::vector<std::string>& argv, const std::string& input,
+                const ExternalOptions& options)
+      : input_(input), options_(options), deadline_(std::chrono::steady_clock::now() +
+                                                    std::chrono::milliseconds(options.timeout_ms)) {
+    int in_pipe[2] = {-1, -1}, out_pipe[2] = {-1, -1}, err_pipe[2] = {-1, -1};
+    if (::pipe2(in_pipe, O_CLOEXEC) != 0 || ::pipe2(out_pipe, O_CLOEXEC) != 0 ||
+        ::pipe2(err_pipe, O_CLOEXEC) != 0) {
+      spawn_error_ = std::string("pipe: ") + std::strerror(errno);
+      for (int* p : {in_pipe, out_pipe, err_pipe}) {
+        close_fd(p[0]);
+        close_fd(p[1]);
+      }
+      return;
     }
-    return r;
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, in_pipe[0], 0);
+    posix_spawn_file_actions_adddup2(&actions, out_pipe[1], 1);
+    posix_spawn_file_actions_adddup2(&actions, err_pipe[1], 2);
+    posix_spawnattr_t attr;
+    posix_spawnattr_init(&attr);
+    posix_spawnattr_setpgroup(&attr, 0); // its own group, so that a timeout kills its children too
+    sigset_t default_signals;
+    sigemptyset(&default_signals);
+    sigaddset(&default_signals, SIGPIPE);
+    posix_spawnattr_setsigdefault(&attr, &default_signals);
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF);
+    std::vector<char*> args;
+    for (const std::string& a : argv)
+      args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    const int rc = ::posix_spawnp(&pid_, args[0], &actions, &attr, args.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    posix_spawnattr_destroy(&attr);
+    close_fd(in_pipe[0]);
+    close_fd(out_pipe[1]);
+    close_fd(err_pipe[1]);
+    in_ = in_pipe[1];
+    out_ = out_pipe[0];
+    err_ = err_pipe[0];
+    if (rc != 0) {
+      spawn_error_ = "cannot start \"" + argv[0] + "\": " + std::strerror(rc);
+      pid_ = 0;
+      close_all();
+      return;
+    }
+    for (int fd : {in_, out_, err_})
+      ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
+    io::set_driver_group(pid_); // an interrupt of rastrules ends the driver's group too
+    if (input_.empty())
+      close_fd(in_);
   }
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, in_pipe[0], 0);
-  posix_spawn_file_actions_adddup2(&actions, out_pipe[1], 1);
-  posix_spawn_file_actions_adddup2(&actions, err_pipe[1], 2);
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  posix_spawnattr_setpgroup(&attr, 0); // its own group, so that a timeout kills its children too
-  sigset_t default_signals;
-  sigemptyset(&default_signals);
-  sigaddset(&default_signals, SIGPIPE);
-  posix_spawnattr_setsigdefault(&attr, &default_signals);
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF);
-  std::vector<char*> args;
-  for (const std::string& a : argv)
-    args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
-  pid_t pid = 0;
-  const int rc = ::posix_spawnp(&pid, args[0], &actions, &attr, args.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  posix_spawnattr_destroy(&attr);
-  close_fd(in_pipe[0]);
-  close_fd(out_pipe[1]);
-  close_fd(err_pipe[1]);
-  if (rc != 0) {
-    r.spawn_error = "cannot start \"" + argv[0] + "\": " + std::strerror(rc);
-    close_fd(in_pipe[1]);
-    close_fd(out_pipe[0]);
-    close_fd(err_pipe[0]);
-    return r;
-  }
-  for (int fd : {in_pipe[1], out_pipe[0], err_pipe[0]})
-    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
-  io::set_driver_group(pid); // an interrupt of rastrules ends the driver's group too
-  struct ForgetGroup {
-    ~ForgetGroup() { io::set_driver_group(0); }
-  } forget_group;
 
-  const auto deadline =
-      std::chrono::steady_clock::now() + std::chrono::milliseconds(options.timeout_ms);
-  std::size_t written = 0;
-  if (input.empty())
-    close_fd(in_pipe[1]);
-  bool kill_it = false;
-  while (out_pipe[0] >= 0 || err_pipe[0] >= 0) {
+  DriverProcess(const DriverProcess&) = delete;
+  DriverProcess& operator=(const DriverProcess&) = delete;
+
+  ~DriverProcess() {
+    if (pid_ > 0) // not finished (an exception): end it all the same
+      kill_group();
+    close_all();
+  }
+
+  // Non-empty: the process could not be started.
+  [[nodiscard]] const std::string& spawn_error() const { return spawn_error_; }
+
+  // Returns the next bytes the process wrote on its standard output (valid until the next
+  // call), writing its input and reading its standard error meanwhile; an empty view when its
+  // standard output is closed, the deadline has passed, or more than max_output_bytes came.
+  std::string_view next_output() {
+    std::string_view piece;
+    while (out_ >= 0 && !stopped_ && piece.empty())
+      pump(piece);
+    return piece;
+  }
+
+  // Reads what is left of both outputs (standard output is counted against max_output_bytes
+  // and dropped), waits for the process to exit and ends its group; kills it at the deadline.
+  ProcessResult finish() {
+    std::string_view dropped;
+    while ((out_ >= 0 || err_ >= 0) && !stopped_)
+      pump(dropped);
+    close_all();
+    if (!stopped_) {
+      if (const auto status = wait_and_end_group(pid_, deadline_)) {
+        result_.exited = WIFEXITED(*status);
+        result_.exit_status = result_.exited ? WEXITSTATUS(*status) : 0;
+        result_.signal = WIFSIGNALED(*status) ? WTERMSIG(*status) : 0;
+        pid_ = 0;
+        return result_;
+      }
+      result_.timed_out = true;
+    }
+    kill_group();
+    return result_;
+  }
+
+private:
+  // One wait for the pipes (at most until the deadline): writes what the input pipe takes,
+  // keeps standard error's first bytes, and sets `piece` to what standard output gave.
+  void pump(std::string_view& piece) {
+    piece = {};
     const auto now = std::chrono::steady_clock::now();
-    if (now >= deadline) {
-      r.timed_out = true;
-      kill_it = true;
-      break;
+    if (now >= deadline_) {
+      result_.timed_out = true;
+      stopped_ = true;
+      return;
     }
     std::vector<pollfd> fds;
-    if (in_pipe[1] >= 0)
-      fds.push_back({in_pipe[1], POLLOUT, 0});
-    if (out_pipe[0] >= 0)
-      fds.push_back({out_pipe[0], POLLIN, 0});
-    if (err_pipe[0] >= 0)
-      fds.push_back({err_pipe[0], POLLIN, 0});
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count();
+    if (in_ >= 0)
+      fds.push_back({in_, POLLOUT, 0});
+    if (out_ >= 0)
+      fds.push_back({out_, POLLIN, 0});
+    if (err_ >= 0)
+      fds.push_back({err_, POLLIN, 0});
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - now).count();
     const int n = ::poll(fds.data(), static_cast<nfds_t>(fds.size()),
                          static_cast<int>(std::min<long long>(left + 1, 1000)));
-    if (n < 0 && errno != EINTR)
-      break;
+    if (n < 0 && errno != EINTR) {
+      close_all(); // poll itself failed: treat the outputs as ended
+      return;
+    }
     for (const pollfd& p : fds) {
       if (p.revents == 0)
         continue;
-      if (p.fd == in_pipe[1]) {
+      if (p.fd == in_) {
         if ((p.revents & (POLLERR | POLLHUP)) != 0) {
-          close_fd(in_pipe[1]); // the process closed its standard input: stop writing
+          close_fd(in_); // the process closed its standard input: stop writing
           continue;
         }
-        const ssize_t w = ::write(in_pipe[1], input.data() + written, input.size() - written);
+        const ssize_t w = ::write(in_, input_.data() + written_, input_.size() - written_);
         if (w > 0)
-          written += static_cast<std::size_t>(w);
-        if ((w < 0 && errno != EAGAIN && errno != EINTR) || written == input.size())
-          close_fd(in_pipe[1]);
+          written_ += static_cast<std::size_t>(w);
+        if ((w < 0 && errno != EAGAIN && errno != EINTR) || written_ == input_.size())
+          close_fd(in_);
         continue;
       }
-      char buf[65536];
-      const ssize_t got = ::read(p.fd, buf, sizeof buf);
+      const bool is_out = p.fd == out_;
+      char* const into = is_out ? out_buf_.data() : err_buf_.data();
+      const ssize_t got = ::read(p.fd, into, is_out ? out_buf_.size() : err_buf_.size());
       if (got == 0 || (got < 0 && errno != EAGAIN && errno != EINTR)) {
-        if (p.fd == out_pipe[0])
-          close_fd(out_pipe[0]);
-        else
-          close_fd(err_pipe[0]);
+        close_fd(is_out ? out_ : err_);
         continue;
       }
       if (got < 0)
         continue;
       const auto g = static_cast<std::size_t>(got);
-      if (p.fd == out_pipe[0]) {
-        if (r.out.size() + g > options.max_output_bytes) {
-          r.output_overflow = true;
-          kill_it = true;
-          break;
+      if (is_out) {
+        if (out_bytes_ + g > options_.max_output_bytes) {
+          result_.output_overflow = true;
+          stopped_ = true;
+          return;
         }
-        r.out.append(buf, g);
-      } else if (r.err.size() < kMaxStderrBytes) {
-        r.err.append(buf, std::min(g, kMaxStderrBytes - r.err.size()));
+        out_bytes_ += g;
+        piece = std::string_view(into, g);
+      } else if (result_.err.size() < kMaxStderrBytes) {
+        result_.err.append(into, std::min(g, kMaxStderrBytes - result_.err.size()));
       }
     }
-    if (kill_it)
-      break;
   }
-  close_fd(in_pipe[1]);
-  close_fd(out_pipe[0]);
-  close_fd(err_pipe[0]);
-  int status = 0;
-  if (!kill_it) {
-    if (const auto exited = wait_and_end_group(pid, deadline)) {
-      r.exited = WIFEXITED(*exited);
-      r.exit_status = r.exited ? WEXITSTATUS(*exited) : 0;
-      r.signal = WIFSIGNALED(*exited) ? WTERMSIG(*exited) : 0;
-      return r;
+
+  void close_all() {
+    close_fd(in_);
+    close_fd(out_);
+    close_fd(err_);
+  }
+
+  void kill_group() {
+    close_all();
+    io::set_driver_group(0);
+    ::kill(-pid_, SIGKILL);
+    ::kill(pid_, SIGKILL);
+    int status = 0;
+    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
     }
-    r.timed_out = true;
+    pid_ = 0;
   }
-  io::set_driver_group(0);
-  ::kill(-pid, SIGKILL);
-  ::kill(pid, SIGKILL);
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  return r;
-}
+
+  const std::string& input_;
+  const ExternalOptions& options_;
+  const std::chrono::steady_clock::time_point deadline_;
+  std::string spawn_error_;
+  pid_t pid_ = 0;
+  int in_ = -1, out_ = -1, err_ = -1;
+  std::size_t written_ = 0;   // bytes of input written
+  std::size_t out_bytes_ = 0; // bytes of standard output read
+  bool stopped_ = false;      // timed out or too much output: the process is to be killed
+  ProcessResult result_;
+  std::array<char, 65536> out_buf_{};
+  std::array<char, 4096> err_buf_{};
+};
 
 std::string one_line(std::string s) {
   for (char& c : s) {
@@ -248,9 +302,15 @@ public:
 
   [[nodiscard]] DrawResult draw(const Scene& scene) override {
     const std::string& cmd = info_.description;
-    const ProcessResult r = run_process(argv_, io::write_scene(scene), options_);
-    if (!r.spawn_error.empty())
-      return DriverError{"external driver: " + r.spawn_error};
+    const std::string input = io::write_scene(scene);
+    DriverProcess process(argv_, input, options_);
+    if (!process.spawn_error().empty())
+      return DriverError{"external driver: " + process.spawn_error()};
+    // The output is read as it comes, until its first error; the rest is read and dropped, so
+    // that a crash, an exit status or a timeout is still reported before malformed output.
+    auto parsed = read_external_fragments([&] { return process.next_output(); }, scene,
+                                          options_.max_fragments);
+    const ProcessResult r = process.finish();
     const std::string err = r.err.empty() ? "" : "; its standard error: " + one_line(r.err);
     if (r.timed_out) {
       return DriverError{"external driver \"" + cmd + "\" timed out after " +
@@ -271,7 +331,6 @@ public:
       return DriverError{"external driver \"" + cmd + "\" exited with status " +
                          std::to_string(r.exit_status) + err};
     }
-    auto parsed = parse_external_fragments(r.out, scene);
     if (auto* e = std::get_if<std::string>(&parsed)) {
       return DriverError{"external driver \"" + cmd + "\": malformed output: " + *e};
     }
@@ -283,17 +342,6 @@ private:
   ExternalOptions options_;
   DriverInfo info_;
 };
-
-std::optional<std::int64_t> get_int(const nlohmann::json& v) {
-  if (v.is_number_integer())
-    return v.get<std::int64_t>();
-  if (v.is_number_unsigned()) {
-    const auto u = v.get<std::uint64_t>();
-    if (u <= static_cast<std::uint64_t>(INT64_MAX))
-      return static_cast<std::int64_t>(u);
-  }
-  return std::nullopt;
-}
 
 } // namespace
 
@@ -341,160 +389,307 @@ std::vector<std::string> external_argv(std::string_view command) {
 
 namespace {
 
-constexpr std::size_t kMaxProtocolDepth = 8;
+// The keys of a fragment (DRIVER.EXTERNAL.PROTOCOL, SCENE.OUTPUT.MSAA).
+enum FragmentKey : unsigned {
+  kPrim,
+  kX,
+  kY,
+  kMask,
+  kSeg,
+  kSample,
+  kHelper,
+  kCoverage,
+  kCentroid,
+  kDdx,
+  kDdy,
+  kKeyCount
+};
+constexpr std::array<std::string_view, kKeyCount> kKeyNames = {
+    "prim", "x", "y", "mask", "seg", "sample", "helper", "coverage", "centroid", "ddx", "ddy"};
 
-// Returns the deepest nesting of arrays and objects in text, outside strings (a scan that
-// tolerates malformed text: the parser reports what is wrong with it).
-std::size_t max_nesting_depth(std::string_view text) {
-  std::size_t depth = 0, deepest = 0;
-  bool in_string = false, escaped = false;
-  for (const char c : text) {
-    if (in_string) {
-      if (escaped) {
-        escaped = false;
-      } else if (c == '\\') {
-        escaped = true;
-      } else if (c == '"') {
-        in_string = false;
+// The fragments read so far, each (prim, x, y, seg, sample) once: an open-addressing hash set
+// of indices into the list (4 bytes a slot, at most half the slots used), so that a repeat is
+// found when it is read.
+class FragmentSet {
+public:
+  // Adds frags.back() unless an earlier fragment has its key; returns whether it was added.
+  bool add_last(const std::vector<Fragment>& frags) {
+    if (2 * (frags.size() + 1) > slots_.size())
+      grow(frags);
+    const auto index = static_cast<std::uint32_t>(frags.size() - 1);
+    for (std::size_t s = hash(frags.back()) & (slots_.size() - 1);;
+         s = (s + 1) & (slots_.size() - 1)) {
+      if (slots_[s] == 0) {
+        slots_[s] = index + 1;
+        return true;
       }
-      continue;
-    }
-    if (c == '"') {
-      in_string = true;
-    } else if (c == '[' || c == '{') {
-      deepest = std::max(deepest, ++depth);
-    } else if ((c == ']' || c == '}') && depth > 0) {
-      --depth;
+      if (same(frags[slots_[s] - 1], frags.back()))
+        return false;
     }
   }
-  return deepest;
-}
+
+private:
+  static std::uint64_t key_of(const Fragment& f) {
+    return (std::uint64_t{f.prim} << 32) ^ (std::uint64_t{static_cast<std::uint32_t>(f.y)} << 16) ^
+           static_cast<std::uint32_t>(f.x);
+  }
+  static std::size_t hash(const Fragment& f) {
+    std::uint64_t h = key_of(f) ^
+                      (std::uint64_t{f.seg.value_or(0xffffffffu)} * 0x9e3779b97f4a7c15u) ^
+                      (std::uint64_t{f.sample.value_or(0xffffffffu)} << 40);
+    h ^= h >> 31; // splitmix64's finalizer
+    h *= 0xbf58476d1ce4e5b9u;
+    h ^= h >> 27;
+    h *= 0x94d049bb133111ebu;
+    return static_cast<std::size_t>(h ^ (h >> 31));
+  }
+  static bool same(const Fragment& a, const Fragment& b) {
+    return a.prim == b.prim && a.x == b.x && a.y == b.y && a.seg == b.seg && a.sample == b.sample;
+  }
+  void grow(const std::vector<Fragment>& frags) {
+    slots_.assign(std::max<std::size_t>(64, 2 * slots_.size()), 0);
+    for (std::size_t i = 0; i + 1 < frags.size(); ++i) {
+      std::size_t s = hash(frags[i]) & (slots_.size() - 1);
+      while (slots_[s] != 0)
+        s = (s + 1) & (slots_.size() - 1);
+      slots_[s] = static_cast<std::uint32_t>(i + 1);
+    }
+  }
+
+  std::vector<std::uint32_t> slots_; // 0: empty; else the fragment's index + 1
+};
+
+// The protocol's reader: a strict streaming handler (io::JsonHandler, as the scene reader's)
+// that checks each value when it is read, keeps only the fragments, and stops at the first
+// error. The schema bounds nesting to 4 levels ({"fragments": [{"centroid": [x, y]}]}): a value
+// of the wrong type is an error at its first character.
+// rule: DRIVER.EXTERNAL.PROTOCOL
+class FragmentReader final : public io::JsonHandler {
+public:
+  FragmentReader(const Scene& scene, std::uint64_t max_fragments)
+      : scene_(scene), samples_(scene.msaa.count()), max_fragments_(max_fragments) {}
+
+  bool value(const io::JsonValue& v) override {
+    switch (at_) {
+    case At::kStart:
+      if (v.kind != io::JsonKind::kObject)
+        return fail(kExpected);
+      at_ = At::kRoot;
+      return true;
+    case At::kRoot: // the value of "fragments"
+      if (v.kind != io::JsonKind::kArray)
+        return fail(kExpected);
+      at_ = At::kList;
+      return true;
+    case At::kList:
+      if (frags_.size() >= max_fragments_) {
+        return fail("fragments: more than " + std::to_string(max_fragments_) +
+                    " fragments (limit DRIVER.EXTERNAL.PROTOCOL)");
+      }
+      path_ = "fragments[" + std::to_string(frags_.size()) + "]";
+      if (v.kind != io::JsonKind::kObject)
+        return fail(path_ + ": must be an object");
+      at_ = At::kFragment;
+      seen_ = 0;
+      frag_ = Fragment{};
+      return true;
+    case At::kFragment:
+      return fragment_value(v);
+    case At::kPair: // an element of "centroid", "ddx" or "ddy"
+      if (!is_number(v) || ++pair_count_ > 2)
+        return fail(field() + ": must be [x, y], two numbers");
+      return true;
+    case At::kDone:
+      break;
+    }
+    return fail(kExpected);
+  }
+
+  bool key(std::string_view k) override {
+    if (at_ == At::kRoot) {
+      if (k != "fragments")
+        return fail(io::printable(k, 40) + ": unknown key (expected fragments)");
+      if (fragments_seen_)
+        return fail(twice(k));
+      fragments_seen_ = true;
+      return true;
+    }
+    const auto* known = std::find(kKeyNames.begin(), kKeyNames.end(), k);
+    if (known == kKeyNames.end())
+      return fail(path_ + "." + io::printable(k, 40) + ": unknown key");
+    key_ = static_cast<FragmentKey>(known - kKeyNames.begin());
+    if ((seen_ & (1u << key_)) != 0)
+      return fail(twice(k));
+    seen_ |= 1u << key_;
+    return true;
+  }
+
+  bool end_array() override {
+    if (at_ == At::kPair) {
+      if (pair_count_ != 2)
+        return fail(field() + ": must be [x, y], two numbers");
+      at_ = At::kFragment;
+      return true;
+    }
+    at_ = At::kRoot; // the end of "fragments"
+    return true;
+  }
+
+  bool end_object() override {
+    if (at_ == At::kRoot) {
+      if (!fragments_seen_)
+        return fail(kExpected);
+      at_ = At::kDone;
+      return true;
+    }
+    for (const FragmentKey k : {kPrim, kX, kY}) {
+      if ((seen_ & (1u << k)) == 0)
+        return fail(path_ + "." + std::string(kKeyNames[k]) + ": missing");
+    }
+    frags_.push_back(frag_);
+    if (!set_.add_last(frags_)) {
+      return fail(path_ + ": duplicate fragment (prim " + std::to_string(frag_.prim) + ", x " +
+                  std::to_string(frag_.x) + ", y " + std::to_string(frag_.y) + ")");
+    }
+    at_ = At::kList;
+    return true;
+  }
+
+  bool syntax_error(const io::JsonSyntaxError& e) override {
+    // 406: a number beyond every number type the JSON library has.
+    return fail((e.id == 406 ? "not JSON the protocol allows: " : "not JSON: ") + e.what);
+  }
+
+  // The fragments sorted as SCENE.OUTPUT.FRAGMENTS, or the first error.
+  std::variant<std::vector<Fragment>, std::string> result(const io::JsonParseEnd& end) {
+    if (!error_.empty())
+      return error_;
+    if (end.nul)
+      return "not JSON: " + *end.nul;
+    if (!end.ok)
+      return std::string("not JSON: the output ended early");
+    std::sort(frags_.begin(), frags_.end(), fragment_before);
+    return std::move(frags_);
+  }
+
+private:
+  enum class At { kStart, kRoot, kList, kFragment, kPair, kDone };
+  static constexpr const char* kExpected = "expected {\"fragments\": [...]}";
+
+  static bool is_number(const io::JsonValue& v) {
+    return v.kind == io::JsonKind::kInt || v.kind == io::JsonKind::kUint ||
+           v.kind == io::JsonKind::kFloat;
+  }
+  static std::string twice(std::string_view k) {
+    return "the key \"" + io::printable(k, 40) + "\" is given twice in one object";
+  }
+  std::string field() const { return path_ + "." + std::string(kKeyNames[key_]); }
+
+  bool fail(std::string message) {
+    if (error_.empty())
+      error_ = std::move(message);
+    return false;
+  }
+
+  // One value of a fragment's key, checked against the scene.
+  bool fragment_value(const io::JsonValue& v) {
+    const bool integer = v.kind == io::JsonKind::kInt;
+    const std::int64_t i = v.i;
+    switch (key_) {
+    case kPrim:
+      if (!integer)
+        return fail(field() + ": must be an integer");
+      if (i < 0 || i >= static_cast<std::int64_t>(scene_.primitives.size())) {
+        return fail(field() + ": " + std::to_string(i) + " is not a primitive of the scene (" +
+                    std::to_string(scene_.primitives.size()) + " primitives)");
+      }
+      frag_.prim = static_cast<std::uint32_t>(i);
+      return true;
+    case kX:
+    case kY: {
+      if (!integer)
+        return fail(field() + ": must be an integer");
+      const bool is_x = key_ == kX;
+      const std::int32_t size = is_x ? scene_.width : scene_.height;
+      if (i < 0 || i >= size) {
+        return fail(field() + ": " + std::to_string(i) + " is outside the target (" +
+                    (is_x ? "width " : "height ") + std::to_string(size) + ")");
+      }
+      (is_x ? frag_.x : frag_.y) = static_cast<std::int32_t>(i);
+      return true;
+    }
+    case kMask:
+      if (!integer)
+        return fail(field() + ": must be an integer");
+      if (i < 0 || i > static_cast<std::int64_t>(full_mask(samples_))) {
+        return fail(field() + ": " + std::to_string(i) + " has bits beyond the " +
+                    std::to_string(samples_) + " sample(s) of the scene");
+      }
+      frag_.mask = static_cast<std::uint32_t>(i);
+      return true;
+    case kSeg:
+      if (!integer || i < 0 || i > UINT32_MAX)
+        return fail(field() + ": must be a non-negative integer");
+      frag_.seg = static_cast<std::uint32_t>(i);
+      return true;
+    case kSample:
+      if (!integer || i < 0 || i >= samples_)
+        return fail(field() + ": must be a sample index below " + std::to_string(samples_));
+      frag_.sample = static_cast<std::uint32_t>(i);
+      return true;
+    case kHelper:
+      if (v.kind != io::JsonKind::kBool)
+        return fail(field() + ": must be true or false");
+      frag_.helper = v.b;
+      return true;
+    case kCoverage: // accepted, not compared
+      if (!is_number(v))
+        return fail(field() + ": must be a number");
+      return true;
+    case kCentroid: // accepted, not compared
+    case kDdx:
+    case kDdy:
+      if (v.kind != io::JsonKind::kArray)
+        return fail(field() + ": must be [x, y], two numbers");
+      at_ = At::kPair;
+      pair_count_ = 0;
+      return true;
+    case kKeyCount:
+      break;
+    }
+    return fail(field() + ": unknown key");
+  }
+
+  const Scene& scene_;
+  const std::uint32_t samples_;
+  const std::uint64_t max_fragments_;
+  At at_ = At::kStart;
+  bool fragments_seen_ = false;
+  std::string path_; // "fragments[i]" of the fragment being read
+  FragmentKey key_ = kPrim;
+  unsigned seen_ = 0; // keys of this fragment given so far (bit k: kKeyNames[k])
+  Fragment frag_;
+  int pair_count_ = 0;
+  std::vector<Fragment> frags_;
+  FragmentSet set_;
+  std::string error_;
+};
 
 } // namespace
 
 // rule: DRIVER.EXTERNAL.PROTOCOL
-std::variant<std::vector<Fragment>, std::string> parse_external_fragments(std::string_view text,
-                                                                          const Scene& scene) {
-  // The protocol nests 4 deep ({"fragments": [{"centroid": [...]}]}); the DOM parser recurses
-  // once per level, so deeper text is refused before parsing rather than risk the stack.
-  if (const std::size_t depth = max_nesting_depth(text); depth > kMaxProtocolDepth) {
-    return "nesting deeper than " + std::to_string(kMaxProtocolDepth) + " levels (" +
-           std::to_string(depth) + ")";
-  }
-  if (auto nul = io::nul_byte_problem(text))
-    return "not JSON: " + *nul;
-  // A key given twice would silently keep the last value (a fragment list could become empty):
-  // every object's keys are tracked while parsing and the first repeat is reported.
-  std::vector<std::set<std::string>> keys;
-  std::string duplicate;
-  const nlohmann::json::parser_callback_t track = [&](int, nlohmann::json::parse_event_t event,
-                                                      nlohmann::json& parsed) {
-    using E = nlohmann::json::parse_event_t;
-    if (event == E::object_start)
-      keys.emplace_back();
-    else if (event == E::object_end && !keys.empty())
-      keys.pop_back();
-    else if (event == E::key && !keys.empty() &&
-             !keys.back().insert(parsed.get<std::string>()).second && duplicate.empty())
-      duplicate = parsed.get<std::string>();
-    return true;
-  };
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(text.begin(), text.end(), track);
-  } catch (const nlohmann::json::parse_error& e) {
-    return std::string("not JSON: ") + e.what();
-  } catch (const nlohmann::json::exception& e) { // e.g. a number too large for any type
-    return std::string("not JSON the protocol allows: ") + e.what();
-  }
-  if (!duplicate.empty())
-    return "the key \"" + io::printable(duplicate, 40) + "\" is given twice in one object";
-  if (!doc.is_object() || !doc.contains("fragments") || !doc["fragments"].is_array()) {
-    return std::string("expected {\"fragments\": [...]}");
-  }
-  for (const auto& [key, value] : doc.items()) {
-    if (key != "fragments")
-      return io::printable(key, 40) + ": unknown key (expected fragments)";
-    (void)value;
-  }
-  const std::uint32_t samples = scene.msaa.count();
-  std::vector<Fragment> out;
-  std::set<std::tuple<std::uint32_t, std::int32_t, std::int32_t, std::int64_t, std::int64_t>> seen;
-  const auto& list = doc["fragments"];
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    const auto& f = list[i];
-    const std::string at = "fragments[" + std::to_string(i) + "]";
-    if (!f.is_object())
-      return at + ": must be an object";
-    for (const auto& [key, value] : f.items()) {
-      static const std::set<std::string> known = {"prim",     "x",      "y",      "mask",
-                                                  "seg",      "sample", "helper", "coverage",
-                                                  "centroid", "ddx",    "ddy"};
-      if (known.count(key) == 0)
-        return at + "." + key + ": unknown key";
-      (void)value;
-    }
-    Fragment frag;
-    for (const char* key : {"prim", "x", "y"}) {
-      if (!f.contains(key))
-        return at + "." + key + ": missing";
-      if (!get_int(f[key]))
-        return at + "." + key + ": must be an integer";
-    }
-    const std::int64_t prim = *get_int(f["prim"]), x = *get_int(f["x"]), y = *get_int(f["y"]);
-    if (prim < 0 || prim >= static_cast<std::int64_t>(scene.primitives.size())) {
-      return at + ".prim: " + std::to_string(prim) + " is not a primitive of the scene (" +
-             std::to_string(scene.primitives.size()) + " primitives)";
-    }
-    if (x < 0 || x >= scene.width)
-      return at + ".x: " + std::to_string(x) + " is outside the target (width " +
-             std::to_string(scene.width) + ")";
-    if (y < 0 || y >= scene.height)
-      return at + ".y: " + std::to_string(y) + " is outside the target (height " +
-             std::to_string(scene.height) + ")";
-    std::int64_t mask = 1;
-    if (f.contains("mask")) {
-      const auto m = get_int(f["mask"]);
-      if (!m)
-        return at + ".mask: must be an integer";
-      mask = *m;
-    }
-    if (mask < 0 || mask > static_cast<std::int64_t>(full_mask(samples))) {
-      return at + ".mask: " + std::to_string(mask) + " has bits beyond the " +
-             std::to_string(samples) + " sample(s) of the scene";
-    }
-    std::int64_t seg = -1, sample = -1;
-    if (f.contains("seg")) {
-      const auto s = get_int(f["seg"]);
-      if (!s || *s < 0 || *s > UINT32_MAX)
-        return at + ".seg: must be a non-negative integer";
-      seg = *s;
-      frag.seg = static_cast<std::uint32_t>(*s);
-    }
-    if (f.contains("sample")) {
-      const auto s = get_int(f["sample"]);
-      if (!s || *s < 0 || *s >= samples)
-        return at + ".sample: must be a sample index below " + std::to_string(samples);
-      sample = *s;
-      frag.sample = static_cast<std::uint32_t>(*s);
-    }
-    if (f.contains("helper")) {
-      if (!f["helper"].is_boolean())
-        return at + ".helper: must be true or false";
-      frag.helper = f["helper"].get<bool>();
-    }
-    frag.prim = static_cast<std::uint32_t>(prim);
-    frag.x = static_cast<std::int32_t>(x);
-    frag.y = static_cast<std::int32_t>(y);
-    frag.mask = static_cast<std::uint32_t>(mask);
-    if (!seen.emplace(frag.prim, frag.x, frag.y, seg, sample).second) {
-      return at + ": duplicate fragment (prim " + std::to_string(prim) + ", x " +
-             std::to_string(x) + ", y " + std::to_string(y) + ")";
-    }
-    out.push_back(frag);
-  }
-  std::stable_sort(out.begin(), out.end(), fragment_before);
-  return out;
+std::variant<std::vector<Fragment>, std::string>
+parse_external_fragments(std::string_view text, const Scene& scene, std::uint64_t max_fragments) {
+  FragmentReader reader(scene, max_fragments);
+  return reader.result(io::parse_json(text, reader));
+}
+
+// rule: DRIVER.EXTERNAL.PROTOCOL
+std::variant<std::vector<Fragment>, std::string>
+read_external_fragments(const std::function<std::string_view()>& next, const Scene& scene,
+                        std::uint64_t max_fragments) {
+  FragmentReader reader(scene, max_fragments);
+  return reader.result(io::parse_json(next, reader));
 }
 
 std::unique_ptr<Driver> open_external_driver(std::string_view command, std::string* error,

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The scene reader (a strict, streaming SAX handler over nlohmann::json) and writer.
+// The scene reader (a strict, streaming SAX handler over nlohmann::json, json_stream.hpp) and
+// writer.
 // Implements: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS, SCENE.PRIM.POINT,
 //             SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.LINE_MODE, SCENE.MSAA,
 //             SCENE.PIPELINE
@@ -33,9 +34,8 @@
 #include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "rastrules/fixed.hpp"
+#include "rastrules/io/json_stream.hpp"
 #include "rastrules/names.hpp"
 #include "rastrules/snap.hpp"
 
@@ -290,15 +290,8 @@ struct PipeExtras {
 constexpr std::array<std::pair<std::string_view, DerivativeMode>, 2> kDerivativeNames = {
     {Names<DerivativeMode>::table[1], Names<DerivativeMode>::table[2]}};
 
-enum class Kind { kNull, kBool, kInt, kUint, kFloat, kString, kObject, kArray };
-
-struct Value {
-  Kind kind = Kind::kNull;
-  bool b = false;
-  std::int64_t i = 0;
-  std::uint64_t u = 0;
-  std::string_view text; // number text for kFloat, content for kString
-};
+using Kind = JsonKind;
+using Value = JsonValue;
 
 std::string describe(const Value& v) {
   switch (v.kind) {
@@ -334,31 +327,9 @@ struct Frame {
 // The SAX handler: validates the schema while the parser streams, so that memory stays
 // proportional to the scene, and stops at the first error.
 // rule: SCENE.FORMAT.V1, SCENE.INPUT.ERRORS
-class SceneReader {
+class SceneReader final : public JsonHandler {
 public:
-  using json = nlohmann::json;
-
-  bool null() { return value(Value{Kind::kNull, false, 0, 0, {}}); }
-  bool boolean(bool b) { return value(Value{Kind::kBool, b, 0, 0, {}}); }
-  bool number_integer(json::number_integer_t i) {
-    return value(Value{Kind::kInt, false, i, 0, {}});
-  }
-  // nlohmann reports every non-negative integer here; those an int64_t holds go on as kInt.
-  bool number_unsigned(json::number_unsigned_t u) {
-    if (u <= static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
-      return value(Value{Kind::kInt, false, static_cast<std::int64_t>(u), 0, {}});
-    }
-    return value(Value{Kind::kUint, false, 0, u, {}});
-  }
-  bool number_float(json::number_float_t, const json::string_t& s) {
-    return value(Value{Kind::kFloat, false, 0, 0, s});
-  }
-  bool string(json::string_t& s) { return value(Value{Kind::kString, false, 0, 0, s}); }
-  bool binary(json::binary_t&) { return fail("scene", "binary values are not JSON text"); }
-  bool start_object(std::size_t) { return value(Value{Kind::kObject, false, 0, 0, {}}); }
-  bool start_array(std::size_t) { return value(Value{Kind::kArray, false, 0, 0, {}}); }
-
-  bool key(json::string_t& k) {
+  bool key(std::string_view k) override {
     Frame& f = stack_.back();
     // An empty key is named "" so that the error still names a field (found by fuzz_scene_parser).
     const std::string name = k.empty() ? std::string("\"\"") : printable(k);
@@ -384,7 +355,7 @@ public:
     return fail(field, "unknown key (expected " + expected + ")");
   }
 
-  bool end_object() {
+  bool end_object() override {
     const Frame f = std::move(stack_.back());
     stack_.pop_back();
     // Every object first checks its required keys (the pipeline objects have none).
@@ -451,7 +422,7 @@ public:
     }
   }
 
-  bool end_array() {
+  bool end_array() override {
     const Frame f = std::move(stack_.back());
     stack_.pop_back();
     if (f.ctx == Ctx::kCoordArray && f.count != 2) {
@@ -486,20 +457,19 @@ public:
     return true;
   }
 
-  bool parse_error(std::size_t, const std::string& last_token,
-                   const nlohmann::detail::exception& ex) {
+  bool syntax_error(const JsonSyntaxError& ex) override {
     if (error_)
       return false;
     if (ex.id == 406) {
       // A number beyond double's range ("1e400"): nlohmann stops here. Treat it as the
       // number it is (an infinity in float32) and report what that value means in place.
-      if (!value(Value{Kind::kFloat, false, 0, 0, last_token}))
+      if (!value(Value{Kind::kFloat, false, 0, 0, ex.last_token}))
         return false;
       return fail(last_path_,
                   "is " + std::string(to_string(
                               snap_to_subpixel(std::numeric_limits<float>::infinity()).status)));
     }
-    std::string what = ex.what();
+    std::string what = ex.what;
     const std::size_t close = what.find("] ");
     if (what.rfind("[json.exception.", 0) == 0 && close != std::string::npos) {
       what = what.substr(close + 2);
@@ -528,7 +498,7 @@ private:
   }
 
   // Dispatches one value (scalar, or the start of an object or array) to its slot.
-  bool value(const Value& v) {
+  bool value(const Value& v) override {
     Slot slot = Slot::kRoot;
     std::string field = "scene";
     if (!stack_.empty()) {
@@ -1252,29 +1222,11 @@ std::string format_float(float v) {
   return std::string(buf.data(), r.ptr);
 }
 
-// rule: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.PIPELINE, SCENE.INPUT.ERRORS
-std::optional<std::string> nul_byte_problem(std::string_view text) {
-  const std::size_t at = text.find('\0');
-  if (at == std::string_view::npos)
-    return std::nullopt;
-  const std::string_view before = text.substr(0, at);
-  const std::size_t line =
-      1 + static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n'));
-  const std::size_t last_newline = before.rfind('\n');
-  const std::size_t column =
-      at - (last_newline == std::string_view::npos ? 0 : last_newline + 1) + 1;
-  return "parse error at line " + std::to_string(line) + ", column " + std::to_string(column) +
-         ": a raw NUL byte, which JSON text cannot hold";
-}
-
 std::variant<Scene, SceneError> read_scene(std::string_view json_text) {
   if (auto nul = nul_byte_problem(json_text))
     return SceneError{"", std::move(*nul)};
   SceneReader reader;
-  const bool ok = nlohmann::json::sax_parse(json_text.begin(), json_text.end(), &reader,
-                                            nlohmann::json::input_format_t::json,
-                                            /*strict=*/true, /*ignore_comments=*/false);
-  return reader.result(ok);
+  return reader.result(parse_json(json_text, reader).ok);
 }
 
 std::string_view interpolation_name(pipe::Interpolation i) {

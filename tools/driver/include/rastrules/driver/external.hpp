@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -18,9 +19,16 @@
 
 namespace rastrules::driver {
 
+// The most fragments one output may list by default: the default of `rastrules render
+// --max-fragments` (SCENE.INPUT.LIMITS), so that a driver may return what the reference may.
+inline constexpr std::uint64_t kDefaultExternalMaxFragments = std::uint64_t{1} << 26;
+
+// The limits of one draw (DRIVER.EXTERNAL.PROTOCOL, item 5).
 struct ExternalOptions {
-  std::int64_t timeout_ms = 10000;                      // per scene; the process is killed after it
-  std::size_t max_output_bytes = std::size_t{64} << 20; // standard output larger: an error
+  // Per scene, writing the scene and reading the output included; the process is killed after it.
+  std::int64_t timeout_ms = 10000;
+  std::size_t max_output_bytes = std::size_t{64} << 20;       // standard output larger: an error
+  std::uint64_t max_fragments = kDefaultExternalMaxFragments; // a longer list: an error
 };
 
 // The most RASTRULES_EXTERNAL_TIMEOUT_MS may say: one day, in milliseconds.
@@ -40,10 +48,24 @@ inline constexpr std::int64_t kMaxExternalTimeoutMs = 86400000;
 
 // Parses the fragment list the process wrote, checking it against the scene: every
 // fragment inside the target, prim < number of primitives, mask < 2^samples, no duplicate
-// (prim, x, y, seg, sample). Returns the fragments sorted as SCENE.OUTPUT.FRAGMENTS or an
-// error message naming the fragment and field.
+// (prim, x, y, seg, sample), at most max_fragments fragments. A strict streaming reader (no
+// document tree): it checks each value as it reads it and stops at the first error, holding the
+// fragments read so far (sizeof(Fragment), twice while the list grows, + at most 24 bytes each)
+// and the current token.
+// Returns the fragments sorted as SCENE.OUTPUT.FRAGMENTS or an error message naming the
+// fragment and field (or the limit).
+// rule: DRIVER.EXTERNAL.PROTOCOL
 [[nodiscard]] std::variant<std::vector<Fragment>, std::string>
-parse_external_fragments(std::string_view text, const Scene& scene);
+parse_external_fragments(std::string_view text, const Scene& scene,
+                         std::uint64_t max_fragments = kDefaultExternalMaxFragments);
+
+// The same, reading the text piece by piece as it arrives: next() returns the next bytes (valid
+// until its next call), an empty view at the end; it is not called again after the first error.
+// The external driver reads the process's standard output this way, within its timeout.
+// rule: DRIVER.EXTERNAL.PROTOCOL
+[[nodiscard]] std::variant<std::vector<Fragment>, std::string>
+read_external_fragments(const std::function<std::string_view()>& next, const Scene& scene,
+                        std::uint64_t max_fragments = kDefaultExternalMaxFragments);
 
 // Opens "external:COMMAND" given COMMAND. On failure (empty command) returns nullptr and sets
 // *error.

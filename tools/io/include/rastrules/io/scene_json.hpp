@@ -101,10 +101,4 @@ inline constexpr std::uint64_t kDefaultMaxFragments = std::uint64_t{1} << 26; //
 // escaped; other bytes, valid UTF-8 as the reader checked, as they are).
 [[nodiscard]] std::string json_string(std::string_view s);
 
-// Returns "parse error at line L, column C: a raw NUL byte, which JSON text cannot hold" for
-// the first NUL byte of text, or nullopt. The JSON library's lexer would take it for the end of
-// the input and accept a valid prefix followed by anything.
-// rule: SCENE.INPUT.ERRORS
-[[nodiscard]] std::optional<std::string> nul_byte_problem(std::string_view text);
-
 } // namespace rastrules::io
