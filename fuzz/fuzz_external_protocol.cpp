@@ -21,37 +21,14 @@
 #include "rastrules/scene.hpp"
 #include "support.hpp"
 
-namespace {
-
 namespace fz = rastrules::fuzz;
 using rastrules::Fragment;
 using rastrules::Scene;
 
-// Scene selected by one byte: width and height in {1, 3, 8, 16}, 1 or 4 samples, 1 to 4
-// primitives (points, whose content does not matter to the reader).
-Scene scene_for(std::uint8_t b) {
-  static constexpr std::int32_t kSides[4] = {1, 3, 8, 16};
-  Scene s;
-  s.width = kSides[b & 3u];
-  s.height = kSides[(b >> 2) & 3u];
-  if ((b & 16u) != 0)
-    set_sample_pattern(s, rastrules::standard_pattern(4));
-  const std::size_t prims = 1u + ((b >> 5) & 3u);
-  for (std::size_t i = 0; i < prims; ++i) {
-    rastrules::Primitive p;
-    p.type = rastrules::PrimitiveType::kPoint;
-    p.v = {rastrules::FloatPoint{0.5f, 0.5f}};
-    s.primitives.push_back(p);
-  }
-  return s;
-}
-
-} // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0 || size > (std::size_t{1} << 20))
     return 0;
-  const Scene scene = scene_for(data[0]);
+  const Scene scene = fz::protocol_scene(data[0]);
   const std::string_view text(reinterpret_cast<const char*>(data + 1), size - 1);
   const auto parsed = rastrules::driver::parse_external_fragments(text, scene);
   if (const auto* err = std::get_if<std::string>(&parsed)) {

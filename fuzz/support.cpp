@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "rastrules/io/scene_json.hpp"
+#include "rastrules/msaa.hpp"
 #include "rastrules/oracle/line.hpp"
 #include "rastrules/oracle/line_aa.hpp"
 #include "rastrules/oracle/point.hpp"
@@ -115,6 +116,23 @@ Scene decode_scene(ByteReader& in) {
       v[1] = coordinate(in);
     }
     s.primitives.push_back(std::move(prim));
+  }
+  return s;
+}
+
+Scene protocol_scene(std::uint8_t b) {
+  static constexpr std::int32_t kSides[4] = {1, 3, 8, 16};
+  Scene s;
+  s.width = kSides[b & 3u];
+  s.height = kSides[(b >> 2) & 3u];
+  if ((b & 16u) != 0)
+    set_sample_pattern(s, standard_pattern(4));
+  const std::size_t prims = 1u + ((b >> 5) & 3u);
+  for (std::size_t i = 0; i < prims; ++i) {
+    Primitive p;
+    p.type = PrimitiveType::kPoint;
+    p.v = {FloatPoint{0.5f, 0.5f}};
+    s.primitives.push_back(p);
   }
   return s;
 }

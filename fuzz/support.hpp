@@ -49,6 +49,11 @@ inline constexpr std::size_t kMaxAaSegments = 2;
 // from a raw value, or arbitrary float32 bits (NaN, infinities, out of range).
 [[nodiscard]] Scene decode_scene(ByteReader& in);
 
+// The scene an external driver's output is checked against, chosen by one byte (the
+// protocol targets): width and height in {1, 3, 8, 16}, 1 or 4 samples, 1 to 4 primitives
+// (points, whose content does not matter to the reader).
+[[nodiscard]] Scene protocol_scene(std::uint8_t b);
+
 // Returns why `scene` is invalid by the oracles' reading of spec/scene.md (a coordinate that
 // does not snap, a point outside POINT.RANGE, aa outside line mode d3d, a wrong vertex count,
 // a target size outside [1, 16384], a sample mask wider than the pattern, sample shading of
