@@ -194,9 +194,19 @@ TEST(CliThreads, ThreadsStreamInBoundedMemoryAndGiveTheLimitsError) {
     const RunResult exact = run(n, "8388608");
     EXPECT_EQ(exact.status, 0) << n << ": " << exact.err;
   }
+  // A child's peak resident set starts from its parent's at fork (Linux keeps the larger at
+  // exec), so the bound holds for this test run alone, as ctest runs it (a test process that
+  // ran other tests first may be larger). AddressSanitizer's shadow memory and quarantine add
+  // to every process's resident set (95 MiB measured under scripts/test's sanitizer build):
+  // its bound is wider, still far below the old buffer (650 MB, more under the sanitizer).
+#if defined(__SANITIZE_ADDRESS__)
+  constexpr long kMaxPeakKiB = 400L * 1024;
+#else
+  constexpr long kMaxPeakKiB = 64L * 1024;
+#endif
   struct rusage usage {};
   ASSERT_EQ(::getrusage(RUSAGE_CHILDREN, &usage), 0);
-  EXPECT_LT(usage.ru_maxrss, 64L * 1024) << "peak resident set in KiB";
+  EXPECT_LT(usage.ru_maxrss, kMaxPeakKiB) << "peak resident set in KiB";
 }
 
 // rule: FAST.THREADS.DETERMINISTIC
