@@ -171,7 +171,7 @@ std::optional<pipe::PipeResult> run_pipeline_or_report(const Scene& scene,
   if (auto* err = std::get_if<SceneError>(&result)) {
     // rule: SCENE.INPUT.LIMITS
     if (err->message == work_limit_problem(max_work)) {
-      error(err->what() + "; raise it with --max-work N");
+      error(err->what() + std::string(kMaxWorkHint));
       return std::nullopt;
     }
     error(err->what());

@@ -66,6 +66,11 @@ std::optional<pipe::PipeResult> run_pipeline_or_report(const Scene& scene,
 
 // Output files (OutputFile, same_output_file, write_text) are rastrules::io's, shared with the
 // fuzzer's reports.
+// What the work limit's error adds to the kernel's words (work_limit_problem), for coverage and
+// pipeline scenes alike.
+// rule: SCENE.INPUT.LIMITS
+inline constexpr std::string_view kMaxWorkHint = "; raise it with --max-work N";
+
 using io::OutputFile;
 using io::same_output_file;
 using io::write_text;

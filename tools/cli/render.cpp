@@ -383,7 +383,7 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
   // tests, the same for every traversal, instruction set and thread count.
   if (const auto p = first_primitive_over_work(scene, rq.max_work))
     return error("render: primitives[" + std::to_string(*p) + "] " +
-                 work_limit_problem(rq.max_work) + "; raise it with --max-work N");
+                 work_limit_problem(rq.max_work) + std::string(kMaxWorkHint));
   const std::optional<int> picture_scale = picture_scale_of(scene.width, scene.height, rq);
   if (!picture_scale)
     return kExitBadInput;
