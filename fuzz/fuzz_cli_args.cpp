@@ -7,7 +7,8 @@
 //   usage text after it) and a successful one none; no exception escapes (the command line's
 //   main would report it as an internal error);
 // - a failed command leaves the folder as it was: no output file, no input overwritten;
-// - no temporary output file (.rastrules-*.tmp) is ever left behind.
+// - no temporary output file (.rastrules-PID-N.tmp) is ever left behind (an output the
+//   command names may itself begin with ".rastrules-": only the temporaries' form counts).
 // The input is the command (first byte: even render, odd explain) and up to 12 arguments
 // separated by '\n'. An argument holding '/' is skipped, so every output stays in the scratch
 // folder (the fuzzer may run as root).
@@ -79,6 +80,20 @@ void reset(const Sandbox& box) {
     fs::remove_all(e.path(), ec);
   for (const auto& [name, text] : kInputs)
     std::ofstream(box.work / name, std::ios::binary) << text;
+}
+
+// True for the form of io::OutputFile's temporaries: ".rastrules-" digits "-" digits ".tmp".
+bool is_temporary_name(const std::string& name) {
+  const std::string head = ".rastrules-", tail = ".tmp";
+  if (name.size() < head.size() + tail.size() + 3 || name.rfind(head, 0) != 0 ||
+      name.compare(name.size() - tail.size(), tail.size(), tail) != 0)
+    return false;
+  const std::string mid = name.substr(head.size(), name.size() - head.size() - tail.size());
+  const std::size_t dash = mid.find('-');
+  const auto digits = [](const std::string& s) {
+    return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
+  };
+  return dash != std::string::npos && digits(mid.substr(0, dash)) && digits(mid.substr(dash + 1));
 }
 
 std::string read(const fs::path& p) {
@@ -173,7 +188,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(box.work, ec)) {
     const std::string name = e.path().filename().string();
-    if (name.rfind(".rastrules-", 0) == 0)
+    if (is_temporary_name(name))
       fail("a temporary output file was left: " + name, details, data, size);
     if (status == 2 && kInputs.count(name) == 0)
       fail("a failed command left an output file: " + name, details, data, size);
