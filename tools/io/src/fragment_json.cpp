@@ -9,6 +9,7 @@
 #include <bit>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <utility>
 
@@ -37,35 +38,60 @@ template <class Int> void append_int(std::string& out, Int v) {
   out.append(buf.data(), r.ptr);
 }
 
+// The fixed fields of a fragment's line, formatted into a buffer on the stack and appended to
+// the output once (a string append per field was most of a render's time).
+class LineBuffer {
+public:
+  template <std::size_t N> void text(const char (&s)[N]) {
+    std::memcpy(buf_.data() + n_, s, N - 1);
+    n_ += N - 1;
+  }
+  template <class Int> void number(Int v) {
+    n_ = static_cast<std::size_t>(
+        std::to_chars(buf_.data() + n_, buf_.data() + buf_.size(), v).ptr - buf_.data());
+  }
+  void append_to(std::string& out) const { out.append(buf_.data(), n_); }
+
+private:
+  // The longest line: the texts below (93 bytes) and six numbers of at most 11 characters.
+  std::array<char, 192> buf_{};
+  std::size_t n_ = 0;
+};
+
 // Appends one fragment object on its own line, without its closing brace; part: the pipeline
 // fragment's part (SCENE.OUTPUT.PIPELINE), written after prim.
 void append_fragment_fields(std::string& out, const Fragment& f, bool first,
                             std::optional<std::uint32_t> part = std::nullopt) {
-  out += first ? "\n  {\"prim\": " : ",\n  {\"prim\": ";
-  append_int(out, f.prim);
+  LineBuffer line;
+  if (first)
+    line.text("\n  {\"prim\": ");
+  else
+    line.text(",\n  {\"prim\": ");
+  line.number(f.prim);
   // rule: SCENE.OUTPUT.PIPELINE
   if (part) {
-    out += ", \"part\": ";
-    append_int(out, *part);
+    line.text(", \"part\": ");
+    line.number(*part);
   }
-  out += ", \"x\": ";
-  append_int(out, f.x);
-  out += ", \"y\": ";
-  append_int(out, f.y);
-  out += ", \"mask\": ";
-  append_int(out, f.mask);
+  line.text(", \"x\": ");
+  line.number(f.x);
+  line.text(", \"y\": ");
+  line.number(f.y);
+  line.text(", \"mask\": ");
+  line.number(f.mask);
   // rule: SCENE.PRIM.LINE_STRIP
   if (f.seg) {
-    out += ", \"seg\": ";
-    append_int(out, *f.seg);
+    line.text(", \"seg\": ");
+    line.number(*f.seg);
   }
   // rule: SCENE.OUTPUT.MSAA
   if (f.sample) {
-    out += ", \"sample\": ";
-    append_int(out, *f.sample);
+    line.text(", \"sample\": ");
+    line.number(*f.sample);
   }
   if (f.helper)
-    out += ", \"helper\": true";
+    line.text(", \"helper\": true");
+  line.append_to(out);
   // rule: SCENE.OUTPUT.COVERAGE
   if (f.coverage_q16) {
     out += ", \"coverage\": ";
