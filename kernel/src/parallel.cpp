@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <exception>
 #include <mutex>
+#include <string>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -88,6 +89,8 @@ public:
     };
     std::vector<Entry> entries;
     std::vector<Fragment> whole;
+    std::string bytes;    // the encoding's bytes of the fragments, when there is one
+    BatchSummary summary; // with the encoding's consume_summary: instead of the entries
 
     void push_back(const Fragment& f) {
       const bool plain = f.mask == 1u && !f.seg && !f.coverage_q16 && !f.helper && !f.sample &&
@@ -97,11 +100,22 @@ public:
       if (!plain)
         whole.push_back(f);
     }
-    [[nodiscard]] std::size_t size() const { return entries.size(); }
-    [[nodiscard]] bool empty() const { return entries.empty(); }
+    // Counts f into the summary, keeping no entry (on the thread that fills the batch).
+    void summarise(const Fragment& f) {
+      if (summary.count == 0)
+        summary.first = f;
+      else if (!fragment_before(summary.last, f))
+        summary.in_order = false;
+      summary.last = f;
+      ++summary.count;
+    }
+    [[nodiscard]] std::size_t size() const { return entries.size() + summary.count; }
+    [[nodiscard]] bool empty() const { return size() == 0; }
     void clear() {
       entries.clear();
       whole.clear();
+      bytes.clear();
+      summary = BatchSummary{};
     }
     void reserve(std::size_t n) { entries.reserve(n); }
     template <class F> void for_each(F&& f) const {
@@ -112,8 +126,9 @@ public:
 
   StreamPool(
       const StreamBuffers& b, const std::function<bool(std::size_t)>& plan,
-      const std::function<void(std::size_t, const std::function<void(const Fragment&)>&)>& produce)
-      : b_(b), plan_(plan), produce_(produce), slots_(b.window) {}
+      const std::function<void(std::size_t, const std::function<void(const Fragment&)>&)>& produce,
+      const StreamEncoding* encoding)
+      : b_(b), plan_(plan), produce_(produce), encoding_(encoding), slots_(b.window) {}
 
   // A pool thread: claims units in order while the window has room, produces them.
   void work() {
@@ -151,8 +166,14 @@ public:
         ++next_;
       }
       Batch batch = take_spare();
+      const bool summarise = summarised();
       const auto put = [&](const Fragment& f) {
-        batch.push_back(f);
+        if (summarise)
+          batch.summarise(f);
+        else
+          batch.push_back(f);
+        if (encoding_ != nullptr)
+          encoding_->encode(f, batch.bytes);
         if (batch.size() >= b_.batch)
           hand_over(i, batch);
       };
@@ -203,7 +224,12 @@ public:
         }
         if (wake)
           room_.notify_all();
-        batch.for_each(consume);
+        if (summarised())
+          encoding_->consume_summary(batch.summary);
+        else
+          batch.for_each(consume);
+        if (encoding_ != nullptr)
+          encoding_->consume_bytes(batch.bytes);
         batch.clear();
         give_spare(std::move(batch));
       }
@@ -226,6 +252,10 @@ private:
     bool done = false;
     std::exception_ptr failure;
   };
+
+  [[nodiscard]] bool summarised() const {
+    return encoding_ != nullptr && encoding_->consume_summary;
+  }
 
   // The number of full batches of a unit at which its waiting producer is woken.
   [[nodiscard]] std::size_t low_water() const { return b_.batches_per_unit / 2; }
@@ -256,7 +286,8 @@ private:
       batch = std::move(spare_.back());
       spare_.pop_back();
     }
-    batch.reserve(b_.batch);
+    if (!summarised())
+      batch.reserve(b_.batch);
     return batch;
   }
   void give_spare(Batch&& batch) {
@@ -268,6 +299,7 @@ private:
   const StreamBuffers& b_;
   const std::function<bool(std::size_t)>& plan_;
   const std::function<void(std::size_t, const std::function<void(const Fragment&)>&)>& produce_;
+  const StreamEncoding* encoding_;
   std::mutex m_;
   std::condition_variable produced_; // a batch was handed over, a unit is done, or the plan ended
   std::condition_variable room_;     // a batch or a unit was consumed, or stop
@@ -286,11 +318,26 @@ private:
 void stream_ordered(
     unsigned threads, const StreamBuffers& buffers, const std::function<bool(std::size_t)>& plan,
     const std::function<void(std::size_t, const std::function<void(const Fragment&)>&)>& produce,
-    const std::function<void(const Fragment&)>& consume) {
+    const std::function<void(const Fragment&)>& consume, const StreamEncoding* encoding) {
   const unsigned wanted = std::clamp(threads, 1U, kMaxThreads);
   const auto inline_all = [&] {
+    if (encoding == nullptr) {
+      for (std::size_t i = 0; plan(i); ++i)
+        produce(i, consume);
+      return;
+    }
+    std::string bytes;
+    const std::function<void(const Fragment&)> consume_encoded = [&](const Fragment& f) {
+      if (encoding->consume_summary)
+        encoding->consume_summary(BatchSummary{1, f, f, true});
+      else
+        consume(f);
+      bytes.clear();
+      encoding->encode(f, bytes);
+      encoding->consume_bytes(bytes);
+    };
     for (std::size_t i = 0; plan(i); ++i)
-      produce(i, consume);
+      produce(i, consume_encoded);
   };
   if (wanted <= 1) {
     inline_all();
@@ -300,7 +347,7 @@ void stream_ordered(
   b.batch = std::max<std::size_t>(b.batch, 1);
   b.batches_per_unit = std::max<std::size_t>(b.batches_per_unit, 1);
   b.window = std::max<std::size_t>(b.window, 1);
-  StreamPool pool(b, plan, produce);
+  StreamPool pool(b, plan, produce, encoding);
   std::vector<std::jthread> threads_running;
   threads_running.reserve(wanted);
   // Stops and joins the pool however this scope is left (consume may throw).

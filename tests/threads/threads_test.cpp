@@ -12,6 +12,7 @@
 #include <functional>
 #include <limits>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -251,6 +252,89 @@ TEST(StreamPool, ConsumesEveryFragmentInOrderWithBoundedBuffersForEveryThreadCou
       EXPECT_TRUE(got == expected) << n << " threads, batch " << b.batch;
     }
   }
+}
+
+// rule: FAST.THREADS.DETERMINISTIC
+TEST(StreamPool, EncodedBytesArriveOnceInTheOrderOfTheFragments) {
+  const std::size_t units = 40;
+  // Each fragment's bytes name it; consume and consume_bytes interleave batch by batch, so the
+  // bytes received so far never run ahead of the fragments consumed.
+  const auto text = [](const Fragment& f) {
+    return "(" + std::to_string(f.prim) + "," + std::to_string(f.x) + ")";
+  };
+  std::string expected;
+  for (std::size_t i = 0; i < units; ++i)
+    put_unit(i, [&](const Fragment& f) { expected += text(f); });
+  for (const unsigned n : {1u, 2u, 5u}) {
+    for (const rastrules::StreamBuffers b :
+         {rastrules::StreamBuffers{.batch = 1, .batches_per_unit = 1, .window = 1},
+          rastrules::StreamBuffers{.batch = 7, .batches_per_unit = 2, .window = 3}}) {
+      std::string consumed_text, bytes;
+      bool ahead = false;
+      const rastrules::StreamEncoding encoding{
+          .encode = [&](const Fragment& f, std::string& out) { out += text(f); },
+          .consume_bytes =
+              [&](std::string_view t) {
+                bytes += t;
+                ahead = ahead || bytes.size() > consumed_text.size();
+              },
+          .consume_summary = nullptr};
+      rastrules::stream_ordered(
+          n, b, [&](std::size_t i) { return i < units; }, put_unit,
+          [&](const Fragment& f) { consumed_text += text(f); }, &encoding);
+      EXPECT_EQ(bytes, expected) << n << " threads, batch " << b.batch;
+      EXPECT_EQ(consumed_text, expected) << n << " threads, batch " << b.batch;
+      EXPECT_FALSE(ahead) << n << " threads, batch " << b.batch;
+    }
+  }
+}
+
+// rule: FAST.THREADS.DETERMINISTIC
+TEST(StreamPool, BatchSummariesReplaceConsumeAndChainInOrder) {
+  const std::size_t units = 40;
+  std::vector<Fragment> all;
+  for (std::size_t i = 0; i < units; ++i)
+    put_unit(i, [&](const Fragment& f) { all.push_back(f); });
+  for (const unsigned n : {1u, 2u, 5u}) {
+    const rastrules::StreamBuffers b{.batch = 7, .batches_per_unit = 2, .window = 3};
+    std::size_t count = 0, consumed = 0, bytes = 0;
+    bool chained = true, in_order = true;
+    std::optional<Fragment> last;
+    const rastrules::StreamEncoding encoding{
+        .encode = [](const Fragment&, std::string& out) { out += 'x'; },
+        .consume_bytes = [&](std::string_view t) { bytes += t.size(); },
+        .consume_summary =
+            [&](const rastrules::BatchSummary& s) {
+              // Each summary starts where the previous one ended, in the fragments' order.
+              chained = chained && s.count > 0 && count + s.count <= all.size() &&
+                        s.first == all[count] && s.last == all[count + s.count - 1] &&
+                        (!last || rastrules::fragment_before(*last, s.first));
+              in_order = in_order && s.in_order;
+              count += s.count;
+              last = s.last;
+            }};
+    rastrules::stream_ordered(
+        n, b, [&](std::size_t i) { return i < units; }, put_unit,
+        [&](const Fragment&) { ++consumed; }, &encoding);
+    EXPECT_EQ(consumed, 0u) << n << " threads";
+    EXPECT_EQ(count, all.size()) << n << " threads";
+    EXPECT_EQ(bytes, all.size()) << n << " threads";
+    EXPECT_TRUE(chained) << n << " threads";
+    EXPECT_TRUE(in_order) << n << " threads";
+  }
+  // A batch whose fragments are out of order says so.
+  const rastrules::StreamEncoding encoding{
+      .encode = [](const Fragment&, std::string&) {},
+      .consume_bytes = [](std::string_view) {},
+      .consume_summary = [&](const rastrules::BatchSummary& s) { EXPECT_FALSE(s.in_order); }};
+  rastrules::stream_ordered(
+      2, rastrules::StreamBuffers{.batch = 4, .batches_per_unit = 1, .window = 2},
+      [](std::size_t i) { return i < 1; },
+      [](std::size_t, const std::function<void(const Fragment&)>& put) {
+        for (const std::int32_t x : {0, 1, 3, 2})
+          put(Fragment{0, x, 0});
+      },
+      [](const Fragment&) {}, &encoding);
 }
 
 // rule: FAST.THREADS.DETERMINISTIC

@@ -274,7 +274,8 @@ int render_pipeline(const Scene& scene, const RenderRequest& rq) {
 // primitive that needs to hold more than 2 * rq.max_fragments entries to be sorted, if any
 // (nothing of it or after it is emitted).
 std::optional<std::size_t> stream_fragments(const PreparedScene& scene, const RenderRequest& rq,
-                                            const std::function<void(const Fragment&)>& emit) {
+                                            const std::function<void(const Fragment&)>& emit,
+                                            const StreamEncoding* encoding) {
   if (rq.options.threads <= 1) {
     for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
       if (!for_each_fragment_bounded(scene, p, 2 * rq.max_fragments, rq.options, emit))
@@ -363,7 +364,7 @@ std::optional<std::size_t> stream_fragments(const PreparedScene& scene, const Re
               throw TooManyHeld{p};
           }
         },
-        emit);
+        emit, encoding);
   } catch (const TooManyHeld& held) {
     return held.p;
   }
@@ -440,11 +441,28 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
   // (the exception unwinds out of the kernel's walk) and the outputs, still under their
   // temporary names, are removed by ~OutputFile.
   struct TooManyFragments {};
+  // rule: FAST.THREADS.DETERMINISTIC
+  // With threads, the fragments' text is made on the threads that draw them and only
+  // concatenated here (the same bytes as one thread's writer makes).
+  // With nothing but the fragment list to write, this thread sees each batch in brief.
+  const bool encoded = writer && rq.options.threads > 1;
+  StreamEncoding encoding{
+      .encode = &io::FragmentWriter::encode,
+      .consume_bytes = [&](std::string_view text) { writer->add_encoded_text(text); },
+      .consume_summary = nullptr};
+  if (encoded && !rq.png_path && !rq.resolve_path) {
+    encoding.consume_summary = [&](const BatchSummary& b) {
+      fragment_count += b.count;
+      if (fragment_count > rq.max_fragments)
+        throw TooManyFragments{};
+      in_order = writer->add_without_text(b) && in_order;
+    };
+  }
   const auto emit = [&](const Fragment& f) {
     if (++fragment_count > rq.max_fragments)
       throw TooManyFragments{};
     if (writer)
-      in_order = writer->add(f) && in_order;
+      in_order = (encoded ? writer->add_without_text(f) : writer->add(f)) && in_order;
     if (coverage)
       coverage->add_fragment(f);
     if (resolver) {
@@ -464,7 +482,7 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
   // segment), so one that needs more has more than rq.max_fragments fragments, except when
   // the sample mask removes the samples it covers (then the limit counts touched pixels).
   try {
-    if (const auto p = stream_fragments(scene, rq, emit))
+    if (const auto p = stream_fragments(scene, rq, emit, encoded ? &encoding : nullptr))
       return too_many_held(*p);
   } catch (const TooManyFragments&) {
     return error("render: more than " + std::to_string(rq.max_fragments) +

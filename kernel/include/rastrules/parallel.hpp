@@ -9,6 +9,8 @@
 
 #include <cstddef>
 #include <functional>
+#include <string>
+#include <string_view>
 
 #include "rastrules/scene.hpp"
 
@@ -43,6 +45,28 @@ struct StreamBuffers {
   }
 };
 
+// Bytes the producing threads make of each fragment (its JSON text, for example), so that the
+// calling thread only concatenates them: encode(f, bytes) appends f's bytes on the thread that
+// puts f; consume_bytes receives each batch's bytes on the calling thread right after consume
+// has seen that batch's fragments, so every fragment's bytes arrive once, in consume's order.
+// A batch's bytes are held with it (at most max_held() fragments' bytes in all).
+// A batch's fragments in brief: how many, the first and the last, and whether each comes
+// before the next in (prim, y, x, seg, sample) order (fragment_before).
+struct BatchSummary {
+  std::size_t count = 0;
+  Fragment first, last;
+  bool in_order = true;
+};
+
+struct StreamEncoding {
+  std::function<void(const Fragment&, std::string&)> encode;
+  std::function<void(std::string_view)> consume_bytes;
+  // When set, it replaces consume: each batch reaches the calling thread as its summary (made
+  // on the thread that filled it) and its bytes, so that the calling thread does no work per
+  // fragment (a caller that needs only the bytes, the count and the order).
+  std::function<void(const BatchSummary&)> consume_summary;
+};
+
 // Streams the fragments of work units 0, 1, 2, ... produced on a pool of `threads` threads
 // created once to consume, called on the calling thread in unit order and, within a unit, in
 // the order produce(i, put) puts them: the calls consume sees do not depend on the thread count
@@ -54,11 +78,13 @@ struct StreamBuffers {
 // every unit is produced on the calling thread, its fragments passed straight to consume. An
 // exception from produce(i) is rethrown after consume has seen every fragment unit i put before
 // it; one from consume is rethrown at once; either way the pool stops first, and nothing after
-// it is consumed: the same outcome for every thread count.
+// it is consumed: the same outcome for every thread count. With an encoding, its bytes reach
+// consume_bytes as StreamEncoding says (on the calling thread, fragment by fragment, when every
+// unit is produced there).
 // rule: FAST.THREADS.DETERMINISTIC, SCENE.INPUT.LIMITS
 void stream_ordered(
     unsigned threads, const StreamBuffers& buffers, const std::function<bool(std::size_t)>& plan,
     const std::function<void(std::size_t, const std::function<void(const Fragment&)>&)>& produce,
-    const std::function<void(const Fragment&)>& consume);
+    const std::function<void(const Fragment&)>& consume, const StreamEncoding* encoding = nullptr);
 
 } // namespace rastrules

@@ -251,6 +251,44 @@ bool FragmentWriter::add(const Fragment& f) {
   return true;
 }
 
+void FragmentWriter::encode(const Fragment& f, std::string& out) {
+  append_fragment(out, f, false);
+}
+
+bool FragmentWriter::add_without_text(const Fragment& f) {
+  if (count_ != 0 && !fragment_before(last_, f))
+    return false;
+  last_ = f;
+  ++count_;
+  return true;
+}
+
+bool FragmentWriter::add_without_text(const BatchSummary& batch) {
+  if (batch.count == 0)
+    return true;
+  if (!batch.in_order || (count_ != 0 && !fragment_before(last_, batch.first)))
+    return false;
+  last_ = batch.last;
+  count_ += batch.count;
+  return true;
+}
+
+void FragmentWriter::add_encoded_text(std::string_view text) {
+  if (text.empty())
+    return;
+  if (!text_started_) {
+    text_started_ = true;
+    text.remove_prefix(1); // encode's ',' before the first fragment
+  }
+  if (buffer_.size() + text.size() < kFlushBytes) {
+    buffer_ += text;
+    return;
+  }
+  flush_buffer(); // then a whole batch's text goes out without a copy
+  if (std::fwrite(text.data(), 1, text.size(), out_) != text.size())
+    failed_ = true;
+}
+
 bool FragmentWriter::finish() {
   buffer_ += count_ == 0 ? "]}\n" : "\n]}\n";
   flush_buffer();

@@ -10,8 +10,10 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "rastrules/parallel.hpp"
 #include "rastrules/pipeline.hpp"
 #include "rastrules/scene.hpp"
 
@@ -57,6 +59,21 @@ public:
   // none for a killed fragment).
   bool add(const Fragment& f, const pipe::FragmentData* data);
 
+  // Appends to out the text add(f) writes for f when f is not the first fragment: what the
+  // threads of a render make of the fragments they draw (StreamEncoding), so that the writer
+  // only concatenates.
+  static void encode(const Fragment& f, std::string& out);
+
+  // Checks f's place in the order and counts it as add(f) does, writing nothing: its text,
+  // made by encode, comes through add_encoded_text in the same order.
+  bool add_without_text(const Fragment& f);
+  // The same for a batch of fragments in brief (StreamEncoding::consume_summary).
+  bool add_without_text(const BatchSummary& batch);
+
+  // Appends the text encode made of fragments add_without_text accepted (the comma before the
+  // list's first fragment is dropped).
+  void add_encoded_text(std::string_view text);
+
   // Closes the list. Returns false when any write failed.
   bool finish();
 
@@ -72,6 +89,7 @@ private:
   std::optional<std::uint32_t> last_part_;
   PipeOutputFields fields_;
   bool failed_ = false;
+  bool text_started_ = false; // add_encoded_text has written a fragment's text
 };
 
 // Returns coverage_q16 / 65536 as its exact decimal: "0.5", "0.0000152587890625", "1.0"
