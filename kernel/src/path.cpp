@@ -1,0 +1,431 @@
+// SPDX-License-Identifier: MIT
+// 2D paths: winding numbers, sample coverage and exact area coverage (spec/rules/path.md).
+
+#include "rastrules/path.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "path_detail.hpp"
+#include "rastrules/fixed.hpp"
+#include "rastrules/formula/edge.hpp"
+#include "rastrules/formula/path.hpp"
+
+namespace rastrules::path {
+namespace {
+
+using Rational = boost::multiprecision::cpp_rational;
+using BigInt = boost::multiprecision::cpp_int;
+using detail::Crossing;
+using detail::Edge;
+using detail::Tie;
+
+// Returns the contribution of the directed line edge e to w(s') at sample (sx, sy): +1 down,
+// -1 up, 0 when it does not cross the displaced ray (PATH.SAMPLE.TIE, line form).
+// rule: PATH.SAMPLE.TIE, PATH.WINDING
+int line_contribution(const Edge& e, std::int64_t sx, std::int64_t sy, Tie t) {
+  const bool spans = t.y_down ? formula::path_edge_spans<true>(e.y0, e.y1, sy)
+                              : formula::path_edge_spans<false>(e.y0, e.y1, sy);
+  if (!spans)
+    return 0;
+  const std::int64_t ev = formula::edge_value<std::int64_t>(e.x0, e.y0, e.x1, e.y1, sx, sy);
+  const bool right = t.x_right ? formula::path_crossing_right<true>(ev, e.y0, e.y1)
+                               : formula::path_crossing_right<false>(ev, e.y0, e.y1);
+  if (!right)
+    return 0;
+  return e.y1 > e.y0 ? 1 : -1;
+}
+
+// An edge oriented top end first (ya < yb), with the direction of the original (+1 down).
+struct DownEdge {
+  std::int64_t xa = 0, ya = 0, xb = 0, yb = 0;
+  int dir = 0;
+};
+
+// Returns the non-horizontal line edges of the path, oriented top end first, sorted by ya.
+std::vector<DownEdge> down_edges(const detail::Boundary& b) {
+  std::vector<DownEdge> v;
+  v.reserve(b.lines.size());
+  for (const Edge& e : b.lines) {
+    if (e.y0 == e.y1)
+      continue; // horizontal: never crossed, no area (PATH.DEGENERATE)
+    if (e.y0 < e.y1)
+      v.push_back(DownEdge{e.x0, e.y0, e.x1, e.y1, 1});
+    else
+      v.push_back(DownEdge{e.x1, e.y1, e.x0, e.y0, -1});
+  }
+  std::stable_sort(v.begin(), v.end(),
+                   [](const DownEdge& p, const DownEdge& q) { return p.ya < q.ya; });
+  return v;
+}
+
+// The largest raw sample x for which the crossing of e at height sy counts (PATH.BUDGET.LINE).
+std::int64_t line_threshold(const DownEdge& e, std::int64_t sy, Tie t) {
+  const std::int64_t n = formula::path_crossing_numerator<std::int64_t>(e.xa, e.ya, e.xb, e.yb, sy);
+  const std::int64_t d = e.yb - e.ya;
+  return t.x_right ? ceil_div(n, d) - 1 : floor_div(n, d);
+}
+
+// Edges that may span a sample row, kept while the rows go down the target.
+class ActiveEdges {
+public:
+  explicit ActiveEdges(const std::vector<DownEdge>& sorted) : edges_(sorted) {}
+  // Makes the active list hold every edge with ya <= y_hi that does not end above y_lo.
+  // Calls must come with non-decreasing y_lo and y_hi.
+  const std::vector<const DownEdge*>& advance(std::int64_t y_lo, std::int64_t y_hi) {
+    while (next_ < edges_.size() && edges_[next_].ya <= y_hi)
+      active_.push_back(&edges_[next_++]);
+    std::erase_if(active_, [&](const DownEdge* e) { return e->yb < y_lo; });
+    return active_;
+  }
+
+private:
+  const std::vector<DownEdge>& edges_;
+  std::size_t next_ = 0;
+  std::vector<const DownEdge*> active_;
+};
+
+} // namespace
+
+namespace detail {
+
+Tie tie_of(FillConvention f) {
+  switch (f) {
+  case FillConvention::kTopLeft:
+    return Tie{true, true};
+  case FillConvention::kTopRight:
+    return Tie{false, true};
+  case FillConvention::kBottomLeft:
+    return Tie{true, false};
+  case FillConvention::kBottomRight:
+    return Tie{false, false};
+  }
+  return Tie{true, true};
+}
+
+// rule: PATH.CONTOUR.CLOSE, PATH.GEOMETRY, PATH.DEGENERATE
+Boundary boundary_of(const Path& path) {
+  Boundary b;
+  for (const Contour& c : path.contours) {
+    Point cur = c.start;
+    for (const Segment& s : c.segments) {
+      switch (s.kind) {
+      case SegmentKind::kLine:
+        b.lines.push_back(Edge{cur.x, cur.y, s.p[0].x, s.p[0].y});
+        cur = s.p[0];
+        break;
+      case SegmentKind::kQuadratic:
+        b.curves.push_back(Curve{2, {cur, s.p[0], s.p[1], s.p[1]}});
+        cur = s.p[1];
+        break;
+      case SegmentKind::kCubic:
+        b.curves.push_back(Curve{3, {cur, s.p[0], s.p[1], s.p[2]}});
+        cur = s.p[2];
+        break;
+      }
+    }
+    // rule: PATH.CONTOUR.CLOSE
+    if (!(cur == c.start))
+      b.lines.push_back(Edge{cur.x, cur.y, c.start.x, c.start.y});
+  }
+  return b;
+}
+
+} // namespace detail
+
+// rule: PATH.WINDING, PATH.SAMPLE.TIE
+std::int64_t winding_number(const Path& path, Point s, FillConvention fill) {
+  const Tie t = detail::tie_of(fill);
+  const detail::Boundary b = detail::boundary_of(path);
+  std::int64_t w = 0;
+  for (const Edge& e : b.lines)
+    w += line_contribution(e, s.x, s.y, t);
+  for (const detail::Curve& c : b.curves) {
+    for (const Crossing& x : detail::curve_crossings(c, s.y, t))
+      w += x.counts_at(s.x) ? x.dir : 0;
+  }
+  return w;
+}
+
+// rule: PATH.SAMPLE.TIE, PATH.FILL.RULE
+bool covers_sample(const Path& path, Point s, FillConvention fill) {
+  return fill_holds(path.fill_rule, winding_number(path, s, fill));
+}
+
+// rule: PATH.COVER.SAMPLE
+std::vector<SampleCoverage> cover_samples(const Path& path, const SamplePattern& pattern,
+                                          FillConvention fill, std::int32_t w, std::int32_t h) {
+  std::vector<SampleCoverage> out;
+  if (w <= 0 || h <= 0 || pattern.positions.empty())
+    return out;
+  const Tie t = detail::tie_of(fill);
+  const detail::Boundary b = detail::boundary_of(path);
+  const std::vector<DownEdge> edges = down_edges(b);
+  ActiveEdges active(edges);
+
+  // The pattern's samples grouped by their row offset, top row first.
+  struct Sample {
+    std::uint32_t bit = 0;
+    std::int64_t x_offset = 0; // raw x of the sample in pixel column 0
+  };
+  std::vector<std::pair<std::int32_t, std::vector<Sample>>> rows;
+  for (std::size_t k = 0; k < pattern.positions.size(); ++k) {
+    const SampleOffset o = pattern.positions[k];
+    auto it = std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r.first == o.y; });
+    if (it == rows.end()) {
+      rows.emplace_back(o.y, std::vector<Sample>{});
+      it = rows.end() - 1;
+    }
+    it->second.push_back(Sample{std::uint32_t{1} << k,
+                                std::int64_t{kSubpixelHalf} + std::int64_t{o.x} * kSampleGridUnit});
+  }
+  std::sort(rows.begin(), rows.end(),
+            [](const auto& p, const auto& q) { return p.first < q.first; });
+
+  std::vector<std::uint32_t> masks(static_cast<std::size_t>(w), 0);
+  std::vector<Crossing> crossings;
+  for (std::int32_t j = 0; j < h; ++j) {
+    std::int64_t touched_lo = w, touched_hi = -1;
+    for (const auto& [oy, samples] : rows) {
+      const std::int64_t sy =
+          std::int64_t{j} * kSubpixelOne + kSubpixelHalf + std::int64_t{oy} * kSampleGridUnit;
+      crossings.clear();
+      for (const DownEdge* e : active.advance(sy, sy)) {
+        const bool spans = t.y_down ? formula::path_edge_spans<true>(e->ya, e->yb, sy)
+                                    : formula::path_edge_spans<false>(e->ya, e->yb, sy);
+        if (spans)
+          crossings.push_back(Crossing{line_threshold(*e, sy, t), e->dir});
+      }
+      for (const detail::Curve& c : b.curves) {
+        const std::vector<Crossing> cc = detail::curve_crossings(c, sy, t);
+        crossings.insert(crossings.end(), cc.begin(), cc.end());
+      }
+      if (crossings.empty())
+        continue;
+      std::sort(crossings.begin(), crossings.end(),
+                [](const Crossing& p, const Crossing& q) { return p.threshold < q.threshold; });
+      // Winding on each interval of sample x: (T[m-1], T[m]] has the sum of dir over l >= m.
+      std::vector<std::int64_t> suffix(crossings.size() + 1, 0);
+      for (std::size_t m = crossings.size(); m-- > 0;)
+        suffix[m] = suffix[m + 1] + crossings[m].dir;
+      for (const Sample& smp : samples) {
+        for (std::size_t m = 0; m <= crossings.size(); ++m) {
+          if (!fill_holds(path.fill_rule, suffix[m]))
+            continue;
+          // Pixels i with A < 256 i + x_offset <= B.
+          std::int64_t i_lo = 0, i_hi = std::int64_t{w} - 1;
+          if (m > 0)
+            i_lo = std::max(i_lo,
+                            floor_div(crossings[m - 1].threshold - smp.x_offset, kSubpixelOne) + 1);
+          if (m < crossings.size())
+            i_hi = std::min(i_hi, floor_div(crossings[m].threshold - smp.x_offset, kSubpixelOne));
+          if (i_lo > i_hi)
+            continue;
+          for (std::int64_t i = i_lo; i <= i_hi; ++i)
+            masks[static_cast<std::size_t>(i)] |= smp.bit;
+          touched_lo = std::min(touched_lo, i_lo);
+          touched_hi = std::max(touched_hi, i_hi);
+        }
+      }
+    }
+    for (std::int64_t i = touched_lo; i <= touched_hi; ++i) {
+      std::uint32_t& m = masks[static_cast<std::size_t>(i)];
+      if (m != 0)
+        out.push_back(SampleCoverage{static_cast<std::int32_t>(i), j, m});
+      m = 0;
+    }
+  }
+  return out;
+}
+
+namespace {
+
+// Returns floor(q) for a rational q.
+std::int64_t floor_of(const Rational& q) {
+  const BigInt n = boost::multiprecision::numerator(q);
+  const BigInt d = boost::multiprecision::denominator(q); // > 0
+  BigInt f = n / d;                                       // truncates toward zero
+  if (n < 0 && f * d != n)
+    f -= 1;
+  return f.convert_to<std::int64_t>();
+}
+
+// Returns the x of edge e at height y (ya <= y <= yb).
+Rational x_at(const DownEdge& e, const Rational& y) {
+  return Rational(e.xa) + (y - e.ya) * Rational(e.xb - e.xa, e.yb - e.ya);
+}
+
+// Returns the integral over y in [ya, yb] (length hgt) of clamp(X(y), lo, lo + 256) - lo, where
+// X is linear from xa (at ya) to xb (at yb). Units: raw squared.
+Rational column_integral(const Rational& xa, const Rational& xb, const Rational& hgt,
+                         std::int64_t lo) {
+  const std::int64_t hi = lo + kSubpixelOne;
+  const Rational& xmin = xa < xb ? xa : xb;
+  const Rational& xmax = xa < xb ? xb : xa;
+  if (xmax <= lo)
+    return Rational(0);
+  if (xmin >= hi)
+    return Rational(kSubpixelOne) * hgt;
+  if (xmin >= lo && xmax <= hi)
+    return ((xa + xb) / 2 - lo) * hgt;
+  // X crosses lo or hi inside the slab: split at those parameters; clamp(X) is linear between.
+  auto clamped = [&](const Rational& x) {
+    if (x <= lo)
+      return Rational(0);
+    if (x >= hi)
+      return Rational(kSubpixelOne);
+    return Rational(x - lo);
+  };
+  std::vector<Rational> us{Rational(0), Rational(1)};
+  for (const std::int64_t v : {lo, hi}) {
+    const Rational u = (Rational(v) - xa) / (xb - xa);
+    if (u > 0 && u < 1)
+      us.push_back(u);
+  }
+  std::sort(us.begin(), us.end());
+  Rational sum = 0;
+  for (std::size_t k = 0; k + 1 < us.size(); ++k) {
+    const Rational x0 = xa + (xb - xa) * us[k];
+    const Rational x1 = xa + (xb - xa) * us[k + 1];
+    sum += (clamped(x0) + clamped(x1)) / 2 * (us[k + 1] - us[k]);
+  }
+  return sum * hgt;
+}
+
+// Accumulates the area between edges l (left) and r (right) over the slab [ya, yb] of one
+// pixel row into the row's columns (raw squared units).
+void add_run(std::vector<Rational>& row, std::int64_t& touched_lo, std::int64_t& touched_hi,
+             std::int32_t w, const Rational& la, const Rational& lb, const Rational& ra,
+             const Rational& rb, const Rational& hgt) {
+  const std::int64_t c0 = std::max<std::int64_t>(0, floor_of(std::min(la, lb) / kSubpixelOne));
+  const std::int64_t c1 =
+      std::min<std::int64_t>(std::int64_t{w} - 1, floor_of(std::max(ra, rb) / kSubpixelOne));
+  if (c0 > c1)
+    return;
+  // Columns entirely between the two edges are covered for the whole slab.
+  const Rational lmax = std::max(la, lb);
+  const Rational rmin = std::min(ra, rb);
+  const Rational full = Rational(kSubpixelOne) * hgt;
+  for (std::int64_t c = c0; c <= c1; ++c) {
+    const std::int64_t lo = c * kSubpixelOne;
+    Rational a;
+    if (lmax <= lo && rmin >= lo + kSubpixelOne)
+      a = full;
+    else
+      a = column_integral(ra, rb, hgt, lo) - column_integral(la, lb, hgt, lo);
+    if (a != 0)
+      row[static_cast<std::size_t>(c)] += a;
+  }
+  touched_lo = std::min(touched_lo, c0);
+  touched_hi = std::max(touched_hi, c1);
+}
+
+} // namespace
+
+// rule: PATH.AREA.EXACT
+std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w, std::int32_t h) {
+  std::vector<AreaCoverage> out;
+  if (w <= 0 || h <= 0)
+    return out;
+  const detail::Boundary b = detail::boundary_of(path);
+  if (!b.curves.empty())
+    throw std::invalid_argument(
+        "path: area coverage of curves is not implemented (PATH.AREA.EXACT)");
+  const std::vector<DownEdge> edges = down_edges(b);
+  ActiveEdges active(edges);
+  std::vector<Rational> row(static_cast<std::size_t>(w));
+  const Rational pixel_area(std::int64_t{kSubpixelOne} * kSubpixelOne);
+
+  for (std::int32_t j = 0; j < h; ++j) {
+    const std::int64_t y0 = std::int64_t{j} * kSubpixelOne;
+    const std::int64_t y1 = y0 + kSubpixelOne;
+    std::vector<const DownEdge*> in_row;
+    for (const DownEdge* e : active.advance(y0, y1 - 1))
+      if (e->ya < y1 && e->yb > y0)
+        in_row.push_back(e);
+    if (in_row.empty())
+      continue;
+
+    // Cut heights: the row's top and bottom, every end inside it, every crossing of two edges.
+    std::vector<Rational> cuts{Rational(y0), Rational(y1)};
+    for (const DownEdge* e : in_row) {
+      if (e->ya > y0)
+        cuts.emplace_back(e->ya);
+      if (e->yb < y1)
+        cuts.emplace_back(e->yb);
+    }
+    for (std::size_t p = 0; p < in_row.size(); ++p) {
+      const DownEdge& e = *in_row[p];
+      for (std::size_t q = p + 1; q < in_row.size(); ++q) {
+        const DownEdge& f = *in_row[q];
+        if (std::max(e.xa, e.xb) < std::min(f.xa, f.xb) ||
+            std::max(f.xa, f.xb) < std::min(e.xa, e.xb))
+          continue; // apart in x: they cannot cross
+        const std::int64_t lo = std::max({e.ya, f.ya, y0});
+        const std::int64_t hi = std::min({e.yb, f.yb, y1});
+        if (lo >= hi)
+          continue;
+        const Rational dlo = x_at(e, Rational(lo)) - x_at(f, Rational(lo));
+        const Rational dhi = x_at(e, Rational(hi)) - x_at(f, Rational(hi));
+        if ((dlo < 0 && dhi > 0) || (dlo > 0 && dhi < 0))
+          cuts.push_back(Rational(lo) + Rational(hi - lo) * dlo / (dlo - dhi));
+      }
+    }
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+
+    std::int64_t touched_lo = w, touched_hi = -1;
+    struct Piece {
+      const DownEdge* e;
+      Rational xa, xb, key;
+    };
+    std::vector<Piece> pieces;
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+      const Rational& ya = cuts[k];
+      const Rational& yb = cuts[k + 1];
+      pieces.clear();
+      for (const DownEdge* e : in_row) {
+        if (e->ya <= ya && e->yb >= yb) {
+          Rational xa = x_at(*e, ya);
+          Rational xb = x_at(*e, yb);
+          Rational key = xa + xb; // twice the x at mid-slab: no two edges cross inside the slab
+          pieces.push_back(Piece{e, std::move(xa), std::move(xb), std::move(key)});
+        }
+      }
+      std::sort(pieces.begin(), pieces.end(),
+                [](const Piece& p, const Piece& q) { return p.key < q.key; });
+      // Left of every piece the winding number is 0 (the boundary is closed, so the directions
+      // of the pieces crossing a horizontal line sum to 0); passing piece m from left to right
+      // subtracts its direction (PATH.WINDING counts the crossings right of the point).
+      const Rational hgt = yb - ya;
+      std::int64_t wn = 0;
+      std::size_t run_start = 0;
+      bool in_run = false;
+      for (std::size_t m = 0; m < pieces.size(); ++m) {
+        wn -= pieces[m].e->dir;
+        const bool filled = fill_holds(path.fill_rule, wn);
+        if (filled && !in_run) {
+          run_start = m;
+          in_run = true;
+        } else if (!filled && in_run) {
+          add_run(row, touched_lo, touched_hi, w, pieces[run_start].xa, pieces[run_start].xb,
+                  pieces[m].xa, pieces[m].xb, hgt);
+          in_run = false;
+        }
+      }
+    }
+    for (std::int64_t c = touched_lo; c <= touched_hi; ++c) {
+      Rational& a = row[static_cast<std::size_t>(c)];
+      if (a != 0)
+        out.push_back(AreaCoverage{static_cast<std::int32_t>(c), j, a / pixel_area, Rational(0)});
+      a = 0;
+    }
+  }
+  return out;
+}
+
+} // namespace rastrules::path

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+// The path kernel's internal pieces shared by its translation units: the boundary as line
+// edges and curves (closing lines added), the tie signs of a fill convention, and one crossing
+// of a sample row.
+
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "rastrules/path.hpp"
+
+namespace rastrules::path::detail {
+
+// The displacement signs of PATH.SAMPLE.TIE: x_right is hx = +1, y_down is hy = +1.
+struct Tie {
+  bool x_right = true;
+  bool y_down = true;
+};
+[[nodiscard]] Tie tie_of(FillConvention f);
+
+// A directed line edge, raw 16.8.
+struct Edge {
+  std::int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+// A quadratic (degree 2, p[0..2]) or cubic (degree 3, p[0..3]) Bézier curve, start point
+// first.
+struct Curve {
+  int degree = 2;
+  std::array<Point, 4> p{};
+};
+
+// The boundary of a path: every line segment and closing line (PATH.CONTOUR.CLOSE), and every
+// curve, each directed as drawn.
+struct Boundary {
+  std::vector<Edge> lines;
+  std::vector<Curve> curves;
+};
+[[nodiscard]] Boundary boundary_of(const Path& path);
+
+// One crossing of the displaced horizontal line through a sample row: it counts for a sample
+// at raw x iff x <= threshold (PATH.SAMPLE.TIE: x_c > x, or x_c == x and hx = -1); dir is +1
+// where the boundary runs down, -1 up.
+struct Crossing {
+  std::int64_t threshold = 0;
+  int dir = 0;
+  [[nodiscard]] bool counts_at(std::int64_t x) const { return x <= threshold; }
+};
+
+// Returns the crossings of curve c with the line y = sy + hy delta (delta -> 0+), exactly.
+[[nodiscard]] std::vector<Crossing> curve_crossings(const Curve& c, std::int64_t sy, Tie t);
+
+} // namespace rastrules::path::detail
