@@ -295,7 +295,7 @@ std::optional<std::size_t> stream_fragments(const PreparedScene& scene, const Re
   constexpr std::size_t kChunk = 64;            // primitives per unit: amortises the hand-over
   constexpr std::int64_t kBandPixels = 1 << 16; // pixels visited per band (about)
   const StreamBuffers buffers{
-      .batch = 2048, .batches_per_unit = 4, .window = std::size_t{rq.options.threads} + 1};
+      .batch = 1024, .batches_per_unit = 2, .window = std::size_t{rq.options.threads} + 1};
   struct Unit {
     std::size_t first = 0, end = 0;        // whole primitives [first, end), or
     std::int32_t y_first = 0, y_last = -1; // with end == first + 1 and banded: these rows
