@@ -261,6 +261,26 @@ TEST(Limits, WorkLimitRefusesSliversBeforeDrawingThem) {
   EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
 }
 
+// Both limits of a pipeline scene say how to raise them, as a coverage scene's do: the kernel
+// types its error (SceneError::Kind), the command line no longer recognises the message text.
+// rule: SCENE.INPUT.LIMITS
+TEST(Limits, PipelineFragmentLimitSaysHowToRaiseIt) {
+  const TempDir dir;
+  const auto scene =
+      dir.write("p.json", "{\"target\": {\"width\": 8, \"height\": 8}, \"primitives\": ["
+                          "{\"type\": \"triangle\", \"v\": [[0, 0], [8, 0], [0, 8]], "
+                          "\"z\": [0, 0, 0]}]}");
+  const auto r = run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(),
+                          "--max-fragments", "27"});
+  expect_one_error_line(r, "primitives[0]: the scene produces more than 27 fragments (limit "
+                           "SCENE.INPUT.LIMITS); raise it with --max-fragments N");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
+  EXPECT_EQ(run_cli({"render", scene.string(), "--fragments", (dir / "out.json").string(),
+                     "--max-fragments", "28"})
+                .status,
+            0);
+}
+
 // rule: SCENE.INPUT.LIMITS
 TEST(Limits, MaxWorkRaisesTheWorkLimit) {
   const TempDir dir;

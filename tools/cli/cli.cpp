@@ -170,11 +170,11 @@ std::optional<pipe::PipeResult> run_pipeline_or_report(const Scene& scene,
   auto result = pipe::run_pipeline(scene, o);
   if (auto* err = std::get_if<SceneError>(&result)) {
     // rule: SCENE.INPUT.LIMITS
-    if (err->message == work_limit_problem(max_work)) {
-      error(err->what() + std::string(kMaxWorkHint));
-      return std::nullopt;
-    }
-    error(err->what());
+    const std::string_view hint = err->kind == SceneError::Kind::kWorkLimit ? kMaxWorkHint
+                                  : err->kind == SceneError::Kind::kFragmentLimit
+                                      ? kMaxFragmentsHint
+                                      : "";
+    error(err->what() + std::string(hint));
     return std::nullopt;
   }
   return std::move(std::get<pipe::PipeResult>(result));

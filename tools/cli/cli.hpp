@@ -70,6 +70,8 @@ std::optional<pipe::PipeResult> run_pipeline_or_report(const Scene& scene,
 // pipeline scenes alike.
 // rule: SCENE.INPUT.LIMITS
 inline constexpr std::string_view kMaxWorkHint = "; raise it with --max-work N";
+// The same for the fragment limit (--max-fragments).
+inline constexpr std::string_view kMaxFragmentsHint = "; raise it with --max-fragments N";
 
 using io::OutputFile;
 using io::same_output_file;

@@ -177,7 +177,7 @@ int render_pipeline(const Scene& scene, const RenderRequest& rq) {
     return kExitBadInput;
   if (result->fragments.size() > rq.max_fragments) {
     return error("render: more than " + std::to_string(rq.max_fragments) +
-                 " fragments (limit SCENE.INPUT.LIMITS); raise it with --max-fragments N");
+                 " fragments (limit SCENE.INPUT.LIMITS)" + std::string(kMaxFragmentsHint));
   }
   // The target, sample pattern and colours as a prepared scene without geometry: the picture's
   // grid and sample points, and the resolve (run_pipeline has checked the scene).
@@ -475,7 +475,8 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
         "render: primitives[" + std::to_string(p) + "] touches more than " +
         std::to_string(2 * rq.max_fragments) +
         " pixels or fragments that must be held to be sorted (limit SCENE.INPUT.LIMITS, 2 x "
-        "--max-fragments); raise it with --max-fragments N");
+        "--max-fragments)" +
+        std::string(kMaxFragmentsHint));
   };
   // A primitive that is collected before it is emitted holds at most 2 * rq.max_fragments
   // entries: a pixel is held at most twice (once per triangle of a point or quadrilateral
@@ -486,7 +487,7 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
       return too_many_held(*p);
   } catch (const TooManyFragments&) {
     return error("render: more than " + std::to_string(rq.max_fragments) +
-                 " fragments (limit SCENE.INPUT.LIMITS); raise it with --max-fragments N");
+                 " fragments (limit SCENE.INPUT.LIMITS)" + std::string(kMaxFragmentsHint));
   } catch (const ResolveFailed& e) {
     return error("--resolve: " + e.error.what());
   }

@@ -167,8 +167,12 @@ struct Fragment {
 
 // A rejected scene: the JSON-pointer-like path of the offending field and what is wrong.
 struct SceneError {
+  // Bad input, or a limit of SCENE.INPUT.LIMITS that the caller may raise (the command line
+  // adds how: --max-work, --max-fragments).
+  enum class Kind { kInput, kWorkLimit, kFragmentLimit };
   std::string field;   // e.g. "primitives[3].v[1][0]"
   std::string message; // e.g. "is NaN"
+  Kind kind = Kind::kInput;
   [[nodiscard]] std::string what() const { return field + ": " + message; }
 };
 

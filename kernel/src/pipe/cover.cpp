@@ -24,25 +24,27 @@ std::optional<SceneError> cover(const PreparedScene& ps, const std::vector<Sourc
   // rule: SCENE.INPUT.LIMITS
   // The work limit, before any primitive is rasterized.
   if (const auto p = first_primitive_over_work(ps, o.max_work))
-    return err(idx("primitives", sources.empty() ? *p : sources[*p].prim),
-               work_limit_problem(o.max_work));
+    return SceneError{idx("primitives", sources.empty() ? *p : sources[*p].prim),
+                      work_limit_problem(o.max_work), SceneError::Kind::kWorkLimit};
   for (std::size_t p = 0; p < ps.primitives.size(); ++p) {
     const std::size_t prim = sources.empty() ? p : sources[p].prim;
     const auto emit = [&](const Fragment& f) {
       if (!scissor.contains(f.x, f.y))
         return;
       if (fragments.size() >= o.max_fragments)
-        throw Stop{err(idx("primitives", prim), "the scene produces more than " +
-                                                    std::to_string(o.max_fragments) +
-                                                    " fragments (limit SCENE.INPUT.LIMITS)")};
+        throw Stop{SceneError{idx("primitives", prim),
+                              "the scene produces more than " + std::to_string(o.max_fragments) +
+                                  " fragments (limit SCENE.INPUT.LIMITS)",
+                              SceneError::Kind::kFragmentLimit}};
       fragments.push_back(f);
     };
     try {
       if (!for_each_fragment_bounded(ps, p, o.max_fragments, o.render, emit))
-        return err(idx("primitives", prim),
-                   "touches more than " + std::to_string(o.max_fragments) +
-                       " pixels or fragments that must be held to be sorted (limit "
-                       "SCENE.INPUT.LIMITS)");
+        return SceneError{idx("primitives", prim),
+                          "touches more than " + std::to_string(o.max_fragments) +
+                              " pixels or fragments that must be held to be sorted (limit "
+                              "SCENE.INPUT.LIMITS)",
+                          SceneError::Kind::kFragmentLimit};
     } catch (Stop& stop) {
       return stop.error;
     }
