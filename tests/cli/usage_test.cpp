@@ -63,4 +63,30 @@ TEST(CliUsage, BadOptionValuesAreOneLine) {
   }
 }
 
+// A value a user typed is shown escaped and cut, wherever an error quotes it: a control
+// character in an option's value never reaches the terminal as itself.
+// rule: SCENE.INPUT.ERRORS
+TEST(CliUsage, QuotedValuesAreEscapedAndCut) {
+  const std::string esc = "\x1b[2J";
+  const struct {
+    std::vector<std::string> args;
+    std::string want;
+  } cases[] = {
+      {{"render", "s.json", "--png", "o.png", "--threads", esc},
+       "--threads needs an integer in [1, 256], got \"\\x1b[2J\""},
+      {{"render", "s.json", "--png", "o.png", "--traversal", esc},
+       "--traversal needs \"plain\" or \"fast\", got \"\\x1b[2J\""},
+      {{"render", "s.json", "--png", "o.png", "--isa", esc},
+       "--isa needs \"scalar\", \"avx2\", \"avx512\" or \"auto\", got \"\\x1b[2J\""},
+      {{"render", "s.json", "--png", "o.png", "--" + esc}, "render: unknown option \"--\\x1b[2J\""},
+      {{"render", "s.json", "--png", "o.png", "--threads", std::string(100, '7')},
+       "--threads needs an integer in [1, 256], got \"" + std::string(40, '7') + "...\""},
+  };
+  for (const auto& c : cases) {
+    const auto r = run_cli(c.args);
+    EXPECT_EQ(r.status, 2) << c.want;
+    EXPECT_EQ(r.err.substr(0, r.err.find('\n')), "rastrules: error: " + c.want);
+  }
+}
+
 } // namespace

@@ -61,7 +61,7 @@ int run_bench(const Args& args) {
       const auto n = v ? parse_int(*v, 1, kMaxThreads) : std::nullopt;
       if (!n)
         return error("--threads needs an integer in [1, " + std::to_string(kMaxThreads) +
-                     "], got " + (v ? "\"" + *v + "\"" : std::string("nothing")));
+                     "], got " + shown_value(v));
       config.threads = static_cast<unsigned>(*n);
     } else if (a == "--seed" || a == "--out") {
       if (i + 1 >= args.size())
@@ -74,11 +74,11 @@ int run_bench(const Args& args) {
       } else {
         const auto n = parse_int(v, 0, 1000000000);
         if (!n)
-          return error("--seed: must be an integer in [0, 1000000000], got \"" + v + "\"");
+          return error("--seed: must be an integer in [0, 1000000000], got " + shown_value(v));
         config.seed = static_cast<std::uint64_t>(*n);
       }
     } else {
-      return usage_error("bench: unknown option \"" + a + "\"");
+      return usage_error("bench: unknown option " + shown_value(a));
     }
   }
   if (!ladder)

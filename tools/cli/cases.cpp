@@ -19,7 +19,7 @@ int run_cases(const Args& args) {
       return kExitOk;
     }
     if (!a.empty() && a[0] == '-')
-      return usage_error("cases: unexpected option \"" + a + "\"");
+      return usage_error("cases: unexpected option " + shown_value(a));
     if (dir_given)
       return usage_error("cases: more than one directory");
     dir = a;

@@ -152,6 +152,11 @@ std::optional<LoadedScene> load_window_scene(const std::string& path) {
   return loaded;
 }
 
+// rule: SCENE.INPUT.ERRORS
+std::string shown_value(const std::optional<std::string>& v) {
+  return v ? "\"" + io::printable(*v, 40) + "\"" : std::string("nothing");
+}
+
 // rule: SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
 std::optional<pipe::PipeResult> run_pipeline_or_report(const Scene& scene,
                                                        const RenderOptions& options,
@@ -184,7 +189,7 @@ std::optional<int> take_scene_argument(std::string_view command, const std::stri
                                        std::optional<std::string>& scene_path) {
   const std::string prefix = std::string(command) + ": ";
   if (a.size() > 1 && a[0] == '-')
-    return usage_error(prefix + "unknown option \"" + a + "\"");
+    return usage_error(prefix + "unknown option " + shown_value(a));
   if (scene_path)
     return usage_error(prefix + "more than one scene file");
   scene_path = a;

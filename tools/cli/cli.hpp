@@ -73,6 +73,11 @@ inline constexpr std::string_view kMaxWorkHint = "; raise it with --max-work N";
 // The same for the fragment limit (--max-fragments).
 inline constexpr std::string_view kMaxFragmentsHint = "; raise it with --max-fragments N";
 
+// An option's value as an error message shows it: "\"VALUE\"" with bytes outside printable
+// ASCII written as \xNN and cut to 40 bytes (io::printable), or "nothing" when it is missing.
+// rule: SCENE.INPUT.ERRORS
+[[nodiscard]] std::string shown_value(const std::optional<std::string>& v);
+
 using io::OutputFile;
 using io::same_output_file;
 using io::write_text;

@@ -24,7 +24,7 @@ template <class T>
 bool set_choice(const std::string& option, const std::string& value, std::optional<T> parsed,
                 std::string_view choices, T& out) {
   if (!parsed) {
-    usage_error(option + ": unknown " + option.substr(2) + " \"" + value + "\" (" +
+    usage_error(option + ": unknown " + option.substr(2) + " " + shown_value(value) + " (" +
                 std::string(choices) + ")");
     return false;
   }
@@ -65,7 +65,7 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
       auto n = parse_int(v, a == "--cases" ? 1 : 0, a == "--cases" ? 100000000 : INT64_MAX);
       if (!n) {
         usage_error(a + ": must be an integer" + (a == "--cases" ? " in [1, 100000000]" : " >= 0") +
-                    ", got \"" + v + "\"");
+                    ", got " + shown_value(v));
         return std::nullopt;
       }
       (a == "--cases" ? o.settings.cases : o.settings.seed) = static_cast<std::uint64_t>(*n);
@@ -74,7 +74,7 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
     } else if (want_scene && o.scene_path.empty() && (a == "-" || a.rfind("--", 0) != 0)) {
       o.scene_path = a;
     } else {
-      usage_error("unknown option \"" + a + "\"");
+      usage_error("unknown option " + shown_value(a));
       return std::nullopt;
     }
   }

@@ -527,7 +527,7 @@ std::optional<int> parse_limit(const char* flag, const std::optional<std::string
   const auto n = v ? parse_int(*v, 1, std::int64_t{1} << max_bits) : std::nullopt;
   if (!n) {
     return error(std::string(flag) + " needs an integer in [1, 2^" + std::to_string(max_bits) +
-                 "], got " + (v ? "\"" + io::printable(*v, 40) + "\"" : std::string("nothing")));
+                 "], got " + shown_value(v));
   }
   out = static_cast<std::uint64_t>(*n);
   return std::nullopt;
@@ -580,8 +580,7 @@ std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
       const std::optional<std::string> v = value("--scale");
       const auto n = v ? parse_int(*v, 1, io::kMaxPictureSide) : std::nullopt;
       if (!n)
-        return error("--scale needs an integer in [1, 4096], got " +
-                     (v ? "\"" + io::printable(*v, 40) + "\"" : std::string("nothing")));
+        return error("--scale needs an integer in [1, 4096], got " + shown_value(v));
       rq.scale = static_cast<int>(*n);
     } else if (is("--max-fragments")) {
       // rule: SCENE.INPUT.LIMITS
@@ -598,15 +597,14 @@ std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
       const auto n = v ? parse_int(*v, 1, kMaxThreads) : std::nullopt;
       if (!n) {
         return error("--threads needs an integer in [1, " + std::to_string(kMaxThreads) +
-                     "], got " + (v ? "\"" + *v + "\"" : std::string("nothing")));
+                     "], got " + shown_value(v));
       }
       rq.options.threads = static_cast<unsigned>(*n);
     } else if (is("--traversal")) {
       const std::optional<std::string> v = value("--traversal");
       const auto t = v ? parse_traversal(*v) : std::nullopt;
       if (!t) {
-        return error("--traversal needs \"plain\" or \"fast\", got " +
-                     (v ? "\"" + *v + "\"" : std::string("nothing")));
+        return error("--traversal needs \"plain\" or \"fast\", got " + shown_value(v));
       }
       rq.options.traversal = *t;
     } else if (is("--isa")) {
@@ -618,7 +616,7 @@ std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
         const auto isa = v ? parse_isa(*v) : std::nullopt;
         if (!isa) {
           return error("--isa needs \"scalar\", \"avx2\", \"avx512\" or \"auto\", got " +
-                       (v ? "\"" + *v + "\"" : std::string("nothing")));
+                       shown_value(v));
         }
         if (!isa_supported(*isa)) {
           return error("--isa " + *v + ": this processor (or this build) cannot run " + *v + " (" +
@@ -634,8 +632,8 @@ std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
   // rule: FAST.ISA.DISPATCH
   if (const char* cap = std::getenv(kMaxIsaVariable);
       cap != nullptr && *cap != '\0' && !parse_isa(cap)) {
-    return error(std::string(kMaxIsaVariable) +
-                 " needs \"scalar\", \"avx2\" or \"avx512\", got \"" + cap + "\"");
+    return error(std::string(kMaxIsaVariable) + " needs \"scalar\", \"avx2\" or \"avx512\", got " +
+                 shown_value(cap));
   }
   if (!scene_path)
     return usage_error("render: missing SCENE.json");

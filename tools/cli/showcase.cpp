@@ -90,7 +90,7 @@ int run_showcase(const Args& args) {
     } else if (a == "--out") {
       return usage_error("--out needs a directory");
     } else {
-      return usage_error("showcase: unexpected argument \"" + a + "\"");
+      return usage_error("showcase: unexpected argument " + shown_value(a));
     }
   }
   if (!out_dir || out_dir->empty())
