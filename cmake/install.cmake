@@ -54,3 +54,6 @@ configure_file(${CMAKE_CURRENT_LIST_DIR}/rastrules.pc.in ${PROJECT_BINARY_DIR}/i
                @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/install/rastrules.pc
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+
+# The licence travels with the installed headers and libraries.
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
