@@ -824,16 +824,22 @@ Resolver::Resolver(const PreparedScene& scene)
                                                         scene.msaa.count()),
                                scene.clear_color) {}
 
+// rule: MSAA.LIMITS
+std::optional<std::string> resolve_size_problem(std::int32_t width, std::int32_t height,
+                                                std::uint32_t n) {
+  const std::int64_t samples = std::int64_t{width} * height * n;
+  if (width >= 1 && height >= 1 && n >= 1 && samples <= kMaxResolveSamples)
+    return std::nullopt;
+  return "the " + std::to_string(width) + "x" + std::to_string(height) + " target with " +
+         std::to_string(n) + " samples has " + std::to_string(samples) + " samples, " +
+         (samples < 1 ? std::string("none to resolve")
+                      : "more than " + std::to_string(kMaxResolveSamples)) +
+         " (limit MSAA.LIMITS)";
+}
+
 std::variant<Resolver, SceneError> Resolver::start(const PreparedScene& scene) {
-  const std::uint32_t n = scene.msaa.count();
-  const std::int64_t total = std::int64_t{scene.width} * scene.height * n;
-  if (scene.width < 1 || scene.height < 1 || n < 1 || total > kMaxResolveSamples) {
-    return SceneError{"target", "a resolve needs width x height x samples in [1, " +
-                                    std::to_string(kMaxResolveSamples) +
-                                    "] (kMaxResolveSamples), got " + std::to_string(scene.width) +
-                                    " x " + std::to_string(scene.height) + " x " +
-                                    std::to_string(n)};
-  }
+  if (auto problem = resolve_size_problem(scene.width, scene.height, scene.msaa.count()))
+    return SceneError{"target", std::move(*problem)};
   return Resolver(scene);
 }
 

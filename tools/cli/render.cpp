@@ -69,15 +69,12 @@ void print_summary(std::size_t primitives, std::uint64_t fragments,
 }
 
 // rule: MSAA.LIMITS
-// The resolve's sample buffer is checked before any work; resolve() checks it again.
+// The resolve's sample buffer is checked before any work (Resolver::start checks it again).
 std::optional<std::string> resolve_too_large(std::int32_t width, std::int32_t height,
                                              std::uint32_t n) {
-  const std::int64_t samples = std::int64_t{width} * height * n;
-  if (samples <= kMaxResolveSamples)
-    return std::nullopt;
-  return "--resolve: the " + std::to_string(width) + "x" + std::to_string(height) +
-         " target with " + std::to_string(n) + " samples has " + std::to_string(samples) +
-         " samples, more than " + std::to_string(kMaxResolveSamples) + " (limit MSAA.LIMITS)";
+  if (auto problem = resolve_size_problem(width, height, n))
+    return "--resolve: " + *problem;
+  return std::nullopt;
 }
 
 // Returns the picture's magnification (--scale, or the default for the target), or the error

@@ -324,6 +324,13 @@ struct ResolvedImage {
 // rule: MSAA.LIMITS
 inline constexpr std::int64_t kMaxResolveSamples = std::int64_t{1} << 26;
 
+// Returns what is wrong with resolving a width x height target of n samples ("the 8192x8192
+// target with 4 samples has 268435456 samples, more than 67108864 (limit MSAA.LIMITS)"), or
+// nothing: the one wording of the limit, for resolve(), Resolver and the command line.
+// rule: MSAA.LIMITS
+[[nodiscard]] std::optional<std::string> resolve_size_problem(std::int32_t width,
+                                                              std::int32_t height, std::uint32_t n);
+
 // Writes each fragment's primitive colour to its covered samples (fragments of helper lanes
 // write nothing) in fragment order, over samples cleared to clear_color, then resolves every
 // pixel with resolve_pixel(). No blending: the coverage of antialiased lines is not applied.
