@@ -1,15 +1,509 @@
 // SPDX-License-Identifier: MIT
-// 2D paths: the crossings of quadratic and cubic Bézier curves with a sample row.
+// 2D paths: the crossings of quadratic and cubic Bézier curves with a sample row, exactly
+// (PATH.CURVE.SAMPLE). No flattening: the roots of y(t) - s.y in [0, 1] are found exactly
+// (multiple roots are rational for degree <= 3; simple roots are isolated by Bernstein
+// subdivision of the square-free part), and each crossing's x is compared with integers by
+// exact sign determination at the root (a gcd decides x(t_c) == k; otherwise the isolating
+// interval is refined until x - k has one sign on it). All arithmetic in cpp_rational.
 
-#include <stdexcept>
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "path_detail.hpp"
 
 namespace rastrules::path::detail {
+namespace {
 
-std::vector<Crossing> curve_crossings(const Curve& /*c*/, std::int64_t /*sy*/, Tie /*t*/) {
-  throw std::invalid_argument("path: curves are not implemented yet (PATH.SAMPLE.TIE)");
+using Rational = boost::multiprecision::cpp_rational;
+using BigInt = boost::multiprecision::cpp_int;
+
+// A polynomial in t with rational coefficients, lowest degree first, no trailing zeros (the
+// zero polynomial is empty).
+using Poly = std::vector<Rational>;
+
+void trim(Poly& p) {
+  while (!p.empty() && p.back() == 0)
+    p.pop_back();
+}
+
+int degree(const Poly& p) {
+  return static_cast<int>(p.size()) - 1;
+} // -1 for zero
+
+Rational eval(const Poly& p, const Rational& t) {
+  Rational v = 0;
+  for (std::size_t k = p.size(); k-- > 0;)
+    v = v * t + p[k];
+  return v;
+}
+
+int sign(const Rational& v) {
+  return v > 0 ? 1 : (v < 0 ? -1 : 0);
+}
+
+Poly derivative(const Poly& p) {
+  Poly d;
+  for (std::size_t k = 1; k < p.size(); ++k)
+    d.push_back(p[k] * static_cast<long long>(k));
+  trim(d);
+  return d;
+}
+
+// Returns (quotient, remainder) of a / b, b != 0.
+std::pair<Poly, Poly> divide(Poly a, const Poly& b) {
+  const int db = degree(b);
+  Poly q(static_cast<std::size_t>(std::max(0, degree(a) - db + 1)));
+  while (degree(a) >= db) {
+    const int shift = degree(a) - db;
+    const Rational c = a.back() / b.back();
+    q[static_cast<std::size_t>(shift)] = c;
+    for (int k = 0; k <= db; ++k)
+      a[static_cast<std::size_t>(k + shift)] -= c * b[static_cast<std::size_t>(k)];
+    a.pop_back(); // the leading term is now zero by construction
+    trim(a);
+  }
+  trim(q);
+  return {q, a};
+}
+
+// Returns the monic greatest common divisor (the zero polynomial when both are zero).
+Poly gcd(Poly a, Poly b) {
+  while (!b.empty()) {
+    Poly r = divide(a, b).second;
+    a = std::move(b);
+    b = std::move(r);
+  }
+  if (!a.empty()) {
+    const Rational lead = a.back();
+    for (Rational& c : a)
+      c /= lead;
+  }
+  return a;
+}
+
+// Returns p(t) / (t - r) for a root r of p.
+Poly deflate(const Poly& p, const Rational& r) {
+  return divide(p, Poly{-r, Rational(1)}).first;
+}
+
+// C(n, k) for n <= 3.
+long long binomial(int n, int k) {
+  static constexpr long long kTable[4][4] = {
+      {1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
+  return kTable[n][k];
+}
+
+// Returns the Bernstein coefficients of p (degree n >= 0) on [lo, hi]: p(lo + (hi - lo) s) in
+// the Bernstein basis of degree n in s. Their signs bound the number of roots in (lo, hi)
+// (Descartes' rule of signs), and their range contains p's values on [lo, hi].
+std::vector<Rational> bernstein(const Poly& p, const Rational& lo, const Rational& hi) {
+  const int n = degree(p);
+  if (n < 0)
+    return {Rational(0)};
+  const Rational w = hi - lo;
+  // Power coefficients in s: c_k = sum_{j >= k} p_j C(j, k) lo^(j - k) w^k.
+  std::vector<Rational> c(static_cast<std::size_t>(n + 1), Rational(0));
+  std::array<Rational, 4> lo_pow{Rational(1)}, w_pow{Rational(1)};
+  for (int k = 1; k <= n; ++k) {
+    lo_pow[static_cast<std::size_t>(k)] = lo_pow[static_cast<std::size_t>(k - 1)] * lo;
+    w_pow[static_cast<std::size_t>(k)] = w_pow[static_cast<std::size_t>(k - 1)] * w;
+  }
+  for (int j = 0; j <= n; ++j)
+    for (int k = 0; k <= j; ++k)
+      c[static_cast<std::size_t>(k)] += p[static_cast<std::size_t>(j)] * binomial(j, k) *
+                                        lo_pow[static_cast<std::size_t>(j - k)] *
+                                        w_pow[static_cast<std::size_t>(k)];
+  // Power to Bernstein: b_i = sum_{k <= i} C(i, k) / C(n, k) c_k.
+  std::vector<Rational> b(static_cast<std::size_t>(n + 1), Rational(0));
+  for (int i = 0; i <= n; ++i)
+    for (int k = 0; k <= i; ++k)
+      b[static_cast<std::size_t>(i)] +=
+          Rational(binomial(i, k), binomial(n, k)) * c[static_cast<std::size_t>(k)];
+  return b;
+}
+
+int sign_variations(const std::vector<Rational>& b) {
+  int v = 0, last = 0;
+  for (const Rational& c : b) {
+    const int s = sign(c);
+    if (s == 0)
+      continue;
+    if (last != 0 && s != last)
+      ++v;
+    last = s;
+  }
+  return v;
+}
+
+// A root of y(t) - s.y in [0, 1]: exact (lo == hi), or the only root of the square-free `iso`
+// in (lo, hi), with iso(lo), iso(hi) != 0. Irrational roots are always of the second kind.
+struct Root {
+  Rational lo, hi;
+  bool exact = false;
+  Poly iso;
+};
+
+// A polynomial rounded to double, for guesses only (never for a decision).
+class Approximation {
+public:
+  explicit Approximation(const Poly& p) {
+    for (const Rational& q : p)
+      c_.push_back(q.convert_to<double>());
+  }
+  double operator()(double t) const {
+    double v = 0;
+    for (std::size_t k = c_.size(); k-- > 0;)
+      v = v * t + c_[k];
+    return v;
+  }
+
+private:
+  std::vector<double> c_;
+};
+
+// Returns an estimate of the only root of iso in (lo, hi) (where it changes sign), by
+// bisection in double: only a guess, which tighten() certifies exactly.
+double approximate_root(const Poly& iso, const Rational& lo, const Rational& hi) {
+  const Approximation f(iso);
+  double a = lo.convert_to<double>(), b = hi.convert_to<double>();
+  const bool neg_a = f(a) < 0;
+  for (int i = 0; i < 80; ++i) {
+    const double m = 0.5 * (a + b);
+    if (m <= a || m >= b)
+      break;
+    ((f(m) < 0) == neg_a ? a : b) = m;
+  }
+  return 0.5 * (a + b);
+}
+
+// Narrows a root's interval to a small dyadic one around a floating-point estimate, exactly:
+// the new ends lie in [lo, hi] and iso changes sign between them (or one is the root). Leaves
+// the interval as it was when no candidate is certified.
+void tighten(Root& r) {
+  if (r.exact)
+    return;
+  const Rational tc(approximate_root(r.iso, r.lo, r.hi)); // a double converts exactly
+  const int s_lo = sign(eval(r.iso, r.lo));
+  for (const unsigned e : {44u, 32u, 20u}) {
+    const Rational eps(BigInt(1), BigInt(1) << e);
+    const Rational l = std::max(r.lo, Rational(tc - eps));
+    const Rational u = std::min(r.hi, Rational(tc + eps));
+    if (!(l < u))
+      continue;
+    const int sl = sign(eval(r.iso, l));
+    const int su = sign(eval(r.iso, u));
+    if (sl == 0 || su == 0) {
+      r.lo = r.hi = sl == 0 ? l : u;
+      r.exact = true;
+      return;
+    }
+    if (sl == s_lo && su == -s_lo) {
+      r.lo = l;
+      r.hi = u;
+      return;
+    }
+  }
+}
+
+// Returns the sign of h at the root (exact; refines the root's interval).
+int sign_at(const Poly& h, Root& r) {
+  if (r.exact)
+    return sign(eval(h, r.lo));
+  if (h.empty())
+    return 0;
+  if (degree(h) == 0)
+    return sign(h[0]);
+  tighten(r);
+  if (r.exact)
+    return sign(eval(h, r.lo));
+  // Usually h has one strict sign on the tight interval already: no gcd needed.
+  {
+    const std::vector<Rational> b = bernstein(h, r.lo, r.hi);
+    if (std::all_of(b.begin(), b.end(), [](const Rational& c) { return c > 0; }))
+      return 1;
+    if (std::all_of(b.begin(), b.end(), [](const Rational& c) { return c < 0; }))
+      return -1;
+  }
+  // h(t_c) == 0 iff t_c is a root of gcd(iso, h): a simple root there, so a sign change.
+  const Poly g = gcd(r.iso, h);
+  if (degree(g) >= 1 && sign(eval(g, r.lo)) * sign(eval(g, r.hi)) < 0)
+    return 0;
+  // h(t_c) != 0: refine until h has one strict sign on [lo, hi] (it does near t_c).
+  const int s_lo = sign(eval(r.iso, r.lo));
+  for (;;) {
+    const std::vector<Rational> b = bernstein(h, r.lo, r.hi);
+    if (std::all_of(b.begin(), b.end(), [](const Rational& c) { return c > 0; }))
+      return 1;
+    if (std::all_of(b.begin(), b.end(), [](const Rational& c) { return c < 0; }))
+      return -1;
+    const Rational m = (r.lo + r.hi) / 2;
+    const int s_m = sign(eval(r.iso, m));
+    if (s_m == 0) {
+      r.lo = r.hi = m;
+      r.exact = true;
+      return sign(eval(h, m));
+    }
+    (s_m == s_lo ? r.lo : r.hi) = m;
+  }
+}
+
+// Returns the intervals [i/64, (i+1)/64] of [0, 1] where p changes sign, exactly (ends where p
+// is 0 are left out), found by a scan in double and then checked in rationals.
+std::vector<std::pair<Rational, Rational>> sign_change_candidates(const Poly& p) {
+  const Approximation f(p);
+  constexpr int kSteps = 64;
+  std::vector<std::pair<Rational, Rational>> out;
+  for (int i = 0; i < kSteps; ++i) {
+    const double a = static_cast<double>(i) / kSteps, b = static_cast<double>(i + 1) / kSteps;
+    if ((f(a) < 0) == (f(b) < 0))
+      continue;
+    Rational lo(i, kSteps), hi(i + 1, kSteps);
+    const int sa = sign(eval(p, lo));
+    const int sb = sign(eval(p, hi));
+    if (sa != 0 && sb != 0 && sa != sb)
+      out.emplace_back(std::move(lo), std::move(hi));
+  }
+  return out;
+}
+
+// Returns every distinct root of g (not the zero polynomial, degree <= 3) in [0, 1].
+std::vector<Root> roots_in_unit_interval(const Poly& g) {
+  std::vector<Root> out;
+  if (degree(g) < 1)
+    return out;
+  // Fast path, no gcd: when 0 and 1 are not roots, V (the sign variations of g's Bernstein
+  // coefficients on [0, 1]) bounds the roots in (0, 1) counted with multiplicity; V disjoint
+  // intervals with an exact sign change of g each then hold exactly one simple root.
+  if (eval(g, Rational(0)) != 0 && eval(g, Rational(1)) != 0) {
+    const int v = sign_variations(bernstein(g, Rational(0), Rational(1)));
+    if (v == 0)
+      return out;
+    const std::vector<std::pair<Rational, Rational>> c = sign_change_candidates(g);
+    if (static_cast<int>(c.size()) == v) {
+      for (const auto& [lo, hi] : c)
+        out.push_back(Root{lo, hi, false, g});
+      return out;
+    }
+  }
+  // Multiple roots are the roots of gcd(g, g'): rational for degree <= 3.
+  const Poly common = gcd(g, derivative(g));
+  Poly free = divide(g, common).first; // square-free, the same distinct roots
+  std::vector<Rational> exact;
+  if (degree(common) == 1)
+    exact.push_back(-common[0] / common[1]);
+  else if (degree(common) == 2) // (t - r)^2, monic
+    exact.push_back(-common[1] / 2);
+  for (const Rational& r : exact)
+    free = deflate(free, r);
+  std::vector<Rational> found;
+  for (const Rational& r : exact)
+    if (r >= 0 && r <= 1)
+      found.push_back(r);
+  for (const Rational& e : {Rational(0), Rational(1)}) {
+    if (degree(free) >= 1 && eval(free, e) == 0) {
+      found.push_back(e);
+      free = deflate(free, e);
+    }
+  }
+  // Isolate the remaining (simple) roots in (0, 1); a midpoint that is a root is deflated
+  // and the isolation restarts (at most three times).
+  std::vector<std::pair<Rational, Rational>> isolated;
+  // Fast path: the Bernstein coefficients on [0, 1] bound the number of roots in (0, 1) by
+  // their sign variations V (and have its parity); V disjoint intervals with an exact sign
+  // change each hold exactly one root each. Candidates come from a scan in double.
+  if (degree(free) >= 1) {
+    const int v = sign_variations(bernstein(free, Rational(0), Rational(1)));
+    if (v == 0) {
+      for (const Rational& r : found)
+        out.push_back(Root{r, r, true, {}});
+      return out;
+    }
+    const std::vector<std::pair<Rational, Rational>> candidates = sign_change_candidates(free);
+    const bool certified = static_cast<int>(candidates.size()) == v;
+    if (certified) {
+      for (const Rational& r : found)
+        out.push_back(Root{r, r, true, {}});
+      for (const auto& [lo, hi] : candidates)
+        out.push_back(Root{lo, hi, false, free});
+      return out;
+    }
+  }
+  bool restart = true;
+  while (restart) {
+    restart = false;
+    isolated.clear();
+    if (degree(free) < 1)
+      break;
+    std::vector<std::pair<Rational, Rational>> todo{{Rational(0), Rational(1)}};
+    while (!todo.empty() && !restart) {
+      const auto [lo, hi] = todo.back();
+      todo.pop_back();
+      const int v = sign_variations(bernstein(free, lo, hi));
+      if (v == 0)
+        continue;
+      if (v == 1) {
+        isolated.emplace_back(lo, hi);
+        continue;
+      }
+      const Rational m = (lo + hi) / 2;
+      if (eval(free, m) == 0) {
+        found.push_back(m);
+        free = deflate(free, m);
+        restart = true;
+        break;
+      }
+      todo.emplace_back(lo, m);
+      todo.emplace_back(m, hi);
+    }
+  }
+  for (const Rational& r : found)
+    out.push_back(Root{r, r, true, {}});
+  for (const auto& [lo, hi] : isolated)
+    out.push_back(Root{lo, hi, false, free});
+  return out;
+}
+
+// Returns the power-basis coefficients (integers) of one coordinate of a Bézier curve.
+Poly power_basis(const std::array<std::int64_t, 4>& c, int deg) {
+  Poly p;
+  if (deg == 2) {
+    p = {Rational(c[0]), Rational(2 * (c[1] - c[0])), Rational(c[0] - 2 * c[1] + c[2])};
+  } else {
+    p = {Rational(c[0]), Rational(3 * (c[1] - c[0])), Rational(3 * (c[0] - 2 * c[1] + c[2])),
+         Rational(c[3] - 3 * c[2] + 3 * c[1] - c[0])};
+  }
+  trim(p);
+  return p;
+}
+
+// Returns floor(q) for a rational q.
+BigInt floor_of(const Rational& q) {
+  const BigInt n = boost::multiprecision::numerator(q);
+  const BigInt d = boost::multiprecision::denominator(q);
+  BigInt f = n / d;
+  if (n < 0 && f * d != n)
+    f -= 1;
+  return f;
+}
+
+// Returns the threshold of a crossing at x(t_c): the largest integer X it counts for (x_c > X,
+// or x_c == X and hx = -1).
+std::int64_t threshold_at(const Poly& x, Root& r, Tie t) {
+  BigInt f;
+  bool integral = false;
+  if (r.exact) {
+    const Rational xc = eval(x, r.lo);
+    f = floor_of(xc);
+    integral = Rational(f) == xc;
+  } else {
+    // Narrow the root until x varies by less than 1 on its interval, so that floor(x_c) is
+    // k or k + 1 with k = floor(min), then decide exactly.
+    tighten(r);
+    if (r.exact)
+      return threshold_at(x, r, t);
+    std::vector<Rational> b = bernstein(x, r.lo, r.hi);
+    while (!r.exact &&
+           *std::max_element(b.begin(), b.end()) - *std::min_element(b.begin(), b.end()) >= 1) {
+      const Rational m = (r.lo + r.hi) / 2;
+      const int s_m = sign(eval(r.iso, m));
+      if (s_m == 0) {
+        r.lo = r.hi = m;
+        r.exact = true;
+        break;
+      }
+      (s_m == sign(eval(r.iso, r.lo)) ? r.lo : r.hi) = m;
+      b = bernstein(x, r.lo, r.hi);
+    }
+    if (r.exact)
+      return threshold_at(x, r, t);
+    const BigInt k = floor_of(*std::min_element(b.begin(), b.end()));
+    Poly shifted = x;
+    if (shifted.empty())
+      shifted.push_back(Rational(0));
+    shifted[0] -= Rational(k + 1);
+    trim(shifted);
+    const int s1 = sign_at(shifted, r);
+    if (s1 >= 0) {
+      f = k + 1;
+      integral = s1 == 0;
+    } else {
+      shifted = x;
+      if (shifted.empty())
+        shifted.push_back(Rational(0));
+      shifted[0] -= Rational(k);
+      trim(shifted);
+      f = k;
+      integral = sign_at(shifted, r) == 0;
+    }
+  }
+  if (integral && t.x_right)
+    f -= 1;
+  return f.convert_to<std::int64_t>();
+}
+
+} // namespace
+
+// rule: PATH.CURVE.SAMPLE, PATH.SAMPLE.TIE
+std::vector<Crossing> curve_crossings(const Curve& c, std::int64_t sy, Tie t) {
+  std::vector<Crossing> out;
+  const int n = c.degree;
+  std::array<std::int64_t, 4> xs{}, ys{};
+  std::int64_t ymin = c.p[0].y, ymax = c.p[0].y;
+  for (int k = 0; k <= n; ++k) {
+    xs[static_cast<std::size_t>(k)] = c.p[static_cast<std::size_t>(k)].x;
+    ys[static_cast<std::size_t>(k)] = c.p[static_cast<std::size_t>(k)].y;
+    ymin = std::min(ymin, ys[static_cast<std::size_t>(k)]);
+    ymax = std::max(ymax, ys[static_cast<std::size_t>(k)]);
+  }
+  // The curve lies in the convex hull of its control points.
+  if (sy < ymin || sy > ymax)
+    return out;
+  Poly g = power_basis(ys, n);
+  if (g.empty())
+    g.push_back(Rational(0));
+  g[0] -= sy;
+  trim(g);
+  if (degree(g) < 1)
+    return out; // y constant: on the row (never crossed, PATH.DEGENERATE) or off it
+  const Poly x = power_basis(xs, n);
+  const int hy = t.y_down ? 1 : -1;
+  std::vector<Root> roots = roots_in_unit_interval(g);
+  for (Root& r : roots) {
+    // Multiplicity m and the sign a of the first non-zero derivative at the root.
+    int m = 1;
+    int a = 0;
+    Poly d = derivative(g);
+    if (!r.exact) {
+      a = sign_at(d, r); // a simple root: g' != 0 there
+    } else {
+      while (true) {
+        a = sign(eval(d, r.lo));
+        if (a != 0 || d.empty())
+          break;
+        d = derivative(d);
+        ++m;
+      }
+    }
+    int dir = 0;
+    if (r.exact && r.lo == 0) {
+      // g ~ a t^m after 0: the line y = s.y + hy delta is crossed iff a == hy, going that way.
+      dir = a == hy ? hy : 0;
+    } else if (r.exact && r.lo == 1) {
+      // g ~ a (t - 1)^m before 1, of sign a (-1)^m: crossed iff that is hy, going back.
+      const int before = (m % 2 == 0) ? a : -a;
+      dir = before == hy ? -hy : 0;
+    } else {
+      // Inside: an odd multiplicity crosses once in the direction of a; an even one touches
+      // the line, and its two crossings (same x in the limit) cancel.
+      dir = (m % 2 == 1) ? a : 0;
+    }
+    if (dir != 0)
+      out.push_back(Crossing{threshold_at(x, r, t), dir});
+  }
+  return out;
 }
 
 } // namespace rastrules::path::detail

@@ -49,7 +49,8 @@ struct Crossing {
   [[nodiscard]] bool counts_at(std::int64_t x) const { return x <= threshold; }
 };
 
-// Returns the crossings of curve c with the line y = sy + hy delta (delta -> 0+), exactly.
+// Returns the crossings of curve c with the line y = sy + hy delta (delta -> 0+), exactly
+// (PATH.CURVE.SAMPLE; kernel/src/path_curve.cpp).
 [[nodiscard]] std::vector<Crossing> curve_crossings(const Curve& c, std::int64_t sy, Tie t);
 
 } // namespace rastrules::path::detail

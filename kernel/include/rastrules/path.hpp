@@ -3,7 +3,8 @@
 // or even-odd rule, with exact sample coverage (every fill convention, every sample pattern)
 // and exact area coverage. Rules: spec/rules/path.md.
 // Implements: PATH.GEOMETRY, PATH.CONTOUR.CLOSE, PATH.WINDING, PATH.FILL.RULE,
-//             PATH.SAMPLE.TIE, PATH.COVER.SAMPLE, PATH.AREA.EXACT, PATH.DEGENERATE
+//             PATH.SAMPLE.TIE, PATH.COVER.SAMPLE, PATH.AREA.EXACT, PATH.DEGENERATE,
+//             PATH.CURVE.SAMPLE
 // Needs, beyond the standard library, Boost.Multiprecision's headers (exact rational areas).
 
 #pragma once
@@ -95,7 +96,8 @@ struct AreaCoverage {
 };
 
 // Returns every pixel of [0, w) x [0, h) with nonzero area under the fill rule, row by row.
-// Preconditions: 0 <= w, h <= kMaxTargetSide.
+// Preconditions: 0 <= w, h <= kMaxTargetSide. Paths with curves are not supported yet: throws
+// std::invalid_argument (PATH.AREA.EXACT).
 // rule: PATH.AREA.EXACT
 [[nodiscard]] std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w,
                                                    std::int32_t h);
