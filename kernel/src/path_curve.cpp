@@ -7,6 +7,7 @@
 // interval is refined until x - k has one sign on it). All arithmetic in cpp_rational.
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -444,10 +445,132 @@ std::int64_t threshold_at(const Poly& x, Root& r, Tie t) {
   return f.convert_to<std::int64_t>();
 }
 
+// The fast path of curve_crossings: integer arithmetic on dyadic parameters t = k / 2^30,
+// exact, for the common case (every root of g in (0, 1) simple, none at 0 or 1, each crossing's
+// x at least a fraction of a raw unit from an integer). Returns false, having decided nothing,
+// whenever a check does not pass; the rational path then decides.
+//
+// Budget (PATH.CURVE.SAMPLE): power coefficients |c| < 2^27; with k < 2^30,
+// P(k / 2^30) * 2^90 = sum_j c_j k^j 2^(30 (3 - j)) has four terms below 2^117 (sum < 2^119),
+// and the Bernstein coefficients of x on [k, k + 1] / 2^30, scaled by 3 * 2^90, are sums of at
+// most 12 terms below 2^119.6 (< 2^124): all in __int128.
+__extension__ typedef __int128 Wide;
+constexpr int kFastBits = 30;
+
+struct Cubic {
+  std::array<std::int64_t, 4> c{}; // power basis, degree <= 3 (a quadratic has c[3] = 0)
+  // Returns P(k / 2^30) * 2^90, exactly.
+  [[nodiscard]] Wide scaled(std::int64_t k) const {
+    const Wide kk = k;
+    Wide v = 0;
+    for (int j = 3; j >= 0; --j) // Horner in k with the powers of 2^30 folded in
+      v = v * kk +
+          static_cast<Wide>(c[static_cast<std::size_t>(j)]) * (Wide{1} << (kFastBits * (3 - j)));
+    return v;
+  }
+  [[nodiscard]] double approx(double t) const {
+    return ((static_cast<double>(c[3]) * t + static_cast<double>(c[2])) * t +
+            static_cast<double>(c[1])) *
+               t +
+           static_cast<double>(c[0]);
+  }
+};
+
+int wide_sign(Wide v) {
+  return v > 0 ? 1 : (v < 0 ? -1 : 0);
+}
+
+Wide wide_floor_div(Wide n, Wide d) { // d > 0
+  const Wide q = n / d;
+  return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+
+bool fast_curve_crossings(const Cubic& g, const Cubic& x, std::vector<Crossing>& out) {
+  constexpr std::int64_t kOne = std::int64_t{1} << kFastBits;
+  if (g.c[0] == 0 || g.c[0] + g.c[1] + g.c[2] + g.c[3] == 0)
+    return false; // a root at an end: the half-open rule needs derivatives
+  // Bernstein coefficients of g on [0, 1], times 3: their sign variations bound the roots.
+  const std::int64_t a0 = g.c[0], a1 = g.c[1], a2 = g.c[2], a3 = g.c[3];
+  const std::array<std::int64_t, 4> b{3 * a0, 3 * a0 + a1, 3 * a0 + 2 * a1 + a2,
+                                      3 * (a0 + a1 + a2 + a3)};
+  int v = 0, last = 0;
+  for (const std::int64_t bi : b) {
+    const int si = bi > 0 ? 1 : (bi < 0 ? -1 : 0);
+    if (si != 0 && last != 0 && si != last)
+      ++v;
+    if (si != 0)
+      last = si;
+  }
+  if (v == 0)
+    return true;
+  constexpr int kSteps = 64;
+  constexpr std::int64_t kStep = kOne / kSteps;
+  std::vector<Crossing> found;
+  for (int i = 0; i < kSteps; ++i) {
+    const double ta = static_cast<double>(i) / kSteps, tb = static_cast<double>(i + 1) / kSteps;
+    if ((g.approx(ta) < 0) == (g.approx(tb) < 0))
+      continue;
+    const std::int64_t ka = i * kStep, kb = (i + 1) * kStep;
+    const int sa = wide_sign(g.scaled(ka)), sb = wide_sign(g.scaled(kb));
+    if (sa == 0 || sb == 0 || sa == sb)
+      return false;
+    // A root estimate by bisection in double, then an exact sign change on [k, k + 1] / 2^30.
+    double lo = ta, hi = tb;
+    for (int it = 0; it < 64; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      if (mid <= lo || mid >= hi)
+        break;
+      ((g.approx(mid) < 0) == (sa < 0) ? lo : hi) = mid;
+    }
+    const std::int64_t k = std::clamp(
+        static_cast<std::int64_t>(std::floor(lo * static_cast<double>(kOne))), ka, kb - 1);
+    const int s0 = wide_sign(g.scaled(k)), s1 = wide_sign(g.scaled(k + 1));
+    if (s0 != sa || s1 != sb)
+      return false;
+    // x on [k, k + 1] / 2^30 lies between its Bernstein coefficients (scaled by 3 * 2^90).
+    const Wide kk = k;
+    std::array<Wide, 4> p{}; // power coefficients in s of x((k + s) / 2^30) * 2^90
+    for (int j = 0; j <= 3; ++j) {
+      Wide kpow = 1;
+      for (int i2 = j; i2 >= 0; --i2) {
+        static constexpr int kBinom[4][4] = {
+            {1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
+        p[static_cast<std::size_t>(i2)] += static_cast<Wide>(x.c[static_cast<std::size_t>(j)]) *
+                                           kBinom[j][i2] * kpow *
+                                           (Wide{1} << (kFastBits * (3 - j)));
+        kpow *= kk;
+      }
+    }
+    const std::array<Wide, 4> xb{3 * p[0], 3 * p[0] + p[1], 3 * p[0] + 2 * p[1] + p[2],
+                                 3 * (p[0] + p[1] + p[2] + p[3])};
+    const Wide xmin = *std::min_element(xb.begin(), xb.end());
+    const Wide xmax = *std::max_element(xb.begin(), xb.end());
+    const Wide scale = Wide{3} << (3 * kFastBits);
+    const Wide f = wide_floor_div(xmin, scale);
+    if (!(xmin > f * scale && xmax < (f + 1) * scale))
+      return false; // an integer in reach of x_c: decide exactly on the rational path
+    // F < x_c < F + 1: the crossing counts for sample x <= F under either hx.
+    found.push_back(Crossing{static_cast<std::int64_t>(f), sb});
+  }
+  if (static_cast<int>(found.size()) != v)
+    return false; // roots closer than 1/64 apart, or a multiple root: not isolated here
+  out.insert(out.end(), found.begin(), found.end());
+  return true;
+}
+
 } // namespace
 
 // rule: PATH.CURVE.SAMPLE, PATH.SAMPLE.TIE
 std::vector<Crossing> curve_crossings(const Curve& c, std::int64_t sy, Tie t) {
+  return curve_crossings_impl(c, sy, t, true);
+}
+
+// rule: PATH.CURVE.SAMPLE, PATH.SAMPLE.TIE
+std::vector<Crossing> curve_crossings_exact(const Curve& c, std::int64_t sy, Tie t) {
+  return curve_crossings_impl(c, sy, t, false);
+}
+
+std::vector<Crossing> curve_crossings_impl(const Curve& c, std::int64_t sy, Tie t, bool fast) {
   std::vector<Crossing> out;
   const int n = c.degree;
   std::array<std::int64_t, 4> xs{}, ys{};
@@ -461,6 +584,27 @@ std::vector<Crossing> curve_crossings(const Curve& c, std::int64_t sy, Tie t) {
   // The curve lies in the convex hull of its control points.
   if (sy < ymin || sy > ymax)
     return out;
+  {
+    Cubic gi, xi;
+    const auto coefficients = [n](const std::array<std::int64_t, 4>& q) {
+      std::array<std::int64_t, 4> w{q[0], 0, 0, 0};
+      if (n == 2) {
+        w[1] = 2 * (q[1] - q[0]);
+        w[2] = q[0] - 2 * q[1] + q[2];
+      } else {
+        w[1] = 3 * (q[1] - q[0]);
+        w[2] = 3 * (q[0] - 2 * q[1] + q[2]);
+        w[3] = q[3] - 3 * q[2] + 3 * q[1] - q[0];
+      }
+      return w;
+    };
+    gi.c = coefficients(ys);
+    gi.c[0] -= sy;
+    xi.c = coefficients(xs);
+    if (fast && fast_curve_crossings(gi, xi, out))
+      return out;
+    out.clear();
+  }
   Poly g = power_basis(ys, n);
   if (g.empty())
     g.push_back(Rational(0));

@@ -53,4 +53,10 @@ struct Crossing {
 // (PATH.CURVE.SAMPLE; kernel/src/path_curve.cpp).
 [[nodiscard]] std::vector<Crossing> curve_crossings(const Curve& c, std::int64_t sy, Tie t);
 
+// The same by the rational path alone (no integer fast path): curve_crossings must equal it,
+// which tests/path checks. fast = false is this; curve_crossings is fast = true.
+[[nodiscard]] std::vector<Crossing> curve_crossings_exact(const Curve& c, std::int64_t sy, Tie t);
+[[nodiscard]] std::vector<Crossing> curve_crossings_impl(const Curve& c, std::int64_t sy, Tie t,
+                                                         bool fast);
+
 } // namespace rastrules::path::detail
