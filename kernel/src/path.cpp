@@ -254,9 +254,9 @@ std::int64_t floor_of(const Rational& q) {
   return f.convert_to<std::int64_t>();
 }
 
-// Returns the x of edge e at height y (ya <= y <= yb).
-Rational x_at(const DownEdge& e, const Rational& y) {
-  return Rational(e.xa) + (y - e.ya) * Rational(e.xb - e.xa, e.yb - e.ya);
+// Returns the x of edge e, whose slope dx/dy is `slope`, at height y (ya <= y <= yb).
+Rational x_at(const DownEdge& e, const Rational& slope, const Rational& y) {
+  return Rational(e.xa) + (y - e.ya) * slope;
 }
 
 // Returns the integral over y in [ya, yb] (length hgt) of clamp(X(y), lo, lo + 256) - lo, where
@@ -296,32 +296,48 @@ Rational column_integral(const Rational& xa, const Rational& xb, const Rational&
   return sum * hgt;
 }
 
+// One pixel row's areas (raw squared units): the partial columns' areas, and the columns a
+// run covers for the whole height of a slab as a difference array (one add at each end of the
+// run instead of one per column).
+struct RowAreas {
+  std::vector<Rational> partial;
+  std::vector<Rational> full_diff; // one longer than the row
+  std::int64_t touched_lo = 0, touched_hi = -1;
+
+  explicit RowAreas(std::int32_t w)
+      : partial(static_cast<std::size_t>(w)), full_diff(static_cast<std::size_t>(w) + 1),
+        touched_lo(w) {}
+};
+
 // Accumulates the area between edges l (left) and r (right) over the slab [ya, yb] of one
 // pixel row into the row's columns (raw squared units).
-void add_run(std::vector<Rational>& row, std::int64_t& touched_lo, std::int64_t& touched_hi,
-             std::int32_t w, const Rational& la, const Rational& lb, const Rational& ra,
-             const Rational& rb, const Rational& hgt) {
+void add_run(RowAreas& row, std::int32_t w, const Rational& la, const Rational& lb,
+             const Rational& ra, const Rational& rb, const Rational& hgt) {
   const std::int64_t c0 = std::max<std::int64_t>(0, floor_of(std::min(la, lb) / kSubpixelOne));
   const std::int64_t c1 =
       std::min<std::int64_t>(std::int64_t{w} - 1, floor_of(std::max(ra, rb) / kSubpixelOne));
   if (c0 > c1)
     return;
-  // Columns entirely between the two edges are covered for the whole slab.
-  const Rational lmax = std::max(la, lb);
-  const Rational rmin = std::min(ra, rb);
-  const Rational full = Rational(kSubpixelOne) * hgt;
-  for (std::int64_t c = c0; c <= c1; ++c) {
-    const std::int64_t lo = c * kSubpixelOne;
-    Rational a;
-    if (lmax <= lo && rmin >= lo + kSubpixelOne)
-      a = full;
-    else
-      a = column_integral(ra, rb, hgt, lo) - column_integral(la, lb, hgt, lo);
-    if (a != 0)
-      row[static_cast<std::size_t>(c)] += a;
+  // Columns [f0, f1] lie entirely between the two edges: covered for the whole slab.
+  const std::int64_t f0 = std::max(c0, -floor_of(-std::max(la, lb) / kSubpixelOne));
+  const std::int64_t f1 = std::min(c1, floor_of(std::min(ra, rb) / kSubpixelOne) - 1);
+  if (f0 <= f1) {
+    const Rational full = Rational(kSubpixelOne) * hgt;
+    row.full_diff[static_cast<std::size_t>(f0)] += full;
+    row.full_diff[static_cast<std::size_t>(f1 + 1)] -= full;
   }
-  touched_lo = std::min(touched_lo, c0);
-  touched_hi = std::max(touched_hi, c1);
+  for (std::int64_t c = c0; c <= c1; ++c) {
+    if (f0 <= f1 && c == f0) {
+      c = f1; // skip the full columns
+      continue;
+    }
+    const std::int64_t lo = c * kSubpixelOne;
+    const Rational a = column_integral(ra, rb, hgt, lo) - column_integral(la, lb, hgt, lo);
+    if (a != 0)
+      row.partial[static_cast<std::size_t>(c)] += a;
+  }
+  row.touched_lo = std::min(row.touched_lo, c0);
+  row.touched_hi = std::max(row.touched_hi, c1);
 }
 
 } // namespace
@@ -337,7 +353,14 @@ std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w, std::int3
         "path: area coverage of curves is not implemented (PATH.AREA.EXACT)");
   const std::vector<DownEdge> edges = down_edges(b);
   ActiveEdges active(edges);
-  std::vector<Rational> row(static_cast<std::size_t>(w));
+  RowAreas row(w);
+  std::vector<Rational> slopes;
+  slopes.reserve(edges.size());
+  for (const DownEdge& e : edges)
+    slopes.emplace_back(e.xb - e.xa, e.yb - e.ya);
+  const auto slope_of = [&](const DownEdge* e) -> const Rational& {
+    return slopes[static_cast<std::size_t>(e - edges.data())];
+  };
   const Rational pixel_area(std::int64_t{kSubpixelOne} * kSubpixelOne);
 
   for (std::int32_t j = 0; j < h; ++j) {
@@ -369,8 +392,10 @@ std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w, std::int3
         const std::int64_t hi = std::min({e.yb, f.yb, y1});
         if (lo >= hi)
           continue;
-        const Rational dlo = x_at(e, Rational(lo)) - x_at(f, Rational(lo));
-        const Rational dhi = x_at(e, Rational(hi)) - x_at(f, Rational(hi));
+        const Rational& se = slope_of(&e);
+        const Rational& sf = slope_of(&f);
+        const Rational dlo = x_at(e, se, Rational(lo)) - x_at(f, sf, Rational(lo));
+        const Rational dhi = x_at(e, se, Rational(hi)) - x_at(f, sf, Rational(hi));
         if ((dlo < 0 && dhi > 0) || (dlo > 0 && dhi < 0))
           cuts.push_back(Rational(lo) + Rational(hi - lo) * dlo / (dlo - dhi));
       }
@@ -378,7 +403,6 @@ std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w, std::int3
     std::sort(cuts.begin(), cuts.end());
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
 
-    std::int64_t touched_lo = w, touched_hi = -1;
     struct Piece {
       const DownEdge* e;
       Rational xa, xb, key;
@@ -390,8 +414,8 @@ std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w, std::int3
       pieces.clear();
       for (const DownEdge* e : in_row) {
         if (e->ya <= ya && e->yb >= yb) {
-          Rational xa = x_at(*e, ya);
-          Rational xb = x_at(*e, yb);
+          Rational xa = x_at(*e, slope_of(e), ya);
+          Rational xb = x_at(*e, slope_of(e), yb);
           Rational key = xa + xb; // twice the x at mid-slab: no two edges cross inside the slab
           pieces.push_back(Piece{e, std::move(xa), std::move(xb), std::move(key)});
         }
@@ -412,18 +436,25 @@ std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w, std::int3
           run_start = m;
           in_run = true;
         } else if (!filled && in_run) {
-          add_run(row, touched_lo, touched_hi, w, pieces[run_start].xa, pieces[run_start].xb,
-                  pieces[m].xa, pieces[m].xb, hgt);
+          add_run(row, w, pieces[run_start].xa, pieces[run_start].xb, pieces[m].xa, pieces[m].xb,
+                  hgt);
           in_run = false;
         }
       }
     }
-    for (std::int64_t c = touched_lo; c <= touched_hi; ++c) {
-      Rational& a = row[static_cast<std::size_t>(c)];
+    Rational running = 0;
+    for (std::int64_t c = row.touched_lo; c <= row.touched_hi; ++c) {
+      const auto k = static_cast<std::size_t>(c);
+      running += row.full_diff[k];
+      row.full_diff[k] = 0;
+      const Rational a = row.partial[k] + running;
+      row.partial[k] = 0;
       if (a != 0)
         out.push_back(AreaCoverage{static_cast<std::int32_t>(c), j, a / pixel_area, Rational(0)});
-      a = 0;
     }
+    row.full_diff[static_cast<std::size_t>(row.touched_hi + 1)] = 0;
+    row.touched_lo = w;
+    row.touched_hi = -1;
   }
   return out;
 }
