@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "path_detail.hpp"
+#include "rastrules/fixed.hpp"
 
 namespace rastrules::path::detail {
 namespace {
@@ -456,6 +457,14 @@ std::int64_t threshold_at(const Poly& x, Root& r, Tie t) {
 // most 12 terms below 2^119.6 (< 2^124): all in __int128.
 __extension__ typedef __int128 Wide;
 constexpr int kFastBits = 30;
+// |raw| <= 2^23: a power coefficient is a sum of raw values with weights |w| summing to at
+// most 12 (the cubic's 3 (y0 - 2 y1 + y2)), so |c| <= 12 * 2^23 < 2^27.
+constexpr int kCoefficientBits = kVertexMagBits + 4;
+// Every term c_j k^(j - i) C(j, i) 2^(30 (3 - j)) is below 2^(27 + 90 + 2) (C <= 3 < 2^2), and
+// the largest sum, 3 times four coefficients each of at most three terms, has 36 < 2^6 terms.
+static_assert(kCoefficientBits + 3 * kFastBits + 2 + 6 <= 126,
+              "curve fast path must fit __int128 (PATH.CURVE.SAMPLE)");
+static_assert(kCoefficientBits + 2 <= 62, "3 * (a0 + a1 + a2 + a3) must fit int64_t");
 
 struct Cubic {
   std::array<std::int64_t, 4> c{}; // power basis, degree <= 3 (a quadratic has c[3] = 0)

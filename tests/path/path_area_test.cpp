@@ -7,7 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <cstdlib>
+#include <utility>
 #include <vector>
 
 #include "path_support.hpp"
@@ -180,6 +183,33 @@ TEST(PathArea, AreasOfSimplePolygonsSumToTheShoelaceArea) {
               expected);
   }
   EXPECT_TRUE(path::cover_area(path::Path{}, 8, 8).empty());
+}
+
+// A 256 x 1 px strip whose sides are cut into 131584 segments of one raw unit has the strip's
+// exact areas: any number of segments.
+// rule: PATH.AREA.EXACT, PATH.DEGENERATE
+TEST(PathArea, StripOfMoreThan65536SegmentsHasTheStripsAreas) {
+  path::Contour many;
+  many.start = pt(1.5, 1);
+  for (const auto& [from, to] :
+       {std::pair{pt(1.5, 1), pt(257.5, 1)}, std::pair{pt(257.5, 1), pt(257.5, 2)},
+        std::pair{pt(257.5, 2), pt(1.5, 2)}, std::pair{pt(1.5, 2), pt(1.5, 1)}}) {
+    const std::int32_t n = std::max(std::abs(to.x - from.x), std::abs(to.y - from.y));
+    for (std::int32_t k = 1; k <= n; ++k)
+      many.segments.push_back(path::Segment{
+          path::SegmentKind::kLine,
+          {path::Point{from.x + (to.x - from.x) / n * k, from.y + (to.y - from.y) / n * k},
+           {},
+           {}}});
+  }
+  ASSERT_GT(many.segments.size(), 65536u);
+  const auto v = path::cover_area(make_path(FillRule::kNonZero, {many}), 260, 3);
+  EXPECT_EQ(total(v), Q(256));
+  const auto m = area_map(v);
+  EXPECT_EQ(m.at({1, 1}), Q(1, 2));
+  EXPECT_EQ(m.at({1, 2}), Q(1));
+  EXPECT_EQ(m.at({1, 257}), Q(1, 2));
+  EXPECT_EQ(m.size(), 257u);
 }
 
 } // namespace

@@ -7,8 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdlib>
 #include <vector>
 
 #include "fill_convention_cases.hpp"
@@ -365,6 +367,37 @@ TEST(PathCoverSamples, EmptyPathsAndPointContoursCoverNothing) {
   EXPECT_TRUE(
       path::cover_samples(square(FillRule::kNonZero), kCentre, FillConvention::kTopLeft, 0, 4)
           .empty());
+}
+
+// A square whose sides are cut into 65540 segments of one raw unit or less covers exactly what
+// the square covers: any number of segments, no limit and no overflow.
+// rule: PATH.DEGENERATE, PATH.WINDING.BOUND
+TEST(PathDegenerate, SquareOfMoreThan65536SegmentsCoversWhatTheSquareCovers) {
+  path::Contour many;
+  many.start = pt(0.5, 0.5);
+  const auto side = [&](path::Point from, path::Point to) {
+    const std::int32_t n = std::max(std::abs(to.x - from.x), std::abs(to.y - from.y));
+    for (std::int32_t k = 1; k <= n; ++k)
+      many.segments.push_back(path::Segment{
+          path::SegmentKind::kLine,
+          {path::Point{from.x + (to.x - from.x) / n * k, from.y + (to.y - from.y) / n * k},
+           {},
+           {}}});
+  };
+  side(pt(0.5, 0.5), pt(64.5, 0.5));
+  side(pt(64.5, 0.5), pt(64.5, 64.5));
+  side(pt(64.5, 64.5), pt(0.5, 64.5));
+  side(pt(0.5, 64.5), pt(0.5, 0.5));
+  for (int k = 0; k < 4; ++k) // and four zero-length segments at the end
+    many.segments.push_back(path::Segment{path::SegmentKind::kLine, {pt(0.5, 0.5), {}, {}}});
+  ASSERT_GT(many.segments.size(), 65536u);
+  const path::Path p = make_path(FillRule::kEvenOdd, {many});
+  const path::Path square = make_path(
+      FillRule::kEvenOdd, {polygon({{0.5, 0.5}, {64.5, 0.5}, {64.5, 64.5}, {0.5, 64.5}})});
+  for (const FillConvention f : kAllConventions)
+    EXPECT_EQ(path::cover_samples(p, standard_pattern(4), f, 66, 66),
+              path::cover_samples(square, standard_pattern(4), f, 66, 66));
+  EXPECT_EQ(path::winding_number(p, pt(32, 32), FillConvention::kTopLeft), 1);
 }
 
 } // namespace
