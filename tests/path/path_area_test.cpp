@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <cstdlib>
 #include <utility>
@@ -210,6 +211,37 @@ TEST(PathArea, StripOfMoreThan65536SegmentsHasTheStripsAreas) {
   EXPECT_EQ(m.at({1, 2}), Q(1));
   EXPECT_EQ(m.at({1, 257}), Q(1, 2));
   EXPECT_EQ(m.size(), 257u);
+}
+
+// Two paths that share a boundary (a square cut along a slanted line into two paths, and a
+// third path overlapping nothing): their areas add up to exactly 1 on every pixel they tile,
+// and their samples never overlap (PATH.TIE.PARTITION for areas and samples).
+// rule: PATH.AREA.EXACT, PATH.TIE.PARTITION
+TEST(PathArea, AbuttingPathsTileThePixelsExactly) {
+  const path::Path left =
+      make_path(FillRule::kNonZero, {polygon({{0, 0}, {2.25, 0}, {3.75, 6}, {0, 6}})});
+  const path::Path right =
+      make_path(FillRule::kEvenOdd, {polygon({{2.25, 0}, {6, 0}, {6, 6}, {3.75, 6}})});
+  const auto a = area_map(path::cover_area(left, 6, 6));
+  const auto b = area_map(path::cover_area(right, 6, 6));
+  for (std::int32_t y = 0; y < 6; ++y)
+    for (std::int32_t x = 0; x < 6; ++x) {
+      const Q sum =
+          (a.contains({y, x}) ? a.at({y, x}) : Q(0)) + (b.contains({y, x}) ? b.at({y, x}) : Q(0));
+      EXPECT_EQ(sum, Q(1)) << x << "," << y;
+    }
+  const auto sa =
+      as_map(path::cover_samples(left, standard_pattern(16), FillConvention::kTopLeft, 6, 6));
+  const auto sb =
+      as_map(path::cover_samples(right, standard_pattern(16), FillConvention::kTopLeft, 6, 6));
+  for (const auto& [pixel, mask] : sa)
+    EXPECT_EQ(mask & (sb.contains(pixel) ? sb.at(pixel) : 0u), 0u);
+  std::size_t covered = 0;
+  for (std::int32_t y = 0; y < 6; ++y)
+    for (std::int32_t x = 0; x < 6; ++x)
+      covered += static_cast<std::size_t>(std::popcount(
+          (sa.contains({y, x}) ? sa.at({y, x}) : 0u) | (sb.contains({y, x}) ? sb.at({y, x}) : 0u)));
+  EXPECT_EQ(covered, 36u * 16u);
 }
 
 } // namespace
