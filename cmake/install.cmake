@@ -1,7 +1,7 @@
 # Install rules: what `cmake --install <build> --prefix <dir>` puts under a prefix so that other
 # projects can link the verified kernel (design.md, use #1).
 #
-#   include/rastrules/...            the kernel's public headers (standard library only), and
+#   include/rastrules/...            the kernel's public headers (standard library and Boost headers), and
 #                                    with their components the oracle's and io's headers
 #   lib/librastrules_kernel.a        rastrules::kernel
 #   lib/librastrules_oracle.a        rastrules::oracle  (component oracle: needs CGAL and GMP)
