@@ -180,8 +180,9 @@ std::string oracle_invalid_reason(const Scene& scene) {
   // Multisampling, from spec/rules/msaa.md (the reader has already checked each key alone):
   // MSAA.LIMITS: a sample mask other than the default all-ones value holds no bit beyond the
   // pattern's n samples. MSAA.SHADING.SAMPLE: sample shading of "vulkan-bresenham" lines with
-  // n > 1 is bad input. MSAA.LINE.MODE: with n > 1 every line except a "vulkan-bresenham" one
-  // is a quadrilateral line, which a centre pattern cannot draw.
+  // n > 1 is bad input. MSAA.LINE.MODE: with n > 1 a "quad-wide" or "quad-narrow" line (not
+  // antialiased) is a quadrilateral line, and a "d3d" line is one when multisample_enable is
+  // true; a centre pattern cannot draw quadrilateral lines.
   const std::size_t n = scene.msaa.pattern.positions.size();
   if (scene.msaa.sample_mask != 0xFFFFFFFFu && n < 32 && (scene.msaa.sample_mask >> n) != 0) {
     return "sample_mask: bits beyond the pattern";
@@ -193,7 +194,11 @@ std::string oracle_invalid_reason(const Scene& scene) {
     const bool bresenham = scene.conventions.line_mode == LineMode::kVulkanBresenham;
     if (bresenham && scene.msaa.shading == ShadingRate::kSample)
       return "shading: sample shading of Bresenham lines";
-    if (!bresenham && scene.msaa.pattern.kind == PatternKind::kCenter)
+    const LineMode mode = scene.conventions.line_mode;
+    const bool quad = mode == LineMode::kQuadWide || mode == LineMode::kQuadNarrow
+                          ? !prim.aa
+                          : mode == LineMode::kD3DDiamond && scene.conventions.multisample_enable;
+    if (quad && scene.msaa.pattern.kind == PatternKind::kCenter)
       return "sample_pattern: quad lines on a centre pattern";
   }
   return {};
