@@ -264,6 +264,17 @@ mpq_class q_of(std::int64_t v) {
 }
 
 std::int64_t roots_crossing(const std::vector<Raw2>& ctrl, const Raw2& s, Displacement d) {
+  // A Bezier piece lies in the hull of its control points: when s.y is strictly outside their
+  // y range, f has no root in [0, 1]; when s.x is beyond their largest x, every crossing is
+  // left of s'. Either way the piece adds nothing (a shortcut, not a decision).
+  std::int64_t lo_y = ctrl[0][1], hi_y = lo_y, hi_x = ctrl[0][0];
+  for (const Raw2& p : ctrl) {
+    lo_y = std::min(lo_y, p[1]);
+    hi_y = std::max(hi_y, p[1]);
+    hi_x = std::max(hi_x, p[0]);
+  }
+  if (s[1] < lo_y || s[1] > hi_y || s[0] > hi_x)
+    return 0;
   std::vector<mpq_class> xs, ys;
   for (const Raw2& p : ctrl) {
     xs.push_back(q_of(p[0]));
