@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: MIT
+// Properties of the exact path oracle on its own (no kernel): its two derivations of the
+// winding number agree on lines, a convex polygon's pixel areas sum to its shoelace area, a
+// polygon cut along a chord partitions the samples and the areas, areas lie within the 4 x 4
+// grid bound of the samples, and curve decisions survive exact subdivision at t = 1/2 and
+// degree elevation (both done on coordinates scaled so that they stay integers).
+// Implements (properties for): PATH.WINDING, PATH.FILL.RULE, PATH.SAMPLE.TIE, PATH.AREA.EXACT
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "path_checks.hpp"
+#include "path_gen.hpp"
+#include "rastrules/oracle/msaa.hpp"
+#include "rastrules/oracle/path.hpp"
+
+namespace {
+
+namespace pg = rastrules::path_gen;
+namespace pc = rastrules::path_checks;
+namespace op = rastrules::oracle::path;
+namespace om = rastrules::oracle::msaa;
+using pg::Raw2;
+
+constexpr std::int32_t kSide = 4;
+
+void show_path(const pg::GPath& p) {
+  std::ostringstream os;
+  pg::show(p, os);
+  RC_LOG() << os.str() << "\n";
+}
+
+// rule: PATH.WINDING, PATH.SAMPLE.TIE
+RC_GTEST_PROP(PathOracle, LineRuleEqualsExactRootsOnTies, ()) {
+  const pg::GPath p = *pg::path(kSide, false);
+  show_path(p);
+  RC_TAG(pg::name(p.kind));
+  const op::Path o = pg::to_oracle(p);
+  for (const Raw2& s : pg::tie_points(p)) {
+    for (const std::string& fill : pg::conventions()) {
+      const std::int64_t a = op::winding(o, s, fill), b = op::winding_by_roots(o, s, fill);
+      if (a != b)
+        RC_FAIL("(" + std::to_string(s[0]) + ", " + std::to_string(s[1]) + ") " + fill +
+                ": line rule " + std::to_string(a) + ", roots " + std::to_string(b));
+    }
+  }
+}
+
+// rule: PATH.AREA.EXACT
+RC_GTEST_PROP(PathOracle, ConvexPolygonAreasSumToItsArea, ()) {
+  std::vector<Raw2> h;
+  while (h.size() < 3)
+    h = pg::hull(pg::random_points(kSide, 3, 8));
+  pg::GPath p{pg::PathKind::kPolygon, *rc::gen::arbitrary<bool>(), {pg::polygon(h)}};
+  // Inside the target of side + 2 px once moved by 1 px: every pixel it reaches is counted.
+  p = pg::translated(p, 256, 256);
+  show_path(p);
+  std::int64_t twice = 0;
+  for (std::size_t i = 0; i < h.size(); ++i)
+    twice += pg::orient({0, 0}, h[i], h[(i + 1) % h.size()]);
+  mpq_class sum = 0;
+  for (const auto& [px, a] : pc::oracle_areas(p, kSide + 2))
+    sum += a;
+  mpq_class expected = mpq_class(twice < 0 ? -twice : twice) / (2 * 65536);
+  RC_ASSERT(sum == expected);
+}
+
+// rule: PATH.SAMPLE.TIE, PATH.AREA.EXACT
+RC_GTEST_PROP(PathOracle, PolygonCutAlongAChordPartitionsSamplesAndAreas, ()) {
+  const pg::CutPolygon c = *pg::cut_polygon(kSide);
+  const bool evenodd = *rc::gen::arbitrary<bool>();
+  const pg::GPath whole{pg::PathKind::kPolygon, evenodd, {c.whole}};
+  const pg::GPath first{pg::PathKind::kPolygon, evenodd, {c.first}};
+  const pg::GPath second{pg::PathKind::kPolygon, evenodd, {c.second}};
+  show_path(whole);
+  show_path(first);
+  show_path(second);
+  RC_CLASSIFY(c.chord_polyline, "chord is a polyline");
+  const std::string fill = *rc::gen::elementOf(pg::conventions());
+  const std::vector<om::Offset> pattern = om::standard_pattern(*rc::gen::element(1u, 4u, 16u));
+  const pg::Ties t = pg::ties(whole, pattern, kSide);
+  RC_CLASSIFY(t.on_vertex, "sample on a vertex");
+  RC_CLASSIFY(t.on_edge, "sample on an edge");
+  const std::string problem = pc::partition_problem(pc::oracle_masks(whole, pattern, fill, kSide),
+                                                    pc::oracle_masks(first, pattern, fill, kSide),
+                                                    pc::oracle_masks(second, pattern, fill, kSide));
+  if (!problem.empty())
+    RC_FAIL(fill + ": " + problem);
+  const std::string area =
+      pc::area_sum_problem(pc::oracle_areas(whole, kSide), pc::oracle_areas(first, kSide),
+                           pc::oracle_areas(second, kSide));
+  if (!area.empty())
+    RC_FAIL(area);
+}
+
+// rule: PATH.AREA.EXACT, PATH.SAMPLE.TIE
+RC_GTEST_PROP(PathOracle, AreaWithinTheGridBoundOfItsSamples, ()) {
+  const pg::GPath p = *pg::path(kSide, false);
+  show_path(p);
+  RC_TAG(pg::name(p.kind));
+  const std::string fill = *rc::gen::elementOf(pg::conventions());
+  const std::string problem = pc::grid_bound_problem(
+      p, pc::oracle_masks(p, pc::grid4(), fill, kSide), pc::oracle_areas(p, kSide), kSide);
+  if (!problem.empty())
+    RC_FAIL(problem);
+}
+
+// Returns the path with every coordinate multiplied by k, each curve split at t = 1/2 (de
+// Casteljau: with k a multiple of 8 every point stays an integer).
+pg::GPath scaled_and_split(const pg::GPath& p, std::int64_t k) {
+  const auto mul = [k](Raw2 r) { return Raw2{k * r[0], k * r[1]}; };
+  const auto mid = [](Raw2 a, Raw2 b) { return Raw2{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2}; };
+  pg::GPath out{p.kind, p.evenodd, {}};
+  for (const pg::GContour& c : p.contours) {
+    pg::GContour oc{mul(c.start), {}};
+    Raw2 cur = oc.start;
+    for (const pg::GPiece& q : c.pieces) {
+      std::vector<Raw2> ctrl{cur};
+      for (const Raw2& r : q.pts)
+        ctrl.push_back(mul(r));
+      if (q.degree == 1) {
+        oc.pieces.push_back(pg::GPiece{1, {ctrl[1]}});
+      } else {
+        // de Casteljau at 1/2: the left half's controls are the first points of each level,
+        // the right half's the last ones.
+        std::vector<std::vector<Raw2>> levels{ctrl};
+        while (levels.back().size() > 1) {
+          std::vector<Raw2> next;
+          for (std::size_t i = 0; i + 1 < levels.back().size(); ++i)
+            next.push_back(mid(levels.back()[i], levels.back()[i + 1]));
+          levels.push_back(next);
+        }
+        pg::GPiece left{q.degree, {}}, right{q.degree, {}};
+        for (std::size_t l = 1; l < levels.size(); ++l)
+          left.pts.push_back(levels[l].front());
+        for (std::size_t l = levels.size() - 1; l-- > 0;)
+          right.pts.push_back(levels[l].back());
+        oc.pieces.push_back(left);
+        oc.pieces.push_back(right);
+      }
+      cur = ctrl.back();
+    }
+    out.contours.push_back(oc);
+  }
+  return out;
+}
+
+// rule: PATH.WINDING, PATH.SAMPLE.TIE
+RC_GTEST_PROP(PathOracle, CurveDecisionsSurviveSplittingAtOneHalf, ()) {
+  pg::GPath p;
+  p.contours.push_back(*pg::curve_contour(kSide));
+  p.kind = pg::PathKind::kCurves;
+  show_path(p);
+  const pg::GPath split = scaled_and_split(p, 8);
+  const op::Path a = pg::to_oracle(p), b = pg::to_oracle(split);
+  std::vector<Raw2> samples = pg::tie_points(p);
+  for (std::int64_t y = 0; y < kSide * 256; y += 64)
+    for (std::int64_t x = 0; x < kSide * 256; x += 64)
+      samples.push_back({x + 32, y + 32});
+  for (const Raw2& s : samples) {
+    for (const std::string& fill : pg::conventions()) {
+      const std::int64_t wa = op::winding(a, s, fill),
+                         wb = op::winding(b, {8 * s[0], 8 * s[1]}, fill);
+      if (wa != wb)
+        RC_FAIL("(" + std::to_string(s[0]) + ", " + std::to_string(s[1]) + ") " + fill + ": " +
+                std::to_string(wa) + " before, " + std::to_string(wb) + " after");
+    }
+  }
+}
+
+// rule: PATH.WINDING, PATH.SAMPLE.TIE
+RC_GTEST_PROP(PathOracle, QuadraticEqualsItsDegreeElevatedCubic, ()) {
+  const Raw2 p0 = *pg::point(kSide), p1 = *pg::point(kSide), p2 = *pg::point(kSide);
+  const auto mul3 = [](Raw2 r) { return Raw2{3 * r[0], 3 * r[1]}; };
+  const pg::GPath quad{pg::PathKind::kCurves,
+                       false,
+                       {pg::GContour{mul3(p0), {pg::GPiece{2, {mul3(p1), mul3(p2)}}}}}};
+  // Cubic controls (p0 + 2 p1) / 3 and (2 p1 + p2) / 3, times 3.
+  const pg::GPath cubic{pg::PathKind::kCurves,
+                        false,
+                        {pg::GContour{mul3(p0),
+                                      {pg::GPiece{3,
+                                                  {{p0[0] + 2 * p1[0], p0[1] + 2 * p1[1]},
+                                                   {2 * p1[0] + p2[0], 2 * p1[1] + p2[1]},
+                                                   mul3(p2)}}}}}};
+  show_path(quad);
+  const op::Path a = pg::to_oracle(quad), b = pg::to_oracle(cubic);
+  std::vector<Raw2> samples = pg::tie_points(quad);
+  for (const Raw2& s : samples) {
+    for (const std::string& fill : pg::conventions())
+      RC_ASSERT(op::winding(a, s, fill) == op::winding(b, s, fill));
+  }
+}
+
+} // namespace
