@@ -23,21 +23,12 @@ namespace {
 namespace pg = rastrules::path_gen;
 namespace pc = rastrules::path_checks;
 namespace op = rastrules::oracle::path;
-namespace om = rastrules::oracle::msaa;
 using pg::Raw2;
-
-constexpr std::int32_t kSide = 4;
-
-void show_path(const pg::GPath& p) {
-  std::ostringstream os;
-  pg::show(p, os);
-  RC_LOG() << os.str() << "\n";
-}
 
 // rule: PATH.WINDING, PATH.SAMPLE.TIE
 RC_GTEST_PROP(PathOracle, LineRuleEqualsExactRootsOnTies, ()) {
-  const pg::GPath p = *pg::path(kSide, false);
-  show_path(p);
+  const pg::GPath p = *pg::path(pc::kSide, false);
+  pc::show_path(p);
   RC_TAG(pg::name(p.kind));
   const op::Path o = pg::to_oracle(p);
   for (const Raw2& s : pg::tie_points(p)) {
@@ -54,16 +45,16 @@ RC_GTEST_PROP(PathOracle, LineRuleEqualsExactRootsOnTies, ()) {
 RC_GTEST_PROP(PathOracle, ConvexPolygonAreasSumToItsArea, ()) {
   std::vector<Raw2> h;
   while (h.size() < 3)
-    h = pg::hull(pg::random_points(kSide, 3, 8));
+    h = pg::hull(pg::random_points(pc::kSide, 3, 8));
   pg::GPath p{pg::PathKind::kPolygon, *rc::gen::arbitrary<bool>(), {pg::polygon(h)}};
   // Inside the target of side + 2 px once moved by 1 px: every pixel it reaches is counted.
   p = pg::translated(p, 256, 256);
-  show_path(p);
+  pc::show_path(p);
   std::int64_t twice = 0;
   for (std::size_t i = 0; i < h.size(); ++i)
     twice += pg::orient({0, 0}, h[i], h[(i + 1) % h.size()]);
   mpq_class sum = 0;
-  for (const auto& [px, a] : pc::oracle_areas(p, kSide + 2))
+  for (const auto& [px, a] : pc::oracle_areas(p, pc::kSide + 2))
     sum += a;
   mpq_class expected = mpq_class(twice < 0 ? -twice : twice) / (2 * 65536);
   RC_ASSERT(sum == expected);
@@ -71,40 +62,21 @@ RC_GTEST_PROP(PathOracle, ConvexPolygonAreasSumToItsArea, ()) {
 
 // rule: PATH.SAMPLE.TIE, PATH.AREA.EXACT
 RC_GTEST_PROP(PathOracle, PolygonCutAlongAChordPartitionsSamplesAndAreas, ()) {
-  const pg::CutPolygon c = *pg::cut_polygon(kSide);
-  const bool evenodd = *rc::gen::arbitrary<bool>();
-  const pg::GPath whole{pg::PathKind::kPolygon, evenodd, {c.whole}};
-  const pg::GPath first{pg::PathKind::kPolygon, evenodd, {c.first}};
-  const pg::GPath second{pg::PathKind::kPolygon, evenodd, {c.second}};
-  show_path(whole);
-  show_path(first);
-  show_path(second);
-  RC_CLASSIFY(c.chord_polyline, "chord is a polyline");
-  const std::string fill = *rc::gen::elementOf(pg::conventions());
-  const std::vector<om::Offset> pattern = om::standard_pattern(*rc::gen::element(1u, 4u, 16u));
-  const pg::Ties t = pg::ties(whole, pattern, kSide);
-  RC_CLASSIFY(t.on_vertex, "sample on a vertex");
-  RC_CLASSIFY(t.on_edge, "sample on an edge");
-  const std::string problem = pc::partition_problem(pc::oracle_masks(whole, pattern, fill, kSide),
-                                                    pc::oracle_masks(first, pattern, fill, kSide),
-                                                    pc::oracle_masks(second, pattern, fill, kSide));
-  if (!problem.empty())
-    RC_FAIL(fill + ": " + problem);
-  const std::string area =
-      pc::area_sum_problem(pc::oracle_areas(whole, kSide), pc::oracle_areas(first, kSide),
-                           pc::oracle_areas(second, kSide));
-  if (!area.empty())
-    RC_FAIL(area);
+  const pc::CutCase c = pc::cut_case(pc::kSide);
+  pc::check_cut(
+      c, [&](const pg::GPath& p) { return pc::oracle_masks(p, c.pattern, c.fill, pc::kSide); },
+      [&](const pg::GPath& p) { return pc::oracle_areas(p, pc::kSide); });
 }
 
 // rule: PATH.AREA.EXACT, PATH.SAMPLE.TIE
 RC_GTEST_PROP(PathOracle, AreaWithinTheGridBoundOfItsSamples, ()) {
-  const pg::GPath p = *pg::path(kSide, false);
-  show_path(p);
+  const pg::GPath p = *pg::path(pc::kSide, false);
+  pc::show_path(p);
   RC_TAG(pg::name(p.kind));
   const std::string fill = *rc::gen::elementOf(pg::conventions());
-  const std::string problem = pc::grid_bound_problem(
-      p, pc::oracle_masks(p, pc::grid4(), fill, kSide), pc::oracle_areas(p, kSide), kSide);
+  const std::string problem =
+      pc::grid_bound_problem(p, pc::oracle_masks(p, pc::grid4(), fill, pc::kSide),
+                             pc::oracle_areas(p, pc::kSide), pc::kSide);
   if (!problem.empty())
     RC_FAIL(problem);
 }
@@ -152,14 +124,14 @@ pg::GPath scaled_and_split(const pg::GPath& p, std::int64_t k) {
 // rule: PATH.WINDING, PATH.SAMPLE.TIE
 RC_GTEST_PROP(PathOracle, CurveDecisionsSurviveSplittingAtOneHalf, ()) {
   pg::GPath p;
-  p.contours.push_back(*pg::curve_contour(kSide));
+  p.contours.push_back(*pg::curve_contour(pc::kSide));
   p.kind = pg::PathKind::kCurves;
-  show_path(p);
+  pc::show_path(p);
   const pg::GPath split = scaled_and_split(p, 8);
   const op::Path a = pg::to_oracle(p), b = pg::to_oracle(split);
   std::vector<Raw2> samples = pg::tie_points(p);
-  for (std::int64_t y = 0; y < kSide * 256; y += 64)
-    for (std::int64_t x = 0; x < kSide * 256; x += 64)
+  for (std::int64_t y = 0; y < pc::kSide * 256; y += 64)
+    for (std::int64_t x = 0; x < pc::kSide * 256; x += 64)
       samples.push_back({x + 32, y + 32});
   for (const Raw2& s : samples) {
     for (const std::string& fill : pg::conventions()) {
@@ -174,7 +146,7 @@ RC_GTEST_PROP(PathOracle, CurveDecisionsSurviveSplittingAtOneHalf, ()) {
 
 // rule: PATH.WINDING, PATH.SAMPLE.TIE
 RC_GTEST_PROP(PathOracle, QuadraticEqualsItsDegreeElevatedCubic, ()) {
-  const Raw2 p0 = *pg::point(kSide), p1 = *pg::point(kSide), p2 = *pg::point(kSide);
+  const Raw2 p0 = *pg::point(pc::kSide), p1 = *pg::point(pc::kSide), p2 = *pg::point(pc::kSide);
   const auto mul3 = [](Raw2 r) { return Raw2{3 * r[0], 3 * r[1]}; };
   const pg::GPath quad{pg::PathKind::kCurves,
                        false,
@@ -187,7 +159,7 @@ RC_GTEST_PROP(PathOracle, QuadraticEqualsItsDegreeElevatedCubic, ()) {
                                                   {{p0[0] + 2 * p1[0], p0[1] + 2 * p1[1]},
                                                    {2 * p1[0] + p2[0], 2 * p1[1] + p2[1]},
                                                    mul3(p2)}}}}}};
-  show_path(quad);
+  pc::show_path(quad);
   const op::Path a = pg::to_oracle(quad), b = pg::to_oracle(cubic);
   std::vector<Raw2> samples = pg::tie_points(quad);
   for (const Raw2& s : samples) {

@@ -11,6 +11,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <map>
@@ -27,6 +28,15 @@ namespace pg = rastrules::path_gen;
 using Pixel = std::pair<std::int32_t, std::int32_t>; // (y, x): row order
 using Masks = std::map<Pixel, std::uint32_t>;
 using Areas = std::map<Pixel, mpq_class>;
+
+// The side of the target (px) of most properties: small, so that ties are frequent.
+inline constexpr std::int32_t kSide = 4;
+
+inline void show_path(const pg::GPath& p) {
+  std::ostringstream os;
+  pg::show(p, os);
+  RC_LOG() << os.str() << "\n";
+}
 
 inline mpq_class rational(const std::string& num, const std::string& den) {
   mpq_class q{mpz_class(num), mpz_class(den)};
@@ -87,6 +97,46 @@ inline std::string area_sum_problem(const Areas& whole, const Areas& first, cons
              a[2].get_str();
   }
   return "";
+}
+
+// A convex polygon cut along a chord (paths[0]) and its halves (paths[1], paths[2]), one fill
+// rule for all three, a fill convention and a standard pattern; logged and classified.
+struct CutCase {
+  std::array<pg::GPath, 3> paths;
+  std::string fill;
+  std::vector<oracle::msaa::Offset> pattern;
+};
+
+inline CutCase cut_case(std::int32_t side) {
+  const pg::CutPolygon c = *pg::cut_polygon(side);
+  const bool evenodd = *rc::gen::arbitrary<bool>();
+  CutCase out;
+  out.paths = {pg::GPath{pg::PathKind::kPolygon, evenodd, {c.whole}},
+               pg::GPath{pg::PathKind::kPolygon, evenodd, {c.first}},
+               pg::GPath{pg::PathKind::kPolygon, evenodd, {c.second}}};
+  for (const pg::GPath& p : out.paths)
+    show_path(p);
+  RC_CLASSIFY(c.chord_polyline, "chord is a polyline");
+  out.fill = *rc::gen::elementOf(pg::conventions());
+  out.pattern = oracle::msaa::standard_pattern(*rc::gen::element(1u, 4u, 16u));
+  const pg::Ties t = pg::ties(out.paths[0], out.pattern, side);
+  RC_CLASSIFY(t.on_vertex, "sample on a vertex");
+  RC_CLASSIFY(t.on_edge, "sample on an edge");
+  return out;
+}
+
+// Fails the property unless the halves partition the whole's samples and sum to its areas,
+// with masks(path) and areas(path) from one renderer.
+template <class MasksOf, class AreasOf>
+void check_cut(const CutCase& c, MasksOf masks, AreasOf areas) {
+  const std::string problem =
+      partition_problem(masks(c.paths[0]), masks(c.paths[1]), masks(c.paths[2]));
+  if (!problem.empty())
+    RC_FAIL(c.fill + ": " + problem);
+  const std::string area =
+      area_sum_problem(areas(c.paths[0]), areas(c.paths[1]), areas(c.paths[2]));
+  if (!area.empty())
+    RC_FAIL(area);
 }
 
 // The 4 x 4 grid pattern: sample (i, j) at the centre of the cell [i/4, (i+1)/4] x [j/4,
