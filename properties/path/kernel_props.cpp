@@ -372,6 +372,7 @@ RC_GTEST_PROP(PathKernel, TranslationByWholePixels, ()) {
   const std::int32_t dx = *rc::gen::inRange(-2, 3), dy = *rc::gen::inRange(-2, 3);
   const pg::GPath q = pg::translated(p, 256 * dx, 256 * dy);
   show_path(p);
+  RC_PRE(pg::in_range(q));
   RC_TAG(pg::name(p.kind));
   const std::string fill = *rc::gen::elementOf(pg::conventions());
   const rastrules::SamplePattern kpat = kernel_pattern(any_standard_pattern());

@@ -32,6 +32,9 @@ namespace rastrules::path_gen {
 namespace op = rastrules::oracle::path;
 using Raw2 = op::Raw2;
 
+// The snapped range: |raw| <= 2^23 (SNAP.VERTEX.RANGE, with 2^23 itself as a bound).
+inline constexpr std::int64_t kMaxRaw = std::int64_t{1} << 23;
+
 enum class PathKind {
   kPolygon,      // random vertices: often self-intersecting
   kStar,         // a star polygon {n/k} around a centre: simple for k = 1, else crossing
@@ -39,12 +42,13 @@ enum class PathKind {
   kNested,       // nested polygons around one centre, each orientation at random
   kTies,         // vertices on the 1/16 px grid of a tiny region: ties everywhere
   kDegenerate,   // repeated points, doubled-back edges, one-point and empty contours
+  kHuge,         // vertices anywhere in the snapped range (+-2^23 raw) among near ones
   kCurves,       // quadratics and cubics among lines, some with cusps and loops
 };
 
 inline const char* name(PathKind k) {
-  static constexpr std::array<const char*, 7> kNames = {
-      "polygon", "star", "many contours", "nested", "ties", "degenerate", "curves"};
+  static constexpr std::array<const char*, 8> kNames = {
+      "polygon", "star", "many contours", "nested", "ties", "degenerate", "huge", "curves"};
   return kNames[static_cast<std::size_t>(k)];
 }
 
@@ -124,6 +128,21 @@ inline GPath translated(GPath p, std::int64_t dx, std::int64_t dy) {
         t(r);
   }
   return p;
+}
+
+// Returns whether every point of p lies in the snapped range, |raw| <= 2^23.
+inline bool in_range(const GPath& p) {
+  const auto ok = [](const Raw2& r) {
+    return -kMaxRaw <= r[0] && r[0] <= kMaxRaw && -kMaxRaw <= r[1] && r[1] <= kMaxRaw;
+  };
+  for (const GContour& c : p.contours) {
+    if (!ok(c.start))
+      return false;
+    for (const GPiece& q : c.pieces)
+      if (!std::all_of(q.pts.begin(), q.pts.end(), ok))
+        return false;
+  }
+  return true;
 }
 
 inline bool has_curves(const GPath& p) {
@@ -255,7 +274,7 @@ inline rc::Gen<GPath> path(std::int32_t side, bool curves) {
   return full_size<GPath>(rc::gen::exec([side, curves] {
     GPath p;
     p.evenodd = *rc::gen::arbitrary<bool>();
-    const int kinds = curves ? 7 : 6;
+    const int kinds = curves ? 8 : 7;
     p.kind = static_cast<PathKind>(*rc::gen::inRange(0, kinds));
     const Raw2 mid{side * 128, side * 128};
     switch (p.kind) {
@@ -313,6 +332,25 @@ inline rc::Gen<GPath> path(std::int32_t side, bool curves) {
       p.contours.push_back(polygon(v));
       p.contours.push_back(GContour{*point(side), {}});
       p.contours.push_back(polygon({v[0], v[2], v[0]}));
+      break;
+    }
+    case PathKind::kHuge: {
+      // Far vertices (the range ends, 2^23 raw = 32768 px, and random far points) with near
+      // ones: long edges crossing the target at every slope.
+      std::vector<Raw2> v = random_points(side, 2, 5);
+      const int far = *rc::gen::inRange(1, 4);
+      for (int i = 0; i < far; ++i) {
+        const auto c = [] {
+          return *rc::gen::weightedOneOf<std::int64_t>(
+              {{1, rc::gen::element<std::int64_t>(-kMaxRaw, kMaxRaw, -kMaxRaw + 1, kMaxRaw - 1)},
+               {2, rc::gen::inRange<std::int64_t>(-kMaxRaw, kMaxRaw + 1)}});
+        };
+        const Raw2 q{c(), c()};
+        v.insert(v.begin() + *rc::gen::inRange<std::ptrdiff_t>(
+                                 0, static_cast<std::ptrdiff_t>(v.size()) + 1),
+                 q);
+      }
+      p.contours.push_back(polygon(v));
       break;
     }
     case PathKind::kCurves: {
@@ -449,6 +487,10 @@ inline std::vector<Raw2> tie_points(const GPath& p) {
     out.push_back({r[0], r[1] + 1});
     out.push_back({r[0], r[1] - 1});
   }
+  // Only points in the snapped range (the neighbours of a vertex at +-2^23 are not).
+  std::erase_if(out, [](const Raw2& r) {
+    return r[0] < -kMaxRaw || r[0] > kMaxRaw || r[1] < -kMaxRaw || r[1] > kMaxRaw;
+  });
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
