@@ -6,6 +6,9 @@
 // degree elevation (both done on coordinates scaled so that they stay integers).
 // Implements (properties for): PATH.WINDING, PATH.FILL.RULE, PATH.SAMPLE.TIE, PATH.AREA.EXACT
 
+#include <algorithm>
+#include <array>
+#include <climits>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -142,6 +145,143 @@ RC_GTEST_PROP(PathOracle, CurveDecisionsSurviveSplittingAtOneHalf, ()) {
                 std::to_string(wa) + " before, " + std::to_string(wb) + " after");
     }
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Curves against an independent reference: away from a curve, a flattening decides exactly.
+
+struct QPoint {
+  mpq_class x, y;
+};
+
+// The contract's line rule, written again over rationals (the oracle's is in int64).
+int rational_line_crossing(const QPoint& a, const QPoint& b, const Raw2& s, int sx, int sy) {
+  if (a.y == b.y)
+    return 0;
+  const mpq_class X(s[0]), Y(s[1]);
+  const mpq_class lo = a.y < b.y ? a.y : b.y, hi = a.y < b.y ? b.y : a.y;
+  const bool in_y = sy > 0 ? (lo <= Y && Y < hi) : (lo < Y && Y <= hi);
+  if (!in_y)
+    return 0;
+  const mpq_class xc = a.x + (b.x - a.x) * (Y - a.y) / (b.y - a.y);
+  const bool right = xc > X || (xc == X && sx < 0);
+  return right ? (b.y > a.y ? 1 : -1) : 0;
+}
+
+mpq_class orient(const QPoint& a, const QPoint& b, const Raw2& p) {
+  return (b.x - a.x) * (mpq_class(p[1]) - a.y) - (b.y - a.y) * (mpq_class(p[0]) - a.x);
+}
+
+// Returns whether p lies in the closed convex hull of the control points (some closed
+// triangle of three of them contains it; on a degenerate hull's line: counted as inside).
+bool in_hull(const std::vector<QPoint>& c, const Raw2& p) {
+  for (std::size_t i = 0; i < c.size(); ++i)
+    for (std::size_t j = i + 1; j < c.size(); ++j)
+      for (std::size_t k = j + 1; k < c.size(); ++k) {
+        const int a = sgn(orient(c[i], c[j], p)), b = sgn(orient(c[j], c[k], p)),
+                  d = sgn(orient(c[k], c[i], p));
+        if ((a >= 0 && b >= 0 && d >= 0) || (a <= 0 && b <= 0 && d <= 0))
+          return true;
+      }
+  return false;
+}
+
+// Splits the control polygon at t = 1/2 `depth` times (de Casteljau, exact).
+void subdivide(const std::vector<QPoint>& c, int depth, std::vector<std::vector<QPoint>>& out) {
+  if (depth == 0) {
+    out.push_back(c);
+    return;
+  }
+  std::vector<std::vector<QPoint>> levels{c};
+  while (levels.back().size() > 1) {
+    std::vector<QPoint> next;
+    for (std::size_t i = 0; i + 1 < levels.back().size(); ++i)
+      next.push_back({(levels.back()[i].x + levels.back()[i + 1].x) / 2,
+                      (levels.back()[i].y + levels.back()[i + 1].y) / 2});
+    levels.push_back(next);
+  }
+  std::vector<QPoint> left, right;
+  for (const auto& l : levels)
+    left.push_back(l.front());
+  for (auto l = levels.rbegin(); l != levels.rend(); ++l)
+    right.push_back(l->back());
+  subdivide(left, depth - 1, out);
+  subdivide(right, depth - 1, out);
+}
+
+// A curve's winding number at a sample outside the hull of every piece of its subdivision is
+// that of the polyline through the pieces' ends (curve and chord stay inside the piece's hull,
+// so moving one onto the other never crosses the sample): the oracle's root isolation must
+// give exactly the flattening's answer there, under every convention.
+// rule: PATH.WINDING, PATH.SAMPLE.TIE, PATH.GEOMETRY
+RC_GTEST_PROP(PathOracle, CurveWindingEqualsAFlatteningAwayFromTheCurve, ()) {
+  pg::GPath p{pg::PathKind::kCurves, false, {}};
+  const int n = *rc::gen::inRange(1, 3);
+  for (int i = 0; i < n; ++i)
+    p.contours.push_back(*pg::curve_contour(pc::kSide));
+  pc::show_path(p);
+  std::vector<std::array<QPoint, 2>> chords;      // the flattening
+  std::vector<std::vector<QPoint>> hulls;         // where it may differ from the curve
+  std::vector<std::array<std::int64_t, 4>> boxes; // integer boxes around the hulls
+  for (const pg::GContour& c : p.contours) {
+    const std::vector<Raw2> ends = pg::closed_ends(c);
+    for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
+      std::vector<QPoint> ctrl{{mpq_class(ends[i][0]), mpq_class(ends[i][1])}};
+      if (i < c.pieces.size())
+        for (const Raw2& r : c.pieces[i].pts)
+          ctrl.push_back({mpq_class(r[0]), mpq_class(r[1])});
+      else
+        ctrl.push_back({mpq_class(ends[i + 1][0]), mpq_class(ends[i + 1][1])});
+      std::vector<std::vector<QPoint>> pieces;
+      subdivide(ctrl, ctrl.size() > 2 ? 4 : 0, pieces);
+      for (const auto& piece : pieces) {
+        chords.push_back({piece.front(), piece.back()});
+        if (piece.size() > 2) {
+          hulls.push_back(piece);
+          std::array<std::int64_t, 4> b{INT64_MAX, INT64_MAX, INT64_MIN, INT64_MIN};
+          for (const QPoint& q : piece) {
+            const mpz_class fx = q.x.get_num() / q.x.get_den(); // truncation: +-1 below
+            const mpz_class fy = q.y.get_num() / q.y.get_den();
+            b = {std::min(b[0], fx.get_si() - 1), std::min(b[1], fy.get_si() - 1),
+                 std::max(b[2], fx.get_si() + 1), std::max(b[3], fy.get_si() + 1)};
+          }
+          boxes.push_back(b);
+        }
+      }
+    }
+  }
+  const op::Path o = pg::to_oracle(p);
+  const std::string fill = *rc::gen::elementOf(pg::conventions());
+  const op::Raw2 d = fill == "top-left"      ? op::Raw2{1, 1}
+                     : fill == "top-right"   ? op::Raw2{-1, 1}
+                     : fill == "bottom-left" ? op::Raw2{1, -1}
+                                             : op::Raw2{-1, -1};
+  std::size_t tested = 0, near = 0;
+  for (std::int64_t y = -64; y <= pc::kSide * 256 + 64; y += 48) {
+    for (std::int64_t x = -64; x <= pc::kSide * 256 + 64; x += 48) {
+      const Raw2 s{x, y};
+      bool inside = false;
+      for (std::size_t h = 0; h < hulls.size() && !inside; ++h) {
+        const auto& b = boxes[h];
+        inside = x >= b[0] && x <= b[2] && y >= b[1] && y <= b[3] && in_hull(hulls[h], s);
+      }
+      if (inside) {
+        ++near;
+        continue;
+      }
+      std::int64_t expected = 0;
+      for (const auto& ch : chords)
+        expected +=
+            rational_line_crossing(ch[0], ch[1], s, static_cast<int>(d[0]), static_cast<int>(d[1]));
+      const std::int64_t got = op::winding(o, s, fill);
+      if (got != expected)
+        RC_FAIL("(" + std::to_string(x) + ", " + std::to_string(y) + ") raw, " + fill +
+                ": oracle " + std::to_string(got) + ", flattening " + std::to_string(expected));
+      ++tested;
+    }
+  }
+  RC_CLASSIFY(near > 0, "samples near a curve skipped");
+  RC_CLASSIFY(tested < 100, "fewer than 100 samples tested");
 }
 
 // rule: PATH.WINDING, PATH.SAMPLE.TIE
