@@ -84,58 +84,18 @@ RC_GTEST_PROP(PathOracle, AreaWithinTheGridBoundOfItsSamples, ()) {
     RC_FAIL(problem);
 }
 
-// Returns the path with every coordinate multiplied by k, each curve split at t = 1/2 (de
-// Casteljau: with k a multiple of 8 every point stays an integer).
-pg::GPath scaled_and_split(const pg::GPath& p, std::int64_t k) {
-  const auto mul = [k](Raw2 r) { return Raw2{k * r[0], k * r[1]}; };
-  const auto mid = [](Raw2 a, Raw2 b) { return Raw2{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2}; };
-  pg::GPath out{p.kind, p.evenodd, {}};
-  for (const pg::GContour& c : p.contours) {
-    pg::GContour oc{mul(c.start), {}};
-    Raw2 cur = oc.start;
-    for (const pg::GPiece& q : c.pieces) {
-      std::vector<Raw2> ctrl{cur};
-      for (const Raw2& r : q.pts)
-        ctrl.push_back(mul(r));
-      if (q.degree == 1) {
-        oc.pieces.push_back(pg::GPiece{1, {ctrl[1]}});
-      } else {
-        // de Casteljau at 1/2: the left half's controls are the first points of each level,
-        // the right half's the last ones.
-        std::vector<std::vector<Raw2>> levels{ctrl};
-        while (levels.back().size() > 1) {
-          std::vector<Raw2> next;
-          for (std::size_t i = 0; i + 1 < levels.back().size(); ++i)
-            next.push_back(mid(levels.back()[i], levels.back()[i + 1]));
-          levels.push_back(next);
-        }
-        pg::GPiece left{q.degree, {}}, right{q.degree, {}};
-        for (std::size_t l = 1; l < levels.size(); ++l)
-          left.pts.push_back(levels[l].front());
-        for (std::size_t l = levels.size() - 1; l-- > 0;)
-          right.pts.push_back(levels[l].back());
-        oc.pieces.push_back(left);
-        oc.pieces.push_back(right);
-      }
-      cur = ctrl.back();
-    }
-    out.contours.push_back(oc);
-  }
-  return out;
-}
-
 // rule: PATH.WINDING, PATH.SAMPLE.TIE
 RC_GTEST_PROP(PathOracle, CurveDecisionsSurviveSplittingAtOneHalf, ()) {
   pg::GPath p;
   p.contours.push_back(*pg::curve_contour(pc::kSide));
   p.kind = pg::PathKind::kCurves;
   pc::show_path(p);
-  const pg::GPath split = scaled_and_split(p, 8);
+  const pg::GPath split = pg::scaled_and_split(p, 8);
   const op::Path a = pg::to_oracle(p), b = pg::to_oracle(split);
   std::vector<Raw2> samples = pg::tie_points(p);
-  for (std::int64_t y = 0; y < pc::kSide * 256; y += 64)
-    for (std::int64_t x = 0; x < pc::kSide * 256; x += 64)
-      samples.push_back({x + 32, y + 32});
+  for (std::int64_t y = 0; y < pc::kSide * 256; y += 128)
+    for (std::int64_t x = 0; x < pc::kSide * 256; x += 128)
+      samples.push_back({x + 64, y + 64});
   for (const Raw2& s : samples) {
     for (const std::string& fill : pg::conventions()) {
       const std::int64_t wa = op::winding(a, s, fill),

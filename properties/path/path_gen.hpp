@@ -18,6 +18,7 @@
 #include <numeric>
 #include <ostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -145,6 +146,46 @@ inline bool in_range(const GPath& p) {
   return true;
 }
 
+// Returns the path with every coordinate multiplied by k, each curve split at t = 1/2 (de
+// Casteljau: with k a multiple of 8 every point stays an integer).
+inline GPath scaled_and_split(const GPath& p, std::int64_t k) {
+  const auto mul = [k](Raw2 r) { return Raw2{k * r[0], k * r[1]}; };
+  const auto mid = [](Raw2 a, Raw2 b) { return Raw2{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2}; };
+  GPath out{p.kind, p.evenodd, {}};
+  for (const GContour& c : p.contours) {
+    GContour oc{mul(c.start), {}};
+    Raw2 cur = oc.start;
+    for (const GPiece& q : c.pieces) {
+      std::vector<Raw2> ctrl{cur};
+      for (const Raw2& r : q.pts)
+        ctrl.push_back(mul(r));
+      if (q.degree == 1) {
+        oc.pieces.push_back(GPiece{1, {ctrl[1]}});
+      } else {
+        // de Casteljau at 1/2: the left half's controls are the first points of each level,
+        // the right half's the last ones.
+        std::vector<std::vector<Raw2>> levels{ctrl};
+        while (levels.back().size() > 1) {
+          std::vector<Raw2> next;
+          for (std::size_t i = 0; i + 1 < levels.back().size(); ++i)
+            next.push_back(mid(levels.back()[i], levels.back()[i + 1]));
+          levels.push_back(next);
+        }
+        GPiece left{q.degree, {}}, right{q.degree, {}};
+        for (std::size_t l = 1; l < levels.size(); ++l)
+          left.pts.push_back(levels[l].front());
+        for (std::size_t l = levels.size() - 1; l-- > 0;)
+          right.pts.push_back(levels[l].back());
+        oc.pieces.push_back(left);
+        oc.pieces.push_back(right);
+      }
+      cur = ctrl.back();
+    }
+    out.contours.push_back(oc);
+  }
+  return out;
+}
+
 inline bool has_curves(const GPath& p) {
   for (const GContour& c : p.contours)
     for (const GPiece& q : c.pieces)
@@ -238,6 +279,68 @@ inline std::vector<Raw2> star_points(Raw2 c, double r, int n, int k, double phas
   return v;
 }
 
+// Returns the least v + d, d in [0, 6), for which pred holds (every use asks for a residue
+// modulo 2, 3 or 6).
+template <class Pred> std::int64_t nudge(std::int64_t v, Pred pred) {
+  for (std::int64_t d = 0; d < 6; ++d) {
+    if (pred(v + d))
+      return v + d;
+  }
+  throw std::logic_error("path_gen: no nudge found");
+}
+
+// A curve piece from cur through the sample-grid point S at t = 1/2, with a horizontal or
+// vertical tangent, an exact cusp, or a horizontal inflection there: the ties of curves.
+inline GPiece curve_through(const Raw2& cur, const Raw2& s, std::int32_t side) {
+  const int form = *rc::gen::inRange(0, 6);
+  Raw2 end = *point(side);
+  switch (form) {
+  case 0:   // quadratic, horizontal tangent at S: y(t) has its extremum there
+  case 1:   // quadratic, vertical tangent at S
+  case 2: { // quadratic through S
+    // B(1/2) = (P0 + 2 P1 + P2) / 4 = S: P1 = (4 S - P0 - P2) / 2, P0 + P2 even.
+    if (form == 0)
+      end[1] = cur[1];
+    if (form == 1)
+      end[0] = cur[0];
+    for (std::size_t k = 0; k < 2; ++k)
+      end[k] = nudge(end[k], [&](std::int64_t v) { return (cur[k] + v) % 2 == 0; });
+    const Raw2 ctrl{(4 * s[0] - cur[0] - end[0]) / 2, (4 * s[1] - cur[1] - end[1]) / 2};
+    return GPiece{2, {ctrl, end}};
+  }
+  case 3: { // cubic with a cusp at S: B'(1/2) = 0 iff P3 = P0 + P1 - P2; B(1/2) = S iff
+            // P2 = 4 S - P0 - 2 P1.
+    const Raw2 p1 = *point(side);
+    const Raw2 p2{4 * s[0] - cur[0] - 2 * p1[0], 4 * s[1] - cur[1] - 2 * p1[1]};
+    return GPiece{3, {p1, p2, {cur[0] + p1[0] - p2[0], cur[1] + p1[1] - p2[1]}}};
+  }
+  case 4: { // cubic with a horizontal inflection at S: y controls S.y - k, S.y + k, S.y - k,
+            // S.y + k (y(t) - S.y = 8 k (t - 1/2)^3), so the start's y is S.y - k.
+    const std::int64_t k = s[1] - cur[1];
+    const std::int64_t x1 = *coord(side);
+    // x(1/2) = (x0 + 3 x1 + 3 x2 + x3) / 8 = S.x.
+    const std::int64_t x3 = nudge(
+        *coord(side), [&](std::int64_t v) { return (8 * s[0] - cur[0] - 3 * x1 - v) % 3 == 0; });
+    const std::int64_t x2 = (8 * s[0] - cur[0] - 3 * x1 - x3) / 3;
+    return GPiece{3, {{x1, s[1] + k}, {x2, s[1] - k}, {x3, s[1] + k}}};
+  }
+  default: { // cubic with a horizontal tangent at S: 3 (y1 + y2) = 8 S.y - y0 - y3 and
+             // y2 - y1 = y0 - y3 (B'(1/2) = 3/4 (P3 + P2 - P1 - P0)).
+    const std::int64_t y3 = nudge(end[1], [&](std::int64_t v) {
+      const std::int64_t a = 8 * s[1] - cur[1] - v;
+      return a % 3 == 0 && (a / 3 + cur[1] - v) % 2 == 0;
+    });
+    const std::int64_t sum = (8 * s[1] - cur[1] - y3) / 3, diff = cur[1] - y3;
+    const std::int64_t y2 = (sum + diff) / 2, y1 = sum - y2;
+    const std::int64_t x1 = *coord(side);
+    const std::int64_t x3 =
+        nudge(end[0], [&](std::int64_t v) { return (8 * s[0] - cur[0] - 3 * x1 - v) % 3 == 0; });
+    const std::int64_t x2 = (8 * s[0] - cur[0] - 3 * x1 - x3) / 3;
+    return GPiece{3, {{x1, y1}, {x2, y2}, {x3, y3}}};
+  }
+  }
+}
+
 inline rc::Gen<GContour> curve_contour(std::int32_t side) {
   return rc::gen::exec([side] {
     GContour c{*point(side), {}};
@@ -248,11 +351,10 @@ inline rc::Gen<GContour> curve_contour(std::int32_t side) {
       GPiece q{degree, {}};
       for (int k = 0; k < degree; ++k)
         q.pts.push_back(*point(side));
-      const int shape = *rc::gen::inRange(0, 6);
+      const int shape = *rc::gen::inRange(0, 7);
       if (degree == 3 && shape == 1) {
-        // A cusp: controls crossing over (P1 - P0 and P3 - P2 in line, reversed order).
-        std::swap(q.pts[0], q.pts[1]);
-        q.pts[1] = {2 * q.pts[2][0] - q.pts[0][0], 2 * q.pts[2][1] - q.pts[0][1]};
+        // An exact cusp at t = 1/2: P3 = P0 + P1 - P2.
+        q.pts[2] = {cur[0] + q.pts[0][0] - q.pts[1][0], cur[1] + q.pts[0][1] - q.pts[1][1]};
       } else if (degree == 3 && shape == 2) {
         // A loop: controls beyond the end points, crossing.
         const Raw2 end = q.pts[2];
@@ -261,6 +363,11 @@ inline rc::Gen<GContour> curve_contour(std::int32_t side) {
       } else if (degree >= 2 && shape == 3) {
         // A horizontal tangent: a control at the start's height.
         q.pts[0][1] = cur[1];
+      } else if (degree >= 2 && shape >= 5) {
+        // Through a sample-grid point (often a pixel centre) with a tie there.
+        const Raw2 s{16 * *rc::gen::inRange<std::int64_t>(0, side * 16),
+                     16 * *rc::gen::inRange<std::int64_t>(0, side * 16)};
+        q = curve_through(cur, *rc::gen::element(s, Raw2{s[0] | 128, s[1] | 128}), side);
       }
       cur = q.pts.back();
       c.pieces.push_back(q);
@@ -465,6 +572,21 @@ inline std::vector<Raw2> tie_points(const GPath& p) {
     const std::vector<Raw2> v = points(c);
     base.insert(base.end(), v.begin(), v.end());
     const std::vector<Raw2> ends = closed_ends(c);
+    // A curve's point at t = 1/2 when it is a raw point: (P0 + 2 P1 + P2) / 4 or
+    // (P0 + 3 P1 + 3 P2 + P3) / 8.
+    for (std::size_t i = 0; i < c.pieces.size(); ++i) {
+      const GPiece& q = c.pieces[i];
+      if (q.degree == 1)
+        continue;
+      const std::int64_t den = q.degree == 2 ? 4 : 8;
+      Raw2 m{};
+      for (std::size_t k = 0; k < 2; ++k) {
+        m[k] = q.degree == 2 ? ends[i][k] + 2 * q.pts[0][k] + q.pts[1][k]
+                             : ends[i][k] + 3 * q.pts[0][k] + 3 * q.pts[1][k] + q.pts[2][k];
+      }
+      if (m[0] % den == 0 && m[1] % den == 0)
+        base.push_back({m[0] / den, m[1] / den});
+    }
     for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
       const Raw2 a = ends[i], b = ends[i + 1];
       const std::int64_t dx = b[0] - a[0], dy = b[1] - a[1];
