@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <climits>
 #include <cstdint>
 #include <string>
@@ -146,27 +147,38 @@ bool in_hull(const std::vector<QPoint>& c, const Raw2& p) {
   return false;
 }
 
-// Splits the control polygon at t = 1/2 `depth` times (de Casteljau, exact).
-void subdivide(const std::vector<QPoint>& c, int depth, std::vector<std::vector<QPoint>>& out) {
-  if (depth == 0) {
-    out.push_back(c);
-    return;
+// Returns the blossom (polar form) of the Bezier curve with control points c at (u_1, ..., u_n),
+// n the degree: the sum over i of c[i] times the sum over the i-element subsets S of
+// {1..n} of prod_{j in S} u_j prod_{j not in S} (1 - u_j).
+QPoint blossom(const std::vector<QPoint>& c, const std::vector<mpq_class>& u) {
+  const std::size_t n = u.size();
+  QPoint r{0, 0};
+  for (std::uint32_t subset = 0; subset < (1u << n); ++subset) {
+    mpq_class weight = 1;
+    for (std::size_t j = 0; j < n; ++j)
+      weight *= (subset >> j) & 1u ? u[j] : 1 - u[j];
+    const QPoint& p = c[static_cast<std::size_t>(std::popcount(subset))];
+    r.x += weight * p.x;
+    r.y += weight * p.y;
   }
-  std::vector<std::vector<QPoint>> levels{c};
-  while (levels.back().size() > 1) {
-    std::vector<QPoint> next;
-    for (std::size_t i = 0; i + 1 < levels.back().size(); ++i)
-      next.push_back({(levels.back()[i].x + levels.back()[i + 1].x) / 2,
-                      (levels.back()[i].y + levels.back()[i + 1].y) / 2});
-    levels.push_back(next);
+  return r;
+}
+
+// Splits the curve into `parts` pieces of equal parameter length, each given by its control
+// points: the blossom at (a, ..., a, b, ..., b) for the piece [a, b] (an independent
+// derivation; the oracle's bounded areas use de Casteljau).
+void subdivide(const std::vector<QPoint>& c, int parts, std::vector<std::vector<QPoint>>& out) {
+  const std::size_t n = c.size() - 1;
+  for (int k = 0; k < parts; ++k) {
+    const mpq_class a = mpq_class(k) / parts, b = mpq_class(k + 1) / parts;
+    std::vector<QPoint> piece;
+    for (std::size_t i = 0; i <= n; ++i) {
+      std::vector<mpq_class> u(n, a);
+      std::fill(u.begin() + static_cast<std::ptrdiff_t>(n - i), u.end(), b);
+      piece.push_back(blossom(c, u));
+    }
+    out.push_back(piece);
   }
-  std::vector<QPoint> left, right;
-  for (const auto& l : levels)
-    left.push_back(l.front());
-  for (auto l = levels.rbegin(); l != levels.rend(); ++l)
-    right.push_back(l->back());
-  subdivide(left, depth - 1, out);
-  subdivide(right, depth - 1, out);
 }
 
 // A curve's winding number at a sample outside the hull of every piece of its subdivision is
@@ -193,7 +205,7 @@ RC_GTEST_PROP(PathOracle, CurveWindingEqualsAFlatteningAwayFromTheCurve, ()) {
       else
         ctrl.push_back({mpq_class(ends[i + 1][0]), mpq_class(ends[i + 1][1])});
       std::vector<std::vector<QPoint>> pieces;
-      subdivide(ctrl, ctrl.size() > 2 ? 4 : 0, pieces);
+      subdivide(ctrl, ctrl.size() > 2 ? 16 : 1, pieces);
       for (const auto& piece : pieces) {
         chords.push_back({piece.front(), piece.back()});
         if (piece.size() > 2) {
