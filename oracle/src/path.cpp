@@ -2,7 +2,8 @@
 // Exact oracle for 2D paths (rastrules/oracle/path.hpp). No kernel code, no kernel formula:
 // lines are decided by the words of the boundary convention, curves by exact root isolation
 // (Sturm-Tarski queries over GMP rationals), areas by a CGAL arrangement over GMP rationals.
-// Implements (as oracle): PATH.WINDING, PATH.FILL.RULE, PATH.SAMPLE.TIE, PATH.AREA.EXACT
+// Implements (as oracle): PATH.GEOMETRY, PATH.CONTOUR.CLOSE, PATH.WINDING, PATH.FILL.RULE,
+//   PATH.SAMPLE.TIE, PATH.COVER.SAMPLE, PATH.AREA.EXACT, PATH.DEGENERATE
 
 #include "rastrules/oracle/path.hpp"
 
@@ -13,10 +14,12 @@
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/Gmpq.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/convex_hull_2.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <deque>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -214,7 +217,8 @@ Poly bezier(const std::vector<mpq_class>& c) {
 //    quadratic whose arc is the displacement parabola itself (P0 = s, P1 = s + (sx/2, 0) px,
 //    P2 = s + (sx, sy) px) s' lies on the boundary: the literal reading is undefined there.
 //    This oracle implements the lexicographic reading (y displaced infinitely less than any
-//    power of the x displacement), which agrees with the literal one whenever m = 1.
+//    power of the x displacement), which agrees with the literal one whenever m = 1: it is
+//    PATH.SAMPLE.TIE as spec/rules/path.md states it (s + (hx eps, hy delta), delta << eps).
 // rule: PATH.WINDING, PATH.SAMPLE.TIE
 std::int64_t piece_crossings(const Poly& x, const Poly& y, const Raw2& s, Displacement d) {
   Poly f = y;
@@ -405,69 +409,119 @@ mpq_class to_mpq(const CGAL::Gmpq& q) {
   return mpq_class(q.mpq());
 }
 
-std::int64_t floor_div(std::int64_t a, std::int64_t b) { // b > 0
-  return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
-
-struct Seg {
-  Raw2 a, b;
-};
-
-// The path's straight segments, each closing line included, zero-length ones left out.
-std::vector<Seg> segments_of(const Path& p) {
-  std::vector<Seg> out;
-  for (const Contour& c : p.contours) {
-    Raw2 cur = c.start;
-    for (const Piece& pc : c.pieces) {
-      if (pc.kind != PieceKind::kLine)
-        throw std::invalid_argument("oracle: area coverage of curves is not modelled");
-      if (pc.to.back() != cur)
-        out.push_back(Seg{cur, pc.to.back()});
-      cur = pc.to.back();
-    }
-    if (cur != c.start)
-      out.push_back(Seg{cur, c.start});
-  }
-  return out;
-}
-
 APoint apoint(const Raw2& r) {
   return APoint(CGAL::Gmpq(static_cast<long>(r[0])), CGAL::Gmpq(static_cast<long>(r[1])));
 }
 
+// The path as straight segments, closing lines included, zero-length ones left out: each
+// curve split 'depth' times at t = 1/2 (de Casteljau, exact) and replaced by its pieces'
+// chords, the pieces' control polygons kept in 'pieces' (where the chords may differ from the
+// curve: each piece and its chord lie in the hull of its control points).
+struct Flat {
+  std::vector<ASegment> segs;
+  std::vector<std::vector<APoint>> pieces;
+};
+
+void split_curve(const std::vector<APoint>& c, int depth, Flat& out) {
+  if (depth == 0) {
+    if (c.front() != c.back())
+      out.segs.emplace_back(c.front(), c.back());
+    out.pieces.push_back(c);
+    return;
+  }
+  std::vector<std::vector<APoint>> levels{c};
+  while (levels.back().size() > 1) {
+    std::vector<APoint> next;
+    for (std::size_t i = 0; i + 1 < levels.back().size(); ++i)
+      next.push_back(CGAL::midpoint(levels.back()[i], levels.back()[i + 1]));
+    levels.push_back(next);
+  }
+  std::vector<APoint> left, right;
+  for (const auto& l : levels)
+    left.push_back(l.front());
+  for (auto l = levels.rbegin(); l != levels.rend(); ++l)
+    right.push_back(l->back());
+  split_curve(left, depth - 1, out);
+  split_curve(right, depth - 1, out);
+}
+
+// depth < 0: curves are not allowed (exact areas of lines only).
+Flat flatten(const Path& p, int depth) {
+  Flat out;
+  for (const Contour& c : p.contours) {
+    Raw2 cur = c.start;
+    for (const Piece& pc : c.pieces) {
+      if (pc.kind == PieceKind::kLine) {
+        if (pc.to.back() != cur)
+          out.segs.emplace_back(apoint(cur), apoint(pc.to.back()));
+      } else {
+        if (depth < 0)
+          throw std::invalid_argument("oracle: exact area coverage of curves is not modelled");
+        std::vector<APoint> ctrl{apoint(cur)};
+        for (const Raw2& r : pc.to)
+          ctrl.push_back(apoint(r));
+        split_curve(ctrl, depth, out);
+      }
+      cur = pc.to.back();
+    }
+    if (cur != c.start)
+      out.segs.emplace_back(apoint(cur), apoint(c.start));
+  }
+  return out;
+}
+
+mpz_class floor_q(const mpq_class& q) {
+  mpz_class r;
+  mpz_fdiv_q(r.get_mpz_t(), q.get_num_mpz_t(), q.get_den_mpz_t());
+  return r;
+}
+
+using PixelMap = std::map<std::pair<std::int64_t, std::int64_t>, mpq_class>; // (y, x) -> px^2
+
+// The pixels of [0, w) x [0, h) that the box [lo, hi] (raw) reaches, closed: [i0, i1) x
+// [j0, j1); empty when i0 >= i1 or j0 >= j1.
+std::array<std::int64_t, 4> pixel_range(const mpq_class& lo_x, const mpq_class& lo_y,
+                                        const mpq_class& hi_x, const mpq_class& hi_y,
+                                        std::int32_t w, std::int32_t h) {
+  return {std::max<std::int64_t>(0, floor_q(lo_x / 256).get_si()),
+          std::max<std::int64_t>(0, floor_q(lo_y / 256).get_si()),
+          std::min<std::int64_t>(w, floor_q(hi_x / 256).get_si() + 1),
+          std::min<std::int64_t>(h, floor_q(hi_y / 256).get_si() + 1)};
+}
+
+PixelMap areas_of(const std::string& fill_rule, const std::vector<ASegment>& path_segs,
+                  std::int32_t w, std::int32_t h);
+
 } // namespace
 
+namespace {
+
+// The exact area (px^2) where the fill rule holds, per pixel of [0, w) x [0, h), of the region
+// bounded by the directed segments: a CGAL arrangement of the segments and the grid lines of
+// the pixels their box reaches, the winding number of every face propagated from the
+// unbounded face, and the area of the faces where the rule holds.
 // rule: PATH.AREA.EXACT, PATH.WINDING, PATH.FILL.RULE
-std::vector<PixelArea> cover_area(const Path& p, std::int32_t w, std::int32_t h) {
-  check_range(p);
-  (void)fills(p.fill_rule, 0);
-  const std::vector<Seg> segs = segments_of(p);
-  if (segs.empty() || w <= 0 || h <= 0)
+PixelMap areas_of(const std::string& fill_rule, const std::vector<ASegment>& path_segs,
+                  std::int32_t w, std::int32_t h) {
+  if (path_segs.empty() || w <= 0 || h <= 0)
     return {};
   // The pixels the path's bounding box reaches, within the target; no other pixel has area.
-  std::int64_t lo_x = segs[0].a[0], hi_x = lo_x, lo_y = segs[0].a[1], hi_y = lo_y;
-  for (const Seg& s : segs) {
-    for (const Raw2& r : {s.a, s.b}) {
-      lo_x = std::min(lo_x, r[0]);
-      hi_x = std::max(hi_x, r[0]);
-      lo_y = std::min(lo_y, r[1]);
-      hi_y = std::max(hi_y, r[1]);
+  mpq_class lo_x = to_mpq(path_segs[0].source().x()), hi_x = lo_x;
+  mpq_class lo_y = to_mpq(path_segs[0].source().y()), hi_y = lo_y;
+  for (const ASegment& sg : path_segs) {
+    for (const APoint& q : {sg.source(), sg.target()}) {
+      lo_x = std::min(lo_x, to_mpq(q.x()));
+      hi_x = std::max(hi_x, to_mpq(q.x()));
+      lo_y = std::min(lo_y, to_mpq(q.y()));
+      hi_y = std::max(hi_y, to_mpq(q.y()));
     }
   }
-  const std::int64_t i0 = std::max<std::int64_t>(0, floor_div(lo_x, 256));
-  const std::int64_t i1 = std::min<std::int64_t>(w, floor_div(hi_x + 255, 256));
-  const std::int64_t j0 = std::max<std::int64_t>(0, floor_div(lo_y, 256));
-  const std::int64_t j1 = std::min<std::int64_t>(h, floor_div(hi_y + 255, 256));
+  const auto [i0, j0, i1, j1] = pixel_range(lo_x, lo_y, hi_x, hi_y, w, h);
   if (i0 >= i1 || j0 >= j1)
     return {};
 
   // The path's segments and the grid lines of those pixels, in raw units.
-  std::vector<ASegment> curves;
-  std::vector<ASegment> path_segs;
-  for (const Seg& s : segs) {
-    path_segs.emplace_back(apoint(s.a), apoint(s.b));
-    curves.push_back(path_segs.back());
-  }
+  std::vector<ASegment> curves = path_segs;
   for (std::int64_t i = i0; i <= i1; ++i)
     curves.emplace_back(apoint({256 * i, 256 * j0}), apoint({256 * i, 256 * j1}));
   for (std::int64_t j = j0; j <= j1; ++j)
@@ -533,7 +587,7 @@ std::vector<PixelArea> cover_area(const Path& p, std::int32_t w, std::int32_t h)
       continue;
     if (!f->data())
       throw std::logic_error("oracle: a face not reached from the unbounded face");
-    if (!fills(p.fill_rule, *f->data()))
+    if (!fills(fill_rule, *f->data()))
       continue;
     mpq_class twice = 0;
     std::optional<std::array<mpq_class, 4>> box; // min x, min y, max x, max y of the outer cycle
@@ -567,19 +621,83 @@ std::vector<PixelArea> cover_area(const Path& p, std::int32_t w, std::int32_t h)
     const mpz_class py = qy.get_num() / qy.get_den();
     if (bx[2] > 256 * (px + 1) || bx[3] > 256 * (py + 1))
       throw std::logic_error("oracle: a face spans two pixels");
-    area[{py.get_si(), px.get_si()}] += twice / 2;
+    area[{py.get_si(), px.get_si()}] += twice / 2 / 65536;
   }
-  std::vector<PixelArea> out;
-  for (const auto& [yx, a] : area) {
-    if (a == 0)
-      continue;
+  for (auto& [yx, a] : area) {
     if (a < 0)
       throw std::logic_error("oracle: negative face area");
-    mpq_class px2 = a / 65536;
-    px2.canonicalize();
-    out.push_back(PixelArea{static_cast<std::int32_t>(yx.second),
-                            static_cast<std::int32_t>(yx.first), px2.get_num().get_str(),
-                            px2.get_den().get_str(), px2.get_d()});
+    a.canonicalize();
+  }
+  std::erase_if(area, [](const auto& e) { return e.second == 0; });
+  return area;
+}
+
+PixelArea pixel_area(const std::pair<std::int64_t, std::int64_t>& yx, const mpq_class& a) {
+  return PixelArea{static_cast<std::int32_t>(yx.second), static_cast<std::int32_t>(yx.first),
+                   a.get_num().get_str(), a.get_den().get_str(), a.get_d()};
+}
+
+} // namespace
+
+// rule: PATH.AREA.EXACT, PATH.WINDING, PATH.FILL.RULE
+std::vector<PixelArea> cover_area(const Path& p, std::int32_t w, std::int32_t h) {
+  check_range(p);
+  (void)fills(p.fill_rule, 0);
+  std::vector<PixelArea> out;
+  for (const auto& [yx, a] : areas_of(p.fill_rule, flatten(p, -1).segs, w, h))
+    out.push_back(pixel_area(yx, a));
+  return out;
+}
+
+// rule: PATH.AREA.EXACT
+std::vector<PixelAreaBound> cover_area_bounded(const Path& p, std::int32_t w, std::int32_t h,
+                                               int depth) {
+  check_range(p);
+  (void)fills(p.fill_rule, 0);
+  if (depth < 0 || depth > 16)
+    throw std::invalid_argument("oracle: subdivision depth outside [0, 16]");
+  const Flat flat = flatten(p, depth);
+  const PixelMap area = areas_of(p.fill_rule, flat.segs, w, h);
+  // Where the curve and its flattening differ, their winding numbers may differ: only inside
+  // the hull of some piece (outside all of them, the path deforms into its flattening without
+  // crossing the point). So the fill sets differ in a pixel on at most the area of the hulls
+  // of the pieces whose (closed) box meets the pixel.
+  PixelMap bound;
+  for (const std::vector<APoint>& piece : flat.pieces) {
+    std::vector<APoint> hull;
+    CGAL::convex_hull_2(piece.begin(), piece.end(), std::back_inserter(hull));
+    mpq_class twice = 0;
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+      const APoint& a = hull[i];
+      const APoint& b = hull[(i + 1) % hull.size()];
+      twice += to_mpq(a.x() * b.y() - b.x() * a.y());
+    }
+    const mpq_class hull_area = abs(twice) / 2 / 65536;
+    if (hull_area == 0)
+      continue;
+    mpq_class lo_x = to_mpq(piece[0].x()), hi_x = lo_x, lo_y = to_mpq(piece[0].y()), hi_y = lo_y;
+    for (const APoint& q : piece) {
+      lo_x = std::min(lo_x, to_mpq(q.x()));
+      hi_x = std::max(hi_x, to_mpq(q.x()));
+      lo_y = std::min(lo_y, to_mpq(q.y()));
+      hi_y = std::max(hi_y, to_mpq(q.y()));
+    }
+    // Closed: a box ending exactly on a grid line also counts for the pixel beyond it.
+    const auto [i0, j0, i1, j1] = pixel_range(lo_x - 1, lo_y - 1, hi_x + 1, hi_y + 1, w, h);
+    for (std::int64_t j = j0; j < j1; ++j)
+      for (std::int64_t i = i0; i < i1; ++i)
+        bound[{j, i}] += hull_area;
+  }
+  std::map<std::pair<std::int64_t, std::int64_t>, std::pair<mpq_class, mpq_class>> all;
+  for (const auto& [yx, a] : area)
+    all[yx].first = a;
+  for (const auto& [yx, b] : bound)
+    all[yx].second = b;
+  std::vector<PixelAreaBound> out;
+  for (auto& [yx, ab] : all) {
+    ab.second.canonicalize();
+    out.push_back(PixelAreaBound{pixel_area(yx, ab.first), ab.second.get_num().get_str(),
+                                 ab.second.get_den().get_str(), ab.second.get_d()});
   }
   return out;
 }

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // 2D paths written a second time, for machines: exact, slow, independent. Written from the
-// path definitions (winding number, fill rules, the boundary convention at s + (sx e, sy e^2),
-// exact area coverage) with GMP rationals, Sturm-Tarski queries and a CGAL arrangement; never
-// includes or calls kernel code, and shares none of its types: everything is plain integers
-// and strings.
-// Implements (as oracle): PATH.WINDING, PATH.FILL.RULE, PATH.SAMPLE.TIE, PATH.AREA.EXACT
+// path definitions (spec/rules/path.md: winding number, fill rules, the boundary convention at
+// s + (sx eps, sy delta) with delta << eps, which on lines is s + (sx e, sy e^2), exact area
+// coverage) with GMP rationals, Sturm-Tarski queries and a CGAL arrangement; never includes or
+// calls kernel code, and shares none of its types: everything is plain integers and strings.
+// Implements (as oracle): PATH.GEOMETRY, PATH.CONTOUR.CLOSE, PATH.WINDING, PATH.FILL.RULE,
+//   PATH.SAMPLE.TIE, PATH.COVER.SAMPLE, PATH.AREA.EXACT, PATH.DEGENERATE
 
 #pragma once
 
@@ -46,7 +47,8 @@ struct Path {
 // std::invalid_argument for another string.
 bool fills(const std::string& fill_rule, std::int64_t w);
 
-// Returns the winding number of the displaced sample s' = s + (sx e, sy e^2), e -> 0+, with
+// Returns the winding number of the displaced sample s' = s + (sx eps, sy delta), delta << eps
+// (for lines the same as s + (sx e, sy e^2), e -> 0+), with
 // (sx, sy) from the fill convention ("top-left" (+1, +1), "top-right" (-1, +1), "bottom-left"
 // (+1, -1), "bottom-right" (-1, -1)). Lines are decided by the contract's words (half-open in
 // y, the crossing's x at the sample's height strictly right of it, ties to the right only when
@@ -89,6 +91,23 @@ struct PixelArea {
 // segments on them, and the exact area of every face where the fill rule holds, summed per
 // pixel. Throws std::invalid_argument when the path has a curve.
 std::vector<PixelArea> cover_area(const Path& p, std::int32_t w, std::int32_t h);
+
+// The area of a pixel for a path with curves, certified: the exact area of the path with every
+// curve replaced by the chords of its 2^depth pieces (de Casteljau at t = 1/2, exact), and a
+// bound (px^2) on its distance from the exact area of the curved path: the sum of the hull
+// areas of the pieces whose box meets the pixel.
+struct PixelAreaBound {
+  PixelArea area;
+  std::string bound_num;
+  std::string bound_den;
+  double bound_approx = 0.0;
+};
+
+// Returns every pixel of [0, w) x [0, h) with a nonzero area or bound, in row order; for a path
+// of lines, the exact areas with bound 0. depth in [0, 16]. The bound shrinks about 8 times per
+// level (pieces half as long and a quarter as far from their chords; twice as many).
+std::vector<PixelAreaBound> cover_area_bounded(const Path& p, std::int32_t w, std::int32_t h,
+                                               int depth);
 
 // Returns whether the path has a quadratic or cubic piece.
 bool has_curves(const Path& p);
