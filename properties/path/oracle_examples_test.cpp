@@ -5,6 +5,7 @@
 // doubled-back diagonal, and samples on edges and corners under each fill convention.
 // Implements (examples for): PATH.WINDING, PATH.FILL.RULE, PATH.SAMPLE.TIE, PATH.AREA.EXACT
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -217,6 +218,37 @@ TEST(PathOracle, CurvesDecidedByExactRoots) {
       EXPECT_FALSE(op::covers(p, {0, 0}, fill)) << fill;
     EXPECT_TRUE(op::covers(p, {1, 1}, "top-left"));
   }
+}
+
+// rule: PATH.AREA.EXACT
+TEST(PathOracle, CurveAreaWithinItsCertifiedBound) {
+  // The region between x = 0 and x(t) = 12 t (1 - t) px, y(t) = 3t px: area = integral of x dy
+  // = 36 * 1/6 = 6 px^2 over all pixels, the quadratic and its degree-elevated cubic alike.
+  const op::Contour quad{{0, 0}, {op::Piece{op::PieceKind::kQuadratic, {{1536, 384}, {0, 768}}}}};
+  const op::Contour cubic{{0, 0},
+                          {op::Piece{op::PieceKind::kCubic, {{1024, 256}, {1024, 512}, {0, 768}}}}};
+  for (const op::Contour& c : {quad, cubic}) {
+    double last_bound = 1e9;
+    for (int depth : {2, 5, 8}) {
+      double sum = 0, bound = 0;
+      for (const op::PixelAreaBound& a : op::cover_area_bounded(path_of({c}), 4, 4, depth)) {
+        sum += a.area.approx;
+        bound += a.bound_approx;
+        EXPECT_GE(a.area.approx, 0.0);
+        EXPECT_LE(a.area.approx, 1.0);
+      }
+      EXPECT_LE(std::abs(sum - 6.0), bound + 1e-12) << depth;
+      EXPECT_LT(bound, last_bound / 64) << depth; // about 8x per level, 512x per 3 levels
+      last_bound = bound;
+    }
+    EXPECT_LT(last_bound, 1.0 / 1024);
+  }
+  // Lines: the exact areas, bound 0.
+  const auto lines =
+      op::cover_area_bounded(path_of({polygon({{0, 0}, {512, 0}, {0, 512}})}), 3, 3, 4);
+  ASSERT_EQ(lines.size(), 3u);
+  for (const op::PixelAreaBound& a : lines)
+    EXPECT_EQ(a.bound_num, "0");
 }
 
 // rule: PATH.SAMPLE.TIE

@@ -11,6 +11,7 @@
 #include <bit>
 #include <climits>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -254,6 +255,40 @@ RC_GTEST_PROP(PathOracle, CurveWindingEqualsAFlatteningAwayFromTheCurve, ()) {
   }
   RC_CLASSIFY(near > 0, "samples near a curve skipped");
   RC_CLASSIFY(tested < 100, "fewer than 100 samples tested");
+}
+
+// The certified curve areas at two depths are intervals that overlap in every pixel (both
+// hold the exact area), lie in [0, 1] up to the bound, and the deeper one is narrower; for
+// paths of lines the areas are the exact ones with bound 0.
+// rule: PATH.AREA.EXACT
+RC_GTEST_PROP(PathOracle, CertifiedCurveAreasAreConsistentIntervals, ()) {
+  pg::GPath p{pg::PathKind::kCurves, *rc::gen::arbitrary<bool>(), {}};
+  const int n = *rc::gen::inRange(1, 3);
+  for (int i = 0; i < n; ++i)
+    p.contours.push_back(*pg::curve_contour(pc::kSide));
+  pc::show_path(p);
+  const op::Path o = pg::to_oracle(p);
+  std::map<pc::Pixel, std::array<mpq_class, 4>> all; // area, bound at depth 2; at depth 5
+  for (const int depth : {2, 5}) {
+    const std::size_t at = depth == 2 ? 0 : 2;
+    for (const op::PixelAreaBound& a : op::cover_area_bounded(o, pc::kSide, pc::kSide, depth)) {
+      all[{a.area.y, a.area.x}][at] = pc::rational(a.area.num, a.area.den);
+      all[{a.area.y, a.area.x}][at + 1] = pc::rational(a.bound_num, a.bound_den);
+    }
+  }
+  for (const auto& [px, v] : all) {
+    const mpq_class lo = std::max(v[0] - v[1], v[2] - v[3]),
+                    hi = std::min(v[0] + v[1], v[2] + v[3]);
+    if (lo > hi || lo > 1 || hi < 0)
+      RC_FAIL(pc::str(px) + ": depth 2 " + v[0].get_str() + " +- " + v[1].get_str() + ", depth 5 " +
+              v[2].get_str() + " +- " + v[3].get_str());
+    RC_ASSERT(v[3] <= v[1]);
+  }
+  if (!pg::has_curves(p)) {
+    std::map<pc::Pixel, mpq_class> exact = pc::oracle_areas(p, pc::kSide);
+    for (const auto& [px, v] : all)
+      RC_ASSERT(v[1] == 0 && v[0] == (exact.count(px) ? exact[px] : mpq_class(0)));
+  }
 }
 
 // rule: PATH.WINDING, PATH.SAMPLE.TIE
