@@ -440,7 +440,8 @@ template <class Use> bool kernel_accepts_curves(Use use) {
   }
 }
 
-// rule: PATH.WINDING, PATH.SAMPLE.TIE, PATH.COVER.SAMPLE, PATH.GEOMETRY, PATH.TIE.PARTITION
+// rule: PATH.CURVE.SAMPLE, PATH.WINDING, PATH.SAMPLE.TIE, PATH.COVER.SAMPLE, PATH.GEOMETRY
+// rule: PATH.TIE.PARTITION
 TEST(PathKernel, CurveSampleMasksAndTieWindingsEqualOracle) {
   if (!kernel_accepts_curves([](const kp::Path& p) {
         (void)kp::winding_number(p, {128, 256}, rastrules::FillConvention::kTopLeft);
