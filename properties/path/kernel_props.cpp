@@ -484,12 +484,30 @@ TEST(PathKernel, CurveSampleMasksAndTieWindingsEqualOracle) {
 namespace {
 
 // The kernel's curve areas within their stated error bound plus the oracle's certified one
-// (depth 6: 64 pieces per curve) of the exact area, in every pixel. Skipped (with the reason)
-// while the kernel rejects curve areas.
+// (depth 6: 64 pieces per curve) of the exact area, in every pixel. While the kernel refuses
+// area coverage of curves (PATH.AREA.EXACT says so), the refusal is what is checked: a random
+// path is refused exactly when one of its segments is a curve.
 // rule: PATH.AREA.EXACT
 TEST(PathKernel, CurveAreasWithinTheBoundsOfTheCertifiedOracle) {
-  if (!kernel_accepts_curves([](const kp::Path& p) { (void)kp::cover_area(p, 2, 2); }))
-    GTEST_SKIP() << "the kernel rejects area coverage of curves (std::invalid_argument)";
+  if (!kernel_accepts_curves([](const kp::Path& p) { (void)kp::cover_area(p, 2, 2); })) {
+    EXPECT_TRUE(rc::check("curve areas are refused, never approximated", [] {
+      pg::GPath p{pg::PathKind::kCurves, *rc::gen::arbitrary<bool>(), {}};
+      p.contours.push_back(*pg::curve_contour(kSide));
+      bool curved = false;
+      for (const auto& c : to_kernel(p).contours)
+        for (const auto& seg : c.segments)
+          curved = curved || seg.kind != kp::SegmentKind::kLine;
+      bool refused = false;
+      try {
+        (void)kp::cover_area(to_kernel(p), kSide, kSide);
+      } catch (const std::invalid_argument&) {
+        refused = true;
+      }
+      RC_CLASSIFY(curved, "with curves");
+      RC_ASSERT(refused == curved); // refused exactly when a segment is a curve
+    }));
+    return;
+  }
   EXPECT_TRUE(rc::check("curve areas, kernel within bounds of the oracle", [] {
     pg::GPath p{pg::PathKind::kCurves, *rc::gen::arbitrary<bool>(), {}};
     const int n = *rc::gen::inRange(1, 3);
