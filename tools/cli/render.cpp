@@ -282,17 +282,21 @@ std::optional<std::size_t> stream_fragments(const PreparedScene& scene, const Re
   }
   // rule: FAST.THREADS.DETERMINISTIC, SCENE.INPUT.LIMITS
   // A pool created once produces work units in order: a band of rows of a streamed triangle
-  // whose walk visits more than kBandPixels pixels (so that several threads draw one large
-  // triangle), or up to kChunk consecutive other primitives. Their fragments reach this thread
-  // in order through the bounded buffers of stream_ordered (a unit ahead of the writer waits),
-  // where emit checks them as above: the outputs, the error and the primitive it names are
-  // those of one thread, and at most buffers.max_held() fragments are buffered, whatever the
-  // scene. A primitive that must be held to be sorted is held by the thread that draws it, as
-  // with one thread.
-  constexpr std::size_t kChunk = 64;            // primitives per unit: amortises the hand-over
-  constexpr std::int64_t kBandPixels = 1 << 16; // pixels visited per band (about)
+  // whose walk visits more than kUnitPixels pixels (so that several threads draw one large
+  // triangle), or consecutive other primitives, up to kChunk of them or kUnitPixels of their
+  // work. Their fragments reach this thread in order through the bounded buffers of
+  // stream_ordered (a unit ahead of the writer waits), where emit checks them as above: the
+  // outputs, the error and the primitive it names are those of one thread, and at most
+  // buffers.max_held() fragments are buffered, whatever the scene. A unit's fragments mostly
+  // fit its own buffer (a band's always do): a thread finishes the unit it draws while the
+  // writer is still on an earlier one, so the threads draw in parallel (with bands of 2^16
+  // pixels and a buffer of 2048 fragments, the thread ahead waited, and two threads took 1.4x
+  // the time of one). A primitive that must be held to be sorted is held by the thread that
+  // draws it, as with one thread.
   const StreamBuffers buffers{
-      .batch = 1024, .batches_per_unit = 2, .window = std::size_t{rq.options.threads} + 1};
+      .batch = 1536, .batches_per_unit = 2, .window = std::size_t{rq.options.threads} + 1};
+  constexpr std::size_t kChunk = 64; // primitives per unit: amortises the hand-over
+  const auto kUnitPixels = static_cast<std::int64_t>(buffers.batch * buffers.batches_per_unit);
   struct Unit {
     std::size_t first = 0, end = 0;        // whole primitives [first, end), or
     std::int32_t y_first = 0, y_last = -1; // with end == first + 1 and banded: these rows
@@ -302,15 +306,16 @@ std::optional<std::size_t> stream_fragments(const PreparedScene& scene, const Re
     std::size_t p;
   };
   const std::size_t n = scene.primitives.size();
-  // The rows of primitive p's bands, when it is split: at least one tile row, whole tile rows.
+  // The rows of primitive p's bands, when it is split: at most kUnitPixels pixels (at least one
+  // row).
   const auto band_rows = [&](std::size_t p) -> std::int32_t {
     if (!is_streamed(scene, p))
       return 0;
     const PixelBounds b = streamed_bounds(scene, p);
     const std::int64_t w = std::int64_t{b.x1} - b.x0 + 1, h = std::int64_t{b.y1} - b.y0 + 1;
-    if (b.y1 < b.y0 || w * h <= kBandPixels)
+    if (b.y1 < b.y0 || w * h <= kUnitPixels)
       return 0;
-    const std::int64_t rows = std::max<std::int64_t>(16, kBandPixels / w / 16 * 16);
+    const std::int64_t rows = std::max<std::int64_t>(1, kUnitPixels / w);
     return rows >= h ? 0 : static_cast<std::int32_t>(rows);
   };
   // The plan, advanced under the pool's lock: unit i goes to slot i % window.
@@ -342,8 +347,13 @@ std::optional<std::size_t> stream_fragments(const PreparedScene& scene, const Re
       return true;
     }
     u.first = next_p;
-    while (next_p < n && next_p - u.first < kChunk && (next_p == u.first || band_rows(next_p) == 0))
+    std::uint64_t work = 0; // the chunk's sample tests: a bound on its fragments
+    while (next_p < n && next_p - u.first < kChunk &&
+           (next_p == u.first ||
+            (band_rows(next_p) == 0 && work < static_cast<std::uint64_t>(kUnitPixels)))) {
+      work += primitive_work(scene, next_p);
       ++next_p;
+    }
     u.end = next_p;
     return true;
   };

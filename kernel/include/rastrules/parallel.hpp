@@ -50,8 +50,9 @@ struct StreamBuffers {
 // puts f; consume_bytes receives each batch's bytes on the calling thread right after consume
 // has seen that batch's fragments, so every fragment's bytes arrive once, in consume's order.
 // A batch's bytes are held with it (at most max_held() fragments' bytes in all).
-// A batch's fragments in brief: how many, the first and the last, and whether each comes
-// before the next in (prim, y, x, seg, sample) order (fragment_before).
+// A batch's fragments in brief: how many, the first and the last (their order fields prim, x,
+// y, seg and sample only: what fragment_before compares), and whether each comes before the
+// next in (prim, y, x, seg, sample) order (fragment_before).
 struct BatchSummary {
   std::size_t count = 0;
   Fragment first, last;
