@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
-// The smallest use of the installed kernel (rastrules::kernel: no CGAL, GMP, JSON or libpng): build a
-// scene in code, rasterize it, print every fragment, then say why one pixel is or is not
-// covered by the triangle (its snapped vertices, the edge values at the pixel centre, and the
-// top-left rule's verdict on each edge).
+// The smallest use of the installed kernel (rastrules::kernel: no CGAL, GMP, JSON or libpng): build
+// a scene in code, rasterize it, print every fragment, then say why one pixel is or is not covered
+// by the triangle (its snapped vertices, the edge values at the pixel centre, and the top-left
+// rule's verdict on each edge).
 #include <cstdio>
 #include <string>
 #include <variant>
