@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -110,27 +112,29 @@ Tie tie_of(FillConvention f) {
 // rule: PATH.CONTOUR.CLOSE, PATH.GEOMETRY, PATH.DEGENERATE
 Boundary boundary_of(const Path& path) {
   Boundary b;
-  for (const Contour& c : path.contours) {
+  for (std::size_t ci = 0; ci < path.contours.size(); ++ci) {
+    const Contour& c = path.contours[ci];
     Point cur = c.start;
-    for (const Segment& s : c.segments) {
+    for (std::size_t si = 0; si < c.segments.size(); ++si) {
+      const Segment& s = c.segments[si];
       switch (s.kind) {
       case SegmentKind::kLine:
-        b.lines.push_back(Edge{cur.x, cur.y, s.p[0].x, s.p[0].y});
+        b.lines.push_back(Edge{cur.x, cur.y, s.p[0].x, s.p[0].y, ci, si});
         cur = s.p[0];
         break;
       case SegmentKind::kQuadratic:
-        b.curves.push_back(Curve{2, {cur, s.p[0], s.p[1], s.p[1]}});
+        b.curves.push_back(Curve{2, {cur, s.p[0], s.p[1], s.p[1]}, ci, si});
         cur = s.p[1];
         break;
       case SegmentKind::kCubic:
-        b.curves.push_back(Curve{3, {cur, s.p[0], s.p[1], s.p[2]}});
+        b.curves.push_back(Curve{3, {cur, s.p[0], s.p[1], s.p[2]}, ci, si});
         cur = s.p[2];
         break;
       }
     }
     // rule: PATH.CONTOUR.CLOSE
     if (!(cur == c.start))
-      b.lines.push_back(Edge{cur.x, cur.y, c.start.x, c.start.y});
+      b.lines.push_back(Edge{cur.x, cur.y, c.start.x, c.start.y, ci, c.segments.size()});
   }
   return b;
 }
@@ -138,16 +142,31 @@ Boundary boundary_of(const Path& path) {
 } // namespace detail
 
 // rule: PATH.WINDING, PATH.SAMPLE.TIE
-std::int64_t winding_number(const Path& path, Point s, FillConvention fill) {
+std::vector<SampleCrossing> crossings(const Path& path, Point s, FillConvention fill) {
   const Tie t = detail::tie_of(fill);
   const detail::Boundary b = detail::boundary_of(path);
-  std::int64_t w = 0;
-  for (const Edge& e : b.lines)
-    w += line_contribution(e, s.x, s.y, t);
-  for (const detail::Curve& c : b.curves) {
-    for (const Crossing& x : detail::curve_crossings(c, s.y, t))
-      w += x.counts_at(s.x) ? x.dir : 0;
+  std::vector<SampleCrossing> out;
+  for (const Edge& e : b.lines) {
+    if (const int dir = line_contribution(e, s.x, s.y, t); dir != 0)
+      out.push_back(SampleCrossing{e.contour, e.segment, dir});
   }
+  for (const detail::Curve& c : b.curves) {
+    for (const Crossing& x : detail::curve_crossings(c, s.y, t)) {
+      if (x.counts_at(s.x))
+        out.push_back(SampleCrossing{c.contour, c.segment, x.dir});
+    }
+  }
+  std::stable_sort(out.begin(), out.end(), [](const SampleCrossing& p, const SampleCrossing& q) {
+    return std::tie(p.contour, p.segment) < std::tie(q.contour, q.segment);
+  });
+  return out;
+}
+
+// rule: PATH.WINDING, PATH.SAMPLE.TIE
+std::int64_t winding_number(const Path& path, Point s, FillConvention fill) {
+  std::int64_t w = 0;
+  for (const SampleCrossing& x : crossings(path, s, fill))
+    w += x.dir;
   return w;
 }
 
@@ -157,11 +176,11 @@ bool covers_sample(const Path& path, Point s, FillConvention fill) {
 }
 
 // rule: PATH.COVER.SAMPLE
-std::vector<SampleCoverage> cover_samples(const Path& path, const SamplePattern& pattern,
-                                          FillConvention fill, std::int32_t w, std::int32_t h) {
-  std::vector<SampleCoverage> out;
+void cover_samples(const Path& path, const SamplePattern& pattern, FillConvention fill,
+                   std::int32_t w, std::int32_t h,
+                   const std::function<void(const SampleCoverage&)>& emit) {
   if (w <= 0 || h <= 0 || pattern.positions.empty())
-    return out;
+    return;
   const Tie t = detail::tie_of(fill);
   const detail::Boundary b = detail::boundary_of(path);
   const std::vector<DownEdge> edges = down_edges(b);
@@ -235,10 +254,17 @@ std::vector<SampleCoverage> cover_samples(const Path& path, const SamplePattern&
     for (std::int64_t i = touched_lo; i <= touched_hi; ++i) {
       std::uint32_t& m = masks[static_cast<std::size_t>(i)];
       if (m != 0)
-        out.push_back(SampleCoverage{static_cast<std::int32_t>(i), j, m});
+        emit(SampleCoverage{static_cast<std::int32_t>(i), j, m});
       m = 0;
     }
   }
+}
+
+// rule: PATH.COVER.SAMPLE
+std::vector<SampleCoverage> cover_samples(const Path& path, const SamplePattern& pattern,
+                                          FillConvention fill, std::int32_t w, std::int32_t h) {
+  std::vector<SampleCoverage> out;
+  cover_samples(path, pattern, fill, w, h, [&](const SampleCoverage& c) { out.push_back(c); });
   return out;
 }
 
@@ -343,10 +369,10 @@ void add_run(RowAreas& row, std::int32_t w, const Rational& la, const Rational& 
 } // namespace
 
 // rule: PATH.AREA.EXACT
-std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w, std::int32_t h) {
-  std::vector<AreaCoverage> out;
+void cover_area(const Path& path, std::int32_t w, std::int32_t h,
+                const std::function<void(const AreaCoverage&)>& emit) {
   if (w <= 0 || h <= 0)
-    return out;
+    return;
   const detail::Boundary b = detail::boundary_of(path);
   if (!b.curves.empty())
     throw std::invalid_argument(
@@ -450,12 +476,18 @@ std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w, std::int3
       const Rational a = row.partial[k] + running;
       row.partial[k] = 0;
       if (a != 0)
-        out.push_back(AreaCoverage{static_cast<std::int32_t>(c), j, a / pixel_area, Rational(0)});
+        emit(AreaCoverage{static_cast<std::int32_t>(c), j, a / pixel_area, Rational(0)});
     }
     row.full_diff[static_cast<std::size_t>(row.touched_hi + 1)] = 0;
     row.touched_lo = w;
     row.touched_hi = -1;
   }
+}
+
+// rule: PATH.AREA.EXACT
+std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w, std::int32_t h) {
+  std::vector<AreaCoverage> out;
+  cover_area(path, w, h, [&](const AreaCoverage& a) { out.push_back(a); });
   return out;
 }
 

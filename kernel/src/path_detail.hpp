@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -21,8 +22,11 @@ struct Tie {
 [[nodiscard]] Tie tie_of(FillConvention f);
 
 // A directed line edge, raw 16.8.
+// contour and segment say which piece of the path it is (segment == the contour's segment count
+// for its closing line).
 struct Edge {
   std::int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  std::size_t contour = 0, segment = 0;
 };
 
 // A quadratic (degree 2, p[0..2]) or cubic (degree 3, p[0..3]) Bézier curve, start point
@@ -30,6 +34,7 @@ struct Edge {
 struct Curve {
   int degree = 2;
   std::array<Point, 4> p{};
+  std::size_t contour = 0, segment = 0;
 };
 
 // The boundary of a path: every line segment and closing line (PATH.CONTOUR.CLOSE), and every

@@ -15,6 +15,7 @@
 #include <string>
 #include <tuple>
 
+#include "path_scene.hpp"
 #include "rastrules/point.hpp"
 #include "rastrules/raster/fast.hpp"
 #include "rastrules/raster/walk.hpp"
@@ -29,12 +30,21 @@ Primitive make_triangle(const std::array<FloatPoint, 3>& v) {
   return p;
 }
 
+Primitive make_path(FloatPath path) {
+  Primitive p;
+  p.type = PrimitiveType::kPath;
+  p.v.clear();
+  p.path = std::move(path);
+  return p;
+}
+
 Primitive coverage_of(const Primitive& p) {
   Primitive out;
   out.type = p.type;
   out.v = p.v;
   out.aa = p.aa;
   out.color = p.color;
+  out.path = p.path;
   return out;
 }
 
@@ -81,12 +91,20 @@ std::size_t required_vertex_count(PrimitiveType t) {
   case PrimitiveType::kLine:
     return 2;
   case PrimitiveType::kLineStrip:
+  case PrimitiveType::kPath:
     return 0;
   }
   return 0;
 }
 
 std::optional<std::string> vertex_count_problem(PrimitiveType t, std::size_t n, bool clip_space) {
+  // rule: SCENE.PRIM.PATH
+  if (t == PrimitiveType::kPath) {
+    if (n == 0)
+      return std::nullopt;
+    return "a path takes no vertices (its points are in \"d\" or \"contours\"), got " +
+           std::to_string(n);
+  }
   const std::size_t need = required_vertex_count(t);
   if (need == 0 ? n >= 2 : n == need)
     return std::nullopt;
@@ -211,6 +229,19 @@ std::optional<SceneError> validate_msaa(const Scene& scene) {
   }
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     const Primitive& prim = scene.primitives[p];
+    // rule: SCENE.PRIM.PATH
+    if (prim.type == PrimitiveType::kPath) {
+      const char* asked = ms.has_centroid                     ? "centroid"
+                          : ms.shading != ShadingRate::kPixel ? "shading"
+                          : ms.quads                          ? "quads"
+                          : ms.wants_quads()                  ? "derivatives"
+                                                              : nullptr;
+      if (asked != nullptr) {
+        return SceneError{asked, "a path is drawn by coverage alone: \"" + std::string(asked) +
+                                     "\" cannot be asked for with a path (" + field_of(p) + ")"};
+      }
+      continue;
+    }
     if (!is_line(prim.type) || n <= 1)
       continue;
     // rule: MSAA.SHADING.SAMPLE
@@ -262,6 +293,13 @@ std::variant<PreparedScene, SceneError> prepare(const Scene& scene) {
     // rule: SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP
     if (auto bad = vertex_count_problem(in.type, n, false))
       return SceneError{field_of(p) + ".v", std::move(*bad)};
+    // rule: SCENE.PRIM.PATH
+    if (in.path.has_value() != (in.type == PrimitiveType::kPath)) {
+      return SceneError{field_of(p) + ".path",
+                        in.path ? "only a path primitive takes a path, not a " +
+                                      std::string(to_string(in.type))
+                                : std::string("is missing: a path primitive needs its path")};
+    }
     // rule: SCENE.PRIM.LINE, SCENE.LINE_MODE
     if (in.aa && !is_line(in.type)) {
       return SceneError{field_of(p) + ".aa", "only lines and line strips take \"aa\", not a " +
@@ -275,6 +313,11 @@ std::variant<PreparedScene, SceneError> prepare(const Scene& scene) {
     prim.type = in.type;
     prim.aa = in.aa;
     prim.color = in.color;
+    // rule: SCENE.PRIM.PATH
+    if (in.path) {
+      if (auto err = detail::prepare_path(*in.path, p, prim))
+        return *err;
+    }
     prim.v.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
       Subpixel c[2];
@@ -306,6 +349,8 @@ std::variant<PreparedScene, SceneError> prepare(const Scene& scene) {
       prim.triangles.push_back(
           PreparedTriangle{setup_triangle({prim.v[0], prim.v[1], prim.v[2]}, out.state), 0});
       break;
+    case PrimitiveType::kPath:
+      break; // drawn by the path rasterizer from prim.path
     case PrimitiveType::kPoint:
       // rule: SCENE.PRIM.POINT
       for (const TriangleSetup& t : setup_point(prim.v[0], out.state)) {
@@ -681,6 +726,8 @@ std::uint64_t area(const raster::PixelRect& r) {
 // rule: SCENE.INPUT.LIMITS, RASTER.WALK.BBOX
 std::uint64_t primitive_work(const PreparedScene& scene, std::size_t p) {
   const PreparedPrimitive& prim = scene.primitives[p];
+  if (prim.type == PrimitiveType::kPath)
+    return detail::path_work(scene, prim);
   const bool single = is_single_sample(scene);
   // The same choice as rasterize_single and sample_coverage_of: the triangles it draws, or
   // the segments the line rasterizers walk.
@@ -711,7 +758,9 @@ std::uint64_t primitive_work(const PreparedScene& scene, std::size_t p) {
 // rule: SCENE.INPUT.LIMITS
 std::optional<std::size_t> first_primitive_over_work(const PreparedScene& scene,
                                                      std::uint64_t max_work) {
-  std::uint64_t total = 0; // at most 2^20 primitives of at most 2^35 each: no overflow
+  // No overflow: the sum stops as soon as it passes max_work <= 2^60, and one primitive's work
+  // is at most 2^62 (a path's saturates there; the others are at most 2^35).
+  std::uint64_t total = 0;
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     total += primitive_work(scene, p);
     if (total > max_work)
@@ -730,6 +779,11 @@ std::string work_limit_problem(std::uint64_t max_work) {
 // rule: FAST.EQUALS.PLAIN
 std::vector<Fragment> rasterize_primitive(const PreparedScene& scene, std::size_t p,
                                           const RenderOptions& options) {
+  if (scene.primitives[p].type == PrimitiveType::kPath) {
+    std::vector<Fragment> out;
+    detail::path_fragments(scene, p, [&](Fragment&& f) { out.push_back(std::move(f)); });
+    return out;
+  }
   if (is_single_sample(scene))
     return rasterize_single(scene, p, options, nullptr);
   return rasterize_msaa(scene, p, options, nullptr);
@@ -748,6 +802,11 @@ void for_each_fragment(const PreparedScene& scene, std::size_t p, const RenderOp
                  [&](std::int32_t x, std::int32_t y) {
                    emit(Fragment{id, x, y, 1u});
                  });
+    return;
+  }
+  // rule: SCENE.PRIM.PATH
+  if (scene.primitives[p].type == PrimitiveType::kPath) {
+    detail::path_fragments(scene, p, [&](Fragment&& f) { emit(f); }); // one row held at a time
     return;
   }
   for (const Fragment& f : rasterize_primitive(scene, p, options))
@@ -785,8 +844,8 @@ void for_each_fragment_in_rows(const PreparedScene& scene, std::size_t p, std::i
 bool for_each_fragment_bounded(const PreparedScene& scene, std::size_t p,
                                std::uint64_t max_collected, const RenderOptions& options,
                                const std::function<void(const Fragment&)>& emit) {
-  if (is_streamed(scene, p)) {
-    for_each_fragment(scene, p, options, emit); // streamed: nothing is held
+  if (is_streamed(scene, p) || scene.primitives[p].type == PrimitiveType::kPath) {
+    for_each_fragment(scene, p, options, emit); // streamed: nothing (a path: one row) is held
     return true;
   }
   CollectBudget budget{max_collected};

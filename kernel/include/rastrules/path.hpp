@@ -10,57 +10,35 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <boost/multiprecision/cpp_int.hpp>
 
 #include "rastrules/msaa.hpp"
 #include "rastrules/name_table.hpp"
+#include "rastrules/path_types.hpp"
 #include "rastrules/triangle.hpp"
 
 namespace rastrules::path {
 
-// A snapped position: raw 16.8 (1/256 px), y down; |x|, |y| <= 2^23.
-// rule: PATH.GEOMETRY
-struct Point {
-  std::int32_t x = 0, y = 0;
-  friend constexpr bool operator==(const Point&, const Point&) = default;
+// One crossing of the ray of PATH.WINDING from a sample displaced as PATH.SAMPLE.TIE says: the
+// piece of the boundary that crossed it (segment == the contour's segment count for its closing
+// line, PATH.CONTOUR.CLOSE) and its direction (+1 where the boundary runs down, -1 up).
+struct SampleCrossing {
+  std::size_t contour = 0;
+  std::size_t segment = 0;
+  int dir = 0;
+  friend bool operator==(const SampleCrossing&, const SampleCrossing&) = default;
 };
 
-enum class SegmentKind { kLine, kQuadratic, kCubic };
-
-// line: p[0] = end; quadratic: p[0] control, p[1] end; cubic: p[0], p[1] controls, p[2] end.
-// rule: PATH.GEOMETRY
-struct Segment {
-  SegmentKind kind = SegmentKind::kLine;
-  std::array<Point, 3> p{};
-  friend bool operator==(const Segment&, const Segment&) = default;
-};
-
-// A start point and segments; closed for filling by a line back to the start
-// (PATH.CONTOUR.CLOSE).
-struct Contour {
-  Point start;
-  std::vector<Segment> segments;
-  friend bool operator==(const Contour&, const Contour&) = default;
-};
-
-// rule: PATH.FILL.RULE
-enum class FillRule { kNonZero, kEvenOdd };
-
-struct Path {
-  FillRule fill_rule = FillRule::kNonZero;
-  std::vector<Contour> contours;
-  friend bool operator==(const Path&, const Path&) = default;
-};
-
-// Returns whether the fill rule holds for winding number w: w != 0 (nonzero), w odd (evenodd,
-// negative w included).
-// rule: PATH.FILL.RULE
-[[nodiscard]] constexpr bool fill_holds(FillRule rule, std::int64_t w) {
-  return rule == FillRule::kNonZero ? w != 0 : (w & 1) != 0;
-}
+// Returns the crossings that make w(s') of PATH.SAMPLE.TIE for the sample at raw position s, by
+// contour and segment (a curve may cross more than once): winding_number() is the sum of their
+// dir, and explanations list them.
+// rule: PATH.WINDING, PATH.SAMPLE.TIE
+[[nodiscard]] std::vector<SampleCrossing> crossings(const Path& path, Point s, FillConvention fill);
 
 // Returns w(s') of PATH.SAMPLE.TIE for the sample at raw position s: the winding number at s
 // displaced by (hx eps, hy delta), delta << eps, (hx, hy) from the fill convention.
@@ -85,6 +63,10 @@ struct SampleCoverage {
                                                         const SamplePattern& pattern,
                                                         FillConvention fill, std::int32_t w,
                                                         std::int32_t h);
+// The same, each pixel passed to emit as it is found (memory: one row of the target).
+void cover_samples(const Path& path, const SamplePattern& pattern, FillConvention fill,
+                   std::int32_t w, std::int32_t h,
+                   const std::function<void(const SampleCoverage&)>& emit);
 
 // One pixel with nonzero area: area in px^2 as a reduced rational, exact (error_bound 0) for
 // paths of lines; for curves within error_bound of the exact area.
@@ -95,22 +77,23 @@ struct AreaCoverage {
   friend bool operator==(const AreaCoverage&, const AreaCoverage&) = default;
 };
 
+// The value behind a path fragment's ExactArea (rastrules/scene.hpp): its area and the bound
+// of AreaCoverage.
+struct AreaValue {
+  boost::multiprecision::cpp_rational area;
+  boost::multiprecision::cpp_rational error_bound;
+};
+
 // Returns every pixel of [0, w) x [0, h) with nonzero area under the fill rule, row by row.
 // Preconditions: 0 <= w, h <= kMaxTargetSide. Paths with curves are not supported yet: throws
 // std::invalid_argument (PATH.AREA.EXACT).
 // rule: PATH.AREA.EXACT
 [[nodiscard]] std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w,
                                                    std::int32_t h);
+// The same, each pixel passed to emit as it is found (memory: one row of the target).
+void cover_area(const Path& path, std::int32_t w, std::int32_t h,
+                const std::function<void(const AreaCoverage&)>& emit);
 
 using rastrules::to_string;
 
 } // namespace rastrules::path
-
-namespace rastrules {
-template <> struct Names<path::FillRule> {
-  static constexpr auto table = in_enum_order<path::FillRule>({"nonzero", "evenodd"});
-};
-template <> struct Names<path::SegmentKind> {
-  static constexpr auto table = in_enum_order<path::SegmentKind>({"line", "quadratic", "cubic"});
-};
-} // namespace rastrules

@@ -11,8 +11,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -22,21 +24,50 @@
 #include "rastrules/line.hpp"
 #include "rastrules/msaa.hpp"
 #include "rastrules/name_table.hpp"
+#include "rastrules/path_types.hpp"
 #include "rastrules/pipe_state.hpp"
 #include "rastrules/snap.hpp"
 #include "rastrules/triangle.hpp"
 
 namespace rastrules {
 
+namespace path {
+struct AreaValue; // rastrules/path.hpp
+} // namespace path
+
 // rule: SCENE.FORMAT.V1, SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP
-enum class PrimitiveType { kTriangle, kPoint, kLine, kLineStrip };
+enum class PrimitiveType { kTriangle, kPoint, kLine, kLineStrip, kPath };
 template <> struct Names<PrimitiveType> {
   static constexpr auto table =
-      in_enum_order<PrimitiveType>({"triangle", "point", "line", "line_strip"});
+      in_enum_order<PrimitiveType>({"triangle", "point", "line", "line_strip", "path"});
 };
 
 // A window-space position in pixels, read as float32.
 using FloatPoint = std::array<float, 2>;
+
+// A 2D path as read, before snapping (SCENE.PRIM.PATH): contours of float32 control points in
+// pixels, the fill rule and the coverage its fragments carry. prepare() snaps every point
+// (SNAP.VERTEX.*) into a path::Path.
+// rule: SCENE.PRIM.PATH, PATH.GEOMETRY
+struct FloatPathSegment {
+  path::SegmentKind kind = path::SegmentKind::kLine;
+  std::array<FloatPoint, 3> p{}; // as path::Segment: the first path::point_count(kind) are used
+  friend bool operator==(const FloatPathSegment&, const FloatPathSegment&) = default;
+};
+struct FloatContour {
+  FloatPoint start{};
+  std::vector<FloatPathSegment> segments;
+  friend bool operator==(const FloatContour&, const FloatContour&) = default;
+};
+struct FloatPath {
+  path::FillRule fill_rule = path::FillRule::kNonZero;
+  path::Coverage coverage = path::Coverage::kSamples;
+  std::vector<FloatContour> contours;
+  // Where each control point was read in the primitive's SVG path data ("d"), as character
+  // offsets in reading order (each contour's start, then its segments' points), so that an
+  // error names the text; empty when the path was not read from path data.
+  std::vector<std::size_t> d_offsets;
+};
 
 struct Primitive {
   PrimitiveType type = PrimitiveType::kTriangle;
@@ -54,10 +85,15 @@ struct Primitive {
   std::vector<float> z;                 // window space only (PIPE.DEPTH.INTERP)
   std::vector<float> w;                 // window space only (PIPE.INTERP.PERSPECTIVE)
   std::vector<std::vector<float>> attr; // PIPE.INPUT.ATTRIBUTES
+  // A path primitive's path (type kPath, and then v is empty): SCENE.PRIM.PATH.
+  std::optional<FloatPath> path;
 };
 
 // Returns a triangle primitive with the given vertices.
 [[nodiscard]] Primitive make_triangle(const std::array<FloatPoint, 3>& v);
+
+// Returns a path primitive (no vertices) with the given path (SCENE.PRIM.PATH).
+[[nodiscard]] Primitive make_path(FloatPath path);
 
 // Returns the primitive's coverage fields (type, v, aa, color) without its pipeline inputs.
 [[nodiscard]] Primitive coverage_of(const Primitive& p);
@@ -130,6 +166,28 @@ inline void set_sample_pattern(Scene& scene, SamplePattern pattern) {
 // picture's grid, the resolve, the pipeline's internal scene of clipped parts).
 [[nodiscard]] Scene target_of(const Scene& scene);
 
+// The exact area coverage of a path fragment (PATH.AREA.EXACT), immutable and shared by
+// copies of the fragment, compared by value; empty for every other fragment.
+// rule: PATH.AREA.EXACT, SCENE.OUTPUT.AREA
+class ExactArea {
+public:
+  ExactArea() = default;
+  explicit ExactArea(std::shared_ptr<const path::AreaValue> value) : value_(std::move(value)) {}
+  [[nodiscard]] explicit operator bool() const { return value_ != nullptr; }
+  // The area in px^2 as a reduced fraction, "num/den", or "num" when it is an integer.
+  [[nodiscard]] std::string text() const;
+  // The area as 8-bit alpha, as 2D libraries store coverage: floor(area * 255 + 1/2).
+  [[nodiscard]] std::uint8_t alpha() const;
+  // The area rounded to the nearest double.
+  [[nodiscard]] double approx() const;
+  // The value, for rastrules/path.hpp's users (null when empty).
+  [[nodiscard]] const path::AreaValue* get() const { return value_.get(); }
+  friend bool operator==(const ExactArea& a, const ExactArea& b);
+
+private:
+  std::shared_ptr<const path::AreaValue> value_;
+};
+
 // One covered pixel of one primitive. mask has bit i set for covered sample i; without
 // multisampling the only sample is the pixel centre, so mask == 1. Antialiased line
 // fragments carry their coverage (coverage_q16 / 65536, SCENE.OUTPUT.COVERAGE); line strip
@@ -159,6 +217,9 @@ struct Fragment {
   std::optional<std::uint32_t> sample;
   std::optional<Centroid> centroid;
   std::optional<EvalDerivatives> derivatives;
+  // A path with "coverage": "area" (SCENE.OUTPUT.AREA): the pixel's exact covered area; mask is
+  // then every sample of the pattern that the sample mask keeps.
+  ExactArea area;
   friend bool operator==(const Fragment&, const Fragment&) = default;
 };
 
@@ -194,6 +255,9 @@ struct PreparedPrimitive {
   // aliased or antialiased, with more than one sample: MSAA.LINE.MODE). Empty for the other
   // aliased and antialiased lines, which the line rasterizers draw from v.
   std::vector<PreparedTriangle> triangles;
+  // A path primitive (type kPath, v empty): its snapped path and the coverage it asks for.
+  std::shared_ptr<const path::Path> path;
+  path::Coverage coverage = path::Coverage::kSamples;
 };
 
 // The scene after validation and snapping.
@@ -279,6 +343,18 @@ void for_each_fragment_in_rows(const PreparedScene& scene, std::size_t p, std::i
 // The default work limit of a render (SCENE.INPUT.LIMITS): most sample tests the plain
 // traversal may make, summed over the primitives (primitive_work).
 inline constexpr std::uint64_t kDefaultMaxWork = std::uint64_t{1} << 36; // 68719476736
+
+// The most segments one path may have (SCENE.INPUT.LIMITS).
+inline constexpr std::size_t kMaxPathSegments = std::size_t{1} << 20;
+
+// The work of a path, in sample tests (SCENE.INPUT.LIMITS, primitive_work): a line piece's
+// crossing of a sample row, a curve's exact crossings of one, one exact rational operation of
+// the area rasterizer and one pixel's exact area, each measured against the plain triangle
+// walk's sample test (about 1.75 ns).
+inline constexpr std::uint64_t kPathPieceWork = 16;
+inline constexpr std::uint64_t kPathCurveWork = 256;
+inline constexpr std::uint64_t kPathAreaWork = 32;
+inline constexpr std::uint64_t kPathAreaPixelWork = 512;
 
 // Returns the work of primitive p by the plain definition, known before it is rasterized: for
 // each triangle it draws (RASTER.WALK.BBOX), the pixels of its walk bounds clipped to the

@@ -225,6 +225,8 @@ private:
       }
       break;
     }
+    case PrimitiveType::kPath:
+      break; // never here: pipe::validate refuses paths in pipeline scenes (SCENE.PRIM.PATH)
     }
     return std::nullopt;
   }

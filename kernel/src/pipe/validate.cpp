@@ -3,7 +3,8 @@
 // a scene (viewport, matrices, attribute declarations, depth state) and each primitive's
 // per-vertex lists are valid; the stage also checks the options and returns the viewport.
 // Implements: PIPE.VIEWPORT.RANGE, PIPE.TRANSFORM.FLOAT32, PIPE.INPUT.ATTRIBUTES,
-//   PIPE.INTERP.LOCATION, PIPE.DEPTH.FORMAT, PIPE.DEPTH.BIAS, SCENE.INPUT.LIMITS, SCENE.PIPELINE
+//   PIPE.INTERP.LOCATION, PIPE.DEPTH.FORMAT, PIPE.DEPTH.BIAS, SCENE.INPUT.LIMITS, SCENE.PIPELINE,
+//   SCENE.PRIM.PATH
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -128,6 +129,15 @@ std::optional<SceneError> validate(const Scene& s) {
     if (total > static_cast<std::uint64_t>(kMaxResolveSamples))
       return err("depth", "the depth buffer (width * height * samples) exceeds 2^26 samples "
                           "(limit SCENE.INPUT.LIMITS)");
+  }
+  // rule: SCENE.PRIM.PATH
+  if (const auto stage = first_pipeline_field(s)) {
+    for (std::size_t i = 0; i < s.primitives.size(); ++i) {
+      if (s.primitives[i].type == PrimitiveType::kPath)
+        return err(idx("primitives", i), "a path is drawn in window space by coverage alone, "
+                                         "but the scene asks for \"" +
+                                             *stage + "\"");
+    }
   }
   for (std::size_t i = 0; i < s.primitives.size(); ++i)
     if (auto bad = detail::check_vertex_lists(s, i))

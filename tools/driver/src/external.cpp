@@ -298,7 +298,14 @@ public:
   }
 
   [[nodiscard]] const DriverInfo& info() const override { return info_; }
-  [[nodiscard]] std::string unsupported(const Scene&) const override { return {}; }
+  // rule: SCENE.PRIM.PATH
+  [[nodiscard]] std::string unsupported(const Scene& scene) const override {
+    for (const Primitive& p : scene.primitives) {
+      if (p.type == PrimitiveType::kPath)
+        return "paths not supported (the external protocol draws triangles, points and lines)";
+    }
+    return {};
+  }
 
   [[nodiscard]] DrawResult draw(const Scene& scene) override {
     const std::string& cmd = info_.description;

@@ -77,6 +77,9 @@ std::string unsupported_scene(const Scene& scene, const DriverInfo& info, double
   }
   std::uint64_t slots = 0;
   for (const Primitive& p : scene.primitives) {
+    // rule: SCENE.PRIM.PATH
+    if (p.type == PrimitiveType::kPath)
+      return "paths not supported (a GPU adapter draws triangles, points and lines)";
     if (is_line(p.type)) {
       if (std::string why = checks.line(scene, p); !why.empty())
         return why;

@@ -150,6 +150,8 @@ public:
                             ? VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT
                             : VK_LINE_RASTERIZATION_MODE_RECTANGULAR_EXT;
         break;
+      case PrimitiveType::kPath:
+        break; // never here: unsupported() refuses paths
       }
       auto pipeline = get_pipeline(key);
       if (const auto* e = std::get_if<std::string>(&pipeline)) {

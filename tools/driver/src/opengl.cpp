@@ -212,6 +212,8 @@ public:
         mode = p.type == PrimitiveType::kLine ? GL_LINES : GL_LINE_STRIP;
         glDisable(GL_CULL_FACE);
         break;
+      case PrimitiveType::kPath:
+        break; // never here: unsupported() refuses paths
       }
       glUniform1ui(kUniformSlot, packed.first_slot[i]);
       const auto count = static_cast<GLsizei>(p.v.size());
