@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The fragment list output.
 // Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.PRIM.LINE_STRIP,
-//             SCENE.OUTPUT.MSAA, SCENE.OUTPUT.PIPELINE
+//             SCENE.OUTPUT.MSAA, SCENE.OUTPUT.PIPELINE, SCENE.OUTPUT.AREA
 
 #include "rastrules/io/fragment_json.hpp"
 
@@ -106,6 +106,11 @@ void append_fragment_fields(std::string& out, const Fragment& f, bool first,
     const EvalDerivatives& d = *f.derivatives;
     out += ", \"ddx\": [" + format_sixteenths(d.ddx_x) + ", " + format_sixteenths(d.ddx_y) + "]";
     out += ", \"ddy\": [" + format_sixteenths(d.ddy_x) + ", " + format_sixteenths(d.ddy_y) + "]";
+  }
+  // rule: SCENE.OUTPUT.AREA
+  if (f.area) {
+    out += ", \"area\": \"" + f.area.text() + "\", \"alpha\": ";
+    out += std::to_string(f.area.alpha());
   }
 }
 

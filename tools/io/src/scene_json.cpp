@@ -3,7 +3,7 @@
 // writer.
 // Implements: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.INPUT.ERRORS, SCENE.PRIM.POINT,
 //             SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.LINE_MODE, SCENE.MSAA,
-//             SCENE.PIPELINE
+//             SCENE.PIPELINE, SCENE.PRIM.PATH
 // The multisampling keys (SCENE.MSAA): the reader checks each key's type and range and builds
 // the sample pattern from "samples" and "sample_pattern"; the rules between keys (a sample mask
 // wider than the pattern, lines a pattern cannot draw) are prepare()'s (MSAA.LIMITS), except
@@ -36,6 +36,7 @@
 
 #include "rastrules/fixed.hpp"
 #include "rastrules/io/json_stream.hpp"
+#include "rastrules/io/svg_path.hpp"
 #include "rastrules/names.hpp"
 #include "rastrules/snap.hpp"
 
@@ -113,6 +114,10 @@ enum class Ctx {
   kPosCoords,  // one [x, y, z(, w)]
   kAttrArray,  // "primitives[i].attr": [[a0, a1, ...], ...]
   kAttrValues, // one vertex's values
+  // Path primitives (SCENE.PRIM.PATH).
+  kContourList, // "primitives[i].contours": [contour, ...]
+  kContour,     // one contour: [command, ...]
+  kCommand,     // one command: ["M" | "L" | "Q" | "C", x, y, ...]
 };
 
 // Where a value goes.
@@ -188,6 +193,14 @@ enum class Slot {
   kPosCoord,
   kAttrVertex,
   kAttrValue,
+  // primitives[i] of type "path" (SCENE.PRIM.PATH)
+  kPathData,
+  kContours,
+  kFillRule,
+  kPathCoverage,
+  kContourEntry,
+  kCommandEntry,
+  kCommandItem,
 };
 
 struct KeySpec {
@@ -221,21 +234,30 @@ constexpr std::array<KeySpec, 21> kRootKeys = {
      {"provoking_vertex", Slot::kProvoking, false, true}}};
 constexpr std::array<KeySpec, 2> kTargetKeys = {
     {{"width", Slot::kWidth, true}, {"height", Slot::kHeight, true}}};
-// "v" is required unless "pos" is given (checked when the primitive ends).
-constexpr std::array<KeySpec, 8> kPrimitiveKeys = {{{"type", Slot::kType, true},
-                                                    {"v", Slot::kVertices, false},
-                                                    {"aa", Slot::kAA, false},
-                                                    {"color", Slot::kColor, false},
-                                                    {"z", Slot::kZ, false, true},
-                                                    {"w", Slot::kW, false, true},
-                                                    {"pos", Slot::kPos, false, true},
-                                                    {"attr", Slot::kAttr, false, true}}};
+// "v" is required unless "pos" is given, or for a path "d" or "contours" (checked when the
+// primitive ends).
+constexpr std::array<KeySpec, 12> kPrimitiveKeys = {{{"type", Slot::kType, true},
+                                                     {"v", Slot::kVertices, false},
+                                                     {"aa", Slot::kAA, false},
+                                                     {"color", Slot::kColor, false},
+                                                     {"z", Slot::kZ, false, true},
+                                                     {"w", Slot::kW, false, true},
+                                                     {"pos", Slot::kPos, false, true},
+                                                     {"attr", Slot::kAttr, false, true},
+                                                     {"d", Slot::kPathData, false},
+                                                     {"contours", Slot::kContours, false},
+                                                     {"fill_rule", Slot::kFillRule, false},
+                                                     {"coverage", Slot::kPathCoverage, false}}};
 constexpr std::size_t kVKeyIndex = 1;
 constexpr std::size_t kAAKeyIndex = 2;
 constexpr std::size_t kZKeyIndex = 4;
 constexpr std::size_t kWKeyIndex = 5;
 constexpr std::size_t kPosKeyIndex = 6;
 constexpr std::size_t kAttrKeyIndex = 7;
+constexpr std::size_t kDKeyIndex = 8;
+constexpr std::size_t kContoursKeyIndex = 9;
+constexpr std::size_t kFillRuleKeyIndex = 10;
+constexpr std::size_t kCoverageKeyIndex = 11;
 
 // The pipeline objects (SCENE.PIPELINE). Every key is optional but an attribute's name.
 constexpr std::array<KeySpec, 6> kViewportKeys = {{{"x", Slot::kViewportX, false},
@@ -376,11 +398,16 @@ public:
       const auto given = [&](std::size_t key) { return (f.seen & (1u << key)) != 0; };
       // rule: SCENE.PIPELINE
       const bool has_pos = given(kPosKeyIndex);
-      if (has_pos && given(kVKeyIndex)) {
+      // rule: SCENE.PRIM.PATH
+      if (!finish_path(f.path, given(kVKeyIndex), given(kDKeyIndex), given(kContoursKeyIndex),
+                       given(kFillRuleKeyIndex), given(kCoverageKeyIndex)))
+        return false;
+      const bool is_path = current_.type == PrimitiveType::kPath;
+      if (!is_path && has_pos && given(kVKeyIndex)) {
         return fail(f.path + ".pos", "a primitive has either \"v\" (window space) or \"pos\" "
                                      "(positions before the transform), not both");
       }
-      if (!has_pos && !given(kVKeyIndex))
+      if (!is_path && !has_pos && !given(kVKeyIndex))
         return fail(f.path + ".v", "is missing");
       // rule: SCENE.PRIM.LINE
       // "aa" is a key of lines only, whatever its value (the type may come after it).
@@ -450,6 +477,11 @@ public:
         f.count == 0) {
       return fail(f.path, "must have one entry per vertex, got none");
     }
+    // rule: SCENE.PRIM.PATH
+    if (f.ctx == Ctx::kCommand)
+      return finish_command(f.path, f.count);
+    if (f.ctx == Ctx::kContour && f.count == 0)
+      return fail(f.path, "must start with [\"M\", x, y], got an empty contour");
     if (f.ctx == Ctx::kPosCoords && f.count < 3) {
       return fail(f.path, "must have 3 or 4 coordinates [x, y, z] or [x, y, z, w], got " +
                               std::to_string(f.count));
@@ -535,6 +567,8 @@ private:
       return *r;
     if (const auto r = primitive_pipeline_value(slot, field, v))
       return *r;
+    if (const auto r = path_value(slot, field, v))
+      return *r;
     return fail(field, "internal error: unknown slot");
   }
 
@@ -578,6 +612,8 @@ private:
       current_ = Primitive{};
       current_.v.clear();
       extras_ = PipeExtras{};
+      path_ = FloatPath{};
+      d_text_.clear();
       return push(Ctx::kPrimitiveObject, field);
     case Slot::kType:
       if (v.kind != Kind::kString)
@@ -587,7 +623,8 @@ private:
         return true;
       }
       return fail(field, "unknown primitive type \"" + printable(v.text) +
-                             "\" (expected \"triangle\", \"point\", \"line\" or \"line_strip\")");
+                             "\" (expected \"triangle\", \"point\", \"line\", \"line_strip\" or "
+                             "\"path\")");
     case Slot::kVertices:
       if (v.kind != Kind::kArray)
         return type_error(field, "an array of vertices [x, y]", v);
@@ -858,6 +895,144 @@ private:
     }
   }
 
+  // The keys of a path primitive (SCENE.PRIM.PATH): "d", "contours" and its commands,
+  // "fill_rule", "coverage". Returns nullopt for a slot of another group.
+  std::optional<bool> path_value(Slot slot, const std::string& field, const Value& v) {
+    switch (slot) {
+    case Slot::kPathData:
+      if (v.kind != Kind::kString)
+        return type_error(field, "a string of SVG path data", v);
+      d_text_ = std::string(v.text);
+      return true;
+    case Slot::kFillRule:
+      return enumeration(field, v, Names<path::FillRule>::table, path_.fill_rule);
+    case Slot::kPathCoverage:
+      return enumeration(field, v, Names<path::Coverage>::table, path_.coverage);
+    case Slot::kContours:
+      if (v.kind != Kind::kArray)
+        return type_error(field, "an array of contours", v);
+      return push(Ctx::kContourList, field);
+    case Slot::kContourEntry:
+      if (v.kind != Kind::kArray)
+        return type_error(field, "an array of commands [\"M\", x, y], [\"L\", x, y], ...", v);
+      path_.contours.emplace_back();
+      return push(Ctx::kContour, field);
+    case Slot::kCommandEntry:
+      if (v.kind != Kind::kArray)
+        return type_error(field, "an array [\"M\" | \"L\" | \"Q\" | \"C\", x, y, ...]", v);
+      command_index_ = coord_;
+      command_op_ = '\0';
+      return push(Ctx::kCommand, field);
+    case Slot::kCommandItem:
+      if (coord_ == 0) {
+        static constexpr std::string_view kOps = "MLQC";
+        if (v.kind != Kind::kString || v.text.size() != 1 ||
+            kOps.find(v.text[0]) == std::string_view::npos)
+          return type_error(field, "one of \"M\", \"L\", \"Q\", \"C\"", v);
+        command_op_ = v.text[0];
+        if (command_index_ == 0 && command_op_ != 'M')
+          return fail(field, "a contour starts with \"M\", got \"" + std::string(v.text) + "\"");
+        if (command_index_ != 0 && command_op_ == 'M') {
+          return fail(field, "\"M\" only starts a contour (a new contour is a new array in "
+                             "\"contours\")");
+        }
+        return true;
+      } else {
+        const std::optional<float> f =
+            float32_value(field, v, "a number, \"NaN\", \"Infinity\" or \"-Infinity\"");
+        if (!f)
+          return false;
+        command_values_[coord_ - 1] = *f;
+        return true;
+      }
+    default:
+      return std::nullopt;
+    }
+  }
+
+  // Returns the number of coordinates a command takes: 2 for "M" and "L", 4 for "Q", 6 for "C".
+  static std::size_t command_arity(char op) { return op == 'Q' ? 4 : op == 'C' ? 6 : 2; }
+
+  // One command read ([op, numbers...] complete): the contour's start or a segment.
+  // rule: SCENE.PRIM.PATH
+  bool finish_command(const std::string& at, std::size_t count) {
+    if (count == 0)
+      return fail(at, "must be [\"M\" | \"L\" | \"Q\" | \"C\", x, y, ...], got an empty array");
+    const std::size_t need = command_arity(command_op_);
+    if (count - 1 != need) {
+      return fail(at, "\"" + std::string(1, command_op_) + "\" takes " + std::to_string(need) +
+                          " numbers, got " + std::to_string(count - 1));
+    }
+    FloatContour& c = path_.contours.back();
+    const auto pt = [&](std::size_t k) {
+      return FloatPoint{command_values_[2 * k], command_values_[2 * k + 1]};
+    };
+    if (command_op_ == 'M') {
+      c.start = pt(0);
+      return true;
+    }
+    FloatPathSegment seg;
+    seg.kind = command_op_ == 'L'   ? path::SegmentKind::kLine
+               : command_op_ == 'Q' ? path::SegmentKind::kQuadratic
+                                    : path::SegmentKind::kCubic;
+    for (std::size_t k = 0; k < need / 2; ++k)
+      seg.p[k] = pt(k);
+    c.segments.push_back(seg);
+    return true;
+  }
+
+  // The keys of a path once its primitive ends (the type may come after them): a path has "d"
+  // or "contours" and no "v"; other primitives have none of the path keys. "d" is read here
+  // into contours (SCENE.PATH.DATA), each point's character offset kept for messages.
+  // rule: SCENE.PRIM.PATH, SCENE.PATH.DATA
+  bool finish_path(const std::string& at, bool v_given, bool d_given, bool contours_given,
+                   bool fill_rule_given, bool coverage_given) {
+    if (current_.type != PrimitiveType::kPath) {
+      const char* key = d_given           ? "d"
+                        : contours_given  ? "contours"
+                        : fill_rule_given ? "fill_rule"
+                        : coverage_given  ? "coverage"
+                                          : nullptr;
+      if (key == nullptr)
+        return true;
+      return fail(at + "." + key, "only a path takes \"" + std::string(key) + "\", not a " +
+                                      std::string(to_string(current_.type)));
+    }
+    if (v_given) {
+      return fail(at + ".v", "a path takes no \"v\" (its points are in \"d\" or \"contours\")");
+    }
+    if (d_given && contours_given) {
+      return fail(at + ".contours",
+                  "a path has either \"d\" (SVG path data) or \"contours\", not both");
+    }
+    if (!d_given && !contours_given)
+      return fail(at + ".d", "is missing: a path needs \"d\" (SVG path data) or \"contours\"");
+    if (d_given) {
+      auto read = parse_svg_path(d_text_, kMaxPathSegments);
+      if (const auto* bad = std::get_if<SvgPathError>(&read))
+        return fail(at + ".d", bad->what());
+      for (const SvgContour& sc : std::get<std::vector<SvgContour>>(read)) {
+        FloatContour c;
+        c.start = FloatPoint{sc.start.x, sc.start.y};
+        path_.d_offsets.push_back(sc.start.at);
+        for (const SvgSegment& ss : sc.segments) {
+          FloatPathSegment seg;
+          seg.kind = ss.kind == SvgSegmentKind::kLine        ? path::SegmentKind::kLine
+                     : ss.kind == SvgSegmentKind::kQuadratic ? path::SegmentKind::kQuadratic
+                                                             : path::SegmentKind::kCubic;
+          for (std::size_t k = 0; k < path::point_count(seg.kind); ++k) {
+            seg.p[k] = FloatPoint{ss.p[k].x, ss.p[k].y};
+            path_.d_offsets.push_back(ss.p[k].at);
+          }
+          c.segments.push_back(seg);
+        }
+        path_.contours.push_back(std::move(c));
+      }
+    }
+    current_.path = std::move(path_);
+    return true;
+  }
+
   // The most elements an array of this context holds; one more is an error (overflow_message).
   // rule: SCENE.INPUT.LIMITS
   std::size_t element_limit(Ctx ctx) const {
@@ -883,6 +1058,12 @@ private:
       return pipe::kMaxAttributes;
     case Ctx::kAttrValues:
       return pipe::kMaxAttributes;
+    case Ctx::kContourList:
+      return kMaxPathSegments;
+    case Ctx::kContour:
+      return kMaxPathSegments + 1;
+    case Ctx::kCommand:
+      return 7;
     default:
       return 0;
     }
@@ -917,6 +1098,14 @@ private:
     case Ctx::kAttrValues:
       return "must have one value per declared attribute (at most " +
              std::to_string(pipe::kMaxAttributes) + "), got more";
+    case Ctx::kContourList:
+      return "more than " + std::to_string(kMaxPathSegments) +
+             " contours in one path (limit SCENE.INPUT.LIMITS)";
+    case Ctx::kContour:
+      return "more than " + std::to_string(kMaxPathSegments) +
+             " segments in one contour (limit SCENE.INPUT.LIMITS)";
+    case Ctx::kCommand:
+      return "must be [\"M\" | \"L\" | \"Q\" | \"C\", x, y, ...] with at most 6 numbers, got more";
     default:
       return "internal error: not an array";
     }
@@ -950,6 +1139,12 @@ private:
       return Slot::kAttrVertex;
     case Ctx::kAttrValues:
       return Slot::kAttrValue;
+    case Ctx::kContourList:
+      return Slot::kContourEntry;
+    case Ctx::kContour:
+      return Slot::kCommandEntry;
+    case Ctx::kCommand:
+      return Slot::kCommandItem;
     default:
       return Slot::kRoot;
     }
@@ -1150,6 +1345,12 @@ private:
   bool list_is_w_ = false;            // the number list being read is "w" (else "z")
   PipeExtras extras_;                 // the current primitive's pipeline keys
   std::vector<PipeExtras> extras_of_; // per primitive, up to the last one that has any
+  // Path primitives (SCENE.PRIM.PATH).
+  FloatPath path_;                        // the current primitive's path keys
+  std::string d_text_;                    // its "d", read when the primitive ends
+  std::size_t command_index_ = 0;         // the command being read: its index in its contour
+  char command_op_ = '\0';                // and its letter
+  std::array<float, 6> command_values_{}; // and its numbers
   bool root_done_ = false;
   std::string last_path_;
   std::optional<SceneError> error_;
@@ -1384,6 +1585,28 @@ std::string vertices_text(const std::vector<FloatPoint>& v) {
   return out + "]";
 }
 
+// "\"fill_rule\": ..., \"coverage\": ..., \"contours\": [[[\"M\", x, y], [\"L\", x, y], ...],
+// ...]": a path in the JSON contour form, whatever form it was read from (SCENE.PRIM.PATH).
+std::string path_text(const FloatPath& path) {
+  std::string out = "\"fill_rule\": \"" + std::string(to_string(path.fill_rule)) +
+                    "\", \"coverage\": \"" + std::string(to_string(path.coverage)) +
+                    "\", \"contours\": [";
+  for (std::size_t c = 0; c < path.contours.size(); ++c) {
+    const FloatContour& contour = path.contours[c];
+    out += (c == 0 ? "[[\"M\", " : ", [[\"M\", ") + float_text(contour.start[0]) + ", " +
+           float_text(contour.start[1]) + "]";
+    for (const FloatPathSegment& seg : contour.segments) {
+      static constexpr const char* kOps[] = {"L", "Q", "C"};
+      out += ", [\"" + std::string(kOps[static_cast<int>(seg.kind)]) + "\"";
+      for (std::size_t k = 0; k < path::point_count(seg.kind); ++k)
+        out += ", " + float_text(seg.p[k][0]) + ", " + float_text(seg.p[k][1]);
+      out += "]";
+    }
+    out += "]";
+  }
+  return out + "]";
+}
+
 // Whether two floats are the same value bit for bit, any NaN equal to any NaN.
 bool same_float(float x, float y) {
   if (std::isnan(x) && std::isnan(y))
@@ -1403,8 +1626,39 @@ bool same_float_vector(const std::vector<float>& a, const std::vector<float>& b)
   return a.size() == b.size() && same_floats(a.data(), b.data(), a.size());
 }
 
+// Whether two paths are the same, their points bit for bit (where "d" put them is no part of a
+// path).
+bool same_path(const std::optional<FloatPath>& a, const std::optional<FloatPath>& b) {
+  if (a.has_value() != b.has_value())
+    return false;
+  if (!a)
+    return true;
+  if (a->fill_rule != b->fill_rule || a->coverage != b->coverage ||
+      a->contours.size() != b->contours.size())
+    return false;
+  for (std::size_t c = 0; c < a->contours.size(); ++c) {
+    const FloatContour& ca = a->contours[c];
+    const FloatContour& cb = b->contours[c];
+    if (!same_floats(ca.start.data(), cb.start.data(), 2) ||
+        ca.segments.size() != cb.segments.size())
+      return false;
+    for (std::size_t k = 0; k < ca.segments.size(); ++k) {
+      const FloatPathSegment& sa = ca.segments[k];
+      const FloatPathSegment& sb = cb.segments[k];
+      if (sa.kind != sb.kind)
+        return false;
+      for (std::size_t i = 0; i < path::point_count(sa.kind); ++i) {
+        if (!same_floats(sa.p[i].data(), sb.p[i].data(), 2))
+          return false;
+      }
+    }
+  }
+  return true;
+}
+
 bool same_primitive(const Primitive& pa, const Primitive& pb) {
-  if (pa.type != pb.type || pa.aa != pb.aa || pa.color != pb.color || pa.v.size() != pb.v.size()) {
+  if (pa.type != pb.type || pa.aa != pb.aa || pa.color != pb.color || pa.v.size() != pb.v.size() ||
+      !same_path(pa.path, pb.path)) {
     return false;
   }
   for (std::size_t i = 0; i < pa.v.size(); ++i) {
@@ -1501,7 +1755,11 @@ std::string write_scene(const Scene& s) {
     const Primitive& prim = s.primitives[p];
     out += p == 0 ? "\n" : ",\n";
     out += primitive_head(prim);
-    if (!prim.pos.empty()) {
+    if (prim.path) {
+      out += path_text(*prim.path);
+      if (!prim.v.empty())
+        out += ", " + vertices_text(prim.v);
+    } else if (!prim.pos.empty()) {
       out += "\"pos\": [";
       for (std::size_t i = 0; i < prim.pos.size(); ++i) {
         out += (i == 0 ? "" : ", ") + floats_text(prim.pos[i].data(), 4);
