@@ -352,13 +352,55 @@ void check_multisampled(const Scene& scene, const PreparedScene& ps,
 
 } // namespace
 
+// rule: SCENE.PRIM.PATH
 Mismatches check_against_oracle(const Scene& scene, const PreparedScene& ps,
                                 const std::vector<Fragment>& kernel, const CheckOptions& options) {
   Checker c(options);
-  if (multisampled(scene))
-    check_multisampled(scene, ps, kernel, c);
+  const bool has_paths =
+      std::any_of(scene.primitives.begin(), scene.primitives.end(),
+                  [](const Primitive& p) { return p.type == PrimitiveType::kPath; });
+  if (!has_paths) {
+    if (multisampled(scene))
+      check_multisampled(scene, ps, kernel, c);
+    else
+      check_single_sample(scene, ps, kernel, c);
+    return c.take();
+  }
+  // Paths against the path oracle; the rest as a scene of its own, its primitives renumbered.
+  std::vector<std::vector<const Fragment*>> of_path(scene.primitives.size());
+  Scene rest = target_of(scene);
+  std::vector<std::uint32_t> index(scene.primitives.size(), 0);
+  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+    if (scene.primitives[p].type == PrimitiveType::kPath)
+      continue;
+    index[p] = static_cast<std::uint32_t>(rest.primitives.size());
+    rest.primitives.push_back(scene.primitives[p]);
+  }
+  std::vector<Fragment> rest_kernel;
+  for (std::size_t i = 0; i < kernel.size(); ++i) {
+    const Fragment& f = kernel[i];
+    if (f.prim >= scene.primitives.size()) {
+      c.note("fragment " + std::to_string(i) + ": no such primitive " + std::to_string(f.prim));
+    } else if (scene.primitives[f.prim].type == PrimitiveType::kPath) {
+      of_path[f.prim].push_back(&f);
+    } else {
+      rest_kernel.push_back(f);
+      rest_kernel.back().prim = index[f.prim];
+    }
+    if (i > 0 && !fragment_before(kernel[i - 1], f))
+      c.note("fragment " + std::to_string(i) + ": out of (prim, y, x, seg, sample) order");
+  }
+  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+    if (scene.primitives[p].type == PrimitiveType::kPath)
+      detail::check_path(scene, p, of_path[p], c);
+  }
+  // The scene without its paths prepares: ps did, and removing primitives removes no error.
+  const PreparedScene rest_ps = std::get<PreparedScene>(prepare(rest));
+  (void)ps;
+  if (multisampled(rest))
+    check_multisampled(rest, rest_ps, rest_kernel, c);
   else
-    check_single_sample(scene, ps, kernel, c);
+    check_single_sample(rest, rest_ps, rest_kernel, c);
   return c.take();
 }
 

@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "rastrules/check/check.hpp"
 
@@ -37,5 +39,11 @@ private:
   CheckOptions options_;
   Mismatches out_;
 };
+
+// Compares the fragments of path primitive p (mine, in order) with the path oracle's samples
+// or exact areas (check/src/path.cpp).
+// rule: SCENE.PRIM.PATH, SCENE.OUTPUT.AREA
+void check_path(const Scene& scene, std::size_t p, const std::vector<const Fragment*>& mine,
+                Checker& c);
 
 } // namespace rastrules::check::detail

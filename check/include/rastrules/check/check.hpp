@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "rastrules/oracle/msaa.hpp"
+#include "rastrules/oracle/path.hpp"
 #include "rastrules/oracle/triangle.hpp"
 #include "rastrules/pipeline.hpp"
 #include "rastrules/scene.hpp"
@@ -26,6 +27,10 @@ namespace rastrules::check {
 [[nodiscard]] oracle::State oracle_state(const RasterState& state);
 [[nodiscard]] std::array<std::int64_t, 2> oracle_raw(const FloatPoint& v);
 [[nodiscard]] oracle::msaa::Input oracle_msaa_input(const Scene& scene);
+
+// A path as the path oracle reads it: every control point by the oracle's own snapping.
+// rule: SCENE.PRIM.PATH
+[[nodiscard]] oracle::path::Path oracle_path(const FloatPath& path);
 
 // Whether a scene goes to the multisampling oracle: anything SCENE.MSAA asks for beyond one
 // sample at the centre with pixel shading.
@@ -51,6 +56,10 @@ struct Mismatches {
 // quadrilateral lines against quad_line_covers, antialiased lines against aa_pixels' set and
 // aa_check (coverage within LINE.AA.PRECISION). Multisampled scenes: every fragment field
 // against oracle::msaa::render and the resolved target against oracle::msaa::resolve.
+// Path primitives, in any scene: each pixel's mask against oracle::path::cover_samples (the
+// scene's pattern and fill convention, ANDed with the sample mask), or its exact area and
+// alpha against oracle::path::cover_area; the other primitives are checked as above without
+// them (the resolve too).
 // Preconditions: ps is prepare(scene) and kernel its fragments (rasterize or render).
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.COVERAGE, SCENE.OUTPUT.MSAA, MSAA.RESOLVE.AVERAGE
 [[nodiscard]] Mismatches check_against_oracle(const Scene& scene, const PreparedScene& ps,
