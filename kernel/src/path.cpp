@@ -91,6 +91,45 @@ private:
   std::vector<const DownEdge*> active_;
 };
 
+// Curves whose control points' y-range holds a sample row (a curve lies in the convex hull of
+// its control points, so no other curve crosses the row), kept while the rows go down.
+class ActiveCurves {
+public:
+  explicit ActiveCurves(const std::vector<detail::Curve>& curves) {
+    ranges_.reserve(curves.size());
+    for (const detail::Curve& c : curves) {
+      std::int64_t lo = c.p[0].y, hi = c.p[0].y;
+      for (int k = 1; k <= c.degree; ++k) {
+        lo = std::min<std::int64_t>(lo, c.p[static_cast<std::size_t>(k)].y);
+        hi = std::max<std::int64_t>(hi, c.p[static_cast<std::size_t>(k)].y);
+      }
+      ranges_.push_back(Range{lo, hi, &c});
+    }
+    std::stable_sort(ranges_.begin(), ranges_.end(),
+                     [](const Range& p, const Range& q) { return p.lo < q.lo; });
+  }
+  // The curves with lo <= y <= hi. Calls must come with non-decreasing y.
+  const std::vector<const detail::Curve*>& advance(std::int64_t y) {
+    while (next_ < ranges_.size() && ranges_[next_].lo <= y)
+      live_.push_back(&ranges_[next_++]);
+    std::erase_if(live_, [&](const Range* r) { return r->hi < y; });
+    active_.clear();
+    for (const Range* r : live_)
+      active_.push_back(r->curve);
+    return active_;
+  }
+
+private:
+  struct Range {
+    std::int64_t lo = 0, hi = 0;
+    const detail::Curve* curve = nullptr;
+  };
+  std::vector<Range> ranges_;
+  std::size_t next_ = 0;
+  std::vector<const Range*> live_;
+  std::vector<const detail::Curve*> active_;
+};
+
 } // namespace
 
 namespace detail {
@@ -185,6 +224,7 @@ void cover_samples(const Path& path, const SamplePattern& pattern, FillConventio
   const detail::Boundary b = detail::boundary_of(path);
   const std::vector<DownEdge> edges = down_edges(b);
   ActiveEdges active(edges);
+  ActiveCurves curves(b.curves);
 
   // The pattern's samples grouped by their row offset, top row first.
   struct Sample {
@@ -207,6 +247,7 @@ void cover_samples(const Path& path, const SamplePattern& pattern, FillConventio
 
   std::vector<std::uint32_t> masks(static_cast<std::size_t>(w), 0);
   std::vector<Crossing> crossings;
+  std::vector<std::int64_t> suffix;
   for (std::int32_t j = 0; j < h; ++j) {
     std::int64_t touched_lo = w, touched_hi = -1;
     for (const auto& [oy, samples] : rows) {
@@ -219,8 +260,8 @@ void cover_samples(const Path& path, const SamplePattern& pattern, FillConventio
         if (spans)
           crossings.push_back(Crossing{line_threshold(*e, sy, t), e->dir});
       }
-      for (const detail::Curve& c : b.curves) {
-        const std::vector<Crossing> cc = detail::curve_crossings(c, sy, t);
+      for (const detail::Curve* c : curves.advance(sy)) {
+        const std::vector<Crossing> cc = detail::curve_crossings(*c, sy, t);
         crossings.insert(crossings.end(), cc.begin(), cc.end());
       }
       if (crossings.empty())
@@ -228,7 +269,7 @@ void cover_samples(const Path& path, const SamplePattern& pattern, FillConventio
       std::sort(crossings.begin(), crossings.end(),
                 [](const Crossing& p, const Crossing& q) { return p.threshold < q.threshold; });
       // Winding on each interval of sample x: (T[m-1], T[m]] has the sum of dir over l >= m.
-      std::vector<std::int64_t> suffix(crossings.size() + 1, 0);
+      suffix.assign(crossings.size() + 1, 0);
       for (std::size_t m = crossings.size(); m-- > 0;)
         suffix[m] = suffix[m + 1] + crossings[m].dir;
       for (const Sample& smp : samples) {

@@ -494,6 +494,234 @@ Wide wide_floor_div(Wide n, Wide d) { // d > 0
   return (n % d != 0 && n < 0) ? q - 1 : q;
 }
 
+// The crossing of a root confined to [k, k + 1] / 2^30 (g changes sign there exactly, from
+// -dir to dir): false unless the Bernstein coefficients of x on that interval lie strictly
+// between two consecutive integers F and F + 1 (then F < x_c < F + 1: the crossing counts for a
+// sample x <= F under either hx).
+bool crossing_on(const Cubic& x, std::int64_t k, int dir, Crossing& out) {
+  // First a Lipschitz bound: |x'| <= L = |e1| + 2 |e2| + 3 |e3| on [0, 1], so x_c lies within
+  // L 2^-30 of x(k / 2^30), which scaled() gives exactly (times 2^90); B = L 2^60 < 2^90.
+  {
+    const Wide lip =
+        static_cast<Wide>(std::abs(x.c[1]) + 2 * std::abs(x.c[2]) + 3 * std::abs(x.c[3]))
+        << (2 * kFastBits);
+    const Wide xk = x.scaled(k);
+    const Wide one = Wide{1} << (3 * kFastBits);
+    const Wide f = wide_floor_div(xk, one);
+    if (xk - lip > f * one && xk + lip < (f + 1) * one) {
+      out = Crossing{static_cast<std::int64_t>(f), dir};
+      return true;
+    }
+  }
+  // x on [k, k + 1] / 2^30 lies between its Bernstein coefficients (scaled by 3 * 2^90).
+  const Wide kk = k;
+  std::array<Wide, 4> p{}; // power coefficients in s of x((k + s) / 2^30) * 2^90
+  for (int j = 0; j <= 3; ++j) {
+    Wide kpow = 1;
+    for (int i2 = j; i2 >= 0; --i2) {
+      static constexpr int kBinom[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
+      p[static_cast<std::size_t>(i2)] += static_cast<Wide>(x.c[static_cast<std::size_t>(j)]) *
+                                         kBinom[j][i2] * kpow * (Wide{1} << (kFastBits * (3 - j)));
+      kpow *= kk;
+    }
+  }
+  const std::array<Wide, 4> xb{3 * p[0], 3 * p[0] + p[1], 3 * p[0] + 2 * p[1] + p[2],
+                               3 * (p[0] + p[1] + p[2] + p[3])};
+  const Wide xmin = *std::min_element(xb.begin(), xb.end());
+  const Wide xmax = *std::max_element(xb.begin(), xb.end());
+  const Wide scale = Wide{3} << (3 * kFastBits);
+  const Wide f = wide_floor_div(xmin, scale);
+  if (!(xmin > f * scale && xmax < (f + 1) * scale))
+    return false; // an integer in reach of x_c: decide exactly on the rational path
+  out = Crossing{static_cast<std::int64_t>(f), dir};
+  return true;
+}
+
+// Double estimates of the roots of g in (0, 1): [0, 1] cut at the roots of g' (quadratic
+// formula) into pieces on which g is monotone, and on each piece whose ends have opposite signs
+// in double, Newton's method kept inside the bracket by bisection. Only proposes: every
+// estimate is checked exactly by the caller. Returns the number of estimates (at most 3).
+int root_estimates(const Cubic& g, std::array<double, 3>& t) {
+  const double c1 = static_cast<double>(g.c[1]), c2 = static_cast<double>(g.c[2]),
+               c3 = static_cast<double>(g.c[3]);
+  if (c3 == 0.0 && c2 != 0.0) { // a quadratic: the roots by the stable quadratic formula
+    const double c0 = static_cast<double>(g.c[0]), disc = c1 * c1 - 4.0 * c2 * c0;
+    if (disc < 0.0)
+      return 0;
+    const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+    std::array<double, 2> r{q / c2, q != 0.0 ? c0 / q : q / c2};
+    if (r[0] > r[1])
+      std::swap(r[0], r[1]);
+    int n = 0;
+    for (int i = 0; i < 2; ++i)
+      if (r[static_cast<std::size_t>(i)] > 0.0 && r[static_cast<std::size_t>(i)] < 1.0 &&
+          (i == 0 || r[1] != r[0]))
+        t[static_cast<std::size_t>(n++)] = r[static_cast<std::size_t>(i)];
+    return n;
+  }
+  std::array<double, 4> cut{0.0, 1.0, 1.0, 1.0};
+  int cuts = 1;
+  const auto add_cut = [&](double u) {
+    if (u > 0.0 && u < 1.0)
+      cut[static_cast<std::size_t>(cuts++)] = u;
+  };
+  if (c3 == 0.0) {
+    if (c2 != 0.0)
+      add_cut(-c1 / (2.0 * c2));
+  } else {
+    const double disc = 4.0 * c2 * c2 - 12.0 * c3 * c1;
+    if (disc > 0.0) {
+      const double q = -0.5 * (2.0 * c2 + std::copysign(std::sqrt(disc), c2));
+      add_cut(q / (3.0 * c3));
+      if (q != 0.0)
+        add_cut(c1 / q);
+    }
+  }
+  if (cuts == 3 && cut[1] > cut[2])
+    std::swap(cut[1], cut[2]);
+  cut[static_cast<std::size_t>(cuts)] = 1.0;
+  int n = 0;
+  for (int i = 0; i < cuts; ++i) {
+    double lo = cut[static_cast<std::size_t>(i)], hi = cut[static_cast<std::size_t>(i) + 1];
+    const double glo = g.approx(lo), ghi = g.approx(hi);
+    if (!((glo < 0.0 && ghi > 0.0) || (glo > 0.0 && ghi < 0.0)))
+      continue;
+    const bool rising = ghi > 0.0;
+    double u = 0.5 * (lo + hi);
+    for (int it = 0; it < 100; ++it) {
+      const double gu = g.approx(u);
+      if (gu == 0.0)
+        break;
+      ((gu < 0.0) == rising ? lo : hi) = u;
+      const double d = (3.0 * c3 * u + 2.0 * c2) * u + c1;
+      double next = d != 0.0 ? u - gu / d : lo;
+      if (!(next > lo && next < hi))
+        next = 0.5 * (lo + hi);
+      const bool settled = std::abs(next - u) <= 0x1p-44; // far below the 2^-30 grid
+      u = next;
+      if (settled)
+        break;
+    }
+    t[static_cast<std::size_t>(n++)] = u;
+  }
+  return n;
+}
+
+// Finds the v crossings from root_estimates(): each estimate must be confined by an exact sign
+// change to an interval [k, k + 1] / 2^30 (k from the estimate, or a neighbour), the intervals
+// distinct, and their number v: then they hold exactly the v roots of g in (0, 1), one each
+// (Descartes: v bounds the roots and has their parity; each interval holds an odd number).
+bool estimated_crossings(const Cubic& g, const Cubic& x, int v, std::vector<Crossing>& found) {
+  constexpr std::int64_t kOne = std::int64_t{1} << kFastBits;
+  std::array<double, 3> est{};
+  if (root_estimates(g, est) != v)
+    return false;
+  std::array<std::int64_t, 3> ks{};
+  for (int r = 0; r < v; ++r) {
+    const std::int64_t k0 =
+        std::clamp(static_cast<std::int64_t>(std::floor(est[static_cast<std::size_t>(r)] * kOne)),
+                   std::int64_t{0}, kOne - 1);
+    bool confined = false;
+    for (const std::int64_t k : {k0, k0 - 1, k0 + 1}) {
+      if (k < 0 || k >= kOne)
+        continue;
+      const int s0 = wide_sign(g.scaled(k)), s1 = wide_sign(g.scaled(k + 1));
+      if (s0 == 0 || s1 == 0 || s0 == s1)
+        continue;
+      for (int q = 0; q < r; ++q)
+        if (ks[static_cast<std::size_t>(q)] == k)
+          return false;
+      Crossing c;
+      if (!crossing_on(x, k, s1, c))
+        return false;
+      ks[static_cast<std::size_t>(r)] = k;
+      found.push_back(c);
+      confined = true;
+      break;
+    }
+    if (!confined)
+      return false;
+  }
+  return true;
+}
+
+// The exact crossings of a quadratic (or linear) g whose roots are rational (a linear g, or a
+// discriminant that is a perfect square, which covers every root at t = 0 or 1): each root
+// t = p / q exactly, its order and direction from the integer derivatives there, its x as the
+// fraction (e0 q^2 + e1 p q + e2 p^2) / q^2, floor and integrality exact (PATH.CURVE.SAMPLE).
+// Returns false, having decided nothing, when the roots are irrational.
+//
+// Budget: |c_j|, |e_j| < 2^27; D = c1^2 - 4 c2 c0 < 2^57; |p|, q <= |c1| + sqrt(D) + 2 |c2| <
+// 2^30; the numerator of x is a sum of three terms below 2^(27 + 60) < 2^89: all in __int128.
+static_assert(2 * kCoefficientBits + 3 <= 62,
+              "the discriminant must fit int64_t (PATH.CURVE.SAMPLE)");
+static_assert(kCoefficientBits + 2 * (kCoefficientBits + 3) + 2 <= 126,
+              "x at a rational root must fit __int128 (PATH.CURVE.SAMPLE)");
+// rule: PATH.CURVE.SAMPLE
+bool rational_quadratic_crossings(const Cubic& g, const Cubic& x, Tie t,
+                                  std::vector<Crossing>& out) {
+  if (g.c[3] != 0 || x.c[3] != 0)
+    return false;
+  const Wide c0 = g.c[0], c1 = g.c[1], c2 = g.c[2];
+  const int hy = t.y_down ? 1 : -1;
+  // The roots as p / q, q > 0, with their multiplicity.
+  std::array<std::pair<Wide, Wide>, 2> roots{};
+  int n = 0;
+  bool twice = false;
+  if (c2 == 0) {
+    if (c1 == 0)
+      return true; // y constant: on the row (never crossed) or off it
+    roots[0] = c1 > 0 ? std::pair{-c0, c1} : std::pair{c0, -c1};
+    n = 1;
+  } else {
+    const Wide d = c1 * c1 - 4 * c2 * c0;
+    if (d < 0)
+      return true;                                                         // no real root
+    Wide s = static_cast<std::int64_t>(std::sqrt(static_cast<double>(d))); // d < 2^57
+    while (s * s > d)
+      --s;
+    while ((s + 1) * (s + 1) <= d)
+      ++s;
+    if (s * s != d)
+      return false; // irrational roots
+    const Wide q = 2 * c2;
+    const auto normal = [](Wide num, Wide den) {
+      return den > 0 ? std::pair{num, den} : std::pair{-num, -den};
+    };
+    roots[0] = normal(-c1 - s, q);
+    roots[1] = normal(-c1 + s, q);
+    n = s == 0 ? 1 : 2;
+    twice = s == 0;
+  }
+  for (int i = 0; i < n; ++i) {
+    const auto [p, q] = roots[static_cast<std::size_t>(i)];
+    if (p < 0 || p > q)
+      continue; // outside [0, 1]
+    // g' and g'' at p / q, scaled by q and q^0: their signs.
+    const int d1 = wide_sign(c1 * q + 2 * c2 * p), d2 = wide_sign(c2);
+    // x(p / q) = (e0 q^2 + e1 p q + e2 p^2) / q^2.
+    const Wide num = static_cast<Wide>(x.c[0]) * q * q + static_cast<Wide>(x.c[1]) * p * q +
+                     static_cast<Wide>(x.c[2]) * p * p;
+    const Wide den = q * q;
+    const Wide f = wide_floor_div(num, den);
+    const bool integral = f * den == num;
+    const auto threshold = static_cast<std::int64_t>(integral && t.x_right ? f - 1 : f);
+    // Order m and sign a of the first non-zero derivative at the root.
+    const int m = d1 != 0 ? 1 : 2;
+    const int a = d1 != 0 ? d1 : d2;
+    if (p == 0) { // t = 0: crossed iff a = hy, in direction hy
+      if (a == hy)
+        out.push_back(Crossing{threshold, hy});
+    } else if (p == q) { // t = 1: crossed iff a (-1)^m = hy, in direction -hy
+      if ((m % 2 == 1 ? -a : a) == hy)
+        out.push_back(Crossing{threshold, -hy});
+    } else if (!twice) { // inside, simple: crosses in the direction of g'
+      out.push_back(Crossing{threshold, d1});
+    } // inside, double: touches the row; its two crossings cancel
+  }
+  return true;
+}
+
 bool fast_curve_crossings(const Cubic& g, const Cubic& x, std::vector<Crossing>& out) {
   constexpr std::int64_t kOne = std::int64_t{1} << kFastBits;
   if (g.c[0] == 0 || g.c[0] + g.c[1] + g.c[2] + g.c[3] == 0)
@@ -512,9 +740,14 @@ bool fast_curve_crossings(const Cubic& g, const Cubic& x, std::vector<Crossing>&
   }
   if (v == 0)
     return true;
+  // First the estimates of root_estimates(), then (when a check fails) a scan of 64 intervals;
+  // `out` is empty here and left to the caller to clear when false is returned.
+  std::vector<Crossing>& found = out;
+  if (estimated_crossings(g, x, v, found))
+    return true;
+  found.clear();
   constexpr int kSteps = 64;
   constexpr std::int64_t kStep = kOne / kSteps;
-  std::vector<Crossing> found;
   for (int i = 0; i < kSteps; ++i) {
     const double ta = static_cast<double>(i) / kSteps, tb = static_cast<double>(i + 1) / kSteps;
     if ((g.approx(ta) < 0) == (g.approx(tb) < 0))
@@ -536,35 +769,13 @@ bool fast_curve_crossings(const Cubic& g, const Cubic& x, std::vector<Crossing>&
     const int s0 = wide_sign(g.scaled(k)), s1 = wide_sign(g.scaled(k + 1));
     if (s0 != sa || s1 != sb)
       return false;
-    // x on [k, k + 1] / 2^30 lies between its Bernstein coefficients (scaled by 3 * 2^90).
-    const Wide kk = k;
-    std::array<Wide, 4> p{}; // power coefficients in s of x((k + s) / 2^30) * 2^90
-    for (int j = 0; j <= 3; ++j) {
-      Wide kpow = 1;
-      for (int i2 = j; i2 >= 0; --i2) {
-        static constexpr int kBinom[4][4] = {
-            {1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
-        p[static_cast<std::size_t>(i2)] += static_cast<Wide>(x.c[static_cast<std::size_t>(j)]) *
-                                           kBinom[j][i2] * kpow *
-                                           (Wide{1} << (kFastBits * (3 - j)));
-        kpow *= kk;
-      }
-    }
-    const std::array<Wide, 4> xb{3 * p[0], 3 * p[0] + p[1], 3 * p[0] + 2 * p[1] + p[2],
-                                 3 * (p[0] + p[1] + p[2] + p[3])};
-    const Wide xmin = *std::min_element(xb.begin(), xb.end());
-    const Wide xmax = *std::max_element(xb.begin(), xb.end());
-    const Wide scale = Wide{3} << (3 * kFastBits);
-    const Wide f = wide_floor_div(xmin, scale);
-    if (!(xmin > f * scale && xmax < (f + 1) * scale))
-      return false; // an integer in reach of x_c: decide exactly on the rational path
-    // F < x_c < F + 1: the crossing counts for sample x <= F under either hx.
-    found.push_back(Crossing{static_cast<std::int64_t>(f), sb});
+    Crossing c;
+    if (!crossing_on(x, k, sb, c))
+      return false;
+    found.push_back(c);
   }
-  if (static_cast<int>(found.size()) != v)
-    return false; // roots closer than 1/64 apart, or a multiple root: not isolated here
-  out.insert(out.end(), found.begin(), found.end());
-  return true;
+  // roots closer than 1/64 apart, or a multiple root: not isolated here
+  return static_cast<int>(found.size()) == v;
 }
 
 } // namespace
@@ -610,6 +821,9 @@ std::vector<Crossing> curve_crossings_impl(const Curve& c, std::int64_t sy, Tie 
     gi.c = coefficients(ys);
     gi.c[0] -= sy;
     xi.c = coefficients(xs);
+    if (fast && n == 2 && rational_quadratic_crossings(gi, xi, t, out))
+      return out;
+    out.clear();
     if (fast && fast_curve_crossings(gi, xi, out))
       return out;
     out.clear();
