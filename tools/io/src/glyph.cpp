@@ -270,6 +270,62 @@ std::variant<FreeTypeGlyph, GlyphError> load_freetype_glyph(const std::string& f
   return FreeTypeGlyph(std::move(impl));
 }
 
+// rule: PATH.GLYPH.PLACE
+std::variant<FreeTypeGlyph, GlyphError> freetype_outline_of(const Glyph& g) {
+  // Points and tags, contour ends; 26.6, y up from the target's bottom edge.
+  std::vector<FT_Vector> points;
+  std::vector<char> tags;
+  std::vector<short> ends;
+  std::string bad;
+  const auto add = [&](path::Point p, char tag) {
+    if (p.x % 4 != 0 || p.y % 4 != 0) {
+      if (bad.empty())
+        bad = "point (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
+              ") (raw 16.8) is not on the 26.6 grid";
+      return;
+    }
+    points.push_back(FT_Vector{static_cast<FT_Pos>(p.x / 4),
+                               static_cast<FT_Pos>((256 * std::int64_t{g.height} - p.y) / 4)});
+    tags.push_back(tag);
+  };
+  for (const path::Contour& c : g.path.contours) {
+    add(c.start, FT_CURVE_TAG_ON);
+    for (const path::Segment& s : c.segments) {
+      if (s.kind == path::SegmentKind::kLine) {
+        add(s.p[0], FT_CURVE_TAG_ON);
+      } else if (s.kind == path::SegmentKind::kQuadratic) {
+        add(s.p[0], FT_CURVE_TAG_CONIC);
+        add(s.p[1], FT_CURVE_TAG_ON);
+      } else {
+        add(s.p[0], FT_CURVE_TAG_CUBIC);
+        add(s.p[1], FT_CURVE_TAG_CUBIC);
+        add(s.p[2], FT_CURVE_TAG_ON);
+      }
+    }
+    if (points.size() > 32767)
+      return GlyphError{"the path has more than 32767 points, FreeType's limit"};
+    ends.push_back(static_cast<short>(points.size() - 1));
+  }
+  if (!bad.empty())
+    return GlyphError{bad};
+  auto impl = std::make_unique<FreeTypeGlyph::Impl>();
+  if (const FT_Error e = FT_Init_FreeType(&impl->library); e != 0) {
+    impl->library = nullptr;
+    return GlyphError{"cannot start FreeType (error " + hex_error(e) + ")"};
+  }
+  if (FT_Outline_New(impl->library, static_cast<FT_UInt>(points.size()),
+                     static_cast<FT_Int>(ends.size()), &impl->outline) != 0)
+    return GlyphError{"out of memory making a FreeType outline"};
+  impl->outline_made = true;
+  std::copy(points.begin(), points.end(), impl->outline.points);
+  std::copy(tags.begin(), tags.end(), impl->outline.tags);
+  std::copy(ends.begin(), ends.end(), impl->outline.contours);
+  impl->outline.flags =
+      g.path.fill_rule == path::FillRule::kEvenOdd ? FT_OUTLINE_EVEN_ODD_FILL : FT_OUTLINE_NONE;
+  impl->glyph = g;
+  return FreeTypeGlyph(std::move(impl));
+}
+
 // rule: PATH.GLYPH.SOURCE
 std::variant<Glyph, GlyphError> load_glyph(const std::string& font_file, char32_t code_point,
                                            int pixel_size) {

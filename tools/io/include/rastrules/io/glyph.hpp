@@ -86,6 +86,7 @@ public:
 private:
   friend std::variant<FreeTypeGlyph, GlyphError> load_freetype_glyph(const std::string&, char32_t,
                                                                      int);
+  friend std::variant<FreeTypeGlyph, GlyphError> freetype_outline_of(const Glyph&);
   explicit FreeTypeGlyph(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
@@ -97,6 +98,13 @@ private:
 // rule: PATH.GLYPH.SOURCE, PATH.GLYPH.PLACE, PATH.GLYPH.ERRORS
 [[nodiscard]] std::variant<FreeTypeGlyph, GlyphError>
 load_freetype_glyph(const std::string& font_file, char32_t code_point, int pixel_size);
+
+// FreeType's outline of any path in its target (lines, quadratics as conic arcs, cubics;
+// evenodd as FT_OUTLINE_EVEN_ODD_FILL), so that FreeType's rasterizers fill exactly the path the
+// kernel fills: every coordinate must be a multiple of 4 raw (a 26.6 value); otherwise an
+// error naming the first point that is not. g.origin_x and g.origin_y are not used.
+// rule: PATH.GLYPH.PLACE
+[[nodiscard]] std::variant<FreeTypeGlyph, GlyphError> freetype_outline_of(const Glyph& g);
 
 // The same, the path and its target only.
 // rule: PATH.GLYPH.SOURCE
