@@ -611,7 +611,8 @@ int root_estimates(const Cubic& g, std::array<double, 3>& t) {
 // change to an interval [k, k + 1] / 2^30 (k from the estimate, or a neighbour), the intervals
 // distinct, and their number v: then they hold exactly the v roots of g in (0, 1), one each
 // (Descartes: v bounds the roots and has their parity; each interval holds an odd number).
-bool estimated_crossings(const Cubic& g, const Cubic& x, int v, std::vector<Crossing>& found) {
+bool estimated_crossings(const Cubic& g, const Cubic& x, int v, std::vector<Crossing>& found,
+                         int dir_sign = 1) {
   constexpr std::int64_t kOne = std::int64_t{1} << kFastBits;
   std::array<double, 3> est{};
   if (root_estimates(g, est) != v)
@@ -632,7 +633,7 @@ bool estimated_crossings(const Cubic& g, const Cubic& x, int v, std::vector<Cros
         if (ks[static_cast<std::size_t>(q)] == k)
           return false;
       Crossing c;
-      if (!crossing_on(x, k, s1, c))
+      if (!crossing_on(x, k, dir_sign * s1, c))
         return false;
       ks[static_cast<std::size_t>(r)] = k;
       found.push_back(c);
@@ -653,6 +654,30 @@ bool estimated_crossings(const Cubic& g, const Cubic& x, int v, std::vector<Cros
 //
 // Budget: |c_j|, |e_j| < 2^27; D = c1^2 - 4 c2 c0 < 2^57; |p|, q <= |c1| + sqrt(D) + 2 |c2| <
 // 2^30; the numerator of x is a sum of three terms below 2^(27 + 60) < 2^89: all in __int128.
+// The threshold of a crossing at x_c = num / den (den > 0): the largest sample x it counts for,
+// floor(x_c), less one when x_c is an integer and hx = +1 (PATH.SAMPLE.TIE).
+std::int64_t threshold_of(Wide num, Wide den, Tie t) {
+  const Wide f = wide_floor_div(num, den);
+  return static_cast<std::int64_t>(f * den == num && t.x_right ? f - 1 : f);
+}
+
+// The sign variations of 3 times the Bernstein coefficients of g on [0, 1] (Descartes' bound on
+// its roots in (0, 1), with their parity).
+int bernstein_variations(const Cubic& g) {
+  const std::int64_t a0 = g.c[0], a1 = g.c[1], a2 = g.c[2], a3 = g.c[3];
+  const std::array<std::int64_t, 4> b{3 * a0, 3 * a0 + a1, 3 * a0 + 2 * a1 + a2,
+                                      3 * (a0 + a1 + a2 + a3)};
+  int v = 0, last = 0;
+  for (const std::int64_t bi : b) {
+    const int si = bi > 0 ? 1 : (bi < 0 ? -1 : 0);
+    if (si != 0 && last != 0 && si != last)
+      ++v;
+    if (si != 0)
+      last = si;
+  }
+  return v;
+}
+
 static_assert(2 * kCoefficientBits + 3 <= 62,
               "the discriminant must fit int64_t (PATH.CURVE.SAMPLE)");
 static_assert(kCoefficientBits + 2 * (kCoefficientBits + 3) + 2 <= 126,
@@ -702,10 +727,7 @@ bool rational_quadratic_crossings(const Cubic& g, const Cubic& x, Tie t,
     // x(p / q) = (e0 q^2 + e1 p q + e2 p^2) / q^2.
     const Wide num = static_cast<Wide>(x.c[0]) * q * q + static_cast<Wide>(x.c[1]) * p * q +
                      static_cast<Wide>(x.c[2]) * p * p;
-    const Wide den = q * q;
-    const Wide f = wide_floor_div(num, den);
-    const bool integral = f * den == num;
-    const auto threshold = static_cast<std::int64_t>(integral && t.x_right ? f - 1 : f);
+    const std::int64_t threshold = threshold_of(num, q * q, t);
     // Order m and sign a of the first non-zero derivative at the root.
     const int m = d1 != 0 ? 1 : 2;
     const int a = d1 != 0 ? d1 : d2;
@@ -722,22 +744,114 @@ bool rational_quadratic_crossings(const Cubic& g, const Cubic& x, Tie t,
   return true;
 }
 
+// The crossings of a cubic g with a root at t = 0 or 1 (a curve end on the row), in integers:
+// each end root by the order and sign of g's first non-zero derivative there (PATH.CURVE.SAMPLE),
+// then g = t^m0 (t - 1)^m1 h with h(0), h(1) != 0 and degree <= 2 divided out exactly, and the
+// roots of h in (0, 1), which are g's, as rationals p / q (h linear, or a perfect-square
+// discriminant) or confined from root estimates; the direction at a simple root is that of
+// g' = t^m0 (t - 1)^m1 h' there, (-1)^m1 sgn h'. x at p / q is the fraction
+// (e0 q^3 + e1 p q^2 + e2 p^2 q + e3 p^3) / q^3. Returns false when g has no end root or a check
+// fails; the caller then clears `out`.
+//
+// Budget: h's coefficients are sums of at most three of g's (|h_j| < 3 * 2^27 < 2^29), so
+// D = h1^2 - 4 h2 h0 < 2^61, |p| <= |h1| + sqrt(D) < 2^31, q = 2 |h2| < 2^30, and every term of
+// x's numerator is below 2^(27 + 93) (sum < 2^122): __int128; h.scaled() terms < 2^(29 + 90).
+// rule: PATH.CURVE.SAMPLE
+bool cubic_end_crossings(const Cubic& g, const Cubic& x, Tie t, std::vector<Crossing>& out) {
+  const int hy = t.y_down ? 1 : -1;
+  const std::array<Wide, 4> c{g.c[0], g.c[1], g.c[2], g.c[3]};
+  const Wide g_at_1 = c[0] + c[1] + c[2] + c[3];
+  if ((c[0] != 0 && g_at_1 != 0) || (c[1] == 0 && c[2] == 0 && c[3] == 0))
+    return false;  // no end root, or y constant
+  if (c[0] == 0) { // t = 0: crossed iff a = hy, in direction hy
+    std::size_t m = 1;
+    while (c[m] == 0)
+      ++m;
+    if (wide_sign(c[m]) == hy)
+      out.push_back(Crossing{threshold_of(x.c[0], 1, t), hy});
+  }
+  if (g_at_1 == 0) { // t = 1: crossed iff a (-1)^m = hy, in direction -hy
+    const std::array<Wide, 3> d{c[1] + 2 * c[2] + 3 * c[3], 2 * c[2] + 6 * c[3], 6 * c[3]};
+    std::size_t m = 0; // the order is m + 1
+    while (d[m] == 0)
+      ++m;
+    if ((m % 2 == 0 ? -wide_sign(d[m]) : wide_sign(d[m])) == hy)
+      out.push_back(Crossing{threshold_of(Wide{x.c[0]} + x.c[1] + x.c[2] + x.c[3], 1, t), -hy});
+  }
+  // Divide out t^m0, then (t - 1)^m1.
+  std::array<Wide, 4> h = c;
+  std::size_t deg = 3;
+  while (h[deg] == 0)
+    --deg;
+  while (deg > 0 && h[0] == 0) {
+    for (std::size_t i = 0; i < deg; ++i)
+      h[i] = h[i + 1];
+    h[deg--] = 0;
+  }
+  int flips = 1; // (-1)^m1
+  while (deg > 0) {
+    Wide sum = 0;
+    for (std::size_t i = 0; i <= deg; ++i)
+      sum += h[i];
+    if (sum != 0)
+      break;
+    std::array<Wide, 4> q{};
+    q[deg - 1] = h[deg];
+    for (std::size_t i = deg - 1; i >= 1; --i)
+      q[i - 1] = h[i] + q[i];
+    h = q;
+    --deg;
+    flips = -flips;
+  }
+  if (deg >= 3)
+    return false; // not reached: an end root is divided out above
+  if (deg == 0)
+    return true; // no root inside
+  // x at t = p / q (q > 0) as a crossing in direction dir.
+  const auto at = [&](Wide p, Wide q, int dir) {
+    const Wide num = ((static_cast<Wide>(x.c[3]) * p + static_cast<Wide>(x.c[2]) * q) * p +
+                      static_cast<Wide>(x.c[1]) * q * q) *
+                         p +
+                     static_cast<Wide>(x.c[0]) * q * q * q;
+    out.push_back(Crossing{threshold_of(num, q * q * q, t), dir});
+  };
+  if (deg == 1) {
+    const Wide p = h[1] > 0 ? -h[0] : h[0], q = h[1] > 0 ? h[1] : -h[1];
+    if (p > 0 && p < q)
+      at(p, q, flips * wide_sign(h[1]));
+    return true;
+  }
+  const Wide disc = h[1] * h[1] - 4 * h[2] * h[0];
+  if (disc < 0)
+    return true;
+  Wide s = static_cast<std::int64_t>(std::sqrt(static_cast<double>(disc))); // disc < 2^61
+  while (s * s > disc)
+    --s;
+  while ((s + 1) * (s + 1) <= disc)
+    ++s;
+  if (s * s == disc) {
+    if (s == 0)
+      return true; // a double root: touches the row (its crossings cancel) or lies outside
+    for (const Wide num : {-h[1] - s, -h[1] + s}) {
+      const Wide p = h[2] > 0 ? num : -num, q = 2 * (h[2] > 0 ? h[2] : -h[2]);
+      if (p > 0 && p < q)
+        at(p, q, flips * wide_sign(h[1] * q + 2 * h[2] * p));
+    }
+    return true;
+  }
+  // Irrational roots: confine the estimates of h's roots (h(0), h(1) != 0, |h_j| < 2^29).
+  const Cubic hc{{static_cast<std::int64_t>(h[0]), static_cast<std::int64_t>(h[1]),
+                  static_cast<std::int64_t>(h[2]), 0}};
+  const int v = bernstein_variations(hc);
+  return v == 0 || estimated_crossings(hc, x, v, out, flips);
+}
+
 bool fast_curve_crossings(const Cubic& g, const Cubic& x, std::vector<Crossing>& out) {
   constexpr std::int64_t kOne = std::int64_t{1} << kFastBits;
   if (g.c[0] == 0 || g.c[0] + g.c[1] + g.c[2] + g.c[3] == 0)
     return false; // a root at an end: the half-open rule needs derivatives
   // Bernstein coefficients of g on [0, 1], times 3: their sign variations bound the roots.
-  const std::int64_t a0 = g.c[0], a1 = g.c[1], a2 = g.c[2], a3 = g.c[3];
-  const std::array<std::int64_t, 4> b{3 * a0, 3 * a0 + a1, 3 * a0 + 2 * a1 + a2,
-                                      3 * (a0 + a1 + a2 + a3)};
-  int v = 0, last = 0;
-  for (const std::int64_t bi : b) {
-    const int si = bi > 0 ? 1 : (bi < 0 ? -1 : 0);
-    if (si != 0 && last != 0 && si != last)
-      ++v;
-    if (si != 0)
-      last = si;
-  }
+  const int v = bernstein_variations(g);
   if (v == 0)
     return true;
   // First the estimates of root_estimates(), then (when a check fails) a scan of 64 intervals;
@@ -822,6 +936,9 @@ std::vector<Crossing> curve_crossings_impl(const Curve& c, std::int64_t sy, Tie 
     gi.c[0] -= sy;
     xi.c = coefficients(xs);
     if (fast && n == 2 && rational_quadratic_crossings(gi, xi, t, out))
+      return out;
+    out.clear();
+    if (fast && n == 3 && cubic_end_crossings(gi, xi, t, out))
       return out;
     out.clear();
     if (fast && fast_curve_crossings(gi, xi, out))
