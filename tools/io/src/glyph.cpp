@@ -177,12 +177,13 @@ void FreeTypeGlyph::render_mono(GlyphBitmap& out) const {
   out.height = g.height;
   out.pixels.assign(static_cast<std::size_t>(g.width) * static_cast<std::size_t>(g.height), 0);
   for (std::int32_t y = 0; y < g.height; ++y)
-    for (std::int32_t x = 0; x < g.width; ++x)
+    for (std::int32_t x = 0; x < g.width; ++x) {
+      const unsigned byte =
+          rows[static_cast<std::size_t>(y) * pitch + static_cast<std::size_t>(x / 8)];
+      const unsigned shift = 7u - static_cast<unsigned>(x % 8);
       out.pixels[static_cast<std::size_t>(y) * static_cast<std::size_t>(g.width) +
-                 static_cast<std::size_t>(x)] =
-          (rows[static_cast<std::size_t>(y) * pitch + static_cast<std::size_t>(x / 8)] >>
-           (7 - x % 8)) &
-          1u;
+                 static_cast<std::size_t>(x)] = static_cast<std::uint8_t>((byte >> shift) & 1u);
+    }
 }
 
 void FreeTypeGlyph::render_gray(GlyphBitmap& out) const {
