@@ -305,6 +305,11 @@ void cover_samples(const Path& path, const SamplePattern& pattern, FillConventio
 std::vector<SampleCoverage> cover_samples(const Path& path, const SamplePattern& pattern,
                                           FillConvention fill, std::int32_t w, std::int32_t h) {
   std::vector<SampleCoverage> out;
+  // Room for a small target's pixels at once (at most 2^12 entries, 48 KiB, below malloc's
+  // mmap threshold): glyph-sized results then grow without copies.
+  if (w > 0 && h > 0)
+    out.reserve(std::min<std::size_t>(static_cast<std::size_t>(w) * static_cast<std::size_t>(h),
+                                      std::size_t{1} << 12));
   cover_samples(path, pattern, fill, w, h, [&](const SampleCoverage& c) { out.push_back(c); });
   return out;
 }

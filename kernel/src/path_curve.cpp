@@ -507,7 +507,7 @@ bool crossing_on(const Cubic& x, std::int64_t k, int dir, Crossing& out) {
         << (2 * kFastBits);
     const Wide xk = x.scaled(k);
     const Wide one = Wide{1} << (3 * kFastBits);
-    const Wide f = wide_floor_div(xk, one);
+    const Wide f = xk >> (3 * kFastBits); // floor(xk / 2^90): >> is arithmetic on __int128
     if (xk - lip > f * one && xk + lip < (f + 1) * one) {
       out = Crossing{static_cast<std::int64_t>(f), dir};
       return true;
