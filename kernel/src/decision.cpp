@@ -8,6 +8,9 @@
 
 #include "rastrules/line_aa.hpp"
 
+#include <memory>
+#include <utility>
+
 namespace rastrules {
 
 // rule: LINE.D3D.EXIT, LINE.VK.EXIT, LINE.AA.FRAGMENT, LINE.MAJOR.AXIS
@@ -158,6 +161,47 @@ MsaaDecision decide_msaa(const PreparedScene& scene, const PreparedPrimitive& pr
 
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP
 // rule: MSAA.MASK.AND
+namespace {
+
+// rule: SCENE.PRIM.PATH, PATH.WINDING, PATH.SAMPLE.TIE, PATH.FILL.RULE, PATH.AREA.EXACT
+PathDecision decide_path(const PreparedScene& scene, const PreparedPrimitive& prim, std::int32_t x,
+                         std::int32_t y) {
+  PathDecision d;
+  d.coverage = prim.coverage;
+  d.fill_rule = prim.path->fill_rule;
+  const SamplePattern& pattern = scene.msaa.pattern;
+  std::uint32_t covered = 0;
+  for (std::size_t k = 0; k < pattern.positions.size(); ++k) {
+    PathSampleDecision sd;
+    sd.index = static_cast<std::uint32_t>(k);
+    sd.offset = pattern.positions[k];
+    sd.position = sample_position(x, y, sd.offset);
+    const path::Point s{sd.position.x.raw(), sd.position.y.raw()};
+    sd.crossings = path::crossings(*prim.path, s, scene.conventions.fill);
+    for (const path::SampleCrossing& c : sd.crossings)
+      sd.winding += c.dir;
+    sd.fills = path::fill_holds(prim.path->fill_rule, sd.winding);
+    covered |= sd.fills ? std::uint32_t{1} << k : 0u;
+    d.samples.push_back(std::move(sd));
+  }
+  const std::uint32_t keep = scene.msaa.effective_mask();
+  if (prim.coverage == path::Coverage::kSamples) {
+    d.mask = covered & keep;
+    return d;
+  }
+  // rule: PATH.AREA.EXACT
+  path::cover_area(*prim.path, scene.width, y + 1, [&](const path::AreaCoverage& a) {
+    if (a.x == x && a.y == y) {
+      d.area = ExactArea(
+          std::make_shared<const path::AreaValue>(path::AreaValue{a.area, a.error_bound}));
+    }
+  });
+  d.mask = d.area ? keep : 0u;
+  return d;
+}
+
+} // namespace
+
 PixelDecision decide_pixel(const PreparedScene& scene, std::size_t p, std::int32_t x,
                            std::int32_t y) {
   const PreparedPrimitive& prim = scene.primitives[p];
@@ -165,6 +209,12 @@ PixelDecision decide_pixel(const PreparedScene& scene, std::size_t p, std::int32
   d.prim = p;
   d.x = x;
   d.y = y;
+  // rule: SCENE.PRIM.PATH
+  if (prim.type == PrimitiveType::kPath) {
+    d.path = decide_path(scene, prim, x, y);
+    d.covered = d.centre_covered = d.path->mask != 0;
+    return d;
+  }
   const Vec2 centre = pixel_center(x, y);
   for (const PreparedTriangle& t : prim.triangles) {
     d.triangles.push_back(decide_triangle(t.setup, scene.state, centre));

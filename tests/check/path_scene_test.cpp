@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "rastrules/check/check.hpp"
+#include "rastrules/decision.hpp"
 #include "rastrules/io/scene_json.hpp"
 #include "rastrules/path.hpp"
 
@@ -167,6 +168,37 @@ TEST(PathScene, TheCheckerNamesEveryTampering) {
                        }),
                        "kernel area"));
   EXPECT_TRUE(mentions(tampered([&](auto& g) { first_of(g, 1).seg = 0; }), "does not have"));
+}
+
+// rule: SCENE.PRIM.PATH, PATH.WINDING, PATH.AREA.EXACT
+TEST(PathScene, DecisionRecordsAgreeWithTheFragmentsAtEveryPixel) {
+  const Scene s = read(R"({"target": {"width": 9, "height": 7}, "samples": 4,
+    "primitives": [
+      {"type": "path", "fill_rule": "evenodd", "d": "M 1 1 L 8 1 L 4 6 Z M 2 2 L 6 2 L 4 5 Z"},
+      {"type": "path", "d": "M 0.5 0.5 Q 9 0 8 6 C 4 7 0 9 0.5 0.5 Z"},
+      {"type": "path", "coverage": "area", "d": "M 1 1 L 8 1 L 4 6 Z M 2 2 L 6 2 L 4 5 Z"}]})");
+  const PreparedScene ps = std::get<PreparedScene>(prepare(s));
+  const std::vector<Fragment> f = frags(s);
+  for (std::size_t p = 0; p < s.primitives.size(); ++p) {
+    for (std::int32_t y = 0; y < s.height; ++y) {
+      for (std::int32_t x = 0; x < s.width; ++x) {
+        const PixelDecision d = decide_pixel(ps, p, x, y);
+        ASSERT_TRUE(d.path.has_value());
+        const auto it = std::find_if(f.begin(), f.end(), [&](const Fragment& g) {
+          return g.prim == p && g.x == x && g.y == y;
+        });
+        EXPECT_EQ(d.covered, it != f.end()) << p << " " << x << "," << y;
+        if (it == f.end())
+          continue;
+        EXPECT_EQ(d.path->mask, it->mask);
+        EXPECT_EQ(d.path->area, it->area);
+        std::int64_t sum = 0;
+        for (const path::SampleCrossing& c : d.path->samples[0].crossings)
+          sum += c.dir;
+        EXPECT_EQ(sum, d.path->samples[0].winding);
+      }
+    }
+  }
 }
 
 // rule: SCENE.INPUT.LIMITS, SCENE.PRIM.PATH

@@ -178,3 +178,55 @@ TEST(CliExplain, ASingleSampleAwayFromTheCentreOrMaskedAwayIsExplainedPerSample)
 }
 
 } // namespace
+
+namespace {
+
+// Two evenodd triangles, one inside the other: pixel (2, 2) has winding 2 at its centre (a
+// hole under evenodd), and the area path's pixel there carries its exact area.
+constexpr const char* kNested = R"({"target": {"width": 8, "height": 6}, "primitives": [
+  {"type": "path", "fill_rule": "evenodd", "d": "M 1 1 L 7 1 L 4 5 Z M 2 2 L 6 2 L 4 4.5 Z"},
+  {"type": "path", "coverage": "area", "fill_rule": "evenodd",
+   "d": "M 1 1 L 7 1 L 4 5 Z M 2 2 L 6 2 L 4 4.5 Z"}]})";
+
+// rule: SCENE.PRIM.PATH, PATH.WINDING, PATH.FILL.RULE, PATH.AREA.EXACT
+TEST(CliExplainPath, NamesEveryCrossingTheWindingAndTheExactArea) {
+  const auto r = explain_pixel("3,3", kNested);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string& out = r.out;
+  EXPECT_TRUE(contains(out, "primitive 0: path, evenodd, 2 contours, 4 segments, coverage "
+                            "\"samples\"  [SCENE.PRIM.PATH]"))
+      << out;
+  // The centre (3.5, 3.5) is inside both triangles: the ray to the right crosses the right
+  // side of each (segment 1 of each contour), both running down.
+  EXPECT_TRUE(contains(out, "contour 0 segment 1 (+1), contour 1 segment 1 (+1)")) << out;
+  EXPECT_TRUE(contains(out, "winding 2: evenodd does not hold -> not covered  [PATH.FILL.RULE]"))
+      << out;
+  EXPECT_TRUE(contains(out, "mask 0b0 (no sample) -> no fragment")) << out;
+  EXPECT_TRUE(contains(out, "area 11/60 px^2")) << out;
+  EXPECT_TRUE(contains(out, "alpha 47 -> fragment")) << out;
+  EXPECT_TRUE(contains(out, "pixel (3, 3): covered by primitive 1\n")) << out;
+  // The left side of the outer triangle is its closing line.
+  const auto edge = explain_pixel("1,1", kNested);
+  ASSERT_EQ(edge.status, 0) << edge.err;
+  EXPECT_TRUE(contains(edge.out, "contour 0 segment 1 (+1)")) << edge.out;
+}
+
+// rule: SCENE.PRIM.PATH, PATH.WINDING
+TEST(CliExplainPath, JsonCarriesTheCrossingsWindingsAndArea) {
+  const TempDir dir;
+  const auto r =
+      run_cli({"explain", dir.write("scene.json", kNested).string(), "--pixel", "3,3", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto doc = nlohmann::json::parse(r.out);
+  const auto& p0 = doc["primitives"][0];
+  EXPECT_EQ(p0["type"], "path");
+  EXPECT_EQ(p0["samples"][0]["winding"], 2);
+  EXPECT_EQ(p0["samples"][0]["crossings"].size(), 2u);
+  EXPECT_EQ(p0["covered"], false);
+  const auto& p1 = doc["primitives"][1];
+  EXPECT_EQ(p1["area"], "11/60");
+  EXPECT_EQ(p1["alpha"], 47);
+  EXPECT_EQ(doc["covered_by"], nlohmann::json::array({1}));
+}
+
+} // namespace

@@ -338,6 +338,67 @@ Report explain_primitive(const LoadedScene& loaded, std::size_t p, std::int32_t 
   return r;
 }
 
+// "contour C segment S" or "contour C closing line" (PATH.CONTOUR.CLOSE).
+std::string piece_text(const FloatPath& path, const path::SampleCrossing& c) {
+  const bool closing =
+      c.contour < path.contours.size() && c.segment >= path.contours[c.contour].segments.size();
+  return "contour " + std::to_string(c.contour) +
+         (closing ? " closing line" : " segment " + std::to_string(c.segment));
+}
+
+// A path primitive at the pixel: every sample's crossings, winding number and the fill rule's
+// verdict, then the fragment (its mask, or its exact area and alpha). The kernel's decision
+// record (decide_pixel) is formatted, nothing recomputed.
+// rule: SCENE.PRIM.PATH, PATH.WINDING, PATH.SAMPLE.TIE, PATH.FILL.RULE, PATH.AREA.EXACT
+std::string path_text(const Report& r, const PreparedScene& s) {
+  const PathDecision& d = *r.d.path;
+  const FloatPath& fp = *r.input.path;
+  std::size_t segments = 0;
+  for (const FloatContour& c : fp.contours)
+    segments += c.segments.size();
+  std::string out =
+      "\nprimitive " + std::to_string(r.index) + ": path, " + std::string(to_string(d.fill_rule)) +
+      ", " + std::to_string(fp.contours.size()) + " contour" +
+      (fp.contours.size() == 1 ? "" : "s") + ", " + std::to_string(segments) + " segment" +
+      (segments == 1 ? "" : "s") + ", coverage \"" + std::string(to_string(d.coverage)) + "\"  " +
+      cite({rules::kScenePrimPath}) + "\n";
+  const bool area = d.coverage == path::Coverage::kArea;
+  for (const PathSampleDecision& sd : d.samples) {
+    out += "  sample " + std::to_string(sd.index) + " at " + offset_text(sd.offset) + " -> " +
+           point_px(sd.position) + " px = raw " + point_raw(sd.position) +
+           (area ? " (for information)" : "") + "\n";
+    std::string list;
+    for (const path::SampleCrossing& c : sd.crossings)
+      list +=
+          (list.empty() ? "" : ", ") + piece_text(fp, c) + " (" + (c.dir > 0 ? "+1" : "-1") + ")";
+    out += "    crossings of its ray to the right (displaced for fill " +
+           std::string(to_string(s.state.fill)) +
+           "): " + (list.empty() ? std::string("none") : list) + "  " +
+           cite({rules::kPathWinding, rules::kPathSampleTie, rules::kPathContourClose}) + "\n";
+    out += "    winding " + std::to_string(sd.winding) + ": " +
+           std::string(to_string(d.fill_rule)) + (sd.fills ? " holds" : " does not hold") +
+           (area       ? ""
+            : sd.fills ? " -> covered"
+                       : " -> not covered") +
+           "  " + cite({rules::kPathFillRule}) + "\n";
+  }
+  if (area) {
+    if (d.area) {
+      out += "  area " + d.area.text() + " px^2 (about " + std::to_string(d.area.approx()) +
+             "), alpha " + std::to_string(d.area.alpha()) + " -> fragment, mask " +
+             mask_text(d.mask, s.msaa.count()) + "  " +
+             cite({rules::kPathAreaExact, rules::kSceneOutputArea}) + "\n";
+    } else {
+      out += "  area 0 -> no fragment  " + cite({rules::kPathAreaExact}) + "\n";
+    }
+  } else {
+    out += "  mask " + mask_text(d.mask, s.msaa.count()) +
+           (d.mask != 0 ? " -> fragment" : " -> no fragment") + "  " + cite({rules::kSceneMsaa}) +
+           "\n";
+  }
+  return out;
+}
+
 // The per-sample lines of one sample of a multisampled primitive.
 // rule: MSAA.SAMPLE.POSITION, MSAA.COVER.SAMPLE
 std::string sample_text(const SampleDecision& sd, const PreparedScene& s, bool several) {
@@ -475,7 +536,9 @@ void print_text(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
   }
   std::vector<std::size_t> covering;
   for (const Report& report : reports) {
-    if (report.show_samples) {
+    if (report.d.path) {
+      out += path_text(report, s);
+    } else if (report.show_samples) {
       out += msaa_text(report, s, x, y);
     } else if (report.type != PrimitiveType::kTriangle) {
       out += other_text(report, s, sample);
@@ -601,6 +664,37 @@ ojson other_json(const Report& r, const PreparedScene& s) {
   return p;
 }
 
+// rule: SCENE.PRIM.PATH, PATH.WINDING, PATH.FILL.RULE, PATH.AREA.EXACT
+ojson path_json(const Report& r) {
+  using json = ojson;
+  const PathDecision& d = *r.d.path;
+  json p;
+  p["prim"] = r.index;
+  p["type"] = "path";
+  p["fill_rule"] = to_string(d.fill_rule);
+  p["coverage"] = to_string(d.coverage);
+  json samples = json::array();
+  for (const PathSampleDecision& sd : d.samples) {
+    json crossings = json::array();
+    for (const path::SampleCrossing& c : sd.crossings)
+      crossings.push_back({{"contour", c.contour}, {"segment", c.segment}, {"dir", c.dir}});
+    samples.push_back({{"sample", sd.index},
+                       {"offset", {sd.offset.x, sd.offset.y}},
+                       {"position_raw", point_json(sd.position)},
+                       {"crossings", crossings},
+                       {"winding", sd.winding},
+                       {"fills", sd.fills}});
+  }
+  p["samples"] = samples;
+  p["mask"] = d.mask;
+  if (d.coverage == path::Coverage::kArea) {
+    p["area"] = d.area ? d.area.text() : "0";
+    p["alpha"] = d.area.alpha();
+  }
+  p["covered"] = r.covered;
+  return p;
+}
+
 // rule: MSAA.COVER.SAMPLE, MSAA.MASK.AND, MSAA.CENTROID.D3D11, MSAA.CENTROID.D3D10
 ojson msaa_json(const Report& r, const PreparedScene& s) {
   using json = ojson;
@@ -677,7 +771,8 @@ void print_json(const LoadedScene& loaded, std::int32_t x, std::int32_t y, Vec2 
       doc["centroid"] = to_string(s.conventions.centroid);
   }
   for (const Report& r : reports) {
-    ojson p = r.type == PrimitiveType::kTriangle
+    ojson p = r.d.path ? path_json(r)
+              : r.type == PrimitiveType::kTriangle
                   ? triangle_json(r.index, r.input, r.d.triangles[0], s.state)
                   : other_json(r, s);
     if (r.show_samples) {

@@ -20,6 +20,7 @@
 #include "rastrules/fixed.hpp"
 #include "rastrules/line_aliased.hpp"
 #include "rastrules/msaa.hpp"
+#include "rastrules/path.hpp"
 #include "rastrules/rules.hpp"
 #include "rastrules/scene.hpp"
 #include "rastrules/triangle.hpp"
@@ -168,6 +169,32 @@ struct MsaaDecision {
   std::vector<SegmentMaskDecision> segments;
 };
 
+// One sample of a path primitive: the crossings of its ray (PATH.WINDING, displaced by
+// PATH.SAMPLE.TIE) from path::crossings(), the code winding_number() sums, and the fill rule's
+// verdict.
+// rule: PATH.WINDING, PATH.SAMPLE.TIE, PATH.FILL.RULE
+struct PathSampleDecision {
+  std::uint32_t index = 0; // the sample of the pattern
+  SampleOffset offset;     // in 1/16 px from the pixel centre
+  Vec2 position;           // raw 16.8
+  std::vector<path::SampleCrossing> crossings;
+  std::int64_t winding = 0;
+  bool fills = false;
+};
+
+// A path primitive at one pixel (SCENE.PRIM.PATH): with "samples" coverage every sample of
+// the pattern and the fragment mask (covered samples ANDed with the sample mask); with "area"
+// the pixel's exact area, taken from path::cover_area of the target's rows up to the pixel's
+// (the rasterizer's own computation), and the windings at the samples for information.
+// rule: SCENE.PRIM.PATH, PATH.COVER.SAMPLE, PATH.AREA.EXACT
+struct PathDecision {
+  path::Coverage coverage = path::Coverage::kSamples;
+  path::FillRule fill_rule = path::FillRule::kNonZero;
+  std::vector<PathSampleDecision> samples;
+  std::uint32_t mask = 0; // the fragment's mask (0: no fragment)
+  ExactArea area;         // "area" coverage: empty when the area is 0
+};
+
 // One primitive at one pixel.
 // rule: SCENE.PRIM.POINT, SCENE.PRIM.LINE, SCENE.PRIM.LINE_STRIP, SCENE.LINE_MODE
 struct PixelDecision {
@@ -183,8 +210,10 @@ struct PixelDecision {
   bool centre_covered = false; // some triangle covers the centre, or some segment the pixel
   // The multisampled path (any scene that is not is_single_sample): per sample and segment.
   std::optional<MsaaDecision> msaa;
+  // A path primitive: its samples, mask and area.
+  std::optional<PathDecision> path;
   // rasterize_primitive emits a fragment (helpers aside) at the pixel: the multisampled path's
-  // fragment masks, else centre_covered.
+  // fragment masks, a path's mask or area, else centre_covered.
   bool covered = false;
 };
 

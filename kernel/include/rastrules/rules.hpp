@@ -68,5 +68,14 @@ inline constexpr RuleId kPipeBaryLine{"PIPE.BARY.LINE"};
 inline constexpr RuleId kPipeDepthKill{"PIPE.DEPTH.KILL"};
 inline constexpr RuleId kPipeDepthTest{"PIPE.DEPTH.TEST"};
 
+// 2D paths (spec/scene.md, spec/rules/path.md).
+inline constexpr RuleId kScenePrimPath{"SCENE.PRIM.PATH"};
+inline constexpr RuleId kSceneOutputArea{"SCENE.OUTPUT.AREA"};
+inline constexpr RuleId kPathWinding{"PATH.WINDING"};
+inline constexpr RuleId kPathSampleTie{"PATH.SAMPLE.TIE"};
+inline constexpr RuleId kPathFillRule{"PATH.FILL.RULE"};
+inline constexpr RuleId kPathContourClose{"PATH.CONTOUR.CLOSE"};
+inline constexpr RuleId kPathAreaExact{"PATH.AREA.EXACT"};
+
 } // namespace rules
 } // namespace rastrules
