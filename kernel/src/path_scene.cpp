@@ -204,7 +204,6 @@ std::uint64_t path_work(const PreparedScene& scene, const PreparedPrimitive& pri
   // diff[0]: every piece; diff[1]: the curves among them.
   std::vector<std::int64_t> diff[2] = {std::vector<std::int64_t>(static_cast<std::size_t>(h) + 1),
                                        std::vector<std::int64_t>(static_cast<std::size_t>(h) + 1)};
-  std::uint64_t curves = 0;
   std::int64_t x_lo = std::numeric_limits<std::int64_t>::max();
   std::int64_t x_hi = std::numeric_limits<std::int64_t>::min();
   auto add_piece = [&](std::int64_t lo, std::int64_t hi, bool curve) {
@@ -229,7 +228,6 @@ std::uint64_t path_work(const PreparedScene& scene, const PreparedPrimitive& pri
       }
       const bool curve = s.kind != path::SegmentKind::kLine;
       add_piece(lo, hi, curve);
-      curves += curve ? 1 : 0;
       cur = s.p[path::point_count(s.kind) - 1];
     }
     add_piece(std::min(cur.y, c.start.y), std::max(cur.y, c.start.y), false); // closing line
@@ -249,13 +247,11 @@ std::uint64_t path_work(const PreparedScene& scene, const PreparedPrimitive& pri
     curves_in_row += diff[1][static_cast<std::size_t>(r)];
     const auto c = static_cast<std::uint64_t>(in_row);
     if (samples) {
-      // Per sample: the row's line pieces tested (kPathPieceWork each), every curve's exact
-      // crossings (kPathCurveWork each: the rasterizer asks every curve on every sample row of
-      // the target), and the row's pixels filled.
+      // Per sample: the row's line pieces tested (kPathPieceWork each), its curves' exact
+      // crossings (kPathCurveWork each) and its pixels filled.
       const auto cc = static_cast<std::uint64_t>(curves_in_row);
-      const std::uint64_t row =
-          sat_add(sat_add(sat_mul(c - cc, kPathPieceWork), sat_mul(curves, kPathCurveWork)),
-                  c == 0 ? 0 : cols);
+      const std::uint64_t row = sat_add(
+          sat_add(sat_mul(c - cc, kPathPieceWork), sat_mul(cc, kPathCurveWork)), c == 0 ? 0 : cols);
       work = sat_add(work, sat_mul(n, row));
     } else if (c != 0) {
       // Area: every pair of the row's pieces (their crossings cut it into slabs: at most
