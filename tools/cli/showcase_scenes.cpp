@@ -8,7 +8,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <utility>
+#include <vector>
 
 namespace rastrules::cli {
 namespace {
@@ -466,6 +468,95 @@ Scene msaa_resolve() {
   return s;
 }
 
+// A path of the given contours: each a start and commands "L x y", "Q cx cy x y" or
+// "C c1x c1y c2x c2y x y" as number lists (2, 4 or 6 numbers).
+Primitive path_of(path::FillRule rule, path::Coverage coverage,
+                  std::initializer_list<std::initializer_list<std::initializer_list<float>>> cs) {
+  FloatPath fp;
+  fp.fill_rule = rule;
+  fp.coverage = coverage;
+  for (const auto& c : cs) {
+    FloatContour contour;
+    bool first = true;
+    for (const auto& cmd : c) {
+      const std::vector<float> v(cmd);
+      if (first) {
+        contour.start = {v[0], v[1]};
+        first = false;
+        continue;
+      }
+      FloatPathSegment seg;
+      seg.kind = v.size() == 2   ? path::SegmentKind::kLine
+                 : v.size() == 4 ? path::SegmentKind::kQuadratic
+                                 : path::SegmentKind::kCubic;
+      for (std::size_t k = 0; k * 2 < v.size(); ++k)
+        seg.p[k] = {v[2 * k], v[2 * k + 1]};
+      contour.segments.push_back(seg);
+    }
+    fp.contours.push_back(std::move(contour));
+  }
+  return make_path(std::move(fp));
+}
+
+// The conflation cases of 2D rasterizers, at area coverage: a square drawn twice inside its
+// pixels under even-odd (exactly empty, where signed-area accumulation shows a 2x area), a
+// doubled-back diagonal (no gap), a pentagram (its centre has winding 2: hole under even-odd,
+// filled under nonzero), and a square with a hole of the same orientation (nonzero fills it).
+// rule: SCENE.PRIM.PATH, PATH.AREA.EXACT, PATH.FILL.RULE
+Scene path_conflation() {
+  using path::Coverage;
+  using path::FillRule;
+  Scene s = make_scene(16, 8);
+  auto& p = s.primitives;
+  p.push_back(path_of(FillRule::kEvenOdd, Coverage::kArea,
+                      {{{1.25f, 1.25f}, {3.75f, 1.25f}, {3.75f, 3.75f}, {1.25f, 3.75f}},
+                       {{1.25f, 1.25f}, {3.75f, 1.25f}, {3.75f, 3.75f}, {1.25f, 3.75f}}}));
+  p.push_back(path_of(
+      FillRule::kNonZero, Coverage::kArea,
+      {{{1.0f, 4.5f}, {4.5f, 7.5f}, {1.0f, 7.5f}}, {{1.0f, 4.5f}, {4.5f, 4.5f}, {4.5f, 7.5f}}}));
+  const auto star = [](float cx, float cy, float r) {
+    std::vector<float> v;
+    for (int k = 0; k < 5; ++k) {
+      const double a = -1.5707963267948966 + 4.0 * 3.141592653589793 * k / 5.0;
+      v.push_back(static_cast<float>(cx + r * std::cos(a)));
+      v.push_back(static_cast<float>(cy + r * std::sin(a)));
+    }
+    return v;
+  };
+  for (const auto& [cx, rule] :
+       {std::pair{7.5f, FillRule::kEvenOdd}, std::pair{11.5f, FillRule::kNonZero}}) {
+    const std::vector<float> v = star(cx, 3.5f, 3.2f);
+    p.push_back(path_of(rule, Coverage::kArea,
+                        {{{v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]}, {v[8], v[9]}}}));
+  }
+  p.push_back(path_of(FillRule::kNonZero, Coverage::kArea,
+                      {{{13.0f, 0.5f}, {15.5f, 0.5f}, {15.5f, 7.5f}, {13.0f, 7.5f}},
+                       {{13.75f, 2.0f}, {14.75f, 2.0f}, {14.75f, 6.0f}, {13.75f, 6.0f}}}));
+  return s;
+}
+
+// Curves decided exactly per sample at 4x: a quadratic bulge, a cubic with a loop (its loop
+// has winding 2: filled under nonzero, a hole under even-odd), a cusp, and curves through
+// sample positions.
+// rule: SCENE.PRIM.PATH, PATH.CURVE.SAMPLE, PATH.COVER.SAMPLE
+Scene path_curves() {
+  using path::Coverage;
+  using path::FillRule;
+  Scene s = make_scene(16, 8);
+  set_sample_pattern(s, standard_pattern(4));
+  auto& p = s.primitives;
+  p.push_back(
+      path_of(FillRule::kNonZero, Coverage::kSamples, {{{0.5f, 7.5f}, {2.5f, -2.0f, 4.5f, 7.5f}}}));
+  for (const auto& [x0, rule] :
+       {std::pair{5.0f, FillRule::kNonZero}, std::pair{10.0f, FillRule::kEvenOdd}}) {
+    p.push_back(path_of(rule, Coverage::kSamples,
+                        {{{x0, 6.5f}, {x0 + 9.0f, 0.0f, x0 - 4.0f, 0.0f, x0 + 5.0f, 6.5f}}}));
+  }
+  p.push_back(path_of(FillRule::kNonZero, Coverage::kSamples,
+                      {{{11.0f, 7.75f}, {15.5f, 4.0f, 11.0f, 4.0f, 15.5f, 7.75f}}}));
+  return s;
+}
+
 } // namespace
 
 std::vector<ShowcaseScene> showcase_scenes() {
@@ -522,6 +613,12 @@ std::vector<ShowcaseScene> showcase_scenes() {
                  msaa_sample_shading()});
   out.push_back(
       {"msaa-resolve", "colours over a clear colour, resolved by averaging", msaa_resolve()});
+  out.push_back({"paths-conflation",
+                 "2D paths, exact areas: a square drawn twice under even-odd, a doubled-back "
+                 "diagonal, pentagrams, a hole",
+                 path_conflation()});
+  out.push_back(
+      {"paths-curves", "curves decided per sample at 4x: a bulge, loops, a cusp", path_curves()});
   return out;
 }
 

@@ -129,6 +129,15 @@ void CoverageMap::add_fragment(const Fragment& f) {
     return;
   }
   last_counted_ = f;
+  // rule: SCENE.OUTPUT.AREA
+  // A path's exact area is blended like an antialiased line's coverage (to 1/65536, at least
+  // 1/65536 so that a pixel of tiny area still shows).
+  if (f.area) {
+    const auto q16 = static_cast<std::uint32_t>(
+        std::clamp<long>(std::lround(f.area.approx() * 65536.0), 1L, 65536L));
+    add(f.prim, f.x, f.y, q16);
+    return;
+  }
   add(f.prim, f.x, f.y, f.coverage_q16);
 }
 
@@ -268,6 +277,39 @@ void draw_segment(Image& img, Vec2 a, Vec2 b, Rgb c, int dash, int s) {
 // (and a quadrilateral line's two triangles).
 void draw_edges(Image& img, const PreparedPrimitive& prim, std::uint32_t p, int s) {
   const Rgb colour = edge_colour(p);
+  // rule: SCENE.PRIM.PATH
+  // A path's outline: its lines, its curves as 32 chords each (a picture, not a decision),
+  // and each contour's closing line (PATH.CONTOUR.CLOSE) dashed.
+  if (prim.type == PrimitiveType::kPath) {
+    auto at = [&](const path::Point& q) { return std::array{to_image(q.x, s), to_image(q.y, s)}; };
+    for (const path::Contour& c : prim.path->contours) {
+      path::Point cur = c.start;
+      for (const path::Segment& seg : c.segments) {
+        const std::size_t n = path::point_count(seg.kind);
+        std::array<std::array<double, 2>, 4> ctl{at(cur), at(seg.p[0]), at(seg.p[1]), at(seg.p[2])};
+        const int pieces = seg.kind == path::SegmentKind::kLine ? 1 : 32;
+        std::array<double, 2> prev = ctl[0];
+        for (int k = 1; k <= pieces; ++k) {
+          const double t = static_cast<double>(k) / pieces, u = 1.0 - t;
+          std::array<double, 2> q{};
+          for (std::size_t a = 0; a < 2; ++a) {
+            q[a] = n == 1   ? u * ctl[0][a] + t * ctl[1][a]
+                   : n == 2 ? u * u * ctl[0][a] + 2 * u * t * ctl[1][a] + t * t * ctl[2][a]
+                            : u * u * u * ctl[0][a] + 3 * u * u * t * ctl[1][a] +
+                                  3 * u * t * t * ctl[2][a] + t * t * t * ctl[3][a];
+          }
+          img.line(prev[0], prev[1], q[0], q[1], colour, 0);
+          prev = q;
+        }
+        cur = seg.p[n - 1];
+      }
+      if (!(cur == c.start)) {
+        const auto a = at(cur), b = at(c.start);
+        img.line(a[0], a[1], b[0], b[1], colour, 3);
+      }
+    }
+    return;
+  }
   if (prim.type == PrimitiveType::kPoint) {
     const Vec2 c = prim.v[0];
     auto corner = [&](std::int32_t dx, std::int32_t dy) {
