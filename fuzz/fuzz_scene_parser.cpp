@@ -42,7 +42,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   // Small scenes are drawn too (big targets would make one input slow, not more interesting).
   const auto& ps = std::get<rastrules::PreparedScene>(prepared);
-  if (std::int64_t{ps.width} * ps.height <= 4096 && ps.primitives.size() <= 16) {
+  // Paths are bounded by their work too (an area path of many pieces in one row is cubic).
+  if (std::int64_t{ps.width} * ps.height <= 4096 && ps.primitives.size() <= 16 &&
+      !rastrules::first_primitive_over_work(ps, std::uint64_t{1} << 24)) {
     const std::vector<rastrules::Fragment> fragments = rastrules::rasterize(ps);
     for (const rastrules::Fragment& f : fragments) {
       if (f.x < 0 || f.y < 0 || f.x >= ps.width || f.y >= ps.height ||

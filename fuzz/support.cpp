@@ -120,6 +120,66 @@ Scene decode_scene(ByteReader& in) {
   return s;
 }
 
+// rule: SCENE.PRIM.PATH
+Scene decode_path_scene(ByteReader& in) {
+  Scene s;
+  s.width = 1 + in.byte() % kMaxFuzzPathTarget;
+  s.height = 1 + in.byte() % kMaxFuzzPathTarget;
+  const std::uint8_t st = in.byte();
+  s.conventions.fill = static_cast<FillConvention>(st & 3u);
+  if ((st & 4u) != 0)
+    set_sample_pattern(s, standard_pattern((st & 8u) != 0 ? 16 : 4));
+  if ((st & 16u) != 0)
+    s.msaa.sample_mask = in.byte() & full_mask(s.msaa.pattern.count());
+  const std::size_t count = 1 + in.byte() % kMaxFuzzPaths;
+  for (std::size_t p = 0; p < count && in.remaining() > 0; ++p) {
+    const std::uint8_t t = in.byte();
+    FloatPath fp;
+    fp.fill_rule = (t & 1u) != 0 ? path::FillRule::kEvenOdd : path::FillRule::kNonZero;
+    // Area coverage only for paths of lines (the oracle's exact areas); bit 2 keeps curves in
+    // an area path anyway, which prepare() must refuse.
+    const bool area = (t & 2u) != 0;
+    const bool curves = !area || (t & 4u) != 0;
+    fp.coverage = area ? path::Coverage::kArea : path::Coverage::kSamples;
+    const std::size_t contours = 1 + ((t >> 3) & 3u) % kMaxFuzzPathContours;
+    // A point: mostly raw 16.8 values near the target (ties on centres and samples come from
+    // the multiples of 8 and 16 raw these often are), sometimes any coordinate of decode_scene.
+    auto point = [&]() {
+      FloatPoint q{};
+      for (float& c : q) {
+        const std::uint8_t k = in.byte();
+        if (k < 200) {
+          const std::int32_t span = (kMaxFuzzPathTarget + 4) * 256;
+          const auto raw =
+              static_cast<std::int32_t>(in.u16() % static_cast<std::uint32_t>(span)) - 2 * 256;
+          c = static_cast<float>((k & 1u) != 0 ? raw & ~7 : raw) / 256.0f;
+        } else {
+          c = coordinate(in);
+        }
+      }
+      return q;
+    };
+    for (std::size_t c = 0; c < contours && in.remaining() > 0; ++c) {
+      FloatContour contour;
+      contour.start = point();
+      const std::size_t segments = 1 + in.byte() % kMaxFuzzPathSegments;
+      for (std::size_t k = 0; k < segments && in.remaining() > 0; ++k) {
+        const std::uint8_t kind = in.byte();
+        FloatPathSegment seg;
+        seg.kind = !curves || kind % 3 == 0 ? path::SegmentKind::kLine
+                   : kind % 3 == 1          ? path::SegmentKind::kQuadratic
+                                            : path::SegmentKind::kCubic;
+        for (std::size_t i = 0; i < path::point_count(seg.kind); ++i)
+          seg.p[i] = point();
+        contour.segments.push_back(seg);
+      }
+      fp.contours.push_back(std::move(contour));
+    }
+    s.primitives.push_back(make_path(std::move(fp)));
+  }
+  return s;
+}
+
 Scene protocol_scene(std::uint8_t b) {
   static constexpr std::int32_t kSides[4] = {1, 3, 8, 16};
   Scene s;
@@ -136,6 +196,46 @@ Scene protocol_scene(std::uint8_t b) {
   }
   return s;
 }
+
+namespace {
+
+// A path primitive by SCENE.PRIM.PATH's words: no vertices, every control point snaps (the
+// oracle's snapping), at most 2^20 segments, "area" only without curves, and none of centroid,
+// sample shading, quads or derivatives in its scene.
+std::string path_invalid_reason(const Scene& scene, const Primitive& prim) {
+  if (!prim.v.empty())
+    return "vertices on a path";
+  if (!prim.path)
+    return {};
+  const MultisampleState& ms = scene.msaa;
+  if (ms.has_centroid || ms.shading != ShadingRate::kPixel || ms.quads ||
+      ms.derivatives != DerivativeMode::kNone)
+    return "a path in a scene that asks for centroid, shading, quads or derivatives";
+  std::size_t segments = 0;
+  bool curves = false;
+  auto snaps = [](const FloatPoint& q) {
+    return oracle::snap(q[0]).has_value() && oracle::snap(q[1]).has_value();
+  };
+  for (const FloatContour& c : prim.path->contours) {
+    segments += c.segments.size();
+    if (!snaps(c.start))
+      return "a control point does not snap";
+    for (const FloatPathSegment& seg : c.segments) {
+      curves = curves || seg.kind != path::SegmentKind::kLine;
+      for (std::size_t k = 0; k < path::point_count(seg.kind); ++k) {
+        if (!snaps(seg.p[k]))
+          return "a control point does not snap";
+      }
+    }
+  }
+  if (segments > (std::size_t{1} << 20))
+    return "more than 2^20 segments";
+  if (curves && prim.path->coverage == path::Coverage::kArea)
+    return "area coverage of curves";
+  return {};
+}
+
+} // namespace
 
 std::string oracle_invalid_reason(const Scene& scene) {
   if (scene.width < 1 || scene.width > 16384 || scene.height < 1 || scene.height > 16384) {
@@ -162,7 +262,13 @@ std::string oracle_invalid_reason(const Scene& scene) {
       if (n < 2)
         return at + ": fewer than 2 vertices";
       break;
+    case PrimitiveType::kPath:
+      if (std::string why = path_invalid_reason(scene, prim); !why.empty())
+        return at + ": " + why;
+      break;
     }
+    if (prim.path.has_value() != (prim.type == PrimitiveType::kPath))
+      return at + ": a path without its path, or a path on another primitive";
     if (prim.aa && (prim.type == PrimitiveType::kTriangle || prim.type == PrimitiveType::kPoint)) {
       return at + ": aa on a triangle or point";
     }

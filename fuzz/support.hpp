@@ -49,6 +49,20 @@ inline constexpr std::size_t kMaxAaSegments = 2;
 // from a raw value, or arbitrary float32 bits (NaN, infinities, out of range).
 [[nodiscard]] Scene decode_scene(ByteReader& in);
 
+// The limits of decode_path_scene: small targets and paths, so that the exact oracle's
+// arrangements stay quick.
+inline constexpr std::int32_t kMaxFuzzPathTarget = 24; // width and height in [1, 24]
+inline constexpr std::size_t kMaxFuzzPaths = 3;        // [1, 3] path primitives
+inline constexpr std::size_t kMaxFuzzPathContours = 3; // [1, 3] contours each
+inline constexpr std::size_t kMaxFuzzPathSegments = 8; // [1, 8] segments each
+
+// Decodes bytes into a scene of path primitives (SCENE.PRIM.PATH): target, fill convention,
+// 1, 4 or 16 samples and a sample mask, then per path its fill rule, coverage kind ("area"
+// for paths of lines, and sometimes with curves, which prepare() must refuse), contours of
+// lines, quadratics and cubics whose points are mostly raw values near the target (often
+// multiples of 8 raw: on pixel centres and sample rows), sometimes decode_scene's coordinates.
+[[nodiscard]] Scene decode_path_scene(ByteReader& in);
+
 // The scene an external driver's output is checked against, chosen by one byte (the
 // protocol targets): width and height in {1, 3, 8, 16}, 1 or 4 samples, 1 to 4 primitives
 // (points, whose content does not matter to the reader).

@@ -72,7 +72,7 @@ void check_path(const Scene& scene, std::size_t p, const std::vector<const Fragm
       if ((m.mask & keep) != 0)
         want[{m.y, m.x}] = "mask " + std::to_string(m.mask & keep);
     }
-  } else {
+  } else if (keep != 0) { // a sample mask that keeps no sample leaves no fragment (MSAA.MASK.AND)
     c.used("path oracle (cover_area: exact areas from a CGAL arrangement)");
     for (const oracle::path::PixelArea& a :
          oracle::path::cover_area(op, scene.width, scene.height)) {

@@ -141,6 +141,17 @@ TEST(PathScene, MultisampledPathsAndTheSampleMask) {
   EXPECT_TRUE(check(s, f).agree()) << check(s, f).mismatches.front();
 }
 
+// rule: SCENE.OUTPUT.AREA, MSAA.MASK.AND
+// Found by fuzz_path (its corpus: crash_area_under_an_empty_sample_mask): the checker wanted
+// the oracle's areas where a sample mask of 0 leaves no fragment.
+TEST(PathSceneRegression, AnEmptySampleMaskLeavesNoAreaFragment) {
+  const Scene s = read(R"({"target": {"width": 6, "height": 3}, "sample_mask": 0,
+    "primitives": [{"type": "path", "coverage": "area", "d": "M 0.5 0 L 5 0.5 L 1 2.5 Z"}]})");
+  const std::vector<Fragment> f = frags(s);
+  EXPECT_TRUE(f.empty());
+  EXPECT_TRUE(check(s, f).agree());
+}
+
 // rule: SCENE.PRIM.PATH, SCENE.OUTPUT.AREA
 TEST(PathScene, TheCheckerNamesEveryTampering) {
   const Scene s = read(R"({"target": {"width": 8, "height": 6}, "primitives": [
