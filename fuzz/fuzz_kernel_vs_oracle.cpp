@@ -39,25 +39,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
              &scene, data, size);
   }
 
-  const auto prepared = rastrules::prepare(scene);
-  if (const auto* err = std::get_if<rastrules::SceneError>(&prepared)) {
-    if (err->field.empty() || err->message.empty()) {
-      fz::fail("prepare returned an error naming no field", {err->what()}, &scene, data, size);
-    }
-  }
-  fz::check_prepare_verdict(scene, prepared, data, size);
-  if (!std::holds_alternative<rastrules::PreparedScene>(prepared))
+  const auto drawn = fz::prepare_and_draw(scene, data, size);
+  if (!drawn)
     return 0;
-
-  const auto& ps = std::get<rastrules::PreparedScene>(prepared);
-  const std::vector<rastrules::Fragment> kernel = rastrules::rasterize(ps);
-  if (rastrules::rasterize(ps) != kernel)
-    fz::fail("two runs of rasterize differ", {}, &scene, data, size);
-  const auto rendered = rastrules::render(scene);
-  if (!std::holds_alternative<std::vector<rastrules::Fragment>>(rendered) ||
-      std::get<std::vector<rastrules::Fragment>>(rendered) != kernel) {
-    fz::fail("render differs from rasterize(prepare)", {}, &scene, data, size);
-  }
+  const rastrules::PreparedScene& ps = drawn->prepared;
+  const std::vector<rastrules::Fragment>& kernel = drawn->fragments;
 
   std::vector<std::string> differences;
   try {

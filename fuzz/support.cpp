@@ -370,4 +370,26 @@ void check_prepare_verdict(const Scene& scene,
   }
 }
 
+std::optional<Drawn> prepare_and_draw(const Scene& scene, const std::uint8_t* data,
+                                      std::size_t size) {
+  auto prepared = prepare(scene);
+  if (const auto* err = std::get_if<SceneError>(&prepared)) {
+    if (err->field.empty() || err->message.empty())
+      fail("prepare returned an error naming no field", {err->what()}, &scene, data, size);
+  }
+  check_prepare_verdict(scene, prepared, data, size);
+  if (!std::holds_alternative<PreparedScene>(prepared))
+    return std::nullopt;
+  Drawn d{std::move(std::get<PreparedScene>(prepared)), {}};
+  d.fragments = rasterize(d.prepared);
+  if (rasterize(d.prepared) != d.fragments)
+    fail("two runs of rasterize differ", {}, &scene, data, size);
+  const auto rendered = render(scene);
+  if (!std::holds_alternative<std::vector<Fragment>>(rendered) ||
+      std::get<std::vector<Fragment>>(rendered) != d.fragments) {
+    fail("render differs from rasterize(prepare)", {}, &scene, data, size);
+  }
+  return d;
+}
+
 } // namespace rastrules::fuzz

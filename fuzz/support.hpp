@@ -100,4 +100,16 @@ void check_prepare_verdict(const Scene& scene,
                            const std::variant<PreparedScene, SceneError>& prepared,
                            const std::uint8_t* data, std::size_t size);
 
+// A scene prepare() accepted and its fragments.
+struct Drawn {
+  PreparedScene prepared;
+  std::vector<Fragment> fragments;
+};
+
+// Prepares `scene` (an error must name a field; the verdict must be the oracles',
+// check_prepare_verdict) and, when it is accepted, rasterizes it twice and renders it: fails
+// when the runs differ or render() differs from rasterize(prepare()). nullopt when rejected.
+[[nodiscard]] std::optional<Drawn> prepare_and_draw(const Scene& scene, const std::uint8_t* data,
+                                                    std::size_t size);
+
 } // namespace rastrules::fuzz
