@@ -164,6 +164,43 @@ TEST(PipeRegression, GuardBandVertexMovedMoreThanOnePixel) {
   EXPECT_TRUE(std::holds_alternative<kp::PipeResult>(kp::run_pipeline(s)));
 }
 
+// Found by PipeGeometry.ClipperIsBitIdenticalToTheSpecAlgorithm (its guard band + 1023 px
+// check, seed 7893977306015676719 at 3000 cases): with w values of 1e-45 and 2e-11 the
+// clipper's rounding leaves x = -4.4e-16 at w = 3.2e-26, window x = -7.0e9, billions of pixels
+// beyond the band. Kernel and oracle agree bit for bit (PIPE.CLIP.COMPUTE); the spec's claim
+// that the rounding stays far inside the 1023 px margin was wrong, and PIPE.CLIP.SATURATE is
+// what keeps such a vertex snappable: it is clamped to the snap range and the scene draws.
+// rule: PIPE.CLIP.SATURATE, PIPE.CLIP.GUARD_BAND_SNAP
+TEST(PipeRegression, ClippedVertexFarBeyondTheBandUnderATinyW) {
+  const kp::Viewport vp{0.0f, 0.0f, 1.0f, 1.0f, 0.0f, 1.0f};
+  const std::vector<kp::ClipVertex> t{
+      {{-4.0f, 0.0f, 4.0f, 1.4013e-45f}, {}},
+      {{-4.0f, -0.5f, 0.5f, 0.5f}, {}},
+      {{2.5705014e+15f, 8.271806e-25f, 8.271806e-25f, 2.0259225e-11f}, {}}};
+  const kp::ClipVolume vol = kp::clip_volume({t[0].pos, t[1].pos, t[2].pos}, vp, false);
+  const std::vector<kp::ClipVertex> poly = kp::clip_polygon(t, vol);
+  ASSERT_FALSE(poly.empty());
+  double worst = 0.0;
+  for (const kp::ClipVertex& v : poly) {
+    const kp::WindowVertex w = kp::to_window(v.pos, vp);
+    worst =
+        std::max({worst, std::fabs(static_cast<double>(w.x)), std::fabs(static_cast<double>(w.y))});
+    EXPECT_TRUE(rastrules::oracle::snap(kp::saturate_to_snap_range(w.x)).has_value());
+    EXPECT_TRUE(rastrules::oracle::snap(kp::saturate_to_snap_range(w.y)).has_value());
+  }
+  EXPECT_GT(worst, 1e9); // far beyond the band: the saturation acts
+  rastrules::Scene s;
+  s.width = 1;
+  s.height = 1;
+  s.viewport = vp;
+  s.depth = kp::DepthState{};
+  s.depth->clip = false;
+  rastrules::Primitive p;
+  p.pos = {t[0].pos, t[1].pos, t[2].pos};
+  s.primitives.push_back(p);
+  EXPECT_TRUE(std::holds_alternative<kp::PipeResult>(kp::run_pipeline(s)));
+}
+
 // Found by PipeGeometry.ViewportLimitsAreTheSpecRanges: PIPE.VIEWPORT.RANGE requires
 // y + height <= 32767; with y = 32767 and height = 1e-45 the exact sum exceeds it, but the
 // kernel adds in float32 (fl32(32767 + 1e-45) = 32767) and accepts the viewport. The spec
