@@ -17,11 +17,12 @@
 include(CMakePackageConfigHelpers)
 set(RASTRULES_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/rastrules)
 
-# Installs a library, its headers and its export set rastrules<Export>Targets.
+# Installs a library, its headers (further arguments: install(DIRECTORY) options, such as
+# headers to leave out) and its export set rastrules<Export>Targets.
 function(rastrules_install_part target export include_dir)
   install(TARGETS ${target} EXPORT rastrules${export}Targets
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-  install(DIRECTORY ${include_dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(DIRECTORY ${include_dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} ${ARGN})
   install(EXPORT rastrules${export}Targets NAMESPACE rastrules:: DESTINATION ${RASTRULES_CMAKE_DIR})
 endfunction()
 
@@ -33,7 +34,9 @@ if(TARGET rastrules_check)
   rastrules_install_part(rastrules_check Check ${PROJECT_SOURCE_DIR}/check/include)
 endif()
 if(TARGET rastrules_io)
-  rastrules_install_part(rastrules_io Io ${PROJECT_SOURCE_DIR}/tools/io/include)
+  # glyph.hpp belongs to rastrules_glyph (FreeType), which is not installed.
+  rastrules_install_part(rastrules_io Io ${PROJECT_SOURCE_DIR}/tools/io/include
+                         PATTERN glyph.hpp EXCLUDE)
 endif()
 if(TARGET rastrules)
   install(TARGETS rastrules RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
