@@ -123,6 +123,22 @@ TEST(PipeRegression, FarVertexMustNotDiscardTheVisibleTriangleShrunk) {
   EXPECT_EQ(guard_band_mismatches(tri, 4, 6), "");
 }
 
+// Whether a side x side scene of the clip-space triangle t (viewport vp, depth clipping off)
+// goes through run_pipeline without an error.
+bool draws_without_depth_clip(const std::vector<kp::ClipVertex>& t, const kp::Viewport& vp,
+                              std::int32_t side) {
+  rastrules::Scene s;
+  s.width = side;
+  s.height = side;
+  s.viewport = vp;
+  s.depth = kp::DepthState{};
+  s.depth->clip = false;
+  rastrules::Primitive p;
+  p.pos = {t[0].pos, t[1].pos, t[2].pos};
+  s.primitives.push_back(p);
+  return std::holds_alternative<kp::PipeResult>(kp::run_pipeline(s));
+}
+
 // Found by PipeGeometry.ClipperIsBitIdenticalToTheSpecAlgorithm (its former guard band + 1 px
 // check): a vertex at x = 2.7e11 is cut at the x_lo guard band plane; the double intersection
 // I + t (O - I) cancels 2.7e11 down to -0.476, losing 2^-53 * 2.7e11 absolute, and the vertex
@@ -152,16 +168,7 @@ TEST(PipeRegression, GuardBandVertexMovedMoreThanOnePixel) {
   // cancellation is gone: the vertex lands on the band (it was 1.26 px beyond).
   EXPECT_LE(worst, kp::kGuardBand + 1.0);
   // The whole scene draws (its vertices snap), whatever the rounding.
-  rastrules::Scene s;
-  s.width = 16;
-  s.height = 16;
-  s.viewport = vp;
-  s.depth = kp::DepthState{};
-  s.depth->clip = false;
-  rastrules::Primitive p;
-  p.pos = {t[0].pos, t[1].pos, t[2].pos};
-  s.primitives.push_back(p);
-  EXPECT_TRUE(std::holds_alternative<kp::PipeResult>(kp::run_pipeline(s)));
+  EXPECT_TRUE(draws_without_depth_clip(t, vp, 16));
 }
 
 // Found by PipeGeometry.ClipperIsBitIdenticalToTheSpecAlgorithm (its guard band + 1023 px
@@ -189,16 +196,7 @@ TEST(PipeRegression, ClippedVertexFarBeyondTheBandUnderATinyW) {
     EXPECT_TRUE(rastrules::oracle::snap(kp::saturate_to_snap_range(w.y)).has_value());
   }
   EXPECT_GT(worst, 1e9); // far beyond the band: the saturation acts
-  rastrules::Scene s;
-  s.width = 1;
-  s.height = 1;
-  s.viewport = vp;
-  s.depth = kp::DepthState{};
-  s.depth->clip = false;
-  rastrules::Primitive p;
-  p.pos = {t[0].pos, t[1].pos, t[2].pos};
-  s.primitives.push_back(p);
-  EXPECT_TRUE(std::holds_alternative<kp::PipeResult>(kp::run_pipeline(s)));
+  EXPECT_TRUE(draws_without_depth_clip(t, vp, 1));
 }
 
 // Found by PipeGeometry.ViewportLimitsAreTheSpecRanges: PIPE.VIEWPORT.RANGE requires
