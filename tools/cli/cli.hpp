@@ -102,6 +102,7 @@ int run_fuzz(const Args& args);
 int run_check(const Args& args);
 int run_probe(const Args& args);
 int run_bench(const Args& args);
+int run_glyph(const Args& args); // glyph.cpp: a glyph of a font file as a path scene
 int run_cases(const Args& args); // cases.cpp: the hard-case catalog (PIPE.CATALOG)  // bench.cpp:
                                  // the precision ladder (BENCH.REPORT)
 

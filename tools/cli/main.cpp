@@ -23,6 +23,9 @@ constexpr Command kCommands[] = {
     {"showcase", rastrules::cli::run_showcase}, {"fuzz", rastrules::cli::run_fuzz},
     {"check", rastrules::cli::run_check},       {"probe", rastrules::cli::run_probe},
     {"bench", rastrules::cli::run_bench},       {"cases", rastrules::cli::run_cases},
+#ifdef RASTRULES_HAVE_GLYPH
+    {"glyph", rastrules::cli::run_glyph},
+#endif
 };
 
 } // namespace
