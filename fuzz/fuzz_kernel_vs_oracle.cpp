@@ -42,16 +42,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto drawn = fz::prepare_and_draw(scene, data, size);
   if (!drawn)
     return 0;
-  const rastrules::PreparedScene& ps = drawn->prepared;
-  const std::vector<rastrules::Fragment>& kernel = drawn->fragments;
-
-  std::vector<std::string> differences;
-  try {
-    differences = rastrules::check::check_against_oracle(scene, ps, kernel).mismatches;
-  } catch (const std::exception& e) {
-    differences.push_back(std::string("the oracle failed: ") + e.what());
-  }
-  if (!differences.empty())
-    fz::fail("the kernel and the exact oracles disagree", differences, &scene, data, size);
+  fz::check_against_oracles(scene, *drawn, "the kernel and the exact oracles disagree", data, size);
   return 0;
 }

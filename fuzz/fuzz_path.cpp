@@ -36,14 +36,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const rastrules::PreparedScene& ps = drawn->prepared;
   const std::vector<rastrules::Fragment>& kernel = drawn->fragments;
 
-  std::vector<std::string> differences;
-  try {
-    differences = rastrules::check::check_against_oracle(scene, ps, kernel).mismatches;
-  } catch (const std::exception& e) {
-    differences.push_back(std::string("the oracle failed: ") + e.what());
-  }
-  if (!differences.empty())
-    fz::fail("the kernel and the exact path oracle disagree", differences, &scene, data, size);
+  fz::check_against_oracles(scene, *drawn, "the kernel and the exact path oracle disagree", data,
+                            size);
 
   // The decision record at the first fragment of each path, and at one pixel the input names.
   for (const rastrules::Fragment& f : kernel) {

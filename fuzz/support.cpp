@@ -16,6 +16,7 @@
 #include <tuple>
 #include <utility>
 
+#include "rastrules/check/check.hpp"
 #include "rastrules/io/scene_json.hpp"
 #include "rastrules/msaa.hpp"
 #include "rastrules/oracle/line.hpp"
@@ -390,6 +391,18 @@ std::optional<Drawn> prepare_and_draw(const Scene& scene, const std::uint8_t* da
     fail("render differs from rasterize(prepare)", {}, &scene, data, size);
   }
   return d;
+}
+
+void check_against_oracles(const Scene& scene, const Drawn& drawn, const std::string& what,
+                           const std::uint8_t* data, std::size_t size) {
+  std::vector<std::string> differences;
+  try {
+    differences = check::check_against_oracle(scene, drawn.prepared, drawn.fragments).mismatches;
+  } catch (const std::exception& e) {
+    differences.push_back(std::string("the oracle failed: ") + e.what());
+  }
+  if (!differences.empty())
+    fail(what, differences, &scene, data, size);
 }
 
 } // namespace rastrules::fuzz

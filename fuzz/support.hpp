@@ -112,4 +112,9 @@ struct Drawn {
 [[nodiscard]] std::optional<Drawn> prepare_and_draw(const Scene& scene, const std::uint8_t* data,
                                                     std::size_t size);
 
+// Fails, naming `what` and the mismatches, when check::check_against_oracle finds the kernel's
+// fragments of `drawn` different from the exact oracles' (or an oracle throws).
+void check_against_oracles(const Scene& scene, const Drawn& drawn, const std::string& what,
+                           const std::uint8_t* data, std::size_t size);
+
 } // namespace rastrules::fuzz

@@ -123,6 +123,30 @@ TEST(PipeRegression, FarVertexMustNotDiscardTheVisibleTriangleShrunk) {
   EXPECT_EQ(guard_band_mismatches(tri, 4, 6), "");
 }
 
+// The clipped polygon of t in vp without depth clipping: whether it has vertices, the largest
+// |window x| or |y| among them, and whether each snaps (after PIPE.CLIP.SATURATE when
+// saturate), by the oracle's snapping.
+struct ClipReach {
+  bool clipped = false;
+  double worst = 0.0;
+  bool snaps = true;
+};
+ClipReach clip_reach(const std::vector<kp::ClipVertex>& t, const kp::Viewport& vp, bool saturate) {
+  const kp::ClipVolume vol = kp::clip_volume({t[0].pos, t[1].pos, t[2].pos}, vp, false);
+  ClipReach r;
+  for (const kp::ClipVertex& v : kp::clip_polygon(t, vol)) {
+    r.clipped = true;
+    const kp::WindowVertex w = kp::to_window(v.pos, vp);
+    r.worst = std::max(
+        {r.worst, std::fabs(static_cast<double>(w.x)), std::fabs(static_cast<double>(w.y))});
+    const float x = saturate ? kp::saturate_to_snap_range(w.x) : w.x;
+    const float y = saturate ? kp::saturate_to_snap_range(w.y) : w.y;
+    r.snaps =
+        r.snaps && rastrules::oracle::snap(x).has_value() && rastrules::oracle::snap(y).has_value();
+  }
+  return r;
+}
+
 // Whether a side x side scene of the clip-space triangle t (viewport vp, depth clipping off)
 // goes through run_pipeline without an error.
 bool draws_without_depth_clip(const std::vector<kp::ClipVertex>& t, const kp::Viewport& vp,
@@ -154,16 +178,10 @@ TEST(PipeRegression, GuardBandVertexMovedMoreThanOnePixel) {
       {{270569799680.0f, 8.271806e-25f, 8.271806e-25f, 10981424.0f}, {}},
       {{270569799680.0f, -0.5f, 0.0f, 0.5f}, {}},
       {{-0.5f, -0.5f, 0.5f, 0.5f}, {}}};
-  const kp::ClipVolume vol = kp::clip_volume({t[0].pos, t[1].pos, t[2].pos}, vp, false);
-  const std::vector<kp::ClipVertex> poly = kp::clip_polygon(t, vol);
-  ASSERT_FALSE(poly.empty());
-  double worst = 0.0;
-  for (const kp::ClipVertex& v : poly) {
-    const kp::WindowVertex w = kp::to_window(v.pos, vp);
-    worst =
-        std::max({worst, std::fabs(static_cast<double>(w.x)), std::fabs(static_cast<double>(w.y))});
-    EXPECT_TRUE(rastrules::oracle::snap(w.x).has_value()); // the 1023 px margin holds
-  }
+  const ClipReach reach = clip_reach(t, vp, false);
+  ASSERT_TRUE(reach.clipped);
+  EXPECT_TRUE(reach.snaps); // the 1023 px margin holds
+  const double worst = reach.worst;
   // Since the intersection starts from the endpoint nearer the plane (t <= 1/2) the
   // cancellation is gone: the vertex lands on the band (it was 1.26 px beyond).
   EXPECT_LE(worst, kp::kGuardBand + 1.0);
@@ -184,17 +202,10 @@ TEST(PipeRegression, ClippedVertexFarBeyondTheBandUnderATinyW) {
       {{-4.0f, 0.0f, 4.0f, 1.4013e-45f}, {}},
       {{-4.0f, -0.5f, 0.5f, 0.5f}, {}},
       {{2.5705014e+15f, 8.271806e-25f, 8.271806e-25f, 2.0259225e-11f}, {}}};
-  const kp::ClipVolume vol = kp::clip_volume({t[0].pos, t[1].pos, t[2].pos}, vp, false);
-  const std::vector<kp::ClipVertex> poly = kp::clip_polygon(t, vol);
-  ASSERT_FALSE(poly.empty());
-  double worst = 0.0;
-  for (const kp::ClipVertex& v : poly) {
-    const kp::WindowVertex w = kp::to_window(v.pos, vp);
-    worst =
-        std::max({worst, std::fabs(static_cast<double>(w.x)), std::fabs(static_cast<double>(w.y))});
-    EXPECT_TRUE(rastrules::oracle::snap(kp::saturate_to_snap_range(w.x)).has_value());
-    EXPECT_TRUE(rastrules::oracle::snap(kp::saturate_to_snap_range(w.y)).has_value());
-  }
+  const ClipReach reach = clip_reach(t, vp, true);
+  ASSERT_TRUE(reach.clipped);
+  EXPECT_TRUE(reach.snaps); // after PIPE.CLIP.SATURATE
+  const double worst = reach.worst;
   EXPECT_GT(worst, 1e9); // far beyond the band: the saturation acts
   EXPECT_TRUE(draws_without_depth_clip(t, vp, 1));
 }
