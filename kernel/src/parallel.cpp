@@ -94,7 +94,7 @@ public:
 
     void push_back(const Fragment& f) {
       const bool plain = f.mask == 1u && !f.seg && !f.coverage_q16 && !f.helper && !f.sample &&
-                         !f.centroid && !f.derivatives;
+                         !f.centroid && !f.derivatives && !f.area;
       entries.push_back(
           Entry{f.prim, f.x, f.y, plain ? kPlain : static_cast<std::uint32_t>(whole.size())});
       if (!plain)
