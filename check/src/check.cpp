@@ -394,9 +394,13 @@ Mismatches check_against_oracle(const Scene& scene, const PreparedScene& ps,
     if (scene.primitives[p].type == PrimitiveType::kPath)
       detail::check_path(scene, p, of_path[p], c);
   }
-  // The scene without its paths prepares: ps did, and removing primitives removes no error.
-  const PreparedScene rest_ps = std::get<PreparedScene>(prepare(rest));
-  (void)ps;
+  // The prepared scene without its paths: ps with the same primitives kept.
+  PreparedScene rest_ps = ps;
+  rest_ps.primitives.clear();
+  for (std::size_t p = 0; p < ps.primitives.size(); ++p) {
+    if (ps.primitives[p].type != PrimitiveType::kPath)
+      rest_ps.primitives.push_back(ps.primitives[p]);
+  }
   if (multisampled(rest))
     check_multisampled(rest, rest_ps, rest_kernel, c);
   else

@@ -43,13 +43,12 @@ std::string ExactArea::text() const {
 std::uint8_t ExactArea::alpha() const {
   if (!value_)
     return 0;
-  // floor(a * 255 + 1/2) = floor((510 n + d) / (2 d)) for a = n / d, d > 0.
+  // floor(a * 255 + 1/2) = (510 n + d) / (2 d) for a = n / d in [0, 1], d > 0: a quotient of
+  // non-negative integers, at most 255.
   const BigInt n = boost::multiprecision::numerator(value_->area);
   const BigInt d = boost::multiprecision::denominator(value_->area);
-  BigInt q = (n * 510 + d) / (d * 2);
-  if (n * 510 + d < 0 && q * d * 2 != n * 510 + d)
-    q -= 1; // floor, not truncation (never for an area in [0, 1])
-  return static_cast<std::uint8_t>(std::clamp<BigInt>(q, 0, 255).convert_to<int>());
+  const BigInt q = (n * 510 + d) / (d * 2);
+  return static_cast<std::uint8_t>(q.convert_to<int>());
 }
 
 // rule: SCENE.OUTPUT.AREA
