@@ -212,14 +212,14 @@ TEST(CliThreads, ThreadsStreamInBoundedMemoryAndGiveTheLimitsError) {
   }
   // A child's peak resident set starts from its parent's at fork (Linux keeps the larger at
   // exec), so the bound holds for this test run alone, as ctest runs it (a test process that
-  // ran other tests first may be larger). AddressSanitizer's shadow memory and quarantine add
-  // to every process's resident set (95 MiB measured under scripts/test's sanitizer build):
-  // its bound is wider, still far below the old buffer (650 MB, more under the sanitizer).
+  // ran other tests first may be larger). Under AddressSanitizer the resident set measures the
+  // sanitizer, not the buffers: its quarantine keeps up to 256 MiB of freed blocks and its
+  // shadow adds an eighth of the heap (CI measured 402 MiB, over a 400 MiB bound, on
+  // 2026-11-26), so the bound is checked in the plain build only.
 #if defined(__SANITIZE_ADDRESS__)
-  constexpr long kMaxPeakKiB = 400L * 1024;
-#else
-  constexpr long kMaxPeakKiB = 64L * 1024;
+  GTEST_SKIP() << "peak resident set not checked under AddressSanitizer";
 #endif
+  constexpr long kMaxPeakKiB = 64L * 1024;
   struct rusage usage {};
   ASSERT_EQ(::getrusage(RUSAGE_CHILDREN, &usage), 0);
   EXPECT_LT(usage.ru_maxrss, kMaxPeakKiB) << "peak resident set in KiB";
