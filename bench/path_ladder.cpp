@@ -3,10 +3,15 @@
 // rungs alternating within every repeat, medians; errors against the exact areas; and the
 // comparisons with FreeType's gray and monochrome rasterizers on the same outlines.
 //
-//   rastrules_path_ladder [--quick] [--repeats N] [--json FILE] [--dejavu FONT] [--cubic FONT]
+//   rastrules_path_ladder [--quick] [--repeats N] [--json FILE] [--plot FILE.png]
+//                         [--dejavu FONT] [--cubic FONT]
+//   rastrules_path_ladder --picture FILE.png
 //
-// Prints the tables (Markdown) on standard output; --json writes the same figures.
-// Implements: BENCH.PATH.RUNGS, BENCH.PATH.SCENES, BENCH.PATH.METRICS, BENCH.PATH.FREETYPE
+// Prints the tables (Markdown) on standard output; --json writes the same figures, --plot the
+// time against error of every rung. --picture writes the conflation cases, exact beside
+// FreeType's gray raster, and runs nothing else.
+// Implements: BENCH.PATH.RUNGS, BENCH.PATH.SCENES, BENCH.PATH.METRICS, BENCH.PATH.FREETYPE,
+// BENCH.PATH.PICTURES
 
 #include <algorithm>
 #include <chrono>
@@ -25,6 +30,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "path_pictures.hpp"
 #include "path_rungs.hpp"
 #include "rastrules/io/glyph.hpp"
 #include "rastrules/oracle/path.hpp"
@@ -502,13 +508,28 @@ nlohmann::json to_json(const std::vector<SceneResult>& results, int repeats) {
   return j;
 }
 
+// Writes the image as a PNG file; returns 0, or 2 with a one-line error.
+int write_png_file(const std::string& file, const rastrules::io::Image& im) {
+  std::FILE* f = std::fopen(file.c_str(), "wb");
+  if (f == nullptr) {
+    std::cerr << "rastrules_path_ladder: cannot write " << file << "\n";
+    return 2;
+  }
+  const std::optional<std::string> err = rastrules::io::write_png(f, im);
+  if (std::fclose(f) != 0 || err) {
+    std::cerr << "rastrules_path_ladder: cannot write " << file << (err ? ": " + *err : "") << "\n";
+    return 2;
+  }
+  return 0;
+}
+
 } // namespace rastrules::bench::path_ladder
 
 int main(int argc, char** argv) {
   using namespace rastrules::bench::path_ladder;
   bool quick = false;
   int repeats = 0;
-  std::string json_path;
+  std::string json_path, plot_path, picture_path;
   std::string dejavu = RASTRULES_FONT_DEJAVU, cubic = RASTRULES_FONT_CUBIC;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -525,6 +546,10 @@ int main(int argc, char** argv) {
       repeats = std::atoi(value().c_str());
     else if (a == "--json")
       json_path = value();
+    else if (a == "--plot")
+      plot_path = value();
+    else if (a == "--picture")
+      picture_path = value();
     else if (a == "--dejavu")
       dejavu = value();
     else if (a == "--cubic")
@@ -537,6 +562,13 @@ int main(int argc, char** argv) {
   if (repeats <= 0)
     repeats = quick ? 1 : 21;
   try {
+    if (!picture_path.empty()) {
+      std::vector<std::string> differing;
+      const rastrules::io::Image im = bp::conflation_picture(differing);
+      for (const std::string& d : differing)
+        std::cout << d << "\n";
+      return write_png_file(picture_path, im);
+    }
     const std::u32string text = U"ag&@8eS%";
     std::vector<Scene> scenes;
     const std::vector<int> sizes = quick ? std::vector<int>{12} : std::vector<int>{12, 24, 48, 64};
@@ -554,6 +586,14 @@ int main(int argc, char** argv) {
            << FreeTypeGlyph::freetype_version() << "; " << repeats
            << " repeats a rung (oracle: " << (quick ? 1 : 3) << "), alternating; medians.\n";
     std::cout << markdown(results, header.str());
+    if (!plot_path.empty()) {
+      std::vector<bp::PlotPoint> points;
+      for (const SceneResult& r : results)
+        for (const AreaRow& row : r.rows)
+          points.push_back({r.name, row.rung, row.seconds, row.err.mean});
+      if (const int rc = write_png_file(plot_path, bp::ladder_plot(points)); rc != 0)
+        return rc;
+    }
     if (!json_path.empty()) {
       std::ofstream out(json_path);
       out << to_json(results, repeats).dump(2) << "\n";
