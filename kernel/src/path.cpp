@@ -214,10 +214,14 @@ bool covers_sample(const Path& path, Point s, FillConvention fill) {
   return fill_holds(path.fill_rule, winding_number(path, s, fill));
 }
 
+namespace {
+
+// The row walk of cover_samples, emit called for each pixel with a sample covered, row by row:
+// a template, so that the vector form appends without a call through std::function a pixel.
 // rule: PATH.COVER.SAMPLE
-void cover_samples(const Path& path, const SamplePattern& pattern, FillConvention fill,
-                   std::int32_t w, std::int32_t h,
-                   const std::function<void(const SampleCoverage&)>& emit) {
+template <class Emit>
+void walk_samples(const Path& path, const SamplePattern& pattern, FillConvention fill,
+                  std::int32_t w, std::int32_t h, Emit&& emit) {
   if (w <= 0 || h <= 0 || pattern.positions.empty())
     return;
   const Tie t = detail::tie_of(fill);
@@ -301,6 +305,15 @@ void cover_samples(const Path& path, const SamplePattern& pattern, FillConventio
   }
 }
 
+} // namespace
+
+// rule: PATH.COVER.SAMPLE
+void cover_samples(const Path& path, const SamplePattern& pattern, FillConvention fill,
+                   std::int32_t w, std::int32_t h,
+                   const std::function<void(const SampleCoverage&)>& emit) {
+  walk_samples(path, pattern, fill, w, h, emit);
+}
+
 // rule: PATH.COVER.SAMPLE
 std::vector<SampleCoverage> cover_samples(const Path& path, const SamplePattern& pattern,
                                           FillConvention fill, std::int32_t w, std::int32_t h) {
@@ -310,7 +323,7 @@ std::vector<SampleCoverage> cover_samples(const Path& path, const SamplePattern&
   if (w > 0 && h > 0)
     out.reserve(std::min<std::size_t>(static_cast<std::size_t>(w) * static_cast<std::size_t>(h),
                                       std::size_t{1} << 12));
-  cover_samples(path, pattern, fill, w, h, [&](const SampleCoverage& c) { out.push_back(c); });
+  walk_samples(path, pattern, fill, w, h, [&](const SampleCoverage& c) { out.push_back(c); });
   return out;
 }
 
