@@ -225,7 +225,7 @@ TEST(LadderReport, JsonHoldsEveryFigure) {
   EXPECT_EQ(f.at("sweep").size(), 3u);
   EXPECT_EQ(f.at("exact_range"), 2);
   EXPECT_TRUE(j.at("rungs").back().at("exact_range").is_null()); // limit
-  EXPECT_EQ(j.at("targets").size(), 3u);
+  EXPECT_EQ(j.at("targets").size(), 4u);
   EXPECT_TRUE(j.at("lavapipe").at("available").get<bool>());
 }
 
@@ -233,47 +233,48 @@ TEST(LadderReport, JsonHoldsEveryFigure) {
 TEST(LadderTargets, EachTargetSaysWhetherThisRunMetIt) {
   if (!rb::test::has_reference_fast())
     GTEST_SKIP() << "reference-fast not built";
-  // fast = 3.5 x reference: 87.5 % of limit (4), faster than float; 100 triangles in 1 s
-  // for lavapipe against 3.5e5/s: 3500x.
+  // fast = 3.5 x reference: 87.5 % of limit (4), faster than float (0.75) and float-simd (1);
+  // 100 triangles in 1 s for lavapipe against 3.5e5/s: 3500x.
   auto t = rb::check_targets(synthetic(3.5, 1.0));
-  ASSERT_EQ(t.size(), 3u);
+  ASSERT_EQ(t.size(), 4u);
   for (const auto& c : t)
     EXPECT_EQ(c.met, std::optional<bool>(true)) << c.name << ": " << c.measured;
-  // fast = 0.6 x reference: 15 % of limit, slower than float (0.75); lavapipe faster.
+  // fast = 0.6 x reference: 15 % of limit, slower than float (0.75) and float-simd (1);
+  // lavapipe faster.
   t = rb::check_targets(synthetic(0.6, 1e-5));
   for (const auto& c : t)
     EXPECT_EQ(c.met, std::optional<bool>(false)) << c.name << ": " << c.measured;
   // Equal resources: rastrules on 2 threads (1.5 x 3.5e5 = 5.25e5/s) against lavapipe on 2
   // (100 per 10 ms = 1e4/s): 52.5x; the single-thread ratio (35x) is printed as well.
   t = rb::check_targets(synthetic(3.5, 1e-2));
-  EXPECT_EQ(t[2].met, std::optional<bool>(true)) << t[2].measured;
-  EXPECT_NE(t[2].measured.find("52.5x lavapipe, both on 2 threads (equal resources)"),
+  EXPECT_EQ(t[3].met, std::optional<bool>(true)) << t[3].measured;
+  EXPECT_NE(t[3].measured.find("52.5x lavapipe, both on 2 threads (equal resources)"),
             std::string::npos)
-      << t[2].measured;
-  EXPECT_NE(t[2].measured.find("single-thread ratio (reference-fast on 1 thread against lavapipe "
+      << t[3].measured;
+  EXPECT_NE(t[3].measured.find("single-thread ratio (reference-fast on 1 thread against lavapipe "
                                "on 2): 35x"),
             std::string::npos)
-      << t[2].measured;
+      << t[3].measured;
   // Different thread counts: per thread. lavapipe on 8 threads: 1e4 / 8 per thread against
   // 5.25e5 / 2: 210x.
   auto r8 = synthetic(3.5, 1e-2);
   r8.lavapipe.threads = 8;
   t = rb::check_targets(r8);
-  EXPECT_NE(t[2].measured.find("210x lavapipe per thread (rastrules 2, lavapipe 8 threads"),
+  EXPECT_NE(t[3].measured.find("210x lavapipe per thread (rastrules 2, lavapipe 8 threads"),
             std::string::npos)
-      << t[2].measured;
+      << t[3].measured;
   // lavapipe's thread count unknown (LP_NUM_THREADS not understood): not measured, and why.
   auto unknown = synthetic(3.5, 1e-2);
   unknown.lavapipe.threads = 0;
   unknown.lavapipe.threads_source = "LP_NUM_THREADS=\"x\" is not an integer in [0, 256]: unknown";
   t = rb::check_targets(unknown);
-  EXPECT_EQ(t[2].met, std::nullopt);
-  EXPECT_NE(t[2].measured.find("thread count is unknown (LP_NUM_THREADS=\"x\""), std::string::npos)
-      << t[2].measured;
+  EXPECT_EQ(t[3].met, std::nullopt);
+  EXPECT_NE(t[3].measured.find("thread count is unknown (LP_NUM_THREADS=\"x\""), std::string::npos)
+      << t[3].measured;
   // Without lavapipe the third target is not measured.
   t = rb::check_targets(synthetic(3.5, 0.0));
-  EXPECT_EQ(t[2].met, std::nullopt);
-  EXPECT_NE(t[2].measured.find("no Vulkan CPU device"), std::string::npos);
+  EXPECT_EQ(t[3].met, std::nullopt);
+  EXPECT_NE(t[3].measured.find("no Vulkan CPU device"), std::string::npos);
 }
 
 // rule: BENCH.REPORT

@@ -15,6 +15,7 @@
 #include "ladder_test_util.hpp"
 #include "limit.hpp"
 #include "rastrules/bench/ladder.hpp"
+#include "rastrules/isa.hpp"
 
 namespace rb = rastrules::bench;
 
@@ -219,4 +220,26 @@ TEST(LadderRungs, APersistentPoolCountsTheSameEveryTimeAndReportsAChunksError) {
     EXPECT_NE(std::string(e.what()).find(want), std::string::npos) << e.what();
   }
   EXPECT_EQ(pool.count(s), one);
+}
+
+// The float-simd rung evaluates the float rung's edge functions in 8 lanes (AVX2, no fused
+// multiply-add): the same centres, in the same order, on every scene family, ties included.
+// With RASTRULES_MAX_ISA=scalar or without AVX2 it runs the scalar loop, and this holds
+// trivially; the test names which ran.
+// rule: BENCH.LADDER.RUNGS
+TEST(LadderRungs, FloatSimdCoversExactlyTheFloatRungsCentres) {
+  std::vector<rb::LadderScene> scenes = {diagonal_pair(), rb::make_hard_mesh(6, 6, 4)};
+  scenes.push_back(rb::make_mesh("small", 5, 16, 16, 10, 0.2, 0.25, 0.75, 170, 170));
+  scenes.push_back(rb::make_mesh("medium", 6, 4, 4, 45, 0.2, 3.0, 1.0, 190, 190));
+  scenes.push_back(rb::translated(scenes[2], 4096, 16384, 16384));
+  scenes.push_back(rb::translated(scenes[3], 8192, 16384, 16384));
+  std::size_t covered = 0;
+  for (const rb::LadderScene& s : scenes) {
+    const rb::Coverage f = cover(rb::Rung::kFloat, s), v = cover(rb::Rung::kFloatSimd, s);
+    EXPECT_EQ(v, f) << s.name;
+    EXPECT_EQ(rb::run_rung(rb::Rung::kFloatSimd, s, nullptr), f.size()) << s.name;
+    covered += f.size();
+  }
+  EXPECT_GT(covered, 1000u);
+  RecordProperty("isa", std::string(rastrules::to_string(rastrules::best_isa())));
 }

@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "float_rung.hpp"
 #include "limit.hpp"
 #include "rastrules/bench/ladder.hpp"
 #include "rastrules/fixed.hpp"
@@ -40,8 +41,8 @@ namespace rastrules::bench {
 const std::vector<Rung>& all_rungs() {
   // reference-fast exists when the kernel's fast traversal is built (bench/ladder/CMakeLists.txt).
   static const std::vector<Rung> rungs = {
-      Rung::kFloat,         Rung::kDouble,      Rung::kScanline, Rung::kFixed4I32, Rung::kReference,
-      Rung::kReferenceFast, Rung::kFixed16I128, Rung::kExact,    Rung::kLimit};
+      Rung::kFloat,     Rung::kFloatSimd,     Rung::kDouble,      Rung::kScanline, Rung::kFixed4I32,
+      Rung::kReference, Rung::kReferenceFast, Rung::kFixed16I128, Rung::kExact,    Rung::kLimit};
   return rungs;
 }
 
@@ -59,42 +60,17 @@ struct Rect {
   std::int32_t x0 = 0, y0 = 0, x1 = -1, y1 = -1; // inclusive
 };
 
-// Pixels whose centre (p + 1/2) lies in [lo, hi] on one axis, clipped to [0, n): computed in
-// the rung's own arithmetic type.
-template <class F> std::pair<std::int32_t, std::int32_t> centre_span(F lo, F hi, std::int32_t n) {
-  const F a = std::ceil(lo - F(0.5));
-  const F b = std::floor(hi - F(0.5));
-  const F first = std::max(a, F(0));
-  const F last = std::min(b, static_cast<F>(n - 1));
-  if (!(first <= last))
-    return {0, -1};
-  return {static_cast<std::int32_t>(first), static_cast<std::int32_t>(last)};
-}
-
 // Rungs 1 and 2: edge functions in F of the unsnapped positions, all three >= 0 on the
 // clockwise triangle, no tie rule.
 // rule: BENCH.LADDER.RUNGS
 template <class F, class Emit>
 void raster_float(const FloatTriangle& tri, std::int32_t w, std::int32_t h, Emit&& emit) {
-  F x[3], y[3];
-  for (int i = 0; i < 3; ++i) {
-    x[i] = static_cast<F>(tri[static_cast<std::size_t>(i)][0]);
-    y[i] = static_cast<F>(tri[static_cast<std::size_t>(i)][1]);
-  }
-  const F area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
-  if (area == F(0))
-    return;
-  if (area < F(0)) {
-    std::swap(x[1], x[2]);
-    std::swap(y[1], y[2]);
-  }
-  const auto [px0, px1] =
-      centre_span<F>(std::min({x[0], x[1], x[2]}), std::max({x[0], x[1], x[2]}), w);
-  const auto [py0, py1] =
-      centre_span<F>(std::min({y[0], y[1], y[2]}), std::max({y[0], y[1], y[2]}), h);
-  for (std::int32_t py = py0; py <= py1; ++py) {
+  const FloatSetup<F> s = float_setup<F>(tri, w, h);
+  const F* x = s.x;
+  const F* y = s.y;
+  for (std::int32_t py = s.py0; py <= s.py1; ++py) {
     const F sy = static_cast<F>(py) + F(0.5);
-    for (std::int32_t px = px0; px <= px1; ++px) {
+    for (std::int32_t px = s.px0; px <= s.px1; ++px) {
       const F sx = static_cast<F>(px) + F(0.5);
       const F e0 = (x[1] - x[0]) * (sy - y[0]) - (y[1] - y[0]) * (sx - x[0]);
       const F e1 = (x[2] - x[1]) * (sy - y[1]) - (y[2] - y[1]) * (sx - x[1]);
@@ -103,6 +79,13 @@ void raster_float(const FloatTriangle& tri, std::int32_t w, std::int32_t h, Emit
         emit(px, py);
     }
   }
+}
+
+// Whether the float-simd rung runs its AVX2 loop: the processor has AVX2 and RASTRULES_MAX_ISA
+// allows it (best_isa()); otherwise it runs the scalar float loop (the same centres).
+bool float_simd_vectorised() {
+  static const bool v = best_isa() != Isa::kScalar;
+  return v;
 }
 
 // Rung 3: the article's scanline algorithm in float32. Vertices sorted by y; the rows of pixel
@@ -311,6 +294,7 @@ template <class Emit>
 void run_one(Rung r, const FloatTriangle& tri, std::int32_t w, std::int32_t h, Emit&& emit) {
   switch (r) {
   case Rung::kFloat:
+  case Rung::kFloatSimd: // run_rung calls the AVX2 loop itself when it can
     raster_float<float>(tri, w, h, emit);
     return;
   case Rung::kDouble:
@@ -507,6 +491,11 @@ std::uint64_t run_rung(Rung r, const LadderScene& s, Coverage* out) {
     // and coverage of every triangle, small ones eight at a time.
     std::vector<float> tmp;
     return batch_count(coordinates(s, tmp), s, best_isa());
+  }
+  if (r == Rung::kFloatSimd && float_simd_vectorised()) {
+    for (std::size_t i = 0; i < s.triangles.size(); ++i)
+      n += float_simd_avx2(s.triangles[i], s.width, s.height, out, static_cast<std::uint32_t>(i));
+    return n;
   }
   if (out == nullptr) {
     auto count = [&n](std::int32_t, std::int32_t) { ++n; };

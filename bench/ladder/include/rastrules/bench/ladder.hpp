@@ -25,6 +25,7 @@ namespace rastrules::bench {
 // rule: BENCH.LADDER.RUNGS
 enum class Rung {
   kFloat,
+  kFloatSimd,
   kDouble,
   kScanline,
   kFixed4I32,
@@ -39,8 +40,8 @@ enum class Rung {
 namespace rastrules {
 template <> struct Names<bench::Rung> {
   static constexpr auto table =
-      in_enum_order<bench::Rung>({"float", "double", "scanline", "fixed4-i32", "reference",
-                                  "reference-fast", "fixed16-i128", "exact", "limit"});
+      in_enum_order<bench::Rung>({"float", "float-simd", "double", "scanline", "fixed4-i32",
+                                  "reference", "reference-fast", "fixed16-i128", "exact", "limit"});
 };
 } // namespace rastrules
 
