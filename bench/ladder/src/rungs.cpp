@@ -347,18 +347,32 @@ std::uint64_t batch_count(std::span<const float> xy, const LadderScene& s, Isa i
 } // namespace
 
 // rule: BENCH.METRIC.THROUGHPUT
-// Workers spin for up to 2 ms on the job counter before they sleep on the condition variable:
-// back-to-back timed repeats find them awake (as a driver's do within a frame) instead of
-// timing the operating system's wake-up; an idle pool sleeps.
+// A job is split into many small chunks that every participant claims from one counter: the
+// calling thread claims too, so a worker that the operating system has not scheduled (a loaded
+// machine) leaves its chunks to the others instead of holding the job up. The caller then waits
+// only for chunks already claimed, and for workers inside the job (`active`): it closes the job
+// (`open`) before it waits, and a worker enters only while the job is open, so a worker that
+// wakes up late finds it closed and never touches a finished job. Workers spin for up to 100 us
+// on the job counter before they sleep on the condition variable: back-to-back timed repeats
+// find them awake (as a driver's do within a frame), and a loaded machine loses little to the
+// spinning; an idle pool sleeps.
 struct FastPool::Impl {
+  struct Job {
+    std::size_t chunks = 0;
+    const std::function<void(std::size_t)>* body = nullptr;
+    std::atomic<std::size_t> next{0};
+    std::atomic<std::size_t> done{0};
+    std::vector<std::exception_ptr> errors; // one per chunk
+  };
+
   std::vector<std::thread> workers;
   std::mutex m;
   std::condition_variable go;
   std::atomic<std::uint64_t> generation{0};
-  std::atomic<unsigned> pending{0};
   std::atomic<bool> stop{false};
-  const std::function<void(unsigned)>* job = nullptr;
-  std::vector<std::exception_ptr> errors;
+  std::atomic<bool> open{false};
+  std::atomic<unsigned> active{0};
+  std::atomic<Job*> job{nullptr};
 
   static void relax() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -368,7 +382,19 @@ struct FastPool::Impl {
 #endif
   }
 
-  void work(unsigned k) {
+  // Claims and runs chunks of j until none is left.
+  static void claim(Job& j) {
+    for (std::size_t c; (c = j.next.fetch_add(1, std::memory_order_relaxed)) < j.chunks;) {
+      try {
+        (*j.body)(c);
+      } catch (...) {
+        j.errors[c] = std::current_exception();
+      }
+      j.done.fetch_add(1, std::memory_order_acq_rel);
+    }
+  }
+
+  void work() {
     std::uint64_t seen = 0;
     for (;;) {
       const auto start = std::chrono::steady_clock::now();
@@ -376,8 +402,8 @@ struct FastPool::Impl {
       std::uint64_t g = 0;
       while ((g = generation.load(std::memory_order_acquire)) == seen &&
              !stop.load(std::memory_order_acquire)) {
-        if (++spins % 1024 == 0 &&
-            std::chrono::steady_clock::now() - start > std::chrono::milliseconds(2)) {
+        if (++spins % 256 == 0 &&
+            std::chrono::steady_clock::now() - start > std::chrono::microseconds(100)) {
           std::unique_lock<std::mutex> l(m);
           go.wait(l, [&] { return generation.load() != seen || stop.load(); });
         } else {
@@ -387,42 +413,42 @@ struct FastPool::Impl {
       if (stop.load(std::memory_order_acquire))
         return;
       seen = g;
-      std::exception_ptr e;
-      try {
-        (*job)(k);
-      } catch (...) {
-        e = std::current_exception();
-      }
-      errors[k] = e;
-      pending.fetch_sub(1, std::memory_order_acq_rel);
+      active.fetch_add(1); // sequentially consistent with run()'s open.store(false)
+      if (open.load())
+        claim(*job.load());
+      active.fetch_sub(1);
     }
   }
 
-  // Runs f(0) here and f(k) on worker k for k = 1 .. workers; rethrows the lowest k's error.
-  void run(const std::function<void(unsigned)>& f) {
-    job = &f;
-    std::fill(errors.begin(), errors.end(), nullptr);
-    pending.store(static_cast<unsigned>(workers.size()), std::memory_order_relaxed);
+  // Runs body(c) for every chunk c in [0, chunks) on this thread and the workers; rethrows
+  // the lowest chunk's error.
+  void run(std::size_t chunks, const std::function<void(std::size_t)>& body) {
+    Job j;
+    j.chunks = chunks;
+    j.body = &body;
+    j.errors.assign(chunks, nullptr);
+    job.store(&j);
+    open.store(true);
     {
-      const std::lock_guard<std::mutex> g(m); // no worker misses the wake-up
+      const std::lock_guard<std::mutex> g(m); // no sleeping worker misses the wake-up
       generation.fetch_add(1, std::memory_order_release);
     }
     go.notify_all();
-    std::exception_ptr mine;
-    try {
-      f(0);
-    } catch (...) {
-      mine = std::current_exception();
-    }
-    for (std::uint32_t spins = 0; pending.load(std::memory_order_acquire) != 0; ++spins) {
-      if (spins % 1024 == 1023)
+    claim(j);
+    for (std::uint32_t spins = 0; j.done.load(std::memory_order_acquire) != chunks; ++spins) {
+      if (spins % 256 == 255)
         std::this_thread::yield();
       else
         relax();
     }
-    if (mine)
-      std::rethrow_exception(mine);
-    for (const std::exception_ptr& e : errors)
+    open.store(false);
+    for (std::uint32_t spins = 0; active.load() != 0; ++spins) {
+      if (spins % 256 == 255)
+        std::this_thread::yield();
+      else
+        relax();
+    }
+    for (const std::exception_ptr& e : j.errors)
       if (e)
         std::rethrow_exception(e);
   }
@@ -430,12 +456,11 @@ struct FastPool::Impl {
 
 FastPool::FastPool(unsigned threads) : impl_(std::make_unique<Impl>()) {
   const unsigned n = std::clamp(threads, 1u, kMaxThreads);
-  impl_->errors.assign(n, nullptr);
   for (unsigned k = 1; k < n; ++k) {
     try {
-      impl_->workers.emplace_back([this, k] { impl_->work(k); });
+      impl_->workers.emplace_back([this] { impl_->work(); });
     } catch (const std::system_error&) {
-      break; // fewer threads: fewer chunks, the same count
+      break; // fewer threads: the same chunks, the same count
     }
   }
 }
@@ -458,14 +483,17 @@ std::uint64_t FastPool::count(const LadderScene& s) {
   std::vector<float> tmp;
   const std::vector<float>& xy = coordinates(s, tmp);
   const std::size_t n = s.triangles.size();
-  const std::size_t chunks = threads();
+  // 16 chunks a thread (one triangle at least each): small enough that the work of a thread
+  // that is not scheduled moves to the others, large enough (about 150 small triangles) for the
+  // batch counter's eight-at-a-time setup.
+  const std::size_t chunks = std::max<std::size_t>(1, std::min<std::size_t>(n, 16 * threads()));
   std::vector<std::uint64_t> counts(chunks, 0);
   const Isa isa = best_isa();
-  const std::function<void(unsigned)> f = [&](unsigned k) {
-    const std::size_t b = n * k / chunks, e = n * (k + 1) / chunks;
-    counts[k] = batch_count(std::span<const float>(xy).subspan(6 * b, 6 * (e - b)), s, isa, b);
+  const std::function<void(std::size_t)> body = [&](std::size_t c) {
+    const std::size_t b = n * c / chunks, e = n * (c + 1) / chunks;
+    counts[c] = batch_count(std::span<const float>(xy).subspan(6 * b, 6 * (e - b)), s, isa, b);
   };
-  impl_->run(f);
+  impl_->run(chunks, body);
   std::uint64_t total = 0;
   for (const std::uint64_t c : counts)
     total += c;

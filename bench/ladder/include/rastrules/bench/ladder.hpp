@@ -197,10 +197,11 @@ struct LadderConfig {
 };
 
 // reference-fast on `threads` threads kept between calls (a persistent pool of standard-library
-// threads, created once, like a driver's): each call splits the scene's triangles into one
-// contiguous chunk a thread, counts each with the kernel's batch counter (the calling thread
-// takes chunk 0) and adds the chunk counts in chunk order. Equal to run_rung(kReferenceFast, s,
-// nullptr) for every thread count. A thread that cannot be created leaves fewer chunks.
+// threads, created once, like a driver's): each call splits the scene's triangles into 16
+// contiguous chunks a thread, which the calling thread and the workers claim from one counter
+// (so a worker the system does not schedule holds nothing up), counts each with the kernel's
+// batch counter and adds the chunk counts in chunk order. Equal to run_rung(kReferenceFast, s,
+// nullptr) for every thread count. A thread that cannot be created leaves fewer workers.
 // rule: BENCH.METRIC.THROUGHPUT
 class FastPool {
 public:
