@@ -211,24 +211,4 @@ std::optional<std::int64_t> parse_int(std::string_view text, std::int64_t lo, st
   return v;
 }
 
-std::string fixed_decimal(std::int64_t raw, int frac_bits) {
-  const bool negative = raw < 0;
-  const std::uint64_t mag =
-      negative ? 0 - static_cast<std::uint64_t>(raw) : static_cast<std::uint64_t>(raw);
-  const std::uint64_t whole = mag >> frac_bits;
-  const std::uint64_t frac = mag & ((std::uint64_t{1} << frac_bits) - 1);
-  std::string s = (negative ? "-" : "") + std::to_string(whole);
-  if (frac == 0)
-    return s;
-  // frac / 2^k = frac * 5^k / 10^k; frac < 2^16 and 5^16 < 2^38, so no overflow.
-  std::uint64_t pow5 = 1;
-  for (int i = 0; i < frac_bits; ++i)
-    pow5 *= 5;
-  std::string digits = std::to_string(frac * pow5);
-  digits.insert(0, static_cast<std::size_t>(frac_bits) - digits.size(), '0');
-  while (!digits.empty() && digits.back() == '0')
-    digits.pop_back();
-  return s + "." + digits;
-}
-
 } // namespace rastrules::cli

@@ -91,10 +91,6 @@ std::optional<int> take_scene_argument(std::string_view command, const std::stri
 // Parses a decimal integer in [lo, hi]; nullopt when the text is anything else.
 std::optional<std::int64_t> parse_int(std::string_view text, std::int64_t lo, std::int64_t hi);
 
-// Returns raw / 2^frac_bits as an exact decimal ("-3.5", "0.00390625").
-// Preconditions: 0 <= frac_bits <= 16.
-std::string fixed_decimal(std::int64_t raw, int frac_bits);
-
 int run_render(const Args& args);
 int run_explain(const Args& args);
 int run_showcase(const Args& args);
