@@ -7,8 +7,11 @@
 #   lib/librastrules_oracle.a        rastrules::oracle  (component oracle: needs CGAL and GMP)
 #   lib/librastrules_check.a         rastrules::check   (component check: kernel against oracle)
 #   lib/librastrules_io.a            rastrules::io      (component io: needs libpng, nlohmann-json)
+#   lib/librastrules_c.a             rastrules::c       (component c: the C API, rastrules/rastrules.h;
+#                                                        needs io)
 #   lib/cmake/rastrules/             rastrulesConfig.cmake, its version file and target files
 #   lib/pkgconfig/rastrules.pc       the kernel for pkg-config users
+#   lib/pkgconfig/rastrules-c.pc     the C API for pkg-config users (C compilers)
 #   bin/rastrules                    the command line
 #
 # The kernel's export set depends on nothing; each component has an export set of its own,
@@ -38,6 +41,9 @@ if(TARGET rastrules_io)
   rastrules_install_part(rastrules_io Io ${PROJECT_SOURCE_DIR}/tools/io/include
                          PATTERN glyph.hpp EXCLUDE)
 endif()
+if(TARGET rastrules_c)
+  rastrules_install_part(rastrules_c C ${PROJECT_SOURCE_DIR}/capi/include)
+endif()
 if(TARGET rastrules)
   install(TARGETS rastrules RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
@@ -57,6 +63,12 @@ configure_file(${CMAKE_CURRENT_LIST_DIR}/rastrules.pc.in ${PROJECT_BINARY_DIR}/i
                @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/install/rastrules.pc
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+if(TARGET rastrules_c)
+  configure_file(${CMAKE_CURRENT_LIST_DIR}/rastrules-c.pc.in
+                 ${PROJECT_BINARY_DIR}/install/rastrules-c.pc @ONLY)
+  install(FILES ${PROJECT_BINARY_DIR}/install/rastrules-c.pc
+          DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+endif()
 
 # The licence travels with the installed headers and libraries.
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
