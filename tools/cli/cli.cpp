@@ -127,21 +127,27 @@ std::optional<LoadedScene> load_scene(const std::string& path) {
                              : err->what());
     return std::nullopt;
   }
-  LoadedScene loaded;
-  loaded.scene = std::move(std::get<Scene>(scene));
-  if (has_pipeline_state(loaded.scene)) {
-    // rule: SCENE.PIPELINE
-    if (auto err = pipe::validate(loaded.scene)) {
-      error(err->what());
-      return std::nullopt;
-    }
-    return loaded;
-  }
-  auto prepared = prepare(loaded.scene);
-  if (auto* err = std::get_if<SceneError>(&prepared)) {
+  auto loaded = load_scene(std::move(std::get<Scene>(scene)));
+  if (auto* err = std::get_if<SceneError>(&loaded)) {
     error(err->what());
     return std::nullopt;
   }
+  return std::move(std::get<LoadedScene>(loaded));
+}
+
+// rule: SCENE.INPUT.ERRORS
+std::variant<LoadedScene, SceneError> load_scene(Scene scene) {
+  LoadedScene loaded;
+  loaded.scene = std::move(scene);
+  if (has_pipeline_state(loaded.scene)) {
+    // rule: SCENE.PIPELINE
+    if (auto err = pipe::validate(loaded.scene))
+      return *err;
+    return loaded;
+  }
+  auto prepared = prepare(loaded.scene);
+  if (auto* err = std::get_if<SceneError>(&prepared))
+    return *err;
   loaded.prepared = std::move(std::get<PreparedScene>(prepared));
   return loaded;
 }

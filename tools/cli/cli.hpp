@@ -48,6 +48,11 @@ struct LoadedScene {
 // rule: SCENE.INPUT.ERRORS
 std::optional<LoadedScene> load_scene(const std::string& path);
 
+// What load_scene() does after reading: a scene with pipeline state validated
+// (pipe::validate), any other prepared. Returns the loaded scene or the first error.
+// rule: SCENE.INPUT.ERRORS
+std::variant<LoadedScene, SceneError> load_scene(Scene scene);
+
 // load_scene() for the commands that draw window-space scenes alone (check): a scene with
 // pipeline state (SCENE.PIPELINE) is bad input, named by its first pipeline field.
 // rule: SCENE.INPUT.ERRORS
