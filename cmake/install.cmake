@@ -13,6 +13,7 @@
 #   lib/pkgconfig/rastrules.pc       the kernel for pkg-config users
 #   lib/pkgconfig/rastrules-c.pc     the C API for pkg-config users (C compilers)
 #   bin/rastrules                    the command line
+#   lib/python3.X/site-packages/rastrules/  the Python module (python/CMakeLists.txt), when built
 #
 # The kernel's export set depends on nothing; each component has an export set of its own,
 # loaded by rastrulesConfig.cmake only when asked for, after its dependencies are found.
