@@ -123,8 +123,8 @@ _MAX_WORK = 1 << 36  # `--max-work`'s default
 
 
 def render(scene, *, threads=1, max_fragments=_MAX_FRAGMENTS, max_work=_MAX_WORK):
-    """Draws the scene as `rastrules render` does (run_pipeline: only the stages the scene asks
-    for) and returns its fragments in output order (prim, part, y, x, seg, sample) as a NumPy
+    """Draws the scene as `rastrules render` does (only the stages the scene asks for) and
+    returns its fragments in output order (prim, part, y, x, seg, sample) as a NumPy
     structured array with the fields
 
       prim (uint32), x, y (int32), mask (uint32: covered samples after the sample mask),
