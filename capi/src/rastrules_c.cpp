@@ -121,21 +121,6 @@ rr_status scene_error(const SceneError& e, std::string_view hint = {}) {
   return fail(limit ? RR_ERROR_LIMIT : RR_ERROR_BAD_SCENE, e.what() + std::string(hint));
 }
 
-// The checks of `rastrules render` after reading (the command line's load_scene): the
-// pipeline's validation for a scene with pipeline state, else prepare().
-// rule: SCENE.INPUT.ERRORS, SCENE.PIPELINE
-std::variant<std::optional<rastrules::PreparedScene>, SceneError> check(const Scene& scene) {
-  if (rastrules::has_pipeline_state(scene)) {
-    if (auto err = rastrules::pipe::validate(scene))
-      return *err;
-    return std::optional<rastrules::PreparedScene>{};
-  }
-  auto prepared = rastrules::prepare(scene);
-  if (auto* err = std::get_if<SceneError>(&prepared))
-    return *err;
-  return std::optional<rastrules::PreparedScene>{std::move(std::get<0>(prepared))};
-}
-
 // Reads and checks a scene; `name` replaces the empty field of a parse error ("(json)" or the
 // file's path), as the command line names the file.
 rr_status make_scene(std::string_view text, const std::string& name, rr_scene** out) {
@@ -153,7 +138,7 @@ rr_status make_scene(std::string_view text, const std::string& name, rr_scene** 
   }
   auto handle = std::make_unique<rr_scene>();
   handle->scene = std::move(std::get<Scene>(read));
-  auto checked = check(handle->scene);
+  auto checked = rastrules::pipe::check_scene(handle->scene);
   if (auto* err = std::get_if<SceneError>(&checked))
     return scene_error(*err);
   handle->prepared = std::move(std::get<0>(checked));
@@ -320,7 +305,7 @@ rr_status rr_scene_set_profile(rr_scene* scene, const char* name) {
     // rule: PROFILE.CONVENTIONS
     Scene changed = scene->scene;
     rastrules::apply(rastrules::profile(*p), changed);
-    auto checked = check(changed);
+    auto checked = rastrules::pipe::check_scene(changed);
     if (auto* err = std::get_if<SceneError>(&checked))
       return scene_error(*err);
     scene->scene = std::move(changed);

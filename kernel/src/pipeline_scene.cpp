@@ -77,6 +77,19 @@ std::variant<PipeResult, SceneError> run_pipeline(const Scene& s, const PipeOpti
   return result;
 }
 
+// rule: SCENE.INPUT.ERRORS, SCENE.PIPELINE
+std::variant<std::optional<PreparedScene>, SceneError> check_scene(const Scene& s) {
+  if (has_pipeline_state(s)) {
+    if (auto err = validate(s))
+      return *err;
+    return std::optional<PreparedScene>{};
+  }
+  auto prepared = prepare(s);
+  if (auto* err = std::get_if<SceneError>(&prepared))
+    return *err;
+  return std::optional<PreparedScene>{std::move(std::get<PreparedScene>(prepared))};
+}
+
 } // namespace rastrules::pipe
 
 namespace rastrules {

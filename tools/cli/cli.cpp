@@ -137,19 +137,10 @@ std::optional<LoadedScene> load_scene(const std::string& path) {
 
 // rule: SCENE.INPUT.ERRORS
 std::variant<LoadedScene, SceneError> load_scene(Scene scene) {
-  LoadedScene loaded;
-  loaded.scene = std::move(scene);
-  if (has_pipeline_state(loaded.scene)) {
-    // rule: SCENE.PIPELINE
-    if (auto err = pipe::validate(loaded.scene))
-      return *err;
-    return loaded;
-  }
-  auto prepared = prepare(loaded.scene);
-  if (auto* err = std::get_if<SceneError>(&prepared))
+  auto checked = pipe::check_scene(scene);
+  if (auto* err = std::get_if<SceneError>(&checked))
     return *err;
-  loaded.prepared = std::move(std::get<PreparedScene>(prepared));
-  return loaded;
+  return LoadedScene{std::move(scene), std::move(std::get<std::optional<PreparedScene>>(checked))};
 }
 
 // rule: SCENE.INPUT.ERRORS

@@ -260,6 +260,13 @@ struct PipeOptions {
 // rule: SCENE.PIPELINE, PIPE.INPUT.ATTRIBUTES
 [[nodiscard]] std::optional<SceneError> validate(const Scene& s);
 
+// What every reader of a scene does after reading it (the command line's load_scene, the C
+// API, the Python module): a scene with pipeline state (has_pipeline_state) is validated and
+// returns nullopt (run_pipeline draws it); any other is prepared and returns its prepared
+// scene. Returns the first error of bad input.
+// rule: SCENE.INPUT.ERRORS, SCENE.PIPELINE
+[[nodiscard]] std::variant<std::optional<PreparedScene>, SceneError> check_scene(const Scene& s);
+
 // Validates, transforms, clips, rasterizes (all rules of the other files), interpolates and
 // tests depth. Returns the first error (field, message) of bad input.
 [[nodiscard]] std::variant<PipeResult, SceneError> run_pipeline(const Scene& s,
