@@ -4,10 +4,10 @@
 // result fits the type, and the symbolic value and comparisons equal C++'s. Checked
 // exhaustively on int8_t (all 65536 operand pairs for + - * and unary -; the six comparisons on
 // a grid including both ends) and on
-// int64_t for operands at and around the type's limits, against the compiler's
-// __builtin_*_overflow. (Z3 4.8.12's own bit-vector no-overflow predicate gets constant
-// products wrong, proofs-notes pitfall 1; this encoding does not use it.)
-// Cites no rule: it is evidence about the proofs' encoding, not about the kernel.
+// int64_t and __int128 for operands at and around the type's limits, against the compiler's
+// __builtin_*_overflow (and __int128's narrowing to int64_t). (Z3 4.8.12's own bit-vector
+// no-overflow predicate gets constant products wrong, proofs-notes pitfall 1; this encoding does
+// not use it.) Cites no rule: it is evidence about the proofs' encoding, not about the kernel.
 // Assumes: (none)
 // Expected: every case agrees; exit status 0 iff so.
 
@@ -133,6 +133,58 @@ int check_int64(Domain& dom) {
   return failures;
 }
 
+// The same for __int128 (Int128, PATH.CURVE.SAMPLE's wide products): + - * and unary - at and
+// around its limits against __builtin_*_overflow, and the narrowing to int64_t.
+int check_int128(Domain& dom) {
+  using S = Sym<Int128>;
+  const Int128 k63 = Int128{1} << 63;
+  const Int128 root = Int128{1} << 63; // about sqrt(2^127) / 1.41: products near the limit
+  const std::vector<Int128> values = {kInt128Min,
+                                      kInt128Min + 1,
+                                      -(Int128{1} << 64),
+                                      -k63 - 1,
+                                      -k63,
+                                      -root * 2 + 1,
+                                      -2,
+                                      -1,
+                                      0,
+                                      1,
+                                      2,
+                                      k63 - 1,
+                                      k63,
+                                      root * 2 - 1,
+                                      root * 2,
+                                      Int128{1} << 64,
+                                      kInt128Max - 1,
+                                      kInt128Max};
+  int failures = 0;
+  for (const Int128 a : values) {
+    const S x(dom, int128_val(dom.ctx(), a), "a");
+    for (const Int128 b : values) {
+      const S y(dom, int128_val(dom.ctx(), b), "b");
+      Int128 out = 0;
+      const bool overflow[3] = {__builtin_add_overflow(a, b, &out),
+                                __builtin_sub_overflow(a, b, &out),
+                                __builtin_mul_overflow(a, b, &out)};
+      for (int op = 0; op < 3; ++op) {
+        (void)(op == 0 ? x + y : op == 1 ? x - y : x * y);
+        if (last_obligation_holds(dom) == overflow[op])
+          ++failures;
+      }
+    }
+    (void)(-x);
+    if (last_obligation_holds(dom) != (a != kInt128Min))
+      ++failures;
+    (void)Sym<std::int64_t>(x); // static_cast<std::int64_t>: fits iff in int64_t's range
+    if (last_obligation_holds(dom) != (a >= std::numeric_limits<std::int64_t>::min() &&
+                                       a <= std::numeric_limits<std::int64_t>::max()))
+      ++failures;
+  }
+  if (failures > 0)
+    std::cout << "    __int128: " << failures << " mismatches\n";
+  return failures;
+}
+
 } // namespace
 } // namespace rastrules::proofs
 
@@ -155,6 +207,15 @@ int main() {
               << f << " mismatches)\n";
     failed += f != 0;
   }
-  std::cout << (2 - failed) << " passed, " << failed << " failed\n";
+  {
+    Domain dom;
+    const int f = check_int128(dom);
+    std::cout << (f == 0 ? "AGREES" : "DISAGREES")
+              << " __int128: + - * and unary - obligations at the limits vs __builtin_*_overflow, "
+                 "narrowing to int64_t ("
+              << f << " mismatches)\n";
+    failed += f != 0;
+  }
+  std::cout << (3 - failed) << " passed, " << failed << " failed\n";
   return failed == 0 ? 0 : 1;
 }

@@ -25,6 +25,32 @@
 
 namespace rastrules::proofs {
 
+// The C++ type __int128 (a GCC and Clang extension, which the kernel uses for wide products:
+// PATH.CURVE.SAMPLE). Under -std=c++20 without extensions std::signed_integral does not hold
+// for it, so Sym's representation types are named by SymRep.
+__extension__ typedef __int128 Int128;
+
+// The limits of Int128, -2^127 and 2^127 - 1.
+inline constexpr Int128 kInt128Max = ((Int128{1} << 126) - 1) + (Int128{1} << 126);
+inline constexpr Int128 kInt128Min = -kInt128Max - 1;
+
+// The types Sym can model: the standard signed integer types and Int128.
+template <class T>
+concept SymRep = std::signed_integral<T> || std::same_as<T, Int128>;
+
+// Returns the Z3 integer numeral of v (beyond int64_t as decimal text).
+inline z3::expr int128_val(z3::context& ctx, Int128 v) {
+  if (v >= std::numeric_limits<std::int64_t>::min() &&
+      v <= std::numeric_limits<std::int64_t>::max())
+    return ctx.int_val(static_cast<std::int64_t>(v));
+  std::string digits;
+  for (Int128 u = v; u != 0; u /= 10) { // % and / truncate: digits of negative u are <= 0
+    const int d = static_cast<int>(u % 10);
+    digits.insert(digits.begin(), static_cast<char>('0' + (d < 0 ? -d : d)));
+  }
+  return ctx.int_val((v < 0 ? "-" + digits : digits).c_str());
+}
+
 // How a value is displayed in a counterexample.
 enum class Unit {
   kCoordRaw, // raw 16.8 position: also shown in pixels (raw / 2^kSubpixelBits)
@@ -48,18 +74,20 @@ struct Watch {
   Unit unit;
 };
 
-template <std::signed_integral Rep> class Sym;
+template <SymRep Rep> class Sym;
 
 // Returns the name of the C++ type Rep models, for reports.
-template <std::signed_integral Rep> constexpr const char* type_name() {
+template <SymRep Rep> constexpr const char* type_name() {
   if constexpr (sizeof(Rep) == 1)
     return "int8_t";
   else if constexpr (sizeof(Rep) == 2)
     return "int16_t";
   else if constexpr (sizeof(Rep) == 4)
     return "int32_t";
-  else
+  else if constexpr (sizeof(Rep) == 8)
     return "int64_t";
+  else
+    return "__int128";
 }
 
 // Owns the Z3 context, the obligation log and the variables of one proof run. Exactly one
@@ -81,7 +109,7 @@ public:
 
   // Returns a fresh integer variable (names must be unique within the Domain) modelling a value of
   // type Rep (its range is NOT assumed; theorems state their input ranges as explicit hypotheses).
-  template <std::signed_integral Rep> Sym<Rep> var(const std::string& name, Unit unit);
+  template <SymRep Rep> Sym<Rep> var(const std::string& name, Unit unit);
 
   // Returns a fresh Boolean variable.
   z3::expr bool_var(const std::string& name) {
@@ -100,10 +128,17 @@ public:
   }
 
   // Records that the exact value e must fit Rep for the modelled C++ evaluation to be exact.
-  template <std::signed_integral Rep>
-  void require_fits(const z3::expr& e, const std::string& text) {
-    const z3::expr lo = ctx_.int_val(static_cast<std::int64_t>(std::numeric_limits<Rep>::min()));
-    const z3::expr hi = ctx_.int_val(static_cast<std::int64_t>(std::numeric_limits<Rep>::max()));
+  template <SymRep Rep> void require_fits(const z3::expr& e, const std::string& text) {
+    z3::expr lo = ctx_.int_val(0);
+    z3::expr hi = ctx_.int_val(0);
+    if constexpr (std::same_as<Rep, Int128>) {
+      // -2^127 and 2^127 - 1 (std::numeric_limits is not specialised for it without extensions).
+      lo = int128_val(ctx_, kInt128Min);
+      hi = int128_val(ctx_, kInt128Max);
+    } else {
+      lo = ctx_.int_val(static_cast<std::int64_t>(std::numeric_limits<Rep>::min()));
+      hi = ctx_.int_val(static_cast<std::int64_t>(std::numeric_limits<Rep>::max()));
+    }
     log_.push_back(Obligation{text + " fits " + type_name<Rep>(), e, lo <= e && e <= hi});
   }
 
@@ -164,7 +199,7 @@ template <class T> struct TermComparisons {
 };
 
 // A symbolic value of C++ type Rep (see the file comment).
-template <std::signed_integral Rep> class Sym : public TermComparisons<Sym<Rep>> {
+template <SymRep Rep> class Sym : public TermComparisons<Sym<Rep>> {
 public:
   using rep = Rep;
 
@@ -176,6 +211,15 @@ public:
   }
   Sym(Domain& dom, z3::expr e, std::string text)
       : dom_(&dom), e_(std::move(e)), text_(std::move(text)) {}
+  // A conversion from another modelled type (static_cast<Rep>(v) in the kernel): widening is
+  // exact; narrowing records the obligation "v fits Rep" (else C++ would change the value).
+  template <SymRep From>
+  requires(!std::same_as<From, Rep>) explicit Sym(const Sym<From>& v)
+      : dom_(&v.domain()), e_(v.expr()),
+        text_(std::string("(") + type_name<Rep>() + ")" + v.text()) {
+    if constexpr (sizeof(From) > sizeof(Rep))
+      dom_->require_fits<Rep>(e_, text_);
+  }
 
   [[nodiscard]] const z3::expr& expr() const { return e_; }
   [[nodiscard]] const std::string& text() const { return text_; }
@@ -203,7 +247,7 @@ private:
   std::string text_;
 };
 
-template <std::signed_integral Rep> Sym<Rep> Domain::var(const std::string& name, Unit unit) {
+template <SymRep Rep> Sym<Rep> Domain::var(const std::string& name, Unit unit) {
   z3::expr v = ctx_.int_const(name.c_str());
   dom_register(name, v, unit);
   return Sym<Rep>(*this, v, name);
@@ -211,8 +255,7 @@ template <std::signed_integral Rep> Sym<Rep> Domain::var(const std::string& name
 
 // Returns c ? t : f (a proof-side mirror of a C++ conditional on symbolic data). Performs no
 // arithmetic, so records no obligation.
-template <std::signed_integral Rep>
-Sym<Rep> select(const SymBool& c, const Sym<Rep>& t, const Sym<Rep>& f) {
+template <SymRep Rep> Sym<Rep> select(const SymBool& c, const Sym<Rep>& t, const Sym<Rep>& f) {
   return Sym<Rep>(t.domain(), z3::ite(c.expr(), t.expr(), f.expr()),
                   "select(" + t.text() + ", " + f.text() + ")");
 }
