@@ -15,6 +15,7 @@
 
 #include "path_detail.hpp"
 #include "rastrules/fixed.hpp"
+#include "rastrules/formula/path_curve.hpp"
 
 namespace rastrules::path::detail {
 namespace {
@@ -370,13 +371,8 @@ std::vector<Root> roots_in_unit_interval(const Poly& g) {
 
 // Returns the power-basis coefficients (integers) of one coordinate of a Bézier curve.
 Poly power_basis(const std::array<std::int64_t, 4>& c, int deg) {
-  Poly p;
-  if (deg == 2) {
-    p = {Rational(c[0]), Rational(2 * (c[1] - c[0])), Rational(c[0] - 2 * c[1] + c[2])};
-  } else {
-    p = {Rational(c[0]), Rational(3 * (c[1] - c[0])), Rational(3 * (c[0] - 2 * c[1] + c[2])),
-         Rational(c[3] - 3 * c[2] + 3 * c[1] - c[0])};
-  }
+  const std::array<std::int64_t, 4> w = formula::curve_power_coefficients(c, deg == 3);
+  Poly p{Rational(w[0]), Rational(w[1]), Rational(w[2]), Rational(w[3])};
   trim(p);
   return p;
 }
@@ -451,12 +447,12 @@ std::int64_t threshold_at(const Poly& x, Root& r, Tie t) {
 // x at least a fraction of a raw unit from an integer). Returns false, having decided nothing,
 // whenever a check does not pass; the rational path then decides.
 //
-// Budget (PATH.CURVE.SAMPLE): power coefficients |c| < 2^27; with k < 2^30,
-// P(k / 2^30) * 2^90 = sum_j c_j k^j 2^(30 (3 - j)) has four terms below 2^117 (sum < 2^119),
-// and the Bernstein coefficients of x on [k, k + 1] / 2^30, scaled by 3 * 2^90, are sums of at
-// most 12 terms below 2^119.6 (< 2^124): all in __int128.
+// Budget (PATH.CURVE.SAMPLE, proved by proofs/path/curve_budget.cpp on the templates of
+// rastrules/formula/path_curve.hpp): power coefficients |c| < 2^27; with k <= 2^30,
+// |P(k / 2^30) * 2^90| < 2^118, and the Bernstein coefficients of x on [k, k + 1] / 2^30, scaled
+// by 3 * 2^90, are at most 2^120 in magnitude: all in __int128.
 __extension__ typedef __int128 Wide;
-constexpr int kFastBits = 30;
+constexpr int kFastBits = formula::kCurveFastBits;
 // |raw| <= 2^23: a power coefficient is a sum of raw values with weights |w| summing to at
 // most 12 (the cubic's 3 (y0 - 2 y1 + y2)), so |c| <= 12 * 2^23 < 2^27.
 constexpr int kCoefficientBits = kVertexMagBits + 4;
@@ -469,14 +465,8 @@ static_assert(kCoefficientBits + 2 <= 62, "3 * (a0 + a1 + a2 + a3) must fit int6
 struct Cubic {
   std::array<std::int64_t, 4> c{}; // power basis, degree <= 3 (a quadratic has c[3] = 0)
   // Returns P(k / 2^30) * 2^90, exactly.
-  [[nodiscard]] Wide scaled(std::int64_t k) const {
-    const Wide kk = k;
-    Wide v = 0;
-    for (int j = 3; j >= 0; --j) // Horner in k with the powers of 2^30 folded in
-      v = v * kk +
-          static_cast<Wide>(c[static_cast<std::size_t>(j)]) * (Wide{1} << (kFastBits * (3 - j)));
-    return v;
-  }
+  [[nodiscard]] Wide scaled(std::int64_t k) const { return formula::curve_scaled<Wide>(wide(), k); }
+  [[nodiscard]] std::array<Wide, 4> wide() const { return {c[0], c[1], c[2], c[3]}; }
   [[nodiscard]] double approx(double t) const {
     return ((static_cast<double>(c[3]) * t + static_cast<double>(c[2])) * t +
             static_cast<double>(c[1])) *
@@ -502,36 +492,23 @@ bool crossing_on(const Cubic& x, std::int64_t k, int dir, Crossing& out) {
   // First a Lipschitz bound: |x'| <= L = |e1| + 2 |e2| + 3 |e3| on [0, 1], so x_c lies within
   // L 2^-30 of x(k / 2^30), which scaled() gives exactly (times 2^90); B = L 2^60 < 2^90.
   {
-    const Wide lip =
-        static_cast<Wide>(std::abs(x.c[1]) + 2 * std::abs(x.c[2]) + 3 * std::abs(x.c[3]))
-        << (2 * kFastBits);
+    const Wide lip = formula::curve_lipschitz_scaled<std::int64_t, Wide>(
+        x.c, [](bool c, std::int64_t t, std::int64_t f) { return c ? t : f; });
     const Wide xk = x.scaled(k);
     const Wide one = Wide{1} << (3 * kFastBits);
     const Wide f = xk >> (3 * kFastBits); // floor(xk / 2^90): >> is arithmetic on __int128
-    if (xk - lip > f * one && xk + lip < (f + 1) * one) {
+    if (formula::curve_strictly_between<Wide>(xk - lip, xk + lip, f, one)) {
       out = Crossing{static_cast<std::int64_t>(f), dir};
       return true;
     }
   }
   // x on [k, k + 1] / 2^30 lies between its Bernstein coefficients (scaled by 3 * 2^90).
-  const Wide kk = k;
-  std::array<Wide, 4> p{}; // power coefficients in s of x((k + s) / 2^30) * 2^90
-  for (int j = 0; j <= 3; ++j) {
-    Wide kpow = 1;
-    for (int i2 = j; i2 >= 0; --i2) {
-      static constexpr int kBinom[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
-      p[static_cast<std::size_t>(i2)] += static_cast<Wide>(x.c[static_cast<std::size_t>(j)]) *
-                                         kBinom[j][i2] * kpow * (Wide{1} << (kFastBits * (3 - j)));
-      kpow *= kk;
-    }
-  }
-  const std::array<Wide, 4> xb{3 * p[0], 3 * p[0] + p[1], 3 * p[0] + 2 * p[1] + p[2],
-                               3 * (p[0] + p[1] + p[2] + p[3])};
+  const std::array<Wide, 4> xb = formula::curve_interval_bernstein3<Wide>(x.wide(), k);
   const Wide xmin = *std::min_element(xb.begin(), xb.end());
   const Wide xmax = *std::max_element(xb.begin(), xb.end());
   const Wide scale = Wide{3} << (3 * kFastBits);
   const Wide f = wide_floor_div(xmin, scale);
-  if (!(xmin > f * scale && xmax < (f + 1) * scale))
+  if (!formula::curve_strictly_between<Wide>(xmin, xmax, f, scale))
     return false; // an integer in reach of x_c: decide exactly on the rational path
   out = Crossing{static_cast<std::int64_t>(f), dir};
   return true;
@@ -652,8 +629,8 @@ bool estimated_crossings(const Cubic& g, const Cubic& x, int v, std::vector<Cros
 // fraction (e0 q^2 + e1 p q + e2 p^2) / q^2, floor and integrality exact (PATH.CURVE.SAMPLE).
 // Returns false, having decided nothing, when the roots are irrational.
 //
-// Budget: |c_j|, |e_j| < 2^27; D = c1^2 - 4 c2 c0 < 2^57; |p|, q <= |c1| + sqrt(D) + 2 |c2| <
-// 2^30; the numerator of x is a sum of three terms below 2^(27 + 60) < 2^89: all in __int128.
+// Budget (proved by proofs/path/curve_budget.cpp): a quadratic's |c_j|, |e_j| <= 2^25;
+// |D| <= 2^52; 0 <= p <= q <= 2^26; |numerator of x| <= 2^79: all in __int128.
 // The threshold of a crossing at x_c = num / den (den > 0): the largest sample x it counts for,
 // floor(x_c), less one when x_c is an integer and hx = +1 (PATH.SAMPLE.TIE).
 std::int64_t threshold_of(Wide num, Wide den, Tie t) {
@@ -664,9 +641,7 @@ std::int64_t threshold_of(Wide num, Wide den, Tie t) {
 // The sign variations of 3 times the Bernstein coefficients of g on [0, 1] (Descartes' bound on
 // its roots in (0, 1), with their parity).
 int bernstein_variations(const Cubic& g) {
-  const std::int64_t a0 = g.c[0], a1 = g.c[1], a2 = g.c[2], a3 = g.c[3];
-  const std::array<std::int64_t, 4> b{3 * a0, 3 * a0 + a1, 3 * a0 + 2 * a1 + a2,
-                                      3 * (a0 + a1 + a2 + a3)};
+  const std::array<std::int64_t, 4> b = formula::curve_bernstein3(g.c);
   int v = 0, last = 0;
   for (const std::int64_t bi : b) {
     const int si = bi > 0 ? 1 : (bi < 0 ? -1 : 0);
@@ -699,7 +674,7 @@ bool rational_quadratic_crossings(const Cubic& g, const Cubic& x, Tie t,
     roots[0] = c1 > 0 ? std::pair{-c0, c1} : std::pair{c0, -c1};
     n = 1;
   } else {
-    const Wide d = c1 * c1 - 4 * c2 * c0;
+    const Wide d = formula::curve_discriminant(c0, c1, c2);
     if (d < 0)
       return true;                                                         // no real root
     Wide s = static_cast<std::int64_t>(std::sqrt(static_cast<double>(d))); // d < 2^57
@@ -723,10 +698,9 @@ bool rational_quadratic_crossings(const Cubic& g, const Cubic& x, Tie t,
     if (p < 0 || p > q)
       continue; // outside [0, 1]
     // g' and g'' at p / q, scaled by q and q^0: their signs.
-    const int d1 = wide_sign(c1 * q + 2 * c2 * p), d2 = wide_sign(c2);
+    const int d1 = wide_sign(formula::curve_slope_at(c1, c2, p, q)), d2 = wide_sign(c2);
     // x(p / q) = (e0 q^2 + e1 p q + e2 p^2) / q^2.
-    const Wide num = static_cast<Wide>(x.c[0]) * q * q + static_cast<Wide>(x.c[1]) * p * q +
-                     static_cast<Wide>(x.c[2]) * p * p;
+    const Wide num = formula::curve_numerator2(x.wide(), p, q);
     const std::int64_t threshold = threshold_of(num, q * q, t);
     // Order m and sign a of the first non-zero derivative at the root.
     const int m = d1 != 0 ? 1 : 2;
@@ -753,14 +727,14 @@ bool rational_quadratic_crossings(const Cubic& g, const Cubic& x, Tie t,
 // (e0 q^3 + e1 p q^2 + e2 p^2 q + e3 p^3) / q^3. Returns false when g has no end root or a check
 // fails; the caller then clears `out`.
 //
-// Budget: h's coefficients are sums of at most three of g's (|h_j| < 3 * 2^27 < 2^29), so
-// D = h1^2 - 4 h2 h0 < 2^61, |p| <= |h1| + sqrt(D) < 2^31, q = 2 |h2| < 2^30, and every term of
-// x's numerator is below 2^(27 + 93) (sum < 2^122): __int128; h.scaled() terms < 2^(29 + 90).
+// Budget (proved by proofs/path/curve_budget.cpp): h's coefficients are sums of g's
+// (|h_j| <= 14 * 2^24 < 2^28), so |D| <= 2^58, sqrt(D) <= 2^29, 0 < p < q = 2 |h2| < 2^29, and
+// |x's numerator| <= 2^115: __int128; |h.scaled()| < 2^120.
 // rule: PATH.CURVE.SAMPLE
 bool cubic_end_crossings(const Cubic& g, const Cubic& x, Tie t, std::vector<Crossing>& out) {
   const int hy = t.y_down ? 1 : -1;
-  const std::array<Wide, 4> c{g.c[0], g.c[1], g.c[2], g.c[3]};
-  const Wide g_at_1 = c[0] + c[1] + c[2] + c[3];
+  const std::array<Wide, 4> c = g.wide();
+  const Wide g_at_1 = formula::curve_at_one(c);
   if ((c[0] != 0 && g_at_1 != 0) || (c[1] == 0 && c[2] == 0 && c[3] == 0))
     return false;  // no end root, or y constant
   if (c[0] == 0) { // t = 0: crossed iff a = hy, in direction hy
@@ -771,12 +745,12 @@ bool cubic_end_crossings(const Cubic& g, const Cubic& x, Tie t, std::vector<Cros
       out.push_back(Crossing{threshold_of(x.c[0], 1, t), hy});
   }
   if (g_at_1 == 0) { // t = 1: crossed iff a (-1)^m = hy, in direction -hy
-    const std::array<Wide, 3> d{c[1] + 2 * c[2] + 3 * c[3], 2 * c[2] + 6 * c[3], 6 * c[3]};
+    const std::array<Wide, 3> d = formula::curve_derivatives_at_one(c);
     std::size_t m = 0; // the order is m + 1
     while (d[m] == 0)
       ++m;
     if ((m % 2 == 0 ? -wide_sign(d[m]) : wide_sign(d[m])) == hy)
-      out.push_back(Crossing{threshold_of(Wide{x.c[0]} + x.c[1] + x.c[2] + x.c[3], 1, t), -hy});
+      out.push_back(Crossing{threshold_of(formula::curve_at_one(x.wide()), 1, t), -hy});
   }
   // Divide out t^m0, then (t - 1)^m1.
   std::array<Wide, 4> h = c;
@@ -791,14 +765,10 @@ bool cubic_end_crossings(const Cubic& g, const Cubic& x, Tie t, std::vector<Cros
   int flips = 1; // (-1)^m1
   while (deg > 0) {
     Wide sum = 0;
-    for (std::size_t i = 0; i <= deg; ++i)
-      sum += h[i];
+    const std::array<Wide, 4> q =
+        formula::curve_divide_by_t_minus_one(h, static_cast<int>(deg), sum);
     if (sum != 0)
       break;
-    std::array<Wide, 4> q{};
-    q[deg - 1] = h[deg];
-    for (std::size_t i = deg - 1; i >= 1; --i)
-      q[i - 1] = h[i] + q[i];
     h = q;
     --deg;
     flips = -flips;
@@ -809,10 +779,7 @@ bool cubic_end_crossings(const Cubic& g, const Cubic& x, Tie t, std::vector<Cros
     return true; // no root inside
   // x at t = p / q (q > 0) as a crossing in direction dir.
   const auto at = [&](Wide p, Wide q, int dir) {
-    const Wide num = ((static_cast<Wide>(x.c[3]) * p + static_cast<Wide>(x.c[2]) * q) * p +
-                      static_cast<Wide>(x.c[1]) * q * q) *
-                         p +
-                     static_cast<Wide>(x.c[0]) * q * q * q;
+    const Wide num = formula::curve_numerator3(x.wide(), p, q);
     out.push_back(Crossing{threshold_of(num, q * q * q, t), dir});
   };
   if (deg == 1) {
@@ -821,7 +788,7 @@ bool cubic_end_crossings(const Cubic& g, const Cubic& x, Tie t, std::vector<Cros
       at(p, q, flips * wide_sign(h[1]));
     return true;
   }
-  const Wide disc = h[1] * h[1] - 4 * h[2] * h[0];
+  const Wide disc = formula::curve_discriminant(h[0], h[1], h[2]);
   if (disc < 0)
     return true;
   Wide s = static_cast<std::int64_t>(std::sqrt(static_cast<double>(disc))); // disc < 2^61
@@ -835,7 +802,7 @@ bool cubic_end_crossings(const Cubic& g, const Cubic& x, Tie t, std::vector<Cros
     for (const Wide num : {-h[1] - s, -h[1] + s}) {
       const Wide p = h[2] > 0 ? num : -num, q = 2 * (h[2] > 0 ? h[2] : -h[2]);
       if (p > 0 && p < q)
-        at(p, q, flips * wide_sign(h[1] * q + 2 * h[2] * p));
+        at(p, q, flips * wide_sign(formula::curve_slope_at(h[1], h[2], p, q)));
     }
     return true;
   }
@@ -848,7 +815,7 @@ bool cubic_end_crossings(const Cubic& g, const Cubic& x, Tie t, std::vector<Cros
 
 bool fast_curve_crossings(const Cubic& g, const Cubic& x, std::vector<Crossing>& out) {
   constexpr std::int64_t kOne = std::int64_t{1} << kFastBits;
-  if (g.c[0] == 0 || g.c[0] + g.c[1] + g.c[2] + g.c[3] == 0)
+  if (g.c[0] == 0 || formula::curve_at_one(g.c) == 0)
     return false; // a root at an end: the half-open rule needs derivatives
   // Bernstein coefficients of g on [0, 1], times 3: their sign variations bound the roots.
   const int v = bernstein_variations(g);
@@ -920,21 +887,9 @@ std::vector<Crossing> curve_crossings_impl(const Curve& c, std::int64_t sy, Tie 
     return out;
   {
     Cubic gi, xi;
-    const auto coefficients = [n](const std::array<std::int64_t, 4>& q) {
-      std::array<std::int64_t, 4> w{q[0], 0, 0, 0};
-      if (n == 2) {
-        w[1] = 2 * (q[1] - q[0]);
-        w[2] = q[0] - 2 * q[1] + q[2];
-      } else {
-        w[1] = 3 * (q[1] - q[0]);
-        w[2] = 3 * (q[0] - 2 * q[1] + q[2]);
-        w[3] = q[3] - 3 * q[2] + 3 * q[1] - q[0];
-      }
-      return w;
-    };
-    gi.c = coefficients(ys);
+    gi.c = formula::curve_power_coefficients(ys, n == 3);
     gi.c[0] -= sy;
-    xi.c = coefficients(xs);
+    xi.c = formula::curve_power_coefficients(xs, n == 3);
     if (fast && n == 2 && rational_quadratic_crossings(gi, xi, t, out))
       return out;
     out.clear();
