@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Self-check: the path obligation can fail. Runs prove_line_crossing against deliberately
+// Self-check: the path obligations can fail. Runs prove_line_crossing and prove_tie_partition
+// against deliberately
 // broken path models, each derived from PathKernelModel with one member replaced, and passes
 // only if every mutant is REFUTED (with a counterexample).
 // Cites no rule: it is evidence about the proof, not about the kernel.
@@ -9,6 +10,7 @@
 #include <cstdint>
 
 #include "path/line_crossing.hpp"
+#include "path/tie_partition.hpp"
 #include "support/kernel_model.hpp"
 #include "support/mutation.hpp"
 #include "support/prover.hpp"
@@ -59,6 +61,17 @@ struct NumeratorFromBottom : PathKernelModel {
   }
 };
 
+// A crossing at the sample counts for edges running down and never for edges running up
+// (whatever hx says): an edge and its reverse no longer cancel there.
+struct TieByDirection : PathKernelModel {
+  static constexpr const char* kName = "a crossing at the sample counts for down edges only";
+  template <bool XRight, class S>
+  static SymBool crossing_right(const S& e, const S& y0, const S& y1) {
+    const S zero(0);
+    return ((y1 > y0) && (e >= zero)) || ((y1 < y0) && (e < zero));
+  }
+};
+
 // 32-bit accumulators: the edge value and the numerator overflow.
 using Int32Path = AccumulatorOf<PathKernelModel, std::int32_t, "int32_t path accumulator">;
 
@@ -67,7 +80,8 @@ using Int32Path = AccumulatorOf<PathKernelModel, std::int32_t, "int32_t path acc
 MutationSelfcheck mutation_selfcheck() {
   return {"path",
           {refute<TieAlwaysCounts, ClosedInY, HalfOpenFlipped, ThresholdOffByOne,
-                  NumeratorFromBottom, Int32Path>(kLineCrossing)},
+                  NumeratorFromBottom, Int32Path>(kLineCrossing),
+           refute<TieByDirection, ClosedInY>(kTiePartition)},
           PathKernelModel::constants(),
           {"PATH.GEOMETRY", "PATH.WINDING"}};
 }

@@ -65,6 +65,47 @@ z3::expr segment_edge_values(const Point<S>& a, const Point<S>& b, const Point<S
          opposite_sign(F::edge_value(c, b, p)) && opposite_sign(F::edge_value(a, c, p));
 }
 
+// The shared edge a -> b = a + n delta and the sample p = a + k delta on it (0 < k < n: the
+// open segment), with third vertices c and d: fresh variables "<prefix>delta_x", "delta_y",
+// "n", "k", "c", "d" (the caller declares a).
+template <class S> struct SharedSegment {
+  Point<S> a;
+  S dx, dy, n, k;
+  Point<S> b, p, c, d;
+  z3::expr on_segment;
+};
+template <class S>
+SharedSegment<S> shared_segment(Domain& dom, const Point<S>& a, const std::string& prefix) {
+  const S dx = dom.var<typename S::rep>(prefix + "delta_x", Unit::kCoordRaw);
+  const S dy = dom.var<typename S::rep>(prefix + "delta_y", Unit::kCoordRaw);
+  const S n = dom.var<typename S::rep>(prefix + "n", Unit::kInteger);
+  const S k = dom.var<typename S::rep>(prefix + "k", Unit::kInteger);
+  const Point<S> b{a.x + n * dx, a.y + n * dy};
+  const Point<S> p{a.x + k * dx, a.y + k * dy};
+  const Point<S> c = point_var<S>(dom, prefix + "c");
+  const Point<S> d = point_var<S>(dom, prefix + "d");
+  return SharedSegment<S>{a, dx, dy, n, k, b, p, c, d, 0 < k.expr() && k.expr() < n.expr()};
+}
+
+// Proves lemmas L0 and L1 (for the generic third vertex seg.c) and returns L1's status
+// (UNKNOWN, skipped, when L0 is not proved).
+template <class F, class S> Status prove_segment_lemmas(Prover& pr, const SharedSegment<S>& seg) {
+  z3::context& ctx = pr.ctx();
+  const z3::expr lemma_n = ctx.int_const("lemma_N");
+  const z3::expr lemma_k = ctx.int_const("lemma_K");
+  const z3::expr lemma_v = ctx.int_const("lemma_V");
+  const Status l0 = pr.prove("lemma L0: 0 < K < N => sign((N - K) V) = sign(K V) = sign(N V)", {},
+                             sign_lemma(lemma_n, lemma_k, lemma_v));
+  const z3::expr u = seg.dx.expr() * (seg.c.y.expr() - seg.a.y.expr()) -
+                     seg.dy.expr() * (seg.c.x.expr() - seg.a.x.expr());
+  return l0 != Status::kProved
+             ? pr.skip("lemma L1: kernel edge values at a sample on the open edge ab",
+                       "relies on lemma L0, which was not proved")
+             : pr.prove("lemma L1: kernel edge values at a sample on the open edge ab",
+                        {seg.on_segment, sign_lemma(seg.n.expr(), seg.k.expr(), u)},
+                        segment_edge_values<F>(seg.a, seg.b, seg.c, seg.p));
+}
+
 // Part 1, for every convention: for all a != b in the vertex range, exactly one of the directed
 // edges a -> b and b -> a is inclusive.
 // Part 2, for every convention: for all a, b, c, d in the vertex range with c and d strictly on
@@ -77,7 +118,6 @@ z3::expr segment_edge_values(const Point<S>& a, const Point<S>& b, const Point<S
 template <class F> void prove_shared_edge_exactly_once(Prover& pr) {
   using S = typename F::Acc;
   Domain& dom = pr.domain();
-  z3::context& ctx = dom.ctx();
 
   const Point<S> a = point_var<S>(dom, "a");
 
@@ -99,17 +139,11 @@ template <class F> void prove_shared_edge_exactly_once(Prover& pr) {
   }
 
   // Part 2. The shared edge a -> b = a + n delta, the sample p = a + k delta.
-  const S dx = dom.var<typename S::rep>("delta_x", Unit::kCoordRaw);
-  const S dy = dom.var<typename S::rep>("delta_y", Unit::kCoordRaw);
-  const S n = dom.var<typename S::rep>("n", Unit::kInteger);
-  const S k = dom.var<typename S::rep>("k", Unit::kInteger);
-  const Point<S> b{a.x + n * dx, a.y + n * dy};
-  const Point<S> p{a.x + k * dx, a.y + k * dy};
-  const Point<S> c = point_var<S>(dom, "c");
-  const Point<S> d = point_var<S>(dom, "d");
+  const SharedSegment<S> seg = shared_segment<S>(dom, a, "");
+  const Point<S>&b = seg.b, &p = seg.p, &c = seg.c, &d = seg.d;
   const z3::expr order1 = dom.bool_var("first_is_abc");  // else (b, a, c)
   const z3::expr order2 = dom.bool_var("second_is_abd"); // else (b, a, d)
-  const z3::expr on_segment = 0 < k.expr() && k.expr() < n.expr();
+  const z3::expr& on_segment = seg.on_segment;
   auto show_points = [&] {
     pr.watch("bx", b.x.expr(), Unit::kCoordRaw);
     pr.watch("by", b.y.expr(), Unit::kCoordRaw);
@@ -117,21 +151,9 @@ template <class F> void prove_shared_edge_exactly_once(Prover& pr) {
     pr.watch("py", p.y.expr(), Unit::kCoordRaw);
   };
 
-  const z3::expr lemma_n = ctx.int_const("lemma_N");
-  const z3::expr lemma_k = ctx.int_const("lemma_K");
-  const z3::expr lemma_v = ctx.int_const("lemma_V");
-  const Status l0 = pr.prove("lemma L0: 0 < K < N => sign((N - K) V) = sign(K V) = sign(N V)", {},
-                             sign_lemma(lemma_n, lemma_k, lemma_v));
-
   // L1 for the generic third vertex c; M uses it at c and at d.
-  const z3::expr u = dx.expr() * (c.y.expr() - a.y.expr()) - dy.expr() * (c.x.expr() - a.x.expr());
   show_points();
-  const Status l1 = l0 != Status::kProved
-                        ? pr.skip("lemma L1: kernel edge values at a sample on the open edge ab",
-                                  "relies on lemma L0, which was not proved")
-                        : pr.prove("lemma L1: kernel edge values at a sample on the open edge ab",
-                                   {on_segment, sign_lemma(n.expr(), k.expr(), u)},
-                                   segment_edge_values<F>(a, b, c, p));
+  const Status l1 = prove_segment_lemmas<F>(pr, seg);
 
   const z3::expr oc = spec_orientation(a, b, c);
   const z3::expr od = spec_orientation(a, b, d);
