@@ -23,17 +23,33 @@
 
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "rastrules/formula/path.hpp"
+#include "rastrules/formula/path_curve.hpp"
 #include "support/kernel_model.hpp"
 #include "support/obligation.hpp"
 #include "support/prover.hpp"
 #include "support/sym.hpp"
 
 namespace rastrules::proofs {
+
+// The sign of v as an integer term.
+inline z3::expr sign_of(const z3::expr& v) {
+  z3::context& ctx = v.ctx();
+  return z3::ite(v > 0, ctx.int_val(1), z3::ite(v < 0, ctx.int_val(-1), ctx.int_val(0)));
+}
+
+// One end decision: whether the displaced row is crossed there, its direction, and the x of
+// the end (from which the threshold follows, the same function for both).
+struct EndCrossing {
+  z3::expr crossed;
+  z3::expr dir;
+  z3::expr x;
+};
 
 struct PathKernelModel : KernelModel {
   static constexpr const char* kName = "kernel";
@@ -65,6 +81,47 @@ struct PathKernelModel : KernelModel {
       return select(r > S(0), q, q - S(1));
     else
       return q;
+  }
+
+  // Mirrors cubic_end_crossings (kernel/src/path_curve.cpp) at t = 0, for g with c0 = 0 and not
+  // constant: m = the first j >= 1 with c_j != 0 (the kernel's loop); crossed iff sgn c_m = hy,
+  // in direction hy; x = x.c[0].
+  static EndCrossing end_at_zero(const std::array<z3::expr, 4>& c, const std::array<z3::expr, 4>& e,
+                                 int hy) {
+    z3::context& ctx = c[0].ctx();
+    const z3::expr a =
+        z3::ite(c[1] != 0, sign_of(c[1]), z3::ite(c[2] != 0, sign_of(c[2]), sign_of(c[3])));
+    return {a == hy, ctx.int_val(hy), e[0]};
+  }
+
+  // Mirrors cubic_end_crossings at t = 1, for g with g(1) = 0: d = curve_derivatives_at_one(c),
+  // m = the first index with d_m != 0 (order m + 1); crossed iff (m even ? -sgn d_m : sgn d_m)
+  // = hy, in direction -hy; x = curve_at_one(e).
+  template <class W>
+  static EndCrossing end_at_one(const std::array<W, 4>& c, const std::array<W, 4>& e, int hy) {
+    z3::context& ctx = c[0].expr().ctx();
+    const std::array<W, 3> d = formula::curve_derivatives_at_one<W>(c);
+    const z3::expr before =
+        z3::ite(d[0].expr() != 0, -sign_of(d[0].expr()),
+                z3::ite(d[1].expr() != 0, sign_of(d[1].expr()), -sign_of(d[2].expr())));
+    return {before == hy, ctx.int_val(-hy), formula::curve_at_one<W>(e).expr()};
+  }
+
+  // Mirrors rational_quadratic_crossings at an end root p / q (q > 0; p = 0 at t = 0, p = q at
+  // t = 1): d1 = sgn curve_slope_at(c1, c2, p, q), m = d1 != 0 ? 1 : 2, a = d1 or sgn c2;
+  // crossed iff a = hy (t = 0, direction hy) or (m odd ? -a : a) = hy (t = 1, direction -hy);
+  // x = curve_numerator2(e, p, q) / q^2, returned as the numerator (the caller compares
+  // fractions).
+  template <class W>
+  static EndCrossing quadratic_end(const std::array<W, 4>& c, const std::array<W, 4>& e, const W& p,
+                                   const W& q, bool at_one, int hy) {
+    z3::context& ctx = c[0].expr().ctx();
+    const z3::expr d1 = sign_of(formula::curve_slope_at<W>(c[1], c[2], p, q).expr());
+    const z3::expr a = z3::ite(d1 != 0, d1, sign_of(c[2].expr()));
+    const z3::expr num = formula::curve_numerator2<W>(e, p, q).expr();
+    if (!at_one)
+      return {a == hy, ctx.int_val(hy), num};
+    return {z3::ite(d1 != 0, -a, a) == hy, ctx.int_val(-hy), num};
   }
 };
 

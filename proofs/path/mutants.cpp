@@ -72,6 +72,34 @@ struct TieByDirection : PathKernelModel {
   }
 };
 
+// The t = 1 end rule of cubic_end_crossings with the parity of the order read the other way
+// (an odd order m + 1 taken as even): a curve and its reverse no longer agree at their ends.
+struct EndParityFlipped : PathKernelModel {
+  static constexpr const char* kName = "curve end rule at t = 1 with the order's parity flipped";
+  template <class W>
+  static EndCrossing end_at_one(const std::array<W, 4>& c, const std::array<W, 4>& e, int hy) {
+    // crossed iff -before == hy, that is before == -hy; the direction stays -hy.
+    EndCrossing r = PathKernelModel::end_at_one(c, e, -hy);
+    r.dir = c[0].expr().ctx().int_val(-hy);
+    return r;
+  }
+};
+
+// The same for a quadratic's end root at t = 1 (rational_quadratic_crossings).
+struct QuadraticEndParityFlipped : PathKernelModel {
+  static constexpr const char* kName =
+      "quadratic end rule at t = 1 with the order's parity flipped";
+  template <class W>
+  static EndCrossing quadratic_end(const std::array<W, 4>& c, const std::array<W, 4>& e, const W& p,
+                                   const W& q, bool at_one, int hy) {
+    if (!at_one)
+      return PathKernelModel::quadratic_end(c, e, p, q, at_one, hy);
+    EndCrossing r = PathKernelModel::quadratic_end(c, e, p, q, at_one, -hy);
+    r.dir = c[0].expr().ctx().int_val(-hy);
+    return r;
+  }
+};
+
 // 32-bit accumulators: the edge value and the numerator overflow.
 using Int32Path = AccumulatorOf<PathKernelModel, std::int32_t, "int32_t path accumulator">;
 
@@ -81,7 +109,8 @@ MutationSelfcheck mutation_selfcheck() {
   return {"path",
           {refute<TieAlwaysCounts, ClosedInY, HalfOpenFlipped, ThresholdOffByOne,
                   NumeratorFromBottom, Int32Path>(kLineCrossing),
-           refute<TieByDirection, ClosedInY>(kTiePartition)},
+           refute<TieByDirection, ClosedInY, EndParityFlipped, QuadraticEndParityFlipped>(
+               kTiePartition)},
           PathKernelModel::constants(),
           {"PATH.GEOMETRY", "PATH.WINDING"}};
 }

@@ -4,7 +4,9 @@
 // every sample, windings that add up to the winding of their union contour adbc (the shared
 // edge's two directions cancel: the same test decides both, with opposite signs); and when
 // both are clockwise, every integer sample on the open shared edge has winding 1 in exactly one
-// of them and 0 in the other, so exactly one covers it under nonzero and under even-odd. The
+// of them and 0 in the other, so exactly one covers it under nonzero and under even-odd; and a
+// cubic or quadratic that ends on the sample row and its reverse get, from the kernel's integer
+// end rules, the same crossing there with opposite directions and the same x. The
 // windings are sums of the kernel's line contributions (formula::path_edge_spans,
 // path_crossing_right, edge_value, combined as kernel/src/path.cpp's line_contribution).
 // Method: the templates on Sym<std::int64_t>; the sample on the edge as a + k delta with

@@ -14,6 +14,10 @@
 //   X  (exactly once): for A and B clockwise (c and d on opposite sides of ab, each area > 0)
 //      every integer sample on the open segment ab has w_A, w_B in {0, 1} and w_A + w_B = 1:
 //      exactly one of the two paths covers it, under nonzero and under even-odd.
+//   E, Q (curve ends): a cubic (cubic_end_crossings) or quadratic (rational_quadratic_crossings)
+//      ending on the row, and its reverse: the end rules give the same crossing with opposite
+//      directions and the same x (PathKernelModel::end_at_zero, end_at_one, quadratic_end
+//      restate the kernel's loops over the formula templates). Interior crossings: properties.
 // X uses the encoding and lemmas of tri/shared_edge_exactly_once.hpp: b = a + n delta,
 // s = a + k delta, 0 < k < n (every integer point strictly between a and b), lemma L0 on signs
 // and lemma L1 (the kernel's edge values at s: E_ab = E_ba = 0, E_bc and E_ca with the sign of
@@ -62,10 +66,130 @@ template <class F> void prove_windings_add(Prover& pr) {
   });
 }
 
+// E, for hy = +1 and -1: for every cubic (control y_i, x_i and the row s.y in range, y not
+// constant) and its reverse (control points in the opposite order): where the curve ends on
+// the row at t = 1, the reverse's decision at t = 0 is the same crossing with the opposite
+// direction and the same x, and the same with the ends exchanged; power coefficients from
+// formula::curve_power_coefficients on int64_t, the end rules on __int128 as the kernel.
+template <class F> void prove_curve_end_reversal(Prover& pr) {
+  using I = Sym<std::int64_t>;
+  using W = Sym<Int128>;
+  Domain& dom = pr.domain();
+  std::vector<z3::expr> hyps;
+  std::array<I, 4> ys{
+      dom.var<std::int64_t>("ey0", Unit::kCoordRaw), dom.var<std::int64_t>("ey1", Unit::kCoordRaw),
+      dom.var<std::int64_t>("ey2", Unit::kCoordRaw), dom.var<std::int64_t>("ey3", Unit::kCoordRaw)};
+  std::array<I, 4> xs{
+      dom.var<std::int64_t>("ex0", Unit::kCoordRaw), dom.var<std::int64_t>("ex1", Unit::kCoordRaw),
+      dom.var<std::int64_t>("ex2", Unit::kCoordRaw), dom.var<std::int64_t>("ex3", Unit::kCoordRaw)};
+  const I sy = dom.var<std::int64_t>("esy", Unit::kCoordRaw);
+  for (std::size_t i = 0; i < 4; ++i) {
+    hyps.push_back(in_closed(ys[i].expr(), F::kMinRaw, F::kMaxRaw));
+    hyps.push_back(in_closed(xs[i].expr(), F::kMinRaw, F::kMaxRaw));
+  }
+  hyps.push_back(in_closed(sy.expr(), F::kMinRaw, F::kMaxRaw));
+  hyps.push_back(!(ys[0].expr() == ys[1].expr() && ys[1].expr() == ys[2].expr() &&
+                   ys[2].expr() == ys[3].expr())); // y constant: never crossed, no end rule
+  const auto coefficients = [&](const std::array<I, 4>& q, bool is_y) {
+    std::array<I, 4> c = formula::curve_power_coefficients(q, true);
+    if (is_y)
+      c[0] = c[0] - sy; // gi.c[0] -= sy
+    return std::array<W, 4>{W(c[0]), W(c[1]), W(c[2]), W(c[3])};
+  };
+  const std::array<I, 4> ys_rev{ys[3], ys[2], ys[1], ys[0]};
+  const std::array<I, 4> xs_rev{xs[3], xs[2], xs[1], xs[0]};
+  const std::array<W, 4> g = coefficients(ys, true), e = coefficients(xs, false);
+  const std::array<W, 4> gr = coefficients(ys_rev, true), er = coefficients(xs_rev, false);
+  const auto exprs = [](const std::array<W, 4>& v) {
+    return std::array<z3::expr, 4>{v[0].expr(), v[1].expr(), v[2].expr(), v[3].expr()};
+  };
+  for (const int hy : {1, -1}) {
+    const std::string side = hy == 1 ? " (hy = +1)" : " (hy = -1)";
+    const std::size_t mark = dom.mark();
+    const EndCrossing one = F::end_at_one(g, e, hy);
+    const EndCrossing zero_rev = F::end_at_zero(exprs(gr), exprs(er), hy);
+    std::vector<z3::expr> h = hyps;
+    h.push_back(formula::curve_at_one<W>(g).expr() == 0);
+    pr.prove("E: a cubic ending on the row at t = 1 and its reverse at t = 0: the same crossing, "
+             "opposite directions, the same x" +
+                 side,
+             h,
+             gr[0].expr() == 0 && one.crossed == zero_rev.crossed &&
+                 z3::implies(one.crossed, one.dir == -zero_rev.dir) && one.x == zero_rev.x,
+             dom.obligations_since(mark));
+    const EndCrossing zero = F::end_at_zero(exprs(g), exprs(e), hy);
+    const EndCrossing one_rev = F::end_at_one(gr, er, hy);
+    h = hyps;
+    h.push_back(g[0].expr() == 0);
+    pr.prove("E: a cubic starting on the row at t = 0 and its reverse at t = 1: the same crossing, "
+             "opposite directions, the same x" +
+                 side,
+             h,
+             formula::curve_at_one<W>(gr).expr() == 0 && zero.crossed == one_rev.crossed &&
+                 z3::implies(zero.crossed, zero.dir == -one_rev.dir) && zero.x == one_rev.x);
+  }
+}
+
+// Q, for hy = +1 and -1: the same for a quadratic's end roots as rational_quadratic_crossings
+// decides them (the root at t = 1 as p / q with p = q > 0, its reverse's at t = 0 as 0 / q',
+// q' > 0: any denominators, as the kernel's come from the discriminant): the same crossing,
+// opposite directions, and x_c equal as fractions.
+template <class F> void prove_quadratic_end_reversal(Prover& pr) {
+  using I = Sym<std::int64_t>;
+  using W = Sym<Int128>;
+  Domain& dom = pr.domain();
+  std::vector<z3::expr> hyps;
+  std::array<I, 4> ys{dom.var<std::int64_t>("qy0", Unit::kCoordRaw),
+                      dom.var<std::int64_t>("qy1", Unit::kCoordRaw),
+                      dom.var<std::int64_t>("qy2", Unit::kCoordRaw), I(0)};
+  std::array<I, 4> xs{dom.var<std::int64_t>("qx0", Unit::kCoordRaw),
+                      dom.var<std::int64_t>("qx1", Unit::kCoordRaw),
+                      dom.var<std::int64_t>("qx2", Unit::kCoordRaw), I(0)};
+  const I sy = dom.var<std::int64_t>("qsy", Unit::kCoordRaw);
+  const W q = dom.var<Int128>("qq", Unit::kInteger);
+  const W qr = dom.var<Int128>("qqr", Unit::kInteger);
+  for (std::size_t i = 0; i < 3; ++i) {
+    hyps.push_back(in_closed(ys[i].expr(), F::kMinRaw, F::kMaxRaw));
+    hyps.push_back(in_closed(xs[i].expr(), F::kMinRaw, F::kMaxRaw));
+  }
+  hyps.push_back(in_closed(sy.expr(), F::kMinRaw, F::kMaxRaw));
+  hyps.push_back(q.expr() > 0 && qr.expr() > 0);
+  hyps.push_back(!(ys[0].expr() == ys[1].expr() && ys[1].expr() == ys[2].expr()));
+  const auto coefficients = [&](const std::array<I, 4>& v, bool is_y) {
+    std::array<I, 4> c = formula::curve_power_coefficients(v, false);
+    if (is_y)
+      c[0] = c[0] - sy; // gi.c[0] -= sy
+    return std::array<W, 4>{W(c[0]), W(c[1]), W(c[2]), W(c[3])};
+  };
+  const std::array<W, 4> g = coefficients(ys, true), e = coefficients(xs, false);
+  const std::array<W, 4> gr = coefficients({ys[2], ys[1], ys[0], I(0)}, true);
+  const std::array<W, 4> er = coefficients({xs[2], xs[1], xs[0], I(0)}, false);
+  const W zero(0);
+  for (const int hy : {1, -1}) {
+    const std::string side = hy == 1 ? " (hy = +1)" : " (hy = -1)";
+    for (const bool end_one : {true, false}) {
+      // The original's root at t = 1 (p = q) and the reverse's at 0, or the other way round.
+      const EndCrossing orig = F::quadratic_end(g, e, end_one ? q : zero, q, end_one, hy);
+      const EndCrossing rev = F::quadratic_end(gr, er, end_one ? zero : qr, qr, !end_one, hy);
+      std::vector<z3::expr> h = hyps;
+      h.push_back(formula::curve_at_one<W>(end_one ? g : gr).expr() == 0);
+      h.push_back((end_one ? gr : g)[0].expr() == 0);
+      pr.prove(std::string("Q: a quadratic ending on the row at t = ") + (end_one ? "1" : "0") +
+                   " and its reverse at t = " + (end_one ? "0" : "1") +
+                   ": the same crossing, opposite directions, the same x" + side,
+               h,
+               orig.crossed == rev.crossed && z3::implies(orig.crossed, orig.dir == -rev.dir) &&
+                   orig.x * qr.expr() * qr.expr() == rev.x * q.expr() * q.expr());
+    }
+  }
+}
+
 // rule: PATH.TIE.PARTITION
 template <class F> void prove_tie_partition(Prover& pr) {
   using S = typename F::Acc;
   prove_windings_add<F>(pr);
+  prove_curve_end_reversal<F>(pr);
+  prove_quadratic_end_reversal<F>(pr);
   // X: the shared edge a -> b = a + n delta, the sample p = a + k delta.
   const SharedSegment<S> seg = shared_segment<S>(pr.domain(), point_var<S>(pr.domain(), "xa"), "x");
   const Point<S>&a = seg.a, &b = seg.b, &p = seg.p, &c = seg.c, &d = seg.d;
