@@ -11,8 +11,10 @@
 //     n % d != 0 and n < 0; d > 0), entering as f d <= n < (f + 1) d;
 //   - the integer square root s of a discriminant d >= 0 (the double estimate corrected by
 //     `while (s * s > d) --s; while ((s + 1) (s + 1) <= d) ++s;`), entering as
-//     s >= 0, s^2 <= d < (s + 1)^2 for the result, and the double estimate within 2^27 of it
-//     (d < 2^60 is within 2^7 of a double, whose square root is rounded correctly: IEEE 754);
+//     s >= 0, s^2 <= d < (s + 1)^2 for the result, and every value the loops try in
+//     [0, floor(sqrt(dmax)) + 1] (assumed: d <= 2^58 rounds to a double with relative error
+//     2^-53 and IEEE 754 rounds its square root correctly, so the truncated estimate is within
+//     1 of floor(sqrt(d)));
 //   - the roots p / q (q > 0) that rational_quadratic_crossings and cubic_end_crossings form
 //     from the coefficients and s, and the divisions by t of cubic_end_crossings (a shift of
 //     the coefficient array: no arithmetic);
@@ -226,6 +228,8 @@ template <class F> void prove_curve_budget(Prover& pr, unsigned parts = kAllCurv
       r = r && e;
     return r;
   };
+
+  // Results cast to void below are computed for the "fits" obligations they record.
 
   // Lemmas P, M, L, A, D on fresh variables (C2 .. C6 use them).
   bool lemmas = true;

@@ -1,17 +1,18 @@
 // SPDX-License-Identifier: MIT
-// Self-check: the curve budget obligation can fail. Runs prove_curve_budget (all of it, or the
-// group of theorems a mutant targets) against deliberately broken curve models, each derived
-// from CurveKernelModel with one member replaced, and passes only if every mutant is REFUTED
-// (with a counterexample). The bound mutants state each proved magnitude one bit smaller (one
-// four bits): each is refuted, so every budget theorem can fail and its bound is tight.
-// Cites no rule: it is evidence about the proof, not about the kernel.
-// Assumes: PATH.GEOMETRY, SNAP.VERTEX.RANGE (as the obligation does)
-// Expected: every mutant REFUTED; exit status 0 iff so.
+// Self-check: the curve budget and tie partition obligations can fail. Runs prove_curve_budget
+// (all of it, or the group of theorems a mutant targets) and prove_tie_partition against
+// deliberately broken models, each derived from CurveKernelModel or PathKernelModel with one
+// member replaced, and passes only if every mutant is REFUTED (with a counterexample). The bound
+// mutants state each proved magnitude one bit smaller (one four bits): each is refuted, so every
+// budget theorem can fail and its bound is tight. Cites no rule: it is evidence about the proof,
+// not about the kernel. Assumes: PATH.GEOMETRY, SNAP.VERTEX.RANGE, PATH.WINDING, PATH.SAMPLE.TIE
+// (as the obligations do) Expected: every mutant REFUTED; exit status 0 iff so.
 
 #include <array>
 #include <cstdint>
 
 #include "path/curve_budget.hpp"
+#include "path/tie_partition.hpp"
 #include "support/kernel_model.hpp"
 #include "support/mutation.hpp"
 #include "support/prover.hpp"
@@ -87,19 +88,59 @@ using HHalved = Smaller<kHB, 1, "h's coefficients claimed within 7 2^24 (C6)">;
 using DiscHHalved = Smaller<kDiscHB, 1, "h's discriminant claimed below 2^57 (C6)">;
 using Num3Short = Smaller<kNum3B, 4, "cubic x numerator claimed below 2^111 (C6)">;
 
+// A crossing at the sample counts for edges running down and never for edges running up
+// (whatever hx says): an edge and its reverse no longer cancel there.
+struct TieByDirection : PathKernelModel {
+  static constexpr const char* kName = "a crossing at the sample counts for down edges only";
+  template <bool XRight, class S>
+  static SymBool crossing_right(const S& e, const S& y0, const S& y1) {
+    const S zero(0);
+    return ((y1 > y0) && (e >= zero)) || ((y1 < y0) && (e < zero));
+  }
+};
+
+// The t = 1 end rule of cubic_end_crossings with the parity of the order read the other way
+// (an odd order m + 1 taken as even): a curve and its reverse no longer agree at their ends.
+struct EndParityFlipped : PathKernelModel {
+  static constexpr const char* kName = "curve end rule at t = 1 with the order's parity flipped";
+  template <class W>
+  static EndCrossing end_at_one(const std::array<W, 4>& c, const std::array<W, 4>& e, int hy) {
+    // crossed iff -before == hy, that is before == -hy; the direction stays -hy.
+    EndCrossing r = PathKernelModel::end_at_one(c, e, -hy);
+    r.dir = c[0].expr().ctx().int_val(-hy);
+    return r;
+  }
+};
+
+// The same for a quadratic's end root at t = 1 (rational_quadratic_crossings).
+struct QuadraticEndParityFlipped : PathKernelModel {
+  static constexpr const char* kName =
+      "quadratic end rule at t = 1 with the order's parity flipped";
+  template <class W>
+  static EndCrossing quadratic_end(const std::array<W, 4>& c, const std::array<W, 4>& e, const W& p,
+                                   const W& q, bool at_one, int hy) {
+    if (!at_one)
+      return PathKernelModel::quadratic_end(c, e, p, q, at_one, hy);
+    EndCrossing r = PathKernelModel::quadratic_end(c, e, p, q, at_one, -hy);
+    r.dir = c[0].expr().ctx().int_val(-hy);
+    return r;
+  }
+};
+
 } // namespace
 
 MutationSelfcheck mutation_selfcheck() {
-  return {"path curves",
+  return {"path curves and partition",
           {refute<CurveWide64>(kCurveBudget),
            refute<CurveRange24, CoefHalved, BernHalved>(kCurveBudgetPart<kC1>),
            refute<ScaledHalved, ScaledHHalved>(kCurveBudgetPart<kC2>),
            refute<LipschitzSigned, LipHalved>(kCurveBudgetPart<kC3>),
            refute<IntervalHalved>(kCurveBudgetPart<kC4>),
            refute<DiscQuadHalved, Num2Halved>(kCurveBudgetPart<kC5>),
-           refute<HHalved, DiscHHalved, Num3Short>(kCurveBudgetPart<kC6>)},
+           refute<HHalved, DiscHHalved, Num3Short>(kCurveBudgetPart<kC6>),
+           refute<TieByDirection, EndParityFlipped, QuadraticEndParityFlipped>(kTiePartition)},
           CurveKernelModel::constants(),
-          {"PATH.GEOMETRY", "SNAP.VERTEX.RANGE"}};
+          {"PATH.GEOMETRY", "SNAP.VERTEX.RANGE", "PATH.WINDING", "PATH.SAMPLE.TIE"}};
 }
 
 } // namespace rastrules::proofs

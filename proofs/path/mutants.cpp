@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Self-check: the path obligations can fail. Runs prove_line_crossing and prove_tie_partition
-// against deliberately
+// Self-check: the path obligation can fail. Runs prove_line_crossing against deliberately
 // broken path models, each derived from PathKernelModel with one member replaced, and passes
 // only if every mutant is REFUTED (with a counterexample).
 // Cites no rule: it is evidence about the proof, not about the kernel.
@@ -10,7 +9,6 @@
 #include <cstdint>
 
 #include "path/line_crossing.hpp"
-#include "path/tie_partition.hpp"
 #include "support/kernel_model.hpp"
 #include "support/mutation.hpp"
 #include "support/prover.hpp"
@@ -61,45 +59,6 @@ struct NumeratorFromBottom : PathKernelModel {
   }
 };
 
-// A crossing at the sample counts for edges running down and never for edges running up
-// (whatever hx says): an edge and its reverse no longer cancel there.
-struct TieByDirection : PathKernelModel {
-  static constexpr const char* kName = "a crossing at the sample counts for down edges only";
-  template <bool XRight, class S>
-  static SymBool crossing_right(const S& e, const S& y0, const S& y1) {
-    const S zero(0);
-    return ((y1 > y0) && (e >= zero)) || ((y1 < y0) && (e < zero));
-  }
-};
-
-// The t = 1 end rule of cubic_end_crossings with the parity of the order read the other way
-// (an odd order m + 1 taken as even): a curve and its reverse no longer agree at their ends.
-struct EndParityFlipped : PathKernelModel {
-  static constexpr const char* kName = "curve end rule at t = 1 with the order's parity flipped";
-  template <class W>
-  static EndCrossing end_at_one(const std::array<W, 4>& c, const std::array<W, 4>& e, int hy) {
-    // crossed iff -before == hy, that is before == -hy; the direction stays -hy.
-    EndCrossing r = PathKernelModel::end_at_one(c, e, -hy);
-    r.dir = c[0].expr().ctx().int_val(-hy);
-    return r;
-  }
-};
-
-// The same for a quadratic's end root at t = 1 (rational_quadratic_crossings).
-struct QuadraticEndParityFlipped : PathKernelModel {
-  static constexpr const char* kName =
-      "quadratic end rule at t = 1 with the order's parity flipped";
-  template <class W>
-  static EndCrossing quadratic_end(const std::array<W, 4>& c, const std::array<W, 4>& e, const W& p,
-                                   const W& q, bool at_one, int hy) {
-    if (!at_one)
-      return PathKernelModel::quadratic_end(c, e, p, q, at_one, hy);
-    EndCrossing r = PathKernelModel::quadratic_end(c, e, p, q, at_one, -hy);
-    r.dir = c[0].expr().ctx().int_val(-hy);
-    return r;
-  }
-};
-
 // 32-bit accumulators: the edge value and the numerator overflow.
 using Int32Path = AccumulatorOf<PathKernelModel, std::int32_t, "int32_t path accumulator">;
 
@@ -108,9 +67,7 @@ using Int32Path = AccumulatorOf<PathKernelModel, std::int32_t, "int32_t path acc
 MutationSelfcheck mutation_selfcheck() {
   return {"path",
           {refute<TieAlwaysCounts, ClosedInY, HalfOpenFlipped, ThresholdOffByOne,
-                  NumeratorFromBottom, Int32Path>(kLineCrossing),
-           refute<TieByDirection, ClosedInY, EndParityFlipped, QuadraticEndParityFlipped>(
-               kTiePartition)},
+                  NumeratorFromBottom, Int32Path>(kLineCrossing)},
           PathKernelModel::constants(),
           {"PATH.GEOMETRY", "PATH.WINDING"}};
 }
