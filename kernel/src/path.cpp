@@ -250,7 +250,7 @@ void walk_samples(const Path& path, const SamplePattern& pattern, FillConvention
             [](const auto& p, const auto& q) { return p.first < q.first; });
 
   std::vector<std::uint32_t> masks(static_cast<std::size_t>(w), 0);
-  std::vector<Crossing> crossings;
+  std::vector<Crossing> crossings, curve_out;
   std::vector<std::int64_t> suffix;
   for (std::int32_t j = 0; j < h; ++j) {
     std::int64_t touched_lo = w, touched_hi = -1;
@@ -265,8 +265,8 @@ void walk_samples(const Path& path, const SamplePattern& pattern, FillConvention
           crossings.push_back(Crossing{line_threshold(*e, sy, t), e->dir});
       }
       for (const detail::Curve* c : curves.advance(sy)) {
-        const std::vector<Crossing> cc = detail::curve_crossings(*c, sy, t);
-        crossings.insert(crossings.end(), cc.begin(), cc.end());
+        detail::curve_crossings_into(*c, sy, t, true, curve_out);
+        crossings.insert(crossings.end(), curve_out.begin(), curve_out.end());
       }
       if (crossings.empty())
         continue;

@@ -863,16 +863,21 @@ bool fast_curve_crossings(const Cubic& g, const Cubic& x, std::vector<Crossing>&
 
 // rule: PATH.CURVE.SAMPLE, PATH.SAMPLE.TIE
 std::vector<Crossing> curve_crossings(const Curve& c, std::int64_t sy, Tie t) {
-  return curve_crossings_impl(c, sy, t, true);
+  std::vector<Crossing> out;
+  curve_crossings_into(c, sy, t, true, out);
+  return out;
 }
 
 // rule: PATH.CURVE.SAMPLE, PATH.SAMPLE.TIE
 std::vector<Crossing> curve_crossings_exact(const Curve& c, std::int64_t sy, Tie t) {
-  return curve_crossings_impl(c, sy, t, false);
+  std::vector<Crossing> out;
+  curve_crossings_into(c, sy, t, false, out);
+  return out;
 }
 
-std::vector<Crossing> curve_crossings_impl(const Curve& c, std::int64_t sy, Tie t, bool fast) {
-  std::vector<Crossing> out;
+void curve_crossings_into(const Curve& c, std::int64_t sy, Tie t, bool fast,
+                          std::vector<Crossing>& out) {
+  out.clear(); // the integer paths count what they found in out
   const int n = c.degree;
   std::array<std::int64_t, 4> xs{}, ys{};
   std::int64_t ymin = c.p[0].y, ymax = c.p[0].y;
@@ -884,20 +889,20 @@ std::vector<Crossing> curve_crossings_impl(const Curve& c, std::int64_t sy, Tie 
   }
   // The curve lies in the convex hull of its control points.
   if (sy < ymin || sy > ymax)
-    return out;
+    return;
   {
     Cubic gi, xi;
     gi.c = formula::curve_power_coefficients(ys, n == 3);
     gi.c[0] -= sy;
     xi.c = formula::curve_power_coefficients(xs, n == 3);
     if (fast && n == 2 && rational_quadratic_crossings(gi, xi, t, out))
-      return out;
+      return;
     out.clear();
     if (fast && n == 3 && cubic_end_crossings(gi, xi, t, out))
-      return out;
+      return;
     out.clear();
     if (fast && fast_curve_crossings(gi, xi, out))
-      return out;
+      return;
     out.clear();
   }
   Poly g = power_basis(ys, n);
@@ -906,7 +911,7 @@ std::vector<Crossing> curve_crossings_impl(const Curve& c, std::int64_t sy, Tie 
   g[0] -= sy;
   trim(g);
   if (degree(g) < 1)
-    return out; // y constant: on the row (never crossed, PATH.DEGENERATE) or off it
+    return; // y constant: on the row (never crossed, PATH.DEGENERATE) or off it
   const Poly x = power_basis(xs, n);
   const int hy = t.y_down ? 1 : -1;
   std::vector<Root> roots = roots_in_unit_interval(g);
@@ -942,7 +947,6 @@ std::vector<Crossing> curve_crossings_impl(const Curve& c, std::int64_t sy, Tie 
     if (dir != 0)
       out.push_back(Crossing{threshold_at(x, r, t), dir});
   }
-  return out;
 }
 
 } // namespace rastrules::path::detail

@@ -61,7 +61,9 @@ struct Crossing {
 // The same by the rational path alone (no integer fast path): curve_crossings must equal it,
 // which tests/path checks. fast = false is this; curve_crossings is fast = true.
 [[nodiscard]] std::vector<Crossing> curve_crossings_exact(const Curve& c, std::int64_t sy, Tie t);
-[[nodiscard]] std::vector<Crossing> curve_crossings_impl(const Curve& c, std::int64_t sy, Tie t,
-                                                         bool fast);
+// Either, into out (cleared first; no allocation once out has room, so the row walk reuses one
+// vector); fast chooses whether the integer paths are tried first.
+void curve_crossings_into(const Curve& c, std::int64_t sy, Tie t, bool fast,
+                          std::vector<Crossing>& out);
 
 } // namespace rastrules::path::detail
