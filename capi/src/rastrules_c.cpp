@@ -190,42 +190,13 @@ void index_values(rr_render& r) {
 }
 
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.INPUT.LIMITS
-// A scene without pipeline state, as `rastrules render` streams it: the work limit before any
-// primitive is drawn, then each primitive's fragments, at most max_fragments in all (a
-// primitive collected before it is emitted holds at most 2 * max_fragments entries).
+// A scene without pipeline state, as `rastrules render` streams it (stream_within_limits).
 rr_status render_window(const rastrules::PreparedScene& scene, std::uint64_t max_fragments,
                         std::uint64_t max_work, rr_render& r) {
-  if (const auto p = rastrules::first_primitive_over_work(scene, max_work)) {
-    return fail(RR_ERROR_LIMIT, "render: primitives[" + std::to_string(*p) + "] " +
-                                    rastrules::work_limit_problem(max_work) +
-                                    std::string(kWorkHint));
-  }
-  struct TooMany {};
-  const auto too_many = [&] {
-    return fail(RR_ERROR_LIMIT, "render: more than " + std::to_string(max_fragments) +
-                                    " fragments (limit SCENE.INPUT.LIMITS)" +
-                                    std::string(kFragmentHint));
-  };
-  try {
-    for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
-      const bool whole = rastrules::for_each_fragment_bounded(
-          scene, p, 2 * max_fragments, [&](const rastrules::Fragment& f) {
-            if (r.fragments.size() >= max_fragments)
-              throw TooMany{};
-            r.fragments.push_back(f);
-          });
-      if (!whole) {
-        return fail(RR_ERROR_LIMIT,
-                    "render: primitives[" + std::to_string(p) + "] touches more than " +
-                        std::to_string(2 * max_fragments) +
-                        " pixels or fragments that must be held to be sorted (limit "
-                        "SCENE.INPUT.LIMITS, 2 x max_fragments)" +
-                        std::string(kFragmentHint));
-      }
-    }
-  } catch (const TooMany&) {
-    return too_many();
-  }
+  if (const auto e = rastrules::stream_within_limits(
+          scene, max_fragments, max_work,
+          [&](const rastrules::Fragment& f) { r.fragments.push_back(f); }))
+    return fail(RR_ERROR_LIMIT, "render: " + e->message + std::string(hint_of(*e)));
   return RR_OK;
 }
 

@@ -755,6 +755,38 @@ std::uint64_t primitive_work(const PreparedScene& scene, std::size_t p) {
   return work;
 }
 
+// rule: SCENE.INPUT.LIMITS, SCENE.OUTPUT.FRAGMENTS
+std::optional<SceneError> stream_within_limits(const PreparedScene& scene,
+                                               std::uint64_t max_fragments, std::uint64_t max_work,
+                                               const std::function<void(const Fragment&)>& emit) {
+  const auto prim = [](std::size_t p) { return "primitives[" + std::to_string(p) + "] "; };
+  if (const auto p = first_primitive_over_work(scene, max_work))
+    return SceneError{"", prim(*p) + work_limit_problem(max_work), SceneError::Kind::kWorkLimit};
+  struct TooManyFragments {};
+  std::uint64_t count = 0;
+  const auto counted = [&](const Fragment& f) {
+    if (++count > max_fragments)
+      throw TooManyFragments{};
+    emit(f);
+  };
+  try {
+    for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+      if (!for_each_fragment_bounded(scene, p, 2 * max_fragments, counted)) {
+        return SceneError{"",
+                          prim(p) + "touches more than " + std::to_string(2 * max_fragments) +
+                              " pixels or fragments that must be held to be sorted (limit "
+                              "SCENE.INPUT.LIMITS, 2 x max_fragments)",
+                          SceneError::Kind::kFragmentLimit};
+      }
+    }
+  } catch (const TooManyFragments&) {
+    return SceneError{
+        "", "more than " + std::to_string(max_fragments) + " fragments (limit SCENE.INPUT.LIMITS)",
+        SceneError::Kind::kFragmentLimit};
+  }
+  return std::nullopt;
+}
+
 // rule: SCENE.INPUT.LIMITS
 std::optional<std::size_t> first_primitive_over_work(const PreparedScene& scene,
                                                      std::uint64_t max_work) {

@@ -112,37 +112,14 @@ void stream(const Scene& scene, const Limits& limits,
   auto prepared = prepare(scene);
   if (auto* e = std::get_if<SceneError>(&prepared))
     raise(*e, "scene");
-  const PreparedScene& s = std::get<PreparedScene>(prepared);
-  if (const auto p = first_primitive_over_work(s, limits.max_work)) {
-    raise_limit("primitives[" + std::to_string(*p) + "] " + work_limit_problem(limits.max_work),
-                SceneError::Kind::kWorkLimit);
-  }
-  struct TooManyFragments {};
-  std::uint64_t count = 0;
-  const auto counted = [&](const Fragment& f) {
-    if (++count > limits.max_fragments)
-      throw TooManyFragments{};
-    emit(f);
-  };
-  std::optional<std::size_t> held_too_many;
-  try {
+  std::optional<SceneError> limit;
+  {
     py::gil_scoped_release release;
-    for (std::size_t p = 0; p < s.primitives.size() && !held_too_many; ++p) {
-      if (!for_each_fragment_bounded(s, p, 2 * limits.max_fragments, counted))
-        held_too_many = p;
-    }
-  } catch (const TooManyFragments&) {
-    raise_limit("more than " + std::to_string(limits.max_fragments) +
-                    " fragments (limit SCENE.INPUT.LIMITS)",
-                SceneError::Kind::kFragmentLimit);
+    limit = stream_within_limits(std::get<PreparedScene>(prepared), limits.max_fragments,
+                                 limits.max_work, emit);
   }
-  if (held_too_many) {
-    raise_limit("primitives[" + std::to_string(*held_too_many) + "] touches more than " +
-                    std::to_string(2 * limits.max_fragments) +
-                    " pixels or fragments that must be held to be sorted (limit "
-                    "SCENE.INPUT.LIMITS, 2 x max_fragments)",
-                SceneError::Kind::kFragmentLimit);
-  }
+  if (limit)
+    raise_limit(limit->message, limit->kind);
 }
 
 // The fragment list exactly as `rastrules render SCENE --fragments -` writes it, by the same

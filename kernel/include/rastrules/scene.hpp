@@ -379,6 +379,19 @@ inline constexpr std::uint64_t kPathAreaPixelWork = 512;
 // rule: SCENE.INPUT.LIMITS
 [[nodiscard]] std::string work_limit_problem(std::uint64_t max_work);
 
+// Streams a prepared scene's fragments as `rastrules render` does on one thread: the work limit
+// checked before any primitive is drawn, then each primitive's fragments in output order
+// (for_each_fragment_bounded, a primitive held to be sorted at most 2 * max_fragments entries),
+// at most max_fragments in all (emit is not called for the one beyond). Returns the first
+// limit passed, as a SceneError of kind kWorkLimit or kFragmentLimit whose field is empty and
+// whose message names the primitive ("primitives[3] brings the work to ...", "more than N
+// fragments (limit SCENE.INPUT.LIMITS)", "primitives[3] touches more than ..."), or nullopt.
+// The C API and the Python module draw window-space scenes with it.
+// rule: SCENE.INPUT.LIMITS, SCENE.OUTPUT.FRAGMENTS
+[[nodiscard]] std::optional<SceneError>
+stream_within_limits(const PreparedScene& scene, std::uint64_t max_fragments,
+                     std::uint64_t max_work, const std::function<void(const Fragment&)>& emit);
+
 // Returns the fragments of a prepared scene sorted by (prim, y, x, seg, sample), only inside the
 // target.
 // rule: SCENE.OUTPUT.FRAGMENTS, RASTER.TARGET.CLIP
