@@ -4,8 +4,8 @@
 It draws single-sample scenes of triangles: vertices snapped to 16.8 fixed point (round half to
 even), one edge function per edge evaluated at each pixel centre, the D3D top-left rule for
 samples exactly on an edge (spec/rules/: TRI.EDGE.FUNCTION, TRI.FILL.TOP_LEFT). Everything else
-(points, lines, multisampling, culling, other fill rules, pipeline state) it leaves to the
-reference by returning None.
+it declares it does not draw (CAPABILITIES below: campaigns skip those scenes); the rest of what
+it does not handle (culling) it leaves to the reference by returning None.
 
 The planted bug: a sample exactly on an edge is always covered (no tie rule), so pixels on the
 shared edge of two triangles are drawn twice and right and bottom edges draw one pixel too many.
@@ -27,6 +27,18 @@ FIXED = os.environ.get("RASTRULES_EXAMPLE_FIXED") == "1"
 def snap(v):
     """16.8 fixed point, round half to even (Python's round on an exact binary value)."""
     return round(float(v) * 256)
+
+
+# What it draws (spec/driver.md, DRIVER.EXTERNAL.CAPABILITIES): campaigns send nothing else.
+CAPABILITIES = {
+    "primitives": ["triangle"],
+    "sample_counts": [1],
+    "sample_patterns": ["standard"],
+    "fill_conventions": ["top-left"],
+    "sample_mask": False,
+    "sample_shading": False,
+    "pipeline": False,
+}
 
 
 def supported(scene):
@@ -82,4 +94,4 @@ def rasterize(scene):
 
 
 if __name__ == "__main__":
-    rastrules.driver.main(rasterize)
+    rastrules.driver.main(rasterize, CAPABILITIES)

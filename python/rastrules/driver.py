@@ -17,13 +17,16 @@ compare it with the reference:
     $ rastrules fuzz --driver "external:python3 my_rasterizer.py" --cases 200
 
 Per draw the protocol runs the program once: the scene arrives on standard input, the fragment
-list goes to standard output, exit status 0. Returning None from rasterize draws that scene with
-the reference instead (scenes the rasterizer does not support: their fragments then always
-agree, so a campaign compares only what it draws). An exception is printed on standard error
+list goes to standard output, exit status 0. main(rasterize, capabilities={...}) declares what
+the rasterizer draws (DRIVER.EXTERNAL.CAPABILITIES: primitive types, line modes, sample counts,
+fill conventions, pipeline state...): campaigns then send only such scenes and count the rest as
+skipped. Returning None from rasterize draws that scene with the reference instead (for scenes
+within the declaration it still cannot draw: their fragments always agree). An exception is printed on standard error
 and the program exits with status 1: rastrules reports a driver failure quoting it.
 """
 
 import json
+import os
 import sys
 import traceback
 
@@ -86,6 +89,22 @@ def serve(rasterize, stdin=None, stdout=None):
         return 1
 
 
-def main(rasterize):
-    """serve() on the process's standard input and output, then exit with its status."""
+def capabilities_reply(capabilities):
+    """The reply to the capabilities query (spec/driver.md, DRIVER.EXTERNAL.CAPABILITIES) for a
+    dict such as {"primitives": ["triangle"], "sample_counts": [1]}: absent keys restrict
+    nothing; rastrules checks the names when it opens the driver."""
+    return json.dumps({"capabilities": dict(capabilities)}) + "\n"
+
+
+def main(rasterize, capabilities=None):
+    """serve() on the process's standard input and output, then exit with its status. With
+    capabilities (a dict of DRIVER.EXTERNAL.CAPABILITIES), a run with RASTRULES_QUERY set to
+    "capabilities" answers the query instead: campaigns then generate only scenes the driver
+    declares and count the rest as skipped. Without it the query is not answered (exit 1) and
+    the driver is given every scene."""
+    if os.environ.get("RASTRULES_QUERY") == "capabilities":
+        if capabilities is None:
+            sys.exit(1)
+        sys.stdout.write(capabilities_reply(capabilities))
+        sys.exit(0)
     sys.exit(serve(rasterize))

@@ -276,6 +276,22 @@ def test_example_rasterizer_tie_bug_is_found_and_the_fixed_one_agrees(tmp_path):
         [CLI, "fuzz", "--driver", f"external:{sys.executable} {EXAMPLE}", "--cases", "6",
          "--seed", "3", "--no-progress"], capture_output=True, text=True, env=env, check=False)
     assert campaign.returncode == 0, campaign.stdout + campaign.stderr
+    assert "capabilities declared" in campaign.stdout, campaign.stdout
+
+
+def test_the_example_answers_the_capabilities_query():
+    # rule: DRIVER.EXTERNAL.CAPABILITIES
+    env = dict(os.environ, RASTRULES_QUERY="capabilities")
+    reply = subprocess.run([sys.executable, str(EXAMPLE)], input="", capture_output=True,
+                           text=True, env=env, check=False)
+    assert reply.returncode == 0, reply.stderr
+    caps = json.loads(reply.stdout)["capabilities"]
+    assert caps["primitives"] == ["triangle"] and caps["sample_counts"] == [1]
+    # A driver without a declaration does not answer: rastrules gives it every scene.
+    silent = subprocess.run([sys.executable, "-c",
+                             "import rastrules.driver; rastrules.driver.main(lambda s: None)"],
+                            input="", capture_output=True, text=True, env=env, check=False)
+    assert silent.returncode == 1 and silent.stdout == ""
 
 
 def test_the_docstring_example_runs():

@@ -353,3 +353,116 @@ TEST(ExternalDriverRegression, BackgroundChildrenEndWithTheDriver) {
 }
 
 } // namespace rastrules::driver
+
+namespace rastrules::driver {
+namespace {
+
+// rule: DRIVER.EXTERNAL.CAPABILITIES
+TEST(ExternalCapabilities, AReplyIsReadStrictlyAndAbsentKeysAllowEverything) {
+  const auto all = parse_capabilities(R"({"capabilities": {}})");
+  ASSERT_TRUE(std::holds_alternative<Capabilities>(all)) << std::get<std::string>(all);
+  Scene s = small_scene();
+  EXPECT_EQ(undeclared(std::get<Capabilities>(all), s), "");
+  const auto some = parse_capabilities(
+      R"({"capabilities": {"primitives": ["triangle"], "sample_counts": [1],
+          "fill_conventions": ["top-left"], "sample_patterns": ["standard"], "pipeline": false,
+          "sample_mask": false, "sample_shading": false, "antialiased_lines": false,
+          "line_modes": ["d3d"], "max_target_side": 16, "subpixel_bits": 8}})");
+  ASSERT_TRUE(std::holds_alternative<Capabilities>(some)) << std::get<std::string>(some);
+  const Capabilities& c = std::get<Capabilities>(some);
+  EXPECT_EQ(undeclared(c, s), "");
+  Scene wide = s;
+  wide.width = 17;
+  EXPECT_NE(undeclared(c, wide).find("larger than its max_target_side 16"), std::string::npos);
+  Scene ms = s;
+  set_sample_pattern(ms, standard_pattern(4));
+  EXPECT_EQ(undeclared(c, ms), "4 samples not declared by the driver");
+  Scene line = s;
+  Primitive seg;
+  seg.type = PrimitiveType::kLine;
+  seg.v = {FloatPoint{0, 0}, FloatPoint{3, 1}};
+  line.primitives.push_back(seg);
+  EXPECT_EQ(undeclared(c, line), "primitive type 'line' not declared by the driver");
+  Scene tr = s;
+  tr.conventions.fill = FillConvention::kTopRight;
+  EXPECT_EQ(undeclared(c, tr), "fill convention 'top-right' not declared by the driver");
+  // Bad replies name the key and the problem.
+  const std::pair<const char*, const char*> bad[] = {
+      {R"({"capabilities": {"primitives": ["hexagon"]}})", "primitives: unknown name \"hexagon\""},
+      {R"({"capabilities": {"primitives": []}})", "primitives: expected a non-empty array"},
+      {R"({"capabilities": {"sample_counts": [3]}})", "sample_counts: 3 is not one of"},
+      {R"({"capabilities": {"pipeline": 1}})", "pipeline: expected true or false"},
+      {R"({"capabilities": {"colour": true}})", "unknown key \"colour\""},
+      {R"({"capabilities": {}, "x": 1})", "expected {\"capabilities\": {...}} and nothing else"},
+      {R"({"capabilities": {"max_target_side": 0}})", "max_target_side: expected an integer"},
+      {R"({"capabilities": )", "not JSON"},
+  };
+  for (const auto& [text, want] : bad) {
+    const auto r = parse_capabilities(text);
+    ASSERT_TRUE(std::holds_alternative<std::string>(r)) << text;
+    EXPECT_NE(std::get<std::string>(r).find(want), std::string::npos)
+        << text << " -> " << std::get<std::string>(r);
+  }
+}
+
+// A driver that answers the query with `reply` and draws with the reference otherwise.
+std::string replying_driver(const TempDir& dir, const std::string& name, const std::string& reply) {
+  return dir.script(name, "if [ \"$RASTRULES_QUERY\" = capabilities ]; then echo '" + reply +
+                              "'; exit 0; fi\nexec " + kRender);
+}
+
+// rule: DRIVER.EXTERNAL.CAPABILITIES
+TEST(ExternalCapabilities, ACampaignDrawsOnlyWhatTheDriverDeclaresAndCountsTheRest) {
+  TempDir dir;
+  std::string err;
+  auto d = open_driver("external:" + replying_driver(dir, "tri.sh",
+                                                     R"({"capabilities": {"primitives": )"
+                                                     R"(["triangle"], "sample_counts": [1]}})"),
+                       &err);
+  ASSERT_NE(d, nullptr) << err;
+  EXPECT_EQ(d->info().capabilities, "declared");
+  EXPECT_TRUE(d->info().triangles);
+  EXPECT_FALSE(d->info().points);
+  EXPECT_FALSE(d->info().lines_d3d || d->info().lines_bresenham || d->info().lines_rectangular);
+  EXPECT_EQ(d->info().sample_counts, std::vector<std::uint32_t>{1});
+  fuzzer::Settings s;
+  s.driver_name = "external";
+  s.cases = 12;
+  s.seed = 5;
+  const fuzzer::Summary sum = fuzzer::run_fuzz(*d, s);
+  EXPECT_TRUE(sum.error.empty()) << sum.error; // no case asked for what it cannot draw
+  EXPECT_EQ(sum.cases, 12u);
+  EXPECT_EQ(sum.mismatches, 0u);
+  // A driver that declares no triangle gets no triangle family: with nothing else declared,
+  // every case is skipped rather than failed.
+  auto pts = open_driver("external:" + replying_driver(dir, "none.sh",
+                                                       R"({"capabilities": {"primitives": )"
+                                                       R"(["path"]}})"),
+                         &err);
+  ASSERT_NE(pts, nullptr) << err;
+  s.cases = 4;
+  const fuzzer::Summary none = fuzzer::run_fuzz(*pts, s);
+  EXPECT_TRUE(none.error.empty()) << none.error;
+  EXPECT_EQ(none.skipped, 4u);
+}
+
+// rule: DRIVER.EXTERNAL.CAPABILITIES
+TEST(ExternalCapabilities, NoReplyDeclaresNothingAndABadReplyIsAnOpenError) {
+  TempDir dir;
+  std::string err;
+  // rastrules render itself does not answer (its standard input is empty): it draws everything.
+  auto plain = open_driver("external:" + kRender, &err);
+  ASSERT_NE(plain, nullptr) << err;
+  EXPECT_EQ(plain->info().capabilities.rfind("none declared", 0), 0u) << plain->info().capabilities;
+  EXPECT_TRUE(plain->info().points);
+  EXPECT_EQ(plain->unsupported(small_scene()), "");
+  err.clear();
+  auto bad = open_driver(
+      "external:" + replying_driver(dir, "bad.sh", R"({"capabilities": {"lines": true}})"), &err);
+  EXPECT_EQ(bad, nullptr);
+  EXPECT_NE(err.find("capabilities: unknown key \"lines\""), std::string::npos) << err;
+  EXPECT_EQ(err.find('\n'), std::string::npos) << err;
+}
+
+} // namespace
+} // namespace rastrules::driver

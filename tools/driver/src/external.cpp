@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cerrno>
 #include <charconv>
 #include <chrono>
@@ -82,8 +83,9 @@ std::optional<int> wait_and_end_group(pid_t pid, std::chrono::steady_clock::time
 // rule: DRIVER.EXTERNAL.PROTOCOL
 class DriverProcess {
 public:
+  // extra_env: one more "NAME=VALUE" for the process's environment (the capabilities query's).
   DriverProcess(const std::vector<std::string>& argv, const std::string& input,
-                const ExternalOptions& options)
+                const ExternalOptions& options, const char* extra_env = nullptr)
       : input_(input), options_(options), deadline_(std::chrono::steady_clock::now() +
                                                     std::chrono::milliseconds(options.timeout_ms)) {
     int in_pipe[2] = {-1, -1}, out_pipe[2] = {-1, -1}, err_pipe[2] = {-1, -1};
@@ -113,7 +115,13 @@ public:
     for (const std::string& a : argv)
       args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
-    const int rc = ::posix_spawnp(&pid_, args[0], &actions, &attr, args.data(), environ);
+    std::vector<char*> env;
+    for (char** e = environ; *e != nullptr; ++e)
+      env.push_back(*e);
+    if (extra_env != nullptr)
+      env.push_back(const_cast<char*>(extra_env));
+    env.push_back(nullptr);
+    const int rc = ::posix_spawnp(&pid_, args[0], &actions, &attr, args.data(), env.data());
     posix_spawn_file_actions_destroy(&actions);
     posix_spawnattr_destroy(&attr);
     close_fd(in_pipe[0]);
@@ -287,9 +295,13 @@ std::string one_line(std::string s) {
 // rule: DRIVER.EXTERNAL.PROTOCOL
 class ExternalDriver final : public Driver {
 public:
-  ExternalDriver(std::string command, ExternalOptions options)
+  ExternalDriver(std::string command, ExternalOptions options, std::optional<Capabilities> declared,
+                 std::string declared_note)
       : argv_(external_argv(command)), options_(options),
-        info_(detail::full_capabilities("external", command, -1)) {
+        info_(detail::full_capabilities("external", command, -1)), caps_(declared) {
+    info_.capabilities = std::move(declared_note);
+    if (caps_)
+      apply_capabilities(*caps_, info_);
     // A process that exits without reading its input must not kill us with SIGPIPE.
     struct sigaction ignore {};
     ignore.sa_handler = SIG_IGN;
@@ -299,12 +311,13 @@ public:
 
   [[nodiscard]] const DriverInfo& info() const override { return info_; }
   // rule: SCENE.PRIM.PATH
+  // rule: DRIVER.EXTERNAL.CAPABILITIES
   [[nodiscard]] std::string unsupported(const Scene& scene) const override {
     for (const Primitive& p : scene.primitives) {
       if (p.type == PrimitiveType::kPath)
         return "paths not supported (the external protocol draws triangles, points and lines)";
     }
-    return {};
+    return caps_ ? undeclared(*caps_, scene) : std::string();
   }
 
   [[nodiscard]] DrawResult draw(const Scene& scene) override {
@@ -348,7 +361,43 @@ private:
   std::vector<std::string> argv_;
   ExternalOptions options_;
   DriverInfo info_;
+  std::optional<Capabilities> caps_; // none: the driver declared nothing
 };
+
+// The capabilities query (DRIVER.EXTERNAL.CAPABILITIES): runs the command once with
+// RASTRULES_QUERY=capabilities in its environment and nothing on its standard input. A reply
+// {"capabilities": {...}} (exit status 0) is parsed strictly; anything else declares nothing.
+// Returns the capabilities (or nullopt) and a note for reports, or an error for a malformed
+// reply.
+struct QueryResult {
+  std::optional<Capabilities> caps;
+  std::string note;
+  std::string error;
+};
+
+// rule: DRIVER.EXTERNAL.CAPABILITIES
+QueryResult query_capabilities(const std::vector<std::string>& argv, ExternalOptions options) {
+  static const std::string env =
+      std::string(kCapabilitiesQueryVariable) + "=" + kCapabilitiesQueryValue;
+  options.max_output_bytes = std::min<std::size_t>(options.max_output_bytes, 1 << 16);
+  DriverProcess process(argv, std::string(), options, env.c_str());
+  if (!process.spawn_error().empty())
+    return {std::nullopt, "none declared (" + process.spawn_error() + ")", {}};
+  std::string out;
+  for (std::string_view piece = process.next_output(); !piece.empty();
+       piece = process.next_output())
+    out += piece;
+  const ProcessResult r = process.finish();
+  if (r.timed_out || r.output_overflow || r.signal != 0 || !r.exited || r.exit_status != 0)
+    return {std::nullopt, "none declared (the query did not exit with status 0)", {}};
+  const std::size_t first = out.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos || out.compare(first, 15, "{\"capabilities\"") != 0)
+    return {std::nullopt, "none declared (no {\"capabilities\": ...} reply)", {}};
+  auto parsed = parse_capabilities(out);
+  if (auto* e = std::get_if<std::string>(&parsed))
+    return {std::nullopt, {}, std::move(*e)};
+  return {std::get<Capabilities>(parsed), "declared", {}};
+}
 
 } // namespace
 
@@ -706,7 +755,13 @@ std::unique_ptr<Driver> open_external_driver(std::string_view command, std::stri
       *error = "external driver: empty command (use external:COMMAND)";
     return nullptr;
   }
-  return std::make_unique<ExternalDriver>(std::string(command), options);
+  QueryResult q = query_capabilities(external_argv(command), options);
+  if (!q.error.empty()) {
+    if (error != nullptr)
+      *error = "external driver \"" + std::string(command) + "\": " + q.error;
+    return nullptr;
+  }
+  return std::make_unique<ExternalDriver>(std::string(command), options, q.caps, std::move(q.note));
 }
 
 namespace detail {

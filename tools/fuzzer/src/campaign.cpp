@@ -258,6 +258,8 @@ void print_summary(std::FILE* out, const Settings& settings, const driver::Drive
                    const Summary& s) {
   std::fprintf(out, "driver      %s (%s)\n", settings.driver_name.c_str(),
                driver.info().description.c_str());
+  if (!driver.info().capabilities.empty()) // rule: DRIVER.EXTERNAL.CAPABILITIES
+    std::fprintf(out, "capabilities %s\n", driver.info().capabilities.c_str());
   std::fprintf(out, "profile     %s, mode %s, seed %llu\n",
                std::string(to_string(settings.profile)).c_str(),
                std::string(to_string(settings.mode)).c_str(),

@@ -187,11 +187,15 @@ void lines(Rng& rng, Grid g, Scene& s) {
 std::optional<Case> generate_case(std::uint64_t seed, std::uint64_t index, Profile profile,
                                   const driver::Driver& driver) {
   const driver::DriverInfo& info = driver.info();
-  std::vector<std::string> families = {"random", "shared-edge", "fan", "grid", "sliver"};
+  std::vector<std::string> families;
+  if (info.triangles) // rule: DRIVER.EXTERNAL.CAPABILITIES (a driver may declare no triangles)
+    families = {"random", "shared-edge", "fan", "grid", "sliver"};
   if (info.points)
     families.emplace_back("points");
   if (profile == Profile::kD3D11 ? info.lines_d3d : info.lines_bresenham)
     families.emplace_back("lines");
+  if (families.empty())
+    return std::nullopt;
   const bool msaa4 = std::find(info.sample_counts.begin(), info.sample_counts.end(), 4u) !=
                      info.sample_counts.end();
   for (std::uint64_t attempt = 0; attempt < 16; ++attempt) {

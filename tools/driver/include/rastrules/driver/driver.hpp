@@ -23,6 +23,7 @@ struct DriverInfo {
   std::string description; // device name and version, or the command line
   int subpixel_bits = -1;  // as the driver reports it (-1: unknown)
   std::vector<std::uint32_t> sample_counts; // supported rasterization sample counts
+  bool triangles = true;
   bool points = false;
   bool lines_bresenham = false;   // line_mode "vulkan-bresenham"
   bool lines_rectangular = false; // line_mode "quad-narrow" (Vulkan rectangular, 1.0 wide)
@@ -30,6 +31,9 @@ struct DriverInfo {
   bool sample_mask = false;
   bool sample_shading = false;
   std::int32_t max_target_side = 0; // largest width or height it accepts
+  // How an external driver's capabilities were learnt (DRIVER.EXTERNAL.CAPABILITIES):
+  // "declared", or "none declared (WHY)"; empty for the built-in drivers.
+  std::string capabilities;
 };
 
 // A driver failure (not a difference): could not start, device lost, unsupported scene, ...

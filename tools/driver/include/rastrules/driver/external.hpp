@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -67,8 +68,48 @@ parse_external_fragments(std::string_view text, const Scene& scene,
 read_external_fragments(const std::function<std::string_view()>& next, const Scene& scene,
                         std::uint64_t max_fragments = kDefaultExternalMaxFragments);
 
-// Opens "external:COMMAND" given COMMAND. On failure (empty command) returns nullptr and sets
-// *error.
+// What an external driver declares it can draw, in its reply to the capabilities query
+// (DRIVER.EXTERNAL.CAPABILITIES). Every key of the reply is optional; an absent key allows
+// everything it would restrict, so a driver that declares nothing draws every scene.
+struct Capabilities {
+  std::uint32_t primitives = ~0u;    // bit PrimitiveType: the types it draws
+  std::uint32_t line_modes = ~0u;    // bit LineMode (SCENE.LINE_MODE) of its line primitives
+  std::uint32_t fill = ~0u;          // bit FillConvention (TRI.FILL.CONVENTION)
+  std::uint32_t patterns = ~0u;      // bit PatternKind (MSAA.PATTERN.*)
+  std::uint32_t sample_counts = ~0u; // bit log2(count): 1, 2, 4, 8, 16
+  bool antialiased_lines = true;     // lines with "aa": true
+  bool sample_mask = true;           // a sample mask that clears a sample
+  bool sample_shading = true;        // sample-frequency shading
+  bool pipeline = true;              // scenes with pipeline state (SCENE.PIPELINE)
+  std::int32_t max_target_side = std::numeric_limits<std::int32_t>::max();
+  int subpixel_bits = -1; // as declared (-1: not said); reported, not used to decide
+};
+
+// The name of the environment variable that turns a run of the driver into the capabilities
+// query, and its value.
+inline constexpr const char* kCapabilitiesQueryVariable = "RASTRULES_QUERY";
+inline constexpr const char* kCapabilitiesQueryValue = "capabilities";
+
+// Parses the reply to the capabilities query: {"capabilities": {...}} with the keys of
+// DRIVER.EXTERNAL.CAPABILITIES. Returns the capabilities or one line naming the key and the
+// problem (an unknown key or name, a wrong type, an empty list).
+// rule: DRIVER.EXTERNAL.CAPABILITIES
+[[nodiscard]] std::variant<Capabilities, std::string> parse_capabilities(std::string_view text);
+
+// Returns an empty string when a driver with these capabilities can draw the scene, else the
+// first reason it cannot ("line_mode 'quad-wide' not declared", ...).
+// rule: DRIVER.EXTERNAL.CAPABILITIES
+[[nodiscard]] std::string undeclared(const Capabilities& caps, const Scene& scene);
+
+// Narrows a driver's info to its declaration: the primitive types, line modes, sample counts,
+// mask, shading and target side campaigns may generate (FUZZ.GENERATE reads info()).
+// rule: DRIVER.EXTERNAL.CAPABILITIES
+void apply_capabilities(const Capabilities& caps, DriverInfo& info);
+
+// Opens "external:COMMAND" given COMMAND, and runs the capabilities query once
+// (DRIVER.EXTERNAL.CAPABILITIES): a reply restricts what the driver is given (info() and
+// unsupported()); no reply (a non-zero exit, no "capabilities" object) declares nothing. On
+// failure (an empty command, a malformed reply) returns nullptr and sets *error.
 [[nodiscard]] std::unique_ptr<Driver>
 open_external_driver(std::string_view command, std::string* error,
                      ExternalOptions options = default_external_options());
