@@ -15,6 +15,7 @@
 
 #include "rastrules/bench/ladder.hpp"
 #include "rastrules/io/glyph.hpp"
+#include "rastrules/io/text.hpp"
 #include "rastrules/path.hpp"
 
 namespace rastrules::bench::paths {
@@ -29,22 +30,13 @@ constexpr Rgb kWhite{255, 255, 255};
 constexpr Rgb kInk{40, 40, 40};
 constexpr Rgb kGrid{215, 215, 215};
 
-// Text with its top-left corner at (x, y), the 5x7 font of the ladder's plot at `scale`.
+// Text with its top-left corner at (x, y) in io's 5x7 font, twice its size unless told.
 void text(Image& im, int x, int y, const std::string& s, Rgb c, int scale = 2) {
-  for (const char ch : s) {
-    if (const auto rows = bench::glyph(ch)) {
-      for (int r = 0; r < 7; ++r)
-        for (int col = 0; col < 5; ++col)
-          if (((*rows)[static_cast<std::size_t>(r)] >> (4 - col)) & 1U)
-            im.fill_rect(x + col * scale, y + r * scale, x + (col + 1) * scale, y + (r + 1) * scale,
-                         c);
-    }
-    x += 6 * scale;
-  }
+  io::draw_text(im, x, y, s, c, scale);
 }
 
 int text_width(const std::string& s, int scale = 2) {
-  return static_cast<int>(s.size()) * 6 * scale;
+  return io::text_width(s, scale);
 }
 
 // A point in pixels on FreeType's 26.6 grid (raw 16.8, a multiple of 4).

@@ -12,6 +12,7 @@
 
 #include "ladder_test_util.hpp"
 #include "rastrules/bench/ladder.hpp"
+#include "rastrules/io/text.hpp"
 
 namespace rb = rastrules::bench;
 
@@ -286,12 +287,12 @@ TEST(LadderPlot, OneLabelledPointPerRungOnLogAxes) {
   // Every character of every label and tick has a glyph.
   for (const rb::Rung rung : rb::all_rungs())
     for (const char c : rb::to_string(rung))
-      EXPECT_TRUE(rb::glyph(c).has_value()) << c;
+      EXPECT_TRUE(rastrules::io::glyph(c).has_value()) << c;
   for (const char c : std::string("0123456789e-.,()/%:"))
-    EXPECT_TRUE(rb::glyph(c).has_value()) << c;
-  EXPECT_FALSE(rb::glyph('\x01').has_value());
+    EXPECT_TRUE(rastrules::io::glyph(c).has_value()) << c;
+  EXPECT_FALSE(rastrules::io::glyph('\x01').has_value());
   // The digit 1 is a vertical stroke with a base: row 6 is ".###.".
-  EXPECT_EQ(rb::glyph('1')->at(6), 0b01110);
+  EXPECT_EQ(rastrules::io::glyph('1')->at(6), 0b01110);
   // The plot is not blank: count non-white pixels.
   std::size_t ink = 0;
   for (int y = 0; y < p.height; ++y)

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -40,10 +41,16 @@ TEST(CliFuzz, FindingsWriteReproducerPictureAndReportAndExitWith1) {
   EXPECT_EQ(f["seed"], 1);
   EXPECT_EQ(f["primitives_after"], 1);
   EXPECT_FALSE(f["missing"].empty() && f["extra"].empty());
-  // The picture: three panels of the shrunk target side by side.
+  // The picture: three panels of the shrunk target side by side (each magnified as much as
+  // fits, at most 96 times), titled above with the x coordinates, y coordinates at the left,
+  // the legend below: wider than the three panels and their gaps, taller than one panel.
   const auto png = read_png(f["picture"].get<std::string>());
   ASSERT_TRUE(png.has_value());
-  EXPECT_GT(png->width, 3 * png->height - 1);
+  const auto min = nlohmann::json::parse(read_file(f["shrunk_scene"].get<std::string>()));
+  const int w = min["target"]["width"], h = min["target"]["height"];
+  const int scale = std::min({(4096 - 27) / (3 * w), 4095 / h, 96});
+  EXPECT_GT(png->width, 3 * (w * scale + 1) + 2 * 12);
+  EXPECT_GT(png->height, h * scale + 1);
   // The shrunk scene reproduces the finding with `check`, and the reference agrees with it.
   const std::string shrunk = f["shrunk_scene"].get<std::string>();
   const RunResult again = run_cli({"check", shrunk, "--driver", "imprecise:fill-bottom-right"});

@@ -12,116 +12,30 @@
 #include <vector>
 
 #include "rastrules/bench/ladder.hpp"
+#include "rastrules/io/text.hpp"
 
 namespace rastrules::bench {
 
 namespace {
 
-// Each glyph: 7 rows of 5 columns, '#' set.
-const std::map<char, std::array<const char*, 7>>& font() {
-  static const std::map<char, std::array<const char*, 7>> f = {
-      {'0', {".###.", "#...#", "#..##", "#.#.#", "##..#", "#...#", ".###."}},
-      {'1', {"..#..", ".##..", "..#..", "..#..", "..#..", "..#..", ".###."}},
-      {'2', {".###.", "#...#", "....#", "...#.", "..#..", ".#...", "#####"}},
-      {'3', {"####.", "....#", "....#", ".###.", "....#", "....#", "####."}},
-      {'4', {"...#.", "..##.", ".#.#.", "#..#.", "#####", "...#.", "...#."}},
-      {'5', {"#####", "#....", "####.", "....#", "....#", "#...#", ".###."}},
-      {'6', {"..##.", ".#...", "#....", "####.", "#...#", "#...#", ".###."}},
-      {'7', {"#####", "....#", "...#.", "..#..", ".#...", ".#...", ".#..."}},
-      {'8', {".###.", "#...#", "#...#", ".###.", "#...#", "#...#", ".###."}},
-      {'9', {".###.", "#...#", "#...#", ".####", "....#", "...#.", ".##.."}},
-      {'a', {".....", ".....", ".###.", "....#", ".####", "#...#", ".####"}},
-      {'b', {"#....", "#....", "####.", "#...#", "#...#", "#...#", "####."}},
-      {'c', {".....", ".....", ".###.", "#....", "#....", "#...#", ".###."}},
-      {'d', {"....#", "....#", ".####", "#...#", "#...#", "#...#", ".####"}},
-      {'e', {".....", ".....", ".###.", "#...#", "#####", "#....", ".###."}},
-      {'f', {"..##.", ".#..#", ".#...", "###..", ".#...", ".#...", ".#..."}},
-      {'g', {".....", ".####", "#...#", "#...#", ".####", "....#", ".###."}},
-      {'h', {"#....", "#....", "#.##.", "##..#", "#...#", "#...#", "#...#"}},
-      {'i', {"..#..", ".....", ".##..", "..#..", "..#..", "..#..", ".###."}},
-      {'j', {"...#.", ".....", "..##.", "...#.", "...#.", "#..#.", ".##.."}},
-      {'k', {"#....", "#....", "#..#.", "#.#..", "##...", "#.#..", "#..#."}},
-      {'l', {".##..", "..#..", "..#..", "..#..", "..#..", "..#..", ".###."}},
-      {'m', {".....", ".....", "##.#.", "#.#.#", "#.#.#", "#...#", "#...#"}},
-      {'n', {".....", ".....", "#.##.", "##..#", "#...#", "#...#", "#...#"}},
-      {'o', {".....", ".....", ".###.", "#...#", "#...#", "#...#", ".###."}},
-      {'p', {".....", ".....", "####.", "#...#", "####.", "#....", "#...."}},
-      {'q', {".....", ".....", ".####", "#...#", ".####", "....#", "....#"}},
-      {'r', {".....", ".....", "#.##.", "##..#", "#....", "#....", "#...."}},
-      {'s', {".....", ".....", ".####", "#....", ".###.", "....#", "####."}},
-      {'t', {".#...", ".#...", "###..", ".#...", ".#...", ".#..#", "..##."}},
-      {'u', {".....", ".....", "#...#", "#...#", "#...#", "#..##", ".##.#"}},
-      {'v', {".....", ".....", "#...#", "#...#", "#...#", ".#.#.", "..#.."}},
-      {'w', {".....", ".....", "#...#", "#...#", "#.#.#", "#.#.#", ".#.#."}},
-      {'x', {".....", ".....", "#...#", ".#.#.", "..#..", ".#.#.", "#...#"}},
-      {'y', {".....", ".....", "#...#", "#...#", ".####", "....#", ".###."}},
-      {'z', {".....", ".....", "#####", "...#.", "..#..", ".#...", "#####"}},
-      {'-', {".....", ".....", ".....", "#####", ".....", ".....", "....."}},
-      {'+', {".....", "..#..", "..#..", "#####", "..#..", "..#..", "....."}},
-      {'.', {".....", ".....", ".....", ".....", ".....", ".##..", ".##.."}},
-      {',', {".....", ".....", ".....", ".....", ".##..", "..#..", ".#..."}},
-      {':', {".....", ".##..", ".##..", ".....", ".##..", ".##..", "....."}},
-      {';', {".....", ".##..", ".##..", ".....", ".##..", "..#..", ".#..."}},
-      {'(', {"...#.", "..#..", ".#...", ".#...", ".#...", "..#..", "...#."}},
-      {')', {".#...", "..#..", "...#.", "...#.", "...#.", "..#..", ".#..."}},
-      {'/', {".....", "....#", "...#.", "..#..", ".#...", "#....", "....."}},
-      {'%', {"##...", "##..#", "...#.", "..#..", ".#...", "#..##", "...##"}},
-      {'=', {".....", ".....", "#####", ".....", "#####", ".....", "....."}},
-      {'<', {"...#.", "..#..", ".#...", "#....", ".#...", "..#..", "...#."}},
-      {'>', {".#...", "..#..", "...#.", "....#", "...#.", "..#..", ".#..."}},
-      {' ', {".....", ".....", ".....", ".....", ".....", ".....", "....."}},
-  };
-  return f;
-}
-
+// The plot's canvas: an io::Image (white) drawn with colours given as RGB arrays.
 struct Canvas {
-  Plot p;
-  Canvas(int w, int h) {
-    p.width = w;
-    p.height = h;
-    p.rgb.assign(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 3, 255);
-  }
-  void set(int x, int y, std::array<std::uint8_t, 3> c) {
-    if (x < 0 || y < 0 || x >= p.width || y >= p.height)
-      return;
-    const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(p.width) +
-                           static_cast<std::size_t>(x)) *
-                          3;
-    p.rgb[i] = c[0];
-    p.rgb[i + 1] = c[1];
-    p.rgb[i + 2] = c[2];
-  }
+  io::Image img;
+  Canvas(int w, int h) : img(w, h, io::Rgb{255, 255, 255}) {}
+  static io::Rgb rgb(std::array<std::uint8_t, 3> c) { return io::Rgb{c[0], c[1], c[2]}; }
   void rect(int x0, int y0, int x1, int y1, std::array<std::uint8_t, 3> c) {
-    for (int y = y0; y < y1; ++y)
-      for (int x = x0; x < x1; ++x)
-        set(x, y, c);
+    img.fill_rect(x0, y0, x1, y1, rgb(c));
   }
   // Text with its top-left corner at (x, y), glyphs drawn `scale` times their size.
   void text(int x, int y, const std::string& s, std::array<std::uint8_t, 3> c, int scale = 2) {
-    for (const char ch : s) {
-      const auto g = glyph(ch);
-      if (g) {
-        for (int row = 0; row < 7; ++row)
-          for (int col = 0; col < 5; ++col)
-            if (((*g)[static_cast<std::size_t>(row)] >> (4 - col)) & 1)
-              rect(x + col * scale, y + row * scale, x + (col + 1) * scale, y + (row + 1) * scale,
-                   c);
-      }
-      x += 6 * scale;
-    }
+    io::draw_text(img, x, y, s, rgb(c), scale);
   }
   // A one-pixel line (for labels' leaders).
   void line_to(int x0, int y0, int x1, int y1, std::array<std::uint8_t, 3> c) {
-    const int n = std::max(std::abs(x1 - x0), std::abs(y1 - y0));
-    for (int i = 0; i <= n; ++i) {
-      const double f = n == 0 ? 0.0 : static_cast<double>(i) / n;
-      set(x0 + static_cast<int>(std::lround(f * (x1 - x0))),
-          y0 + static_cast<int>(std::lround(f * (y1 - y0))), c);
-    }
+    img.line(x0, y0, x1, y1, rgb(c));
   }
-  static int text_width(const std::string& s, int scale = 2) {
-    return static_cast<int>(s.size()) * 6 * scale;
-  }
+  static int text_width(const std::string& s, int scale = 2) { return io::text_width(s, scale); }
+  [[nodiscard]] Plot plot() const { return Plot{img.width(), img.height(), img.rgb()}; }
 };
 
 std::string pow10_label(int e) {
@@ -131,24 +45,6 @@ std::string pow10_label(int e) {
 }
 
 } // namespace
-
-std::optional<std::array<std::uint8_t, 7>> glyph(char c) {
-  if (c >= 'A' && c <= 'Z')
-    c = static_cast<char>(c - 'A' + 'a');
-  const auto& f = font();
-  const auto it = f.find(c);
-  if (it == f.end())
-    return std::nullopt;
-  std::array<std::uint8_t, 7> rows{};
-  for (std::size_t r = 0; r < 7; ++r) {
-    std::uint8_t bits = 0;
-    for (int col = 0; col < 5; ++col)
-      if (it->second[r][col] == '#')
-        bits = static_cast<std::uint8_t>(bits | (1u << (4 - col)));
-    rows[r] = bits;
-  }
-  return rows;
-}
 
 std::array<std::uint8_t, 3> Plot::at(int x, int y) const {
   const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
@@ -265,7 +161,7 @@ Plot make_plot(const LadderReport& r) {
     cv.text(b.x0, b.y0, label, c);
     placed.push_back(b);
   }
-  return cv.p;
+  return cv.plot();
 }
 
 } // namespace rastrules::bench

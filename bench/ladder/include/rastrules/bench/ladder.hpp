@@ -277,8 +277,4 @@ struct Plot {
 };
 [[nodiscard]] Plot make_plot(const LadderReport& r);
 
-// The plot's bitmap font: 5x7 glyphs; returns the 7 rows (bit 4 = leftmost column) of c, or
-// nullopt when the font has no glyph for it.
-[[nodiscard]] std::optional<std::array<std::uint8_t, 7>> glyph(char c);
-
 } // namespace rastrules::bench
