@@ -51,6 +51,10 @@ TEST(CliFuzz, FindingsWriteReproducerPictureAndReportAndExitWith1) {
   const int scale = std::min({(4096 - 27) / (3 * w), 4095 / h, 96});
   EXPECT_GT(png->width, 3 * (w * scale + 1) + 2 * 12);
   EXPECT_GT(png->height, h * scale + 1);
+  // The campaign's page shows it (FUZZ.REPORT.HTML).
+  const std::string page = read_file(out / "index.html");
+  const std::string name = std::filesystem::path(f["picture"].get<std::string>()).filename();
+  EXPECT_NE(page.find("<img src=\"" + name + "\""), std::string::npos);
   // The shrunk scene reproduces the finding with `check`, and the reference agrees with it.
   const std::string shrunk = f["shrunk_scene"].get<std::string>();
   const RunResult again = run_cli({"check", shrunk, "--driver", "imprecise:fill-bottom-right"});

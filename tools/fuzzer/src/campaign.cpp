@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "rastrules/fuzzer/fuzzer.hpp"
+#include "rastrules/fuzzer/html_report.hpp"
 #include "rastrules/io/interrupt.hpp"
 #include "rastrules/io/output_file.hpp"
 #include "rastrules/io/scene_json.hpp"
@@ -170,6 +171,11 @@ public:
     std::string error;
     if (!write_text(s.report_path, j.dump(2) + "\n", &error)) {
       s.error = error;
+      return false;
+    }
+    // rule: FUZZ.REPORT.HTML
+    if (auto err = write_html_report(settings_, driver_.info().description, s)) {
+      s.error = *err;
       return false;
     }
     return true;

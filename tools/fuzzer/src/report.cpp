@@ -11,6 +11,7 @@
 #include <tuple>
 #include <variant>
 
+#include "legend.hpp"
 #include "rastrules/fuzzer/fuzzer.hpp"
 #include "rastrules/io/image.hpp"
 #include "rastrules/io/output_file.hpp"
@@ -123,35 +124,6 @@ int tick_step(int width, int scale) {
   }
 }
 
-// One line of the legend: a swatch (a filled square, or a dot on white) and its meaning.
-struct LegendLine {
-  io::Rgb colour;
-  bool dot;
-  std::string text;
-};
-
-std::vector<LegendLine> legend(const Scene& scene) {
-  const bool samples = scene.msaa.pattern.positions.size() > 1;
-  std::vector<LegendLine> l = {
-      {io::cover_colour(0), false, "pixel covered (in its primitive's colour)"},
-      {io::kOverlapMark, false, "pixel covered by more than one primitive (hatched)"},
-      {kMissingFill, false, "difference: covered by the reference only (missing)"},
-      {kExtraFill, false, "difference: covered by the driver only (extra)"}};
-  if (samples) {
-    l.push_back({kCoveredDot, true, "sample covered"});
-    l.push_back({kOpenDot, true, "sample not covered"});
-  } else {
-    l.push_back({kCoveredDot, true, "pixel centre covered"});
-  }
-  l.push_back(
-      {kMissingDot, true, samples ? "sample the driver misses" : "centre the driver misses"});
-  l.push_back({kExtraDot, true, samples ? "sample the driver adds" : "centre the driver adds"});
-  l.push_back({io::edge_colour(0), false,
-               "snapped edges and vertices (dashed grey: culled or degenerate)"});
-  l.push_back({kFrame, false, "pixel grid: x to the right, y down, pixel (0, 0) at the top left"});
-  return l;
-}
-
 // Lays the three panels out in a figure: a title and a subtitle above each, pixel x
 // coordinates above each panel and y coordinates left of the first, the legend below.
 // rule: FUZZ.REPORT
@@ -175,7 +147,7 @@ io::Image figure(const Scene& scene, const Comparison& c, int scale,
   const int y_step = tick_step(io::kGlyphHeight, scale);
   const int left = kMargin + y_label + 6;
   const int top = kMargin + kLine + 4 + io::kGlyphHeight + 6 + io::kGlyphHeight + 4;
-  const std::vector<LegendLine> lines = legend(scene);
+  const std::vector<LegendLine> lines = difference_legend(scene);
   int legend_w = 0;
   for (const LegendLine& l : lines)
     legend_w = std::max(legend_w, 22 + io::text_width(l.text, kTitle));
@@ -219,6 +191,29 @@ io::Image figure(const Scene& scene, const Comparison& c, int scale,
 }
 
 } // namespace
+
+// rule: FUZZ.REPORT
+std::vector<LegendLine> difference_legend(const Scene& scene) {
+  const bool samples = scene.msaa.pattern.positions.size() > 1;
+  std::vector<LegendLine> l = {
+      {io::cover_colour(0), false, "pixel covered (in its primitive's colour)"},
+      {io::kOverlapMark, false, "pixel covered by more than one primitive (hatched)"},
+      {kMissingFill, false, "difference: covered by the reference only (missing)"},
+      {kExtraFill, false, "difference: covered by the driver only (extra)"}};
+  if (samples) {
+    l.push_back({kCoveredDot, true, "sample covered"});
+    l.push_back({kOpenDot, true, "sample not covered"});
+  } else {
+    l.push_back({kCoveredDot, true, "pixel centre covered"});
+  }
+  l.push_back(
+      {kMissingDot, true, samples ? "sample the driver misses" : "centre the driver misses"});
+  l.push_back({kExtraDot, true, samples ? "sample the driver adds" : "centre the driver adds"});
+  l.push_back({io::edge_colour(0), false,
+               "snapped edges and vertices (dashed grey: culled or degenerate)"});
+  l.push_back({kFrame, false, "pixel grid: x to the right, y down, pixel (0, 0) at the top left"});
+  return l;
+}
 
 // rule: FUZZ.REPORT
 std::optional<std::string> write_difference_png(const std::string& path, const Scene& scene,
