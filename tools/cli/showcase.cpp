@@ -26,6 +26,7 @@
 #include "rastrules/io/image.hpp"
 #include "rastrules/io/picture.hpp"
 #include "rastrules/io/scene_json.hpp"
+#include "showcase_html.hpp"
 #include "showcase_scenes.hpp"
 
 namespace rastrules::cli {
@@ -109,6 +110,7 @@ int run_showcase(const Args& args) {
   int agree = 0;
   std::vector<std::string> notes;
   std::vector<std::string> checked_by_lines;
+  std::vector<ShowcaseEntry> entries;
   for (const ShowcaseScene& sc : scenes) {
     const Clock::time_point k0 = Clock::now();
     auto prepared = prepare(sc.scene);
@@ -157,9 +159,17 @@ int run_showcase(const Args& args) {
     }
     if (same)
       ++agree;
+    const int scale = io::default_picture_scale(ps.width, ps.height);
+    entries.push_back({sc.name, sc.description, ps.width, ps.height, sc.scene.primitives.size(),
+                       kernel.size(), scale, io::samples_visible(ps, scale),
+                       check::multisampled(sc.scene), same,
+                       checked_by.empty() ? "no primitive" : checked_by});
     std::printf("%-22s %6zu %9zu %10.3f %10.3f  %s\n", sc.name.c_str(), sc.scene.primitives.size(),
                 kernel.size(), kernel_ms, oracle_ms, same ? "yes" : "NO");
   }
+  // rule: FUZZ.REPORT.HTML
+  if (auto err = write_showcase_index(dir, entries))
+    return error(*err);
   for (const std::string& n : notes)
     std::printf("  %s\n", n.c_str());
   std::printf("oracles used:\n");

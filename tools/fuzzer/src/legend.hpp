@@ -7,17 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "rastrules/io/image.hpp"
+#include "rastrules/io/picture.hpp"
 #include "rastrules/scene.hpp"
 
 namespace rastrules::fuzzer {
 
 // One line of the legend: a swatch (a filled square, or a dot on white) and its meaning.
-struct LegendLine {
-  io::Rgb colour;
-  bool dot = false;
-  std::string text;
-};
+using LegendLine = io::LegendEntry;
 
 // The legend of the picture of a finding of `scene` (sample lines when it is multisampled).
 // rule: FUZZ.REPORT

@@ -385,6 +385,33 @@ void draw_vertices(Image& img, const PreparedPrimitive& prim, std::uint32_t p, i
 
 } // namespace
 
+std::vector<LegendEntry> picture_legend(bool samples, bool aa) {
+  std::vector<LegendEntry> l = {
+      {cover_colour(0), false, "pixel covered by one primitive (one colour per primitive)"},
+      {kOverlapMark, false, "pixel covered by more than one primitive (hatched red)"},
+      {edge_colour(0), false, "snapped edges and vertices (squares) of a drawn primitive"},
+      {kInactiveEdge, false,
+       "dashed grey: culled or degenerate triangles, quadrilateral lines' "
+       "triangles"},
+      {kGrid, false, "pixel grid: x to the right, y down, pixel (0, 0) at the top left"}};
+  if (samples) {
+    l.push_back({kSampleMark, true,
+                 "sample point (hollow), filled in the colour of the "
+                 "primitive that covers it"});
+    l.push_back({kSharedPixel, false, "pixel shared by primitives on different samples"});
+    l.push_back({kHelperMark, false, "dashed purple: a helper lane of a 2x2 quad"});
+    l.push_back({kCentroidMark, true, "centroid (small red cross)"});
+  } else {
+    l.push_back({kCentre, true, "pixel centre (small cross)"});
+  }
+  if (aa) {
+    const Rgb half{mix(kPalette[0].r, 255, 50), mix(kPalette[0].g, 255, 50),
+                   mix(kPalette[0].b, 255, 50)};
+    l.push_back({half, false, "antialiased line or path area: its colour blended by coverage"});
+  }
+  return l;
+}
+
 Image draw_picture(const PreparedScene& scene, const CoverageMap& coverage, int scale) {
   const int s = scale;
   Image img(scene.width * s + 1, scene.height * s + 1, kBackground);

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "rastrules/io/image.hpp"
@@ -93,6 +94,17 @@ inline constexpr int kMinSampleScale = 8;
 inline constexpr Rgb kOverlapColour{255, 190, 190};
 inline constexpr Rgb kOverlapMark{210, 20, 20};
 inline constexpr Rgb kBackground{255, 255, 255};
+
+// One line of a picture's legend: a swatch (a filled square, or a dot on white) and its meaning.
+struct LegendEntry {
+  Rgb colour;
+  bool dot = false;
+  std::string text;
+};
+
+// The legend of draw_picture's colours and marks; `samples`: the picture shows sample points
+// (samples_visible), `aa`: it has antialiased or area-blended pixels.
+[[nodiscard]] std::vector<LegendEntry> picture_legend(bool samples, bool aa);
 
 // Returns the picture of a prepared scene and its coverage. The image is
 // (width * scale + 1) x (height * scale + 1) pixels; target pixel (i, j) occupies image pixels
