@@ -79,6 +79,8 @@ def serve(rasterize, stdin=None, stdout=None):
     stdout = sys.stdout if stdout is None else stdout
     try:
         text = stdin.read()
+        if not text.strip():
+            raise ValueError("no scene on standard input")
         scene = read_scene(text)  # the reader's ValueError for a scene it refuses
         result = rasterize(json.loads(text))
         stdout.write(render_json(scene) if result is None else fragments_text(result))

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: MIT
 """The Python module against the command line (RASTRULES_CLI, set by CTest): the same bytes,
 values and errors for the same scenes, the NumPy dtype, and the external-driver helper with the
-example rasterizer of python/examples/ (its planted tie bug found by `rastrules check`)."""
+example rasterizer of examples/python/ (its planted tie bug found by `rastrules check`)."""
 
 import doctest
 import io
@@ -20,7 +20,7 @@ import rastrules.driver
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 CLI = os.environ.get("RASTRULES_CLI", str(ROOT / "build" / "tools" / "rastrules"))
-EXAMPLE = ROOT / "python" / "examples" / "triangle_rasterizer.py"
+EXAMPLE = ROOT / "examples" / "python" / "triangle_rasterizer.py"
 
 TRIANGLE = {"target": {"width": 8, "height": 8},
             "primitives": [{"type": "triangle", "v": [[1, 1], [7, 2], [2, 7]]}]}
