@@ -9,6 +9,7 @@
 #include <set>
 #include <variant>
 
+#include "fuzzer_test_support.hpp"
 #include "rastrules/driver/driver.hpp"
 #include "rastrules/driver/imprecise.hpp"
 #include "rastrules/fuzzer/fuzzer.hpp"
@@ -16,12 +17,7 @@
 namespace rastrules::fuzzer {
 namespace {
 
-std::unique_ptr<driver::Driver> open(const std::string& name) {
-  std::string err;
-  auto d = driver::open_driver(name, &err);
-  EXPECT_NE(d, nullptr) << err;
-  return d;
-}
+using test::open;
 
 Summary campaign(driver::Driver& d, const std::string& name, Profile profile, Mode mode,
                  std::uint64_t cases, std::uint64_t seed = 1) {

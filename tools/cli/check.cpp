@@ -23,7 +23,7 @@ int run_check(const Args& args) {
   if (const std::string why = d->unsupported(loaded->scene); !why.empty()) {
     return error(o->settings.driver_name + " cannot draw this scene: " + why);
   }
-  const fuzzer::Summary s = fuzzer::run_check(*d, loaded->scene, o->settings);
+  fuzzer::Summary s = fuzzer::run_check(*d, loaded->scene, o->settings);
   return finish_campaign(*o, *d, s);
 }
 

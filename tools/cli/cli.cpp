@@ -78,6 +78,8 @@ void print_usage(std::FILE* out) {
       "      case-N.json, with DIR/report.json for the campaign (spec/driver.md FUZZ.*).\n"
       "      Drivers: reference, imprecise[:float-edges|:fill-bottom-right|:4-bit-subpixel],\n"
       "      lavapipe and opengl (when built), external:COMMAND (DRIVER.EXTERNAL.PROTOCOL).\n"
+      "      Mismatches are grouped by the rule that decided them and their class\n"
+      "      (FUZZ.GROUP).\n"
       "  check SCENE.json --driver NAME [--profile P] [--mode exact|legal] [--out DIR]\n"
       "      The same comparison and outputs for one scene, used as it is.\n"
       "  probe --driver NAME\n"

@@ -97,10 +97,15 @@ std::unique_ptr<driver::Driver> open_driver_or_report(const std::string& name) {
   return d;
 }
 
-int finish_campaign(const FuzzOptions& o, const driver::Driver& d, const fuzzer::Summary& s) {
+int finish_campaign(const FuzzOptions& o, const driver::Driver& d, fuzzer::Summary& s) {
+  return finish_campaign(o, d.info().description, s, d.info().capabilities);
+}
+
+int finish_campaign(const FuzzOptions& o, const std::string& description, fuzzer::Summary& s,
+                    const std::string& capabilities) {
   // rule: SCENE.INPUT.ERRORS, FUZZ.REPORT
   if (s.interrupted || io::interrupted()) {
-    fuzzer::print_summary(stdout, o.settings, d, s);
+    fuzzer::print_summary(stdout, o.settings, description, s, capabilities);
     std::printf("result      interrupted after %llu case(s)\n",
                 static_cast<unsigned long long>(s.cases));
     std::fflush(stdout);
@@ -109,7 +114,7 @@ int finish_campaign(const FuzzOptions& o, const driver::Driver& d, const fuzzer:
   }
   if (!s.error.empty() && s.cases == 0)
     return error(s.error);
-  fuzzer::print_summary(stdout, o.settings, d, s);
+  fuzzer::print_summary(stdout, o.settings, description, s, capabilities);
   std::fflush(stdout);
   if (!s.error.empty())
     return error(s.error);
@@ -129,7 +134,7 @@ int run_fuzz(const Args& args) {
   auto d = open_driver_or_report(o->settings.driver_name);
   if (!d)
     return kExitBadInput;
-  const fuzzer::Summary s = fuzzer::run_fuzz(*d, o->settings);
+  fuzzer::Summary s = fuzzer::run_fuzz(*d, o->settings);
   return finish_campaign(*o, *d, s);
 }
 

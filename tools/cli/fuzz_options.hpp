@@ -19,8 +19,8 @@ struct FuzzOptions {
 };
 
 // Parses --driver, --profile, --mode, --out, --no-progress, and --cases/--seed when
-// allow_campaign, and one scene path when want_scene. Prints the usage error and returns
-// nullopt on bad usage.
+// allow_campaign, and one scene path when want_scene. Prints the usage error and returns nullopt on
+// bad usage.
 std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
                                               bool allow_campaign);
 
@@ -29,6 +29,9 @@ std::unique_ptr<driver::Driver> open_driver_or_report(const std::string& name);
 
 // Prints the summary; returns 0 (no difference), 1 (differences) or 2 (the campaign stopped on
 // an error).
-int finish_campaign(const FuzzOptions& o, const driver::Driver& d, const fuzzer::Summary& s);
+int finish_campaign(const FuzzOptions& o, const driver::Driver& d, fuzzer::Summary& s);
+// capabilities: DriverInfo::capabilities of the driver, printed under it (empty: nothing).
+int finish_campaign(const FuzzOptions& o, const std::string& description, fuzzer::Summary& s,
+                    const std::string& capabilities = {});
 
 } // namespace rastrules::cli

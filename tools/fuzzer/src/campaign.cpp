@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "json_file.hpp"
 #include "rastrules/fuzzer/fuzzer.hpp"
 #include "rastrules/fuzzer/html_report.hpp"
 #include "rastrules/io/interrupt.hpp"
@@ -47,8 +48,11 @@ json finding_json(const Finding& f, const Settings& s, const std::string& driver
             {"compared_with_fill", std::string(to_string(f.comparison.compared_with))},
             {"primitives_before", f.original.primitives.size()},
             {"primitives_after", f.shrunk.primitives.size()},
+            {"rule", f.group.rule},
+            {"class", f.group.klass},
             {"missing", diff_json(f.comparison.missing)},
-            {"extra", diff_json(f.comparison.extra)}};
+            {"extra", diff_json(f.comparison.extra)},
+            {"shrunk_text", f.key}};
   if (f.duplicate_of)
     j["duplicate_of"] = *f.duplicate_of;
   if (!f.files.scene.empty()) {
@@ -103,6 +107,7 @@ public:
     if (!shrunk)
       f.shrunk = scene;
     f.key = io::write_scene(f.shrunk);
+    f.group = classify(f.shrunk, f.comparison);
     if (const auto it = first_.find(f.key); it != first_.end()) {
       f.duplicate_of = it->second;
     } else {
@@ -142,35 +147,11 @@ public:
   bool finish(Summary& s) {
     for (const auto& [f, n] : tally_)
       s.legal_conventions.emplace_back(f, n);
+    s.groups = group_findings(s.findings);
     if (settings_.out_dir.empty())
       return true;
-    json j = {{"driver", settings_.driver_name},
-              {"description", driver_.info().description},
-              {"profile", std::string(to_string(settings_.profile))},
-              {"mode", std::string(to_string(settings_.mode))},
-              {"origin", origin_note(settings_.profile)},
-              {"seed", settings_.seed},
-              {"cases", s.cases},
-              {"skipped", s.skipped},
-              {"mismatches", s.mismatches},
-              {"unique", s.unique},
-              {"seconds", s.seconds}};
-    if (!s.error.empty())
-      j["error"] = s.error;
-    if (settings_.mode == Mode::kLegal) {
-      json t = json::object();
-      for (const auto& [f, n] : s.legal_conventions)
-        t[std::string(to_string(f))] = n;
-      j["fill_conventions_matched"] = t;
-    }
-    json list = json::array();
-    for (const Finding& f : s.findings)
-      list.push_back(finding_json(f, settings_, settings_.driver_name));
-    j["findings"] = list;
-    s.report_path = (std::filesystem::path(settings_.out_dir) / "report.json").string();
-    std::string error;
-    if (!write_text(s.report_path, j.dump(2) + "\n", &error)) {
-      s.error = error;
+    if (auto e = write_report(settings_, driver_.info().description, s)) {
+      s.error = *e;
       return false;
     }
     // rule: FUZZ.REPORT.HTML
@@ -219,6 +200,47 @@ void progress(const Settings& settings, std::uint64_t done, const Summary& s) {
 
 } // namespace
 
+// rule: FUZZ.REPORT, FUZZ.GROUP
+std::optional<std::string> write_report(const Settings& settings, const std::string& description,
+                                        Summary& s) {
+  json j = detail::campaign_json(settings, description);
+  j.update({{"origin", origin_note(settings.profile)},
+            {"cases", s.cases},
+            {"skipped", s.skipped},
+            {"mismatches", s.mismatches},
+            {"unique", s.unique},
+            {"seconds", s.seconds}});
+  if (!s.error.empty())
+    j["error"] = s.error;
+  if (s.interrupted)
+    j["interrupted"] = true;
+  if (settings.mode == Mode::kLegal) {
+    json t = json::object();
+    for (const auto& [f, n] : s.legal_conventions)
+      t[std::string(to_string(f))] = n;
+    j["fill_conventions_matched"] = t;
+  }
+  json groups = json::array();
+  for (const Group& g : s.groups) {
+    groups.push_back({{"rule", g.key.rule},
+                      {"class", g.key.klass},
+                      {"count", g.count},
+                      {"scenes", g.scenes},
+                      {"example_case", g.example_case},
+                      {"example", g.example}});
+  }
+  j["groups"] = groups;
+  json list = json::array();
+  for (const Finding& f : s.findings)
+    list.push_back(finding_json(f, settings, settings.driver_name));
+  j["findings"] = list;
+  s.report_path = (std::filesystem::path(settings.out_dir) / "report.json").string();
+  std::string error;
+  if (!write_text(s.report_path, j.dump(2) + "\n", &error))
+    return error;
+  return std::nullopt;
+}
+
 Summary run_fuzz(driver::Driver& driver, const Settings& settings) {
   Summary s;
   const auto start = std::chrono::steady_clock::now();
@@ -262,10 +284,15 @@ Summary run_check(driver::Driver& driver, const Scene& scene, const Settings& se
 
 void print_summary(std::FILE* out, const Settings& settings, const driver::Driver& driver,
                    const Summary& s) {
-  std::fprintf(out, "driver      %s (%s)\n", settings.driver_name.c_str(),
-               driver.info().description.c_str());
-  if (!driver.info().capabilities.empty()) // rule: DRIVER.EXTERNAL.CAPABILITIES
-    std::fprintf(out, "capabilities %s\n", driver.info().capabilities.c_str());
+  print_summary(out, settings, driver.info().description, s, driver.info().capabilities);
+}
+
+// rule: FUZZ.REPORT, FUZZ.GROUP
+void print_summary(std::FILE* out, const Settings& settings, const std::string& description,
+                   const Summary& s, const std::string& capabilities) {
+  std::fprintf(out, "driver      %s (%s)\n", settings.driver_name.c_str(), description.c_str());
+  if (!capabilities.empty()) // rule: DRIVER.EXTERNAL.CAPABILITIES
+    std::fprintf(out, "capabilities %s\n", capabilities.c_str());
   std::fprintf(out, "profile     %s, mode %s, seed %llu\n",
                std::string(to_string(settings.profile)).c_str(),
                std::string(to_string(settings.mode)).c_str(),
@@ -290,14 +317,12 @@ void print_summary(std::FILE* out, const Settings& settings, const driver::Drive
     std::fprintf(out, "fill conventions that explain the driver's results (cases): %s\n",
                  all.empty() ? "none" : all.c_str());
   }
-  for (const Finding& f : s.findings) {
-    if (f.duplicate_of)
-      continue;
-    std::fprintf(out, "case %llu (%s): %zu -> %zu primitive(s), %zu missing, %zu extra%s%s\n",
-                 static_cast<unsigned long long>(f.case_index), f.family.c_str(),
-                 f.original.primitives.size(), f.shrunk.primitives.size(),
-                 f.comparison.missing.size(), f.comparison.extra.size(),
-                 f.files.picture.empty() ? "" : ", picture ", f.files.picture.c_str());
+  for (const Group& g : s.groups) {
+    std::fprintf(out, "finding     %s, %s: %llu case(s), %llu scene(s), e.g. case %llu%s%s\n",
+                 g.key.rule.c_str(), g.key.klass.c_str(), static_cast<unsigned long long>(g.count),
+                 static_cast<unsigned long long>(g.scenes),
+                 static_cast<unsigned long long>(g.example_case),
+                 g.picture.empty() ? "" : ", picture ", g.picture.c_str());
   }
   if (!s.report_path.empty())
     std::fprintf(out, "report      %s\n", s.report_path.c_str());

@@ -87,6 +87,20 @@ struct Comparison {
   std::vector<DiffEntry> extra;   // in actual, not in expected
 };
 
+// The rule and the class of a difference, by which findings are grouped.
+// rule: FUZZ.GROUP
+struct GroupKey {
+  std::string rule;  // the rule ID that decided the first differing pixel, e.g. "LINE.VK.EXIT"
+  std::string klass; // "<primitive type> <missing|extra|missing+extra>[ 4x]", e.g. "line extra"
+  friend auto operator<=>(const GroupKey&, const GroupKey&) = default;
+};
+
+// Classifies a mismatch: the rule the reference kernel applied at the first differing pixel
+// (missing before extra, each in (prim, y, x) order), decided again on `scene` under the fill
+// convention compared with, and the class of the differences of that pixel's primitive.
+// rule: FUZZ.GROUP
+[[nodiscard]] GroupKey classify(const Scene& scene, const Comparison& comparison);
+
 // Reduces fragments to what every driver can observe: per (prim, x, y) the union of the masks
 // of its fragments (segments and per-sample fragments merged, helper lanes dropped), sorted.
 [[nodiscard]] std::vector<Fragment> observable(const std::vector<Fragment>& fragments);
@@ -128,10 +142,26 @@ struct Finding {
   Scene original;
   Scene shrunk;
   Comparison comparison; // of the shrunk scene
-  std::string key;       // the shrunk scene's text: equal keys are the same finding
+  std::string key;       // the shrunk scene's text: equal keys are the same shrunk scene
   std::optional<std::uint64_t> duplicate_of; // case index of the first finding with this key
+  GroupKey group;                            // FUZZ.GROUP
   FindingFiles files;
 };
+
+// Findings with one GroupKey: how many, and the first (lowest case) as the example.
+// rule: FUZZ.GROUP
+struct Group {
+  GroupKey key;
+  std::uint64_t count = 0;        // mismatching cases
+  std::uint64_t scenes = 0;       // distinct shrunk scenes
+  std::uint64_t example_case = 0; // the first case of the group
+  std::string example;            // its shrunk scene (text)
+  std::string picture;            // its picture, when written
+};
+
+// Builds the groups of a list of findings (in case order), sorted by key.
+// rule: FUZZ.GROUP
+[[nodiscard]] std::vector<Group> group_findings(const std::vector<Finding>& findings);
 
 // Campaign settings (rastrules fuzz / rastrules check).
 struct Settings {
@@ -151,11 +181,17 @@ struct Summary {
   std::uint64_t unique = 0; // distinct shrunk scenes
   double seconds = 0;
   std::vector<Finding> findings;
+  std::vector<Group> groups; // FUZZ.GROUP, after the campaign
   std::vector<std::pair<FillConvention, std::uint64_t>> legal_conventions; // legal mode: chosen
   std::string error;        // non-empty: the campaign stopped on a driver error
   bool interrupted = false; // SIGINT or SIGTERM: the campaign stopped after its case
   std::string report_path;
 };
+
+// Writes DIR/report.json for a summary (what a campaign writes at its end).
+// rule: FUZZ.REPORT
+[[nodiscard]] std::optional<std::string> write_report(const Settings& settings,
+                                                      const std::string& description, Summary& s);
 
 // Writes the picture of a comparison: expected | actual | difference, side by side, magnified,
 // with the pixel grid, the snapped edges and the sample points. Returns an error or nullopt.
@@ -193,8 +229,12 @@ struct ProbeReport {
 // rule: FUZZ.PROBE
 [[nodiscard]] ProbeReport probe(driver::Driver& driver);
 
-// Prints the summary table.
+// Prints the summary table and one line per finding group (FUZZ.GROUP).
 void print_summary(std::FILE* out, const Settings& settings, const driver::Driver& driver,
                    const Summary& s);
+// capabilities: how an external driver's capabilities were learnt (DriverInfo::capabilities),
+// printed under the driver when not empty.
+void print_summary(std::FILE* out, const Settings& settings, const std::string& description,
+                   const Summary& s, const std::string& capabilities = {});
 
 } // namespace rastrules::fuzzer

@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: MIT
+// Findings grouped by the rule that decided them and their class.
+// Implements: FUZZ.GROUP
+
+#include <bit>
+#include <map>
+#include <set>
+#include <variant>
+
+#include "rastrules/decision.hpp"
+#include "rastrules/fuzzer/fuzzer.hpp"
+#include "rastrules/rules.hpp"
+
+namespace rastrules::fuzzer {
+namespace {
+
+// The rule that decided one sample for a primitive made of triangles: a covering triangle's
+// tie edge (its fill rule) or its edge functions; for an uncovered sample, the fill rule when
+// every edge that excludes it is a tie, else the culling or zero-area rule, else the edge
+// functions (the sample is strictly outside).
+std::string triangle_rule(const std::vector<TriangleDecision>& triangles) {
+  for (const TriangleDecision& t : triangles) {
+    if (!t.covered)
+      continue;
+    for (const EdgeDecision& e : t.edges) {
+      if (e.e == EdgeValue{})
+        return std::string(e.rule.id);
+    }
+    return std::string(rules::kTriEdgeFunction.id);
+  }
+  for (const TriangleDecision& t : triangles) {
+    if (!t.has_edges || t.culled)
+      continue;
+    bool tie_only = false;
+    bool strict = false;
+    std::string rule;
+    for (const EdgeDecision& e : t.edges) {
+      if (e.inside)
+        continue;
+      if (e.e == EdgeValue{}) {
+        tie_only = true;
+        rule = std::string(e.rule.id);
+      } else {
+        strict = true;
+      }
+    }
+    if (tie_only && !strict)
+      return rule;
+  }
+  for (const TriangleDecision& t : triangles) {
+    if (!t.has_edges || t.culled)
+      return std::string(t.rule.id);
+  }
+  return std::string(rules::kTriEdgeFunction.id);
+}
+
+std::string pixel_rule(const Scene& scene, const Comparison& c, const DiffEntry& d) {
+  auto prepared = prepare(scene);
+  if (std::holds_alternative<SceneError>(prepared))
+    return "SCENE.INPUT.ERRORS";
+  const PixelDecision p = decide_pixel(std::get<PreparedScene>(prepared), d.prim, d.x, d.y);
+  if (p.path)
+    return std::string(rules::kScenePrimPath.id);
+  const auto sample = static_cast<std::uint32_t>(std::countr_zero(d.mask));
+  if (!p.segments.empty()) {
+    // A line drawn without triangles: on a multisampled target both produce the pixel and
+    // differ in its samples (MSAA.LINE.MODE), or the segment's own rule decided it.
+    const bool both = std::any_of(c.actual.begin(), c.actual.end(),
+                                  [&](const Fragment& f) {
+                                    return f.prim == d.prim && f.x == d.x && f.y == d.y;
+                                  }) &&
+                      p.covered;
+    if (scene.msaa.count() > 1 && both)
+      return std::string(rules::kMsaaLineMode.id);
+    for (const LineSegmentDecision& s : p.segments) {
+      if (s.covered)
+        return std::string(s.rule.id);
+    }
+    return std::string(p.segments.front().rule.id);
+  }
+  if (p.msaa && !p.msaa->samples.empty()) {
+    for (const SampleDecision& s : p.msaa->samples) {
+      if (s.index == sample)
+        return triangle_rule(s.triangles);
+    }
+  }
+  return triangle_rule(p.triangles);
+}
+
+} // namespace
+
+// rule: FUZZ.GROUP
+GroupKey classify(const Scene& scene, const Comparison& c) {
+  const bool has_missing = !c.missing.empty();
+  if (!has_missing && c.extra.empty())
+    return {};
+  const DiffEntry& first = has_missing ? c.missing.front() : c.extra.front();
+  Scene s = scene;
+  s.conventions.fill = c.compared_with;
+  GroupKey k;
+  k.rule = pixel_rule(s, c, first);
+  const auto of_prim = [&](const std::vector<DiffEntry>& list) {
+    return std::any_of(list.begin(), list.end(),
+                       [&](const DiffEntry& d) { return d.prim == first.prim; });
+  };
+  const bool missing = of_prim(c.missing), extra = of_prim(c.extra);
+  k.klass = first.prim < scene.primitives.size()
+                ? std::string(name_of(scene.primitives[first.prim].type))
+                : std::string("primitive");
+  k.klass += missing && extra ? " missing+extra" : (missing ? " missing" : " extra");
+  if (scene.msaa.count() > 1)
+    k.klass += " " + std::to_string(scene.msaa.count()) + "x";
+  return k;
+}
+
+// rule: FUZZ.GROUP
+std::vector<Group> group_findings(const std::vector<Finding>& findings) {
+  std::map<GroupKey, Group> groups;
+  std::map<GroupKey, std::set<std::string>> scenes;
+  for (const Finding& f : findings) {
+    Group& g = groups[f.group];
+    if (g.count == 0) {
+      g.key = f.group;
+      g.example_case = f.case_index;
+      g.example = f.key;
+      g.picture = f.files.picture;
+    }
+    ++g.count;
+    scenes[f.group].insert(f.key);
+  }
+  std::vector<Group> out;
+  for (auto& [key, g] : groups) {
+    g.scenes = scenes[key].size();
+    out.push_back(std::move(g));
+  }
+  return out;
+}
+
+} // namespace rastrules::fuzzer
