@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Campaign outputs on random campaigns of the imprecise driver (its variants, profiles, modes,
 // seeds, sizes): the groups count every mismatch and scene once and are the classification of
-// each finding.
-// Implements (properties for): FUZZ.GROUP
+// each finding; a baseline fails exactly the groups it does not list. And the legal
+// Bresenham allowance on random lines: the reference and one pixel fewer pass, a pixel two
+// away or sample 0 alone on 4x does not.
+// Implements (properties for): FUZZ.GROUP, FUZZ.BASELINE, FUZZ.COMPARE.LEGAL_LINES
 
 #include <algorithm>
 #include <cstdint>
@@ -76,6 +78,86 @@ RC_GTEST_PROP(FuzzCampaign, GroupsCountEveryMismatchAndSceneOnce, ()) {
   for (const fz::Finding& f : s.findings) {
     RC_ASSERT(f.group == fz::classify(f.shrunk, f.comparison));
     RC_ASSERT(keys.count(f.group) == 1u);
+  }
+}
+
+// rule: FUZZ.BASELINE
+RC_GTEST_PROP(FuzzCampaign, BaselineFailsExactlyTheGroupsItDoesNotList, ()) {
+  const Campaign c = *campaigns(40);
+  auto d = open(c.driver);
+  fz::Summary s = fz::run_fuzz(*d, c.settings);
+  RC_ASSERT(s.error.empty());
+  const auto pick =
+      *rc::gen::container<std::vector<bool>>(s.groups.size(), rc::gen::arbitrary<bool>());
+  fz::Baseline b;
+  b.path = "known.json";
+  std::uint64_t listed = 0;
+  for (std::size_t i = 0; i < s.groups.size(); ++i) {
+    if (pick[i]) {
+      b.known.push_back({s.groups[i].key, "FINDING.X", ""});
+      ++listed;
+    }
+  }
+  b.known.push_back({{"NO.SUCH.RULE", "triangle extra"}, "", ""}); // listed, never seen
+  const std::uint64_t unknown = fz::apply_baseline(b, s);
+  RC_ASSERT(unknown == s.groups.size() - listed);
+  for (std::size_t i = 0; i < s.groups.size(); ++i)
+    RC_ASSERT(s.groups[i].known == static_cast<bool>(pick[i]));
+}
+
+// rule: FUZZ.COMPARE.LEGAL_LINES
+RC_GTEST_PROP(FuzzLegalLines, ReferenceAndOneFewerPassFarPixelsAndSampleZeroDoNot, ()) {
+  const auto coord =
+      rc::gen::map(rc::gen::inRange(0, 33), [](int q) { return static_cast<float>(q) / 4.0F; });
+  Scene s;
+  s.width = 8;
+  s.height = 8;
+  s.conventions.line_mode = rastrules::LineMode::kVulkanBresenham;
+  rastrules::Primitive line;
+  line.type = rastrules::PrimitiveType::kLine;
+  line.v = {{*coord, *coord}, {*coord, *coord}};
+  s.primitives.push_back(line);
+  const bool msaa = *rc::gen::arbitrary<bool>();
+  if (msaa)
+    rastrules::set_sample_pattern(s, rastrules::standard_pattern(4));
+  auto r = rastrules::render(s);
+  RC_PRE(std::holds_alternative<std::vector<Fragment>>(r));
+  const std::vector<Fragment> exact = std::get<std::vector<Fragment>>(r);
+  const auto legal = [&](const std::vector<Fragment>& got) {
+    std::string err;
+    const auto c = fz::compare(s, got, fz::Profile::kVulkan, fz::Mode::kLegal, &err);
+    RC_ASSERT(c.has_value());
+    return c->match;
+  };
+  RC_ASSERT(legal(exact));
+  if (!exact.empty()) {
+    auto fewer = exact;
+    fewer.erase(fewer.begin() +
+                *rc::gen::inRange<std::ptrdiff_t>(0, static_cast<std::ptrdiff_t>(fewer.size())));
+    RC_ASSERT(legal(fewer));
+    if (msaa) {
+      auto sample0 = exact;
+      for (Fragment& f : sample0)
+        f.mask = 1;
+      RC_ASSERT(!legal(sample0));
+    }
+    // A pixel at least two away from every exact pixel.
+    for (std::int32_t y = 0; y < s.height; ++y) {
+      for (std::int32_t x = 0; x < s.width; ++x) {
+        const bool far = std::all_of(exact.begin(), exact.end(), [&](const Fragment& e) {
+          return std::abs(e.x - x) >= 2 || std::abs(e.y - y) >= 2;
+        });
+        if (!far)
+          continue;
+        auto more = exact;
+        more.push_back(Fragment{0, x, y, exact.front().mask});
+        std::sort(more.begin(), more.end(), [](const Fragment& p, const Fragment& q) {
+          return std::tie(p.y, p.x) < std::tie(q.y, q.x);
+        });
+        RC_ASSERT(!legal(more));
+        return;
+      }
+    }
   }
 }
 

@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: MIT
-// CI-friendly campaigns: findings grouped by rule and class.
+// CI-friendly campaigns: findings grouped by rule and class, Bresenham lines within the
+// APIs' allowance in legal mode, the baseline of known groups.
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <random>
 #include <set>
 #include <string>
 #include <variant>
@@ -28,6 +32,25 @@ Settings settings(const std::string& driver, std::uint64_t cases, Profile profil
   return s;
 }
 
+class TempDir {
+public:
+  TempDir() {
+    std::random_device rd;
+    path_ = std::filesystem::temp_directory_path() / ("rastrules-ci-" + std::to_string(rd()));
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  [[nodiscard]] std::string operator/(const std::string& name) const {
+    return (path_ / name).string();
+  }
+
+private:
+  std::filesystem::path path_;
+};
+
 Scene scene_of(const std::string& json) {
   auto r = io::read_scene(json);
   EXPECT_TRUE(std::holds_alternative<Scene>(r)) << json;
@@ -39,6 +62,16 @@ std::vector<Fragment> reference(const Scene& s) {
   EXPECT_TRUE(std::holds_alternative<std::vector<Fragment>>(r));
   return std::holds_alternative<std::vector<Fragment>>(r) ? std::get<std::vector<Fragment>>(r)
                                                           : std::vector<Fragment>{};
+}
+
+bool legal_match(const Scene& s, const std::vector<Fragment>& actual, Profile p = Profile::kVulkan,
+                 Mode m = Mode::kLegal, bool* by_lines = nullptr) {
+  std::string err;
+  auto c = compare(s, actual, p, m, &err);
+  EXPECT_TRUE(c.has_value()) << err;
+  if (by_lines != nullptr && c)
+    *by_lines = c->line_allowance;
+  return c && c->match;
 }
 
 // The three planted bugs of the imprecise driver give a handful of groups, one planted bug
@@ -96,6 +129,103 @@ TEST(FuzzGroup, KeysNameTheDecidingRuleAndTheClass) {
   ASSERT_TRUE(l) << err;
   EXPECT_FALSE(l->match);
   EXPECT_EQ(classify(line, *l), (GroupKey{"MSAA.LINE.MODE", "line missing 4x"}));
+}
+
+// FINDING.LAVAPIPE.BRESENHAM's three scenes with lavapipe's pixels: legal under vulkan and
+// opengl, differences in exact mode and under d3d11.
+// rule: FUZZ.COMPARE.LEGAL_LINES
+TEST(FuzzLegalLines, LavapipeBresenhamEndsAreLegal) {
+  const std::string head = R"({"version": 1, "target": {"width": 8, "height": 8},
+    "line_mode": "vulkan-bresenham", "primitives": [{"type": "line", "v": )";
+  const Scene a = scene_of(head + "[[1.25, 1.5], [6.75, 3.25]]}]}");
+  std::vector<Fragment> got = reference(a);
+  got.push_back(Fragment{0, 6, 3});
+  bool by_lines = false;
+  EXPECT_TRUE(legal_match(a, got, Profile::kVulkan, Mode::kLegal, &by_lines));
+  EXPECT_TRUE(by_lines);
+  EXPECT_TRUE(legal_match(a, got, Profile::kOpenGL));
+  EXPECT_FALSE(legal_match(a, got, Profile::kVulkan, Mode::kExact));
+  EXPECT_FALSE(legal_match(a, got, Profile::kD3D11));
+  const Scene b = scene_of(head + "[[7.75, 6.5], [7.75, 4.5]]}]}");
+  EXPECT_TRUE(legal_match(b, {Fragment{0, 7, 5}}));
+  const Scene c = scene_of(head + "[[3.5, 6.5], [3.5, 2.5]]}]}");
+  EXPECT_TRUE(legal_match(c, {Fragment{0, 3, 3}, Fragment{0, 3, 4}, Fragment{0, 3, 5}}));
+}
+
+// rule: FUZZ.COMPARE.LEGAL_LINES
+TEST(FuzzLegalLines, DeviationsOutsideTheAllowanceStayDifferences) {
+  const std::string head = R"({"version": 1, "target": {"width": 8, "height": 8},
+    "line_mode": "vulkan-bresenham", "primitives": [)";
+  const Scene s = scene_of(head + R"({"type": "line", "v": [[0.5, 1.5], [6.5, 1.5]]}]})");
+  const std::vector<Fragment> exact = reference(s);
+  ASSERT_EQ(exact.size(), 6u);
+  // A pixel two rows away, two pixels fewer, two pixels in one column.
+  auto far = exact;
+  far.back().y = 3;
+  EXPECT_FALSE(legal_match(s, far));
+  EXPECT_FALSE(legal_match(s, std::vector<Fragment>(exact.begin() + 1, exact.end() - 1)));
+  auto column = exact;
+  column.push_back(Fragment{0, 2, 2});
+  std::sort(column.begin(), column.end(), [](const Fragment& p, const Fragment& q) {
+    return std::tie(p.y, p.x) < std::tie(q.y, q.x);
+  });
+  EXPECT_FALSE(legal_match(s, column));
+  // A triangle beside the line gets no allowance.
+  const Scene t = scene_of(head + R"({"type": "line", "v": [[0.5, 1.5], [6.5, 1.5]]},
+    {"type": "triangle", "v": [[0, 4], [4, 4], [0, 8]]}]})");
+  auto tri = reference(t);
+  tri.pop_back();
+  EXPECT_FALSE(legal_match(t, tri));
+  // A strip: each segment on its own, by the fragments' seg; without seg, no allowance.
+  const Scene strip = scene_of(head + R"({"type": "line_strip",
+    "v": [[1.5, 1.5], [6.5, 1.5], [6.5, 6.5]]}]})");
+  auto segs = reference(strip);
+  auto drop_first_of_seg1 = segs;
+  const auto it = std::find_if(drop_first_of_seg1.begin(), drop_first_of_seg1.end(),
+                               [](const Fragment& f) { return f.seg == 1u; });
+  ASSERT_NE(it, drop_first_of_seg1.end());
+  drop_first_of_seg1.erase(it);
+  bool by_lines = false;
+  EXPECT_TRUE(legal_match(strip, drop_first_of_seg1, Profile::kVulkan, Mode::kLegal, &by_lines));
+  for (Fragment& f : drop_first_of_seg1)
+    f.seg.reset();
+  EXPECT_FALSE(legal_match(strip, drop_first_of_seg1));
+}
+
+// rule: FUZZ.BASELINE
+TEST(FuzzBaseline, ReadsKnownGroupsAndNamesWhatIsWrong) {
+  TempDir dir;
+  const auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return dir / name;
+  };
+  std::string err;
+  auto b = read_baseline(write("ok.json", R"({"version": 1, "known": [
+    {"rule": "MSAA.LINE.MODE", "class": "line missing 4x", "finding": "FINDING.X"}]})"),
+                         &err);
+  ASSERT_TRUE(b) << err;
+  ASSERT_EQ(b->known.size(), 1u);
+  EXPECT_EQ(b->known[0].finding, "FINDING.X");
+  EXPECT_FALSE(read_baseline(dir / "absent.json", &err));
+  EXPECT_NE(err.find("cannot read"), std::string::npos) << err;
+  EXPECT_FALSE(read_baseline(write("v.json", R"({"version": 2, "known": []})"), &err));
+  EXPECT_NE(err.find("version"), std::string::npos) << err;
+  EXPECT_FALSE(read_baseline(write("c.json", R"({"version": 1, "known": [{"rule": "X"}]})"), &err));
+  EXPECT_NE(err.find("known[0].class: missing"), std::string::npos) << err;
+  EXPECT_FALSE(read_baseline(write("n.json", "[1]"), &err));
+  // apply_baseline: a known group passes, the others are counted.
+  auto d = open("imprecise");
+  Summary s = run_fuzz(*d, settings("imprecise", 100));
+  ASSERT_GE(s.groups.size(), 2u);
+  Baseline one;
+  one.known.push_back({s.groups[0].key, "FINDING.PLANTED", ""});
+  EXPECT_EQ(apply_baseline(one, s), s.groups.size() - 1);
+  EXPECT_TRUE(s.groups[0].known);
+  EXPECT_EQ(s.groups[0].known_as, "FINDING.PLANTED");
+  Baseline all;
+  for (const Group& g : s.groups)
+    all.known.push_back({g.key, "", ""});
+  EXPECT_EQ(apply_baseline(all, s), 0u);
 }
 
 } // namespace

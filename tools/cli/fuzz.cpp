@@ -41,8 +41,9 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     const bool campaign_option = allow_campaign && (a == "--cases" || a == "--seed");
-    const bool takes_value =
-        a == "--driver" || a == "--profile" || a == "--mode" || a == "--out" || campaign_option;
+    const bool baseline_option = a == "--baseline";
+    const bool takes_value = a == "--driver" || a == "--profile" || a == "--mode" || a == "--out" ||
+                             campaign_option || baseline_option;
     std::string v;
     if (takes_value) {
       if (i + 1 >= args.size()) {
@@ -69,6 +70,8 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
         return std::nullopt;
       }
       (a == "--cases" ? o.settings.cases : o.settings.seed) = static_cast<std::uint64_t>(*n);
+    } else if (baseline_option) {
+      o.baseline_path = v;
     } else if (a == "--no-progress") {
       o.settings.progress = false;
     } else if (want_scene && o.scene_path.empty() && (a == "-" || a.rfind("--", 0) != 0)) {
@@ -85,6 +88,14 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
   if (want_scene && o.scene_path.empty()) {
     usage_error("missing SCENE.json");
     return std::nullopt;
+  }
+  if (!o.baseline_path.empty()) {
+    std::string err;
+    o.baseline = fuzzer::read_baseline(o.baseline_path, &err);
+    if (!o.baseline) {
+      error("--baseline: " + err);
+      return std::nullopt;
+    }
   }
   return o;
 }
@@ -103,6 +114,11 @@ int finish_campaign(const FuzzOptions& o, const driver::Driver& d, fuzzer::Summa
 
 int finish_campaign(const FuzzOptions& o, const std::string& description, fuzzer::Summary& s,
                     const std::string& capabilities) {
+  // rule: FUZZ.BASELINE
+  std::uint64_t unknown = 0;
+  if (o.baseline)
+    unknown = fuzzer::apply_baseline(*o.baseline, s);
+  const fuzzer::Baseline* baseline = o.baseline ? &*o.baseline : nullptr;
   // rule: SCENE.INPUT.ERRORS, FUZZ.REPORT
   if (s.interrupted || io::interrupted()) {
     fuzzer::print_summary(stdout, o.settings, description, s, capabilities);
@@ -118,6 +134,12 @@ int finish_campaign(const FuzzOptions& o, const std::string& description, fuzzer
   std::fflush(stdout);
   if (!s.error.empty())
     return error(s.error);
+  if (baseline != nullptr && s.mismatches != 0) {
+    std::printf("result      %llu difference(s) in %zu group(s), %llu not in the baseline %s\n",
+                static_cast<unsigned long long>(s.mismatches), s.groups.size(),
+                static_cast<unsigned long long>(unknown), baseline->path.c_str());
+    return unknown != 0 ? kExitDifference : kExitOk;
+  }
   if (s.mismatches != 0) {
     std::printf("result      %llu difference(s) found\n",
                 static_cast<unsigned long long>(s.mismatches));

@@ -90,6 +90,8 @@ public:
     ++s.cases;
     for (const FillConvention f : c->conventions)
       ++tally_[f];
+    if (c->line_allowance)
+      ++s.line_allowance;
     if (c->match)
       return true;
     ++s.mismatches;
@@ -209,6 +211,7 @@ std::optional<std::string> write_report(const Settings& settings, const std::str
             {"skipped", s.skipped},
             {"mismatches", s.mismatches},
             {"unique", s.unique},
+            {"line_allowance", s.line_allowance},
             {"seconds", s.seconds}});
   if (!s.error.empty())
     j["error"] = s.error;
@@ -287,7 +290,7 @@ void print_summary(std::FILE* out, const Settings& settings, const driver::Drive
   print_summary(out, settings, driver.info().description, s, driver.info().capabilities);
 }
 
-// rule: FUZZ.REPORT, FUZZ.GROUP
+// rule: FUZZ.REPORT, FUZZ.GROUP, FUZZ.BASELINE
 void print_summary(std::FILE* out, const Settings& settings, const std::string& description,
                    const Summary& s, const std::string& capabilities) {
   std::fprintf(out, "driver      %s (%s)\n", settings.driver_name.c_str(), description.c_str());
@@ -316,13 +319,19 @@ void print_summary(std::FILE* out, const Settings& settings, const std::string& 
     }
     std::fprintf(out, "fill conventions that explain the driver's results (cases): %s\n",
                  all.empty() ? "none" : all.c_str());
+    if (s.line_allowance != 0)
+      std::fprintf(out, "lines       %llu case(s) within the Bresenham allowance\n",
+                   static_cast<unsigned long long>(s.line_allowance));
   }
   for (const Group& g : s.groups) {
-    std::fprintf(out, "finding     %s, %s: %llu case(s), %llu scene(s), e.g. case %llu%s%s\n",
+    std::string known;
+    if (g.known)
+      known = g.known_as.empty() ? ", known" : ", known: " + g.known_as;
+    std::fprintf(out, "finding     %s, %s: %llu case(s), %llu scene(s), e.g. case %llu%s%s%s\n",
                  g.key.rule.c_str(), g.key.klass.c_str(), static_cast<unsigned long long>(g.count),
                  static_cast<unsigned long long>(g.scenes),
                  static_cast<unsigned long long>(g.example_case),
-                 g.picture.empty() ? "" : ", picture ", g.picture.c_str());
+                 g.picture.empty() ? "" : ", picture ", g.picture.c_str(), known.c_str());
   }
   if (!s.report_path.empty())
     std::fprintf(out, "report      %s\n", s.report_path.c_str());

@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: MIT
-// Findings grouped by the rule that decided them and their class.
-// Implements: FUZZ.GROUP
+// Findings grouped by the rule that decided them and their class, and the baseline of known
+// groups.
+// Implements: FUZZ.GROUP, FUZZ.BASELINE
 
 #include <bit>
 #include <map>
 #include <set>
 #include <variant>
 
+#include <nlohmann/json.hpp>
+
+#include "json_file.hpp"
 #include "rastrules/decision.hpp"
 #include "rastrules/fuzzer/fuzzer.hpp"
 #include "rastrules/rules.hpp"
@@ -134,6 +138,70 @@ std::vector<Group> group_findings(const std::vector<Finding>& findings) {
     out.push_back(std::move(g));
   }
   return out;
+}
+
+// rule: FUZZ.BASELINE
+std::optional<Baseline> read_baseline(const std::string& path, std::string* error) {
+  const auto read = detail::read_json_object(path, std::size_t{1} << 24, error);
+  if (!read)
+    return std::nullopt;
+  const nlohmann::json& j = *read;
+  if (!j.contains("version") || j["version"] != 1) {
+    *error = path + ": version: must be 1";
+    return std::nullopt;
+  }
+  if (!j.contains("known") || !j["known"].is_array()) {
+    *error = path + ": known: must be an array";
+    return std::nullopt;
+  }
+  Baseline b;
+  b.path = path;
+  for (std::size_t i = 0; i < j["known"].size(); ++i) {
+    const nlohmann::json& e = j["known"][i];
+    const std::string at = path + ": known[" + std::to_string(i) + "]";
+    if (!e.is_object()) {
+      *error = at + ": must be an object";
+      return std::nullopt;
+    }
+    BaselineEntry entry;
+    for (const auto& [name, field] : {std::pair<const char*, std::string*>{"rule", &entry.key.rule},
+                                      {"class", &entry.key.klass},
+                                      {"finding", &entry.finding},
+                                      {"note", &entry.note}}) {
+      const bool required = std::string_view(name) == "rule" || std::string_view(name) == "class";
+      if (!e.contains(name)) {
+        if (required) {
+          *error = at + "." + name + ": missing";
+          return std::nullopt;
+        }
+        continue;
+      }
+      if (!e[name].is_string() || (required && e[name].get<std::string>().empty())) {
+        *error = at + "." + name + ": must be a non-empty string";
+        return std::nullopt;
+      }
+      *field = e[name].get<std::string>();
+    }
+    b.known.push_back(std::move(entry));
+  }
+  return b;
+}
+
+// rule: FUZZ.BASELINE
+std::uint64_t apply_baseline(const Baseline& baseline, Summary& s) {
+  std::uint64_t unknown = 0;
+  for (Group& g : s.groups) {
+    for (const BaselineEntry& e : baseline.known) {
+      if (e.key == g.key) {
+        g.known = true;
+        g.known_as = e.finding;
+        break;
+      }
+    }
+    if (!g.known)
+      ++unknown;
+  }
+  return unknown;
 }
 
 } // namespace rastrules::fuzzer

@@ -85,6 +85,9 @@ struct Comparison {
   std::vector<Fragment> actual;   // the driver's (observable fields)
   std::vector<DiffEntry> missing; // in expected, not in actual
   std::vector<DiffEntry> extra;   // in actual, not in expected
+  // Legal mode: the driver's Bresenham lines differ from the reference's within the deviations
+  // Vulkan and OpenGL allow (FUZZ.COMPARE.LEGAL_LINES), and that is what made the case match.
+  bool line_allowance = false;
 };
 
 // The rule and the class of a difference, by which findings are grouped.
@@ -149,7 +152,7 @@ struct Finding {
 };
 
 // Findings with one GroupKey: how many, and the first (lowest case) as the example.
-// rule: FUZZ.GROUP
+// rule: FUZZ.GROUP, FUZZ.BASELINE
 struct Group {
   GroupKey key;
   std::uint64_t count = 0;        // mismatching cases
@@ -157,11 +160,29 @@ struct Group {
   std::uint64_t example_case = 0; // the first case of the group
   std::string example;            // its shrunk scene (text)
   std::string picture;            // its picture, when written
+  bool known = false;             // in the baseline
+  std::string known_as;           // the baseline entry's "finding" (a FINDING.* ID), if any
 };
 
 // Builds the groups of a list of findings (in case order), sorted by key.
 // rule: FUZZ.GROUP
 [[nodiscard]] std::vector<Group> group_findings(const std::vector<Finding>& findings);
+
+// Known findings (FUZZ.BASELINE): a JSON file {"version": 1, "known": [{"rule": ID,
+// "class": CLASS, "finding": FINDING.ID (optional), "note": TEXT (optional)}, ...]}.
+struct BaselineEntry {
+  GroupKey key;
+  std::string finding;
+  std::string note;
+};
+struct Baseline {
+  std::string path;
+  std::vector<BaselineEntry> known;
+};
+
+// Reads a baseline; nullopt and *error ("PATH: known[2].rule: ...") when it is not one.
+// rule: FUZZ.BASELINE
+[[nodiscard]] std::optional<Baseline> read_baseline(const std::string& path, std::string* error);
 
 // Campaign settings (rastrules fuzz / rastrules check).
 struct Settings {
@@ -178,7 +199,8 @@ struct Summary {
   std::uint64_t cases = 0;   // cases drawn and compared
   std::uint64_t skipped = 0; // cases the driver could not draw
   std::uint64_t mismatches = 0;
-  std::uint64_t unique = 0; // distinct shrunk scenes
+  std::uint64_t unique = 0;         // distinct shrunk scenes
+  std::uint64_t line_allowance = 0; // legal mode: cases that match by FUZZ.COMPARE.LEGAL_LINES
   double seconds = 0;
   std::vector<Finding> findings;
   std::vector<Group> groups; // FUZZ.GROUP, after the campaign
@@ -187,6 +209,10 @@ struct Summary {
   bool interrupted = false; // SIGINT or SIGTERM: the campaign stopped after its case
   std::string report_path;
 };
+
+// Marks the groups the baseline knows; returns the number of groups it does not know.
+// rule: FUZZ.BASELINE
+std::uint64_t apply_baseline(const Baseline& baseline, Summary& s);
 
 // Writes DIR/report.json for a summary (what a campaign writes at its end).
 // rule: FUZZ.REPORT
