@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Campaign outputs on random campaigns of the imprecise driver (its variants, profiles, modes,
 // seeds, sizes): the groups count every mismatch and scene once and are the classification of
-// each finding; a baseline fails exactly the groups it does not list. And the legal
+// each finding; a baseline fails exactly the groups it does not list; the JUnit XML and JSON
+// summary count what the campaign found. And the legal
 // Bresenham allowance on random lines: the reference and one pixel fewer pass, a pixel two
 // away or sample 0 alone on 4x does not.
-// Implements (properties for): FUZZ.GROUP, FUZZ.BASELINE, FUZZ.COMPARE.LEGAL_LINES
+// Implements (properties for): FUZZ.GROUP, FUZZ.BASELINE, FUZZ.RESULTS,
+//   FUZZ.COMPARE.LEGAL_LINES
 
 #include <algorithm>
 #include <cstdint>
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <rapidcheck/gtest.h>
 
 #include "rastrules/driver/driver.hpp"
@@ -81,7 +84,7 @@ RC_GTEST_PROP(FuzzCampaign, GroupsCountEveryMismatchAndSceneOnce, ()) {
   }
 }
 
-// rule: FUZZ.BASELINE
+// rule: FUZZ.BASELINE, FUZZ.RESULTS
 RC_GTEST_PROP(FuzzCampaign, BaselineFailsExactlyTheGroupsItDoesNotList, ()) {
   const Campaign c = *campaigns(40);
   auto d = open(c.driver);
@@ -103,6 +106,35 @@ RC_GTEST_PROP(FuzzCampaign, BaselineFailsExactlyTheGroupsItDoesNotList, ()) {
   RC_ASSERT(unknown == s.groups.size() - listed);
   for (std::size_t i = 0; i < s.groups.size(); ++i)
     RC_ASSERT(s.groups[i].known == static_cast<bool>(pick[i]));
+  // The JSON summary and the JUnit XML count the same.
+  const auto j = nlohmann::json::parse(fz::summary_json(c.settings, "d", s, &b));
+  RC_ASSERT(j["baseline"]["new_groups"].get<std::uint64_t>() == unknown);
+  RC_ASSERT(j["baseline"]["entries_not_seen"].size() == 1u);
+  RC_ASSERT(j["result"] == (unknown == 0 ? "pass" : "fail"));
+  RC_ASSERT(j["cases"].get<std::uint64_t>() + j["skipped"]["cases"].get<std::uint64_t>() ==
+            c.settings.cases);
+  const std::string xml = fz::junit_xml(c.settings, s, &b);
+  const auto occurrences = [&](const std::string& what) {
+    std::uint64_t n = 0;
+    for (auto at = xml.find(what); at != std::string::npos; at = xml.find(what, at + 1))
+      ++n;
+    return n;
+  };
+  std::uint64_t failing_families = 0;
+  for (const auto& [family, n] : s.families) {
+    bool bad = false;
+    for (const fz::Finding& f : s.findings) {
+      for (const fz::Group& g : s.groups)
+        bad = bad || (f.family == family && g.key == f.group && !g.known);
+    }
+    failing_families += bad ? 1 : 0;
+  }
+  const std::uint64_t tests = s.groups.size() + s.families.size() +
+                              s.families_not_generated.size() + (s.skipped != 0 ? 1 : 0);
+  RC_ASSERT(occurrences("<testcase ") == tests);
+  RC_ASSERT(occurrences("<failure ") == unknown + failing_families);
+  RC_ASSERT(occurrences("tests=\"" + std::to_string(tests) + "\"") == 2u);
+  RC_ASSERT(occurrences("failures=\"" + std::to_string(unknown + failing_families) + "\"") == 2u);
 }
 
 // rule: FUZZ.COMPARE.LEGAL_LINES

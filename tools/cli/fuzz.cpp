@@ -13,6 +13,7 @@
 #include "fuzz_options.hpp"
 #include "rastrules/fuzzer/fuzzer.hpp"
 #include "rastrules/io/interrupt.hpp"
+#include "rastrules/io/output_file.hpp"
 
 namespace rastrules::cli {
 
@@ -41,9 +42,9 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     const bool campaign_option = allow_campaign && (a == "--cases" || a == "--seed");
-    const bool baseline_option = a == "--baseline";
+    const bool results_option = a == "--baseline" || a == "--junit" || a == "--summary-json";
     const bool takes_value = a == "--driver" || a == "--profile" || a == "--mode" || a == "--out" ||
-                             campaign_option || baseline_option;
+                             campaign_option || results_option;
     std::string v;
     if (takes_value) {
       if (i + 1 >= args.size()) {
@@ -70,8 +71,8 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
         return std::nullopt;
       }
       (a == "--cases" ? o.settings.cases : o.settings.seed) = static_cast<std::uint64_t>(*n);
-    } else if (baseline_option) {
-      o.baseline_path = v;
+    } else if (results_option) {
+      (a == "--baseline" ? o.baseline_path : (a == "--junit" ? o.junit_path : o.summary_path)) = v;
     } else if (a == "--no-progress") {
       o.settings.progress = false;
     } else if (want_scene && o.scene_path.empty() && (a == "-" || a.rfind("--", 0) != 0)) {
@@ -119,6 +120,18 @@ int finish_campaign(const FuzzOptions& o, const std::string& description, fuzzer
   if (o.baseline)
     unknown = fuzzer::apply_baseline(*o.baseline, s);
   const fuzzer::Baseline* baseline = o.baseline ? &*o.baseline : nullptr;
+  // rule: FUZZ.RESULTS
+  // The machine-readable results are written whatever the outcome, an interrupt included.
+  std::string results_error;
+  if (!o.junit_path.empty()) {
+    if (auto e = io::write_text(o.junit_path, fuzzer::junit_xml(o.settings, s, baseline)))
+      results_error = "--junit: " + *e;
+  }
+  if (!o.summary_path.empty() && results_error.empty()) {
+    if (auto e = io::write_text(o.summary_path,
+                                fuzzer::summary_json(o.settings, description, s, baseline)))
+      results_error = "--summary-json: " + *e;
+  }
   // rule: SCENE.INPUT.ERRORS, FUZZ.REPORT
   if (s.interrupted || io::interrupted()) {
     fuzzer::print_summary(stdout, o.settings, description, s, capabilities);
@@ -134,6 +147,8 @@ int finish_campaign(const FuzzOptions& o, const std::string& description, fuzzer
   std::fflush(stdout);
   if (!s.error.empty())
     return error(s.error);
+  if (!results_error.empty())
+    return error(results_error);
   if (baseline != nullptr && s.mismatches != 0) {
     std::printf("result      %llu difference(s) in %zu group(s), %llu not in the baseline %s\n",
                 static_cast<unsigned long long>(s.mismatches), s.groups.size(),

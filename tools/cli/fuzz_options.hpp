@@ -17,19 +17,21 @@ struct FuzzOptions {
   fuzzer::Settings settings;
   std::string scene_path;    // check only
   std::string baseline_path; // --baseline FILE (FUZZ.BASELINE)
+  std::string junit_path;    // --junit FILE (FUZZ.RESULTS)
+  std::string summary_path;  // --summary-json FILE (FUZZ.RESULTS)
   std::optional<fuzzer::Baseline> baseline;
 };
 
-// Parses --driver, --profile, --mode, --out, --no-progress, --baseline, and --cases/--seed
-// when allow_campaign, and one scene path when want_scene. Reads the baseline. Prints the usage
-// error and returns nullopt on bad usage.
+// Parses --driver, --profile, --mode, --out, --no-progress, --baseline, --junit,
+// --summary-json, and --cases/--seed when allow_campaign, and one scene path when
+// want_scene. Reads the baseline. Prints the usage error and returns nullopt on bad usage.
 std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
                                               bool allow_campaign);
 
 // Opens the driver, or prints "rastrules: error: --driver: REASON" and returns nullptr.
 std::unique_ptr<driver::Driver> open_driver_or_report(const std::string& name);
 
-// Prints the summary; returns 0 (no difference, or only
+// Prints the summary, writes --junit and --summary-json; returns 0 (no difference, or only
 // differences the baseline knows), 1 (differences) or 2 (the campaign stopped on an error).
 int finish_campaign(const FuzzOptions& o, const driver::Driver& d, fuzzer::Summary& s);
 // capabilities: DriverInfo::capabilities of the driver, printed under it (empty: nothing).

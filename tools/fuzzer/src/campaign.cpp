@@ -64,6 +64,20 @@ json finding_json(const Finding& f, const Settings& s, const std::string& driver
   return j;
 }
 
+json families_json(const Summary& s) {
+  json j = json::object();
+  for (const auto& [name, n] : s.families)
+    j[name] = {{"cases", n.cases}, {"mismatches", n.mismatches}};
+  return j;
+}
+
+json not_generated_json(const Summary& s) {
+  json j = json::array();
+  for (const auto& [family, why] : s.families_not_generated)
+    j.push_back({{"family", family}, {"reason", why}});
+  return j;
+}
+
 // Writes a report file; it appears only when complete (io::write_text).
 bool write_text(const std::string& path, const std::string& text, std::string* error) {
   if (auto err = io::write_text(path, text)) {
@@ -88,6 +102,7 @@ public:
       return false;
     }
     ++s.cases;
+    ++s.families[family].cases;
     for (const FillConvention f : c->conventions)
       ++tally_[f];
     if (c->line_allowance)
@@ -95,6 +110,7 @@ public:
     if (c->match)
       return true;
     ++s.mismatches;
+    ++s.families[family].mismatches;
     Finding f;
     f.case_index = index;
     f.family = family;
@@ -209,9 +225,12 @@ std::optional<std::string> write_report(const Settings& settings, const std::str
   j.update({{"origin", origin_note(settings.profile)},
             {"cases", s.cases},
             {"skipped", s.skipped},
+            {"skipped_cases", s.skipped_cases},
             {"mismatches", s.mismatches},
             {"unique", s.unique},
             {"line_allowance", s.line_allowance},
+            {"families", families_json(s)},
+            {"families_not_generated", not_generated_json(s)},
             {"seconds", s.seconds}});
   if (!s.error.empty())
     j["error"] = s.error;
@@ -247,6 +266,7 @@ std::optional<std::string> write_report(const Settings& settings, const std::str
 Summary run_fuzz(driver::Driver& driver, const Settings& settings) {
   Summary s;
   const auto start = std::chrono::steady_clock::now();
+  s.families_not_generated = families_not_generated(settings.profile, driver);
   if (!make_out_dir(settings, s))
     return s;
   Campaign campaign(driver, settings);
@@ -260,6 +280,7 @@ Summary run_fuzz(driver::Driver& driver, const Settings& settings) {
     auto c = generate_case(settings.seed, i, settings.profile, driver);
     if (!c) {
       ++s.skipped;
+      s.skipped_cases.push_back(i);
     } else if (!campaign.run_case(i, c->family, c->scene, s)) {
       s.interrupted = io::interrupted(); // the driver was killed by the interrupt
       break;

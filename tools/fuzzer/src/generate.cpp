@@ -184,6 +184,21 @@ void lines(Rng& rng, Grid g, Scene& s) {
 } // namespace
 
 // rule: FUZZ.GENERATE
+std::vector<std::pair<std::string, std::string>>
+families_not_generated(Profile profile, const driver::Driver& driver) {
+  const driver::DriverInfo& info = driver.info();
+  std::vector<std::pair<std::string, std::string>> out;
+  if (!info.points)
+    out.emplace_back("points", "the driver does not draw points");
+  if (profile == Profile::kD3D11 && !info.lines_d3d)
+    out.emplace_back("lines", "the driver does not draw d3d lines (profile d3d11)");
+  if (profile != Profile::kD3D11 && !info.lines_bresenham)
+    out.emplace_back("lines", "the driver does not draw vulkan-bresenham lines (profile " +
+                                  std::string(to_string(profile)) + ")");
+  return out;
+}
+
+// rule: FUZZ.GENERATE
 std::optional<Case> generate_case(std::uint64_t seed, std::uint64_t index, Profile profile,
                                   const driver::Driver& driver) {
   const driver::DriverInfo& info = driver.info();

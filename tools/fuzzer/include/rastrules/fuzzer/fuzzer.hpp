@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -64,6 +65,11 @@ struct Case {
 // rule: FUZZ.GENERATE
 [[nodiscard]] std::optional<Case> generate_case(std::uint64_t seed, std::uint64_t index,
                                                 Profile profile, const driver::Driver& driver);
+
+// The families generate_case() never draws for this driver and profile, each with the reason.
+// rule: FUZZ.GENERATE
+[[nodiscard]] std::vector<std::pair<std::string, std::string>>
+families_not_generated(Profile profile, const driver::Driver& driver);
 
 // One differing pixel of one primitive: mask holds the samples missing (or extra).
 struct DiffEntry {
@@ -195,6 +201,12 @@ struct Settings {
   bool progress = false; // draw a progress bar on standard error
 };
 
+// The cases of one scene family and how many of them mismatched.
+struct FamilyCount {
+  std::uint64_t cases = 0;
+  std::uint64_t mismatches = 0;
+};
+
 struct Summary {
   std::uint64_t cases = 0;   // cases drawn and compared
   std::uint64_t skipped = 0; // cases the driver could not draw
@@ -203,7 +215,11 @@ struct Summary {
   std::uint64_t line_allowance = 0; // legal mode: cases that match by FUZZ.COMPARE.LEGAL_LINES
   double seconds = 0;
   std::vector<Finding> findings;
-  std::vector<Group> groups; // FUZZ.GROUP, after the campaign
+  std::vector<Group> groups;                   // FUZZ.GROUP, after the campaign
+  std::vector<std::uint64_t> skipped_cases;    // the cases counted in skipped
+  std::map<std::string, FamilyCount> families; // compared cases by family
+  // Families never generated for this driver and profile, and why (FUZZ.GENERATE).
+  std::vector<std::pair<std::string, std::string>> families_not_generated;
   std::vector<std::pair<FillConvention, std::uint64_t>> legal_conventions; // legal mode: chosen
   std::string error;        // non-empty: the campaign stopped on a driver error
   bool interrupted = false; // SIGINT or SIGTERM: the campaign stopped after its case
@@ -213,6 +229,16 @@ struct Summary {
 // Marks the groups the baseline knows; returns the number of groups it does not know.
 // rule: FUZZ.BASELINE
 std::uint64_t apply_baseline(const Baseline& baseline, Summary& s);
+
+// The machine-readable results of a campaign (FUZZ.RESULTS): JUnit XML, one test case per
+// finding group (a failure unless the baseline knows it) and one per scene family of the
+// generated cases; and the JSON summary (cases run and skipped, groups, baseline matches).
+// `baseline` may be null.
+// rule: FUZZ.RESULTS
+[[nodiscard]] std::string junit_xml(const Settings& settings, const Summary& s,
+                                    const Baseline* baseline);
+[[nodiscard]] std::string summary_json(const Settings& settings, const std::string& description,
+                                       const Summary& s, const Baseline* baseline);
 
 // Writes DIR/report.json for a summary (what a campaign writes at its end).
 // rule: FUZZ.REPORT
