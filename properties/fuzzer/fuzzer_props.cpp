@@ -2,14 +2,16 @@
 // Campaign outputs on random campaigns of the imprecise driver (its variants, profiles, modes,
 // seeds, sizes): the groups count every mismatch and scene once and are the classification of
 // each finding; a baseline fails exactly the groups it does not list; the JUnit XML and JSON
-// summary count what the campaign found. And the legal
+// summary count what the campaign found; N shards merged are the campaign. And the legal
 // Bresenham allowance on random lines: the reference and one pixel fewer pass, a pixel two
 // away or sample 0 alone on 4x does not.
-// Implements (properties for): FUZZ.GROUP, FUZZ.BASELINE, FUZZ.RESULTS,
-//   FUZZ.COMPARE.LEGAL_LINES
+// Implements (properties for): FUZZ.GROUP, FUZZ.BASELINE, FUZZ.RESULTS, FUZZ.SHARD,
+//   FUZZ.MERGE, FUZZ.COMPARE.LEGAL_LINES
 
 #include <algorithm>
 #include <cstdint>
+#include <filesystem>
+#include <random>
 #include <set>
 #include <string>
 #include <variant>
@@ -135,6 +137,53 @@ RC_GTEST_PROP(FuzzCampaign, BaselineFailsExactlyTheGroupsItDoesNotList, ()) {
   RC_ASSERT(occurrences("<failure ") == unknown + failing_families);
   RC_ASSERT(occurrences("tests=\"" + std::to_string(tests) + "\"") == 2u);
   RC_ASSERT(occurrences("failures=\"" + std::to_string(unknown + failing_families) + "\"") == 2u);
+}
+
+// rule: FUZZ.SHARD, FUZZ.MERGE
+RC_GTEST_PROP(FuzzCampaign, ShardsMergedAreTheCampaign, ()) {
+  Campaign c = *campaigns(30);
+  const std::uint64_t n = *rc::gen::inRange<std::uint64_t>(1, 6);
+  std::random_device rd;
+  const auto root =
+      std::filesystem::temp_directory_path() / ("rastrules-shard-props-" + std::to_string(rd()));
+  auto d = open(c.driver);
+  const fz::Summary whole = fz::run_fuzz(*d, c.settings);
+  RC_ASSERT(whole.error.empty());
+  std::vector<std::string> dirs;
+  for (std::uint64_t k = 0; k < n; ++k) {
+    fz::Settings part = c.settings;
+    part.shard_index = k;
+    part.shard_count = n;
+    part.out_dir = (root / std::to_string(k)).string();
+    dirs.push_back(part.out_dir);
+    const fz::Summary p = fz::run_fuzz(*d, part);
+    RC_ASSERT(p.error.empty());
+    for (const fz::Finding& f : p.findings)
+      RC_ASSERT(f.case_index % n == k);
+  }
+  fz::Settings merged_settings;
+  std::string description, err;
+  const auto m = fz::merge_reports(dirs, &merged_settings, &description, &err);
+  std::error_code ec;
+  std::filesystem::remove_all(root, ec);
+  RC_ASSERT(m.has_value());
+  RC_ASSERT(m->cases == whole.cases && m->skipped == whole.skipped);
+  RC_ASSERT(m->mismatches == whole.mismatches && m->unique == whole.unique);
+  RC_ASSERT(m->findings.size() == whole.findings.size());
+  for (std::size_t i = 0; i < whole.findings.size(); ++i) {
+    const fz::Finding& a = whole.findings[i];
+    const fz::Finding& b = m->findings[i];
+    RC_ASSERT(a.case_index == b.case_index && a.family == b.family && a.key == b.key);
+    RC_ASSERT(a.group == b.group && a.duplicate_of == b.duplicate_of);
+    RC_ASSERT(a.comparison.missing == b.comparison.missing);
+    RC_ASSERT(a.comparison.extra == b.comparison.extra);
+  }
+  RC_ASSERT(m->groups.size() == whole.groups.size());
+  for (std::size_t i = 0; i < whole.groups.size(); ++i) {
+    RC_ASSERT(m->groups[i].key == whole.groups[i].key);
+    RC_ASSERT(m->groups[i].count == whole.groups[i].count);
+    RC_ASSERT(m->groups[i].example_case == whole.groups[i].example_case);
+  }
 }
 
 // rule: FUZZ.COMPARE.LEGAL_LINES

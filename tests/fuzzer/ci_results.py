@@ -3,12 +3,13 @@
 """Checks the machine-readable results of `rastrules fuzz` as a CI service reads them.
 
   ci_results.py results RASTRULES SCRATCH   JUnit XML parsed back (xml.etree), the JSON summary,
-                                            the baseline's exit status
+                                            the baseline's exit status, shards merged by
+                                            `rastrules fuzz-merge` equal to the whole campaign
   ci_results.py lavapipe RASTRULES SPEC     the golden command of spec/known-lavapipe.json exits
                                             0 on lavapipe and 1 on the imprecise driver (77: no
                                             lavapipe, skipped)
 """
-# rule: FUZZ.RESULTS, FUZZ.BASELINE
+# rule: FUZZ.RESULTS, FUZZ.BASELINE, FUZZ.SHARD, FUZZ.MERGE
 
 import json
 import os
@@ -96,6 +97,36 @@ def results(rastrules, scratch):
     open(at("bad.json"), "w").write('{"version": 1, "known": [{"rule": "X"}]}')
     rc, out, err = run(base + ["--baseline", at("bad.json")])
     expect(rc == 2 and "known[0].class: missing" in err and out == "", f"bad baseline: {rc} {err}")
+    rc, out, err = run(base + ["--shard", "4/4"])
+    expect(rc == 2 and "--shard" in err, f"bad shard: {rc} {err}")
+    # Four shards through the command line, merged: the whole campaign's summary and JUnit.
+    rc, _, err = run(base + ["--out", at("whole"), "--summary-json", at("whole.json"),
+                             "--junit", at("whole.xml")])
+    expect(rc == 1, "the whole campaign differs")
+    dirs = []
+    for k in range(4):
+        dirs.append(at(f"shard{k}"))
+        rc, _, err = run(base + ["--shard", f"{k}/4", "--out", dirs[-1]])
+        expect(rc in (0, 1), f"shard {k}: {err}")
+    rc, out, err = run([rastrules, "fuzz-merge", *dirs, "--out", at("merged"), "--summary-json",
+                        at("merged.json"), "--junit", at("merged.xml")])
+    expect(rc == 1, f"the merge differs as the whole does, got {rc}: {err}")
+    whole, merged = json.load(open(at("whole.json"))), json.load(open(at("merged.json")))
+    for s in (whole, merged):
+        del s["seconds"]
+        for g in s["groups"]:
+            g.pop("picture", None)
+    expect(whole == merged, "merged summary equals the whole campaign's")
+    strip = lambda f: {k: v for k, v in f.items() if k not in ("scene", "shrunk_scene", "picture",
+                                                                "report")}
+    fw = [strip(f) for f in json.load(open(at("whole/report.json")))["findings"]]
+    fm = [strip(f) for f in json.load(open(at("merged/report.json")))["findings"]]
+    expect(fw == fm, "merged findings equal the whole campaign's, finding for finding")
+    _, cw = junit(at("whole.xml"))
+    _, cm = junit(at("merged.xml"))
+    expect([ET.tostring(c) for c in cw] == [ET.tostring(c) for c in cm], "same JUnit test cases")
+    rc, _, err = run([rastrules, "fuzz-merge", *dirs[:3]])
+    expect(rc == 2 and "missing" in err, f"a missing shard: {rc} {err}")
     print("ok")
 
 

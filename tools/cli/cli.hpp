@@ -101,6 +101,7 @@ int run_explain(const Args& args);
 int run_showcase(const Args& args);
 int run_fuzz(const Args& args);
 int run_check(const Args& args);
+int run_fuzz_merge(const Args& args);
 int run_probe(const Args& args);
 int run_bench(const Args& args);
 int run_glyph(const Args& args); // glyph.cpp: a glyph of a font file as a path scene

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -42,9 +43,10 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     const bool campaign_option = allow_campaign && (a == "--cases" || a == "--seed");
+    const bool shard_option = allow_campaign && a == "--shard";
     const bool results_option = a == "--baseline" || a == "--junit" || a == "--summary-json";
     const bool takes_value = a == "--driver" || a == "--profile" || a == "--mode" || a == "--out" ||
-                             campaign_option || results_option;
+                             campaign_option || shard_option || results_option;
     std::string v;
     if (takes_value) {
       if (i + 1 >= args.size()) {
@@ -71,6 +73,19 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
         return std::nullopt;
       }
       (a == "--cases" ? o.settings.cases : o.settings.seed) = static_cast<std::uint64_t>(*n);
+    } else if (shard_option) {
+      // rule: FUZZ.SHARD
+      const auto slash = v.find('/');
+      const auto k =
+          slash == std::string::npos ? std::nullopt : parse_int(v.substr(0, slash), 0, 1000000);
+      const auto n =
+          slash == std::string::npos ? std::nullopt : parse_int(v.substr(slash + 1), 1, 1000000);
+      if (!k || !n || *k >= *n) {
+        usage_error("--shard: must be K/N with 0 <= K < N <= 1000000, got " + shown_value(v));
+        return std::nullopt;
+      }
+      o.settings.shard_index = static_cast<std::uint64_t>(*k);
+      o.settings.shard_count = static_cast<std::uint64_t>(*n);
     } else if (results_option) {
       (a == "--baseline" ? o.baseline_path : (a == "--junit" ? o.junit_path : o.summary_path)) = v;
     } else if (a == "--no-progress") {
@@ -173,6 +188,48 @@ int run_fuzz(const Args& args) {
     return kExitBadInput;
   fuzzer::Summary s = fuzzer::run_fuzz(*d, o->settings);
   return finish_campaign(*o, *d, s);
+}
+
+// rule: FUZZ.MERGE
+int run_fuzz_merge(const Args& args) {
+  FuzzOptions o;
+  std::vector<std::string> dirs;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--out" || a == "--baseline" || a == "--junit" || a == "--summary-json") {
+      if (i + 1 >= args.size())
+        return usage_error(a + " needs a value");
+      const std::string& v = args[++i];
+      (a == "--out" ? o.settings.out_dir
+                    : (a == "--baseline" ? o.baseline_path
+                                         : (a == "--junit" ? o.junit_path : o.summary_path))) = v;
+    } else if (a.rfind("--", 0) == 0) {
+      return usage_error("unknown option " + shown_value(a));
+    } else {
+      dirs.push_back(a);
+    }
+  }
+  if (dirs.empty())
+    return usage_error("missing shard DIR");
+  if (!o.baseline_path.empty()) {
+    std::string err;
+    o.baseline = fuzzer::read_baseline(o.baseline_path, &err);
+    if (!o.baseline)
+      return error("--baseline: " + err);
+  }
+  std::string description, err;
+  auto s = fuzzer::merge_reports(dirs, &o.settings, &description, &err);
+  if (!s)
+    return error(err);
+  if (!o.settings.out_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(o.settings.out_dir, ec);
+    if (ec)
+      return error(o.settings.out_dir + ": cannot create: " + ec.message());
+    if (auto e = fuzzer::write_report(o.settings, description, *s))
+      return error(*e);
+  }
+  return finish_campaign(o, description, *s);
 }
 
 } // namespace rastrules::cli

@@ -23,7 +23,7 @@ struct FuzzOptions {
 };
 
 // Parses --driver, --profile, --mode, --out, --no-progress, --baseline, --junit,
-// --summary-json, and --cases/--seed when allow_campaign, and one scene path when
+// --summary-json, and --cases/--seed/--shard when allow_campaign, and one scene path when
 // want_scene. Reads the baseline. Prints the usage error and returns nullopt on bad usage.
 std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
                                               bool allow_campaign);

@@ -19,10 +19,11 @@ struct Command {
 };
 
 constexpr Command kCommands[] = {
-    {"render", rastrules::cli::run_render},     {"explain", rastrules::cli::run_explain},
-    {"showcase", rastrules::cli::run_showcase}, {"fuzz", rastrules::cli::run_fuzz},
-    {"check", rastrules::cli::run_check},       {"probe", rastrules::cli::run_probe},
-    {"bench", rastrules::cli::run_bench},       {"cases", rastrules::cli::run_cases},
+    {"render", rastrules::cli::run_render},         {"explain", rastrules::cli::run_explain},
+    {"showcase", rastrules::cli::run_showcase},     {"fuzz", rastrules::cli::run_fuzz},
+    {"check", rastrules::cli::run_check},           {"probe", rastrules::cli::run_probe},
+    {"bench", rastrules::cli::run_bench},           {"cases", rastrules::cli::run_cases},
+    {"fuzz-merge", rastrules::cli::run_fuzz_merge},
 #ifdef RASTRULES_HAVE_GLYPH
     {"glyph", rastrules::cli::run_glyph},
 #endif

@@ -199,26 +199,24 @@ bool make_out_dir(const Settings& settings, Summary& s) {
   return true;
 }
 
-void progress(const Settings& settings, std::uint64_t done, const Summary& s) {
+void progress(const Settings& settings, std::uint64_t done, std::uint64_t total, const Summary& s) {
   if (!settings.progress)
     return;
   constexpr int kWidth = 30;
-  const auto filled =
-      static_cast<int>(settings.cases == 0 ? kWidth : done * kWidth / settings.cases);
+  const auto filled = static_cast<int>(total == 0 ? kWidth : done * kWidth / total);
   std::string bar(static_cast<std::size_t>(filled), '#');
   bar.resize(kWidth, '.');
   std::fprintf(stderr, "\r[%s] %llu/%llu cases, %llu mismatches", bar.c_str(),
-               static_cast<unsigned long long>(done),
-               static_cast<unsigned long long>(settings.cases),
+               static_cast<unsigned long long>(done), static_cast<unsigned long long>(total),
                static_cast<unsigned long long>(s.mismatches));
-  if (done == settings.cases)
+  if (done == total)
     std::fputc('\n', stderr);
   std::fflush(stderr);
 }
 
 } // namespace
 
-// rule: FUZZ.REPORT, FUZZ.GROUP
+// rule: FUZZ.REPORT, FUZZ.GROUP, FUZZ.SHARD
 std::optional<std::string> write_report(const Settings& settings, const std::string& description,
                                         Summary& s) {
   json j = detail::campaign_json(settings, description);
@@ -270,7 +268,15 @@ Summary run_fuzz(driver::Driver& driver, const Settings& settings) {
   if (!make_out_dir(settings, s))
     return s;
   Campaign campaign(driver, settings);
-  for (std::uint64_t i = 0; i < settings.cases; ++i) {
+  const std::uint64_t total =
+      settings.cases > settings.shard_index
+          ? (settings.cases - settings.shard_index + settings.shard_count - 1) /
+                settings.shard_count
+          : 0;
+  std::uint64_t done = 0;
+  // rule: FUZZ.SHARD
+  // A shard runs every shard_count-th case from shard_index: the unsharded campaign's cases.
+  for (std::uint64_t i = settings.shard_index; i < settings.cases; i += settings.shard_count) {
     // rule: FUZZ.REPORT
     // An interrupt stops the campaign between cases; the report holds what it has.
     if (io::interrupted()) {
@@ -285,7 +291,7 @@ Summary run_fuzz(driver::Driver& driver, const Settings& settings) {
       s.interrupted = io::interrupted(); // the driver was killed by the interrupt
       break;
     }
-    progress(settings, i + 1, s);
+    progress(settings, ++done, total, s);
   }
   if (settings.progress && !s.error.empty())
     std::fputc('\n', stderr); // end the bar's line
@@ -321,6 +327,14 @@ void print_summary(std::FILE* out, const Settings& settings, const std::string& 
                std::string(to_string(settings.profile)).c_str(),
                std::string(to_string(settings.mode)).c_str(),
                static_cast<unsigned long long>(settings.seed));
+  if (settings.shard_count > 1) {
+    std::fprintf(out, "shard       %llu/%llu (cases i < %llu with i mod %llu = %llu)\n",
+                 static_cast<unsigned long long>(settings.shard_index),
+                 static_cast<unsigned long long>(settings.shard_count),
+                 static_cast<unsigned long long>(settings.cases),
+                 static_cast<unsigned long long>(settings.shard_count),
+                 static_cast<unsigned long long>(settings.shard_index));
+  }
   std::fprintf(out, "+------------+------------+---------+-----------+----------+\n");
   std::fprintf(out, "| cases      | mismatches | unique  | time (s)  | cases/s  |\n");
   std::fprintf(out, "+------------+------------+---------+-----------+----------+\n");

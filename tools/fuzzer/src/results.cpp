@@ -55,6 +55,8 @@ bool failing(const Group& g, const Baseline* baseline) {
 std::string suite_name(const Settings& st) {
   std::string name = "rastrules fuzz " + st.driver_name + " " + std::string(to_string(st.profile)) +
                      " " + std::string(to_string(st.mode)) + " seed " + u(st.seed);
+  if (st.shard_count > 1)
+    name += " shard " + u(st.shard_index) + "/" + u(st.shard_count);
   return name;
 }
 

@@ -199,6 +199,11 @@ struct Settings {
   std::uint64_t cases = 100;
   std::string out_dir;   // empty: write nothing
   bool progress = false; // draw a progress bar on standard error
+  // rule: FUZZ.SHARD
+  // Shard shard_index of shard_count: the campaign runs the cases i < cases with
+  // i % shard_count == shard_index (the same scenes as the unsharded campaign).
+  std::uint64_t shard_index = 0;
+  std::uint64_t shard_count = 1;
 };
 
 // The cases of one scene family and how many of them mismatched.
@@ -239,6 +244,15 @@ std::uint64_t apply_baseline(const Baseline& baseline, Summary& s);
                                     const Baseline* baseline);
 [[nodiscard]] std::string summary_json(const Settings& settings, const std::string& description,
                                        const Summary& s, const Baseline* baseline);
+
+// Joins the report.json files of shard campaigns (FUZZ.SHARD) into the campaign they split:
+// every finding of every shard, in case order, deduplicated and grouped again as one campaign
+// would. Fills *settings from the reports (which must agree on driver, profile, mode, seed,
+// cases and shard count, with each shard present once); nullopt and *error otherwise.
+// rule: FUZZ.MERGE
+[[nodiscard]] std::optional<Summary> merge_reports(const std::vector<std::string>& dirs,
+                                                   Settings* settings, std::string* description,
+                                                   std::string* error);
 
 // Writes DIR/report.json for a summary (what a campaign writes at its end).
 // rule: FUZZ.REPORT
