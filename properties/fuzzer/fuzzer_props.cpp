@@ -4,11 +4,12 @@
 // each finding; a baseline fails exactly the groups it does not list; the JUnit XML and JSON
 // summary count what the campaign found; N shards merged are the campaign. And the legal
 // Bresenham allowance on random lines: the reference and one pixel fewer pass, a pixel two
-// away or sample 0 alone on 4x does not.
+// away or sample 0 alone on 4x does not; and a snapping tie rounded either way passes.
 // Implements (properties for): FUZZ.GROUP, FUZZ.BASELINE, FUZZ.RESULTS, FUZZ.SHARD,
-//   FUZZ.MERGE, FUZZ.COMPARE.LEGAL_LINES
+//   FUZZ.MERGE, FUZZ.COMPARE.LEGAL_LINES, FUZZ.COMPARE.LEGAL_TIES
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <random>
@@ -240,6 +241,48 @@ RC_GTEST_PROP(FuzzLegalLines, ReferenceAndOneFewerPassFarPixelsAndSampleZeroDoNo
       }
     }
   }
+}
+
+// rule: FUZZ.COMPARE.LEGAL_TIES
+RC_GTEST_PROP(FuzzLegalTies, EitherRoundingOfEveryTieIsLegal, ()) {
+  // A point or a triangle with coordinates on the pixel grid's 1/256 steps or half-way
+  // between two of them (a tie of SNAP.VERTEX.ROUND); the same primitive with any of its
+  // ties rounded the other way draws what legal mode accepts.
+  const auto coord =
+      rc::gen::map(rc::gen::pair(rc::gen::inRange(256, 1792), rc::gen::arbitrary<bool>()),
+                   [](const std::pair<int, bool>& p) {
+                     return (static_cast<float>(p.first) + (p.second ? 0.5F : 0.0F)) / 256.0F;
+                   });
+  Scene s;
+  s.width = 8;
+  s.height = 8;
+  const bool point = *rc::gen::arbitrary<bool>();
+  rastrules::Primitive prim;
+  prim.type = point ? rastrules::PrimitiveType::kPoint : rastrules::PrimitiveType::kTriangle;
+  prim.v.assign(point ? 1 : 3, {0.0F, 0.0F});
+  for (auto& v : prim.v)
+    v = {*coord, *coord};
+  s.primitives.push_back(prim);
+  if (*rc::gen::arbitrary<bool>())
+    rastrules::set_sample_pattern(s, rastrules::standard_pattern(4));
+  Scene other = s;
+  for (auto& v : other.primitives[0].v) {
+    for (float& c : v) {
+      const double raw = static_cast<double>(c) * 256.0;
+      const double below = std::floor(raw);
+      if (raw - below == 0.5 && *rc::gen::arbitrary<bool>()) {
+        const double odd = std::fmod(below, 2.0) == 0.0 ? below + 1.0 : below;
+        c = static_cast<float>(odd / 256.0);
+      }
+    }
+  }
+  auto r = rastrules::render(other);
+  RC_PRE(std::holds_alternative<std::vector<Fragment>>(r));
+  std::string err;
+  const auto c = fz::compare(s, std::get<std::vector<Fragment>>(r), fz::Profile::kVulkan,
+                             fz::Mode::kLegal, &err);
+  RC_ASSERT(c.has_value());
+  RC_ASSERT(c->match);
 }
 
 } // namespace

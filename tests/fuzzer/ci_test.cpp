@@ -192,6 +192,37 @@ TEST(FuzzLegalLines, DeviationsOutsideTheAllowanceStayDifferences) {
   EXPECT_FALSE(legal_match(strip, drop_first_of_seg1));
 }
 
+// FINDING.LAVAPIPE.POINT_SNAP and FINDING.OPENGL.POINT_SNAP: a point position exactly half a
+// subpixel between two 16.8 values rounded up instead of to even is legal (Vulkan and OpenGL
+// give no rounding mode), in x, in y and per sample on a 4x target; exact mode reports it,
+// and a coordinate off the tie gets no such allowance.
+// rule: FUZZ.COMPARE.LEGAL_TIES
+TEST(FuzzLegalTies, PointSnapTiesRoundedUpAreLegal) {
+  const Scene x = scene_of(R"({"version": 1, "target": {"width": 8, "height": 4},
+    "primitives": [{"type": "point", "v": [[6.001953125, 1.5]]}]})");
+  ASSERT_EQ(reference(x), (std::vector<Fragment>{Fragment{0, 5, 1}}));
+  const std::vector<Fragment> lavapipe = {Fragment{0, 6, 1}};
+  EXPECT_TRUE(legal_match(x, lavapipe));
+  EXPECT_TRUE(legal_match(x, lavapipe, Profile::kOpenGL));
+  EXPECT_FALSE(legal_match(x, lavapipe, Profile::kVulkan, Mode::kExact));
+  EXPECT_FALSE(legal_match(x, lavapipe, Profile::kD3D11, Mode::kLegal));
+  std::string err;
+  auto c = compare(x, lavapipe, Profile::kVulkan, Mode::kLegal, &err);
+  ASSERT_TRUE(c) << err;
+  EXPECT_TRUE(c->tie_rounding);
+  EXPECT_FALSE(c->line_allowance);
+  const Scene y = scene_of(R"({"version": 1, "target": {"width": 8, "height": 4},
+    "primitives": [{"type": "point", "v": [[6.5, 2.001953125]]}]})");
+  EXPECT_TRUE(legal_match(y, {Fragment{0, 6, 2}}));
+  const Scene msaa = scene_of(R"({"version": 1, "target": {"width": 8, "height": 4},
+    "samples": 4, "primitives": [{"type": "point", "v": [[6.126953125, 1.5]]}]})");
+  EXPECT_TRUE(legal_match(msaa, {Fragment{0, 5, 1, 0b0010}, Fragment{0, 6, 1, 0b1101}}));
+  // Off a tie (1535 raw) there is nothing to round: (6, 1) stays a difference.
+  const Scene off = scene_of(R"({"version": 1, "target": {"width": 8, "height": 4},
+    "primitives": [{"type": "point", "v": [[5.99609375, 1.5]]}]})");
+  EXPECT_FALSE(legal_match(off, lavapipe));
+}
+
 // rule: FUZZ.BASELINE
 TEST(FuzzBaseline, ReadsKnownGroupsAndNamesWhatIsWrong) {
   TempDir dir;

@@ -107,6 +107,8 @@ public:
       ++tally_[f];
     if (c->line_allowance)
       ++s.line_allowance;
+    if (c->tie_rounding)
+      ++s.tie_rounding;
     if (c->match)
       return true;
     ++s.mismatches;
@@ -227,6 +229,7 @@ std::optional<std::string> write_report(const Settings& settings, const std::str
             {"mismatches", s.mismatches},
             {"unique", s.unique},
             {"line_allowance", s.line_allowance},
+            {"tie_rounding", s.tie_rounding},
             {"families", families_json(s)},
             {"families_not_generated", not_generated_json(s)},
             {"seconds", s.seconds}});
@@ -357,6 +360,9 @@ void print_summary(std::FILE* out, const Settings& settings, const std::string& 
     if (s.line_allowance != 0)
       std::fprintf(out, "lines       %llu case(s) within the Bresenham allowance\n",
                    static_cast<unsigned long long>(s.line_allowance));
+    if (s.tie_rounding != 0)
+      std::fprintf(out, "ties        %llu case(s) with a snapping tie rounded the other way\n",
+                   static_cast<unsigned long long>(s.tie_rounding));
   }
   for (const Group& g : s.groups) {
     std::string known;

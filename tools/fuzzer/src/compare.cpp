@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Comparison of a driver's coverage with the reference kernel, exact or legal.
-// Implements: FUZZ.COMPARE.EXACT, FUZZ.COMPARE.LEGAL, FUZZ.COMPARE.LEGAL_LINES
+// Implements: FUZZ.COMPARE.EXACT, FUZZ.COMPARE.LEGAL, FUZZ.COMPARE.LEGAL_LINES,
+//             FUZZ.COMPARE.LEGAL_TIES
 
 #include <algorithm>
 #include <array>
@@ -135,50 +136,123 @@ bool segment_within_allowance(const SegmentPixels& got, const SegmentPixels& exa
   return (dx >= dy && one_per(true)) || (dy >= dx && one_per(false));
 }
 
-// Whether the driver's fragments equal the reference's (both raw) except in Bresenham line
-// segments, each of which deviates only as Vulkan and OpenGL allow.
 // rule: FUZZ.COMPARE.LEGAL_LINES
-bool equal_within_line_allowance(const Scene& scene, const std::vector<Fragment>& expected,
-                                 const std::vector<Fragment>& actual) {
-  std::vector<Fragment> e_rest, a_rest;
-  for (const Fragment& f : expected)
-    if (!relaxed_line(scene, f.prim))
-      e_rest.push_back(f);
-  for (const Fragment& f : actual)
-    if (!relaxed_line(scene, f.prim))
-      a_rest.push_back(f);
-  if (observable(e_rest) != observable(a_rest))
-    return false;
+// Whether primitive p's fragments (raw, of p only) deviate from the reference's only as a
+// Bresenham line may, segment by segment.
+bool line_within_allowance(const Scene& scene, std::uint32_t p,
+                           const std::vector<Fragment>& expected,
+                           const std::vector<Fragment>& actual) {
   const auto e = line_segments(scene, expected);
   const auto a = line_segments(scene, actual);
   if (!e || !a)
     return false;
-  const std::uint32_t full = scene.msaa.effective_mask();
   static const SegmentPixels kNone;
-  for (std::uint32_t p = 0; p < scene.primitives.size(); ++p) {
-    if (!relaxed_line(scene, p))
-      continue;
-    const auto& v = scene.primitives[p].v;
-    for (std::uint32_t k = 0; k + 1 < v.size(); ++k) {
-      const auto ei = e->find({p, k});
-      const auto ai = a->find({p, k});
-      if (!segment_within_allowance(ai == a->end() ? kNone : ai->second,
-                                    ei == e->end() ? kNone : ei->second, {v[k][0], v[k][1]},
-                                    {v[k + 1][0], v[k + 1][1]}, full))
-        return false;
-    }
+  const auto& v = scene.primitives[p].v;
+  for (std::uint32_t k = 0; k + 1 < v.size(); ++k) {
+    const auto ei = e->find({p, k});
+    const auto ai = a->find({p, k});
+    if (!segment_within_allowance(ai == a->end() ? kNone : ai->second,
+                                  ei == e->end() ? kNone : ei->second, {v[k][0], v[k][1]},
+                                  {v[k + 1][0], v[k + 1][1]}, scene.msaa.effective_mask()))
+      return false;
   }
   // No fragment of a segment the primitive does not have.
   for (const auto& [key, pixels] : *a) {
-    if (key.second + 1 >= scene.primitives[key.first].v.size())
+    if (key.second + 1 >= v.size())
       return false;
   }
+  return true;
+}
+
+// rule: FUZZ.COMPARE.LEGAL_TIES
+// Whether primitive p, with some of its coordinates that lie exactly half a subpixel between
+// two 16.8 values rounded the other way (up where SNAP.VERTEX.ROUND rounds down to even, and
+// the converse), gives the driver's fragments `actual` (observable, of p only).
+bool tie_rounding_explains(const Scene& scene, std::uint32_t p,
+                           const std::vector<Fragment>& actual) {
+  struct Tie {
+    std::size_t vertex;
+    int axis;
+    float other;
+  };
+  std::vector<Tie> ties;
+  const auto& v = scene.primitives[p].v;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    for (int axis = 0; axis < 2; ++axis) {
+      const double raw = static_cast<double>(v[k][static_cast<std::size_t>(axis)]) * 256.0;
+      const double below = std::floor(raw);
+      if (raw - below != 0.5)
+        continue;
+      // Round half to even takes the even neighbour; the other rounding takes the odd one.
+      const double odd = std::fmod(below, 2.0) == 0.0 ? below + 1.0 : below;
+      ties.push_back({k, axis, static_cast<float>(odd / 256.0)});
+    }
+  }
+  constexpr std::size_t kMaxTies = 8;
+  if (ties.empty() || ties.size() > kMaxTies)
+    return false;
+  for (std::uint32_t pick = 1; pick < (1u << ties.size()); ++pick) {
+    Scene other = scene;
+    for (std::size_t t = 0; t < ties.size(); ++t) {
+      if ((pick >> t & 1u) != 0)
+        other.primitives[p].v[ties[t].vertex][static_cast<std::size_t>(ties[t].axis)] =
+            ties[t].other;
+    }
+    auto r = render(other);
+    if (!std::holds_alternative<std::vector<Fragment>>(r))
+      continue;
+    std::vector<Fragment> mine;
+    for (const Fragment& f : std::get<std::vector<Fragment>>(r)) {
+      if (f.prim == p)
+        mine.push_back(f);
+    }
+    if (observable(mine) == actual)
+      return true;
+  }
+  return false;
+}
+
+// Whether the driver's fragments equal the reference's (both raw, the scene under one fill
+// convention) primitive by primitive, each exactly, or a Bresenham line within its allowance
+// (*lines set), or with ties of its coordinates rounded the other way (*ties set).
+// rule: FUZZ.COMPARE.LEGAL_LINES, FUZZ.COMPARE.LEGAL_TIES
+bool equal_within_allowances(const Scene& scene, const std::vector<Fragment>& expected,
+                             const std::vector<Fragment>& actual, bool* lines, bool* ties) {
+  const std::size_t n = scene.primitives.size();
+  std::vector<std::vector<Fragment>> e(n), a(n);
+  for (const Fragment& f : expected) {
+    if (f.prim < n)
+      e[f.prim].push_back(f);
+  }
+  for (const Fragment& f : actual) {
+    if (f.prim >= n)
+      return false;
+    a[f.prim].push_back(f);
+  }
+  bool used_lines = false, used_ties = false;
+  for (std::uint32_t p = 0; p < n; ++p) {
+    const std::vector<Fragment> got = observable(a[p]);
+    if (observable(e[p]) == got)
+      continue;
+    if (relaxed_line(scene, p) && line_within_allowance(scene, p, e[p], a[p])) {
+      used_lines = true;
+      continue;
+    }
+    if (scene.primitives[p].type != PrimitiveType::kPath && tie_rounding_explains(scene, p, got)) {
+      used_ties = true;
+      continue;
+    }
+    return false;
+  }
+  *lines = used_lines;
+  *ties = used_ties;
   return true;
 }
 
 } // namespace
 
 // rule: FUZZ.COMPARE.EXACT, FUZZ.COMPARE.LEGAL, FUZZ.COMPARE.LEGAL_LINES
+// rule: FUZZ.COMPARE.LEGAL_TIES
 std::optional<Comparison> compare(const Scene& scene, const std::vector<Fragment>& actual,
                                   Profile profile, Mode mode, std::string* error) {
   Comparison c;
@@ -198,7 +272,7 @@ std::optional<Comparison> compare(const Scene& scene, const std::vector<Fragment
   // Vulkan and OpenGL allow any fill convention that is applied consistently (the order of
   // FillConvention), and Bresenham lines within their allowance; the scene's own result stays
   // the one shown when nothing explains the driver's.
-  bool lines_relaxed = false;
+  bool lines_relaxed = false, ties_relaxed = false;
   for (const FillConvention f : {FillConvention::kTopLeft, FillConvention::kTopRight,
                                  FillConvention::kBottomLeft, FillConvention::kBottomRight}) {
     std::optional<std::vector<Fragment>> raw;
@@ -213,16 +287,20 @@ std::optional<Comparison> compare(const Scene& scene, const std::vector<Fragment
     }
     std::vector<Fragment> expected = observable(*raw);
     bool explains = expected == c.actual;
-    bool by_lines = false;
-    if (!explains && equal_within_line_allowance(scene, *raw, actual))
-      explains = by_lines = true;
+    bool by_lines = false, by_ties = false;
+    if (!explains) {
+      Scene under = scene;
+      under.conventions.fill = f;
+      explains = equal_within_allowances(under, *raw, actual, &by_lines, &by_ties);
+    }
     if (!explains)
       continue;
-    if (f != scene.conventions.fill || by_lines)
+    if (f != scene.conventions.fill || by_lines || by_ties)
       c.conventions.push_back(f);
     if (!c.match) {
       c.match = true;
       lines_relaxed = by_lines;
+      ties_relaxed = by_ties;
       c.compared_with = f;
       c.expected = std::move(expected);
       c.missing.clear();
@@ -230,6 +308,7 @@ std::optional<Comparison> compare(const Scene& scene, const std::vector<Fragment
     }
   }
   c.line_allowance = lines_relaxed;
+  c.tie_rounding = ties_relaxed;
   std::sort(c.conventions.begin(), c.conventions.end());
   c.conventions.erase(std::unique(c.conventions.begin(), c.conventions.end()), c.conventions.end());
   return c;

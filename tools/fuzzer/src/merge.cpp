@@ -110,6 +110,7 @@ std::optional<Summary> merge_reports(const std::vector<std::string>& dirs, Setti
       for (const json& c : j->at("skipped_cases"))
         s.skipped_cases.push_back(c.get<std::uint64_t>());
       s.line_allowance += j->at("line_allowance").get<std::uint64_t>();
+      s.tie_rounding += j->at("tie_rounding").get<std::uint64_t>();
       s.seconds += j->at("seconds").get<double>();
       for (const auto& [name, n] : j->at("families").items()) {
         s.families[name].cases += n.at("cases").get<std::uint64_t>();

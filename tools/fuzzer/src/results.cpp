@@ -162,6 +162,7 @@ std::string summary_json(const Settings& st, const std::string& description, con
             {"mismatches", s.mismatches},
             {"unique_scenes", s.unique},
             {"line_allowance", s.line_allowance},
+            {"tie_rounding", s.tie_rounding},
             {"seconds", s.seconds}});
   json skipped = {{"cases", s.skipped},
                   {"case_indices", s.skipped_cases},

@@ -94,6 +94,9 @@ struct Comparison {
   // Legal mode: the driver's Bresenham lines differ from the reference's within the deviations
   // Vulkan and OpenGL allow (FUZZ.COMPARE.LEGAL_LINES), and that is what made the case match.
   bool line_allowance = false;
+  // Legal mode: some coordinate exactly half a subpixel between two 16.8 values, rounded the
+  // other way (FUZZ.COMPARE.LEGAL_TIES), made the case match.
+  bool tie_rounding = false;
 };
 
 // The rule and the class of a difference, by which findings are grouped.
@@ -218,6 +221,7 @@ struct Summary {
   std::uint64_t mismatches = 0;
   std::uint64_t unique = 0;         // distinct shrunk scenes
   std::uint64_t line_allowance = 0; // legal mode: cases that match by FUZZ.COMPARE.LEGAL_LINES
+  std::uint64_t tie_rounding = 0;   // legal mode: cases that match by FUZZ.COMPARE.LEGAL_TIES
   double seconds = 0;
   std::vector<Finding> findings;
   std::vector<Group> groups;                   // FUZZ.GROUP, after the campaign
