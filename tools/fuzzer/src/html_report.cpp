@@ -41,35 +41,6 @@ std::string what(std::pair<bool, bool> me) {
   return me.first && me.second ? "missing and extra" : (me.first ? "missing" : "extra");
 }
 
-// Returns the first rule ID (A.B or longer, upper case) on the first line after "decided by:".
-std::string decided_by(const std::string& explanation) {
-  const std::size_t at = explanation.find("decided by:");
-  if (at == std::string::npos)
-    return {};
-  const std::size_t line = explanation.find('\n', at);
-  if (line == std::string::npos)
-    return {};
-  const std::size_t end = explanation.find('\n', line + 1);
-  const std::string next = explanation.substr(line + 1, end - line - 1);
-  for (std::size_t i = 0; i < next.size(); ++i) {
-    const auto id_char = [](char c) {
-      return (c >= 'A' && c <= 'Z') || c == '_' || c == '.' || (c >= '0' && c <= '9');
-    };
-    if (next[i] < 'A' || next[i] > 'Z')
-      continue;
-    std::size_t j = i;
-    while (j < next.size() && id_char(next[j]))
-      ++j;
-    std::string id = next.substr(i, j - i);
-    while (!id.empty() && id.back() == '.')
-      id.pop_back();
-    if (id.find('.') != std::string::npos)
-      return id;
-    i = j;
-  }
-  return {};
-}
-
 // The explanation of pixel (x, y) of the finding's shrunk scene, or why there is none.
 std::string explain(const Scene& scene, const PreparedScene* prepared, std::int32_t x,
                     std::int32_t y) {
@@ -119,27 +90,6 @@ std::string summary_table(const Settings& st, const std::string& description, co
 
 } // namespace
 
-FindingClass classify(const Finding& f) {
-  FindingClass k;
-  const auto pixels = differing_pixels(f.comparison);
-  bool missing = false, extra = false;
-  for (const auto& p : pixels) {
-    missing = missing || p.second.first;
-    extra = extra || p.second.second;
-  }
-  k.cls = what({missing, extra});
-  if (pixels.empty())
-    return k;
-  auto prepared = prepare(f.shrunk);
-  if (const auto* ps = std::get_if<PreparedScene>(&prepared)) {
-    const auto [xy, me] = pixels.front();
-    k.rule = decided_by(explain(f.shrunk, ps, xy.first, xy.second));
-  }
-  if (k.rule.empty())
-    k.rule = "(not named)";
-  return k;
-}
-
 // rule: FUZZ.REPORT.HTML
 std::optional<std::string> write_html_report(const Settings& settings,
                                              const std::string& driver_description,
@@ -162,19 +112,18 @@ std::optional<std::string> write_html_report(const Settings& settings,
   for (const Finding& f : summary.findings)
     if (!f.duplicate_of)
       unique.push_back(&f);
+  // The groups of FUZZ.GROUP (Finding::group), as the summary and report.json list them.
   std::map<std::pair<std::string, std::string>, std::vector<const Finding*>> groups;
-  std::map<const Finding*, FindingClass> classes;
-  for (const Finding* f : unique) {
-    classes[f] = classify(*f);
-    groups[{classes[f].rule, classes[f].cls}].push_back(f);
-  }
+  for (const Finding* f : unique)
+    groups[{f->group.rule, f->group.klass}].push_back(f);
   h += "<h2>Findings by rule and class</h2>\n";
   if (unique.empty()) {
     h += "<p>No difference: every case drawn agrees with the reference.</p>\n";
   } else {
-    h += "<p>The rule is the one that decided the reference's answer at the finding's first "
-         "differing pixel; the class says whether the driver misses coverage the reference "
-         "has, adds coverage it does not have, or both.</p>\n"
+    h += "<p>The groups of FUZZ.GROUP: the rule is the one the reference kernel applied at the "
+         "finding's first differing pixel; the class names that pixel's primitive type and "
+         "whether the driver misses coverage the reference has, adds coverage it does not have, "
+         "or both (and the sample count of a multisampled target).</p>\n"
          "<table>\n<tr><th>rule</th><th>class</th><th>unique findings</th>"
          "<th>with duplicates</th><th>cases</th></tr>\n";
     for (const auto& [key, list] : groups) {
@@ -204,8 +153,8 @@ std::optional<std::string> write_html_report(const Settings& settings,
     const Comparison& c = f->comparison;
     const auto pixels = differing_pixels(c);
     h += "<section id=\"" + id + "\">\n<h3>case " + std::to_string(f->case_index) + " (" +
-         html_escape(f->family) + "): " + html_escape(classes[f].rule) + ", " +
-         html_escape(classes[f].cls) + "</h3>\n";
+         html_escape(f->family) + "): " + html_escape(f->group.rule) + ", " +
+         html_escape(f->group.klass) + "</h3>\n";
     h += "<p>" + std::to_string(f->original.primitives.size()) + " primitive(s) shrunk to " +
          std::to_string(f->shrunk.primitives.size()) + " in a " + std::to_string(f->shrunk.width) +
          "x" + std::to_string(f->shrunk.height) + " target; " + std::to_string(c.missing.size()) +

@@ -12,15 +12,6 @@
 
 namespace rastrules::fuzzer {
 
-// The rule that decided the reference's answer at a finding's first differing pixel (the first
-// rule named under "decided by:" in its explanation) and the finding's class: "missing",
-// "extra" or "missing and extra".
-struct FindingClass {
-  std::string rule;
-  std::string cls;
-};
-[[nodiscard]] FindingClass classify(const Finding& f);
-
 // Writes settings.out_dir/index.html for a finished campaign: the summary table, the unique
 // findings counted by rule and class, and per unique finding its picture (expected | actual |
 // difference) with a caption and the legend, its minimal scene inline, links to its files and
