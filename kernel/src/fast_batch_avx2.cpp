@@ -116,7 +116,9 @@ inline std::uint32_t cover_rows(const Lanes& g, int t, std::uint32_t* hit, std::
   const std::int32_t rows = g.rows[t];
   for (std::int32_t j = 0; j < rows; ++j) {
     __m256i l0 = row[0], l1 = row[1], l2 = row[2];
-    std::uint32_t* h = hit + static_cast<std::size_t>(j) * stride;
+    // Only a counting walk (kHits false) passes hit == nullptr: no row pointer is formed then
+    // (an offset on a null pointer is undefined behaviour, which clang's UBSan reports).
+    std::uint32_t* h = kHits ? hit + static_cast<std::size_t>(j) * stride : nullptr;
     for (std::int32_t c = 0; c < full; ++c) {
       const __m256i in = _mm256_cmpgt_epi32(_mm256_or_si256(_mm256_or_si256(l0, l1), l2), minus1);
       acc = _mm256_sub_epi32(acc, in);
