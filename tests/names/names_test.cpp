@@ -96,11 +96,12 @@ TEST(Names, TheOracleAcceptsExactlyTheseWords) {
     (void)oracle::render(s);
   };
   for (const auto& [word, value] : Names<CullMode>::table)
-    EXPECT_FALSE(rejects([&] { tri({std::string(word), "cw", "top-left"}); })) << word;
+    EXPECT_FALSE(rejects([&, w = word] { tri({std::string(w), "cw", "top-left"}); })) << word;
   for (const auto& [word, value] : Names<FrontFace>::table)
-    EXPECT_FALSE(rejects([&] { tri({"back", std::string(word), "top-left"}); })) << word;
+    EXPECT_FALSE(rejects([&, w = word] { tri({"back", std::string(w), "top-left"}); })) << word;
   for (const auto& [word, value] : Names<FillConvention>::table)
-    EXPECT_FALSE(rejects([&] { (void)oracle::point_covers(a, b, std::string(word)); })) << word;
+    EXPECT_FALSE(rejects([&, w = word] { (void)oracle::point_covers(a, b, std::string(w)); }))
+        << word;
   EXPECT_TRUE(rejects([&] { tri({"sideways", "cw", "top-left"}); }));
   // Line modes: aliased ones by the line oracle, every one by the multisample oracle.
   for (const LineMode m : {LineMode::kD3DDiamond, LineMode::kVulkanBresenham})
@@ -123,8 +124,8 @@ TEST(Names, TheOracleAcceptsExactlyTheseWords) {
   }
   // Multisampling: centroid rules, shading, derivatives.
   for (const auto& [word, value] : Names<CentroidRule>::table)
-    EXPECT_FALSE(rejects([&] {
-      (void)oracle::msaa::centroid(std::string(word), 1, 0xF, oracle::msaa::standard_pattern(4));
+    EXPECT_FALSE(rejects([&, w = word] {
+      (void)oracle::msaa::centroid(std::string(w), 1, 0xF, oracle::msaa::standard_pattern(4));
     })) << word;
   for (const auto& [word, value] : Names<ShadingRate>::table) {
     oracle::msaa::Input in;
@@ -140,17 +141,17 @@ TEST(Names, TheOracleAcceptsExactlyTheseWords) {
   }
   // The pipeline: depth formats, compare functions, provoking vertices.
   for (const auto& [word, value] : Names<pipe::DepthFormat>::table)
-    EXPECT_FALSE(rejects([&] {
-      (void)oracle::pipe::store_exact(0.5, 0.0f, 1.0f, std::string(word));
+    EXPECT_FALSE(rejects([&, w = word] {
+      (void)oracle::pipe::store_exact(0.5, 0.0f, 1.0f, std::string(w));
     })) << word;
   for (const auto& [word, value] : Names<pipe::CompareFunc>::table)
-    EXPECT_FALSE(rejects([&] {
-      (void)oracle::pipe::depth_test(std::string(word), oracle::pipe::Stored{},
-                                     oracle::pipe::Stored{}, "d24");
+    EXPECT_FALSE(rejects([&, w = word] {
+      (void)oracle::pipe::depth_test(std::string(w), oracle::pipe::Stored{}, oracle::pipe::Stored{},
+                                     "d24");
     })) << word;
   for (const auto& [word, value] : Names<pipe::Provoking>::table)
-    EXPECT_FALSE(rejects([&] {
-      (void)oracle::pipe::flat_value({1.0f, 2.0f}, std::string(word));
+    EXPECT_FALSE(rejects([&, w = word] {
+      (void)oracle::pipe::flat_value({1.0f, 2.0f}, std::string(w));
     })) << word;
   EXPECT_TRUE(rejects([] { (void)oracle::pipe::flat_value({1.0f}, "middle"); }));
 }

@@ -243,8 +243,9 @@ std::string msaa_disagreement(const PreparedScene& scene, const PixelDecision& d
   }
   for (const auto* m : {&pf.mask, &pf.helpers}) {
     for (const auto& [seg, bits] : *m) {
-      const bool recorded = std::any_of(d.msaa->segments.begin(), d.msaa->segments.end(),
-                                        [&](const SegmentMaskDecision& g) { return g.seg == seg; });
+      const bool recorded =
+          std::any_of(d.msaa->segments.begin(), d.msaa->segments.end(),
+                      [s = seg](const SegmentMaskDecision& g) { return g.seg == s; });
       if (!recorded)
         return "segment " + std::to_string(seg) + ": fragments but no record";
     }
