@@ -3,9 +3,10 @@
 // output options, their values, their order and repetitions), run in-process on small fixed
 // scenes in a scratch folder. Must never crash, leak or hit undefined behaviour, and
 // - the exit status is 0, 1 (explain: the pixel is not covered) or 2 (bad input);
-// - a failed command prints exactly one "rastrules: error:" line (a usage error may add the
-//   usage text after it) and a successful one none; no exception escapes (the command line's
-//   main would report it as an internal error);
+// - a failed command prints exactly one "rastrules: error:" line, first (a usage error adds
+//   one hint line "run 'rastrules COMMAND --help'" after it, never the help) and a successful
+//   one none; --help prints the command's help and succeeds; no exception escapes (the command
+//   line's main would report it as an internal error);
 // - a failed command leaves the folder as it was: no output file, no input overwritten;
 // - no temporary output file (.rastrules-PID-N.tmp) is ever left behind (an output the
 //   command names may itself begin with ".rastrules-": only the temporaries' form counts).
@@ -115,6 +116,8 @@ int run(bool render, const std::vector<std::string>& args, std::string& err) {
   ::dup2(null_fd, 1);
   ::dup2(err_fd, 2);
   int status = -1;
+  // Each input starts from the default verbosity (an earlier input's -q/-v must not leak).
+  rastrules::cli::set_verbosity(rastrules::cli::Verbosity::kNormal);
   try {
     status = render ? rastrules::cli::run_render(args) : rastrules::cli::run_explain(args);
   } catch (const std::bad_alloc&) {
@@ -181,6 +184,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   if (status == 2 && (error_lines != 1 || err.rfind("rastrules: error: ", 0) != 0))
     fail("a failed command must print exactly one error line, first", details, data, size);
+  // rule: SCENE.INPUT.ERRORS
+  // At most the error line and one hint line: never the help after an error.
+  std::size_t lines = 0;
+  for (const char c : err)
+    lines += c == '\n' ? 1u : 0u;
+  if (status == 2 && lines > 2)
+    fail("a usage error printed more than the error line and one hint", details, data, size);
   if (status == 0 && error_lines != 0)
     fail("a successful command printed an error", details, data, size);
 

@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <thread>
 
 #include "cli.hpp"
+#include "parser.hpp"
 #include "rastrules/bench/ladder.hpp"
 #include "rastrules/driver/timing.hpp"
 #include "rastrules/io/image.hpp"
@@ -44,42 +46,42 @@ bench::LavapipeFigure time_lavapipe(const bench::LadderScene& s, int repeats) {
 
 // rule: BENCH.REPORT
 int run_bench(const Args& args) {
+  CommandLine cl("bench",
+                 "The precision ladder (spec/bench.md): the same scenes rasterized by float, "
+                 "double, scanline, 4-bit/32-bit, the reference (plain and fast), 16-bit/128-bit "
+                 "and the exact oracle, with speed (ratios to the reference), errors, "
+                 "watertightness, translation invariance and lavapipe's time; prints the table "
+                 "(-q: no progress on standard error).");
   bool ladder = false;
   bench::LadderConfig config;
   config.threads = std::max(1u, std::thread::hardware_concurrency());
-  std::optional<std::string> out_dir;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--ladder") {
-      ladder = true;
-    } else if (a == "--quick") {
-      config.quick = true;
-    } else if (a == "--threads") {
-      // rule: BENCH.METRIC.THROUGHPUT
-      const std::optional<std::string> v =
-          i + 1 < args.size() ? std::optional<std::string>(args[++i]) : std::nullopt;
-      const auto n = v ? parse_int(*v, 1, kMaxThreads) : std::nullopt;
-      if (!n)
-        return error("--threads needs an integer in [1, " + std::to_string(kMaxThreads) +
-                     "], got " + shown_value(v));
-      config.threads = static_cast<unsigned>(*n);
-    } else if (a == "--seed" || a == "--out") {
-      if (i + 1 >= args.size())
-        return error(a + ": missing value");
-      const std::string& v = args[++i];
-      if (a == "--out") {
-        if (v.empty())
-          return error("--out: must name a directory");
-        out_dir = v;
-      } else {
-        const auto n = parse_int(v, 0, 1000000000);
-        if (!n)
-          return error("--seed: must be an integer in [0, 1000000000], got " + shown_value(v));
-        config.seed = static_cast<std::uint64_t>(*n);
-      }
-    } else {
-      return usage_error("bench: unknown option " + shown_value(a));
-    }
+  std::optional<std::string> out_dir, threads, seed;
+  cl.flag("--ladder", ladder, "run the precision ladder (the only benchmark; required)");
+  cl.value("--out", out_dir, "DIR", "also write DIR/ladder.md, ladder.json and ladder.png",
+           "--out: must name a directory, got nothing");
+  cl.flag("--quick", config.quick, "shorter timings");
+  cl.value("--seed", seed, "N", "the scenes' seed",
+           "--seed: must be an integer in [0, 1000000000], got nothing");
+  cl.value("--threads", threads, "N",
+           "time the fast path on N threads too (default: one per processor)",
+           "--threads needs an integer in [1, " + std::to_string(kMaxThreads) + "], got nothing");
+  if (const auto stop = cl.parse(args, "bench: "))
+    return *stop;
+  if (threads) {
+    // rule: BENCH.METRIC.THROUGHPUT
+    const auto n = parse_int(*threads, 1, kMaxThreads);
+    if (!n)
+      return error("--threads needs an integer in [1, " + std::to_string(kMaxThreads) + "], got " +
+                   shown_value(threads));
+    config.threads = static_cast<unsigned>(*n);
+  }
+  if (out_dir && out_dir->empty())
+    return error("--out: must name a directory");
+  if (seed) {
+    const auto n = parse_int(*seed, 0, 1000000000);
+    if (!n)
+      return error("--seed: must be an integer in [0, 1000000000], got " + shown_value(seed));
+    config.seed = static_cast<std::uint64_t>(*n);
   }
   if (!ladder)
     return usage_error("bench: missing --ladder (the only benchmark: bench --ladder [--out DIR] "
@@ -99,7 +101,10 @@ int run_bench(const Args& args) {
   const int lavapipe_repeats = config.quick ? 5 : 21;
   const bench::LadderReport report = bench::run_ladder(
       config, [&](const bench::LadderScene& s) { return time_lavapipe(s, lavapipe_repeats); },
-      [](const std::string& line) { std::fprintf(stderr, "bench: %s\n", line.c_str()); });
+      [](const std::string& line) {
+        if (verbosity() != Verbosity::kQuiet)
+          std::fprintf(stderr, "bench: %s\n", line.c_str());
+      });
   const std::string md = bench::to_markdown(report);
   std::fputs(md.c_str(), stdout);
   std::fflush(stdout);
@@ -125,8 +130,9 @@ int run_bench(const Args& args) {
     return error(png_path + ": " + *err);
   if (auto err = png.commit())
     return error(*err);
-  std::fprintf(stderr, "bench: wrote %s/ladder.md, ladder.json, ladder.png in %.1f s\n",
-               dir.string().c_str(), report.seconds_total);
+  if (verbosity() != Verbosity::kQuiet)
+    std::fprintf(stderr, "bench: wrote %s/ladder.md, ladder.json, ladder.png in %.1f s\n",
+                 dir.string().c_str(), report.seconds_total);
   return kExitOk;
 }
 

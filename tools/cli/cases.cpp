@@ -3,28 +3,28 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "cli.hpp"
+#include "parser.hpp"
 #include "rastrules/cases/cases.hpp"
 
 namespace rastrules::cli {
 
 // rule: PIPE.CATALOG
 int run_cases(const Args& args) {
-  std::string dir = "spec/cases";
-  bool dir_given = false;
-  for (const std::string& a : args) {
-    if (a == "--help" || a == "-h") {
-      print_usage(stdout);
-      return kExitOk;
-    }
-    if (!a.empty() && a[0] == '-')
-      return usage_error("cases: unexpected option " + shown_value(a));
-    if (dir_given)
-      return usage_error("cases: more than one directory");
-    dir = a;
-    dir_given = true;
-  }
+  CommandLine cl("cases",
+                 "Check the hard-case catalog (PIPE.CATALOG): each case run with and without the "
+                 "optimizations, its values against the exact oracle's bounds and its "
+                 "NAME.expect.json; one line per case (-q: the failures and the last line), exit "
+                 "status 1 on a failure.");
+  std::vector<std::string> dirs;
+  cl.positionals("DIR", dirs, "the catalog's folder (default spec/cases)");
+  if (const auto stop = cl.parse(args, "cases: "))
+    return *stop;
+  if (dirs.size() > 1)
+    return usage_error("cases: more than one directory");
+  const std::string dir = dirs.empty() ? std::string("spec/cases") : dirs.front();
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec))
     return error(dir + ": not a directory (the catalog is spec/cases in the source tree)");
@@ -34,8 +34,24 @@ int run_cases(const Args& args) {
   std::vector<cases::CaseReport> reports;
   for (const auto& s : scenes)
     reports.push_back(cases::check_case(s));
-  const std::string text = cases::format_report(reports);
-  std::fputs(text.c_str(), stdout);
+  if (verbosity() == Verbosity::kQuiet) {
+    // rule: SCENE.INPUT.ERRORS
+    // -q: the failing cases' lines and the last line.
+    std::vector<cases::CaseReport> failed;
+    for (const auto& r : reports)
+      if (!r.ok())
+        failed.push_back(r);
+    std::string text = cases::format_report(failed);
+    text.erase(text.rfind('\n', text.size() - 2) + 1); // the count of the failures alone
+    if (failed.empty())
+      text.clear();
+    std::fputs(text.c_str(), stdout);
+    const std::size_t held = reports.size() - failed.size();
+    std::printf("%zu of %zu cases hold\n", held, reports.size());
+  } else {
+    const std::string text = cases::format_report(reports);
+    std::fputs(text.c_str(), stdout);
+  }
   for (const auto& r : reports)
     if (!r.ok())
       return kExitDifference;

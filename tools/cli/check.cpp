@@ -9,9 +9,10 @@
 namespace rastrules::cli {
 
 int run_check(const Args& args) {
-  auto o = parse_fuzz_options(args, true, false);
+  int status = kExitBadInput;
+  auto o = parse_fuzz_options(args, true, false, status);
   if (!o)
-    return kExitBadInput;
+    return status;
   o->settings.cases = 1;
   o->settings.progress = false;
   auto loaded = load_window_scene(o->scene_path);

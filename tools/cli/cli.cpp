@@ -24,7 +24,9 @@ int error(std::string_view message) {
 
 void print_usage(std::FILE* out) {
   std::fputs(
-      "usage: rastrules <command> [options]\n"
+      "usage: rastrules [-q|-v] <command> [options]\n"
+      "       rastrules help COMMAND (or rastrules COMMAND --help): the command's options\n"
+      "       rastrules --version\n"
       "\n"
       "commands:\n"
       "  render SCENE.json [--fragments OUT.json] [--png OUT.png] [--scale N]\n"
@@ -107,9 +109,11 @@ void print_usage(std::FILE* out) {
       "      Write a glyph of a font file (C: one character or U+XXXX; N px, default 64)\n"
       "      as a path scene (SCENE.PRIM.PATH) through FreeType's unhinted outline, exactly\n"
       "      (PATH.GLYPH.SOURCE), to standard output or SCENE.json. Built with FreeType.\n"
-      "  help\n"
-      "      Show this text (also --help, -h).\n"
+      "  help [COMMAND]\n"
+      "      Show this text (also --help, -h), or COMMAND's options.\n"
       "\n"
+      "every command: -h/--help, -q/--quiet (errors and results only), -v/--verbose (more\n"
+      "detail, e.g. a campaign's progress); --opt VALUE or --opt=VALUE.\n"
       "exit status: 0 success, 1 a difference was found (showcase, fuzz, check, fuzz-merge,\n"
       "cases; with --baseline: one it does not list), 2 bad "
       "input\n"
@@ -117,9 +121,32 @@ void print_usage(std::FILE* out) {
       out);
 }
 
+namespace {
+std::string& current_command() {
+  static std::string command;
+  return command;
+}
+Verbosity& current_verbosity() {
+  static Verbosity v = Verbosity::kNormal;
+  return v;
+}
+} // namespace
+
+void set_current_command(std::string_view command) {
+  current_command() = command;
+}
+Verbosity verbosity() {
+  return current_verbosity();
+}
+void set_verbosity(Verbosity v) {
+  current_verbosity() = v;
+}
+
+// rule: SCENE.INPUT.ERRORS
 int usage_error(std::string_view reason) {
   error(reason);
-  print_usage(stderr);
+  const std::string& c = current_command();
+  std::fprintf(stderr, "run 'rastrules %s--help'\n", c.empty() ? "" : (c + " ").c_str());
   return kExitBadInput;
 }
 
@@ -198,14 +225,15 @@ std::optional<pipe::PipeResult> run_pipeline_or_report(const Scene& scene,
   return std::move(std::get<pipe::PipeResult>(result));
 }
 
-std::optional<int> take_scene_argument(std::string_view command, const std::string& a,
-                                       std::optional<std::string>& scene_path) {
+std::optional<int> take_scene_argument(std::string_view command,
+                                       const std::vector<std::string>& positionals,
+                                       std::string& scene_path) {
   const std::string prefix = std::string(command) + ": ";
-  if (a.size() > 1 && a[0] == '-')
-    return usage_error(prefix + "unknown option " + shown_value(a));
-  if (scene_path)
+  if (positionals.empty())
+    return usage_error(prefix + "missing SCENE.json");
+  if (positionals.size() > 1)
     return usage_error(prefix + "more than one scene file");
-  scene_path = a;
+  scene_path = positionals.front();
   return std::nullopt;
 }
 

@@ -30,11 +30,27 @@ using Args = std::vector<std::string>;
 // Prints "rastrules: error: MESSAGE" as one line on standard error. Returns kExitBadInput.
 int error(std::string_view message);
 
-// Prints the usage text on standard error and returns kExitBadInput, after a one-line reason.
+// Prints "rastrules: error: REASON" and the hint "run 'rastrules COMMAND --help'" (the command
+// being parsed, or 'rastrules --help' before one is known) on standard error, never the whole
+// help. Returns kExitBadInput.
+// rule: SCENE.INPUT.ERRORS
 int usage_error(std::string_view reason);
 
-// Prints the usage text on `out`.
+// The command whose options are being read, named by usage_error()'s hint ("" before one).
+void set_current_command(std::string_view command);
+
+// How much a command says besides errors and results: -q (quiet: no progress or summary
+// text), -v (verbose: more detail where a command has it, e.g. a campaign's progress).
+enum class Verbosity { kQuiet, kNormal, kVerbose };
+Verbosity verbosity();
+void set_verbosity(Verbosity v);
+
+// Prints the overview of the commands (rastrules --help) on `out`.
 void print_usage(std::FILE* out);
+
+// The project's version (CMake's project(VERSION)) and the scene format's (SCENE.FORMAT.V1),
+// as `rastrules --version` prints them.
+inline constexpr int kSceneFormatVersion = 1;
 
 // A scene read from a file; prepared by the kernel when it has no pipeline state (a scene with
 // pipeline state is validated and drawn by rastrules::pipe::run_pipeline()).
@@ -87,11 +103,12 @@ using io::OutputFile;
 using io::same_output_file;
 using io::write_text;
 
-// Takes `a`, an argument of `command` (render, explain) that no option took, as the one scene
-// file. Returns nullopt when taken, else the exit status of the usage error (an unknown option,
-// a second scene file).
-std::optional<int> take_scene_argument(std::string_view command, const std::string& a,
-                                       std::optional<std::string>& scene_path);
+// The one scene file among the arguments of `command` (render, explain) that no option took.
+// Returns nullopt when there is exactly one, else the exit status of the usage error (none, a
+// second scene file).
+std::optional<int> take_scene_argument(std::string_view command,
+                                       const std::vector<std::string>& positionals,
+                                       std::string& scene_path);
 
 // Parses a decimal integer in [lo, hi]; nullopt when the text is anything else.
 std::optional<std::int64_t> parse_int(std::string_view text, std::int64_t lo, std::int64_t hi);
@@ -105,7 +122,6 @@ int run_fuzz_merge(const Args& args);
 int run_probe(const Args& args);
 int run_bench(const Args& args);
 int run_glyph(const Args& args); // glyph.cpp: a glyph of a font file as a path scene
-int run_cases(const Args& args); // cases.cpp: the hard-case catalog (PIPE.CATALOG)  // bench.cpp:
-                                 // the precision ladder (BENCH.REPORT)
+int run_cases(const Args& args); // cases.cpp: the hard-case catalog (PIPE.CATALOG)
 
 } // namespace rastrules::cli

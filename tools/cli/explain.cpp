@@ -7,37 +7,34 @@
 #include <optional>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "cli.hpp"
+#include "parser.hpp"
 #include "rastrules/io/explain.hpp"
 #include "rastrules/io/scene_json.hpp"
 
 namespace rastrules::cli {
 
 int run_explain(const Args& args) {
-  std::optional<std::string> scene_path, pixel;
+  CommandLine cl("explain",
+                 "For every primitive: its snapped vertices, area, winding, culling, and for each "
+                 "edge the exact edge value at the centre of pixel (X, Y), whether it is a top or "
+                 "left edge, and the rule that decided; then whether the pixel is covered. "
+                 "Multisampled scenes: every sample, the masks and the centroid branch; pipeline "
+                 "scenes: the fragments run_pipeline produces at the pixel; paths: each sample's "
+                 "crossings, winding number, fill rule's verdict and the pixel's exact area.");
+  std::vector<std::string> scenes;
+  std::optional<std::string> pixel;
   bool as_json = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--help" || a == "-h") {
-      print_usage(stdout);
-      return kExitOk;
-    } else if (a == "--json") {
-      as_json = true;
-    } else if (a == "--pixel" || a.rfind("--pixel=", 0) == 0) {
-      if (a != "--pixel") {
-        pixel = a.substr(8);
-      } else if (i + 1 < args.size()) {
-        pixel = args[++i];
-      } else {
-        return usage_error("--pixel needs X,Y");
-      }
-    } else if (const auto status = take_scene_argument("explain", a, scene_path)) {
-      return *status;
-    }
-  }
-  if (!scene_path)
-    return usage_error("explain: missing SCENE.json");
+  cl.scene_files(scenes);
+  cl.value("--pixel", pixel, "X,Y", "the pixel to explain (required)", "--pixel needs X,Y");
+  cl.flag("--json", as_json, "one JSON document instead of the text");
+  if (const auto stop = cl.parse(args, "explain: "))
+    return *stop;
+  std::string scene_path;
+  if (const auto status = take_scene_argument("explain", scenes, scene_path))
+    return *status;
   if (!pixel)
     return usage_error("explain: missing --pixel X,Y");
   const std::size_t comma = pixel->find(',');
@@ -53,7 +50,7 @@ int run_explain(const Args& args) {
                  "], got \"" + io::printable(*pixel, 40) + "\"");
   }
 
-  const auto loaded = load_scene(*scene_path);
+  const auto loaded = load_scene(scene_path);
   if (!loaded)
     return kExitBadInput;
   const auto x = static_cast<std::int32_t>(*px_x);

@@ -9,9 +9,12 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "cli.hpp"
 #include "fuzz_options.hpp"
+#include "parser.hpp"
 #include "rastrules/fuzzer/fuzzer.hpp"
 #include "rastrules/io/interrupt.hpp"
 #include "rastrules/io/output_file.hpp"
@@ -37,66 +40,109 @@ bool set_choice(const std::string& option, const std::string& value, std::option
 } // namespace
 
 std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
-                                              bool allow_campaign) {
+                                              bool allow_campaign, int& status) {
+  status = kExitBadInput;
   FuzzOptions o;
   o.settings.progress = ::isatty(2) != 0;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const bool campaign_option = allow_campaign && (a == "--cases" || a == "--seed");
-    const bool shard_option = allow_campaign && a == "--shard";
-    const bool results_option = a == "--baseline" || a == "--junit" || a == "--summary-json";
-    const bool takes_value = a == "--driver" || a == "--profile" || a == "--mode" || a == "--out" ||
-                             campaign_option || shard_option || results_option;
-    std::string v;
-    if (takes_value) {
-      if (i + 1 >= args.size()) {
-        usage_error(a + " needs a value");
-        return std::nullopt;
-      }
-      v = args[++i];
-    }
-    if (a == "--driver") {
-      o.settings.driver_name = v;
-    } else if (a == "--profile") {
-      if (!set_choice(a, v, fuzzer::parse_profile(v), "d3d11, vulkan, opengl", o.settings.profile))
-        return std::nullopt;
-    } else if (a == "--mode") {
-      if (!set_choice(a, v, fuzzer::parse_mode(v), "exact, legal", o.settings.mode))
-        return std::nullopt;
-    } else if (a == "--out") {
-      o.settings.out_dir = v;
-    } else if (campaign_option) {
-      auto n = parse_int(v, a == "--cases" ? 1 : 0, a == "--cases" ? 100000000 : INT64_MAX);
-      if (!n) {
-        usage_error(a + ": must be an integer" + (a == "--cases" ? " in [1, 100000000]" : " >= 0") +
-                    ", got " + shown_value(v));
-        return std::nullopt;
-      }
-      (a == "--cases" ? o.settings.cases : o.settings.seed) = static_cast<std::uint64_t>(*n);
-    } else if (shard_option) {
-      // rule: FUZZ.SHARD
-      const auto slash = v.find('/');
-      const auto k =
-          slash == std::string::npos ? std::nullopt : parse_int(v.substr(0, slash), 0, 1000000);
-      const auto n =
-          slash == std::string::npos ? std::nullopt : parse_int(v.substr(slash + 1), 1, 1000000);
-      if (!k || !n || *k >= *n) {
-        usage_error("--shard: must be K/N with 0 <= K < N <= 1000000, got " + shown_value(v));
-        return std::nullopt;
-      }
-      o.settings.shard_index = static_cast<std::uint64_t>(*k);
-      o.settings.shard_count = static_cast<std::uint64_t>(*n);
-    } else if (results_option) {
-      (a == "--baseline" ? o.baseline_path : (a == "--junit" ? o.junit_path : o.summary_path)) = v;
-    } else if (a == "--no-progress") {
-      o.settings.progress = false;
-    } else if (want_scene && o.scene_path.empty() && (a == "-" || a.rfind("--", 0) != 0)) {
-      o.scene_path = a;
-    } else {
-      usage_error("unknown option " + shown_value(a));
+  const std::string command = want_scene ? "check" : "fuzz";
+  CommandLine cl(command,
+                 want_scene ? "Compare one scene, used as it is, drawn by the driver with the "
+                              "reference: the same comparison and outputs as a campaign's case."
+                            : "Draw N generated scenes with the driver and compare each with the "
+                              "reference; every mismatch is shrunk to a minimal scene and, with "
+                              "--out, written as DIR/case-N.scene.json (original), case-N.min.json "
+                              "(shrunk), case-N.png (expected | actual | difference) and "
+                              "case-N.json, with DIR/report.json for the campaign (spec/driver.md "
+                              "FUZZ.*). Mismatches are grouped by the rule that decided them and "
+                              "their class.");
+  std::vector<std::string> scenes;
+  std::optional<std::string> driver, profile, mode, out, cases, seed, shard, baseline, junit,
+      summary;
+  bool no_progress = false;
+  if (want_scene)
+    cl.scene_files(scenes);
+  cl.value("--driver", driver, "NAME",
+           "the driver (required): reference, imprecise[:float-edges|:fill-bottom-right|"
+           ":4-bit-subpixel], lavapipe and opengl (when built), external:COMMAND "
+           "(DRIVER.EXTERNAL.PROTOCOL)",
+           "--driver needs a value");
+  cl.value("--profile", profile, "d3d11|vulkan|opengl", "the rules compared (default d3d11)",
+           "--profile needs a value");
+  cl.value("--mode", mode, "exact|legal",
+           "exact: the profile's rules; legal: what the API allows (default exact)",
+           "--mode needs a value");
+  if (allow_campaign) {
+    cl.value("--cases", cases, "N", "the number of generated scenes (default 100)",
+             "--cases needs a value");
+    cl.value("--seed", seed, "S", "the generator's seed (default 1)", "--seed needs a value");
+    cl.value("--shard", shard, "K/N", "run the cases i with i mod N = K (FUZZ.SHARD)",
+             "--shard needs a value");
+  }
+  cl.value("--out", out, "DIR", "write the findings and report.json into DIR",
+           "--out needs a value");
+  cl.value("--baseline", baseline, "KNOWN.json",
+           "known findings: only groups the file does not list fail (FUZZ.BASELINE)",
+           "--baseline needs a value");
+  cl.value("--junit", junit, "FILE.xml", "write the results as JUnit XML (FUZZ.RESULTS)",
+           "--junit needs a value");
+  cl.value("--summary-json", summary, "FILE.json", "write a JSON summary (FUZZ.RESULTS)",
+           "--summary-json needs a value");
+  cl.flag("--no-progress", no_progress, "no progress bar on standard error");
+  if (const auto stop = cl.parse(args, command + ": ")) {
+    status = *stop; // 0 after --help
+    return std::nullopt;
+  }
+  if (driver)
+    o.settings.driver_name = *driver;
+  if (profile && !set_choice(std::string("--profile"), *profile, fuzzer::parse_profile(*profile),
+                             "d3d11, vulkan, opengl", o.settings.profile))
+    return std::nullopt;
+  if (mode && !set_choice(std::string("--mode"), *mode, fuzzer::parse_mode(*mode), "exact, legal",
+                          o.settings.mode))
+    return std::nullopt;
+  if (out)
+    o.settings.out_dir = *out;
+  for (const auto& [name, v] : {std::pair{"--cases", &cases}, std::pair{"--seed", &seed}}) {
+    if (!*v)
+      continue;
+    const bool is_cases = std::string_view(name) == "--cases";
+    auto n = parse_int(**v, is_cases ? 1 : 0, is_cases ? 100000000 : INT64_MAX);
+    if (!n) {
+      usage_error(std::string(name) + ": must be an integer" +
+                  (is_cases ? " in [1, 100000000]" : " >= 0") + ", got " + shown_value(*v));
       return std::nullopt;
     }
+    (is_cases ? o.settings.cases : o.settings.seed) = static_cast<std::uint64_t>(*n);
   }
+  if (shard) {
+    // rule: FUZZ.SHARD
+    const auto slash = shard->find('/');
+    const auto k =
+        slash == std::string::npos ? std::nullopt : parse_int(shard->substr(0, slash), 0, 1000000);
+    const auto n =
+        slash == std::string::npos ? std::nullopt : parse_int(shard->substr(slash + 1), 1, 1000000);
+    if (!k || !n || *k >= *n) {
+      usage_error("--shard: must be K/N with 0 <= K < N <= 1000000, got " + shown_value(shard));
+      return std::nullopt;
+    }
+    o.settings.shard_index = static_cast<std::uint64_t>(*k);
+    o.settings.shard_count = static_cast<std::uint64_t>(*n);
+  }
+  o.baseline_path = baseline.value_or("");
+  o.junit_path = junit.value_or("");
+  o.summary_path = summary.value_or("");
+  // rule: SCENE.INPUT.ERRORS
+  // -q: no progress bar; -v: the progress bar even when standard error is no terminal.
+  if (no_progress || verbosity() == Verbosity::kQuiet)
+    o.settings.progress = false;
+  else if (verbosity() == Verbosity::kVerbose)
+    o.settings.progress = true;
+  if (want_scene && scenes.size() > 1) {
+    usage_error(command + ": more than one scene file");
+    return std::nullopt;
+  }
+  if (want_scene && !scenes.empty())
+    o.scene_path = scenes.front();
   if (o.settings.driver_name.empty()) {
     usage_error("--driver is required");
     return std::nullopt;
@@ -180,9 +226,10 @@ int finish_campaign(const FuzzOptions& o, const std::string& description, fuzzer
 }
 
 int run_fuzz(const Args& args) {
-  auto o = parse_fuzz_options(args, false, true);
+  int status = kExitBadInput;
+  auto o = parse_fuzz_options(args, false, true, status);
   if (!o)
-    return kExitBadInput;
+    return status;
   auto d = open_driver_or_report(o->settings.driver_name);
   if (!d)
     return kExitBadInput;
@@ -194,21 +241,25 @@ int run_fuzz(const Args& args) {
 int run_fuzz_merge(const Args& args) {
   FuzzOptions o;
   std::vector<std::string> dirs;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--out" || a == "--baseline" || a == "--junit" || a == "--summary-json") {
-      if (i + 1 >= args.size())
-        return usage_error(a + " needs a value");
-      const std::string& v = args[++i];
-      (a == "--out" ? o.settings.out_dir
-                    : (a == "--baseline" ? o.baseline_path
-                                         : (a == "--junit" ? o.junit_path : o.summary_path))) = v;
-    } else if (a.rfind("--", 0) == 0) {
-      return usage_error("unknown option " + shown_value(a));
-    } else {
-      dirs.push_back(a);
-    }
-  }
+  std::optional<std::string> out, baseline, junit, summary;
+  CommandLine cl("fuzz-merge", "Join the --out DIRs of the N shards of a campaign into that "
+                               "campaign (FUZZ.MERGE): the summary, groups, exit status and "
+                               "outputs of fuzz.");
+  cl.positionals("DIR", dirs, "the --out folder of each shard");
+  cl.value("--out", out, "DIR", "write the merged report into DIR", "--out needs a value");
+  cl.value("--baseline", baseline, "KNOWN.json",
+           "known findings: only groups the file does not list fail (FUZZ.BASELINE)",
+           "--baseline needs a value");
+  cl.value("--junit", junit, "FILE.xml", "write the results as JUnit XML (FUZZ.RESULTS)",
+           "--junit needs a value");
+  cl.value("--summary-json", summary, "FILE.json", "write a JSON summary (FUZZ.RESULTS)",
+           "--summary-json needs a value");
+  if (const auto stop = cl.parse(args, "fuzz-merge: "))
+    return *stop;
+  o.settings.out_dir = out.value_or("");
+  o.baseline_path = baseline.value_or("");
+  o.junit_path = junit.value_or("");
+  o.summary_path = summary.value_or("");
   if (dirs.empty())
     return usage_error("missing shard DIR");
   if (!o.baseline_path.empty()) {

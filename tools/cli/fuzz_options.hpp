@@ -22,11 +22,13 @@ struct FuzzOptions {
   std::optional<fuzzer::Baseline> baseline;
 };
 
-// Parses --driver, --profile, --mode, --out, --no-progress, --baseline, --junit,
+// Parses --driver, --profile, --mode, --out, --no-progress, -q/-v, --baseline, --junit,
 // --summary-json, and --cases/--seed/--shard when allow_campaign, and one scene path when
-// want_scene. Reads the baseline. Prints the usage error and returns nullopt on bad usage.
+// want_scene (CLI11, parser.hpp); reads the baseline. Returns nullopt with `status` the exit
+// status when the command stops here: 0 after --help, kExitBadInput after a usage error or a
+// bad baseline (printed).
 std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
-                                              bool allow_campaign);
+                                              bool allow_campaign, int& status);
 
 // Opens the driver, or prints "rastrules: error: --driver: REASON" and returns nullptr.
 std::unique_ptr<driver::Driver> open_driver_or_report(const std::string& name);

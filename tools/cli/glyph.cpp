@@ -8,8 +8,10 @@
 #include <optional>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "cli.hpp"
+#include "parser.hpp"
 #include "rastrules/io/glyph.hpp"
 #include "rastrules/io/scene_json.hpp"
 
@@ -56,32 +58,26 @@ std::optional<char32_t> code_point_of(const std::string& text) {
 
 // rule: PATH.GLYPH.SOURCE, PATH.GLYPH.ERRORS, SCENE.PRIM.PATH
 int run_glyph(const Args& args) {
-  std::optional<std::string> font, ch, size, coverage, out;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--help" || a == "-h") {
-      print_usage(stdout);
-      return kExitOk;
-    }
-    std::optional<std::string>* slot = a == "--char"       ? &ch
-                                       : a == "--size"     ? &size
-                                       : a == "--coverage" ? &coverage
-                                       : a == "--out"      ? &out
-                                                           : nullptr;
-    if (slot != nullptr) {
-      if (i + 1 >= args.size())
-        return usage_error(a + " needs a value");
-      *slot = args[++i];
-    } else if (!a.empty() && a[0] == '-') {
-      return usage_error("glyph: unknown option \"" + io::printable(a, 40) + "\"");
-    } else if (font) {
-      return usage_error("glyph: one font file only");
-    } else {
-      font = a;
-    }
-  }
-  if (!font)
+  CommandLine cl("glyph",
+                 "Write a glyph of a font file as a path scene (SCENE.PRIM.PATH) through "
+                 "FreeType's unhinted outline, exactly (PATH.GLYPH.SOURCE), to standard output or "
+                 "SCENE.json.");
+  std::vector<std::string> fonts;
+  std::optional<std::string> ch, size, coverage, out;
+  cl.positionals("FONT", fonts, "the font file");
+  cl.value("--char", ch, "C", "the character: itself or U+XXXX (required)", "--char needs a value");
+  cl.value("--size", size, "N", "the size in pixels (default 64)", "--size needs a value");
+  cl.value("--coverage", coverage, "samples|area", "the path's coverage (default samples)",
+           "--coverage needs a value");
+  cl.value("--out", out, "SCENE.json", "the scene file written (default: standard output)",
+           "--out needs a value");
+  if (const auto stop = cl.parse(args, "glyph: "))
+    return *stop;
+  if (fonts.size() > 1)
+    return usage_error("glyph: one font file only");
+  if (fonts.empty())
     return usage_error("glyph: missing FONT");
+  const std::string font = fonts.front();
   if (!ch)
     return usage_error("glyph: missing --char C (a character or U+XXXX)");
   const std::optional<char32_t> code = code_point_of(*ch);
@@ -95,7 +91,7 @@ int run_glyph(const Args& args) {
   const auto kind = from_name<path::Coverage>(coverage.value_or("samples"));
   if (!kind)
     return error("--coverage must be samples or area, got " + shown_value(coverage));
-  auto loaded = io::load_glyph(*font, *code, static_cast<int>(*px));
+  auto loaded = io::load_glyph(font, *code, static_cast<int>(*px));
   if (const auto* e = std::get_if<io::GlyphError>(&loaded))
     return error(e->what());
   const io::Glyph& g = std::get<io::Glyph>(loaded);

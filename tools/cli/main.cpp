@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// rastrules: the command line (render, explain, showcase).
+// rastrules: the command line: --version, help [COMMAND], -q/-v, and the commands (each
+// parses its own options with CLI11, parser.hpp).
 // Implements: SCENE.INPUT.ERRORS (exit codes)
 
 #include <cstdio>
@@ -31,29 +32,63 @@ constexpr Command kCommands[] = {
 
 } // namespace
 
+namespace {
+
+const Command* find_command(std::string_view name) {
+  for (const Command& c : kCommands) {
+    if (name == c.name)
+      return &c;
+  }
+  return nullptr;
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
   using namespace rastrules::cli;
   Args args(argv + 1, argv + argc);
+  // rule: SCENE.INPUT.ERRORS
+  // -q/-v before the command apply to it as after it.
+  while (!args.empty() && (args.front() == "-q" || args.front() == "--quiet" ||
+                           args.front() == "-v" || args.front() == "--verbose")) {
+    const bool quiet = args.front() == "-q" || args.front() == "--quiet";
+    if (verbosity() != Verbosity::kNormal && (verbosity() == Verbosity::kQuiet) != quiet)
+      return usage_error("-q and -v cannot be used together");
+    set_verbosity(quiet ? Verbosity::kQuiet : Verbosity::kVerbose);
+    args.erase(args.begin());
+  }
   if (args.empty())
     return usage_error("missing command");
   const std::string command = args.front();
   args.erase(args.begin());
   try {
-    if (command == "--help" || command == "-h" || command == "help") {
+    if (command == "--version" || command == "-V") {
+      std::printf("rastrules %s (scene format %d)\n", RASTRULES_VERSION, kSceneFormatVersion);
+      return kExitOk;
+    }
+    if (command == "--help" || command == "-h" || (command == "help" && args.empty())) {
       print_usage(stdout);
       return kExitOk;
     }
+    if (command == "help") {
+      // help COMMAND: the command's own help, as COMMAND --help prints it.
+      if (args.size() > 1)
+        return usage_error("help: one command only");
+      const Command* c = find_command(args.front());
+      if (c == nullptr)
+        return usage_error("help: unknown command " + shown_value(args.front()));
+      return c->run({"--help"});
+    }
+    const Command* c = find_command(command);
+    if (c == nullptr)
+      return usage_error("unknown command " + shown_value(command));
     // rule: SCENE.INPUT.ERRORS
     // An interrupt removes the temporaries and ends the driver's process group; a campaign
     // then stops after its case and writes what it has, anything else exits at once.
     const bool campaign = command == "fuzz" || command == "check" || command == "probe";
     rastrules::io::handle_interrupts(campaign ? rastrules::io::OnInterrupt::kRecord
                                               : rastrules::io::OnInterrupt::kExit);
-    for (const Command& c : kCommands) {
-      if (command == c.name)
-        return c.run(args);
-    }
-    return usage_error("unknown command \"" + command + "\"");
+    return c->run(args);
   } catch (const std::bad_alloc&) {
     return error("out of memory");
   } catch (const std::exception& e) {

@@ -3,26 +3,27 @@
 // Implements: FUZZ.PROBE (the command line)
 
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "cli.hpp"
 #include "fuzz_options.hpp"
+#include "parser.hpp"
 #include "rastrules/fuzzer/fuzzer.hpp"
 #include "rastrules/io/interrupt.hpp"
 
 namespace rastrules::cli {
 
 int run_probe(const Args& args) {
-  std::string name;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--driver" && i + 1 < args.size()) {
-      name = args[++i];
-    } else if (args[i] == "--driver") {
-      return usage_error("--driver needs a value");
-    } else {
-      return usage_error("unknown option \"" + args[i] + "\"");
-    }
-  }
+  CommandLine cl("probe", "Report the driver's fill convention, subpixel bits and snapping "
+                          "rounding, line mode, point rule and 4x sample positions, found with "
+                          "probe scenes (FUZZ.PROBE).");
+  std::optional<std::string> driver;
+  cl.value("--driver", driver, "NAME", "the driver (required; as for fuzz)",
+           "--driver needs a value");
+  if (const auto stop = cl.parse(args, "probe: "))
+    return *stop;
+  const std::string name = driver.value_or("");
   if (name.empty())
     return usage_error("--driver is required");
   auto d = open_driver_or_report(name);

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "parser.hpp"
 #include "rastrules/io/fragment_json.hpp"
 #include "rastrules/io/image.hpp"
 #include "rastrules/io/picture.hpp"
@@ -260,7 +261,7 @@ int render_pipeline(const Scene& scene, const RenderRequest& rq) {
   }
   if (auto err = commit_outputs(outputs))
     return error(*err);
-  if (rq.to_stdout == 0)
+  if (rq.to_stdout == 0 && verbosity() != Verbosity::kQuiet)
     print_summary(scene.primitives.size(), result->fragments.size(), outputs);
   return kExitOk;
 }
@@ -521,7 +522,7 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
                                        {&resolve_file, &rq.resolve_path}};
   if (auto err = commit_outputs(outputs))
     return error(*err);
-  if (rq.to_stdout == 0)
+  if (rq.to_stdout == 0 && verbosity() != Verbosity::kQuiet)
     print_summary(scene.primitives.size(), fragment_count, outputs);
   return kExitOk;
 }
@@ -543,97 +544,114 @@ std::optional<int> parse_limit(const char* flag, const std::optional<std::string
 // Reads render's arguments into rq. Returns the exit code when render stops here (--help, a
 // usage error), nullopt to go on.
 std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
-  std::optional<std::string> scene_path;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](const char* flag) -> std::optional<std::string> {
-      const std::string prefix = std::string(flag) + "=";
-      if (a.rfind(prefix, 0) == 0)
-        return a.substr(prefix.size());
-      if (i + 1 < args.size())
-        return args[++i];
-      return std::nullopt;
-    };
-    auto is = [&](const char* flag) {
-      return a == flag || a.rfind(std::string(flag) + "=", 0) == 0;
-    };
-    if (a == "--help" || a == "-h") {
-      print_usage(stdout);
-      return kExitOk;
-    } else if (is("--fragments")) {
-      rq.fragments_path = value("--fragments");
-      if (!rq.fragments_path || rq.fragments_path->empty())
-        return usage_error("--fragments needs a file name");
-    } else if (is("--png")) {
-      rq.png_path = value("--png");
-      if (!rq.png_path || rq.png_path->empty())
-        return usage_error("--png needs a file name");
-    } else if (is("--resolve")) {
-      rq.resolve_path = value("--resolve");
-      if (!rq.resolve_path || rq.resolve_path->empty())
-        return usage_error("--resolve needs a file name");
-    } else if (a == "--png-depth") {
-      rq.png_depth = true;
-    } else if (a == "--pipeline-plain") {
-      // rule: PIPE.OPT.TILES
-      // Pipeline scenes: every optimization off; coverage scenes: the plain traversal.
-      rq.pipeline_plain = true;
-      rq.options.traversal = Traversal::kPlain;
-    } else if (is("--depth-out")) {
-      rq.depth_out_path = value("--depth-out");
-      if (!rq.depth_out_path || rq.depth_out_path->empty())
-        return usage_error("--depth-out needs a file name");
-    } else if (is("--scale")) {
-      const std::optional<std::string> v = value("--scale");
-      const auto n = v ? parse_int(*v, 1, io::kMaxPictureSide) : std::nullopt;
-      if (!n)
-        return error("--scale needs an integer in [1, 4096], got " + shown_value(v));
-      rq.scale = static_cast<int>(*n);
-    } else if (is("--max-fragments")) {
-      // rule: SCENE.INPUT.LIMITS
-      if (const auto status =
-              parse_limit("--max-fragments", value("--max-fragments"), 40, rq.max_fragments))
-        return *status;
-    } else if (is("--max-work")) {
-      // rule: SCENE.INPUT.LIMITS
-      if (const auto status = parse_limit("--max-work", value("--max-work"), 60, rq.max_work))
-        return *status;
-    } else if (is("--threads")) {
-      // rule: FAST.THREADS.DETERMINISTIC
-      const std::optional<std::string> v = value("--threads");
-      const auto n = v ? parse_int(*v, 1, kMaxThreads) : std::nullopt;
-      if (!n) {
-        return error("--threads needs an integer in [1, " + std::to_string(kMaxThreads) +
-                     "], got " + shown_value(v));
-      }
-      rq.options.threads = static_cast<unsigned>(*n);
-    } else if (is("--traversal")) {
-      const std::optional<std::string> v = value("--traversal");
-      const auto t = v ? parse_traversal(*v) : std::nullopt;
-      if (!t) {
-        return error("--traversal needs \"plain\" or \"fast\", got " + shown_value(v));
-      }
-      rq.options.traversal = *t;
-    } else if (is("--isa")) {
-      // rule: FAST.ISA.DISPATCH
-      const std::optional<std::string> v = value("--isa");
-      if (v && *v == "auto") {
-        rq.options.isa = std::nullopt;
-      } else {
-        const auto isa = v ? parse_isa(*v) : std::nullopt;
-        if (!isa) {
-          return error("--isa needs \"scalar\", \"avx2\", \"avx512\" or \"auto\", got " +
-                       shown_value(v));
-        }
-        if (!isa_supported(*isa)) {
-          return error("--isa " + *v + ": this processor (or this build) cannot run " + *v + " (" +
-                       std::string(kMaxIsaVariable) + " may cap it); use --isa auto (here " +
-                       std::string(to_string(best_isa())) + ")");
-        }
-        rq.options.isa = *isa;
-      }
-    } else if (const auto status = take_scene_argument("render", a, scene_path)) {
+  // rule: SCENE.OUTPUT.FRAGMENTS
+  CommandLine cl("render", "Rasterize a scene (spec/scene.md; pipeline scenes through the "
+                           "pipeline, SCENE.OUTPUT.PIPELINE). \"-\" reads standard input or "
+                           "writes one output to standard output.");
+  std::vector<std::string> scenes;
+  std::optional<std::string> scale, max_fragments, max_work, threads, traversal, isa;
+  cl.scene_files(scenes);
+  cl.value("--fragments", rq.fragments_path, "OUT.json",
+           "write the fragment list, sorted by (prim, y, x)", "--fragments needs a file name");
+  cl.value("--png", rq.png_path, "OUT.png",
+           "draw the target magnified (the pixel grid, pixel centres, snapped edges, covered "
+           "pixels by primitive, overlaps hatched in red; sample points of multisampled scenes)",
+           "--png needs a file name");
+  cl.value("--scale", scale, "N",
+           "the picture's magnification (default 32, less for large "
+           "targets; at most 4096 pixels a side)",
+           "--scale needs an integer in [1, 4096], got nothing");
+  cl.value("--resolve", rq.resolve_path, "OUT.png",
+           "write the resolved target as an RGBA PNG (MSAA.RESOLVE.AVERAGE, MSAA.LIMITS)",
+           "--resolve needs a file name");
+  cl.value("--max-fragments", max_fragments, "N",
+           "more fragments is an error (default 67108864, N in [1, 2^40]; SCENE.INPUT.LIMITS)",
+           "--max-fragments needs an integer in [1, 2^40], got nothing");
+  cl.value("--max-work", max_work, "N",
+           "more sample tests is an error (default 68719476736, N in [1, 2^60]; "
+           "SCENE.INPUT.LIMITS)",
+           "--max-work needs an integer in [1, 2^60], got nothing");
+  cl.value("--threads", threads, "N",
+           "render with N threads (1 to 256, default 1), the same bytes as with one "
+           "(FAST.THREADS.DETERMINISTIC)",
+           "--threads needs an integer in [1, " + std::to_string(kMaxThreads) + "], got nothing");
+  cl.value("--traversal", traversal, "plain|fast",
+           "the coverage traversal (default fast), never the result (FAST.EQUALS.PLAIN)",
+           "--traversal needs \"plain\" or \"fast\", got nothing");
+  cl.value("--isa", isa, "scalar|avx2|avx512|auto",
+           "the instruction set (default auto: the widest the processor runs)",
+           "--isa needs \"scalar\", \"avx2\", \"avx512\" or \"auto\", got nothing");
+  cl.flag("--png-depth", rq.png_depth,
+          "pipeline scenes: draw the final depth buffer in grey (black near, white far)");
+  cl.value("--depth-out", rq.depth_out_path, "OUT.json",
+           "pipeline scenes: write the final depth buffer as JSON",
+           "--depth-out needs a file name");
+  cl.flag("--pipeline-plain", rq.pipeline_plain,
+          "every optimization off (PIPE.OPT.*: binning, Hi-Z, early-Z, fast clear, the fast "
+          "traversal), never changing the result");
+  if (const auto stop = cl.parse(args, "render: "))
+    return stop;
+  for (const auto* path :
+       {&rq.fragments_path, &rq.png_path, &rq.resolve_path, &rq.depth_out_path}) {
+    if (*path && (*path)->empty()) {
+      const char* name = path == &rq.fragments_path ? "--fragments"
+                         : path == &rq.png_path     ? "--png"
+                         : path == &rq.resolve_path ? "--resolve"
+                                                    : "--depth-out";
+      return usage_error(std::string(name) + " needs a file name");
+    }
+  }
+  if (rq.pipeline_plain) {
+    // rule: PIPE.OPT.TILES
+    // Pipeline scenes: every optimization off; coverage scenes: the plain traversal.
+    rq.options.traversal = Traversal::kPlain;
+  }
+  if (scale) {
+    const auto n = parse_int(*scale, 1, io::kMaxPictureSide);
+    if (!n)
+      return error("--scale needs an integer in [1, 4096], got " + shown_value(scale));
+    rq.scale = static_cast<int>(*n);
+  }
+  // rule: SCENE.INPUT.LIMITS
+  if (max_fragments) {
+    if (const auto status = parse_limit("--max-fragments", max_fragments, 40, rq.max_fragments))
       return *status;
+  }
+  if (max_work) {
+    if (const auto status = parse_limit("--max-work", max_work, 60, rq.max_work))
+      return *status;
+  }
+  if (threads) {
+    // rule: FAST.THREADS.DETERMINISTIC
+    const auto n = parse_int(*threads, 1, kMaxThreads);
+    if (!n) {
+      return error("--threads needs an integer in [1, " + std::to_string(kMaxThreads) + "], got " +
+                   shown_value(threads));
+    }
+    rq.options.threads = static_cast<unsigned>(*n);
+  }
+  if (traversal) {
+    const auto t = parse_traversal(*traversal);
+    if (!t)
+      return error("--traversal needs \"plain\" or \"fast\", got " + shown_value(traversal));
+    rq.options.traversal = *t;
+  }
+  if (isa) {
+    // rule: FAST.ISA.DISPATCH
+    if (*isa == "auto") {
+      rq.options.isa = std::nullopt;
+    } else {
+      const auto parsed = parse_isa(*isa);
+      if (!parsed) {
+        return error("--isa needs \"scalar\", \"avx2\", \"avx512\" or \"auto\", got " +
+                     shown_value(isa));
+      }
+      if (!isa_supported(*parsed)) {
+        return error("--isa " + *isa + ": this processor (or this build) cannot run " + *isa +
+                     " (" + std::string(kMaxIsaVariable) + " may cap it); use --isa auto (here " +
+                     std::string(to_string(best_isa())) + ")");
+      }
+      rq.options.isa = *parsed;
     }
   }
   // rule: FAST.ISA.DISPATCH
@@ -642,8 +660,8 @@ std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
     return error(std::string(kMaxIsaVariable) + " needs \"scalar\", \"avx2\" or \"avx512\", got " +
                  shown_value(cap));
   }
-  if (!scene_path)
-    return usage_error("render: missing SCENE.json");
+  if (const auto status = take_scene_argument("render", scenes, rq.scene_path))
+    return *status;
   if (!rq.fragments_path && !rq.png_path && !rq.resolve_path && !rq.depth_out_path) {
     return usage_error("render: give --fragments OUT.json, --png OUT.png, --resolve OUT.png or "
                        "--depth-out OUT.json");
@@ -678,8 +696,6 @@ std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
     return usage_error("render: --scale needs --png");
   if (rq.png_depth && !rq.png_path)
     return usage_error("render: --png-depth needs --png");
-
-  rq.scene_path = *scene_path;
   return std::nullopt;
 }
 

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "parser.hpp"
 #include "rastrules/check/check.hpp"
 #include "rastrules/io/fragment_json.hpp"
 #include "rastrules/io/image.hpp"
@@ -78,22 +79,15 @@ std::optional<std::string> write_resolve(const std::filesystem::path& path,
 } // namespace
 
 int run_showcase(const Args& args) {
+  CommandLine cl(
+      "showcase",
+      "Render the built-in showcase scenes into DIR (scene, fragments and picture of "
+      "each, and the resolved target of multisampled ones), compare every one with the "
+      "exact oracle and print a summary (-q: the scenes that differ and the last line).");
   std::optional<std::string> out_dir;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--help" || a == "-h") {
-      print_usage(stdout);
-      return kExitOk;
-    } else if (a == "--out" && i + 1 < args.size()) {
-      out_dir = args[++i];
-    } else if (a.rfind("--out=", 0) == 0) {
-      out_dir = a.substr(6);
-    } else if (a == "--out") {
-      return usage_error("--out needs a directory");
-    } else {
-      return usage_error("showcase: unexpected argument " + shown_value(a));
-    }
-  }
+  cl.value("--out", out_dir, "DIR", "the folder written (required)", "--out needs a directory");
+  if (const auto stop = cl.parse(args, "showcase: "))
+    return *stop;
   if (!out_dir || out_dir->empty())
     return usage_error("showcase: missing --out DIR");
   const std::filesystem::path dir(*out_dir);
@@ -105,8 +99,14 @@ int run_showcase(const Args& args) {
   }
 
   const std::vector<ShowcaseScene> scenes = showcase_scenes();
-  std::printf("%-22s %6s %9s %10s %10s  %s\n", "scene", "prims", "fragments", "kernel ms",
-              "oracle ms", "agree");
+  // rule: SCENE.INPUT.ERRORS
+  // -q: the scenes that differ and the summary line.
+  const bool quiet = verbosity() == Verbosity::kQuiet;
+  const bool table = !quiet;
+  if (table) {
+    std::printf("%-22s %6s %9s %10s %10s  %s\n", "scene", "prims", "fragments", "kernel ms",
+                "oracle ms", "agree");
+  }
   int agree = 0;
   std::vector<std::string> notes;
   std::vector<std::string> checked_by_lines;
@@ -164,18 +164,23 @@ int run_showcase(const Args& args) {
                        kernel.size(), scale, io::samples_visible(ps, scale),
                        check::multisampled(sc.scene), same,
                        checked_by.empty() ? "no primitive" : checked_by});
-    std::printf("%-22s %6zu %9zu %10.3f %10.3f  %s\n", sc.name.c_str(), sc.scene.primitives.size(),
-                kernel.size(), kernel_ms, oracle_ms, same ? "yes" : "NO");
+    if (table || (quiet && !same)) {
+      std::printf("%-22s %6zu %9zu %10.3f %10.3f  %s\n", sc.name.c_str(),
+                  sc.scene.primitives.size(), kernel.size(), kernel_ms, oracle_ms,
+                  same ? "yes" : "NO");
+    }
   }
   // rule: FUZZ.REPORT.HTML
   if (auto err = write_showcase_index(dir, entries))
     return error(*err);
+  const int differ = static_cast<int>(scenes.size()) - agree;
   for (const std::string& n : notes)
     std::printf("  %s\n", n.c_str());
-  std::printf("oracles used:\n");
-  for (const std::string& n : checked_by_lines)
-    std::printf("  %s\n", n.c_str());
-  const int differ = static_cast<int>(scenes.size()) - agree;
+  if (!quiet) {
+    std::printf("oracles used:\n");
+    for (const std::string& n : checked_by_lines)
+      std::printf("  %s\n", n.c_str());
+  }
   std::printf("showcase: %zu scenes, %d agree with the oracle, %d differ; pictures in %s\n",
               scenes.size(), agree, differ, dir.string().c_str());
   std::fflush(stdout);
