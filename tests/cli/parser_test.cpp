@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
 // The command line's parser (CLI11, tools/cli/parser.hpp): --version, help COMMAND and
-// COMMAND --help for every command, --opt=value, -q/-v (issue 19).
+// COMMAND --help for every command, --opt=value, -q/-v, and the --json outputs of probe,
+// showcase and cases (issue 19).
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "support.hpp"
 
@@ -78,7 +80,7 @@ TEST(CliParser, EveryCommandHasItsOwnHelp) {
   // The options of each command are in its help.
   EXPECT_NE(run_cli({"render", "--help"}).out.find("--max-work N"), std::string::npos);
   EXPECT_NE(run_cli({"fuzz", "--help"}).out.find("--cases N"), std::string::npos);
-  EXPECT_NE(run_cli({"probe", "--help"}).out.find("--driver NAME"), std::string::npos);
+  EXPECT_NE(run_cli({"probe", "--help"}).out.find("--json"), std::string::npos);
 }
 
 // --opt=value is --opt value.
@@ -171,6 +173,60 @@ TEST(CliParser, ShowcaseQuietPrintsTheSummaryLine) {
   ASSERT_EQ(q.status, 0) << q.err;
   EXPECT_EQ(q.out.find('\n'), q.out.size() - 1) << q.out;
   EXPECT_EQ(q.out.rfind("showcase: ", 0), 0u) << q.out;
+}
+
+// rule: FUZZ.PROBE
+TEST(CliParser, ProbeJson) {
+  const RunResult r = run_cli({"probe", "--driver", "reference", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["driver"], "reference");
+  EXPECT_EQ(j["fill"]["convention"], "top-left");
+  EXPECT_TRUE(j["fill"]["top"].get<bool>());
+  EXPECT_FALSE(j["fill"]["bottom"].get<bool>());
+  EXPECT_EQ(j["subpixel_bits"], 8);
+  EXPECT_TRUE(j["snapping"]["rounding"].is_string());
+  EXPECT_TRUE(j["line_mode"].is_string());
+  EXPECT_TRUE(j["point_rule"].is_string());
+  ASSERT_TRUE(j["samples_4x"].is_array());
+  EXPECT_EQ(j["samples_4x"].size(), 4u);
+  // The text says the same.
+  const RunResult text = run_cli({"probe", "--driver", "reference"});
+  EXPECT_NE(text.out.find(j["fill"]["convention"].get<std::string>()), std::string::npos);
+}
+
+// rule: SCENE.OUTPUT.FRAGMENTS
+TEST(CliParser, ShowcaseJson) {
+  TempDir dir;
+  const RunResult r = run_cli({"showcase", "--out", (dir / "s").string(), "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j["scenes"].is_array());
+  EXPECT_GT(j["scenes"].size(), 20u);
+  EXPECT_EQ(j["agree"], j["scenes"].size());
+  EXPECT_EQ(j["differ"], 0);
+  for (const auto& s : j["scenes"]) {
+    EXPECT_TRUE(s["agree"].get<bool>()) << s["name"];
+    EXPECT_TRUE(std::filesystem::exists(dir / "s" / (s["name"].get<std::string>() + ".png")));
+    EXPECT_FALSE(s["oracles"].empty()) << s["name"];
+  }
+}
+
+// rule: PIPE.CATALOG
+TEST(CliParser, CasesJson) {
+  const std::string catalog = std::string(RASTRULES_SOURCE_DIR) + "/spec/cases";
+  const RunResult r = run_cli({"cases", catalog, "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j["cases"].is_array());
+  EXPECT_GT(j["total"].get<int>(), 0);
+  EXPECT_EQ(j["hold"], j["total"]);
+  EXPECT_EQ(j["cases"].size(), j["total"].get<std::size_t>());
+  for (const auto& c : j["cases"]) {
+    EXPECT_TRUE(c["ok"].get<bool>()) << c["name"];
+    EXPECT_TRUE(c["failures"].empty());
+    EXPECT_FALSE(c["rules"].empty()) << c["name"];
+  }
 }
 
 } // namespace

@@ -3,7 +3,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "cli.hpp"
 #include "parser.hpp"
@@ -19,7 +22,9 @@ int run_cases(const Args& args) {
                  "NAME.expect.json; one line per case (-q: the failures and the last line), exit "
                  "status 1 on a failure.");
   std::vector<std::string> dirs;
+  bool as_json = false;
   cl.positionals("DIR", dirs, "the catalog's folder (default spec/cases)");
+  cl.flag("--json", as_json, "one JSON document instead of the lines");
   if (const auto stop = cl.parse(args, "cases: "))
     return *stop;
   if (dirs.size() > 1)
@@ -34,7 +39,24 @@ int run_cases(const Args& args) {
   std::vector<cases::CaseReport> reports;
   for (const auto& s : scenes)
     reports.push_back(cases::check_case(s));
-  if (verbosity() == Verbosity::kQuiet) {
+  if (as_json) {
+    nlohmann::ordered_json j;
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    std::size_t held = 0;
+    for (const auto& r : reports) {
+      held += r.ok() ? 1u : 0u;
+      nlohmann::ordered_json c = {{"name", r.name}, {"ok", r.ok()}, {"rules", r.rules}};
+      c["what"] = r.what;
+      c["fragments"] = r.fragments;
+      c["oracle_checks"] = r.oracle_checks;
+      c["failures"] = r.failures;
+      list.push_back(std::move(c));
+    }
+    j["cases"] = list;
+    j["hold"] = held;
+    j["total"] = reports.size();
+    std::fputs((j.dump(2) + "\n").c_str(), stdout);
+  } else if (verbosity() == Verbosity::kQuiet) {
     // rule: SCENE.INPUT.ERRORS
     // -q: the failing cases' lines and the last line.
     std::vector<cases::CaseReport> failed;

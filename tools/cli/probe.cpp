@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "cli.hpp"
 #include "fuzz_options.hpp"
 #include "parser.hpp"
@@ -14,13 +16,45 @@
 
 namespace rastrules::cli {
 
+namespace {
+
+// rule: FUZZ.PROBE
+// The report as one JSON document (probe --json).
+std::string probe_json(const std::string& name, const driver::DriverInfo& info,
+                       const fuzzer::ProbeReport& r) {
+  nlohmann::ordered_json j;
+  j["driver"] = name;
+  j["description"] = info.description;
+  j["fill"] = {{"convention", r.fill},
+               {"top", r.top},
+               {"bottom", r.bottom},
+               {"left", r.left},
+               {"right", r.right}};
+  j["subpixel_bits"] = r.subpixel_bits >= 0 ? nlohmann::ordered_json(r.subpixel_bits) : nullptr;
+  j["reported_subpixel_bits"] =
+      info.subpixel_bits >= 0 ? nlohmann::ordered_json(info.subpixel_bits) : nullptr;
+  j["snapping"] = {{"rounding", r.rounding}, {"threshold_4096", r.threshold_4096}};
+  j["line_mode"] = r.line_mode;
+  j["point_rule"] = r.point_rule;
+  nlohmann::ordered_json samples = nlohmann::ordered_json::array();
+  for (const SampleOffset& o : r.samples_4x)
+    samples.push_back({o.x, o.y});
+  j["samples_4x"] = samples;
+  j["samples_note"] = r.samples_note;
+  return j.dump(2) + "\n";
+}
+
+} // namespace
+
 int run_probe(const Args& args) {
   CommandLine cl("probe", "Report the driver's fill convention, subpixel bits and snapping "
                           "rounding, line mode, point rule and 4x sample positions, found with "
                           "probe scenes (FUZZ.PROBE).");
   std::optional<std::string> driver;
+  bool as_json = false;
   cl.value("--driver", driver, "NAME", "the driver (required; as for fuzz)",
            "--driver needs a value");
+  cl.flag("--json", as_json, "one JSON document instead of the text");
   if (const auto stop = cl.parse(args, "probe: "))
     return *stop;
   const std::string name = driver.value_or("");
@@ -36,6 +70,10 @@ int run_probe(const Args& args) {
   }
   if (!r.error.empty())
     return error("probe: " + r.error);
+  if (as_json) {
+    std::fputs(probe_json(name, d->info(), r).c_str(), stdout);
+    return kExitOk;
+  }
   const auto& info = d->info();
   std::printf("driver            %s (%s)\n", name.c_str(), info.description.c_str());
   std::printf(

@@ -20,6 +20,8 @@
 #include <variant>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "cli.hpp"
 #include "parser.hpp"
 #include "rastrules/check/check.hpp"
@@ -85,7 +87,9 @@ int run_showcase(const Args& args) {
       "each, and the resolved target of multisampled ones), compare every one with the "
       "exact oracle and print a summary (-q: the scenes that differ and the last line).");
   std::optional<std::string> out_dir;
+  bool as_json = false;
   cl.value("--out", out_dir, "DIR", "the folder written (required)", "--out needs a directory");
+  cl.flag("--json", as_json, "the summary as one JSON document instead of the table");
   if (const auto stop = cl.parse(args, "showcase: "))
     return *stop;
   if (!out_dir || out_dir->empty())
@@ -100,13 +104,14 @@ int run_showcase(const Args& args) {
 
   const std::vector<ShowcaseScene> scenes = showcase_scenes();
   // rule: SCENE.INPUT.ERRORS
-  // -q: the scenes that differ and the summary line.
+  // -q: the scenes that differ and the summary line; --json: one document at the end.
   const bool quiet = verbosity() == Verbosity::kQuiet;
-  const bool table = !quiet;
+  const bool table = !as_json && !quiet;
   if (table) {
     std::printf("%-22s %6s %9s %10s %10s  %s\n", "scene", "prims", "fragments", "kernel ms",
                 "oracle ms", "agree");
   }
+  nlohmann::ordered_json json_scenes = nlohmann::ordered_json::array();
   int agree = 0;
   std::vector<std::string> notes;
   std::vector<std::string> checked_by_lines;
@@ -164,16 +169,34 @@ int run_showcase(const Args& args) {
                        kernel.size(), scale, io::samples_visible(ps, scale),
                        check::multisampled(sc.scene), same,
                        checked_by.empty() ? "no primitive" : checked_by});
-    if (table || (quiet && !same)) {
+    if (table || (quiet && !as_json && !same)) {
       std::printf("%-22s %6zu %9zu %10.3f %10.3f  %s\n", sc.name.c_str(),
                   sc.scene.primitives.size(), kernel.size(), kernel_ms, oracle_ms,
                   same ? "yes" : "NO");
     }
+    json_scenes.push_back({{"name", sc.name},
+                           {"primitives", sc.scene.primitives.size()},
+                           {"fragments", kernel.size()},
+                           {"kernel_ms", kernel_ms},
+                           {"oracle_ms", oracle_ms},
+                           {"agree", same},
+                           {"oracles", check.oracles}});
   }
   // rule: FUZZ.REPORT.HTML
   if (auto err = write_showcase_index(dir, entries))
     return error(*err);
   const int differ = static_cast<int>(scenes.size()) - agree;
+  if (as_json) {
+    nlohmann::ordered_json j;
+    j["scenes"] = json_scenes;
+    j["notes"] = notes;
+    j["agree"] = agree;
+    j["differ"] = differ;
+    j["out"] = dir.string();
+    std::fputs((j.dump(2) + "\n").c_str(), stdout);
+    std::fflush(stdout);
+    return differ == 0 ? kExitOk : kExitDifference;
+  }
   for (const std::string& n : notes)
     std::printf("  %s\n", n.c_str());
   if (!quiet) {
