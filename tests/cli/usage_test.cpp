@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "support.hpp"
 
 namespace {
@@ -101,6 +103,18 @@ TEST(CliUsage, BadOptionValuesAreOneLine) {
               std::string("rastrules: error: --scale needs an integer in [1, 4096], got \"") +
                   scale + "\"\n");
     EXPECT_EQ(r.out, "") << scale;
+  }
+}
+
+// rule: FUZZ.FAMILIES
+TEST(CliUsage, AnUnknownFamilyIsOneLineNamingIt) {
+  for (const char* v : {"lines,triangles", "lines,", ""}) {
+    const auto r = run_cli({"fuzz", "--driver", "reference", "--families", v});
+    EXPECT_EQ(r.status, 2) << v;
+    EXPECT_NE(r.err.find("rastrules: error: --families: unknown family \""), std::string::npos)
+        << r.err;
+    EXPECT_LE(std::count(r.err.begin(), r.err.end(), '\n'), 2) << r.err;
+    EXPECT_EQ(r.out, "") << v;
   }
 }
 

@@ -327,3 +327,42 @@ TEST(FuzzShard, FourShardsMergedEqualTheUnshardedCampaign) {
 
 } // namespace
 } // namespace rastrules::fuzzer
+
+namespace rastrules::fuzzer {
+namespace {
+
+// rule: FUZZ.FAMILIES
+TEST(FuzzFamilies, ASelectionDrawsOnlyThoseFamiliesAndListsTheRest) {
+  std::string err;
+  auto d = driver::open_driver("reference", &err);
+  ASSERT_NE(d, nullptr) << err;
+  const std::vector<std::string> only = {"lines", "points"};
+  for (std::uint64_t i = 0; i < 40; ++i) {
+    const auto c = generate_case(7, i, Profile::kVulkan, *d, only);
+    ASSERT_TRUE(c.has_value());
+    EXPECT_TRUE(c->family == "lines" || c->family == "points") << c->family;
+  }
+  // Without a selection the same seed draws triangle families too.
+  std::set<std::string> all;
+  for (std::uint64_t i = 0; i < 40; ++i)
+    all.insert(generate_case(7, i, Profile::kVulkan, *d)->family);
+  EXPECT_GT(all.size(), 2u);
+  const auto left = families_not_generated(Profile::kVulkan, *d, only);
+  EXPECT_EQ(left.size(), 5u);
+  for (const auto& [family, why] : left)
+    EXPECT_EQ(why, "not selected (--families)") << family;
+  // A campaign reports its selection; the unselected families are not generated.
+  Settings s;
+  s.driver_name = "reference";
+  s.profile = Profile::kVulkan;
+  s.cases = 12;
+  s.families = {"sliver"};
+  const Summary sum = run_fuzz(*d, s);
+  EXPECT_TRUE(sum.error.empty()) << sum.error;
+  ASSERT_EQ(sum.families.size(), 1u);
+  EXPECT_EQ(sum.families.begin()->first, "sliver");
+  EXPECT_EQ(sum.families.begin()->second.cases, 12u);
+}
+
+} // namespace
+} // namespace rastrules::fuzzer

@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -56,8 +57,8 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
                               "FUZZ.*). Mismatches are grouped by the rule that decided them and "
                               "their class.");
   std::vector<std::string> scenes;
-  std::optional<std::string> driver, profile, mode, out, cases, seed, shard, baseline, junit,
-      summary;
+  std::optional<std::string> driver, profile, mode, out, cases, seed, shard, families, baseline,
+      junit, summary;
   bool no_progress = false;
   if (want_scene)
     cl.scene_files(scenes);
@@ -77,6 +78,10 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
     cl.value("--seed", seed, "S", "the generator's seed (default 1)", "--seed needs a value");
     cl.value("--shard", shard, "K/N", "run the cases i with i mod N = K (FUZZ.SHARD)",
              "--shard needs a value");
+    cl.value("--families", families, "F,F,...",
+             "generate only these scene families: random, shared-edge, fan, grid, sliver, "
+             "points, lines (FUZZ.FAMILIES)",
+             "--families needs a value");
   }
   cl.value("--out", out, "DIR", "write the findings and report.json into DIR",
            "--out needs a value");
@@ -127,6 +132,26 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
     }
     o.settings.shard_index = static_cast<std::uint64_t>(*k);
     o.settings.shard_count = static_cast<std::uint64_t>(*n);
+  }
+  if (families) {
+    // rule: FUZZ.FAMILIES
+    std::string_view rest = *families;
+    while (true) {
+      const std::size_t comma = rest.find(',');
+      const std::string name(rest.substr(0, comma));
+      if (std::find(fuzzer::kFamilies.begin(), fuzzer::kFamilies.end(), name) ==
+          fuzzer::kFamilies.end()) {
+        usage_error("--families: unknown family " + shown_value(name) +
+                    " (known: random, shared-edge, fan, grid, sliver, points, lines)");
+        return std::nullopt;
+      }
+      if (std::find(o.settings.families.begin(), o.settings.families.end(), name) ==
+          o.settings.families.end())
+        o.settings.families.push_back(name);
+      if (comma == std::string_view::npos)
+        break;
+      rest.remove_prefix(comma + 1);
+    }
   }
   o.baseline_path = baseline.value_or("");
   o.junit_path = junit.value_or("");

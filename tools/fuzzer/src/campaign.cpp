@@ -267,7 +267,7 @@ std::optional<std::string> write_report(const Settings& settings, const std::str
 Summary run_fuzz(driver::Driver& driver, const Settings& settings) {
   Summary s;
   const auto start = std::chrono::steady_clock::now();
-  s.families_not_generated = families_not_generated(settings.profile, driver);
+  s.families_not_generated = families_not_generated(settings.profile, driver, settings.families);
   if (!make_out_dir(settings, s))
     return s;
   Campaign campaign(driver, settings);
@@ -286,7 +286,7 @@ Summary run_fuzz(driver::Driver& driver, const Settings& settings) {
       s.interrupted = true;
       break;
     }
-    auto c = generate_case(settings.seed, i, settings.profile, driver);
+    auto c = generate_case(settings.seed, i, settings.profile, driver, settings.families);
     if (!c) {
       ++s.skipped;
       s.skipped_cases.push_back(i);

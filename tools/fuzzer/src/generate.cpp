@@ -185,14 +185,33 @@ void lines(Rng& rng, Grid g, Scene& s) {
 
 // rule: FUZZ.GENERATE
 std::vector<std::pair<std::string, std::string>>
-families_not_generated(Profile profile, const driver::Driver& driver) {
+families_not_generated(Profile profile, const driver::Driver& driver,
+                       const std::vector<std::string>& only) {
   const driver::DriverInfo& info = driver.info();
   std::vector<std::pair<std::string, std::string>> out;
-  if (!info.points)
+  // rule: FUZZ.FAMILIES
+  if (!only.empty()) {
+    for (const std::string_view f : kFamilies) {
+      if (std::find(only.begin(), only.end(), f) == only.end())
+        out.emplace_back(std::string(f), "not selected (--families)");
+    }
+  }
+  const auto selected = [&](std::string_view f) {
+    return only.empty() || std::find(only.begin(), only.end(), f) != only.end();
+  };
+  if (!info.triangles) {
+    for (const char* f : {"random", "shared-edge", "fan", "grid", "sliver"}) {
+      if (selected(f))
+        out.emplace_back(f, "the driver does not draw triangles");
+    }
+  }
+  if (!selected("points")) {
+  } else if (!info.points)
     out.emplace_back("points", "the driver does not draw points");
-  if (profile == Profile::kD3D11 && !info.lines_d3d)
+  if (!selected("lines")) {
+  } else if (profile == Profile::kD3D11 && !info.lines_d3d)
     out.emplace_back("lines", "the driver does not draw d3d lines (profile d3d11)");
-  if (profile != Profile::kD3D11 && !info.lines_bresenham)
+  else if (profile != Profile::kD3D11 && !info.lines_bresenham)
     out.emplace_back("lines", "the driver does not draw vulkan-bresenham lines (profile " +
                                   std::string(to_string(profile)) + ")");
   return out;
@@ -200,7 +219,8 @@ families_not_generated(Profile profile, const driver::Driver& driver) {
 
 // rule: FUZZ.GENERATE
 std::optional<Case> generate_case(std::uint64_t seed, std::uint64_t index, Profile profile,
-                                  const driver::Driver& driver) {
+                                  const driver::Driver& driver,
+                                  const std::vector<std::string>& only) {
   const driver::DriverInfo& info = driver.info();
   std::vector<std::string> families;
   if (info.triangles) // rule: DRIVER.EXTERNAL.CAPABILITIES (a driver may declare no triangles)
@@ -209,6 +229,11 @@ std::optional<Case> generate_case(std::uint64_t seed, std::uint64_t index, Profi
     families.emplace_back("points");
   if (profile == Profile::kD3D11 ? info.lines_d3d : info.lines_bresenham)
     families.emplace_back("lines");
+  if (!only.empty()) { // rule: FUZZ.FAMILIES
+    std::erase_if(families, [&](const std::string& f) {
+      return std::find(only.begin(), only.end(), f) == only.end();
+    });
+  }
   if (families.empty())
     return std::nullopt;
   const bool msaa4 = std::find(info.sample_counts.begin(), info.sample_counts.end(), 4u) !=

@@ -42,13 +42,16 @@ inline std::optional<nlohmann::json> read_json_object(const std::string& path,
 
 // The campaign a report or summary describes (FUZZ.REPORT, FUZZ.SHARD).
 inline nlohmann::json campaign_json(const Settings& st, const std::string& description) {
-  return {{"driver", st.driver_name},
-          {"description", description},
-          {"profile", std::string(to_string(st.profile))},
-          {"mode", std::string(to_string(st.mode))},
-          {"seed", st.seed},
-          {"campaign_cases", st.cases},
-          {"shard", {{"index", st.shard_index}, {"count", st.shard_count}}}};
+  nlohmann::json j = {{"driver", st.driver_name},
+                      {"description", description},
+                      {"profile", std::string(to_string(st.profile))},
+                      {"mode", std::string(to_string(st.mode))},
+                      {"seed", st.seed},
+                      {"campaign_cases", st.cases},
+                      {"shard", {{"index", st.shard_index}, {"count", st.shard_count}}}};
+  if (!st.families.empty()) // FUZZ.FAMILIES: listed only when selected
+    j["families_selected"] = st.families;
+  return j;
 }
 
 } // namespace rastrules::fuzzer::detail

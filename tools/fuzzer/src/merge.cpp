@@ -80,6 +80,16 @@ std::optional<Summary> merge_reports(const std::vector<std::string>& dirs, Setti
         settings->cases = j->at("campaign_cases").get<std::uint64_t>();
         settings->shard_count = j->at("shard").at("count").get<std::uint64_t>();
         settings->shard_index = 0;
+        if (j->contains("families_selected"))
+          settings->families = j->at("families_selected").get<std::vector<std::string>>();
+      }
+      // Shards of one campaign select the same families. rule: FUZZ.FAMILIES
+      if (j->value("families_selected", nlohmann::json()) !=
+          first.value("families_selected", nlohmann::json())) {
+        *error = path + ": families_selected " +
+                 j->value("families_selected", nlohmann::json()).dump() + " differ from " +
+                 first.value("families_selected", nlohmann::json()).dump() + " in the first report";
+        return std::nullopt;
       }
       for (const char* key : {"driver", "profile", "mode", "seed", "campaign_cases"}) {
         if (j->at(key) != first.at(key)) {

@@ -7,6 +7,7 @@
 
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -63,13 +64,22 @@ struct Case {
 // info and driver.unsupported()) are not generated; nullopt when no attempt gave a scene
 // the driver supports.
 // rule: FUZZ.GENERATE
+// `only`, when not empty, restricts the families to those named (FUZZ.FAMILIES; the names of
+// kFamilies); with it the same (seed, index) may give another scene.
 [[nodiscard]] std::optional<Case> generate_case(std::uint64_t seed, std::uint64_t index,
-                                                Profile profile, const driver::Driver& driver);
+                                                Profile profile, const driver::Driver& driver,
+                                                const std::vector<std::string>& only = {});
+
+// The scene families in the order generate_case() draws from them.
+// rule: FUZZ.FAMILIES
+inline constexpr std::array<std::string_view, 7> kFamilies = {
+    "random", "shared-edge", "fan", "grid", "sliver", "points", "lines"};
 
 // The families generate_case() never draws for this driver and profile, each with the reason.
 // rule: FUZZ.GENERATE
 [[nodiscard]] std::vector<std::pair<std::string, std::string>>
-families_not_generated(Profile profile, const driver::Driver& driver);
+families_not_generated(Profile profile, const driver::Driver& driver,
+                       const std::vector<std::string>& only = {});
 
 // One differing pixel of one primitive: mask holds the samples missing (or extra).
 struct DiffEntry {
@@ -207,6 +217,8 @@ struct Settings {
   // i % shard_count == shard_index (the same scenes as the unsharded campaign).
   std::uint64_t shard_index = 0;
   std::uint64_t shard_count = 1;
+  // rule: FUZZ.FAMILIES
+  std::vector<std::string> families; // `--families`: only these (names of kFamilies); empty: all
 };
 
 // The cases of one scene family and how many of them mismatched.
