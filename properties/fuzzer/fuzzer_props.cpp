@@ -285,4 +285,42 @@ RC_GTEST_PROP(FuzzLegalTies, EitherRoundingOfEveryTieIsLegal, ()) {
   RC_ASSERT(c->match);
 }
 
+// A selection of families (FUZZ.FAMILIES) over random drivers, profiles, seeds and subsets:
+// every generated case is of a selected family the driver draws; the families not generated
+// are exactly the unselected ones ("not selected (--families)") and the selected ones the
+// driver does not draw; and a case is generated whenever one selected family is drawable.
+// rule: FUZZ.FAMILIES, FUZZ.GENERATE
+RC_GTEST_PROP(FuzzFamilies, ASelectionIsObeyedAndWhatItLeavesOutIsListed, ()) {
+  const std::string name = *rc::gen::element<std::string>("imprecise", "reference");
+  const auto d = open(name);
+  const auto profile = *rc::gen::element(fz::Profile::kD3D11, fz::Profile::kVulkan);
+  std::vector<std::string> only;
+  for (const std::string_view f : fz::kFamilies) {
+    if (*rc::gen::arbitrary<bool>())
+      only.emplace_back(f);
+  }
+  RC_PRE(!only.empty());
+  const auto left = fz::families_not_generated(profile, *d, only);
+  std::set<std::string> not_generated;
+  for (const auto& [family, why] : left) {
+    const bool selected = std::find(only.begin(), only.end(), family) != only.end();
+    RC_ASSERT(selected == (why != "not selected (--families)"));
+    not_generated.insert(family);
+  }
+  std::vector<std::string> drawable;
+  for (const std::string& f : only) {
+    if (not_generated.count(f) == 0)
+      drawable.push_back(f);
+  }
+  const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 20);
+  for (std::uint64_t i = 0; i < 6; ++i) {
+    const auto c = fz::generate_case(seed, i, profile, *d, only);
+    if (!drawable.empty())
+      RC_ASSERT(c.has_value());
+    if (c)
+      RC_ASSERT(std::find(drawable.begin(), drawable.end(), c->family) != drawable.end());
+  }
+  RC_CLASSIFY(drawable.size() < only.size(), "a selected family not drawable");
+}
+
 } // namespace
