@@ -24,6 +24,27 @@ namespace rastrules::cli {
 
 namespace {
 
+// The options of a campaign's results that fuzz, check and fuzz-merge share: --baseline
+// (FUZZ.BASELINE), --junit and --summary-json (FUZZ.RESULTS).
+struct ResultOptions {
+  std::optional<std::string> baseline, junit, summary;
+
+  void declare(CommandLine& cl) {
+    cl.value("--baseline", baseline, "KNOWN.json",
+             "known findings: only groups the file does not list fail (FUZZ.BASELINE)",
+             "--baseline needs a value");
+    cl.value("--junit", junit, "FILE.xml", "write the results as JUnit XML (FUZZ.RESULTS)",
+             "--junit needs a value");
+    cl.value("--summary-json", summary, "FILE.json", "write a JSON summary (FUZZ.RESULTS)",
+             "--summary-json needs a value");
+  }
+  void store(FuzzOptions& o) const {
+    o.baseline_path = baseline.value_or("");
+    o.junit_path = junit.value_or("");
+    o.summary_path = summary.value_or("");
+  }
+};
+
 // Sets `out` to `parsed`, the value of `option` ("--profile") read from `value`; when there is
 // none, prints the usage error "OPTION: unknown NAME "VALUE" (CHOICES)" and returns false.
 template <class T>
@@ -57,8 +78,8 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
                               "FUZZ.*). Mismatches are grouped by the rule that decided them and "
                               "their class.");
   std::vector<std::string> scenes;
-  std::optional<std::string> driver, profile, mode, out, cases, seed, shard, families, baseline,
-      junit, summary;
+  std::optional<std::string> driver, profile, mode, out, cases, seed, shard, families;
+  ResultOptions results;
   bool no_progress = false;
   if (want_scene)
     cl.scene_files(scenes);
@@ -85,13 +106,7 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
   }
   cl.value("--out", out, "DIR", "write the findings and report.json into DIR",
            "--out needs a value");
-  cl.value("--baseline", baseline, "KNOWN.json",
-           "known findings: only groups the file does not list fail (FUZZ.BASELINE)",
-           "--baseline needs a value");
-  cl.value("--junit", junit, "FILE.xml", "write the results as JUnit XML (FUZZ.RESULTS)",
-           "--junit needs a value");
-  cl.value("--summary-json", summary, "FILE.json", "write a JSON summary (FUZZ.RESULTS)",
-           "--summary-json needs a value");
+  results.declare(cl);
   cl.flag("--no-progress", no_progress, "no progress bar on standard error");
   if (const auto stop = cl.parse(args, command + ": ")) {
     status = *stop; // 0 after --help
@@ -153,9 +168,7 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
       rest.remove_prefix(comma + 1);
     }
   }
-  o.baseline_path = baseline.value_or("");
-  o.junit_path = junit.value_or("");
-  o.summary_path = summary.value_or("");
+  results.store(o);
   // rule: SCENE.INPUT.ERRORS
   // -q: no progress bar; -v: the progress bar even when standard error is no terminal.
   if (no_progress || verbosity() == Verbosity::kQuiet)
@@ -266,25 +279,18 @@ int run_fuzz(const Args& args) {
 int run_fuzz_merge(const Args& args) {
   FuzzOptions o;
   std::vector<std::string> dirs;
-  std::optional<std::string> out, baseline, junit, summary;
+  std::optional<std::string> out;
+  ResultOptions results;
   CommandLine cl("fuzz-merge", "Join the --out DIRs of the N shards of a campaign into that "
                                "campaign (FUZZ.MERGE): the summary, groups, exit status and "
                                "outputs of fuzz.");
   cl.positionals("DIR", dirs, "the --out folder of each shard");
   cl.value("--out", out, "DIR", "write the merged report into DIR", "--out needs a value");
-  cl.value("--baseline", baseline, "KNOWN.json",
-           "known findings: only groups the file does not list fail (FUZZ.BASELINE)",
-           "--baseline needs a value");
-  cl.value("--junit", junit, "FILE.xml", "write the results as JUnit XML (FUZZ.RESULTS)",
-           "--junit needs a value");
-  cl.value("--summary-json", summary, "FILE.json", "write a JSON summary (FUZZ.RESULTS)",
-           "--summary-json needs a value");
+  results.declare(cl);
   if (const auto stop = cl.parse(args, "fuzz-merge: "))
     return *stop;
   o.settings.out_dir = out.value_or("");
-  o.baseline_path = baseline.value_or("");
-  o.junit_path = junit.value_or("");
-  o.summary_path = summary.value_or("");
+  results.store(o);
   if (dirs.empty())
     return usage_error("missing shard DIR");
   if (!o.baseline_path.empty()) {

@@ -9,39 +9,18 @@
 
 #include "json_file.hpp"
 #include "rastrules/fuzzer/fuzzer.hpp"
+#include "rastrules/io/html.hpp"
 
 namespace rastrules::fuzzer {
 namespace {
 
 using nlohmann::json;
 
-// Text as XML character data or an attribute value; characters XML 1.0 forbids become '?'.
+// Text as XML character data or an attribute value: the pages' escaper (io::html_escape), whose
+// output is also valid XML 1.0 (the five markup characters escaped, invalid UTF-8 and the
+// control characters XML forbids replaced by U+FFFD).
 std::string xml(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char ch : text) {
-    const auto c = static_cast<unsigned char>(ch);
-    switch (ch) {
-    case '&':
-      out += "&amp;";
-      break;
-    case '<':
-      out += "&lt;";
-      break;
-    case '>':
-      out += "&gt;";
-      break;
-    case '"':
-      out += "&quot;";
-      break;
-    case '\'':
-      out += "&apos;";
-      break;
-    default:
-      out += (c < 0x20 && ch != '\n' && ch != '\t' && ch != '\r') ? '?' : ch;
-    }
-  }
-  return out;
+  return io::html_escape(text);
 }
 
 std::string u(std::uint64_t n) {
