@@ -30,6 +30,7 @@ import numpy as np
 
 from . import _core
 from ._core import Scene
+from .binary import read_fragments_binary
 
 __version__ = _core.__version__
 
@@ -44,6 +45,7 @@ __all__ = [
     "explain_dict",
     "profiles",
     "fragment_dtype",
+    "read_fragments_binary",
     "__version__",
 ]
 

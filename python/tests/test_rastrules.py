@@ -297,3 +297,75 @@ def test_the_example_answers_the_capabilities_query():
 def test_the_docstring_example_runs():
     result = doctest.testmod(rastrules)
     assert result.attempted >= 4 and result.failed == 0
+
+
+# rule: SCENE.OUTPUT.BINARY
+# The binary fragment list the command line writes, read by the NumPy reader: the fragments of
+# the JSON list, field for field, for single-sample and multisampled scenes and a strip's seg.
+BINARY_SCENES = {
+    "triangles": {"target": {"width": 16, "height": 12}, "primitives": [
+        {"type": "triangle", "v": [[0.5, 0.5], [15.5, 2], [3, 11.5]]},
+        {"type": "triangle", "v": [[15, 11], [4, 11.5], [15.5, 1]]},
+        {"type": "point", "v": [[7.5, 6.5]]}]},
+    "strip": {"target": {"width": 12, "height": 8}, "primitives": [
+        {"type": "line_strip", "v": [[1, 1], [10, 3], [2, 7], [11, 6]]}]},
+    "msaa": {"target": {"width": 8, "height": 6}, "samples": 4, "sample_mask": 13,
+             "primitives": [{"type": "triangle", "v": [[0.25, 0.5], [7.5, 1], [1, 5.75]]},
+                            {"type": "line", "v": [[0, 5], [8, 0]]}]},
+    "path": {"target": {"width": 10, "height": 10}, "primitives": [
+        {"type": "path", "d": "M 1 1 L 9 1 L 1 9 Z M 2 2 L 6 2 L 2 6 Z", "fill_rule": "evenodd"}]},
+}
+
+
+@pytest.mark.parametrize("name", sorted(BINARY_SCENES))
+def test_binary_fragments_equal_the_json_list(tmp_path, name):
+    scene = scene_file(tmp_path, BINARY_SCENES[name])
+    out = tmp_path / "f.bin"
+    r = cli("render", str(scene), "--fragments", str(out))
+    assert r.returncode == 0, r.stderr
+    header, frags = rastrules.read_fragments_binary(out)
+    listed = json.loads(cli("render", str(scene), "--fragments", "-").stdout)["fragments"]
+    assert header["width"] == BINARY_SCENES[name]["target"]["width"]
+    assert len(frags) == len(listed) > 0
+    for got, want in zip(frags, listed):
+        assert (int(got["prim"]), int(got["x"]), int(got["y"]), int(got["mask"]),
+                int(got["seg"])) == (want["prim"], want["x"], want["y"], want["mask"],
+                                     want.get("seg", -1))
+    # The same bytes from standard output with the format named.
+    assert subprocess.run([CLI, "render", str(scene), "--fragments", "-", "--fragments-format",
+                           "binary"], capture_output=True, check=True).stdout == out.read_bytes()
+
+
+def test_binary_reader_refuses_damaged_files(tmp_path):
+    scene = scene_file(tmp_path, BINARY_SCENES["msaa"])
+    out = tmp_path / "f.bin"
+    assert cli("render", str(scene), "--fragments", str(out)).returncode == 0
+    good = out.read_bytes()
+    rastrules.read_fragments_binary(good)
+    # Every cut is refused with a one-line error naming a byte offset.
+    for cut in range(len(good)):
+        with pytest.raises(ValueError, match=r"^byte \d+: "):
+            rastrules.read_fragments_binary(good[:cut])
+
+    def damaged(at, value):
+        b = bytearray(good)
+        b[at:at + len(value)] = value
+        return bytes(b)
+
+    u32 = lambda v: v.to_bytes(4, "little")
+    for data, message in [
+        (damaged(0, b"\x88"), "wrong magic"),
+        (damaged(8, u32(2)), "version 2"),
+        (damaged(12, u32(0)), "width 0"),
+        (damaged(20, u32(17)), "samples 17"),
+        (damaged(24, u32(1)), "mask bytes 1"),
+        (damaged(28, u32(1)), "reserved"),
+        (damaged(32 + 8, u32(6)), "row 6 is outside"),
+        (damaged(32 + 16, u32(0)), "a run of 0 pixels"),
+        (damaged(32 + 20, b"\x00\x00"), "mask 0"),
+        (damaged(32 + 20, b"\x10\x00"), "mask 16"),
+        (good + b"\x00", "bytes after the end record"),
+        (damaged(len(good) - 16, (1 << 40).to_bytes(8, "little")), "the end record counts"),
+    ]:
+        with pytest.raises(ValueError, match=message):
+            rastrules.read_fragments_binary(data)

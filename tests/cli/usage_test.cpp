@@ -38,8 +38,8 @@ TEST(CliUsage, UsageErrorsAreOneLineAndAHintWithStatus2) {
       {{"help", "draw"}, "help: unknown command \"draw\"", "run 'rastrules --help'"},
       {{"render"}, "render: missing SCENE.json", "run 'rastrules render --help'"},
       {{"render", "scene.json"},
-       "render: give --fragments OUT.json, --png OUT.png, --resolve OUT.png or --depth-out "
-       "OUT.json",
+       "render: give --fragments OUT.json, --png OUT.png, --resolve OUT.png, --depth-out "
+       "OUT.json or --count OUT.json",
        "run 'rastrules render --help'"},
       {{"render", "scene.json", "--fragments"},
        "--fragments needs a file name",

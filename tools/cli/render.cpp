@@ -18,7 +18,9 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "count.hpp"
 #include "parser.hpp"
+#include "rastrules/io/fragment_binary.hpp"
 #include "rastrules/io/fragment_json.hpp"
 #include "rastrules/io/image.hpp"
 #include "rastrules/io/picture.hpp"
@@ -116,7 +118,8 @@ std::optional<std::string> write_resolved(const PreparedScene& scene,
 // What `render` was asked for.
 struct RenderRequest {
   std::string scene_path;
-  std::optional<std::string> fragments_path, png_path, resolve_path, depth_out_path;
+  std::optional<std::string> fragments_path, png_path, resolve_path, depth_out_path, count_path;
+  bool fragments_binary = false; // SCENE.OUTPUT.BINARY
   std::optional<int> scale;
   bool png_depth = false;
   std::uint64_t max_fragments = io::kDefaultMaxFragments;
@@ -158,6 +161,11 @@ double depth_01(const pipe::DepthValue& d, pipe::DepthFormat f) {
 // the coverage picture (or with --png-depth the depth buffer in grey), the resolved target of
 // the samples that passed the depth test, and with --depth-out the final depth buffer.
 int render_pipeline(const Scene& scene, const RenderRequest& rq) {
+  // rule: SCENE.OUTPUT.BINARY
+  if (rq.fragments_binary) {
+    return error("--fragments: the binary format holds window-space coverage (prim, seg, x, y, "
+                 "mask); a pipeline scene's fragments are written as JSON (SCENE.OUTPUT.BINARY)");
+  }
   if ((rq.png_depth || rq.depth_out_path) && !scene.depth) {
     return error(std::string(rq.png_depth ? "--png-depth" : "--depth-out") +
                  ": the scene has no \"depth\" (SCENE.PIPELINE)");
@@ -422,7 +430,10 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
   // their number), a point's or line's after the kernel sorts that one primitive's list. The
   // coverage map (for the picture) is width * height.
   std::optional<io::FragmentWriter> writer;
-  if (rq.fragments_path)
+  std::optional<io::FragmentBinaryWriter> binary_writer; // rule: SCENE.OUTPUT.BINARY
+  if (rq.fragments_path && rq.fragments_binary)
+    binary_writer.emplace(fragments_file.get(), io::fragment_binary_header(scene));
+  else if (rq.fragments_path)
     writer.emplace(fragments_file.get());
   std::unique_ptr<io::CoverageMap> coverage;
   if (rq.png_path) {
@@ -441,6 +452,10 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
   }
   struct ResolveFailed {
     SceneError error;
+  };
+  struct NotInBinary {
+    std::uint32_t prim;
+    std::string field;
   };
   bool in_order = true;
   std::uint64_t fragment_count = 0;
@@ -471,6 +486,18 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
       throw TooManyFragments{};
     if (writer)
       in_order = (encoded ? writer->add_without_text(f) : writer->add(f)) && in_order;
+    if (binary_writer) {
+      switch (binary_writer->add(f)) {
+      case io::FragmentBinaryWriter::Added::kOk:
+        break;
+      case io::FragmentBinaryWriter::Added::kOutOfOrder:
+        in_order = false;
+        break;
+      case io::FragmentBinaryWriter::Added::kUnsupported:
+        throw NotInBinary{
+            f.prim, io::unsupported_field(f, io::fragment_binary_header(scene)).value_or("field")};
+      }
+    }
     if (coverage)
       coverage->add_fragment(f);
     if (resolver) {
@@ -498,13 +525,16 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
                  " fragments (limit SCENE.INPUT.LIMITS)" + std::string(kMaxFragmentsHint));
   } catch (const ResolveFailed& e) {
     return error("--resolve: " + e.error.what());
+  } catch (const NotInBinary& e) {
+    // rule: SCENE.OUTPUT.BINARY
+    return error("--fragments: the binary format holds prim, seg, x, y and mask; primitives[" +
+                 std::to_string(e.prim) + "]'s fragments have a \"" + e.field +
+                 "\" field (write JSON: --fragments-format json; SCENE.OUTPUT.BINARY)");
   }
   if (!in_order)
     return error("internal error: the kernel emitted fragments out of (prim, y, x, seg) order");
-  if (writer) {
-    if (!writer->finish())
-      return error(*rq.fragments_path + ": write failed");
-  }
+  if ((writer && !writer->finish()) || (binary_writer && !binary_writer->finish()))
+    return error(*rq.fragments_path + ": write failed");
   if (rq.png_path) {
     const io::Image image = io::draw_picture(scene, *coverage, *picture_scale);
     if (auto err = io::write_png(png_file.get(), image))
@@ -524,6 +554,67 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
     return error(*err);
   if (rq.to_stdout == 0 && verbosity() != Verbosity::kQuiet)
     print_summary(scene.primitives.size(), fragment_count, outputs);
+  return kExitOk;
+}
+
+// rule: SCENE.OUTPUT.COUNT, SCENE.INPUT.LIMITS
+// Writes the counts alone (--count): the batch counter where the scene allows it, else the
+// fragments streamed as for --fragments (window-space scenes) or run_pipeline's (pipeline
+// scenes), counted without being kept. Helper lanes are not counted.
+int render_count(const LoadedScene& loaded, const RenderRequest& rq) {
+  std::optional<FragmentCounts> counts;
+  const auto count_all = [&](const std::vector<Fragment>& fragments) {
+    for (const Fragment& f : fragments) {
+      if (!f.helper)
+        counts->add(f.prim, f.x, f.y);
+    }
+  };
+  if (!loaded.prepared) {
+    const Scene& scene = loaded.scene;
+    const std::optional<pipe::PipeResult> result =
+        run_pipeline_or_report(scene, rq.options, rq.max_fragments, rq.pipeline_plain, rq.max_work);
+    if (!result)
+      return kExitBadInput;
+    counts.emplace(scene.primitives.size(), scene.width, scene.height);
+    count_all(result->fragments);
+  } else {
+    const PreparedScene& scene = *loaded.prepared;
+    // rule: SCENE.INPUT.LIMITS
+    if (const auto p = first_primitive_over_work(scene, rq.max_work))
+      return error("render: primitives[" + std::to_string(*p) + "] " +
+                   work_limit_problem(rq.max_work) + std::string(kMaxWorkHint));
+    counts = batch_counts(loaded, rq.options);
+    if (!counts) {
+      counts.emplace(scene.primitives.size(), scene.width, scene.height);
+      const auto emit = [&](const Fragment& f) {
+        if (!f.helper)
+          counts->add(f.prim, f.x, f.y);
+      };
+      if (const auto p = stream_fragments(scene, rq, emit, nullptr)) {
+        return error(
+            "render: primitives[" + std::to_string(*p) + "] touches more than " +
+            std::to_string(2 * rq.max_fragments) +
+            " pixels or fragments that must be held to be sorted (limit SCENE.INPUT.LIMITS, 2 x "
+            "--max-fragments)" +
+            std::string(kMaxFragmentsHint));
+      }
+    }
+  }
+  OutputFile file;
+  if (auto err = file.open(*rq.count_path))
+    return error(*err);
+  const std::string text = counts_json(*counts);
+  if (std::fwrite(text.data(), 1, text.size(), file.get()) != text.size() ||
+      std::fflush(file.get()) != 0)
+    return error(*rq.count_path + ": write failed");
+  if (auto err = file.commit())
+    return error(*err);
+  if (rq.to_stdout == 0 && verbosity() != Verbosity::kQuiet) {
+    std::uint64_t total = 0;
+    for (const std::uint64_t n : counts->per_primitive)
+      total += n;
+    print_summary(loaded.scene.primitives.size(), total, {{&file, &rq.count_path}});
+  }
   return kExitOk;
 }
 
@@ -549,10 +640,19 @@ std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
                            "pipeline, SCENE.OUTPUT.PIPELINE). \"-\" reads standard input or "
                            "writes one output to standard output.");
   std::vector<std::string> scenes;
-  std::optional<std::string> scale, max_fragments, max_work, threads, traversal, isa;
+  std::optional<std::string> scale, max_fragments, max_work, threads, traversal, isa,
+      fragments_format;
   cl.scene_files(scenes);
   cl.value("--fragments", rq.fragments_path, "OUT.json",
            "write the fragment list, sorted by (prim, y, x)", "--fragments needs a file name");
+  cl.value("--fragments-format", fragments_format, "json|binary",
+           "the fragment list's format: JSON, or the compact binary runs of "
+           "SCENE.OUTPUT.BINARY (default: binary when OUT ends in .bin)",
+           "--fragments-format needs \"json\" or \"binary\", got nothing");
+  cl.value("--count", rq.count_path, "OUT.json",
+           "write the counts alone: fragments per primitive and per pixel (overdraw), from the "
+           "batch counter where the scene allows (SCENE.OUTPUT.COUNT)",
+           "--count needs a file name");
   cl.value("--png", rq.png_path, "OUT.png",
            "draw the target magnified (the pixel grid, pixel centres, snapped edges, covered "
            "pixels by primitive, overlaps hatched in red; sample points of multisampled scenes)",
@@ -592,11 +692,12 @@ std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
   if (const auto stop = cl.parse(args, "render: "))
     return stop;
   for (const auto* path :
-       {&rq.fragments_path, &rq.png_path, &rq.resolve_path, &rq.depth_out_path}) {
+       {&rq.fragments_path, &rq.png_path, &rq.resolve_path, &rq.depth_out_path, &rq.count_path}) {
     if (*path && (*path)->empty()) {
       const char* name = path == &rq.fragments_path ? "--fragments"
                          : path == &rq.png_path     ? "--png"
                          : path == &rq.resolve_path ? "--resolve"
+                         : path == &rq.count_path   ? "--count"
                                                     : "--depth-out";
       return usage_error(std::string(name) + " needs a file name");
     }
@@ -662,14 +763,33 @@ std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
   }
   if (const auto status = take_scene_argument("render", scenes, rq.scene_path))
     return *status;
-  if (!rq.fragments_path && !rq.png_path && !rq.resolve_path && !rq.depth_out_path) {
-    return usage_error("render: give --fragments OUT.json, --png OUT.png, --resolve OUT.png or "
-                       "--depth-out OUT.json");
+  if (!rq.fragments_path && !rq.png_path && !rq.resolve_path && !rq.depth_out_path &&
+      !rq.count_path) {
+    return usage_error("render: give --fragments OUT.json, --png OUT.png, --resolve OUT.png, "
+                       "--depth-out OUT.json or --count OUT.json");
   }
-  rq.to_stdout = (rq.fragments_path && *rq.fragments_path == "-") +
-                 (rq.png_path && *rq.png_path == "-") +
-                 (rq.resolve_path && *rq.resolve_path == "-") +
-                 (rq.depth_out_path && *rq.depth_out_path == "-");
+  // rule: SCENE.OUTPUT.COUNT
+  if (rq.count_path && (rq.fragments_path || rq.png_path || rq.resolve_path || rq.depth_out_path)) {
+    return usage_error("render: --count writes the counts alone; give it without --fragments, "
+                       "--png, --resolve and --depth-out");
+  }
+  // rule: SCENE.OUTPUT.BINARY
+  if (fragments_format) {
+    if (!rq.fragments_path)
+      return usage_error("render: --fragments-format needs --fragments");
+    if (*fragments_format != "json" && *fragments_format != "binary") {
+      return error("--fragments-format needs \"json\" or \"binary\", got " +
+                   shown_value(fragments_format));
+    }
+    rq.fragments_binary = *fragments_format == "binary";
+  } else if (rq.fragments_path) {
+    rq.fragments_binary = rq.fragments_path->size() > 4 &&
+                          rq.fragments_path->compare(rq.fragments_path->size() - 4, 4, ".bin") == 0;
+  }
+  rq.to_stdout =
+      (rq.fragments_path && *rq.fragments_path == "-") + (rq.png_path && *rq.png_path == "-") +
+      (rq.resolve_path && *rq.resolve_path == "-") +
+      (rq.depth_out_path && *rq.depth_out_path == "-") + (rq.count_path && *rq.count_path == "-");
   if (rq.to_stdout > 1) {
     return usage_error("render: only one of --fragments, --png and --resolve can be standard "
                        "output (--depth-out counts too)");
@@ -709,6 +829,8 @@ int run_render(const Args& args) {
   const auto loaded = load_scene(rq.scene_path);
   if (!loaded)
     return kExitBadInput;
+  if (rq.count_path)
+    return render_count(*loaded, rq);
   // A scene with pipeline state goes through the pipeline; one without, prepared by
   // load_scene(), is the pipeline's identity case, streamed in constant memory.
   if (!loaded->prepared)

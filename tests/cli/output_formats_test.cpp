@@ -1,0 +1,359 @@
+// SPDX-License-Identifier: MIT
+// rastrules render --fragments OUT.bin (SCENE.OUTPUT.BINARY) and --count (SCENE.OUTPUT.COUNT):
+// the binary runs hold exactly the JSON list's fragments and the reader refuses every damage;
+// the counts equal the fragment list's, from the batch counter and from the traversal alike.
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <random>
+#include <string>
+#include <tuple>
+#include <variant>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "rastrules/io/fragment_binary.hpp"
+#include "support.hpp"
+
+namespace {
+
+using rastrules::Fragment;
+using rastrules::test::read_file;
+using rastrules::test::run_cli;
+using rastrules::test::TempDir;
+
+std::vector<std::uint8_t> bytes_of(const std::string& s) {
+  return {s.begin(), s.end()};
+}
+
+// (prim, x, y, mask, seg or -1) of every fragment of a JSON list, helper lanes left out.
+using Row = std::tuple<std::uint32_t, std::int32_t, std::int32_t, std::uint32_t, std::int64_t>;
+std::vector<Row> rows_of_json(const std::string& text, bool with_helpers = false) {
+  std::vector<Row> out;
+  const nlohmann::json list = nlohmann::json::parse(text);
+  for (const auto& f : list.at("fragments")) {
+    if (!with_helpers && f.value("helper", false))
+      continue;
+    out.emplace_back(f.at("prim").get<std::uint32_t>(), f.at("x").get<std::int32_t>(),
+                     f.at("y").get<std::int32_t>(), f.at("mask").get<std::uint32_t>(),
+                     f.contains("seg") ? f.at("seg").get<std::int64_t>() : -1);
+  }
+  return out;
+}
+
+std::vector<Row> rows_of(const std::vector<Fragment>& fragments) {
+  std::vector<Row> out;
+  for (const Fragment& f : fragments)
+    out.emplace_back(f.prim, f.x, f.y, f.mask, f.seg ? std::int64_t{*f.seg} : -1);
+  return out;
+}
+
+rastrules::io::FragmentBinary read_binary(const std::string& bytes) {
+  auto r = rastrules::io::read_fragment_binary(bytes_of(bytes));
+  if (const auto* err = std::get_if<std::string>(&r))
+    ADD_FAILURE() << *err;
+  return std::get<rastrules::io::FragmentBinary>(std::move(r));
+}
+
+// Scenes of every kind the binary format holds: triangles, points, lines, a strip (seg),
+// multisampled with a sample mask, paths (samples), and a scene whose rows cross the edge.
+const std::map<std::string, std::string> kScenes = {
+    {"triangles", R"({"target": {"width": 16, "height": 12}, "primitives": [
+      {"type": "triangle", "v": [[0.5, 0.5], [15.5, 2], [3, 11.5]]},
+      {"type": "triangle", "v": [[15, 11], [4, 11.5], [15.5, 1]]},
+      {"type": "triangle", "v": [[-4, -3], [30, 5], [2, 40]]}]})"},
+    {"points_lines", R"({"target": {"width": 12, "height": 8}, "line_mode": "vulkan-bresenham",
+      "primitives": [{"type": "point", "v": [[6.5, 4.5]]},
+      {"type": "line", "v": [[0.5, 0.5], [11.5, 7]]},
+      {"type": "line_strip", "v": [[1, 1], [10, 3], [2, 7], [11, 6]]}]})"},
+    {"msaa", R"({"target": {"width": 8, "height": 6}, "samples": 4, "sample_mask": 13,
+      "primitives": [{"type": "triangle", "v": [[0.25, 0.5], [7.5, 1], [1, 5.75]]},
+      {"type": "line", "v": [[0, 5], [8, 0]]}]})"},
+    {"msaa16", R"({"target": {"width": 5, "height": 5}, "samples": 16,
+      "primitives": [{"type": "triangle", "v": [[0.1, 0.3], [4.9, 0.2], [2, 4.8]]}]})"},
+    {"paths", R"({"target": {"width": 10, "height": 10}, "primitives": [
+      {"type": "path", "d": "M 1 1 L 9 1 L 1 9 Z M 2 2 L 6 2 L 2 6 Z", "fill_rule": "evenodd"},
+      {"type": "path", "d": "M 1 9 Q 5 0 9 9 Z"}]})"},
+};
+
+// rule: SCENE.OUTPUT.BINARY
+TEST(BinaryFragments, HoldExactlyTheJsonListForEveryKindOfScene) {
+  for (const auto& [name, scene] : kScenes) {
+    SCOPED_TRACE(name);
+    TempDir dir;
+    const auto in = dir.write("s.json", scene);
+    ASSERT_EQ(run_cli({"render", in.string(), "--fragments", (dir / "f.json").string()}).status, 0);
+    const auto r = run_cli({"render", in.string(), "--fragments", (dir / "f.bin").string()});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string bin = read_file(dir / "f.bin");
+    const auto read = read_binary(bin);
+    const auto want = rows_of_json(read_file(dir / "f.json"));
+    ASSERT_FALSE(want.empty());
+    EXPECT_EQ(rows_of(read.fragments), want);
+    EXPECT_EQ(read.header.width, static_cast<std::uint32_t>(
+                                     nlohmann::json::parse(scene)["target"]["width"].get<int>()));
+    // Any name with --fragments-format binary, standard output included, and any thread count:
+    // the same bytes.
+    EXPECT_EQ(
+        run_cli({"render", in.string(), "--fragments", "-", "--fragments-format", "binary"}).out,
+        bin);
+    ASSERT_EQ(run_cli({"render", in.string(), "--threads", "3", "--fragments",
+                       (dir / "g.dat").string(), "--fragments-format", "binary"})
+                  .status,
+              0);
+    EXPECT_EQ(read_file(dir / "g.dat"), bin);
+  }
+}
+
+// rule: SCENE.OUTPUT.BINARY
+TEST(BinaryFragments, ATriangleIsOneRunARowAndSingleSampleScenesStoreNoMasks) {
+  TempDir dir;
+  const auto in = dir.write("s.json", R"({"target": {"width": 64, "height": 64}, "primitives": [
+    {"type": "triangle", "v": [[0, 0], [64, 0], [0, 64]]}]})");
+  ASSERT_EQ(run_cli({"render", in.string(), "--fragments", (dir / "f.bin").string()}).status, 0);
+  const std::string bin = read_file(dir / "f.bin");
+  const auto read = read_binary(bin);
+  // Pixel (x, y) is covered when x + y <= 62 (the diagonal is a right edge: excluded): rows 0
+  // to 62, 63 - y pixels each.
+  EXPECT_EQ(read.runs, 63u);
+  EXPECT_EQ(read.header.mask_bytes, 0u);
+  EXPECT_EQ(read.fragments.size(), 63u * 64u / 2u);
+  EXPECT_EQ(bin.size(), 32u + 63u * 20u + 24u);
+}
+
+// rule: SCENE.OUTPUT.BINARY
+TEST(BinaryFragments, FieldsTheFormatDoesNotHoldAreBadInputAndLeaveNoFile) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"target": {"width": 8, "height": 8}, "primitives": [
+         {"type": "triangle", "v": [[0, 0], [8, 0], [0, 8]]},
+         {"type": "line", "v": [[0.5, 1], [7, 6]], "aa": true}]})",
+       "primitives[1]'s fragments have a \"coverage\" field"},
+      {R"({"target": {"width": 8, "height": 8}, "samples": 4, "centroid": "d3d11",
+         "primitives": [{"type": "triangle", "v": [[0, 0], [8, 0], [0, 8]]}]})",
+       "primitives[0]'s fragments have a \"centroid\" field"},
+      {R"({"target": {"width": 8, "height": 8}, "primitives": [
+         {"type": "path", "d": "M 1 1 L 7 1 L 1 7 Z", "coverage": "area"}]})",
+       "\"area\" field"},
+      {R"({"target": {"width": 8, "height": 8}, "depth": {"format": "d24", "func": "less"},
+         "primitives": [{"type": "triangle", "v": [[0, 0], [8, 0], [0, 8]]}]})",
+       "a pipeline scene's fragments are written as JSON"},
+  };
+  for (const auto& [scene, message] : cases) {
+    TempDir dir;
+    const auto in = dir.write("s.json", scene);
+    const auto r = run_cli({"render", in.string(), "--fragments", (dir / "f.bin").string()});
+    EXPECT_EQ(r.status, 2);
+    ASSERT_EQ(r.err_lines().size(), 1u) << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "f.bin"));
+  }
+}
+
+// rule: SCENE.OUTPUT.BINARY
+// Every cut and every damaged field is refused with a one-line error naming its byte.
+TEST(BinaryFragments, TheReaderRefusesEveryCutAndEveryDamagedField) {
+  TempDir dir;
+  const auto in = dir.write("s.json", kScenes.at("msaa"));
+  ASSERT_EQ(run_cli({"render", in.string(), "--fragments", (dir / "f.bin").string()}).status, 0);
+  const std::string good = read_file(dir / "f.bin");
+  for (std::size_t cut = 0; cut < good.size(); ++cut) {
+    const auto r = rastrules::io::read_fragment_binary(bytes_of(good.substr(0, cut)));
+    ASSERT_TRUE(std::holds_alternative<std::string>(r)) << "cut at " << cut;
+    EXPECT_EQ(std::get<std::string>(r).rfind("byte ", 0), 0u);
+  }
+  const auto u32 = [](std::uint32_t v) {
+    return std::string{static_cast<char>(v & 0xFF), static_cast<char>((v >> 8) & 0xFF),
+                       static_cast<char>((v >> 16) & 0xFF), static_cast<char>(v >> 24)};
+  };
+  const auto damaged = [&](std::size_t at, const std::string& value) {
+    std::string b = good;
+    b.replace(at, value.size(), value);
+    return b;
+  };
+  // The second run, to break the order: the first run's bytes (20 + masks padded).
+  const auto first_run_bytes = [&] {
+    const std::uint32_t n = static_cast<std::uint8_t>(good[32 + 16]);
+    return 20 + (n * 2 + 3) / 4 * 4;
+  }();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {damaged(0, "\x88"), "byte 0: not a rastrules binary fragment list"},
+      {damaged(8, u32(2)), "byte 8: version 2 is not 1"},
+      {damaged(12, u32(0)), "byte 12: width 0 is outside [1, 16384]"},
+      {damaged(16, u32(16385)), "byte 16: height 16385"},
+      {damaged(20, u32(17)), "byte 20: samples 17"},
+      {damaged(24, u32(1)), "byte 24: mask bytes 1"},
+      {damaged(28, u32(1)), "byte 28: the reserved field is not 0"},
+      {damaged(32 + 8, u32(6)), "byte 40: row 6 is outside the target's 6"},
+      {damaged(32 + 12, u32(8)), "byte 44: column 8 is outside the target's 8"},
+      {damaged(32 + 16, u32(0)), "byte 48: a run of 0 pixels"},
+      {damaged(32 + 16, u32(100)), "does not fit a row of 8"},
+      {damaged(32 + 20, std::string(2, '\0')), "byte 52: mask 0 is not a nonzero mask"},
+      {damaged(32 + 20, std::string("\x10\0", 2)), "mask 16 is not a nonzero mask of 4 samples"},
+      {damaged(32 + first_run_bytes + 8, u32(0)), "does not come after the previous one"},
+      {good + std::string(1, '\0'), "bytes after the end record"},
+      {damaged(good.size() - 16, u32(12345)), "the end record counts 12345 fragments"},
+      {damaged(good.size() - 8, u32(7)), "the end record counts 7 runs"},
+  };
+  for (const auto& [data, message] : cases) {
+    const auto r = rastrules::io::read_fragment_binary(bytes_of(data));
+    ASSERT_TRUE(std::holds_alternative<std::string>(r)) << message;
+    EXPECT_NE(std::get<std::string>(r).find(message), std::string::npos)
+        << std::get<std::string>(r);
+  }
+  // The fragment limit bounds the result's memory.
+  const auto limited = rastrules::io::read_fragment_binary(bytes_of(good), 3);
+  ASSERT_TRUE(std::holds_alternative<std::string>(limited));
+  EXPECT_NE(std::get<std::string>(limited).find("more than 3 fragments"), std::string::npos);
+}
+
+// The counts a fragment list implies (SCENE.OUTPUT.COUNT), helper lanes left out.
+nlohmann::json counts_of_list(const std::vector<Row>& rows, std::size_t primitives) {
+  std::vector<std::uint64_t> per(primitives, 0);
+  std::map<std::pair<std::int32_t, std::int32_t>, std::uint64_t> hits;
+  for (const auto& [prim, x, y, mask, seg] : rows) {
+    ++per[prim];
+    ++hits[{x, y}];
+  }
+  std::vector<std::uint64_t> pixels;
+  for (const auto& [xy, n] : hits) {
+    if (n > pixels.size())
+      pixels.resize(n, 0);
+    ++pixels[n - 1];
+  }
+  std::uint64_t total = 0;
+  for (const auto n : per)
+    total += n;
+  return {
+      {"primitives", primitives},
+      {"fragments", total},
+      {"per_primitive", per},
+      {"overdraw", {{"pixels_touched", hits.size()}, {"max", pixels.size()}, {"pixels", pixels}}}};
+}
+
+// rule: SCENE.OUTPUT.COUNT, FAST.BATCH.EQUALS.PLAIN
+// Random triangle scenes (the batch counter's case): the counts equal the fragment list's, and
+// the batch counter (default), the plain traversal and every instruction set give the same bytes.
+TEST(FragmentCount, TheBatchCounterEqualsTheFragmentListOnRandomTriangles) {
+  // RASTRULES_SEED=N replays a run.
+  const char* given = std::getenv("RASTRULES_SEED");
+  const unsigned seed = given != nullptr ? static_cast<unsigned>(std::strtoul(given, nullptr, 10))
+                                         : std::random_device{}();
+  std::printf("FragmentCount seed %u (RASTRULES_SEED=%u replays it)\n", seed, seed);
+  std::mt19937 rng(seed);
+  for (int round = 0; round < 6; ++round) {
+    SCOPED_TRACE("seed " + std::to_string(seed) + " round " + std::to_string(round));
+    const int w = 1 + static_cast<int>(rng() % 90), h = 1 + static_cast<int>(rng() % 90);
+    std::uniform_real_distribution<float> coord(-20.0f, 110.0f), small(-3.0f, 3.0f);
+    nlohmann::json scene = {{"target", {{"width", w}, {"height", h}}},
+                            {"primitives", nlohmann::json::array()}};
+    if (round % 2 == 1)
+      scene["cull"] = "back";
+    const int n = 1 + static_cast<int>(rng() % 300);
+    for (int i = 0; i < n; ++i) {
+      // Small triangles (decided in 32-bit lanes) and large ones (the tiles); ties on centres.
+      const float cx = coord(rng), cy = coord(rng);
+      nlohmann::json v = nlohmann::json::array();
+      for (int k = 0; k < 3; ++k) {
+        float x = cx + (i % 3 == 0 ? coord(rng) / 2 : small(rng));
+        float y = cy + (i % 3 == 0 ? coord(rng) / 2 : small(rng));
+        if (rng() % 4 == 0) {
+          x = std::floor(x) + 0.5f;
+          y = std::floor(y) + 0.5f;
+        }
+        v.push_back({x, y});
+      }
+      scene["primitives"].push_back({{"type", "triangle"}, {"v", v}});
+    }
+    TempDir dir;
+    const auto in = dir.write("s.json", scene.dump());
+    const auto r = run_cli({"render", in.string(), "--count", (dir / "c.json").string()});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string batch = read_file(dir / "c.json");
+    ASSERT_EQ(run_cli({"render", in.string(), "--fragments", (dir / "f.json").string()}).status, 0);
+    EXPECT_EQ(nlohmann::json::parse(batch),
+              counts_of_list(rows_of_json(read_file(dir / "f.json")), scene["primitives"].size()));
+    for (const std::vector<std::string>& extra : {std::vector<std::string>{"--traversal", "plain"},
+                                                  {"--isa", "scalar"},
+                                                  {"--isa", "avx2"}}) {
+      auto args = std::vector<std::string>{"render", in.string(), "--count", "-"};
+      args.insert(args.end(), extra.begin(), extra.end());
+      const auto other = run_cli(args);
+      if (other.status == 2 && other.err.find("cannot run") != std::string::npos)
+        continue; // an instruction set this processor lacks
+      EXPECT_EQ(other.out, batch) << extra[0] << " " << extra[1];
+    }
+  }
+}
+
+// rule: SCENE.OUTPUT.COUNT
+// Every other kind of scene is counted from its fragments as they stream (pipeline scenes from
+// run_pipeline's list): the same counts as the fragment list, helper lanes left out.
+TEST(FragmentCount, EveryKindOfSceneCountsItsFragmentList) {
+  std::map<std::string, std::string> scenes = kScenes;
+  scenes["quads_with_helpers"] =
+      R"({"target": {"width": 8, "height": 8}, "quads": true, "derivatives": "coarse",
+    "primitives": [{"type": "triangle", "v": [[0.5, 0.5], [7, 1], [1, 6]]}]})";
+  scenes["area_and_aa"] = R"({"target": {"width": 8, "height": 8}, "primitives": [
+    {"type": "path", "d": "M 1 1 L 7 2 L 6.5 6 L 2 7 Z", "coverage": "area"},
+    {"type": "line", "v": [[0.5, 1], [7, 6]], "aa": true}]})";
+  scenes["pipeline"] = R"({"target": {"width": 8, "height": 8}, "samples": 4,
+    "depth": {"format": "d24", "func": "less"}, "primitives": [
+    {"type": "triangle", "v": [[0, 0], [8, 0], [0, 8]], "z": [0.5, 0.25, 0.75]},
+    {"type": "triangle", "v": [[8, 8], [0, 8], [8, 0]], "z": [0.1, 0.9, 0.3]},
+    {"type": "triangle", "v": [[0, 0], [8, 0], [0, 8]], "z": [0.6, 0.6, 0.6]}]})";
+  for (const auto& [name, scene] : scenes) {
+    SCOPED_TRACE(name);
+    TempDir dir;
+    const auto in = dir.write("s.json", scene);
+    const auto r = run_cli({"render", in.string(), "--count", (dir / "c.json").string()});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("fragments -> "), std::string::npos) << r.out;
+    ASSERT_EQ(run_cli({"render", in.string(), "--fragments", (dir / "f.json").string()}).status, 0);
+    const auto parsed = nlohmann::json::parse(scene);
+    EXPECT_EQ(nlohmann::json::parse(read_file(dir / "c.json")),
+              counts_of_list(rows_of_json(read_file(dir / "f.json")), parsed["primitives"].size()));
+  }
+}
+
+// rule: SCENE.OUTPUT.COUNT
+TEST(FragmentCount, LargeTargetsCountPrimitivesWithoutTheOverdrawMap) {
+  TempDir dir;
+  const auto in = dir.write("s.json", R"({"target": {"width": 16384, "height": 8192},
+    "primitives": [{"type": "triangle", "v": [[0, 0], [4, 0], [0, 4]]}]})");
+  const auto r = run_cli({"render", in.string(), "--count", "-"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  // Pixel (x, y) is covered when x + y <= 2 (the diagonal is a right edge: excluded).
+  EXPECT_EQ(r.out, "{\"primitives\": 1, \"fragments\": 6, \"per_primitive\": [6], "
+                   "\"overdraw\": null}\n");
+}
+
+// rule: SCENE.OUTPUT.COUNT, SCENE.OUTPUT.BINARY
+TEST(FragmentCount, UsageErrorsNameTheOption) {
+  TempDir dir;
+  const auto in = dir.write("s.json", kScenes.at("triangles"));
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--count", "c.json", "--fragments", "f.json"}, "--count writes the counts alone"},
+      {{"--count", ""}, "--count needs a file name"},
+      {{"--png", "p.png", "--fragments-format", "binary"}, "--fragments-format needs --fragments"},
+      {{"--fragments", "f", "--fragments-format", "csv"},
+       "--fragments-format needs \"json\" or \"binary\", got \"csv\""},
+  };
+  for (const auto& [extra, message] : cases) {
+    auto args = std::vector<std::string>{"render", in.string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = run_cli(args);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+  }
+  // The work limit applies before anything is counted.
+  const auto r = run_cli({"render", in.string(), "--count", "-", "--max-work", "10"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("primitives[0] brings the work to more than 10"), std::string::npos)
+      << r.err;
+}
+
+} // namespace

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+// `rastrules render --count OUT.json`: fragments per primitive and per pixel (overdraw), without
+// a record per fragment; the batch counter where the scene allows it (SCENE.OUTPUT.COUNT).
+// Implements: SCENE.OUTPUT.COUNT
+
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+
+namespace rastrules::cli {
+
+// Targets of at most this many pixels get the per-pixel counts of the overdraw (4 bytes a
+// pixel: at most 256 MiB); larger ones the per-primitive counts alone.
+inline constexpr std::uint64_t kMaxOverdrawPixels = std::uint64_t{1} << 26;
+
+// The counts of one render.
+// rule: SCENE.OUTPUT.COUNT
+struct FragmentCounts {
+  FragmentCounts(std::size_t primitives, std::int32_t width, std::int32_t height);
+  std::int32_t width = 0;
+  std::int32_t height = 0;
+  std::vector<std::uint64_t> per_primitive;
+  // Fragments per pixel (row-major), empty when the target has more than kMaxOverdrawPixels.
+  std::vector<std::uint32_t> hits;
+  // Counts one fragment (of prim, at x, y inside the target).
+  void add(std::uint32_t prim, std::int32_t x, std::int32_t y) {
+    ++per_primitive[prim];
+    if (!hits.empty())
+      ++hits[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+             static_cast<std::size_t>(x)];
+  }
+};
+
+// Counts the scene with the batch counter (fast_count_batch, FAST.BATCH.EQUALS.PLAIN) when it
+// can: a window-space scene of triangles alone, single-sample (is_single_sample), with the fast
+// traversal; nullopt otherwise (the caller counts the fragments it streams).
+// rule: SCENE.OUTPUT.COUNT, FAST.BATCH.EQUALS.PLAIN
+[[nodiscard]] std::optional<FragmentCounts> batch_counts(const LoadedScene& loaded,
+                                                         const RenderOptions& options);
+
+// The counts as SCENE.OUTPUT.COUNT's JSON (one line, a newline at the end).
+// rule: SCENE.OUTPUT.COUNT
+[[nodiscard]] std::string counts_json(const FragmentCounts& c);
+
+} // namespace rastrules::cli

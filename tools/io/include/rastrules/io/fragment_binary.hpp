@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+// The compact binary fragment list (SCENE.OUTPUT.BINARY): the fragments of
+// SCENE.OUTPUT.FRAGMENTS as runs of consecutive pixels of one row, written as a stream and read
+// back strictly. `rastrules render SCENE.json --fragments OUT.bin` writes it.
+// Implements: SCENE.OUTPUT.BINARY
+
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <optional>
+#include <span>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "rastrules/scene.hpp"
+
+namespace rastrules::io {
+
+// The file's first 8 bytes: 0x89 "RRF" CR LF 0x1A LF (a file damaged by a text-mode transfer
+// or cut by a terminal does not pass for one).
+inline constexpr std::uint8_t kFragmentBinaryMagic[8] = {0x89, 'R',  'R',  'F',
+                                                         '\r', '\n', 0x1A, '\n'};
+inline constexpr std::uint32_t kFragmentBinaryVersion = 1;
+inline constexpr std::size_t kFragmentBinaryHeaderBytes = 32;
+inline constexpr std::size_t kFragmentBinaryRunBytes = 20; // before its masks
+inline constexpr std::size_t kFragmentBinaryEndBytes = 24;
+inline constexpr std::uint32_t kFragmentBinaryNoSeg = 0xFFFFFFFFu;
+inline constexpr std::uint32_t kFragmentBinaryEnd = 0xFFFFFFFFu; // the end record's "prim"
+
+// What the header says about the target and the masks.
+struct FragmentBinaryHeader {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::uint32_t samples = 1;
+  // 0: every mask is 1 and none is stored (single-sample scenes, is_single_sample); 2: one
+  // 16-bit mask a fragment.
+  std::uint32_t mask_bytes = 0;
+};
+
+// Returns the header a render of the prepared scene writes: its target, its sample count, and
+// mask_bytes 0 exactly when the scene is single-sample (is_single_sample).
+[[nodiscard]] FragmentBinaryHeader fragment_binary_header(const PreparedScene& scene);
+
+// Writes the binary fragment list to a FILE* as a stream (a buffer of at most 1 MiB).
+// The caller adds fragments in (prim, y, x, seg) order (SCENE.OUTPUT.FRAGMENTS).
+// rule: SCENE.OUTPUT.BINARY
+class FragmentBinaryWriter {
+public:
+  enum class Added {
+    kOk,
+    kOutOfOrder,  // f does not come after the previous fragment
+    kUnsupported, // f has a field the format does not hold (unsupported_field(f) names it)
+  };
+  FragmentBinaryWriter(std::FILE* out, FragmentBinaryHeader header);
+  FragmentBinaryWriter(const FragmentBinaryWriter&) = delete;
+  FragmentBinaryWriter& operator=(const FragmentBinaryWriter&) = delete;
+
+  // Appends one fragment (extending the current run when it is the next pixel of its row).
+  Added add(const Fragment& f);
+  // Writes the last run and the end record. Returns false when any write failed.
+  bool finish();
+
+  [[nodiscard]] std::uint64_t count() const { return count_; }
+  [[nodiscard]] std::uint64_t runs() const { return runs_; }
+
+private:
+  void close_run();
+  void flush_buffer();
+
+  std::FILE* out_;
+  FragmentBinaryHeader header_;
+  std::string buffer_;
+  // The open run: its first fragment and its masks.
+  bool run_open_ = false;
+  Fragment run_first_{};
+  std::uint32_t run_length_ = 0;
+  std::vector<std::uint16_t> run_masks_;
+  Fragment last_{};
+  std::uint64_t count_ = 0;
+  std::uint64_t runs_ = 0;
+  bool failed_ = false;
+};
+
+// Returns the name of the first field f has that the binary format does not hold ("coverage",
+// "sample", "helper", "centroid", "ddx", "area"), or nullopt when it holds f entirely; with
+// header.mask_bytes 0, a mask other than 1 is "mask".
+[[nodiscard]] std::optional<std::string> unsupported_field(const Fragment& f,
+                                                           const FragmentBinaryHeader& header);
+
+// A binary fragment list read back.
+struct FragmentBinary {
+  FragmentBinaryHeader header;
+  std::uint64_t runs = 0;
+  std::vector<Fragment> fragments; // prim, x, y, mask, and seg where the run has one
+};
+
+// Reads a binary fragment list, checking everything: the magic, the version, the header's
+// fields, every run (inside the target, n >= 1, masks inside the sample count and not 0, the
+// padding zero), the (prim, y, x, seg) order across runs, the end record's counts, and nothing
+// after it. More than max_fragments fragments is an error (the memory of the result is bounded
+// by it). Returns the list, or a one-line error naming the byte offset and the problem.
+// rule: SCENE.OUTPUT.BINARY
+[[nodiscard]] std::variant<FragmentBinary, std::string>
+read_fragment_binary(std::span<const std::uint8_t> bytes,
+                     std::uint64_t max_fragments = std::uint64_t{1} << 26);
+
+} // namespace rastrules::io
