@@ -343,6 +343,17 @@ std::optional<Scene> read_input_scene(const std::uint8_t* data, std::size_t size
   if (size > io::kMaxSceneBytes)
     return std::nullopt;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
+  // rule: SCENE.INPUT.FAST_READER
+  // The fast path accepts only text the general reader reads to the same scene.
+  if (const std::optional<Scene> fast = io::read_scene_fast(text)) {
+    const auto general = io::read_scene_general(text);
+    if (const auto* err = std::get_if<SceneError>(&general))
+      fail("read_scene_fast accepts text read_scene_general rejects", {err->what()}, &*fast, data,
+           size);
+    if (!io::same_scene(std::get<Scene>(general), *fast))
+      fail("read_scene_fast reads a different scene than read_scene_general", {}, &*fast, data,
+           size);
+  }
   auto read = io::read_scene(text);
   if (const auto* err = std::get_if<SceneError>(&read)) {
     check_scene_error(*err, "read_scene", nullptr, data, size);

@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -206,6 +207,77 @@ TEST(SceneOutputFragments, WriterStreamsInOrderAndRefusesFragmentsOutOfOrder) {
                   "]}\n");
   EXPECT_EQ(rastrules::io::fragments_to_json({{0, 3, 1, 1}, {0, 0, 2, 1}, {1, 0, 0, 1}}), text);
   EXPECT_EQ(rastrules::io::fragments_to_json({}), "{\"fragments\": []}\n");
+}
+
+} // namespace
+
+namespace {
+
+// rule: SCENE.INPUT.FAST_READER, SCENE.NUMBER.FLOAT32
+// The fast path reads its one form to the general reader's scene, numbers rounded alike, and
+// declines everything else, whose result (or error) is then the general reader's.
+TEST(FastSceneReader, ReadsItsFormAsTheGeneralReaderAndDeclinesTheRest) {
+  const auto tri = [](const std::string& v) {
+    return R"({"target": {"width": 8, "height": 8}, "primitives": [{"type": "triangle", "v": )" +
+           v + "}]}";
+  };
+  const std::vector<std::string> taken = {
+      tri("[[0, 0], [4, 0], [0, 4]]"),
+      tri("[[-0, -0.0], [1e2, 0.1], [16777217, 16777217.0]]"), // -0 is the integer 0
+      tri("[[1.00000005960464477539, 3.4028235e38], [1E-45, -2.5e-3], [123456789012345678, 0]]"),
+      R"( { "primitives" : [ ] , "target" : { "height" : 3 , "width" : -7 } } )",
+      "{\"primitives\":[{\"v\":[[1,2],[3,4],[5,6]],\"type\":\"triangle\"},\n"
+      "{\"type\":\"triangle\",\"v\":[[0.5,0.5],[2.5,0.5],[0.5,2.5]]}],"
+      "\"target\":{\"width\":16384,\"height\":1}}",
+  };
+  for (const std::string& text : taken) {
+    SCOPED_TRACE(text);
+    const auto fast = rastrules::io::read_scene_fast(text);
+    ASSERT_TRUE(fast.has_value());
+    const auto general = rastrules::io::read_scene_general(text);
+    ASSERT_TRUE(std::holds_alternative<Scene>(general));
+    EXPECT_TRUE(rastrules::io::same_scene(*fast, std::get<Scene>(general)));
+  }
+  // 16777217 is not a float32: both readers round it once, to 16777216.
+  const auto rounded = rastrules::io::read_scene_fast(taken[1]);
+  EXPECT_EQ(rounded->primitives[0].v[2][0], 16777216.0f);
+  EXPECT_EQ(std::bit_cast<std::uint32_t>(rounded->primitives[0].v[0][0]), 0u); // +0
+  EXPECT_TRUE(std::signbit(rounded->primitives[0].v[0][1]));                   // -0.0
+
+  const std::vector<std::string> declined = {
+      tri("[[0, 0], [4, 0], [0, \"NaN\"]]"),
+      tri("[[0, 0], [4, 0], [0, 1e400]]"),
+      tri("[[0, 0], [4, 0], [0, 1e-50]]"),
+      tri("[[0, 0], [4, 0], [0, 1234567890123456789]]"),
+      tri("[[0, 0], [4, 0], [0, 4], [1, 1]]"),
+      tri("[[0, 0], [4, 0], [0, 4, 1]]"),
+      tri("[[0, 0], [4, 0], [0, 4]], \"aa\": true"),
+      tri("[[0, 0], [4, 0], [0, 04]]"),
+      tri("[[0, 0], [4, 0], [0, +4]]"),
+      tri("[[0, 0], [4, 0], [0, 4.]]"),
+      tri("[[0, 0], [4, 0], [0, 4]]}, {\"type\": \"point\", \"v\": [[1, 1]]"),
+      R"({"target": {"width": 8, "height": 8}, "cull": "back", "primitives": []})",
+      R"({"version": 1, "target": {"width": 8, "height": 8}, "primitives": []})",
+      R"({"target": {"width": 8, "width": 8}, "primitives": []})",
+      R"({"target": {"width": 8.0, "height": 8}, "primitives": []})",
+      R"({"target": {"width": 8, "height": 8}, "primitives": [], "primitives": []})",
+      R"({"target": {"width": 8, "height": 8}, "primitives": [{"type": "tri\u0061ngle", "v": [[0, 0], [4, 0], [0, 4]]}]})",
+      R"({"target": {"width": 8, "height": 8}, "primitives": [,]})",
+      R"({"target": {"width": 8, "height": 8}, "primitives": []} x)",
+      R"({"target": {"width": 8, "height": 8}})",
+      "",
+  };
+  for (const std::string& text : declined) {
+    SCOPED_TRACE(text);
+    EXPECT_FALSE(rastrules::io::read_scene_fast(text).has_value());
+    // read_scene is then the general reader, errors included.
+    const auto both = rastrules::io::read_scene(text);
+    const auto general = rastrules::io::read_scene_general(text);
+    ASSERT_EQ(both.index(), general.index());
+    if (const auto* e = std::get_if<SceneError>(&both)) {
+      EXPECT_EQ(e->what(), std::get<SceneError>(general).what());
+    }
+  }
 }
 
 } // namespace

@@ -1423,7 +1423,14 @@ std::string format_float(float v) {
   return std::string(buf.data(), r.ptr);
 }
 
+// rule: SCENE.INPUT.FAST_READER
 std::variant<Scene, SceneError> read_scene(std::string_view json_text) {
+  if (std::optional<Scene> fast = read_scene_fast(json_text))
+    return std::move(*fast);
+  return read_scene_general(json_text);
+}
+
+std::variant<Scene, SceneError> read_scene_general(std::string_view json_text) {
   if (auto nul = nul_byte_problem(json_text))
     return SceneError{"", std::move(*nul)};
   SceneReader reader;

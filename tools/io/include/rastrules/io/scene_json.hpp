@@ -51,6 +51,17 @@ inline constexpr std::uint64_t kDefaultMaxFragments = std::uint64_t{1} << 26; //
 // rule: SCENE.FORMAT.V1, SCENE.NUMBER.FLOAT32, SCENE.PIPELINE, SCENE.INPUT.ERRORS
 [[nodiscard]] std::variant<Scene, SceneError> read_scene(std::string_view json_text);
 
+// read_scene() in two steps, for the tests and the fuzz target that compare them:
+// read_scene_fast() reads the common large scene (a "target" and a list of triangles given
+// by "type" and "v" alone, numbers as plain JSON numbers, nothing else) in one pass without the
+// general reader's per-field bookkeeping, and returns nullopt for any text outside that form
+// (then read_scene_general(), the strict general reader, decides, errors included). When
+// read_scene_fast() returns a scene, it is the scene read_scene_general() returns for the same
+// text (SCENE.INPUT.FAST_READER: a filter that never changes the answer).
+// rule: SCENE.INPUT.FAST_READER
+[[nodiscard]] std::optional<Scene> read_scene_fast(std::string_view json_text);
+[[nodiscard]] std::variant<Scene, SceneError> read_scene_general(std::string_view json_text);
+
 // Returns the whole content of a scene file ("-" is standard input), or an error naming the
 // file when it cannot be read or is larger than kMaxSceneBytes.
 [[nodiscard]] std::variant<std::string, SceneError> read_scene_file(const std::string& path);

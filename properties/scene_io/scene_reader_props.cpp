@@ -1,0 +1,176 @@
+// SPDX-License-Identifier: MIT
+// Properties of the scene reader's fast path: random scenes of triangles, written with every
+// spelling of their numbers (integers, shortest decimals, 9 and 17 significant digits, exponent
+// forms, -0), any whitespace and either key order, are read by read_scene_fast to exactly the
+// scene read_scene_general reads; and any text near them (one character inserted, deleted or
+// replaced) is either left to the general reader or read to the same scene.
+// Implements (properties for): SCENE.INPUT.FAST_READER
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "rastrules/io/scene_json.hpp"
+
+namespace {
+
+namespace io = rastrules::io;
+
+// A float32: small integers, quarters, any finite float of magnitude in [2^-20, 2^40], zeros.
+rc::Gen<float> coordinate() {
+  return rc::gen::oneOf(
+      rc::gen::map(rc::gen::inRange(-5000, 5001), [](int v) { return static_cast<float>(v); }),
+      rc::gen::map(rc::gen::inRange(-40000, 40001),
+                   [](int v) { return static_cast<float>(v) / 4.0f; }),
+      rc::gen::map(rc::gen::tuple(rc::gen::inRange(0, 1 << 23), rc::gen::inRange(-20, 41),
+                                  rc::gen::arbitrary<bool>()),
+                   [](const std::tuple<int, int, bool>& t) {
+                     const float m = 1.0f + static_cast<float>(std::get<0>(t)) / 8388608.0f;
+                     return std::ldexp(m, std::get<1>(t)) * (std::get<2>(t) ? -1.0f : 1.0f);
+                   }),
+      rc::gen::element(0.0f, -0.0f));
+}
+
+// v written in one of several JSON spellings; every one reads back (SCENE.NUMBER.FLOAT32) to
+// v, or for the 9-digit forms to the float32 nearest that decimal, which is v.
+std::string spell(float v, int how) {
+  char buf[64];
+  switch (how) {
+  case 0:
+    return io::format_float(v);
+  case 1:
+    std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(v));
+    return buf;
+  case 2:
+    std::snprintf(buf, sizeof buf, "%.17e", static_cast<double>(v));
+    return buf;
+  case 3:
+    std::snprintf(buf, sizeof buf, "%.8E", static_cast<double>(v));
+    return buf;
+  default:
+    // An integer spelling where v is an integer (of any size: long ones are left to the
+    // general reader), else the shortest.
+    if (std::trunc(v) == v && std::fabs(v) < 1e30f) {
+      std::snprintf(buf, sizeof buf, "%.0f", static_cast<double>(v));
+      return buf;
+    }
+    return io::format_float(v);
+  }
+}
+
+std::string ws(int k) {
+  static const char* const kinds[] = {"", " ", "\n", "\t ", "\r\n  "};
+  return kinds[k % 5];
+}
+
+struct Written {
+  std::string text;
+  bool expect_fast = true; // every number is in a form the fast path takes
+};
+
+rc::Gen<Written> scene_text() {
+  return rc::gen::exec([] {
+    const int w = *rc::gen::inRange(-3, 20000);
+    const int h = *rc::gen::inRange(0, 20000);
+    const auto n = *rc::gen::inRange<std::size_t>(0, 12);
+    const auto gap = [] { return ws(*rc::gen::inRange(0, 5)); };
+    Written out;
+    const bool target_first = *rc::gen::arbitrary<bool>();
+    const std::string target =
+        "\"target\"" + gap() + ":" + gap() + "{" + gap() +
+        (*rc::gen::arbitrary<bool>() ? "\"width\":" + gap() + std::to_string(w) + "," + gap() +
+                                           "\"height\":" + std::to_string(h)
+                                     : "\"height\":" + std::to_string(h) + gap() + "," +
+                                           "\"width\":" + gap() + std::to_string(w)) +
+        gap() + "}";
+    std::string prims = "\"primitives\"" + gap() + ":" + gap() + "[";
+    for (std::size_t i = 0; i < n; ++i) {
+      std::string v = "[";
+      for (int k = 0; k < 3; ++k) {
+        v += (k > 0 ? "," + gap() : "") + "[";
+        for (int c = 0; c < 2; ++c) {
+          const float f = *coordinate();
+          const int how = *rc::gen::inRange(0, 5);
+          const std::string s = spell(f, how);
+          const std::size_t digits = s.size() - (s[0] == '-' ? 1 : 0);
+          if (s.find_first_of(".eE") == std::string::npos && digits > 18)
+            out.expect_fast = false;
+          v += (c > 0 ? "," + gap() : gap()) + s;
+        }
+        v += gap() + "]";
+      }
+      v += "]";
+      const std::string type = "\"type\"" + gap() + ":" + gap() + "\"triangle\"";
+      const std::string vert = "\"v\"" + gap() + ":" + gap() + v;
+      prims +=
+          (i > 0 ? ",\n" : "") + gap() + "{" +
+          (*rc::gen::arbitrary<bool>() ? type + "," + gap() + vert : vert + gap() + "," + type) +
+          "}";
+    }
+    prims += gap() + "]";
+    out.text = gap() + "{" + gap() + (target_first ? target + "," + prims : prims + "," + target) +
+               gap() + "}" + gap();
+    return out;
+  });
+}
+
+// rule: SCENE.INPUT.FAST_READER, SCENE.NUMBER.FLOAT32
+RC_GTEST_PROP(FastSceneReader, ReadsTheSceneTheGeneralReaderReads, ()) {
+  const Written w = *scene_text();
+  const std::optional<rastrules::Scene> fast = io::read_scene_fast(w.text);
+  const auto general = io::read_scene_general(w.text);
+  RC_CLASSIFY(fast.has_value(), "fast path taken");
+  if (w.expect_fast)
+    RC_ASSERT(fast.has_value());
+  if (fast) {
+    RC_ASSERT(std::holds_alternative<rastrules::Scene>(general));
+    RC_ASSERT(io::same_scene(*fast, std::get<rastrules::Scene>(general)));
+  }
+  // read_scene is the fast path when it is taken, the general reader otherwise.
+  const auto both = io::read_scene(w.text);
+  RC_ASSERT(both.index() == general.index());
+  if (const auto* s = std::get_if<rastrules::Scene>(&both))
+    RC_ASSERT(io::same_scene(*s, std::get<rastrules::Scene>(general)));
+}
+
+// rule: SCENE.INPUT.FAST_READER, SCENE.INPUT.ERRORS
+// One character inserted, deleted or replaced anywhere: the fast path either declines or reads
+// what the general reader reads, and read_scene's errors are the general reader's.
+RC_GTEST_PROP(FastSceneReader, NearMissesAreLeftToTheGeneralReaderOrReadAlike, ()) {
+  std::string text = (*scene_text()).text;
+  RC_PRE(!text.empty());
+  const auto at = *rc::gen::inRange<std::size_t>(0, text.size());
+  const char c = *rc::gen::element('0', '9', '-', '.', 'e', '"', ',', '[', ']', '{', '}', ':', ' ',
+                                   'x', '\\', '\0', '+', 'E');
+  switch (*rc::gen::inRange(0, 3)) {
+  case 0:
+    text.insert(text.begin() + static_cast<std::ptrdiff_t>(at), c);
+    break;
+  case 1:
+    text.erase(at, 1);
+    break;
+  default:
+    text[at] = c;
+    break;
+  }
+  const std::optional<rastrules::Scene> fast = io::read_scene_fast(text);
+  const auto general = io::read_scene_general(text);
+  RC_CLASSIFY(fast.has_value(), "fast path taken");
+  RC_CLASSIFY(std::holds_alternative<rastrules::SceneError>(general), "an error");
+  if (fast) {
+    RC_ASSERT(std::holds_alternative<rastrules::Scene>(general));
+    RC_ASSERT(io::same_scene(*fast, std::get<rastrules::Scene>(general)));
+  }
+  const auto both = io::read_scene(text);
+  RC_ASSERT(both.index() == general.index());
+  if (const auto* e = std::get_if<rastrules::SceneError>(&both))
+    RC_ASSERT(e->what() == std::get<rastrules::SceneError>(general).what());
+}
+
+} // namespace
