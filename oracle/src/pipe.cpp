@@ -807,6 +807,31 @@ std::optional<double> perspective_exact(const Bary& b, const std::array<float, 3
   return rn64(p.num / p.den);
 }
 
+namespace {
+// rn32 saturated at +-FLT_MAX (PIPE.INTERP.HORIZON: no interpolated value is infinite).
+float nearest32_saturated(const Q& q) {
+  const float f = rn32(q);
+  return std::isinf(f) ? (f > 0 ? FLT_MAX : -FLT_MAX) : f;
+}
+} // namespace
+
+std::optional<float> perspective_nearest32(const Bary& b, const std::array<float, 3>& a,
+                                           const std::array<float, 3>& w) {
+  const Perspective p = perspective_parts(b, a, w);
+  if (sgn(p.den) * area_sign(b) <= 0)
+    return std::nullopt;
+  return nearest32_saturated(p.num / p.den);
+}
+
+float linear_nearest32(const Bary& b, const std::array<float, 3>& a) {
+  if (b.area == 0)
+    throw std::invalid_argument("oracle: linear_nearest32 on a degenerate triangle");
+  Q sum;
+  for (std::size_t i = 0; i < 3; ++i)
+    sum += exact_i(b.e[i]) * exact(a[i]);
+  return nearest32_saturated(sum / exact_i(b.area));
+}
+
 double linear_exact(const Bary& b, const std::array<float, 3>& a) {
   if (b.area == 0)
     throw std::invalid_argument("oracle: linear_exact on a degenerate triangle");
@@ -982,6 +1007,12 @@ double depth_exact(const Bary& b, const std::array<float, 3>& z) {
 // rule: PIPE.DEPTH.CLAMP, PIPE.DEPTH.FORMAT
 Stored store_exact(double d, float min_depth, float max_depth, const std::string& format) {
   return store_q(clamp_q(exact(d), exact(min_depth), exact(max_depth)), format);
+}
+
+// rule: PIPE.DEPTH.INTERP, PIPE.DEPTH.CLAMP, PIPE.DEPTH.FORMAT
+Stored depth_stored_nearest(const Bary& b, const std::array<float, 3>& z, float min_depth,
+                            float max_depth, const std::string& format) {
+  return store_q(clamp_q(depth_parts(b, z).x, exact(min_depth), exact(max_depth)), format);
 }
 
 // rule: PIPE.DEPTH.INTERP, PIPE.DEPTH.BOUND

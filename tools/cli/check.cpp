@@ -15,7 +15,9 @@ int run_check(const Args& args) {
     return status;
   o->settings.cases = 1;
   o->settings.progress = false;
-  auto loaded = load_window_scene(o->scene_path);
+  // rule: DRIVER.VALUES
+  // Pipeline scenes too: their coverage, and the values of drivers that report them.
+  auto loaded = load_scene(o->scene_path);
   if (!loaded)
     return kExitBadInput;
   auto d = open_driver_or_report(o->settings.driver_name);

@@ -182,18 +182,6 @@ std::variant<LoadedScene, SceneError> load_scene(Scene scene) {
 }
 
 // rule: SCENE.INPUT.ERRORS
-std::optional<LoadedScene> load_window_scene(const std::string& path) {
-  auto loaded = load_scene(path);
-  if (loaded && !loaded->prepared) {
-    error(*first_pipeline_field(loaded->scene) +
-          ": is a pipeline key (SCENE.PIPELINE) and only window-space scenes are read here "
-          "(rastrules render and explain read pipeline scenes)");
-    return std::nullopt;
-  }
-  return loaded;
-}
-
-// rule: SCENE.INPUT.ERRORS
 std::string shown_value(const std::optional<std::string>& v) {
   return v ? "\"" + io::printable(*v, 40) + "\"" : std::string("nothing");
 }

@@ -69,11 +69,6 @@ std::optional<LoadedScene> load_scene(const std::string& path);
 // rule: SCENE.INPUT.ERRORS
 std::variant<LoadedScene, SceneError> load_scene(Scene scene);
 
-// load_scene() for the commands that draw window-space scenes alone (check): a scene with
-// pipeline state (SCENE.PIPELINE) is bad input, named by its first pipeline field.
-// rule: SCENE.INPUT.ERRORS
-std::optional<LoadedScene> load_window_scene(const std::string& path);
-
 // Runs the pipeline on a scene read by load_scene(); on bad input (run_pipeline's SceneError,
 // also more than max_fragments fragments or max_work sample tests) prints the one-line error
 // and returns nullopt. plain: every optimization off (PipeOptions::plain(), `render

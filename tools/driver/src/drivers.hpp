@@ -32,6 +32,12 @@ std::unique_ptr<Driver> open_opengl(std::string_view arg, std::string* error);
 // rule: DRIVER.INTERFACE
 [[nodiscard]] std::vector<Fragment> observable(std::vector<Fragment> fragments);
 
+// Returns a pipeline result as a driver reports it (DRIVER.VALUES): helper lanes removed, the
+// fragments observable, each with its part, attributes and depths (none when run_pipeline gave
+// no data), sorted as sort_drawing() sorts.
+// rule: DRIVER.VALUES
+[[nodiscard]] Drawing observable_drawing(pipe::PipeResult result);
+
 // Returns the info of a driver that draws everything a scene can ask for (every sample count,
 // primitive, line mode, the sample mask and sample shading, targets up to kMaxTargetSide): the
 // reference and, by declaration, an external process.

@@ -20,6 +20,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <thread>
 
@@ -299,6 +300,7 @@ public:
                  std::string declared_note)
       : argv_(external_argv(command)), options_(options),
         info_(detail::full_capabilities("external", command, -1)), caps_(declared) {
+    info_.values = true; // whatever it writes of DRIVER.VALUES is read
     info_.capabilities = std::move(declared_note);
     if (caps_)
       apply_capabilities(*caps_, info_);
@@ -321,6 +323,14 @@ public:
   }
 
   [[nodiscard]] DrawResult draw(const Scene& scene) override {
+    ValuesResult r = draw_values(scene);
+    if (auto* e = std::get_if<DriverError>(&r))
+      return std::move(*e);
+    return std::move(std::get<Drawing>(r).fragments);
+  }
+
+  // rule: DRIVER.EXTERNAL.PROTOCOL, DRIVER.VALUES
+  [[nodiscard]] ValuesResult draw_values(const Scene& scene) override {
     const std::string& cmd = info_.description;
     const std::string input = io::write_scene(scene);
     DriverProcess process(argv_, input, options_);
@@ -328,8 +338,8 @@ public:
       return DriverError{"external driver: " + process.spawn_error()};
     // The output is read as it comes, until its first error; the rest is read and dropped, so
     // that a crash, an exit status or a timeout is still reported before malformed output.
-    auto parsed = read_external_fragments([&] { return process.next_output(); }, scene,
-                                          options_.max_fragments);
+    auto parsed =
+        read_external_drawing([&] { return process.next_output(); }, scene, options_.max_fragments);
     const ProcessResult r = process.finish();
     const std::string err = r.err.empty() ? "" : "; its standard error: " + one_line(r.err);
     if (r.timed_out) {
@@ -354,7 +364,7 @@ public:
     if (auto* e = std::get_if<std::string>(&parsed)) {
       return DriverError{"external driver \"" + cmd + "\": malformed output: " + *e};
     }
-    return std::get<std::vector<Fragment>>(std::move(parsed));
+    return std::get<Drawing>(std::move(parsed));
   }
 
 private:
@@ -446,6 +456,7 @@ std::vector<std::string> external_argv(std::string_view command) {
 namespace {
 
 // The keys of a fragment (DRIVER.EXTERNAL.PROTOCOL, SCENE.OUTPUT.MSAA).
+// The last five are the pipeline fragment's (SCENE.OUTPUT.PIPELINE, DRIVER.VALUES).
 enum FragmentKey : unsigned {
   kPrim,
   kX,
@@ -458,18 +469,26 @@ enum FragmentKey : unsigned {
   kCentroid,
   kDdx,
   kDdy,
+  kPart,
+  kBary,
+  kAttr,
+  kDepth,
+  kPassed,
   kKeyCount
 };
 constexpr std::array<std::string_view, kKeyCount> kKeyNames = {
-    "prim", "x", "y", "mask", "seg", "sample", "helper", "coverage", "centroid", "ddx", "ddy"};
+    "prim",     "x",   "y",   "mask", "seg",  "sample", "helper", "coverage",
+    "centroid", "ddx", "ddy", "part", "bary", "attr",   "depth",  "passed"};
 
 // The fragments read so far, each (prim, x, y, seg, sample) once: an open-addressing hash set
 // of indices into the list (4 bytes a slot, at most half the slots used), so that a repeat is
 // found when it is read.
 class FragmentSet {
 public:
-  // Adds frags.back() unless an earlier fragment has its key; returns whether it was added.
-  bool add_last(const std::vector<Fragment>& frags) {
+  // Adds frags.back() (of part parts.back(); parts may be empty: no parts) unless an earlier
+  // fragment has its key; returns whether it was added.
+  bool add_last(const std::vector<Fragment>& frags, const std::vector<std::uint32_t>& parts) {
+    parts_ = &parts;
     if (2 * (frags.size() + 1) > slots_.size())
       grow(frags);
     const auto index = static_cast<std::uint32_t>(frags.size() - 1);
@@ -479,7 +498,7 @@ public:
         slots_[s] = index + 1;
         return true;
       }
-      if (same(frags[slots_[s] - 1], frags.back()))
+      if (same(frags[slots_[s] - 1], frags.back()) && part(slots_[s] - 1) == part(index))
         return false;
     }
   }
@@ -512,7 +531,12 @@ private:
     }
   }
 
+  [[nodiscard]] std::uint32_t part(std::size_t i) const {
+    return parts_->empty() ? 0u : (*parts_)[i];
+  }
+
   std::vector<std::uint32_t> slots_; // 0: empty; else the fragment's index + 1
+  const std::vector<std::uint32_t>* parts_ = nullptr;
 };
 
 // The protocol's reader: a strict streaming handler (io::JsonHandler, as the scene reader's)
@@ -523,7 +547,10 @@ private:
 class FragmentReader final : public io::JsonHandler {
 public:
   FragmentReader(const Scene& scene, std::uint64_t max_fragments)
-      : scene_(scene), samples_(scene.msaa.count()), max_fragments_(max_fragments) {}
+      : scene_(scene), samples_(scene.msaa.count()), max_fragments_(max_fragments) {
+    if (scene.depth && scene.conventions.depth != pipe::DepthFormat::kD32F)
+      depth_max_ = scene.conventions.depth == pipe::DepthFormat::kD16 ? 65535u : 16777215u;
+  }
 
   bool value(const io::JsonValue& v) override {
     switch (at_) {
@@ -548,9 +575,19 @@ public:
       at_ = At::kFragment;
       seen_ = 0;
       frag_ = Fragment{};
+      vals_ = driver::FragmentValues{};
+      passed_ = 0;
       return true;
     case At::kFragment:
       return fragment_value(v);
+    case At::kBary: // an element of "bary": accepted, not compared
+      if (v.kind != io::JsonKind::kInt || ++pair_count_ > 4)
+        return fail(field() + ": must be [e0, e1, e2, A], four integers");
+      return true;
+    case At::kAttr: // the value of attribute attr_index_
+      return attr_value(v);
+    case At::kDepth:
+      return depth_value(v);
     case At::kPair: // an element of "centroid", "ddx" or "ddy"
       if (!is_number(v) || ++pair_count_ > 2)
         return fail(field() + ": must be [x, y], two numbers");
@@ -562,6 +599,20 @@ public:
   }
 
   bool key(std::string_view k) override {
+    if (at_ == At::kAttr) {
+      // rule: DRIVER.VALUES
+      const auto& decl = scene_.attributes;
+      const auto it = std::find_if(decl.begin(), decl.end(),
+                                   [&](const pipe::AttributeDecl& a) { return a.name == k; });
+      if (it == decl.end()) {
+        return fail(field() + "." + io::printable(k, 40) + ": not an attribute the scene declares");
+      }
+      attr_index_ = static_cast<std::size_t>(it - decl.begin());
+      if ((attr_seen_ >> attr_index_ & 1u) != 0)
+        return fail(twice(k));
+      attr_seen_ |= 1u << attr_index_;
+      return true;
+    }
     if (at_ == At::kRoot) {
       if (k != "fragments")
         return fail(io::printable(k, 40) + ": unknown key (expected fragments)");
@@ -587,11 +638,30 @@ public:
       at_ = At::kFragment;
       return true;
     }
+    if (at_ == At::kBary) {
+      if (pair_count_ != 4)
+        return fail(field() + ": must be [e0, e1, e2, A], four integers");
+      at_ = At::kFragment;
+      return true;
+    }
+    if (at_ == At::kDepth) {
+      at_ = At::kFragment;
+      return true;
+    }
     at_ = At::kRoot; // the end of "fragments"
     return true;
   }
 
   bool end_object() override {
+    if (at_ == At::kAttr) {
+      // rule: DRIVER.VALUES
+      for (std::size_t a = 0; a < scene_.attributes.size(); ++a) {
+        if ((attr_seen_ >> a & 1u) == 0)
+          return fail(field() + "." + io::printable(scene_.attributes[a].name, 40) + ": missing");
+      }
+      at_ = At::kFragment;
+      return true;
+    }
     if (at_ == At::kRoot) {
       if (!fragments_seen_)
         return fail(kExpected);
@@ -602,8 +672,31 @@ public:
       if ((seen_ & (1u << k)) == 0)
         return fail(path_ + "." + std::string(kKeyNames[k]) + ": missing");
     }
+    // rule: DRIVER.VALUES
+    if ((seen_ & (1u << kDepth)) != 0 &&
+        vals_.depth.size() != static_cast<std::size_t>(std::popcount(frag_.mask))) {
+      return fail(path_ + ".depth: " + std::to_string(vals_.depth.size()) + " value(s) for the " +
+                  std::to_string(std::popcount(frag_.mask)) + " sample(s) of mask " +
+                  std::to_string(frag_.mask) + " (one per covered sample)");
+    }
+    if ((passed_ & ~frag_.mask) != 0) {
+      return fail(path_ + ".passed: " + std::to_string(passed_) + " has samples outside mask " +
+                  std::to_string(frag_.mask));
+    }
     frags_.push_back(frag_);
-    if (!set_.add_last(frags_)) {
+    if (vals_.part && !with_parts_) {
+      with_parts_ = true;
+      parts_.assign(frags_.size() - 1, 0u);
+    }
+    if (with_parts_)
+      parts_.push_back(vals_.part ? *vals_.part + 1 : 0u);
+    if ((!vals_.attr.empty() || !vals_.depth.empty() || vals_.part) && !with_values_) {
+      with_values_ = true;
+      values_.resize(frags_.size() - 1);
+    }
+    if (with_values_)
+      values_.push_back(std::move(vals_));
+    if (!set_.add_last(frags_, parts_)) {
       return fail(path_ + ": duplicate fragment (prim " + std::to_string(frag_.prim) + ", x " +
                   std::to_string(frag_.x) + ", y " + std::to_string(frag_.y) + ")");
     }
@@ -616,20 +709,21 @@ public:
     return fail((e.id == 406 ? "not JSON the protocol allows: " : "not JSON: ") + e.what);
   }
 
-  // The fragments sorted as SCENE.OUTPUT.FRAGMENTS, or the first error.
-  std::variant<std::vector<Fragment>, std::string> result(const io::JsonParseEnd& end) {
+  // The fragments (and values) sorted as SCENE.OUTPUT.FRAGMENTS, or the first error.
+  std::variant<driver::Drawing, std::string> result(const io::JsonParseEnd& end) {
     if (!error_.empty())
       return error_;
     if (end.nul)
       return "not JSON: " + *end.nul;
     if (!end.ok)
       return std::string("not JSON: the output ended early");
-    std::sort(frags_.begin(), frags_.end(), fragment_before);
-    return std::move(frags_);
+    driver::Drawing d{std::move(frags_), std::move(values_)};
+    sort_drawing(d);
+    return d;
   }
 
 private:
-  enum class At { kStart, kRoot, kList, kFragment, kPair, kDone };
+  enum class At { kStart, kRoot, kList, kFragment, kPair, kBary, kAttr, kDepth, kDone };
   static constexpr const char* kExpected = "expected {\"fragments\": [...]}";
 
   static bool is_number(const io::JsonValue& v) {
@@ -710,14 +804,109 @@ private:
       at_ = At::kPair;
       pair_count_ = 0;
       return true;
+    // rule: DRIVER.VALUES
+    case kPart:
+      if (!integer || i < 0 || i > UINT32_MAX)
+        return fail(field() + ": must be a non-negative integer");
+      vals_.part = static_cast<std::uint32_t>(i);
+      return true;
+    case kBary: // accepted, not compared
+      if (v.kind != io::JsonKind::kArray)
+        return fail(field() + ": must be [e0, e1, e2, A], four integers");
+      at_ = At::kBary;
+      pair_count_ = 0;
+      return true;
+    case kAttr:
+      if (scene_.attributes.empty())
+        return fail(field() + ": the scene declares no attributes");
+      if (v.kind != io::JsonKind::kObject)
+        return fail(field() + ": must be an object {\"name\": value, ...}");
+      at_ = At::kAttr;
+      attr_seen_ = 0;
+      vals_.attr.assign(scene_.attributes.size(), 0.0f);
+      return true;
+    case kDepth:
+      if (!scene_.depth)
+        return fail(field() + ": the scene has no depth");
+      if (v.kind != io::JsonKind::kArray)
+        return fail(field() + ": must be an array, one stored depth per covered sample");
+      at_ = At::kDepth;
+      return true;
+    case kPassed:
+      if (!scene_.depth)
+        return fail(field() + ": the scene has no depth");
+      if (!integer || i < 0 || i > static_cast<std::int64_t>(full_mask(samples_))) {
+        return fail(field() + ": must be a sample mask of the scene's " + std::to_string(samples_) +
+                    " sample(s)");
+      }
+      passed_ = static_cast<std::uint32_t>(i);
+      return true;
     case kKeyCount:
       break;
     }
     return fail(field() + ": unknown key");
   }
 
+  // A float32 value (a number, or "NaN", "Infinity", "-Infinity" as the fragment writer spells
+  // what is not finite); nullopt for anything else.
+  static std::optional<float> float_of(const io::JsonValue& v) {
+    switch (v.kind) {
+    case io::JsonKind::kInt:
+      return static_cast<float>(v.i);
+    case io::JsonKind::kUint:
+      return static_cast<float>(v.u);
+    case io::JsonKind::kFloat:
+      return io::decimal_to_float32(v.text);
+    case io::JsonKind::kString:
+      if (v.text == "NaN")
+        return std::numeric_limits<float>::quiet_NaN();
+      if (v.text == "Infinity")
+        return std::numeric_limits<float>::infinity();
+      if (v.text == "-Infinity")
+        return -std::numeric_limits<float>::infinity();
+      return std::nullopt;
+    default:
+      return std::nullopt;
+    }
+  }
+
+  // rule: DRIVER.VALUES
+  bool attr_value(const io::JsonValue& v) {
+    const std::optional<float> f = float_of(v);
+    if (!f) {
+      return fail(field() + "." + io::printable(scene_.attributes[attr_index_].name, 40) +
+                  ": must be a number (or \"NaN\", \"Infinity\", \"-Infinity\")");
+    }
+    vals_.attr[attr_index_] = *f;
+    return true;
+  }
+
+  // rule: DRIVER.VALUES
+  bool depth_value(const io::JsonValue& v) {
+    const std::string at = field() + "[" + std::to_string(vals_.depth.size()) + "]";
+    if (vals_.depth.size() >= samples_)
+      return fail(field() + ": more values than the scene's " + std::to_string(samples_) +
+                  " sample(s)");
+    pipe::DepthValue d;
+    if (depth_max_ != 0) {
+      if (v.kind != io::JsonKind::kInt || v.i < 0 || v.i > depth_max_) {
+        return fail(at + ": must be an integer in [0, " + std::to_string(depth_max_) + "] (" +
+                    std::string(io::depth_format_name(scene_.conventions.depth)) + ")");
+      }
+      d.unorm = static_cast<std::uint32_t>(v.i);
+    } else {
+      const std::optional<float> f = float_of(v);
+      if (!f)
+        return fail(at + ": must be a number (d32f)");
+      d.f = *f;
+    }
+    vals_.depth.push_back(d);
+    return true;
+  }
+
   const Scene& scene_;
   const std::uint32_t samples_;
+  std::int64_t depth_max_ = 0; // d16 and d24: the largest stored value; 0: d32f or no depth
   const std::uint64_t max_fragments_;
   At at_ = At::kStart;
   bool fragments_seen_ = false;
@@ -727,25 +916,57 @@ private:
   Fragment frag_;
   int pair_count_ = 0;
   std::vector<Fragment> frags_;
+  // DRIVER.VALUES: the current fragment's values and passed mask, the attributes it has given;
+  // per fragment read, its part + 1 (0: none) and its values, both empty until the first
+  // fragment that has them.
+  driver::FragmentValues vals_;
+  std::uint32_t passed_ = 0;
+  std::uint32_t attr_seen_ = 0;
+  std::size_t attr_index_ = 0;
+  bool with_parts_ = false, with_values_ = false;
+  std::vector<std::uint32_t> parts_;
+  std::vector<driver::FragmentValues> values_;
   FragmentSet set_;
   std::string error_;
 };
 
 } // namespace
 
+namespace {
+std::variant<std::vector<Fragment>, std::string>
+fragments_of(std::variant<Drawing, std::string> r) {
+  if (auto* e = std::get_if<std::string>(&r))
+    return std::move(*e);
+  return std::move(std::get<Drawing>(r).fragments);
+}
+} // namespace
+
+// rule: DRIVER.EXTERNAL.PROTOCOL, DRIVER.VALUES
+std::variant<Drawing, std::string> parse_external_drawing(std::string_view text, const Scene& scene,
+                                                          std::uint64_t max_fragments) {
+  FragmentReader reader(scene, max_fragments);
+  return reader.result(io::parse_json(text, reader));
+}
+
+// rule: DRIVER.EXTERNAL.PROTOCOL, DRIVER.VALUES
+std::variant<Drawing, std::string>
+read_external_drawing(const std::function<std::string_view()>& next, const Scene& scene,
+                      std::uint64_t max_fragments) {
+  FragmentReader reader(scene, max_fragments);
+  return reader.result(io::parse_json(next, reader));
+}
+
 // rule: DRIVER.EXTERNAL.PROTOCOL
 std::variant<std::vector<Fragment>, std::string>
 parse_external_fragments(std::string_view text, const Scene& scene, std::uint64_t max_fragments) {
-  FragmentReader reader(scene, max_fragments);
-  return reader.result(io::parse_json(text, reader));
+  return fragments_of(parse_external_drawing(text, scene, max_fragments));
 }
 
 // rule: DRIVER.EXTERNAL.PROTOCOL
 std::variant<std::vector<Fragment>, std::string>
 read_external_fragments(const std::function<std::string_view()>& next, const Scene& scene,
                         std::uint64_t max_fragments) {
-  FragmentReader reader(scene, max_fragments);
-  return reader.result(io::parse_json(next, reader));
+  return fragments_of(read_external_drawing(next, scene, max_fragments));
 }
 
 std::unique_ptr<Driver> open_external_driver(std::string_view command, std::string* error,

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: MIT
 // The reference driver: the kernel itself behind the driver interface (prepare + rasterize),
-// reporting only what a driver can observe.
-// Implements: DRIVER.REFERENCE
+// reporting only what a driver can observe; for pipeline scenes the pipeline (run_pipeline),
+// with the exact depth and attribute values of every fragment.
+// Implements: DRIVER.REFERENCE, DRIVER.VALUES
 
 #include <algorithm>
+#include <numeric>
 #include <utility>
 
 #include "drivers.hpp"
 #include "rastrules/fixed.hpp"
+#include "rastrules/pipeline.hpp"
 #include "rastrules/scene.hpp"
 
 namespace rastrules::driver {
@@ -41,7 +44,58 @@ DriverInfo full_capabilities(std::string name, std::string description, int subp
   return info;
 }
 
+// rule: DRIVER.VALUES
+Drawing observable_drawing(pipe::PipeResult result) {
+  Drawing out;
+  const bool with_data = !result.data.empty();
+  for (std::size_t i = 0; i < result.fragments.size(); ++i) {
+    if (result.fragments[i].helper)
+      continue;
+    out.fragments.push_back(result.fragments[i]);
+    if (!with_data)
+      continue;
+    pipe::FragmentData& d = result.data[i];
+    out.values.push_back({d.part, std::move(d.attr), std::move(d.depth)});
+  }
+  out.fragments = observable(std::move(out.fragments));
+  sort_drawing(out);
+  return out;
+}
+
 } // namespace detail
+
+// rule: DRIVER.VALUES
+ValuesResult Driver::draw_values(const Scene& scene) {
+  DrawResult r = draw(scene);
+  if (auto* e = std::get_if<DriverError>(&r))
+    return std::move(*e);
+  return Drawing{std::get<std::vector<Fragment>>(std::move(r)), {}};
+}
+
+// rule: DRIVER.VALUES
+void sort_drawing(Drawing& d) {
+  if (d.values.empty()) {
+    std::stable_sort(d.fragments.begin(), d.fragments.end(), fragment_before);
+    return;
+  }
+  std::vector<std::size_t> order(d.fragments.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (fragment_before(d.fragments[a], d.fragments[b]))
+      return true;
+    if (fragment_before(d.fragments[b], d.fragments[a]))
+      return false;
+    return d.values[a].part < d.values[b].part;
+  });
+  Drawing sorted;
+  sorted.fragments.reserve(order.size());
+  sorted.values.reserve(order.size());
+  for (const std::size_t i : order) {
+    sorted.fragments.push_back(std::move(d.fragments[i]));
+    sorted.values.push_back(std::move(d.values[i]));
+  }
+  d = std::move(sorted);
+}
 
 namespace {
 
@@ -50,7 +104,9 @@ public:
   ReferenceDriver()
       : info_(detail::full_capabilities("reference",
                                         "rastrules reference kernel (fixed point, 16.8 snapping)",
-                                        kSubpixelBits)) {}
+                                        kSubpixelBits)) {
+    info_.values = true;
+  }
 
   [[nodiscard]] const DriverInfo& info() const override { return info_; }
 
@@ -59,11 +115,27 @@ public:
 
   // rule: DRIVER.REFERENCE
   [[nodiscard]] DrawResult draw(const Scene& scene) override {
+    if (has_pipeline_state(scene)) {
+      ValuesResult r = draw_values(scene);
+      if (auto* e = std::get_if<DriverError>(&r))
+        return std::move(*e);
+      return std::move(std::get<Drawing>(r).fragments);
+    }
     auto prepared = prepare(scene);
     if (const auto* e = std::get_if<SceneError>(&prepared)) {
       return DriverError{"invalid scene: " + e->what()};
     }
     return detail::observable(rasterize(std::get<PreparedScene>(prepared)));
+  }
+
+  // rule: DRIVER.REFERENCE, DRIVER.VALUES
+  [[nodiscard]] ValuesResult draw_values(const Scene& scene) override {
+    if (!has_pipeline_state(scene))
+      return Driver::draw_values(scene);
+    auto result = pipe::run_pipeline(scene);
+    if (const auto* e = std::get_if<SceneError>(&result))
+      return DriverError{"invalid scene: " + e->what()};
+    return detail::observable_drawing(std::get<pipe::PipeResult>(std::move(result)));
   }
 
 private:

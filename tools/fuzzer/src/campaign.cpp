@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -37,6 +38,40 @@ std::string origin_note(Profile p) {
                                : "upper-left";
 }
 
+// rule: FUZZ.VALUES.REPORT
+json value_json(const ValueDiff& d) {
+  json j = {{"prim", d.prim}, {"x", d.x}, {"y", d.y}};
+  if (d.part)
+    j["part"] = *d.part;
+  if (d.seg)
+    j["seg"] = *d.seg;
+  if (d.sample)
+    j["sample"] = *d.sample;
+  const auto number = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  j.update({{"value", d.what},
+            {"rule", d.rule},
+            {"exact", number(d.expected)},
+            {"reference", number(d.reference)},
+            {"got", number(d.got)},
+            {"distance", number(d.distance)},
+            {"allowed", number(d.allowed)},
+            {"within", d.within}});
+  return j;
+}
+
+json values_json(const ValueComparison& v) {
+  json diffs = json::array();
+  for (const ValueDiff& d : v.diffs)
+    diffs.push_back(value_json(d));
+  json j = {{"attributes", v.attributes},
+            {"depths", v.depths},
+            {"beyond", v.beyond},
+            {"differences", diffs}};
+  j["worst_attribute"] = v.worst_attribute ? value_json(*v.worst_attribute) : json(nullptr);
+  j["worst_depth"] = v.worst_depth ? value_json(*v.worst_depth) : json(nullptr);
+  return j;
+}
+
 json finding_json(const Finding& f, const Settings& s, const std::string& driver) {
   json j = {{"seed", s.seed},
             {"case", f.case_index},
@@ -53,6 +88,8 @@ json finding_json(const Finding& f, const Settings& s, const std::string& driver
             {"missing", diff_json(f.comparison.missing)},
             {"extra", diff_json(f.comparison.extra)},
             {"shrunk_text", f.key}};
+  if (f.comparison.values)
+    j["values"] = values_json(*f.comparison.values);
   if (f.duplicate_of)
     j["duplicate_of"] = *f.duplicate_of;
   if (!f.files.scene.empty()) {
@@ -109,6 +146,21 @@ public:
       ++s.line_allowance;
     if (c->tie_rounding)
       ++s.tie_rounding;
+    // rule: FUZZ.VALUES.REPORT
+    if (c->values) {
+      ++s.value_cases;
+      s.value_attributes += c->values->attributes;
+      s.value_depths += c->values->depths;
+      const auto keep = [&](const std::optional<ValueDiff>& d, std::optional<ValueDiff>& worst,
+                            std::uint64_t& at) {
+        if (d && (!worst || d->distance > worst->distance)) {
+          worst = d;
+          at = index;
+        }
+      };
+      keep(c->values->worst_attribute, s.worst_attribute, s.worst_attribute_case);
+      keep(c->values->worst_depth, s.worst_depth, s.worst_depth_case);
+    }
     if (c->match)
       return true;
     ++s.mismatches;
@@ -243,6 +295,18 @@ std::optional<std::string> write_report(const Settings& settings, const std::str
       t[std::string(to_string(f))] = n;
     j["fill_conventions_matched"] = t;
   }
+  // rule: FUZZ.VALUES.REPORT
+  if (s.value_cases != 0) {
+    json v = {
+        {"cases", s.value_cases}, {"attributes", s.value_attributes}, {"depths", s.value_depths}};
+    v["worst_attribute"] = s.worst_attribute ? value_json(*s.worst_attribute) : json(nullptr);
+    if (s.worst_attribute)
+      v["worst_attribute"]["case"] = s.worst_attribute_case;
+    v["worst_depth"] = s.worst_depth ? value_json(*s.worst_depth) : json(nullptr);
+    if (s.worst_depth)
+      v["worst_depth"]["case"] = s.worst_depth_case;
+    j["values"] = v;
+  }
   json groups = json::array();
   for (const Group& g : s.groups) {
     groups.push_back({{"rule", g.key.rule},
@@ -363,6 +427,25 @@ void print_summary(std::FILE* out, const Settings& settings, const std::string& 
     if (s.tie_rounding != 0)
       std::fprintf(out, "ties        %llu case(s) with a snapping tie rounded the other way\n",
                    static_cast<unsigned long long>(s.tie_rounding));
+  }
+  // rule: FUZZ.VALUES.REPORT
+  if (s.value_cases != 0) {
+    const auto worst = [](const std::optional<ValueDiff>& d, std::uint64_t at, const char* unit) {
+      if (!d)
+        return std::string("none");
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "%.17g %s (case %llu, %s, pixel %d,%d)", d->distance, unit,
+                    static_cast<unsigned long long>(at), d->what.c_str(), d->x, d->y);
+      return std::string(buf);
+    };
+    std::fprintf(out, "values      %llu attribute(s) and %llu depth(s) compared in %llu case(s)\n",
+                 static_cast<unsigned long long>(s.value_attributes),
+                 static_cast<unsigned long long>(s.value_depths),
+                 static_cast<unsigned long long>(s.value_cases));
+    std::fprintf(out, "worst attr  %s\n",
+                 worst(s.worst_attribute, s.worst_attribute_case, "ulps").c_str());
+    std::fprintf(out, "worst depth %s\n",
+                 worst(s.worst_depth, s.worst_depth_case, "units (ulps for d32f)").c_str());
   }
   for (const Group& g : s.groups) {
     std::string known;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Comparison of a driver's coverage with the reference kernel, exact or legal.
 // Implements: FUZZ.COMPARE.EXACT, FUZZ.COMPARE.LEGAL, FUZZ.COMPARE.LEGAL_LINES,
-//             FUZZ.COMPARE.LEGAL_TIES
+//             FUZZ.COMPARE.LEGAL_TIES (and, with values.cpp, FUZZ.VALUES.*)
 
 #include <algorithm>
 #include <array>
@@ -13,6 +13,7 @@
 #include <variant>
 
 #include "rastrules/fuzzer/fuzzer.hpp"
+#include "rastrules/pipeline.hpp"
 
 namespace rastrules::fuzzer {
 
@@ -314,6 +315,7 @@ std::optional<Comparison> compare(const Scene& scene, const std::vector<Fragment
   return c;
 }
 
+// rule: FUZZ.VALUES.EXACT, FUZZ.VALUES.LEGAL
 std::optional<Comparison> draw_and_compare(driver::Driver& driver, const Scene& scene,
                                            Profile profile, Mode mode, std::string* error) {
   if (const std::string why = driver.unsupported(scene); !why.empty()) {
@@ -321,18 +323,36 @@ std::optional<Comparison> draw_and_compare(driver::Driver& driver, const Scene& 
       *error = "the driver cannot draw the scene: " + why;
     return std::nullopt;
   }
-  if (auto prepared = prepare(scene); std::holds_alternative<SceneError>(prepared)) {
+  // A pipeline scene is validated (run_pipeline draws it), any other prepared.
+  if (auto checked = pipe::check_scene(scene); std::holds_alternative<SceneError>(checked)) {
     if (error != nullptr)
-      *error = "the reference rejects the scene: " + std::get<SceneError>(prepared).what();
+      *error = "the reference rejects the scene: " + std::get<SceneError>(checked).what();
     return std::nullopt;
   }
-  driver::DrawResult r = driver.draw(scene);
+  // rule: DRIVER.VALUES
+  const bool values = driver.info().values && has_pipeline_state(scene);
+  driver::ValuesResult r = values ? driver.draw_values(scene) : [&]() -> driver::ValuesResult {
+    driver::DrawResult d = driver.draw(scene);
+    if (auto* e = std::get_if<driver::DriverError>(&d))
+      return std::move(*e);
+    return driver::Drawing{std::get<std::vector<Fragment>>(std::move(d)), {}};
+  }();
   if (auto* e = std::get_if<driver::DriverError>(&r)) {
     if (error != nullptr)
       *error = e->message;
     return std::nullopt;
   }
-  return compare(scene, std::get<std::vector<Fragment>>(r), profile, mode, error);
+  const driver::Drawing& drawing = std::get<driver::Drawing>(r);
+  auto c = compare(scene, drawing.fragments, profile, mode, error);
+  if (!c || drawing.values.empty())
+    return c;
+  auto v = compare_values(scene, drawing, profile, mode, error);
+  if (!v)
+    return std::nullopt;
+  c->values = std::move(*v);
+  if (c->values->beyond != 0)
+    c->match = false;
+  return c;
 }
 
 } // namespace rastrules::fuzzer

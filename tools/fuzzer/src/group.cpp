@@ -96,6 +96,29 @@ std::string pixel_rule(const Scene& scene, const Comparison& c, const DiffEntry&
 // rule: FUZZ.GROUP
 GroupKey classify(const Scene& scene, const Comparison& c) {
   const bool has_missing = !c.missing.empty();
+  // rule: FUZZ.VALUES.EXACT
+  // Equal coverage, different values: the rule of the first value beyond the allowance, and
+  // the class names the primitive type and what differs ("triangle attr perspective",
+  // "line depth d24").
+  if (!has_missing && c.extra.empty() && c.values && !c.values->diffs.empty()) {
+    const ValueDiff& d = c.values->diffs.front();
+    GroupKey k;
+    k.rule = d.rule;
+    k.klass = d.prim < scene.primitives.size() ? std::string(name_of(scene.primitives[d.prim].type))
+                                               : std::string("primitive");
+    if (d.what.starts_with("depth")) {
+      k.klass += " depth " + std::string(name_of(scene.conventions.depth));
+    } else {
+      const std::string name = d.what.substr(5);
+      for (const pipe::AttributeDecl& a : scene.attributes) {
+        if (a.name == name)
+          k.klass += " attr " + std::string(name_of(a.interpolation));
+      }
+    }
+    if (scene.msaa.count() > 1)
+      k.klass += " " + std::to_string(scene.msaa.count()) + "x";
+    return k;
+  }
   if (!has_missing && c.extra.empty())
     return {};
   const DiffEntry& first = has_missing ? c.missing.front() : c.extra.front();

@@ -218,7 +218,9 @@ std::vector<LegendLine> difference_legend(const Scene& scene) {
 // rule: FUZZ.REPORT
 std::optional<std::string> write_difference_png(const std::string& path, const Scene& scene,
                                                 const Comparison& c) {
-  auto prepared = prepare(scene);
+  // A pipeline scene's primitives are drawn by run_pipeline: the panels show its target and
+  // fragments without edges (its clipped, snapped primitives are not the scene's).
+  auto prepared = prepare(has_pipeline_state(scene) ? target_of(scene) : scene);
   if (auto* e = std::get_if<SceneError>(&prepared))
     return e->what();
   const PreparedScene& ps = std::get<PreparedScene>(prepared);

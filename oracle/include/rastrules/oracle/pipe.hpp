@@ -209,6 +209,13 @@ std::optional<double> perspective_exact(const Bary& b, const std::array<float, 3
                                         const std::array<float, 3>& w);
 double linear_exact(const Bary& b, const std::array<float, 3>& a);
 
+// The same values rounded once from the exact rationals to the nearest float32 (ties to even),
+// +-FLT_MAX beyond the range (PIPE.INTERP.HORIZON's saturation): the exactly rounded values
+// the fuzzer measures drivers against (FUZZ.VALUES.EXACT). nullopt at the horizon, as above.
+std::optional<float> perspective_nearest32(const Bary& b, const std::array<float, 3>& a,
+                                           const std::array<float, 3>& w);
+float linear_nearest32(const Bary& b, const std::array<float, 3>& a);
+
 // A kernel value checked against PIPE.INTERP.BOUND and PIPE.INTERP.HORIZON.
 struct InterpCheck {
   bool ok = false;
@@ -248,6 +255,12 @@ struct Stored {
   float f = 0.0f;
   friend bool operator==(const Stored&, const Stored&) = default;
 };
+
+// The exactly rounded stored value of the exact depth sum(e_i Z_i) / area (not first rounded to
+// a double): clamped, then stored as store_exact does. Precondition: area != 0.
+// rule: PIPE.DEPTH.INTERP, PIPE.DEPTH.CLAMP, PIPE.DEPTH.FORMAT
+Stored depth_stored_nearest(const Bary& b, const std::array<float, 3>& z, float min_depth,
+                            float max_depth, const std::string& format);
 
 // The exactly rounded stored value of an exact depth d (a double taken exactly): clamped to
 // [min_depth, max_depth], then floor(d (2^n - 1) + 1/2) exactly, or the nearest float32 (ties

@@ -8,11 +8,13 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
 #include <vector>
 
+#include "rastrules/pipeline.hpp"
 #include "rastrules/scene.hpp"
 
 namespace rastrules::driver {
@@ -31,6 +33,9 @@ struct DriverInfo {
   bool sample_mask = false;
   bool sample_shading = false;
   std::int32_t max_target_side = 0; // largest width or height it accepts
+  // Whether draw_values() reports depth and attribute values of pipeline scenes
+  // (DRIVER.VALUES); false: it reports coverage only.
+  bool values = false;
   // How an external driver's capabilities were learnt (DRIVER.EXTERNAL.CAPABILITIES):
   // "declared", or "none declared (WHY)"; empty for the built-in drivers.
   std::string capabilities;
@@ -46,6 +51,24 @@ struct DriverError {
 // coverage_q16, centroid, derivatives, helper lanes) are left empty; compare() ignores them.
 using DrawResult = std::variant<std::vector<Fragment>, DriverError>;
 
+// The values a driver reports for one fragment of a pipeline scene (DRIVER.VALUES): what its
+// fragment shader saw and what it would store, each list empty when not reported (and for a
+// fragment the depth test killed, PIPE.DEPTH.KILL).
+struct FragmentValues {
+  std::optional<std::uint32_t> part;   // the clipped part (PIPE.CLIP.*), when the driver knows it
+  std::vector<float> attr;             // one per declared attribute, in declaration order
+  std::vector<pipe::DepthValue> depth; // one per sample of the mask, ascending sample index
+  friend bool operator==(const FragmentValues&, const FragmentValues&) = default;
+};
+
+// Coverage with values: fragments as draw() returns them, and values empty (no values
+// reported) or one entry per fragment.
+struct Drawing {
+  std::vector<Fragment> fragments;
+  std::vector<FragmentValues> values;
+};
+using ValuesResult = std::variant<Drawing, DriverError>;
+
 class Driver {
 public:
   virtual ~Driver() = default;
@@ -55,7 +78,16 @@ public:
   [[nodiscard]] virtual std::string unsupported(const Scene& scene) const = 0;
   // Draws the scene. Preconditions: unsupported(scene).empty(); prepare(scene) succeeds.
   [[nodiscard]] virtual DrawResult draw(const Scene& scene) = 0;
+  // Draws the scene and returns its values too (DRIVER.VALUES). The default reports none:
+  // draw()'s fragments with empty values.
+  // rule: DRIVER.VALUES
+  [[nodiscard]] virtual ValuesResult draw_values(const Scene& scene);
 };
+
+// Sorts fragments like SCENE.OUTPUT.FRAGMENTS (then by part), keeping values (empty, or one
+// per fragment) with their fragments.
+// rule: DRIVER.VALUES
+void sort_drawing(Drawing& d);
 
 // Opens a driver by name: "reference" (the kernel), "imprecise" (built-in planted bugs, see
 // imprecise.hpp), "lavapipe" (Mesa's Vulkan CPU driver, when built with Vulkan), "opengl"

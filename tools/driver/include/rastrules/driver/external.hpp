@@ -60,6 +60,17 @@ inline constexpr std::int64_t kMaxExternalTimeoutMs = 86400000;
 parse_external_fragments(std::string_view text, const Scene& scene,
                          std::uint64_t max_fragments = kDefaultExternalMaxFragments);
 
+// The same, with the values of pipeline fragments (DRIVER.VALUES): `part`, `attr` and `depth`
+// read into Drawing::values (empty when no fragment has any), `bary` and `passed` checked and
+// not kept.
+// rule: DRIVER.EXTERNAL.PROTOCOL, DRIVER.VALUES
+[[nodiscard]] std::variant<Drawing, std::string>
+parse_external_drawing(std::string_view text, const Scene& scene,
+                       std::uint64_t max_fragments = kDefaultExternalMaxFragments);
+[[nodiscard]] std::variant<Drawing, std::string>
+read_external_drawing(const std::function<std::string_view()>& next, const Scene& scene,
+                      std::uint64_t max_fragments = kDefaultExternalMaxFragments);
+
 // The same, reading the text piece by piece as it arrives: next() returns the next bytes (valid
 // until its next call), an empty view at the end; it is not called again after the first error.
 // The external driver reads the process's standard output this way, within its timeout.

@@ -90,8 +90,40 @@ struct DiffEntry {
   friend bool operator==(const DiffEntry&, const DiffEntry&) = default;
 };
 
+// One depth or attribute value of a fragment compared with the exact one (FUZZ.VALUES.*).
+struct ValueDiff {
+  std::uint32_t prim = 0;
+  std::int32_t x = 0;
+  std::int32_t y = 0;
+  std::optional<std::uint32_t> seg, sample, part; // as the reference's fragment has them
+  std::string what;                               // "attr NAME" or "depth[K]" (K the sample index)
+  std::string rule;     // PIPE.INTERP.PERSPECTIVE, .LINEAR, .FLAT or PIPE.DEPTH.FORMAT
+  double expected = 0;  // the exactly rounded value (a float32, or a stored depth: UNORM integer
+                        // or float32)
+  double reference = 0; // the reference kernel's value (the spec's formula)
+  double got = 0;       // the driver's
+  double distance = 0;  // from expected: ulps of float32 (attributes, d32f) or UNORM units
+  double allowed = 0;   // the mode's allowance in the same unit
+  bool within = true;   // the driver's value is allowed
+};
+
+// The values of a pipeline scene compared fragment by fragment (FUZZ.VALUES.EXACT,
+// FUZZ.VALUES.LEGAL): the fragments both report, matched by (prim, x, y, seg, sample) and the
+// part when the driver gives one.
+struct ValueComparison {
+  std::uint64_t attributes = 0; // attribute values compared
+  std::uint64_t depths = 0;     // depth values compared
+  std::uint64_t beyond = 0;     // values beyond the mode's allowance
+  std::vector<ValueDiff> diffs; // the first kMaxValueDiffs of them, in fragment order
+  std::optional<ValueDiff> worst_attribute, worst_depth; // the largest distances, allowed or not
+};
+inline constexpr std::size_t kMaxValueDiffs = 64;
+
 struct Comparison {
   bool match = false;
+  // Pipeline scenes whose driver reports values (DRIVER.VALUES): the values compared; match
+  // then also requires that none is beyond the mode's allowance.
+  std::optional<ValueComparison> values;
   // Legal mode: the fill conventions under which the driver's result equals the reference
   // (several when the scene has no tie that tells them apart); exact mode: the scene's own
   // when it matches.
@@ -135,6 +167,15 @@ struct GroupKey {
 [[nodiscard]] std::optional<Comparison> compare(const Scene& scene,
                                                 const std::vector<Fragment>& actual,
                                                 Profile profile, Mode mode, std::string* error);
+
+// Compares a driver's values of a pipeline scene with the exact ones (FUZZ.VALUES.EXACT in exact
+// mode, FUZZ.VALUES.LEGAL in legal mode under the profile). nullopt and *error when the kernel
+// rejects the scene.
+// rule: FUZZ.VALUES.EXACT, FUZZ.VALUES.LEGAL
+[[nodiscard]] std::optional<ValueComparison> compare_values(const Scene& scene,
+                                                            const driver::Drawing& drawing,
+                                                            Profile profile, Mode mode,
+                                                            std::string* error);
 
 // Draws the scene with the driver and compares; nullopt (and *error) when the driver or the
 // kernel fails, or the driver does not support the scene.
@@ -242,6 +283,12 @@ struct Summary {
   // Families never generated for this driver and profile, and why (FUZZ.GENERATE).
   std::vector<std::pair<std::string, std::string>> families_not_generated;
   std::vector<std::pair<FillConvention, std::uint64_t>> legal_conventions; // legal mode: chosen
+  // rule: FUZZ.VALUES.REPORT
+  // Values compared over the campaign (drivers that report them) and the largest distances.
+  std::uint64_t value_attributes = 0, value_depths = 0;
+  std::uint64_t value_cases = 0; // cases whose values were compared
+  std::optional<ValueDiff> worst_attribute, worst_depth;
+  std::uint64_t worst_attribute_case = 0, worst_depth_case = 0;
   std::string error;        // non-empty: the campaign stopped on a driver error
   bool interrupted = false; // SIGINT or SIGTERM: the campaign stopped after its case
   std::string report_path;
