@@ -252,7 +252,7 @@ TEST(CliPipeline, PicturesOfCoverageAndDepthAndTheResolvedTarget) {
 }
 
 // rule: SCENE.OUTPUT.PIPELINE, SCENE.INPUT.ERRORS
-TEST(CliPipeline, DepthOutputsNeedDepthAndOtherCommandsRefusePipelineScenes) {
+TEST(CliPipeline, DepthOutputsNeedDepthAndCheckDrawsPipelineScenesWithDriversThatCan) {
   const TempDir dir;
   const auto clip = dir.write("clip.json", kClipTriangle);
   const auto plain = dir.write("plain.json", kWindowTriangle);
@@ -270,11 +270,17 @@ TEST(CliPipeline, DepthOutputsNeedDepthAndOtherCommandsRefusePipelineScenes) {
   EXPECT_EQ(without_png.status, 2);
   EXPECT_FALSE(std::filesystem::exists(dir / "a.png"));
   EXPECT_FALSE(std::filesystem::exists(dir / "d.json"));
+  // rule: DRIVER.VALUES
+  // check compares pipeline scenes (coverage and values) with drivers that draw them; a
+  // coverage-only driver refuses them, naming the first pipeline field.
   const auto check = run_cli({"check", clip.string(), "--driver", "reference"});
-  EXPECT_EQ(check.status, 2);
-  EXPECT_NE(check.err.find("primitives[0].pos: is a pipeline key (SCENE.PIPELINE)"),
+  EXPECT_EQ(check.status, 0) << check.err;
+  EXPECT_NE(check.out.find("result      no difference"), std::string::npos) << check.out;
+  const auto refused = run_cli({"check", clip.string(), "--driver", "imprecise:float-edges"});
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("pipeline state (primitives[0].pos, SCENE.PIPELINE) not supported"),
             std::string::npos)
-      << check.err;
+      << refused.err;
   // The fragment limit holds for pipeline scenes.
   const auto limited = run_cli(
       {"render", clip.string(), "--fragments", (dir / "f.json").string(), "--max-fragments", "3"});

@@ -209,5 +209,85 @@ TEST(PlantedBugs, ImpreciseDriverNamesAndUnsupportedScenes) {
   EXPECT_FALSE(c->expected.empty());
 }
 
+// A values campaign (FUZZ.VALUES.GENERATE) against a value-bug variant: findings, each shrunk to
+// one primitive whose value (not coverage) differs, grouped under the rule of that value.
+Summary value_campaign(const std::string& name, Profile profile, Mode mode, std::uint64_t cases) {
+  auto d = open(name);
+  Settings s;
+  s.driver_name = name;
+  s.profile = profile;
+  s.mode = mode;
+  s.cases = cases;
+  s.values = true;
+  return run_fuzz(*d, s);
+}
+
+void expect_value_findings(const Summary& s, const std::string& rule) {
+  ASSERT_TRUE(s.error.empty()) << s.error;
+  ASSERT_GT(s.unique, 0u);
+  for (const Finding& f : s.findings) {
+    EXPECT_EQ(f.shrunk.primitives.size(), 1u) << f.key;
+    EXPECT_TRUE(f.comparison.missing.empty() && f.comparison.extra.empty()) << f.key;
+    ASSERT_TRUE(f.comparison.values) << f.key;
+    EXPECT_GT(f.comparison.values->beyond, 0u) << f.key;
+    EXPECT_EQ(f.group.rule, rule) << f.key;
+    for (const ValueDiff& v : f.comparison.values->diffs) {
+      EXPECT_EQ(v.rule, rule) << f.key;
+      EXPECT_FALSE(v.within);
+      EXPECT_GT(v.distance, 0.0);
+    }
+  }
+}
+
+// rule: DRIVER.IMPRECISE.VALUES, FUZZ.VALUES.EXACT, FUZZ.VALUES.LEGAL, FUZZ.SHRINK
+TEST(PlantedValueBugs, ScreenSpaceInterpolationIsFoundInBothModesAndShrunkToOnePrimitive) {
+  const Summary exact = value_campaign("imprecise:screen-space", Profile::kD3D11, Mode::kExact, 80);
+  expect_value_findings(exact, "PIPE.INTERP.PERSPECTIVE");
+  // Off by far more than float32 noise: beyond what the APIs allow too.
+  const Summary legal =
+      value_campaign("imprecise:screen-space", Profile::kVulkan, Mode::kLegal, 80);
+  expect_value_findings(legal, "PIPE.INTERP.PERSPECTIVE");
+  ASSERT_TRUE(exact.worst_attribute);
+  EXPECT_GT(exact.worst_attribute->distance, 1e6);
+  EXPECT_FALSE(exact.worst_attribute->within);
+}
+
+// rule: DRIVER.IMPRECISE.VALUES, FUZZ.VALUES.EXACT, FUZZ.VALUES.LEGAL, FUZZ.SHRINK
+TEST(PlantedValueBugs, TheWrongProvokingVertexIsFoundForTrianglesAndLinesUnderEitherConvention) {
+  const Summary exact =
+      value_campaign("imprecise:provoking-vertex", Profile::kD3D11, Mode::kExact, 80);
+  expect_value_findings(exact, "PIPE.INTERP.FLAT");
+  const Summary legal =
+      value_campaign("imprecise:provoking-vertex", Profile::kOpenGL, Mode::kLegal, 80);
+  expect_value_findings(legal, "PIPE.INTERP.FLAT");
+  bool first = false, last = false, line = false;
+  for (const Finding& f : exact.findings) {
+    (f.shrunk.conventions.provoking == pipe::Provoking::kFirst ? first : last) = true;
+    line = line || f.shrunk.primitives[0].type != PrimitiveType::kTriangle;
+  }
+  EXPECT_TRUE(first && last && line);
+}
+
+// rule: DRIVER.IMPRECISE.VALUES, FUZZ.VALUES.EXACT, FUZZ.VALUES.LEGAL, FUZZ.SHRINK
+TEST(PlantedValueBugs, D24TruncationIsFoundExactlyAndIsLegalWhereRoundingIsOnlyAShould) {
+  const Summary exact = value_campaign("imprecise:d24-truncate", Profile::kD3D11, Mode::kExact, 80);
+  expect_value_findings(exact, "PIPE.DEPTH.FORMAT");
+  for (const Finding& f : exact.findings) {
+    EXPECT_EQ(f.shrunk.conventions.depth, pipe::DepthFormat::kD24) << f.key;
+    for (const ValueDiff& v : f.comparison.values->diffs)
+      EXPECT_EQ(v.got, v.expected - 1) << f.key; // truncation: one unit below the rounding
+  }
+  // Vulkan and OpenGL: rounding to nearest is a "should": truncation is within the allowance.
+  EXPECT_EQ(value_campaign("imprecise:d24-truncate", Profile::kVulkan, Mode::kLegal, 80).mismatches,
+            0u);
+  // The reference against itself: no value beyond, and the largest distance at most one step.
+  const Summary ref = value_campaign("reference", Profile::kD3D11, Mode::kExact, 80);
+  EXPECT_EQ(ref.mismatches, 0u);
+  EXPECT_GT(ref.value_attributes, 0u);
+  ASSERT_TRUE(ref.worst_attribute && ref.worst_depth);
+  EXPECT_LE(ref.worst_attribute->distance, 1.0);
+  EXPECT_LE(ref.worst_depth->distance, 1.0);
+}
+
 } // namespace
 } // namespace rastrules::fuzzer

@@ -1,18 +1,26 @@
 // SPDX-License-Identifier: MIT
 // Depth and attribute values of pipeline scenes: the reference and `rastrules render` as an
-// external driver report the kernel's values, the protocol reads them strictly, and the
-// comparison measures each value against the exactly rounded one (exact and legal modes).
+// external driver report the kernel's values, the protocol reads them strictly, the comparison
+// measures each value against the exactly rounded one (exact and legal modes), and the values
+// campaign generates its hard cases.
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <bit>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
 #include <variant>
 
 #include "fuzzer_test_support.hpp"
 #include "rastrules/driver/driver.hpp"
 #include "rastrules/driver/external.hpp"
 #include "rastrules/fuzzer/fuzzer.hpp"
+#include "rastrules/io/scene_json.hpp"
 #include "rastrules/pipeline.hpp"
 
 namespace rastrules::fuzzer {
@@ -259,6 +267,88 @@ TEST(ValueComparison, ACheckReportsTheValuesComparedAndTheWorstCases) {
   EXPECT_GT(sum.value_depths, 0u);
   ASSERT_TRUE(sum.worst_attribute && sum.worst_depth);
   EXPECT_TRUE(sum.worst_attribute->within);
+}
+
+// rule: FUZZ.VALUES.GENERATE
+TEST(ValueCampaign, GeneratedScenesAreDeterministicAndReachTheHardCases) {
+  auto ref = open("reference");
+  std::set<std::string> families;
+  std::set<pipe::DepthFormat> formats;
+  std::set<pipe::Provoking> provoking;
+  bool w_ratio = false, behind = false, wide = false, strip = false, huge = false,
+       subnormal = false, near0 = false, near1 = false;
+  for (std::uint64_t i = 0; i < 300; ++i) {
+    const auto c = generate_value_case(5, i, Profile::kVulkan, *ref);
+    ASSERT_TRUE(c);
+    const auto again = generate_value_case(5, i, Profile::kVulkan, *ref);
+    ASSERT_TRUE(again);
+    EXPECT_EQ(io::write_scene(c->scene), io::write_scene(again->scene));
+    ASSERT_TRUE(std::holds_alternative<std::optional<PreparedScene>>(pipe::check_scene(c->scene)))
+        << io::write_scene(c->scene);
+    families.insert(c->family);
+    formats.insert(c->scene.conventions.depth);
+    provoking.insert(c->scene.conventions.provoking);
+    ASSERT_TRUE(c->scene.depth);
+    ASSERT_FALSE(c->scene.attributes.empty());
+    for (const Primitive& p : c->scene.primitives) {
+      strip = strip || (p.type == PrimitiveType::kLineStrip && p.pos.size() >= 3);
+      float wmin = INFINITY, wmax = 0;
+      for (const pipe::Vec4f& v : p.pos) {
+        wmin = std::min(wmin, v[3]);
+        wmax = std::max(wmax, v[3]);
+        behind = behind || v[2] < 0;
+        wide = wide || std::fabs(v[0]) > v[3];
+      }
+      w_ratio = w_ratio || (!p.pos.empty() && wmax >= 1e5f * wmin);
+      for (const auto& vertex : p.attr) {
+        for (const float a : vertex) {
+          huge = huge || std::fabs(a) >= 0x1p100f;
+          subnormal = subnormal || (a != 0 && std::fabs(a) < 0x1p-126f);
+        }
+      }
+      for (const float z : p.z) {
+        near0 = near0 || (z > 0 && z < 0x1p-12f);
+        near1 = near1 || (z < 1 && z > 1 - 0x1p-12f);
+      }
+    }
+  }
+  EXPECT_EQ(families.size(), kValueFamilies.size());
+  EXPECT_EQ(formats.size(), 3u);
+  EXPECT_EQ(provoking.size(), 2u);
+  EXPECT_TRUE(w_ratio && behind && wide && strip && huge && subnormal && near0 && near1)
+      << w_ratio << behind << wide << strip << huge << subnormal << near0 << near1;
+  // A driver that reports no values gets no value scene, and says why.
+  auto coverage_only = open("imprecise:float-edges");
+  EXPECT_FALSE(generate_value_case(5, 0, Profile::kD3D11, *coverage_only));
+  const auto why = value_families_not_generated(Profile::kD3D11, *coverage_only);
+  ASSERT_EQ(why.size(), kValueFamilies.size());
+  EXPECT_NE(why[0].second.find("reports no values"), std::string::npos);
+}
+
+// rule: FUZZ.VALUES.REPORT, FUZZ.REPORT
+TEST(ValueCampaign, TheReportHoldsTheValuesTheirWorstCasesAndEachFindingsPicture) {
+  auto d = open("imprecise:d24-truncate");
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("rastrules-values-" + std::to_string(::getpid()));
+  Settings settings;
+  settings.driver_name = "imprecise:d24-truncate";
+  settings.values = true;
+  settings.cases = 20;
+  settings.out_dir = dir.string();
+  const Summary s = run_fuzz(*d, settings);
+  ASSERT_TRUE(s.error.empty()) << s.error;
+  ASSERT_GT(s.unique, 0u);
+  std::ifstream in(dir / "report.json");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const char* key : {"\"values_campaign\": true", "\"worst_depth\": {", "\"differences\": [",
+                          "\"value\": \"depth[0]\"", "\"rule\": \"PIPE.DEPTH.FORMAT\""})
+    EXPECT_NE(text.find(key), std::string::npos) << key;
+  for (const Finding& f : s.findings) {
+    if (!f.duplicate_of) {
+      EXPECT_TRUE(std::filesystem::exists(f.files.picture)) << f.files.picture;
+    }
+  }
+  std::filesystem::remove_all(dir);
 }
 
 } // namespace

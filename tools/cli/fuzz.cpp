@@ -81,11 +81,13 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
   std::optional<std::string> driver, profile, mode, out, cases, seed, shard, families;
   ResultOptions results;
   bool no_progress = false;
+  bool values = false;
   if (want_scene)
     cl.scene_files(scenes);
   cl.value("--driver", driver, "NAME",
            "the driver (required): reference, imprecise[:float-edges|:fill-bottom-right|"
-           ":4-bit-subpixel], lavapipe and opengl (when built), external:COMMAND "
+           ":4-bit-subpixel|:screen-space|:provoking-vertex|:d24-truncate], lavapipe and opengl "
+           "(when built), external:COMMAND "
            "(DRIVER.EXTERNAL.PROTOCOL)",
            "--driver needs a value");
   cl.value("--profile", profile, "d3d11|vulkan|opengl", "the rules compared (default d3d11)",
@@ -103,6 +105,9 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
              "generate only these scene families: random, shared-edge, fan, grid, sliver, "
              "points, lines (FUZZ.FAMILIES)",
              "--families needs a value");
+    cl.flag("--values", values,
+            "the values campaign: pipeline scenes whose depth and attribute values are compared "
+            "(families perspective, clipped, strips, depth; FUZZ.VALUES.GENERATE)");
   }
   cl.value("--out", out, "DIR", "write the findings and report.json into DIR",
            "--out needs a value");
@@ -148,16 +153,22 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
     o.settings.shard_index = static_cast<std::uint64_t>(*k);
     o.settings.shard_count = static_cast<std::uint64_t>(*n);
   }
+  o.settings.values = values; // rule: FUZZ.VALUES.GENERATE
   if (families) {
     // rule: FUZZ.FAMILIES
     std::string_view rest = *families;
     while (true) {
       const std::size_t comma = rest.find(',');
       const std::string name(rest.substr(0, comma));
-      if (std::find(fuzzer::kFamilies.begin(), fuzzer::kFamilies.end(), name) ==
-          fuzzer::kFamilies.end()) {
+      const bool known =
+          values ? std::find(fuzzer::kValueFamilies.begin(), fuzzer::kValueFamilies.end(), name) !=
+                       fuzzer::kValueFamilies.end()
+                 : std::find(fuzzer::kFamilies.begin(), fuzzer::kFamilies.end(), name) !=
+                       fuzzer::kFamilies.end();
+      if (!known) {
         usage_error("--families: unknown family " + shown_value(name) +
-                    " (known: random, shared-edge, fan, grid, sliver, points, lines)");
+                    (values ? " (known with --values: perspective, clipped, strips, depth)"
+                            : " (known: random, shared-edge, fan, grid, sliver, points, lines)"));
         return std::nullopt;
       }
       if (std::find(o.settings.families.begin(), o.settings.families.end(), name) ==

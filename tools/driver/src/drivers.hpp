@@ -38,6 +38,10 @@ std::unique_ptr<Driver> open_opengl(std::string_view arg, std::string* error);
 // rule: DRIVER.VALUES
 [[nodiscard]] Drawing observable_drawing(pipe::PipeResult result);
 
+// Returns the fragments of a drawing (or its error): draw() of the drivers that draw through
+// draw_values().
+[[nodiscard]] DrawResult coverage_of(ValuesResult r);
+
 // Returns the info of a driver that draws everything a scene can ask for (every sample count,
 // primitive, line mode, the sample mask and sample shading, targets up to kMaxTargetSide): the
 // reference and, by declaration, an external process.

@@ -323,10 +323,7 @@ public:
   }
 
   [[nodiscard]] DrawResult draw(const Scene& scene) override {
-    ValuesResult r = draw_values(scene);
-    if (auto* e = std::get_if<DriverError>(&r))
-      return std::move(*e);
-    return std::move(std::get<Drawing>(r).fragments);
+    return detail::coverage_of(draw_values(scene));
   }
 
   // rule: DRIVER.EXTERNAL.PROTOCOL, DRIVER.VALUES

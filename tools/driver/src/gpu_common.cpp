@@ -54,6 +54,11 @@ double max_position_scale(double max_dim, double bound) {
 // rule: DRIVER.LAVAPIPE.SUPPORT, DRIVER.OPENGL.SUPPORT
 std::string unsupported_scene(const Scene& scene, const DriverInfo& info, double max_k,
                               const SupportChecks& checks) {
+  // rule: DRIVER.VALUES
+  // The adapters draw window-space coverage: a scene with pipeline state (which `check` reads
+  // since drivers may report values) is refused, not drawn from its empty vertex lists.
+  if (const auto field = first_pipeline_field(scene))
+    return "pipeline state (" + *field + ", SCENE.PIPELINE) not supported by the adapter";
   const MultisampleState& ms = scene.msaa;
   if (ms.pattern.kind != PatternKind::kStandard) {
     return "sample pattern '" + std::string(to_string(ms.pattern.kind)) + "' not supported (" +

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The deliberately imprecise driver: independent, simple code with planted bugs.
-// Implements: DRIVER.IMPRECISE
+// Implements: DRIVER.IMPRECISE, DRIVER.IMPRECISE.VALUES
 
 #include "rastrules/driver/imprecise.hpp"
 
@@ -14,6 +14,8 @@
 
 #include "drivers.hpp"
 #include "rastrules/fixed.hpp"
+#include "rastrules/msaa.hpp"
+#include "rastrules/pipeline.hpp"
 
 namespace rastrules::driver {
 namespace {
@@ -46,6 +48,8 @@ public:
   [[nodiscard]] const DriverInfo& info() const override { return info_; }
 
   [[nodiscard]] std::string unsupported(const Scene& scene) const override {
+    if (const auto field = first_pipeline_field(scene)) // rule: DRIVER.VALUES
+      return "pipeline state (" + *field + ", SCENE.PIPELINE) not supported";
     if (scene.msaa.count() != 1)
       return std::to_string(scene.msaa.count()) + " samples not supported";
     if (scene.msaa.wants_quads() || scene.msaa.has_centroid)
@@ -180,6 +184,128 @@ private:
   DriverInfo info_;
 };
 
+// rule: PIPE.BARY.EXACT, PIPE.BARY.LINE
+// The barycentrics of s for a drawn primitive, written again here (the kernel's are private to
+// its pipeline): a triangle's edge values, a line's projection parameter, a point's (1, 0, 0).
+pipe::Barycentrics bary_at(const pipe::DrawnPrimitive& d, Vec2 s) {
+  if (d.type == PrimitiveType::kTriangle && d.snapped.size() == 3)
+    return pipe::barycentrics({d.snapped[0], d.snapped[1], d.snapped[2]}, s);
+  pipe::Barycentrics b;
+  if (d.snapped.size() < 2) {
+    b.e = {1, 0, 0};
+    b.area = 1;
+    return b;
+  }
+  const std::int64_t dx = d.snapped[1].x.raw() - d.snapped[0].x.raw();
+  const std::int64_t dy = d.snapped[1].y.raw() - d.snapped[0].y.raw();
+  const std::int64_t num =
+      (s.x.raw() - d.snapped[0].x.raw()) * dx + (s.y.raw() - d.snapped[0].y.raw()) * dy;
+  b.area = dx * dx + dy * dy;
+  b.e = {b.area - num, num, 0};
+  return b;
+}
+
+// rule: DRIVER.IMPRECISE.VALUES
+// The value bugs: the reference's pipeline (coverage, clipping, snapping, barycentrics), with
+// one planted mistake in the values it reports.
+class ValueBugDriver final : public Driver {
+public:
+  ValueBugDriver(std::string name, ImpreciseBugs bugs)
+      : bugs_(bugs), info_(detail::full_capabilities(std::move(name), "", kSubpixelBits)) {
+    std::string what;
+    if (bugs_.screen_space)
+      what += " perspective attributes interpolated in screen space;";
+    if (bugs_.wrong_provoking)
+      what += " flat attributes from the other provoking vertex;";
+    if (bugs_.d24_truncate)
+      what += " D24 depth stored by truncation;";
+    what.pop_back();
+    info_.description = "built-in imprecise values (planted bugs:" + what + ")";
+    info_.values = true;
+  }
+
+  [[nodiscard]] const DriverInfo& info() const override { return info_; }
+  [[nodiscard]] std::string unsupported(const Scene&) const override { return {}; }
+
+  [[nodiscard]] DrawResult draw(const Scene& scene) override {
+    return detail::coverage_of(draw_values(scene));
+  }
+
+  [[nodiscard]] ValuesResult draw_values(const Scene& scene) override {
+    auto run = pipe::run_pipeline(scene);
+    if (const auto* e = std::get_if<SceneError>(&run))
+      return DriverError{"invalid scene: " + e->what()};
+    pipe::PipeResult& r = std::get<pipe::PipeResult>(run);
+    for (std::size_t i = 0; i < r.data.size(); ++i)
+      plant(scene, r.fragments[i], r.drawn[r.data[i].drawn], r.data[i]);
+    return detail::observable_drawing(std::move(r));
+  }
+
+private:
+  void plant(const Scene& scene, const Fragment& f, const pipe::DrawnPrimitive& d,
+             pipe::FragmentData& out) const {
+    if (out.attr.size() == scene.attributes.size()) {
+      for (std::size_t k = 0; k < scene.attributes.size(); ++k) {
+        const pipe::AttributeDecl& decl = scene.attributes[k];
+        if (bugs_.screen_space && decl.interpolation == pipe::Interpolation::kPerspective) {
+          Vec2 at = pixel_center(f.x, f.y);
+          if (decl.location == pipe::Location::kCentroid && f.centroid)
+            at = sample_position(f.x, f.y, f.centroid->offset);
+          if (decl.location == pipe::Location::kSample && f.sample)
+            at = sample_position(f.x, f.y, scene.msaa.pattern.positions[*f.sample]);
+          const pipe::Barycentrics b = bary_at(d, at);
+          // The planted bug: no division by w (a zero-length line keeps the flat value).
+          out.attr[k] = b.area == 0 ? d.flat[k] : pipe::interpolate_linear(b, d.attr[k]);
+        }
+        if (bugs_.wrong_provoking && decl.interpolation == pipe::Interpolation::kFlat) {
+          if (const auto v = other_provoking(scene, f, d, k))
+            out.attr[k] = *v;
+        }
+      }
+    }
+    if (bugs_.d24_truncate && scene.depth && scene.conventions.depth == pipe::DepthFormat::kD24) {
+      const pipe::Viewport vp =
+          scene.viewport.value_or(pipe::Viewport{0.0f, 0.0f, static_cast<float>(scene.width),
+                                                 static_cast<float>(scene.height), 0.0f, 1.0f});
+      std::size_t n = 0;
+      for (std::uint32_t k = 0; k < scene.msaa.count() && n < out.depth.size(); ++k) {
+        if ((f.mask >> k & 1u) == 0)
+          continue;
+        const pipe::Barycentrics b =
+            bary_at(d, sample_position(f.x, f.y, scene.msaa.pattern.positions[k]));
+        const double z = b.area == 0 ? d.z[0] : pipe::interpolate_depth(b, d.z);
+        const double c =
+            std::clamp(z, static_cast<double>(vp.min_depth), static_cast<double>(vp.max_depth));
+        // The planted bug: floor(z * (2^24 - 1)) instead of floor(z * (2^24 - 1) + 0.5).
+        out.depth[n++].unorm = static_cast<std::uint32_t>(std::floor(c * 16777215.0));
+      }
+    }
+  }
+
+  // The value of attribute k at the end of the primitive (or strip segment) that is not its
+  // provoking vertex; nullopt for a point, or when the segment is not known.
+  static std::optional<float> other_provoking(const Scene& scene, const Fragment& f,
+                                              const pipe::DrawnPrimitive& d, std::size_t k) {
+    const Primitive& p = scene.primitives[f.prim];
+    const std::size_t n = p.attr.size();
+    if (n < 2)
+      return std::nullopt;
+    std::size_t first = 0, last = n - 1;
+    if (p.type == PrimitiveType::kLineStrip) {
+      const std::optional<std::uint32_t> seg = f.seg ? f.seg : d.seg;
+      if (!seg || *seg + 1 >= n)
+        return std::nullopt;
+      first = *seg;
+      last = *seg + 1;
+    }
+    const bool provoking_first = scene.conventions.provoking == pipe::Provoking::kFirst;
+    return p.attr[provoking_first ? last : first][k];
+  }
+
+  ImpreciseBugs bugs_;
+  DriverInfo info_;
+};
+
 } // namespace
 
 bool parse_imprecise_variant(std::string_view name, ImpreciseBugs* bugs) {
@@ -192,6 +318,12 @@ bool parse_imprecise_variant(std::string_view name, ImpreciseBugs* bugs) {
     b.fill_bottom_right = true;
   } else if (name == "imprecise:4-bit-subpixel") {
     b.four_bit_subpixel = true;
+  } else if (name == "imprecise:screen-space") {
+    b.screen_space = true;
+  } else if (name == "imprecise:provoking-vertex") {
+    b.wrong_provoking = true;
+  } else if (name == "imprecise:d24-truncate") {
+    b.d24_truncate = true;
   } else {
     return false;
   }
@@ -200,8 +332,13 @@ bool parse_imprecise_variant(std::string_view name, ImpreciseBugs* bugs) {
 }
 
 std::vector<std::string> imprecise_driver_names() {
-  return {"imprecise", "imprecise:float-edges", "imprecise:fill-bottom-right",
-          "imprecise:4-bit-subpixel"};
+  return {"imprecise",
+          "imprecise:float-edges",
+          "imprecise:fill-bottom-right",
+          "imprecise:4-bit-subpixel",
+          "imprecise:screen-space",
+          "imprecise:provoking-vertex",
+          "imprecise:d24-truncate"};
 }
 
 std::unique_ptr<Driver> open_imprecise_driver(std::string_view name, std::string* error) {
@@ -210,10 +347,13 @@ std::unique_ptr<Driver> open_imprecise_driver(std::string_view name, std::string
     if (error != nullptr) {
       *error = "unknown imprecise driver \"" + std::string(name) +
                "\" (imprecise, imprecise:float-edges, imprecise:fill-bottom-right, "
-               "imprecise:4-bit-subpixel)";
+               "imprecise:4-bit-subpixel, imprecise:screen-space, imprecise:provoking-vertex, "
+               "imprecise:d24-truncate)";
     }
     return nullptr;
   }
+  if (bugs.screen_space || bugs.wrong_provoking || bugs.d24_truncate)
+    return std::make_unique<ValueBugDriver>(std::string(name), bugs);
   return std::make_unique<ImpreciseDriver>(std::string(name), bugs);
 }
 

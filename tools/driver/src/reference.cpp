@@ -62,6 +62,13 @@ Drawing observable_drawing(pipe::PipeResult result) {
   return out;
 }
 
+// rule: DRIVER.VALUES
+DrawResult coverage_of(ValuesResult r) {
+  if (auto* e = std::get_if<DriverError>(&r))
+    return std::move(*e);
+  return std::move(std::get<Drawing>(r).fragments);
+}
+
 } // namespace detail
 
 // rule: DRIVER.VALUES
@@ -116,10 +123,7 @@ public:
   // rule: DRIVER.REFERENCE
   [[nodiscard]] DrawResult draw(const Scene& scene) override {
     if (has_pipeline_state(scene)) {
-      ValuesResult r = draw_values(scene);
-      if (auto* e = std::get_if<DriverError>(&r))
-        return std::move(*e);
-      return std::move(std::get<Drawing>(r).fragments);
+      return detail::coverage_of(draw_values(scene));
     }
     auto prepared = prepare(scene);
     if (const auto* e = std::get_if<SceneError>(&prepared)) {

@@ -25,7 +25,9 @@ struct Entry {
 constexpr auto kEntries = std::to_array<Entry>({
   {"reference", false, "reference", &detail::open_reference},
       {"imprecise", false, "imprecise", &detail::open_imprecise},
-      {"imprecise:", true, "imprecise:float-edges|fill-bottom-right|4-bit-subpixel",
+      {"imprecise:", true,
+       "imprecise:float-edges|fill-bottom-right|4-bit-subpixel|screen-space|provoking-vertex|d24-"
+       "truncate",
        &detail::open_imprecise},
       {"external:", true, "external:COMMAND", &detail::open_external},
 #if defined(RASTRULES_HAVE_LAVAPIPE)

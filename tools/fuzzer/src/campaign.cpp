@@ -295,6 +295,8 @@ std::optional<std::string> write_report(const Settings& settings, const std::str
       t[std::string(to_string(f))] = n;
     j["fill_conventions_matched"] = t;
   }
+  if (settings.values)
+    j["values_campaign"] = true;
   // rule: FUZZ.VALUES.REPORT
   if (s.value_cases != 0) {
     json v = {
@@ -331,7 +333,9 @@ std::optional<std::string> write_report(const Settings& settings, const std::str
 Summary run_fuzz(driver::Driver& driver, const Settings& settings) {
   Summary s;
   const auto start = std::chrono::steady_clock::now();
-  s.families_not_generated = families_not_generated(settings.profile, driver, settings.families);
+  s.families_not_generated =
+      settings.values ? value_families_not_generated(settings.profile, driver, settings.families)
+                      : families_not_generated(settings.profile, driver, settings.families);
   if (!make_out_dir(settings, s))
     return s;
   Campaign campaign(driver, settings);
@@ -350,7 +354,11 @@ Summary run_fuzz(driver::Driver& driver, const Settings& settings) {
       s.interrupted = true;
       break;
     }
-    auto c = generate_case(settings.seed, i, settings.profile, driver, settings.families);
+    // rule: FUZZ.VALUES.GENERATE
+    auto c =
+        settings.values
+            ? generate_value_case(settings.seed, i, settings.profile, driver, settings.families)
+            : generate_case(settings.seed, i, settings.profile, driver, settings.families);
     if (!c) {
       ++s.skipped;
       s.skipped_cases.push_back(i);

@@ -36,9 +36,24 @@ bool delete_vertices(Scene& s, const Pred& differs) {
   for (std::size_t p = 0; p < s.primitives.size(); ++p) {
     if (s.primitives[p].type != PrimitiveType::kLineStrip)
       continue;
-    for (std::size_t i = 0; i < s.primitives[p].v.size() && s.primitives[p].v.size() > 2;) {
+    const auto count = [&] {
+      return std::max(s.primitives[p].v.size(), s.primitives[p].pos.size());
+    };
+    for (std::size_t i = 0; i < count() && count() > 2;) {
       Scene t = s;
-      t.primitives[p].v.erase(t.primitives[p].v.begin() + static_cast<std::ptrdiff_t>(i));
+      // The vertex and its per-vertex pipeline inputs (SCENE.PIPELINE), where given.
+      Primitive& tp = t.primitives[p];
+      const auto at = static_cast<std::ptrdiff_t>(i);
+      if (!tp.v.empty())
+        tp.v.erase(tp.v.begin() + at);
+      if (!tp.pos.empty())
+        tp.pos.erase(tp.pos.begin() + at);
+      if (!tp.z.empty())
+        tp.z.erase(tp.z.begin() + at);
+      if (!tp.w.empty())
+        tp.w.erase(tp.w.begin() + at);
+      if (!tp.attr.empty())
+        tp.attr.erase(tp.attr.begin() + at);
       if (differs(t)) {
         s = std::move(t);
         changed = true;
@@ -46,7 +61,7 @@ bool delete_vertices(Scene& s, const Pred& differs) {
         ++i;
       }
     }
-    if (s.primitives[p].v.size() == 2) {
+    if (count() == 2) {
       Scene t = s;
       t.primitives[p].type = PrimitiveType::kLine;
       if (differs(t)) {

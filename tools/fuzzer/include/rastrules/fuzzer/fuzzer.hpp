@@ -75,6 +75,22 @@ struct Case {
 inline constexpr std::array<std::string_view, 7> kFamilies = {
     "random", "shared-edge", "fan", "grid", "sliver", "points", "lines"};
 
+// The values campaign (`fuzz --values`, FUZZ.VALUES.GENERATE): pipeline scenes with depth
+// and 1-3 attributes (perspective, linear, flat; both provoking vertices; d16, d24, d32f):
+// `perspective` (clip-space triangles, w ratios up to about 1e6), `clipped` (triangles across
+// the near plane or the sides), `strips` (clip-space line strips and lines), `depth` (window
+// space, depths near 0 and 1 in the format's resolution). Attributes are small, huge,
+// subnormal or large integers. Only for drivers that report values.
+// rule: FUZZ.VALUES.GENERATE
+inline constexpr std::array<std::string_view, 4> kValueFamilies = {"perspective", "clipped",
+                                                                   "strips", "depth"};
+[[nodiscard]] std::optional<Case> generate_value_case(std::uint64_t seed, std::uint64_t index,
+                                                      Profile profile, const driver::Driver& driver,
+                                                      const std::vector<std::string>& only = {});
+[[nodiscard]] std::vector<std::pair<std::string, std::string>>
+value_families_not_generated(Profile profile, const driver::Driver& driver,
+                             const std::vector<std::string>& only = {});
+
 // The families generate_case() never draws for this driver and profile, each with the reason.
 // rule: FUZZ.GENERATE
 [[nodiscard]] std::vector<std::pair<std::string, std::string>>
@@ -260,6 +276,8 @@ struct Settings {
   std::uint64_t shard_count = 1;
   // rule: FUZZ.FAMILIES
   std::vector<std::string> families; // `--families`: only these (names of kFamilies); empty: all
+  // rule: FUZZ.VALUES.GENERATE
+  bool values = false; // `--values`: the values campaign (kValueFamilies)
 };
 
 // The cases of one scene family and how many of them mismatched.
