@@ -276,7 +276,7 @@ TEST(ValueCampaign, GeneratedScenesAreDeterministicAndReachTheHardCases) {
   std::set<pipe::DepthFormat> formats;
   std::set<pipe::Provoking> provoking;
   bool w_ratio = false, behind = false, wide = false, strip = false, huge = false,
-       subnormal = false, near0 = false, near1 = false;
+       subnormal = false, near0 = false, near1 = false, msaa = false;
   for (std::uint64_t i = 0; i < 300; ++i) {
     const auto c = generate_value_case(5, i, Profile::kVulkan, *ref);
     ASSERT_TRUE(c);
@@ -286,6 +286,7 @@ TEST(ValueCampaign, GeneratedScenesAreDeterministicAndReachTheHardCases) {
     ASSERT_TRUE(std::holds_alternative<std::optional<PreparedScene>>(pipe::check_scene(c->scene)))
         << io::write_scene(c->scene);
     families.insert(c->family);
+    msaa = msaa || c->scene.msaa.count() == 4;
     formats.insert(c->scene.conventions.depth);
     provoking.insert(c->scene.conventions.provoking);
     ASSERT_TRUE(c->scene.depth);
@@ -315,8 +316,8 @@ TEST(ValueCampaign, GeneratedScenesAreDeterministicAndReachTheHardCases) {
   EXPECT_EQ(families.size(), kValueFamilies.size());
   EXPECT_EQ(formats.size(), 3u);
   EXPECT_EQ(provoking.size(), 2u);
-  EXPECT_TRUE(w_ratio && behind && wide && strip && huge && subnormal && near0 && near1)
-      << w_ratio << behind << wide << strip << huge << subnormal << near0 << near1;
+  EXPECT_TRUE(w_ratio && behind && wide && strip && huge && subnormal && near0 && near1 && msaa)
+      << w_ratio << behind << wide << strip << huge << subnormal << near0 << near1 << msaa;
   // A driver that reports no values gets no value scene, and says why.
   auto coverage_only = open("imprecise:float-edges");
   EXPECT_FALSE(generate_value_case(5, 0, Profile::kD3D11, *coverage_only));

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "rastrules/fuzzer/fuzzer.hpp"
+#include "rastrules/msaa.hpp"
 
 namespace rastrules::fuzzer {
 namespace {
@@ -161,6 +162,9 @@ std::optional<Case> generate_value_case(std::uint64_t seed, std::uint64_t index,
   }
   if (families.empty())
     return std::nullopt;
+  const driver::DriverInfo& info = driver.info();
+  const bool msaa4 = std::find(info.sample_counts.begin(), info.sample_counts.end(), 4u) !=
+                     info.sample_counts.end();
   for (std::uint64_t attempt = 0; attempt < 16; ++attempt) {
     Rng rng(seed * 0x9E3779B97F4A7C15ull ^ (index + 1) * 0xC2B2AE3D27D4EB4Full ^
             attempt * 0x8CB92BA72F3D8DD7ull ^ 0x5641c0e5ull);
@@ -193,6 +197,9 @@ std::optional<Case> generate_value_case(std::uint64_t seed, std::uint64_t index,
       strip_family(rng, s, st);
     else
       depth_family(rng, s, st);
+    // One depth per covered sample: the standard 4x pattern one time in four.
+    if (msaa4 && rng.chance(25))
+      set_sample_pattern(s, standard_pattern(4));
     if (driver.unsupported(s).empty())
       return c;
   }
