@@ -352,5 +352,57 @@ TEST(ValueCampaign, TheReportHoldsTheValuesTheirWorstCasesAndEachFindingsPicture
   std::filesystem::remove_all(dir);
 }
 
+// rule: FUZZ.VALUES.REPORT, FUZZ.MERGE
+TEST(ValueCampaign, ShardsMergeIntoTheCampaignsValuesAndRefuseACoverageShard) {
+  auto d = open("imprecise:d24-truncate");
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("rastrules-values-merge-" + std::to_string(::getpid()));
+  Settings whole;
+  whole.driver_name = "imprecise:d24-truncate";
+  whole.values = true;
+  whole.cases = 30;
+  whole.out_dir = (dir / "whole").string();
+  const Summary w = run_fuzz(*d, whole);
+  ASSERT_TRUE(w.error.empty()) << w.error;
+  std::vector<std::string> dirs;
+  for (std::uint64_t k = 0; k < 2; ++k) {
+    Settings part = whole;
+    part.shard_index = k;
+    part.shard_count = 2;
+    part.out_dir = (dir / ("shard" + std::to_string(k))).string();
+    dirs.push_back(part.out_dir);
+    ASSERT_TRUE(run_fuzz(*d, part).error.empty());
+  }
+  Settings merged;
+  std::string description, err;
+  auto m = merge_reports(dirs, &merged, &description, &err);
+  ASSERT_TRUE(m) << err;
+  EXPECT_TRUE(merged.values);
+  EXPECT_EQ(m->value_cases, w.value_cases);
+  EXPECT_EQ(m->value_attributes, w.value_attributes);
+  EXPECT_EQ(m->value_depths, w.value_depths);
+  ASSERT_TRUE(m->worst_depth && w.worst_depth);
+  EXPECT_EQ(m->worst_depth->distance, w.worst_depth->distance);
+  EXPECT_EQ(m->worst_depth_case, w.worst_depth_case);
+  ASSERT_EQ(m->findings.size(), w.findings.size());
+  for (std::size_t i = 0; i < w.findings.size(); ++i) {
+    ASSERT_TRUE(m->findings[i].comparison.values && w.findings[i].comparison.values);
+    EXPECT_EQ(m->findings[i].comparison.values->beyond, w.findings[i].comparison.values->beyond);
+    EXPECT_EQ(m->findings[i].group, w.findings[i].group);
+  }
+  // A shard of a coverage campaign is not a shard of this one.
+  Settings coverage = whole;
+  coverage.values = false;
+  coverage.shard_index = 1;
+  coverage.shard_count = 2;
+  coverage.out_dir = (dir / "coverage").string();
+  auto plain = open("imprecise");
+  ASSERT_TRUE(run_fuzz(*plain, coverage).error.empty());
+  coverage.driver_name = "imprecise";
+  EXPECT_FALSE(merge_reports({dirs[0], coverage.out_dir}, &merged, &description, &err));
+  EXPECT_NE(err.find("values_campaign"), std::string::npos) << err;
+  std::filesystem::remove_all(dir);
+}
+
 } // namespace
 } // namespace rastrules::fuzzer

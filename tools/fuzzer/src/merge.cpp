@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <set>
 #include <variant>
@@ -27,6 +28,37 @@ std::vector<DiffEntry> diff_list(const json& a) {
   return out;
 }
 
+// rule: FUZZ.VALUES.REPORT
+// Reads a value entry back (what value_json wrote; a distance written as null is infinite).
+ValueDiff value_of(const json& e) {
+  ValueDiff d;
+  d.prim = e.at("prim").get<std::uint32_t>();
+  d.x = e.at("x").get<std::int32_t>();
+  d.y = e.at("y").get<std::int32_t>();
+  for (const auto& [key, field] :
+       {std::pair{"part", &d.part}, std::pair{"seg", &d.seg}, std::pair{"sample", &d.sample}}) {
+    if (e.contains(key))
+      *field = e.at(key).get<std::uint32_t>();
+  }
+  d.what = e.at("value").get<std::string>();
+  d.rule = e.at("rule").get<std::string>();
+  const auto number = [&](const char* key) {
+    const json& v = e.at(key);
+    return v.is_null() ? std::numeric_limits<double>::infinity() : v.get<double>();
+  };
+  d.expected = number("exact");
+  d.reference = number("reference");
+  d.got = number("got");
+  d.distance = number("distance");
+  d.allowed = number("allowed");
+  d.within = e.at("within").get<bool>();
+  return d;
+}
+
+std::optional<ValueDiff> worst_of(const json& e) {
+  return e.is_null() ? std::nullopt : std::optional<ValueDiff>(value_of(e));
+}
+
 // Reads one finding of a report back (what finding_json wrote).
 Finding finding_of(const json& e) {
   Finding f;
@@ -38,6 +70,18 @@ Finding finding_of(const json& e) {
   f.comparison.extra = diff_list(e.at("extra"));
   if (auto fill = from_name<FillConvention>(e.at("compared_with_fill").get<std::string>()))
     f.comparison.compared_with = *fill;
+  if (e.contains("values")) { // rule: FUZZ.VALUES.REPORT
+    const json& v = e.at("values");
+    ValueComparison c;
+    c.attributes = v.at("attributes").get<std::uint64_t>();
+    c.depths = v.at("depths").get<std::uint64_t>();
+    c.beyond = v.at("beyond").get<std::uint64_t>();
+    for (const json& d : v.at("differences"))
+      c.diffs.push_back(value_of(d));
+    c.worst_attribute = worst_of(v.at("worst_attribute"));
+    c.worst_depth = worst_of(v.at("worst_depth"));
+    f.comparison.values = std::move(c);
+  }
   if (auto shrunk = io::read_scene(f.key); std::holds_alternative<Scene>(shrunk))
     f.shrunk = std::get<Scene>(std::move(shrunk));
   // Only the count of the generated scene's primitives is in the report; its scene file is.
@@ -82,6 +126,13 @@ std::optional<Summary> merge_reports(const std::vector<std::string>& dirs, Setti
         settings->shard_index = 0;
         if (j->contains("families_selected"))
           settings->families = j->at("families_selected").get<std::vector<std::string>>();
+        settings->values = j->value("values_campaign", false);
+      }
+      // Shards of one campaign are all values campaigns or none. rule: FUZZ.VALUES.GENERATE
+      if (j->value("values_campaign", false) != settings->values) {
+        *error = path + ": values_campaign " + (settings->values ? "absent" : "true") +
+                 " where the first report has " + (settings->values ? "true" : "none");
+        return std::nullopt;
       }
       // Shards of one campaign select the same families. rule: FUZZ.FAMILIES
       if (j->value("families_selected", nlohmann::json()) !=
@@ -137,6 +188,24 @@ std::optional<Summary> merge_reports(const std::vector<std::string>& dirs, Setti
           if (auto f = from_name<FillConvention>(name))
             tally[*f] += n.get<std::uint64_t>();
         }
+      }
+      // rule: FUZZ.VALUES.REPORT
+      if (j->contains("values")) {
+        const json& v = j->at("values");
+        s.value_cases += v.at("cases").get<std::uint64_t>();
+        s.value_attributes += v.at("attributes").get<std::uint64_t>();
+        s.value_depths += v.at("depths").get<std::uint64_t>();
+        const auto keep = [&](const char* key, std::optional<ValueDiff>& worst, std::uint64_t& at) {
+          const auto d = worst_of(v.at(key));
+          const std::uint64_t c = d ? v.at(key).at("case").get<std::uint64_t>() : 0;
+          if (d && (!worst || d->distance > worst->distance ||
+                    (d->distance == worst->distance && c < at))) {
+            worst = d;
+            at = c;
+          }
+        };
+        keep("worst_attribute", s.worst_attribute, s.worst_attribute_case);
+        keep("worst_depth", s.worst_depth, s.worst_depth_case);
       }
       for (const json& e : j->at("findings"))
         s.findings.push_back(finding_of(e));
