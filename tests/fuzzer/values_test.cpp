@@ -344,6 +344,10 @@ TEST(ValueCampaign, TheReportHoldsTheValuesTheirWorstCasesAndEachFindingsPicture
   for (const char* key : {"\"values_campaign\": true", "\"worst_depth\": {", "\"differences\": [",
                           "\"value\": \"depth[0]\"", "\"rule\": \"PIPE.DEPTH.FORMAT\""})
     EXPECT_NE(text.find(key), std::string::npos) << key;
+  std::ifstream page(dir / "index.html");
+  const std::string html((std::istreambuf_iterator<char>(page)), std::istreambuf_iterator<char>());
+  EXPECT_NE(html.find("values beyond the allowance"), std::string::npos);
+  EXPECT_NE(html.find("<td>depth[0]</td><td>PIPE.DEPTH.FORMAT</td>"), std::string::npos);
   for (const Finding& f : s.findings) {
     if (!f.duplicate_of) {
       EXPECT_TRUE(std::filesystem::exists(f.files.picture)) << f.files.picture;

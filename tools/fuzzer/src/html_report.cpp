@@ -6,6 +6,7 @@
 #include "rastrules/fuzzer/html_report.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -207,7 +208,30 @@ std::optional<std::string> write_html_report(const Settings& settings,
            std::to_string(xy.second) + "</code>)</p>\n<pre>" +
            html_escape(explain(f->shrunk, ps, xy.first, xy.second)) + "</pre>\n";
     }
-    h += "</details>\n</section>\n";
+    h += "</details>\n";
+    // rule: FUZZ.VALUES.REPORT
+    if (c.values && !c.values->diffs.empty()) {
+      const auto num = [](double v) {
+        char buf[40];
+        std::snprintf(buf, sizeof buf, "%.9g", v);
+        return std::string(buf);
+      };
+      h += "<details open><summary>values beyond the allowance (" +
+           std::to_string(c.values->beyond) + " of " +
+           std::to_string(c.values->attributes + c.values->depths) +
+           " compared; distances in float32 steps, or units of the depth format)</summary>\n"
+           "<table>\n<tr><th>pixel</th><th>value</th><th>rule</th><th>exactly rounded</th>"
+           "<th>reference</th><th>driver</th><th>distance</th><th>allowed</th></tr>\n";
+      for (std::size_t k = 0; k < c.values->diffs.size() && k < 8; ++k) {
+        const ValueDiff& v = c.values->diffs[k];
+        h += "<tr><td>(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ")</td><td>" +
+             html_escape(v.what) + "</td><td>" + html_escape(v.rule) + "</td><td>" +
+             num(v.expected) + "</td><td>" + num(v.reference) + "</td><td>" + num(v.got) +
+             "</td><td>" + num(v.distance) + "</td><td>" + num(v.allowed) + "</td></tr>\n";
+      }
+      h += "</table>\n</details>\n";
+    }
+    h += "</section>\n";
   }
   if (!duplicates.empty()) {
     h += "<h2>Duplicates</h2>\n<table>\n<tr><th>case</th><th>same minimal scene as</th></tr>\n";
