@@ -318,6 +318,15 @@ TEST(ValueCampaign, GeneratedScenesAreDeterministicAndReachTheHardCases) {
   EXPECT_EQ(provoking.size(), 2u);
   EXPECT_TRUE(w_ratio && behind && wide && strip && huge && subnormal && near0 && near1 && msaa)
       << w_ratio << behind << wide << strip << huge << subnormal << near0 << near1 << msaa;
+  // An external driver that declares no values (DRIVER.EXTERNAL.CAPABILITIES) reports none.
+  auto caps = driver::parse_capabilities(R"({"capabilities": {"values": false}})");
+  ASSERT_TRUE(std::holds_alternative<driver::Capabilities>(caps));
+  EXPECT_FALSE(std::get<driver::Capabilities>(caps).values);
+  driver::DriverInfo info = ref->info();
+  driver::apply_capabilities(std::get<driver::Capabilities>(caps), info);
+  EXPECT_FALSE(info.values);
+  EXPECT_TRUE(std::holds_alternative<std::string>(
+      driver::parse_capabilities(R"({"capabilities": {"values": 1}})")));
   // A driver that reports no values gets no value scene, and says why.
   auto coverage_only = open("imprecise:float-edges");
   EXPECT_FALSE(generate_value_case(5, 0, Profile::kD3D11, *coverage_only));

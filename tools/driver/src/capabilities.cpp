@@ -104,6 +104,9 @@ std::variant<Capabilities, std::string> parse_capabilities(std::string_view text
     } else if (key == "pipeline") {
       if (on = flag(value, key); std::holds_alternative<bool>(on))
         caps.pipeline = std::get<bool>(on);
+    } else if (key == "values") { // rule: DRIVER.VALUES
+      if (on = flag(value, key); std::holds_alternative<bool>(on))
+        caps.values = std::get<bool>(on);
     } else if (key == "max_target_side" || key == "subpixel_bits") {
       const std::int64_t hi = key == "max_target_side" ? std::int64_t{1} << 30 : 24;
       const std::int64_t n = value.is_number_integer() ? value.get<std::int64_t>() : -1;
@@ -180,6 +183,7 @@ void apply_capabilities(const Capabilities& c, DriverInfo& info) {
   }
   info.sample_mask = info.sample_mask && c.sample_mask;
   info.sample_shading = info.sample_shading && c.sample_shading;
+  info.values = info.values && c.values && c.pipeline; // rule: DRIVER.VALUES
   info.max_target_side = std::min(info.max_target_side, c.max_target_side);
 }
 

@@ -300,7 +300,7 @@ public:
                  std::string declared_note)
       : argv_(external_argv(command)), options_(options),
         info_(detail::full_capabilities("external", command, -1)), caps_(declared) {
-    info_.values = true; // whatever it writes of DRIVER.VALUES is read
+    info_.values = true; // whatever it writes of DRIVER.VALUES is read, unless it declares none
     info_.capabilities = std::move(declared_note);
     if (caps_)
       apply_capabilities(*caps_, info_);

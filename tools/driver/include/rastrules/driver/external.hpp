@@ -92,6 +92,7 @@ struct Capabilities {
   bool sample_mask = true;           // a sample mask that clears a sample
   bool sample_shading = true;        // sample-frequency shading
   bool pipeline = true;              // scenes with pipeline state (SCENE.PIPELINE)
+  bool values = true;                // writes depth and attribute values (DRIVER.VALUES)
   std::int32_t max_target_side = std::numeric_limits<std::int32_t>::max();
   int subpixel_bits = -1; // as declared (-1: not said); reported, not used to decide
 };
