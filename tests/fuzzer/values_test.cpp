@@ -251,6 +251,11 @@ TEST(ValueComparison, DistancesAreMeasuredFromTheExactlyRoundedValueInEachMode) 
   const GroupKey k = classify(s, c);
   EXPECT_EQ(k.rule, exact->diffs.front().rule);
   EXPECT_NE(k.klass.find("triangle "), std::string::npos) << k.klass;
+  // rule: FUZZ.GROUP
+  // A coverage difference of a pipeline scene is the pipeline's (no window-space decision).
+  Comparison coverage;
+  coverage.missing = {DiffEntry{0, 3, 3, 1}};
+  EXPECT_EQ(classify(s, coverage), (GroupKey{"SCENE.PIPELINE", "triangle missing"}));
 }
 
 // rule: FUZZ.VALUES.REPORT

@@ -59,6 +59,10 @@ std::string triangle_rule(const std::vector<TriangleDecision>& triangles) {
 }
 
 std::string pixel_rule(const Scene& scene, const Comparison& c, const DiffEntry& d) {
+  // A pipeline scene's primitives are clipped and transformed before the rules decide: the
+  // decision record (of window-space scenes) does not apply, and the group names the pipeline.
+  if (has_pipeline_state(scene))
+    return "SCENE.PIPELINE";
   auto prepared = prepare(scene);
   if (std::holds_alternative<SceneError>(prepared))
     return "SCENE.INPUT.ERRORS";
