@@ -3,15 +3,15 @@
 // rungs alternating within every repeat, medians; errors against the exact areas; and the
 // comparisons with FreeType's gray and monochrome rasterizers on the same outlines.
 //
-//   rastrules_path_ladder [--quick] [--repeats N] [--json FILE] [--plot FILE.png]
-//                         [--dejavu FONT] [--cubic FONT]
+//   rastrules_path_ladder [--quick] [--samples-only] [--repeats N] [--json FILE]
+//                         [--plot FILE.png] [--dejavu FONT] [--cubic FONT]
 //   rastrules_path_ladder --picture FILE.png
 //
 // Prints the tables (Markdown) on standard output; --json writes the same figures, --plot the
-// time against error of every rung. --picture writes the conflation cases, exact beside
-// FreeType's gray raster, and runs nothing else.
-// Implements: BENCH.PATH.RUNGS, BENCH.PATH.SCENES, BENCH.PATH.METRICS, BENCH.PATH.FREETYPE,
-// BENCH.PATH.PICTURES
+// time against error of every rung. --samples-only runs the sample-coverage comparison alone
+// (no area rungs), with the cubic font at every size too. --picture writes the conflation cases,
+// exact beside FreeType's gray raster, and runs nothing else. Implements: BENCH.PATH.RUNGS,
+// BENCH.PATH.SCENES, BENCH.PATH.METRICS, BENCH.PATH.FREETYPE, BENCH.PATH.PICTURES
 
 #include <algorithm>
 #include <chrono>
@@ -272,14 +272,9 @@ bool outline_meets_pixel(const kp::Path& lines, std::int32_t x, std::int32_t y) 
   return meets;
 }
 
-// rule: BENCH.PATH.METRICS, BENCH.PATH.FREETYPE
-SceneResult run_scene(Scene& sc, int repeats, int min_slow_repeats) {
-  SceneResult res;
-  res.name = sc.s.name;
-  res.note = sc.s.note;
-  res.items = sc.s.items.size();
-  res.pixels = sc.s.pixels();
-  res.segments = sc.s.segments();
+// The area rungs of one scene: times, errors, conflation pixels, into res.
+// rule: BENCH.PATH.METRICS
+void run_area(Scene& sc, int repeats, int min_slow_repeats, SceneResult& res) {
   const std::vector<AreaRung> rungs = area_rungs();
 
   // Exact areas and the conflation pixels (double accumulation off the exact area).
@@ -368,6 +363,18 @@ SceneResult run_scene(Scene& sc, int repeats, int min_slow_repeats) {
     row.err = e;
     res.rows.push_back(row);
   }
+}
+
+// rule: BENCH.PATH.METRICS, BENCH.PATH.FREETYPE
+SceneResult run_scene(Scene& sc, int repeats, int min_slow_repeats, bool samples_only) {
+  SceneResult res;
+  res.name = sc.s.name;
+  res.note = sc.s.note;
+  res.items = sc.s.items.size();
+  res.pixels = sc.s.pixels();
+  res.segments = sc.s.segments();
+  if (!samples_only)
+    run_area(sc, repeats, min_slow_repeats, res);
 
   // Sample coverage: the kernel (1 sample at the centre, curves exact) against FreeType's mono
   // raster on the same (curved) outline, alternating.
@@ -435,13 +442,18 @@ std::string seconds_text(double s) {
 std::string markdown(const std::vector<SceneResult>& results, const std::string& header) {
   std::ostringstream o;
   o << header << "\n";
-  o << "## Area coverage: error against the exact area, and time\n\n";
+  const bool areas = std::any_of(results.begin(), results.end(),
+                                 [](const SceneResult& r) { return !r.rows.empty(); });
+  if (areas)
+    o << "## Area coverage: error against the exact area, and time\n\n";
   o << "Every area rung fills the lines-only flattening of the scene (curves flattened to chords "
        "within 1/64 px, points on the 26.6 grid): exact curve areas are not built. Error: |rung - "
        "exact| per pixel over the pixels either covers; visible: > 1/255; conflation pixels: "
        "where signed-area accumulation in float64 is off the exact area by more than 2^-20 px^2 "
        "(several windings meet in the pixel). Time: median per scene, rungs alternating.\n\n";
   for (const SceneResult& r : results) {
+    if (r.rows.empty())
+      continue;
     o << "### " << r.name << " (" << r.note << "; " << r.segments << " line segments, " << r.pixels
       << " pixels, " << r.touched << " covered, " << r.conflation << " conflation pixels)\n\n";
     o << "| rung | time | x exact's time | mean error | max error | visible errors | on "
@@ -483,6 +495,8 @@ std::string markdown(const std::vector<SceneResult>& results, const std::string&
       << s.freetype_only_dropout << " | " << s.freetype_only_other << " | " << s.kernel_only_far
       << " |\n";
   }
+  if (!areas)
+    return o.str();
   o << "\n## Exact area against FreeType's gray raster (time ratio, same lines-only outlines)\n\n";
   o << "| scene | exact | freetype-gray | exact / gray |\n|---|---|---|---|\n";
   for (const SceneResult& r : results) {
@@ -527,7 +541,7 @@ int write_png_file(const std::string& file, const rastrules::io::Image& im) {
 
 int main(int argc, char** argv) {
   using namespace rastrules::bench::path_ladder;
-  bool quick = false;
+  bool quick = false, samples_only = false;
   int repeats = 0;
   std::string json_path, plot_path, picture_path;
   std::string dejavu = RASTRULES_FONT_DEJAVU, cubic = RASTRULES_FONT_CUBIC;
@@ -542,6 +556,8 @@ int main(int argc, char** argv) {
     };
     if (a == "--quick")
       quick = true;
+    else if (a == "--samples-only")
+      samples_only = true;
     else if (a == "--repeats")
       repeats = std::atoi(value().c_str());
     else if (a == "--json")
@@ -574,12 +590,14 @@ int main(int argc, char** argv) {
     const std::vector<int> sizes = quick ? std::vector<int>{12} : std::vector<int>{12, 24, 48, 64};
     for (const int size : sizes)
       scenes.push_back(glyph_scene(dejavu, "dejavu", quick ? U"a" : text, size));
-    scenes.push_back(glyph_scene(cubic, "nimbus-cubic", quick ? U"S" : text, quick ? 12 : 24));
+    // The cubics at one size, or (samples only, where they cost little) at every size.
+    for (const int size : samples_only ? sizes : std::vector<int>{quick ? 12 : 24})
+      scenes.push_back(glyph_scene(cubic, "nimbus-cubic", quick ? U"S" : text, size));
     scenes.push_back(polygon_scene(1, quick ? 16 : 64));
     std::vector<SceneResult> results;
     for (Scene& sc : scenes) {
       std::cerr << "scene " << sc.s.name << "\n";
-      results.push_back(run_scene(sc, repeats, quick ? 1 : 3));
+      results.push_back(run_scene(sc, repeats, quick ? 1 : 3, samples_only));
     }
     std::ostringstream header;
     header << "# Path ladder: what accuracy costs for 2D paths\n\nFreeType "
