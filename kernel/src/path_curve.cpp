@@ -484,11 +484,73 @@ Wide wide_floor_div(Wide n, Wide d) { // d > 0
   return (n % d != 0 && n < 0) ? q - 1 : q;
 }
 
+// The threshold of a crossing at x_c = num / den (den > 0): the largest sample x it counts for,
+// floor(x_c), less one when x_c is an integer and hx = +1 (PATH.SAMPLE.TIE).
+std::int64_t threshold_of(Wide num, Wide den, Tie t) {
+  const Wide f = wide_floor_div(num, den);
+  return static_cast<std::int64_t>(f * den == num && t.x_right ? f - 1 : f);
+}
+
+// The floating-point filter of PATH.CURVE.FILTER: Horner's rule in double on integer power
+// coefficients |c_j| < 2^27 at t in [0, 1] (t a double) is within gamma_6 sum |c_j| t^j of the
+// exact value (Higham, Accuracy and Stability of Numerical Algorithms, 2nd ed., eq. 5.3, for
+// degree n <= 3: gamma_2n = 2n u / (1 - 2n u), u = 2^-53, with or without fused multiply-adds;
+// no underflow: every nonzero product is at least 2^-30), and gamma_6 < 2^-50. Returns
+// 2^-50 sum |c_j| (exact: the sum is an integer below 2^29).
+double horner_error_bound(const Cubic& p) {
+  std::int64_t s = 0;
+  for (const std::int64_t c : p.c)
+    s += c < 0 ? -c : c;
+  return static_cast<double>(s) * 0x1p-50;
+}
+
+// Returns floor(v) for |v| < 2^62 (no call into the C library: the conversion truncates).
+std::int64_t floor_to_int(double v) {
+  const auto i = static_cast<std::int64_t>(v);
+  return static_cast<double>(i) > v ? i - 1 : i;
+}
+
+// Returns k / 2^30 as a double, exactly (k < 2^53).
+static_assert(kFastBits == 30, "grid_point scales by 2^-30");
+double grid_point(std::int64_t k) {
+  return static_cast<double>(k) * 0x1p-30;
+}
+
+// Returns the sign of P(k / 2^30), exactly: from the double value when it lies farther from 0
+// than `bound` (horner_error_bound(p)), else from P(k / 2^30) 2^90 in __int128.
+// rule: PATH.CURVE.FILTER
+int sign_at_grid(const Cubic& p, std::int64_t k, double bound) {
+  const double v = p.approx(grid_point(k));
+  if (v > bound)
+    return 1;
+  if (v < -bound)
+    return -1;
+  return wide_sign(p.scaled(k));
+}
+
 // The crossing of a root confined to [k, k + 1] / 2^30 (g changes sign there exactly, from
 // -dir to dir): false unless the Bernstein coefficients of x on that interval lie strictly
 // between two consecutive integers F and F + 1 (then F < x_c < F + 1: the crossing counts for a
 // sample x <= F under either hx).
 bool crossing_on(const Cubic& x, std::int64_t k, int dir, Crossing& out) {
+  // The double filter (PATH.CURVE.FILTER): x_c lies within L 2^-30 of x(k / 2^30) (the
+  // Lipschitz bound below), which lies within E = 2^-50 sum |e_j| of the double value v. With
+  // F = floor(v), the computed v - F is within 2^-53 of the exact difference d (rounded to
+  // nearest, |d| < 1), so a computed value above m = 2^-40 + 2 max(L 2^-30, E) makes
+  // d > L 2^-30 + E, and one below 1 - m makes d < 1 - (L 2^-30 + E): then F < x_c < F + 1.
+  // m and 1 - m are exact (their bits lie within 2^-49 .. 2^1).
+  {
+    const std::int64_t lip = (x.c[1] < 0 ? -x.c[1] : x.c[1]) + 2 * (x.c[2] < 0 ? -x.c[2] : x.c[2]) +
+                             3 * (x.c[3] < 0 ? -x.c[3] : x.c[3]);
+    const double v = x.approx(grid_point(k));
+    const std::int64_t f = floor_to_int(v);
+    const double m = 0x1p-40 + 2.0 * std::max(grid_point(lip), horner_error_bound(x));
+    const double frac = v - static_cast<double>(f); // |f| < 2^27: exact as a double
+    if (frac > m && frac < 1.0 - m) {
+      out = Crossing{f, dir};
+      return true;
+    }
+  }
   // First a Lipschitz bound: |x'| <= L = |e1| + 2 |e2| + 3 |e3| on [0, 1], so x_c lies within
   // L 2^-30 of x(k / 2^30), which scaled() gives exactly (times 2^90); B = L 2^60 < 2^90.
   {
@@ -584,35 +646,58 @@ int root_estimates(const Cubic& g, std::array<double, 3>& t) {
   return n;
 }
 
-// Finds the v crossings from root_estimates(): each estimate must be confined by an exact sign
-// change to an interval [k, k + 1] / 2^30 (k from the estimate, or a neighbour), the intervals
-// distinct, and their number v: then they hold exactly the v roots of g in (0, 1), one each
-// (Descartes: v bounds the roots and has their parity; each interval holds an odd number).
-bool estimated_crossings(const Cubic& g, const Cubic& x, int v, std::vector<Crossing>& found,
+// Finds the v crossings from root_estimates(): each estimate must be confined by exact signs
+// of g to a region of the 2^30 grid, (k, k + 1) / 2^30 where g changes sign, or (k - 1, k + 1)
+// / 2^30 where g(k / 2^30) = 0 and g changes sign from k - 1 to k + 1 (a dyadic root, t = 1/2
+// on many glyph rows); the regions pairwise disjoint, and their number v: then they hold
+// exactly the v roots of g in (0, 1), one simple root each (Descartes: v bounds the roots
+// counted with multiplicity and has their parity; each region holds an odd number), and a
+// dyadic root is the region's root, where x is exact. The direction is the sign of g after the
+// root (times dir_sign). Signs come through the double filter (sign_at_grid).
+// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
+bool estimated_crossings(const Cubic& g, const Cubic& x, int v, Tie t, std::vector<Crossing>& found,
                          int dir_sign = 1) {
   constexpr std::int64_t kOne = std::int64_t{1} << kFastBits;
   std::array<double, 3> est{};
   if (root_estimates(g, est) != v)
     return false;
-  std::array<std::int64_t, 3> ks{};
+  const double bound = horner_error_bound(g);
+  std::array<std::pair<std::int64_t, std::int64_t>, 3> regions{};
   for (int r = 0; r < v; ++r) {
     const std::int64_t k0 =
-        std::clamp(static_cast<std::int64_t>(std::floor(est[static_cast<std::size_t>(r)] * kOne)),
+        std::clamp(floor_to_int(est[static_cast<std::size_t>(r)] * static_cast<double>(kOne)),
                    std::int64_t{0}, kOne - 1);
     bool confined = false;
     for (const std::int64_t k : {k0, k0 - 1, k0 + 1}) {
       if (k < 0 || k >= kOne)
         continue;
-      const int s0 = wide_sign(g.scaled(k)), s1 = wide_sign(g.scaled(k + 1));
-      if (s0 == 0 || s1 == 0 || s0 == s1)
-        continue;
-      for (int q = 0; q < r; ++q)
-        if (ks[static_cast<std::size_t>(q)] == k)
+      const int s0 = sign_at_grid(g, k, bound), s1 = sign_at_grid(g, k + 1, bound);
+      std::int64_t a = k, b = k + 1, root = -1; // the region (a, b); root: a dyadic root in it
+      if (s0 == 0 || s1 == 0) {
+        root = s0 == 0 ? k : k + 1;
+        a = root - 1;
+        b = root + 1;
+        if (a < 0 || b > kOne)
           return false;
+        if (sign_at_grid(g, a, bound) * sign_at_grid(g, b, bound) >= 0)
+          return false; // no sign change around the root: a multiple root, or none counted
+      } else if (s0 == s1) {
+        continue;
+      }
+      for (int q = 0; q < r; ++q) {
+        const auto [qa, qb] = regions[static_cast<std::size_t>(q)];
+        if (a < qb && qa < b)
+          return false; // regions must be disjoint
+      }
+      const int dir = dir_sign * sign_at_grid(g, b, bound);
       Crossing c;
-      if (!crossing_on(x, k, dir_sign * s1, c))
+      if (root >= 0) {
+        // x at t = root / 2^30 exactly: P(k / 2^30) 2^90, then floor and integrality.
+        c = Crossing{threshold_of(x.scaled(root), Wide{1} << (3 * kFastBits), t), dir};
+      } else if (!crossing_on(x, k, dir, c)) {
         return false;
-      ks[static_cast<std::size_t>(r)] = k;
+      }
+      regions[static_cast<std::size_t>(r)] = {a, b};
       found.push_back(c);
       confined = true;
       break;
@@ -631,13 +716,6 @@ bool estimated_crossings(const Cubic& g, const Cubic& x, int v, std::vector<Cros
 //
 // Budget (proved by proofs/path/curve_budget.cpp): a quadratic's |c_j|, |e_j| <= 2^25;
 // |D| <= 2^52; 0 <= p <= q <= 2^26; |numerator of x| <= 2^79: all in __int128.
-// The threshold of a crossing at x_c = num / den (den > 0): the largest sample x it counts for,
-// floor(x_c), less one when x_c is an integer and hx = +1 (PATH.SAMPLE.TIE).
-std::int64_t threshold_of(Wide num, Wide den, Tie t) {
-  const Wide f = wide_floor_div(num, den);
-  return static_cast<std::int64_t>(f * den == num && t.x_right ? f - 1 : f);
-}
-
 // The sign variations of 3 times the Bernstein coefficients of g on [0, 1] (Descartes' bound on
 // its roots in (0, 1), with their parity).
 int bernstein_variations(const Cubic& g) {
@@ -810,10 +888,10 @@ bool cubic_end_crossings(const Cubic& g, const Cubic& x, Tie t, std::vector<Cros
   const Cubic hc{{static_cast<std::int64_t>(h[0]), static_cast<std::int64_t>(h[1]),
                   static_cast<std::int64_t>(h[2]), 0}};
   const int v = bernstein_variations(hc);
-  return v == 0 || estimated_crossings(hc, x, v, out, flips);
+  return v == 0 || estimated_crossings(hc, x, v, t, out, flips);
 }
 
-bool fast_curve_crossings(const Cubic& g, const Cubic& x, std::vector<Crossing>& out) {
+bool fast_curve_crossings(const Cubic& g, const Cubic& x, Tie t, std::vector<Crossing>& out) {
   constexpr std::int64_t kOne = std::int64_t{1} << kFastBits;
   if (g.c[0] == 0 || formula::curve_at_one(g.c) == 0)
     return false; // a root at an end: the half-open rule needs derivatives
@@ -824,7 +902,7 @@ bool fast_curve_crossings(const Cubic& g, const Cubic& x, std::vector<Crossing>&
   // First the estimates of root_estimates(), then (when a check fails) a scan of 64 intervals;
   // `out` is empty here and left to the caller to clear when false is returned.
   std::vector<Crossing>& found = out;
-  if (estimated_crossings(g, x, v, found))
+  if (estimated_crossings(g, x, v, t, found))
     return true;
   found.clear();
   constexpr int kSteps = 64;
@@ -895,13 +973,21 @@ void curve_crossings_into(const Curve& c, std::int64_t sy, Tie t, bool fast,
     gi.c = formula::curve_power_coefficients(ys, n == 3);
     gi.c[0] -= sy;
     xi.c = formula::curve_power_coefficients(xs, n == 3);
+    // No root at an end: the estimates first (most rows of a glyph's curves), whose regions
+    // also take the dyadic roots.
+    if (fast && gi.c[0] != 0 && formula::curve_at_one(gi.c) != 0) {
+      const int v = bernstein_variations(gi);
+      if (v == 0 || estimated_crossings(gi, xi, v, t, out))
+        return;
+      out.clear();
+    }
     if (fast && n == 2 && rational_quadratic_crossings(gi, xi, t, out))
       return;
     out.clear();
     if (fast && n == 3 && cubic_end_crossings(gi, xi, t, out))
       return;
     out.clear();
-    if (fast && fast_curve_crossings(gi, xi, out))
+    if (fast && fast_curve_crossings(gi, xi, t, out))
       return;
     out.clear();
   }

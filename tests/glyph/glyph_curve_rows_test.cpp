@@ -5,7 +5,7 @@
 // signs and both horizontal ones. Glyph outlines meet sample rows at dyadic roots (t = 1/2,
 // 1/4), at rational roots whose x is an integer (t = 1/3 with x = 1204) and at curve ends, which
 // the fast path once left to the rational path (100 to 180 us a row).
-// Tests: PATH.CURVE.SAMPLE
+// Tests: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
 
 #include <algorithm>
 #include <cstdint>
@@ -38,8 +38,8 @@ bool same(const std::vector<kd::Crossing>& a, const std::vector<kd::Crossing>& b
   return x == y;
 }
 
-// The rows named in the comment: quadratics of DejaVu Sans glyphs at 24 px.
-// rule: PATH.CURVE.SAMPLE
+// The rows named in the comment: quadratics of DejaVu Sans glyphs at 24 px, and a cubic.
+// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
 TEST(GlyphCurveRows, RationalRootsAndIntegerCrossingsMatchTheRationalPath) {
   const std::vector<std::pair<kd::Curve, std::int64_t>> rows = {
       {kd::Curve{2, {{{824, 596}, {688, 632}, {564, 700}, {564, 700}}}}, 640},          // t = 1/2
@@ -49,6 +49,9 @@ TEST(GlyphCurveRows, RationalRootsAndIntegerCrossingsMatchTheRationalPath) {
       {kd::Curve{2, {{{1400, 6112}, {1156, 6400}, {612, 6400}, {612, 6400}}}}, 6272},   // x = 1204
       {kd::Curve{2, {{{1400, 6112}, {1156, 6400}, {612, 6400}, {612, 6400}}}}, 6112},   // an end
       {kd::Curve{2, {{{1400, 6112}, {1156, 6400}, {612, 6400}, {612, 6400}}}}, 6400}, // tangent end
+      // A cubic of Nimbus Sans' S at 12 px: a dyadic root (t = 1/2, x = 1742.5), which the
+      // estimates confine around the grid point; once 300 us on the rational path.
+      {kd::Curve{3, {{{2028, 676}, {1904, 420}, {1644, 284}, {1268, 284}}}}, 384},
   };
   for (const auto& [curve, sy] : rows)
     for (const bool x_right : {true, false})
@@ -62,7 +65,7 @@ TEST(GlyphCurveRows, RationalRootsAndIntegerCrossingsMatchTheRationalPath) {
 
 // Every fourth sample row of every curve of three glyphs (quadratics and cubics), and every row
 // through a curve's first or last point (an end row).
-// rule: PATH.CURVE.SAMPLE
+// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
 TEST(GlyphCurveRows, FastCrossingsEqualRationalOnGlyphRows) {
   int rows = 0, end_rows = 0, cubic_end_rows = 0;
   for (const auto& [font, size] : {std::pair{std::string(RASTRULES_FONT_DEJAVU), 24},

@@ -29,7 +29,7 @@ std::vector<std::pair<std::int64_t, int>> sorted(const std::vector<Crossing>& v)
   return out;
 }
 
-// rule: PATH.CURVE.SAMPLE
+// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
 TEST(PathCurvePaths, FastPathEqualsRationalPath) {
   std::mt19937 rng(20);
   int rows = 0, crossings = 0;
