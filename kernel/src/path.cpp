@@ -4,6 +4,7 @@
 #include "rastrules/path.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -48,9 +49,11 @@ struct DownEdge {
   int dir = 0;
 };
 
-// Returns the non-horizontal line edges of the path, oriented top end first, sorted by ya.
-std::vector<DownEdge> down_edges(const detail::Boundary& b) {
-  std::vector<DownEdge> v;
+// Fills v with the non-horizontal line edges of the path, oriented top end first, sorted by ya
+// (then by the other ends and the direction: the order of equal keys changes no answer, and a
+// full key makes it independent of the sort).
+void down_edges_into(const detail::Boundary& b, std::vector<DownEdge>& v) {
+  v.clear();
   v.reserve(b.lines.size());
   for (const Edge& e : b.lines) {
     if (e.y0 == e.y1)
@@ -60,8 +63,15 @@ std::vector<DownEdge> down_edges(const detail::Boundary& b) {
     else
       v.push_back(DownEdge{e.x1, e.y1, e.x0, e.y0, -1});
   }
-  std::stable_sort(v.begin(), v.end(),
-                   [](const DownEdge& p, const DownEdge& q) { return p.ya < q.ya; });
+  std::sort(v.begin(), v.end(), [](const DownEdge& p, const DownEdge& q) {
+    return std::tie(p.ya, p.xa, p.yb, p.xb, p.dir) < std::tie(q.ya, q.xa, q.yb, q.xb, q.dir);
+  });
+}
+
+// Returns the non-horizontal line edges of the path, oriented top end first, sorted by ya.
+std::vector<DownEdge> down_edges(const detail::Boundary& b) {
+  std::vector<DownEdge> v;
+  down_edges_into(b, v);
   return v;
 }
 
@@ -72,10 +82,14 @@ std::int64_t line_threshold(const DownEdge& e, std::int64_t sy, Tie t) {
   return t.x_right ? ceil_div(n, d) - 1 : floor_div(n, d);
 }
 
-// Edges that may span a sample row, kept while the rows go down the target.
+// Edges that may span a sample row, kept while the rows go down the target (in active, which
+// the caller owns and may reuse).
 class ActiveEdges {
 public:
-  explicit ActiveEdges(const std::vector<DownEdge>& sorted) : edges_(sorted) {}
+  ActiveEdges(const std::vector<DownEdge>& sorted, std::vector<const DownEdge*>& active)
+      : edges_(sorted), active_(active) {
+    active_.clear();
+  }
   // Makes the active list hold every edge with ya <= y_hi that does not end above y_lo.
   // Calls must come with non-decreasing y_lo and y_hi.
   const std::vector<const DownEdge*>& advance(std::int64_t y_lo, std::int64_t y_hi) {
@@ -87,15 +101,26 @@ public:
 
 private:
   const std::vector<DownEdge>& edges_;
+  std::vector<const DownEdge*>& active_;
   std::size_t next_ = 0;
-  std::vector<const DownEdge*> active_;
 };
 
-// Curves whose control points' y-range holds a sample row (a curve lies in the convex hull of
-// its control points, so no other curve crosses the row), kept while the rows go down.
+// A curve and the y-range of its control points (the curve lies in their convex hull, so no
+// row outside the range crosses it).
+struct CurveRange {
+  std::int64_t lo = 0, hi = 0;
+  const detail::Curve* curve = nullptr;
+};
+
+// Curves whose control points' y-range holds a sample row, kept while the rows go down (in
+// ranges and live, which the caller owns and may reuse).
 class ActiveCurves {
 public:
-  explicit ActiveCurves(const std::vector<detail::Curve>& curves) {
+  ActiveCurves(const std::vector<detail::Curve>& curves, std::vector<CurveRange>& ranges,
+               std::vector<const CurveRange*>& live)
+      : ranges_(ranges), live_(live) {
+    ranges_.clear();
+    live_.clear();
     ranges_.reserve(curves.size());
     for (const detail::Curve& c : curves) {
       std::int64_t lo = c.p[0].y, hi = c.p[0].y;
@@ -103,31 +128,25 @@ public:
         lo = std::min<std::int64_t>(lo, c.p[static_cast<std::size_t>(k)].y);
         hi = std::max<std::int64_t>(hi, c.p[static_cast<std::size_t>(k)].y);
       }
-      ranges_.push_back(Range{lo, hi, &c});
+      ranges_.push_back(CurveRange{lo, hi, &c});
     }
-    std::stable_sort(ranges_.begin(), ranges_.end(),
-                     [](const Range& p, const Range& q) { return p.lo < q.lo; });
+    // By lo, then by position in the boundary (the order of the crossings changes no answer).
+    std::sort(ranges_.begin(), ranges_.end(), [](const CurveRange& p, const CurveRange& q) {
+      return p.lo != q.lo ? p.lo < q.lo : p.curve < q.curve;
+    });
   }
   // The curves with lo <= y <= hi. Calls must come with non-decreasing y.
-  const std::vector<const detail::Curve*>& advance(std::int64_t y) {
+  const std::vector<const CurveRange*>& advance(std::int64_t y) {
     while (next_ < ranges_.size() && ranges_[next_].lo <= y)
       live_.push_back(&ranges_[next_++]);
-    std::erase_if(live_, [&](const Range* r) { return r->hi < y; });
-    active_.clear();
-    for (const Range* r : live_)
-      active_.push_back(r->curve);
-    return active_;
+    std::erase_if(live_, [&](const CurveRange* r) { return r->hi < y; });
+    return live_;
   }
 
 private:
-  struct Range {
-    std::int64_t lo = 0, hi = 0;
-    const detail::Curve* curve = nullptr;
-  };
-  std::vector<Range> ranges_;
+  std::vector<CurveRange>& ranges_;
+  std::vector<const CurveRange*>& live_;
   std::size_t next_ = 0;
-  std::vector<const Range*> live_;
-  std::vector<const detail::Curve*> active_;
 };
 
 } // namespace
@@ -151,6 +170,14 @@ Tie tie_of(FillConvention f) {
 // rule: PATH.CONTOUR.CLOSE, PATH.GEOMETRY, PATH.DEGENERATE
 Boundary boundary_of(const Path& path) {
   Boundary b;
+  boundary_into(path, b);
+  return b;
+}
+
+// rule: PATH.CONTOUR.CLOSE, PATH.GEOMETRY, PATH.DEGENERATE
+void boundary_into(const Path& path, Boundary& b) {
+  b.lines.clear();
+  b.curves.clear();
   for (std::size_t ci = 0; ci < path.contours.size(); ++ci) {
     const Contour& c = path.contours[ci];
     Point cur = c.start;
@@ -175,7 +202,6 @@ Boundary boundary_of(const Path& path) {
     if (!(cur == c.start))
       b.lines.push_back(Edge{cur.x, cur.y, c.start.x, c.start.y, ci, c.segments.size()});
   }
-  return b;
 }
 
 } // namespace detail
@@ -216,47 +242,78 @@ bool covers_sample(const Path& path, Point s, FillConvention fill) {
 
 namespace {
 
+// The memory of a row walk: kept between calls on one thread, so that a glyph-sized call
+// allocates nothing once the vectors have grown. A walk started from inside emit (the busy
+// one is in use) takes a fresh one.
+struct SampleWork {
+  detail::Boundary boundary;
+  std::vector<DownEdge> edges;
+  std::vector<const DownEdge*> active_edges;
+  std::vector<CurveRange> curve_ranges;
+  std::vector<const CurveRange*> live_curves;
+  std::vector<Crossing> crossings, curve_out;
+  std::vector<std::uint32_t> masks;
+  bool busy = false;
+};
+
 // The row walk of cover_samples, emit called for each pixel with a sample covered, row by row:
 // a template, so that the vector form appends without a call through std::function a pixel.
 // rule: PATH.COVER.SAMPLE
 template <class Emit>
-void walk_samples(const Path& path, const SamplePattern& pattern, FillConvention fill,
-                  std::int32_t w, std::int32_t h, Emit&& emit) {
-  if (w <= 0 || h <= 0 || pattern.positions.empty())
-    return;
+void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& pattern,
+                       FillConvention fill, std::int32_t w, std::int32_t h, Emit&& emit) {
   const Tie t = detail::tie_of(fill);
-  const detail::Boundary b = detail::boundary_of(path);
-  const std::vector<DownEdge> edges = down_edges(b);
-  ActiveEdges active(edges);
-  ActiveCurves curves(b.curves);
+  detail::boundary_into(path, work.boundary);
+  down_edges_into(work.boundary, work.edges);
+  ActiveEdges active(work.edges, work.active_edges);
+  ActiveCurves curves(work.boundary.curves, work.curve_ranges, work.live_curves);
 
-  // The pattern's samples grouped by their row offset, top row first.
+  // The pattern's samples grouped by their row offset, top row first (a mask has 32 bits; a
+  // pattern at most kMaxSamples = 16 samples).
   struct Sample {
     std::uint32_t bit = 0;
     std::int64_t x_offset = 0; // raw x of the sample in pixel column 0
   };
-  std::vector<std::pair<std::int32_t, std::vector<Sample>>> rows;
-  for (std::size_t k = 0; k < pattern.positions.size(); ++k) {
-    const SampleOffset o = pattern.positions[k];
-    auto it = std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r.first == o.y; });
-    if (it == rows.end()) {
-      rows.emplace_back(o.y, std::vector<Sample>{});
-      it = rows.end() - 1;
+  struct SampleRow {
+    std::int32_t oy = 0;
+    std::size_t first = 0, count = 0; // into samples
+  };
+  std::array<Sample, 32> samples{};
+  std::array<SampleRow, 32> rows{};
+  std::size_t n_rows = 0, n_samples = 0;
+  {
+    std::array<std::size_t, 32> order{};
+    const std::size_t n = std::min<std::size_t>(pattern.positions.size(), order.size());
+    for (std::size_t k = 0; k < n; ++k)
+      order[k] = k;
+    // By row offset, then by sample index: the rows' samples in the order of the pattern.
+    std::stable_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(n),
+                     [&](std::size_t p, std::size_t q) {
+                       return pattern.positions[p].y < pattern.positions[q].y;
+                     });
+    for (std::size_t i = 0; i < n; ++i) {
+      const SampleOffset o = pattern.positions[order[i]];
+      if (n_rows == 0 || rows[n_rows - 1].oy != o.y)
+        rows[n_rows++] = SampleRow{o.y, n_samples, 0};
+      samples[n_samples++] =
+          Sample{std::uint32_t{1} << order[i],
+                 std::int64_t{kSubpixelHalf} + std::int64_t{o.x} * kSampleGridUnit};
+      ++rows[n_rows - 1].count;
     }
-    it->second.push_back(Sample{std::uint32_t{1} << k,
-                                std::int64_t{kSubpixelHalf} + std::int64_t{o.x} * kSampleGridUnit});
   }
-  std::sort(rows.begin(), rows.end(),
-            [](const auto& p, const auto& q) { return p.first < q.first; });
+  // One sample a pixel: each row's covered pixels are emitted straight from its intervals,
+  // which come left to right and hold disjoint pixels (one sample each).
+  const bool single = n_samples == 1;
 
-  std::vector<std::uint32_t> masks(static_cast<std::size_t>(w), 0);
-  std::vector<Crossing> crossings, curve_out;
-  std::vector<std::int64_t> suffix;
+  std::vector<std::uint32_t>& masks = work.masks;
+  if (!single)
+    masks.assign(static_cast<std::size_t>(w), 0);
+  std::vector<Crossing>& crossings = work.crossings;
   for (std::int32_t j = 0; j < h; ++j) {
     std::int64_t touched_lo = w, touched_hi = -1;
-    for (const auto& [oy, samples] : rows) {
-      const std::int64_t sy =
-          std::int64_t{j} * kSubpixelOne + kSubpixelHalf + std::int64_t{oy} * kSampleGridUnit;
+    for (std::size_t r = 0; r < n_rows; ++r) {
+      const std::int64_t sy = std::int64_t{j} * kSubpixelOne + kSubpixelHalf +
+                              std::int64_t{rows[r].oy} * kSampleGridUnit;
       crossings.clear();
       for (const DownEdge* e : active.advance(sy, sy)) {
         const bool spans = t.y_down ? formula::path_edge_spans<true>(e->ya, e->yb, sy)
@@ -264,21 +321,26 @@ void walk_samples(const Path& path, const SamplePattern& pattern, FillConvention
         if (spans)
           crossings.push_back(Crossing{line_threshold(*e, sy, t), e->dir});
       }
-      for (const detail::Curve* c : curves.advance(sy)) {
-        detail::curve_crossings_into(*c, sy, t, true, curve_out);
-        crossings.insert(crossings.end(), curve_out.begin(), curve_out.end());
+      for (const CurveRange* c : curves.advance(sy)) {
+        detail::curve_crossings_into(*c->curve, sy, t, true, work.curve_out);
+        crossings.insert(crossings.end(), work.curve_out.begin(), work.curve_out.end());
       }
       if (crossings.empty())
         continue;
       std::sort(crossings.begin(), crossings.end(),
                 [](const Crossing& p, const Crossing& q) { return p.threshold < q.threshold; });
-      // Winding on each interval of sample x: (T[m-1], T[m]] has the sum of dir over l >= m.
-      suffix.assign(crossings.size() + 1, 0);
-      for (std::size_t m = crossings.size(); m-- > 0;)
-        suffix[m] = suffix[m + 1] + crossings[m].dir;
-      for (const Sample& smp : samples) {
+      // Winding on each interval of sample x: (T[m-1], T[m]] has the sum of dir over l >= m,
+      // the total less the sum over l < m.
+      std::int64_t total = 0;
+      for (const Crossing& c : crossings)
+        total += c.dir;
+      for (std::size_t k = rows[r].first; k < rows[r].first + rows[r].count; ++k) {
+        const Sample& smp = samples[k];
+        std::int64_t winding = total;
         for (std::size_t m = 0; m <= crossings.size(); ++m) {
-          if (!fill_holds(path.fill_rule, suffix[m]))
+          if (m > 0)
+            winding -= crossings[m - 1].dir;
+          if (!fill_holds(path.fill_rule, winding))
             continue;
           // Pixels i with A < 256 i + x_offset <= B.
           std::int64_t i_lo = 0, i_hi = std::int64_t{w} - 1;
@@ -289,6 +351,11 @@ void walk_samples(const Path& path, const SamplePattern& pattern, FillConvention
             i_hi = std::min(i_hi, floor_div(crossings[m].threshold - smp.x_offset, kSubpixelOne));
           if (i_lo > i_hi)
             continue;
+          if (single) {
+            for (std::int64_t i = i_lo; i <= i_hi; ++i)
+              emit(SampleCoverage{static_cast<std::int32_t>(i), j, smp.bit});
+            continue;
+          }
           for (std::int64_t i = i_lo; i <= i_hi; ++i)
             masks[static_cast<std::size_t>(i)] |= smp.bit;
           touched_lo = std::min(touched_lo, i_lo);
@@ -303,6 +370,33 @@ void walk_samples(const Path& path, const SamplePattern& pattern, FillConvention
       m = 0;
     }
   }
+}
+
+// rule: PATH.COVER.SAMPLE
+template <class Emit>
+void walk_samples(const Path& path, const SamplePattern& pattern, FillConvention fill,
+                  std::int32_t w, std::int32_t h, Emit&& emit) {
+  if (w <= 0 || h <= 0 || pattern.positions.empty())
+    return;
+  thread_local SampleWork kept;
+  if (kept.busy) { // a walk from inside emit: its own memory
+    SampleWork fresh;
+    walk_samples_with(fresh, path, pattern, fill, w, h, emit);
+    return;
+  }
+  kept.busy = true;
+  struct Release {
+    SampleWork& work;
+    ~Release() {
+      // Memory kept for glyph-sized paths and targets, not for the largest ever walked.
+      constexpr std::size_t kKeep = std::size_t{1} << 14;
+      if (work.boundary.lines.capacity() + work.boundary.curves.capacity() > kKeep ||
+          work.masks.capacity() > kKeep)
+        work = SampleWork{};
+      work.busy = false;
+    }
+  } release{kept};
+  walk_samples_with(kept, path, pattern, fill, w, h, emit);
 }
 
 } // namespace
@@ -437,7 +531,8 @@ void cover_area(const Path& path, std::int32_t w, std::int32_t h,
     throw std::invalid_argument(
         "path: area coverage of curves is not implemented (PATH.AREA.EXACT)");
   const std::vector<DownEdge> edges = down_edges(b);
-  ActiveEdges active(edges);
+  std::vector<const DownEdge*> active_list;
+  ActiveEdges active(edges, active_list);
   RowAreas row(w);
   std::vector<Rational> slopes;
   slopes.reserve(edges.size());

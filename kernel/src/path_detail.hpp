@@ -44,6 +44,8 @@ struct Boundary {
   std::vector<Curve> curves;
 };
 [[nodiscard]] Boundary boundary_of(const Path& path);
+// The same into b (cleared first; no allocation once b has room).
+void boundary_into(const Path& path, Boundary& b);
 
 // One crossing of the displaced horizontal line through a sample row: it counts for a sample
 // at raw x iff x <= threshold (PATH.SAMPLE.TIE: x_c > x, or x_c == x and hx = -1); dir is +1
