@@ -112,13 +112,15 @@ struct CurveRange {
   const detail::Curve* curve = nullptr;
 };
 
-// Curves whose control points' y-range holds a sample row, kept while the rows go down (in
-// ranges and live, which the caller owns and may reuse).
+// Curves whose control points' y-range holds a sample row, kept while the rows go down, each
+// prepared (detail::prepare_curve) when it first meets a row (in ranges, prepared and live,
+// which the caller owns and may reuse).
 class ActiveCurves {
 public:
   ActiveCurves(const std::vector<detail::Curve>& curves, std::vector<CurveRange>& ranges,
-               std::vector<const CurveRange*>& live)
-      : ranges_(ranges), live_(live) {
+               std::vector<detail::PreparedCurve>& prepared,
+               std::vector<const detail::PreparedCurve*>& live)
+      : ranges_(ranges), prepared_(prepared), live_(live) {
     ranges_.clear();
     live_.clear();
     ranges_.reserve(curves.size());
@@ -134,18 +136,23 @@ public:
     std::sort(ranges_.begin(), ranges_.end(), [](const CurveRange& p, const CurveRange& q) {
       return p.lo != q.lo ? p.lo < q.lo : p.curve < q.curve;
     });
+    if (prepared_.size() < ranges_.size())
+      prepared_.resize(ranges_.size());
   }
   // The curves with lo <= y <= hi. Calls must come with non-decreasing y.
-  const std::vector<const CurveRange*>& advance(std::int64_t y) {
-    while (next_ < ranges_.size() && ranges_[next_].lo <= y)
-      live_.push_back(&ranges_[next_++]);
-    std::erase_if(live_, [&](const CurveRange* r) { return r->hi < y; });
+  const std::vector<const detail::PreparedCurve*>& advance(std::int64_t y) {
+    while (next_ < ranges_.size() && ranges_[next_].lo <= y) {
+      detail::prepare_curve(*ranges_[next_].curve, prepared_[next_]);
+      live_.push_back(&prepared_[next_++]);
+    }
+    std::erase_if(live_, [&](const detail::PreparedCurve* p) { return p->ymax < y; });
     return live_;
   }
 
 private:
   std::vector<CurveRange>& ranges_;
-  std::vector<const CurveRange*>& live_;
+  std::vector<detail::PreparedCurve>& prepared_;
+  std::vector<const detail::PreparedCurve*>& live_;
   std::size_t next_ = 0;
 };
 
@@ -250,7 +257,8 @@ struct SampleWork {
   std::vector<DownEdge> edges;
   std::vector<const DownEdge*> active_edges;
   std::vector<CurveRange> curve_ranges;
-  std::vector<const CurveRange*> live_curves;
+  std::vector<detail::PreparedCurve> prepared_curves;
+  std::vector<const detail::PreparedCurve*> live_curves;
   std::vector<Crossing> crossings, curve_out;
   std::vector<std::uint32_t> masks;
   bool busy = false;
@@ -266,7 +274,8 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
   detail::boundary_into(path, work.boundary);
   down_edges_into(work.boundary, work.edges);
   ActiveEdges active(work.edges, work.active_edges);
-  ActiveCurves curves(work.boundary.curves, work.curve_ranges, work.live_curves);
+  ActiveCurves curves(work.boundary.curves, work.curve_ranges, work.prepared_curves,
+                      work.live_curves);
 
   // The pattern's samples grouped by their row offset, top row first (a mask has 32 bits; a
   // pattern at most kMaxSamples = 16 samples).
@@ -321,8 +330,8 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
         if (spans)
           crossings.push_back(Crossing{line_threshold(*e, sy, t), e->dir});
       }
-      for (const CurveRange* c : curves.advance(sy)) {
-        detail::curve_crossings_into(*c->curve, sy, t, true, work.curve_out);
+      for (const detail::PreparedCurve* c : curves.advance(sy)) {
+        detail::curve_crossings_prepared(*c, sy, t, work.curve_out);
         crossings.insert(crossings.end(), work.curve_out.begin(), work.curve_out.end());
       }
       if (crossings.empty())

@@ -532,7 +532,15 @@ int sign_at_grid(const Cubic& p, std::int64_t k, double bound) {
 // -dir to dir): false unless the Bernstein coefficients of x on that interval lie strictly
 // between two consecutive integers F and F + 1 (then F < x_c < F + 1: the crossing counts for a
 // sample x <= F under either hx).
-bool crossing_on(const Cubic& x, std::int64_t k, int dir, Crossing& out) {
+// Returns L = |e1| + 2 |e2| + 3 |e3|, which bounds |x'| on [0, 1] (below 2^31).
+std::int64_t lipschitz(const Cubic& x) {
+  return (x.c[1] < 0 ? -x.c[1] : x.c[1]) + 2 * (x.c[2] < 0 ? -x.c[2] : x.c[2]) +
+         3 * (x.c[3] < 0 ? -x.c[3] : x.c[3]);
+}
+
+// lip = lipschitz(x) and bound = horner_error_bound(x), which do not depend on the row.
+bool crossing_on(const Cubic& x, std::int64_t lip, double bound, std::int64_t k, int dir,
+                 Crossing& out) {
   // The double filter (PATH.CURVE.FILTER): x_c lies within L 2^-30 of x(k / 2^30) (the
   // Lipschitz bound below), which lies within E = 2^-50 sum |e_j| of the double value v. With
   // F = floor(v), the computed v - F is within 2^-53 of the exact difference d (rounded to
@@ -540,11 +548,9 @@ bool crossing_on(const Cubic& x, std::int64_t k, int dir, Crossing& out) {
   // d > L 2^-30 + E, and one below 1 - m makes d < 1 - (L 2^-30 + E): then F < x_c < F + 1.
   // m and 1 - m are exact (their bits lie within 2^-49 .. 2^1).
   {
-    const std::int64_t lip = (x.c[1] < 0 ? -x.c[1] : x.c[1]) + 2 * (x.c[2] < 0 ? -x.c[2] : x.c[2]) +
-                             3 * (x.c[3] < 0 ? -x.c[3] : x.c[3]);
     const double v = x.approx(grid_point(k));
     const std::int64_t f = floor_to_int(v);
-    const double m = 0x1p-40 + 2.0 * std::max(grid_point(lip), horner_error_bound(x));
+    const double m = 0x1p-40 + 2.0 * std::max(grid_point(lip), bound);
     const double frac = v - static_cast<double>(f); // |f| < 2^27: exact as a double
     if (frac > m && frac < 1.0 - m) {
       out = Crossing{f, dir};
@@ -554,12 +560,12 @@ bool crossing_on(const Cubic& x, std::int64_t k, int dir, Crossing& out) {
   // First a Lipschitz bound: |x'| <= L = |e1| + 2 |e2| + 3 |e3| on [0, 1], so x_c lies within
   // L 2^-30 of x(k / 2^30), which scaled() gives exactly (times 2^90); B = L 2^60 < 2^90.
   {
-    const Wide lip = formula::curve_lipschitz_scaled<std::int64_t, Wide>(
+    const Wide lip_scaled = formula::curve_lipschitz_scaled<std::int64_t, Wide>(
         x.c, [](bool c, std::int64_t t, std::int64_t f) { return c ? t : f; });
     const Wide xk = x.scaled(k);
     const Wide one = Wide{1} << (3 * kFastBits);
     const Wide f = xk >> (3 * kFastBits); // floor(xk / 2^90): >> is arithmetic on __int128
-    if (formula::curve_strictly_between<Wide>(xk - lip, xk + lip, f, one)) {
+    if (formula::curve_strictly_between<Wide>(xk - lip_scaled, xk + lip_scaled, f, one)) {
       out = Crossing{static_cast<std::int64_t>(f), dir};
       return true;
     }
@@ -580,26 +586,19 @@ bool crossing_on(const Cubic& x, std::int64_t k, int dir, Crossing& out) {
 // formula) into pieces on which g is monotone, and on each piece whose ends have opposite signs
 // in double, Newton's method kept inside the bracket by bisection. Only proposes: every
 // estimate is checked exactly by the caller. Returns the number of estimates (at most 3).
-int root_estimates(const Cubic& g, std::array<double, 3>& t) {
+// [0, 1] cut at the roots of g' (estimates): at[0 .. n], which do not depend on g's constant
+// term (the row).
+struct Cuts {
+  std::array<double, 4> at{0.0, 1.0, 1.0, 1.0};
+  int n = 1;
+};
+
+Cuts derivative_cuts(const Cubic& g) {
   const double c1 = static_cast<double>(g.c[1]), c2 = static_cast<double>(g.c[2]),
                c3 = static_cast<double>(g.c[3]);
-  if (c3 == 0.0 && c2 != 0.0) { // a quadratic: the roots by the stable quadratic formula
-    const double c0 = static_cast<double>(g.c[0]), disc = c1 * c1 - 4.0 * c2 * c0;
-    if (disc < 0.0)
-      return 0;
-    const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
-    std::array<double, 2> r{q / c2, q != 0.0 ? c0 / q : q / c2};
-    if (r[0] > r[1])
-      std::swap(r[0], r[1]);
-    int n = 0;
-    for (int i = 0; i < 2; ++i)
-      if (r[static_cast<std::size_t>(i)] > 0.0 && r[static_cast<std::size_t>(i)] < 1.0 &&
-          (i == 0 || r[1] != r[0]))
-        t[static_cast<std::size_t>(n++)] = r[static_cast<std::size_t>(i)];
-    return n;
-  }
-  std::array<double, 4> cut{0.0, 1.0, 1.0, 1.0};
-  int cuts = 1;
+  Cuts cs;
+  std::array<double, 4>& cut = cs.at;
+  int& cuts = cs.n;
   const auto add_cut = [&](double u) {
     if (u > 0.0 && u < 1.0)
       cut[static_cast<std::size_t>(cuts++)] = u;
@@ -619,6 +618,35 @@ int root_estimates(const Cubic& g, std::array<double, 3>& t) {
   if (cuts == 3 && cut[1] > cut[2])
     std::swap(cut[1], cut[2]);
   cut[static_cast<std::size_t>(cuts)] = 1.0;
+  return cs;
+}
+
+// Whether root_estimates() takes g's roots by the quadratic formula (no cuts needed).
+bool estimated_as_quadratic(const Cubic& g) {
+  return g.c[3] == 0 && g.c[2] != 0;
+}
+
+// cuts: derivative_cuts(g), unless estimated_as_quadratic(g).
+int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t) {
+  const double c1 = static_cast<double>(g.c[1]), c2 = static_cast<double>(g.c[2]),
+               c3 = static_cast<double>(g.c[3]);
+  if (c3 == 0.0 && c2 != 0.0) { // a quadratic: the roots by the stable quadratic formula
+    const double c0 = static_cast<double>(g.c[0]), disc = c1 * c1 - 4.0 * c2 * c0;
+    if (disc < 0.0)
+      return 0;
+    const double q = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+    std::array<double, 2> r{q / c2, q != 0.0 ? c0 / q : q / c2};
+    if (r[0] > r[1])
+      std::swap(r[0], r[1]);
+    int n = 0;
+    for (int i = 0; i < 2; ++i)
+      if (r[static_cast<std::size_t>(i)] > 0.0 && r[static_cast<std::size_t>(i)] < 1.0 &&
+          (i == 0 || r[1] != r[0]))
+        t[static_cast<std::size_t>(n++)] = r[static_cast<std::size_t>(i)];
+    return n;
+  }
+  const std::array<double, 4>& cut = cs.at;
+  const int cuts = cs.n;
   int n = 0;
   for (int i = 0; i < cuts; ++i) {
     double lo = cut[static_cast<std::size_t>(i)], hi = cut[static_cast<std::size_t>(i) + 1];
@@ -626,7 +654,10 @@ int root_estimates(const Cubic& g, std::array<double, 3>& t) {
     if (!((glo < 0.0 && ghi > 0.0) || (glo > 0.0 && ghi < 0.0)))
       continue;
     const bool rising = ghi > 0.0;
-    double u = 0.5 * (lo + hi);
+    // Start where the chord meets 0 (g is monotone on the piece): nearer than the midpoint.
+    double u = lo + (hi - lo) * (glo / (glo - ghi));
+    if (!(u > lo && u < hi))
+      u = 0.5 * (lo + hi);
     for (int it = 0; it < 100; ++it) {
       const double gu = g.approx(u);
       if (gu == 0.0)
@@ -636,7 +667,9 @@ int root_estimates(const Cubic& g, std::array<double, 3>& t) {
       double next = d != 0.0 ? u - gu / d : lo;
       if (!(next > lo && next < hi))
         next = 0.5 * (lo + hi);
-      const bool settled = std::abs(next - u) <= 0x1p-44; // far below the 2^-30 grid
+      // A Newton step of 2^-38 leaves an error of the order of its square: far below the
+      // 2^-30 grid the estimate is checked on.
+      const bool settled = std::abs(next - u) <= 0x1p-38;
       u = next;
       if (settled)
         break;
@@ -655,11 +688,12 @@ int root_estimates(const Cubic& g, std::array<double, 3>& t) {
 // dyadic root is the region's root, where x is exact. The direction is the sign of g after the
 // root (times dir_sign). Signs come through the double filter (sign_at_grid).
 // rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
-bool estimated_crossings(const Cubic& g, const Cubic& x, int v, Tie t, std::vector<Crossing>& found,
+bool estimated_crossings(const Cubic& g, const Cuts& cuts, const Cubic& x, std::int64_t x_lip,
+                         double x_bound, int v, Tie t, std::vector<Crossing>& found,
                          int dir_sign = 1) {
   constexpr std::int64_t kOne = std::int64_t{1} << kFastBits;
   std::array<double, 3> est{};
-  if (root_estimates(g, est) != v)
+  if (root_estimates(g, cuts, est) != v)
     return false;
   const double bound = horner_error_bound(g);
   std::array<std::pair<std::int64_t, std::int64_t>, 3> regions{};
@@ -694,7 +728,7 @@ bool estimated_crossings(const Cubic& g, const Cubic& x, int v, Tie t, std::vect
       if (root >= 0) {
         // x at t = root / 2^30 exactly: P(k / 2^30) 2^90, then floor and integrality.
         c = Crossing{threshold_of(x.scaled(root), Wide{1} << (3 * kFastBits), t), dir};
-      } else if (!crossing_on(x, k, dir, c)) {
+      } else if (!crossing_on(x, x_lip, x_bound, k, dir, c)) {
         return false;
       }
       regions[static_cast<std::size_t>(r)] = {a, b};
@@ -706,6 +740,13 @@ bool estimated_crossings(const Cubic& g, const Cubic& x, int v, Tie t, std::vect
       return false;
   }
   return true;
+}
+
+// The same, everything that does not depend on the row computed here.
+bool estimated_crossings(const Cubic& g, const Cubic& x, int v, Tie t, std::vector<Crossing>& found,
+                         int dir_sign = 1) {
+  return estimated_crossings(g, estimated_as_quadratic(g) ? Cuts{} : derivative_cuts(g), x,
+                             lipschitz(x), horner_error_bound(x), v, t, found, dir_sign);
 }
 
 // The exact crossings of a quadratic (or linear) g whose roots are rational (a linear g, or a
@@ -929,7 +970,7 @@ bool fast_curve_crossings(const Cubic& g, const Cubic& x, Tie t, std::vector<Cro
     if (s0 != sa || s1 != sb)
       return false;
     Crossing c;
-    if (!crossing_on(x, k, sb, c))
+    if (!crossing_on(x, lipschitz(x), horner_error_bound(x), k, sb, c))
       return false;
     found.push_back(c);
   }
@@ -951,6 +992,48 @@ std::vector<Crossing> curve_crossings_exact(const Curve& c, std::int64_t sy, Tie
   std::vector<Crossing> out;
   curve_crossings_into(c, sy, t, false, out);
   return out;
+}
+
+// rule: PATH.CURVE.SAMPLE
+void prepare_curve(const Curve& c, PreparedCurve& p) {
+  const int n = c.degree;
+  std::array<std::int64_t, 4> xs{}, ys{};
+  p.curve = &c;
+  p.ymin = p.ymax = c.p[0].y;
+  for (int k = 0; k <= n; ++k) {
+    xs[static_cast<std::size_t>(k)] = c.p[static_cast<std::size_t>(k)].x;
+    ys[static_cast<std::size_t>(k)] = c.p[static_cast<std::size_t>(k)].y;
+    p.ymin = std::min(p.ymin, ys[static_cast<std::size_t>(k)]);
+    p.ymax = std::max(p.ymax, ys[static_cast<std::size_t>(k)]);
+  }
+  p.y = formula::curve_power_coefficients(ys, n == 3);
+  p.x = formula::curve_power_coefficients(xs, n == 3);
+  const Cubic x{p.x}, y{p.y};
+  p.x_lipschitz = lipschitz(x);
+  p.x_bound = horner_error_bound(x);
+  // g = y - s.y has y's coefficients but the constant: the same derivative, the same cuts.
+  const Cuts cs = estimated_as_quadratic(y) ? Cuts{} : derivative_cuts(y);
+  p.cut = cs.at;
+  p.cuts = cs.n;
+}
+
+// rule: PATH.CURVE.SAMPLE, PATH.SAMPLE.TIE
+void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
+                              std::vector<Crossing>& out) {
+  out.clear();
+  if (sy < p.ymin || sy > p.ymax)
+    return; // the curve lies in the convex hull of its control points
+  Cubic g{p.y};
+  g.c[0] -= sy;
+  // No root at an end: the estimates (most rows of a glyph's curves), as in
+  // curve_crossings_into, with what does not depend on the row computed once.
+  if (g.c[0] != 0 && formula::curve_at_one(g.c) != 0) {
+    const int v = bernstein_variations(g);
+    if (v == 0 || estimated_crossings(g, Cuts{p.cut, p.cuts}, Cubic{p.x}, p.x_lipschitz, p.x_bound,
+                                      v, t, out))
+      return;
+  }
+  curve_crossings_into(*p.curve, sy, t, true, out);
 }
 
 void curve_crossings_into(const Curve& c, std::int64_t sy, Tie t, bool fast,

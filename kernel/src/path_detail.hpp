@@ -68,4 +68,21 @@ struct Crossing {
 void curve_crossings_into(const Curve& c, std::int64_t sy, Tie t, bool fast,
                           std::vector<Crossing>& out);
 
+// What the crossings of one curve with every row share, computed once (prepare_curve): the
+// power coefficients of x and y, x's Lipschitz bound and filter bound (PATH.CURVE.FILTER), the
+// cuts of [0, 1] at the estimated roots of y', and the control points' y-range.
+struct PreparedCurve {
+  const Curve* curve = nullptr;
+  std::int64_t ymin = 0, ymax = 0;
+  std::array<std::int64_t, 4> y{}, x{};
+  std::int64_t x_lipschitz = 0;
+  double x_bound = 0.0;
+  std::array<double, 4> cut{};
+  int cuts = 1;
+};
+void prepare_curve(const Curve& c, PreparedCurve& p);
+// The crossings of curve_crossings_into (fast), from a prepared curve: the same crossings.
+void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
+                              std::vector<Crossing>& out);
+
 } // namespace rastrules::path::detail
