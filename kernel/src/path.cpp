@@ -330,10 +330,8 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
         if (spans)
           crossings.push_back(Crossing{line_threshold(*e, sy, t), e->dir});
       }
-      for (const detail::PreparedCurve* c : curves.advance(sy)) {
-        detail::curve_crossings_prepared(*c, sy, t, work.curve_out);
-        crossings.insert(crossings.end(), work.curve_out.begin(), work.curve_out.end());
-      }
+      for (const detail::PreparedCurve* c : curves.advance(sy))
+        detail::curve_crossings_prepared(*c, sy, t, crossings, work.curve_out);
       if (crossings.empty())
         continue;
       std::sort(crossings.begin(), crossings.end(),

@@ -688,14 +688,13 @@ int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t) {
 // dyadic root is the region's root, where x is exact. The direction is the sign of g after the
 // root (times dir_sign). Signs come through the double filter (sign_at_grid).
 // rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
-bool estimated_crossings(const Cubic& g, const Cuts& cuts, const Cubic& x, std::int64_t x_lip,
-                         double x_bound, int v, Tie t, std::vector<Crossing>& found,
-                         int dir_sign = 1) {
+bool estimated_crossings(const Cubic& g, double bound, const Cuts& cuts, const Cubic& x,
+                         std::int64_t x_lip, double x_bound, int v, Tie t,
+                         std::vector<Crossing>& found, int dir_sign = 1) {
   constexpr std::int64_t kOne = std::int64_t{1} << kFastBits;
   std::array<double, 3> est{};
   if (root_estimates(g, cuts, est) != v)
     return false;
-  const double bound = horner_error_bound(g);
   std::array<std::pair<std::int64_t, std::int64_t>, 3> regions{};
   for (int r = 0; r < v; ++r) {
     const std::int64_t k0 =
@@ -745,7 +744,8 @@ bool estimated_crossings(const Cubic& g, const Cuts& cuts, const Cubic& x, std::
 // The same, everything that does not depend on the row computed here.
 bool estimated_crossings(const Cubic& g, const Cubic& x, int v, Tie t, std::vector<Crossing>& found,
                          int dir_sign = 1) {
-  return estimated_crossings(g, estimated_as_quadratic(g) ? Cuts{} : derivative_cuts(g), x,
+  return estimated_crossings(g, horner_error_bound(g),
+                             estimated_as_quadratic(g) ? Cuts{} : derivative_cuts(g), x,
                              lipschitz(x), horner_error_bound(x), v, t, found, dir_sign);
 }
 
@@ -1010,6 +1010,8 @@ void prepare_curve(const Curve& c, PreparedCurve& p) {
   p.x = formula::curve_power_coefficients(xs, n == 3);
   const Cubic x{p.x}, y{p.y};
   p.x_lipschitz = lipschitz(x);
+  p.y_abs_rest = (p.y[1] < 0 ? -p.y[1] : p.y[1]) + (p.y[2] < 0 ? -p.y[2] : p.y[2]) +
+                 (p.y[3] < 0 ? -p.y[3] : p.y[3]);
   p.x_bound = horner_error_bound(x);
   // g = y - s.y has y's coefficients but the constant: the same derivative, the same cuts.
   const Cuts cs = estimated_as_quadratic(y) ? Cuts{} : derivative_cuts(y);
@@ -1019,8 +1021,7 @@ void prepare_curve(const Curve& c, PreparedCurve& p) {
 
 // rule: PATH.CURVE.SAMPLE, PATH.SAMPLE.TIE
 void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
-                              std::vector<Crossing>& out) {
-  out.clear();
+                              std::vector<Crossing>& out, std::vector<Crossing>& scratch) {
   if (sy < p.ymin || sy > p.ymax)
     return; // the curve lies in the convex hull of its control points
   Cubic g{p.y};
@@ -1029,11 +1030,19 @@ void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
   // curve_crossings_into, with what does not depend on the row computed once.
   if (g.c[0] != 0 && formula::curve_at_one(g.c) != 0) {
     const int v = bernstein_variations(g);
-    if (v == 0 || estimated_crossings(g, Cuts{p.cut, p.cuts}, Cubic{p.x}, p.x_lipschitz, p.x_bound,
-                                      v, t, out))
+    if (v == 0)
       return;
+    // horner_error_bound(g): g's coefficients are y's but the constant.
+    const double bound =
+        static_cast<double>((g.c[0] < 0 ? -g.c[0] : g.c[0]) + p.y_abs_rest) * 0x1p-50;
+    const std::size_t mark = out.size();
+    if (estimated_crossings(g, bound, Cuts{p.cut, p.cuts}, Cubic{p.x}, p.x_lipschitz, p.x_bound, v,
+                            t, out))
+      return;
+    out.resize(mark);
   }
-  curve_crossings_into(*p.curve, sy, t, true, out);
+  curve_crossings_into(*p.curve, sy, t, true, scratch);
+  out.insert(out.end(), scratch.begin(), scratch.end());
 }
 
 void curve_crossings_into(const Curve& c, std::int64_t sy, Tie t, bool fast,

@@ -76,13 +76,15 @@ struct PreparedCurve {
   std::int64_t ymin = 0, ymax = 0;
   std::array<std::int64_t, 4> y{}, x{};
   std::int64_t x_lipschitz = 0;
+  std::int64_t y_abs_rest = 0; // |y1| + |y2| + |y3|, for g's filter bound
   double x_bound = 0.0;
   std::array<double, 4> cut{};
   int cuts = 1;
 };
 void prepare_curve(const Curve& c, PreparedCurve& p);
-// The crossings of curve_crossings_into (fast), from a prepared curve: the same crossings.
+// The crossings of curve_crossings_into (fast), from a prepared curve: the same crossings,
+// appended to out (scratch: room for the unprepared path, when the estimates give up).
 void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
-                              std::vector<Crossing>& out);
+                              std::vector<Crossing>& out, std::vector<Crossing>& scratch);
 
 } // namespace rastrules::path::detail
