@@ -844,32 +844,9 @@ private:
     return fail(field() + ": unknown key");
   }
 
-  // A float32 value (a number, or "NaN", "Infinity", "-Infinity" as the fragment writer spells
-  // what is not finite); nullopt for anything else.
-  static std::optional<float> float_of(const io::JsonValue& v) {
-    switch (v.kind) {
-    case io::JsonKind::kInt:
-      return static_cast<float>(v.i);
-    case io::JsonKind::kUint:
-      return static_cast<float>(v.u);
-    case io::JsonKind::kFloat:
-      return io::decimal_to_float32(v.text);
-    case io::JsonKind::kString:
-      if (v.text == "NaN")
-        return std::numeric_limits<float>::quiet_NaN();
-      if (v.text == "Infinity")
-        return std::numeric_limits<float>::infinity();
-      if (v.text == "-Infinity")
-        return -std::numeric_limits<float>::infinity();
-      return std::nullopt;
-    default:
-      return std::nullopt;
-    }
-  }
-
   // rule: DRIVER.VALUES
   bool attr_value(const io::JsonValue& v) {
-    const std::optional<float> f = float_of(v);
+    const std::optional<float> f = io::json_float32(v);
     if (!f) {
       return fail(field() + "." + io::printable(scene_.attributes[attr_index_].name, 40) +
                   ": must be a number (or \"NaN\", \"Infinity\", \"-Infinity\")");
@@ -892,7 +869,7 @@ private:
       }
       d.unorm = static_cast<std::uint32_t>(v.i);
     } else {
-      const std::optional<float> f = float_of(v);
+      const std::optional<float> f = io::json_float32(v);
       if (!f)
         return fail(at + ": must be a number (d32f)");
       d.f = *f;

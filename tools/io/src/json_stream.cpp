@@ -3,6 +3,7 @@
 // Implements: SCENE.INPUT.ERRORS (the parser's part: JSON syntax, a raw NUL byte)
 
 #include "rastrules/io/json_stream.hpp"
+#include "rastrules/io/scene_json.hpp"
 
 #include <algorithm>
 #include <cstddef>
@@ -157,6 +158,28 @@ JsonParseEnd parse_json(const JsonChunks& next, JsonHandler& handler) {
   if (buffer.nul_at)
     end.nul = std::move(buffer.nul);
   return end;
+}
+
+// rule: SCENE.NUMBER.FLOAT32
+std::optional<float> json_float32(const JsonValue& v) {
+  switch (v.kind) {
+  case JsonKind::kInt:
+    return static_cast<float>(v.i); // one correct rounding
+  case JsonKind::kUint:
+    return static_cast<float>(v.u); // one correct rounding
+  case JsonKind::kFloat:
+    return decimal_to_float32(v.text);
+  case JsonKind::kString:
+    if (v.text == "NaN")
+      return std::numeric_limits<float>::quiet_NaN();
+    if (v.text == "Infinity")
+      return std::numeric_limits<float>::infinity();
+    if (v.text == "-Infinity")
+      return -std::numeric_limits<float>::infinity();
+    return std::nullopt;
+  default:
+    return std::nullopt;
+  }
 }
 
 } // namespace rastrules::io

@@ -1291,29 +1291,12 @@ private:
   // else fails (expected says what is allowed) and returns nullopt.
   std::optional<float> float32_value(const std::string& field, const Value& v,
                                      std::string_view expected) {
-    switch (v.kind) {
-    case Kind::kInt:
-      return static_cast<float>(v.i); // one correct rounding
-    case Kind::kUint:
-      return static_cast<float>(v.u); // one correct rounding
-    case Kind::kFloat: {
-      const std::optional<float> d = decimal_to_float32(v.text);
-      if (!d)
-        fail(field, "is not a number: " + printable(v.text));
-      return d;
-    }
-    case Kind::kString:
-      if (v.text == "NaN")
-        return std::numeric_limits<float>::quiet_NaN();
-      if (v.text == "Infinity")
-        return std::numeric_limits<float>::infinity();
-      if (v.text == "-Infinity")
-        return -std::numeric_limits<float>::infinity();
-      break;
-    default:
-      break;
-    }
-    type_error(field, expected, v);
+    if (const std::optional<float> f = json_float32(v))
+      return f;
+    if (v.kind == Kind::kFloat)
+      fail(field, "is not a number: " + printable(v.text));
+    else
+      type_error(field, expected, v);
     return std::nullopt;
   }
 

@@ -30,6 +30,13 @@ struct JsonValue {
   std::string_view text;
 };
 
+// rule: SCENE.NUMBER.FLOAT32
+// A JSON value read as float32: an integer rounded once, another number correctly rounded from
+// its text (decimal_to_float32, rastrules/io/scene_json.hpp), the strings "NaN", "Infinity" and
+// "-Infinity" as those values; nullopt for anything else (a kFloat whose text is no number
+// included).
+[[nodiscard]] std::optional<float> json_float32(const JsonValue& v);
+
 // An error of the JSON library's parser: its exception id (101 syntax, 406 a number beyond any
 // number type, ...), its message ("[json.exception.parse_error.101] parse error at line 1,
 // column 2: ...") and the last token read (a number's text for 406).
