@@ -31,6 +31,18 @@ function(rastrules_test_code_options target)
   endif()
 endfunction()
 
+# The proofs' own code only builds terms for Z3, which does the work: it is compiled at -O0 in
+# the optimized builds too (a proof unit: 27.5 s at -O2, 8.8 s at -O0; the proofs were 263 of
+# the main build's 2045 CPU-seconds). RASTRULES_PROOF_OPT_FLAGS="" keeps the build's flags.
+set(RASTRULES_PROOF_OPT_FLAGS "-O0" CACHE STRING
+    "Optimization flags of the Z3 proofs' code in RelWithDebInfo and Release builds")
+function(rastrules_proof_code_options target)
+  if(RASTRULES_PROOF_OPT_FLAGS)
+    target_compile_options(${target} PRIVATE
+      $<$<CONFIG:RelWithDebInfo,Release>:${RASTRULES_PROOF_OPT_FLAGS}>)
+  endif()
+endfunction()
+
 function(rastrules_add_gtest)
   cmake_parse_arguments(A "" "NAME;AREA;KIND" "SOURCES;LIBS;TEST_PROPERTIES" ${ARGN})
   add_executable(${A_NAME} ${A_SOURCES})
