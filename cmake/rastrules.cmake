@@ -43,11 +43,26 @@ function(rastrules_proof_code_options target)
   endif()
 endfunction()
 
+# The test and property sources of one executable are compiled together, a few to a unit
+# (CMake's unity build): each unit parses GoogleTest, RapidCheck and the library headers once
+# instead of once a file. RASTRULES_UNITY_TESTS=OFF compiles each file alone (a file that
+# does not compile alone is a defect either way: the unity batches change as files come and
+# go).
+option(RASTRULES_UNITY_TESTS "Compile test and property sources in unity batches" ON)
+set(RASTRULES_UNITY_BATCH 4 CACHE STRING "Test and property sources per unity unit")
+function(rastrules_test_unity target)
+  if(RASTRULES_UNITY_TESTS)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON
+                          UNITY_BUILD_BATCH_SIZE ${RASTRULES_UNITY_BATCH})
+  endif()
+endfunction()
+
 function(rastrules_add_gtest)
   cmake_parse_arguments(A "" "NAME;AREA;KIND" "SOURCES;LIBS;TEST_PROPERTIES" ${ARGN})
   add_executable(${A_NAME} ${A_SOURCES})
   target_link_libraries(${A_NAME} PRIVATE ${A_LIBS} rastrules_warnings rastrules_sanitize)
   rastrules_test_code_options(${A_NAME})
+  rastrules_test_unity(${A_NAME})
   # gtest_discover_tests re-splits a list-valued LABELS, keeping only the first element, so
   # the kind goes on the tests and the area on the directory (CTest adds directory labels to
   # every test defined there; each area has its own folder).

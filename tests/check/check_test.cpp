@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "check_support.hpp"
 #include "rastrules/check/check.hpp"
 #include "rastrules/msaa.hpp"
 #include "rastrules/pipeline.hpp"
@@ -43,10 +44,7 @@ Rasterized run(const Scene& s) {
   return r;
 }
 
-bool mentions(const Mismatches& m, const std::string& what) {
-  return std::any_of(m.mismatches.begin(), m.mismatches.end(),
-                     [&](const std::string& s) { return s.find(what) != std::string::npos; });
-}
+using test_support::mentions;
 
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.PRIM.LINE_STRIP, SCENE.PRIM.POINT
 TEST(Check, TheKernelAgreesAndTamperingIsNamed) {

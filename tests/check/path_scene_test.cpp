@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "check_support.hpp"
 #include "rastrules/check/check.hpp"
 #include "rastrules/decision.hpp"
 #include "rastrules/io/scene_json.hpp"
@@ -33,10 +34,7 @@ std::vector<Fragment> frags(const Scene& s) {
   return std::get<std::vector<Fragment>>(r);
 }
 
-bool mentions(const Mismatches& m, const std::string& what) {
-  return std::any_of(m.mismatches.begin(), m.mismatches.end(),
-                     [&](const std::string& s) { return s.find(what) != std::string::npos; });
-}
+using test_support::mentions;
 
 Mismatches check(const Scene& s, const std::vector<Fragment>& f) {
   return check_against_oracle(s, std::get<PreparedScene>(prepare(s)), f);

@@ -26,8 +26,8 @@ namespace kp = rastrules::path;
 namespace op = rastrules::oracle::path;
 using rastrules::io::Glyph;
 
-const std::string kDejaVu = RASTRULES_FONT_DEJAVU;
-const std::string kCubic = RASTRULES_FONT_CUBIC;
+using rastrules::glyph_support::kCubic;
+using rastrules::glyph_support::kDejaVu;
 
 using rastrules::glyph_support::load_or_fail;
 using rastrules::glyph_support::mask_difference;

@@ -28,6 +28,10 @@
 
 namespace rastrules::glyph_support {
 
+// The fonts of the tests (tools/io/CMakeLists.txt: RASTRULES_FONT_DEJAVU, _CUBIC).
+inline const std::string kDejaVu = RASTRULES_FONT_DEJAVU;
+inline const std::string kCubic = RASTRULES_FONT_CUBIC;
+
 namespace kp = rastrules::path;
 namespace op = rastrules::oracle::path;
 using rastrules::io::Glyph;

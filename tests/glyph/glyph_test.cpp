@@ -27,8 +27,8 @@ namespace gs = rastrules::glyph_support;
 using rastrules::io::Glyph;
 using rastrules::io::GlyphError;
 
-const std::string kDejaVu = RASTRULES_FONT_DEJAVU;
-const std::string kCubic = RASTRULES_FONT_CUBIC;
+using rastrules::glyph_support::kCubic;
+using rastrules::glyph_support::kDejaVu;
 
 std::string error_of(const std::string& font, char32_t c, int size) {
   auto r = rastrules::io::load_glyph(font, c, size);

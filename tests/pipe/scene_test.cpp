@@ -14,6 +14,7 @@
 #include <tuple>
 #include <variant>
 
+#include "pipe_support.hpp"
 #include "rastrules/pipeline.hpp"
 
 namespace rastrules::pipe {
@@ -56,14 +57,7 @@ std::vector<Frag> frags(const PipeResult& r) {
   return v;
 }
 
-PipeResult run(const Scene& s, const PipeOptions& o = {}) {
-  auto r = run_pipeline(s, o);
-  if (auto* e = std::get_if<SceneError>(&r)) {
-    ADD_FAILURE() << e->what();
-    return {};
-  }
-  return std::get<PipeResult>(r);
-}
+using test_support::run;
 
 SceneError run_error(const Scene& s) {
   auto r = run_pipeline(s);

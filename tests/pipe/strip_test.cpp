@@ -12,20 +12,14 @@
 #include <variant>
 #include <vector>
 
+#include "pipe_support.hpp"
 #include "rastrules/pipeline.hpp"
 #include "strips.hpp"
 
 namespace rastrules::pipe {
 namespace {
 
-PipeResult run(const Scene& s) {
-  auto r = run_pipeline(s);
-  if (auto* e = std::get_if<SceneError>(&r)) {
-    ADD_FAILURE() << e->what();
-    return {};
-  }
-  return std::get<PipeResult>(r);
-}
+using test_support::run;
 
 // The scene of the report: a clip-space strip of two segments, a linear and a flat attribute,
 // d24 depth with the test always passing.
