@@ -17,6 +17,15 @@ endif()
 # rastrules_add_gtest(NAME <exe> AREA <area> KIND <unit|property> SOURCES ... LIBS ...)
 find_package(GTest QUIET)
 include(GoogleTest)
+# rastrules_optimize_as(<target> <flags>): the target's own code compiled with <flags> (e.g.
+# -O1) in the optimized builds (RelWithDebInfo, Release), after the build's; empty <flags>
+# keep the build's.
+function(rastrules_optimize_as target flags)
+  if(flags)
+    target_compile_options(${target} PRIVATE $<$<CONFIG:RelWithDebInfo,Release>:${flags}>)
+  endif()
+endfunction()
+
 # The tests' own code (examples, properties, their generators) is compiled at -O1 in the
 # optimized builds: the code under test (kernel, oracle, io, driver libraries) keeps the
 # build's -O2, and the test and property units, heavy with RapidCheck, GoogleTest and CGAL
@@ -25,10 +34,7 @@ include(GoogleTest)
 set(RASTRULES_TEST_OPT_FLAGS "-O1" CACHE STRING
     "Optimization flags of test and property code in RelWithDebInfo and Release builds")
 function(rastrules_test_code_options target)
-  if(RASTRULES_TEST_OPT_FLAGS)
-    target_compile_options(${target} PRIVATE
-      $<$<CONFIG:RelWithDebInfo,Release>:${RASTRULES_TEST_OPT_FLAGS}>)
-  endif()
+  rastrules_optimize_as(${target} "${RASTRULES_TEST_OPT_FLAGS}")
 endfunction()
 
 # The proofs' own code only builds terms for Z3, which does the work: it is compiled at -O0 in
@@ -37,10 +43,7 @@ endfunction()
 set(RASTRULES_PROOF_OPT_FLAGS "-O0" CACHE STRING
     "Optimization flags of the Z3 proofs' code in RelWithDebInfo and Release builds")
 function(rastrules_proof_code_options target)
-  if(RASTRULES_PROOF_OPT_FLAGS)
-    target_compile_options(${target} PRIVATE
-      $<$<CONFIG:RelWithDebInfo,Release>:${RASTRULES_PROOF_OPT_FLAGS}>)
-  endif()
+  rastrules_optimize_as(${target} "${RASTRULES_PROOF_OPT_FLAGS}")
 endfunction()
 
 # The test and property sources of one executable are compiled together, a few to a unit
