@@ -757,12 +757,11 @@ bool estimated_crossings(const Cubic& g, const Cubic& x, int v, Tie t, std::vect
 //
 // Budget (proved by proofs/path/curve_budget.cpp): a quadratic's |c_j|, |e_j| <= 2^25;
 // |D| <= 2^52; 0 <= p <= q <= 2^26; |numerator of x| <= 2^79: all in __int128.
-// The sign variations of 3 times the Bernstein coefficients of g on [0, 1] (Descartes' bound on
-// its roots in (0, 1), with their parity).
-int bernstein_variations(const Cubic& g) {
-  const std::array<std::int64_t, 4> b = formula::curve_bernstein3(g.c);
+// The sign variations of Bernstein coefficients, zeros skipped (Descartes' bound on the roots
+// in the open interval, with their parity).
+template <class T> int sign_variations(const std::array<T, 4>& b) {
   int v = 0, last = 0;
-  for (const std::int64_t bi : b) {
+  for (const T bi : b) {
     const int si = bi > 0 ? 1 : (bi < 0 ? -1 : 0);
     if (si != 0 && last != 0 && si != last)
       ++v;
@@ -770,6 +769,11 @@ int bernstein_variations(const Cubic& g) {
       last = si;
   }
   return v;
+}
+
+// The sign variations of 3 times the Bernstein coefficients of g on [0, 1].
+int bernstein_variations(const Cubic& g) {
+  return sign_variations(formula::curve_bernstein3(g.c));
 }
 
 static_assert(2 * kCoefficientBits + 3 <= 62,
@@ -946,16 +950,30 @@ bool fast_curve_crossings(const Cubic& g, const Cubic& x, Tie t, std::vector<Cro
   if (estimated_crossings(g, x, v, t, found))
     return true;
   found.clear();
-  constexpr int kSteps = 64;
+  // The scan: on each interval [i, i + 1] / 64, Descartes' rule on g's Bernstein coefficients
+  // there (exact, in __int128) counts its roots: no sign variation, no root; one, exactly one
+  // simple root, which is confined below; more (roots closer than 1/64 apart, a multiple root,
+  // or complex roots near the interval), not decided here. A zero first coefficient is a root
+  // at the interval's start. Where v over-counts the roots in (0, 1) (complex roots near [0, 1],
+  // an oscillating control polygon), the estimates give up and this decides: every root in
+  // (0, 1) lies in exactly one interval (g(0), g(1) != 0), so those found are all.
+  constexpr int kSteps = 1 << formula::kCurveScanBits;
   constexpr std::int64_t kStep = kOne / kSteps;
+  const std::array<Wide, 4> gw = g.wide();
   for (int i = 0; i < kSteps; ++i) {
-    const double ta = static_cast<double>(i) / kSteps, tb = static_cast<double>(i + 1) / kSteps;
-    if ((g.approx(ta) < 0) == (g.approx(tb) < 0))
+    const std::array<Wide, 4> b =
+        formula::curve_interval_bernstein3<Wide, formula::kCurveScanBits>(gw, Wide{i});
+    if (b[0] == 0)
+      return false; // a root at i / 64
+    const int vi = sign_variations(b);
+    if (vi == 0)
       continue;
-    const std::int64_t ka = i * kStep, kb = (i + 1) * kStep;
-    const int sa = wide_sign(g.scaled(ka)), sb = wide_sign(g.scaled(kb));
-    if (sa == 0 || sb == 0 || sa == sb)
+    if (vi > 1)
       return false;
+    // One root: b[0] and b[3] are 3 2^18 g at the interval's ends, of opposite signs.
+    const double ta = static_cast<double>(i) / kSteps, tb = static_cast<double>(i + 1) / kSteps;
+    const std::int64_t ka = i * kStep, kb = (i + 1) * kStep;
+    const int sa = wide_sign(b[0]), sb = wide_sign(b[3]);
     // A root estimate by bisection in double, then an exact sign change on [k, k + 1] / 2^30.
     double lo = ta, hi = tb;
     for (int it = 0; it < 64; ++it) {
@@ -974,8 +992,7 @@ bool fast_curve_crossings(const Cubic& g, const Cubic& x, Tie t, std::vector<Cro
       return false;
     found.push_back(c);
   }
-  // roots closer than 1/64 apart, or a multiple root: not isolated here
-  return static_cast<int>(found.size()) == v;
+  return true;
 }
 
 } // namespace
@@ -1045,44 +1062,71 @@ void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
   out.insert(out.end(), scratch.begin(), scratch.end());
 }
 
-void curve_crossings_into(const Curve& c, std::int64_t sy, Tie t, bool fast,
-                          std::vector<Crossing>& out) {
-  out.clear(); // the integer paths count what they found in out
-  const int n = c.degree;
-  std::array<std::int64_t, 4> xs{}, ys{};
+namespace {
+
+// The control points' coordinates of c, and whether the row sy meets their y-range (the curve
+// lies in the convex hull of its control points).
+bool control_coordinates(const Curve& c, std::int64_t sy, std::array<std::int64_t, 4>& xs,
+                         std::array<std::int64_t, 4>& ys) {
   std::int64_t ymin = c.p[0].y, ymax = c.p[0].y;
-  for (int k = 0; k <= n; ++k) {
+  for (int k = 0; k <= c.degree; ++k) {
     xs[static_cast<std::size_t>(k)] = c.p[static_cast<std::size_t>(k)].x;
     ys[static_cast<std::size_t>(k)] = c.p[static_cast<std::size_t>(k)].y;
     ymin = std::min(ymin, ys[static_cast<std::size_t>(k)]);
     ymax = std::max(ymax, ys[static_cast<std::size_t>(k)]);
   }
-  // The curve lies in the convex hull of its control points.
-  if (sy < ymin || sy > ymax)
-    return;
-  {
-    Cubic gi, xi;
-    gi.c = formula::curve_power_coefficients(ys, n == 3);
-    gi.c[0] -= sy;
-    xi.c = formula::curve_power_coefficients(xs, n == 3);
-    // No root at an end: the estimates first (most rows of a glyph's curves), whose regions
-    // also take the dyadic roots.
-    if (fast && gi.c[0] != 0 && formula::curve_at_one(gi.c) != 0) {
-      const int v = bernstein_variations(gi);
-      if (v == 0 || estimated_crossings(gi, xi, v, t, out))
-        return;
-      out.clear();
-    }
-    if (fast && n == 2 && rational_quadratic_crossings(gi, xi, t, out))
-      return;
-    out.clear();
-    if (fast && n == 3 && cubic_end_crossings(gi, xi, t, out))
-      return;
-    out.clear();
-    if (fast && fast_curve_crossings(gi, xi, t, out))
-      return;
+  return sy >= ymin && sy <= ymax;
+}
+
+// The integer paths, in turn, on a row the curve's control points reach: true when one
+// decides (its crossings in out), false (out cleared) when all leave it to the rational path.
+bool integer_crossings(int n, const std::array<std::int64_t, 4>& xs,
+                       const std::array<std::int64_t, 4>& ys, std::int64_t sy, Tie t,
+                       std::vector<Crossing>& out) {
+  Cubic gi, xi;
+  gi.c = formula::curve_power_coefficients(ys, n == 3);
+  gi.c[0] -= sy;
+  xi.c = formula::curve_power_coefficients(xs, n == 3);
+  // No root at an end: the estimates first (most rows of a glyph's curves), whose regions
+  // also take the dyadic roots.
+  if (gi.c[0] != 0 && formula::curve_at_one(gi.c) != 0) {
+    const int v = bernstein_variations(gi);
+    if (v == 0 || estimated_crossings(gi, xi, v, t, out))
+      return true;
     out.clear();
   }
+  if (n == 2 && rational_quadratic_crossings(gi, xi, t, out))
+    return true;
+  out.clear();
+  if (n == 3 && cubic_end_crossings(gi, xi, t, out))
+    return true;
+  out.clear();
+  if (fast_curve_crossings(gi, xi, t, out))
+    return true;
+  out.clear();
+  return false;
+}
+
+} // namespace
+
+// rule: PATH.CURVE.SAMPLE, PATH.SAMPLE.TIE
+bool curve_crossings_integer(const Curve& c, std::int64_t sy, Tie t, std::vector<Crossing>& out) {
+  out.clear();
+  std::array<std::int64_t, 4> xs{}, ys{};
+  if (!control_coordinates(c, sy, xs, ys))
+    return true;
+  return integer_crossings(c.degree, xs, ys, sy, t, out);
+}
+
+void curve_crossings_into(const Curve& c, std::int64_t sy, Tie t, bool fast,
+                          std::vector<Crossing>& out) {
+  out.clear(); // the integer paths count what they found in out
+  const int n = c.degree;
+  std::array<std::int64_t, 4> xs{}, ys{};
+  if (!control_coordinates(c, sy, xs, ys))
+    return;
+  if (fast && integer_crossings(n, xs, ys, sy, t, out))
+    return;
   Poly g = power_basis(ys, n);
   if (g.empty())
     g.push_back(Rational(0));

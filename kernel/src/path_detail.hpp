@@ -67,6 +67,10 @@ struct Crossing {
 // vector); fast chooses whether the integer paths are tried first.
 void curve_crossings_into(const Curve& c, std::int64_t sy, Tie t, bool fast,
                           std::vector<Crossing>& out);
+// The integer paths alone (no rational path), into out (cleared first): false, with out empty,
+// where they leave the row to the rational path. tests/path checks which rows they decide.
+[[nodiscard]] bool curve_crossings_integer(const Curve& c, std::int64_t sy, Tie t,
+                                           std::vector<Crossing>& out);
 
 // What the crossings of one curve with every row share, computed once (prepare_curve): the
 // power coefficients of x and y, x's Lipschitz bound and filter bound (PATH.CURVE.FILTER), the

@@ -98,6 +98,9 @@ struct CurveKernelModel : PathKernelModel {
   // L 2^60 (Lipschitz), the interval Bernstein coefficients times 3 * 2^90,
   static constexpr Int128 kLip = pow2(89);
   static constexpr Int128 kInterval = pow2(120);
+  // g's Bernstein coefficients on the scan's [i, i + 1] / 64 times 3 2^18 (at most 3 (14 2^42 +
+  // 27 2^36 + 6 2^31 + 2^26) < 2^47.5 for i <= 63),
+  static constexpr Int128 kScan = pow2(48);
   // the quadratic path's discriminant and numerator, the cubic end path's.
   static constexpr Int128 kDiscQuad = pow2(52);
   static constexpr Int128 kNum2 = pow2(79);
@@ -123,9 +126,9 @@ struct CurveKernelModel : PathKernelModel {
     return formula::curve_lipschitz_scaled<S, T>(
         e, [](const SymBool& c, const S& t, const S& f) { return select(c, t, f); });
   }
-  template <class S>
+  template <class S, int Bits = kFastBits>
   static std::array<S, 4> interval_bernstein3(const std::array<S, 4>& e, const S& k) {
-    return formula::curve_interval_bernstein3<S>(e, k);
+    return formula::curve_interval_bernstein3<S, Bits>(e, k);
   }
   template <class S>
   static SymBool strictly_between(const S& lo, const S& hi, const S& f, const S& unit) {
@@ -191,7 +194,8 @@ inline z3::expr lemma_d(const z3::expr& f, const z3::expr& d, const z3::expr& n,
 //       (f + 1) 2^90 with f = floor(xk / 2^90) fit __int128, f fits int64_t;
 //   C4. crossing_on's Bernstein test: curve_interval_bernstein3 for 0 <= k < 2^30 fits
 //       __int128 (k^4 included), |3 b 2^90| <= kInterval; the floor f of the smallest over
-//       3 2^90, f 3 2^90, (f + 1) 3 2^90 fit, f fits int64_t;
+//       3 2^90, f 3 2^90, (f + 1) 3 2^90 fit, f fits int64_t; fast_curve_crossings' scan:
+//       curve_interval_bernstein3 at 6 bits of g for 0 <= i < 64 fits, |3 b 2^18| <= kScan;
 //   C5. rational_quadratic_crossings: |discriminant| <= kDiscQuad, the square root's steps,
 //       p, q, the slope, |numerator| <= kNum2, q^2, and the threshold's floor f, f q^2, f - 1
 //       fit (f in int64_t), for a root p / q in [0, 1] of either form (two roots, or linear);
@@ -299,17 +303,18 @@ template <class F> void prove_curve_budget(Prover& pr, unsigned parts = kAllCurv
       h.push_back(abs_at_most(c[j].expr(), bound[j]));
     return c;
   };
-  // Instances of lemma P for k^m (0 <= k <= 2^30), m = 2..4, and for c_j k^m, m = 1..3.
+  // Instances of lemma P for k^m (0 <= k <= 2^bits, bits 30 unless given), m = 2..4, and for
+  // c_j k^m, m = 1..3.
   const auto power_hints = [&](const std::array<W, 4>& c, const std::array<Int128, 4>& bound,
-                               const z3::expr& k, std::vector<z3::expr>& h) {
+                               const z3::expr& k, std::vector<z3::expr>& h, int bits = 30) {
     z3::expr km = k;
     for (int m = 1; m <= 4; ++m) {
       if (m > 1) {
-        h.push_back(product_bound128(km, pow2(30 * (m - 1)), k, pow2(30)));
+        h.push_back(product_bound128(km, pow2(bits * (m - 1)), k, pow2(bits)));
         km = km * k;
       }
       for (std::size_t j = 0; m < 4 && j < 4; ++j)
-        h.push_back(product_bound128(c[j].expr(), bound[j], km, pow2(30 * m)));
+        h.push_back(product_bound128(c[j].expr(), bound[j], km, pow2(bits * m)));
     }
   };
 
@@ -361,23 +366,35 @@ template <class F> void prove_curve_budget(Prover& pr, unsigned parts = kAllCurv
              dom.obligations_since(mark));
   }
 
-  // C4: the Bernstein test of crossing_on.
-  if ((parts & kC4) != 0 && needs_lemmas("C4: Bernstein coefficients on [k, k + 1] / 2^30")) {
+  // C4: the Bernstein test of crossing_on, on [k, k + 1] / 2^30, and the scan of
+  // fast_curve_crossings, on [i, i + 1] / 64: the Bernstein coefficients (from `bernstein`) of a
+  // coordinate with |c_j| <= kCoef on [k, k + 1] / 2^bits, 0 <= k < 2^bits, fit __int128 with
+  // |.| <= bound.
+  const auto interval_theorem = [&](const std::string& name, const std::string& tag, int bits,
+                                    Int128 bound, const auto& bernstein) {
+    if ((parts & kC4) == 0 || !needs_lemmas(name))
+      return;
     std::vector<z3::expr> h;
-    const std::array<W, 4> e = coef_vars("be", F::kCoef, h);
-    const W k = wvar("bk", Unit::kInteger);
-    h.push_back(0 <= k.expr() && k.expr() < big(pow2(F::kFastBits)));
-    power_hints(e, F::kCoef, k.expr(), h);
+    const std::array<W, 4> e = coef_vars(tag + "e", F::kCoef, h);
+    const W k = wvar(tag + "k", Unit::kInteger);
+    h.push_back(0 <= k.expr() && k.expr() < big(pow2(bits)));
+    power_hints(e, F::kCoef, k.expr(), h, bits);
     const std::size_t mark = dom.mark();
-    const std::array<W, 4> xb = F::interval_bernstein3(e, k);
     std::vector<z3::expr> goal;
-    for (const W& v : xb)
-      goal.push_back(abs_at_most(v.expr(), F::kInterval));
-    pr.prove("C4: Bernstein coefficients on [k, k + 1] / 2^30 (times 3 2^90, k^4 included) fit "
-             "__int128, |.| <= " +
-                 magnitude(F::kInterval),
-             h, all(goal), dom.obligations_since(mark));
-  }
+    for (const W& v : bernstein(e, k))
+      goal.push_back(abs_at_most(v.expr(), bound));
+    pr.prove(name + " fit __int128, |.| <= " + magnitude(bound), h, all(goal),
+             dom.obligations_since(mark));
+  };
+  interval_theorem("C4: Bernstein coefficients on [k, k + 1] / 2^30 (times 3 2^90, k^4 included)",
+                   "b", F::kFastBits, F::kInterval, [](const std::array<W, 4>& e, const W& k) {
+                     return F::interval_bernstein3(e, k);
+                   });
+  interval_theorem("C4: the scan's Bernstein coefficients of g on [i, i + 1] / 64 (times 3 2^18)",
+                   "g", formula::kCurveScanBits, F::kScan,
+                   [](const std::array<W, 4>& e, const W& k) {
+                     return F::template interval_bernstein3<W, formula::kCurveScanBits>(e, k);
+                   });
   if ((parts & kC4) != 0) {
     std::vector<z3::expr> h;
     const W xmin = wvar("bxmin", Unit::kInteger), xmax = wvar("bxmax", Unit::kInteger);

@@ -51,6 +51,7 @@ enum Bound {
   kScaledHB,
   kLipB,
   kIntervalB,
+  kScanB,
   kDiscQuadB,
   kNum2B,
   kHB,
@@ -69,6 +70,7 @@ template <Bound Which, int Bits, MutantName Name> struct Smaller : CurveKernelMo
   static constexpr Int128 kScaledH = half(kScaledHB, Base::kScaledH);
   static constexpr Int128 kLip = half(kLipB, Base::kLip);
   static constexpr Int128 kInterval = half(kIntervalB, Base::kInterval);
+  static constexpr Int128 kScan = half(kScanB, Base::kScan);
   static constexpr Int128 kDiscQuad = half(kDiscQuadB, Base::kDiscQuad);
   static constexpr Int128 kNum2 = half(kNum2B, Base::kNum2);
   static constexpr Int128 kH = half(kHB, Base::kH);
@@ -82,6 +84,7 @@ using ScaledHHalved = Smaller<kScaledHB, 1, "h's P(k / 2^30) 2^90 claimed below 
 using LipHalved = Smaller<kLipB, 1, "L 2^60 claimed below 2^88 (C3)">;
 using IntervalHalved =
     Smaller<kIntervalB, 1, "interval Bernstein coefficients claimed below 2^119 (C4)">;
+using ScanHalved = Smaller<kScanB, 1, "the scan's Bernstein coefficients claimed below 2^47 (C4)">;
 using DiscQuadHalved = Smaller<kDiscQuadB, 1, "quadratic discriminant claimed below 2^51 (C5)">;
 using Num2Halved = Smaller<kNum2B, 1, "quadratic x numerator claimed below 2^78 (C5)">;
 using HHalved = Smaller<kHB, 1, "h's coefficients claimed within 7 2^24 (C6)">;
@@ -135,7 +138,7 @@ MutationSelfcheck mutation_selfcheck() {
            refute<CurveRange24, CoefHalved, BernHalved>(kCurveBudgetPart<kC1>),
            refute<ScaledHalved, ScaledHHalved>(kCurveBudgetPart<kC2>),
            refute<LipschitzSigned, LipHalved>(kCurveBudgetPart<kC3>),
-           refute<IntervalHalved>(kCurveBudgetPart<kC4>),
+           refute<IntervalHalved, ScanHalved>(kCurveBudgetPart<kC4>),
            refute<DiscQuadHalved, Num2Halved>(kCurveBudgetPart<kC5>),
            refute<HHalved, DiscHHalved, Num3Short>(kCurveBudgetPart<kC6>),
            refute<TieByDirection, EndParityFlipped, QuadraticEndParityFlipped>(kTiePartition)},

@@ -62,5 +62,38 @@ TEST(PathCurvePaths, FastPathEqualsRationalPath) {
   EXPECT_GT(crossings, 1000);
 }
 
+// A cubic whose y control polygon oscillates (21.7, 3.7, 21.8, -64.8 px): on most rows its
+// Bernstein coefficients on [0, 1] change sign three times but the curve crosses once (complex
+// roots near [0, 1]), so the root estimates give up. The scan's Descartes count on each of the
+// 64 intervals decides those rows in integers; they went to the rational path before, which
+// took 42 s under the sanitizers for one fuzz_path input with this curve (over libFuzzer's 10 s
+// hang limit in CI).
+// rule: PATH.CURVE.SAMPLE
+TEST(PathCurvePaths, ScanDecidesRowsWhereDescartesOverCounts) {
+  Curve c;
+  c.degree = 3;
+  c.p = {path::Point{234, 5560}, path::Point{-24691, 950}, path::Point{4416, 5592},
+         path::Point{6400, -16586}};
+  std::vector<Crossing> integer;
+  int rows = 0, compared = 0, one_crossing = 0;
+  for (std::int64_t sy = -16586; sy <= 5592; sy += 16) {
+    for (const Tie t : {Tie{true, true}, Tie{false, false}}) {
+      ASSERT_TRUE(path::detail::curve_crossings_integer(c, sy, t, integer)) << "row " << sy;
+      ++rows;
+      one_crossing += integer.size() == 1 && sy > 950 && sy < 5560 ? 1 : 0;
+      // The rational path on every eighth row (it is the slow one, under the sanitizers).
+      if (rows % 8 != 0)
+        continue;
+      const auto exact = sorted(path::detail::curve_crossings_exact(c, sy, t));
+      ASSERT_EQ(sorted(integer), exact) << "row " << sy;
+      ASSERT_EQ(sorted(path::detail::curve_crossings(c, sy, t)), exact) << "row " << sy;
+      ++compared;
+    }
+  }
+  EXPECT_GT(rows, 2000);
+  EXPECT_GT(compared, 300);
+  EXPECT_GT(one_crossing, 400); // rows between the polygon's turns
+}
+
 } // namespace
 } // namespace rastrules::test

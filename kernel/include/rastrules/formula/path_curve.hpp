@@ -18,6 +18,9 @@ namespace rastrules::formula {
 
 // The dyadic grid of the fast path: parameters t = k / 2^kCurveFastBits.
 inline constexpr int kCurveFastBits = 30;
+// The scan of the fast path: [0, 1] cut into the 2^kCurveScanBits intervals [i, i + 1] / 64,
+// each with its roots counted by the Bernstein coefficients of g there.
+inline constexpr int kCurveScanBits = 6;
 
 // Returns the power-basis coefficients (lowest degree first) of one coordinate of a quadratic
 // (q[0..2], cubic = false; the last coefficient is 0) or cubic (q[0..3]) Bézier curve.
@@ -63,15 +66,15 @@ constexpr W curve_lipschitz_scaled(const std::array<I, 4>& e, Select select) {
   return static_cast<W>(a1 + I(2) * a2 + I(3) * a3) * (u1 * u1);
 }
 
-// Returns 3 times the Bernstein coefficients of degree 3 of x on [k, k + 1] / 2^30, scaled by
-// 2^90: the power coefficients in s of x((k + s) / 2^30) 2^90 are
-// p_i = sum_{j >= i} e_j C(j, i) k^(j - i) 2^(30 (3 - j)), and 3 b = (3 p0, 3 p0 + p1,
-// 3 p0 + 2 p1 + p2, 3 (p0 + p1 + p2 + p3)).
+// Returns 3 times the Bernstein coefficients of degree 3 of x on [k, k + 1] / 2^B, scaled by
+// 2^(3 B) (B = Bits: 30, the fast path's grid; 6, its scan): the power coefficients in s of
+// x((k + s) / 2^B) 2^(3 B) are p_i = sum_{j >= i} e_j C(j, i) k^(j - i) 2^(B (3 - j)), and
+// 3 b = (3 p0, 3 p0 + p1, 3 p0 + 2 p1 + p2, 3 (p0 + p1 + p2 + p3)).
 // rule: PATH.CURVE.SAMPLE
-template <class W>
+template <class W, int Bits = kCurveFastBits>
 constexpr std::array<W, 4> curve_interval_bernstein3(const std::array<W, 4>& e, W k) {
   constexpr int kBinom[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
-  const W u1 = W(std::int64_t{1} << kCurveFastBits);
+  const W u1 = W(std::int64_t{1} << Bits);
   const std::array<W, 4> pow{u1 * u1 * u1, u1 * u1, u1, W(1)}; // 2^(30 (3 - j))
   std::array<W, 4> p{W(0), W(0), W(0), W(0)};
   for (int j = 0; j <= 3; ++j) {
