@@ -936,20 +936,12 @@ bool cubic_end_crossings(const Cubic& g, const Cubic& x, Tie t, std::vector<Cros
   return v == 0 || estimated_crossings(hc, x, v, t, out, flips);
 }
 
-bool fast_curve_crossings(const Cubic& g, const Cubic& x, Tie t, std::vector<Crossing>& out) {
+// The crossings of g with no root at an end (g(0), g(1) != 0) where the root estimates gave
+// up, by a scan of 64 intervals; `out` is empty here and left to the caller to clear when false
+// is returned.
+bool scan_crossings(const Cubic& g, const Cubic& x, std::vector<Crossing>& out) {
   constexpr std::int64_t kOne = std::int64_t{1} << kFastBits;
-  if (g.c[0] == 0 || formula::curve_at_one(g.c) == 0)
-    return false; // a root at an end: the half-open rule needs derivatives
-  // Bernstein coefficients of g on [0, 1], times 3: their sign variations bound the roots.
-  const int v = bernstein_variations(g);
-  if (v == 0)
-    return true;
-  // First the estimates of root_estimates(), then (when a check fails) a scan of 64 intervals;
-  // `out` is empty here and left to the caller to clear when false is returned.
   std::vector<Crossing>& found = out;
-  if (estimated_crossings(g, x, v, t, found))
-    return true;
-  found.clear();
   // The scan: on each interval [i, i + 1] / 64, Descartes' rule on g's Bernstein coefficients
   // there (exact, in __int128) counts its roots: no sign variation, no root; one, exactly one
   // simple root, which is confined below; more (roots closer than 1/64 apart, a multiple root,
@@ -1088,8 +1080,9 @@ bool integer_crossings(int n, const std::array<std::int64_t, 4>& xs,
   gi.c[0] -= sy;
   xi.c = formula::curve_power_coefficients(xs, n == 3);
   // No root at an end: the estimates first (most rows of a glyph's curves), whose regions
-  // also take the dyadic roots.
-  if (gi.c[0] != 0 && formula::curve_at_one(gi.c) != 0) {
+  // also take the dyadic roots; the scan last.
+  const bool no_end_root = gi.c[0] != 0 && formula::curve_at_one(gi.c) != 0;
+  if (no_end_root) {
     const int v = bernstein_variations(gi);
     if (v == 0 || estimated_crossings(gi, xi, v, t, out))
       return true;
@@ -1101,7 +1094,7 @@ bool integer_crossings(int n, const std::array<std::int64_t, 4>& xs,
   if (n == 3 && cubic_end_crossings(gi, xi, t, out))
     return true;
   out.clear();
-  if (fast_curve_crossings(gi, xi, t, out))
+  if (no_end_root && scan_crossings(gi, xi, out))
     return true;
   out.clear();
   return false;

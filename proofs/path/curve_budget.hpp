@@ -6,7 +6,7 @@
 // test, rastrules/formula/path_curve.hpp, on Sym<std::int64_t> (I) and Sym<__int128> (W), as
 // kernel/src/path_curve.cpp calls them. What the kernel writes on concrete types and this file
 // restates, next to the kernel line it mirrors:
-//   - `gi.c[0] -= sy` (curve_crossings_impl) and the int64_t sum g(1) of fast_curve_crossings;
+//   - `gi.c[0] -= sy` (curve_crossings_impl) and the int64_t sum g(1) of integer_crossings;
 //   - the floors: `xk >> 90` (crossing_on) and wide_floor_div(n, d) (n / d, less one when
 //     n % d != 0 and n < 0; d > 0), entering as f d <= n < (f + 1) d;
 //   - the integer square root s of a discriminant d >= 0 (the double estimate corrected by
@@ -194,7 +194,7 @@ inline z3::expr lemma_d(const z3::expr& f, const z3::expr& d, const z3::expr& n,
 //       (f + 1) 2^90 with f = floor(xk / 2^90) fit __int128, f fits int64_t;
 //   C4. crossing_on's Bernstein test: curve_interval_bernstein3 for 0 <= k < 2^30 fits
 //       __int128 (k^4 included), |3 b 2^90| <= kInterval; the floor f of the smallest over
-//       3 2^90, f 3 2^90, (f + 1) 3 2^90 fit, f fits int64_t; fast_curve_crossings' scan:
+//       3 2^90, f 3 2^90, (f + 1) 3 2^90 fit, f fits int64_t; scan_crossings:
 //       curve_interval_bernstein3 at 6 bits of g for 0 <= i < 64 fits, |3 b 2^18| <= kScan;
 //   C5. rational_quadratic_crossings: |discriminant| <= kDiscQuad, the square root's steps,
 //       p, q, the slope, |numerator| <= kNum2, q^2, and the threshold's floor f, f q^2, f - 1
@@ -280,7 +280,7 @@ template <class F> void prove_curve_budget(Prover& pr, unsigned parts = kAllCurv
     const std::array<I, 4> c = F::power_coefficients(q, cubic);
     const std::array<I, 4> g{c[0] - sy, c[1], c[2], c[3]}; // gi.c[0] -= sy
     const std::array<I, 4> b = F::bernstein3(g);
-    const I g1 = F::at_one(g); // fast_curve_crossings' g(1)
+    const I g1 = F::at_one(g); // integer_crossings' g(1)
     const std::array<Int128, 4>& bound = cubic ? F::kCoef : F::kCoefQuad;
     std::vector<z3::expr> goal;
     for (std::size_t j = 0; j < 4; ++j) {
@@ -367,7 +367,7 @@ template <class F> void prove_curve_budget(Prover& pr, unsigned parts = kAllCurv
   }
 
   // C4: the Bernstein test of crossing_on, on [k, k + 1] / 2^30, and the scan of
-  // fast_curve_crossings, on [i, i + 1] / 64: the Bernstein coefficients (from `bernstein`) of a
+  // scan_crossings, on [i, i + 1] / 64: the Bernstein coefficients (from `bernstein`) of a
   // coordinate with |c_j| <= kCoef on [k, k + 1] / 2^bits, 0 <= k < 2^bits, fit __int128 with
   // |.| <= bound.
   const auto interval_theorem = [&](const std::string& name, const std::string& tag, int bits,
