@@ -3,8 +3,11 @@
 
 #include "gpu_common.hpp"
 
+#include "drivers.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <variant>
 
 namespace rastrules::driver::detail {
@@ -57,8 +60,12 @@ std::string unsupported_scene(const Scene& scene, const DriverInfo& info, double
   // rule: DRIVER.VALUES
   // The adapters draw window-space coverage: a scene with pipeline state (which `check` reads
   // since drivers may report values) is refused, not drawn from its empty vertex lists.
-  if (const auto field = first_pipeline_field(scene))
-    return "pipeline state (" + *field + ", SCENE.PIPELINE) not supported by the adapter";
+  if (const auto field = first_pipeline_field(scene)) {
+    if (!checks.pipeline)
+      return "pipeline state (" + *field + ", SCENE.PIPELINE) not supported by the adapter";
+    if (std::string why = checks.pipeline(scene); !why.empty())
+      return why;
+  }
   const MultisampleState& ms = scene.msaa;
   if (ms.pattern.kind != PatternKind::kStandard) {
     return "sample pattern '" + std::string(to_string(ms.pattern.kind)) + "' not supported (" +
@@ -97,7 +104,8 @@ std::string unsupported_scene(const Scene& scene, const DriverInfo& info, double
            std::string(checks.k_limit) + ": K <= " + std::to_string(max_k) + ")";
   }
   const std::uint64_t bytes = slots * static_cast<std::uint64_t>(std::max(scene.width, 0)) *
-                              static_cast<std::uint64_t>(std::max(scene.height, 0)) * 4U;
+                              static_cast<std::uint64_t>(std::max(scene.height, 0)) * 4U *
+                              (1U + scene.attributes.size());
   if (bytes > kMaxCoverageBytes) {
     return "coverage buffer of " + std::to_string(bytes) + " bytes exceeds " +
            std::to_string(kMaxCoverageBytes);
@@ -106,6 +114,8 @@ std::string unsupported_scene(const Scene& scene, const DriverInfo& info, double
 }
 
 DrawResult GpuDriver::draw(const Scene& scene) {
+  if (has_pipeline_state(scene))
+    return detail::coverage_of(draw_values(scene));
   if (std::string why = unsupported(scene); !why.empty())
     return DriverError{"unsupported: " + why};
   auto prepared = prepare(scene);
@@ -118,6 +128,136 @@ DrawResult GpuDriver::draw(const Scene& scene) {
     return std::vector<Fragment>{};
   // Slots and vertices: one draw per scene primitive, vertices as float32 exactly as read.
   return draw_packed(scene, pack_scene(scene), w, h);
+}
+
+// rule: DRIVER.VALUES
+ValuesResult GpuDriver::draw_values(const Scene& scene) {
+  if (!has_pipeline_state(scene))
+    return Driver::draw_values(scene);
+  if (std::string why = unsupported(scene); !why.empty())
+    return DriverError{"unsupported: " + why};
+  if (const auto e = pipe::validate(scene))
+    return DriverError{"invalid scene: " + e->what()};
+  // Positions are checked as the reference checks them while it runs (PIPE.INPUT.POSITION):
+  // finite and at most 2^64 in magnitude, given and after the transform.
+  for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+    const Primitive& p = scene.primitives[i];
+    for (std::size_t j = 0; j < p.pos.size(); ++j) {
+      for (const pipe::Vec4f& q : {p.pos[j], clip_position(scene, p.pos[j])}) {
+        for (const float c : q) {
+          if (!std::isfinite(c) || std::fabs(static_cast<double>(c)) > pipe::kMaxPosition) {
+            return DriverError{"invalid scene: primitives[" + std::to_string(i) + "].pos[" +
+                               std::to_string(j) + "]: not finite or beyond 2^64 (" +
+                               "PIPE.INPUT.POSITION)"};
+          }
+        }
+      }
+    }
+  }
+  const auto w = static_cast<std::uint32_t>(scene.width);
+  const auto h = static_cast<std::uint32_t>(scene.height);
+  if (w == 0 || h == 0 || scene.primitives.empty())
+    return Drawing{};
+  return draw_pipeline(scene, w, h);
+}
+
+ValuesResult GpuDriver::draw_pipeline(const Scene&, std::uint32_t, std::uint32_t) {
+  return DriverError{"unsupported: pipeline state not supported by the adapter"};
+}
+
+pipe::Vec4f clip_position(const Scene& scene, pipe::Vec4f p) {
+  // rule: PIPE.TRANSFORM.FLOAT32
+  // In the reference's order, each product rounded to float32 as the reference rounds it.
+  if (scene.model)
+    p = pipe::transform(*scene.model, p);
+  if (scene.view)
+    p = pipe::transform(*scene.view, p);
+  if (scene.projection)
+    p = pipe::transform(*scene.projection, p);
+  return p;
+}
+
+pipe::Viewport viewport_of(const Scene& scene) {
+  return scene.viewport.value_or(pipe::Viewport{0.0f, 0.0f, static_cast<float>(scene.width),
+                                                static_cast<float>(scene.height), 0.0f, 1.0f});
+}
+
+// rule: DRIVER.VALUES, PIPE.CLIP.LINE
+PackedPipeline pack_pipeline(const Scene& scene) {
+  PackedPipeline out;
+  const std::size_t n = scene.attributes.size();
+  out.stride = static_cast<std::uint32_t>(4 + n);
+  const pipe::Viewport vp = viewport_of(scene);
+  const bool depth_clip = !scene.depth || scene.depth->clip;
+  for (const Primitive& p : scene.primitives) {
+    out.first_slot.push_back(out.slots);
+    const bool window = p.pos.empty();
+    out.window_space.push_back(window);
+    const std::size_t nv = window ? p.v.size() : p.pos.size();
+    out.slots += p.type == PrimitiveType::kLineStrip
+                     ? (nv < 2 ? 0U : static_cast<std::uint32_t>(nv - 1))
+                     : 1U;
+    std::vector<pipe::Vec4f> clip;
+    for (std::size_t j = 0; j < nv; ++j) {
+      if (window) {
+        out.vertices.insert(out.vertices.end(),
+                            {p.v[j][0], p.v[j][1], p.z.empty() ? 0.0f : p.z[j], 1.0f});
+      } else {
+        clip.push_back(clip_position(scene, p.pos[j]));
+        out.vertices.insert(out.vertices.end(), clip.back().begin(), clip.back().end());
+      }
+      for (std::size_t k = 0; k < n; ++k)
+        out.vertices.push_back(p.attr.empty() ? 0.0f : p.attr[j][k]);
+    }
+    bool clipped = false;
+    if (!window && p.type == PrimitiveType::kLineStrip) {
+      const pipe::ClipVolume vol = pipe::clip_volume(clip, vp, depth_clip);
+      clipped = std::any_of(clip.begin(), clip.end(),
+                            [&](const pipe::Vec4f& c) { return !pipe::inside(vol, c); });
+    }
+    out.clipped_strip.push_back(clipped);
+  }
+  return out;
+}
+
+// rule: DRIVER.VALUES
+Drawing decode_values(const Scene& scene, const PackedPipeline& packed,
+                      const std::uint32_t* coverage, const float* values,
+                      const std::vector<std::vector<std::optional<pipe::DepthValue>>>* depth,
+                      std::uint32_t w, std::uint32_t h) {
+  Drawing out;
+  const std::uint32_t all = full_mask(scene.msaa.count());
+  const std::size_t n = scene.attributes.size();
+  const std::size_t plane = std::size_t{w} * h;
+  for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+    const Primitive& p = scene.primitives[i];
+    const bool strip = p.type == PrimitiveType::kLineStrip;
+    const std::size_t nv = packed.window_space[i] ? p.v.size() : p.pos.size();
+    const std::uint32_t slots = strip ? (nv < 2 ? 0U : static_cast<std::uint32_t>(nv - 1)) : 1U;
+    for (std::uint32_t s = 0; s < slots; ++s) {
+      const std::size_t slot = packed.first_slot[i] + s;
+      for (std::size_t k = 0; k < plane; ++k) {
+        const std::uint32_t m = coverage[slot * plane + k] & all;
+        if (m == 0)
+          continue;
+        Fragment f(static_cast<std::uint32_t>(i), static_cast<std::int32_t>(k % w),
+                   static_cast<std::int32_t>(k / w), m);
+        FragmentValues v;
+        if (strip && packed.clipped_strip[i])
+          v.part = s;
+        else if (strip)
+          f.seg = s;
+        const float* a = values + (slot * plane + k) * n;
+        v.attr.assign(a, a + n);
+        if (depth != nullptr && !(*depth)[slot].empty() && (*depth)[slot][k])
+          v.depth.push_back(*(*depth)[slot][k]);
+        out.fragments.push_back(f);
+        out.values.push_back(std::move(v));
+      }
+    }
+  }
+  sort_drawing(out);
+  return out;
 }
 
 PackedScene pack_scene(const Scene& scene) {

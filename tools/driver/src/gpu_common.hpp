@@ -5,20 +5,24 @@
 // storage buffer of one 32-bit sample mask per pixel and coverage slot (one slot per primitive,
 // one per segment of a line strip) that the fragment shader ORs gl_SampleMaskIn into. This
 // header holds the API-independent parts of that scheme; what differs (the API calls, the
-// support rules of each API) stays in each adapter.
+// support rules of each API) stays in each adapter. Pipeline scenes (DRIVER.VALUES) add a
+// position of four floats and the attributes to each vertex, and a plane of values per slot.
 // Implements: DRIVER.LAVAPIPE.COVERAGE, DRIVER.LAVAPIPE.POSITION, DRIVER.LAVAPIPE.SUPPORT,
-//             DRIVER.OPENGL.COVERAGE, DRIVER.OPENGL.POSITION, DRIVER.OPENGL.SUPPORT
+//             DRIVER.OPENGL.COVERAGE, DRIVER.OPENGL.POSITION, DRIVER.OPENGL.SUPPORT,
+//             DRIVER.VALUES
 
 #pragma once
 
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "rastrules/driver/driver.hpp"
+#include "rastrules/pipeline.hpp"
 #include "rastrules/scene.hpp"
 
 namespace rastrules::driver::detail {
@@ -53,11 +57,15 @@ struct SupportChecks {
   std::function<std::string(const MultisampleState&)> msaa;
   // Checks each line or line strip primitive (required).
   std::function<std::string(const Scene&, const Primitive&)> line;
+  // Optional: the adapter draws scenes with pipeline state (DRIVER.VALUES); returns why it
+  // cannot draw this one, or "". Without it such scenes are refused.
+  std::function<std::string(const Scene&)> pipeline;
 };
 
 // Returns why an adapter with this info and largest K cannot draw the scene, or "": the
-// sample pattern, the sample count, the shading rate, the target size, each line, K and the
-// coverage buffer's size, in that order.
+// pipeline state, the sample pattern, the sample count, the shading rate, the target size, each
+// line, K and the coverage buffer's size (with one float per attribute beside each mask), in
+// that order.
 [[nodiscard]] std::string unsupported_scene(const Scene& scene, const DriverInfo& info,
                                             double max_k, const SupportChecks& checks);
 
@@ -76,6 +84,39 @@ struct PackedScene {
                                                     const std::uint32_t* coverage, std::uint32_t w,
                                                     std::uint32_t h);
 
+// A pipeline scene's vertices (DRIVER.VALUES), packed for one draw per primitive: per vertex
+// the position (clip space after the scene's transform, PIPE.TRANSFORM.FLOAT32, computed as the
+// reference computes it; or window x, y, z and w = 1) and one float per declared attribute.
+struct PackedPipeline {
+  std::vector<std::uint32_t> first_slot; // per scene primitive
+  std::vector<bool> window_space;        // per scene primitive: v given, not pos
+  // Per scene primitive: a line strip with a vertex outside the clip volume, whose segments
+  // are clipped parts (PIPE.CLIP.LINE: part = segment index, no seg).
+  std::vector<bool> clipped_strip;
+  std::vector<float> vertices;
+  std::uint32_t stride = 4; // floats per vertex: 4 + attributes
+  std::uint32_t slots = 0;
+};
+[[nodiscard]] PackedPipeline pack_pipeline(const Scene& scene);
+
+// Returns the clip-space position of p under the scene's transform (PIPE.TRANSFORM.FLOAT32:
+// model, then view, then projection, as the reference applies them).
+[[nodiscard]] pipe::Vec4f clip_position(const Scene& scene, pipe::Vec4f p);
+
+// Returns the scene's viewport, or the default one (the whole target, depth [0, 1]).
+[[nodiscard]] pipe::Viewport viewport_of(const Scene& scene);
+
+// Decodes a pipeline draw: per slot plane of w * h sample masks (coverage) and of w * h *
+// attributes floats (values), the fragments with their attributes and, when depth holds a
+// plane per slot, the stored depth of each covered sample (single-sample targets: the pixel's
+// one value; none where the plane has none). Sorted with sort_drawing().
+// rule: DRIVER.VALUES
+[[nodiscard]] Drawing
+decode_values(const Scene& scene, const PackedPipeline& packed, const std::uint32_t* coverage,
+              const float* values,
+              const std::vector<std::vector<std::optional<pipe::DepthValue>>>* depth,
+              std::uint32_t w, std::uint32_t h);
+
 // The base of the GPU adapters: not copyable, its info and largest K filled in by the adapter
 // when it opens, unsupported() from unsupported_scene() with the adapter's own checks, and
 // draw(), which rejects unsupported and invalid scenes, answers empty targets and scenes
@@ -92,9 +133,21 @@ public:
     return unsupported_scene(scene, info_, max_k_, support_checks());
   }
 
+  // A scene with pipeline state is drawn by draw_values() and reported without its values.
   [[nodiscard]] DrawResult draw(const Scene& scene) final;
 
+  // rule: DRIVER.VALUES
+  // A scene without pipeline state: draw()'s fragments. Otherwise (only when the adapter's
+  // support_checks() has a pipeline check) rejects unsupported and invalid scenes (pipe::
+  // validate), answers empty targets and scenes, and hands the rest to draw_pipeline().
+  [[nodiscard]] ValuesResult draw_values(const Scene& scene) final;
+
 protected:
+  // Draws a supported, valid pipeline scene with a w x h target and at least one primitive
+  // (DRIVER.VALUES). The default refuses: only adapters with a pipeline check draw them.
+  [[nodiscard]] virtual ValuesResult draw_pipeline(const Scene& scene, std::uint32_t w,
+                                                   std::uint32_t h);
+
   // The adapter's part of unsupported() (DRIVER.*.SUPPORT).
   [[nodiscard]] virtual SupportChecks support_checks() const = 0;
 

@@ -3,9 +3,10 @@
 // platform, no window and no pbuffer), in a GL 4.3+ core context, and reads back per-primitive,
 // per-sample coverage from a shader storage buffer that the fragment shader ORs
 // gl_SampleMaskIn into, like the lavapipe adapter. The window origin is made upper-left with
-// glClipControl, so the framebuffer is y-down like the scene.
+// glClipControl, so the framebuffer is y-down like the scene. Scenes with pipeline state are
+// drawn with a program for their attributes, and their values and stored depths read back.
 // Implements: DRIVER.OPENGL.DEVICE, DRIVER.OPENGL.ORIGIN, DRIVER.OPENGL.POSITION,
-//             DRIVER.OPENGL.COVERAGE, DRIVER.OPENGL.SUPPORT
+//             DRIVER.OPENGL.COVERAGE, DRIVER.OPENGL.SUPPORT, DRIVER.OPENGL.VALUES
 
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
@@ -15,10 +16,14 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <map>
+#include <optional>
 #include <string>
+#include <tuple>
 #include <variant>
 #include <vector>
 
@@ -36,6 +41,7 @@ constexpr GLint kUniformSlot = 1;
 constexpr GLint kUniformWidth = 2;
 constexpr GLint kUniformHeight = 3;
 constexpr GLint kUniformSlots = 4;
+constexpr GLint kUniformWindow = 5; // opengl_values.vert: 1 for window-space vertices
 
 std::string egl_failed(const char* what) {
   return std::string("opengl: ") + what + " failed (EGL error 0x" + [] {
@@ -120,6 +126,27 @@ public:
       }
       return {};
     };
+    // rule: DRIVER.OPENGL.VALUES
+    checks.pipeline = [](const Scene& s) -> std::string {
+      if (s.depth && (s.depth->bias.bias != 0 || s.depth->bias.slope_scaled != 0.0f)) {
+        return "depth bias not supported by the adapter's values (PIPE.DEPTH.BIAS)";
+      }
+      const pipe::Viewport vp = detail::viewport_of(s);
+      for (const Primitive& p : s.primitives) {
+        if (!p.pos.empty())
+          continue;
+        // Window-space vertices reach GL through the viewport [-K, K] with depth [0, 1]:
+        // exact for x, y and z, but w cannot be given to GL without a product that rounds.
+        if (std::any_of(p.w.begin(), p.w.end(), [](float w) { return w != 1.0f; }))
+          return "window-space w other than 1 not supported by the adapter's values";
+        if (std::any_of(p.z.begin(), p.z.end(),
+                        [&](float z) { return !(z >= vp.min_depth && z <= vp.max_depth); })) {
+          return "window-space z outside the viewport's depth range not supported by the "
+                 "adapter's values (GL would clip what the reference clamps)";
+        }
+      }
+      return {};
+    };
     return checks;
   }
 
@@ -176,45 +203,12 @@ public:
     glUniform1ui(kUniformHeight, h);
     glUniform1ui(kUniformSlots, slots);
 
-    // Multisampling and the sample mask (DRIVER.OPENGL.SUPPORT).
-    if (samples > 1) {
-      glEnable(GL_MULTISAMPLE);
-      glEnable(GL_SAMPLE_MASK);
-      glSampleMaski(0, scene.msaa.effective_mask());
-    } else {
-      glDisable(GL_SAMPLE_MASK);
-    }
+    set_sample_mask(scene);
 
     GLint first_vertex = 0;
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
       const Primitive& p = scene.primitives[i];
-      GLenum mode = GL_TRIANGLES;
-      switch (p.type) {
-      case PrimitiveType::kTriangle:
-        mode = GL_TRIANGLES;
-        if (scene.cull == CullMode::kNone) {
-          glDisable(GL_CULL_FACE);
-        } else {
-          glEnable(GL_CULL_FACE);
-          glCullFace(scene.cull == CullMode::kBack ? GL_BACK : GL_FRONT);
-        }
-        // rule: DRIVER.OPENGL.ORIGIN
-        // Under GL_UPPER_LEFT the sign of GL's window-space area is reversed, so the
-        // orientation is the one seen in the y-down image: clockwise on screen is GL_CW.
-        glFrontFace(scene.conventions.front_face == FrontFace::kClockwise ? GL_CW : GL_CCW);
-        break;
-      case PrimitiveType::kPoint:
-        mode = GL_POINTS;
-        glDisable(GL_CULL_FACE);
-        break;
-      case PrimitiveType::kLine:
-      case PrimitiveType::kLineStrip:
-        mode = p.type == PrimitiveType::kLine ? GL_LINES : GL_LINE_STRIP;
-        glDisable(GL_CULL_FACE);
-        break;
-      case PrimitiveType::kPath:
-        break; // never here: unsupported() refuses paths
-      }
+      const GLenum mode = set_primitive_state(scene, p);
       glUniform1ui(kUniformSlot, packed.first_slot[i]);
       const auto count = static_cast<GLsizei>(p.v.size());
       glDrawArrays(mode, first_vertex, count);
@@ -233,7 +227,343 @@ public:
     return detail::decode_coverage(scene, packed, cov.data(), w, h);
   }
 
+  // rule: DRIVER.OPENGL.VALUES
+  [[nodiscard]] ValuesResult draw_pipeline(const Scene& scene, std::uint32_t w,
+                                           std::uint32_t h) override {
+    if (eglMakeCurrent(display_, surface_, surface_, context_) != EGL_TRUE) {
+      return DriverError{egl_failed("eglMakeCurrent")};
+    }
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    const std::size_t n = scene.attributes.size();
+    GLuint program = 0;
+    if (std::string why = values_program(scene.attributes, &program); !why.empty())
+      return DriverError{why};
+    const detail::PackedPipeline packed = detail::pack_pipeline(scene);
+    const std::uint32_t samples = scene.msaa.count();
+    if (std::string why = ensure_framebuffer(w, h, samples); !why.empty())
+      return DriverError{why};
+
+    // The coverage and values buffers, cleared (DRIVER.OPENGL.VALUES).
+    const std::size_t plane = std::size_t{w} * h;
+    const std::size_t cov_words = std::max<std::size_t>(std::size_t{packed.slots} * plane, 1);
+    const std::size_t val_words = std::max<std::size_t>(cov_words * n, 1);
+    const GLuint zero = 0;
+    for (const auto& [buffer, words, binding] :
+         {std::tuple{coverage_, cov_words, 0U}, std::tuple{values_, val_words, 1U}}) {
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+      glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(words * 4U), nullptr,
+                   GL_DYNAMIC_READ);
+      glClearBufferSubData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, 0,
+                           static_cast<GLsizeiptr>(words * 4U), GL_RED_INTEGER, GL_UNSIGNED_INT,
+                           &zero);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer);
+    }
+    coverage_words_ = 0; // re-specified here: the coverage path sizes it again
+
+    glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(packed.vertices.size() * sizeof(float)),
+                 packed.vertices.data(), GL_STREAM_DRAW);
+    glBindVertexArray(vao_);
+    const auto stride = static_cast<GLsizei>(packed.stride * sizeof(float));
+    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, stride, nullptr);
+    glEnableVertexAttribArray(0);
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto loc = static_cast<GLuint>(1 + k);
+      glVertexAttribPointer(loc, 1, GL_FLOAT, GL_FALSE, stride,
+                            reinterpret_cast<const void*>((4 + k) * sizeof(float)));
+      glEnableVertexAttribArray(loc);
+    }
+    glUseProgram(program);
+    glUniform1ui(kUniformWidth, w);
+    glUniform1ui(kUniformHeight, h);
+    glUniform1ui(kUniformSlots, packed.slots);
+
+    // rule: PIPE.VIEWPORT.SCISSOR
+    const pipe::Viewport vp = detail::viewport_of(scene);
+    const pipe::ScissorRect sc = pipe::viewport_scissor(vp);
+    const std::int64_t x0 = std::clamp<std::int64_t>(sc.x0, 0, w);
+    const std::int64_t y0 = std::clamp<std::int64_t>(sc.y0, 0, h);
+    const std::int64_t x1 = std::clamp<std::int64_t>(sc.x1, x0, w);
+    const std::int64_t y1 = std::clamp<std::int64_t>(sc.y1, y0, h);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(static_cast<GLint>(x0), static_cast<GLint>(y0), static_cast<GLsizei>(x1 - x0),
+              static_cast<GLsizei>(y1 - y0));
+    // rule: PIPE.INTERP.FLAT
+    glProvokingVertex(scene.conventions.provoking == pipe::Provoking::kFirst
+                          ? GL_FIRST_VERTEX_CONVENTION
+                          : GL_LAST_VERTEX_CONVENTION);
+    set_sample_mask(scene);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    draw_primitives(scene, packed, vp, [&](std::size_t i, GLenum mode, GLint first, GLsizei count) {
+      glUniform1ui(kUniformSlot, packed.first_slot[i]);
+      glDrawArrays(mode, first, count);
+    });
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<std::uint32_t> cov(cov_words);
+    std::vector<float> vals(val_words);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, coverage_);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(cov_words * 4U),
+                       cov.data());
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, values_);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(val_words * 4U),
+                       vals.data());
+
+    // rule: DRIVER.OPENGL.VALUES, PIPE.DEPTH.FORMAT
+    // The stored depth: each slot alone into a cleared single-sample depth buffer of the
+    // scene's format, test GL_ALWAYS, read back exactly. Multisampled depth is not read back.
+    std::vector<std::vector<std::optional<pipe::DepthValue>>> depth;
+    if (scene.depth && samples == 1) {
+      if (std::string why = ensure_depth(w, h, scene.conventions.depth); !why.empty())
+        return DriverError{why};
+      depth.resize(packed.slots);
+      glBindFramebuffer(GL_FRAMEBUFFER, depth_framebuffer_);
+      glDepthMask(GL_TRUE);
+      glEnable(GL_DEPTH_TEST);
+      glDepthFunc(GL_ALWAYS);
+      std::array<std::vector<std::uint32_t>, 2> raw{std::vector<std::uint32_t>(plane),
+                                                    std::vector<std::uint32_t>(plane)};
+      draw_primitives(scene, packed, vp,
+                      [&](std::size_t i, GLenum mode, GLint first, GLsizei count) {
+                        const bool strip = mode == GL_LINE_STRIP;
+                        const GLsizei parts = strip ? count - 1 : 1;
+                        for (GLsizei s = 0; s < parts; ++s) {
+                          // Drawn twice, over a clear to 0 and over a clear to 1: a pixel the slot
+                          // covers holds the same value both times, any other pixel the two clear
+                          // values.
+                          for (std::size_t pass = 0; pass < 2; ++pass) {
+                            glDisable(GL_SCISSOR_TEST);
+                            glClearDepth(static_cast<double>(pass));
+                            glClear(GL_DEPTH_BUFFER_BIT);
+                            glEnable(GL_SCISSOR_TEST);
+                            if (strip)
+                              glDrawArrays(GL_LINES, first + s, 2);
+                            else
+                              glDrawArrays(mode, first, count);
+                            read_depth(scene.conventions.depth, w, h, raw[pass].data());
+                          }
+                          auto& out = depth[packed.first_slot[i] + static_cast<std::uint32_t>(s)];
+                          out.resize(plane);
+                          for (std::size_t k = 0; k < plane; ++k) {
+                            if (raw[0][k] != raw[1][k])
+                              continue;
+                            pipe::DepthValue v;
+                            if (scene.conventions.depth == pipe::DepthFormat::kD32F)
+                              v.f = std::bit_cast<float>(raw[0][k]);
+                            else
+                              v.unorm = raw[0][k];
+                            out[k] = v;
+                          }
+                        }
+                      });
+      glDisable(GL_DEPTH_TEST);
+      glDisable(GL_DEPTH_CLAMP);
+    }
+    glDisable(GL_DEPTH_CLAMP);
+    for (std::size_t k = 0; k < n; ++k)
+      glDisableVertexAttribArray(static_cast<GLuint>(1 + k));
+    if (GLenum err = glGetError(); err != GL_NO_ERROR) {
+      return DriverError{"opengl: GL error " + std::to_string(err) + " while drawing values"};
+    }
+    return detail::decode_values(scene, packed, cov.data(), vals.data(),
+                                 depth.empty() ? nullptr : &depth, w, h);
+  }
+
 private:
+  // Multisampling and the sample mask (DRIVER.OPENGL.SUPPORT).
+  static void set_sample_mask(const Scene& scene) {
+    if (scene.msaa.count() > 1) {
+      glEnable(GL_MULTISAMPLE);
+      glEnable(GL_SAMPLE_MASK);
+      glSampleMaski(0, scene.msaa.effective_mask());
+    } else {
+      glDisable(GL_SAMPLE_MASK);
+    }
+  }
+
+  // Sets the culling and front face of a primitive (none but for triangles) and returns its
+  // draw mode.
+  // rule: DRIVER.OPENGL.SUPPORT, DRIVER.OPENGL.ORIGIN
+  static GLenum set_primitive_state(const Scene& scene, const Primitive& p) {
+    glDisable(GL_CULL_FACE);
+    switch (p.type) {
+    case PrimitiveType::kTriangle:
+      if (scene.cull != CullMode::kNone) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(scene.cull == CullMode::kBack ? GL_BACK : GL_FRONT);
+      }
+      // Under GL_UPPER_LEFT the sign of GL's window-space area is reversed, so the
+      // orientation is the one seen in the y-down image: clockwise on screen is GL_CW.
+      glFrontFace(scene.conventions.front_face == FrontFace::kClockwise ? GL_CW : GL_CCW);
+      return GL_TRIANGLES;
+    case PrimitiveType::kPoint:
+      return GL_POINTS;
+    case PrimitiveType::kLine:
+      return GL_LINES;
+    case PrimitiveType::kLineStrip:
+      return GL_LINE_STRIP;
+    case PrimitiveType::kPath:
+      break; // never here: unsupported() refuses paths
+    }
+    return GL_TRIANGLES;
+  }
+
+  // Sets each primitive's state and calls draw(i, mode, first vertex, vertex count): window
+  // space through the viewport [-K, K] with depth [0, 1] (exact, DRIVER.OPENGL.POSITION), clip
+  // space through the scene's viewport and depth range (glViewportIndexedf, glDepthRangef,
+  // GL_DEPTH_CLAMP without depth clipping).
+  // rule: DRIVER.OPENGL.VALUES, PIPE.VIEWPORT.TRANSFORM
+  template <class Draw>
+  void draw_primitives(const Scene& scene, const detail::PackedPipeline& packed,
+                       const pipe::Viewport& vp, Draw&& draw) {
+    const double k = detail::position_scale(scene);
+    const bool depth_clip = !scene.depth || scene.depth->clip;
+    GLint first = 0;
+    for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+      const Primitive& p = scene.primitives[i];
+      const auto count = static_cast<GLsizei>(packed.window_space[i] ? p.v.size() : p.pos.size());
+      if (packed.window_space[i]) {
+        glUniform1f(kUniformInvK, static_cast<float>(1.0 / k));
+        glUniform1ui(kUniformWindow, 1U);
+        const auto ki = static_cast<GLfloat>(k);
+        glViewportIndexedf(0, -ki, -ki, 2 * ki, 2 * ki);
+        glDepthRangef(0.0F, 1.0F);
+        glDisable(GL_DEPTH_CLAMP);
+      } else {
+        glUniform1ui(kUniformWindow, 0U);
+        glViewportIndexedf(0, vp.x, vp.y, vp.width, vp.height);
+        glDepthRangef(vp.min_depth, vp.max_depth);
+        if (depth_clip)
+          glDisable(GL_DEPTH_CLAMP);
+        else
+          glEnable(GL_DEPTH_CLAMP);
+      }
+      const GLenum mode = set_primitive_state(scene, p);
+      draw(i, mode, first, count);
+      first += count;
+    }
+  }
+
+  // Reads the depth buffer's w x h values exactly: D16 as GL_UNSIGNED_SHORT, D24 from a
+  // GL_DEPTH24_STENCIL8 buffer as GL_UNSIGNED_INT_24_8 (depth in the high 24 bits), D32F as
+  // GL_FLOAT bits.
+  // rule: DRIVER.OPENGL.VALUES
+  void read_depth(pipe::DepthFormat f, std::uint32_t w, std::uint32_t h, std::uint32_t* out) {
+    const auto gw = static_cast<GLsizei>(w);
+    const auto gh = static_cast<GLsizei>(h);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    const std::size_t plane = std::size_t{w} * h;
+    if (f == pipe::DepthFormat::kD16) {
+      std::vector<std::uint16_t> v(plane);
+      glReadPixels(0, 0, gw, gh, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, v.data());
+      std::copy(v.begin(), v.end(), out);
+    } else if (f == pipe::DepthFormat::kD24) {
+      glReadPixels(0, 0, gw, gh, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, out);
+      for (std::size_t k = 0; k < plane; ++k)
+        out[k] >>= 8;
+    } else {
+      glReadPixels(0, 0, gw, gh, GL_DEPTH_COMPONENT, GL_FLOAT, out);
+    }
+  }
+
+  // A single-sample framebuffer with only a depth renderbuffer of the format.
+  std::string ensure_depth(std::uint32_t w, std::uint32_t h, pipe::DepthFormat f) {
+    if (depth_framebuffer_ != 0 && depth_w_ == w && depth_h_ == h && depth_format_ == f)
+      return {};
+    depth_w_ = 0;
+    const bool d24 = f == pipe::DepthFormat::kD24;
+    const GLenum internal = f == pipe::DepthFormat::kD16 ? GL_DEPTH_COMPONENT16
+                            : d24                        ? GL_DEPTH24_STENCIL8
+                                                         : GL_DEPTH_COMPONENT32F;
+    if (std::string why = attach_renderbuffer(
+            &depth_framebuffer_, &depth_renderbuffer_,
+            d24 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, internal, 1, w, h);
+        !why.empty()) {
+      return why;
+    }
+    depth_w_ = w;
+    depth_h_ = h;
+    depth_format_ = f;
+    return {};
+  }
+
+  // Creates *fb and *rb on first use, gives *rb the storage (`samples` > 1: multisampled) and
+  // attaches it to *fb at `attachment` (detaching the depth-stencil point first: the depth
+  // formats use either point). Returns "" or why the framebuffer is incomplete.
+  static std::string attach_renderbuffer(GLuint* fb, GLuint* rb, GLenum attachment, GLenum internal,
+                                         std::uint32_t samples, std::uint32_t w, std::uint32_t h) {
+    if (*fb == 0)
+      glGenFramebuffers(1, fb);
+    if (*rb == 0)
+      glGenRenderbuffers(1, rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, *rb);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER,
+                                     samples > 1 ? static_cast<GLsizei>(samples) : 0, internal,
+                                     static_cast<GLsizei>(w), static_cast<GLsizei>(h));
+    glBindFramebuffer(GL_FRAMEBUFFER, *fb);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, attachment, GL_RENDERBUFFER, *rb);
+    if (attachment != GL_COLOR_ATTACHMENT0) {
+      glDrawBuffer(GL_NONE);
+      glReadBuffer(GL_NONE);
+    }
+    if (GLenum st = glCheckFramebufferStatus(GL_FRAMEBUFFER); st != GL_FRAMEBUFFER_COMPLETE)
+      return "opengl: framebuffer incomplete (status " + std::to_string(st) + ")";
+    return {};
+  }
+
+  // The program of a scene's attribute declarations (one input per attribute with its
+  // interpolation and location qualifiers), compiled on first use and kept.
+  // rule: DRIVER.OPENGL.VALUES, PIPE.INTERP.LOCATION
+  std::string values_program(const std::vector<pipe::AttributeDecl>& attrs, GLuint* program) {
+    std::string decls;
+    std::string key;
+    std::string vs_body;
+    std::string fs_body;
+    for (std::size_t k = 0; k < attrs.size(); ++k) {
+      const std::string q =
+          std::string(attrs[k].location == pipe::Location::kCentroid ? "centroid " : "") +
+          (attrs[k].interpolation == pipe::Interpolation::kFlat     ? "flat"
+           : attrs[k].interpolation == pipe::Interpolation::kLinear ? "noperspective"
+                                                                    : "smooth");
+      key += q + ";";
+      const std::string i = std::to_string(k);
+      decls += "layout(location = " + i + ") " + q + " VARYING float a" + i + ";\n";
+      vs_body += "  a" + i + " = in_a" + i + ";\n";
+      fs_body += "  values[base + " + i + "u] = a" + i + ";\n";
+    }
+    if (auto it = values_programs_.find(key); it != values_programs_.end()) {
+      *program = it->second;
+      return {};
+    }
+    std::string vs = std::string(kGlValues_vert);
+    std::string fs = std::string(kGlValues_frag);
+    std::string vs_in;
+    for (std::size_t k = 0; k < attrs.size(); ++k) {
+      const std::string i = std::to_string(k);
+      vs_in += "layout(location = " + std::to_string(k + 1) + ") in float in_a" + i + ";\n";
+    }
+    const auto subst = [](std::string text, std::string_view what, const std::string& by) {
+      const std::size_t at = text.find(what);
+      return at == std::string::npos ? text : text.replace(at, what.size(), by);
+    };
+    const auto with = [&](std::string d, const char* dir) {
+      for (std::size_t at = d.find("VARYING"); at != std::string::npos; at = d.find("VARYING"))
+        d.replace(at, 7, dir);
+      return d;
+    };
+    vs = subst(subst(subst(vs, "//INPUTS", vs_in), "//OUTPUTS", with(decls, "out")), "//COPY",
+               vs_body);
+    fs = subst(subst(fs, "//INPUTS", with(decls, "in")), "//STORE", fs_body);
+    fs = subst(fs, "//COUNT", std::to_string(attrs.size()) + "u");
+    GLuint prog = 0;
+    if (std::string why = link_program(vs.c_str(), fs.c_str(), &prog); !why.empty())
+      return why;
+    values_programs_.emplace(key, prog);
+    *program = prog;
+    return {};
+  }
+
   // rule: DRIVER.OPENGL.DEVICE
   std::string open_display() {
     const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
@@ -342,6 +672,7 @@ private:
     info_.lines_d3d = false;
     info_.sample_mask = true;
     info_.sample_shading = false;
+    info_.values = true; // DRIVER.OPENGL.VALUES
     // K is a power of two with a viewport [-K, K]: 2K <= GL_MAX_VIEWPORT_DIMS and [-K, K]
     // inside GL_VIEWPORT_BOUNDS_RANGE.
     GLint dims[2] = {0, 0};
@@ -402,33 +733,45 @@ private:
     return "opengl: shader compilation failed: " + msg;
   }
 
-  // The program, buffers and fixed state shared by all draws.
-  // rule: DRIVER.OPENGL.ORIGIN, DRIVER.OPENGL.SUPPORT
-  std::string create_shared() {
+  // Compiles and links a program of the two stages; *program is 0 on failure.
+  std::string link_program(const char* vertex, const char* fragment, GLuint* program) {
     GLuint vs = 0;
     GLuint fs = 0;
-    std::string why = compile(GL_VERTEX_SHADER, kGlCoverage_vert, &vs);
+    std::string why = compile(GL_VERTEX_SHADER, vertex, &vs);
     if (why.empty())
-      why = compile(GL_FRAGMENT_SHADER, kGlCoverage_frag, &fs);
+      why = compile(GL_FRAGMENT_SHADER, fragment, &fs);
+    *program = 0;
     if (why.empty()) {
-      program_ = glCreateProgram();
-      glAttachShader(program_, vs);
-      glAttachShader(program_, fs);
-      glLinkProgram(program_);
+      *program = glCreateProgram();
+      glAttachShader(*program, vs);
+      glAttachShader(*program, fs);
+      glLinkProgram(*program);
       GLint ok = GL_FALSE;
-      glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-      if (ok != GL_TRUE)
+      glGetProgramiv(*program, GL_LINK_STATUS, &ok);
+      if (ok != GL_TRUE) {
         why = "opengl: program link failed";
+        glDeleteProgram(*program);
+        *program = 0;
+      }
     }
     if (vs != 0)
       glDeleteShader(vs);
     if (fs != 0)
       glDeleteShader(fs);
-    if (!why.empty())
+    return why;
+  }
+
+  // The program, buffers and fixed state shared by all draws.
+  // rule: DRIVER.OPENGL.ORIGIN, DRIVER.OPENGL.SUPPORT
+  std::string create_shared() {
+    if (std::string why = link_program(kGlCoverage_vert, kGlCoverage_frag, &program_);
+        !why.empty()) {
       return why;
+    }
     glGenVertexArrays(1, &vao_);
     glGenBuffers(1, &vertex_buffer_);
     glGenBuffers(1, &coverage_);
+    glGenBuffers(1, &values_);
     // Upper-left origin: window y runs down like the scene's (DRIVER.OPENGL.ORIGIN).
     glClipControl(GL_UPPER_LEFT, GL_ZERO_TO_ONE);
     for (const GLenum cap : std::to_array<GLenum>(
@@ -453,19 +796,11 @@ private:
   std::string ensure_framebuffer(std::uint32_t w, std::uint32_t h, std::uint32_t samples) {
     if (framebuffer_ != 0 && fb_w_ == w && fb_h_ == h && fb_samples_ == samples)
       return {};
-    if (framebuffer_ == 0)
-      glGenFramebuffers(1, &framebuffer_);
-    if (renderbuffer_ == 0)
-      glGenRenderbuffers(1, &renderbuffer_);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer_);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER,
-                                     samples > 1 ? static_cast<GLsizei>(samples) : 0, GL_R8,
-                                     static_cast<GLsizei>(w), static_cast<GLsizei>(h));
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffer_);
-    if (GLenum st = glCheckFramebufferStatus(GL_FRAMEBUFFER); st != GL_FRAMEBUFFER_COMPLETE) {
-      fb_w_ = 0;
-      return "opengl: framebuffer incomplete (status " + std::to_string(st) + ")";
+    fb_w_ = 0;
+    if (std::string why = attach_renderbuffer(&framebuffer_, &renderbuffer_, GL_COLOR_ATTACHMENT0,
+                                              GL_R8, samples, w, h);
+        !why.empty()) {
+      return why;
     }
     GLint got = 0;
     glGetIntegerv(GL_SAMPLES, &got);
@@ -487,6 +822,14 @@ private:
         eglMakeCurrent(display_, surface_, surface_, context_) == EGL_TRUE) {
       if (program_ != 0)
         glDeleteProgram(program_);
+      for (const auto& [key, prog] : values_programs_)
+        glDeleteProgram(prog);
+      if (values_ != 0)
+        glDeleteBuffers(1, &values_);
+      if (depth_framebuffer_ != 0)
+        glDeleteFramebuffers(1, &depth_framebuffer_);
+      if (depth_renderbuffer_ != 0)
+        glDeleteRenderbuffers(1, &depth_renderbuffer_);
       if (vao_ != 0)
         glDeleteVertexArrays(1, &vao_);
       if (vertex_buffer_ != 0)
@@ -524,6 +867,14 @@ private:
   std::uint32_t fb_w_ = 0;
   std::uint32_t fb_h_ = 0;
   std::uint32_t fb_samples_ = 0;
+  // The values path (DRIVER.OPENGL.VALUES).
+  std::map<std::string, GLuint> values_programs_;
+  GLuint values_ = 0;
+  GLuint depth_framebuffer_ = 0;
+  GLuint depth_renderbuffer_ = 0;
+  std::uint32_t depth_w_ = 0;
+  std::uint32_t depth_h_ = 0;
+  pipe::DepthFormat depth_format_ = pipe::DepthFormat::kD24;
 };
 
 } // namespace
