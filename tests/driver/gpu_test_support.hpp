@@ -13,6 +13,7 @@
 #include <initializer_list>
 #include <map>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -119,6 +120,117 @@ inline std::vector<Fragment> frags(std::uint32_t prim_index,
     out.emplace_back(prim_index, f[0], f[1], static_cast<std::uint32_t>(f[2]));
   }
   return out;
+}
+
+// --- Values of pipeline scenes (DRIVER.VALUES), shared by the GPU adapters' tests ------------
+
+// Draws s with d's draw_values, expecting it supported and drawn.
+inline Drawing values_ok(Driver& d, const Scene& s) {
+  EXPECT_EQ(d.unsupported(s), "");
+  ValuesResult r = d.draw_values(s);
+  if (const auto* e = std::get_if<DriverError>(&r)) {
+    ADD_FAILURE() << d.info().name << ": " << e->message;
+    return {};
+  }
+  return std::get<Drawing>(std::move(r));
+}
+
+// A pipeline scene: an 8 x 6 target, one attribute per interpolation, D24, no vertex or edge
+// through a pixel centre (the adapters' tie rules differ from the reference's).
+inline Scene values_scene() {
+  Scene s = scene(8, 6);
+  s.conventions.line_mode = LineMode::kVulkanBresenham;
+  s.attributes = {{"p", pipe::Interpolation::kPerspective, pipe::Location::kCenter},
+                  {"l", pipe::Interpolation::kLinear, pipe::Location::kCenter},
+                  {"f", pipe::Interpolation::kFlat, pipe::Location::kCenter}};
+  s.depth = pipe::DepthState{};
+  s.depth->func = pipe::CompareFunc::kAlways;
+  s.conventions.depth = pipe::DepthFormat::kD24;
+  return s;
+}
+
+// The driver reports values, refuses what it cannot report with a named reason, and gives the
+// reference's one-line error for invalid input.
+inline void expect_values_support(Driver& d) {
+  EXPECT_TRUE(d.info().values);
+  Scene s = values_scene();
+  Primitive t = make_triangle({{{0.3F, 0.7F}, {7.2F, 1.3F}, {2.1F, 5.7F}}});
+  t.attr = {{1, 2, 3}, {4, 5, 6}, {7, 8, 9}};
+  s.primitives.push_back(t);
+  EXPECT_EQ(d.unsupported(s), "");
+  s.depth->bias.bias = 3;
+  EXPECT_NE(d.unsupported(s).find("depth bias"), std::string::npos);
+  s.depth->bias.bias = 0;
+  s.primitives[0].w = {1.0F, 2.0F, 1.0F};
+  EXPECT_NE(d.unsupported(s).find("w other than 1"), std::string::npos);
+  s.primitives[0].w = {};
+  s.primitives[0].z = {0.5F, 1.5F, 0.0F};
+  EXPECT_NE(d.unsupported(s).find("depth range"), std::string::npos);
+  s.primitives[0].z = {};
+  s.primitives[0].attr.pop_back();
+  const ValuesResult r = d.draw_values(s);
+  ASSERT_TRUE(std::holds_alternative<DriverError>(r));
+  EXPECT_NE(std::get<DriverError>(r).message.find("invalid scene"), std::string::npos);
+}
+
+// A window-space triangle whose values are exact at every pixel centre (dyadic vertex values,
+// gradients of 1/2 and 1/4 per pixel): the driver gives the exact values and the exactly
+// rounded D24 depth, the same fragments and values as the reference, under both provoking
+// vertices.
+inline void expect_exact_values(Driver& d) {
+  Scene s = values_scene();
+  Primitive t = make_triangle({{{0.0F, 0.0F}, {8.0F, 0.0F}, {0.0F, 16.0F}}});
+  t.z = {0.25F, 0.75F, 0.25F};
+  t.attr = {{0.0F, 0.0F, 1.0F}, {4.0F, 4.0F, 2.0F}, {0.0F, 0.0F, 3.0F}};
+  s.primitives.push_back(t);
+  for (const pipe::Provoking pv : {pipe::Provoking::kFirst, pipe::Provoking::kLast}) {
+    s.conventions.provoking = pv;
+    const Drawing got = values_ok(d, s);
+    auto ref = open_driver("reference", nullptr);
+    const Drawing want = std::get<Drawing>(ref->draw_values(s));
+    ASSERT_EQ(got.fragments.size(), want.fragments.size()) << describe(got.fragments);
+    ASSERT_EQ(got.values.size(), got.fragments.size());
+    for (std::size_t i = 0; i < got.fragments.size(); ++i) {
+      EXPECT_EQ(got.fragments[i], want.fragments[i]);
+      EXPECT_EQ(got.values[i].attr, want.values[i].attr) << "fragment " << i;
+      EXPECT_EQ(got.values[i].depth, want.values[i].depth) << "fragment " << i;
+      EXPECT_EQ(got.values[i].attr[2], pv == pipe::Provoking::kFirst ? 1.0F : 3.0F);
+    }
+  }
+}
+
+// Each segment of a line strip is its own primitive: gl_PrimitiveID names the segment, flat
+// attributes take the segment's provoking vertex (PIPE.INTERP.FLAT), and a clipped strip's
+// segments are parts without seg (PIPE.CLIP.LINE), as in the reference.
+inline void expect_strip_values(Driver& d) {
+  for (const bool clipped : {false, true}) {
+    for (const pipe::Provoking pv : {pipe::Provoking::kFirst, pipe::Provoking::kLast}) {
+      Scene s = values_scene();
+      s.width = 16;
+      s.height = 16;
+      s.conventions.provoking = pv;
+      Primitive p;
+      p.type = PrimitiveType::kLineStrip;
+      p.v.clear();
+      p.pos = {{-0.8F, -0.8F, 0.25F, 1.0F},
+               {0.8F, -0.7F, 0.5F, 1.0F},
+               {0.7F, 0.8F, clipped ? -0.5F : 0.75F, 1.0F}};
+      p.attr = {{0, 0, 10}, {1, 1, 20}, {2, 2, 30}};
+      s.primitives.push_back(p);
+      const Drawing got = values_ok(d, s);
+      ASSERT_FALSE(got.fragments.empty());
+      std::set<std::uint32_t> segments;
+      for (std::size_t i = 0; i < got.fragments.size(); ++i) {
+        const std::uint32_t k = clipped ? got.values[i].part.value() : got.fragments[i].seg.value();
+        EXPECT_EQ(got.fragments[i].seg.has_value(), !clipped);
+        segments.insert(k);
+        const float provoking = pv == pipe::Provoking::kFirst ? 10.0F * static_cast<float>(k + 1)
+                                                              : 10.0F * static_cast<float>(k + 2);
+        EXPECT_EQ(got.values[i].attr[2], provoking) << "segment " << k;
+      }
+      EXPECT_EQ(segments, (std::set<std::uint32_t>{0, 1})) << "clipped " << clipped;
+    }
+  }
 }
 
 } // namespace rastrules::driver::gpu_test

@@ -457,5 +457,25 @@ TEST(Lavapipe, OpensAndClosesASecondDriver) {
   EXPECT_EQ(draw_ok(*d, s), reference(s));
 }
 
+// --- Values of pipeline scenes (DRIVER.LAVAPIPE.VALUES): gpu_test_support.hpp ----------------
+
+// rule: DRIVER.LAVAPIPE.VALUES, DRIVER.VALUES
+TEST(LavapipeValues, ReportsValuesAndNamesWhatItCannotDraw) {
+  RASTRULES_LAVAPIPE_OR_SKIP(d);
+  gpu_test::expect_values_support(*d);
+}
+
+// rule: DRIVER.LAVAPIPE.VALUES, PIPE.INTERP.LINEAR, PIPE.INTERP.FLAT, PIPE.DEPTH.FORMAT
+TEST(LavapipeValues, ExactValuesMatchTheReference) {
+  RASTRULES_LAVAPIPE_OR_SKIP(d);
+  gpu_test::expect_exact_values(*d);
+}
+
+// rule: DRIVER.LAVAPIPE.VALUES, LINE.STRIP.SEQUENCE, PIPE.INTERP.FLAT, PIPE.CLIP.LINE
+TEST(LavapipeValues, StripSegmentsKeepTheirKeysAndProvokingVertices) {
+  RASTRULES_LAVAPIPE_OR_SKIP(d);
+  gpu_test::expect_strip_values(*d);
+}
+
 } // namespace
 } // namespace rastrules::driver

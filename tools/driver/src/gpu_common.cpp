@@ -165,6 +165,25 @@ ValuesResult GpuDriver::draw_pipeline(const Scene&, std::uint32_t, std::uint32_t
   return DriverError{"unsupported: pipeline state not supported by the adapter"};
 }
 
+// rule: DRIVER.OPENGL.VALUES, DRIVER.LAVAPIPE.VALUES
+std::string values_problem(const Scene& s) {
+  if (s.depth && (s.depth->bias.bias != 0 || s.depth->bias.slope_scaled != 0.0f))
+    return "depth bias not supported by the adapter's values (PIPE.DEPTH.BIAS)";
+  const pipe::Viewport vp = viewport_of(s);
+  for (const Primitive& p : s.primitives) {
+    if (!p.pos.empty())
+      continue;
+    if (std::any_of(p.w.begin(), p.w.end(), [](float w) { return w != 1.0f; }))
+      return "window-space w other than 1 not supported by the adapter's values";
+    if (std::any_of(p.z.begin(), p.z.end(),
+                    [&](float z) { return !(z >= vp.min_depth && z <= vp.max_depth); })) {
+      return "window-space z outside the viewport's depth range not supported by the adapter's "
+             "values (the driver would clip what the reference clamps)";
+    }
+  }
+  return {};
+}
+
 pipe::Vec4f clip_position(const Scene& scene, pipe::Vec4f p) {
   // rule: PIPE.TRANSFORM.FLOAT32
   // In the reference's order, each product rounded to float32 as the reference rounds it.

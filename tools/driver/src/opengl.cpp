@@ -127,26 +127,7 @@ public:
       return {};
     };
     // rule: DRIVER.OPENGL.VALUES
-    checks.pipeline = [](const Scene& s) -> std::string {
-      if (s.depth && (s.depth->bias.bias != 0 || s.depth->bias.slope_scaled != 0.0f)) {
-        return "depth bias not supported by the adapter's values (PIPE.DEPTH.BIAS)";
-      }
-      const pipe::Viewport vp = detail::viewport_of(s);
-      for (const Primitive& p : s.primitives) {
-        if (!p.pos.empty())
-          continue;
-        // Window-space vertices reach GL through the viewport [-K, K] with depth [0, 1]:
-        // exact for x, y and z, but w cannot be given to GL without a product that rounds.
-        if (std::any_of(p.w.begin(), p.w.end(), [](float w) { return w != 1.0f; }))
-          return "window-space w other than 1 not supported by the adapter's values";
-        if (std::any_of(p.z.begin(), p.z.end(),
-                        [&](float z) { return !(z >= vp.min_depth && z <= vp.max_depth); })) {
-          return "window-space z outside the viewport's depth range not supported by the "
-                 "adapter's values (GL would clip what the reference clamps)";
-        }
-      }
-      return {};
-    };
+    checks.pipeline = [](const Scene& s) { return detail::values_problem(s); };
     return checks;
   }
 

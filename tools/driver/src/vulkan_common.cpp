@@ -237,13 +237,20 @@ std::string create_coverage_pipeline(VkDevice device, VkShaderModule vert, VkSha
   stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
   stages[1].module = frag;
   VkVertexInputBindingDescription vb{0, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX};
-  VkVertexInputAttributeDescription va{0, 0, VK_FORMAT_R32G32_SFLOAT, 0};
+  std::vector<VkVertexInputAttributeDescription> va{{0, 0, VK_FORMAT_R32G32_SFLOAT, 0}};
+  if (state.values_layout) {
+    // rule: DRIVER.LAVAPIPE.VALUES
+    vb.stride = kValuesStride * sizeof(float);
+    va.clear();
+    for (std::uint32_t i = 0; i < kValuesStride / 4; ++i)
+      va.push_back({i, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 16U * i});
+  }
   VkPipelineVertexInputStateCreateInfo vi{};
   vi.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
   vi.vertexBindingDescriptionCount = 1;
   vi.pVertexBindingDescriptions = &vb;
-  vi.vertexAttributeDescriptionCount = 1;
-  vi.pVertexAttributeDescriptions = &va;
+  vi.vertexAttributeDescriptionCount = static_cast<std::uint32_t>(va.size());
+  vi.pVertexAttributeDescriptions = va.data();
   VkPipelineInputAssemblyStateCreateInfo ia{};
   ia.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
   ia.topology = state.topology;
@@ -254,9 +261,22 @@ std::string create_coverage_pipeline(VkDevice device, VkShaderModule vert, VkSha
   VkPipelineRasterizationLineStateCreateInfoEXT line{};
   line.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_LINE_STATE_CREATE_INFO_EXT;
   line.lineRasterizationMode = state.line_mode;
+  VkPipelineRasterizationProvokingVertexStateCreateInfoEXT provoking{};
+  provoking.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_PROVOKING_VERTEX_STATE_CREATE_INFO_EXT;
+  provoking.provokingVertexMode = VK_PROVOKING_VERTEX_MODE_LAST_VERTEX_EXT;
   VkPipelineRasterizationStateCreateInfo rs{};
   rs.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
-  rs.pNext = state.line_mode != VK_LINE_RASTERIZATION_MODE_DEFAULT_EXT ? &line : nullptr;
+  const void* chain = nullptr;
+  if (state.provoking_last) {
+    provoking.pNext = chain;
+    chain = &provoking;
+  }
+  if (state.line_mode != VK_LINE_RASTERIZATION_MODE_DEFAULT_EXT) {
+    line.pNext = chain;
+    chain = &line;
+  }
+  rs.pNext = chain;
+  rs.depthClampEnable = state.depth_clamp ? VK_TRUE : VK_FALSE;
   rs.polygonMode = VK_POLYGON_MODE_FILL;
   rs.cullMode = state.cull;
   rs.frontFace = state.front;
@@ -279,6 +299,12 @@ std::string create_coverage_pipeline(VkDevice device, VkShaderModule vert, VkSha
   gci.pViewportState = &vp;
   gci.pRasterizationState = &rs;
   gci.pMultisampleState = &ms;
+  VkPipelineDepthStencilStateCreateInfo dss{};
+  dss.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
+  dss.depthTestEnable = VK_TRUE;
+  dss.depthWriteEnable = VK_TRUE;
+  dss.depthCompareOp = VK_COMPARE_OP_ALWAYS;
+  gci.pDepthStencilState = state.depth_write ? &dss : nullptr;
   gci.pDynamicState = &ds;
   gci.layout = layout;
   gci.renderPass = pass;

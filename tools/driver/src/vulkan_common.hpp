@@ -90,8 +90,12 @@ void free_host_buffer(VkDevice device, HostBuffer* b);
 // pipeline's rasterizationSamples, and results leave through buffers or queries.
 [[nodiscard]] std::string create_attachmentless_render_pass(VkDevice device, VkRenderPass* pass);
 
-// What differs between the adapter's pipelines and the timing's one. The vertex input is always
-// one binding of float32 (x, y) pairs; viewport and scissor are dynamic.
+// Floats per vertex of the values program: the position and 16 attributes (pipe::kMaxAttributes).
+inline constexpr std::uint32_t kValuesStride = 20;
+
+// What differs between the adapter's pipelines and the timing's one. The vertex input is one
+// binding of float32 (x, y) pairs, or the values program's vertices; viewport and scissor are
+// dynamic.
 struct CoveragePipelineState {
   VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   VkCullModeFlags cull = VK_CULL_MODE_NONE;
@@ -99,11 +103,20 @@ struct CoveragePipelineState {
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   std::optional<VkSampleMask> sample_mask; // none: pSampleMask is null (every sample)
   VkLineRasterizationModeEXT line_mode = VK_LINE_RASTERIZATION_MODE_DEFAULT_EXT;
+  // The values program of pipeline scenes (DRIVER.LAVAPIPE.VALUES): vertices of kValuesStride
+  // floats (a position of four, then 16 attributes as four vec4), the last vertex provoking
+  // (VK_EXT_provoking_vertex), depth clamping instead of depth clipping, and a depth test that
+  // always passes and writes (the depth passes, which have a depth attachment).
+  bool values_layout = false;
+  bool provoking_last = false;
+  bool depth_clamp = false;
+  bool depth_write = false;
 
   // An order, so that the state can key a cache of pipelines.
   [[nodiscard]] auto tie() const {
     return std::make_tuple(static_cast<int>(topology), static_cast<int>(line_mode),
-                           static_cast<int>(samples), cull, static_cast<int>(front), sample_mask);
+                           static_cast<int>(samples), cull, static_cast<int>(front), sample_mask,
+                           values_layout, provoking_last, depth_clamp, depth_write);
   }
   friend bool operator<(const CoveragePipelineState& a, const CoveragePipelineState& b) {
     return a.tie() < b.tie();
