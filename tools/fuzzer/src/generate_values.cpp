@@ -127,6 +127,22 @@ void depth_family(Rng& rng, Scene& s, const ValueState& st) {
   s.primitives.push_back(p);
 }
 
+// rule: PIPE.INTERP.HORIZON
+// A perspective triangle on a 4x target with one vertex at w = 2^-k (k in 14..22): the horizon
+// (where the perspective denominator vanishes) runs close to its edges, so that the centres of
+// partly covered pixels, extrapolated, lie near it or beyond it.
+void horizon_family(Rng& rng, Scene& s, const ValueState& st) {
+  set_sample_pattern(s, standard_pattern(4));
+  Primitive p = clip_primitive(rng, PrimitiveType::kTriangle, 3, st, 1.0f, false);
+  const auto k = static_cast<int>(rng.uniform(14, 22));
+  const float w = std::ldexp(1.0f, -k);
+  pipe::Vec4f& v = p.pos[static_cast<std::size_t>(rng.uniform(0, 2))];
+  const float scale = w / v[3];
+  for (float& c : v)
+    c *= scale;
+  s.primitives.push_back(p);
+}
+
 } // namespace
 
 // rule: FUZZ.VALUES.GENERATE
@@ -146,6 +162,10 @@ value_families_not_generated(Profile profile, const driver::Driver& driver,
       out.emplace_back(std::string(f), "the driver does not draw the profile's lines");
     else if (f != "strips" && !info.triangles)
       out.emplace_back(std::string(f), "the driver does not draw triangles");
+    else if (f == "horizon" && std::find(info.sample_counts.begin(), info.sample_counts.end(),
+                                         4u) == info.sample_counts.end())
+      out.emplace_back(std::string(f), "the driver draws no 4-sample target (partly covered "
+                                       "pixels need one)");
   }
   return out;
 }
@@ -195,11 +215,22 @@ std::optional<Case> generate_value_case(std::uint64_t seed, std::uint64_t index,
       clipped_family(rng, s, st);
     else if (c.family == "strips")
       strip_family(rng, s, st);
-    else
+    else if (c.family == "depth")
       depth_family(rng, s, st);
+    else
+      horizon_family(rng, s, st);
     // One depth per covered sample: the standard 4x pattern one time in four.
-    if (msaa4 && rng.chance(25))
+    if (msaa4 && c.family != "horizon" && rng.chance(25))
       set_sample_pattern(s, standard_pattern(4));
+    // rule: PIPE.INTERP.LOCATION
+    // On 4 samples, half the interpolated attributes at the centroid (drawn last, so that the
+    // scenes of 1-sample cases stay those of earlier versions).
+    if (s.msaa.count() == 4) {
+      for (pipe::AttributeDecl& a : s.attributes) {
+        if (a.interpolation != pipe::Interpolation::kFlat && rng.chance(50))
+          a.location = pipe::Location::kCentroid;
+      }
+    }
     if (driver.unsupported(s).empty())
       return c;
   }
