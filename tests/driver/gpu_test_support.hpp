@@ -158,9 +158,9 @@ inline void expect_values_support(Driver& d) {
   t.attr = {{1, 2, 3}, {4, 5, 6}, {7, 8, 9}};
   s.primitives.push_back(t);
   EXPECT_EQ(d.unsupported(s), "");
-  s.depth->bias.bias = 3;
-  EXPECT_NE(d.unsupported(s).find("depth bias"), std::string::npos);
-  s.depth->bias.bias = 0;
+  s.depth->bias = {3, 0.5F, 0.01F}; // every bias term (PIPE.DEPTH.BIAS)
+  EXPECT_EQ(d.unsupported(s), "");
+  s.depth->bias = {};
   s.primitives[0].w = {1.0F, 2.0F, 1.0F};
   EXPECT_NE(d.unsupported(s).find("w other than 1"), std::string::npos);
   s.primitives[0].w = {};
@@ -195,6 +195,44 @@ inline void expect_exact_values(Driver& d) {
       EXPECT_EQ(got.values[i].attr, want.values[i].attr) << "fragment " << i;
       EXPECT_EQ(got.values[i].depth, want.values[i].depth) << "fragment " << i;
       EXPECT_EQ(got.values[i].attr[2], pv == pipe::Provoking::kFirst ? 1.0F : 3.0F);
+    }
+  }
+}
+
+// A constant depth bias moves a window-space triangle of constant depth by between one and two
+// steps of the format per unit of bias, in the bias's direction: r may be up to twice D3D's
+// under Vulkan and OpenGL (FUZZ.VALUES.LEGAL). Lines are not biased (triangles only).
+inline void expect_biased_depth(Driver& d) {
+  for (const pipe::DepthFormat f : {pipe::DepthFormat::kD16, pipe::DepthFormat::kD24}) {
+    for (const std::int32_t bias : {-40, 40}) {
+      Scene s = values_scene();
+      s.conventions.depth = f;
+      Primitive t = make_triangle({{{0.0F, 0.0F}, {8.0F, 0.0F}, {0.0F, 16.0F}}});
+      t.z = {0.5F, 0.5F, 0.5F};
+      t.attr = {{0, 0, 1}, {0, 0, 2}, {0, 0, 3}};
+      s.primitives.push_back(t);
+      Primitive l;
+      l.type = PrimitiveType::kLine;
+      l.v = {{{0.25F, 5.25F}, {7.75F, 5.25F}}};
+      l.z = {0.5F, 0.5F};
+      l.attr = {{0, 0, 1}, {0, 0, 2}};
+      s.primitives.push_back(l);
+      const Drawing plain = values_ok(d, s);
+      s.depth->bias.bias = bias;
+      const Drawing biased = values_ok(d, s);
+      ASSERT_EQ(plain.fragments, biased.fragments);
+      for (std::size_t i = 0; i < plain.fragments.size(); ++i) {
+        ASSERT_EQ(plain.values[i].depth.size(), 1U);
+        ASSERT_EQ(biased.values[i].depth.size(), 1U);
+        const auto moved = static_cast<std::int64_t>(biased.values[i].depth[0].unorm) -
+                           static_cast<std::int64_t>(plain.values[i].depth[0].unorm);
+        if (plain.fragments[i].prim == 1) {
+          EXPECT_EQ(moved, 0) << "a line is not biased";
+          continue;
+        }
+        EXPECT_GE(moved * bias, std::int64_t{bias} * bias) << "fragment " << i;
+        EXPECT_LE(moved * bias, 2 * std::int64_t{bias} * bias + std::abs(bias)) << "fragment " << i;
+      }
     }
   }
 }

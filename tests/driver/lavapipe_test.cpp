@@ -471,6 +471,12 @@ TEST(LavapipeValues, ExactValuesMatchTheReference) {
   gpu_test::expect_exact_values(*d);
 }
 
+// rule: DRIVER.LAVAPIPE.VALUES, PIPE.DEPTH.BIAS
+TEST(LavapipeValues, DepthBiasMovesTrianglesByOneToTwoStepsPerUnit) {
+  RASTRULES_LAVAPIPE_OR_SKIP(d);
+  gpu_test::expect_biased_depth(*d);
+}
+
 // rule: DRIVER.LAVAPIPE.VALUES, LINE.STRIP.SEQUENCE, PIPE.INTERP.FLAT, PIPE.CLIP.LINE
 TEST(LavapipeValues, StripSegmentsKeepTheirKeysAndProvokingVertices) {
   RASTRULES_LAVAPIPE_OR_SKIP(d);

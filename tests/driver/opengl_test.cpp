@@ -331,6 +331,12 @@ TEST(OpenGLValues, ExactValuesMatchTheReference) {
   gpu_test::expect_exact_values(*d);
 }
 
+// rule: DRIVER.OPENGL.VALUES, PIPE.DEPTH.BIAS
+TEST(OpenGLValues, DepthBiasMovesTrianglesByOneToTwoStepsPerUnit) {
+  RASTRULES_OPENGL_OR_SKIP(d);
+  gpu_test::expect_biased_depth(*d);
+}
+
 // rule: DRIVER.OPENGL.VALUES, LINE.STRIP.SEQUENCE, PIPE.INTERP.FLAT, PIPE.CLIP.LINE
 TEST(OpenGLValues, StripSegmentsKeepTheirKeysAndProvokingVertices) {
   RASTRULES_OPENGL_OR_SKIP(d);

@@ -107,7 +107,7 @@ std::optional<FuzzOptions> parse_fuzz_options(const Args& args, bool want_scene,
              "--families needs a value");
     cl.flag("--values", values,
             "the values campaign: pipeline scenes whose depth and attribute values are compared "
-            "(families perspective, clipped, strips, depth, horizon; FUZZ.VALUES.GENERATE)");
+            "(families perspective, clipped, strips, depth, horizon, bias; FUZZ.VALUES.GENERATE)");
   }
   cl.value("--out", out, "DIR", "write the findings and report.json into DIR",
            "--out needs a value");

@@ -167,8 +167,6 @@ ValuesResult GpuDriver::draw_pipeline(const Scene&, std::uint32_t, std::uint32_t
 
 // rule: DRIVER.OPENGL.VALUES, DRIVER.LAVAPIPE.VALUES
 std::string values_problem(const Scene& s) {
-  if (s.depth && (s.depth->bias.bias != 0 || s.depth->bias.slope_scaled != 0.0f))
-    return "depth bias not supported by the adapter's values (PIPE.DEPTH.BIAS)";
   const pipe::Viewport vp = viewport_of(s);
   for (const Primitive& p : s.primitives) {
     if (!p.pos.empty())

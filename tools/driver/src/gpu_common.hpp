@@ -99,10 +99,10 @@ struct PackedPipeline {
 };
 [[nodiscard]] PackedPipeline pack_pipeline(const Scene& scene);
 
-// Returns why a GPU adapter cannot report the values of a pipeline scene, or "": depth bias
-// (not passed to the drivers yet), window-space w other than 1 (w cannot reach the driver
-// without a product that rounds) and window-space z outside the viewport's depth range (the
-// driver would clip what the reference clamps). The adapters add their own checks.
+// Returns why a GPU adapter cannot report the values of a pipeline scene, or "": window-space w
+// other than 1 (w cannot reach the driver without a product that rounds) and window-space z
+// outside the viewport's depth range (the driver would clip what the reference clamps). The
+// adapters add their own checks.
 // rule: DRIVER.OPENGL.VALUES, DRIVER.LAVAPIPE.VALUES
 [[nodiscard]] std::string values_problem(const Scene& scene);
 

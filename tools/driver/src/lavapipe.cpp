@@ -131,6 +131,8 @@ public:
         return "provoking vertex 'last' not supported by the device (VK_EXT_provoking_vertex)";
       if (s.depth && !s.depth->clip && !depth_clamp_)
         return "depth clipping off not supported by the device (depthClamp)";
+      if (s.depth && s.depth->bias.clamp != 0.0f && !depth_bias_clamp_)
+        return "a depth bias clamp not supported by the device (depthBiasClamp)";
       return {};
     };
     return checks;
@@ -339,6 +341,11 @@ public:
             key.samples = VK_SAMPLE_COUNT_1_BIT;
             key.sample_mask = scene.msaa.effective_mask();
             key.depth_write = true;
+            // rule: PIPE.DEPTH.BIAS
+            // Triangles only, as in the reference (Vulkan biases polygons only).
+            const pipe::DepthBias& bias = scene.depth->bias;
+            key.depth_bias = key.topology == VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST &&
+                             (bias.bias != 0 || bias.slope_scaled != 0.0f);
             const bool strip = key.topology == VK_PRIMITIVE_TOPOLOGY_LINE_STRIP;
             if (strip)
               key.topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST;
@@ -366,6 +373,9 @@ public:
                 vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                                   std::get<VkPipeline>(pipeline));
                 set_viewport(cmd, packed.window_space[i], k, vp, scissor);
+                if (key.depth_bias)
+                  vkCmdSetDepthBias(cmd, static_cast<float>(bias.bias), bias.clamp,
+                                    bias.slope_scaled);
                 push.slot = packed.first_slot[i] + s;
                 push.window_space = packed.window_space[i] ? 1U : 0U;
                 vkCmdPushConstants(cmd, values_layout_,
@@ -717,6 +727,7 @@ private:
       provoking_last_ = pv.provokingVertexLast == VK_TRUE;
     }
     depth_clamp_ = f2.features.depthClamp == VK_TRUE;
+    depth_bias_clamp_ = f2.features.depthBiasClamp == VK_TRUE;
     // rule: DRIVER.LAVAPIPE.VALUES
     // D24 as X8_D24 when it is a depth attachment that can be copied from, else D24S8.
     VkFormatProperties fp{};
@@ -781,6 +792,7 @@ private:
     f2.features.fragmentStoresAndAtomics = VK_TRUE;
     f2.features.geometryShader = VK_TRUE;
     f2.features.depthClamp = depth_clamp_ ? VK_TRUE : VK_FALSE;
+    f2.features.depthBiasClamp = depth_bias_clamp_ ? VK_TRUE : VK_FALSE;
     return vk_.create_device(f2, static_cast<std::uint32_t>(exts.size()), exts.data(),
                              VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT);
   }
@@ -958,6 +970,7 @@ private:
   bool has_provoking_ext_ = false;
   bool provoking_last_ = false;
   bool depth_clamp_ = false;
+  bool depth_bias_clamp_ = false;
   bool x8_d24_ = false;
   VkShaderModule values_vert_ = VK_NULL_HANDLE;
   VkShaderModule values_frag_ = VK_NULL_HANDLE;

@@ -127,7 +127,13 @@ public:
       return {};
     };
     // rule: DRIVER.OPENGL.VALUES
-    checks.pipeline = [](const Scene& s) { return detail::values_problem(s); };
+    checks.pipeline = [this](const Scene& s) -> std::string {
+      if (std::string why = detail::values_problem(s); !why.empty())
+        return why;
+      if (s.depth && s.depth->bias.clamp != 0.0f && polygon_offset_clamp_ == nullptr)
+        return "a depth bias clamp not supported (no glPolygonOffsetClamp)";
+      return {};
+    };
     return checks;
   }
 
@@ -304,41 +310,54 @@ public:
       glDepthFunc(GL_ALWAYS);
       std::array<std::vector<std::uint32_t>, 2> raw{std::vector<std::uint32_t>(plane),
                                                     std::vector<std::uint32_t>(plane)};
-      draw_primitives(scene, packed, vp,
-                      [&](std::size_t i, GLenum mode, GLint first, GLsizei count) {
-                        const bool strip = mode == GL_LINE_STRIP;
-                        const GLsizei parts = strip ? count - 1 : 1;
-                        for (GLsizei s = 0; s < parts; ++s) {
-                          // Drawn twice, over a clear to 0 and over a clear to 1: a pixel the slot
-                          // covers holds the same value both times, any other pixel the two clear
-                          // values.
-                          for (std::size_t pass = 0; pass < 2; ++pass) {
-                            glDisable(GL_SCISSOR_TEST);
-                            glClearDepth(static_cast<double>(pass));
-                            glClear(GL_DEPTH_BUFFER_BIT);
-                            glEnable(GL_SCISSOR_TEST);
-                            if (strip)
-                              glDrawArrays(GL_LINES, first + s, 2);
-                            else
-                              glDrawArrays(mode, first, count);
-                            read_depth(scene.conventions.depth, w, h, raw[pass].data());
-                          }
-                          auto& out = depth[packed.first_slot[i] + static_cast<std::uint32_t>(s)];
-                          out.resize(plane);
-                          for (std::size_t k = 0; k < plane; ++k) {
-                            if (raw[0][k] != raw[1][k])
-                              continue;
-                            pipe::DepthValue v;
-                            if (scene.conventions.depth == pipe::DepthFormat::kD32F)
-                              v.f = std::bit_cast<float>(raw[0][k]);
-                            else
-                              v.unorm = raw[0][k];
-                            out[k] = v;
-                          }
-                        }
-                      });
+      draw_primitives(
+          scene, packed, vp, [&](std::size_t i, GLenum mode, GLint first, GLsizei count) {
+            // rule: PIPE.DEPTH.BIAS
+            // Triangles only, as in the reference (GL_POLYGON_OFFSET_FILL offsets polygons).
+            const pipe::DepthBias& bias = scene.depth->bias;
+            if (mode == GL_TRIANGLES && (bias.bias != 0 || bias.slope_scaled != 0.0f)) {
+              glEnable(GL_POLYGON_OFFSET_FILL);
+              if (polygon_offset_clamp_ != nullptr)
+                polygon_offset_clamp_(bias.slope_scaled, static_cast<float>(bias.bias), bias.clamp);
+              else
+                glPolygonOffset(bias.slope_scaled, static_cast<float>(bias.bias));
+            } else {
+              glDisable(GL_POLYGON_OFFSET_FILL);
+            }
+            const bool strip = mode == GL_LINE_STRIP;
+            const GLsizei parts = strip ? count - 1 : 1;
+            for (GLsizei s = 0; s < parts; ++s) {
+              // Drawn twice, over a clear to 0 and over a clear to 1: a pixel the slot
+              // covers holds the same value both times, any other pixel the two clear
+              // values.
+              for (std::size_t pass = 0; pass < 2; ++pass) {
+                glDisable(GL_SCISSOR_TEST);
+                glClearDepth(static_cast<double>(pass));
+                glClear(GL_DEPTH_BUFFER_BIT);
+                glEnable(GL_SCISSOR_TEST);
+                if (strip)
+                  glDrawArrays(GL_LINES, first + s, 2);
+                else
+                  glDrawArrays(mode, first, count);
+                read_depth(scene.conventions.depth, w, h, raw[pass].data());
+              }
+              auto& out = depth[packed.first_slot[i] + static_cast<std::uint32_t>(s)];
+              out.resize(plane);
+              for (std::size_t k = 0; k < plane; ++k) {
+                if (raw[0][k] != raw[1][k])
+                  continue;
+                pipe::DepthValue v;
+                if (scene.conventions.depth == pipe::DepthFormat::kD32F)
+                  v.f = std::bit_cast<float>(raw[0][k]);
+                else
+                  v.unorm = raw[0][k];
+                out[k] = v;
+              }
+            }
+          });
       glDisable(GL_DEPTH_TEST);
       glDisable(GL_DEPTH_CLAMP);
+      glDisable(GL_POLYGON_OFFSET_FILL);
     }
     glDisable(GL_DEPTH_CLAMP);
     for (std::size_t k = 0; k < n; ++k)
@@ -635,6 +654,22 @@ private:
     }
     if (!clip_control)
       return "opengl: no glClipControl (needs OpenGL 4.5 or ARB_clip_control)";
+    // glPolygonOffsetClamp: core in 4.6, else ARB_ or EXT_polygon_offset_clamp (PIPE.DEPTH.BIAS).
+    bool offset_clamp = major > 4 || minor >= 6;
+    for (GLint i = 0; i < n_ext && !offset_clamp; ++i) {
+      const char* e =
+          reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i)));
+      offset_clamp = e != nullptr && (std::string_view(e) == "GL_ARB_polygon_offset_clamp" ||
+                                      std::string_view(e) == "GL_EXT_polygon_offset_clamp");
+    }
+    if (offset_clamp) {
+      for (const char* name : {"glPolygonOffsetClamp", "glPolygonOffsetClampEXT"}) {
+        if (polygon_offset_clamp_ == nullptr) {
+          polygon_offset_clamp_ =
+              reinterpret_cast<PFNGLPOLYGONOFFSETCLAMPPROC>(eglGetProcAddress(name));
+        }
+      }
+    }
     renderer_ = renderer;
     info_.name = "opengl";
     info_.description = std::string(renderer) + ", OpenGL " + version + ", EGL " + egl_version_ +
@@ -849,6 +884,7 @@ private:
   std::uint32_t fb_h_ = 0;
   std::uint32_t fb_samples_ = 0;
   // The values path (DRIVER.OPENGL.VALUES).
+  PFNGLPOLYGONOFFSETCLAMPPROC polygon_offset_clamp_ = nullptr;
   std::map<std::string, GLuint> values_programs_;
   GLuint values_ = 0;
   GLuint depth_framebuffer_ = 0;

@@ -277,6 +277,7 @@ std::string create_coverage_pipeline(VkDevice device, VkShaderModule vert, VkSha
   }
   rs.pNext = chain;
   rs.depthClampEnable = state.depth_clamp ? VK_TRUE : VK_FALSE;
+  rs.depthBiasEnable = state.depth_bias ? VK_TRUE : VK_FALSE;
   rs.polygonMode = VK_POLYGON_MODE_FILL;
   rs.cullMode = state.cull;
   rs.frontFace = state.front;
@@ -285,10 +286,11 @@ std::string create_coverage_pipeline(VkDevice device, VkShaderModule vert, VkSha
   ms.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
   ms.rasterizationSamples = state.samples;
   ms.pSampleMask = state.sample_mask.has_value() ? &*state.sample_mask : nullptr;
-  const VkDynamicState dyn[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  const VkDynamicState dyn[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
+                                VK_DYNAMIC_STATE_DEPTH_BIAS};
   VkPipelineDynamicStateCreateInfo ds{};
   ds.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
-  ds.dynamicStateCount = 2;
+  ds.dynamicStateCount = state.depth_bias ? 3U : 2U;
   ds.pDynamicStates = dyn;
   VkGraphicsPipelineCreateInfo gci{};
   gci.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;

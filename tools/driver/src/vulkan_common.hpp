@@ -111,12 +111,14 @@ struct CoveragePipelineState {
   bool provoking_last = false;
   bool depth_clamp = false;
   bool depth_write = false;
+  // Depth bias enabled, its three terms dynamic state (vkCmdSetDepthBias; PIPE.DEPTH.BIAS).
+  bool depth_bias = false;
 
   // An order, so that the state can key a cache of pipelines.
   [[nodiscard]] auto tie() const {
     return std::make_tuple(static_cast<int>(topology), static_cast<int>(line_mode),
                            static_cast<int>(samples), cull, static_cast<int>(front), sample_mask,
-                           values_layout, provoking_last, depth_clamp, depth_write);
+                           values_layout, provoking_last, depth_clamp, depth_write, depth_bias);
   }
   friend bool operator<(const CoveragePipelineState& a, const CoveragePipelineState& b) {
     return a.tie() < b.tie();

@@ -143,6 +143,25 @@ void horizon_family(Rng& rng, Scene& s, const ValueState& st) {
   s.primitives.push_back(p);
 }
 
+// rule: PIPE.DEPTH.BIAS
+// One triangle, in clip or window space, under a depth bias: a constant of up to 1000 steps,
+// one time in two a slope factor (1/4, 1 or 4, either sign), one time in four a clamp.
+void bias_family(Rng& rng, Scene& s, const ValueState& st) {
+  if (rng.chance(50))
+    s.primitives.push_back(clip_primitive(rng, PrimitiveType::kTriangle, 3, st, 1.0f, false));
+  else
+    depth_family(rng, s, st);
+  pipe::DepthBias& b = s.depth->bias;
+  b.bias = static_cast<std::int32_t>(rng.uniform(-1000, 1000));
+  if (rng.chance(50)) {
+    b.slope_scaled =
+        std::ldexp(rng.chance(50) ? 1.0f : -1.0f, 2 * static_cast<int>(rng.uniform(-1, 1)));
+  }
+  if (rng.chance(25)) {
+    b.clamp = std::ldexp(rng.chance(50) ? 1.0f : -1.0f, -static_cast<int>(rng.uniform(6, 12)));
+  }
+}
+
 } // namespace
 
 // rule: FUZZ.VALUES.GENERATE
@@ -217,8 +236,10 @@ std::optional<Case> generate_value_case(std::uint64_t seed, std::uint64_t index,
       strip_family(rng, s, st);
     else if (c.family == "depth")
       depth_family(rng, s, st);
-    else
+    else if (c.family == "horizon")
       horizon_family(rng, s, st);
+    else
+      bias_family(rng, s, st);
     // One depth per covered sample: the standard 4x pattern one time in four.
     if (msaa4 && c.family != "horizon" && rng.chance(25))
       set_sample_pattern(s, standard_pattern(4));

@@ -295,6 +295,25 @@ std::optional<ValueComparison> compare_values(const Scene& scene, const driver::
         }
       }
       if (!got.depth.empty() && rd.depth.size() == got.depth.size()) {
+        // rule: FUZZ.VALUES.LEGAL, PIPE.DEPTH.BIAS
+        // Vulkan and OpenGL leave r (up to a factor 2) and the slope (max or Euclidean) to the
+        // implementation: the bias may lie up to |bias| r + |slope| MaxDepthSlope (sqrt 2 - 1)
+        // beyond the reference's, in depth units (scaled like e.scaled below).
+        double bias_allowance = 0;
+        if (legal && profile != Profile::kD3D11 && scene.depth &&
+            dp.type == PrimitiveType::kTriangle && dp.snapped.size() == 3) {
+          const pipe::DepthBias& b = scene.depth->bias;
+          if (b.bias != 0 || b.slope_scaled != 0.0f) {
+            const std::array<Vec2, 3> v{dp.snapped[0], dp.snapped[1], dp.snapped[2]};
+            const double r = pipe::depth_bias(v, dp.z, pipe::DepthBias{1, 0.0f, 0.0f}, fmt);
+            const double slope = pipe::depth_bias(v, dp.z, pipe::DepthBias{0, 1.0f, 0.0f}, fmt);
+            const double m = fmt == pipe::DepthFormat::kD32F ? 1.0 : unorm_max(fmt);
+            bias_allowance =
+                (std::fabs(static_cast<double>(b.bias)) * r +
+                 std::fabs(static_cast<double>(b.slope_scaled)) * slope * (std::sqrt(2.0) - 1.0)) *
+                m;
+          }
+        }
         std::size_t n = 0;
         for (std::uint32_t k = 0; k < scene.msaa.count(); ++k) {
           if ((rf.mask >> k & 1u) == 0)
@@ -312,7 +331,8 @@ std::optional<ValueComparison> compare_values(const Scene& scene, const driver::
             d.got = g.f;
             d.distance = ulps(g.f, e.stored.f);
             if (legal) {
-              const double tol = 0.5 * ulp32(e.scaled) + kDepthRoundings * 0x1p-24 * e.s_scaled;
+              const double tol =
+                  0.5 * ulp32(e.scaled) + kDepthRoundings * 0x1p-24 * e.s_scaled + bias_allowance;
               d.allowed = tol / ulp32(e.scaled);
               d.within =
                   std::isfinite(g.f) && std::fabs(static_cast<double>(g.f) - e.scaled) <= tol;
@@ -328,7 +348,8 @@ std::optional<ValueComparison> compare_values(const Scene& scene, const driver::
             if (legal) {
               // rule: FUZZ.VALUES.LEGAL
               const double conversion = profile == Profile::kD3D11 ? 0.6 : 1.0;
-              const double tol = conversion + kDepthRoundings * 0x1p-24 * e.s_scaled;
+              const double tol =
+                  conversion + kDepthRoundings * 0x1p-24 * e.s_scaled + bias_allowance;
               d.allowed = tol;
               d.within = std::fabs(static_cast<double>(g.unorm) - e.scaled) <= tol;
             } else {

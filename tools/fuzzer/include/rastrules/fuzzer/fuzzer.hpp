@@ -82,8 +82,8 @@ inline constexpr std::array<std::string_view, 7> kFamilies = {
 // space, depths near 0 and 1 in the format's resolution). Attributes are small, huge,
 // subnormal or large integers. Only for drivers that report values.
 // rule: FUZZ.VALUES.GENERATE
-inline constexpr std::array<std::string_view, 5> kValueFamilies = {"perspective", "clipped",
-                                                                   "strips", "depth", "horizon"};
+inline constexpr std::array<std::string_view, 6> kValueFamilies = {
+    "perspective", "clipped", "strips", "depth", "horizon", "bias"};
 [[nodiscard]] std::optional<Case> generate_value_case(std::uint64_t seed, std::uint64_t index,
                                                       Profile profile, const driver::Driver& driver,
                                                       const std::vector<std::string>& only = {});
