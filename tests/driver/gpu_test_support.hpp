@@ -199,6 +199,38 @@ inline void expect_exact_values(Driver& d) {
   }
 }
 
+// The exact scene of expect_exact_values on the standard 4x pattern under sample-rate shading:
+// one fragment per covered sample (MSAA.SHADING.SAMPLE), attributes at the sample or the centre,
+// each exact (sample positions are multiples of 1/16), the reference's values and keys. With
+// centre_at_sample the driver's centre attributes are expected at the sample instead (legal
+// under Vulkan and OpenGL, FUZZ.VALUES.LEGAL; FINDING.OPENGL.SAMPLE_SHADING_CENTER).
+inline void expect_exact_sample_values(Driver& d, bool centre_at_sample) {
+  for (const pipe::Location where : {pipe::Location::kSample, pipe::Location::kCenter}) {
+    Scene s = values_scene();
+    set_sample_pattern(s, standard_pattern(4));
+    s.msaa.shading = ShadingRate::kSample;
+    for (std::size_t k = 0; k < 2; ++k)
+      s.attributes[k].location = where;
+    Primitive t = make_triangle({{{0.0F, 0.0F}, {8.0F, 0.0F}, {0.0F, 16.0F}}});
+    t.attr = {{0.0F, 0.0F, 1.0F}, {4.0F, 4.0F, 2.0F}, {0.0F, 0.0F, 3.0F}};
+    s.primitives.push_back(t);
+    const Drawing got = values_ok(d, s);
+    Scene expected = s;
+    if (centre_at_sample) {
+      for (std::size_t k = 0; k < 2; ++k)
+        expected.attributes[k].location = pipe::Location::kSample;
+    }
+    auto ref = open_driver("reference", nullptr);
+    const Drawing want = std::get<Drawing>(ref->draw_values(expected));
+    ASSERT_EQ(got.fragments.size(), want.fragments.size()) << describe(got.fragments);
+    for (std::size_t i = 0; i < got.fragments.size(); ++i) {
+      EXPECT_EQ(got.fragments[i], want.fragments[i]);
+      EXPECT_EQ(got.values[i].attr, want.values[i].attr)
+          << "fragment " << i << " sample " << got.fragments[i].sample.value_or(99);
+    }
+  }
+}
+
 // A constant depth bias moves a window-space triangle of constant depth by between one and two
 // steps of the format per unit of bias, in the bias's direction: r may be up to twice D3D's
 // under Vulkan and OpenGL (FUZZ.VALUES.LEGAL). Lines are not biased (triangles only).

@@ -471,6 +471,12 @@ TEST(LavapipeValues, ExactValuesMatchTheReference) {
   gpu_test::expect_exact_values(*d);
 }
 
+// rule: DRIVER.LAVAPIPE.VALUES, MSAA.SHADING.SAMPLE, PIPE.INTERP.LOCATION
+TEST(LavapipeValues, SampleRateShadingGivesEachSampleItsExactValues) {
+  RASTRULES_LAVAPIPE_OR_SKIP(d);
+  gpu_test::expect_exact_sample_values(*d, /*centre_at_sample=*/false);
+}
+
 // rule: DRIVER.LAVAPIPE.VALUES, PIPE.DEPTH.BIAS
 TEST(LavapipeValues, DepthBiasMovesTrianglesByOneToTwoStepsPerUnit) {
   RASTRULES_LAVAPIPE_OR_SKIP(d);

@@ -331,6 +331,12 @@ TEST(OpenGLValues, ExactValuesMatchTheReference) {
   gpu_test::expect_exact_values(*d);
 }
 
+// rule: DRIVER.OPENGL.VALUES, MSAA.SHADING.SAMPLE, PIPE.INTERP.LOCATION
+TEST(OpenGLValues, SampleRateShadingGivesEachSampleItsExactValues) {
+  RASTRULES_OPENGL_OR_SKIP(d);
+  gpu_test::expect_exact_sample_values(*d, /*centre_at_sample=*/true);
+}
+
 // rule: DRIVER.OPENGL.VALUES, PIPE.DEPTH.BIAS
 TEST(OpenGLValues, DepthBiasMovesTrianglesByOneToTwoStepsPerUnit) {
   RASTRULES_OPENGL_OR_SKIP(d);

@@ -80,7 +80,9 @@ std::string unsupported_scene(const Scene& scene, const DriverInfo& info, double
     if (std::string why = checks.msaa(ms); !why.empty())
       return why;
   }
-  if (ms.shading == ShadingRate::kSample) {
+  // rule: DRIVER.VALUES
+  // Sample-rate shading is drawn only by the values path (the adapter's pipeline check decides).
+  if (ms.shading == ShadingRate::kSample && !(checks.pipeline && has_pipeline_state(scene))) {
     return "sample-frequency shading not supported (the adapter observes coverage per pixel)";
   }
   if (scene.width > info.max_target_side || scene.height > info.max_target_side) {
@@ -241,7 +243,7 @@ PackedPipeline pack_pipeline(const Scene& scene) {
 Drawing decode_values(const Scene& scene, const PackedPipeline& packed,
                       const std::uint32_t* coverage, const float* values,
                       const std::vector<std::vector<std::optional<pipe::DepthValue>>>* depth,
-                      std::uint32_t w, std::uint32_t h) {
+                      std::uint32_t w, std::uint32_t h, std::uint32_t per_sample) {
   Drawing out;
   const std::uint32_t all = full_mask(scene.msaa.count());
   const std::size_t n = scene.attributes.size();
@@ -264,12 +266,29 @@ Drawing decode_values(const Scene& scene, const PackedPipeline& packed,
           v.part = s;
         else if (strip)
           f.seg = s;
-        const float* a = values + (slot * plane + k) * n;
-        v.attr.assign(a, a + n);
-        if (depth != nullptr && !(*depth)[slot].empty() && (*depth)[slot][k])
-          v.depth.push_back(*(*depth)[slot][k]);
-        out.fragments.push_back(f);
-        out.values.push_back(std::move(v));
+        const auto store = [&](Fragment frag, std::size_t entry) {
+          FragmentValues fv = v;
+          const float* a = values + entry * n;
+          fv.attr.assign(a, a + n);
+          if (depth != nullptr && !(*depth)[slot].empty() && (*depth)[slot][k])
+            fv.depth.push_back(*(*depth)[slot][k]);
+          out.fragments.push_back(frag);
+          out.values.push_back(std::move(fv));
+        };
+        if (per_sample == 0) {
+          store(f, slot * plane + k);
+          continue;
+        }
+        // rule: MSAA.SHADING.SAMPLE
+        // One fragment per covered sample, its values at the sample's entry.
+        for (std::uint32_t bit = 0; bit < 32; ++bit) {
+          if ((m >> bit & 1U) == 0)
+            continue;
+          Fragment fs = f;
+          fs.mask = 1U << bit;
+          fs.sample = bit;
+          store(fs, (slot * plane + k) * per_sample + bit);
+        }
       }
     }
   }

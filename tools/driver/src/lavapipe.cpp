@@ -25,6 +25,7 @@
 #include "rastrules/driver/coverage_frag.spv.h"
 #include "rastrules/driver/timing_frag.spv.h"
 #include "rastrules/driver/values_frag.spv.h"
+#include "rastrules/driver/values_sample_frag.spv.h"
 #include "rastrules/driver/values_vert.spv.h"
 #include "rastrules/scene.hpp"
 #include "vulkan_common.hpp"
@@ -48,16 +49,18 @@ struct ValuesPush {
   std::uint32_t window_space = 0;
   std::uint32_t count = 0;
   std::array<std::uint32_t, 2> kinds{}; // 4 bits per attribute, values.frag's numbering
+  std::uint32_t per_sample = 1;         // values entries per pixel (sample-rate shading: count)
 };
 
 // values.frag's input for an attribute declaration.
 std::uint32_t kind_of(const pipe::AttributeDecl& a) {
   const bool centroid = a.location == pipe::Location::kCentroid;
+  const bool sample = a.location == pipe::Location::kSample;
   switch (a.interpolation) {
   case pipe::Interpolation::kPerspective:
-    return centroid ? 3U : 0U;
+    return sample ? 5U : (centroid ? 3U : 0U);
   case pipe::Interpolation::kLinear:
-    return centroid ? 4U : 1U;
+    return sample ? 6U : (centroid ? 4U : 1U);
   case pipe::Interpolation::kFlat:
     break;
   }
@@ -131,6 +134,8 @@ public:
         return "provoking vertex 'last' not supported by the device (VK_EXT_provoking_vertex)";
       if (s.depth && !s.depth->clip && !depth_clamp_)
         return "depth clipping off not supported by the device (depthClamp)";
+      if (s.msaa.shading == ShadingRate::kSample && !sample_rate_shading_)
+        return "sample-rate shading not supported by the device (sampleRateShading)";
       if (s.depth && s.depth->bias.clamp != 0.0f && !depth_bias_clamp_)
         return "a depth bias clamp not supported by the device (depthBiasClamp)";
       return {};
@@ -227,8 +232,11 @@ public:
     const std::uint32_t slots = packed.slots;
     const VkDeviceSize plane = VkDeviceSize{w} * h;
     const VkDeviceSize cov_bytes = std::max<VkDeviceSize>(VkDeviceSize{slots} * plane * 4U, 4U);
-    const VkDeviceSize val_bytes = std::max<VkDeviceSize>(cov_bytes * n, 4U);
     const std::uint32_t samples = scene.msaa.count();
+    // rule: MSAA.SHADING.SAMPLE
+    const bool per_sample = scene.msaa.shading == ShadingRate::kSample;
+    const VkDeviceSize val_bytes =
+        std::max<VkDeviceSize>(cov_bytes * n * (per_sample ? samples : 1U), 4U);
     const bool depth = scene.depth.has_value() && samples == 1;
     const VkDeviceSize depth_bytes =
         std::max<VkDeviceSize>(VkDeviceSize{slots} * 2U * plane * 4U, 4U);
@@ -280,6 +288,7 @@ public:
     push.height = h;
     push.slots = slots;
     push.count = static_cast<std::uint32_t>(n);
+    push.per_sample = per_sample ? samples : 1U;
     for (std::size_t j = 0; j < n; ++j)
       push.kinds[j / 8] |= kind_of(scene.attributes[j]) << (4U * (j % 8));
 
@@ -311,7 +320,9 @@ public:
         [&](std::size_t i, PipelineKey key, std::uint32_t first, std::uint32_t count) {
           key.samples = static_cast<VkSampleCountFlagBits>(samples);
           key.sample_mask = scene.msaa.effective_mask();
-          auto pipeline = get_values_pipeline(key, values_frag_, program_.render_pass);
+          key.sample_shading = per_sample;
+          auto pipeline = get_values_pipeline(key, per_sample ? values_sample_frag_ : values_frag_,
+                                              program_.render_pass);
           if (const auto* e = std::get_if<std::string>(&pipeline)) {
             failed = *e;
             return false;
@@ -438,7 +449,7 @@ public:
     }
     return detail::decode_values(scene, packed, static_cast<const std::uint32_t*>(coverage_.mapped),
                                  static_cast<const float*>(values_.mapped),
-                                 depth ? &depths : nullptr, w, h);
+                                 depth ? &depths : nullptr, w, h, per_sample ? samples : 0U);
   }
 
 private:
@@ -728,6 +739,7 @@ private:
     }
     depth_clamp_ = f2.features.depthClamp == VK_TRUE;
     depth_bias_clamp_ = f2.features.depthBiasClamp == VK_TRUE;
+    sample_rate_shading_ = f2.features.sampleRateShading == VK_TRUE;
     // rule: DRIVER.LAVAPIPE.VALUES
     // D24 as X8_D24 when it is a depth attachment that can be copied from, else D24S8.
     VkFormatProperties fp{};
@@ -793,6 +805,7 @@ private:
     f2.features.geometryShader = VK_TRUE;
     f2.features.depthClamp = depth_clamp_ ? VK_TRUE : VK_FALSE;
     f2.features.depthBiasClamp = depth_bias_clamp_ ? VK_TRUE : VK_FALSE;
+    f2.features.sampleRateShading = sample_rate_shading_ ? VK_TRUE : VK_FALSE;
     return vk_.create_device(f2, static_cast<std::uint32_t>(exts.size()), exts.data(),
                              VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT);
   }
@@ -857,6 +870,7 @@ private:
     for (const auto& [code, bytes, module] :
          {std::tuple{kValues_vert, sizeof(kValues_vert), &values_vert_},
           std::tuple{kValues_frag, sizeof(kValues_frag), &values_frag_},
+          std::tuple{kValues_sample_frag, sizeof(kValues_sample_frag), &values_sample_frag_},
           std::tuple{kTiming_frag, sizeof(kTiming_frag), &empty_frag_}}) {
       if (std::string why = detail::create_shader_module(device, code, bytes, module);
           !why.empty()) {
@@ -928,7 +942,7 @@ private:
       for (auto& [key, p] : values_pipelines_)
         vkDestroyPipeline(device, p, nullptr);
       values_pipelines_.clear();
-      for (VkShaderModule m : {values_vert_, values_frag_, empty_frag_}) {
+      for (VkShaderModule m : {values_vert_, values_frag_, values_sample_frag_, empty_frag_}) {
         if (m != VK_NULL_HANDLE)
           vkDestroyShaderModule(device, m, nullptr);
       }
@@ -971,9 +985,11 @@ private:
   bool provoking_last_ = false;
   bool depth_clamp_ = false;
   bool depth_bias_clamp_ = false;
+  bool sample_rate_shading_ = false;
   bool x8_d24_ = false;
   VkShaderModule values_vert_ = VK_NULL_HANDLE;
   VkShaderModule values_frag_ = VK_NULL_HANDLE;
+  VkShaderModule values_sample_frag_ = VK_NULL_HANDLE;
   VkShaderModule empty_frag_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout values_set_layout_ = VK_NULL_HANDLE;
   VkDescriptorPool values_pool_ = VK_NULL_HANDLE;

@@ -224,7 +224,10 @@ public:
     }
     const std::size_t n = scene.attributes.size();
     GLuint program = 0;
-    if (std::string why = values_program(scene.attributes, &program); !why.empty())
+    // rule: MSAA.SHADING.SAMPLE
+    const std::uint32_t per_sample =
+        scene.msaa.shading == ShadingRate::kSample ? scene.msaa.count() : 0U;
+    if (std::string why = values_program(scene.attributes, per_sample, &program); !why.empty())
       return DriverError{why};
     const detail::PackedPipeline packed = detail::pack_pipeline(scene);
     const std::uint32_t samples = scene.msaa.count();
@@ -234,7 +237,8 @@ public:
     // The coverage and values buffers, cleared (DRIVER.OPENGL.VALUES).
     const std::size_t plane = std::size_t{w} * h;
     const std::size_t cov_words = std::max<std::size_t>(std::size_t{packed.slots} * plane, 1);
-    const std::size_t val_words = std::max<std::size_t>(cov_words * n, 1);
+    const std::size_t val_words =
+        std::max<std::size_t>(cov_words * n * std::max<std::uint32_t>(per_sample, 1U), 1);
     const GLuint zero = 0;
     for (const auto& [buffer, words, binding] :
          {std::tuple{coverage_, cov_words, 0U}, std::tuple{values_, val_words, 1U}}) {
@@ -281,12 +285,17 @@ public:
                           ? GL_FIRST_VERTEX_CONVENTION
                           : GL_LAST_VERTEX_CONVENTION);
     set_sample_mask(scene);
+    if (per_sample != 0) {
+      glEnable(GL_SAMPLE_SHADING);
+      glMinSampleShading(1.0F);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     draw_primitives(scene, packed, vp, [&](std::size_t i, GLenum mode, GLint first, GLsizei count) {
       glUniform1ui(kUniformSlot, packed.first_slot[i]);
       glDrawArrays(mode, first, count);
     });
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glDisable(GL_SAMPLE_SHADING);
     std::vector<std::uint32_t> cov(cov_words);
     std::vector<float> vals(val_words);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, coverage_);
@@ -366,7 +375,7 @@ public:
       return DriverError{"opengl: GL error " + std::to_string(err) + " while drawing values"};
     }
     return detail::decode_values(scene, packed, cov.data(), vals.data(),
-                                 depth.empty() ? nullptr : &depth, w, h);
+                                 depth.empty() ? nullptr : &depth, w, h, per_sample);
   }
 
 private:
@@ -515,14 +524,19 @@ private:
   // The program of a scene's attribute declarations (one input per attribute with its
   // interpolation and location qualifiers), compiled on first use and kept.
   // rule: DRIVER.OPENGL.VALUES, PIPE.INTERP.LOCATION
-  std::string values_program(const std::vector<pipe::AttributeDecl>& attrs, GLuint* program) {
+  // per_sample > 0: sample-rate shading with that many samples (the entry of gl_SampleID;
+  // gl_SampleID appears only then, since its use alone makes the shading per sample).
+  std::string values_program(const std::vector<pipe::AttributeDecl>& attrs,
+                             std::uint32_t per_sample, GLuint* program) {
     std::string decls;
-    std::string key;
+    std::string key = std::to_string(per_sample) + ":";
     std::string vs_body;
     std::string fs_body;
     for (std::size_t k = 0; k < attrs.size(); ++k) {
       const std::string q =
-          std::string(attrs[k].location == pipe::Location::kCentroid ? "centroid " : "") +
+          std::string(attrs[k].location == pipe::Location::kCentroid ? "centroid "
+                      : attrs[k].location == pipe::Location::kSample ? "sample "
+                                                                     : "") +
           (attrs[k].interpolation == pipe::Interpolation::kFlat     ? "flat"
            : attrs[k].interpolation == pipe::Interpolation::kLinear ? "noperspective"
                                                                     : "smooth");
@@ -555,7 +569,11 @@ private:
     vs = subst(subst(subst(vs, "//INPUTS", vs_in), "//OUTPUTS", with(decls, "out")), "//COPY",
                vs_body);
     fs = subst(subst(fs, "//INPUTS", with(decls, "in")), "//STORE", fs_body);
-    fs = subst(fs, "//COUNT", std::to_string(attrs.size()) + "u");
+    const std::string count = std::to_string(attrs.size()) + "u";
+    fs = subst(fs, "//ENTRY",
+               per_sample == 0 ? "pixel * " + count
+                               : "(pixel * " + std::to_string(per_sample) +
+                                     "u + uint(gl_SampleID)) * " + count);
     GLuint prog = 0;
     if (std::string why = link_program(vs.c_str(), fs.c_str(), &prog); !why.empty())
       return why;

@@ -286,6 +286,8 @@ std::string create_coverage_pipeline(VkDevice device, VkShaderModule vert, VkSha
   ms.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
   ms.rasterizationSamples = state.samples;
   ms.pSampleMask = state.sample_mask.has_value() ? &*state.sample_mask : nullptr;
+  ms.sampleShadingEnable = state.sample_shading ? VK_TRUE : VK_FALSE;
+  ms.minSampleShading = state.sample_shading ? 1.0F : 0.0F;
   const VkDynamicState dyn[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
                                 VK_DYNAMIC_STATE_DEPTH_BIAS};
   VkPipelineDynamicStateCreateInfo ds{};

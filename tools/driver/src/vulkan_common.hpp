@@ -113,12 +113,15 @@ struct CoveragePipelineState {
   bool depth_write = false;
   // Depth bias enabled, its three terms dynamic state (vkCmdSetDepthBias; PIPE.DEPTH.BIAS).
   bool depth_bias = false;
+  // Sample-rate shading (sampleShadingEnable, minSampleShading 1; MSAA.SHADING.SAMPLE).
+  bool sample_shading = false;
 
   // An order, so that the state can key a cache of pipelines.
   [[nodiscard]] auto tie() const {
     return std::make_tuple(static_cast<int>(topology), static_cast<int>(line_mode),
                            static_cast<int>(samples), cull, static_cast<int>(front), sample_mask,
-                           values_layout, provoking_last, depth_clamp, depth_write, depth_bias);
+                           values_layout, provoking_last, depth_clamp, depth_write, depth_bias,
+                           sample_shading);
   }
   friend bool operator<(const CoveragePipelineState& a, const CoveragePipelineState& b) {
     return a.tie() < b.tie();

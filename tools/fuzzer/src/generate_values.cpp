@@ -251,6 +251,27 @@ std::optional<Case> generate_value_case(std::uint64_t seed, std::uint64_t index,
         if (a.interpolation != pipe::Interpolation::kFlat && rng.chance(50))
           a.location = pipe::Location::kCentroid;
       }
+      // rule: MSAA.SHADING.SAMPLE
+      // One time in four sample-rate shading, and then each interpolated attribute at its
+      // sample one time in two, for triangles; kept only when the driver draws it (the GPU adapters
+      // do for pipeline scenes alone, so DriverInfo::sample_shading cannot say). Not with lines:
+      // sample shading of Bresenham lines on several samples is undefined (MSAA.LINE.MODE), and the
+      // other line modes are the coverage campaign's.
+      const bool lines = std::any_of(s.primitives.begin(), s.primitives.end(), [](const auto& p) {
+        return p.type == PrimitiveType::kLine || p.type == PrimitiveType::kLineStrip;
+      });
+      if (rng.chance(25) && !lines) {
+        const std::vector<pipe::AttributeDecl> before = s.attributes;
+        s.msaa.shading = ShadingRate::kSample;
+        for (pipe::AttributeDecl& a : s.attributes) {
+          if (a.interpolation != pipe::Interpolation::kFlat && rng.chance(50))
+            a.location = pipe::Location::kSample;
+        }
+        if (!driver.unsupported(s).empty()) {
+          s.msaa.shading = ShadingRate::kPixel;
+          s.attributes = before;
+        }
+      }
     }
     if (driver.unsupported(s).empty())
       return c;

@@ -277,10 +277,21 @@ std::optional<ValueComparison> compare_values(const Scene& scene, const driver::
             d.allowed = kInf;
             d.within = true;
           } else if (legal && decl.interpolation != pipe::Interpolation::kFlat) {
-            const double tol = kAttrUlps * ulp32(e.x) + kAttrRoundings * 0x1p-24 * e.s;
-            d.allowed = tol / ulp32(e.x);
-            d.within = std::isfinite(got.attr[k]) &&
-                       std::fabs(static_cast<double>(got.attr[k]) - e.x) <= tol;
+            const auto judge = [&](const Expected& x) {
+              const double tol = kAttrUlps * ulp32(x.x) + kAttrRoundings * 0x1p-24 * x.s;
+              d.allowed = tol / ulp32(x.x);
+              d.within = x.horizon || (std::isfinite(got.attr[k]) &&
+                                       std::fabs(static_cast<double>(got.attr[k]) - x.x) <= tol);
+            };
+            judge(e);
+            // rule: FUZZ.VALUES.LEGAL
+            // Under sample-rate shading Vulkan and OpenGL may evaluate an input that is not
+            // at its sample at the invocation's sample instead.
+            if (!d.within && profile != Profile::kD3D11 && rf.sample &&
+                decl.location != pipe::Location::kSample) {
+              judge(attribute_expected(dp, k, decl.interpolation,
+                                       sample_position(rf.x, rf.y, pattern.positions[*rf.sample])));
+            }
           } else if (legal) {
             d.within = same_float(got.attr[k], e.exact32);
           } else {

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // OpenGL adapter, fragment stage of pipeline scenes (DRIVER.OPENGL.VALUES): ORs the coverage
 // like opengl_coverage.frag and stores the attributes the shader sees, one plane of W x H x N
-// floats per slot. The adapter replaces the marker comments below (inputs, store, count).
+// floats per slot (W x H x S x N under sample-rate shading, S samples, the entry of
+// gl_SampleID). The adapter replaces the marker comments below (inputs, entry, store).
 // rule: DRIVER.OPENGL.VALUES
 #version 430 core
 
@@ -28,6 +29,6 @@ void main() {
   }
   uint pixel = (slot * height + y) * width + x;
   atomicOr(coverage.mask[pixel], uint(gl_SampleMaskIn[0]));
-  uint base = pixel * //COUNT;
+  uint base = //ENTRY;
 //STORE
 }

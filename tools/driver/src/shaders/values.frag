@@ -15,6 +15,7 @@ layout(push_constant) uniform Push {
   uint window_space;
   uint count;
   uint kinds[2];
+  uint per_sample;
 } push;
 
 layout(std430, set = 0, binding = 0) buffer Coverage {

@@ -3,8 +3,8 @@
 // position (after the scene's transform, computed on the CPU as the reference computes it) with
 // y negated exactly, which makes Vulkan's viewport transform D3D's (PIPE.VIEWPORT.TRANSFORM); or
 // a window-space position divided by K exactly, as in coverage.vert. Each of the 16 attributes
-// leaves under every interpolation the fragment stage may read: smooth, noperspective, flat,
-// and the two centroid ones.
+// leaves under every interpolation the fragment stages may read: smooth, noperspective, flat,
+// the two centroid ones and (values_sample.frag only) the two sample ones.
 // rule: DRIVER.LAVAPIPE.VALUES
 #version 450
 
@@ -20,6 +20,7 @@ layout(push_constant) uniform Push {
   uint window_space;  // 1: pos is (x, y, z, 1) in window coordinates
   uint count;         // declared attributes
   uint kinds[2];      // 4 bits per attribute: the interpolation the fragment stage reads
+  uint per_sample;    // samples per pixel in the values buffer: 1, or the count (sample rate)
 } push;
 
 layout(location = 0) out vec4 a_smooth[4];
@@ -27,6 +28,8 @@ layout(location = 4) noperspective out vec4 a_linear[4];
 layout(location = 8) flat out vec4 a_flat[4];
 layout(location = 12) centroid out vec4 a_centroid[4];
 layout(location = 16) centroid noperspective out vec4 a_centroid_linear[4];
+layout(location = 20) sample out vec4 a_sample[4];
+layout(location = 24) sample noperspective out vec4 a_sample_linear[4];
 
 void main() {
   if (push.window_space != 0u) {
@@ -41,5 +44,7 @@ void main() {
     a_flat[i] = attr[i];
     a_centroid[i] = attr[i];
     a_centroid_linear[i] = attr[i];
+    a_sample[i] = attr[i];
+    a_sample_linear[i] = attr[i];
   }
 }
