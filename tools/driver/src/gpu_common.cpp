@@ -3,12 +3,12 @@
 
 #include "gpu_common.hpp"
 
-#include "drivers.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <variant>
+
+#include "drivers.hpp"
 
 namespace rastrules::driver::detail {
 
@@ -18,7 +18,9 @@ bool is_line(PrimitiveType t) {
 
 std::uint32_t slot_count(const Primitive& p) {
   if (p.type == PrimitiveType::kLineStrip) {
-    return p.v.size() < 2 ? 0U : static_cast<std::uint32_t>(p.v.size() - 1);
+    // Window-space vertices, or clip-space positions (pipeline scenes).
+    const std::size_t n = p.pos.empty() ? p.v.size() : p.pos.size();
+    return n < 2 ? 0U : static_cast<std::uint32_t>(n - 1);
   }
   return 1U;
 }
@@ -213,9 +215,7 @@ PackedPipeline pack_pipeline(const Scene& scene) {
     const bool window = p.pos.empty();
     out.window_space.push_back(window);
     const std::size_t nv = window ? p.v.size() : p.pos.size();
-    out.slots += p.type == PrimitiveType::kLineStrip
-                     ? (nv < 2 ? 0U : static_cast<std::uint32_t>(nv - 1))
-                     : 1U;
+    out.slots += slot_count(p);
     std::vector<pipe::Vec4f> clip;
     for (std::size_t j = 0; j < nv; ++j) {
       if (window) {
@@ -251,8 +251,7 @@ Drawing decode_values(const Scene& scene, const PackedPipeline& packed,
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const Primitive& p = scene.primitives[i];
     const bool strip = p.type == PrimitiveType::kLineStrip;
-    const std::size_t nv = packed.window_space[i] ? p.v.size() : p.pos.size();
-    const std::uint32_t slots = strip ? (nv < 2 ? 0U : static_cast<std::uint32_t>(nv - 1)) : 1U;
+    const std::uint32_t slots = slot_count(p);
     for (std::uint32_t s = 0; s < slots; ++s) {
       const std::size_t slot = packed.first_slot[i] + s;
       for (std::size_t k = 0; k < plane; ++k) {

@@ -32,7 +32,8 @@ inline constexpr std::uint64_t kMaxCoverageBytes = std::uint64_t{256} << 20;
 
 [[nodiscard]] bool is_line(PrimitiveType t);
 
-// The number of coverage slots of a primitive: one, or one per segment of a strip.
+// The number of coverage slots of a primitive: one, or one per segment of a strip (of its
+// window-space vertices or, in a pipeline scene, its positions).
 [[nodiscard]] std::uint32_t slot_count(const Primitive& p);
 
 // Returns K, the smallest power of two >= every extent the scene needs, or 0 when a

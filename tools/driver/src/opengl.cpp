@@ -365,7 +365,6 @@ public:
             }
           });
       glDisable(GL_DEPTH_TEST);
-      glDisable(GL_DEPTH_CLAMP);
       glDisable(GL_POLYGON_OFFSET_FILL);
     }
     glDisable(GL_DEPTH_CLAMP);
