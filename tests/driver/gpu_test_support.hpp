@@ -231,6 +231,31 @@ inline void expect_exact_sample_values(Driver& d, bool centre_at_sample) {
   }
 }
 
+// The exact scene of expect_exact_values on the standard 4x pattern in D16 and D32F: with
+// multisampled depth (reports_ms_depth) every covered sample's stored depth equals the
+// reference's; without, fragments carry attributes and no depth (DRIVER.LAVAPIPE.VALUES).
+inline void expect_multisampled_depth(Driver& d, bool reports_ms_depth) {
+  for (const pipe::DepthFormat f : {pipe::DepthFormat::kD16, pipe::DepthFormat::kD32F}) {
+    Scene s = values_scene();
+    set_sample_pattern(s, standard_pattern(4));
+    s.conventions.depth = f;
+    Primitive t = make_triangle({{{0.0F, 0.0F}, {8.0F, 0.0F}, {0.0F, 16.0F}}});
+    t.z = {0.25F, 0.75F, 0.25F};
+    t.attr = {{0.0F, 0.0F, 1.0F}, {4.0F, 4.0F, 2.0F}, {0.0F, 0.0F, 3.0F}};
+    s.primitives.push_back(t);
+    const Drawing got = values_ok(d, s);
+    auto ref = open_driver("reference", nullptr);
+    const Drawing want = std::get<Drawing>(ref->draw_values(s));
+    ASSERT_EQ(got.fragments, want.fragments) << describe(got.fragments);
+    for (std::size_t i = 0; i < got.fragments.size(); ++i) {
+      if (reports_ms_depth)
+        EXPECT_EQ(got.values[i].depth, want.values[i].depth) << "fragment " << i;
+      else
+        EXPECT_TRUE(got.values[i].depth.empty()) << "fragment " << i;
+    }
+  }
+}
+
 // A constant depth bias moves a window-space triangle of constant depth by between one and two
 // steps of the format per unit of bias, in the bias's direction: r may be up to twice D3D's
 // under Vulkan and OpenGL (FUZZ.VALUES.LEGAL). Lines are not biased (triangles only).

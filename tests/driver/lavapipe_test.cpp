@@ -477,6 +477,12 @@ TEST(LavapipeValues, SampleRateShadingGivesEachSampleItsExactValues) {
   gpu_test::expect_exact_sample_values(*d, /*centre_at_sample=*/false);
 }
 
+// rule: DRIVER.LAVAPIPE.VALUES, PIPE.DEPTH.FORMAT, MSAA.PATTERN.STANDARD
+TEST(LavapipeValues, MultisampledTargetsReportNoDepth) {
+  RASTRULES_LAVAPIPE_OR_SKIP(d);
+  gpu_test::expect_multisampled_depth(*d, /*reports_ms_depth=*/false);
+}
+
 // rule: DRIVER.LAVAPIPE.VALUES, PIPE.DEPTH.BIAS
 TEST(LavapipeValues, DepthBiasMovesTrianglesByOneToTwoStepsPerUnit) {
   RASTRULES_LAVAPIPE_OR_SKIP(d);

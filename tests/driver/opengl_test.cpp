@@ -337,6 +337,12 @@ TEST(OpenGLValues, SampleRateShadingGivesEachSampleItsExactValues) {
   gpu_test::expect_exact_sample_values(*d, /*centre_at_sample=*/true);
 }
 
+// rule: DRIVER.OPENGL.VALUES, PIPE.DEPTH.FORMAT, MSAA.PATTERN.STANDARD
+TEST(OpenGLValues, MultisampledDepthIsReadPerSampleInD16AndD32F) {
+  RASTRULES_OPENGL_OR_SKIP(d);
+  gpu_test::expect_multisampled_depth(*d, /*reports_ms_depth=*/true);
+}
+
 // rule: DRIVER.OPENGL.VALUES, PIPE.DEPTH.BIAS
 TEST(OpenGLValues, DepthBiasMovesTrianglesByOneToTwoStepsPerUnit) {
   RASTRULES_OPENGL_OR_SKIP(d);

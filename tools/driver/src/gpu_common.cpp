@@ -243,7 +243,8 @@ PackedPipeline pack_pipeline(const Scene& scene) {
 Drawing decode_values(const Scene& scene, const PackedPipeline& packed,
                       const std::uint32_t* coverage, const float* values,
                       const std::vector<std::vector<std::optional<pipe::DepthValue>>>* depth,
-                      std::uint32_t w, std::uint32_t h, std::uint32_t per_sample) {
+                      std::uint32_t w, std::uint32_t h, std::uint32_t per_sample,
+                      std::uint32_t depth_samples) {
   Drawing out;
   const std::uint32_t all = full_mask(scene.msaa.count());
   const std::size_t n = scene.attributes.size();
@@ -269,8 +270,19 @@ Drawing decode_values(const Scene& scene, const PackedPipeline& packed,
           FragmentValues fv = v;
           const float* a = values + entry * n;
           fv.attr.assign(a, a + n);
-          if (depth != nullptr && !(*depth)[slot].empty() && (*depth)[slot][k])
-            fv.depth.push_back(*(*depth)[slot][k]);
+          // One stored depth per covered sample, ascending; none unless each was read.
+          if (depth != nullptr && !(*depth)[slot].empty()) {
+            for (std::uint32_t bit = 0; bit < 32; ++bit) {
+              if ((frag.mask >> bit & 1U) == 0)
+                continue;
+              const std::size_t at = k * depth_samples + bit;
+              if (bit >= depth_samples || !(*depth)[slot][at]) {
+                fv.depth.clear();
+                break;
+              }
+              fv.depth.push_back(*(*depth)[slot][at]);
+            }
+          }
           out.fragments.push_back(frag);
           out.values.push_back(std::move(fv));
         };

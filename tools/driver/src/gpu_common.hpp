@@ -116,16 +116,16 @@ struct PackedPipeline {
 
 // Decodes a pipeline draw: per slot plane of w * h sample masks (coverage) and of w * h *
 // attributes floats (values), the fragments with their attributes and, when depth holds a
-// plane per slot, the stored depth of each covered sample (single-sample targets: the pixel's
-// one value; none where the plane has none). per_sample 0: one values entry per pixel; else
-// (sample-rate shading, MSAA.SHADING.SAMPLE) per_sample entries per pixel, and one fragment per
-// covered sample (`sample` k, mask 1 << k) with entry k. Sorted with sort_drawing().
+// plane per slot (w * h * depth_samples entries, sample q of pixel p at p * depth_samples + q),
+// the stored depth of each covered sample (none for a fragment with a sample the plane lacks).
+// per_sample 0: one values entry per pixel; else (sample-rate shading, MSAA.SHADING.SAMPLE)
+// per_sample entries per pixel, and one fragment per covered sample (`sample` k, mask 1 << k) with
+// entry k. Sorted with sort_drawing().
 // rule: DRIVER.VALUES
-[[nodiscard]] Drawing
-decode_values(const Scene& scene, const PackedPipeline& packed, const std::uint32_t* coverage,
-              const float* values,
-              const std::vector<std::vector<std::optional<pipe::DepthValue>>>* depth,
-              std::uint32_t w, std::uint32_t h, std::uint32_t per_sample);
+[[nodiscard]] Drawing decode_values(
+    const Scene& scene, const PackedPipeline& packed, const std::uint32_t* coverage,
+    const float* values, const std::vector<std::vector<std::optional<pipe::DepthValue>>>* depth,
+    std::uint32_t w, std::uint32_t h, std::uint32_t per_sample, std::uint32_t depth_samples);
 
 // The base of the GPU adapters: not copyable, its info and largest K filled in by the adapter
 // when it opens, unsupported() from unsupported_scene() with the adapter's own checks, and

@@ -449,7 +449,7 @@ public:
     }
     return detail::decode_values(scene, packed, static_cast<const std::uint32_t*>(coverage_.mapped),
                                  static_cast<const float*>(values_.mapped),
-                                 depth ? &depths : nullptr, w, h, per_sample ? samples : 0U);
+                                 depth ? &depths : nullptr, w, h, per_sample ? samples : 0U, 1U);
   }
 
 private:

@@ -290,6 +290,7 @@ public:
       glMinSampleShading(1.0F);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    std::string failed;
     draw_primitives(scene, packed, vp, [&](std::size_t i, GLenum mode, GLint first, GLsizei count) {
       glUniform1ui(kUniformSlot, packed.first_slot[i]);
       glDrawArrays(mode, first, count);
@@ -306,19 +307,23 @@ public:
                        vals.data());
 
     // rule: DRIVER.OPENGL.VALUES, PIPE.DEPTH.FORMAT
-    // The stored depth: each slot alone into a cleared single-sample depth buffer of the
-    // scene's format, test GL_ALWAYS, read back exactly. Multisampled depth is not read back.
+    // The stored depth: each slot alone into a cleared depth buffer of the scene's format and
+    // sample count, test GL_ALWAYS, read back exactly (read_depth). A multisampled buffer is
+    // read by a compute shader through float, which is exact for D16 and D32F only: D24 on
+    // several samples reports no depth.
+    const pipe::DepthFormat format = scene.conventions.depth;
     std::vector<std::vector<std::optional<pipe::DepthValue>>> depth;
-    if (scene.depth && samples == 1) {
-      if (std::string why = ensure_depth(w, h, scene.conventions.depth); !why.empty())
+    if (scene.depth && (samples == 1 || format != pipe::DepthFormat::kD24)) {
+      if (std::string why = ensure_depth(w, h, format, samples); !why.empty())
         return DriverError{why};
       depth.resize(packed.slots);
-      glBindFramebuffer(GL_FRAMEBUFFER, depth_framebuffer_);
+      glBindFramebuffer(GL_FRAMEBUFFER, samples == 1 ? depth_framebuffer_ : depth_ms_framebuffer_);
       glDepthMask(GL_TRUE);
       glEnable(GL_DEPTH_TEST);
       glDepthFunc(GL_ALWAYS);
-      std::array<std::vector<std::uint32_t>, 2> raw{std::vector<std::uint32_t>(plane),
-                                                    std::vector<std::uint32_t>(plane)};
+      const std::size_t entries = plane * samples;
+      std::array<std::vector<std::uint32_t>, 2> raw{std::vector<std::uint32_t>(entries),
+                                                    std::vector<std::uint32_t>(entries)};
       draw_primitives(
           scene, packed, vp, [&](std::size_t i, GLenum mode, GLint first, GLsizei count) {
             // rule: PIPE.DEPTH.BIAS
@@ -336,8 +341,8 @@ public:
             const bool strip = mode == GL_LINE_STRIP;
             const GLsizei parts = strip ? count - 1 : 1;
             for (GLsizei s = 0; s < parts; ++s) {
-              // Drawn twice, over a clear to 0 and over a clear to 1: a pixel the slot
-              // covers holds the same value both times, any other pixel the two clear
+              // Drawn twice, over a clear to 0 and over a clear to 1: a sample the slot
+              // covers holds the same value both times, any other sample the two clear
               // values.
               for (std::size_t pass = 0; pass < 2; ++pass) {
                 glDisable(GL_SCISSOR_TEST);
@@ -348,15 +353,19 @@ public:
                   glDrawArrays(GL_LINES, first + s, 2);
                 else
                   glDrawArrays(mode, first, count);
-                read_depth(scene.conventions.depth, w, h, raw[pass].data());
+                if (std::string why = read_depth(format, w, h, samples, raw[pass].data());
+                    !why.empty()) {
+                  failed = why;
+                  return;
+                }
               }
               auto& out = depth[packed.first_slot[i] + static_cast<std::uint32_t>(s)];
-              out.resize(plane);
-              for (std::size_t k = 0; k < plane; ++k) {
+              out.resize(entries);
+              for (std::size_t k = 0; k < entries; ++k) {
                 if (raw[0][k] != raw[1][k])
                   continue;
                 pipe::DepthValue v;
-                if (scene.conventions.depth == pipe::DepthFormat::kD32F)
+                if (format == pipe::DepthFormat::kD32F)
                   v.f = std::bit_cast<float>(raw[0][k]);
                 else
                   v.unorm = raw[0][k];
@@ -366,6 +375,8 @@ public:
           });
       glDisable(GL_DEPTH_TEST);
       glDisable(GL_POLYGON_OFFSET_FILL);
+      if (!failed.empty())
+        return DriverError{failed};
     }
     glDisable(GL_DEPTH_CLAMP);
     for (std::size_t k = 0; k < n; ++k)
@@ -374,7 +385,7 @@ public:
       return DriverError{"opengl: GL error " + std::to_string(err) + " while drawing values"};
     }
     return detail::decode_values(scene, packed, cov.data(), vals.data(),
-                                 depth.empty() ? nullptr : &depth, w, h, per_sample);
+                                 depth.empty() ? nullptr : &depth, w, h, per_sample, samples);
   }
 
 private:
@@ -452,15 +463,49 @@ private:
     }
   }
 
-  // Reads the depth buffer's w x h values exactly: D16 as GL_UNSIGNED_SHORT, D24 from a
-  // GL_DEPTH24_STENCIL8 buffer as GL_UNSIGNED_INT_24_8 (depth in the high 24 bits), D32F as
-  // GL_FLOAT bits.
+  // Reads the depth buffer's w x h values (times samples: sample q of pixel p at p * samples + q)
+  // exactly, in the format's unit (the UNORM integer, or the float32 bits): on one sample D16
+  // as GL_UNSIGNED_SHORT, D24 from a GL_DEPTH24_STENCIL8 buffer as GL_UNSIGNED_INT_24_8 (depth
+  // in the high 24 bits), D32F as GL_FLOAT; on several, D16 and D32F through the compute shader
+  // (texelFetch of the multisampled texture, a float: exactly k / 65535 rounded to float32 for
+  // D16, from which k is recovered by rounding, the stored float for D32F).
   // rule: DRIVER.OPENGL.VALUES
-  void read_depth(pipe::DepthFormat f, std::uint32_t w, std::uint32_t h, std::uint32_t* out) {
+  std::string read_depth(pipe::DepthFormat f, std::uint32_t w, std::uint32_t h,
+                         std::uint32_t samples, std::uint32_t* out) {
     const auto gw = static_cast<GLsizei>(w);
     const auto gh = static_cast<GLsizei>(h);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
     const std::size_t plane = std::size_t{w} * h;
+    if (samples > 1) {
+      if (std::string why = ensure_depth_reader(); !why.empty())
+        return why;
+      const std::size_t entries = plane * samples;
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, depth_out_);
+      glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(entries * 4U), nullptr,
+                   GL_DYNAMIC_READ);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, depth_out_);
+      glActiveTexture(GL_TEXTURE0);
+      glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, depth_ms_texture_);
+      GLint program = 0;
+      glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+      glUseProgram(depth_reader_);
+      glUniform1ui(0, w);
+      glUniform1ui(1, h);
+      glUniform1ui(2, samples);
+      glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+      glDispatchCompute((w + 7) / 8, (h + 7) / 8, 1);
+      glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+      std::vector<float> v(entries);
+      glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(entries * 4U),
+                         v.data());
+      glUseProgram(static_cast<GLuint>(program));
+      for (std::size_t k = 0; k < entries; ++k) {
+        out[k] = f == pipe::DepthFormat::kD16
+                     ? static_cast<std::uint32_t>(std::lround(static_cast<double>(v[k]) * 65535.0))
+                     : std::bit_cast<std::uint32_t>(v[k]);
+      }
+      return {};
+    }
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
     if (f == pipe::DepthFormat::kD16) {
       std::vector<std::uint16_t> v(plane);
       glReadPixels(0, 0, gw, gh, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, v.data());
@@ -472,20 +517,91 @@ private:
     } else {
       glReadPixels(0, 0, gw, gh, GL_DEPTH_COMPONENT, GL_FLOAT, out);
     }
+    return {};
   }
 
-  // A single-sample framebuffer with only a depth renderbuffer of the format.
-  std::string ensure_depth(std::uint32_t w, std::uint32_t h, pipe::DepthFormat f) {
-    if (depth_framebuffer_ != 0 && depth_w_ == w && depth_h_ == h && depth_format_ == f)
+  // The compute program that copies a multisampled depth texture (unit 0) to a buffer.
+  std::string ensure_depth_reader() {
+    if (depth_reader_ != 0)
       return {};
-    depth_w_ = 0;
+    static constexpr const char* kSource = R"glsl(#version 430 core
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(binding = 0) uniform sampler2DMS depth_texture;
+layout(location = 0) uniform uint width;
+layout(location = 1) uniform uint height;
+layout(location = 2) uniform uint samples;
+layout(std430, binding = 2) buffer Out {
+  float v[];
+};
+void main() {
+  uvec2 p = gl_GlobalInvocationID.xy;
+  if (p.x >= width || p.y >= height) {
+    return;
+  }
+  for (uint q = 0u; q < samples; ++q) {
+    v[(p.y * width + p.x) * samples + q] = texelFetch(depth_texture, ivec2(p), int(q)).r;
+  }
+}
+)glsl";
+    GLuint cs = 0;
+    if (std::string why = compile(GL_COMPUTE_SHADER, kSource, &cs); !why.empty())
+      return why;
+    depth_reader_ = glCreateProgram();
+    glAttachShader(depth_reader_, cs);
+    glLinkProgram(depth_reader_);
+    glDeleteShader(cs);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(depth_reader_, GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+      glDeleteProgram(depth_reader_);
+      depth_reader_ = 0;
+      return "opengl: depth reader link failed";
+    }
+    glGenBuffers(1, &depth_out_);
+    return {};
+  }
+
+  // A framebuffer with only a depth buffer of the format: on one sample a renderbuffer, on
+  // several a multisampled texture (read_depth reads it in a shader).
+  std::string ensure_depth(std::uint32_t w, std::uint32_t h, pipe::DepthFormat f,
+                           std::uint32_t samples) {
     const bool d24 = f == pipe::DepthFormat::kD24;
     const GLenum internal = f == pipe::DepthFormat::kD16 ? GL_DEPTH_COMPONENT16
                             : d24                        ? GL_DEPTH24_STENCIL8
                                                          : GL_DEPTH_COMPONENT32F;
-    if (std::string why = attach_renderbuffer(
-            &depth_framebuffer_, &depth_renderbuffer_,
-            d24 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, internal, 1, w, h);
+    const GLenum attachment = d24 ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT;
+    if (samples > 1) {
+      if (depth_ms_framebuffer_ != 0 && depth_ms_w_ == w && depth_ms_h_ == h &&
+          depth_ms_format_ == f && depth_ms_samples_ == samples) {
+        return {};
+      }
+      depth_ms_w_ = 0;
+      if (depth_ms_framebuffer_ == 0)
+        glGenFramebuffers(1, &depth_ms_framebuffer_);
+      if (depth_ms_texture_ != 0)
+        glDeleteTextures(1, &depth_ms_texture_); // immutable storage: a new texture
+      glGenTextures(1, &depth_ms_texture_);
+      glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, depth_ms_texture_);
+      glTexStorage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, static_cast<GLsizei>(samples), internal,
+                                static_cast<GLsizei>(w), static_cast<GLsizei>(h), GL_TRUE);
+      glBindFramebuffer(GL_FRAMEBUFFER, depth_ms_framebuffer_);
+      glFramebufferTexture(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, 0, 0);
+      glFramebufferTexture(GL_FRAMEBUFFER, attachment, depth_ms_texture_, 0);
+      glDrawBuffer(GL_NONE);
+      glReadBuffer(GL_NONE);
+      if (GLenum st = glCheckFramebufferStatus(GL_FRAMEBUFFER); st != GL_FRAMEBUFFER_COMPLETE)
+        return "opengl: depth framebuffer incomplete (status " + std::to_string(st) + ")";
+      depth_ms_w_ = w;
+      depth_ms_h_ = h;
+      depth_ms_format_ = f;
+      depth_ms_samples_ = samples;
+      return {};
+    }
+    if (depth_framebuffer_ != 0 && depth_w_ == w && depth_h_ == h && depth_format_ == f)
+      return {};
+    depth_w_ = 0;
+    if (std::string why = attach_renderbuffer(&depth_framebuffer_, &depth_renderbuffer_, attachment,
+                                              internal, 1, w, h);
         !why.empty()) {
       return why;
     }
@@ -863,6 +979,14 @@ private:
         glDeleteFramebuffers(1, &depth_framebuffer_);
       if (depth_renderbuffer_ != 0)
         glDeleteRenderbuffers(1, &depth_renderbuffer_);
+      if (depth_ms_framebuffer_ != 0)
+        glDeleteFramebuffers(1, &depth_ms_framebuffer_);
+      if (depth_ms_texture_ != 0)
+        glDeleteTextures(1, &depth_ms_texture_);
+      if (depth_reader_ != 0)
+        glDeleteProgram(depth_reader_);
+      if (depth_out_ != 0)
+        glDeleteBuffers(1, &depth_out_);
       if (vao_ != 0)
         glDeleteVertexArrays(1, &vao_);
       if (vertex_buffer_ != 0)
@@ -909,6 +1033,14 @@ private:
   std::uint32_t depth_w_ = 0;
   std::uint32_t depth_h_ = 0;
   pipe::DepthFormat depth_format_ = pipe::DepthFormat::kD24;
+  GLuint depth_ms_framebuffer_ = 0;
+  GLuint depth_ms_texture_ = 0;
+  std::uint32_t depth_ms_w_ = 0;
+  std::uint32_t depth_ms_h_ = 0;
+  std::uint32_t depth_ms_samples_ = 0;
+  pipe::DepthFormat depth_ms_format_ = pipe::DepthFormat::kD24;
+  GLuint depth_reader_ = 0; // ensure_depth_reader
+  GLuint depth_out_ = 0;
 };
 
 } // namespace
