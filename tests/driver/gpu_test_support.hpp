@@ -231,11 +231,13 @@ inline void expect_exact_sample_values(Driver& d, bool centre_at_sample) {
   }
 }
 
-// The exact scene of expect_exact_values on the standard 4x pattern in D16 and D32F: with
-// multisampled depth (reports_ms_depth) every covered sample's stored depth equals the
-// reference's; without, fragments carry attributes and no depth (DRIVER.LAVAPIPE.VALUES).
-inline void expect_multisampled_depth(Driver& d, bool reports_ms_depth) {
-  for (const pipe::DepthFormat f : {pipe::DepthFormat::kD16, pipe::DepthFormat::kD32F}) {
+// The exact scene of expect_exact_values on the standard 4x pattern: in D16 and D32F every
+// covered sample's stored depth equals the reference's (read through a float, exact for these
+// two); in D24 fragments carry attributes and no depth.
+inline void expect_multisampled_depth(Driver& d) {
+  for (const pipe::DepthFormat f :
+       {pipe::DepthFormat::kD16, pipe::DepthFormat::kD32F, pipe::DepthFormat::kD24}) {
+    const bool reports_ms_depth = f != pipe::DepthFormat::kD24;
     Scene s = values_scene();
     set_sample_pattern(s, standard_pattern(4));
     s.conventions.depth = f;

@@ -478,9 +478,9 @@ TEST(LavapipeValues, SampleRateShadingGivesEachSampleItsExactValues) {
 }
 
 // rule: DRIVER.LAVAPIPE.VALUES, PIPE.DEPTH.FORMAT, MSAA.PATTERN.STANDARD
-TEST(LavapipeValues, MultisampledTargetsReportNoDepth) {
+TEST(LavapipeValues, MultisampledDepthIsReadPerSampleInD16AndD32F) {
   RASTRULES_LAVAPIPE_OR_SKIP(d);
-  gpu_test::expect_multisampled_depth(*d, /*reports_ms_depth=*/false);
+  gpu_test::expect_multisampled_depth(*d);
 }
 
 // rule: DRIVER.LAVAPIPE.VALUES, PIPE.DEPTH.BIAS

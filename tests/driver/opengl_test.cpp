@@ -340,7 +340,7 @@ TEST(OpenGLValues, SampleRateShadingGivesEachSampleItsExactValues) {
 // rule: DRIVER.OPENGL.VALUES, PIPE.DEPTH.FORMAT, MSAA.PATTERN.STANDARD
 TEST(OpenGLValues, MultisampledDepthIsReadPerSampleInD16AndD32F) {
   RASTRULES_OPENGL_OR_SKIP(d);
-  gpu_test::expect_multisampled_depth(*d, /*reports_ms_depth=*/true);
+  gpu_test::expect_multisampled_depth(*d);
 }
 
 // rule: DRIVER.OPENGL.VALUES, PIPE.DEPTH.BIAS

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <map>
@@ -23,6 +24,7 @@
 #include "drivers.hpp"
 #include "gpu_common.hpp"
 #include "rastrules/driver/coverage_frag.spv.h"
+#include "rastrules/driver/depth_copy_comp.spv.h"
 #include "rastrules/driver/timing_frag.spv.h"
 #include "rastrules/driver/values_frag.spv.h"
 #include "rastrules/driver/values_sample_frag.spv.h"
@@ -237,9 +239,11 @@ public:
     const bool per_sample = scene.msaa.shading == ShadingRate::kSample;
     const VkDeviceSize val_bytes =
         std::max<VkDeviceSize>(cov_bytes * n * (per_sample ? samples : 1U), 4U);
-    const bool depth = scene.depth.has_value() && samples == 1;
+    // Several samples: D16 and D32F through the compute copy (exact), not D24.
+    const bool depth = scene.depth.has_value() &&
+                       (samples == 1 || scene.conventions.depth != pipe::DepthFormat::kD24);
     const VkDeviceSize depth_bytes =
-        std::max<VkDeviceSize>(VkDeviceSize{slots} * 2U * plane * 4U, 4U);
+        std::max<VkDeviceSize>(VkDeviceSize{slots} * 2U * plane * samples * 4U, 4U);
     for (const auto& [bytes, buffer] :
          {std::pair{cov_bytes, &coverage_}, std::pair{val_bytes, &values_}}) {
       if (std::string why = detail::ensure_host_buffer(
@@ -250,14 +254,21 @@ public:
       }
     }
     if (depth) {
-      if (std::string why =
-              detail::ensure_host_buffer(vk_.device, vk_.memory, depth_bytes,
-                                         VK_BUFFER_USAGE_TRANSFER_DST_BIT, &depth_readback_);
+      if (std::string why = detail::ensure_host_buffer(vk_.device, vk_.memory, depth_bytes,
+                                                       VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                                       &depth_readback_);
           !why.empty()) {
         return DriverError{why};
       }
-      if (std::string why = ensure_depth_target(w, h, scene.conventions.depth); !why.empty())
+      if (std::string why = ensure_depth_target(w, h, scene.conventions.depth, samples);
+          !why.empty()) {
         return DriverError{why};
+      }
+      if (samples > 1) {
+        if (std::string why = ensure_depth_copy(); !why.empty())
+          return DriverError{why};
+      }
     }
     bind_values();
     bound_size_ = 0; // the coverage path rebinds its set before its next draw
@@ -349,7 +360,7 @@ public:
       for_each_primitive(
           scene, packed,
           [&](std::size_t i, PipelineKey key, std::uint32_t first, std::uint32_t count) {
-            key.samples = VK_SAMPLE_COUNT_1_BIT;
+            key.samples = static_cast<VkSampleCountFlagBits>(samples);
             key.sample_mask = scene.msaa.effective_mask();
             key.depth_write = true;
             // rule: PIPE.DEPTH.BIAS
@@ -394,15 +405,31 @@ public:
                                    sizeof(ValuesPush), &push);
                 vkCmdDraw(cmd, strip ? 2U : count, 1, strip ? first + s : first, 0);
                 vkCmdEndRenderPass(cmd);
-                VkBufferImageCopy region{};
-                region.bufferOffset = ((VkDeviceSize{push.slot} * 2U + pass) * plane) * 4U;
-                region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-                region.imageExtent = {w, h, 1};
-                vkCmdCopyImageToBuffer(cmd, depth_image_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                       depth_readback_.buffer, 1, &region);
-                barrier(VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT,
-                        VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
-                        VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+                const VkDeviceSize at = (VkDeviceSize{push.slot} * 2U + pass) * plane * samples;
+                if (samples > 1) {
+                  // rule: DRIVER.LAVAPIPE.VALUES
+                  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, copy_pipeline_);
+                  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, copy_layout_, 0, 1,
+                                          &copy_set_, 0, nullptr);
+                  const std::array<std::uint32_t, 4> copy_push{w, h, samples,
+                                                               static_cast<std::uint32_t>(at)};
+                  vkCmdPushConstants(cmd, copy_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                                     sizeof(copy_push), copy_push.data());
+                  vkCmdDispatch(cmd, (w + 7) / 8, (h + 7) / 8, 1);
+                  barrier(VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT,
+                          VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
+                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+                } else {
+                  VkBufferImageCopy region{};
+                  region.bufferOffset = at * 4U;
+                  region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+                  region.imageExtent = {w, h, 1};
+                  vkCmdCopyImageToBuffer(cmd, depth_image_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                         depth_readback_.buffer, 1, &region);
+                  barrier(VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+                          VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
+                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+                }
               }
             }
             return true;
@@ -410,7 +437,8 @@ public:
       if (!failed.empty())
         return fail(failed);
     }
-    barrier(VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+    barrier(VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
+                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
             VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
             VK_ACCESS_HOST_READ_BIT);
     if (std::string why = end_and_submit(); !why.empty())
@@ -420,8 +448,19 @@ public:
     if (depth) {
       const auto* raw = static_cast<const std::uint8_t*>(depth_readback_.mapped);
       const pipe::DepthFormat f = scene.conventions.depth;
+      // Entry k (pixel k / samples, sample k % samples) of a slot after pass 0 or 1, in the
+      // format's unit: on several samples the compute copy's float (D16: k / 65535, recovered
+      // by rounding; D32F: the stored float), else the copied texel.
+      const VkDeviceSize entries = plane * samples;
       const auto texel = [&](std::uint32_t slot, std::uint32_t pass, VkDeviceSize k_) {
-        const std::uint8_t* p = raw + ((VkDeviceSize{slot} * 2U + pass) * plane) * 4U;
+        const std::uint8_t* p = raw + ((VkDeviceSize{slot} * 2U + pass) * entries) * 4U;
+        if (samples > 1) {
+          float x = 0.0F;
+          std::memcpy(&x, p + k_ * 4U, 4);
+          return f == pipe::DepthFormat::kD16
+                     ? static_cast<std::uint32_t>(std::lround(static_cast<double>(x) * 65535.0))
+                     : std::bit_cast<std::uint32_t>(x);
+        }
         if (f == pipe::DepthFormat::kD16) {
           std::uint16_t v = 0;
           std::memcpy(&v, p + k_ * 2U, 2);
@@ -433,23 +472,24 @@ public:
       };
       depths.resize(slots);
       for (std::uint32_t slot = 0; slot < slots; ++slot) {
-        depths[slot].resize(plane);
-        for (VkDeviceSize p = 0; p < plane; ++p) {
-          const std::uint32_t a = texel(slot, 0, p);
-          if (a != texel(slot, 1, p))
+        depths[slot].resize(entries);
+        for (VkDeviceSize k_ = 0; k_ < entries; ++k_) {
+          const std::uint32_t a = texel(slot, 0, k_);
+          if (a != texel(slot, 1, k_))
             continue;
           pipe::DepthValue v;
           if (f == pipe::DepthFormat::kD32F)
             v.f = std::bit_cast<float>(a);
           else
             v.unorm = a;
-          depths[slot][p] = v;
+          depths[slot][k_] = v;
         }
       }
     }
     return detail::decode_values(scene, packed, static_cast<const std::uint32_t*>(coverage_.mapped),
                                  static_cast<const float*>(values_.mapped),
-                                 depth ? &depths : nullptr, w, h, per_sample ? samples : 0U, 1U);
+                                 depth ? &depths : nullptr, w, h, per_sample ? samples : 0U,
+                                 samples);
   }
 
 private:
@@ -545,12 +585,16 @@ private:
 
   // The depth image of w x h in the format (and its view, render pass and framebuffer): kept
   // when it has that size and format, else (after the device is idle) replaced.
-  std::string ensure_depth_target(std::uint32_t w, std::uint32_t h, pipe::DepthFormat f) {
+  std::string ensure_depth_target(std::uint32_t w, std::uint32_t h, pipe::DepthFormat f,
+                                  std::uint32_t samples) {
     const VkFormat format = vk_depth_format(f, x8_d24_);
     if (depth_framebuffer_ != VK_NULL_HANDLE && depth_w_ == w && depth_h_ == h &&
-        depth_format_ == format) {
+        depth_format_ == format && depth_samples_ == samples) {
       return {};
     }
+    // Several samples: the attachment is sampled by the compute copy (depth_copy.comp)
+    // instead of copied to the buffer (multisampled images cannot be).
+    const bool ms = samples > 1;
     vkDeviceWaitIdle(vk_.device);
     destroy_depth_target();
     const VkDevice device = vk_.device;
@@ -561,9 +605,10 @@ private:
     ici.extent = {w, h, 1};
     ici.mipLevels = 1;
     ici.arrayLayers = 1;
-    ici.samples = VK_SAMPLE_COUNT_1_BIT;
+    ici.samples = static_cast<VkSampleCountFlagBits>(samples);
     ici.tiling = VK_IMAGE_TILING_OPTIMAL;
-    ici.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    ici.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                (ms ? VK_IMAGE_USAGE_SAMPLED_BIT : VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
     ici.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     if (VkResult r = vkCreateImage(device, &ici, nullptr, &depth_image_); r != VK_SUCCESS) {
       depth_image_ = VK_NULL_HANDLE;
@@ -599,13 +644,14 @@ private:
     }
     VkAttachmentDescription att{};
     att.format = format;
-    att.samples = VK_SAMPLE_COUNT_1_BIT;
+    att.samples = static_cast<VkSampleCountFlagBits>(samples);
     att.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
     att.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     att.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     att.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
     att.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    att.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    att.finalLayout =
+        ms ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
     VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
     VkSubpassDescription subpass{};
     subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
@@ -615,18 +661,18 @@ private:
     std::array<VkSubpassDependency, 2> deps{};
     deps[0] = {VK_SUBPASS_EXTERNAL,
                0,
-               VK_PIPELINE_STAGE_TRANSFER_BIT,
+               VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
                    VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
-               VK_ACCESS_TRANSFER_READ_BIT,
+               VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_SHADER_READ_BIT,
                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                0};
     deps[1] = {0,
                VK_SUBPASS_EXTERNAL,
                VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
-               VK_PIPELINE_STAGE_TRANSFER_BIT,
+               VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-               VK_ACCESS_TRANSFER_READ_BIT,
+               VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_SHADER_READ_BIT,
                0};
     VkRenderPassCreateInfo rci{};
     rci.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
@@ -656,6 +702,93 @@ private:
     depth_w_ = w;
     depth_h_ = h;
     depth_format_ = format;
+    depth_samples_ = samples;
+    return {};
+  }
+
+  // The compute copy of multisampled depth (depth_copy.comp): its sampler, set (the depth
+  // view, the readback buffer), layout and pipeline, created on first use.
+  // rule: DRIVER.LAVAPIPE.VALUES
+  std::string ensure_depth_copy() {
+    const VkDevice device = vk_.device;
+    if (copy_pipeline_ == VK_NULL_HANDLE) {
+      VkSamplerCreateInfo sci{};
+      sci.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
+      sci.magFilter = VK_FILTER_NEAREST;
+      sci.minFilter = VK_FILTER_NEAREST;
+      if (VkResult r = vkCreateSampler(device, &sci, nullptr, &copy_sampler_); r != VK_SUCCESS)
+        return vk_failed("vkCreateSampler", r);
+      std::array<VkDescriptorSetLayoutBinding, 2> b{};
+      b[0] = {0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT,
+              nullptr};
+      b[1] = {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+      VkDescriptorSetLayoutCreateInfo dli{};
+      dli.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+      dli.bindingCount = 2;
+      dli.pBindings = b.data();
+      if (VkResult r = vkCreateDescriptorSetLayout(device, &dli, nullptr, &copy_set_layout_);
+          r != VK_SUCCESS) {
+        return vk_failed("vkCreateDescriptorSetLayout", r);
+      }
+      std::array<VkDescriptorPoolSize, 2> sizes{
+          VkDescriptorPoolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1},
+          VkDescriptorPoolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
+      VkDescriptorPoolCreateInfo dpi{};
+      dpi.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+      dpi.maxSets = 1;
+      dpi.poolSizeCount = 2;
+      dpi.pPoolSizes = sizes.data();
+      if (VkResult r = vkCreateDescriptorPool(device, &dpi, nullptr, &copy_pool_); r != VK_SUCCESS)
+        return vk_failed("vkCreateDescriptorPool", r);
+      VkDescriptorSetAllocateInfo dai{};
+      dai.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+      dai.descriptorPool = copy_pool_;
+      dai.descriptorSetCount = 1;
+      dai.pSetLayouts = &copy_set_layout_;
+      if (VkResult r = vkAllocateDescriptorSets(device, &dai, &copy_set_); r != VK_SUCCESS)
+        return vk_failed("vkAllocateDescriptorSets", r);
+      if (std::string why = create_layout(device, copy_set_layout_, VK_SHADER_STAGE_COMPUTE_BIT,
+                                          4 * sizeof(std::uint32_t), &copy_layout_);
+          !why.empty()) {
+        return why;
+      }
+      VkShaderModule module = VK_NULL_HANDLE;
+      if (std::string why = detail::create_shader_module(device, kDepth_copy_comp,
+                                                         sizeof(kDepth_copy_comp), &module);
+          !why.empty()) {
+        return why;
+      }
+      VkComputePipelineCreateInfo cci{};
+      cci.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
+      cci.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+      cci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+      cci.stage.module = module;
+      cci.stage.pName = "main";
+      cci.layout = copy_layout_;
+      const VkResult r =
+          vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &cci, nullptr, &copy_pipeline_);
+      vkDestroyShaderModule(device, module, nullptr);
+      if (r != VK_SUCCESS) {
+        copy_pipeline_ = VK_NULL_HANDLE;
+        return vk_failed("vkCreateComputePipelines", r);
+      }
+    }
+    // The set names the current depth view and readback buffer (both may have been replaced).
+    VkDescriptorImageInfo ii{copy_sampler_, depth_view_,
+                             VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
+    VkDescriptorBufferInfo bi{depth_readback_.buffer, 0, VK_WHOLE_SIZE};
+    std::array<VkWriteDescriptorSet, 2> writes{};
+    for (std::uint32_t b = 0; b < 2; ++b) {
+      writes[b].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+      writes[b].dstSet = copy_set_;
+      writes[b].dstBinding = b;
+      writes[b].descriptorCount = 1;
+    }
+    writes[0].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    writes[0].pImageInfo = &ii;
+    writes[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[1].pBufferInfo = &bi;
+    vkUpdateDescriptorSets(device, 2, writes.data(), 0, nullptr);
     return {};
   }
 
@@ -826,6 +959,25 @@ private:
     return create_values_program();
   }
 
+  // A pipeline layout of one descriptor set layout and one push-constant range of `bytes` for
+  // `stages`; *layout is VK_NULL_HANDLE on failure.
+  static std::string create_layout(VkDevice device, VkDescriptorSetLayout set_layout,
+                                   VkShaderStageFlags stages, std::uint32_t bytes,
+                                   VkPipelineLayout* layout) {
+    const VkPushConstantRange range{stages, 0, bytes};
+    VkPipelineLayoutCreateInfo lci{};
+    lci.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+    lci.setLayoutCount = 1;
+    lci.pSetLayouts = &set_layout;
+    lci.pushConstantRangeCount = 1;
+    lci.pPushConstantRanges = &range;
+    if (VkResult r = vkCreatePipelineLayout(device, &lci, nullptr, layout); r != VK_SUCCESS) {
+      *layout = VK_NULL_HANDLE;
+      return vk_failed("vkCreatePipelineLayout", r);
+    }
+    return {};
+  }
+
   // A descriptor set of `count` storage buffers (bindings 0, 1, ...) for the fragment stage,
   // with its layout and its own pool.
   static std::string create_storage_set(VkDevice device, std::uint32_t count,
@@ -882,20 +1034,9 @@ private:
         !why.empty()) {
       return why;
     }
-    const VkPushConstantRange range{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                                    sizeof(ValuesPush)};
-    VkPipelineLayoutCreateInfo lci{};
-    lci.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
-    lci.setLayoutCount = 1;
-    lci.pSetLayouts = &values_set_layout_;
-    lci.pushConstantRangeCount = 1;
-    lci.pPushConstantRanges = &range;
-    if (VkResult r = vkCreatePipelineLayout(device, &lci, nullptr, &values_layout_);
-        r != VK_SUCCESS) {
-      values_layout_ = VK_NULL_HANDLE;
-      return vk_failed("vkCreatePipelineLayout", r);
-    }
-    return {};
+    return create_layout(device, values_set_layout_,
+                         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                         sizeof(ValuesPush), &values_layout_);
   }
 
   // Points the descriptor set at the coverage buffer.
@@ -939,6 +1080,16 @@ private:
         vkDestroyPipeline(device, p, nullptr);
       pipelines_.clear();
       destroy_depth_target();
+      if (copy_pipeline_ != VK_NULL_HANDLE)
+        vkDestroyPipeline(device, copy_pipeline_, nullptr);
+      if (copy_layout_ != VK_NULL_HANDLE)
+        vkDestroyPipelineLayout(device, copy_layout_, nullptr);
+      if (copy_pool_ != VK_NULL_HANDLE)
+        vkDestroyDescriptorPool(device, copy_pool_, nullptr);
+      if (copy_set_layout_ != VK_NULL_HANDLE)
+        vkDestroyDescriptorSetLayout(device, copy_set_layout_, nullptr);
+      if (copy_sampler_ != VK_NULL_HANDLE)
+        vkDestroySampler(device, copy_sampler_, nullptr);
       for (auto& [key, p] : values_pipelines_)
         vkDestroyPipeline(device, p, nullptr);
       values_pipelines_.clear();
@@ -1006,6 +1157,14 @@ private:
   std::uint32_t depth_w_ = 0;
   std::uint32_t depth_h_ = 0;
   VkFormat depth_format_ = VK_FORMAT_UNDEFINED;
+  std::uint32_t depth_samples_ = 0;
+  // The compute copy of multisampled depth (ensure_depth_copy).
+  VkSampler copy_sampler_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout copy_set_layout_ = VK_NULL_HANDLE;
+  VkDescriptorPool copy_pool_ = VK_NULL_HANDLE;
+  VkDescriptorSet copy_set_ = VK_NULL_HANDLE;
+  VkPipelineLayout copy_layout_ = VK_NULL_HANDLE;
+  VkPipeline copy_pipeline_ = VK_NULL_HANDLE;
   std::map<std::pair<PipelineKey, VkRenderPass>, VkPipeline> values_pipelines_;
 };
 
