@@ -293,6 +293,7 @@ public:
         {static_cast<std::int32_t>(x0), static_cast<std::int32_t>(y0)},
         {static_cast<std::uint32_t>(std::clamp<std::int64_t>(sc.x1, x0, w) - x0),
          static_cast<std::uint32_t>(std::clamp<std::int64_t>(sc.y1, y0, h) - y0)}};
+    const DrawView view{k, vp, scissor};
     ValuesPush push;
     push.inv_k = static_cast<float>(1.0 / k);
     push.width = w;
@@ -338,14 +339,8 @@ public:
             failed = *e;
             return false;
           }
-          vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, std::get<VkPipeline>(pipeline));
-          set_viewport(cmd, packed.window_space[i], k, vp, scissor);
-          push.slot = packed.first_slot[i];
-          push.window_space = packed.window_space[i] ? 1U : 0U;
-          vkCmdPushConstants(cmd, values_layout_,
-                             VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                             sizeof(ValuesPush), &push);
-          vkCmdDraw(cmd, count, 1, first, 0);
+          record_draw(cmd, std::get<VkPipeline>(pipeline), packed.window_space[i], view,
+                      packed.first_slot[i], first, count, push);
           return true;
         });
     vkCmdEndRenderPass(cmd);
@@ -392,44 +387,15 @@ public:
                 vkCmdBindVertexBuffers(cmd, 0, 1, &values_vertex_.buffer, &zero);
                 vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, values_layout_, 0, 1,
                                         &values_set_, 0, nullptr);
-                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                  std::get<VkPipeline>(pipeline));
-                set_viewport(cmd, packed.window_space[i], k, vp, scissor);
                 if (key.depth_bias)
                   vkCmdSetDepthBias(cmd, static_cast<float>(bias.bias), bias.clamp,
                                     bias.slope_scaled);
-                push.slot = packed.first_slot[i] + s;
-                push.window_space = packed.window_space[i] ? 1U : 0U;
-                vkCmdPushConstants(cmd, values_layout_,
-                                   VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                                   sizeof(ValuesPush), &push);
-                vkCmdDraw(cmd, strip ? 2U : count, 1, strip ? first + s : first, 0);
+                record_draw(cmd, std::get<VkPipeline>(pipeline), packed.window_space[i], view,
+                            packed.first_slot[i] + s, strip ? first + s : first, strip ? 2U : count,
+                            push);
                 vkCmdEndRenderPass(cmd);
-                const VkDeviceSize at = (VkDeviceSize{push.slot} * 2U + pass) * plane * samples;
-                if (samples > 1) {
-                  // rule: DRIVER.LAVAPIPE.VALUES
-                  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, copy_pipeline_);
-                  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, copy_layout_, 0, 1,
-                                          &copy_set_, 0, nullptr);
-                  const std::array<std::uint32_t, 4> copy_push{w, h, samples,
-                                                               static_cast<std::uint32_t>(at)};
-                  vkCmdPushConstants(cmd, copy_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0,
-                                     sizeof(copy_push), copy_push.data());
-                  vkCmdDispatch(cmd, (w + 7) / 8, (h + 7) / 8, 1);
-                  barrier(VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT,
-                          VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
-                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
-                } else {
-                  VkBufferImageCopy region{};
-                  region.bufferOffset = at * 4U;
-                  region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-                  region.imageExtent = {w, h, 1};
-                  vkCmdCopyImageToBuffer(cmd, depth_image_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                         depth_readback_.buffer, 1, &region);
-                  barrier(VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT,
-                          VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
-                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
-                }
+                copy_depth_out(cmd, w, h, samples,
+                               (VkDeviceSize{push.slot} * 2U + pass) * plane * samples);
               }
             }
             return true;
@@ -554,16 +520,64 @@ private:
     }
   }
 
-  // The viewport of a primitive: window space through [-K, K] with depth [0, 1] (exact,
-  // DRIVER.LAVAPIPE.POSITION); clip space through the scene's viewport and depth range.
-  static void set_viewport(VkCommandBuffer cmd, bool window_space, double k,
-                           const pipe::Viewport& vp, const VkRect2D& scissor) {
-    const auto kf = static_cast<float>(k);
+  // What every draw of a pipeline scene shares: K, the scene's viewport and its scissor.
+  struct DrawView {
+    double k = 1.0;
+    pipe::Viewport vp;
+    VkRect2D scissor{};
+  };
+
+  // Records one draw of a slot: the pipeline, the viewport of the primitive (window space
+  // through [-K, K] with depth [0, 1], exact, DRIVER.LAVAPIPE.POSITION; clip space through the
+  // scene's viewport and depth range), the push constants naming the slot, and the vertices
+  // [first, first + count).
+  void record_draw(VkCommandBuffer cmd, VkPipeline pipeline, bool window_space,
+                   const DrawView& view, std::uint32_t slot, std::uint32_t first,
+                   std::uint32_t count, ValuesPush& push) const {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    const auto kf = static_cast<float>(view.k);
+    const pipe::Viewport& vp = view.vp;
     const VkViewport viewport =
         window_space ? VkViewport{-kf, -kf, 2.0F * kf, 2.0F * kf, 0.0F, 1.0F}
                      : VkViewport{vp.x, vp.y, vp.width, vp.height, vp.min_depth, vp.max_depth};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdSetScissor(cmd, 0, 1, &view.scissor);
+    push.slot = slot;
+    push.window_space = window_space ? 1U : 0U;
+    vkCmdPushConstants(cmd, values_layout_,
+                       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(ValuesPush), &push);
+    vkCmdDraw(cmd, count, 1, first, 0);
+  }
+
+  // Copies the depth target after a depth pass to the readback buffer from entry `at` (w x h x
+  // samples entries of 4 bytes): a copy of the single-sample image, or the compute copy of every
+  // sample (depth_copy.comp); then lets the next pass overwrite what was read.
+  // rule: DRIVER.LAVAPIPE.VALUES
+  void copy_depth_out(VkCommandBuffer cmd, std::uint32_t w, std::uint32_t h, std::uint32_t samples,
+                      VkDeviceSize at) {
+    if (samples > 1) {
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, copy_pipeline_);
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, copy_layout_, 0, 1, &copy_set_,
+                              0, nullptr);
+      const std::array<std::uint32_t, 4> copy_push{w, h, samples, static_cast<std::uint32_t>(at)};
+      vkCmdPushConstants(cmd, copy_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(copy_push),
+                         copy_push.data());
+      vkCmdDispatch(cmd, (w + 7) / 8, (h + 7) / 8, 1);
+      barrier(VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT,
+              VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
+              VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+      return;
+    }
+    VkBufferImageCopy region{};
+    region.bufferOffset = at * 4U;
+    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+    region.imageExtent = {w, h, 1};
+    vkCmdCopyImageToBuffer(cmd, depth_image_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           depth_readback_.buffer, 1, &region);
+    barrier(VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+            VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
+            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
   }
 
   // Points the values descriptor set at the coverage and values buffers.
