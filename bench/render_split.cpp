@@ -145,7 +145,17 @@ int main(int argc, char** argv) {
              xy, prepared.width, prepared.height, prepared.state, rastrules::best_isa(), per);
          fragments = r.covered;
        }},
+      {"batch counter with per-pixel counts (what --count computes)",
+       [&] {
+         std::vector<std::uint64_t> per(n);
+         std::vector<std::uint32_t> hits(static_cast<std::size_t>(prepared.width) *
+                                         static_cast<std::size_t>(prepared.height));
+         (void)rastrules::raster::fast_count_batch(
+             xy, prepared.width, prepared.height, prepared.state, rastrules::best_isa(), per, hits);
+       }},
       {"read the file", [&] { (void)rastrules::io::read_scene_file(scene_path.string()); }},
+      {"parse coordinates alone (io::read_triangles_fast, render --count)",
+       [&] { (void)rastrules::io::read_triangles_fast(text0); }},
       {"parse (io::read_scene)", [&] { (void)rastrules::io::read_scene(text0); }},
       {"parse, general reader alone (before SCENE.INPUT.FAST_READER)",
        [&] { (void)rastrules::io::read_scene_general(text0); }},

@@ -3,10 +3,13 @@
 // spelling of their numbers (integers, shortest decimals, 9 and 17 significant digits, exponent
 // forms, -0), any whitespace and either key order, are read by read_scene_fast to exactly the
 // scene read_scene_general reads; and any text near them (one character inserted, deleted or
-// replaced) is either left to the general reader or read to the same scene.
+// replaced) is either left to the general reader or read to the same scene. The coordinates-only
+// form (read_triangles_fast, render --count) declines and reads alike.
 // Implements (properties for): SCENE.INPUT.FAST_READER
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -120,6 +123,27 @@ rc::Gen<Written> scene_text() {
   });
 }
 
+// read_triangles_fast declines exactly where read_scene_fast does, and otherwise holds the same
+// scene without its primitives and their coordinates, in order.
+void check_triangles_agree(const std::string& text, const std::optional<rastrules::Scene>& fast) {
+  const std::optional<io::FastTriangles> t = io::read_triangles_fast(text);
+  RC_ASSERT(t.has_value() == fast.has_value());
+  if (!fast)
+    return;
+  rastrules::Scene bare = *fast;
+  bare.primitives.clear();
+  RC_ASSERT(io::same_scene(t->scene, bare));
+  std::vector<float> xy;
+  for (const rastrules::Primitive& p : fast->primitives) {
+    RC_ASSERT(p.type == rastrules::PrimitiveType::kTriangle);
+    for (const rastrules::FloatPoint& v : p.v)
+      xy.insert(xy.end(), {v[0], v[1]});
+  }
+  RC_ASSERT(t->xy.size() == xy.size());
+  for (std::size_t i = 0; i < xy.size(); ++i)
+    RC_ASSERT(std::bit_cast<std::uint32_t>(t->xy[i]) == std::bit_cast<std::uint32_t>(xy[i]));
+}
+
 // rule: SCENE.INPUT.FAST_READER, SCENE.NUMBER.FLOAT32
 RC_GTEST_PROP(FastSceneReader, ReadsTheSceneTheGeneralReaderReads, ()) {
   const Written w = *scene_text();
@@ -132,6 +156,7 @@ RC_GTEST_PROP(FastSceneReader, ReadsTheSceneTheGeneralReaderReads, ()) {
     RC_ASSERT(std::holds_alternative<rastrules::Scene>(general));
     RC_ASSERT(io::same_scene(*fast, std::get<rastrules::Scene>(general)));
   }
+  check_triangles_agree(w.text, fast);
   // read_scene is the fast path when it is taken, the general reader otherwise.
   const auto both = io::read_scene(w.text);
   RC_ASSERT(both.index() == general.index());
@@ -167,6 +192,7 @@ RC_GTEST_PROP(FastSceneReader, NearMissesAreLeftToTheGeneralReaderOrReadAlike, (
     RC_ASSERT(std::holds_alternative<rastrules::Scene>(general));
     RC_ASSERT(io::same_scene(*fast, std::get<rastrules::Scene>(general)));
   }
+  check_triangles_agree(text, fast);
   const auto both = io::read_scene(text);
   RC_ASSERT(both.index() == general.index());
   if (const auto* e = std::get_if<rastrules::SceneError>(&both))

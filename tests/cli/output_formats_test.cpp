@@ -319,6 +319,54 @@ TEST(FragmentCount, EveryKindOfSceneCountsItsFragmentList) {
   }
 }
 
+// rule: SCENE.OUTPUT.COUNT, SCENE.INPUT.FAST_READER, SCENE.INPUT.LIMITS
+// A scene of triangles alone is counted from its coordinates without being prepared; wherever
+// that path declines (a vertex that does not snap, a target out of range, a work bound over the
+// limit) the scene is loaded as any other: the same errors, byte for byte, as the prepared path
+// (--traversal plain always takes it), and the same counts where the exact work is within the
+// limit that the bound passed.
+TEST(FragmentCount, TheCoordinatesPathDeclinesToThePreparedPathsAnswers) {
+  const auto scene_with = [](const std::string& target, const std::string& v) {
+    return R"({"target":)" + target +
+           R"(,"primitives":[{"type":"triangle","v":[[0,0],[4,0],[0,4]]},)" +
+           R"({"type":"triangle","v":)" + v + "}]}";
+  };
+  const std::string fine_target = R"({"width":8,"height":8})";
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {scene_with(fine_target, "[[1e9,0],[1,0],[0,1]]"), "primitives[1]"},
+      {scene_with(fine_target, "[[0,0],[1,-8388609],[0,1]]"), "primitives[1]"},
+      {scene_with(R"({"width":0,"height":8})", "[[0,0],[1,0],[0,1]]"), "target"},
+      {scene_with(R"({"width":8,"height":99999})", "[[0,0],[1,0],[0,1]]"), "target"},
+  };
+  for (const auto& [scene, where] : bad) {
+    SCOPED_TRACE(scene);
+    TempDir dir;
+    const auto in = dir.write("s.json", scene);
+    const auto fast = run_cli({"render", in.string(), "--count", "-"});
+    const auto prepared = run_cli({"render", in.string(), "--count", "-", "--traversal", "plain"});
+    EXPECT_EQ(fast.status, 2);
+    EXPECT_NE(fast.err.find(where), std::string::npos) << fast.err;
+    EXPECT_EQ(fast.err, prepared.err);
+    EXPECT_EQ(fast.out, "");
+  }
+  // The first triangle's walk is 4 x 4 pixels, the second's 2 x 2 (one covered; the others'
+  // centres lie on its excluded diagonal): work 20 in all, which the bound ((floor(span) + 3)^2
+  // per triangle, 49 + 25) overestimates.
+  TempDir dir;
+  const auto in = dir.write("s.json", scene_with(fine_target, "[[5,5],[7,5],[5,7]]"));
+  const auto all = run_cli({"render", in.string(), "--count", "-"});
+  ASSERT_EQ(all.status, 0) << all.err;
+  EXPECT_EQ(all.out, "{\"primitives\": 2, \"fragments\": 7, \"per_primitive\": [6, 1], "
+                     "\"overdraw\": {\"pixels_touched\": 7, \"max\": 1, \"pixels\": [7]}}\n");
+  const auto at_limit = run_cli({"render", in.string(), "--count", "-", "--max-work", "20"});
+  EXPECT_EQ(at_limit.status, 0) << at_limit.err;
+  EXPECT_EQ(at_limit.out, all.out);
+  const auto over = run_cli({"render", in.string(), "--count", "-", "--max-work", "19"});
+  EXPECT_EQ(over.status, 2);
+  EXPECT_NE(over.err.find("primitives[1] brings the work to more than 19"), std::string::npos)
+      << over.err;
+}
+
 // rule: SCENE.OUTPUT.COUNT
 TEST(FragmentCount, LargeTargetsCountPrimitivesWithoutTheOverdrawMap) {
   TempDir dir;

@@ -153,12 +153,25 @@ int usage_error(std::string_view reason) {
 
 // rule: SCENE.INPUT.ERRORS
 std::optional<LoadedScene> load_scene(const std::string& path) {
+  const std::optional<std::string> text = read_scene_text(path);
+  if (!text)
+    return std::nullopt;
+  return load_scene_text(*text, path);
+}
+
+// rule: SCENE.INPUT.ERRORS
+std::optional<std::string> read_scene_text(const std::string& path) {
   auto text = io::read_scene_file(path);
   if (auto* err = std::get_if<SceneError>(&text)) {
     error(err->what());
     return std::nullopt;
   }
-  auto scene = io::read_scene(std::get<std::string>(text));
+  return std::move(std::get<std::string>(text));
+}
+
+// rule: SCENE.INPUT.ERRORS
+std::optional<LoadedScene> load_scene_text(std::string_view text, const std::string& path) {
+  auto scene = io::read_scene(text);
   if (auto* err = std::get_if<SceneError>(&scene)) {
     // Parse errors have no field: the file is named instead.
     error(err->field.empty() ? (path == "-" ? "<stdin>" : path) + ": " + err->message

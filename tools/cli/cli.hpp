@@ -64,6 +64,13 @@ struct LoadedScene {
 // rule: SCENE.INPUT.ERRORS
 std::optional<LoadedScene> load_scene(const std::string& path);
 
+// load_scene(path) in two steps: the file's text (or nullopt after printing the error naming
+// the file), then the scene read from that text (errors printed as load_scene(path) prints
+// them, a parse error naming the file `path`).
+// rule: SCENE.INPUT.ERRORS
+std::optional<std::string> read_scene_text(const std::string& path);
+std::optional<LoadedScene> load_scene_text(std::string_view text, const std::string& path);
+
 // What load_scene() does after reading: a scene with pipeline state validated
 // (pipe::validate), any other prepared. Returns the loaded scene or the first error.
 // rule: SCENE.INPUT.ERRORS

@@ -5,8 +5,12 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <span>
+#include <stdexcept>
+#include <variant>
 
+#include "rastrules/io/scene_json.hpp"
 #include "rastrules/msaa.hpp"
 #include "rastrules/raster/fast_batch.hpp"
 
@@ -28,6 +32,40 @@ FragmentCounts::FragmentCounts(std::size_t primitives, std::int32_t w, std::int3
     hits.assign(static_cast<std::size_t>(pixels), 0);
 }
 
+namespace {
+
+// The batch counter's counts of the triangles xy on scene's target and state, or nullopt when
+// it refuses them (a vertex that does not snap, a target it does not take).
+std::optional<FragmentCounts> count_batch(std::span<const float> xy, const PreparedScene& scene,
+                                          const RenderOptions& options) {
+  FragmentCounts c(xy.size() / 6, scene.width, scene.height);
+  const raster::FastBatchResult r = raster::fast_count_batch(
+      xy, scene.width, scene.height, scene.state, effective_isa(options), c.per_primitive, c.hits);
+  if (r.status != raster::BatchStatus::kOk)
+    return std::nullopt;
+  return c;
+}
+
+// An upper bound on primitive_work of the triangle (x0 y0 x1 y1 x2 y2) in a single-sample scene
+// of a w x h target: its walk bounds (RASTER.WALK.BBOX) hold at most floor(s) + 1 pixel centres
+// a row for a snapped span s, which is at most 1/256 px more than the span of the floats
+// (SNAP.VERTEX.ROUND moves a coordinate by at most 1/512 px): floor(span) + 3 bounds them with
+// room to spare; nullopt for a coordinate that is not finite.
+std::optional<double> triangle_work_bound(const float* t, std::int32_t w, std::int32_t h) {
+  double lo[2] = {t[0], t[1]}, hi[2] = {t[0], t[1]};
+  for (int k = 0; k < 6; ++k) {
+    if (!std::isfinite(t[k]))
+      return std::nullopt;
+    lo[k % 2] = std::min<double>(lo[k % 2], t[k]);
+    hi[k % 2] = std::max<double>(hi[k % 2], t[k]);
+  }
+  const double cols = std::min<double>(w, std::floor(hi[0] - lo[0]) + 3);
+  const double rows = std::min<double>(h, std::floor(hi[1] - lo[1]) + 3);
+  return cols * rows;
+}
+
+} // namespace
+
 // rule: SCENE.OUTPUT.COUNT, FAST.BATCH.EQUALS.PLAIN
 std::optional<FragmentCounts> batch_counts(const LoadedScene& loaded,
                                            const RenderOptions& options) {
@@ -44,13 +82,40 @@ std::optional<FragmentCounts> batch_counts(const LoadedScene& loaded,
     for (const FloatPoint& v : p.v)
       xy.insert(xy.end(), {v[0], v[1]});
   }
-  FragmentCounts c(loaded.scene.primitives.size(), scene.width, scene.height);
-  const raster::FastBatchResult r = raster::fast_count_batch(
-      xy, scene.width, scene.height, scene.state, effective_isa(options), c.per_primitive, c.hits);
+  std::optional<FragmentCounts> c = count_batch(xy, scene, options);
   // prepare() has snapped every vertex and checked the target: the batch cannot refuse them.
-  if (r.status != raster::BatchStatus::kOk)
-    throw std::logic_error("the batch counter refused a prepared scene: " + raster::describe(r));
+  if (!c)
+    throw std::logic_error("the batch counter refused a prepared scene");
   return c;
+}
+
+// rule: SCENE.OUTPUT.COUNT, SCENE.INPUT.FAST_READER, SCENE.INPUT.LIMITS
+std::optional<FragmentCounts> fast_form_counts(std::string_view text, const RenderOptions& options,
+                                               std::uint64_t max_work) {
+  if (options.traversal != Traversal::kFast)
+    return std::nullopt;
+  std::optional<io::FastTriangles> t = io::read_triangles_fast(text);
+  if (!t)
+    return std::nullopt;
+  // The scene without its triangles: its target checked and its state prepared as prepare()
+  // does for the whole scene (the state does not depend on the primitives).
+  auto base = load_scene(std::move(t->scene));
+  const auto* loaded = std::get_if<LoadedScene>(&base);
+  if (!loaded || !loaded->prepared || !is_single_sample(loaded->prepared->msaa))
+    return std::nullopt;
+  const PreparedScene& scene = *loaded->prepared;
+  // The work limit: the triangles' bound within it means their exact work is too (else the
+  // whole scene is prepared, and the first primitive over the limit named).
+  double work = 0;
+  for (std::size_t i = 0; i < t->xy.size(); i += 6) {
+    const std::optional<double> b = triangle_work_bound(&t->xy[i], scene.width, scene.height);
+    if (!b)
+      return std::nullopt;
+    work += *b;
+  }
+  if (!(work <= static_cast<double>(max_work)))
+    return std::nullopt;
+  return count_batch(t->xy, scene, options);
 }
 
 // rule: SCENE.OUTPUT.COUNT

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli.hpp"
@@ -42,6 +43,16 @@ struct FragmentCounts {
 // rule: SCENE.OUTPUT.COUNT, FAST.BATCH.EQUALS.PLAIN
 [[nodiscard]] std::optional<FragmentCounts> batch_counts(const LoadedScene& loaded,
                                                          const RenderOptions& options);
+
+// Counts a scene of the fast reader's form (io::read_triangles_fast: a target and triangles given
+// by "type" and "v" alone) with the batch counter without building its primitives or
+// preparing them: the counts batch_counts() gives for the loaded scene. nullopt when the form,
+// the traversal, the target, the work limit (max_work, checked on a bound) or a vertex that does
+// not snap stands in the way: the caller then loads the scene and counts it as any other, which
+// names every error as before.
+// rule: SCENE.OUTPUT.COUNT, SCENE.INPUT.FAST_READER
+[[nodiscard]] std::optional<FragmentCounts>
+fast_form_counts(std::string_view text, const RenderOptions& options, std::uint64_t max_work);
 
 // The counts as SCENE.OUTPUT.COUNT's JSON (one line, a newline at the end).
 // rule: SCENE.OUTPUT.COUNT

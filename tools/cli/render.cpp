@@ -557,6 +557,8 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
   return kExitOk;
 }
 
+int write_counts(const FragmentCounts& counts, const RenderRequest& rq);
+
 // rule: SCENE.OUTPUT.COUNT, SCENE.INPUT.LIMITS
 // Writes the counts alone (--count): the batch counter where the scene allows it, else the
 // fragments streamed as for --fragments (window-space scenes) or run_pipeline's (pipeline
@@ -600,10 +602,16 @@ int render_count(const LoadedScene& loaded, const RenderRequest& rq) {
       }
     }
   }
+  return write_counts(*counts, rq);
+}
+
+// rule: SCENE.OUTPUT.COUNT
+// Writes --count's file and the summary.
+int write_counts(const FragmentCounts& counts, const RenderRequest& rq) {
   OutputFile file;
   if (auto err = file.open(*rq.count_path))
     return error(*err);
-  const std::string text = counts_json(*counts);
+  const std::string text = counts_json(counts);
   if (std::fwrite(text.data(), 1, text.size(), file.get()) != text.size() ||
       std::fflush(file.get()) != 0)
     return error(*rq.count_path + ": write failed");
@@ -611,9 +619,9 @@ int render_count(const LoadedScene& loaded, const RenderRequest& rq) {
     return error(*err);
   if (rq.to_stdout == 0 && verbosity() != Verbosity::kQuiet) {
     std::uint64_t total = 0;
-    for (const std::uint64_t n : counts->per_primitive)
+    for (const std::uint64_t n : counts.per_primitive)
       total += n;
-    print_summary(loaded.scene.primitives.size(), total, {{&file, &rq.count_path}});
+    print_summary(counts.per_primitive.size(), total, {{&file, &rq.count_path}});
   }
   return kExitOk;
 }
@@ -826,7 +834,18 @@ int run_render(const Args& args) {
   RenderRequest rq;
   if (const auto stop = parse_render_args(args, rq))
     return *stop;
-  const auto loaded = load_scene(rq.scene_path);
+  const std::optional<std::string> text = read_scene_text(rq.scene_path);
+  if (!text)
+    return kExitBadInput;
+  // rule: SCENE.OUTPUT.COUNT, SCENE.INPUT.FAST_READER
+  // A large scene of triangles alone is counted from its coordinates, never prepared (the same
+  // counts; the scene is loaded as any other wherever that path declines).
+  if (rq.count_path) {
+    if (const std::optional<FragmentCounts> counts =
+            fast_form_counts(*text, rq.options, rq.max_work))
+      return write_counts(*counts, rq);
+  }
+  const auto loaded = load_scene_text(*text, rq.scene_path);
   if (!loaded)
     return kExitBadInput;
   if (rq.count_path)

@@ -9,8 +9,10 @@
 // Implements: SCENE.INPUT.FAST_READER
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -60,6 +62,37 @@ public:
     ++p_;
     return s;
   }
+  // Consumes the exact bytes lit when the text goes on with them; false, consuming nothing,
+  // otherwise.
+  bool literal(std::string_view lit) {
+    if (static_cast<std::size_t>(end_ - p_) < lit.size() ||
+        std::memcmp(p_, lit.data(), lit.size()) != 0)
+      return false;
+    p_ += lit.size();
+    return true;
+  }
+  // A JSON integer token of 1 to 18 digits (an int64 holds it), consumed and its value
+  // returned; nullopt, consuming nothing but whitespace, for any other token (a fraction, an
+  // exponent, more digits, a leading zero: the caller then reads it with number()).
+  std::optional<std::int64_t> short_integer() {
+    skip_ws();
+    const char* q = p_;
+    const bool negative = q < end_ && *q == '-';
+    if (negative)
+      ++q;
+    const char* first = q;
+    std::int64_t v = 0;
+    while (q < end_ && q - first < 18 && *q >= '0' && *q <= '9') {
+      v = 10 * v + (*q - '0');
+      ++q;
+    }
+    if (q == first || (q - first > 1 && *first == '0'))
+      return std::nullopt;
+    if (q < end_ && ((*q >= '0' && *q <= '9') || *q == '.' || *q == 'e' || *q == 'E'))
+      return std::nullopt;
+    p_ = q;
+    return negative ? -v : v;
+  }
   // A JSON number token: -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)?. integral: no fraction
   // or exponent.
   std::optional<std::string_view> number(bool& integral) {
@@ -108,30 +141,38 @@ private:
 };
 
 // rule: SCENE.NUMBER.FLOAT32
-// A coordinate as the general reader converts it, or nullopt where the fast path leaves the
-// number to it: integers of at most 18 digits (an int64 holds them) rounded once to float32;
-// other numbers correctly rounded from their text, when that is a finite float32 reached
-// without range error (the general reader's decimal_to_float32 gives the same).
-std::optional<float> coordinate(FastScanner& s) {
+// Reads a coordinate into out as the general reader converts it; false where the fast path
+// leaves the number to it (a bool and an out-parameter: an optional<float> returned through
+// two stack stores and one load stalled store forwarding, a quarter of the parse): integers of at
+// most 18 digits (an int64 holds them) rounded once to float32; other numbers correctly rounded
+// from their text, when that is a finite float32 reached without range error (the general reader's
+// decimal_to_float32 gives the same).
+bool coordinate(FastScanner& s, float& out) {
+  if (const std::optional<std::int64_t> v = s.short_integer()) {
+    out = static_cast<float>(*v);
+    return true;
+  }
   bool integral = false;
   const std::optional<std::string_view> t = s.number(integral);
   if (!t)
-    return std::nullopt;
+    return false;
   if (integral) {
     const std::size_t digits = t->size() - (t->front() == '-' ? 1 : 0);
     if (digits > 18)
-      return std::nullopt;
+      return false;
     std::int64_t v = 0;
     const auto r = std::from_chars(t->data(), t->data() + t->size(), v);
     if (r.ec != std::errc{} || r.ptr != t->data() + t->size())
-      return std::nullopt;
-    return static_cast<float>(v);
+      return false;
+    out = static_cast<float>(v);
+    return true;
   }
   float f = 0.0f;
   const auto r = std::from_chars(t->data(), t->data() + t->size(), f, std::chars_format::general);
   if (r.ec != std::errc{} || r.ptr != t->data() + t->size() || !(f - f == 0.0f))
-    return std::nullopt;
-  return f;
+    return false;
+  out = f;
+  return true;
 }
 
 // An int32 written as a JSON integer of at most 9 digits.
@@ -178,26 +219,26 @@ bool target(FastScanner& s, std::int32_t& width, std::int32_t& height) {
   });
 }
 
-// [[x, y], [x, y], [x, y]] into out.v.
-bool vertices(FastScanner& s, Primitive& out) {
+// [[x, y], [x, y], [x, y]] into xy (x0 y0 x1 y1 x2 y2).
+bool vertices(FastScanner& s, std::array<float, 6>& xy) {
   if (!s.eat('['))
     return false;
   for (std::size_t i = 0; i < 3; ++i) {
     if ((i > 0 && !s.eat(',')) || !s.eat('['))
       return false;
-    const std::optional<float> x = coordinate(s);
-    if (!x || !s.eat(','))
+    if (!coordinate(s, xy[2 * i]) || !s.eat(',') || !coordinate(s, xy[2 * i + 1]) || !s.eat(']'))
       return false;
-    const std::optional<float> y = coordinate(s);
-    if (!y || !s.eat(']'))
-      return false;
-    out.v[i] = FloatPoint{*x, *y};
   }
   return s.eat(']');
 }
 
 // {"type": "triangle", "v": [[x, y], [x, y], [x, y]]} in either key order.
-bool triangle(FastScanner& s, Primitive& out) {
+bool triangle(FastScanner& s, std::array<float, 6>& xy) {
+  // The spelling without whitespace, which generated scenes use, is matched at once: the same
+  // tokens the object's general form below reads.
+  s.skip_ws();
+  if (s.literal(R"({"type":"triangle","v":)"))
+    return vertices(s, xy) && s.eat('}');
   bool have_type = false, have_v = false;
   return two_key_object(s, [&](std::string_view key) {
     if (key == "type" && !have_type) {
@@ -205,19 +246,19 @@ bool triangle(FastScanner& s, Primitive& out) {
       return have_type = t && *t == "triangle";
     }
     if (key == "v" && !have_v)
-      return have_v = vertices(s, out);
+      return have_v = vertices(s, xy);
     return false;
   });
 }
 
-} // namespace
-
-// rule: SCENE.INPUT.FAST_READER
-std::optional<Scene> read_scene_fast(std::string_view json_text) {
+// Scans the fast form: sink.reserve(n) once with a bound on the triangles the text can hold,
+// then sink.add(xy) for each triangle in order. Returns the scene the general reader gives for
+// the target with no primitives (every other field as it sets them), or nullopt where the fast
+// path declines (the sink may then hold part of the list).
+template <class Sink> std::optional<Scene> scan_fast(std::string_view json_text, Sink& sink) {
   FastScanner s(json_text);
   std::int32_t width = 0, height = 0;
   bool have_target = false, have_primitives = false;
-  std::vector<Primitive> primitives;
   const auto list = [&] {
     if (!s.eat('['))
       return false;
@@ -226,14 +267,15 @@ std::optional<Scene> read_scene_fast(std::string_view json_text) {
     // The shortest triangle takes 44 bytes ({"type":"triangle","v":[[0,0],[0,0],[0,0]]},): one
     // allocation holds them all (growing the list moved a million primitives about 20 times;
     // the pages of a list left unused, when the fast path declines, are never touched).
-    primitives.reserve(std::min(json_text.size() / 44 + 1, kMaxScenePrimitives));
+    sink.reserve(std::min(json_text.size() / 44 + 1, kMaxScenePrimitives));
+    std::size_t n = 0;
+    std::array<float, 6> xy{};
     do {
-      if (primitives.size() >= kMaxScenePrimitives)
+      if (n++ >= kMaxScenePrimitives)
         return false; // the general reader names the limit
-      Primitive& p = primitives.emplace_back();
-      p.type = PrimitiveType::kTriangle;
-      if (!triangle(s, p))
+      if (!triangle(s, xy))
         return false;
+      sink.add(xy);
     } while (s.eat(','));
     return s.eat(']');
   };
@@ -246,15 +288,45 @@ std::optional<Scene> read_scene_fast(std::string_view json_text) {
   });
   if (!ok || !s.at_end())
     return std::nullopt;
-  // Every other field as the general reader sets it for this target and no primitives.
   const std::string head = "{\"target\": {\"width\": " + std::to_string(width) +
                            ", \"height\": " + std::to_string(height) + "}, \"primitives\": []}";
   auto base = read_scene_general(head);
   if (!std::holds_alternative<Scene>(base))
     return std::nullopt;
-  Scene scene = std::get<Scene>(std::move(base));
-  scene.primitives = std::move(primitives);
+  return std::get<Scene>(std::move(base));
+}
+
+} // namespace
+
+// rule: SCENE.INPUT.FAST_READER
+std::optional<Scene> read_scene_fast(std::string_view json_text) {
+  struct Primitives {
+    std::vector<Primitive> list;
+    void reserve(std::size_t n) { list.reserve(n); }
+    void add(const std::array<float, 6>& xy) {
+      Primitive& p = list.emplace_back();
+      p.type = PrimitiveType::kTriangle;
+      for (std::size_t i = 0; i < 3; ++i)
+        p.v[i] = FloatPoint{xy[2 * i], xy[2 * i + 1]};
+    }
+  } sink;
+  std::optional<Scene> scene = scan_fast(json_text, sink);
+  if (scene)
+    scene->primitives = std::move(sink.list);
   return scene;
+}
+
+// rule: SCENE.INPUT.FAST_READER
+std::optional<FastTriangles> read_triangles_fast(std::string_view json_text) {
+  struct Coordinates {
+    std::vector<float> xy;
+    void reserve(std::size_t n) { xy.reserve(6 * n); }
+    void add(const std::array<float, 6>& t) { xy.insert(xy.end(), t.begin(), t.end()); }
+  } sink;
+  std::optional<Scene> scene = scan_fast(json_text, sink);
+  if (!scene)
+    return std::nullopt;
+  return FastTriangles{std::move(*scene), std::move(sink.xy)};
 }
 
 } // namespace rastrules::io
