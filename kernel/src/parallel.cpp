@@ -16,6 +16,7 @@
 #include <string>
 #include <system_error>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "rastrules/scene.hpp"
@@ -100,18 +101,45 @@ public:
       if (!plain)
         whole.push_back(f);
     }
-    // Counts f into the summary, keeping no entry (on the thread that fills the batch).
-    // Only the order fields are kept (copying whole fragments was a tenth of a thread's time).
+    // The order fields of a fragment, as fragment_before compares them (a missing seg or
+    // sample is -1, before every index).
+    struct OrderKey {
+      std::uint32_t prim = 0;
+      std::int32_t y = 0, x = 0;
+      std::int64_t seg = -1, sample = -1;
+      [[nodiscard]] bool operator<(const OrderKey& o) const {
+        return std::tie(prim, y, x, seg, sample) < std::tie(o.prim, o.y, o.x, o.seg, o.sample);
+      }
+      [[nodiscard]] Fragment fragment() const {
+        Fragment f{prim, x, y, 1u};
+        if (seg >= 0)
+          f.seg = static_cast<std::uint32_t>(seg);
+        if (sample >= 0)
+          f.sample = static_cast<std::uint32_t>(sample);
+        return f;
+      }
+    };
+    // Counts f into the summary, keeping no entry (on the thread that fills the batch). Only
+    // the order fields are kept, in integers (copying whole fragments, then building one a
+    // fragment as a key, was a fifth of a producing thread's time); close_summary() writes the
+    // first and last as fragments.
     void summarise(const Fragment& f) {
-      Fragment key{f.prim, f.x, f.y, 1u, f.seg};
-      key.sample = f.sample;
+      const OrderKey key{f.prim, f.y, f.x, f.seg ? std::int64_t{*f.seg} : -1,
+                         f.sample ? std::int64_t{*f.sample} : -1};
       if (summary.count == 0)
-        summary.first = key;
-      else if (!fragment_before(summary.last, key))
+        first_key = key;
+      else if (!(last_key < key))
         summary.in_order = false;
-      summary.last = key;
+      last_key = key;
       ++summary.count;
     }
+    void close_summary() {
+      if (summary.count > 0) {
+        summary.first = first_key.fragment();
+        summary.last = last_key.fragment();
+      }
+    }
+    OrderKey first_key, last_key;
     [[nodiscard]] std::size_t size() const { return entries.size() + summary.count; }
     [[nodiscard]] bool empty() const { return size() == 0; }
     void clear() {
@@ -170,7 +198,12 @@ public:
       }
       Batch batch = take_spare();
       const bool summarise = summarised();
+      bool full = false; // the unit holds batches_per_unit full batches: wait before adding
       const auto put = [&](const Fragment& f) {
+        if (full) {
+          wait_for_room(i);
+          full = false;
+        }
         if (summarise)
           batch.summarise(f);
         else
@@ -178,7 +211,7 @@ public:
         if (encoding_ != nullptr)
           encoding_->encode(f, batch.bytes);
         if (batch.size() >= b_.batch)
-          hand_over(i, batch);
+          full = hand_over(i, batch);
       };
       std::exception_ptr failure;
       try {
@@ -188,6 +221,7 @@ public:
       } catch (...) {
         failure = std::current_exception();
       }
+      batch.close_summary();
       {
         const std::lock_guard<std::mutex> lock(m_);
         Slot& slot = slots_[i % b_.window];
@@ -205,12 +239,16 @@ public:
     for (std::size_t i = 0;; ++i) {
       Slot& slot = slots_[i % b_.window];
       for (;;) {
-        Batch batch;
-        bool wake = false;
+        std::vector<Batch> got;
         {
           std::unique_lock<std::mutex> lock(m_);
+          // Woken when the unit is done or holds batches_per_unit full batches (its producer
+          // is about to wait), not at every batch: then it takes all of them at once. A wake-up
+          // a batch put three threads on two cores through a context switch every 1536
+          // fragments.
           produced_.wait(lock, [&] {
-            return (ended_ && end_ <= i) || (i < next_ && (!slot.full.empty() || slot.done));
+            return (ended_ && end_ <= i) ||
+                   (i < next_ && (slot.done || slot.full.size() >= b_.batches_per_unit));
           });
           if (ended_ && end_ <= i)
             return;
@@ -220,21 +258,19 @@ public:
             consumed_ = i + 1;
             break;
           }
-          batch = std::move(slot.full.front());
-          slot.full.erase(slot.full.begin());
-          if (slot.full.size() == low_water())
-            wake = true; // the unit's producer may be waiting to fill more
+          got.swap(slot.full);
         }
-        if (wake)
-          room_.notify_all();
-        if (summarised())
-          encoding_->consume_summary(batch.summary);
-        else
-          batch.for_each(consume);
-        if (encoding_ != nullptr)
-          encoding_->consume_bytes(batch.bytes);
-        batch.clear();
-        give_spare(std::move(batch));
+        room_.notify_all(); // the unit's producer may be waiting to fill more
+        for (Batch& batch : got) {
+          if (summarised())
+            encoding_->consume_summary(batch.summary);
+          else
+            batch.for_each(consume);
+          if (encoding_ != nullptr)
+            encoding_->consume_bytes(batch.bytes);
+          batch.clear();
+          give_spare(std::move(batch));
+        }
       }
       room_.notify_all(); // the window moved
     }
@@ -263,20 +299,35 @@ private:
   // The number of full batches of a unit at which its waiting producer is woken.
   [[nodiscard]] std::size_t low_water() const { return b_.batches_per_unit / 2; }
 
-  // Hands a full batch of unit i over; when the unit then holds batches_per_unit of them, waits
-  // until the writer has taken them down to low_water().
-  void hand_over(std::size_t i, Batch& batch) {
-    std::unique_lock<std::mutex> lock(m_);
+  // Hands a full batch of unit i over and gives the producer an empty one. Returns whether the
+  // unit now holds batches_per_unit full batches: then the producer waits (wait_for_room)
+  // before it puts another fragment, not here, so that a unit whose fragments fill its batches
+  // exactly (a band of batches_per_unit * batch pixels, all covered) ends without waiting for
+  // the writer to reach it. (Waiting here made the thread ahead wait on every band: two
+  // threads were no faster than one.) The memory held is the same: the batch given is empty
+  // while the producer waits.
+  bool hand_over(std::size_t i, Batch& batch) {
+    batch.close_summary();
+    const std::lock_guard<std::mutex> lock(m_);
     Slot& slot = slots_[i % b_.window];
     slot.full.push_back(std::move(batch));
-    produced_.notify_all();
-    if (slot.full.size() >= b_.batches_per_unit) {
-      // Full: wait until the writer has taken half of them (fewer wake-ups than one a batch).
-      room_.wait(lock, [&] { return stop_ || slot.full.size() <= low_water(); });
-    }
+    const bool full = slot.full.size() >= b_.batches_per_unit;
+    if (full)
+      produced_.notify_all(); // the writer waits for this (or for the unit's end)
     if (stop_)
       throw PoolStopped{};
     batch = take_spare_locked();
+    return full;
+  }
+
+  // Waits until the writer has taken unit i's full batches down to low_water() (fewer wake-ups
+  // than one a batch).
+  void wait_for_room(std::size_t i) {
+    std::unique_lock<std::mutex> lock(m_);
+    Slot& slot = slots_[i % b_.window];
+    room_.wait(lock, [&] { return stop_ || slot.full.size() <= low_water(); });
+    if (stop_)
+      throw PoolStopped{};
   }
 
   Batch take_spare() {

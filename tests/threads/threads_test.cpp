@@ -229,7 +229,8 @@ TEST(StreamPool, ConsumesEveryFragmentInOrderWithBoundedBuffersForEveryThreadCou
          {rastrules::StreamBuffers{.batch = 1, .batches_per_unit = 1, .window = 1},
           rastrules::StreamBuffers{.batch = 10, .batches_per_unit = 4, .window = 3},
           rastrules::StreamBuffers{}}) {
-      std::atomic<std::size_t> planned{0}, live{0}, most_live{0};
+      std::atomic<std::size_t> planned{0}, live{0}, most_live{0}, put_count{0}, consumed{0},
+          most_held{0};
       std::vector<Fragment> got;
       rastrules::stream_ordered(
           n, b,
@@ -243,12 +244,23 @@ TEST(StreamPool, ConsumesEveryFragmentInOrderWithBoundedBuffersForEveryThreadCou
             for (std::size_t m = most_live.load();
                  now > m && !most_live.compare_exchange_weak(m, now);) {
             }
-            put_unit(i, put);
+            put_unit(i, [&](const Fragment& f) {
+              // Fragments put and not yet consumed, this one included.
+              const std::size_t held = ++put_count - consumed.load();
+              for (std::size_t m = most_held.load();
+                   held > m && !most_held.compare_exchange_weak(m, held);) {
+              }
+              put(f);
+            });
             --live;
           },
-          [&](const Fragment& f) { got.push_back(f); });
+          [&](const Fragment& f) {
+            got.push_back(f);
+            ++consumed;
+          });
       EXPECT_EQ(planned.load(), units + 1) << n << " threads";
       EXPECT_LE(most_live.load(), std::max<std::size_t>(n, 1)) << n << " threads";
+      EXPECT_LE(most_held.load(), b.max_held()) << n << " threads, batch " << b.batch;
       EXPECT_TRUE(got == expected) << n << " threads, batch " << b.batch;
     }
   }

@@ -300,10 +300,11 @@ std::optional<std::size_t> stream_fragments(const PreparedScene& scene, const Re
   // fit its own buffer (a band's always do): a thread finishes the unit it draws while the
   // writer is still on an earlier one, so the threads draw in parallel (with bands of 2^16
   // pixels and a buffer of 2048 fragments, the thread ahead waited, and two threads took 1.4x
-  // the time of one). A primitive that must be held to be sorted is held by the thread that
-  // draws it, as with one thread.
+  // the time of one). A window of T + 6 units lets the threads run ahead of the writer by
+  // several small units (with T + 1, they waited for it at every unit). A primitive that must
+  // be held to be sorted is held by the thread that draws it, as with one thread.
   const StreamBuffers buffers{
-      .batch = 1536, .batches_per_unit = 2, .window = std::size_t{rq.options.threads} + 1};
+      .batch = 1536, .batches_per_unit = 2, .window = std::size_t{rq.options.threads} + 6};
   constexpr std::size_t kChunk = 64; // primitives per unit: amortises the hand-over
   const auto kUnitPixels = static_cast<std::int64_t>(buffers.batch * buffers.batches_per_unit);
   struct Unit {

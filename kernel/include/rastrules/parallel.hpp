@@ -37,11 +37,12 @@ struct StreamBuffers {
   std::size_t batches_per_unit = 2;
   std::size_t window = 2;
   // The most fragments buffered at once: every unit of the window with its full batches and
-  // the one it fills, the batch the calling thread consumes, and up to `window` emptied batches
-  // kept for reuse. A buffered fragment takes 16 bytes, plus sizeof(Fragment) when it has more
-  // than (prim, x, y, mask 1): seg, coverage, sample, centroid, derivatives, helper.
+  // the one it fills, the batches the calling thread consumes (it takes a unit's full batches
+  // at once: at most batches_per_unit), and up to `window` emptied batches kept for reuse. A
+  // buffered fragment takes 16 bytes, plus sizeof(Fragment) when it has more than (prim, x, y, mask
+  // 1): seg, coverage, sample, centroid, derivatives, helper.
   [[nodiscard]] std::size_t max_held() const {
-    return (window * (batches_per_unit + 2) + 1) * batch;
+    return (window * (batches_per_unit + 2) + batches_per_unit) * batch;
   }
 };
 
