@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <string>
+#include <vector>
 
 #include "fast_batch_detail.hpp"
 #include "rastrules/raster/fast.hpp"
@@ -58,9 +59,10 @@ struct Context {
   std::span<std::uint32_t> hits;
 };
 
-// Triangle i the plain way: the kernel's snapping and setup, then its tiles.
-// rule: FAST.BATCH.EQUALS.PLAIN
-bool one_triangle(const Context& c, std::size_t i, FastBatchResult& r) {
+// Snaps and sets up triangle i into t: false when a coordinate does not snap (r says which
+// and why); else true, t counted in r.rasterized when it is rasterized.
+// rule: SNAP.VERTEX.INVALID
+bool set_up(const Context& c, std::size_t i, TriangleSetup& t, FastBatchResult& r) {
   std::array<Vec2, 3> v;
   Bad bad;
   if (!snap_triangle(c.xy.data() + 6 * i, v, bad)) {
@@ -71,10 +73,20 @@ bool one_triangle(const Context& c, std::size_t i, FastBatchResult& r) {
     r.bad_snap = bad.status;
     return false;
   }
-  const TriangleSetup t = setup_triangle(v, c.state);
+  t = setup_triangle(v, c.state);
+  if (t.status == TriangleStatus::kRasterized)
+    ++r.rasterized;
+  return true;
+}
+
+// Triangle i the plain way: the kernel's snapping and setup, then its tiles.
+// rule: FAST.BATCH.EQUALS.PLAIN
+bool one_triangle(const Context& c, std::size_t i, FastBatchResult& r) {
+  TriangleSetup t;
+  if (!set_up(c, i, t, r))
+    return false;
   if (t.status != TriangleStatus::kRasterized)
     return true;
-  ++r.rasterized;
   std::uint64_t n = 0;
   if (c.hits.empty()) {
     n = fast_count_covered(t, c.width, c.height, c.isa);
@@ -91,6 +103,72 @@ bool one_triangle(const Context& c, std::size_t i, FastBatchResult& r) {
     c.per_triangle[i] = n;
   return true;
 }
+
+// Triangle i the plain way, its pixels sent to sink as runs. Returns false when it does not
+// snap (r says why).
+// rule: FAST.BATCH.EQUALS.PLAIN
+bool one_triangle_runs(const Context& c, std::size_t i, const RunSink& sink, FastBatchResult& r) {
+  TriangleSetup t;
+  if (!set_up(c, i, t, r))
+    return false;
+  if (t.status != TriangleStatus::kRasterized)
+    return true;
+  const auto tri = static_cast<std::uint32_t>(i);
+  std::int32_t ry = 0, rx = 0, rn = 0; // the open run
+  walk_triangle_fast(t, c.width, c.height, c.isa, [&](std::int32_t x, std::int32_t y) {
+    ++r.covered;
+    if (rn > 0 && y == ry && x == rx + rn) {
+      ++rn;
+      return;
+    }
+    if (rn > 0)
+      sink.run(sink.context, tri, ry, rx, rn);
+    ry = y;
+    rx = x;
+    rn = 1;
+  });
+  if (rn > 0)
+    sink.run(sink.context, tri, ry, rx, rn);
+  return true;
+}
+
+// The checks fast_count_batch and fast_runs_batch share, in this order (the target, the
+// lengths, the instruction set): the status of a call that cannot go on, else kOk. outputs_fit:
+// whether the caller's outputs have the lengths it needs.
+BatchStatus check_call(std::span<const float> xy, std::int32_t width, std::int32_t height, Isa isa,
+                       bool outputs_fit) {
+  if (width < 1 || height < 1 || width > kMaxTargetSide || height > kMaxTargetSide)
+    return BatchStatus::kBadTarget;
+  if (xy.size() % 6 != 0 || !outputs_fit)
+    return BatchStatus::kBadLength;
+  if (!isa_supported(isa))
+    return BatchStatus::kBadIsa;
+  return BatchStatus::kOk;
+}
+
+#if RASTRULES_FAST_X86
+// The SIMD unit's parameters for a state (the tie rule and culling as lane flags).
+batch_detail::Params lane_params(std::int32_t width, std::int32_t height,
+                                 const RasterState& state) {
+  batch_detail::Params p;
+  p.width = width;
+  p.height = height;
+  // rule: TRI.FILL.CONVENTION
+  // (formula::is_inclusive_edge's two flags)
+  p.top_inclusive =
+      state.fill == FillConvention::kTopLeft || state.fill == FillConvention::kTopRight;
+  p.left_inclusive =
+      state.fill == FillConvention::kTopLeft || state.fill == FillConvention::kBottomLeft;
+  // rule: TRI.CULL.MODE
+  // A clockwise triangle is front-facing iff front_face is kClockwise.
+  const bool cw_front = state.front_face == FrontFace::kClockwise;
+  p.skip_cw =
+      (state.cull == CullMode::kBack && !cw_front) || (state.cull == CullMode::kFront && cw_front);
+  p.skip_ccw =
+      (state.cull == CullMode::kBack && cw_front) || (state.cull == CullMode::kFront && !cw_front);
+  return p;
+}
+#endif
 
 } // namespace
 
@@ -120,41 +198,19 @@ FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width, 
                                  std::span<std::uint64_t> per_triangle,
                                  std::span<std::uint32_t> hits) {
   FastBatchResult r;
-  if (width < 1 || height < 1 || width > kMaxTargetSide || height > kMaxTargetSide) {
-    r.status = BatchStatus::kBadTarget;
-    return r;
-  }
   const std::size_t n = xy.size() / 6;
-  if (xy.size() % 6 != 0 || (!per_triangle.empty() && per_triangle.size() != n) ||
-      (!hits.empty() &&
-       hits.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height))) {
-    r.status = BatchStatus::kBadLength;
+  r.status = check_call(
+      xy, width, height, isa,
+      (per_triangle.empty() || per_triangle.size() == n) &&
+          (hits.empty() || hits.size() == static_cast<std::size_t>(std::max(width, 0)) *
+                                              static_cast<std::size_t>(std::max(height, 0))));
+  if (r.status != BatchStatus::kOk)
     return r;
-  }
-  if (!isa_supported(isa)) {
-    r.status = BatchStatus::kBadIsa;
-    return r;
-  }
   std::fill(per_triangle.begin(), per_triangle.end(), std::uint64_t{0});
   const Context c{xy, width, height, state, isa, per_triangle, hits};
 #if RASTRULES_FAST_X86
   if (isa != Isa::kScalar) {
-    batch_detail::Params p;
-    p.width = width;
-    p.height = height;
-    // rule: TRI.FILL.CONVENTION
-    // (formula::is_inclusive_edge's two flags)
-    p.top_inclusive =
-        state.fill == FillConvention::kTopLeft || state.fill == FillConvention::kTopRight;
-    p.left_inclusive =
-        state.fill == FillConvention::kTopLeft || state.fill == FillConvention::kBottomLeft;
-    // rule: TRI.CULL.MODE
-    // A clockwise triangle is front-facing iff front_face is kClockwise.
-    const bool cw_front = state.front_face == FrontFace::kClockwise;
-    p.skip_cw = (state.cull == CullMode::kBack && !cw_front) ||
-                (state.cull == CullMode::kFront && cw_front);
-    p.skip_ccw = (state.cull == CullMode::kBack && cw_front) ||
-                 (state.cull == CullMode::kFront && !cw_front);
+    batch_detail::Params p = lane_params(width, height, state);
     p.hits = hits.empty() ? nullptr : hits.data();
     std::array<std::uint32_t, kChunk> large;
     for (std::size_t base = 0; base < n; base += kChunk) {
@@ -181,6 +237,56 @@ FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width, 
 #endif
   for (std::size_t i = 0; i < n; ++i)
     if (!one_triangle(c, i, r))
+      return r;
+  return r;
+}
+
+// rule: FAST.BATCH.EQUALS.PLAIN, FAST.ISA.DISPATCH
+FastBatchResult fast_runs_batch(std::span<const float> xy, std::int32_t width, std::int32_t height,
+                                const RasterState& state, Isa isa, const RunSink& sink) {
+  FastBatchResult r;
+  r.status = check_call(xy, width, height, isa, sink.run != nullptr);
+  if (r.status != BatchStatus::kOk)
+    return r;
+  const std::size_t n = xy.size() / 6;
+  const Context c{xy, width, height, state, isa, {}, {}};
+#if RASTRULES_FAST_X86
+  if (isa != Isa::kScalar) {
+    batch_detail::Params p = lane_params(width, height, state);
+    std::vector<batch_detail::Run> runs(kChunk * batch_detail::kMaxRunsPerSmall);
+    p.runs = runs.data();
+    std::array<std::uint32_t, kChunk> large;
+    for (std::size_t base = 0; base < n; base += kChunk) {
+      p.xy = xy.data() + 6 * base;
+      p.n = std::min(kChunk, n - base);
+      p.tri_base = base;
+      batch_detail::Out o;
+      const std::size_t k = batch_detail::small_batch_avx2(p, o, large.data());
+      r.covered += o.covered;
+      r.rasterized += o.rasterized;
+      r.small += o.small;
+      // The small triangles' runs (in triangle order) and the large triangles (listed in
+      // increasing order), merged by triangle index. A large triangle's index never holds runs.
+      std::size_t ri = 0;
+      for (std::size_t j = 0; j <= k; ++j) {
+        const std::size_t until = j < k ? base + large[j] : base + p.n;
+        for (; ri < o.runs && runs[ri].tri < until; ++ri)
+          sink.run(sink.context, runs[ri].tri, runs[ri].y, runs[ri].x, runs[ri].n);
+        if (j < k && !one_triangle_runs(c, base + large[j], sink, r))
+          return r; // cannot fail: all snapped
+      }
+      if (o.bad != static_cast<std::size_t>(-1)) {
+        // The lanes reject exactly what snap_to_subpixel rejects (FAST.BATCH.SNAP_SIMD): the
+        // plain way fails on the same triangle and says which coordinate and why.
+        (void)one_triangle_runs(c, base + o.bad, sink, r);
+        return r;
+      }
+    }
+    return r;
+  }
+#endif
+  for (std::size_t i = 0; i < n; ++i)
+    if (!one_triangle_runs(c, i, sink, r))
       return r;
   return r;
 }

@@ -58,13 +58,29 @@ inline void add_hits(std::uint32_t* h, __m256i in) {
     ++h[__builtin_ctz(m)];
 }
 
+// What the row loops do besides counting: nothing, per-pixel counts (hits), or runs.
+enum Mode { kCount, kHits, kRuns };
+
+// Appends triangle tri's runs, one a row with a covered pixel (the row's mask m has consecutive
+// bits: a row meets a convex set in an interval).
+struct RunWriter {
+  Run* out = nullptr;
+  std::size_t n = 0;
+  std::uint32_t tri = 0;
+  std::int32_t x0 = 0, y0 = 0;
+  void row(std::int32_t j, std::int32_t first, std::int32_t count) {
+    out[n++] = Run{tri, y0 + j, x0 + first, count};
+  }
+};
+
 // rule: FAST.BATCH.SMALL_I32, FIX.BIAS.FORM, FIX.STEP.INCREMENTAL
 // The rows of triangle t of the group: lane i of row j holds E + bias at pixel (x0 + i, y0 + j)
 // (|E| < 2^30, FAST.BATCH.SMALL_I32); the pixel is covered iff all three are >= 0, that is iff
 // their OR is >= 0. Lanes at or past `cols` hold -2^30 in edge 0 and never step: never inside.
 // Wide: a second half for pixels 8..15.
-template <bool kHits, bool kWide>
-inline std::uint32_t cover_one(const Lanes& g, int t, std::uint32_t* hit, std::size_t stride) {
+template <Mode kMode, bool kWide>
+inline std::uint32_t cover_one(const Lanes& g, int t, std::uint32_t* hit, std::size_t stride,
+                               RunWriter& rw) {
   const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
   const __m256i cols = _mm256_set1_epi32(g.cols[t]);
   const __m256i poison = _mm256_set1_epi32(-(std::int32_t{1} << 30));
@@ -90,19 +106,28 @@ inline std::uint32_t cover_one(const Lanes& g, int t, std::uint32_t* hit, std::s
     const __m256i in_lo =
         _mm256_cmpgt_epi32(_mm256_or_si256(_mm256_or_si256(lo[0], lo[1]), lo[2]), minus1);
     acc = _mm256_sub_epi32(acc, in_lo);
-    if constexpr (kHits) {
+    if constexpr (kMode == kHits) {
       add_hits(hit + static_cast<std::size_t>(j) * stride, in_lo);
     }
+    unsigned m = 0;
+    if constexpr (kMode == kRuns)
+      m = static_cast<unsigned>(mask_of(in_lo));
     if constexpr (kWide) {
       const __m256i in_hi =
           _mm256_cmpgt_epi32(_mm256_or_si256(_mm256_or_si256(hi[0], hi[1]), hi[2]), minus1);
       acc = _mm256_sub_epi32(acc, in_hi);
-      if constexpr (kHits) {
+      if constexpr (kMode == kHits) {
         // cols > 8: pixel x0 + 8 lies inside the row (x0 + cols - 1 < width).
         add_hits(hit + static_cast<std::size_t>(j) * stride + 8, in_hi);
       }
+      if constexpr (kMode == kRuns)
+        m |= static_cast<unsigned>(mask_of(in_hi)) << 8;
       for (int k = 0; k < 3; ++k)
         hi[k] = _mm256_add_epi32(hi[k], shi[k]);
+    }
+    if constexpr (kMode == kRuns) {
+      if (m != 0)
+        rw.row(j, __builtin_ctz(m), __builtin_popcount(m));
     }
     for (int k = 0; k < 3; ++k)
       lo[k] = _mm256_add_epi32(lo[k], slo[k]);
@@ -113,8 +138,9 @@ inline std::uint32_t cover_one(const Lanes& g, int t, std::uint32_t* hit, std::s
 // rule: FAST.BATCH.SMALL_I32, FIX.BIAS.FORM, FIX.STEP.INCREMENTAL
 // More than 16 pixels a row: each row in chunks of eight lanes, stepped by 8 * 256 A; the last
 // chunk's lanes at or past `cols` masked off (|E| < 2^30 there, FAST.BATCH.SMALL_I32).
-template <bool kHits>
-inline std::uint32_t cover_rows(const Lanes& g, int t, std::uint32_t* hit, std::size_t stride) {
+template <Mode kMode>
+inline std::uint32_t cover_rows(const Lanes& g, int t, std::uint32_t* hit, std::size_t stride,
+                                RunWriter& rw) {
   const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
   const std::int32_t cols = g.cols[t], full = cols / 8, rest = cols % 8;
   const __m256i tail = _mm256_cmpgt_epi32(_mm256_set1_epi32(rest), iota);
@@ -130,15 +156,27 @@ inline std::uint32_t cover_rows(const Lanes& g, int t, std::uint32_t* hit, std::
   const std::int32_t rows = g.rows[t];
   for (std::int32_t j = 0; j < rows; ++j) {
     __m256i l0 = row[0], l1 = row[1], l2 = row[2];
-    // Only a counting walk (kHits false) passes hit == nullptr: no row pointer is formed then
-    // (an offset on a null pointer is undefined behaviour, which clang's UBSan reports).
-    std::uint32_t* h = kHits ? hit + static_cast<std::size_t>(j) * stride : nullptr;
+    // Only a walk with hits passes hit != nullptr: no row pointer is formed otherwise (an
+    // offset on a null pointer is undefined behaviour, which clang's UBSan reports).
+    std::uint32_t* h = kMode == kHits ? hit + static_cast<std::size_t>(j) * stride : nullptr;
+    std::int32_t first = -1, count = 0; // the row's run (kRuns)
+    const auto add_run = [&](std::int32_t at, __m256i in) {
+      if constexpr (kMode == kRuns) {
+        const auto m = static_cast<unsigned>(mask_of(in));
+        if (m != 0) {
+          if (first < 0)
+            first = at + __builtin_ctz(m);
+          count += __builtin_popcount(m);
+        }
+      }
+    };
     for (std::int32_t c = 0; c < full; ++c) {
       const __m256i in = _mm256_cmpgt_epi32(_mm256_or_si256(_mm256_or_si256(l0, l1), l2), minus1);
       acc = _mm256_sub_epi32(acc, in);
-      if constexpr (kHits) {
+      if constexpr (kMode == kHits) {
         add_hits(h + 8 * c, in);
       }
+      add_run(8 * c, in);
       l0 = _mm256_add_epi32(l0, step8[0]);
       l1 = _mm256_add_epi32(l1, step8[1]);
       l2 = _mm256_add_epi32(l2, step8[2]);
@@ -147,10 +185,15 @@ inline std::uint32_t cover_rows(const Lanes& g, int t, std::uint32_t* hit, std::
       const __m256i in = _mm256_and_si256(
           tail, _mm256_cmpgt_epi32(_mm256_or_si256(_mm256_or_si256(l0, l1), l2), minus1));
       acc = _mm256_sub_epi32(acc, in);
-      if constexpr (kHits) {
+      if constexpr (kMode == kHits) {
         // pixel x0 + 8 full lies inside the row: x0 + cols - 1 < width
         add_hits(h + 8 * full, in);
       }
+      add_run(8 * full, in);
+    }
+    if constexpr (kMode == kRuns) {
+      if (count != 0)
+        rw.row(j, first, count);
     }
     for (int k = 0; k < 3; ++k)
       row[k] = _mm256_add_epi32(row[k], down[k]);
@@ -158,16 +201,21 @@ inline std::uint32_t cover_rows(const Lanes& g, int t, std::uint32_t* hit, std::
   return hsum(acc);
 }
 
-template <bool kHits> inline std::uint32_t cover(const Lanes& g, int t, const Params& p) {
+template <Mode kMode>
+inline std::uint32_t cover(const Lanes& g, int t, const Params& p, RunWriter& rw) {
   std::uint32_t* hit = nullptr;
-  if constexpr (kHits)
+  if constexpr (kMode == kHits)
     hit = p.hits + static_cast<std::size_t>(g.y0[t]) * static_cast<std::size_t>(p.width) +
           static_cast<std::size_t>(g.x0[t]);
+  if constexpr (kMode == kRuns) {
+    rw.x0 = g.x0[t];
+    rw.y0 = g.y0[t];
+  }
   const auto stride = static_cast<std::size_t>(p.width);
   if (g.cols[t] > 16)
-    return cover_rows<kHits>(g, t, hit, stride);
-  return g.cols[t] > 8 ? cover_one<kHits, true>(g, t, hit, stride)
-                       : cover_one<kHits, false>(g, t, hit, stride);
+    return cover_rows<kMode>(g, t, hit, stride, rw);
+  return g.cols[t] > 8 ? cover_one<kMode, true>(g, t, hit, stride, rw)
+                       : cover_one<kMode, false>(g, t, hit, stride, rw);
 }
 
 inline unsigned ctz(unsigned m) {
@@ -177,7 +225,7 @@ inline unsigned popcount(unsigned m) {
   return static_cast<unsigned>(__builtin_popcount(m));
 }
 
-template <bool kHits> std::size_t run(const Params& p, Out& out, std::uint32_t* large) {
+template <Mode kMode> std::size_t run(const Params& p, Out& out, std::uint32_t* large) {
   std::size_t nlarge = 0;
   const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
   const __m256i idx6 = _mm256_setr_epi32(0, 6, 12, 18, 24, 30, 36, 42);
@@ -193,6 +241,7 @@ template <bool kHits> std::size_t run(const Params& p, Out& out, std::uint32_t* 
   const __m256i last_x = _mm256_set1_epi32(p.width - 1);
   const __m256i last_y = _mm256_set1_epi32(p.height - 1);
   Lanes g;
+  RunWriter rw{p.runs};
   for (std::size_t base = 0; base < p.n; base += 8) {
     const std::size_t left = p.n - base;
     const auto m = static_cast<std::int32_t>(left < 8 ? left : 8);
@@ -216,6 +265,7 @@ template <bool kHits> std::size_t run(const Params& p, Out& out, std::uint32_t* 
     }
     if (bad != 0) {
       out.bad = base + ctz(static_cast<unsigned>(bad));
+      out.runs = rw.n;
       return nlarge;
     }
     __m256i x[3] = {c[0], c[2], c[4]}, y[3] = {c[1], c[3], c[5]};
@@ -294,7 +344,7 @@ template <bool kHits> std::size_t run(const Params& p, Out& out, std::uint32_t* 
     _mm256_store_si256(reinterpret_cast<__m256i*>(g.y0), py0);
     _mm256_store_si256(reinterpret_cast<__m256i*>(g.cols), ncols);
     _mm256_store_si256(reinterpret_cast<__m256i*>(g.rows), nrows);
-    if constexpr (kHits) {
+    if constexpr (kMode == kHits) {
       // The per-pixel counts of scattered small triangles are a cache miss a row: asked for
       // all at once (the first rows of the eight triangles), they overlap instead of queueing.
       for (unsigned bits = live_bits; bits != 0; bits &= bits - 1) {
@@ -311,19 +361,24 @@ template <bool kHits> std::size_t run(const Params& p, Out& out, std::uint32_t* 
     }
     for (unsigned bits = live_bits; bits != 0; bits &= bits - 1) {
       const int t = static_cast<int>(ctz(bits));
-      const std::uint32_t n = cover<kHits>(g, t, p);
+      if constexpr (kMode == kRuns)
+        rw.tri = static_cast<std::uint32_t>(p.tri_base + base + static_cast<std::size_t>(t));
+      const std::uint32_t n = cover<kMode>(g, t, p, rw);
       out.covered += n;
       if (p.per_triangle != nullptr)
         p.per_triangle[base + static_cast<std::size_t>(t)] = n;
     }
   }
+  out.runs = rw.n;
   return nlarge;
 }
 
 } // namespace
 
 std::size_t small_batch_avx2(const Params& p, Out& out, std::uint32_t* large) {
-  return p.hits != nullptr ? run<true>(p, out, large) : run<false>(p, out, large);
+  if (p.runs != nullptr)
+    return run<kRuns>(p, out, large);
+  return p.hits != nullptr ? run<kHits>(p, out, large) : run<kCount>(p, out, large);
 }
 
 } // namespace rastrules::raster::batch_detail

@@ -19,6 +19,18 @@ namespace rastrules::raster::batch_detail {
 // Spans below this many raw units (64 pixels) are small (raster::kBatchSmallSpan).
 inline constexpr std::int32_t kSmallSpan = 64 * 256;
 
+// A row's covered pixels of one triangle: x, x + 1, ..., x + n - 1 in row y (a triangle's
+// covered pixel centres in a row are consecutive: the row meets a convex set in an interval).
+struct Run {
+  std::uint32_t tri = 0; // index in the whole batch
+  std::int32_t y = 0;
+  std::int32_t x = 0;
+  std::int32_t n = 0;
+};
+
+// The most runs one small triangle gives: one a row, rows below 64 + 1.
+inline constexpr std::size_t kMaxRunsPerSmall = 65;
+
 struct Params {
   const float* xy = nullptr; // 6 floats a triangle
   std::size_t n = 0;         // triangles
@@ -30,6 +42,11 @@ struct Params {
   bool skip_ccw = false;                 // counter-clockwise triangles are culled
   std::uint64_t* per_triangle = nullptr; // n entries, zeroed by the caller, or null
   std::uint32_t* hits = nullptr;         // width * height, or null
+  // With runs (and no hits): each small triangle's rows appended as runs, in triangle order,
+  // rows top down; room for kMaxRunsPerSmall a triangle of p. tri_base: the index in the whole
+  // batch of p's first triangle.
+  Run* runs = nullptr;
+  std::size_t tri_base = 0;
 };
 
 struct Out {
@@ -37,6 +54,7 @@ struct Out {
   std::uint64_t rasterized = 0; // small triangles only
   std::uint64_t small = 0;
   std::size_t bad = static_cast<std::size_t>(-1); // first triangle that does not snap
+  std::size_t runs = 0;                           // runs written to Params::runs
 };
 
 #if RASTRULES_FAST_X86

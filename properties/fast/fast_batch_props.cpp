@@ -95,10 +95,14 @@ rc::Gen<Batch> batch() {
   }));
 }
 
+using Run = std::array<std::int64_t, 4>; // triangle, y, x, n
+
 struct Expected {
   std::vector<std::uint64_t> per_triangle;
   std::vector<std::uint32_t> hits;
   std::uint64_t covered = 0, rasterized = 0;
+  // The plain walk's pixels grouped into maximal runs of consecutive x in a row, in its order.
+  std::vector<Run> runs;
 };
 
 // The plain way, triangle by triangle: snap_to_subpixel, setup_triangle, walk_triangle.
@@ -118,10 +122,16 @@ Expected plain(const Batch& b, const rastrules::RasterState& state) {
     if (t.status == rastrules::TriangleStatus::kRasterized)
       ++e.rasterized;
     std::uint64_t n = 0;
+    const auto tri = static_cast<std::int64_t>(i);
     raster::walk_triangle(t, b.w, b.h, [&](std::int32_t x, std::int32_t y) {
       ++e.hits[static_cast<std::size_t>(y) * static_cast<std::size_t>(b.w) +
                static_cast<std::size_t>(x)];
       ++n;
+      if (!e.runs.empty() && e.runs.back()[0] == tri && e.runs.back()[1] == y &&
+          e.runs.back()[2] + e.runs.back()[3] == x)
+        ++e.runs.back()[3];
+      else
+        e.runs.push_back(Run{tri, y, x, 1});
     });
     e.per_triangle.push_back(n);
     e.covered += n;
@@ -163,6 +173,48 @@ RC_GTEST_PROP(FastBatch, EveryIsaCountsEachTrianglesPlainPixels, ()) {
   }
 }
 
+// The runs fast_runs_batch sends, in the order it sends them.
+std::vector<Run> runs_of(const Batch& b, const rastrules::RasterState& state, Isa isa,
+                         raster::FastBatchResult& r) {
+  std::vector<Run> got;
+  const raster::RunSink sink{
+      &got, [](void* c, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t n) {
+        static_cast<std::vector<Run>*>(c)->push_back(Run{tri, y, x, n});
+      }};
+  r = raster::fast_runs_batch(b.xy, b.w, b.h, state, isa, sink);
+  return got;
+}
+
+// rule: FAST.BATCH.EQUALS.PLAIN, FAST.BATCH.SMALL_I32, FAST.ISA.DISPATCH
+// The runs are the plain walk's pixels, triangle by triangle in order, a row's pixels in one
+// run (the small triangles' rows come from the lanes' masks: consecutive bits, one run a row).
+RC_GTEST_PROP(FastBatch, EveryIsaSendsEachTrianglesPlainPixelsAsRuns, ()) {
+  const Batch b = *batch();
+  const rastrules::RasterState state = *rastrules::gen::raster_state();
+  const Expected e = plain(b, state);
+  for (Isa isa : fg::supported_isas()) {
+    raster::FastBatchResult r;
+    const std::vector<Run> got = runs_of(b, state, isa, r);
+    RC_ASSERT(r.status == raster::BatchStatus::kOk);
+    RC_CLASSIFY(r.small > 0 && r.small < b.xy.size() / 6, "small and large triangles");
+    if (got != e.runs) {
+      std::size_t k = 0;
+      while (k < got.size() && k < e.runs.size() && got[k] == e.runs[k])
+        ++k;
+      const auto show = [](const std::vector<Run>& v, std::size_t at) {
+        if (at >= v.size())
+          return std::string("none");
+        return "(" + std::to_string(v[at][0]) + ", y " + std::to_string(v[at][1]) + ", x " +
+               std::to_string(v[at][2]) + ", n " + std::to_string(v[at][3]) + ")";
+      };
+      RC_FAIL(std::string(rastrules::to_string(isa)) + ": run " + std::to_string(k) + " is " +
+              show(got, k) + ", plain " + show(e.runs, k));
+    }
+    RC_ASSERT(r.covered == e.covered);
+    RC_ASSERT(r.rasterized == e.rasterized);
+  }
+}
+
 // rule: FAST.BATCH.SNAP_SIMD, SNAP.VERTEX.INVALID, FAST.ISA.DISPATCH
 RC_GTEST_PROP(FastBatch, EveryIsaNamesTheFirstCoordinateThatDoesNotSnap, ()) {
   Batch b = *batch();
@@ -197,6 +249,14 @@ RC_GTEST_PROP(FastBatch, EveryIsaNamesTheFirstCoordinateThatDoesNotSnap, ()) {
     RC_ASSERT(r.bad_vertex == static_cast<int>((first % 6) / 2));
     RC_ASSERT(r.bad_axis == (first % 2 == 0 ? 'x' : 'y'));
     RC_ASSERT(r.bad_snap == why);
+    // The runs form reports the same coordinate.
+    raster::FastBatchResult rr;
+    (void)runs_of(b, rastrules::RasterState{}, isa, rr);
+    RC_ASSERT(rr.status == raster::BatchStatus::kBadVertex);
+    RC_ASSERT(rr.bad_triangle == r.bad_triangle);
+    RC_ASSERT(rr.bad_vertex == r.bad_vertex);
+    RC_ASSERT(rr.bad_axis == r.bad_axis);
+    RC_ASSERT(rr.bad_snap == r.bad_snap);
   }
 }
 

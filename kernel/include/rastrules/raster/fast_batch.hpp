@@ -24,7 +24,8 @@ inline constexpr std::int32_t kBatchSmallSpan = 64 * kSubpixelOne;
 
 enum class BatchStatus {
   kOk,
-  kBadLength, // xy.size() is not a multiple of 6, or an output span has the wrong size
+  kBadLength, // xy.size() is not a multiple of 6, an output span has the wrong size, or a
+              // RunSink has no run
   kBadTarget, // width or height outside [1, kMaxTargetSide]
   kBadIsa,    // the instruction set is not supported here (isa_supported)
   kBadVertex, // a coordinate does not snap (SNAP.VERTEX.INVALID): see bad_*
@@ -62,5 +63,26 @@ struct FastBatchResult {
                                                std::int32_t height, const RasterState& state,
                                                Isa isa, std::span<std::uint64_t> per_triangle = {},
                                                std::span<std::uint32_t> hits = {});
+
+// Where fast_runs_batch sends each row of covered pixels: run(context, tri, y, x, n) for pixels
+// x, x + 1, ..., x + n - 1 of row y, covered by triangle tri (n >= 1).
+struct RunSink {
+  void* context = nullptr;
+  void (*run)(void* context, std::uint32_t tri, std::int32_t y, std::int32_t x,
+              std::int32_t n) = nullptr;
+};
+
+// The covered pixels of each triangle of xy, as fast_count_batch finds them, sent to sink as
+// runs: triangle by triangle in order, and within a triangle row by row from the top, one run
+// a row with a covered pixel (a row meets a triangle's covered set, which is convex, in
+// consecutive pixels): for triangle i, exactly the pixels walk_triangle(setup_triangle(snapped
+// vertices, state), width, height) emits, in its order. On an error status (as
+// fast_count_batch's) the runs sent are unspecified; a caller that must write nothing then
+// checks the triangles with fast_count_batch first. covered and rasterized are
+// fast_count_batch's.
+// rule: FAST.BATCH.EQUALS.PLAIN
+[[nodiscard]] FastBatchResult fast_runs_batch(std::span<const float> xy, std::int32_t width,
+                                              std::int32_t height, const RasterState& state,
+                                              Isa isa, const RunSink& sink);
 
 } // namespace rastrules::raster
