@@ -153,6 +153,19 @@ int main(int argc, char** argv) {
          (void)rastrules::raster::fast_count_batch(
              xy, prepared.width, prepared.height, prepared.state, rastrules::best_isa(), per, hits);
        }},
+      {"batch runs into the binary writer (what --fragments OUT.bin does)",
+       [&] {
+         rastrules::io::FragmentBinaryWriter w(null,
+                                               rastrules::io::fragment_binary_header(prepared));
+         const rastrules::raster::RunSink sink{
+             &w, [](void* c, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t k) {
+               (void)static_cast<rastrules::io::FragmentBinaryWriter*>(c)->add_run(
+                   tri, y, x, static_cast<std::uint32_t>(k));
+             }};
+         (void)rastrules::raster::fast_runs_batch(xy, prepared.width, prepared.height,
+                                                  prepared.state, rastrules::best_isa(), sink);
+         (void)w.finish();
+       }},
       {"read the file", [&] { (void)rastrules::io::read_scene_file(scene_path.string()); }},
       {"parse coordinates alone (io::read_triangles_fast, render --count)",
        [&] { (void)rastrules::io::read_triangles_fast(text0); }},

@@ -286,6 +286,23 @@ TEST(FragmentCount, TheBatchCounterEqualsTheFragmentListOnRandomTriangles) {
         continue; // an instruction set this processor lacks
       EXPECT_EQ(other.out, batch) << extra[0] << " " << extra[1];
     }
+    // The binary list: from the batch unit's runs when the scene has the fast reader's form
+    // (no "cull"), else from the prepared scene; the same bytes as the plain traversal's.
+    const auto bin =
+        run_cli({"render", in.string(), "--fragments", "-", "--fragments-format", "binary"});
+    ASSERT_EQ(bin.status, 0) << bin.err;
+    EXPECT_EQ(rows_of(read_binary(bin.out).fragments), rows_of_json(read_file(dir / "f.json")));
+    for (const std::vector<std::string>& extra : {std::vector<std::string>{"--traversal", "plain"},
+                                                  {"--isa", "scalar"},
+                                                  {"--isa", "avx2"}}) {
+      auto args = std::vector<std::string>{"render", in.string(),          "--fragments",
+                                           "-",      "--fragments-format", "binary"};
+      args.insert(args.end(), extra.begin(), extra.end());
+      const auto other = run_cli(args);
+      if (other.status == 2 && other.err.find("cannot run") != std::string::npos)
+        continue; // an instruction set this processor lacks
+      EXPECT_TRUE(other.out == bin.out) << "binary, " << extra[0] << " " << extra[1];
+    }
   }
 }
 
@@ -319,12 +336,13 @@ TEST(FragmentCount, EveryKindOfSceneCountsItsFragmentList) {
   }
 }
 
-// rule: SCENE.OUTPUT.COUNT, SCENE.INPUT.FAST_READER, SCENE.INPUT.LIMITS
-// A scene of triangles alone is counted from its coordinates without being prepared; wherever
-// that path declines (a vertex that does not snap, a target out of range, a work bound over the
-// limit) the scene is loaded as any other: the same errors, byte for byte, as the prepared path
-// (--traversal plain always takes it), and the same counts where the exact work is within the
-// limit that the bound passed.
+// rule: SCENE.OUTPUT.COUNT, SCENE.OUTPUT.BINARY, SCENE.INPUT.FAST_READER, SCENE.INPUT.LIMITS
+// A scene of triangles alone is counted (--count) or listed (--fragments OUT.bin) from its
+// coordinates without being prepared; wherever that path declines (a vertex that does not snap,
+// a target out of range, a work bound or a fragment count over its limit) the scene is loaded
+// as any other: the same errors, byte for byte, as the prepared path (--traversal plain always
+// takes it), no file left, and the same output where the exact work is within the limit that
+// the bound passed.
 TEST(FragmentCount, TheCoordinatesPathDeclinesToThePreparedPathsAnswers) {
   const auto scene_with = [](const std::string& target, const std::string& v) {
     return R"({"target":)" + target +
@@ -342,12 +360,34 @@ TEST(FragmentCount, TheCoordinatesPathDeclinesToThePreparedPathsAnswers) {
     SCOPED_TRACE(scene);
     TempDir dir;
     const auto in = dir.write("s.json", scene);
-    const auto fast = run_cli({"render", in.string(), "--count", "-"});
-    const auto prepared = run_cli({"render", in.string(), "--count", "-", "--traversal", "plain"});
+    for (const std::vector<std::string>& output :
+         {std::vector<std::string>{"--count", "-"},
+          {"--fragments", (dir / "f.bin").string(), "--fragments-format", "binary"}}) {
+      auto args = std::vector<std::string>{"render", in.string()};
+      args.insert(args.end(), output.begin(), output.end());
+      const auto fast = run_cli(args);
+      args.insert(args.end(), {"--traversal", "plain"});
+      const auto prepared = run_cli(args);
+      EXPECT_EQ(fast.status, 2);
+      EXPECT_NE(fast.err.find(where), std::string::npos) << fast.err;
+      EXPECT_EQ(fast.err, prepared.err);
+      EXPECT_EQ(fast.out, "");
+      EXPECT_FALSE(std::filesystem::exists(dir / "f.bin"));
+    }
+  }
+  {
+    // Over the fragment limit: the prepared path's error, and no file.
+    TempDir dir;
+    const auto in = dir.write("s.json", scene_with(fine_target, "[[0,0],[8,0],[0,8]]"));
+    auto args = std::vector<std::string>{
+        "render", in.string(), "--fragments", (dir / "f.bin").string(), "--max-fragments", "20"};
+    const auto fast = run_cli(args);
+    args.insert(args.end(), {"--traversal", "plain"});
+    const auto prepared = run_cli(args);
     EXPECT_EQ(fast.status, 2);
-    EXPECT_NE(fast.err.find(where), std::string::npos) << fast.err;
+    EXPECT_NE(fast.err.find("more than 20 fragments"), std::string::npos) << fast.err;
     EXPECT_EQ(fast.err, prepared.err);
-    EXPECT_EQ(fast.out, "");
+    EXPECT_FALSE(std::filesystem::exists(dir / "f.bin"));
   }
   // The first triangle's walk is 4 x 4 pixels, the second's 2 x 2 (one covered; the others'
   // centres lie on its excluded diagonal): work 20 in all, which the bound ((floor(span) + 3)^2
@@ -365,6 +405,13 @@ TEST(FragmentCount, TheCoordinatesPathDeclinesToThePreparedPathsAnswers) {
   EXPECT_EQ(over.status, 2);
   EXPECT_NE(over.err.find("primitives[1] brings the work to more than 19"), std::string::npos)
       << over.err;
+  const auto bin_all =
+      run_cli({"render", in.string(), "--fragments", "-", "--fragments-format", "binary"});
+  const auto bin_at_limit = run_cli({"render", in.string(), "--fragments", "-",
+                                     "--fragments-format", "binary", "--max-work", "20"});
+  EXPECT_EQ(bin_at_limit.status, 0) << bin_at_limit.err;
+  EXPECT_TRUE(bin_at_limit.out == bin_all.out);
+  EXPECT_EQ(rows_of(read_binary(bin_all.out).fragments).size(), 7u);
 }
 
 // rule: SCENE.OUTPUT.COUNT

@@ -89,9 +89,9 @@ std::optional<FragmentCounts> batch_counts(const LoadedScene& loaded,
   return c;
 }
 
-// rule: SCENE.OUTPUT.COUNT, SCENE.INPUT.FAST_READER, SCENE.INPUT.LIMITS
-std::optional<FragmentCounts> fast_form_counts(std::string_view text, const RenderOptions& options,
-                                               std::uint64_t max_work) {
+// rule: SCENE.INPUT.FAST_READER, SCENE.INPUT.LIMITS
+std::optional<FastForm> load_fast_form(std::string_view text, const RenderOptions& options,
+                                       std::uint64_t max_work) {
   if (options.traversal != Traversal::kFast)
     return std::nullopt;
   std::optional<io::FastTriangles> t = io::read_triangles_fast(text);
@@ -100,7 +100,7 @@ std::optional<FragmentCounts> fast_form_counts(std::string_view text, const Rend
   // The scene without its triangles: its target checked and its state prepared as prepare()
   // does for the whole scene (the state does not depend on the primitives).
   auto base = load_scene(std::move(t->scene));
-  const auto* loaded = std::get_if<LoadedScene>(&base);
+  auto* loaded = std::get_if<LoadedScene>(&base);
   if (!loaded || !loaded->prepared || !is_single_sample(loaded->prepared->msaa))
     return std::nullopt;
   const PreparedScene& scene = *loaded->prepared;
@@ -115,7 +115,16 @@ std::optional<FragmentCounts> fast_form_counts(std::string_view text, const Rend
   }
   if (!(work <= static_cast<double>(max_work)))
     return std::nullopt;
-  return count_batch(t->xy, scene, options);
+  return FastForm{std::move(*loaded), std::move(t->xy)};
+}
+
+// rule: SCENE.OUTPUT.COUNT, SCENE.INPUT.FAST_READER, SCENE.INPUT.LIMITS
+std::optional<FragmentCounts> fast_form_counts(std::string_view text, const RenderOptions& options,
+                                               std::uint64_t max_work) {
+  const std::optional<FastForm> f = load_fast_form(text, options, max_work);
+  if (!f)
+    return std::nullopt;
+  return count_batch(f->xy, *f->base.prepared, options);
 }
 
 // rule: SCENE.OUTPUT.COUNT

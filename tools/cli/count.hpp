@@ -44,6 +44,21 @@ struct FragmentCounts {
 [[nodiscard]] std::optional<FragmentCounts> batch_counts(const LoadedScene& loaded,
                                                          const RenderOptions& options);
 
+// A scene of the fast reader's form (io::read_triangles_fast: a target and triangles given by
+// "type" and "v" alone) ready for the batch unit without its primitives built or prepared: the
+// scene without primitives, loaded (its target checked, its state prepared), and six floats a
+// triangle. nullopt when the traversal is not the fast one, the text is not of that form, the
+// target or state is refused, the scene is not single-sample, or a bound on its work (at least
+// the exact work of SCENE.INPUT.LIMITS) passes max_work: the caller then loads the scene as any
+// other, which names every error.
+// rule: SCENE.INPUT.FAST_READER, SCENE.INPUT.LIMITS
+struct FastForm {
+  LoadedScene base;
+  std::vector<float> xy;
+};
+[[nodiscard]] std::optional<FastForm>
+load_fast_form(std::string_view text, const RenderOptions& options, std::uint64_t max_work);
+
 // Counts a scene of the fast reader's form (io::read_triangles_fast: a target and triangles given
 // by "type" and "v" alone) with the batch counter without building its primitives or
 // preparing them: the counts batch_counts() gives for the loaded scene. nullopt when the form,

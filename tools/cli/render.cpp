@@ -26,6 +26,7 @@
 #include "rastrules/io/picture.hpp"
 #include "rastrules/io/scene_json.hpp"
 #include "rastrules/isa.hpp"
+#include "rastrules/raster/fast_batch.hpp"
 
 #include "rastrules/parallel.hpp"
 
@@ -560,6 +561,59 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
 
 int write_counts(const FragmentCounts& counts, const RenderRequest& rq);
 
+// rule: SCENE.OUTPUT.BINARY, SCENE.INPUT.FAST_READER, FAST.BATCH.EQUALS.PLAIN
+// render --fragments OUT.bin (the only output) of a scene of the fast reader's form: the
+// fragment list written from the batch unit's runs (fast_runs_batch), with no scene prepared
+// and no fragment record made. nullopt where it declines (another output, the plain
+// traversal, the form, the target, a work bound or a fragment count over its limit, a vertex
+// that does not snap): the caller renders the scene as any other, which names every error.
+// The same bytes as that path (the tests compare them).
+std::optional<int> render_fast_form_binary(std::string_view text, const RenderRequest& rq) {
+  if (!rq.fragments_path || !rq.fragments_binary || rq.png_path || rq.resolve_path ||
+      rq.png_depth || rq.depth_out_path)
+    return std::nullopt;
+  const std::optional<FastForm> form = load_fast_form(text, rq.options, rq.max_work);
+  if (!form)
+    return std::nullopt;
+  const PreparedScene& scene = *form->base.prepared;
+  const Isa isa = effective_isa(rq.options);
+  // The fragment limit, from the count (a fraction of the time of the runs): nothing is written
+  // for a scene over it, or with a vertex that does not snap.
+  const raster::FastBatchResult counted =
+      raster::fast_count_batch(form->xy, scene.width, scene.height, scene.state, isa);
+  if (counted.status != raster::BatchStatus::kOk || counted.covered > rq.max_fragments)
+    return std::nullopt;
+  OutputFile file;
+  if (auto err = file.open(*rq.fragments_path))
+    return error(*err);
+  struct Sink {
+    io::FragmentBinaryWriter writer;
+    bool in_order = true;
+  } sink{io::FragmentBinaryWriter(file.get(), io::fragment_binary_header(scene))};
+  const raster::RunSink runs{
+      &sink, [](void* c, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t n) {
+        auto& s = *static_cast<Sink*>(c);
+        s.in_order = s.writer.add_run(tri, y, x, static_cast<std::uint32_t>(n)) ==
+                         io::FragmentBinaryWriter::Added::kOk &&
+                     s.in_order;
+      }};
+  const raster::FastBatchResult r =
+      raster::fast_runs_batch(form->xy, scene.width, scene.height, scene.state, isa, runs);
+  if (r.status != raster::BatchStatus::kOk || r.covered != counted.covered)
+    return error("internal error: the batch unit's runs disagree with its count (" +
+                 raster::describe(r) + ")");
+  if (!sink.in_order)
+    return error("internal error: the kernel emitted fragments out of (prim, y, x, seg) order");
+  if (!sink.writer.finish())
+    return error(*rq.fragments_path + ": write failed");
+  const std::vector<Output> outputs = {{&file, &rq.fragments_path}};
+  if (auto err = commit_outputs(outputs))
+    return error(*err);
+  if (rq.to_stdout == 0 && verbosity() != Verbosity::kQuiet)
+    print_summary(form->xy.size() / 6, r.covered, outputs);
+  return kExitOk;
+}
+
 // rule: SCENE.OUTPUT.COUNT, SCENE.INPUT.LIMITS
 // Writes the counts alone (--count): the batch counter where the scene allows it, else the
 // fragments streamed as for --fragments (window-space scenes) or run_pipeline's (pipeline
@@ -845,6 +899,8 @@ int run_render(const Args& args) {
     if (const std::optional<FragmentCounts> counts =
             fast_form_counts(*text, rq.options, rq.max_work))
       return write_counts(*counts, rq);
+  } else if (const std::optional<int> done = render_fast_form_binary(*text, rq)) {
+    return *done;
   }
   const auto loaded = load_scene_text(*text, rq.scene_path);
   if (!loaded)

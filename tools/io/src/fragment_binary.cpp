@@ -118,6 +118,28 @@ FragmentBinaryWriter::Added FragmentBinaryWriter::add(const Fragment& f) {
   return Added::kOk;
 }
 
+FragmentBinaryWriter::Added FragmentBinaryWriter::add_run(std::uint32_t prim, std::int32_t y,
+                                                          std::int32_t x, std::uint32_t n) {
+  if (header_.mask_bytes != 0)
+    return Added::kUnsupported;
+  const Fragment first(prim, x, y, 1);
+  if (count_ > 0 && !(order_key(last_) < order_key(first)))
+    return Added::kOutOfOrder;
+  const bool extends = run_open_ && prim == run_first_.prim && !run_first_.seg &&
+                       y == run_first_.y &&
+                       std::int64_t{x} == std::int64_t{run_first_.x} + run_length_;
+  if (!extends) {
+    close_run();
+    run_open_ = true;
+    run_first_ = first;
+    run_length_ = 0;
+  }
+  run_length_ += n;
+  last_ = Fragment(prim, static_cast<std::int32_t>(std::int64_t{x} + n - 1), y, 1);
+  count_ += n;
+  return Added::kOk;
+}
+
 void FragmentBinaryWriter::close_run() {
   if (!run_open_)
     return;

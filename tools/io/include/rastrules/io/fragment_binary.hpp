@@ -60,6 +60,10 @@ public:
 
   // Appends one fragment (extending the current run when it is the next pixel of its row).
   Added add(const Fragment& f);
+  // Appends the n >= 1 fragments of primitive prim at x, x + 1, ..., x + n - 1 of row y (no
+  // segment, mask 1): the same file as adding them one by one. kUnsupported when the header
+  // stores masks; kOutOfOrder when the first does not come after the previous fragment.
+  Added add_run(std::uint32_t prim, std::int32_t y, std::int32_t x, std::uint32_t n);
   // Writes the last run and the end record. Returns false when any write failed.
   bool finish();
 
