@@ -401,7 +401,7 @@ PrimGeometry geometry(const rastrules::Scene& s, std::size_t prim) {
       part.raw[i] = *r;
     }
     // PIPE.DEPTH.BIAS: each fan triangle from its own snapped vertices and depths.
-    if (s.depth && (s.depth->bias.bias != 0 || s.depth->bias.slope_scaled != 0.0f)) {
+    if (s.depth && s.depth->bias.enabled()) {
       const kp::DepthBias& b = s.depth->bias;
       const float bias =
           op::depth_bias(part.raw, {part.wv[0].z, part.wv[1].z, part.wv[2].z}, b.bias,

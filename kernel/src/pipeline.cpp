@@ -401,7 +401,7 @@ bool depth_test(CompareFunc func, const DepthValue& now, const DepthValue& old, 
 // rule: PIPE.DEPTH.BIAS
 float depth_bias(const std::array<Vec2, 3>& v, const std::array<float, 3>& z, const DepthBias& bias,
                  std::optional<DepthFormat> format) {
-  if (bias.bias == 0 && bias.slope_scaled == 0.0f)
+  if (!bias.enabled())
     return 0.0f;
   float slope_term = 0.0f;
   if (bias.slope_scaled != 0.0f) {

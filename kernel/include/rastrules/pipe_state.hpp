@@ -47,6 +47,9 @@ struct DepthBias {
   std::int32_t bias = 0;
   float slope_scaled = 0.0f;
   float clamp = 0.0f;
+  // Whether the bias can move a depth: a constant or a slope term (the clamp alone cannot).
+  // rule: PIPE.DEPTH.BIAS
+  [[nodiscard]] constexpr bool enabled() const { return bias != 0 || slope_scaled != 0.0f; }
 };
 
 // One declared attribute (PIPE.INPUT.ATTRIBUTES).

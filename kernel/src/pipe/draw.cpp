@@ -31,8 +31,7 @@ Drawn draw_one(const Scene& s, const PreparedPrimitive& pr, const Source& src, s
     d.w[j] = src.v[first + j].w;
   }
   // rule: PIPE.DEPTH.BIAS
-  if (s.depth && pr.type == PrimitiveType::kTriangle &&
-      (s.depth->bias.bias != 0 || s.depth->bias.slope_scaled != 0.0f)) {
+  if (s.depth && pr.type == PrimitiveType::kTriangle && s.depth->bias.enabled()) {
     const float b = depth_bias({pr.v[0], pr.v[1], pr.v[2]}, d.z, s.depth->bias, fmt);
     for (float& zi : d.z) {
       zi = zi + b;

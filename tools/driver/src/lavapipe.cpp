@@ -361,8 +361,7 @@ public:
             // rule: PIPE.DEPTH.BIAS
             // Triangles only, as in the reference (Vulkan biases polygons only).
             const pipe::DepthBias& bias = scene.depth->bias;
-            key.depth_bias = key.topology == VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST &&
-                             (bias.bias != 0 || bias.slope_scaled != 0.0f);
+            key.depth_bias = key.topology == VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST && bias.enabled();
             const bool strip = key.topology == VK_PRIMITIVE_TOPOLOGY_LINE_STRIP;
             if (strip)
               key.topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST;

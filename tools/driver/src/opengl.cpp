@@ -329,7 +329,7 @@ public:
             // rule: PIPE.DEPTH.BIAS
             // Triangles only, as in the reference (GL_POLYGON_OFFSET_FILL offsets polygons).
             const pipe::DepthBias& bias = scene.depth->bias;
-            if (mode == GL_TRIANGLES && (bias.bias != 0 || bias.slope_scaled != 0.0f)) {
+            if (mode == GL_TRIANGLES && bias.enabled()) {
               glEnable(GL_POLYGON_OFFSET_FILL);
               if (polygon_offset_clamp_ != nullptr)
                 polygon_offset_clamp_(bias.slope_scaled, static_cast<float>(bias.bias), bias.clamp);

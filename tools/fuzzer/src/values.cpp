@@ -314,7 +314,7 @@ std::optional<ValueComparison> compare_values(const Scene& scene, const driver::
         if (legal && profile != Profile::kD3D11 && scene.depth &&
             dp.type == PrimitiveType::kTriangle && dp.snapped.size() == 3) {
           const pipe::DepthBias& b = scene.depth->bias;
-          if (b.bias != 0 || b.slope_scaled != 0.0f) {
+          if (b.enabled()) {
             const std::array<Vec2, 3> v{dp.snapped[0], dp.snapped[1], dp.snapped[2]};
             const double r = pipe::depth_bias(v, dp.z, pipe::DepthBias{1, 0.0f, 0.0f}, fmt);
             const double slope = pipe::depth_bias(v, dp.z, pipe::DepthBias{0, 1.0f, 0.0f}, fmt);
