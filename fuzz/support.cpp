@@ -354,6 +354,25 @@ std::optional<Scene> read_input_scene(const std::uint8_t* data, std::size_t size
       fail("read_scene_fast reads a different scene than read_scene_general", {}, &*fast, data,
            size);
   }
+  // The coordinates-only form (render --count, --fragments OUT.bin) declines exactly where
+  // read_scene_fast does and holds the same coordinates.
+  if (const std::optional<io::FastTriangles> t = io::read_triangles_fast(text)) {
+    const std::optional<Scene> fast = io::read_scene_fast(text);
+    if (!fast)
+      fail("read_triangles_fast accepts text read_scene_fast declines", {}, nullptr, data, size);
+    std::vector<float> xy;
+    for (const Primitive& p : fast->primitives)
+      for (const FloatPoint& v : p.v)
+        xy.insert(xy.end(), {v[0], v[1]});
+    if (xy.size() != t->xy.size() ||
+        !std::equal(xy.begin(), xy.end(), t->xy.begin(), [](float a, float b) {
+          return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
+        }))
+      fail("read_triangles_fast reads other coordinates than read_scene_fast", {}, &*fast, data,
+           size);
+  } else if (io::read_scene_fast(text)) {
+    fail("read_triangles_fast declines text read_scene_fast accepts", {}, nullptr, data, size);
+  }
   auto read = io::read_scene(text);
   if (const auto* err = std::get_if<SceneError>(&read)) {
     check_scene_error(*err, "read_scene", nullptr, data, size);
