@@ -286,8 +286,17 @@ TEST(FragmentCount, TheBatchCounterEqualsTheFragmentListOnRandomTriangles) {
         continue; // an instruction set this processor lacks
       EXPECT_EQ(other.out, batch) << extra[0] << " " << extra[1];
     }
-    // The binary list: from the batch unit's runs when the scene has the fast reader's form
-    // (no "cull"), else from the prepared scene; the same bytes as the plain traversal's.
+    // The JSON list: from the batch unit's runs when the scene has the fast reader's form (no
+    // "cull"), else from the prepared scene; the same bytes as the plain traversal's and two
+    // threads'.
+    const std::string list = read_file(dir / "f.json");
+    for (const std::vector<std::string>& extra :
+         {std::vector<std::string>{"--traversal", "plain"}, {"--threads", "2"}}) {
+      auto args = std::vector<std::string>{"render", in.string(), "--fragments", "-"};
+      args.insert(args.end(), extra.begin(), extra.end());
+      EXPECT_TRUE(run_cli(args).out == list) << "JSON, " << extra[0] << " " << extra[1];
+    }
+    // The binary list likewise.
     const auto bin =
         run_cli({"render", in.string(), "--fragments", "-", "--fragments-format", "binary"});
     ASSERT_EQ(bin.status, 0) << bin.err;
@@ -362,7 +371,8 @@ TEST(FragmentCount, TheCoordinatesPathDeclinesToThePreparedPathsAnswers) {
     const auto in = dir.write("s.json", scene);
     for (const std::vector<std::string>& output :
          {std::vector<std::string>{"--count", "-"},
-          {"--fragments", (dir / "f.bin").string(), "--fragments-format", "binary"}}) {
+          {"--fragments", (dir / "f.bin").string(), "--fragments-format", "binary"},
+          {"--fragments", (dir / "f.bin").string()}}) {
       auto args = std::vector<std::string>{"render", in.string()};
       args.insert(args.end(), output.begin(), output.end());
       const auto fast = run_cli(args);
@@ -376,18 +386,20 @@ TEST(FragmentCount, TheCoordinatesPathDeclinesToThePreparedPathsAnswers) {
     }
   }
   {
-    // Over the fragment limit: the prepared path's error, and no file.
+    // Over the fragment limit: the prepared path's error, and no file (binary and JSON).
     TempDir dir;
     const auto in = dir.write("s.json", scene_with(fine_target, "[[0,0],[8,0],[0,8]]"));
-    auto args = std::vector<std::string>{
-        "render", in.string(), "--fragments", (dir / "f.bin").string(), "--max-fragments", "20"};
-    const auto fast = run_cli(args);
-    args.insert(args.end(), {"--traversal", "plain"});
-    const auto prepared = run_cli(args);
-    EXPECT_EQ(fast.status, 2);
-    EXPECT_NE(fast.err.find("more than 20 fragments"), std::string::npos) << fast.err;
-    EXPECT_EQ(fast.err, prepared.err);
-    EXPECT_FALSE(std::filesystem::exists(dir / "f.bin"));
+    for (const std::string name : {"f.bin", "f.json"}) {
+      auto args = std::vector<std::string>{
+          "render", in.string(), "--fragments", (dir / name).string(), "--max-fragments", "20"};
+      const auto fast = run_cli(args);
+      args.insert(args.end(), {"--traversal", "plain"});
+      const auto prepared = run_cli(args);
+      EXPECT_EQ(fast.status, 2);
+      EXPECT_NE(fast.err.find("more than 20 fragments"), std::string::npos) << fast.err;
+      EXPECT_EQ(fast.err, prepared.err);
+      EXPECT_FALSE(std::filesystem::exists(dir / name));
+    }
   }
   // The first triangle's walk is 4 x 4 pixels, the second's 2 x 2 (one covered; the others'
   // centres lie on its excluded diagonal): work 20 in all, which the bound ((floor(span) + 3)^2

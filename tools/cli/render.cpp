@@ -561,16 +561,19 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
 
 int write_counts(const FragmentCounts& counts, const RenderRequest& rq);
 
-// rule: SCENE.OUTPUT.BINARY, SCENE.INPUT.FAST_READER, FAST.BATCH.EQUALS.PLAIN
-// render --fragments OUT.bin (the only output) of a scene of the fast reader's form: the
-// fragment list written from the batch unit's runs (fast_runs_batch), with no scene prepared
-// and no fragment record made. nullopt where it declines (another output, the plain
+// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY, SCENE.INPUT.FAST_READER
+// rule: FAST.BATCH.EQUALS.PLAIN
+// render --fragments OUT (the only output, JSON or binary) of a scene of the fast reader's
+// form: the fragment list written from the batch unit's runs (fast_runs_batch), with no scene
+// prepared and no fragment record kept. nullopt where it declines (another output, the plain
 // traversal, the form, the target, a work bound or a fragment count over its limit, a vertex
 // that does not snap): the caller renders the scene as any other, which names every error.
 // The same bytes as that path (the tests compare them).
-std::optional<int> render_fast_form_binary(std::string_view text, const RenderRequest& rq) {
-  if (!rq.fragments_path || !rq.fragments_binary || rq.png_path || rq.resolve_path ||
-      rq.png_depth || rq.depth_out_path)
+std::optional<int> render_fast_form_list(std::string_view text, const RenderRequest& rq) {
+  // With --threads, the pool of stream_fragments draws (FAST.THREADS.DETERMINISTIC: the same
+  // bytes).
+  if (!rq.fragments_path || rq.png_path || rq.resolve_path || rq.png_depth || rq.depth_out_path ||
+      rq.options.threads > 1)
     return std::nullopt;
   const std::optional<FastForm> form = load_fast_form(text, rq.options, rq.max_work);
   if (!form)
@@ -587,15 +590,22 @@ std::optional<int> render_fast_form_binary(std::string_view text, const RenderRe
   if (auto err = file.open(*rq.fragments_path))
     return error(*err);
   struct Sink {
-    io::FragmentBinaryWriter writer;
+    std::optional<io::FragmentWriter> json;
+    std::optional<io::FragmentBinaryWriter> binary; // rule: SCENE.OUTPUT.BINARY
     bool in_order = true;
-  } sink{io::FragmentBinaryWriter(file.get(), io::fragment_binary_header(scene))};
+  } sink;
+  if (rq.fragments_binary)
+    sink.binary.emplace(file.get(), io::fragment_binary_header(scene));
+  else
+    sink.json.emplace(file.get());
   const raster::RunSink runs{
       &sink, [](void* c, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t n) {
         auto& s = *static_cast<Sink*>(c);
-        s.in_order = s.writer.add_run(tri, y, x, static_cast<std::uint32_t>(n)) ==
-                         io::FragmentBinaryWriter::Added::kOk &&
-                     s.in_order;
+        const auto k = static_cast<std::uint32_t>(n);
+        s.in_order =
+            (s.binary ? s.binary->add_run(tri, y, x, k) == io::FragmentBinaryWriter::Added::kOk
+                      : s.json->add_run(tri, y, x, k)) &&
+            s.in_order;
       }};
   const raster::FastBatchResult r =
       raster::fast_runs_batch(form->xy, scene.width, scene.height, scene.state, isa, runs);
@@ -604,7 +614,7 @@ std::optional<int> render_fast_form_binary(std::string_view text, const RenderRe
                  raster::describe(r) + ")");
   if (!sink.in_order)
     return error("internal error: the kernel emitted fragments out of (prim, y, x, seg) order");
-  if (!sink.writer.finish())
+  if (!(sink.binary ? sink.binary->finish() : sink.json->finish()))
     return error(*rq.fragments_path + ": write failed");
   const std::vector<Output> outputs = {{&file, &rq.fragments_path}};
   if (auto err = commit_outputs(outputs))
@@ -899,7 +909,7 @@ int run_render(const Args& args) {
     if (const std::optional<FragmentCounts> counts =
             fast_form_counts(*text, rq.options, rq.max_work))
       return write_counts(*counts, rq);
-  } else if (const std::optional<int> done = render_fast_form_binary(*text, rq)) {
+  } else if (const std::optional<int> done = render_fast_form_list(*text, rq)) {
     return *done;
   }
   const auto loaded = load_scene_text(*text, rq.scene_path);

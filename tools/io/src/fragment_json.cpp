@@ -256,6 +256,21 @@ bool FragmentWriter::add(const Fragment& f) {
   return true;
 }
 
+bool FragmentWriter::add_run(std::uint32_t prim, std::int32_t y, std::int32_t x, std::uint32_t n) {
+  Fragment f(prim, x, y, 1);
+  if (count_ != 0 && !fragment_before(last_, f))
+    return false;
+  for (std::uint32_t k = 0; k < n; ++k) {
+    f.x = static_cast<std::int32_t>(std::int64_t{x} + k);
+    append_fragment(buffer_, f, count_ == 0);
+    ++count_;
+    if (buffer_.size() >= kFlushBytes)
+      flush_buffer();
+  }
+  last_ = f;
+  return true;
+}
+
 void FragmentWriter::encode(const Fragment& f, std::string& out) {
   append_fragment(out, f, false);
 }

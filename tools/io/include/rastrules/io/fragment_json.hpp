@@ -49,6 +49,11 @@ public:
   // previous one in (prim, y, x, seg) order.
   bool add(const Fragment& f);
 
+  // Appends the n >= 1 fragments of primitive prim at x, x + 1, ..., x + n - 1 of row y (mask
+  // 1, no other field): the same text as adding them one by one. Returns false (and writes
+  // nothing) when the first does not come after the previous fragment.
+  bool add_run(std::uint32_t prim, std::int32_t y, std::int32_t x, std::uint32_t n);
+
   // Appends one fragment of a pipeline scene with its data (nullptr: none, as run_pipeline
   // gives for a scene without clip space, depth or attributes): "part" after "prim" when it has
   // one, then the plain fields, then "bary" (when it has barycentrics), "attr", "depth" and
