@@ -236,10 +236,11 @@ public:
 
   // The calling thread: consumes units 0, 1, ... in order until the plan ends or a unit fails.
   void consume_all(const std::function<void(const Fragment&)>& consume) {
+    std::vector<Batch> got; // a unit's full batches, taken at once (its storage reused)
     for (std::size_t i = 0;; ++i) {
       Slot& slot = slots_[i % b_.window];
       for (;;) {
-        std::vector<Batch> got;
+        got.clear();
         {
           std::unique_lock<std::mutex> lock(m_);
           // Woken when the unit is done or holds batches_per_unit full batches (its producer

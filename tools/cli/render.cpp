@@ -33,6 +33,10 @@
 namespace rastrules::cli {
 namespace {
 
+// Both fragment-list paths check the kernel's order; neither can fail it on a correct kernel.
+constexpr std::string_view kFragmentsOutOfOrder =
+    "internal error: the kernel emitted fragments out of (prim, y, x, seg) order";
+
 // The outputs of one render, moved into place together: when one cannot be, the ones already
 // in place are removed (no partial result).
 struct Output {
@@ -534,7 +538,7 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
                  "\" field (write JSON: --fragments-format json; SCENE.OUTPUT.BINARY)");
   }
   if (!in_order)
-    return error("internal error: the kernel emitted fragments out of (prim, y, x, seg) order");
+    return error(kFragmentsOutOfOrder);
   if ((writer && !writer->finish()) || (binary_writer && !binary_writer->finish()))
     return error(*rq.fragments_path + ": write failed");
   if (rq.png_path) {
@@ -613,7 +617,7 @@ std::optional<int> render_fast_form_list(std::string_view text, const RenderRequ
     return error("internal error: the batch unit's runs disagree with its count (" +
                  raster::describe(r) + ")");
   if (!sink.in_order)
-    return error("internal error: the kernel emitted fragments out of (prim, y, x, seg) order");
+    return error(kFragmentsOutOfOrder);
   if (!(sink.binary ? sink.binary->finish() : sink.json->finish()))
     return error(*rq.fragments_path + ": write failed");
   const std::vector<Output> outputs = {{&file, &rq.fragments_path}};

@@ -152,21 +152,13 @@ bool coordinate(FastScanner& s, float& out) {
     out = static_cast<float>(*v);
     return true;
   }
+  // An integer short_integer() did not take has more than 18 digits or a leading zero (then
+  // the JSON number is the "0" alone, and the digit after it no separator): the general
+  // reader decides.
   bool integral = false;
   const std::optional<std::string_view> t = s.number(integral);
-  if (!t)
+  if (!t || integral)
     return false;
-  if (integral) {
-    const std::size_t digits = t->size() - (t->front() == '-' ? 1 : 0);
-    if (digits > 18)
-      return false;
-    std::int64_t v = 0;
-    const auto r = std::from_chars(t->data(), t->data() + t->size(), v);
-    if (r.ec != std::errc{} || r.ptr != t->data() + t->size())
-      return false;
-    out = static_cast<float>(v);
-    return true;
-  }
   float f = 0.0f;
   const auto r = std::from_chars(t->data(), t->data() + t->size(), f, std::chars_format::general);
   if (r.ec != std::errc{} || r.ptr != t->data() + t->size() || !(f - f == 0.0f))
