@@ -209,6 +209,60 @@ TEST(SceneOutputFragments, WriterStreamsInOrderAndRefusesFragmentsOutOfOrder) {
   EXPECT_EQ(rastrules::io::fragments_to_json({}), "{\"fragments\": []}\n");
 }
 
+std::string file_text(std::FILE* f) {
+  std::rewind(f);
+  std::string text;
+  for (int c; (c = std::fgetc(f)) != EOF;)
+    text += static_cast<char>(c);
+  return text;
+}
+
+// rule: SCENE.OUTPUT.FRAGMENTS
+// A run's text (add_run, RunText: digits incremented in place) is the text of its fragments
+// added one by one, across every carry (9 -> 10, 999 -> 1000, 16383 -> 16384), at x = 0, at a
+// negative x (never from a target, written the plain way) and with the largest prim.
+TEST(SceneOutputFragments, RunsAreWrittenAsTheirFragmentsOneByOne) {
+  struct Run {
+    std::uint32_t prim;
+    std::int32_t y, x;
+    std::uint32_t n;
+  };
+  const std::vector<Run> runs = {{0, 0, 0, 1},     {0, 0, 5, 7},
+                                 {0, 1, 0, 120},   {0, 2, 990, 20},
+                                 {3, 0, 9995, 10}, {3, 7, 16370, 14},
+                                 {4, -3, -12, 15}, {5, 9, 98, 1},
+                                 {5, 9, 100, 900}, {4294967295u, 16383, 0, 2}};
+  std::FILE* one = std::tmpfile();
+  std::FILE* run = std::tmpfile();
+  ASSERT_NE(one, nullptr);
+  ASSERT_NE(run, nullptr);
+  {
+    rastrules::io::FragmentWriter by_one(one);
+    rastrules::io::FragmentWriter by_run(run);
+    rastrules::io::RunText run_text; // keeps a primitive's head across its runs
+    for (const Run& r : runs) {
+      std::string encoded_one, encoded_run;
+      for (std::uint32_t k = 0; k < r.n; ++k) {
+        const rastrules::Fragment f(r.prim, r.x + static_cast<std::int32_t>(k), r.y, 1);
+        ASSERT_TRUE(by_one.add(f));
+        rastrules::io::FragmentWriter::encode(f, encoded_one);
+      }
+      ASSERT_TRUE(by_run.add_run(r.prim, r.y, r.x, r.n));
+      run_text.append(encoded_run, r.prim, r.y, r.x, r.n, false);
+      EXPECT_EQ(encoded_run, encoded_one) << "run at x " << r.x;
+    }
+    EXPECT_FALSE(by_run.add_run(5, 9, 100, 1)); // before the last fragment: refused
+    ASSERT_TRUE(by_one.finish());
+    ASSERT_TRUE(by_run.finish());
+    EXPECT_EQ(by_run.count(), by_one.count());
+  }
+  const std::string text = file_text(run);
+  EXPECT_EQ(text, file_text(one));
+  EXPECT_NE(text.find("\"x\": 16383,"), std::string::npos);
+  std::fclose(one);
+  std::fclose(run);
+}
+
 } // namespace
 
 namespace {

@@ -51,10 +51,16 @@ public:
         std::to_chars(buf_.data() + n_, buf_.data() + buf_.size(), v).ptr - buf_.data());
   }
   void append_to(std::string& out) const { out.append(buf_.data(), n_); }
+  [[nodiscard]] std::size_t size() const { return n_; }
+  // Copies the text but its first `skip` characters to p; returns the end of the copy.
+  char* copy_to(char* p, std::size_t skip) const {
+    std::memcpy(p, buf_.data() + skip, n_ - skip);
+    return p + (n_ - skip);
+  }
 
 private:
   // The longest line: the texts below (93 bytes) and six numbers of at most 11 characters.
-  std::array<char, 192> buf_{};
+  std::array<char, 192> buf_; // only the first n_ are written and read
   std::size_t n_ = 0;
 };
 
@@ -119,6 +125,67 @@ void append_fragment(std::string& out, const Fragment& f, bool first) {
   append_fragment_fields(out, f, first);
   out += "}";
 }
+
+} // namespace
+
+// rule: SCENE.OUTPUT.FRAGMENTS
+void RunText::append(std::string& out, std::uint32_t prim, std::int32_t y, std::int32_t x,
+                     std::uint32_t n, bool first) {
+  if (x < 0) { // never from a target's pixels; the plain way
+    for (std::uint32_t k = 0; k < n; ++k) {
+      append_fragment(out, Fragment(prim, static_cast<std::int32_t>(std::int64_t{x} + k), y, 1),
+                      first && k == 0);
+    }
+    return;
+  }
+  if (!has_prim_ || prim != prim_) {
+    constexpr std::string_view kOpen = ",\n  {\"prim\": ";
+    constexpr std::string_view kX = ", \"x\": ";
+    char* p = std::copy(kOpen.begin(), kOpen.end(), head_.data());
+    p = std::to_chars(p, head_.data() + head_.size(), prim).ptr;
+    head_n_ = static_cast<std::size_t>(std::copy(kX.begin(), kX.end(), p) - head_.data());
+    prim_ = prim;
+    has_prim_ = true;
+  }
+  LineBuffer tail;
+  tail.text(", \"y\": ");
+  tail.number(y);
+  tail.text(", \"mask\": 1}");
+  // The digits of x + k, right-aligned in digits[12 - len, 12).
+  std::array<char, 12> digits;
+  const auto r = std::to_chars(digits.data(), digits.data() + digits.size(), x);
+  std::size_t len = static_cast<std::size_t>(r.ptr - digits.data());
+  std::memmove(digits.data() + digits.size() - len, digits.data(), len);
+  // Lines are made in a buffer on the stack and appended to out when it is nearly full.
+  constexpr std::size_t kMostLine = 40 + 12 + 192;
+  std::array<char, 8192> buf;
+  char* p = buf.data();
+  for (std::uint32_t k = 0; k < n; ++k) {
+    if (p > buf.data() + buf.size() - kMostLine) {
+      out.append(buf.data(), p);
+      p = buf.data();
+    }
+    const std::size_t skip = k == 0 && first ? 1 : 0; // the first line without its comma
+    std::memcpy(p, head_.data() + skip, head_n_ - skip);
+    p += head_n_ - skip;
+    std::memcpy(p, digits.data() + digits.size() - len, len);
+    p += len;
+    p = tail.copy_to(p, 0);
+    // x + k + 1
+    std::size_t i = digits.size();
+    while (i > digits.size() - len && digits[i - 1] == '9')
+      digits[--i] = '0';
+    if (i > digits.size() - len) {
+      ++digits[i - 1];
+    } else {
+      ++len;
+      digits[digits.size() - len] = '1';
+    }
+  }
+  out.append(buf.data(), p);
+}
+
+namespace {
 
 // A float that reads back as itself: the shortest round-trip decimal (SCENE.NUMBER.FLOAT32);
 // NaN and infinities, which the kernel never produces, as strings so that the JSON stays valid.
@@ -257,17 +324,13 @@ bool FragmentWriter::add(const Fragment& f) {
 }
 
 bool FragmentWriter::add_run(std::uint32_t prim, std::int32_t y, std::int32_t x, std::uint32_t n) {
-  Fragment f(prim, x, y, 1);
-  if (count_ != 0 && !fragment_before(last_, f))
+  if (count_ != 0 && !fragment_before(last_, Fragment(prim, x, y, 1)))
     return false;
-  for (std::uint32_t k = 0; k < n; ++k) {
-    f.x = static_cast<std::int32_t>(std::int64_t{x} + k);
-    append_fragment(buffer_, f, count_ == 0);
-    ++count_;
-    if (buffer_.size() >= kFlushBytes)
-      flush_buffer();
-  }
-  last_ = f;
+  run_text_.append(buffer_, prim, y, x, n, count_ == 0);
+  count_ += n;
+  last_ = Fragment(prim, static_cast<std::int32_t>(std::int64_t{x} + n - 1), y, 1);
+  if (buffer_.size() >= kFlushBytes)
+    flush_buffer();
   return true;
 }
 

@@ -30,6 +30,25 @@ struct PipeOutputFields {
 // Returns the fields the scene asks for.
 [[nodiscard]] PipeOutputFields pipe_output_fields(const Scene& s);
 
+// The text of runs of plain fragments (prim, x, y, mask 1, no other field), as FragmentWriter
+// writes them: the head of the last primitive is kept, so that its next runs format only their
+// row and columns (incremented in place: to_chars a pixel was most of a run's time).
+// rule: SCENE.OUTPUT.FRAGMENTS
+class RunText {
+public:
+  // Appends the lines of the n >= 1 fragments (prim, x + k, y, mask 1), k = 0 .. n - 1, each
+  // as add(f) writes it; the first without its comma when first (the list's first fragment).
+  // x + n - 1 must fit an int32_t.
+  void append(std::string& out, std::uint32_t prim, std::int32_t y, std::int32_t x, std::uint32_t n,
+              bool first);
+
+private:
+  bool has_prim_ = false;
+  std::uint32_t prim_ = 0;
+  std::array<char, 40> head_; // ",\n  {\"prim\": " prim_ ", \"x\": "
+  std::size_t head_n_ = 0;
+};
+
 // Writes {"fragments": [...]} to a FILE*, one fragment per line, without holding the list in
 // memory. The caller emits fragments in (prim, y, x, seg) order (SCENE.OUTPUT.FRAGMENTS); the
 // writer checks that order and refuses fragments that break it. Fragments with a seg get a
@@ -95,6 +114,7 @@ private:
   PipeOutputFields fields_;
   bool failed_ = false;
   bool text_started_ = false; // add_encoded_text has written a fragment's text
+  RunText run_text_;
 };
 
 // Returns coverage_q16 / 65536 as its exact decimal: "0.5", "0.0000152587890625", "1.0"
