@@ -104,10 +104,11 @@ bool one_triangle(const Context& c, std::size_t i, FastBatchResult& r) {
   return true;
 }
 
-// Triangle i the plain way, its pixels sent to sink as runs. Returns false when it does not
-// snap (r says why).
+// Triangle i the plain way, its pixels in rows y_first to y_last sent to sink as runs.
+// Returns false when it does not snap (r says why).
 // rule: FAST.BATCH.EQUALS.PLAIN
-bool one_triangle_runs(const Context& c, std::size_t i, const RunSink& sink, FastBatchResult& r) {
+bool one_triangle_runs(const Context& c, std::size_t i, const RunSink& sink, FastBatchResult& r,
+                       std::int32_t y_first = 0, std::int32_t y_last = kMaxTargetSide) {
   TriangleSetup t;
   if (!set_up(c, i, t, r))
     return false;
@@ -115,18 +116,19 @@ bool one_triangle_runs(const Context& c, std::size_t i, const RunSink& sink, Fas
     return true;
   const auto tri = static_cast<std::uint32_t>(i);
   std::int32_t ry = 0, rx = 0, rn = 0; // the open run
-  walk_triangle_fast(t, c.width, c.height, c.isa, [&](std::int32_t x, std::int32_t y) {
-    ++r.covered;
-    if (rn > 0 && y == ry && x == rx + rn) {
-      ++rn;
-      return;
-    }
-    if (rn > 0)
-      sink.run(sink.context, tri, ry, rx, rn);
-    ry = y;
-    rx = x;
-    rn = 1;
-  });
+  walk_triangle_fast_rows(t, c.width, c.height, y_first, y_last, c.isa,
+                          [&](std::int32_t x, std::int32_t y) {
+                            ++r.covered;
+                            if (rn > 0 && y == ry && x == rx + rn) {
+                              ++rn;
+                              return;
+                            }
+                            if (rn > 0)
+                              sink.run(sink.context, tri, ry, rx, rn);
+                            ry = y;
+                            rx = x;
+                            rn = 1;
+                          });
   if (rn > 0)
     sink.run(sink.context, tri, ry, rx, rn);
   return true;
@@ -288,6 +290,19 @@ FastBatchResult fast_runs_batch(std::span<const float> xy, std::int32_t width, s
   for (std::size_t i = 0; i < n; ++i)
     if (!one_triangle_runs(c, i, sink, r))
       return r;
+  return r;
+}
+
+// rule: FAST.BATCH.EQUALS.PLAIN
+FastBatchResult fast_runs_rows(std::span<const float> xy, std::size_t tri, std::int32_t width,
+                               std::int32_t height, const RasterState& state, Isa isa,
+                               std::int32_t y_first, std::int32_t y_last, const RunSink& sink) {
+  FastBatchResult r;
+  r.status = check_call(xy, width, height, isa, sink.run != nullptr && tri < xy.size() / 6);
+  if (r.status != BatchStatus::kOk)
+    return r;
+  const Context c{xy, width, height, state, isa, {}, {}};
+  (void)one_triangle_runs(c, tri, sink, r, y_first, y_last); // r says why it failed
   return r;
 }
 

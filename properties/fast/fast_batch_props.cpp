@@ -215,6 +215,47 @@ RC_GTEST_PROP(FastBatch, EveryIsaSendsEachTrianglesPlainPixelsAsRuns, ()) {
   }
 }
 
+// rule: FAST.BATCH.EQUALS.PLAIN, FAST.ISA.DISPATCH
+// Each triangle's runs drawn in bands of rows (fast_runs_rows, random band heights, bands that
+// start above the target and end below it) and joined in band order are its runs from
+// fast_runs_batch, with the same counts.
+RC_GTEST_PROP(FastBatch, EveryIsaSendsATrianglesRowsInBandsAsItsRuns, ()) {
+  const Batch b = *batch();
+  const rastrules::RasterState state = *rastrules::gen::raster_state();
+  const Expected e = plain(b, state);
+  const auto band = *rc::gen::inRange<std::int32_t>(1, 40);
+  const auto start = *rc::gen::inRange<std::int32_t>(-5, 1);
+  RC_CLASSIFY(band < 16, "bands thinner than a tile");
+  for (Isa isa : fg::supported_isas()) {
+    std::vector<Run> got;
+    const raster::RunSink sink{
+        &got, [](void* c, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t n) {
+          static_cast<std::vector<Run>*>(c)->push_back(Run{tri, y, x, n});
+        }};
+    std::uint64_t covered = 0, rasterized = 0;
+    for (std::size_t i = 0; i < b.xy.size() / 6; ++i) {
+      std::uint64_t tri_rasterized = 0;
+      for (std::int32_t y = start; y < b.h + 3; y += band) {
+        const raster::FastBatchResult r =
+            raster::fast_runs_rows(b.xy, i, b.w, b.h, state, isa, y, y + band - 1, sink);
+        RC_ASSERT(r.status == raster::BatchStatus::kOk);
+        covered += r.covered;
+        tri_rasterized = std::max(tri_rasterized, r.rasterized);
+      }
+      rasterized += tri_rasterized;
+    }
+    RC_ASSERT(got == e.runs);
+    RC_ASSERT(covered == e.covered);
+    RC_ASSERT(rasterized == e.rasterized);
+  }
+  // A triangle index past the end is a length error.
+  const raster::RunSink none{nullptr, [](void*, std::uint32_t, std::int32_t, std::int32_t,
+                                         std::int32_t) { RC_FAIL("a run of no triangle"); }};
+  RC_ASSERT(
+      raster::fast_runs_rows(b.xy, b.xy.size() / 6, b.w, b.h, state, Isa::kScalar, 0, b.h, none)
+          .status == raster::BatchStatus::kBadLength);
+}
+
 // rule: FAST.BATCH.SNAP_SIMD, SNAP.VERTEX.INVALID, FAST.ISA.DISPATCH
 RC_GTEST_PROP(FastBatch, EveryIsaNamesTheFirstCoordinateThatDoesNotSnap, ()) {
   Batch b = *batch();

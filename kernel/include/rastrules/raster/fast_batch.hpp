@@ -85,4 +85,16 @@ struct RunSink {
                                               std::int32_t height, const RasterState& state,
                                               Isa isa, const RunSink& sink);
 
+// The runs fast_runs_batch sends for triangle tri of xy (tri < xy.size() / 6) in rows y_first
+// to y_last alone, in the same order: the rows of one large triangle can be drawn in bands, on
+// several threads, and joined in band order to that triangle's runs. covered counts the pixels
+// sent; rasterized is 1 when the triangle is rasterized (whatever the rows). Errors as
+// fast_runs_batch's (kBadLength also for tri out of range), for this triangle alone.
+// rule: FAST.BATCH.EQUALS.PLAIN
+[[nodiscard]] FastBatchResult fast_runs_rows(std::span<const float> xy, std::size_t tri,
+                                             std::int32_t width, std::int32_t height,
+                                             const RasterState& state, Isa isa,
+                                             std::int32_t y_first, std::int32_t y_last,
+                                             const RunSink& sink);
+
 } // namespace rastrules::raster
