@@ -446,4 +446,108 @@ std::vector<Fragment> rasterize(const PreparedScene& scene, const RenderOptions&
   return out; // primitives in order, each sorted by (y, x, seg, sample)
 }
 
+// rule: FAST.THREADS.DETERMINISTIC
+void produce_ordered(std::size_t n, unsigned threads, std::size_t window,
+                     const std::function<void(std::size_t, std::string&)>& produce,
+                     const std::function<void(std::size_t, std::string&)>& consume) {
+  window = std::max<std::size_t>(window, 1);
+  const std::size_t wanted = std::min<std::size_t>(std::clamp(threads, 1U, kMaxThreads), n);
+  if (wanted <= 1) {
+    std::string bytes;
+    for (std::size_t i = 0; i < n; ++i) {
+      bytes.clear();
+      produce(i, bytes);
+      consume(i, bytes);
+    }
+    return;
+  }
+  // Slot i % window holds unit i from when a thread takes it until consume has seen it.
+  struct Slot {
+    std::string bytes;
+    bool ready = false;
+    std::exception_ptr error;
+  };
+  std::vector<Slot> slots(std::min(window, n));
+  std::mutex mutex;
+  std::condition_variable room;  // the pool's threads wait for the window to move
+  std::condition_variable ready; // the calling thread waits for the unit it needs
+  std::size_t next = 0;          // the next unit a thread takes
+  std::size_t consumed = 0;      // units consume has seen
+  bool stop = false;
+  // Takes the next unit if the window has room (lock held on entry and exit); false if not.
+  const auto take_one = [&](std::unique_lock<std::mutex>& lock) {
+    if (stop || next >= n || next >= consumed + slots.size())
+      return false;
+    const std::size_t i = next++;
+    Slot& slot = slots[i % slots.size()];
+    lock.unlock();
+    try {
+      produce(i, slot.bytes);
+    } catch (...) {
+      slot.error = std::current_exception();
+    }
+    lock.lock();
+    slot.ready = true;
+    return true;
+  };
+  const auto work = [&] {
+    std::unique_lock<std::mutex> lock(mutex);
+    for (;;) {
+      room.wait(lock, [&] { return stop || next >= n || next < consumed + slots.size(); });
+      const std::size_t i = next;
+      if (!take_one(lock))
+        return;
+      if (i == consumed)
+        ready.notify_one();
+    }
+  };
+  // threads - 1 pool threads; the calling thread is the last: it consumes the next unit when it
+  // is ready and otherwise produces one (so `threads` threads run, never more).
+  std::vector<std::jthread> pool;
+  pool.reserve(wanted - 1);
+  for (std::size_t t = 0; t + 1 < wanted; ++t) {
+    try {
+      pool.emplace_back(work);
+    } catch (const std::system_error&) {
+      break; // no more threads: the ones running take the units
+    }
+  }
+  const auto stop_pool = [&] {
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      stop = true;
+    }
+    room.notify_all();
+    pool.clear(); // joins
+  };
+  std::unique_lock<std::mutex> lock(mutex);
+  while (consumed < n) {
+    Slot& slot = slots[consumed % slots.size()];
+    if (!slot.ready) {
+      if (!take_one(lock))
+        ready.wait(lock, [&] { return slot.ready; });
+      continue;
+    }
+    lock.unlock();
+    if (slot.error) {
+      const std::exception_ptr error = slot.error;
+      stop_pool();
+      std::rethrow_exception(error);
+    }
+    try {
+      consume(consumed, slot.bytes);
+    } catch (...) {
+      stop_pool();
+      throw;
+    }
+    slot.bytes.clear();
+    lock.lock();
+    slot.ready = false;
+    ++consumed;
+    room.notify_all();
+  }
+  lock.unlock();
+  stop_pool();
+}
+
 } // namespace rastrules

@@ -7,6 +7,7 @@
 // buffers and stops at the first failure in that order.
 
 #include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -404,6 +405,81 @@ TEST(StreamPool, TheFirstFailureInOrderStopsItWhateverTheThreadCount) {
       EXPECT_EQ(std::string(e.what()), "plan 9") << n << " threads";
     }
     EXPECT_EQ(got.size(), 9u) << n << " threads";
+  }
+}
+
+// rule: FAST.THREADS.DETERMINISTIC
+// produce_ordered hands every unit's bytes to consume once, in index order, on the calling
+// thread, with at most `window` units produced and not yet consumed (a slow consumer makes the
+// threads wait), for every thread count and window; one thread produces inline.
+TEST(OrderedBytes, EveryUnitReachesTheCallerOnceInOrderWithinTheWindow) {
+  const std::thread::id caller = std::this_thread::get_id();
+  for (const unsigned threads : {1u, 2u, 3u, 8u, 64u}) {
+    for (const std::size_t window : {0u, 1u, 2u, 7u}) {
+      for (const std::size_t n : {0u, 1u, 2u, 5u, 300u}) {
+        std::atomic<int> held{0}, most{0};
+        std::size_t expected = 0;
+        rastrules::produce_ordered(
+            n, threads, window,
+            [&](std::size_t i, std::string& bytes) {
+              EXPECT_TRUE(bytes.empty());
+              const int now = held.fetch_add(1) + 1;
+              for (int m = most.load(); now > m && !most.compare_exchange_weak(m, now);) {
+              }
+              if (threads == 1) {
+                EXPECT_EQ(std::this_thread::get_id(), caller);
+              }
+              bytes = "unit " + std::to_string(i);
+            },
+            [&](std::size_t i, std::string& bytes) {
+              EXPECT_EQ(std::this_thread::get_id(), caller);
+              EXPECT_EQ(i, expected);
+              EXPECT_EQ(bytes, "unit " + std::to_string(i));
+              ++expected;
+              if (i % 7 == 0) // a slow consumer: the window fills
+                std::this_thread::sleep_for(std::chrono::microseconds(200));
+              held.fetch_sub(1);
+            });
+        EXPECT_EQ(expected, n) << threads << " threads, window " << window;
+        EXPECT_LE(most.load(), static_cast<int>(std::max<std::size_t>(window, 1)))
+            << threads << " threads, window " << window << ", " << n << " units";
+      }
+    }
+  }
+}
+
+// rule: FAST.THREADS.DETERMINISTIC
+// A unit that throws: consume has seen exactly the units before it, and its exception reaches
+// the caller; a consumer that throws: rethrown at once, nothing consumed after it.
+TEST(OrderedBytes, TheFirstFailureInOrderStopsItWhateverTheThreadCount) {
+  for (const unsigned threads : {1u, 2u, 3u, 8u}) {
+    std::vector<std::size_t> seen;
+    try {
+      rastrules::produce_ordered(
+          200, threads, 4,
+          [](std::size_t i, std::string& bytes) {
+            if (i == 37 || i == 90)
+              throw std::runtime_error("unit " + std::to_string(i));
+            bytes = "x";
+          },
+          [&](std::size_t i, std::string&) { seen.push_back(i); });
+      ADD_FAILURE() << "no exception with " << threads << " threads";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), "unit 37") << threads << " threads";
+    }
+    ASSERT_EQ(seen.size(), 37u) << threads << " threads";
+    for (std::size_t i = 0; i < seen.size(); ++i)
+      EXPECT_EQ(seen[i], i);
+    std::size_t count = 0;
+    EXPECT_THROW(rastrules::produce_ordered(
+                     200, threads, 3, [](std::size_t, std::string& bytes) { bytes = "y"; },
+                     [&](std::size_t, std::string&) {
+                       if (++count == 20)
+                         throw std::bad_alloc();
+                     }),
+                 std::bad_alloc)
+        << threads << " threads";
+    EXPECT_EQ(count, 20u);
   }
 }
 

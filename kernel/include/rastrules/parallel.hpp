@@ -89,4 +89,21 @@ void stream_ordered(
     const std::function<void(std::size_t, const std::function<void(const Fragment&)>&)>& produce,
     const std::function<void(const Fragment&)>& consume, const StreamEncoding* encoding = nullptr);
 
+// Produces units 0 .. n-1 as bytes on `threads` threads (threads - 1 created for the call and
+// the calling thread) and hands them to consume on the calling thread in index order:
+// produce(i, bytes) appends unit i's bytes to an empty string; consume(i, bytes) sees them, in
+// order i = 0, 1, ... (the string is cleared and reused after it returns). The calling thread
+// consumes the next unit when it is ready and otherwise produces one. At most `window` units
+// (>= 1; 0 is read as 1) are produced or held ahead of the one consume waits for, so at most
+// `window` units' bytes are held at once, whatever n. Threads block on condition variables
+// when the window is full (no spinning: a loaded machine slows them, it does not stall them).
+// With one thread every unit is produced on the calling thread right before it is consumed. An
+// exception from produce(i) is rethrown after consume has seen every unit before i; one from
+// consume at once; the pool stops first, and nothing after it is consumed: the same outcome for
+// every thread count.
+// rule: FAST.THREADS.DETERMINISTIC
+void produce_ordered(std::size_t n, unsigned threads, std::size_t window,
+                     const std::function<void(std::size_t, std::string&)>& produce,
+                     const std::function<void(std::size_t, std::string&)>& consume);
+
 } // namespace rastrules
