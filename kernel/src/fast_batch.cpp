@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -255,8 +256,11 @@ FastBatchResult fast_runs_batch(std::span<const float> xy, std::int32_t width, s
 #if RASTRULES_FAST_X86
   if (isa != Isa::kScalar) {
     batch_detail::Params p = lane_params(width, height, state);
-    std::vector<batch_detail::Run> runs(kChunk * batch_detail::kMaxRunsPerSmall);
-    p.runs = runs.data();
+    // Room for the runs of one chunk (a call with few triangles, as a thread's unit of a
+    // render, allocates for those alone, and nothing is written before the unit writes it).
+    const auto runs = std::make_unique_for_overwrite<batch_detail::Run[]>(
+        std::min(n, kChunk) * batch_detail::kMaxRunsPerSmall);
+    p.runs = runs.get();
     std::array<std::uint32_t, kChunk> large;
     for (std::size_t base = 0; base < n; base += kChunk) {
       p.xy = xy.data() + 6 * base;

@@ -21,11 +21,13 @@ inline constexpr std::int32_t kSmallSpan = 64 * 256;
 
 // A row's covered pixels of one triangle: x, x + 1, ..., x + n - 1 in row y (a triangle's
 // covered pixel centres in a row are consecutive: the row meets a convex set in an interval).
+// Left uninitialised where it is allocated (make_unique_for_overwrite): a buffer of runs is
+// only read where the unit wrote it.
 struct Run {
-  std::uint32_t tri = 0; // index in the whole batch
-  std::int32_t y = 0;
-  std::int32_t x = 0;
-  std::int32_t n = 0;
+  std::uint32_t tri; // index in the whole batch
+  std::int32_t y;
+  std::int32_t x;
+  std::int32_t n;
 };
 
 // The most runs one small triangle gives: one a row, rows below 64 + 1.
