@@ -147,39 +147,50 @@ void RunText::append(std::string& out, std::uint32_t prim, std::int32_t y, std::
     prim_ = prim;
     has_prim_ = true;
   }
-  LineBuffer tail;
-  tail.text(", \"y\": ");
-  tail.number(y);
-  tail.text(", \"mask\": 1}");
-  // The digits of x + k, right-aligned in digits[12 - len, 12).
-  std::array<char, 12> digits;
-  const auto r = std::to_chars(digits.data(), digits.data() + digits.size(), x);
+  // The row's tail, padded so that it is copied in one fixed-size move (as are the head and the
+  // digits: a variable-length memcpy a piece was half of a thread's time).
+  constexpr std::size_t kPiece = 32; // every piece is at most 30 bytes
+  std::array<char, kPiece> tail{};
+  std::size_t tail_n = 0;
+  {
+    constexpr std::string_view kY = ", \"y\": ";
+    constexpr std::string_view kMask = ", \"mask\": 1}";
+    char* t = std::copy(kY.begin(), kY.end(), tail.data());
+    t = std::to_chars(t, tail.data() + tail.size(), y).ptr;
+    tail_n = static_cast<std::size_t>(std::copy(kMask.begin(), kMask.end(), t) - tail.data());
+  }
+  // The digits of x + k, right-aligned in digits[16 - len, 16), followed by 16 bytes of
+  // padding.
+  std::array<char, 2 * 16> digits{};
+  const auto r = std::to_chars(digits.data(), digits.data() + 16, x);
   std::size_t len = static_cast<std::size_t>(r.ptr - digits.data());
-  std::memmove(digits.data() + digits.size() - len, digits.data(), len);
-  // Lines are made in a buffer on the stack and appended to out when it is nearly full.
-  constexpr std::size_t kMostLine = 40 + 12 + 192;
-  std::array<char, 8192> buf;
+  std::memmove(digits.data() + 16 - len, digits.data(), len);
+  // Lines are made in a buffer on the stack (with room for three whole pieces past its end)
+  // and appended to out when it is nearly full.
+  std::array<char, 8192 + 3 * kPiece> buf;
+  char* const full = buf.data() + 8192;
   char* p = buf.data();
   for (std::uint32_t k = 0; k < n; ++k) {
-    if (p > buf.data() + buf.size() - kMostLine) {
+    if (p >= full) {
       out.append(buf.data(), p);
       p = buf.data();
     }
     const std::size_t skip = k == 0 && first ? 1 : 0; // the first line without its comma
-    std::memcpy(p, head_.data() + skip, head_n_ - skip);
+    std::memcpy(p, head_.data() + skip, kPiece);
     p += head_n_ - skip;
-    std::memcpy(p, digits.data() + digits.size() - len, len);
+    std::memcpy(p, digits.data() + 16 - len, 16);
     p += len;
-    p = tail.copy_to(p, 0);
+    std::memcpy(p, tail.data(), kPiece);
+    p += tail_n;
     // x + k + 1
-    std::size_t i = digits.size();
-    while (i > digits.size() - len && digits[i - 1] == '9')
+    std::size_t i = 16;
+    while (i > 16 - len && digits[i - 1] == '9')
       digits[--i] = '0';
-    if (i > digits.size() - len) {
+    if (i > 16 - len) {
       ++digits[i - 1];
     } else {
       ++len;
-      digits[digits.size() - len] = '1';
+      digits[16 - len] = '1';
     }
   }
   out.append(buf.data(), p);

@@ -45,7 +45,9 @@ public:
 private:
   bool has_prim_ = false;
   std::uint32_t prim_ = 0;
-  std::array<char, 40> head_; // ",\n  {\"prim\": " prim_ ", \"x\": "
+  // ",\n  {\"prim\": " prim_ ", \"x\": " (at most 30 bytes), padded: copied 32 bytes at a
+  // time from head_ or head_ + 1.
+  std::array<char, 40> head_{};
   std::size_t head_n_ = 0;
 };
 
