@@ -315,6 +315,56 @@ TEST(FragmentCount, TheBatchCounterEqualsTheFragmentListOnRandomTriangles) {
   }
 }
 
+// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY, FAST.THREADS.DETERMINISTIC
+// With --threads, a scene of the fast reader's form is written in units (runs of small triangles,
+// bands of rows of large ones, made into bytes on the threads: write_fast_list): random scenes
+// of thousands of small triangles (several units) and large ones (several bands, some past the
+// target's edges, ties on pixel centres) give the plain traversal's JSON and binary lists for
+// every thread count.
+TEST(FragmentLists, ThreadsWriteTheRunsInUnitsAndBandsAsOneThreadDoes) {
+  const char* given = std::getenv("RASTRULES_SEED");
+  const unsigned seed = given != nullptr ? static_cast<unsigned>(std::strtoul(given, nullptr, 10))
+                                         : std::random_device{}();
+  std::printf("FragmentLists seed %u (RASTRULES_SEED=%u replays it)\n", seed, seed);
+  std::mt19937 rng(seed);
+  for (int round = 0; round < 2; ++round) {
+    SCOPED_TRACE("seed " + std::to_string(seed) + " round " + std::to_string(round));
+    const int w = 100 + static_cast<int>(rng() % 300), h = 100 + static_cast<int>(rng() % 300);
+    std::uniform_real_distribution<float> at(-40.0f, 440.0f), small(-3.0f, 3.0f);
+    nlohmann::json scene = {{"target", {{"width", w}, {"height", h}}},
+                            {"primitives", nlohmann::json::array()}};
+    const int n = 3000 + static_cast<int>(rng() % 3000);
+    for (int i = 0; i < n; ++i) {
+      const bool large = rng() % 500 == 0;
+      const float cx = at(rng), cy = at(rng);
+      nlohmann::json v = nlohmann::json::array();
+      for (int k = 0; k < 3; ++k) {
+        float x = large ? at(rng) : cx + small(rng);
+        float y = large ? at(rng) : cy + small(rng);
+        if (rng() % 4 == 0) {
+          x = std::floor(x) + 0.5f;
+          y = std::floor(y) + 0.5f;
+        }
+        v.push_back({x, y});
+      }
+      scene["primitives"].push_back({{"type", "triangle"}, {"v", v}});
+    }
+    TempDir dir;
+    const auto in = dir.write("s.json", scene.dump());
+    for (const char* format : {"json", "binary"}) {
+      const auto plain = run_cli({"render", in.string(), "--fragments", "-", "--fragments-format",
+                                  format, "--traversal", "plain"});
+      ASSERT_EQ(plain.status, 0) << plain.err;
+      for (const char* threads : {"1", "2", "3", "8"}) {
+        const auto got = run_cli({"render", in.string(), "--fragments", "-", "--fragments-format",
+                                  format, "--threads", threads});
+        ASSERT_EQ(got.status, 0) << got.err;
+        EXPECT_TRUE(got.out == plain.out) << format << ", " << threads << " threads";
+      }
+    }
+  }
+}
+
 // rule: SCENE.OUTPUT.COUNT
 // Every other kind of scene is counted from its fragments as they stream (pipeline scenes from
 // run_pipeline's list): the same counts as the fragment list, helper lanes left out.

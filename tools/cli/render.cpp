@@ -19,6 +19,7 @@
 
 #include "cli.hpp"
 #include "count.hpp"
+#include "fast_list.hpp"
 #include "parser.hpp"
 #include "rastrules/io/fragment_binary.hpp"
 #include "rastrules/io/fragment_json.hpp"
@@ -568,16 +569,14 @@ int write_counts(const FragmentCounts& counts, const RenderRequest& rq);
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY, SCENE.INPUT.FAST_READER
 // rule: FAST.BATCH.EQUALS.PLAIN
 // render --fragments OUT (the only output, JSON or binary) of a scene of the fast reader's
-// form: the fragment list written from the batch unit's runs (fast_runs_batch), with no scene
-// prepared and no fragment record kept. nullopt where it declines (another output, the plain
-// traversal, the form, the target, a work bound or a fragment count over its limit, a vertex
+// form: the fragment list written from the batch unit's runs (fast_runs_batch; with --threads,
+// units of triangles and bands of rows made into bytes on the threads: write_fast_list), with
+// no scene prepared and no fragment record kept. nullopt where it declines (another output, the
+// plain traversal, the form, the target, a work bound or a fragment count over its limit, a vertex
 // that does not snap): the caller renders the scene as any other, which names every error.
 // The same bytes as that path (the tests compare them).
 std::optional<int> render_fast_form_list(std::string_view text, const RenderRequest& rq) {
-  // With --threads, the pool of stream_fragments draws (FAST.THREADS.DETERMINISTIC: the same
-  // bytes).
-  if (!rq.fragments_path || rq.png_path || rq.resolve_path || rq.png_depth || rq.depth_out_path ||
-      rq.options.threads > 1)
+  if (!rq.fragments_path || rq.png_path || rq.resolve_path || rq.png_depth || rq.depth_out_path)
     return std::nullopt;
   const std::optional<FastForm> form = load_fast_form(text, rq.options, rq.max_work);
   if (!form)
@@ -593,32 +592,22 @@ std::optional<int> render_fast_form_list(std::string_view text, const RenderRequ
   OutputFile file;
   if (auto err = file.open(*rq.fragments_path))
     return error(*err);
-  struct Sink {
-    std::optional<io::FragmentWriter> json;
-    std::optional<io::FragmentBinaryWriter> binary; // rule: SCENE.OUTPUT.BINARY
-    bool in_order = true;
-  } sink;
+  std::optional<io::FragmentWriter> json;
+  std::optional<io::FragmentBinaryWriter> binary; // rule: SCENE.OUTPUT.BINARY
   if (rq.fragments_binary)
-    sink.binary.emplace(file.get(), io::fragment_binary_header(scene));
+    binary.emplace(file.get(), io::fragment_binary_header(scene));
   else
-    sink.json.emplace(file.get());
-  const raster::RunSink runs{
-      &sink, [](void* c, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t n) {
-        auto& s = *static_cast<Sink*>(c);
-        const auto k = static_cast<std::uint32_t>(n);
-        s.in_order =
-            (s.binary ? s.binary->add_run(tri, y, x, k) == io::FragmentBinaryWriter::Added::kOk
-                      : s.json->add_run(tri, y, x, k)) &&
-            s.in_order;
-      }};
-  const raster::FastBatchResult r =
-      raster::fast_runs_batch(form->xy, scene.width, scene.height, scene.state, isa, runs);
-  if (r.status != raster::BatchStatus::kOk || r.covered != counted.covered)
+    json.emplace(file.get());
+  const FastListResult r =
+      write_fast_list(form->xy, scene.width, scene.height, scene.state, isa, rq.options.threads,
+                      json ? &*json : nullptr, binary ? &*binary : nullptr);
+  if (!r.ok || r.covered != counted.covered)
     return error("internal error: the batch unit's runs disagree with its count (" +
-                 raster::describe(r) + ")");
-  if (!sink.in_order)
+                 std::to_string(r.covered) + " fragments, counted " +
+                 std::to_string(counted.covered) + ")");
+  if (!r.in_order)
     return error(kFragmentsOutOfOrder);
-  if (!(sink.binary ? sink.binary->finish() : sink.json->finish()))
+  if (!(binary ? binary->finish() : json->finish()))
     return error(*rq.fragments_path + ": write failed");
   const std::vector<Output> outputs = {{&file, &rq.fragments_path}};
   if (auto err = commit_outputs(outputs))

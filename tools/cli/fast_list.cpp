@@ -1,0 +1,202 @@
+// SPDX-License-Identifier: MIT
+// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY, FAST.THREADS.DETERMINISTIC
+
+#include "fast_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <tuple>
+
+#include "rastrules/parallel.hpp"
+#include "rastrules/raster/fast_batch.hpp"
+
+namespace rastrules::cli {
+namespace {
+
+// Pixels of the work bound a unit holds. A fragment's JSON line takes at most kMostJsonLine
+// bytes (prim of 10 digits, x and y of 5), so a JSON unit's text fits the kJsonUnitBytes its
+// string reserves once (then it is never reallocated: a string grown by doubling on two
+// threads' heaps held twice its bytes). Binary units hold 16 bytes a run and take bigger bites.
+constexpr double kJsonUnitBudget = 2048;
+constexpr std::size_t kMostJsonLine = 60;
+constexpr std::size_t kJsonUnitBytes = 2048 * kMostJsonLine;
+constexpr double kBinaryUnitBudget = 65536;
+
+// A run as the units of a binary list hold it (16 bytes, the host's byte order: it never
+// leaves the process).
+struct RunRecord {
+  std::uint32_t prim;
+  std::int32_t y, x;
+  std::uint32_t n;
+};
+
+// A unit's runs in brief, written at the start of its bytes (a summary kept per unit took
+// more memory than the window's bytes on large triangles): the batch unit's status and count,
+// the fragments sent, the first and last (prim, y, x), and whether each run came after the
+// previous one.
+struct UnitHead {
+  raster::BatchStatus status = raster::BatchStatus::kOk;
+  bool in_order = true;
+  std::uint64_t covered = 0; // from the batch unit
+  std::uint64_t count = 0;   // sent as runs
+  std::uint32_t first_prim = 0, last_prim = 0;
+  std::int32_t first_y = 0, first_x = 0, last_y = 0, last_x = 0;
+};
+
+// Where a unit's runs go: its bytes after the head (JSON text or RunRecords), and its head.
+struct UnitSink {
+  std::string* bytes;
+  std::uint32_t base; // the index of the unit's first triangle in the list
+  bool json;
+  io::RunText text;
+  UnitHead head;
+};
+
+void unit_run(void* context, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t n) {
+  auto& s = *static_cast<UnitSink*>(context);
+  const std::uint32_t prim = s.base + tri;
+  const auto k = static_cast<std::uint32_t>(n);
+  UnitHead& h = s.head;
+  if (h.count == 0) {
+    h.first_prim = prim;
+    h.first_y = y;
+    h.first_x = x;
+  } else if (std::tuple(prim, y, x) <= std::tuple(h.last_prim, h.last_y, h.last_x)) {
+    h.in_order = false;
+  }
+  h.last_prim = prim;
+  h.last_y = y;
+  h.last_x = static_cast<std::int32_t>(std::int64_t{x} + n - 1);
+  h.count += k;
+  if (s.json) {
+    s.text.append(*s.bytes, prim, y, x, k, false);
+  } else {
+    const RunRecord r{prim, y, x, k};
+    s.bytes->append(reinterpret_cast<const char*>(&r), sizeof r);
+  }
+}
+
+} // namespace
+
+// rule: FAST.THREADS.DETERMINISTIC
+std::vector<RunUnit> plan_run_units(std::span<const float> xy, std::int32_t width,
+                                    std::int32_t height, double budget) {
+  std::vector<RunUnit> units;
+  const auto n = static_cast<std::uint32_t>(xy.size() / 6);
+  RunUnit open; // triangles [open.first, open.last) so far
+  double open_work = 0;
+  const auto close = [&] {
+    if (open.last > open.first)
+      units.push_back(open);
+    open = RunUnit{open.last, open.last};
+    open_work = 0;
+  };
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const float* t = &xy[std::size_t{i} * 6];
+    const float lo_x = std::min({t[0], t[2], t[4]}), hi_x = std::max({t[0], t[2], t[4]});
+    const float lo_y = std::min({t[1], t[3], t[5]}), hi_y = std::max({t[1], t[3], t[5]});
+    // The bound of load_fast_form's work limit: floor(span) + 3 pixel centres an axis.
+    const double cols = std::min<double>(width, std::floor(double{hi_x} - lo_x) + 3);
+    const double rows = std::min<double>(height, std::floor(double{hi_y} - lo_y) + 3);
+    const double work = cols * rows;
+    if (work <= budget) {
+      if (open_work + work > budget || open.last - open.first >= kMaxRunUnitTriangles)
+        close();
+      open.last = i + 1;
+      open_work += work;
+      continue;
+    }
+    close();
+    const auto y0 =
+        static_cast<std::int32_t>(std::clamp<double>(std::floor(double{lo_y}) - 1, 0, height - 1));
+    const auto y1 =
+        static_cast<std::int32_t>(std::clamp<double>(std::ceil(double{hi_y}) + 1, 0, height - 1));
+    const auto band = static_cast<std::int32_t>(std::max(1.0, std::floor(budget / cols)));
+    for (std::int32_t y = y0; y <= y1; y += band) {
+      units.push_back(RunUnit{
+          i, i + 1, true, y,
+          static_cast<std::int32_t>(std::min<std::int64_t>(std::int64_t{y} + band - 1, y1))});
+    }
+    open = RunUnit{i + 1, i + 1};
+  }
+  close();
+  return units;
+}
+
+// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY, FAST.THREADS.DETERMINISTIC
+FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, std::int32_t height,
+                               const RasterState& state, Isa isa, unsigned threads,
+                               io::FragmentWriter* json, io::FragmentBinaryWriter* binary) {
+  FastListResult out;
+  if (threads <= 1) {
+    // Straight from the runs to the writer.
+    struct Sink {
+      io::FragmentWriter* json;
+      io::FragmentBinaryWriter* binary;
+      bool in_order = true;
+    } sink{json, binary};
+    const raster::RunSink runs{
+        &sink, [](void* c, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t n) {
+          auto& s = *static_cast<Sink*>(c);
+          const auto k = static_cast<std::uint32_t>(n);
+          s.in_order =
+              (s.binary ? s.binary->add_run(tri, y, x, k) == io::FragmentBinaryWriter::Added::kOk
+                        : s.json->add_run(tri, y, x, k)) &&
+              s.in_order;
+        }};
+    const raster::FastBatchResult r = raster::fast_runs_batch(xy, width, height, state, isa, runs);
+    out.ok = r.status == raster::BatchStatus::kOk;
+    out.covered = r.covered;
+    out.in_order = sink.in_order;
+    return out;
+  }
+  const std::vector<RunUnit> units =
+      plan_run_units(xy, width, height, json ? kJsonUnitBudget : kBinaryUnitBudget);
+  const auto produce = [&](std::size_t i, std::string& bytes) {
+    const RunUnit& u = units[i];
+    if (json)
+      bytes.reserve(sizeof(UnitHead) + kJsonUnitBytes);
+    bytes.resize(sizeof(UnitHead)); // written last
+    UnitSink sink{&bytes, u.band ? 0 : u.first, json != nullptr, {}, {}};
+    const raster::RunSink runs{&sink, unit_run};
+    const raster::FastBatchResult r =
+        u.band ? raster::fast_runs_rows(xy, u.first, width, height, state, isa, u.y_first, u.y_last,
+                                        runs)
+               : raster::fast_runs_batch(
+                     xy.subspan(std::size_t{u.first} * 6, std::size_t{u.last - u.first} * 6), width,
+                     height, state, isa, runs);
+    sink.head.status = r.status;
+    sink.head.covered = r.covered;
+    std::memcpy(bytes.data(), &sink.head, sizeof sink.head);
+  };
+  const auto consume = [&](std::size_t, std::string& bytes) {
+    UnitHead h;
+    std::memcpy(&h, bytes.data(), sizeof h);
+    const std::string_view body = std::string_view(bytes).substr(sizeof h);
+    if (h.status != raster::BatchStatus::kOk || h.covered != h.count)
+      out.ok = false;
+    out.covered += h.count;
+    if (json) {
+      BatchSummary b;
+      b.count = h.count;
+      b.first = Fragment(h.first_prim, h.first_x, h.first_y, 1);
+      b.last = Fragment(h.last_prim, h.last_x, h.last_y, 1);
+      b.in_order = h.in_order;
+      out.in_order = json->add_without_text(b) && out.in_order;
+      json->add_encoded_text(body);
+      return;
+    }
+    for (std::size_t at = 0; at + sizeof(RunRecord) <= body.size(); at += sizeof(RunRecord)) {
+      RunRecord r;
+      std::memcpy(&r, body.data() + at, sizeof r);
+      out.in_order =
+          binary->add_run(r.prim, r.y, r.x, r.n) == io::FragmentBinaryWriter::Added::kOk &&
+          out.in_order;
+    }
+  };
+  produce_ordered(units.size(), threads, std::size_t{threads} + 1, produce, consume);
+  return out;
+}
+
+} // namespace rastrules::cli

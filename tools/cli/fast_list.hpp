@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// The fragment list of a scene of the fast reader's form written from the batch unit's runs
+// (SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY), on one thread or several: no fragment record
+// is built, and with threads each thread makes the bytes of whole units of triangles (or of
+// bands of rows of a large one) that the calling thread writes in order.
+// Implements: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY, FAST.THREADS.DETERMINISTIC
+
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rastrules/io/fragment_binary.hpp"
+#include "rastrules/io/fragment_json.hpp"
+#include "rastrules/isa.hpp"
+#include "rastrules/triangle.hpp"
+
+namespace rastrules::cli {
+
+// A unit of the threaded list: triangles [first, last) whole, or (band) triangle `first`'s rows
+// y_first to y_last alone.
+struct RunUnit {
+  std::uint32_t first = 0;
+  std::uint32_t last = 0;
+  bool band = false;
+  std::int32_t y_first = 0;
+  std::int32_t y_last = 0;
+};
+
+// The units of the triangles xy (six finite floats a triangle) on a width x height target, in
+// the order of the list: consecutive triangles whose work bounds sum to at most `budget` pixels
+// (at most kMaxRunUnitTriangles of them) share a unit; a triangle whose bound passes `budget`
+// is cut into bands of whole rows of at most `budget` pixels of its bound each, covering every
+// row it can reach (its floats' rows widened by a pixel: snapping moves a vertex by at most
+// 1/512 px). Every unit's fragments are at most about `budget` (twice the bound's area at most).
+inline constexpr std::uint32_t kMaxRunUnitTriangles = 4096;
+[[nodiscard]] std::vector<RunUnit> plan_run_units(std::span<const float> xy, std::int32_t width,
+                                                  std::int32_t height, double budget);
+
+// What write_fast_list wrote.
+struct FastListResult {
+  bool ok = true;            // false: the runs disagree with a count (internal error)
+  std::uint64_t covered = 0; // fragments written
+  bool in_order = true;      // every fragment came after the previous one (the writer checked)
+};
+
+// Writes the fragments fast_runs_batch finds for the triangles xy to exactly one of json and
+// binary (the other null), in the list's order, with `threads` threads (1: straight from the
+// runs). The same bytes for every thread count (FAST.THREADS.DETERMINISTIC). The caller has
+// checked the triangles with fast_count_batch (all snap, the target and isa are accepted).
+// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY, FAST.THREADS.DETERMINISTIC
+[[nodiscard]] FastListResult write_fast_list(std::span<const float> xy, std::int32_t width,
+                                             std::int32_t height, const RasterState& state, Isa isa,
+                                             unsigned threads, io::FragmentWriter* json,
+                                             io::FragmentBinaryWriter* binary);
+
+} // namespace rastrules::cli
