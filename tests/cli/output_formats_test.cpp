@@ -3,6 +3,7 @@
 // the binary runs hold exactly the JSON list's fragments and the reader refuses every damage;
 // the counts equal the fragment list's, from the batch counter and from the traversal alike.
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -315,6 +316,15 @@ TEST(FragmentCount, TheBatchCounterEqualsTheFragmentListOnRandomTriangles) {
   }
 }
 
+// The names in a folder, sorted (a temporary file left behind shows here).
+std::vector<std::string> entries_of(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY, FAST.THREADS.DETERMINISTIC
 // With --threads, a scene of the fast reader's form is written in units (runs of small triangles,
 // bands of rows of large ones, made into bytes on the threads: write_fast_list): random scenes
@@ -419,10 +429,14 @@ TEST(FragmentCount, TheCoordinatesPathDeclinesToThePreparedPathsAnswers) {
     SCOPED_TRACE(scene);
     TempDir dir;
     const auto in = dir.write("s.json", scene);
+    // The list into a regular file is written as it is found and stops where it declines (its
+    // temporary removed); one thread and two (units); standard output is counted first.
     for (const std::vector<std::string>& output :
          {std::vector<std::string>{"--count", "-"},
           {"--fragments", (dir / "f.bin").string(), "--fragments-format", "binary"},
-          {"--fragments", (dir / "f.bin").string()}}) {
+          {"--fragments", (dir / "f.bin").string()},
+          {"--fragments", (dir / "f.bin").string(), "--threads", "2"},
+          {"--fragments", "-", "--threads", "2"}}) {
       auto args = std::vector<std::string>{"render", in.string()};
       args.insert(args.end(), output.begin(), output.end());
       const auto fast = run_cli(args);
@@ -432,23 +446,31 @@ TEST(FragmentCount, TheCoordinatesPathDeclinesToThePreparedPathsAnswers) {
       EXPECT_NE(fast.err.find(where), std::string::npos) << fast.err;
       EXPECT_EQ(fast.err, prepared.err);
       EXPECT_EQ(fast.out, "");
-      EXPECT_FALSE(std::filesystem::exists(dir / "f.bin"));
+      EXPECT_EQ(entries_of(dir.path()), std::vector<std::string>{"s.json"});
     }
   }
   {
-    // Over the fragment limit: the prepared path's error, and no file (binary and JSON).
+    // Over the fragment limit: the prepared path's error, and no file (binary and JSON, one
+    // thread and two, into a file where the list stops past the limit and into standard output
+    // where it is counted first).
     TempDir dir;
     const auto in = dir.write("s.json", scene_with(fine_target, "[[0,0],[8,0],[0,8]]"));
-    for (const std::string name : {"f.bin", "f.json"}) {
-      auto args = std::vector<std::string>{
-          "render", in.string(), "--fragments", (dir / name).string(), "--max-fragments", "20"};
-      const auto fast = run_cli(args);
-      args.insert(args.end(), {"--traversal", "plain"});
-      const auto prepared = run_cli(args);
-      EXPECT_EQ(fast.status, 2);
-      EXPECT_NE(fast.err.find("more than 20 fragments"), std::string::npos) << fast.err;
-      EXPECT_EQ(fast.err, prepared.err);
-      EXPECT_FALSE(std::filesystem::exists(dir / name));
+    for (const std::string name : {"f.bin", "f.json", "-"}) {
+      for (const std::string threads : {"1", "2"}) {
+        auto args =
+            std::vector<std::string>{"render",          in.string(),
+                                     "--fragments",     name == "-" ? name : (dir / name).string(),
+                                     "--max-fragments", "20",
+                                     "--threads",       threads};
+        const auto fast = run_cli(args);
+        args.insert(args.end(), {"--traversal", "plain"});
+        const auto prepared = run_cli(args);
+        EXPECT_EQ(fast.status, 2);
+        EXPECT_NE(fast.err.find("more than 20 fragments"), std::string::npos) << fast.err;
+        EXPECT_EQ(fast.err, prepared.err);
+        EXPECT_EQ(fast.out, "");
+        EXPECT_EQ(entries_of(dir.path()), std::vector<std::string>{"s.json"});
+      }
     }
   }
   // The first triangle's walk is 4 x 4 pixels, the second's 2 x 2 (one covered; the others'

@@ -127,27 +127,41 @@ std::vector<RunUnit> plan_run_units(std::span<const float> xy, std::int32_t widt
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY, FAST.THREADS.DETERMINISTIC
 FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, std::int32_t height,
                                const RasterState& state, Isa isa, unsigned threads,
-                               io::FragmentWriter* json, io::FragmentBinaryWriter* binary) {
+                               std::uint64_t max_fragments, io::FragmentWriter* json,
+                               io::FragmentBinaryWriter* binary) {
+  // Thrown where the list stops (declined); never seen outside.
+  struct Stop {};
   FastListResult out;
   if (threads <= 1) {
     // Straight from the runs to the writer.
     struct Sink {
       io::FragmentWriter* json;
       io::FragmentBinaryWriter* binary;
+      std::uint64_t max;
+      std::uint64_t count = 0;
       bool in_order = true;
-    } sink{json, binary};
+    } sink{json, binary, max_fragments};
     const raster::RunSink runs{
         &sink, [](void* c, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t n) {
           auto& s = *static_cast<Sink*>(c);
           const auto k = static_cast<std::uint32_t>(n);
+          s.count += k;
+          if (s.count > s.max)
+            throw Stop{}; // unwinds the batch unit: it holds its buffers in RAII owners
           s.in_order =
               (s.binary ? s.binary->add_run(tri, y, x, k) == io::FragmentBinaryWriter::Added::kOk
                         : s.json->add_run(tri, y, x, k)) &&
               s.in_order;
         }};
-    const raster::FastBatchResult r = raster::fast_runs_batch(xy, width, height, state, isa, runs);
-    out.ok = r.status == raster::BatchStatus::kOk;
-    out.covered = r.covered;
+    try {
+      const raster::FastBatchResult r =
+          raster::fast_runs_batch(xy, width, height, state, isa, runs);
+      out.declined = r.status != raster::BatchStatus::kOk;
+      out.ok = out.declined || r.covered == sink.count;
+    } catch (const Stop&) {
+      out.declined = true;
+    }
+    out.covered = sink.count;
     out.in_order = sink.in_order;
     return out;
   }
@@ -174,7 +188,9 @@ FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, st
     UnitHead h;
     std::memcpy(&h, bytes.data(), sizeof h);
     const std::string_view body = std::string_view(bytes).substr(sizeof h);
-    if (h.status != raster::BatchStatus::kOk || h.covered != h.count)
+    if (h.status != raster::BatchStatus::kOk || h.count > max_fragments - out.covered)
+      throw Stop{};
+    if (h.covered != h.count)
       out.ok = false;
     out.covered += h.count;
     if (json) {
@@ -195,7 +211,11 @@ FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, st
           out.in_order;
     }
   };
-  produce_ordered(units.size(), threads, std::size_t{threads} + 1, produce, consume);
+  try {
+    produce_ordered(units.size(), threads, std::size_t{threads} + 1, produce, consume);
+  } catch (const Stop&) {
+    out.declined = true;
+  }
   return out;
 }
 

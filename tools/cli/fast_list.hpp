@@ -42,18 +42,22 @@ inline constexpr std::uint32_t kMaxRunUnitTriangles = 4096;
 // What write_fast_list wrote.
 struct FastListResult {
   bool ok = true;            // false: the runs disagree with a count (internal error)
+  bool declined = false;     // a vertex that does not snap, or more than max_fragments
   std::uint64_t covered = 0; // fragments written
   bool in_order = true;      // every fragment came after the previous one (the writer checked)
 };
 
 // Writes the fragments fast_runs_batch finds for the triangles xy to exactly one of json and
 // binary (the other null), in the list's order, with `threads` threads (1: straight from the
-// runs). The same bytes for every thread count (FAST.THREADS.DETERMINISTIC). The caller has
-// checked the triangles with fast_count_batch (all snap, the target and isa are accepted).
+// runs). The same bytes for every thread count (FAST.THREADS.DETERMINISTIC). It stops, declined,
+// at a triangle that does not snap or once more than max_fragments fragments are found, having
+// written part of the list (a caller writing where that cannot be taken back counts the
+// triangles with fast_count_batch first).
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY, FAST.THREADS.DETERMINISTIC
 [[nodiscard]] FastListResult write_fast_list(std::span<const float> xy, std::int32_t width,
                                              std::int32_t height, const RasterState& state, Isa isa,
-                                             unsigned threads, io::FragmentWriter* json,
+                                             unsigned threads, std::uint64_t max_fragments,
+                                             io::FragmentWriter* json,
                                              io::FragmentBinaryWriter* binary);
 
 } // namespace rastrules::cli

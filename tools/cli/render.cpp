@@ -583,12 +583,18 @@ std::optional<int> render_fast_form_list(std::string_view text, const RenderRequ
     return std::nullopt;
   const PreparedScene& scene = *form->base.prepared;
   const Isa isa = effective_isa(rq.options);
-  // The fragment limit, from the count (a fraction of the time of the runs): nothing is written
-  // for a scene over it, or with a vertex that does not snap.
-  const raster::FastBatchResult counted =
-      raster::fast_count_batch(form->xy, scene.width, scene.height, scene.state, isa);
-  if (counted.status != raster::BatchStatus::kOk || counted.covered > rq.max_fragments)
-    return std::nullopt;
+  // The fragment limit and the vertices: the list stops (declines) at a vertex that does not
+  // snap or past the limit, and a temporary file is then removed; what is written in place
+  // (standard output, a device, a pipe) cannot be taken back, so there the count comes first
+  // (a fraction of the time of the runs) and nothing is written for such a scene.
+  std::optional<std::uint64_t> counted;
+  if (io::OutputFile::writes_in_place(*rq.fragments_path)) {
+    const raster::FastBatchResult c =
+        raster::fast_count_batch(form->xy, scene.width, scene.height, scene.state, isa);
+    if (c.status != raster::BatchStatus::kOk || c.covered > rq.max_fragments)
+      return std::nullopt;
+    counted = c.covered;
+  }
   OutputFile file;
   if (auto err = file.open(*rq.fragments_path))
     return error(*err);
@@ -600,11 +606,13 @@ std::optional<int> render_fast_form_list(std::string_view text, const RenderRequ
     json.emplace(file.get());
   const FastListResult r =
       write_fast_list(form->xy, scene.width, scene.height, scene.state, isa, rq.options.threads,
-                      json ? &*json : nullptr, binary ? &*binary : nullptr);
-  if (!r.ok || r.covered != counted.covered)
+                      rq.max_fragments, json ? &*json : nullptr, binary ? &*binary : nullptr);
+  if (!r.ok || (counted && (r.declined || r.covered != *counted)))
     return error("internal error: the batch unit's runs disagree with its count (" +
                  std::to_string(r.covered) + " fragments, counted " +
-                 std::to_string(counted.covered) + ")");
+                 std::to_string(counted.value_or(r.covered)) + ")");
+  if (r.declined)
+    return std::nullopt; // file (a temporary) is removed
   if (!r.in_order)
     return error(kFragmentsOutOfOrder);
   if (!(binary ? binary->finish() : json->finish()))

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <system_error>
+#include <utility>
 
 #include "rastrules/io/interrupt.hpp"
 
@@ -38,6 +39,30 @@ void OutputFile::discard() {
   interrupt_slot_ = -1;
 }
 
+namespace {
+
+// The file a path names (a symbolic link followed: ec set when it cannot be) and whether it is
+// an existing file that is not a regular one (a device or a pipe).
+std::pair<std::filesystem::path, bool> real_target(const std::string& path, std::error_code& ec) {
+  ec.clear();
+  std::error_code status_ec; // a path that does not exist yet is not an error
+  std::filesystem::path target = path;
+  if (std::filesystem::is_symlink(std::filesystem::symlink_status(path, status_ec))) {
+    target = std::filesystem::weakly_canonical(path, ec);
+    if (ec)
+      return {target, false};
+  }
+  const auto st = std::filesystem::status(target, status_ec);
+  return {target, std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)};
+}
+
+} // namespace
+
+bool OutputFile::writes_in_place(const std::string& path) {
+  std::error_code ec;
+  return path == "-" || real_target(path, ec).second;
+}
+
 std::optional<std::string> OutputFile::open(const std::string& path) {
   path_ = path;
   if (path == "-") {
@@ -50,14 +75,10 @@ std::optional<std::string> OutputFile::open(const std::string& path) {
   // and pipes (/dev/null, /dev/stdout, a FIFO) are written in place: renaming a temporary file
   // over them would replace them.
   std::error_code ec;
-  std::filesystem::path target = path;
-  if (std::filesystem::is_symlink(std::filesystem::symlink_status(path, ec))) {
-    target = std::filesystem::weakly_canonical(path, ec);
-    if (ec)
-      return path + ": cannot follow the link: " + ec.message();
-  }
-  const auto st = std::filesystem::status(target, ec);
-  if (std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
+  const auto [target, in_place] = real_target(path, ec);
+  if (ec)
+    return path + ": cannot follow the link: " + ec.message();
+  if (in_place) {
     is_in_place_ = true;
     file_ = std::fopen(path.c_str(), "wb");
     if (file_ == nullptr)

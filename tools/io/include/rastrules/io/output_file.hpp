@@ -26,6 +26,10 @@ public:
   // Opens the temporary file. Returns an error message on failure.
   std::optional<std::string> open(const std::string& path);
   [[nodiscard]] std::FILE* get() const { return file_; }
+  // Whether open(path) writes in place (standard output, or an existing path that is not a
+  // regular file): what is written there cannot be taken back, while a temporary file is
+  // removed unless committed.
+  [[nodiscard]] static bool writes_in_place(const std::string& path);
   // Closes the file and moves it into place. Returns an error message on failure (and then
   // removes the temporary file).
   std::optional<std::string> commit();
