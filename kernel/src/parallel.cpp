@@ -23,6 +23,25 @@
 
 namespace rastrules {
 
+namespace {
+
+// Starts up to n threads running work. A thread that cannot be created leaves its share to the
+// ones running (and the calling thread).
+template <class Work> std::vector<std::jthread> start_threads(std::size_t n, const Work& work) {
+  std::vector<std::jthread> pool;
+  pool.reserve(n);
+  for (std::size_t t = 0; t < n; ++t) {
+    try {
+      pool.emplace_back(work);
+    } catch (const std::system_error&) {
+      break;
+    }
+  }
+  return pool;
+}
+
+} // namespace
+
 // rule: FAST.THREADS.DETERMINISTIC
 void run_units(std::size_t n, unsigned threads, const std::function<void(std::size_t)>& unit) {
   const std::size_t wanted = std::min<std::size_t>(std::clamp(threads, 1U, kMaxThreads), n);
@@ -55,15 +74,7 @@ void run_units(std::size_t n, unsigned threads, const std::function<void(std::si
     }
   };
   {
-    std::vector<std::jthread> pool;
-    pool.reserve(wanted - 1);
-    for (std::size_t t = 0; t + 1 < wanted; ++t) {
-      try {
-        pool.emplace_back(work);
-      } catch (const std::system_error&) {
-        break; // no more threads: the ones running (and this one) take the remaining units
-      }
-    }
+    std::vector<std::jthread> pool = start_threads(wanted - 1, work);
     work();
   } // the jthreads join here
   if (failure)
@@ -503,15 +514,7 @@ void produce_ordered(std::size_t n, unsigned threads, std::size_t window,
   };
   // threads - 1 pool threads; the calling thread is the last: it consumes the next unit when it
   // is ready and otherwise produces one (so `threads` threads run, never more).
-  std::vector<std::jthread> pool;
-  pool.reserve(wanted - 1);
-  for (std::size_t t = 0; t + 1 < wanted; ++t) {
-    try {
-      pool.emplace_back(work);
-    } catch (const std::system_error&) {
-      break; // no more threads: the ones running take the units
-    }
-  }
+  std::vector<std::jthread> pool = start_threads(wanted - 1, work);
   const auto stop_pool = [&] {
     {
       const std::lock_guard<std::mutex> lock(mutex);

@@ -235,15 +235,20 @@ nlohmann::json counts_of_list(const std::vector<Row>& rows, std::size_t primitiv
       {"overdraw", {{"pixels_touched", hits.size()}, {"max", pixels.size()}, {"pixels", pixels}}}};
 }
 
+// A random seed, printed; RASTRULES_SEED=N replays a run.
+unsigned printed_seed(const char* test) {
+  const char* given = std::getenv("RASTRULES_SEED");
+  const unsigned seed = given != nullptr ? static_cast<unsigned>(std::strtoul(given, nullptr, 10))
+                                         : std::random_device{}();
+  std::printf("%s seed %u (RASTRULES_SEED=%u replays it)\n", test, seed, seed);
+  return seed;
+}
+
 // rule: SCENE.OUTPUT.COUNT, FAST.BATCH.EQUALS.PLAIN
 // Random triangle scenes (the batch counter's case): the counts equal the fragment list's, and
 // the batch counter (default), the plain traversal and every instruction set give the same bytes.
 TEST(FragmentCount, TheBatchCounterEqualsTheFragmentListOnRandomTriangles) {
-  // RASTRULES_SEED=N replays a run.
-  const char* given = std::getenv("RASTRULES_SEED");
-  const unsigned seed = given != nullptr ? static_cast<unsigned>(std::strtoul(given, nullptr, 10))
-                                         : std::random_device{}();
-  std::printf("FragmentCount seed %u (RASTRULES_SEED=%u replays it)\n", seed, seed);
+  const unsigned seed = printed_seed("FragmentCount");
   std::mt19937 rng(seed);
   for (int round = 0; round < 6; ++round) {
     SCOPED_TRACE("seed " + std::to_string(seed) + " round " + std::to_string(round));
@@ -332,10 +337,7 @@ std::vector<std::string> entries_of(const std::filesystem::path& dir) {
 // target's edges, ties on pixel centres) give the plain traversal's JSON and binary lists for
 // every thread count.
 TEST(FragmentLists, ThreadsWriteTheRunsInUnitsAndBandsAsOneThreadDoes) {
-  const char* given = std::getenv("RASTRULES_SEED");
-  const unsigned seed = given != nullptr ? static_cast<unsigned>(std::strtoul(given, nullptr, 10))
-                                         : std::random_device{}();
-  std::printf("FragmentLists seed %u (RASTRULES_SEED=%u replays it)\n", seed, seed);
+  const unsigned seed = printed_seed("FragmentLists");
   std::mt19937 rng(seed);
   for (int round = 0; round < 2; ++round) {
     SCOPED_TRACE("seed " + std::to_string(seed) + " round " + std::to_string(round));
