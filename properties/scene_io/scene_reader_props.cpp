@@ -117,8 +117,42 @@ rc::Gen<Written> scene_text() {
           "}";
     }
     prims += gap() + "]";
-    out.text = gap() + "{" + gap() + (target_first ? target + "," + prims : prims + "," + target) +
-               gap() + "}" + gap();
+    // The root's keys: target, primitives and some of the optional ones the fast form takes,
+    // in any order. A key twice, a value the general reader refuses ("sideways", version 2), a
+    // value the fast form does not take (version 1.0) or a key it does not take ("samples")
+    // sends the text to the general reader.
+    std::vector<std::string> keys = {target, prims};
+    if (!target_first)
+      std::swap(keys[0], keys[1]);
+    struct Key {
+      const char* name;
+      std::vector<const char*> values; // JSON texts; the first `fast` are taken
+      std::size_t fast;
+    };
+    static const std::vector<Key> kKeys = {
+        {"cull", {"\"none\"", "\"back\"", "\"front\"", "\"sideways\""}, 3},
+        {"front_face", {"\"cw\"", "\"ccw\""}, 2},
+        {"fill", {"\"top-left\"", "\"top-right\"", "\"bottom-left\"", "\"bottom-right\""}, 4},
+        {"line_mode", {"\"d3d\"", "\"vulkan-bresenham\"", "\"quad-wide\"", "\"quad-narrow\""}, 4},
+        {"version", {"1", "2", "1.0"}, 1},
+        {"samples", {"1"}, 0},
+    };
+    std::vector<int> times(kKeys.size(), 0);
+    const auto extra = *rc::gen::container<std::vector<std::size_t>>(
+        *rc::gen::inRange<std::size_t>(0, 4), rc::gen::inRange<std::size_t>(0, kKeys.size()));
+    for (const std::size_t k : extra) {
+      const Key& key = kKeys[k];
+      const auto v = *rc::gen::inRange<std::size_t>(0, key.values.size());
+      if (v >= key.fast || ++times[k] > 1)
+        out.expect_fast = false;
+      const auto at = *rc::gen::inRange<std::size_t>(0, keys.size() + 1);
+      keys.insert(keys.begin() + static_cast<std::ptrdiff_t>(at),
+                  std::string("\"") + key.name + "\"" + gap() + ":" + gap() + key.values[v]);
+    }
+    std::string body;
+    for (std::size_t k = 0; k < keys.size(); ++k)
+      body += (k > 0 ? "," + gap() : "") + keys[k];
+    out.text = gap() + "{" + gap() + body + gap() + "}" + gap();
     return out;
   });
 }

@@ -256,8 +256,14 @@ TEST(FragmentCount, TheBatchCounterEqualsTheFragmentListOnRandomTriangles) {
     std::uniform_real_distribution<float> coord(-20.0f, 110.0f), small(-3.0f, 3.0f);
     nlohmann::json scene = {{"target", {{"width", w}, {"height", h}}},
                             {"primitives", nlohmann::json::array()}};
+    // The window-space state (taken by the fast reader's form): culling, the winding that
+    // faces front and every fill convention.
     if (round % 2 == 1)
       scene["cull"] = "back";
+    static const char* const kFill[] = {"top-left", "top-right", "bottom-left", "bottom-right"};
+    scene["fill"] = kFill[round % 4];
+    if (round % 3 == 2)
+      scene["front_face"] = "ccw";
     const int n = 1 + static_cast<int>(rng() % 300);
     for (int i = 0; i < n; ++i) {
       // Small triangles (decided in 32-bit lanes) and large ones (the tiles); ties on centres.
@@ -292,9 +298,8 @@ TEST(FragmentCount, TheBatchCounterEqualsTheFragmentListOnRandomTriangles) {
         continue; // an instruction set this processor lacks
       EXPECT_EQ(other.out, batch) << extra[0] << " " << extra[1];
     }
-    // The JSON list: from the batch unit's runs when the scene has the fast reader's form (no
-    // "cull"), else from the prepared scene; the same bytes as the plain traversal's and two
-    // threads'.
+    // The JSON list: from the batch unit's runs (the fast reader's form, state included); the
+    // same bytes as the plain traversal's (always prepared) and two threads'.
     const std::string list = read_file(dir / "f.json");
     for (const std::vector<std::string>& extra :
          {std::vector<std::string>{"--traversal", "plain"}, {"--threads", "2"}}) {

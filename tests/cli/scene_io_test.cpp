@@ -283,6 +283,9 @@ TEST(FastSceneReader, ReadsItsFormAsTheGeneralReaderAndDeclinesTheRest) {
       "{\"primitives\":[{\"v\":[[1,2],[3,4],[5,6]],\"type\":\"triangle\"},\n"
       "{\"type\":\"triangle\",\"v\":[[0.5,0.5],[2.5,0.5],[0.5,2.5]]}],"
       "\"target\":{\"width\":16384,\"height\":1}}",
+      // The version and the window-space state, each once, in any order.
+      R"({"version": 1, "cull": "back", "target": {"width": 8, "height": 8}, "fill": )"
+      R"("bottom-right", "primitives": [], "front_face": "ccw", "line_mode": "quad-wide"})",
   };
   for (const std::string& text : taken) {
     SCOPED_TRACE(text);
@@ -310,8 +313,12 @@ TEST(FastSceneReader, ReadsItsFormAsTheGeneralReaderAndDeclinesTheRest) {
       tri("[[0, 0], [4, 0], [0, +4]]"),
       tri("[[0, 0], [4, 0], [0, 4.]]"),
       tri("[[0, 0], [4, 0], [0, 4]]}, {\"type\": \"point\", \"v\": [[1, 1]]"),
-      R"({"target": {"width": 8, "height": 8}, "cull": "back", "primitives": []})",
-      R"({"version": 1, "target": {"width": 8, "height": 8}, "primitives": []})",
+      R"({"target": {"width": 8, "height": 8}, "cull": "sideways", "primitives": []})",
+      R"({"target": {"width": 8, "height": 8}, "cull": "back", "cull": "back", "primitives": []})",
+      R"({"target": {"width": 8, "height": 8}, "cull": "b\u0061ck", "primitives": []})",
+      R"({"version": 2, "target": {"width": 8, "height": 8}, "primitives": []})",
+      R"({"version": 1.0, "target": {"width": 8, "height": 8}, "primitives": []})",
+      R"({"target": {"width": 8, "height": 8}, "samples": 1, "primitives": []})",
       R"({"target": {"width": 8, "width": 8}, "primitives": []})",
       R"({"target": {"width": 8.0, "height": 8}, "primitives": []})",
       R"({"target": {"width": 8, "height": 8}, "primitives": [], "primitives": []})",

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The scene reader's fast path (SCENE.INPUT.FAST_READER): one pass over the common large scene,
-// a target and a list of triangles given by "type" and "v" alone, building the primitives
-// directly. Anything outside that form returns nullopt and the general reader decides (it also
-// gives every error), so the fast path only ever accepts text the general reader reads to the
-// same scene: numbers are converted by the same rules (SCENE.NUMBER.FLOAT32: integers rounded
+// a target and a list of triangles given by "type" and "v" alone (with, optionally, the
+// version and the window-space state: cull, front_face, fill, line_mode), building the
+// primitives directly. Anything outside that form returns nullopt and the general reader decides
+// (it also gives every error), so the fast path only ever accepts text the general reader reads to
+// the same scene: numbers are converted by the same rules (SCENE.NUMBER.FLOAT32: integers rounded
 // once, other numbers correctly rounded from their text), and the scene's other fields come
-// from the general reader itself, reading the same target with no primitives.
+// from the general reader itself, reading the same target and keys with no primitives.
 // Implements: SCENE.INPUT.FAST_READER
 
 #include <algorithm>
@@ -195,6 +196,23 @@ template <class Value> bool two_key_object(FastScanner& s, Value&& value) {
   return s.eat('}');
 }
 
+// An object of one or more keys: value(key) reads each key's value, false to decline.
+template <class Value> bool object_of_keys(FastScanner& s, Value&& value) {
+  if (!s.eat('{'))
+    return false;
+  do {
+    const auto key = s.plain_string();
+    if (!key || !s.eat(':') || !value(*key))
+      return false;
+  } while (s.eat(','));
+  return s.eat('}');
+}
+
+// The root keys besides "target" and "primitives" that the fast form takes: the general reader
+// reads each from the head text (and names a bad value); none of them changes how a triangle
+// is read, and the state they set (TRI.CULL.MODE, TRI.FILL.CONVENTION) is the prepared scene's.
+constexpr std::array<std::string_view, 4> kStateKeys = {"cull", "front_face", "fill", "line_mode"};
+
 // {"width": W, "height": H} in either order.
 bool target(FastScanner& s, std::int32_t& width, std::int32_t& height) {
   bool have_w = false, have_h = false;
@@ -271,17 +289,46 @@ template <class Sink> std::optional<Scene> scan_fast(std::string_view json_text,
     } while (s.eat(','));
     return s.eat(']');
   };
-  const bool ok = two_key_object(s, [&](std::string_view key) {
-    if (key == "target" && !have_target)
-      return have_target = target(s, width, height);
-    if (key == "primitives" && !have_primitives)
-      return have_primitives = list();
-    return false;
+  // The other keys' text, for the general reader: "version" (an integer) and kStateKeys (plain
+  // strings), each once.
+  std::string others;
+  std::array<bool, kStateKeys.size() + 1> seen{};
+  const auto other = [&](std::string_view key) {
+    const auto at = std::find(kStateKeys.begin(), kStateKeys.end(), key);
+    const auto k = static_cast<std::size_t>(at - kStateKeys.begin()); // size(): "version"
+    if ((at == kStateKeys.end() && key != "version") || seen[k])
+      return false;
+    seen[k] = true;
+    others += ", \"";
+    others += key;
+    others += "\": ";
+    if (at == kStateKeys.end()) {
+      const std::optional<std::int64_t> v = s.short_integer();
+      if (!v)
+        return false;
+      others += std::to_string(*v);
+      return true;
+    }
+    const std::optional<std::string_view> v = s.plain_string();
+    if (!v)
+      return false;
+    others += '"';
+    others += *v;
+    others += '"';
+    return true;
+  };
+  const bool ok = object_of_keys(s, [&](std::string_view key) {
+    if (key == "target")
+      return !have_target && (have_target = target(s, width, height));
+    if (key == "primitives")
+      return !have_primitives && (have_primitives = list());
+    return other(key);
   });
-  if (!ok || !s.at_end())
+  if (!ok || !have_target || !have_primitives || !s.at_end())
     return std::nullopt;
   const std::string head = "{\"target\": {\"width\": " + std::to_string(width) +
-                           ", \"height\": " + std::to_string(height) + "}, \"primitives\": []}";
+                           ", \"height\": " + std::to_string(height) + "}, \"primitives\": []" +
+                           others + "}";
   auto base = read_scene_general(head);
   if (!std::holds_alternative<Scene>(base))
     return std::nullopt;
