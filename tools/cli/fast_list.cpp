@@ -124,6 +124,27 @@ std::vector<RunUnit> plan_run_units(std::span<const float> xy, std::int32_t widt
   return units;
 }
 
+// rule: FAST.BATCH.EQUALS.PLAIN, FAST.THREADS.DETERMINISTIC
+std::optional<std::uint64_t> count_fast_list(std::span<const float> xy, std::int32_t width,
+                                             std::int32_t height, const RasterState& state, Isa isa,
+                                             unsigned threads) {
+  const std::size_t n = xy.size() / 6;
+  const std::size_t parts = std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(n, 1));
+  std::vector<raster::FastBatchResult> counted(parts);
+  run_units(parts, threads, [&](std::size_t k) {
+    const std::size_t first = n * k / parts, last = n * (k + 1) / parts;
+    counted[k] = raster::fast_count_batch(xy.subspan(6 * first, 6 * (last - first)), width, height,
+                                          state, isa);
+  });
+  std::uint64_t covered = 0;
+  for (const raster::FastBatchResult& r : counted) {
+    if (r.status != raster::BatchStatus::kOk)
+      return std::nullopt;
+    covered += r.covered;
+  }
+  return covered;
+}
+
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY, FAST.THREADS.DETERMINISTIC
 FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, std::int32_t height,
                                const RasterState& state, Isa isa, unsigned threads,

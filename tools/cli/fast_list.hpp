@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -38,6 +39,15 @@ struct RunUnit {
 inline constexpr std::uint32_t kMaxRunUnitTriangles = 4096;
 [[nodiscard]] std::vector<RunUnit> plan_run_units(std::span<const float> xy, std::int32_t width,
                                                   std::int32_t height, double budget);
+
+// The fragments fast_count_batch counts for the triangles xy, on `threads` threads (the
+// triangles in that many contiguous parts, counted in parallel and added); nullopt when it
+// refuses one (a vertex that does not snap).
+// rule: FAST.BATCH.EQUALS.PLAIN, FAST.THREADS.DETERMINISTIC
+[[nodiscard]] std::optional<std::uint64_t> count_fast_list(std::span<const float> xy,
+                                                           std::int32_t width, std::int32_t height,
+                                                           const RasterState& state, Isa isa,
+                                                           unsigned threads);
 
 // What write_fast_list wrote.
 struct FastListResult {

@@ -586,14 +586,14 @@ std::optional<int> render_fast_form_list(std::string_view text, const RenderRequ
   // The fragment limit and the vertices: the list stops (declines) at a vertex that does not
   // snap or past the limit, and a temporary file is then removed; what is written in place
   // (standard output, a device, a pipe) cannot be taken back, so there the count comes first
-  // (a fraction of the time of the runs) and nothing is written for such a scene.
+  // (a fraction of the time of the runs; on the threads too) and nothing is written for such a
+  // scene.
   std::optional<std::uint64_t> counted;
   if (io::OutputFile::writes_in_place(*rq.fragments_path)) {
-    const raster::FastBatchResult c =
-        raster::fast_count_batch(form->xy, scene.width, scene.height, scene.state, isa);
-    if (c.status != raster::BatchStatus::kOk || c.covered > rq.max_fragments)
+    counted =
+        count_fast_list(form->xy, scene.width, scene.height, scene.state, isa, rq.options.threads);
+    if (!counted || *counted > rq.max_fragments)
       return std::nullopt;
-    counted = c.covered;
   }
   OutputFile file;
   if (auto err = file.open(*rq.fragments_path))
