@@ -22,6 +22,7 @@
 
 #include <sys/wait.h>
 
+#include "fast_list.hpp"
 #include "rastrules/io/fragment_binary.hpp"
 #include "rastrules/io/fragment_json.hpp"
 #include "rastrules/io/scene_json.hpp"
@@ -137,6 +138,7 @@ int main(int argc, char** argv) {
   std::map<std::string, std::vector<double>> t;
   const rastrules::RenderOptions options;
   std::FILE* null = std::fopen("/dev/null", "wb");
+  const std::uint64_t fragments_limit = std::uint64_t{1} << 40;
   const std::vector<std::pair<std::string, std::function<void()>>> stages = {
       {"batch counter (kernel alone)",
        [&] {
@@ -164,6 +166,22 @@ int main(int argc, char** argv) {
              }};
          (void)rastrules::raster::fast_runs_batch(xy, prepared.width, prepared.height,
                                                   prepared.state, rastrules::best_isa(), sink);
+         (void)w.finish();
+       }},
+      {"batch runs as JSON text, 1 thread (write_fast_list)",
+       [&] {
+         rastrules::io::FragmentWriter w(null);
+         (void)rastrules::cli::write_fast_list(xy, prepared.width, prepared.height, prepared.state,
+                                               rastrules::best_isa(), 1, fragments_limit, &w,
+                                               nullptr);
+         (void)w.finish();
+       }},
+      {"batch runs as JSON text, 2 threads (write_fast_list, units)",
+       [&] {
+         rastrules::io::FragmentWriter w(null);
+         (void)rastrules::cli::write_fast_list(xy, prepared.width, prepared.height, prepared.state,
+                                               rastrules::best_isa(), 2, fragments_limit, &w,
+                                               nullptr);
          (void)w.finish();
        }},
       {"read the file", [&] { (void)rastrules::io::read_scene_file(scene_path.string()); }},
@@ -246,5 +264,9 @@ int main(int argc, char** argv) {
     row(name);
   for (const auto& [name, args] : processes)
     row(name);
+  const double one = median(t["batch runs as JSON text, 1 thread (write_fast_list)"]);
+  const double two = median(t["batch runs as JSON text, 2 threads (write_fast_list, units)"]);
+  std::printf("\nJSON from the runs, in the process: 2 threads %.2fx faster than 1\n",
+              two > 0 ? one / two : 0.0);
   return 0;
 }
