@@ -14,14 +14,20 @@
 namespace rastrules::cli {
 namespace {
 
-// Pixels of the work bound a unit holds. A fragment's JSON line takes at most kMostJsonLine
-// bytes (prim of 10 digits, x and y of 5), so a JSON unit's text fits the kJsonUnitBytes its
-// string reserves once (then it is never reallocated: a string grown by doubling on two
-// threads' heaps held twice its bytes). Binary units hold 16 bytes a run and take bigger bites.
-constexpr double kJsonUnitBudget = 2048;
+// Pixels of the work bound (load_fast_form's) a unit holds. Consecutive triangles share a unit
+// up to kGroupBudget: their bound overestimates a small triangle's fragments tenfold (36
+// against 2.5 for 2-3 px legs), and units of 56 such triangles (a budget of 2048) spent a third
+// of two threads' time handing units over (1.16x one thread on 10^6 small triangles; 1.6x with
+// 16384). A triangle whose bound passes it is cut into bands of at most kBandBudget pixels
+// (about kBandBudget fragments: a band's rows are mostly covered), so that the text a large
+// triangle's units hold stays small. A fragment's JSON line takes at most kMostJsonLine bytes
+// (prim of 10 digits, x and y of 5): a unit's string reserves its bound's worth once (never
+// reallocated: a string grown by doubling on two threads' heaps held twice its bytes; untouched
+// reserved pages are not resident). Binary units hold 16 bytes a run.
+constexpr double kGroupBudget = 16384;
+constexpr double kJsonBandBudget = 2048;
+constexpr double kBinaryBandBudget = 65536;
 constexpr std::size_t kMostJsonLine = 60;
-constexpr std::size_t kJsonUnitBytes = 2048 * kMostJsonLine;
-constexpr double kBinaryUnitBudget = 65536;
 
 // A run as the units of a binary list hold it (16 bytes, the host's byte order: it never
 // leaves the process).
@@ -81,16 +87,14 @@ void unit_run(void* context, std::uint32_t tri, std::int32_t y, std::int32_t x, 
 
 // rule: FAST.THREADS.DETERMINISTIC
 std::vector<RunUnit> plan_run_units(std::span<const float> xy, std::int32_t width,
-                                    std::int32_t height, double budget) {
+                                    std::int32_t height, double group_budget, double band_budget) {
   std::vector<RunUnit> units;
   const auto n = static_cast<std::uint32_t>(xy.size() / 6);
   RunUnit open; // triangles [open.first, open.last) so far
-  double open_work = 0;
   const auto close = [&] {
     if (open.last > open.first)
       units.push_back(open);
     open = RunUnit{open.last, open.last};
-    open_work = 0;
   };
   for (std::uint32_t i = 0; i < n; ++i) {
     const float* t = &xy[std::size_t{i} * 6];
@@ -100,11 +104,11 @@ std::vector<RunUnit> plan_run_units(std::span<const float> xy, std::int32_t widt
     const double cols = std::min<double>(width, std::floor(double{hi_x} - lo_x) + 3);
     const double rows = std::min<double>(height, std::floor(double{hi_y} - lo_y) + 3);
     const double work = cols * rows;
-    if (work <= budget) {
-      if (open_work + work > budget || open.last - open.first >= kMaxRunUnitTriangles)
+    if (work <= group_budget) {
+      if (open.bound + work > group_budget || open.last - open.first >= kMaxRunUnitTriangles)
         close();
       open.last = i + 1;
-      open_work += work;
+      open.bound += work;
       continue;
     }
     close();
@@ -112,11 +116,11 @@ std::vector<RunUnit> plan_run_units(std::span<const float> xy, std::int32_t widt
         static_cast<std::int32_t>(std::clamp<double>(std::floor(double{lo_y}) - 1, 0, height - 1));
     const auto y1 =
         static_cast<std::int32_t>(std::clamp<double>(std::ceil(double{hi_y}) + 1, 0, height - 1));
-    const auto band = static_cast<std::int32_t>(std::max(1.0, std::floor(budget / cols)));
+    const auto band = static_cast<std::int32_t>(std::max(1.0, std::floor(band_budget / cols)));
     for (std::int32_t y = y0; y <= y1; y += band) {
-      units.push_back(RunUnit{
-          i, i + 1, true, y,
-          static_cast<std::int32_t>(std::min<std::int64_t>(std::int64_t{y} + band - 1, y1))});
+      const auto last =
+          static_cast<std::int32_t>(std::min<std::int64_t>(std::int64_t{y} + band - 1, y1));
+      units.push_back(RunUnit{i, i + 1, true, y, last, cols * (last - y + 1)});
     }
     open = RunUnit{i + 1, i + 1};
   }
@@ -187,11 +191,11 @@ FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, st
     return out;
   }
   const std::vector<RunUnit> units =
-      plan_run_units(xy, width, height, json ? kJsonUnitBudget : kBinaryUnitBudget);
+      plan_run_units(xy, width, height, kGroupBudget, json ? kJsonBandBudget : kBinaryBandBudget);
   const auto produce = [&](std::size_t i, std::string& bytes) {
     const RunUnit& u = units[i];
     if (json)
-      bytes.reserve(sizeof(UnitHead) + kJsonUnitBytes);
+      bytes.reserve(sizeof(UnitHead) + static_cast<std::size_t>(u.bound) * kMostJsonLine);
     bytes.resize(sizeof(UnitHead)); // written last
     UnitSink sink{&bytes, u.band ? 0 : u.first, json != nullptr, {}, {}};
     const raster::RunSink runs{&sink, unit_run};

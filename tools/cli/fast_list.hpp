@@ -21,24 +21,27 @@
 namespace rastrules::cli {
 
 // A unit of the threaded list: triangles [first, last) whole, or (band) triangle `first`'s rows
-// y_first to y_last alone.
+// y_first to y_last alone; bound: the unit's work bound in pixels (at least its fragments).
 struct RunUnit {
   std::uint32_t first = 0;
   std::uint32_t last = 0;
   bool band = false;
   std::int32_t y_first = 0;
   std::int32_t y_last = 0;
+  double bound = 0;
 };
 
 // The units of the triangles xy (six finite floats a triangle) on a width x height target, in
-// the order of the list: consecutive triangles whose work bounds sum to at most `budget` pixels
-// (at most kMaxRunUnitTriangles of them) share a unit; a triangle whose bound passes `budget`
-// is cut into bands of whole rows of at most `budget` pixels of its bound each, covering every
-// row it can reach (its floats' rows widened by a pixel: snapping moves a vertex by at most
-// 1/512 px). Every unit's fragments are at most about `budget` (twice the bound's area at most).
+// the order of the list: consecutive triangles whose work bounds ((floor(span) + 3) pixel
+// centres an axis, clipped to the target: load_fast_form's) sum to at most `group_budget`
+// pixels (at most kMaxRunUnitTriangles of them) share a unit; a triangle whose bound passes
+// `group_budget` is cut into bands of whole rows of at most `band_budget` pixels of its bound
+// each (at least a row), covering every row it can reach (its floats' rows widened by a pixel:
+// snapping moves a vertex by at most 1/512 px).
 inline constexpr std::uint32_t kMaxRunUnitTriangles = 4096;
 [[nodiscard]] std::vector<RunUnit> plan_run_units(std::span<const float> xy, std::int32_t width,
-                                                  std::int32_t height, double budget);
+                                                  std::int32_t height, double group_budget,
+                                                  double band_budget);
 
 // The fragments fast_count_batch counts for the triangles xy, on `threads` threads (the
 // triangles in that many contiguous parts, counted in parallel and added); nullopt when it

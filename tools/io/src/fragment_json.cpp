@@ -374,11 +374,13 @@ void FragmentWriter::add_encoded_text(std::string_view text) {
     text_started_ = true;
     text.remove_prefix(1); // encode's ',' before the first fragment
   }
-  if (buffer_.size() + text.size() < kFlushBytes) {
+  // Short texts gather in the buffer; a long one (a threaded render's unit) goes out without a
+  // copy.
+  if (text.size() < kFlushBytes / 4 && buffer_.size() + text.size() < kFlushBytes) {
     buffer_ += text;
     return;
   }
-  flush_buffer(); // then a whole batch's text goes out without a copy
+  flush_buffer();
   if (std::fwrite(text.data(), 1, text.size(), out_) != text.size())
     failed_ = true;
 }
