@@ -373,6 +373,19 @@ std::optional<Scene> read_input_scene(const std::uint8_t* data, std::size_t size
   } else if (io::read_scene_fast(text)) {
     fail("read_triangles_fast declines text read_scene_fast accepts", {}, nullptr, data, size);
   }
+  // The list read in parts on three threads (parts of at least 16 bytes, so that small inputs
+  // split): the one-thread result.
+  {
+    const std::optional<io::FastTriangles> one = io::read_triangles_fast(text);
+    const std::optional<io::FastTriangles> parts = io::read_triangles_fast(text, 3, 16);
+    if (one.has_value() != parts.has_value() ||
+        (one &&
+         (!io::same_scene(one->scene, parts->scene) || one->xy.size() != parts->xy.size() ||
+          !std::equal(one->xy.begin(), one->xy.end(), parts->xy.begin(), [](float a, float b) {
+            return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
+          }))))
+      fail("read_triangles_fast in parts differs from one thread", {}, nullptr, data, size);
+  }
   auto read = io::read_scene(text);
   if (const auto* err = std::get_if<SceneError>(&read)) {
     check_scene_error(*err, "read_scene", nullptr, data, size);

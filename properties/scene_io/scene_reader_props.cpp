@@ -160,22 +160,28 @@ rc::Gen<Written> scene_text() {
 // read_triangles_fast declines exactly where read_scene_fast does, and otherwise holds the same
 // scene without its primitives and their coordinates, in order.
 void check_triangles_agree(const std::string& text, const std::optional<rastrules::Scene>& fast) {
-  const std::optional<io::FastTriangles> t = io::read_triangles_fast(text);
-  RC_ASSERT(t.has_value() == fast.has_value());
-  if (!fast)
-    return;
-  rastrules::Scene bare = *fast;
-  bare.primitives.clear();
-  RC_ASSERT(io::same_scene(t->scene, bare));
-  std::vector<float> xy;
-  for (const rastrules::Primitive& p : fast->primitives) {
-    RC_ASSERT(p.type == rastrules::PrimitiveType::kTriangle);
-    for (const rastrules::FloatPoint& v : p.v)
-      xy.insert(xy.end(), {v[0], v[1]});
+  // One thread, and the list in parts on several (parts of at least 1 to 40 bytes, so that
+  // texts of a few triangles split, at any guess of a part's start): the same result.
+  const auto threads = *rc::gen::inRange(2u, 6u);
+  const auto part_bytes = *rc::gen::inRange<std::size_t>(1, 41);
+  for (const std::optional<io::FastTriangles>& t :
+       {io::read_triangles_fast(text), io::read_triangles_fast(text, threads, part_bytes)}) {
+    RC_ASSERT(t.has_value() == fast.has_value());
+    if (!fast)
+      continue;
+    rastrules::Scene bare = *fast;
+    bare.primitives.clear();
+    RC_ASSERT(io::same_scene(t->scene, bare));
+    std::vector<float> xy;
+    for (const rastrules::Primitive& p : fast->primitives) {
+      RC_ASSERT(p.type == rastrules::PrimitiveType::kTriangle);
+      for (const rastrules::FloatPoint& v : p.v)
+        xy.insert(xy.end(), {v[0], v[1]});
+    }
+    RC_ASSERT(t->xy.size() == xy.size());
+    for (std::size_t i = 0; i < xy.size(); ++i)
+      RC_ASSERT(std::bit_cast<std::uint32_t>(t->xy[i]) == std::bit_cast<std::uint32_t>(xy[i]));
   }
-  RC_ASSERT(t->xy.size() == xy.size());
-  for (std::size_t i = 0; i < xy.size(); ++i)
-    RC_ASSERT(std::bit_cast<std::uint32_t>(t->xy[i]) == std::bit_cast<std::uint32_t>(xy[i]));
 }
 
 // rule: SCENE.INPUT.FAST_READER, SCENE.NUMBER.FLOAT32

@@ -94,7 +94,9 @@ std::optional<FastForm> load_fast_form(std::string_view text, const RenderOption
                                        std::uint64_t max_work) {
   if (options.traversal != Traversal::kFast)
     return std::nullopt;
-  std::optional<io::FastTriangles> t = io::read_triangles_fast(text);
+  // rule: FAST.THREADS.DETERMINISTIC
+  // With threads the list is read in parts (the same coordinates).
+  std::optional<io::FastTriangles> t = io::read_triangles_fast(text, options.threads);
   if (!t)
     return std::nullopt;
   // The scene without its triangles: its target checked and its state prepared as prepare()

@@ -21,6 +21,7 @@
 #include <variant>
 
 #include "rastrules/io/scene_json.hpp"
+#include "rastrules/parallel.hpp"
 
 namespace rastrules::io {
 namespace {
@@ -28,6 +29,9 @@ namespace {
 class FastScanner {
 public:
   explicit FastScanner(std::string_view text) : p_(text.data()), end_(text.data() + text.size()) {}
+  FastScanner(const char* at, const char* end) : p_(at), end_(end) {}
+  [[nodiscard]] const char* at() const { return p_; }
+  void seek(const char* at) { p_ = at; }
 
   void skip_ws() {
     while (p_ < end_ && (*p_ == ' ' || *p_ == '\n' || *p_ == '\r' || *p_ == '\t'))
@@ -261,11 +265,25 @@ bool triangle(FastScanner& s, std::array<float, 6>& xy) {
   });
 }
 
+// The list read in parts by other threads. probe: the scan stops (nullopt) at the list's first
+// triangle and sets `first` to where it starts (list context proved there). Otherwise, when the
+// scan's next triangle starts at `from`, it takes the `count` triangles of the parts (ok false:
+// a part failed, and the scan declines) and goes on after the list at `after`.
+struct ListParts {
+  bool probe = false;
+  const char* first = nullptr;
+  const char* from = nullptr;
+  const char* after = nullptr;
+  std::size_t count = 0;
+  bool ok = false;
+};
+
 // Scans the fast form: sink.reserve(n) once with a bound on the triangles the text can hold,
 // then sink.add(xy) for each triangle in order. Returns the scene the general reader gives for
 // the target with no primitives (every other field as it sets them), or nullopt where the fast
-// path declines (the sink may then hold part of the list).
-template <class Sink> std::optional<Scene> scan_fast(std::string_view json_text, Sink& sink) {
+// path declines (the sink may then hold part of the list). With parts, as ListParts says.
+template <class Sink>
+std::optional<Scene> scan_fast(std::string_view json_text, Sink& sink, ListParts* parts = nullptr) {
   FastScanner s(json_text);
   std::int32_t width = 0, height = 0;
   bool have_target = false, have_primitives = false;
@@ -281,13 +299,26 @@ template <class Sink> std::optional<Scene> scan_fast(std::string_view json_text,
     std::size_t n = 0;
     std::array<float, 6> xy{};
     do {
+      if (parts != nullptr) {
+        s.skip_ws();
+        if (parts->probe) {
+          parts->first = s.at();
+          return false;
+        }
+        if (s.at() == parts->from) { // the next triangle is the parts' first
+          if (!parts->ok || parts->count > kMaxScenePrimitives - n)
+            return false;
+          s.seek(parts->after);
+          return true;
+        }
+      }
       if (n++ >= kMaxScenePrimitives)
         return false; // the general reader names the limit
       if (!triangle(s, xy))
         return false;
       sink.add(xy);
     } while (s.eat(','));
-    return s.eat(']');
+    return parts == nullptr && s.eat(']');
   };
   // The other keys' text, for the general reader: "version" (an integer) and kStateKeys (plain
   // strings), each once.
@@ -353,6 +384,114 @@ std::optional<Scene> read_scene_fast(std::string_view json_text) {
   if (scene)
     scene->primitives = std::move(sink.list);
   return scene;
+}
+
+// Where the part of the list that starts at or after `at` begins: the '{' of a triangle after
+// "}", "," (whitespace around the comma); nullptr when there is none. In the fast form "},"
+// followed by "{" occurs only between two triangles of the list (strings hold no braces, the
+// target's object is followed by a key); a wrong guess only makes the parts fail to join.
+const char* part_start(const char* at, const char* end) {
+  for (const char* p = at; p < end; ++p) {
+    p = static_cast<const char*>(std::memchr(p, '}', static_cast<std::size_t>(end - p)));
+    if (p == nullptr)
+      return nullptr;
+    FastScanner s(p + 1, end);
+    if (s.eat(',')) {
+      s.skip_ws();
+      if (s.at() < end && *s.at() == '{')
+        return s.at();
+    }
+  }
+  return nullptr;
+}
+
+// One part of the list read on its own: triangles from `from` (a '{'), separated by commas,
+// until the next would start at `until` (nullptr: until the list's ']'). end: where the scan
+// stopped (`until`, or just after the ']').
+struct ListPart {
+  std::vector<float> xy;
+  const char* end = nullptr;
+  bool ok = false;
+};
+
+ListPart read_part(const char* from, const char* until, const char* text_end) {
+  ListPart part;
+  FastScanner s(from, text_end);
+  // At least 44 bytes a triangle, comma included (scan_fast's bound).
+  part.xy.reserve(6 * (static_cast<std::size_t>((until ? until : text_end) - from) / 44 + 1));
+  std::array<float, 6> xy{};
+  for (;;) {
+    if (part.xy.size() / 6 >= kMaxScenePrimitives || !triangle(s, xy))
+      return part;
+    part.xy.insert(part.xy.end(), xy.begin(), xy.end());
+    if (!s.eat(',')) {
+      part.ok = until == nullptr && s.eat(']');
+      part.end = s.at();
+      return part;
+    }
+    s.skip_ws();
+    if (s.at() == until) {
+      part.ok = true;
+      part.end = until;
+      return part;
+    }
+  }
+}
+
+// rule: SCENE.INPUT.FAST_READER, FAST.THREADS.DETERMINISTIC
+std::optional<FastTriangles> read_triangles_fast(std::string_view json_text, unsigned threads,
+                                                 std::size_t min_part_bytes) {
+  const std::size_t parts_wanted =
+      std::min<std::size_t>(std::clamp(threads, 1U, kMaxThreads),
+                            json_text.size() / std::max<std::size_t>(min_part_bytes, 1));
+  if (parts_wanted < 2)
+    return read_triangles_fast(json_text);
+  struct Coordinates {
+    std::vector<float> xy;
+    void reserve(std::size_t n) { xy.reserve(6 * n); }
+    void add(const std::array<float, 6>& t) { xy.insert(xy.end(), t.begin(), t.end()); }
+  } none;
+  // Where the list's first triangle starts (the keys before the list are read, then the scan
+  // stops); a scene without triangles, or a text not of the form, is read on one thread.
+  ListParts parts;
+  parts.probe = true;
+  if (scan_fast(json_text, none, &parts) || parts.first == nullptr)
+    return read_triangles_fast(json_text);
+  const char* end = json_text.data() + json_text.size();
+  // Part 0 starts at the first triangle, part k at the first triangle after k / parts_wanted of
+  // the text.
+  std::vector<const char*> starts = {parts.first};
+  for (std::size_t k = 1; k < parts_wanted; ++k) {
+    const char* p = part_start(json_text.data() + json_text.size() * k / parts_wanted, end);
+    if (p != nullptr && p > starts.back())
+      starts.push_back(p);
+  }
+  std::vector<ListPart> read(starts.size());
+  run_units(starts.size(), threads, [&](std::size_t k) {
+    read[k] = read_part(starts[k], k + 1 < starts.size() ? starts[k + 1] : nullptr, end);
+  });
+  parts.probe = false;
+  parts.from = parts.first;
+  parts.ok = true;
+  for (const ListPart& part : read) {
+    parts.ok = parts.ok && part.ok;
+    parts.count += part.xy.size() / 6;
+  }
+  parts.after = read.back().end;
+  // The keys after the list, and the scene.
+  std::optional<Scene> scene = scan_fast(json_text, none, &parts);
+  if (!scene) {
+    if (parts.ok)
+      return std::nullopt;                 // the parts joined: the text is not of the form
+    return read_triangles_fast(json_text); // a part guessed wrong: read on one thread
+  }
+  std::vector<float> xy;
+  xy.reserve(6 * parts.count);
+  for (ListPart& part : read) {
+    xy.insert(xy.end(), part.xy.begin(), part.xy.end());
+    std::vector<float>().swap(part.xy);
+  }
+  return FastTriangles{std::move(*scene), std::move(xy)};
 }
 
 // rule: SCENE.INPUT.FAST_READER

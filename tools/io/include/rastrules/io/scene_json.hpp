@@ -73,6 +73,13 @@ struct FastTriangles {
   std::vector<float> xy; // 6 * the number of triangles
 };
 [[nodiscard]] std::optional<FastTriangles> read_triangles_fast(std::string_view json_text);
+// The same, the list read in up to `threads` parts of at least min_part_bytes of text each on
+// as many threads (parts that do not join where they meet, as a guess at a part's start can
+// make them, are read again on one thread): the same result for every thread count
+// (FAST.THREADS.DETERMINISTIC).
+[[nodiscard]] std::optional<FastTriangles>
+read_triangles_fast(std::string_view json_text, unsigned threads,
+                    std::size_t min_part_bytes = std::size_t{1} << 20);
 
 // Returns the whole content of a scene file ("-" is standard input), or an error naming the
 // file when it cannot be read or is larger than kMaxSceneBytes.
