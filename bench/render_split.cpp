@@ -138,7 +138,14 @@ int main(int argc, char** argv) {
   std::map<std::string, std::vector<double>> t;
   const rastrules::RenderOptions options;
   std::FILE* null = std::fopen("/dev/null", "wb");
-  const std::uint64_t fragments_limit = std::uint64_t{1} << 40;
+  // The JSON list of render --threads N --fragments, made from the runs in the process.
+  const auto json_from_runs = [&](unsigned threads) {
+    rastrules::io::FragmentWriter w(null);
+    (void)rastrules::cli::write_fast_list(xy, prepared.width, prepared.height, prepared.state,
+                                          rastrules::best_isa(), threads, std::uint64_t{1} << 40,
+                                          &w, nullptr);
+    (void)w.finish();
+  };
   const std::vector<std::pair<std::string, std::function<void()>>> stages = {
       {"batch counter (kernel alone)",
        [&] {
@@ -168,22 +175,8 @@ int main(int argc, char** argv) {
                                                   prepared.state, rastrules::best_isa(), sink);
          (void)w.finish();
        }},
-      {"batch runs as JSON text, 1 thread (write_fast_list)",
-       [&] {
-         rastrules::io::FragmentWriter w(null);
-         (void)rastrules::cli::write_fast_list(xy, prepared.width, prepared.height, prepared.state,
-                                               rastrules::best_isa(), 1, fragments_limit, &w,
-                                               nullptr);
-         (void)w.finish();
-       }},
-      {"batch runs as JSON text, 2 threads (write_fast_list, units)",
-       [&] {
-         rastrules::io::FragmentWriter w(null);
-         (void)rastrules::cli::write_fast_list(xy, prepared.width, prepared.height, prepared.state,
-                                               rastrules::best_isa(), 2, fragments_limit, &w,
-                                               nullptr);
-         (void)w.finish();
-       }},
+      {"batch runs as JSON text, 1 thread (write_fast_list)", [&] { json_from_runs(1); }},
+      {"batch runs as JSON text, 2 threads (write_fast_list, units)", [&] { json_from_runs(2); }},
       {"read the file", [&] { (void)rastrules::io::read_scene_file(scene_path.string()); }},
       {"parse coordinates alone (io::read_triangles_fast, render --count)",
        [&] { (void)rastrules::io::read_triangles_fast(text0); }},

@@ -4,6 +4,7 @@
 // the counts equal the fragment list's, from the batch counter and from the traversal alike.
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -244,6 +245,21 @@ unsigned printed_seed(const char* test) {
   return seed;
 }
 
+// A triangle primitive of three vertices from vertex(), each moved to its pixel's centre one
+// time in four (ties).
+template <class Vertex> nlohmann::json tie_heavy_triangle(std::mt19937& rng, Vertex&& vertex) {
+  nlohmann::json v = nlohmann::json::array();
+  for (int k = 0; k < 3; ++k) {
+    auto [x, y] = vertex();
+    if (rng() % 4 == 0) {
+      x = std::floor(x) + 0.5f;
+      y = std::floor(y) + 0.5f;
+    }
+    v.push_back({x, y});
+  }
+  return {{"type", "triangle"}, {"v", v}};
+}
+
 // rule: SCENE.OUTPUT.COUNT, FAST.BATCH.EQUALS.PLAIN
 // Random triangle scenes (the batch counter's case): the counts equal the fragment list's, and
 // the batch counter (default), the plain traversal and every instruction set give the same bytes.
@@ -268,17 +284,10 @@ TEST(FragmentCount, TheBatchCounterEqualsTheFragmentListOnRandomTriangles) {
     for (int i = 0; i < n; ++i) {
       // Small triangles (decided in 32-bit lanes) and large ones (the tiles); ties on centres.
       const float cx = coord(rng), cy = coord(rng);
-      nlohmann::json v = nlohmann::json::array();
-      for (int k = 0; k < 3; ++k) {
-        float x = cx + (i % 3 == 0 ? coord(rng) / 2 : small(rng));
-        float y = cy + (i % 3 == 0 ? coord(rng) / 2 : small(rng));
-        if (rng() % 4 == 0) {
-          x = std::floor(x) + 0.5f;
-          y = std::floor(y) + 0.5f;
-        }
-        v.push_back({x, y});
-      }
-      scene["primitives"].push_back({{"type", "triangle"}, {"v", v}});
+      scene["primitives"].push_back(tie_heavy_triangle(rng, [&]() -> std::array<float, 2> {
+        return {cx + (i % 3 == 0 ? coord(rng) / 2 : small(rng)),
+                cy + (i % 3 == 0 ? coord(rng) / 2 : small(rng))};
+      }));
     }
     TempDir dir;
     const auto in = dir.write("s.json", scene.dump());
@@ -354,17 +363,9 @@ TEST(FragmentLists, ThreadsWriteTheRunsInUnitsAndBandsAsOneThreadDoes) {
     for (int i = 0; i < n; ++i) {
       const bool large = rng() % 500 == 0;
       const float cx = at(rng), cy = at(rng);
-      nlohmann::json v = nlohmann::json::array();
-      for (int k = 0; k < 3; ++k) {
-        float x = large ? at(rng) : cx + small(rng);
-        float y = large ? at(rng) : cy + small(rng);
-        if (rng() % 4 == 0) {
-          x = std::floor(x) + 0.5f;
-          y = std::floor(y) + 0.5f;
-        }
-        v.push_back({x, y});
-      }
-      scene["primitives"].push_back({{"type", "triangle"}, {"v", v}});
+      scene["primitives"].push_back(tie_heavy_triangle(rng, [&]() -> std::array<float, 2> {
+        return {large ? at(rng) : cx + small(rng), large ? at(rng) : cy + small(rng)};
+      }));
     }
     TempDir dir;
     const auto in = dir.write("s.json", scene.dump());

@@ -46,12 +46,10 @@ std::optional<FragmentCounts> count_batch(std::span<const float> xy, const Prepa
   return c;
 }
 
-// An upper bound on primitive_work of the triangle (x0 y0 x1 y1 x2 y2) in a single-sample scene
-// of a w x h target: its walk bounds (RASTER.WALK.BBOX) hold at most floor(s) + 1 pixel centres
-// a row for a snapped span s, which is at most 1/256 px more than the span of the floats
-// (SNAP.VERTEX.ROUND moves a coordinate by at most 1/512 px): floor(span) + 3 bounds them with
-// room to spare; nullopt for a coordinate that is not finite.
-std::optional<double> triangle_work_bound(const float* t, std::int32_t w, std::int32_t h) {
+} // namespace
+
+// rule: SCENE.INPUT.LIMITS
+std::optional<TriangleBound> triangle_bound(const float* t, std::int32_t w, std::int32_t h) {
   double lo[2] = {t[0], t[1]}, hi[2] = {t[0], t[1]};
   for (int k = 0; k < 6; ++k) {
     if (!std::isfinite(t[k]))
@@ -59,12 +57,13 @@ std::optional<double> triangle_work_bound(const float* t, std::int32_t w, std::i
     lo[k % 2] = std::min<double>(lo[k % 2], t[k]);
     hi[k % 2] = std::max<double>(hi[k % 2], t[k]);
   }
-  const double cols = std::min<double>(w, std::floor(hi[0] - lo[0]) + 3);
-  const double rows = std::min<double>(h, std::floor(hi[1] - lo[1]) + 3);
-  return cols * rows;
+  TriangleBound b;
+  b.cols = std::min<double>(w, std::floor(hi[0] - lo[0]) + 3);
+  b.rows = std::min<double>(h, std::floor(hi[1] - lo[1]) + 3);
+  b.lo_y = lo[1];
+  b.hi_y = hi[1];
+  return b;
 }
-
-} // namespace
 
 // rule: SCENE.OUTPUT.COUNT, FAST.BATCH.EQUALS.PLAIN
 std::optional<FragmentCounts> batch_counts(const LoadedScene& loaded,
@@ -110,10 +109,10 @@ std::optional<FastForm> load_fast_form(std::string_view text, const RenderOption
   // whole scene is prepared, and the first primitive over the limit named).
   double work = 0;
   for (std::size_t i = 0; i < t->xy.size(); i += 6) {
-    const std::optional<double> b = triangle_work_bound(&t->xy[i], scene.width, scene.height);
+    const std::optional<TriangleBound> b = triangle_bound(&t->xy[i], scene.width, scene.height);
     if (!b)
       return std::nullopt;
-    work += *b;
+    work += b->work();
   }
   if (!(work <= static_cast<double>(max_work)))
     return std::nullopt;

@@ -44,6 +44,21 @@ struct FragmentCounts {
 [[nodiscard]] std::optional<FragmentCounts> batch_counts(const LoadedScene& loaded,
                                                          const RenderOptions& options);
 
+// An upper bound on primitive_work of the triangle (x0 y0 x1 y1 x2 y2) in a single-sample scene
+// of a w x h target: its walk bounds (RASTER.WALK.BBOX) hold at most floor(s) + 1 pixel centres
+// a row for a snapped span s, which is at most 1/256 px more than the span of the floats
+// (SNAP.VERTEX.ROUND moves a coordinate by at most 1/512 px): floor(span) + 3 columns and rows
+// (each clipped to the target) bound them with room to spare. Also the rows of its floats.
+// nullopt for a coordinate that is not finite.
+// rule: SCENE.INPUT.LIMITS
+struct TriangleBound {
+  double cols = 0, rows = 0;
+  double lo_y = 0, hi_y = 0;
+  [[nodiscard]] double work() const { return cols * rows; }
+};
+[[nodiscard]] std::optional<TriangleBound> triangle_bound(const float* t, std::int32_t w,
+                                                          std::int32_t h);
+
 // A scene of the fast reader's form (io::read_triangles_fast: a target and triangles given by
 // "type" and "v" alone) ready for the batch unit without its primitives built or prepared: the
 // scene without primitives, loaded (its target checked, its state prepared), and six floats a

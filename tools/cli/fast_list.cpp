@@ -8,6 +8,7 @@
 #include <cstring>
 #include <tuple>
 
+#include "count.hpp"
 #include "rastrules/parallel.hpp"
 #include "rastrules/raster/fast_batch.hpp"
 
@@ -83,6 +84,13 @@ void unit_run(void* context, std::uint32_t tri, std::int32_t y, std::int32_t x, 
   }
 }
 
+// Adds a run to whichever writer there is; false when it is out of order.
+bool add_run(io::FragmentWriter* json, io::FragmentBinaryWriter* binary, std::uint32_t prim,
+             std::int32_t y, std::int32_t x, std::uint32_t n) {
+  return binary ? binary->add_run(prim, y, x, n) == io::FragmentBinaryWriter::Added::kOk
+                : json->add_run(prim, y, x, n);
+}
+
 } // namespace
 
 // rule: FAST.THREADS.DETERMINISTIC
@@ -97,13 +105,9 @@ std::vector<RunUnit> plan_run_units(std::span<const float> xy, std::int32_t widt
     open = RunUnit{open.last, open.last};
   };
   for (std::uint32_t i = 0; i < n; ++i) {
-    const float* t = &xy[std::size_t{i} * 6];
-    const float lo_x = std::min({t[0], t[2], t[4]}), hi_x = std::max({t[0], t[2], t[4]});
-    const float lo_y = std::min({t[1], t[3], t[5]}), hi_y = std::max({t[1], t[3], t[5]});
-    // The bound of load_fast_form's work limit: floor(span) + 3 pixel centres an axis.
-    const double cols = std::min<double>(width, std::floor(double{hi_x} - lo_x) + 3);
-    const double rows = std::min<double>(height, std::floor(double{hi_y} - lo_y) + 3);
-    const double work = cols * rows;
+    // load_fast_form's bound (every coordinate is finite: it checked them).
+    const TriangleBound b = *triangle_bound(&xy[std::size_t{i} * 6], width, height);
+    const double work = b.work();
     if (work <= group_budget) {
       if (open.bound + work > group_budget || open.last - open.first >= kMaxRunUnitTriangles)
         close();
@@ -113,14 +117,14 @@ std::vector<RunUnit> plan_run_units(std::span<const float> xy, std::int32_t widt
     }
     close();
     const auto y0 =
-        static_cast<std::int32_t>(std::clamp<double>(std::floor(double{lo_y}) - 1, 0, height - 1));
+        static_cast<std::int32_t>(std::clamp<double>(std::floor(b.lo_y) - 1, 0, height - 1));
     const auto y1 =
-        static_cast<std::int32_t>(std::clamp<double>(std::ceil(double{hi_y}) + 1, 0, height - 1));
-    const auto band = static_cast<std::int32_t>(std::max(1.0, std::floor(band_budget / cols)));
+        static_cast<std::int32_t>(std::clamp<double>(std::ceil(b.hi_y) + 1, 0, height - 1));
+    const auto band = static_cast<std::int32_t>(std::max(1.0, std::floor(band_budget / b.cols)));
     for (std::int32_t y = y0; y <= y1; y += band) {
       const auto last =
           static_cast<std::int32_t>(std::min<std::int64_t>(std::int64_t{y} + band - 1, y1));
-      units.push_back(RunUnit{i, i + 1, true, y, last, cols * (last - y + 1)});
+      units.push_back(RunUnit{i, i + 1, true, y, last, b.cols * (last - y + 1)});
     }
     open = RunUnit{i + 1, i + 1};
   }
@@ -173,10 +177,7 @@ FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, st
           s.count += k;
           if (s.count > s.max)
             throw Stop{}; // unwinds the batch unit: it holds its buffers in RAII owners
-          s.in_order =
-              (s.binary ? s.binary->add_run(tri, y, x, k) == io::FragmentBinaryWriter::Added::kOk
-                        : s.json->add_run(tri, y, x, k)) &&
-              s.in_order;
+          s.in_order = add_run(s.json, s.binary, tri, y, x, k) && s.in_order;
         }};
     try {
       const raster::FastBatchResult r =
@@ -231,9 +232,7 @@ FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, st
     for (std::size_t at = 0; at + sizeof(RunRecord) <= body.size(); at += sizeof(RunRecord)) {
       RunRecord r;
       std::memcpy(&r, body.data() + at, sizeof r);
-      out.in_order =
-          binary->add_run(r.prim, r.y, r.x, r.n) == io::FragmentBinaryWriter::Added::kOk &&
-          out.in_order;
+      out.in_order = add_run(json, binary, r.prim, r.y, r.x, r.n) && out.in_order;
     }
   };
   try {

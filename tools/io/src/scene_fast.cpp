@@ -386,6 +386,15 @@ std::optional<Scene> read_scene_fast(std::string_view json_text) {
   return scene;
 }
 
+namespace {
+
+// The coordinates scan_fast reads, six floats a triangle.
+struct Coordinates {
+  std::vector<float> xy;
+  void reserve(std::size_t n) { xy.reserve(6 * n); }
+  void add(const std::array<float, 6>& t) { xy.insert(xy.end(), t.begin(), t.end()); }
+};
+
 // Where the part of the list that starts at or after `at` begins: the '{' of a triangle after
 // "}", "," (whitespace around the comma); nullptr when there is none. In the fast form "},"
 // followed by "{" occurs only between two triangles of the list (strings hold no braces, the
@@ -438,6 +447,8 @@ ListPart read_part(const char* from, const char* until, const char* text_end) {
   }
 }
 
+} // namespace
+
 // rule: SCENE.INPUT.FAST_READER, FAST.THREADS.DETERMINISTIC
 std::optional<FastTriangles> read_triangles_fast(std::string_view json_text, unsigned threads,
                                                  std::size_t min_part_bytes) {
@@ -446,11 +457,7 @@ std::optional<FastTriangles> read_triangles_fast(std::string_view json_text, uns
                             json_text.size() / std::max<std::size_t>(min_part_bytes, 1));
   if (parts_wanted < 2)
     return read_triangles_fast(json_text);
-  struct Coordinates {
-    std::vector<float> xy;
-    void reserve(std::size_t n) { xy.reserve(6 * n); }
-    void add(const std::array<float, 6>& t) { xy.insert(xy.end(), t.begin(), t.end()); }
-  } none;
+  Coordinates none; // the scans below read the keys alone
   // Where the list's first triangle starts (the keys before the list are read, then the scan
   // stops); a scene without triangles, or a text not of the form, is read on one thread.
   ListParts parts;
@@ -496,11 +503,7 @@ std::optional<FastTriangles> read_triangles_fast(std::string_view json_text, uns
 
 // rule: SCENE.INPUT.FAST_READER
 std::optional<FastTriangles> read_triangles_fast(std::string_view json_text) {
-  struct Coordinates {
-    std::vector<float> xy;
-    void reserve(std::size_t n) { xy.reserve(6 * n); }
-    void add(const std::array<float, 6>& t) { xy.insert(xy.end(), t.begin(), t.end()); }
-  } sink;
+  Coordinates sink;
   std::optional<Scene> scene = scan_fast(json_text, sink);
   if (!scene)
     return std::nullopt;
