@@ -8,7 +8,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <stdexcept>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -21,10 +20,12 @@
 namespace rastrules::path {
 namespace {
 
-using Rational = boost::multiprecision::cpp_rational;
-using BigInt = boost::multiprecision::cpp_int;
+using detail::ActiveEdges;
 using detail::Crossing;
+using detail::down_edges_into;
+using detail::DownEdge;
 using detail::Edge;
+using detail::line_threshold;
 using detail::Tie;
 
 // Returns the contribution of the directed line edge e to w(s') at sample (sx, sy): +1 down,
@@ -42,68 +43,6 @@ int line_contribution(const Edge& e, std::int64_t sx, std::int64_t sy, Tie t) {
     return 0;
   return e.y1 > e.y0 ? 1 : -1;
 }
-
-// An edge oriented top end first (ya < yb), with the direction of the original (+1 down).
-struct DownEdge {
-  std::int64_t xa = 0, ya = 0, xb = 0, yb = 0;
-  int dir = 0;
-};
-
-// Fills v with the non-horizontal line edges of the path, oriented top end first, sorted by ya
-// (then by the other ends and the direction: the order of equal keys changes no answer, and a
-// full key makes it independent of the sort).
-void down_edges_into(const detail::Boundary& b, std::vector<DownEdge>& v) {
-  v.clear();
-  v.reserve(b.lines.size());
-  for (const Edge& e : b.lines) {
-    if (e.y0 == e.y1)
-      continue; // horizontal: never crossed, no area (PATH.DEGENERATE)
-    if (e.y0 < e.y1)
-      v.push_back(DownEdge{e.x0, e.y0, e.x1, e.y1, 1});
-    else
-      v.push_back(DownEdge{e.x1, e.y1, e.x0, e.y0, -1});
-  }
-  std::sort(v.begin(), v.end(), [](const DownEdge& p, const DownEdge& q) {
-    return std::tie(p.ya, p.xa, p.yb, p.xb, p.dir) < std::tie(q.ya, q.xa, q.yb, q.xb, q.dir);
-  });
-}
-
-// Returns the non-horizontal line edges of the path, oriented top end first, sorted by ya.
-std::vector<DownEdge> down_edges(const detail::Boundary& b) {
-  std::vector<DownEdge> v;
-  down_edges_into(b, v);
-  return v;
-}
-
-// The largest raw sample x for which the crossing of e at height sy counts (PATH.BUDGET.LINE).
-std::int64_t line_threshold(const DownEdge& e, std::int64_t sy, Tie t) {
-  const std::int64_t n = formula::path_crossing_numerator<std::int64_t>(e.xa, e.ya, e.xb, e.yb, sy);
-  const std::int64_t d = e.yb - e.ya;
-  return t.x_right ? ceil_div(n, d) - 1 : floor_div(n, d);
-}
-
-// Edges that may span a sample row, kept while the rows go down the target (in active, which
-// the caller owns and may reuse).
-class ActiveEdges {
-public:
-  ActiveEdges(const std::vector<DownEdge>& sorted, std::vector<const DownEdge*>& active)
-      : edges_(sorted), active_(active) {
-    active_.clear();
-  }
-  // Makes the active list hold every edge with ya <= y_hi that does not end above y_lo.
-  // Calls must come with non-decreasing y_lo and y_hi.
-  const std::vector<const DownEdge*>& advance(std::int64_t y_lo, std::int64_t y_hi) {
-    while (next_ < edges_.size() && edges_[next_].ya <= y_hi)
-      active_.push_back(&edges_[next_++]);
-    std::erase_if(active_, [&](const DownEdge* e) { return e->yb < y_lo; });
-    return active_;
-  }
-
-private:
-  const std::vector<DownEdge>& edges_;
-  std::vector<const DownEdge*>& active_;
-  std::size_t next_ = 0;
-};
 
 // A curve and the y-range of its control points (the curve lies in their convex hull, so no
 // row outside the range crosses it).
@@ -425,230 +364,6 @@ std::vector<SampleCoverage> cover_samples(const Path& path, const SamplePattern&
     out.reserve(std::min<std::size_t>(static_cast<std::size_t>(w) * static_cast<std::size_t>(h),
                                       std::size_t{1} << 12));
   walk_samples(path, pattern, fill, w, h, [&](const SampleCoverage& c) { out.push_back(c); });
-  return out;
-}
-
-namespace {
-
-// Returns floor(q) for a rational q.
-std::int64_t floor_of(const Rational& q) {
-  const BigInt n = boost::multiprecision::numerator(q);
-  const BigInt d = boost::multiprecision::denominator(q); // > 0
-  BigInt f = n / d;                                       // truncates toward zero
-  if (n < 0 && f * d != n)
-    f -= 1;
-  return f.convert_to<std::int64_t>();
-}
-
-// Returns the x of edge e, whose slope dx/dy is `slope`, at height y (ya <= y <= yb).
-Rational x_at(const DownEdge& e, const Rational& slope, const Rational& y) {
-  return Rational(e.xa) + (y - e.ya) * slope;
-}
-
-// Returns the integral over y in [ya, yb] (length hgt) of clamp(X(y), lo, lo + 256) - lo, where
-// X is linear from xa (at ya) to xb (at yb). Units: raw squared.
-Rational column_integral(const Rational& xa, const Rational& xb, const Rational& hgt,
-                         std::int64_t lo) {
-  const std::int64_t hi = lo + kSubpixelOne;
-  const Rational& xmin = xa < xb ? xa : xb;
-  const Rational& xmax = xa < xb ? xb : xa;
-  if (xmax <= lo)
-    return Rational(0);
-  if (xmin >= hi)
-    return Rational(kSubpixelOne) * hgt;
-  if (xmin >= lo && xmax <= hi)
-    return ((xa + xb) / 2 - lo) * hgt;
-  // X crosses lo or hi inside the slab: split at those parameters; clamp(X) is linear between.
-  auto clamped = [&](const Rational& x) {
-    if (x <= lo)
-      return Rational(0);
-    if (x >= hi)
-      return Rational(kSubpixelOne);
-    return Rational(x - lo);
-  };
-  std::vector<Rational> us{Rational(0), Rational(1)};
-  for (const std::int64_t v : {lo, hi}) {
-    const Rational u = (Rational(v) - xa) / (xb - xa);
-    if (u > 0 && u < 1)
-      us.push_back(u);
-  }
-  std::sort(us.begin(), us.end());
-  Rational sum = 0;
-  for (std::size_t k = 0; k + 1 < us.size(); ++k) {
-    const Rational x0 = xa + (xb - xa) * us[k];
-    const Rational x1 = xa + (xb - xa) * us[k + 1];
-    sum += (clamped(x0) + clamped(x1)) / 2 * (us[k + 1] - us[k]);
-  }
-  return sum * hgt;
-}
-
-// One pixel row's areas (raw squared units): the partial columns' areas, and the columns a
-// run covers for the whole height of a slab as a difference array (one add at each end of the
-// run instead of one per column).
-struct RowAreas {
-  std::vector<Rational> partial;
-  std::vector<Rational> full_diff; // one longer than the row
-  std::int64_t touched_lo = 0, touched_hi = -1;
-
-  explicit RowAreas(std::int32_t w)
-      : partial(static_cast<std::size_t>(w)), full_diff(static_cast<std::size_t>(w) + 1),
-        touched_lo(w) {}
-};
-
-// Accumulates the area between edges l (left) and r (right) over the slab [ya, yb] of one
-// pixel row into the row's columns (raw squared units).
-void add_run(RowAreas& row, std::int32_t w, const Rational& la, const Rational& lb,
-             const Rational& ra, const Rational& rb, const Rational& hgt) {
-  const std::int64_t c0 = std::max<std::int64_t>(0, floor_of(std::min(la, lb) / kSubpixelOne));
-  const std::int64_t c1 =
-      std::min<std::int64_t>(std::int64_t{w} - 1, floor_of(std::max(ra, rb) / kSubpixelOne));
-  if (c0 > c1)
-    return;
-  // Columns [f0, f1] lie entirely between the two edges: covered for the whole slab.
-  const std::int64_t f0 = std::max(c0, -floor_of(-std::max(la, lb) / kSubpixelOne));
-  const std::int64_t f1 = std::min(c1, floor_of(std::min(ra, rb) / kSubpixelOne) - 1);
-  if (f0 <= f1) {
-    const Rational full = Rational(kSubpixelOne) * hgt;
-    row.full_diff[static_cast<std::size_t>(f0)] += full;
-    row.full_diff[static_cast<std::size_t>(f1 + 1)] -= full;
-  }
-  for (std::int64_t c = c0; c <= c1; ++c) {
-    if (f0 <= f1 && c == f0) {
-      c = f1; // skip the full columns
-      continue;
-    }
-    const std::int64_t lo = c * kSubpixelOne;
-    const Rational a = column_integral(ra, rb, hgt, lo) - column_integral(la, lb, hgt, lo);
-    if (a != 0)
-      row.partial[static_cast<std::size_t>(c)] += a;
-  }
-  row.touched_lo = std::min(row.touched_lo, c0);
-  row.touched_hi = std::max(row.touched_hi, c1);
-}
-
-} // namespace
-
-// rule: PATH.AREA.EXACT
-void cover_area(const Path& path, std::int32_t w, std::int32_t h,
-                const std::function<void(const AreaCoverage&)>& emit) {
-  if (w <= 0 || h <= 0)
-    return;
-  const detail::Boundary b = detail::boundary_of(path);
-  if (!b.curves.empty())
-    throw std::invalid_argument(
-        "path: area coverage of curves is not implemented (PATH.AREA.EXACT)");
-  const std::vector<DownEdge> edges = down_edges(b);
-  std::vector<const DownEdge*> active_list;
-  ActiveEdges active(edges, active_list);
-  RowAreas row(w);
-  std::vector<Rational> slopes;
-  slopes.reserve(edges.size());
-  for (const DownEdge& e : edges)
-    slopes.emplace_back(e.xb - e.xa, e.yb - e.ya);
-  const auto slope_of = [&](const DownEdge* e) -> const Rational& {
-    return slopes[static_cast<std::size_t>(e - edges.data())];
-  };
-  const Rational pixel_area(std::int64_t{kSubpixelOne} * kSubpixelOne);
-
-  for (std::int32_t j = 0; j < h; ++j) {
-    const std::int64_t y0 = std::int64_t{j} * kSubpixelOne;
-    const std::int64_t y1 = y0 + kSubpixelOne;
-    std::vector<const DownEdge*> in_row;
-    for (const DownEdge* e : active.advance(y0, y1 - 1))
-      if (e->ya < y1 && e->yb > y0)
-        in_row.push_back(e);
-    if (in_row.empty())
-      continue;
-
-    // Cut heights: the row's top and bottom, every end inside it, every crossing of two edges.
-    std::vector<Rational> cuts{Rational(y0), Rational(y1)};
-    for (const DownEdge* e : in_row) {
-      if (e->ya > y0)
-        cuts.emplace_back(e->ya);
-      if (e->yb < y1)
-        cuts.emplace_back(e->yb);
-    }
-    for (std::size_t p = 0; p < in_row.size(); ++p) {
-      const DownEdge& e = *in_row[p];
-      for (std::size_t q = p + 1; q < in_row.size(); ++q) {
-        const DownEdge& f = *in_row[q];
-        if (std::max(e.xa, e.xb) < std::min(f.xa, f.xb) ||
-            std::max(f.xa, f.xb) < std::min(e.xa, e.xb))
-          continue; // apart in x: they cannot cross
-        const std::int64_t lo = std::max({e.ya, f.ya, y0});
-        const std::int64_t hi = std::min({e.yb, f.yb, y1});
-        if (lo >= hi)
-          continue;
-        const Rational& se = slope_of(&e);
-        const Rational& sf = slope_of(&f);
-        const Rational dlo = x_at(e, se, Rational(lo)) - x_at(f, sf, Rational(lo));
-        const Rational dhi = x_at(e, se, Rational(hi)) - x_at(f, sf, Rational(hi));
-        if ((dlo < 0 && dhi > 0) || (dlo > 0 && dhi < 0))
-          cuts.push_back(Rational(lo) + Rational(hi - lo) * dlo / (dlo - dhi));
-      }
-    }
-    std::sort(cuts.begin(), cuts.end());
-    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-
-    struct Piece {
-      const DownEdge* e;
-      Rational xa, xb, key;
-    };
-    std::vector<Piece> pieces;
-    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
-      const Rational& ya = cuts[k];
-      const Rational& yb = cuts[k + 1];
-      pieces.clear();
-      for (const DownEdge* e : in_row) {
-        if (e->ya <= ya && e->yb >= yb) {
-          Rational xa = x_at(*e, slope_of(e), ya);
-          Rational xb = x_at(*e, slope_of(e), yb);
-          Rational key = xa + xb; // twice the x at mid-slab: no two edges cross inside the slab
-          pieces.push_back(Piece{e, std::move(xa), std::move(xb), std::move(key)});
-        }
-      }
-      std::sort(pieces.begin(), pieces.end(),
-                [](const Piece& p, const Piece& q) { return p.key < q.key; });
-      // Left of every piece the winding number is 0 (the boundary is closed, so the directions
-      // of the pieces crossing a horizontal line sum to 0); passing piece m from left to right
-      // subtracts its direction (PATH.WINDING counts the crossings right of the point).
-      const Rational hgt = yb - ya;
-      std::int64_t wn = 0;
-      std::size_t run_start = 0;
-      bool in_run = false;
-      for (std::size_t m = 0; m < pieces.size(); ++m) {
-        wn -= pieces[m].e->dir;
-        const bool filled = fill_holds(path.fill_rule, wn);
-        if (filled && !in_run) {
-          run_start = m;
-          in_run = true;
-        } else if (!filled && in_run) {
-          add_run(row, w, pieces[run_start].xa, pieces[run_start].xb, pieces[m].xa, pieces[m].xb,
-                  hgt);
-          in_run = false;
-        }
-      }
-    }
-    Rational running = 0;
-    for (std::int64_t c = row.touched_lo; c <= row.touched_hi; ++c) {
-      const auto k = static_cast<std::size_t>(c);
-      running += row.full_diff[k];
-      row.full_diff[k] = 0;
-      const Rational a = row.partial[k] + running;
-      row.partial[k] = 0;
-      if (a != 0)
-        emit(AreaCoverage{static_cast<std::int32_t>(c), j, a / pixel_area, Rational(0)});
-    }
-    row.full_diff[static_cast<std::size_t>(row.touched_hi + 1)] = 0;
-    row.touched_lo = w;
-    row.touched_hi = -1;
-  }
-}
-
-// rule: PATH.AREA.EXACT
-std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w, std::int32_t h) {
-  std::vector<AreaCoverage> out;
-  cover_area(path, w, h, [&](const AreaCoverage& a) { out.push_back(a); });
   return out;
 }
 

@@ -5,11 +5,16 @@
 
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <tuple>
 #include <vector>
 
+#include "rastrules/fixed.hpp"
+#include "rastrules/formula/path.hpp"
 #include "rastrules/path.hpp"
 
 namespace rastrules::path::detail {
@@ -90,5 +95,78 @@ void prepare_curve(const Curve& c, PreparedCurve& p);
 // appended to out (scratch: room for the unprepared path, when the estimates give up).
 void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
                               std::vector<Crossing>& out, std::vector<Crossing>& scratch);
+
+// An edge oriented top end first (ya < yb), with the direction of the original (+1 down).
+struct DownEdge {
+  std::int64_t xa = 0, ya = 0, xb = 0, yb = 0;
+  int dir = 0;
+};
+
+// Fills v with the non-horizontal line edges of the path, oriented top end first, sorted by ya
+// (then by the other ends and the direction: the order of equal keys changes no answer, and a
+// full key makes it independent of the sort).
+inline void down_edges_into(const Boundary& b, std::vector<DownEdge>& v) {
+  v.clear();
+  v.reserve(b.lines.size());
+  for (const Edge& e : b.lines) {
+    if (e.y0 == e.y1)
+      continue; // horizontal: never crossed, no area (PATH.DEGENERATE)
+    if (e.y0 < e.y1)
+      v.push_back(DownEdge{e.x0, e.y0, e.x1, e.y1, 1});
+    else
+      v.push_back(DownEdge{e.x1, e.y1, e.x0, e.y0, -1});
+  }
+  std::sort(v.begin(), v.end(), [](const DownEdge& p, const DownEdge& q) {
+    return std::tie(p.ya, p.xa, p.yb, p.xb, p.dir) < std::tie(q.ya, q.xa, q.yb, q.xb, q.dir);
+  });
+}
+
+// Returns the non-horizontal line edges of the path, oriented top end first, sorted by ya.
+inline std::vector<DownEdge> down_edges(const Boundary& b) {
+  std::vector<DownEdge> v;
+  down_edges_into(b, v);
+  return v;
+}
+
+// The largest raw sample x for which the crossing of e at height sy counts (PATH.BUDGET.LINE).
+inline std::int64_t line_threshold(const DownEdge& e, std::int64_t sy, Tie t) {
+  const std::int64_t n = formula::path_crossing_numerator<std::int64_t>(e.xa, e.ya, e.xb, e.yb, sy);
+  const std::int64_t d = e.yb - e.ya;
+  return t.x_right ? ceil_div(n, d) - 1 : floor_div(n, d);
+}
+
+// Edges that may span a sample row, kept while the rows go down the target (in active, which
+// the caller owns and may reuse).
+class ActiveEdges {
+public:
+  ActiveEdges(const std::vector<DownEdge>& sorted, std::vector<const DownEdge*>& active)
+      : edges_(sorted), active_(active) {
+    active_.clear();
+  }
+  // Makes the active list hold every edge with ya <= y_hi that does not end above y_lo.
+  // Calls must come with non-decreasing y_lo and y_hi.
+  const std::vector<const DownEdge*>& advance(std::int64_t y_lo, std::int64_t y_hi) {
+    while (next_ < edges_.size() && edges_[next_].ya <= y_hi)
+      active_.push_back(&edges_[next_++]);
+    std::erase_if(active_, [&](const DownEdge* e) { return e->yb < y_lo; });
+    return active_;
+  }
+
+private:
+  const std::vector<DownEdge>& edges_;
+  std::vector<const DownEdge*>& active_;
+  std::size_t next_ = 0;
+};
+
+// How cover_area decides a pixel row: by cells where it can, else by slabs (PATH.AREA.CELLS),
+// or by slabs alone (PATH.AREA.EXACT's computation, for tests that compare the two).
+enum class AreaMethod { kCells, kSlabs };
+// Rows decided each way (rows no edge reaches into are neither).
+struct AreaRows {
+  std::size_t cells = 0, slabs = 0;
+};
+// cover_area by the method given; rows, when not null, counts the rows.
+void cover_area_by(const Path& path, std::int32_t w, std::int32_t h, AreaMethod method,
+                   const std::function<void(const AreaCoverage&)>& emit, AreaRows* rows);
 
 } // namespace rastrules::path::detail

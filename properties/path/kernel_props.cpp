@@ -24,6 +24,7 @@
 
 #include "path_checks.hpp"
 #include "path_gen.hpp"
+#include "path_kernel.hpp"
 #include "rastrules/gen/triangles.hpp"
 #include "rastrules/msaa.hpp"
 #include "rastrules/oracle/msaa.hpp"
@@ -41,32 +42,11 @@ namespace om = rastrules::oracle::msaa;
 using pc::kSide;
 using pc::show_path;
 using pg::Raw2;
+using rastrules::path_kernel::kpoint;
+using rastrules::path_kernel::to_kernel;
 
 // ---------------------------------------------------------------------------------------------
 // Adapters: the generators' description to the kernel's types.
-
-kp::Point kpoint(const Raw2& r) {
-  return kp::Point{static_cast<std::int32_t>(r[0]), static_cast<std::int32_t>(r[1])};
-}
-
-kp::Path to_kernel(const pg::GPath& g) {
-  kp::Path p;
-  p.fill_rule = g.evenodd ? kp::FillRule::kEvenOdd : kp::FillRule::kNonZero;
-  for (const pg::GContour& c : g.contours) {
-    kp::Contour kc{kpoint(c.start), {}};
-    for (const pg::GPiece& q : c.pieces) {
-      kp::Segment s;
-      s.kind = q.degree == 1   ? kp::SegmentKind::kLine
-               : q.degree == 2 ? kp::SegmentKind::kQuadratic
-                               : kp::SegmentKind::kCubic;
-      for (std::size_t i = 0; i < q.pts.size(); ++i)
-        s.p[i] = kpoint(q.pts[i]);
-      kc.segments.push_back(s);
-    }
-    p.contours.push_back(kc);
-  }
-  return p;
-}
 
 rastrules::FillConvention convention(const std::string& fill) {
   if (fill == "top-left")

@@ -4,7 +4,7 @@
 // and exact area coverage. Rules: spec/rules/path.md.
 // Implements: PATH.GEOMETRY, PATH.CONTOUR.CLOSE, PATH.WINDING, PATH.FILL.RULE,
 //             PATH.SAMPLE.TIE, PATH.COVER.SAMPLE, PATH.AREA.EXACT, PATH.DEGENERATE,
-//             PATH.CURVE.SAMPLE
+//             PATH.CURVE.SAMPLE, PATH.AREA.CELLS
 // Needs, beyond the standard library, Boost.Multiprecision's headers (exact rational areas).
 
 #pragma once

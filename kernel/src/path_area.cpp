@@ -1,0 +1,823 @@
+// SPDX-License-Identifier: MIT
+// 2D paths: exact area coverage (spec/rules/path.md, PATH.AREA.EXACT and PATH.AREA.CELLS). Each
+// pixel row is decided cell by cell from signed integrals of the winding number in exact
+// 128-bit fractions wherever the cell provably holds at most two winding numbers; a row where a
+// cell does not goes to the slab method, which is exact for any boundary.
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "path_detail.hpp"
+#include "rastrules/fixed.hpp"
+#include "rastrules/path.hpp"
+
+namespace rastrules::path {
+namespace {
+
+using Rational = boost::multiprecision::cpp_rational;
+using BigInt = boost::multiprecision::cpp_int;
+using detail::ActiveEdges;
+using detail::DownEdge;
+
+// Returns floor(q) for a rational q.
+std::int64_t floor_of(const Rational& q) {
+  const BigInt n = boost::multiprecision::numerator(q);
+  const BigInt d = boost::multiprecision::denominator(q); // > 0
+  BigInt f = n / d;                                       // truncates toward zero
+  if (n < 0 && f * d != n)
+    f -= 1;
+  return f.convert_to<std::int64_t>();
+}
+
+// Returns the x of edge e, whose slope dx/dy is `slope`, at height y (ya <= y <= yb).
+Rational x_at(const DownEdge& e, const Rational& slope, const Rational& y) {
+  return Rational(e.xa) + (y - e.ya) * slope;
+}
+
+// Returns the integral over y in [ya, yb] (length hgt) of clamp(X(y), lo, lo + 256) - lo, where
+// X is linear from xa (at ya) to xb (at yb). Units: raw squared.
+Rational column_integral(const Rational& xa, const Rational& xb, const Rational& hgt,
+                         std::int64_t lo) {
+  const std::int64_t hi = lo + kSubpixelOne;
+  const Rational& xmin = xa < xb ? xa : xb;
+  const Rational& xmax = xa < xb ? xb : xa;
+  if (xmax <= lo)
+    return Rational(0);
+  if (xmin >= hi)
+    return Rational(kSubpixelOne) * hgt;
+  if (xmin >= lo && xmax <= hi)
+    return ((xa + xb) / 2 - lo) * hgt;
+  // X crosses lo or hi inside the slab: split at those parameters; clamp(X) is linear between.
+  auto clamped = [&](const Rational& x) {
+    if (x <= lo)
+      return Rational(0);
+    if (x >= hi)
+      return Rational(kSubpixelOne);
+    return Rational(x - lo);
+  };
+  std::vector<Rational> us{Rational(0), Rational(1)};
+  for (const std::int64_t v : {lo, hi}) {
+    const Rational u = (Rational(v) - xa) / (xb - xa);
+    if (u > 0 && u < 1)
+      us.push_back(u);
+  }
+  std::sort(us.begin(), us.end());
+  Rational sum = 0;
+  for (std::size_t k = 0; k + 1 < us.size(); ++k) {
+    const Rational x0 = xa + (xb - xa) * us[k];
+    const Rational x1 = xa + (xb - xa) * us[k + 1];
+    sum += (clamped(x0) + clamped(x1)) / 2 * (us[k + 1] - us[k]);
+  }
+  return sum * hgt;
+}
+
+// One pixel row's areas (raw squared units): the partial columns' areas, and the columns a
+// run covers for the whole height of a slab as a difference array (one add at each end of the
+// run instead of one per column).
+struct RowAreas {
+  std::vector<Rational> partial;
+  std::vector<Rational> full_diff; // one longer than the row
+  std::int64_t touched_lo = 0, touched_hi = -1;
+
+  explicit RowAreas(std::int32_t w)
+      : partial(static_cast<std::size_t>(w)), full_diff(static_cast<std::size_t>(w) + 1),
+        touched_lo(w) {}
+};
+
+// Accumulates the area between edges l (left) and r (right) over the slab [ya, yb] of one
+// pixel row into the row's columns (raw squared units).
+void add_run(RowAreas& row, std::int32_t w, const Rational& la, const Rational& lb,
+             const Rational& ra, const Rational& rb, const Rational& hgt) {
+  const std::int64_t c0 = std::max<std::int64_t>(0, floor_of(std::min(la, lb) / kSubpixelOne));
+  const std::int64_t c1 =
+      std::min<std::int64_t>(std::int64_t{w} - 1, floor_of(std::max(ra, rb) / kSubpixelOne));
+  if (c0 > c1)
+    return;
+  // Columns [f0, f1] lie entirely between the two edges: covered for the whole slab.
+  const std::int64_t f0 = std::max(c0, -floor_of(-std::max(la, lb) / kSubpixelOne));
+  const std::int64_t f1 = std::min(c1, floor_of(std::min(ra, rb) / kSubpixelOne) - 1);
+  if (f0 <= f1) {
+    const Rational full = Rational(kSubpixelOne) * hgt;
+    row.full_diff[static_cast<std::size_t>(f0)] += full;
+    row.full_diff[static_cast<std::size_t>(f1 + 1)] -= full;
+  }
+  for (std::int64_t c = c0; c <= c1; ++c) {
+    if (f0 <= f1 && c == f0) {
+      c = f1; // skip the full columns
+      continue;
+    }
+    const std::int64_t lo = c * kSubpixelOne;
+    const Rational a = column_integral(ra, rb, hgt, lo) - column_integral(la, lb, hgt, lo);
+    if (a != 0)
+      row.partial[static_cast<std::size_t>(c)] += a;
+  }
+  row.touched_lo = std::min(row.touched_lo, c0);
+  row.touched_hi = std::max(row.touched_hi, c1);
+}
+
+// The slab method of PATH.AREA.EXACT for every row: exact rationals, any boundary.
+class SlabRows {
+public:
+  SlabRows(const std::vector<DownEdge>& edges, FillRule rule, std::int32_t w)
+      : edges_(edges), rule_(rule), w_(w), row_(w) {
+    slopes_.reserve(edges.size());
+    for (const DownEdge& e : edges)
+      slopes_.emplace_back(e.xb - e.xa, e.yb - e.ya);
+  }
+
+  // Emits row j's areas, in_row holding the edges with ya < the row's bottom and yb > its top.
+  void row(std::int32_t j, const std::vector<const DownEdge*>& in_row,
+           const std::function<void(const AreaCoverage&)>& emit) {
+    const std::int64_t y0 = std::int64_t{j} * kSubpixelOne;
+    const std::int64_t y1 = y0 + kSubpixelOne;
+    const FillRule rule = rule_;
+    const std::int32_t w = w_;
+    RowAreas& row = row_;
+    const auto slope_of = [&](const DownEdge* e) -> const Rational& {
+      return slopes_[static_cast<std::size_t>(e - edges_.data())];
+    };
+    const Rational pixel_area(std::int64_t{kSubpixelOne} * kSubpixelOne);
+    // Cut heights: the row's top and bottom, every end inside it, every crossing of two edges.
+    std::vector<Rational> cuts{Rational(y0), Rational(y1)};
+    for (const DownEdge* e : in_row) {
+      if (e->ya > y0)
+        cuts.emplace_back(e->ya);
+      if (e->yb < y1)
+        cuts.emplace_back(e->yb);
+    }
+    for (std::size_t p = 0; p < in_row.size(); ++p) {
+      const DownEdge& e = *in_row[p];
+      for (std::size_t q = p + 1; q < in_row.size(); ++q) {
+        const DownEdge& f = *in_row[q];
+        if (std::max(e.xa, e.xb) < std::min(f.xa, f.xb) ||
+            std::max(f.xa, f.xb) < std::min(e.xa, e.xb))
+          continue; // apart in x: they cannot cross
+        const std::int64_t lo = std::max({e.ya, f.ya, y0});
+        const std::int64_t hi = std::min({e.yb, f.yb, y1});
+        if (lo >= hi)
+          continue;
+        const Rational& se = slope_of(&e);
+        const Rational& sf = slope_of(&f);
+        const Rational dlo = x_at(e, se, Rational(lo)) - x_at(f, sf, Rational(lo));
+        const Rational dhi = x_at(e, se, Rational(hi)) - x_at(f, sf, Rational(hi));
+        if ((dlo < 0 && dhi > 0) || (dlo > 0 && dhi < 0))
+          cuts.push_back(Rational(lo) + Rational(hi - lo) * dlo / (dlo - dhi));
+      }
+    }
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+
+    struct Piece {
+      const DownEdge* e;
+      Rational xa, xb, key;
+    };
+    std::vector<Piece> pieces;
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+      const Rational& ya = cuts[k];
+      const Rational& yb = cuts[k + 1];
+      pieces.clear();
+      for (const DownEdge* e : in_row) {
+        if (e->ya <= ya && e->yb >= yb) {
+          Rational xa = x_at(*e, slope_of(e), ya);
+          Rational xb = x_at(*e, slope_of(e), yb);
+          Rational key = xa + xb; // twice the x at mid-slab: no two edges cross inside the slab
+          pieces.push_back(Piece{e, std::move(xa), std::move(xb), std::move(key)});
+        }
+      }
+      std::sort(pieces.begin(), pieces.end(),
+                [](const Piece& p, const Piece& q) { return p.key < q.key; });
+      // Left of every piece the winding number is 0 (the boundary is closed, so the directions
+      // of the pieces crossing a horizontal line sum to 0); passing piece m from left to right
+      // subtracts its direction (PATH.WINDING counts the crossings right of the point).
+      const Rational hgt = yb - ya;
+      std::int64_t wn = 0;
+      std::size_t run_start = 0;
+      bool in_run = false;
+      for (std::size_t m = 0; m < pieces.size(); ++m) {
+        wn -= pieces[m].e->dir;
+        const bool filled = fill_holds(rule, wn);
+        if (filled && !in_run) {
+          run_start = m;
+          in_run = true;
+        } else if (!filled && in_run) {
+          add_run(row, w, pieces[run_start].xa, pieces[run_start].xb, pieces[m].xa, pieces[m].xb,
+                  hgt);
+          in_run = false;
+        }
+      }
+    }
+    Rational running = 0;
+    for (std::int64_t c = row.touched_lo; c <= row.touched_hi; ++c) {
+      const auto k = static_cast<std::size_t>(c);
+      running += row.full_diff[k];
+      row.full_diff[k] = 0;
+      const Rational a = row.partial[k] + running;
+      row.partial[k] = 0;
+      if (a != 0)
+        emit(AreaCoverage{static_cast<std::int32_t>(c), j, a / pixel_area, Rational(0)});
+    }
+    row.full_diff[static_cast<std::size_t>(row.touched_hi + 1)] = 0;
+    row.touched_lo = w;
+    row.touched_hi = -1;
+  }
+
+private:
+  const std::vector<DownEdge>& edges_;
+  FillRule rule_;
+  std::int32_t w_;
+  RowAreas row_;
+  std::vector<Rational> slopes_;
+};
+
+__extension__ typedef __int128 I128;
+__extension__ typedef unsigned __int128 U128;
+
+constexpr std::int64_t kW = kSubpixelOne;   // a pixel's side, raw
+constexpr std::int64_t kCellArea = kW * kW; // a pixel's area, raw squared
+
+// Whether raw coordinate v lies on a pixel grid line.
+constexpr bool on_grid(std::int64_t v) {
+  return (v & (kW - 1)) == 0;
+}
+
+int sign_of(std::int64_t v) {
+  return (v > 0) - (v < 0);
+}
+
+int ctz128(U128 v) {
+  const auto lo = static_cast<std::uint64_t>(v);
+  return lo != 0 ? __builtin_ctzll(lo) : 64 + __builtin_ctzll(static_cast<std::uint64_t>(v >> 64));
+}
+
+// Binary gcd; gcd(0, b) = b.
+U128 gcd128(U128 a, U128 b) {
+  if (a == 0)
+    return b;
+  if (b == 0)
+    return a;
+  const int shift = ctz128(a | b);
+  a >>= ctz128(a);
+  while (b != 0) {
+    b >>= ctz128(b);
+    if (a > b)
+      std::swap(a, b);
+    b -= a;
+  }
+  return a << shift;
+}
+
+U128 abs128(I128 v) {
+  return v < 0 ? U128(0) - static_cast<U128>(v) : static_cast<U128>(v);
+}
+
+// A fraction n / d, d > 0, in lowest terms after reduce().
+struct Frac {
+  I128 n = 0;
+  I128 d = 1;
+  void reduce() {
+    const U128 g = gcd128(abs128(n), static_cast<U128>(d));
+    if (g > 1) {
+      n /= static_cast<I128>(g);
+      d /= static_cast<I128>(g);
+    }
+  }
+};
+
+// s += f exactly; false (s unspecified) where a product or sum would leave __int128.
+bool add_to(Frac& s, const Frac& f) {
+  const I128 g = static_cast<I128>(gcd128(static_cast<U128>(s.d), static_cast<U128>(f.d)));
+  const I128 sd = s.d / g, fd = f.d / g;
+  I128 den = 0, a = 0, b = 0, num = 0;
+  if (__builtin_mul_overflow(s.d, fd, &den) || __builtin_mul_overflow(s.n, fd, &a) ||
+      __builtin_mul_overflow(f.n, sd, &b) || __builtin_add_overflow(a, b, &num))
+    return false;
+  s = Frac{num, den};
+  s.reduce();
+  return true;
+}
+
+BigInt big_of(I128 v) {
+  const U128 m = abs128(v);
+  BigInt r = static_cast<std::uint64_t>(m >> 64);
+  r <<= 64;
+  r += static_cast<std::uint64_t>(m);
+  return v < 0 ? BigInt(-r) : r;
+}
+
+Rational rational_of(const Frac& f) {
+  return Rational(big_of(f.n), big_of(f.d));
+}
+
+// A line edge of the boundary as drawn, zero-length ones left out, with the edges before and
+// after it in its contour (among those kept).
+struct CellEdge {
+  std::int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  std::uint32_t prev = 0, next = 0;
+  [[nodiscard]] std::int64_t ymin() const { return std::min(y0, y1); }
+  [[nodiscard]] std::int64_t ymax() const { return std::max(y0, y1); }
+};
+
+// Orientation of c against the directed line a -> b: (b - a) x (c - a); |.| <= 2^49 in range.
+std::int64_t orient(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by,
+                    std::int64_t cx, std::int64_t cy) {
+  return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+}
+
+// Whether the closed segments e and f meet at a point of the closed square [l, l + kW] x
+// [t, t + kW]; collinear segments that overlap count as meeting anywhere (conservative).
+bool meet_in_cell(const CellEdge& e, const CellEdge& f, std::int64_t l, std::int64_t t) {
+  const std::int64_t o1 = orient(e.x0, e.y0, e.x1, e.y1, f.x0, f.y0);
+  const std::int64_t o2 = orient(e.x0, e.y0, e.x1, e.y1, f.x1, f.y1);
+  if ((o1 > 0 && o2 > 0) || (o1 < 0 && o2 < 0))
+    return false;
+  const std::int64_t o3 = orient(f.x0, f.y0, f.x1, f.y1, e.x0, e.y0);
+  const std::int64_t o4 = orient(f.x0, f.y0, f.x1, f.y1, e.x1, e.y1);
+  if ((o3 > 0 && o4 > 0) || (o3 < 0 && o4 < 0))
+    return false;
+  if (o1 == 0 && o2 == 0) { // collinear: meet iff their extents overlap
+    const bool overlap_x = std::max(std::min(e.x0, e.x1), std::min(f.x0, f.x1)) <=
+                           std::min(std::max(e.x0, e.x1), std::max(f.x0, f.x1));
+    const bool overlap_y = std::max(std::min(e.y0, e.y1), std::min(f.y0, f.y1)) <=
+                           std::min(std::max(e.y0, e.y1), std::max(f.y0, f.y1));
+    return overlap_x && overlap_y;
+  }
+  // One common point: e(u), u = o3 / (o3 - o4) (o3 != o4 as the lines are not parallel here).
+  I128 den = static_cast<I128>(o3) - o4;
+  I128 nx = static_cast<I128>(e.x0) * den + static_cast<I128>(o3) * (e.x1 - e.x0);
+  I128 ny = static_cast<I128>(e.y0) * den + static_cast<I128>(o3) * (e.y1 - e.y0);
+  if (den < 0) {
+    den = -den;
+    nx = -nx;
+    ny = -ny;
+  }
+  return nx >= static_cast<I128>(l) * den && nx <= static_cast<I128>(l + kW) * den &&
+         ny >= static_cast<I128>(t) * den && ny <= static_cast<I128>(t + kW) * den;
+}
+
+// The integral over y in [ya, ya + h] of max(x(y) - lo, 0), x linear from pa / q to pb / q,
+// times 2 q |dx| (dx: the edge's run, != 0, with |pb - pa| = h |dx|). |result| < 2^101.
+I128 ramp_integral(I128 pa, I128 pb, std::int64_t q, std::int64_t h, std::int64_t adx,
+                   std::int64_t lo) {
+  const I128 ua = pa - static_cast<I128>(lo) * q;
+  const I128 ub = pb - static_cast<I128>(lo) * q;
+  if (ua >= 0 && ub >= 0)
+    return static_cast<I128>(h) * (ua + ub) * adx;
+  if (ua <= 0 && ub <= 0)
+    return 0;
+  const I128 up = ua > 0 ? ua : ub;
+  return up * up;
+}
+
+// One cell's records of a pixel row: a piece of an edge in the cell, a crossing of the
+// boundary with the cell's border (at perimeter position p / q, clockwise from the top-left
+// corner, changing the winding number by dw), a part of the cell's integral of w.
+struct PieceRec {
+  std::int32_t col = 0;
+  std::uint32_t edge = 0;
+};
+struct CrossRec {
+  std::int32_t col = 0;
+  std::int32_t dw = 0;
+  std::int64_t p = 0, q = 1;   // position p / q on the border, q > 0
+  std::int64_t sn = 0, sd = 1; // where positions tie: the order sn / sd, sd > 0
+};
+struct PartRec {
+  std::int32_t col = 0;
+  Frac f;
+};
+
+// A row's result for one cell, kept until the whole row is decided.
+struct CellArea {
+  std::int32_t col = 0;
+  Frac area;        // px^2, reduced; when big is false
+  bool big = false; // the value is in CellRows::big_
+};
+
+// The cell method of PATH.AREA.CELLS: decides a pixel row cell by cell, or declines it.
+class CellRows {
+public:
+  CellRows(const detail::Boundary& b, std::size_t contours, FillRule rule, std::int32_t w,
+           std::int32_t h)
+      : rule_(rule), w_(w), h_(h), force_(static_cast<std::size_t>(h), 0),
+        full_diff_(static_cast<std::size_t>(w) + 2, 0),
+        wind_diff_(static_cast<std::size_t>(w) + 2, 0) {
+    // Edges by contour (boundary_into lists each contour's segments, then its closing line).
+    std::size_t k = 0;
+    for (std::size_t ci = 0; ci < contours; ++ci) {
+      const std::size_t first = edges_.size();
+      for (; k < b.lines.size() && b.lines[k].contour == ci; ++k) {
+        const detail::Edge& e = b.lines[k];
+        if (e.x0 != e.x1 || e.y0 != e.y1)
+          edges_.push_back(CellEdge{e.x0, e.y0, e.x1, e.y1, 0, 0});
+      }
+      const std::size_t n = edges_.size() - first;
+      if (n == 0)
+        continue;
+      std::int64_t x_lo = edges_[first].x0, x_hi = x_lo, y_lo = edges_[first].y0, y_hi = y_lo;
+      for (std::size_t i = 0; i < n; ++i) {
+        CellEdge& e = edges_[first + i];
+        e.prev = static_cast<std::uint32_t>(first + (i + n - 1) % n);
+        e.next = static_cast<std::uint32_t>(first + (i + 1) % n);
+        x_lo = std::min(x_lo, e.x0);
+        x_hi = std::max(x_hi, e.x0);
+        y_lo = std::min(y_lo, e.y0);
+        y_hi = std::max(y_hi, e.y0);
+      }
+      // A contour inside one cell bounds a region that touches no side of the cell: the cell
+      // method cannot see its winding number (PATH.AREA.CELLS).
+      if (floor_div(x_lo, kW) == floor_div(x_hi, kW) &&
+          floor_div(y_lo, kW) == floor_div(y_hi, kW)) {
+        const std::int64_t row = floor_div(y_lo, kW);
+        if (row >= 0 && row < h)
+          force_[static_cast<std::size_t>(row)] = 1;
+      }
+    }
+    if (k != b.lines.size())
+      throw std::logic_error("path: boundary lines out of contour order");
+    order_.resize(edges_.size());
+    for (std::size_t i = 0; i < order_.size(); ++i)
+      order_[i] = static_cast<std::uint32_t>(i);
+    std::sort(order_.begin(), order_.end(), [&](std::uint32_t p, std::uint32_t q) {
+      return edges_[p].ymin() != edges_[q].ymin() ? edges_[p].ymin() < edges_[q].ymin() : p < q;
+    });
+  }
+
+  // Emits row j's areas and returns true, or returns false having emitted nothing where a cell
+  // of the row needs the slab method. Rows must come in increasing order.
+  bool row(std::int32_t j, const std::function<void(const AreaCoverage&)>& emit);
+
+private:
+  bool collect(std::int32_t j);
+  bool decide(std::int32_t j);
+  bool cell_area(std::int32_t c, std::int64_t t, std::int64_t wind, std::int64_t full,
+                 std::size_t pieces_at, std::size_t pieces_end, std::size_t cross_at,
+                 std::size_t cross_end, std::size_t parts_at, std::size_t parts_end);
+
+  FillRule rule_;
+  std::int32_t w_, h_;
+  std::vector<CellEdge> edges_;
+  std::vector<std::uint32_t> order_; // edges by ymin
+  std::size_t next_ = 0;
+  std::vector<std::uint32_t> active_;
+  std::vector<std::uint8_t> force_;
+  std::vector<std::int64_t> full_diff_, wind_diff_;
+  std::int32_t lo_ = 0, hi_ = -1; // the row's columns that may have area
+  std::vector<PieceRec> pieces_;
+  std::vector<CrossRec> crosses_;
+  std::vector<PartRec> parts_;
+  std::vector<std::uint32_t> touched_; // the entries of the diffs that may not be 0
+  std::vector<CellArea> out_;
+  std::vector<Rational> big_;
+};
+
+// Collects row j's pieces, crossings and integrals; false where an edge passes through a grid
+// corner or has a vertex on one (PATH.AREA.CELLS). A cell's pieces are the edges that meet its
+// interior; its crossings are where they cross the cell's border moved into it by
+// infinitesimals (x by eps, y by delta), so that a vertex on a grid line and an edge along one
+// are decided like any other point.
+bool CellRows::collect(std::int32_t j) {
+  const std::int64_t t = std::int64_t{j} * kW, bot = t + kW;
+  while (next_ < order_.size() && edges_[order_[next_]].ymin() <= bot)
+    active_.push_back(order_[next_++]);
+  std::erase_if(active_, [&](std::uint32_t i) { return edges_[i].ymax() < t; });
+  pieces_.clear();
+  crosses_.clear();
+  parts_.clear();
+  lo_ = w_;
+  hi_ = -1;
+  if (force_[static_cast<std::size_t>(j)] != 0)
+    return false;
+  const std::int64_t w = w_;
+  const auto bump = [&](std::vector<std::int64_t>& diff, std::int64_t at, std::int64_t v) {
+    diff[static_cast<std::size_t>(at)] += v;
+    touched_.push_back(static_cast<std::uint32_t>(at));
+  };
+  const auto add_full = [&](std::int64_t before, std::int64_t v) { // columns [0, before)
+    if (before <= 0)
+      return;
+    bump(full_diff_, 0, v);
+    bump(full_diff_, std::min(before, w), -v);
+  };
+  const auto add_wind = [&](std::int64_t upto, std::int64_t v) { // columns [0, upto]
+    if (upto < 0)
+      return;
+    bump(wind_diff_, 0, v);
+    bump(wind_diff_, std::min(upto + 1, w), -v);
+  };
+  const auto add_span = [&](std::int64_t cmin, std::int64_t cmax) {
+    lo_ = static_cast<std::int32_t>(std::min<std::int64_t>(lo_, std::max<std::int64_t>(cmin, 0)));
+    hi_ = static_cast<std::int32_t>(std::max<std::int64_t>(hi_, std::min(cmax, w - 1)));
+  };
+  const auto add_pieces = [&](std::int64_t cmin, std::int64_t cmax, std::uint32_t i) {
+    for (std::int64_t c = std::max<std::int64_t>(cmin, 0); c <= std::min(cmax, w - 1); ++c)
+      pieces_.push_back(PieceRec{static_cast<std::int32_t>(c), i});
+  };
+  const auto cross = [&](std::int64_t c, int dw, std::int64_t p, std::int64_t q, std::int64_t sn,
+                         std::int64_t sd) {
+    if (c >= 0 && c < w)
+      crosses_.push_back(CrossRec{static_cast<std::int32_t>(c), dw, p, q, sn, sd});
+  };
+  for (const std::uint32_t i : active_) {
+    const CellEdge& e = edges_[i];
+    for (const auto& [vx, vy] : {std::pair{e.x0, e.y0}, std::pair{e.x1, e.y1}})
+      if (vy >= t && vy <= bot && on_grid(vx) && on_grid(vy))
+        return false; // a vertex on a grid corner
+    const std::int64_t dx = e.x1 - e.x0, dy = e.y1 - e.y0;
+    const int sdx = sign_of(dx);
+    // Crossings of the column lines x = k kW, k in [k0, k1], at height yn / q_y (tie order:
+    // -dy/dx); xlo, xhi (scaled by sc) the edge's x-range in the row.
+    const auto column_lines = [&](std::int64_t xlo, std::int64_t xhi, std::int64_t sc,
+                                  const auto& y_at) -> bool {
+      const std::int64_t adx = dx > 0 ? dx : -dx;
+      for (std::int64_t k = std::max<std::int64_t>(ceil_div(xlo, sc * kW), 0);
+           k <= std::min(floor_div(xhi, sc * kW), w); ++k) {
+        const auto [yn, qy] = y_at(k * kW);
+        if (yn == t * qy || yn == bot * qy)
+          return false; // through a grid corner
+        const std::int64_t line = k * kW * sc;
+        if (xlo < line) // the right side of column k - 1, walked down
+          cross(k - 1, sdx, (kW - t) * qy + yn, qy, -dy * sdx, adx);
+        if (line < xhi) // the left side of column k, walked up
+          cross(k, -sdx, (3 * kW + bot) * qy - yn, qy, -dy * sdx, adx);
+      }
+      return true;
+    };
+    if (dy == 0) {
+      if (e.y0 <= t || e.y0 >= bot)
+        continue; // on the row's border: it meets no cell's interior
+      const std::int64_t xlo = std::min(e.x0, e.x1), xhi = std::max(e.x0, e.x1);
+      add_pieces(floor_div(xlo, kW), ceil_div(xhi, kW) - 1, i);
+      add_span(floor_div(xlo, kW), floor_div(xhi, kW));
+      if (!column_lines(xlo, xhi, 1, [&](std::int64_t) {
+            return std::pair{e.y0, std::int64_t{1}};
+          }))
+        return false;
+      continue;
+    }
+    const std::int64_t ya = std::max(e.ymin(), t), yb = std::min(e.ymax(), bot), h = yb - ya;
+    if (h <= 0)
+      continue; // meets the row at one point of its border
+    const int dir = sign_of(dy);
+    const std::int64_t q = dy > 0 ? dy : -dy;
+    const std::int64_t sn = dx * dir; // tie order on the top and bottom: dx/dy = sn / q
+    if (dx == 0) {
+      const std::int64_t c = floor_div(e.x0, kW), l = c * kW;
+      if (on_grid(e.x0)) { // along a column line: no cell's interior, no cell's moved border
+        add_full(c, dir * kW * h);
+        add_span(c - 1, c - 1);
+        if (ya == t)
+          add_wind(c - 1, dir); // right of the top-left corners of the columns before it
+        continue;
+      }
+      add_full(c, dir * kW * h);
+      add_span(c, c);
+      if (c >= 0 && c < w) {
+        pieces_.push_back(PieceRec{static_cast<std::int32_t>(c), i});
+        parts_.push_back(
+            PartRec{static_cast<std::int32_t>(c), Frac{I128(dir) * (e.x0 - l) * h, 1}});
+      }
+      if (ya == t) {
+        add_wind(c, dir);
+        cross(c, -dir, e.x0 - l, 1, 0, 1);
+      }
+      if (yb == bot)
+        cross(c, dir, 2 * kW + l + kW - e.x0, 1, 0, 1);
+      continue;
+    }
+    // x at height y is xn(y) / q exactly.
+    const auto xn = [&](std::int64_t y) { return (e.x0 * dy + (y - e.y0) * dx) * dir; };
+    const std::int64_t pa = xn(ya), pb = xn(yb);
+    if ((ya == t && pa % (q * kW) == 0) || (yb == bot && pb % (q * kW) == 0))
+      return false; // through a grid corner
+    const std::int64_t xlo = std::min(pa, pb), xhi = std::max(pa, pb);
+    const std::int64_t cmin = floor_div(xlo, q * kW), cmax = floor_div(xhi, q * kW);
+    add_full(cmin, dir * kW * h);
+    add_span(cmin, cmax);
+    add_pieces(cmin, ceil_div(xhi, q * kW) - 1, i);
+    if (ya == t) { // crosses the row's top: w at the top-left corners of columns <= ca
+      const std::int64_t ca = floor_div(pa, q * kW);
+      add_wind(ca, dir);
+      cross(ca, -dir, pa - ca * kW * q, q, sn, q);
+    }
+    if (yb == bot) {
+      const std::int64_t cb = floor_div(pb, q * kW);
+      cross(cb, dir, (2 * kW + cb * kW + kW) * q - pb, q, sn, q);
+    }
+    const std::int64_t adx = dx > 0 ? dx : -dx;
+    if (!column_lines(xlo, xhi, q, [&](std::int64_t x) {
+          return std::pair{(e.y0 * dx + (x - e.x0) * dy) * sdx, adx};
+        }))
+      return false;
+    const std::int64_t den = 2 * q * adx;
+    for (std::int64_t c = std::max<std::int64_t>(cmin, 0); c <= std::min(cmax, w - 1); ++c) {
+      const I128 v =
+          ramp_integral(pa, pb, q, h, adx, c * kW) - ramp_integral(pa, pb, q, h, adx, c * kW + kW);
+      Frac f{dir > 0 ? v : -v, den};
+      f.reduce();
+      parts_.push_back(PartRec{static_cast<std::int32_t>(c), f});
+    }
+  }
+  return true;
+}
+
+// Decides cell c of row t from its winding number at the top-left corner, its integral of w
+// from the edges right of it (full, raw squared) and its records; false where it needs the
+// slab method.
+bool CellRows::cell_area(std::int32_t c, std::int64_t t, std::int64_t wind, std::int64_t full,
+                         std::size_t pieces_at, std::size_t pieces_end, std::size_t cross_at,
+                         std::size_t cross_end, std::size_t parts_at, std::size_t parts_end) {
+  const auto put = [&](Frac f) {
+    if (f.n != 0)
+      out_.push_back(CellArea{c, f, false});
+  };
+  if (pieces_at == pieces_end) { // no boundary in the cell: one winding number
+    put(Frac{fill_holds(rule_, wind) ? 1 : 0, 1});
+    return true;
+  }
+  // The boundary's pieces must not meet but where consecutive edges join, nor double back.
+  const std::int64_t l = std::int64_t{c} * kW;
+  for (std::size_t p = pieces_at; p < pieces_end; ++p) {
+    const CellEdge& e = edges_[pieces_[p].edge];
+    for (std::size_t r = p + 1; r < pieces_end; ++r) {
+      const std::uint32_t fi = pieces_[r].edge;
+      const CellEdge& f = edges_[fi];
+      if (e.next == fi || e.prev == fi) {
+        const std::int64_t ex = e.x1 - e.x0, ey = e.y1 - e.y0, fx = f.x1 - f.x0, fy = f.y1 - f.y0;
+        if (ex * fy - ey * fx == 0 && ex * fx + ey * fy < 0)
+          return false; // doubles back (a contour of two edges always does)
+        continue;
+      }
+      if (meet_in_cell(e, f, l, t))
+        return false;
+    }
+  }
+  // Every region of the cell touches its border: the winding numbers met walking around it
+  // clockwise are all the cell has, consecutive integers [lo, hi].
+  std::sort(crosses_.begin() + static_cast<std::ptrdiff_t>(cross_at),
+            crosses_.begin() + static_cast<std::ptrdiff_t>(cross_end),
+            [](const CrossRec& a, const CrossRec& b) {
+              const I128 lhs = static_cast<I128>(a.p) * b.q, rhs = static_cast<I128>(b.p) * a.q;
+              if (lhs != rhs)
+                return lhs < rhs;
+              return static_cast<I128>(a.sn) * b.sd < static_cast<I128>(b.sn) * a.sd;
+            });
+  std::int64_t cur = wind, lo = wind, hi = wind;
+  for (std::size_t k = cross_at; k < cross_end; ++k) {
+    cur += crosses_[k].dw;
+    lo = std::min(lo, cur);
+    hi = std::max(hi, cur);
+  }
+  if (cur != wind)
+    throw std::logic_error("path: a cell's border walk does not close (PATH.AREA.CELLS)");
+  const bool f_lo = fill_holds(rule_, lo), f_hi = fill_holds(rule_, hi);
+  bool constant = lo == hi;
+  if (rule_ == FillRule::kNonZero && (lo >= 1 || hi <= -1))
+    constant = true;
+  if (constant) {
+    put(Frac{f_lo ? 1 : 0, 1});
+    return true;
+  }
+  if (hi != lo + 1)
+    return false; // three or more winding numbers: the fill rule is not affine on them
+  // w in {lo, lo + 1}: area = fill(lo) + (fill(lo + 1) - fill(lo)) (I / A - lo), I the integral
+  // of w over the cell (raw squared) and A the cell's area.
+  Frac integral{full, 1};
+  bool fits = true;
+  for (std::size_t k = parts_at; k < parts_end && fits; ++k)
+    fits = add_to(integral, parts_[k].f);
+  const int beta = static_cast<int>(f_hi) - static_cast<int>(f_lo);
+  if (fits) {
+    // (f_lo A d + beta (n - lo A d)) / (A d)
+    I128 ad = 0, lo_ad = 0, diff = 0, num = 0, base = 0;
+    fits = !__builtin_mul_overflow(integral.d, I128(kCellArea), &ad) &&
+           !__builtin_mul_overflow(ad, static_cast<I128>(lo), &lo_ad) &&
+           !__builtin_sub_overflow(integral.n, lo_ad, &diff) &&
+           !__builtin_mul_overflow(ad, static_cast<I128>(f_lo ? 1 : 0), &base) &&
+           !__builtin_add_overflow(base, diff * beta, &num);
+    if (fits) {
+      Frac a{num, ad};
+      a.reduce();
+      put(a);
+      return true;
+    }
+  }
+  Rational big(full);
+  for (std::size_t k = parts_at; k < parts_end; ++k)
+    big += rational_of(parts_[k].f);
+  Rational a = Rational(f_lo ? 1 : 0) + beta * (big / kCellArea - lo);
+  if (a != 0) {
+    out_.push_back(CellArea{c, Frac{}, true});
+    big_.push_back(std::move(a));
+  }
+  return true;
+}
+
+bool CellRows::decide(std::int32_t j) {
+  out_.clear();
+  big_.clear();
+  const auto by_col = [](const auto& a, const auto& b) { return a.col < b.col; };
+  std::sort(pieces_.begin(), pieces_.end(), by_col);
+  std::sort(crosses_.begin(), crosses_.end(), by_col);
+  std::sort(parts_.begin(), parts_.end(), by_col);
+  // Below lo_ the diffs have entries at 0 only (every other entry is at a column where its
+  // edge has a piece, or at w).
+  std::int64_t full = full_diff_[0], wind = wind_diff_[0];
+  std::size_t pa = 0, ca = 0, ra = 0;
+  const std::int64_t t = std::int64_t{j} * kW;
+  for (std::int32_t c = lo_; c <= hi_; ++c) {
+    if (c > 0) {
+      full += full_diff_[static_cast<std::size_t>(c)];
+      wind += wind_diff_[static_cast<std::size_t>(c)];
+    }
+    std::size_t pe = pa, ce = ca, re = ra;
+    while (pe < pieces_.size() && pieces_[pe].col == c)
+      ++pe;
+    while (ce < crosses_.size() && crosses_[ce].col == c)
+      ++ce;
+    while (re < parts_.size() && parts_[re].col == c)
+      ++re;
+    if (!cell_area(c, t, wind, full, pa, pe, ca, ce, ra, re))
+      return false;
+    pa = pe;
+    ca = ce;
+    ra = re;
+  }
+  return true;
+}
+
+bool CellRows::row(std::int32_t j, const std::function<void(const AreaCoverage&)>& emit) {
+  const bool collected = collect(j);
+  const bool decided = collected && decide(j);
+  for (const std::uint32_t k : touched_) {
+    full_diff_[k] = 0;
+    wind_diff_[k] = 0;
+  }
+  touched_.clear();
+  if (!decided)
+    return false;
+  std::size_t b = 0;
+  for (const CellArea& a : out_)
+    emit(AreaCoverage{a.col, j, a.big ? big_[b++] : rational_of(a.area), Rational(0)});
+  return true;
+}
+
+} // namespace
+
+namespace detail {
+
+// rule: PATH.AREA.EXACT, PATH.AREA.CELLS
+void cover_area_by(const Path& path, std::int32_t w, std::int32_t h, AreaMethod method,
+                   const std::function<void(const AreaCoverage&)>& emit, AreaRows* rows) {
+  if (w <= 0 || h <= 0)
+    return;
+  const Boundary b = boundary_of(path);
+  if (!b.curves.empty())
+    throw std::invalid_argument(
+        "path: area coverage of curves is not implemented (PATH.AREA.EXACT)");
+  const std::vector<DownEdge> edges = down_edges(b);
+  std::vector<const DownEdge*> active_list;
+  ActiveEdges active(edges, active_list);
+  SlabRows slabs(edges, path.fill_rule, w);
+  CellRows cells(b, path.contours.size(), path.fill_rule, w, h);
+  std::vector<const DownEdge*> in_row;
+  for (std::int32_t j = 0; j < h; ++j) {
+    const std::int64_t y0 = std::int64_t{j} * kSubpixelOne;
+    const std::int64_t y1 = y0 + kSubpixelOne;
+    in_row.clear();
+    for (const DownEdge* e : active.advance(y0, y1 - 1))
+      if (e->ya < y1 && e->yb > y0)
+        in_row.push_back(e);
+    if (in_row.empty())
+      continue; // no edge reaches into the row: w = 0 in all of it
+    if (method == AreaMethod::kCells && cells.row(j, emit)) {
+      if (rows != nullptr)
+        ++rows->cells;
+      continue;
+    }
+    slabs.row(j, in_row, emit);
+    if (rows != nullptr)
+      ++rows->slabs;
+  }
+}
+
+} // namespace detail
+
+// rule: PATH.AREA.EXACT
+void cover_area(const Path& path, std::int32_t w, std::int32_t h,
+                const std::function<void(const AreaCoverage&)>& emit) {
+  detail::cover_area_by(path, w, h, detail::AreaMethod::kCells, emit, nullptr);
+}
+
+// rule: PATH.AREA.EXACT
+std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w, std::int32_t h) {
+  std::vector<AreaCoverage> out;
+  cover_area(path, w, h, [&](const AreaCoverage& a) { out.push_back(a); });
+  return out;
+}
+
+} // namespace rastrules::path
