@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -288,11 +289,20 @@ struct Frac {
   }
 };
 
-// s += f exactly; false (s unspecified) where a product or sum would leave __int128.
+// s += f exactly (s in lowest terms only where the plain sum would leave __int128); false, s
+// unspecified, where even the reduced sum would.
 bool add_to(Frac& s, const Frac& f) {
+  if (f.n == 0)
+    return true;
+  I128 den = 0, a = 0, b = 0, num = 0;
+  if (!__builtin_mul_overflow(s.d, f.d, &den) && !__builtin_mul_overflow(s.n, f.d, &a) &&
+      !__builtin_mul_overflow(f.n, s.d, &b) && !__builtin_add_overflow(a, b, &num)) {
+    s = Frac{num, den};
+    return true;
+  }
+  s.reduce();
   const I128 g = static_cast<I128>(gcd128(static_cast<U128>(s.d), static_cast<U128>(f.d)));
   const I128 sd = s.d / g, fd = f.d / g;
-  I128 den = 0, a = 0, b = 0, num = 0;
   if (__builtin_mul_overflow(s.d, fd, &den) || __builtin_mul_overflow(s.n, fd, &a) ||
       __builtin_mul_overflow(f.n, sd, &b) || __builtin_add_overflow(a, b, &num))
     return false;
@@ -309,8 +319,16 @@ BigInt big_of(I128 v) {
   return v < 0 ? BigInt(-r) : r;
 }
 
-Rational rational_of(const Frac& f) {
-  return Rational(big_of(f.n), big_of(f.d));
+Rational rational_of(Frac f) {
+  constexpr I128 kLo = std::numeric_limits<std::int64_t>::min();
+  constexpr I128 kHi = std::numeric_limits<std::int64_t>::max();
+  if (f.n < kLo || f.n > kHi || f.d > kHi)
+    f.reduce();
+  if (f.n < kLo || f.n > kHi || f.d > kHi)
+    return Rational(big_of(f.n), big_of(f.d));
+  if (f.d == 1)
+    return Rational(static_cast<std::int64_t>(f.n));
+  return Rational(static_cast<std::int64_t>(f.n), static_cast<std::int64_t>(f.d)); // reduces
 }
 
 // A line edge of the boundary as drawn, zero-length ones left out, with the edges before and
@@ -394,7 +412,7 @@ struct PartRec {
 // A row's result for one cell, kept until the whole row is decided.
 struct CellArea {
   std::int32_t col = 0;
-  Frac area;        // px^2, reduced; when big is false
+  Frac area;        // px^2 (not reduced); when big is false
   bool big = false; // the value is in CellRows::big_
 };
 
@@ -617,9 +635,7 @@ bool CellRows::collect(std::int32_t j) {
     for (std::int64_t c = std::max<std::int64_t>(cmin, 0); c <= std::min(cmax, w - 1); ++c) {
       const I128 v =
           ramp_integral(pa, pb, q, h, adx, c * kW) - ramp_integral(pa, pb, q, h, adx, c * kW + kW);
-      Frac f{dir > 0 ? v : -v, den};
-      f.reduce();
-      parts_.push_back(PartRec{static_cast<std::int32_t>(c), f});
+      parts_.push_back(PartRec{static_cast<std::int32_t>(c), Frac{dir > 0 ? v : -v, den}});
     }
   }
   return true;
@@ -700,9 +716,7 @@ bool CellRows::cell_area(std::int32_t c, std::int64_t t, std::int64_t wind, std:
            !__builtin_mul_overflow(ad, static_cast<I128>(f_lo ? 1 : 0), &base) &&
            !__builtin_add_overflow(base, diff * beta, &num);
     if (fits) {
-      Frac a{num, ad};
-      a.reduce();
-      put(a);
+      put(Frac{num, ad}); // reduced when made a Rational
       return true;
     }
   }
