@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <optional>
+#include <span>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -124,12 +126,9 @@ void add_run(RowAreas& row, std::int32_t w, const Rational& la, const Rational& 
 // The slab method of PATH.AREA.EXACT for every row: exact rationals, any boundary.
 class SlabRows {
 public:
+  // Makes nothing until the first row (the cell method usually decides every row).
   SlabRows(const std::vector<DownEdge>& edges, FillRule rule, std::int32_t w)
-      : edges_(edges), rule_(rule), w_(w), row_(w) {
-    slopes_.reserve(edges.size());
-    for (const DownEdge& e : edges)
-      slopes_.emplace_back(e.xb - e.xa, e.yb - e.ya);
-  }
+      : edges_(edges), rule_(rule), w_(w) {}
 
   // Emits row j's areas, in_row holding the edges with ya < the row's bottom and yb > its top.
   void row(std::int32_t j, const std::vector<const DownEdge*>& in_row,
@@ -138,7 +137,13 @@ public:
     const std::int64_t y1 = y0 + kSubpixelOne;
     const FillRule rule = rule_;
     const std::int32_t w = w_;
-    RowAreas& row = row_;
+    if (!row_) {
+      row_.emplace(w);
+      slopes_.reserve(edges_.size());
+      for (const DownEdge& e : edges_)
+        slopes_.emplace_back(e.xb - e.xa, e.yb - e.ya);
+    }
+    RowAreas& row = *row_;
     const auto slope_of = [&](const DownEdge* e) -> const Rational& {
       return slopes_[static_cast<std::size_t>(e - edges_.data())];
     };
@@ -231,7 +236,7 @@ private:
   const std::vector<DownEdge>& edges_;
   FillRule rule_;
   std::int32_t w_;
-  RowAreas row_;
+  std::optional<RowAreas> row_;
   std::vector<Rational> slopes_;
 };
 
@@ -465,9 +470,12 @@ public:
     });
   }
 
-  // Emits row j's areas and returns true, or returns false having emitted nothing where a cell
+  // Decides row j and returns true (its areas: results(), big()), or returns false where a cell
   // of the row needs the slab method. Rows must come in increasing order.
-  bool row(std::int32_t j, const std::function<void(const AreaCoverage&)>& emit);
+  bool row(std::int32_t j);
+  // The last row's cells with nonzero area, by column; the values of those marked big, in order.
+  [[nodiscard]] const std::vector<CellArea>& results() const { return out_; }
+  [[nodiscard]] const std::vector<Rational>& big() const { return big_; }
 
 private:
   bool collect(std::int32_t j);
@@ -764,7 +772,7 @@ bool CellRows::decide(std::int32_t j) {
   return true;
 }
 
-bool CellRows::row(std::int32_t j, const std::function<void(const AreaCoverage&)>& emit) {
+bool CellRows::row(std::int32_t j) {
   const bool collected = collect(j);
   const bool decided = collected && decide(j);
   for (const std::uint32_t k : touched_) {
@@ -772,28 +780,34 @@ bool CellRows::row(std::int32_t j, const std::function<void(const AreaCoverage&)
     wind_diff_[k] = 0;
   }
   touched_.clear();
-  if (!decided)
-    return false;
-  std::size_t b = 0;
-  for (const CellArea& a : out_)
-    emit(AreaCoverage{a.col, j, a.big ? big_[b++] : rational_of(a.area), Rational(0)});
-  return true;
+  return decided;
 }
 
-} // namespace
+// Returns floor(255 n / d + 1/2) for n / d in [0, 1], d > 0 (PATH.AREA.ALPHA).
+std::uint8_t alpha_of(Frac f) {
+  I128 num = 0, den = 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    if (!__builtin_mul_overflow(f.n, I128(510), &num) && !__builtin_add_overflow(num, f.d, &num) &&
+        !__builtin_mul_overflow(f.d, I128(2), &den))
+      return static_cast<std::uint8_t>(num / den);
+    f.reduce();
+  }
+  return detail::alpha_of(rational_of(f));
+}
 
-namespace detail {
-
-// rule: PATH.AREA.EXACT, PATH.AREA.CELLS
-void cover_area_by(const Path& path, std::int32_t w, std::int32_t h, AreaMethod method,
-                   const std::function<void(const AreaCoverage&)>& emit, AreaRows* rows) {
+// Walks the rows of [0, w) x [0, h) that some edge reaches into: cells_row(j, cells) for a row
+// the cell method decided, slabs.row(j, in_row, slab_pixel) for the others.
+template <class CellsRow>
+void area_rows(const Path& path, std::int32_t w, std::int32_t h, detail::AreaMethod method,
+               detail::AreaRows* rows, CellsRow&& cells_row,
+               const std::function<void(const AreaCoverage&)>& slab_pixel) {
   if (w <= 0 || h <= 0)
     return;
-  const Boundary b = boundary_of(path);
+  const detail::Boundary b = detail::boundary_of(path);
   if (!b.curves.empty())
     throw std::invalid_argument(
         "path: area coverage of curves is not implemented (PATH.AREA.EXACT)");
-  const std::vector<DownEdge> edges = down_edges(b);
+  const std::vector<DownEdge> edges = detail::down_edges(b);
   std::vector<const DownEdge*> active_list;
   ActiveEdges active(edges, active_list);
   SlabRows slabs(edges, path.fill_rule, w);
@@ -808,15 +822,66 @@ void cover_area_by(const Path& path, std::int32_t w, std::int32_t h, AreaMethod 
         in_row.push_back(e);
     if (in_row.empty())
       continue; // no edge reaches into the row: w = 0 in all of it
-    if (method == AreaMethod::kCells && cells.row(j, emit)) {
+    if (method == detail::AreaMethod::kCells && cells.row(j)) {
+      cells_row(j, cells);
       if (rows != nullptr)
         ++rows->cells;
       continue;
     }
-    slabs.row(j, in_row, emit);
+    slabs.row(j, in_row, slab_pixel);
     if (rows != nullptr)
       ++rows->slabs;
   }
+}
+
+} // namespace
+
+namespace detail {
+
+// rule: PATH.AREA.ALPHA
+std::uint8_t alpha_of(const Rational& a) {
+  // floor(a * 255 + 1/2) = (510 n + d) / (2 d) for a = n / d in [0, 1], d > 0: a quotient of
+  // non-negative integers, at most 255.
+  const BigInt n = boost::multiprecision::numerator(a);
+  const BigInt d = boost::multiprecision::denominator(a);
+  const BigInt q = (n * 510 + d) / (d * 2);
+  return static_cast<std::uint8_t>(q.convert_to<int>());
+}
+
+// rule: PATH.AREA.EXACT, PATH.AREA.CELLS
+void cover_area_by(const Path& path, std::int32_t w, std::int32_t h, AreaMethod method,
+                   const std::function<void(const AreaCoverage&)>& emit, AreaRows* rows) {
+  area_rows(
+      path, w, h, method, rows,
+      [&](std::int32_t j, const CellRows& cells) {
+        std::size_t k = 0;
+        for (const CellArea& a : cells.results())
+          emit(AreaCoverage{a.col, j, a.big ? cells.big()[k++] : rational_of(a.area), Rational(0)});
+      },
+      emit);
+}
+
+// rule: PATH.AREA.ALPHA, PATH.AREA.CELLS
+void cover_alpha_by(const Path& path, std::int32_t w, std::int32_t h, AreaMethod method,
+                    std::span<std::uint8_t> out, AreaRows* rows) {
+  if (w <= 0 || h <= 0)
+    return;
+  const auto stride = static_cast<std::size_t>(w);
+  if (out.size() != stride * static_cast<std::size_t>(h))
+    throw std::invalid_argument("path: alpha buffer is not w * h bytes (PATH.AREA.ALPHA)");
+  std::fill(out.begin(), out.end(), std::uint8_t{0});
+  area_rows(
+      path, w, h, method, rows,
+      [&](std::int32_t j, const CellRows& cells) {
+        std::uint8_t* row = out.data() + static_cast<std::size_t>(j) * stride;
+        std::size_t k = 0;
+        for (const CellArea& a : cells.results())
+          row[a.col] = a.big ? alpha_of(cells.big()[k++]) : alpha_of(a.area);
+      },
+      [&](const AreaCoverage& a) {
+        out[static_cast<std::size_t>(a.y) * stride + static_cast<std::size_t>(a.x)] =
+            alpha_of(a.area);
+      });
 }
 
 } // namespace detail
@@ -825,6 +890,12 @@ void cover_area_by(const Path& path, std::int32_t w, std::int32_t h, AreaMethod 
 void cover_area(const Path& path, std::int32_t w, std::int32_t h,
                 const std::function<void(const AreaCoverage&)>& emit) {
   detail::cover_area_by(path, w, h, detail::AreaMethod::kCells, emit, nullptr);
+}
+
+// rule: PATH.AREA.ALPHA
+void cover_area_alpha(const Path& path, std::int32_t w, std::int32_t h,
+                      std::span<std::uint8_t> alpha) {
+  detail::cover_alpha_by(path, w, h, detail::AreaMethod::kCells, alpha, nullptr);
 }
 
 // rule: PATH.AREA.EXACT

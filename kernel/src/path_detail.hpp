@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <tuple>
 #include <vector>
 
@@ -168,5 +169,10 @@ struct AreaRows {
 // cover_area by the method given; rows, when not null, counts the rows.
 void cover_area_by(const Path& path, std::int32_t w, std::int32_t h, AreaMethod method,
                    const std::function<void(const AreaCoverage&)>& emit, AreaRows* rows);
+// cover_area_alpha by the method given.
+void cover_alpha_by(const Path& path, std::int32_t w, std::int32_t h, AreaMethod method,
+                    std::span<std::uint8_t> out, AreaRows* rows);
+// floor(255 a + 1/2) for an area a in [0, 1] (PATH.AREA.ALPHA).
+[[nodiscard]] std::uint8_t alpha_of(const boost::multiprecision::cpp_rational& a);
 
 } // namespace rastrules::path::detail

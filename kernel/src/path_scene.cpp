@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "path_detail.hpp"
 #include "rastrules/fixed.hpp"
 #include "rastrules/path.hpp"
 #include "rastrules/snap.hpp"
@@ -41,14 +42,7 @@ std::string ExactArea::text() const {
 
 // rule: SCENE.OUTPUT.AREA
 std::uint8_t ExactArea::alpha() const {
-  if (!value_)
-    return 0;
-  // floor(a * 255 + 1/2) = (510 n + d) / (2 d) for a = n / d in [0, 1], d > 0: a quotient of
-  // non-negative integers, at most 255.
-  const BigInt n = boost::multiprecision::numerator(value_->area);
-  const BigInt d = boost::multiprecision::denominator(value_->area);
-  const BigInt q = (n * 510 + d) / (d * 2);
-  return static_cast<std::uint8_t>(q.convert_to<int>());
+  return value_ ? path::detail::alpha_of(value_->area) : std::uint8_t{0};
 }
 
 // rule: SCENE.OUTPUT.AREA

@@ -4,8 +4,9 @@
 // the generators' paths (ties on the pixel grid, stars, nested and repeated contours, far
 // vertices), paths off the grid lines (where the cells decide nearly every row), many contours
 // crossing in a few pixels (where they must decline), and glyph-like rings. Each case prints
-// how many rows each method decided.
-// Implements (properties for): PATH.AREA.CELLS, PATH.AREA.EXACT
+// how many rows each method decided. The 8-bit alphas of both methods are those of the exact
+// areas (PATH.AREA.ALPHA).
+// Implements (properties for): PATH.AREA.CELLS, PATH.AREA.EXACT, PATH.AREA.ALPHA
 
 #include <cstdint>
 #include <map>
@@ -78,6 +79,21 @@ void check_methods_agree(const pg::GPath& g, std::int32_t side) {
   const std::string d = difference(cells, slabs);
   if (!d.empty())
     RC_FAIL(d);
+  // The 8-bit alphas (PATH.AREA.ALPHA), by both methods: floor(255 a + 1/2) of those areas.
+  const auto stride = static_cast<std::size_t>(side);
+  std::vector<std::uint8_t> expected(stride * stride, 0);
+  kd::cover_area_by(
+      p, side, side, kd::AreaMethod::kSlabs,
+      [&](const kp::AreaCoverage& c) {
+        expected[static_cast<std::size_t>(c.y) * stride + static_cast<std::size_t>(c.x)] =
+            kd::alpha_of(c.area);
+      },
+      nullptr);
+  for (const kd::AreaMethod m : {kd::AreaMethod::kCells, kd::AreaMethod::kSlabs}) {
+    std::vector<std::uint8_t> alpha(expected.size(), 7);
+    kd::cover_alpha_by(p, side, side, m, alpha, nullptr);
+    RC_ASSERT(alpha == expected);
+  }
 }
 
 // A raw coordinate in [-1, side + 1] px that is not on a grid line.
@@ -94,14 +110,14 @@ pg::GContour off_grid_polygon(std::int32_t side, int lo, int hi) {
   return pg::polygon(v);
 }
 
-// rule: PATH.AREA.CELLS, PATH.AREA.EXACT
+// rule: PATH.AREA.CELLS, PATH.AREA.EXACT, PATH.AREA.ALPHA
 RC_GTEST_PROP(PathAreaCells, EqualSlabsOnTheGeneratorsPaths, ()) {
   const pg::GPath g = *pg::path(pc::kSide, false);
   RC_TAG(pg::name(g.kind), pg::fill_rule(g));
   check_methods_agree(g, pc::kSide);
 }
 
-// rule: PATH.AREA.CELLS, PATH.AREA.EXACT
+// rule: PATH.AREA.CELLS, PATH.AREA.EXACT, PATH.AREA.ALPHA
 RC_GTEST_PROP(PathAreaCells, EqualSlabsOffTheGridLines, ()) {
   constexpr std::int32_t kBig = 12;
   pg::GPath g;
@@ -113,7 +129,7 @@ RC_GTEST_PROP(PathAreaCells, EqualSlabsOffTheGridLines, ()) {
 }
 
 // Many small contours in a few pixels: crossings and several windings in most cells.
-// rule: PATH.AREA.CELLS, PATH.AREA.EXACT
+// rule: PATH.AREA.CELLS, PATH.AREA.EXACT, PATH.AREA.ALPHA
 RC_GTEST_PROP(PathAreaCells, EqualSlabsWhereManyContoursCross, ()) {
   pg::GPath g;
   g.evenodd = *rc::gen::arbitrary<bool>();
@@ -125,7 +141,7 @@ RC_GTEST_PROP(PathAreaCells, EqualSlabsWhereManyContoursCross, ()) {
 
 // Rings like a glyph's: a polygon and a smaller one inside it, reversed or not, sampled from
 // circles (many short edges per cell).
-// rule: PATH.AREA.CELLS, PATH.AREA.EXACT
+// rule: PATH.AREA.CELLS, PATH.AREA.EXACT, PATH.AREA.ALPHA
 RC_GTEST_PROP(PathAreaCells, EqualSlabsOnRings, ()) {
   constexpr std::int32_t kBig = 10;
   pg::GPath g;

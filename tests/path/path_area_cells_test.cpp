@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "path_detail.hpp"
@@ -83,6 +84,35 @@ TEST(PathAreaCells, RowsWhereACellMayHoldThreeWindingsGoToSlabs) {
   const ByMethod corner = both(
       make_path(FillRule::kNonZero, {polygon({{1, 1}, {3.3125, 1.375}, {2.1875, 3.625}})}), 4, 4);
   EXPECT_GT(corner.cell_rows.slabs, 0u);
+}
+
+// rule: PATH.AREA.ALPHA
+TEST(PathAreaCells, AlphaIsTheExactAreaRoundedHalfUpOnce) {
+  // Quarters, halves and whole pixels; a sliver of 1/1024 px^2 (alpha 0, still listed by
+  // cover_area); a triangle whose areas are not dyadic-friendly (its edges' heights are 3 px).
+  const path::Path square =
+      make_path(FillRule::kNonZero, {polygon({{0.5, 0.5}, {2.5, 0.5}, {2.5, 2.5}, {0.5, 2.5}})});
+  std::vector<std::uint8_t> a(16, 99);
+  path::cover_area_alpha(square, 4, 4, a);
+  EXPECT_EQ(
+      a, (std::vector<std::uint8_t>{64, 128, 64, 0, 128, 255, 128, 0, 64, 128, 64, 0, 0, 0, 0, 0}));
+  const path::Path sliver = make_path(
+      FillRule::kNonZero, {polygon({{1, 1}, {1.0625, 1}, {1.0625, 1.015625}, {1, 1.015625}})});
+  std::vector<std::uint8_t> b(4, 99);
+  path::cover_area_alpha(sliver, 2, 2, b);
+  EXPECT_EQ(b, (std::vector<std::uint8_t>{0, 0, 0, 0}));
+  EXPECT_EQ(path::cover_area(sliver, 2, 2).size(), 1u);
+  const path::Path tri = make_path(FillRule::kEvenOdd, {polygon({{0.25, 0}, {3, 3}, {0, 3}})});
+  std::vector<std::uint8_t> c(9, 99);
+  path::cover_area_alpha(tri, 3, 3, c);
+  for (const path::AreaCoverage& p : path::cover_area(tri, 3, 3)) {
+    const Q v = p.area * 255 + Q(1, 2);
+    const auto want = static_cast<int>(boost::multiprecision::numerator(v) /
+                                       boost::multiprecision::denominator(v));
+    EXPECT_EQ(c[static_cast<std::size_t>(p.y * 3 + p.x)], want) << p.x << ", " << p.y;
+  }
+  std::vector<std::uint8_t> wrong(8);
+  EXPECT_THROW(path::cover_area_alpha(tri, 3, 3, wrong), std::invalid_argument);
 }
 
 // A vertical edge along a column line through a row's top: it counts for the columns before it

@@ -4,7 +4,7 @@
 // and exact area coverage. Rules: spec/rules/path.md.
 // Implements: PATH.GEOMETRY, PATH.CONTOUR.CLOSE, PATH.WINDING, PATH.FILL.RULE,
 //             PATH.SAMPLE.TIE, PATH.COVER.SAMPLE, PATH.AREA.EXACT, PATH.DEGENERATE,
-//             PATH.CURVE.SAMPLE, PATH.AREA.CELLS
+//             PATH.CURVE.SAMPLE, PATH.AREA.CELLS, PATH.AREA.ALPHA
 // Needs, beyond the standard library, Boost.Multiprecision's headers (exact rational areas).
 
 #pragma once
@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include <boost/multiprecision/cpp_int.hpp>
@@ -93,6 +94,14 @@ struct AreaValue {
 // The same, each pixel passed to emit as it is found (memory: one row of the target).
 void cover_area(const Path& path, std::int32_t w, std::int32_t h,
                 const std::function<void(const AreaCoverage&)>& emit);
+
+// Writes the 8-bit alpha of every pixel of [0, w) x [0, h) into alpha (row by row, w * h
+// bytes, else std::invalid_argument): floor(255 a + 1/2) of the exact area a of cover_area, so
+// a pixel listed by cover_area may get alpha 0 (a < 1/510). Builds no rational where the area
+// fits 128-bit fractions. Paths with curves: std::invalid_argument, as cover_area.
+// rule: PATH.AREA.ALPHA
+void cover_area_alpha(const Path& path, std::int32_t w, std::int32_t h,
+                      std::span<std::uint8_t> alpha);
 
 using rastrules::to_string;
 
