@@ -30,6 +30,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "path_detail.hpp"
 #include "path_pictures.hpp"
 #include "path_rungs.hpp"
 #include "rastrules/io/glyph.hpp"
@@ -41,6 +42,7 @@
 namespace rastrules::bench::path_ladder {
 
 namespace kp = rastrules::path;
+namespace kd = rastrules::path::detail;
 namespace op = rastrules::oracle::path;
 namespace bp = rastrules::bench::paths;
 using rastrules::io::FreeTypeGlyph;
@@ -171,6 +173,15 @@ std::vector<AreaRung> area_rungs() {
                    out[static_cast<std::size_t>(a.y) * static_cast<std::size_t>(it.width) +
                        static_cast<std::size_t>(a.x)] = a.area.convert_to<double>();
                }});
+  r.push_back({"exact-alpha8", "kernel cover_area_alpha: the exact area's 8-bit alpha", false,
+               [](const bp::PathItem& it, const FreeTypeGlyph&, Dense& out) {
+                 std::vector<std::uint8_t> alpha(static_cast<std::size_t>(it.width) *
+                                                 static_cast<std::size_t>(it.height));
+                 kp::cover_area_alpha(it.lines, it.width, it.height, alpha);
+                 out.assign(alpha.begin(), alpha.end());
+                 for (double& v : out)
+                   v /= 255.0;
+               }});
   r.push_back(
       {"oracle", "CGAL arrangement, exact rationals", true,
        [](const bp::PathItem& it, const FreeTypeGlyph&, Dense& out) {
@@ -216,13 +227,15 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AreaRow, rung, note, seconds, repeats, err)
 struct SceneResult {
   std::string name, note;
   std::uint64_t items = 0, pixels = 0, segments = 0, touched = 0, conflation = 0;
+  std::uint64_t rows_by_cells = 0, rows_by_slabs = 0; // the exact rung's (PATH.AREA.CELLS)
   std::vector<AreaRow> rows;
   std::string curved_exact; // the exact rung on the curved outline
   std::uint64_t oracle_mismatch = 0;
   SampleRow samples;
 };
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SceneResult, name, note, items, pixels, segments, touched,
-                                   conflation, rows, curved_exact, oracle_mismatch, samples)
+                                   conflation, rows_by_cells, rows_by_slabs, rows, curved_exact,
+                                   oracle_mismatch, samples)
 
 // Calls f(a, b) for every segment of the lines-only path, closing lines included (raw).
 template <class F> void each_segment(const kp::Path& lines, F&& f) {
@@ -290,6 +303,14 @@ void run_area(Scene& sc, int repeats, int min_slow_repeats, SceneResult& res) {
         conflation[i][k] = true;
         ++res.conflation;
       }
+  }
+  // How the exact rung decided the rows.
+  for (const bp::PathItem& it : sc.s.items) {
+    kd::AreaRows by;
+    kd::cover_area_by(
+        it.lines, it.width, it.height, kd::AreaMethod::kCells, [](const kp::AreaCoverage&) {}, &by);
+    res.rows_by_cells += by.cells;
+    res.rows_by_slabs += by.slabs;
   }
   // The exact rung on the curved outlines.
   res.curved_exact = "lines only: same as exact";
@@ -455,7 +476,9 @@ std::string markdown(const std::vector<SceneResult>& results, const std::string&
     if (r.rows.empty())
       continue;
     o << "### " << r.name << " (" << r.note << "; " << r.segments << " line segments, " << r.pixels
-      << " pixels, " << r.touched << " covered, " << r.conflation << " conflation pixels)\n\n";
+      << " pixels, " << r.touched << " covered, " << r.conflation
+      << " conflation pixels; exact rows: " << r.rows_by_cells << " by cells, " << r.rows_by_slabs
+      << " by slabs)\n\n";
     o << "| rung | time | x exact's time | mean error | max error | visible errors | on "
          "conflation pixels | max error on conflation pixels |\n";
     o << "|---|---|---|---|---|---|---|---|\n";
@@ -498,17 +521,21 @@ std::string markdown(const std::vector<SceneResult>& results, const std::string&
   if (!areas)
     return o.str();
   o << "\n## Exact area against FreeType's gray raster (time ratio, same lines-only outlines)\n\n";
-  o << "| scene | exact | freetype-gray | exact / gray |\n|---|---|---|---|\n";
+  o << "| scene | exact | exact-alpha8 | freetype-gray | exact / gray | exact-alpha8 / gray |\n"
+       "|---|---|---|---|---|---|\n";
   for (const SceneResult& r : results) {
-    double ex = 0, gr = 0;
+    double ex = 0, al = 0, gr = 0;
     for (const AreaRow& row : r.rows) {
       if (row.rung == "exact")
         ex = row.seconds;
+      if (row.rung == "exact-alpha8")
+        al = row.seconds;
       if (row.rung == "freetype-gray")
         gr = row.seconds;
     }
-    o << "| " << r.name << " | " << seconds_text(ex) << " | " << seconds_text(gr) << " | "
-      << fmt(gr > 0 ? ex / gr : 0) << " |\n";
+    o << "| " << r.name << " | " << seconds_text(ex) << " | " << seconds_text(al) << " | "
+      << seconds_text(gr) << " | " << fmt(gr > 0 ? ex / gr : 0) << " | "
+      << fmt(gr > 0 ? al / gr : 0) << " |\n";
   }
   return o.str();
 }
