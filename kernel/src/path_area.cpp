@@ -501,8 +501,8 @@ private:
   std::vector<Rational> big_;
 };
 
-// Collects row j's pieces, crossings and integrals; false where an edge passes through a grid
-// corner or has a vertex on one (PATH.AREA.CELLS). A cell's pieces are the edges that meet its
+// Collects row j's pieces, crossings and integrals (PATH.AREA.CELLS); false where the row is
+// the slab method's (a contour inside one cell). A cell's pieces are the edges that meet its
 // interior; its crossings are where they cross the cell's border moved into it by
 // infinitesimals (x by eps, y by delta), so that a vertex on a grid line and an edge along one
 // are decided like any other point.
@@ -550,9 +550,6 @@ bool CellRows::collect(std::int32_t j) {
   };
   for (const std::uint32_t i : active_) {
     const CellEdge& e = edges_[i];
-    for (const auto& [vx, vy] : {std::pair{e.x0, e.y0}, std::pair{e.x1, e.y1}})
-      if (vy >= t && vy <= bot && on_grid(vx) && on_grid(vy))
-        return false; // a vertex on a grid corner
     const std::int64_t dx = e.x1 - e.x0, dy = e.y1 - e.y0;
     const int sdx = sign_of(dx);
     // Crossings of the column lines x = k kW, k in [k0, k1], at height yn / q_y (tie order:
@@ -562,9 +559,9 @@ bool CellRows::collect(std::int32_t j) {
       const std::int64_t adx = dx > 0 ? dx : -dx;
       for (std::int64_t k = std::max<std::int64_t>(ceil_div(xlo, sc * kW), 0);
            k <= std::min(floor_div(xhi, sc * kW), w); ++k) {
+        // At a grid corner (yn / qy = t or bot) the moved border meets the edge on a side, at
+        // that side's end (position kW, 2 kW, 3 kW or 4 kW), never on the top or bottom.
         const auto [yn, qy] = y_at(k * kW);
-        if (yn == t * qy || yn == bot * qy)
-          return false; // through a grid corner
         const std::int64_t line = k * kW * sc;
         if (xlo < line) // the right side of column k - 1, walked down
           cross(k - 1, sdx, (kW - t) * qy + yn, qy, -dy * sdx, adx);
@@ -618,8 +615,8 @@ bool CellRows::collect(std::int32_t j) {
     // x at height y is xn(y) / q exactly.
     const auto xn = [&](std::int64_t y) { return (e.x0 * dy + (y - e.y0) * dx) * dir; };
     const std::int64_t pa = xn(ya), pb = xn(yb);
-    if ((ya == t && pa % (q * kW) == 0) || (yb == bot && pb % (q * kW) == 0))
-      return false; // through a grid corner
+    const bool corner_a = ya == t && pa % (q * kW) == 0; // through a top corner of the row
+    const bool corner_b = yb == bot && pb % (q * kW) == 0;
     const std::int64_t xlo = std::min(pa, pb), xhi = std::max(pa, pb);
     const std::int64_t cmin = floor_div(xlo, q * kW), cmax = floor_div(xhi, q * kW);
     add_full(cmin, dir * kW * h);
@@ -627,10 +624,14 @@ bool CellRows::collect(std::int32_t j) {
     add_pieces(cmin, ceil_div(xhi, q * kW) - 1, i);
     if (ya == t) { // crosses the row's top: w at the top-left corners of columns <= ca
       const std::int64_t ca = floor_div(pa, q * kW);
-      add_wind(ca, dir);
-      cross(ca, -dir, pa - ca * kW * q, q, sn, q);
+      if (corner_a) {
+        add_wind(ca - 1, dir); // right of the top-left corners before it; no top side crossed
+      } else {
+        add_wind(ca, dir);
+        cross(ca, -dir, pa - ca * kW * q, q, sn, q);
+      }
     }
-    if (yb == bot) {
+    if (yb == bot && !corner_b) {
       const std::int64_t cb = floor_div(pb, q * kW);
       cross(cb, dir, (2 * kW + cb * kW + kW) * q - pb, q, sn, q);
     }

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The cell method of exact area coverage (PATH.AREA.CELLS) on examples: which rows it decides
 // and which it leaves to the slab method, and that both give the same exact areas — vertices
-// and edges on grid lines (decided by cells), a contour inside one pixel, edges crossing in a
-// pixel, an edge doubling back and a vertex on a grid corner (left to the slabs), and the
-// shrunk counterexamples of the properties.
+// and edges on grid lines and grid corners (decided by cells), a contour inside one pixel,
+// edges crossing in a pixel and an edge doubling back (left to the slabs), and the shrunk
+// counterexamples of the properties.
 
 #include <gtest/gtest.h>
 
@@ -60,6 +60,19 @@ TEST(PathAreaCells, VerticesAndEdgesOnGridLinesAreDecidedByCells) {
   }
 }
 
+// A vertex on a grid corner and an edge through one: the moved border meets them on a side.
+// rule: PATH.AREA.CELLS
+TEST(PathAreaCells, VerticesAndEdgesThroughGridCornersAreDecidedByCells) {
+  const ByMethod corner = both(
+      make_path(FillRule::kNonZero, {polygon({{1, 1}, {3.3125, 1.375}, {2.1875, 3.625}})}), 4, 4);
+  EXPECT_EQ(corner.cell_rows.slabs, 0u);
+  const ByMethod through =
+      both(make_path(FillRule::kEvenOdd, {polygon({{0.5, 0.5}, {3.5, 3.5}, {3.5, 0.25}}),
+                                          polygon({{3.75, 0.5}, {0.75, 3.5}, {0.25, 3.75}})}),
+           4, 4);
+  EXPECT_GT(through.cell_rows.cells, 0u);
+}
+
 // rule: PATH.AREA.CELLS
 TEST(PathAreaCells, RowsWhereACellMayHoldThreeWindingsGoToSlabs) {
   // A contour inside one pixel (its winding is seen by no side of the pixel).
@@ -69,8 +82,7 @@ TEST(PathAreaCells, RowsWhereACellMayHoldThreeWindingsGoToSlabs) {
       4, 4);
   EXPECT_EQ(inside.cell_rows.slabs, 1u);
   EXPECT_EQ(area_map(inside.cells).at({2, 2}), Q(1));
-  // Two edges crossing inside a pixel (a bow tie), an edge doubling back, a vertex on a grid
-  // corner.
+  // Two edges crossing inside a pixel (a bow tie), an edge doubling back.
   const ByMethod crossing = both(
       make_path(FillRule::kEvenOdd,
                 {polygon({{0.3125, 0.3125}, {3.6875, 3.625}, {3.6875, 0.3125}, {0.3125, 3.625}})}),
@@ -81,9 +93,6 @@ TEST(PathAreaCells, RowsWhereACellMayHoldThreeWindingsGoToSlabs) {
                 {polygon({{0.3125, 0.3125}, {3.6875, 3.625}, {0.3125, 0.3125}, {0.5, 3.125}})}),
       4, 4);
   EXPECT_GT(back.cell_rows.slabs, 0u);
-  const ByMethod corner = both(
-      make_path(FillRule::kNonZero, {polygon({{1, 1}, {3.3125, 1.375}, {2.1875, 3.625}})}), 4, 4);
-  EXPECT_GT(corner.cell_rows.slabs, 0u);
 }
 
 // rule: PATH.AREA.ALPHA
