@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
-// 2D paths: exact area coverage (spec/rules/path.md, PATH.AREA.EXACT and PATH.AREA.CELLS). Each
-// pixel row is decided cell by cell from signed integrals of the winding number in exact
-// 128-bit fractions wherever the cell provably holds at most two winding numbers; a row where a
-// cell does not goes to the slab method, which is exact for any boundary.
+// 2D paths: exact area coverage and its 8-bit alpha (spec/rules/path.md, PATH.AREA.EXACT,
+// PATH.AREA.CELLS, PATH.AREA.ALPHA). Each pixel row is decided cell by cell from signed
+// integrals of the winding number in exact 128-bit fractions wherever the cell provably holds
+// at most two winding numbers; a row where a cell does not goes to the slab method, which is
+// exact for any boundary.
 
 #include <algorithm>
 #include <cstddef>
@@ -240,6 +241,14 @@ private:
   std::vector<Rational> slopes_;
 };
 
+// Bit budgets of the cell method (PATH.AREA.CELLS), for raw coordinates |v| <= 2^23
+// (PATH.GEOMETRY) and targets of at most kMaxTargetSide = 2^14 px (grid lines at |x|, |y| <=
+// 2^22): edge runs |dx|, |dy| <= 2^24; x of an edge at a row line times |dy| (xn), and y at a
+// column line times |dx| (yn), < 2^47 + 2^48 < 2^49; border positions p < 2^22 2^24 + 2^49 and
+// their cross products with q <= 2^24 in __int128; orientations < 2^49; the ramp integrals
+// < 2^101 and every fraction sum checked for overflow (a sum that would leave __int128 is taken
+// in cpp_rational); full-width covers |dir kW h| <= 2^16 an edge, < 2^42 for the 2^26 edges a
+// 64 MiB scene can hold. Not proved by Z3: the bounds above are by hand.
 __extension__ typedef __int128 I128;
 __extension__ typedef unsigned __int128 U128;
 
@@ -426,7 +435,7 @@ class CellRows {
 public:
   CellRows(const detail::Boundary& b, std::size_t contours, FillRule rule, std::int32_t w,
            std::int32_t h)
-      : rule_(rule), w_(w), h_(h), force_(static_cast<std::size_t>(h), 0),
+      : rule_(rule), w_(w), force_(static_cast<std::size_t>(h), 0),
         full_diff_(static_cast<std::size_t>(w) + 2, 0),
         wind_diff_(static_cast<std::size_t>(w) + 2, 0) {
     // Edges by contour (boundary_into lists each contour's segments, then its closing line).
@@ -485,7 +494,7 @@ private:
                  std::size_t cross_end, std::size_t parts_at, std::size_t parts_end);
 
   FillRule rule_;
-  std::int32_t w_, h_;
+  std::int32_t w_;
   std::vector<CellEdge> edges_;
   std::vector<std::uint32_t> order_; // edges by ymin
   std::size_t next_ = 0;
