@@ -18,6 +18,7 @@
 
 #include "path_detail.hpp"
 #include "rastrules/fixed.hpp"
+#include "rastrules/formula/edge.hpp"
 #include "rastrules/path.hpp"
 
 namespace rastrules::path {
@@ -354,21 +355,17 @@ struct CellEdge {
   [[nodiscard]] std::int64_t ymax() const { return std::max(y0, y1); }
 };
 
-// Orientation of c against the directed line a -> b: (b - a) x (c - a); |.| <= 2^49 in range.
-std::int64_t orient(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by,
-                    std::int64_t cx, std::int64_t cy) {
-  return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-}
-
 // Whether the closed segments e and f meet at a point of the closed square [l, l + kW] x
 // [t, t + kW]; collinear segments that overlap count as meeting anywhere (conservative).
 bool meet_in_cell(const CellEdge& e, const CellEdge& f, std::int64_t l, std::int64_t t) {
-  const std::int64_t o1 = orient(e.x0, e.y0, e.x1, e.y1, f.x0, f.y0);
-  const std::int64_t o2 = orient(e.x0, e.y0, e.x1, e.y1, f.x1, f.y1);
+  // Orientations (edge functions, |.| <= 2^49 in range).
+  using formula::edge_value;
+  const std::int64_t o1 = edge_value(e.x0, e.y0, e.x1, e.y1, f.x0, f.y0);
+  const std::int64_t o2 = edge_value(e.x0, e.y0, e.x1, e.y1, f.x1, f.y1);
   if ((o1 > 0 && o2 > 0) || (o1 < 0 && o2 < 0))
     return false;
-  const std::int64_t o3 = orient(f.x0, f.y0, f.x1, f.y1, e.x0, e.y0);
-  const std::int64_t o4 = orient(f.x0, f.y0, f.x1, f.y1, e.x1, e.y1);
+  const std::int64_t o3 = edge_value(f.x0, f.y0, f.x1, f.y1, e.x0, e.y0);
+  const std::int64_t o4 = edge_value(f.x0, f.y0, f.x1, f.y1, e.x1, e.y1);
   if ((o3 > 0 && o4 > 0) || (o3 < 0 && o4 < 0))
     return false;
   if (o1 == 0 && o2 == 0) { // collinear: meet iff their extents overlap
