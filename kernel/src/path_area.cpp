@@ -19,6 +19,7 @@
 #include "path_detail.hpp"
 #include "rastrules/fixed.hpp"
 #include "rastrules/formula/edge.hpp"
+#include "rastrules/formula/path_area.hpp"
 #include "rastrules/path.hpp"
 
 namespace rastrules::path {
@@ -243,13 +244,14 @@ private:
 };
 
 // Bit budgets of the cell method (PATH.AREA.CELLS), for raw coordinates |v| <= 2^23
-// (PATH.GEOMETRY) and targets of at most kMaxTargetSide = 2^14 px (grid lines at |x|, |y| <=
-// 2^22): edge runs |dx|, |dy| <= 2^24; x of an edge at a row line times |dy| (xn), and y at a
-// column line times |dx| (yn), < 2^47 + 2^48 < 2^49; border positions p < 2^22 2^24 + 2^49 and
-// their cross products with q <= 2^24 in __int128; orientations < 2^49; the ramp integrals
-// < 2^101 and every fraction sum checked for overflow (a sum that would leave __int128 is taken
-// in cpp_rational); full-width covers |dir kW h| <= 2^16 an edge, < 2^42 for the 2^26 edges a
-// 64 MiB scene can hold. Not proved by Z3: the bounds above are by hand.
+// (PATH.GEOMETRY) and targets of at most kMaxTargetSide = 2^14 px (area_rows refuses larger
+// ones): x at a row line times |dy| (xn) and y at a column line times |dx| (yn) within 2^23
+// times the run; border positions below 2^34, compared by cross products in __int128;
+// orientations within 2^49 and the common point's numerators within 2^74; the ramp integrals
+// in [0, 2^94] and every fraction sum checked for overflow (a sum that would leave __int128 is
+// taken in cpp_rational); full-width covers |dir kW h| <= 2^16 an edge, < 2^42 for the 2^26
+// edges a 64 MiB scene can hold. proofs/path/area_budget.cpp proves them with Z3 on the
+// templates of rastrules/formula/path_area.hpp, which the code below calls.
 __extension__ typedef __int128 I128;
 __extension__ typedef unsigned __int128 U128;
 
@@ -260,6 +262,9 @@ constexpr std::int64_t kCellArea = kW * kW; // a pixel's area, raw squared
 constexpr bool on_grid(std::int64_t v) {
   return (v & (kW - 1)) == 0;
 }
+
+// The select of the formula templates on concrete values.
+constexpr auto kSelect = [](bool c, auto t, auto f) { return c ? t : f; };
 
 int sign_of(std::int64_t v) {
   return (v > 0) - (v < 0);
@@ -376,30 +381,16 @@ bool meet_in_cell(const CellEdge& e, const CellEdge& f, std::int64_t l, std::int
     return overlap_x && overlap_y;
   }
   // One common point: e(u), u = o3 / (o3 - o4) (o3 != o4 as the lines are not parallel here).
-  I128 den = static_cast<I128>(o3) - o4;
-  I128 nx = static_cast<I128>(e.x0) * den + static_cast<I128>(o3) * (e.x1 - e.x0);
-  I128 ny = static_cast<I128>(e.y0) * den + static_cast<I128>(o3) * (e.y1 - e.y0);
-  if (den < 0) {
-    den = -den;
-    nx = -nx;
-    ny = -ny;
-  }
-  return nx >= static_cast<I128>(l) * den && nx <= static_cast<I128>(l + kW) * den &&
-         ny >= static_cast<I128>(t) * den && ny <= static_cast<I128>(t + kW) * den;
+  const formula::CellMeetPoint<I128> m =
+      formula::cell_meet_point<I128>(e.x0, e.y0, e.x1, e.y1, o3, o4, kSelect);
+  return formula::cell_meet_inside<I128>(m, l, t);
 }
 
 // The integral over y in [ya, ya + h] of max(x(y) - lo, 0), x linear from pa / q to pb / q,
-// times 2 q |dx| (dx: the edge's run, != 0, with |pb - pa| = h |dx|). |result| < 2^101.
+// times 2 q |dx| (dx: the edge's run, != 0, with |pb - pa| = h |dx|); in [0, 2^94].
 I128 ramp_integral(I128 pa, I128 pb, std::int64_t q, std::int64_t h, std::int64_t adx,
                    std::int64_t lo) {
-  const I128 ua = pa - static_cast<I128>(lo) * q;
-  const I128 ub = pb - static_cast<I128>(lo) * q;
-  if (ua >= 0 && ub >= 0)
-    return static_cast<I128>(h) * (ua + ub) * adx;
-  if (ua <= 0 && ub <= 0)
-    return 0;
-  const I128 up = ua > 0 ? ua : ub;
-  return up * up;
+  return formula::cell_ramp_integral<I128>(pa, pb, q, h, adx, lo, kSelect);
 }
 
 // One cell's records of a pixel row: a piece of an edge in the cell, a crossing of the
@@ -570,9 +561,9 @@ bool CellRows::collect(std::int32_t j) {
         const auto [yn, qy] = y_at(k * kW);
         const std::int64_t line = k * kW * sc;
         if (xlo < line) // the right side of column k - 1, walked down
-          cross(k - 1, sdx, (kW - t) * qy + yn, qy, -dy * sdx, adx);
+          cross(k - 1, sdx, formula::cell_right_position(yn, t, qy), qy, -dy * sdx, adx);
         if (line < xhi) // the left side of column k, walked up
-          cross(k, -sdx, (3 * kW + bot) * qy - yn, qy, -dy * sdx, adx);
+          cross(k, -sdx, formula::cell_left_position(yn, t, qy), qy, -dy * sdx, adx);
       }
       return true;
     };
@@ -612,14 +603,16 @@ bool CellRows::collect(std::int32_t j) {
       }
       if (ya == t) {
         add_wind(c, dir);
-        cross(c, -dir, e.x0 - l, 1, 0, 1);
+        cross(c, -dir, formula::cell_top_position<std::int64_t>(e.x0, c, 1), 1, 0, 1);
       }
       if (yb == bot)
-        cross(c, dir, 2 * kW + l + kW - e.x0, 1, 0, 1);
+        cross(c, dir, formula::cell_bottom_position<std::int64_t>(e.x0, c, 1), 1, 0, 1);
       continue;
     }
     // x at height y is xn(y) / q exactly.
-    const auto xn = [&](std::int64_t y) { return (e.x0 * dy + (y - e.y0) * dx) * dir; };
+    const auto xn = [&](std::int64_t y) {
+      return formula::cell_x_numerator<std::int64_t>(e.x0, e.y0, dx, dy, dir, y);
+    };
     const std::int64_t pa = xn(ya), pb = xn(yb);
     const bool corner_a = ya == t && pa % (q * kW) == 0; // through a top corner of the row
     const bool corner_b = yb == bot && pb % (q * kW) == 0;
@@ -634,16 +627,17 @@ bool CellRows::collect(std::int32_t j) {
         add_wind(ca - 1, dir); // right of the top-left corners before it; no top side crossed
       } else {
         add_wind(ca, dir);
-        cross(ca, -dir, pa - ca * kW * q, q, sn, q);
+        cross(ca, -dir, formula::cell_top_position(pa, ca, q), q, sn, q);
       }
     }
     if (yb == bot && !corner_b) {
       const std::int64_t cb = floor_div(pb, q * kW);
-      cross(cb, dir, (2 * kW + cb * kW + kW) * q - pb, q, sn, q);
+      cross(cb, dir, formula::cell_bottom_position(pb, cb, q), q, sn, q);
     }
     const std::int64_t adx = dx > 0 ? dx : -dx;
     if (!column_lines(xlo, xhi, q, [&](std::int64_t x) {
-          return std::pair{(e.y0 * dx + (x - e.x0) * dy) * sdx, adx};
+          return std::pair{formula::cell_y_numerator<std::int64_t>(e.x0, e.y0, dx, dy, sdx, x),
+                           adx};
         }))
       return false;
     const std::int64_t den = 2 * q * adx;
@@ -679,7 +673,7 @@ bool CellRows::cell_area(std::int32_t c, std::int64_t t, std::int64_t wind, std:
       const CellEdge& f = edges_[fi];
       if (e.next == fi || e.prev == fi) {
         const std::int64_t ex = e.x1 - e.x0, ey = e.y1 - e.y0, fx = f.x1 - f.x0, fy = f.y1 - f.y0;
-        if (ex * fy - ey * fx == 0 && ex * fx + ey * fy < 0)
+        if (formula::cell_doubles_back<std::int64_t>(ex, ey, fx, fy))
           return false; // doubles back (a contour of two edges always does)
         continue;
       }
@@ -692,10 +686,11 @@ bool CellRows::cell_area(std::int32_t c, std::int64_t t, std::int64_t wind, std:
   std::sort(crosses_.begin() + static_cast<std::ptrdiff_t>(cross_at),
             crosses_.begin() + static_cast<std::ptrdiff_t>(cross_end),
             [](const CrossRec& a, const CrossRec& b) {
-              const I128 lhs = static_cast<I128>(a.p) * b.q, rhs = static_cast<I128>(b.p) * a.q;
-              if (lhs != rhs)
-                return lhs < rhs;
-              return static_cast<I128>(a.sn) * b.sd < static_cast<I128>(b.sn) * a.sd;
+              if (formula::cell_position_less<I128>(a.p, a.q, b.p, b.q))
+                return true;
+              if (formula::cell_position_less<I128>(b.p, b.q, a.p, a.q))
+                return false;
+              return formula::cell_position_less<I128>(a.sn, a.sd, b.sn, b.sd);
             });
   std::int64_t cur = wind, lo = wind, hi = wind;
   for (std::size_t k = cross_at; k < cross_end; ++k) {
@@ -810,6 +805,9 @@ void area_rows(const Path& path, std::int32_t w, std::int32_t h, detail::AreaMet
                const std::function<void(const AreaCoverage&)>& slab_pixel) {
   if (w <= 0 || h <= 0)
     return;
+  if (w > kMaxTargetSide || h > kMaxTargetSide) // the cell method's budgets assume it
+    throw std::invalid_argument(
+        "path: area coverage of a target wider or taller than 16384 px (PATH.AREA.CELLS)");
   const detail::Boundary b = detail::boundary_of(path);
   if (!b.curves.empty())
     throw std::invalid_argument(

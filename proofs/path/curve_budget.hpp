@@ -185,6 +185,31 @@ inline z3::expr lemma_d(const z3::expr& f, const z3::expr& d, const z3::expr& n,
                      -b - 1 <= f && f <= b);
 }
 
+// Proves lemmas P, M, L, A and D (above) on fresh variables; returns whether all are PROVED.
+// The budget theorems take instances of them as hypotheses.
+inline bool prove_product_lemmas(Prover& pr) {
+  z3::context& ctx = pr.ctx();
+  const z3::expr x = ctx.int_const("lx"), y = ctx.int_const("ly");
+  const z3::expr bx = ctx.int_const("lX"), by = ctx.int_const("lY");
+  const z3::expr f = ctx.int_const("lf"), d = ctx.int_const("ld"), n = ctx.int_const("ln");
+  bool lemmas = true;
+  lemmas &= pr.prove("lemma P: |x| <= X, |y| <= Y => |x y| <= X Y",
+                     {-bx <= x, x <= bx, -by <= y, y <= by},
+                     -(bx * by) <= x * y && x * y <= bx * by) == Status::kProved;
+  lemmas &= pr.prove("lemma M: 0 <= x <= X, 0 <= y <= Y => 0 <= x y <= X Y",
+                     {0 <= x, x <= bx, 0 <= y, y <= by},
+                     0 <= x * y && x * y <= bx * by) == Status::kProved;
+  lemmas &= pr.prove("lemma L: 0 <= X <= x, 0 <= Y <= y => X Y <= x y",
+                     {0 <= bx, bx <= x, 0 <= by, by <= y}, bx * by <= x * y) == Status::kProved;
+  lemmas &= pr.prove("lemma A: |x| <= X, 0 <= y <= Y => |x y| <= X Y",
+                     {-bx <= x, x <= bx, 0 <= y, y <= by},
+                     -(bx * by) <= x * y && x * y <= bx * by) == Status::kProved;
+  lemmas &= pr.prove("lemma D: d >= 1, f d <= n < (f + 1) d, |n| <= B d => -B - 1 <= f <= B",
+                     {d >= 1, f * d <= n, n < (f + 1) * d, -(bx * d) <= n, n <= bx * d},
+                     -bx - 1 <= f && f <= bx) == Status::kProved;
+  return lemmas;
+}
+
 // For model F (ranges from F::kMinRaw, F::kMaxRaw; bounds F::kCoef ...):
 //   C1. power coefficients (quadratic, cubic) of q_i, and g = y - s.y, in [kMinRaw, kMaxRaw]:
 //       every step fits int64_t, |c_j| <= kCoef (kCoefQuad), |3 b_i(g)| <= kBern, g(1) fits;
@@ -236,26 +261,7 @@ template <class F> void prove_curve_budget(Prover& pr, unsigned parts = kAllCurv
   // Results cast to void below are computed for the "fits" obligations they record.
 
   // Lemmas P, M, L, A, D on fresh variables (C2 .. C6 use them).
-  bool lemmas = true;
-  if ((parts & ~unsigned{kC1}) != 0) {
-    const z3::expr x = ctx.int_const("lx"), y = ctx.int_const("ly");
-    const z3::expr bx = ctx.int_const("lX"), by = ctx.int_const("lY");
-    const z3::expr f = ctx.int_const("lf"), d = ctx.int_const("ld"), n = ctx.int_const("ln");
-    lemmas &= pr.prove("lemma P: |x| <= X, |y| <= Y => |x y| <= X Y",
-                       {-bx <= x, x <= bx, -by <= y, y <= by},
-                       -(bx * by) <= x * y && x * y <= bx * by) == Status::kProved;
-    lemmas &= pr.prove("lemma M: 0 <= x <= X, 0 <= y <= Y => 0 <= x y <= X Y",
-                       {0 <= x, x <= bx, 0 <= y, y <= by},
-                       0 <= x * y && x * y <= bx * by) == Status::kProved;
-    lemmas &= pr.prove("lemma L: 0 <= X <= x, 0 <= Y <= y => X Y <= x y",
-                       {0 <= bx, bx <= x, 0 <= by, by <= y}, bx * by <= x * y) == Status::kProved;
-    lemmas &= pr.prove("lemma A: |x| <= X, 0 <= y <= Y => |x y| <= X Y",
-                       {-bx <= x, x <= bx, 0 <= y, y <= by},
-                       -(bx * by) <= x * y && x * y <= bx * by) == Status::kProved;
-    lemmas &= pr.prove("lemma D: d >= 1, f d <= n < (f + 1) d, |n| <= B d => -B - 1 <= f <= B",
-                       {d >= 1, f * d <= n, n < (f + 1) * d, -(bx * d) <= n, n <= bx * d},
-                       -bx - 1 <= f && f <= bx) == Status::kProved;
-  }
+  const bool lemmas = (parts & ~unsigned{kC1}) == 0 || prove_product_lemmas(pr);
   const auto needs_lemmas = [&](const std::string& name) {
     if (!lemmas)
       pr.skip(name, "lemma P, M, L, A or D not proved");

@@ -140,5 +140,35 @@ TEST(PathAreaCells, RegressionVerticalEdgeOnAColumnLineCountsForTheColumnsBefore
   EXPECT_EQ(m.at({0, 1}), Q(1));
 }
 
+// Edges across the whole coordinate range and ending at its right end, in the widest target
+// (the bounds proofs/path/area_budget.cpp proves assume at most kMaxTargetSide px a side): both
+// methods agree, every row by cells; a larger target is refused.
+// rule: PATH.AREA.CELLS
+TEST(PathAreaCells, EdgesAtTheEndsOfTheRangeInTheWidestTarget) {
+  constexpr std::int64_t kMax = std::int64_t{1} << 23;
+  const path::Path p =
+      make_path(FillRule::kNonZero,
+                {raw_polygon({{-kMax, -kMax}, {kMax, kMax}, {kMax, -kMax}}),
+                 raw_polygon({{kMaxTargetSide * 256 - 64, 600}, {kMax, 700}, {1024, 740}})});
+  const ByMethod r = both(p, kMaxTargetSide, 3);
+  EXPECT_EQ(r.cell_rows.slabs, 0u);
+  const auto m = area_map(r.cells);
+  EXPECT_EQ(m.at({0, 0}), Q(1, 2)); // where y < x: half of pixel (0, 0)
+  EXPECT_EQ(m.at({0, 5}), Q(1));
+  EXPECT_EQ(m.at({1, 16383}), Q(1));
+  std::vector<std::uint8_t> alpha(static_cast<std::size_t>(kMaxTargetSide) * 3);
+  path::cover_area_alpha(p, kMaxTargetSide, 3, alpha);
+  EXPECT_EQ(alpha[0], 128);
+  try {
+    (void)path::cover_area(p, kMaxTargetSide + 1, 3);
+    ADD_FAILURE() << "a target above kMaxTargetSide was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "path: area coverage of a target wider or taller than 16384 px (PATH.AREA.CELLS)");
+  }
+  std::vector<std::uint8_t> tall(4 * (static_cast<std::size_t>(kMaxTargetSide) + 1));
+  EXPECT_THROW(path::cover_area_alpha(p, 4, kMaxTargetSide + 1, tall), std::invalid_argument);
+}
+
 } // namespace
 } // namespace rastrules::test

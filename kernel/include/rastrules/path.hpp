@@ -86,8 +86,8 @@ struct AreaValue {
 };
 
 // Returns every pixel of [0, w) x [0, h) with nonzero area under the fill rule, row by row.
-// Preconditions: 0 <= w, h <= kMaxTargetSide. Paths with curves are not supported yet: throws
-// std::invalid_argument (PATH.AREA.EXACT).
+// A target side above kMaxTargetSide (the bound the cell method's budgets are proved for) and
+// paths with curves (not supported yet) throw std::invalid_argument (PATH.AREA.EXACT).
 // rule: PATH.AREA.EXACT
 [[nodiscard]] std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w,
                                                    std::int32_t h);
