@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -516,15 +517,24 @@ double grid_point(std::int64_t k) {
   return static_cast<double>(k) * 0x1p-30;
 }
 
-// Returns the sign of P(k / 2^30), exactly: from the double value when it lies farther from 0
-// than `bound` (horner_error_bound(p)), else from P(k / 2^30) 2^90 in __int128.
+// The filter's sign of P(k / 2^30): from the double value when it lies farther from 0 than
+// `bound` (horner_error_bound(p)); nothing where it does not.
 // rule: PATH.CURVE.FILTER
-int sign_at_grid(const Cubic& p, std::int64_t k, double bound) {
+std::optional<int> filter_sign(const Cubic& p, std::int64_t k, double bound) {
   const double v = p.approx(grid_point(k));
   if (v > bound)
     return 1;
   if (v < -bound)
     return -1;
+  return std::nullopt;
+}
+
+// Returns the sign of P(k / 2^30), exactly: the filter's, else from P(k / 2^30) 2^90 in
+// __int128.
+// rule: PATH.CURVE.FILTER
+int sign_at_grid(const Cubic& p, std::int64_t k, double bound) {
+  if (const std::optional<int> s = filter_sign(p, k, bound))
+    return *s;
   return wide_sign(p.scaled(k));
 }
 
@@ -538,24 +548,31 @@ std::int64_t lipschitz(const Cubic& x) {
          3 * (x.c[3] < 0 ? -x.c[3] : x.c[3]);
 }
 
+// The double filter (PATH.CURVE.FILTER) of a crossing's x on [k, k + 1] / 2^30: x_c lies
+// within L 2^-30 of x(k / 2^30) (lip = L, the Lipschitz bound), which lies within
+// E = 2^-50 sum |e_j| (bound) of the double value v. With F = floor(v), the computed v - F is
+// within 2^-53 of the exact difference d (rounded to nearest, |d| < 1), so a computed value
+// above m = 2^-40 + 2 max(L 2^-30, E) makes d > L 2^-30 + E, and one below 1 - m makes
+// d < 1 - (L 2^-30 + E): then F < x(t) < F + 1 on the whole interval, and F is returned;
+// nothing where it cannot tell. m and 1 - m are exact (their bits lie within 2^-49 .. 2^1).
+// rule: PATH.CURVE.FILTER
+std::optional<std::int64_t> filter_floor(const Cubic& x, std::int64_t lip, double bound,
+                                         std::int64_t k) {
+  const double v = x.approx(grid_point(k));
+  const std::int64_t f = floor_to_int(v);
+  const double m = 0x1p-40 + 2.0 * std::max(grid_point(lip), bound);
+  const double frac = v - static_cast<double>(f); // |f| < 2^27: exact as a double
+  if (frac > m && frac < 1.0 - m)
+    return f;
+  return std::nullopt;
+}
+
 // lip = lipschitz(x) and bound = horner_error_bound(x), which do not depend on the row.
 bool crossing_on(const Cubic& x, std::int64_t lip, double bound, std::int64_t k, int dir,
                  Crossing& out) {
-  // The double filter (PATH.CURVE.FILTER): x_c lies within L 2^-30 of x(k / 2^30) (the
-  // Lipschitz bound below), which lies within E = 2^-50 sum |e_j| of the double value v. With
-  // F = floor(v), the computed v - F is within 2^-53 of the exact difference d (rounded to
-  // nearest, |d| < 1), so a computed value above m = 2^-40 + 2 max(L 2^-30, E) makes
-  // d > L 2^-30 + E, and one below 1 - m makes d < 1 - (L 2^-30 + E): then F < x_c < F + 1.
-  // m and 1 - m are exact (their bits lie within 2^-49 .. 2^1).
-  {
-    const double v = x.approx(grid_point(k));
-    const std::int64_t f = floor_to_int(v);
-    const double m = 0x1p-40 + 2.0 * std::max(grid_point(lip), bound);
-    const double frac = v - static_cast<double>(f); // |f| < 2^27: exact as a double
-    if (frac > m && frac < 1.0 - m) {
-      out = Crossing{f, dir};
-      return true;
-    }
+  if (const std::optional<std::int64_t> f = filter_floor(x, lip, bound, k)) {
+    out = Crossing{*f, dir};
+    return true;
   }
   // First a Lipschitz bound: |x'| <= L = |e1| + 2 |e2| + 3 |e3| on [0, 1], so x_c lies within
   // L 2^-30 of x(k / 2^30), which scaled() gives exactly (times 2^90); B = L 2^60 < 2^90.
@@ -1162,6 +1179,19 @@ void curve_crossings_into(const Curve& c, std::int64_t sy, Tie t, bool fast,
     if (dir != 0)
       out.push_back(Crossing{threshold_at(x, r, t), dir});
   }
+}
+
+// rule: PATH.CURVE.FILTER
+std::optional<int> curve_filter_sign(const std::array<std::int64_t, 4>& c, std::int64_t k) {
+  const Cubic p{c};
+  return filter_sign(p, k, horner_error_bound(p));
+}
+
+// rule: PATH.CURVE.FILTER
+std::optional<std::int64_t> curve_filter_floor(const std::array<std::int64_t, 4>& e,
+                                               std::int64_t k) {
+  const Cubic x{e};
+  return filter_floor(x, lipschitz(x), horner_error_bound(x), k);
 }
 
 } // namespace rastrules::path::detail

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <tuple>
 #include <vector>
@@ -96,6 +97,16 @@ void prepare_curve(const Curve& c, PreparedCurve& p);
 // appended to out (scratch: room for the unprepared path, when the estimates give up).
 void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
                               std::vector<Crossing>& out, std::vector<Crossing>& scratch);
+
+// The floating-point filter of PATH.CURVE.FILTER alone, for the properties that check it against
+// exact arithmetic. For power coefficients c of a curve coordinate (|c_j| within the bounds of
+// PATH.CURVE.SAMPLE) and 0 <= k <= 2^30: the sign of P(k / 2^30) where the filter decides it;
+// and F where the filter proves F < x(t) < F + 1 for every t in [k, k + 1] / 2^30 (x with
+// coefficients e). Nothing where the filter leaves the decision to the integer tests.
+[[nodiscard]] std::optional<int> curve_filter_sign(const std::array<std::int64_t, 4>& c,
+                                                   std::int64_t k);
+[[nodiscard]] std::optional<std::int64_t> curve_filter_floor(const std::array<std::int64_t, 4>& e,
+                                                             std::int64_t k);
 
 // An edge oriented top end first (ya < yb), with the direction of the original (+1 down).
 struct DownEdge {

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -93,6 +94,25 @@ TEST(PathCurvePaths, ScanDecidesRowsWhereDescartesOverCounts) {
   EXPECT_GT(rows, 2000);
   EXPECT_GT(compared, 300);
   EXPECT_GT(one_crossing, 400); // rows between the polygon's turns
+}
+
+// The floating-point filter (PATH.CURVE.FILTER) decides where the double value is clear of its
+// error bound and defers at exact zeros and integers: P(t) = 2 t - 1 is -1 at t = 0 (decided)
+// and 0 at t = 1/2 (deferred to the integer tests); x(t) = 1 + 2 t is 1.5 at t = 1/4 (floor 1
+// on the whole grid interval) and exactly 2 at t = 1/2 (deferred), as is 50 t there.
+// rule: PATH.CURVE.FILTER
+TEST(PathCurvePaths, FilterDecidesOnlyClearOfItsBound) {
+  constexpr std::int64_t kHalf = std::int64_t{1} << 29, kQuarter = std::int64_t{1} << 28;
+  EXPECT_EQ(path::detail::curve_filter_sign({-1, 2, 0, 0}, 0), -1);
+  EXPECT_EQ(path::detail::curve_filter_sign({-1, 2, 0, 0}, kHalf + 1), 1);
+  EXPECT_EQ(path::detail::curve_filter_sign({-1, 2, 0, 0}, kHalf), std::nullopt);
+  EXPECT_EQ(path::detail::curve_filter_sign({1, -4, 4, 0}, kHalf), std::nullopt); // (2t - 1)^2
+  EXPECT_EQ(path::detail::curve_filter_floor({1, 2, 0, 0}, kQuarter), 1);
+  EXPECT_EQ(path::detail::curve_filter_floor({1, 2, 0, 0}, kHalf), std::nullopt);
+  EXPECT_EQ(path::detail::curve_filter_floor({0, 50, 0, 0}, kHalf), std::nullopt);
+  // Just below an integer: x = 2 - 2^-29 at k = 2^29 - 1, within L 2^-30 = 2^-29 of 2.
+  EXPECT_EQ(path::detail::curve_filter_floor({1, 2, 0, 0}, kHalf - 1), std::nullopt);
+  EXPECT_EQ(path::detail::curve_filter_floor({1, 2, 0, 0}, kHalf - 4096), 1);
 }
 
 } // namespace
