@@ -171,6 +171,15 @@ batch_detail::Params lane_params(std::int32_t width, std::int32_t height,
       (state.cull == CullMode::kBack && cw_front) || (state.cull == CullMode::kFront && !cw_front);
   return p;
 }
+
+// rule: FAST.ISA.DISPATCH, FAST.BATCH.LANES16
+// The SIMD unit of isa (not kScalar): rows in chunks of sixteen lanes with AVX-512, of eight
+// with AVX2; both share the group set-up and give the same answers.
+std::size_t small_batch(Isa isa, const batch_detail::Params& p, batch_detail::Out& o,
+                        std::uint32_t* large) {
+  return isa == Isa::kAvx512 ? batch_detail::small_batch_avx512(p, o, large)
+                             : batch_detail::small_batch_avx2(p, o, large);
+}
 #endif
 
 } // namespace
@@ -221,7 +230,7 @@ FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width, 
       p.n = std::min(kChunk, n - base);
       p.per_triangle = per_triangle.empty() ? nullptr : per_triangle.data() + base;
       batch_detail::Out o;
-      const std::size_t k = batch_detail::small_batch_avx2(p, o, large.data());
+      const std::size_t k = small_batch(isa, p, o, large.data());
       r.covered += o.covered;
       r.rasterized += o.rasterized;
       r.small += o.small;
@@ -267,7 +276,7 @@ FastBatchResult fast_runs_batch(std::span<const float> xy, std::int32_t width, s
       p.n = std::min(kChunk, n - base);
       p.tri_base = base;
       batch_detail::Out o;
-      const std::size_t k = batch_detail::small_batch_avx2(p, o, large.data());
+      const std::size_t k = small_batch(isa, p, o, large.data());
       r.covered += o.covered;
       r.rasterized += o.rasterized;
       r.small += o.small;

@@ -66,6 +66,11 @@ struct Out {
 // such triangle (the triangles of that group are then not counted).
 // rule: FAST.BATCH.SMALL_I32, FAST.BATCH.SNAP_SIMD
 std::size_t small_batch_avx2(const Params& p, Out& out, std::uint32_t* large);
+// The same, each small triangle's rows in chunks of sixteen lanes (FAST.BATCH.LANES16): the same
+// answers, outputs and order. Only where isa_supported(Isa::kAvx512) (fast_batch_avx512.cpp is
+// empty without AVX-512 support in the compiler's target).
+// rule: FAST.BATCH.LANES16
+std::size_t small_batch_avx512(const Params& p, Out& out, std::uint32_t* large);
 #endif
 
 } // namespace rastrules::raster::batch_detail

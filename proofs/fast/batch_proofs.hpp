@@ -89,10 +89,38 @@ struct BatchKernelModel : KernelModel {
   static constexpr std::int64_t kMaxPixels = 64;
   static constexpr std::int64_t kPastColumns = 15;
 
+  // The row loops' structure: false for the AVX2 unit's cover_one and cover_rows; true for
+  // the AVX-512 unit's single loop (chunks of kHalfLanes lanes, the last one's lanes at or past
+  // ncols masked off).
+  static constexpr bool kChunkedRows = false;
+
   static std::vector<Constant> constants() {
     return kernel_constants_and({{"raster::kBatchSmallSpan", kSpan, Unit::kCoordRaw},
                                  {"cover_one's pixels a row", kOneMaxCols, Unit::kInteger},
                                  {"cover_one's poison", kPoison, Unit::kInteger}});
+  }
+
+  // The AVX-512 unit's count of lane m of chunk c (full = (ncols - 1) / 16 full chunks, then a
+  // tail of rest = ncols - 16 full lanes in 1..16): every lane of a full chunk, and lanes
+  // m < rest of the tail (the mask (1 << rest) - 1 of cover16).
+  static z3::expr chunk_counted(const z3::expr& c, const z3::expr& full, const z3::expr& m,
+                                const z3::expr& rest) {
+    return c < full || (c == full && m < rest);
+  }
+};
+
+// The AVX-512 unit (kernel/src/fast_batch_avx512.cpp, FAST.BATCH.LANES16): the same set-up
+// (fast_batch_group.hpp), rows in chunks of sixteen lanes stepped by 16 x 256 A (below 2^26,
+// computed as 16 * (256 A) in int32_t), the tail masked (no poison).
+struct BatchLanes16Model : BatchKernelModel {
+  static constexpr const char* kName = "kernel, rows in sixteen lanes";
+  static constexpr std::int64_t kHalfLanes = 16;
+  static constexpr int kStepBits = 26;
+  static constexpr bool kChunkedRows = true;
+
+  static std::vector<Constant> constants() {
+    return kernel_constants_and({{"raster::kBatchSmallSpan", kSpan, Unit::kCoordRaw},
+                                 {"cover16's lanes a chunk", kHalfLanes, Unit::kInteger}});
   }
 };
 
@@ -469,50 +497,73 @@ template <class F> void prove_batch_small_i32(Prover& pr) {
     base.push_back(st.small);
     base.push_back(st.nonempty);
     base.push_back(0 <= j && j <= st.nrows.expr());
-    {
-      // cover_one: lanes lo = m (counted iff cols > m: live_lo, else poisoned) and
-      // hi = 8 + m (counted iff kWide, cols > 8, and cols > m + 8: live_hi).
+    if constexpr (F::kChunkedRows) {
+      // cover16: full = (cols - 1) / 16, rest = cols - 16 full in 1..16; lane i = 16 c + m for
+      // chunks c = 0..full (the last the tail), counted iff F::chunk_counted.
       std::vector<z3::expr> h = base;
-      h.push_back(cols <= ctx.int_val(F::kOneMaxCols));
-      h.push_back(0 <= m && m < ctx.int_val(F::kHalfLanes));
-      const z3::expr eight = ctx.int_val(F::kHalfLanes);
-      const z3::expr lo_counted = cols > m;
-      const z3::expr hi_counted = cols > eight && cols > m + eight;
-      // The lanes are 0..2 * 8 - 1: every pixel 0..cols - 1 is one of them.
-      const z3::expr every_pixel = cols - 1 <= ctx.int_val(2 * F::kHalfLanes - 1);
-      pr.watch("ncols", cols, Unit::kInteger);
-      pr.watch("nrows", st.nrows.expr(), Unit::kInteger);
-      const Status s = pr.prove(
-          "B6 (cover_one): lanes 0..15 of rows 0..nrows reach at most 15 px past the box's right "
-          "and 1 row below it; lane i is counted iff i < ncols; every pixel is a lane",
-          h,
-          reach(m) && reach(m + eight) && lo_counted == (m < cols) &&
-              hi_counted == (m + eight < cols) && every_pixel);
-      if (s != Status::kProved)
-        b6 = s;
-    }
-    {
-      // cover_rows: full = cols / 8, rest = cols % 8 (C++ division of a positive int);
-      // lane i = 8 c + m for chunks c = 0..full (the last only stepped to, or the tail), counted
-      // iff c < full, or c == full and m < rest (the tail mask).
-      std::vector<z3::expr> h = base;
-      h.push_back(cols > ctx.int_val(F::kOneMaxCols));
-      h.push_back(cols == ctx.int_val(F::kHalfLanes) * full + rest && 0 <= rest &&
-                  rest < ctx.int_val(F::kHalfLanes));
+      const z3::expr lanes = ctx.int_val(F::kHalfLanes);
+      h.push_back(cols == lanes * full + rest && 1 <= rest && rest <= lanes);
       h.push_back(0 <= c && c <= full);
-      h.push_back(0 <= m && m < ctx.int_val(F::kHalfLanes));
-      const z3::expr lane = ctx.int_val(F::kHalfLanes) * c + m;
-      const z3::expr counted = c < full || (c == full && m < rest);
-      // The lanes are 0..8 full + 7: every pixel 0..cols - 1 is one of them.
-      const z3::expr every_pixel = cols - 1 <= ctx.int_val(F::kHalfLanes) * full + 7;
+      h.push_back(0 <= m && m < lanes);
+      const z3::expr lane = lanes * c + m;
+      const z3::expr counted = F::chunk_counted(c, full, m, rest);
+      // The lanes are 0..16 full + 15: every pixel 0..cols - 1 is one of them.
+      const z3::expr every_pixel = cols - 1 <= lanes * full + lanes - 1;
       pr.watch("ncols", cols, Unit::kInteger);
       pr.watch("lane", lane, Unit::kInteger);
       const Status s = pr.prove(
-          "B6 (cover_rows): lanes 8 c + m, c = 0..ncols / 8, of rows 0..nrows reach at most 15 px "
-          "past the box's right and 1 row below it; a lane is counted iff it is < ncols",
+          "B6 (cover16): lanes 16 c + m, c = 0..(ncols - 1) / 16, of rows 0..nrows reach at most "
+          "15 px past the box's right and 1 row below it; a lane is counted iff it is < ncols",
           h, reach(lane) && counted == (lane < cols) && every_pixel);
       if (s != Status::kProved)
         b6 = s;
+    } else {
+      {
+        // cover_one: lanes lo = m (counted iff cols > m: live_lo, else poisoned) and
+        // hi = 8 + m (counted iff kWide, cols > 8, and cols > m + 8: live_hi).
+        std::vector<z3::expr> h = base;
+        h.push_back(cols <= ctx.int_val(F::kOneMaxCols));
+        h.push_back(0 <= m && m < ctx.int_val(F::kHalfLanes));
+        const z3::expr eight = ctx.int_val(F::kHalfLanes);
+        const z3::expr lo_counted = cols > m;
+        const z3::expr hi_counted = cols > eight && cols > m + eight;
+        // The lanes are 0..2 * 8 - 1: every pixel 0..cols - 1 is one of them.
+        const z3::expr every_pixel = cols - 1 <= ctx.int_val(2 * F::kHalfLanes - 1);
+        pr.watch("ncols", cols, Unit::kInteger);
+        pr.watch("nrows", st.nrows.expr(), Unit::kInteger);
+        const Status s = pr.prove(
+            "B6 (cover_one): lanes 0..15 of rows 0..nrows reach at most 15 px past the box's right "
+            "and 1 row below it; lane i is counted iff i < ncols; every pixel is a lane",
+            h,
+            reach(m) && reach(m + eight) && lo_counted == (m < cols) &&
+                hi_counted == (m + eight < cols) && every_pixel);
+        if (s != Status::kProved)
+          b6 = s;
+      }
+      {
+        // cover_rows: full = cols / 8, rest = cols % 8 (C++ division of a positive int);
+        // lane i = 8 c + m for chunks c = 0..full (the last only stepped to, or the tail), counted
+        // iff c < full, or c == full and m < rest (the tail mask).
+        std::vector<z3::expr> h = base;
+        h.push_back(cols > ctx.int_val(F::kOneMaxCols));
+        h.push_back(cols == ctx.int_val(F::kHalfLanes) * full + rest && 0 <= rest &&
+                    rest < ctx.int_val(F::kHalfLanes));
+        h.push_back(0 <= c && c <= full);
+        h.push_back(0 <= m && m < ctx.int_val(F::kHalfLanes));
+        const z3::expr lane = ctx.int_val(F::kHalfLanes) * c + m;
+        const z3::expr counted = c < full || (c == full && m < rest);
+        // The lanes are 0..8 full + 7: every pixel 0..cols - 1 is one of them.
+        const z3::expr every_pixel = cols - 1 <= ctx.int_val(F::kHalfLanes) * full + 7;
+        pr.watch("ncols", cols, Unit::kInteger);
+        pr.watch("lane", lane, Unit::kInteger);
+        const Status s =
+            pr.prove("B6 (cover_rows): lanes 8 c + m, c = 0..ncols / 8, of rows 0..nrows reach at "
+                     "most 15 px past the box's right and 1 row below it; a lane is counted iff "
+                     "it is < ncols",
+                     h, reach(lane) && counted == (lane < cols) && every_pixel);
+        if (s != Status::kProved)
+          b6 = s;
+      }
     }
   }
 
@@ -524,11 +575,11 @@ template <class F> void prove_batch_small_i32(Prover& pr) {
 
   // E1.
   for (const bool inclusive : {true, false}) {
-    const std::string name = std::string("E1 (bias ") + (inclusive ? "0" : "-1") +
-                             "): A, B, s - a fit (< 2^" + std::to_string(F::kDiffBits) +
-                             "); E0 + bias fits (< 2^" + std::to_string(F::kLaneBits) +
-                             "); 256 A, 256 B, 8 x 256 A fit (< 2^" + std::to_string(F::kStepBits) +
-                             "); E0 + bias == edge_value(a, b, s) + edge_bias (int64_t)";
+    const std::string name =
+        std::string("E1 (bias ") + (inclusive ? "0" : "-1") + "): A, B, s - a fit (< 2^" +
+        std::to_string(F::kDiffBits) + "); E0 + bias fits (< 2^" + std::to_string(F::kLaneBits) +
+        "); 256 A, 256 B, " + std::to_string(F::kHalfLanes) + " x 256 A fit (< 2^" +
+        std::to_string(F::kStepBits) + "); E0 + bias == edge_value(a, b, s) + edge_bias (int64_t)";
     if (!edges_ok) {
       pr.skip(name, "lemma P, B1, B2', B3 or B6 not proved");
       continue;

@@ -126,6 +126,21 @@ struct BatchPoisonPositive : BatchKernelModel {
   static constexpr std::int64_t kPoison = std::int64_t{1} << 30;
 };
 
+// The AVX-512 unit's tail counting lane m when m <= rest: one pixel past the row's end.
+struct Lanes16TailPastEnd : BatchLanes16Model {
+  static constexpr const char* kName = "cover16's tail mask one lane too wide";
+  static z3::expr chunk_counted(const z3::expr& c, const z3::expr& full, const z3::expr& m,
+                                const z3::expr& rest) {
+    return c < full || (c == full && m <= rest);
+  }
+};
+
+// Its step claimed below 2^25, as the AVX2 unit's 8 x 256 A: 16 x 256 A is not.
+struct Lanes16StepBits25 : BatchLanes16Model {
+  static constexpr const char* kName = "16 x 256 A claimed below 2^25";
+  static constexpr int kStepBits = 25;
+};
+
 // Rounding v * 256 towards zero instead of to nearest even (_MM_FROUND_TO_ZERO).
 struct SnapRoundTowardZero : SnapKernelModel {
   static constexpr const char* kName = "roundToIntegral towards zero";
@@ -155,6 +170,7 @@ MutationSelfcheck mutation_selfcheck() {
            refute<LaneMaxWrongCorner, LaneMinShort>(kTileClassify),
            refute<BatchSpanTwice, BatchLaneBits29, BatchOneUpTo24, BatchShift7>(kBatchSmallI32),
            refute<BatchPoisonPositive>(kLaneBits),
+           refute<Lanes16TailPastEnd, Lanes16StepBits25>(kBatchSmallI32),
            refute<SnapRoundTowardZero, SnapHighestTooLarge, SnapScale128>(kBatchSnapSimd)},
           FastKernelModel::constants(),
           {"SNAP.VERTEX.RANGE"}};

@@ -4,7 +4,9 @@
 // triangles mixed, culling, clipping at the target's sides, a triangle at the 64-pixel bound of
 // the small lanes, and every error it names, for every instruction set this processor runs.
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <limits>
 #include <string>
@@ -13,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "fast_support.hpp"
+#include "rastrules/isa.hpp"
 #include "rastrules/raster/fast_batch.hpp"
 
 namespace {
@@ -183,6 +186,67 @@ TEST(FastBatch, NamesEveryBadArgument) {
   ASSERT_EQ(unsetenv(rastrules::kMaxIsaVariable), 0);
   // Nothing at all: zero triangles.
   EXPECT_EQ(fast_count_batch({}, 10, 10, RasterState{}, Isa::kScalar).covered, 0u);
+}
+
+// Runs as (tri, y, x, n), collected from fast_runs_batch.
+struct RunLog {
+  std::vector<std::array<std::int32_t, 4>> runs;
+  static void add(void* self, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t n) {
+    static_cast<RunLog*>(self)->runs.push_back({static_cast<std::int32_t>(tri), y, x, n});
+  }
+};
+
+// The AVX-512 unit's rows in sixteen lanes give the AVX2 unit's counts, per-triangle counts,
+// per-pixel counts and runs on triangles whose rows are 1..64 pixels wide (every tail length of
+// both units, full chunks of sixteen), placed against the target's right and bottom sides, where
+// the last chunk's lanes run past the end of the hits buffer (masked loads and stores must not
+// touch it: ASan and the buffer's last row check that). Needs AVX-512: skipped elsewhere (this
+// unit cannot be tested on a machine without it).
+// rule: FAST.BATCH.LANES16, FAST.BATCH.EQUALS.PLAIN
+TEST(FastBatch, SixteenLanesGiveTheEightLanesAnswersOnEveryRowWidth) {
+  if (!rastrules::isa_supported(Isa::kAvx512))
+    GTEST_SKIP() << "this processor has no AVX-512 (or RASTRULES_MAX_ISA hides it)";
+  const std::int32_t w = 70, h = 66;
+  std::vector<float> xy;
+  for (int width = 1; width <= 64; ++width) {
+    const auto fw = static_cast<float>(width);
+    // A right triangle and a thin one, their boxes at the right side, then at the bottom; spans
+    // below 64 px (small), rows of up to `width` pixels.
+    const float right = static_cast<float>(w) - 0.25f, x0 = right - fw + 0.5f;
+    xy.insert(xy.end(), {x0, 1.0f, right, 1.0f, right, 0.5f + fw});
+    xy.insert(xy.end(), {x0, 3.0f, right, 5.5f, x0, 6.0f});
+    // Clipped by the right side in the last rows (the lanes past the target's last column are
+    // inside the triangle: only the tail mask leaves them out).
+    if (width <= 40) {
+      const float xl = static_cast<float>(w) - fw + 0.5f, xr = static_cast<float>(w) + 20.0f;
+      const float yt = static_cast<float>(h) - 3.0f;
+      xy.insert(xy.end(), {xl, yt, xr, yt, xr, yt + 5.0f});
+    }
+    const float bottom = static_cast<float>(h) - 0.125f;
+    xy.insert(xy.end(), {0.5f, bottom - 1.5f, fw, bottom, 0.75f, bottom});
+  }
+  for (const FillConvention fill : {FillConvention::kTopLeft, FillConvention::kBottomRight}) {
+    RasterState state;
+    state.fill = fill;
+    std::vector<std::uint32_t> hits8(static_cast<std::size_t>(w * h), 0), hits16 = hits8;
+    std::vector<std::uint64_t> per8(xy.size() / 6, 0), per16 = per8;
+    const raster::FastBatchResult r8 = fast_count_batch(xy, w, h, state, Isa::kAvx2, per8, hits8);
+    const raster::FastBatchResult r16 =
+        fast_count_batch(xy, w, h, state, Isa::kAvx512, per16, hits16);
+    ASSERT_EQ(r8.status, BatchStatus::kOk);
+    ASSERT_EQ(r16.status, BatchStatus::kOk);
+    EXPECT_EQ(r16.covered, r8.covered);
+    EXPECT_EQ(r16.small, r8.small);
+    EXPECT_EQ(r16.small, xy.size() / 6); // every triangle went through the small lanes
+    EXPECT_EQ(per16, per8);
+    EXPECT_EQ(hits16, hits8);
+    EXPECT_GT(r8.covered, 3000u);
+    RunLog runs8, runs16;
+    (void)raster::fast_runs_batch(xy, w, h, state, Isa::kAvx2, {&runs8, &RunLog::add});
+    (void)raster::fast_runs_batch(xy, w, h, state, Isa::kAvx512, {&runs16, &RunLog::add});
+    EXPECT_EQ(runs16.runs, runs8.runs);
+    EXPECT_FALSE(runs8.runs.empty());
+  }
 }
 
 } // namespace
