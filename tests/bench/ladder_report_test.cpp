@@ -25,6 +25,8 @@ rb::LadderReport synthetic(double fast_factor, double lavapipe_seconds) {
   r.cpu = "test cpu";
   r.isa = "avx2";
   r.limit_isa = "avx2";
+  r.batch_lanes = 8;
+  r.limit_lanes = 8;
   r.scenes = {"small", "medium", "large", "hard"};
   r.sweep_t = {0, 1, 2};
   r.sweep_note = "synthetic";
@@ -184,6 +186,14 @@ TEST(LadderRun, FakeLavapipeAndThreeThreadsReachTheTableAndTheJson) {
   EXPECT_NE(md.find("single-thread ratio (reference-fast on 1 thread against lavapipe on 5): "),
             std::string::npos)
       << md;
+  // The limit steps as many lanes as the batch counter's rows on this processor (or under
+  // RASTRULES_MAX_ISA), and the heading says both.
+  EXPECT_EQ(r.batch_lanes, r.limit_lanes);
+  EXPECT_NE(md.find("(batch counter rows: " + std::to_string(r.batch_lanes) +
+                    " lanes; limit rung: " + r.limit_isa + ", " + std::to_string(r.limit_lanes) +
+                    " lanes)"),
+            std::string::npos)
+      << md;
   const auto j = nlohmann::json::parse(rb::to_json(r));
   EXPECT_EQ(j.at("threads"), 3);
   EXPECT_EQ(j.at("lavapipe").at("threads"), 5);
@@ -228,18 +238,31 @@ TEST(LadderReport, JsonHoldsEveryFigure) {
   EXPECT_TRUE(j.at("rungs").back().at("exact_range").is_null()); // limit
   EXPECT_EQ(j.at("targets").size(), 4u);
   EXPECT_TRUE(j.at("lavapipe").at("available").get<bool>());
+  EXPECT_EQ(j.at("batch_lanes"), 8);
+  EXPECT_EQ(j.at("limit_lanes"), 8);
 }
 
 // rule: BENCH.TARGETS
 TEST(LadderTargets, EachTargetSaysWhetherThisRunMetIt) {
   if (!rb::test::has_reference_fast())
     GTEST_SKIP() << "reference-fast not built";
-  // fast = 3.5 x reference: 87.5 % of limit (4), faster than float (0.75) and float-simd (1);
-  // 100 triangles in 1 s for lavapipe against 3.5e5/s: 3500x.
-  auto t = rb::check_targets(synthetic(3.5, 1.0));
+  // fast = 3.8 x reference: 95 % of limit (4) at the same width (8 lanes), faster than float
+  // (0.75) and float-simd (1); 100 triangles in 1 s for lavapipe against 3.8e5/s: 3800x.
+  auto t = rb::check_targets(synthetic(3.8, 1.0));
   ASSERT_EQ(t.size(), 4u);
   for (const auto& c : t)
     EXPECT_EQ(c.met, std::optional<bool>(true)) << c.name << ": " << c.measured;
+  EXPECT_NE(t[0].measured.find("95% of limit (batch rows 8 lanes, limit 8)"), std::string::npos)
+      << t[0].measured;
+  // 87.5 % of limit: below the 90 % target.
+  EXPECT_EQ(rb::check_targets(synthetic(3.5, 1.0))[0].met, std::optional<bool>(false));
+  // The limit at another width than the batch counter's rows: never met, whatever the ratio.
+  rb::LadderReport wide = synthetic(3.8, 1.0);
+  wide.limit_lanes = 16;
+  t = rb::check_targets(wide);
+  EXPECT_EQ(t[0].met, std::optional<bool>(false)) << t[0].measured;
+  EXPECT_NE(t[0].measured.find("(batch rows 8 lanes, limit 16)"), std::string::npos)
+      << t[0].measured;
   // fast = 0.6 x reference: 15 % of limit, slower than float (0.75) and float-simd (1);
   // lavapipe faster.
   t = rb::check_targets(synthetic(0.6, 1e-5));

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <utility>
 
+#include "rastrules/isa.hpp"
+
 namespace rastrules::bench {
 
 LimitSetup limit_setup(const FloatTriangle& tri, std::int32_t w, std::int32_t h) {
@@ -70,14 +72,20 @@ using Loop = std::uint64_t (*)(const LimitSetup&);
 struct Chosen {
   Loop loop;
   std::string_view name;
+  int lanes;
 };
+// The kernel's choice (best_isa: CPUID and RASTRULES_MAX_ISA), so that the limit steps as many
+// lanes as the batch counter's rows on this processor (FAST.BATCH.LANES16).
 Chosen choose() {
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx512f"))
-    return {&limit_loop_avx512, "avx512"};
-  if (__builtin_cpu_supports("avx2"))
-    return {&limit_loop_avx2, "avx2"};
-  return {&limit_loop_scalar, "scalar"};
+  switch (best_isa()) {
+  case Isa::kAvx512:
+    return {&limit_loop_avx512, "avx512", 16};
+  case Isa::kAvx2:
+    return {&limit_loop_avx2, "avx2", 8};
+  case Isa::kScalar:
+    break;
+  }
+  return {&limit_loop_scalar, "scalar", 1};
 }
 const Chosen& chosen() {
   static const Chosen c = choose();
@@ -87,6 +95,10 @@ const Chosen& chosen() {
 
 std::string_view limit_isa() {
   return chosen().name;
+}
+
+int limit_lanes() {
+  return chosen().lanes;
 }
 
 std::uint64_t limit_count(const FloatTriangle& tri, std::int32_t w, std::int32_t h) {

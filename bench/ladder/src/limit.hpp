@@ -29,9 +29,11 @@ std::uint64_t limit_loop_scalar(const LimitSetup& s);
 std::uint64_t limit_loop_avx2(const LimitSetup& s);   // limit_avx2.cpp (-mavx2)
 std::uint64_t limit_loop_avx512(const LimitSetup& s); // limit_avx512.cpp (-mavx512f)
 
-// The instruction set the limit rung runs, chosen once at run time with
-// __builtin_cpu_supports: "avx512", "avx2" or "scalar".
+// The instruction set the limit rung runs, chosen once at run time: best_isa() (so that
+// RASTRULES_MAX_ISA limits it as it limits the kernel): "avx512", "avx2" or "scalar"; and the
+// pixels its loop steps at once (16, 8 or 1), the batch counter's row width on the same ISA.
 [[nodiscard]] std::string_view limit_isa();
+[[nodiscard]] int limit_lanes();
 // limit_setup then the chosen loop.
 [[nodiscard]] std::uint64_t limit_count(const FloatTriangle& tri, std::int32_t w, std::int32_t h);
 

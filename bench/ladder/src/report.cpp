@@ -32,9 +32,10 @@ std::string range_text(const RungResult& r) {
 std::string to_markdown(const LadderReport& r) {
   std::ostringstream o;
   o << "Precision ladder, " << r.date << ", " << r.cpu << ", ISA " << r.isa
-    << " (limit rung: " << r.limit_isa << "), rungs on 1 thread, `reference-fast x" << r.threads
-    << "` on " << r.threads << ", " << (r.config.quick ? "quick" : "full") << " mode, seed "
-    << r.config.seed << ".\n\n";
+    << " (batch counter rows: " << r.batch_lanes << " lanes; limit rung: " << r.limit_isa << ", "
+    << r.limit_lanes << " lanes), rungs on 1 thread, `reference-fast x" << r.threads << "` on "
+    << r.threads << ", " << (r.config.quick ? "quick" : "full") << " mode, seed " << r.config.seed
+    << ".\n\n";
   o << "| rung |";
   for (const auto& s : r.scenes)
     o << " " << s << " Mdec/s (x ref) |";
@@ -123,6 +124,8 @@ std::string to_json(const LadderReport& r) {
   j["cpu"] = r.cpu;
   j["isa"] = r.isa;
   j["limit_isa"] = r.limit_isa;
+  j["batch_lanes"] = r.batch_lanes;
+  j["limit_lanes"] = r.limit_lanes;
   j["threads"] = r.threads;
   j["quick"] = r.config.quick;
   j["seed"] = r.config.seed;

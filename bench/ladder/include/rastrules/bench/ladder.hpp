@@ -227,6 +227,8 @@ struct LadderReport {
   std::string cpu;       // /proc/cpuinfo model name
   std::string isa;       // best_isa() of this processor
   std::string limit_isa; // what the limit rung ran
+  int batch_lanes = 1;   // pixels a chunk of the batch counter's row loop (16, 8 or 1)
+  int limit_lanes = 1;   // pixels a chunk of the limit rung's loop
   unsigned threads = 1;
   std::vector<std::string> scenes; // timed families
   std::vector<std::int64_t> sweep_t;
