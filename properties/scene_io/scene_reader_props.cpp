@@ -8,11 +8,13 @@
 // Implements (properties for): SCENE.INPUT.FAST_READER
 
 #include <bit>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <system_error>
 #include <variant>
 #include <vector>
 
@@ -237,6 +239,43 @@ RC_GTEST_PROP(FastSceneReader, NearMissesAreLeftToTheGeneralReaderOrReadAlike, (
   RC_ASSERT(both.index() == general.index());
   if (const auto* e = std::get_if<rastrules::SceneError>(&both))
     RC_ASSERT(e->what() == std::get<rastrules::SceneError>(general).what());
+}
+
+// rule: SCENE.INPUT.FAST_READER, SCENE.NUMBER.FLOAT32
+// Short decimals (at most 8 digits, up to 12 after the point, near 2^24 and near ties of
+// float32 rounding): the fast reader, which divides two exact float32 values where the digits
+// allow it (Clinger's fast path), reads every one as the general reader and std::from_chars do,
+// bit for bit.
+RC_GTEST_PROP(FastSceneReader, ShortDecimalsReadAsTheGeneralReaderReadsThem, ()) {
+  const std::uint32_t m =
+      *rc::gen::oneOf(rc::gen::inRange<std::uint32_t>(0, 100000000),
+                      rc::gen::inRange<std::uint32_t>((1u << 24) - 64, (1u << 24) + 64),
+                      rc::gen::map(rc::gen::inRange<std::uint32_t>(0, 1u << 20),
+                                   [](std::uint32_t v) { return 16 * v + 8; })); // halves of 16ths
+  const int after = *rc::gen::inRange(1, 13);
+  std::string digits = std::to_string(m);
+  if (static_cast<int>(digits.size()) <= after)
+    digits.insert(0, static_cast<std::size_t>(after) + 1 - digits.size(), '0');
+  digits.insert(digits.size() - static_cast<std::size_t>(after), ".");
+  if (*rc::gen::arbitrary<bool>())
+    digits.insert(0, "-");
+  RC_TAG(digits.size() - (digits.front() == '-' ? 2 : 1) <= 8 && after <= 10 && m <= (1u << 24)
+             ? "the fast path's form"
+             : "left to from_chars");
+  const std::string text = "{\"target\": {\"width\": 4, \"height\": 4}, \"primitives\": "
+                           "[{\"type\": \"triangle\", \"v\": [[" +
+                           digits + ", 1], [2, 1], [1, 3]]}]}";
+  const std::optional<rastrules::Scene> fast = io::read_scene_fast(text);
+  RC_ASSERT(fast.has_value());
+  const auto general = io::read_scene_general(text);
+  RC_ASSERT(std::holds_alternative<rastrules::Scene>(general));
+  const float got = fast->primitives.at(0).v[0][0];
+  float want = 0.0f;
+  const auto r = std::from_chars(digits.data(), digits.data() + digits.size(), want);
+  RC_ASSERT(r.ec == std::errc{});
+  RC_LOG() << digits << ": fast " << got << ", from_chars " << want << "\n";
+  RC_ASSERT(std::bit_cast<std::uint32_t>(got) == std::bit_cast<std::uint32_t>(want));
+  RC_ASSERT(io::same_scene(*fast, std::get<rastrules::Scene>(general)));
 }
 
 } // namespace
