@@ -86,28 +86,15 @@ inline std::uint32_t cover_rows(const Lanes& g, int t, std::uint32_t* hit, std::
   return hsum(acc);
 }
 
-template <Mode kMode>
-inline std::uint32_t cover8(const Lanes& g, int t, const Params& p, RunWriter& rw) {
-  std::uint32_t* hit = nullptr;
-  if constexpr (kMode == kHits)
-    hit = p.hits + static_cast<std::size_t>(g.y0[t]) * static_cast<std::size_t>(p.width) +
-          static_cast<std::size_t>(g.x0[t]);
-  if constexpr (kMode == kRuns) {
-    rw.x0 = g.x0[t];
-    rw.y0 = g.y0[t];
-  }
-  const auto stride = static_cast<std::size_t>(p.width);
-  if (g.cols[t] > 16)
-    return cover_rows<kMode>(g, t, hit, stride, rw);
-  return g.cols[t] > 8 ? cover_one<kMode, true>(g, t, hit, stride, rw)
-                       : cover_one<kMode, false>(g, t, hit, stride, rw);
-}
-
 // The rows of a triangle in lanes of eight.
 struct Rows8 {
   template <Mode kMode>
-  static std::uint32_t cover(const Lanes& g, int t, const Params& p, RunWriter& rw) {
-    return cover8<kMode>(g, t, p, rw);
+  static std::uint32_t cover(const Lanes& g, int t, std::uint32_t* hit, std::size_t stride,
+                             RunWriter& rw) {
+    if (g.cols[t] > 16)
+      return cover_rows<kMode>(g, t, hit, stride, rw);
+    return g.cols[t] > 8 ? cover_one<kMode, true>(g, t, hit, stride, rw)
+                         : cover_one<kMode, false>(g, t, hit, stride, rw);
   }
   template <Mode kMode>
   static std::uint64_t group(const Lanes& g, unsigned live, std::size_t base, const Params& p,

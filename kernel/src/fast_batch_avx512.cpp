@@ -124,17 +124,8 @@ RASTRULES_ROWS16 inline std::uint32_t cover16(const Lanes& g, int t, std::uint32
 // The rows of a triangle in lanes of sixteen.
 struct Rows16 {
   template <Mode kMode>
-  RASTRULES_ROWS16 static std::uint32_t cover(const Lanes& g, int t, const Params& p,
-                                              RunWriter& rw) {
-    std::uint32_t* hit = nullptr;
-    if constexpr (kMode == kHits)
-      hit = p.hits + static_cast<std::size_t>(g.y0[t]) * static_cast<std::size_t>(p.width) +
-            static_cast<std::size_t>(g.x0[t]);
-    if constexpr (kMode == kRuns) {
-      rw.x0 = g.x0[t];
-      rw.y0 = g.y0[t];
-    }
-    const auto stride = static_cast<std::size_t>(p.width);
+  RASTRULES_ROWS16 static std::uint32_t cover(const Lanes& g, int t, std::uint32_t* hit,
+                                              std::size_t stride, RunWriter& rw) {
     // Rows of up to 8 pixels in one half of eight lanes (fast_batch_group.hpp; proved with the
     // AVX2 unit, proofs/fast/batch_small_i32.cpp): sixteen lanes would do twice the work.
     if (g.cols[t] <= 8)

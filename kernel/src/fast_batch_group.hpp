@@ -147,16 +147,24 @@ inline std::uint32_t cover_one(const Lanes& g, int t, std::uint32_t* hit, std::s
 }
 
 // Decides the live triangles (bits of live) of group g, whose first triangle is base in p, with
-// Rows::cover<kMode>; returns their covered pixels.
+// Rows::cover<kMode>(g, t, hit, stride, rw) (hit: the triangle's first pixel in the per-pixel
+// counts, rows stride apart; rw placed at its first pixel); returns their covered pixels.
 template <Mode kMode, class Rows>
 inline std::uint64_t cover_live(const Lanes& g, unsigned live, std::size_t base, const Params& p,
                                 RunWriter& rw) {
   std::uint64_t covered = 0;
+  const auto stride = static_cast<std::size_t>(p.width);
   for (unsigned bits = live; bits != 0; bits &= bits - 1) {
     const int t = static_cast<int>(ctz(bits));
-    if constexpr (kMode == kRuns)
+    std::uint32_t* hit = nullptr; // the triangle's first pixel (kHits)
+    if constexpr (kMode == kHits)
+      hit = p.hits + static_cast<std::size_t>(g.y0[t]) * stride + static_cast<std::size_t>(g.x0[t]);
+    if constexpr (kMode == kRuns) {
       rw.tri = static_cast<std::uint32_t>(p.tri_base + base + static_cast<std::size_t>(t));
-    const std::uint32_t n = Rows::template cover<kMode>(g, t, p, rw);
+      rw.x0 = g.x0[t];
+      rw.y0 = g.y0[t];
+    }
+    const std::uint32_t n = Rows::template cover<kMode>(g, t, hit, stride, rw);
     covered += n;
     if (p.per_triangle != nullptr)
       p.per_triangle[base + static_cast<std::size_t>(t)] = n;

@@ -263,8 +263,7 @@ constexpr bool on_grid(std::int64_t v) {
   return (v & (kW - 1)) == 0;
 }
 
-// The select of the formula templates on concrete values.
-constexpr auto kSelect = [](bool c, auto t, auto f) { return c ? t : f; };
+using detail::kSelect;
 
 int sign_of(std::int64_t v) {
   return (v > 0) - (v < 0);
@@ -686,11 +685,7 @@ bool CellRows::cell_area(std::int32_t c, std::int64_t t, std::int64_t wind, std:
   std::sort(crosses_.begin() + static_cast<std::ptrdiff_t>(cross_at),
             crosses_.begin() + static_cast<std::ptrdiff_t>(cross_end),
             [](const CrossRec& a, const CrossRec& b) {
-              if (formula::cell_position_less<I128>(a.p, a.q, b.p, b.q))
-                return true;
-              if (formula::cell_position_less<I128>(b.p, b.q, a.p, a.q))
-                return false;
-              return formula::cell_position_less<I128>(a.sn, a.sd, b.sn, b.sd);
+              return formula::cell_border_before<I128>(a.p, a.q, a.sn, a.sd, b.p, b.q, b.sn, b.sd);
             });
   std::int64_t cur = wind, lo = wind, hi = wind;
   for (std::size_t k = cross_at; k < cross_end; ++k) {

@@ -577,8 +577,7 @@ bool crossing_on(const Cubic& x, std::int64_t lip, double bound, std::int64_t k,
   // First a Lipschitz bound: |x'| <= L = |e1| + 2 |e2| + 3 |e3| on [0, 1], so x_c lies within
   // L 2^-30 of x(k / 2^30), which scaled() gives exactly (times 2^90); B = L 2^60 < 2^90.
   {
-    const Wide lip_scaled = formula::curve_lipschitz_scaled<std::int64_t, Wide>(
-        x.c, [](bool c, std::int64_t t, std::int64_t f) { return c ? t : f; });
+    const Wide lip_scaled = formula::curve_lipschitz_scaled<std::int64_t, Wide>(x.c, kSelect);
     const Wide xk = x.scaled(k);
     const Wide one = Wide{1} << (3 * kFastBits);
     const Wide f = xk >> (3 * kFastBits); // floor(xk / 2^90): >> is arithmetic on __int128

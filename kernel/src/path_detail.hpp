@@ -21,6 +21,9 @@
 
 namespace rastrules::path::detail {
 
+// The select of the formula templates (rastrules/formula/path_*.hpp) on concrete values.
+inline constexpr auto kSelect = [](bool c, auto t, auto f) { return c ? t : f; };
+
 // The displacement signs of PATH.SAMPLE.TIE: x_right is hx = +1, y_down is hy = +1.
 struct Tie {
   bool x_right = true;

@@ -90,8 +90,9 @@ struct AreaKernelModel : PathKernelModel {
     return formula::cell_left_position<S>(yn, top, q);
   }
   template <class V, class S>
-  static SymBool position_less(const S& pa, const S& qa, const S& pb, const S& qb) {
-    return formula::cell_position_less<V, S>(pa, qa, pb, qb);
+  static SymBool border_before(const S& pa, const S& qa, const S& sa, const S& da, const S& pb,
+                               const S& qb, const S& sb, const S& db) {
+    return formula::cell_border_before<V, S>(pa, qa, sa, da, pb, qb, sb, db);
   }
   template <class S>
   static SymBool doubles_back(const S& ex, const S& ey, const S& fx, const S& fy) {
@@ -283,8 +284,7 @@ template <class F> void prove_area_budget(Prover& pr, unsigned parts = kAllAreaP
     h.push_back(product_bound128(sa.expr(), Int128{1} << 24, db.expr(), Int128{1} << 24));
     h.push_back(product_bound128(sb.expr(), Int128{1} << 24, da.expr(), Int128{1} << 24));
     const std::size_t mark = dom.mark();
-    (void)F::template position_less<W>(pa, qa, pb, qb);
-    (void)F::template position_less<W>(sa, da, sb, db);
+    (void)F::template border_before<W>(pa, qa, sa, da, pb, qb, sb, db);
     pr.prove("A4: the border order's cross products (positions, tie orders) fit __int128", h,
              ctx.bool_val(true), dom.obligations_since(mark));
   }

@@ -78,9 +78,10 @@ public:
   }
   // rule: SCENE.NUMBER.FLOAT32
   // A JSON number of at most 8 digits without exponent, in one pass: an integer (rounded to
-  // float32 as short_integer's value is), or a decimal m / 10^k with m <= 2^24 and k <= 10,
-  // which one float32 division of two exact values rounds correctly, to nearest with ties to
-  // even (Clinger's fast path; 5^10 < 2^24): the value std::from_chars gives. Consumed with its
+  // float32 as short_integer's value is), or a decimal m / 10^k (k <= 7 digits after the point)
+  // with m <= 2^24, which one float32 division of two exact values rounds correctly, to nearest
+  // with ties to even (Clinger's fast path; 10^7 is exact in float32): the value
+  // std::from_chars gives. Consumed with its
   // value in out; false, consuming nothing but whitespace, for any other token (more digits,
   // an exponent, a leading zero, not a number: the caller reads it the longer way). From
   // scanning each coordinate three times and converting it with from_chars, half of
@@ -92,22 +93,15 @@ public:
     if (negative)
       ++q;
     const char* first = q;
-    std::uint32_t m = 0;
-    while (q < end_ && *q >= '0' && *q <= '9' && q - first < 8) {
-      m = 10 * m + static_cast<std::uint32_t>(*q - '0');
-      ++q;
-    }
+    std::int64_t m = 0;
+    q = digits_into(q, 8, m);
     const auto whole = static_cast<int>(q - first);
     if (whole == 0 || (whole > 1 && *first == '0'))
       return false;
     int after = 0;
     if (q < end_ && *q == '.') {
-      ++q;
-      const char* frac = q;
-      while (q < end_ && *q >= '0' && *q <= '9' && whole + (q - frac) < 8) {
-        m = 10 * m + static_cast<std::uint32_t>(*q - '0');
-        ++q;
-      }
+      const char* frac = q + 1;
+      q = digits_into(frac, 8 - whole, m);
       after = static_cast<int>(q - frac);
       if (after == 0)
         return false;
@@ -115,12 +109,10 @@ public:
     if (q < end_ && ((*q >= '0' && *q <= '9') || *q == '.' || *q == 'e' || *q == 'E'))
       return false;
     if (after == 0) {
-      const auto v = static_cast<std::int64_t>(m);
-      out = static_cast<float>(negative ? -v : v);
+      out = static_cast<float>(negative ? -m : m);
     } else {
-      static constexpr float kPow10[] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f,
-                                         1e6f, 1e7f, 1e8f, 1e9f, 1e10f};
-      if (after > 10 || m > (std::uint32_t{1} << 24))
+      static constexpr float kPow10[] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f, 1e6f, 1e7f};
+      if (m > (std::int64_t{1} << 24))
         return false;
       const float f = static_cast<float>(m) / kPow10[after];
       out = negative ? -f : f;
@@ -139,10 +131,7 @@ public:
       ++q;
     const char* first = q;
     std::int64_t v = 0;
-    while (q < end_ && q - first < 18 && *q >= '0' && *q <= '9') {
-      v = 10 * v + (*q - '0');
-      ++q;
-    }
+    q = digits_into(q, 18, v);
     if (q == first || (q - first > 1 && *first == '0'))
       return std::nullopt;
     if (q < end_ && ((*q >= '0' && *q <= '9') || *q == '.' || *q == 'e' || *q == 'E'))
@@ -186,6 +175,16 @@ public:
   }
 
 private:
+  // Reads decimal digits from q into v (v = 10 v + digit), at most `limit` of them; returns
+  // where it stopped.
+  const char* digits_into(const char* q, std::ptrdiff_t limit, std::int64_t& v) const {
+    const char* first = q;
+    while (q < end_ && q - first < limit && *q >= '0' && *q <= '9') {
+      v = 10 * v + (*q - '0');
+      ++q;
+    }
+    return q;
+  }
   bool digits() {
     const char* start = p_;
     while (p_ < end_ && *p_ >= '0' && *p_ <= '9')

@@ -60,11 +60,13 @@ template <class I> constexpr I cell_left_position(I yn, I top, I q) {
   return (I(3 * kCellSide) + top + I(kCellSide)) * q - yn;
 }
 
-// Returns whether position pa / qa precedes pb / qb on the border (qa, qb > 0), by cross
-// products in W.
+// Returns whether crossing a precedes crossing b on the border (q, d > 0): its position
+// pa / qa first, then, at one position, its tie order sa / da; by cross products in W.
 // rule: PATH.AREA.CELLS
-template <class W, class I> constexpr auto cell_position_less(I pa, I qa, I pb, I qb) {
-  return W(pa) * W(qb) < W(pb) * W(qa);
+template <class W, class I>
+constexpr auto cell_border_before(I pa, I qa, I sa, I da, I pb, I qb, I sb, I db) {
+  const W lhs = W(pa) * W(qb), rhs = W(pb) * W(qa);
+  return lhs < rhs || (lhs == rhs && W(sa) * W(db) < W(sb) * W(da));
 }
 
 // Returns whether edges with runs (ex, ey) and (fx, fy) are collinear and point in opposite
