@@ -58,7 +58,7 @@ inline constexpr std::size_t kMaxFuzzPathSegments = 8; // [1, 8] segments each
 
 // Decodes bytes into a scene of path primitives (SCENE.PRIM.PATH): target, fill convention,
 // 1, 4 or 16 samples and a sample mask, then per path its fill rule, coverage kind ("area"
-// for paths of lines, and sometimes with curves, which prepare() must refuse), contours of
+// for paths of lines, and sometimes with curves, PATH.AREA.CURVE), contours of
 // lines, quadratics and cubics whose points are mostly raw values near the target (often
 // multiples of 8 raw: on pixel centres and sample rows), sometimes decode_scene's coordinates.
 [[nodiscard]] Scene decode_path_scene(ByteReader& in);

@@ -16,6 +16,7 @@
 #include "checker.hpp"
 #include "rastrules/names.hpp"
 #include "rastrules/oracle/path.hpp"
+#include "rastrules/path.hpp"
 
 namespace rastrules::check {
 
@@ -54,6 +55,72 @@ using Expected = std::map<std::pair<std::int32_t, std::int32_t>, std::string>;
 
 } // namespace
 
+namespace {
+
+using Q = boost::multiprecision::cpp_rational;
+
+// The checks every fragment of area coverage passes: an area, the kept samples as its mask;
+// false (noted) where it has no area.
+bool area_fragment_ok(const Fragment& f, const std::string& at, std::uint32_t keep, Checker& c) {
+  if (!f.area) {
+    c.note(at + ": no area on a fragment of area coverage");
+    return false;
+  }
+  if (f.mask != keep)
+    c.note(at + ": mask " + std::to_string(f.mask) + ", not the kept samples " +
+           std::to_string(keep));
+  return true;
+}
+
+// The oracle's certified subdivision depth for curve areas: 64 pieces a curve.
+constexpr int kCurveDepth = 6;
+
+// Area coverage of a path with curves (PATH.AREA.CURVE): neither side is exact, so each pixel's
+// areas must lie within the sum of the two bounds (the oracle's: hulls of its pieces at depth
+// kCurveDepth; the kernel's: its fragment's bound, or 2^-32 px^2, the most PATH.AREA.CURVE
+// allows, where it lists no fragment).
+void check_curve_areas(const Scene& scene, std::size_t p, const oracle::path::Path& op,
+                       const std::vector<const Fragment*>& mine, std::uint32_t keep, Checker& c) {
+  c.used("path oracle (cover_area_bounded: CGAL arrangement of curves cut at depth 6)");
+  std::map<std::pair<std::int32_t, std::int32_t>, std::pair<Q, Q>> want, got;
+  for (const oracle::path::PixelAreaBound& a :
+       oracle::path::cover_area_bounded(op, scene.width, scene.height, kCurveDepth))
+    want[{a.area.y, a.area.x}] = {
+        Q(boost::multiprecision::cpp_int(a.area.num), boost::multiprecision::cpp_int(a.area.den)),
+        Q(boost::multiprecision::cpp_int(a.bound_num),
+          boost::multiprecision::cpp_int(a.bound_den))};
+  for (const Fragment* f : mine) {
+    const std::string at = pixel_text(p, f->x, f->y);
+    if (!area_fragment_ok(*f, at, keep, c))
+      continue;
+    if (!got.emplace(std::make_pair(f->y, f->x),
+                     std::make_pair(f->area.get()->area, f->area.get()->error_bound))
+             .second)
+      c.note(at + ": twice");
+  }
+  const Q most = Q(1) / Q(boost::multiprecision::cpp_int(1) << 32);
+  std::map<std::pair<std::int32_t, std::int32_t>, bool> pixels;
+  for (const auto& [key, v] : want)
+    pixels[key] = true;
+  for (const auto& [key, v] : got)
+    pixels[key] = true;
+  for (const auto& [key, unused] : pixels) {
+    const auto w = want.find(key);
+    const auto g = got.find(key);
+    const Q oa = w == want.end() ? Q(0) : w->second.first;
+    const Q ob = w == want.end() ? Q(0) : w->second.second;
+    const Q ka = g == got.end() ? Q(0) : g->second.first;
+    const Q kb = g == got.end() ? most : g->second.second;
+    if (kb > most)
+      c.note(pixel_text(p, key.second, key.first) + ": kernel bound " + kb.str() + " above 2^-32");
+    if (abs(ka - oa) > kb + ob)
+      c.note(pixel_text(p, key.second, key.first) + ": kernel area " + ka.str() + " +- " +
+             kb.str() + ", oracle " + oa.str() + " +- " + ob.str());
+  }
+}
+
+} // namespace
+
 // rule: PATH.COVER.SAMPLE, PATH.AREA.EXACT, SCENE.OUTPUT.AREA, MSAA.MASK.AND
 void check_path(const Scene& scene, std::size_t p, const std::vector<const Fragment*>& mine,
                 Checker& c) {
@@ -72,6 +139,9 @@ void check_path(const Scene& scene, std::size_t p, const std::vector<const Fragm
       if ((m.mask & keep) != 0)
         want[{m.y, m.x}] = "mask " + std::to_string(m.mask & keep);
     }
+  } else if (keep != 0 && oracle::path::has_curves(op)) {
+    check_curve_areas(scene, p, op, mine, keep, c);
+    return;
   } else if (keep != 0) { // a sample mask that keeps no sample leaves no fragment (MSAA.MASK.AND)
     c.used("path oracle (cover_area: exact areas from a CGAL arrangement)");
     for (const oracle::path::PixelArea& a :
@@ -92,13 +162,8 @@ void check_path(const Scene& scene, std::size_t p, const std::vector<const Fragm
         c.note(at + ": an area on a fragment of sample coverage");
       value = "mask " + std::to_string(f->mask);
     } else {
-      if (!f->area) {
-        c.note(at + ": no area on a fragment of area coverage");
+      if (!area_fragment_ok(*f, at, keep, c))
         continue;
-      }
-      if (f->mask != keep)
-        c.note(at + ": mask " + std::to_string(f->mask) + ", not the kept samples " +
-               std::to_string(keep));
       value = "area " + f->area.text() + " alpha " + std::to_string(f->area.alpha());
     }
     if (f->seg || f->sample || f->helper || f->centroid || f->derivatives || f->coverage_q16)

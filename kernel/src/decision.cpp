@@ -191,7 +191,7 @@ PathDecision decide_path(const PreparedScene& scene, const PreparedPrimitive& pr
   }
   // rule: PATH.AREA.EXACT
   path::cover_area(*prim.path, scene.width, y + 1, [&](const path::AreaCoverage& a) {
-    if (a.x == x && a.y == y) {
+    if (a.x == x && a.y == y && a.area != 0) {
       d.area = ExactArea(
           std::make_shared<const path::AreaValue>(path::AreaValue{a.area, a.error_bound}));
     }

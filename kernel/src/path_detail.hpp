@@ -111,6 +111,11 @@ void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
 [[nodiscard]] std::optional<std::int64_t> curve_filter_floor(const std::array<std::int64_t, 4>& e,
                                                              std::int64_t k);
 
+// Area coverage of a boundary with curves (PATH.AREA.CURVE; kernel/src/path_area_curve.cpp):
+// every pixel of [0, w) x [0, h) with a nonzero area or a nonzero error bound, row by row.
+void cover_area_curves(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,
+                       const std::function<void(const AreaCoverage&)>& emit);
+
 // An edge oriented top end first (ya < yb), with the direction of the original (+1 down).
 struct DownEdge {
   std::int64_t xa = 0, ya = 0, xb = 0, yb = 0;

@@ -83,10 +83,19 @@ double ExactArea::approx() const {
   return negative ? -v : v;
 }
 
+// rule: SCENE.OUTPUT.AREA, PATH.AREA.CURVE
+std::string ExactArea::bound_text() const {
+  if (!value_ || value_->error_bound == 0)
+    return {};
+  const Rational& q = value_->error_bound;
+  return boost::multiprecision::numerator(q).str() + "/" +
+         boost::multiprecision::denominator(q).str();
+}
+
 bool operator==(const ExactArea& a, const ExactArea& b) {
   if (!a || !b)
     return !a && !b;
-  return value_of(a) == value_of(b);
+  return value_of(a) == value_of(b) && a.get()->error_bound == b.get()->error_bound;
 }
 
 namespace detail {
@@ -157,18 +166,6 @@ std::optional<SceneError> prepare_path(const FloatPath& in, std::size_t p,
       pc.segments.push_back(ps);
     }
     out->contours.push_back(std::move(pc));
-  }
-  // rule: PATH.AREA.EXACT
-  if (in.coverage == path::Coverage::kArea) {
-    for (const path::Contour& c : out->contours) {
-      for (const path::Segment& s : c.segments) {
-        if (s.kind != path::SegmentKind::kLine) {
-          return SceneError{field_of(p) + ".coverage",
-                            "\"area\" of curves is not supported yet (PATH.AREA.EXACT); "
-                            "\"samples\" draws them exactly"};
-        }
-      }
-    }
   }
   prim.path = std::move(out);
   prim.coverage = in.coverage;
@@ -275,6 +272,8 @@ void path_fragments(const PreparedScene& scene, std::size_t p,
     return;
   }
   path::cover_area(*prim.path, scene.width, scene.height, [&](const path::AreaCoverage& a) {
+    if (a.area == 0)
+      return; // a pixel listed for its error bound alone (curves, PATH.AREA.CURVE)
     Fragment f{id, a.x, a.y, keep};
     f.area =
         ExactArea(std::make_shared<const path::AreaValue>(path::AreaValue{a.area, a.error_bound}));

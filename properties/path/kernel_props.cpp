@@ -402,31 +402,11 @@ RC_GTEST_PROP(PathKernel, AreaWithinTheGridBoundOfItsSamples, ()) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Curves: exact sample decisions, kernel == oracle. Skipped (with the reason) while the
-// kernel rejects curves.
-
-// Returns whether the kernel accepts a path with one quadratic in `use` (it throws
-// std::invalid_argument for what it does not implement yet).
-template <class Use> bool kernel_accepts_curves(Use use) {
-  kp::Path p;
-  p.contours.push_back(kp::Contour{
-      {0, 0},
-      {kp::Segment{kp::SegmentKind::kQuadratic, {kp::Point{512, 256}, kp::Point{0, 512}, {}}}}});
-  try {
-    use(p);
-    return true;
-  } catch (const std::invalid_argument&) {
-    return false;
-  }
-}
+// Curves: exact sample decisions, kernel == oracle.
 
 // rule: PATH.CURVE.SAMPLE, PATH.WINDING, PATH.SAMPLE.TIE, PATH.COVER.SAMPLE, PATH.GEOMETRY
 // rule: PATH.TIE.PARTITION
 TEST(PathKernel, CurveSampleMasksAndTieWindingsEqualOracle) {
-  if (!kernel_accepts_curves([](const kp::Path& p) {
-        (void)kp::winding_number(p, {128, 256}, rastrules::FillConvention::kTopLeft);
-      }))
-    GTEST_SKIP() << "the kernel rejects curves (std::invalid_argument)";
   EXPECT_TRUE(rc::check("curve sample masks and tie windings, kernel == oracle", [] {
     pg::GPath p;
     p.kind = pg::PathKind::kCurves;
@@ -464,30 +444,10 @@ TEST(PathKernel, CurveSampleMasksAndTieWindingsEqualOracle) {
 namespace {
 
 // The kernel's curve areas within their stated error bound plus the oracle's certified one
-// (depth 6: 64 pieces per curve) of the exact area, in every pixel. While the kernel refuses
-// area coverage of curves (PATH.AREA.EXACT says so), the refusal is what is checked: a random
-// path is refused exactly when one of its segments is a curve.
-// rule: PATH.AREA.EXACT
+// (depth 6: 64 pieces per curve) of the exact area, in every pixel, and every bound at most
+// 2^-32 px^2 (PATH.AREA.CURVE).
+// rule: PATH.AREA.EXACT, PATH.AREA.CURVE
 TEST(PathKernel, CurveAreasWithinTheBoundsOfTheCertifiedOracle) {
-  if (!kernel_accepts_curves([](const kp::Path& p) { (void)kp::cover_area(p, 2, 2); })) {
-    EXPECT_TRUE(rc::check("curve areas are refused, never approximated", [] {
-      pg::GPath p{pg::PathKind::kCurves, *rc::gen::arbitrary<bool>(), {}};
-      p.contours.push_back(*pg::curve_contour(kSide));
-      bool curved = false;
-      for (const auto& c : to_kernel(p).contours)
-        for (const auto& seg : c.segments)
-          curved = curved || seg.kind != kp::SegmentKind::kLine;
-      bool refused = false;
-      try {
-        (void)kp::cover_area(to_kernel(p), kSide, kSide);
-      } catch (const std::invalid_argument&) {
-        refused = true;
-      }
-      RC_CLASSIFY(curved, "with curves");
-      RC_ASSERT(refused == curved); // refused exactly when a segment is a curve
-    }));
-    return;
-  }
   EXPECT_TRUE(rc::check("curve areas, kernel within bounds of the oracle", [] {
     pg::GPath p{pg::PathKind::kCurves, *rc::gen::arbitrary<bool>(), {}};
     const int n = *rc::gen::inRange(1, 3);

@@ -4,7 +4,7 @@
 // and exact area coverage. Rules: spec/rules/path.md.
 // Implements: PATH.GEOMETRY, PATH.CONTOUR.CLOSE, PATH.WINDING, PATH.FILL.RULE,
 //             PATH.SAMPLE.TIE, PATH.COVER.SAMPLE, PATH.AREA.EXACT, PATH.DEGENERATE,
-//             PATH.CURVE.SAMPLE, PATH.AREA.CELLS, PATH.AREA.ALPHA
+//             PATH.CURVE.SAMPLE, PATH.AREA.CELLS, PATH.AREA.ALPHA, PATH.AREA.CURVE
 // Needs, beyond the standard library, Boost.Multiprecision's headers (exact rational areas).
 
 #pragma once
@@ -85,10 +85,11 @@ struct AreaValue {
   boost::multiprecision::cpp_rational error_bound;
 };
 
-// Returns every pixel of [0, w) x [0, h) with nonzero area under the fill rule, row by row.
-// A target side above kMaxTargetSide (the bound the cell method's budgets are proved for) and
-// paths with curves (not supported yet) throw std::invalid_argument (PATH.AREA.EXACT).
-// rule: PATH.AREA.EXACT
+// Returns every pixel of [0, w) x [0, h) with nonzero area under the fill rule, row by row:
+// exact for paths of lines; for paths with curves within each pixel's error_bound, and pixels
+// with a nonzero bound are listed too (PATH.AREA.CURVE). A target side above kMaxTargetSide (the
+// bound the cell method's budgets are proved for) throws std::invalid_argument.
+// rule: PATH.AREA.EXACT, PATH.AREA.CURVE
 [[nodiscard]] std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w,
                                                    std::int32_t h);
 // The same, each pixel passed to emit as it is found (memory: one row of the target).
@@ -98,7 +99,7 @@ void cover_area(const Path& path, std::int32_t w, std::int32_t h,
 // Writes the 8-bit alpha of every pixel of [0, w) x [0, h) into alpha (row by row, w * h
 // bytes, else std::invalid_argument): floor(255 a + 1/2) of the exact area a of cover_area, so
 // a pixel listed by cover_area may get alpha 0 (a < 1/510). Builds no rational where the area
-// fits 128-bit fractions. Paths with curves: std::invalid_argument, as cover_area.
+// fits 128-bit fractions. Paths with curves: the alpha of cover_area's area (PATH.AREA.CURVE).
 // rule: PATH.AREA.ALPHA
 void cover_area_alpha(const Path& path, std::int32_t w, std::int32_t h,
                       std::span<std::uint8_t> alpha);

@@ -76,6 +76,7 @@ inline constexpr RuleId kPathSampleTie{"PATH.SAMPLE.TIE"};
 inline constexpr RuleId kPathFillRule{"PATH.FILL.RULE"};
 inline constexpr RuleId kPathContourClose{"PATH.CONTOUR.CLOSE"};
 inline constexpr RuleId kPathAreaExact{"PATH.AREA.EXACT"};
+inline constexpr RuleId kPathAreaCurve{"PATH.AREA.CURVE"};
 
 } // namespace rules
 } // namespace rastrules

@@ -176,6 +176,9 @@ public:
   [[nodiscard]] explicit operator bool() const { return value_ != nullptr; }
   // The area in px^2 as a reduced fraction, "num/den", or "num" when it is an integer.
   [[nodiscard]] std::string text() const;
+  // The bound of the area's error in px^2 as a reduced fraction, "num/den" (paths with curves,
+  // PATH.AREA.CURVE), or "" when the area is exact.
+  [[nodiscard]] std::string bound_text() const;
   // The area as 8-bit alpha, as 2D libraries store coverage: floor(area * 255 + 1/2).
   [[nodiscard]] std::uint8_t alpha() const;
   // The area rounded to the nearest double.

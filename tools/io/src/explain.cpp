@@ -390,7 +390,11 @@ std::string path_text(const Report& r, const PreparedScene& s) {
   }
   if (area) {
     if (d.area) {
+      const std::string bound = d.area.bound_text();
       out += "  area " + d.area.text() + " px^2 (about " + std::to_string(d.area.approx()) +
+             (bound.empty() ? std::string()
+                            : ", within " + bound + " px^2 of the exact area of the curves  " +
+                                  cite({rules::kPathAreaCurve})) +
              "), alpha " + std::to_string(d.area.alpha()) + " -> fragment, mask " +
              mask_text(d.mask, s.msaa.count()) + "  " +
              cite({rules::kPathAreaExact, rules::kSceneOutputArea}) + "\n";
@@ -695,6 +699,8 @@ ojson path_json(const Report& r) {
   p["mask"] = d.mask;
   if (d.coverage == path::Coverage::kArea) {
     p["area"] = d.area ? d.area.text() : "0";
+    if (d.area && !d.area.bound_text().empty())
+      p["area_bound"] = d.area.bound_text(); // rule: PATH.AREA.CURVE
     p["alpha"] = d.area.alpha();
   }
   p["covered"] = r.covered;

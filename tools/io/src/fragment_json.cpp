@@ -115,8 +115,10 @@ void append_fragment_fields(std::string& out, const Fragment& f, bool first,
   }
   // rule: SCENE.OUTPUT.AREA
   if (f.area) {
-    out += ", \"area\": \"" + f.area.text() + "\", \"alpha\": ";
-    out += std::to_string(f.area.alpha());
+    out += ", \"area\": \"" + f.area.text() + "\"";
+    if (const std::string bound = f.area.bound_text(); !bound.empty())
+      out += ", \"area_bound\": \"" + bound + "\""; // rule: PATH.AREA.CURVE
+    out += ", \"alpha\": " + std::to_string(f.area.alpha());
   }
 }
 
