@@ -197,6 +197,7 @@ PathDecision decide_path(const PreparedScene& scene, const PreparedPrimitive& pr
     }
   });
   d.mask = d.area ? keep : 0u;
+  d.windings = path::winding_areas(*prim.path, x, y, scene.width, scene.height);
   return d;
 }
 

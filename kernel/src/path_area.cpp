@@ -812,6 +812,17 @@ void cover_area_alpha(const Path& path, std::int32_t w, std::int32_t h,
   detail::cover_alpha_by(path, w, h, detail::AreaMethod::kCells, alpha, nullptr);
 }
 
+// rule: PATH.AREA.EXACT, PATH.AREA.CURVE, PATH.WINDING
+PixelWindings winding_areas(const Path& path, std::int32_t x, std::int32_t y, std::int32_t w,
+                            std::int32_t h) {
+  if (w > kMaxTargetSide || h > kMaxTargetSide)
+    throw std::invalid_argument(
+        "path: area coverage of a target wider or taller than 16384 px (PATH.AREA.CELLS)");
+  if (x < 0 || y < 0 || x >= w || y >= h)
+    throw std::invalid_argument("path: a pixel outside the target (PATH.AREA.EXACT)");
+  return detail::pixel_windings(detail::boundary_of(path), path.fill_rule, x, y, w, h);
+}
+
 // rule: PATH.AREA.EXACT
 std::vector<AreaCoverage> cover_area(const Path& path, std::int32_t w, std::int32_t h) {
   std::vector<AreaCoverage> out;

@@ -337,6 +337,32 @@ const Rational& twice_stop() {
   return stop;
 }
 
+// A chord of the polygon, top end first, with its direction (+1 where the boundary runs down)
+// and its lens (index into the finals, or none).
+struct Chord {
+  Rational xa, ya, xb, yb, slope; // slope dx / dy
+  Rational xmin, xmax;
+  int dir = 0;
+  std::optional<std::size_t> lens;
+  bool lens_right = false; // the lens lies right of the chord
+  Rational x_at(const Rational& y) const { return xa + (y - ya) * slope; }
+};
+
+// The polygon of the chords, ready for the rows: its chords by the rows they reach into, the
+// bounds by pixel, and the change of the winding number inside each lens.
+struct Polygon {
+  std::vector<Chord> chords;
+  std::vector<std::vector<std::size_t>> by_row;
+  std::vector<std::map<std::int64_t, Rational>> bound; // twice, raw^2, by row then column
+  std::map<std::size_t, std::int64_t> lens_dw;         // lens -> the change of w inside it
+};
+
+// A chord over one slab of a row: its x at the slab's top and bottom.
+struct Slice {
+  const Chord* e;
+  Rational xa, xb, key;
+};
+
 // The pieces a path may be cut into: 2^12 a curve and 2^16 more. Curves that overlap along a
 // stretch (never twins) or run within a hair of each other would be halved down to 2^-40 px^2
 // all along it; the budget stops that, with the bounds of the pieces left as they are.
@@ -379,6 +405,8 @@ public:
   }
 
   void emit(const std::function<void(const AreaCoverage&)>& out) const;
+  // The parts of pixel (x, y) by winding number, and its bound (PATH.AREA.CURVE).
+  [[nodiscard]] PixelWindings windings(std::int32_t x, std::int32_t y) const;
 
 private:
   void add_final(Piece p, Kind kind, Rational twice = 0, std::int64_t ci = 0, std::int64_t cj = 0) {
@@ -427,6 +455,10 @@ private:
   // another piece is bounded or halved (into todo). A lens that passed stays right: the pieces
   // that replace a halved one lie in its hull.
   void check_lenses(std::vector<Piece>& todo);
+
+  [[nodiscard]] Polygon polygon() const;
+  void slabs(const Polygon& poly, std::int32_t j,
+             const std::function<void(const std::vector<Slice>&, const Rational&)>& each) const;
 
   FillRule rule_;
   std::int32_t w_, h_;
@@ -495,24 +527,15 @@ void CurveAreas::check_lenses(std::vector<Piece>& todo) {
   }
 }
 
-// A chord of the polygon, top end first, with its direction (+1 where the boundary runs down)
-// and its lens (index into the finals, or none).
-struct Chord {
-  Rational xa, ya, xb, yb, slope; // slope dx / dy
-  Rational xmin, xmax;
-  int dir = 0;
-  std::optional<std::size_t> lens;
-  bool lens_right = false; // the lens lies right of the chord
-  Rational x_at(const Rational& y) const { return xa + (y - ya) * slope; }
-};
-
-void CurveAreas::emit(const std::function<void(const AreaCoverage&)>& out) const {
+Polygon CurveAreas::polygon() const {
   const std::int32_t w = w_, h = h_;
-  // The chords by the pixel rows they reach into.
-  std::vector<Chord> chords;
-  std::vector<std::vector<std::size_t>> by_row(static_cast<std::size_t>(h));
-  // Per pixel: the bound (twice, raw^2) and the lenses' corrections are added row by row.
-  std::vector<std::map<std::int64_t, Rational>> bound(static_cast<std::size_t>(h));
+  Polygon poly;
+  std::vector<Chord>& chords = poly.chords;
+  auto& by_row = poly.by_row;
+  by_row.resize(static_cast<std::size_t>(h));
+  auto& bound = poly.bound;
+  bound.resize(static_cast<std::size_t>(h));
+  auto& lens_dw = poly.lens_dw;
   for (std::size_t k = 0; k < finals_.size(); ++k) {
     const Final& f = finals_[k];
     if (f.kind == Kind::kBounded && f.twice_area != 0) {
@@ -552,7 +575,6 @@ void CurveAreas::emit(const std::function<void(const AreaCoverage&)>& out) const
   }
   // Twin lenses (the same curve piece drawn more than once) are one region: its winding number
   // changes by the sum of their signs, added once, by the first of them.
-  std::map<std::size_t, std::int64_t> lens_dw; // lens -> the change of w inside it
   {
     std::map<std::vector<I128>, std::size_t> first;
     for (std::size_t k = 0; k < finals_.size(); ++k) {
@@ -570,95 +592,112 @@ void CurveAreas::emit(const std::function<void(const AreaCoverage&)>& out) const
       lens_dw[it->second] += sign_of(f.twice_area);
     }
   }
+  return poly;
+}
+
+// Calls each(slices, height) for every slab of row j, its chords sorted left to right.
+void CurveAreas::slabs(
+    const Polygon& poly, std::int32_t j,
+    const std::function<void(const std::vector<Slice>&, const Rational&)>& each) const {
+  const std::vector<Chord>& chords = poly.chords;
+  const std::vector<std::size_t>& in_row = poly.by_row[static_cast<std::size_t>(j)];
+  const Rational y0(std::int64_t{j} * kSubpixelOne), y1 = y0 + kSubpixelOne;
+  // Cut heights: the row's top and bottom, every end inside it, every crossing of two chords.
+  std::vector<Rational> cuts{y0, y1};
+  for (const std::size_t k : in_row) {
+    const Chord& e = chords[k];
+    if (e.ya > y0)
+      cuts.push_back(e.ya);
+    if (e.yb < y1)
+      cuts.push_back(e.yb);
+  }
+  // The row's chords by their top ends; a sweep down them meets each pair that overlaps in y
+  // once, while both are active.
+  std::vector<std::size_t> order = in_row;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t p, std::size_t q) { return chords[p].ya < chords[q].ya; });
+  std::vector<std::size_t> active;
+  for (const std::size_t m : order) {
+    const Chord& e = chords[m];
+    std::erase_if(active, [&](std::size_t q) { return chords[q].yb <= e.ya; });
+    for (const std::size_t q : active) {
+      const Chord& f = chords[q];
+      if (e.xmax < f.xmin || f.xmax < e.xmin)
+        continue; // apart in x: they cannot cross
+      const Rational lo = std::max({e.ya, f.ya, y0});
+      const Rational hi = std::min({e.yb, f.yb, y1});
+      if (lo >= hi)
+        continue;
+      const Rational dlo = e.x_at(lo) - f.x_at(lo);
+      const Rational dhi = e.x_at(hi) - f.x_at(hi);
+      if ((dlo < 0 && dhi > 0) || (dlo > 0 && dhi < 0))
+        cuts.push_back(lo + (hi - lo) * dlo / (dlo - dhi));
+    }
+    active.push_back(m);
+  }
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  std::vector<Slice> slices;
+  active.clear();
+  std::size_t next = 0; // into order
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const Rational& ya = cuts[k];
+    const Rational& yb = cuts[k + 1];
+    // Every end inside the row is a cut: the chords over the slab are those begun by its top
+    // and not ended there.
+    for (; next < order.size() && chords[order[next]].ya <= ya; ++next)
+      active.push_back(order[next]);
+    std::erase_if(active, [&](std::size_t q) { return chords[q].yb <= ya; });
+    slices.clear();
+    for (const std::size_t m : active) {
+      const Chord& e = chords[m];
+      Rational xa = e.x_at(ya), xb = e.x_at(yb);
+      Rational key = xa + xb; // twice the x at mid-slab: no two chords cross inside the slab
+      slices.push_back(Slice{&e, std::move(xa), std::move(xb), std::move(key)});
+    }
+    std::sort(slices.begin(), slices.end(),
+              [](const Slice& p, const Slice& q) { return p.key < q.key; });
+    each(slices, yb - ya);
+  }
+}
+
+// Records, for every lens chord among the slices, the winding number on its lens's side (the
+// same all along it: nothing else comes into the lens): left of every chord equal to it in the
+// slab (its twins'), or right of them all.
+void lens_sides(const std::vector<Slice>& slices, std::map<std::size_t, std::int64_t>& lens_w) {
+  std::int64_t wn = 0, before_equal = 0;
+  for (std::size_t m = 0; m < slices.size(); ++m) {
+    const Chord& e = *slices[m].e;
+    if (m == 0 || slices[m - 1].key != slices[m].key)
+      before_equal = wn;
+    wn -= e.dir;
+    if (e.lens && !e.lens_right)
+      lens_w.emplace(*e.lens, before_equal);
+    if (m + 1 == slices.size() || slices[m + 1].key != slices[m].key) {
+      for (std::size_t q = m + 1; q-- > 0 && slices[q].key == slices[m].key;)
+        if (slices[q].e->lens && slices[q].e->lens_right)
+          lens_w.emplace(*slices[q].e->lens, wn);
+    }
+  }
+}
+
+void CurveAreas::emit(const std::function<void(const AreaCoverage&)>& out) const {
+  const std::int32_t w = w_, h = h_;
+  const Polygon poly = polygon();
   RowAreas row(w);
   const Rational pixel_area(std::int64_t{kSubpixelOne} * kSubpixelOne);
   for (std::int32_t j = 0; j < h; ++j) {
-    const std::vector<std::size_t>& in_row = by_row[static_cast<std::size_t>(j)];
-    std::map<std::int64_t, Rational>& extra = bound[static_cast<std::size_t>(j)];
-    if (in_row.empty() && extra.empty())
+    const std::map<std::int64_t, Rational>& extra = poly.bound[static_cast<std::size_t>(j)];
+    if (poly.by_row[static_cast<std::size_t>(j)].empty() && extra.empty())
       continue;
-    const Rational y0(std::int64_t{j} * kSubpixelOne), y1 = y0 + kSubpixelOne;
-    // Cut heights: the row's top and bottom, every end inside it, every crossing of two chords.
-    std::vector<Rational> cuts{y0, y1};
-    for (const std::size_t k : in_row) {
-      const Chord& e = chords[k];
-      if (e.ya > y0)
-        cuts.push_back(e.ya);
-      if (e.yb < y1)
-        cuts.push_back(e.yb);
-    }
-    // The row's chords by their top ends; a sweep down them meets each pair that overlaps in y
-    // once, while both are active.
-    std::vector<std::size_t> order = in_row;
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t p, std::size_t q) { return chords[p].ya < chords[q].ya; });
-    std::vector<std::size_t> active;
-    for (const std::size_t m : order) {
-      const Chord& e = chords[m];
-      std::erase_if(active, [&](std::size_t q) { return chords[q].yb <= e.ya; });
-      for (const std::size_t q : active) {
-        const Chord& f = chords[q];
-        if (e.xmax < f.xmin || f.xmax < e.xmin)
-          continue; // apart in x: they cannot cross
-        const Rational lo = std::max({e.ya, f.ya, y0});
-        const Rational hi = std::min({e.yb, f.yb, y1});
-        if (lo >= hi)
-          continue;
-        const Rational dlo = e.x_at(lo) - f.x_at(lo);
-        const Rational dhi = e.x_at(hi) - f.x_at(hi);
-        if ((dlo < 0 && dhi > 0) || (dlo > 0 && dhi < 0))
-          cuts.push_back(lo + (hi - lo) * dlo / (dlo - dhi));
-      }
-      active.push_back(m);
-    }
-    std::sort(cuts.begin(), cuts.end());
-    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-    // The winding number on each lens's side of its chord (the same all along it: nothing else
-    // comes into the lens).
     std::map<std::size_t, std::int64_t> lens_w;
-    struct Slice {
-      const Chord* e;
-      Rational xa, xb, key;
-    };
-    std::vector<Slice> slices;
-    active.clear();
-    std::size_t next = 0; // into order
-    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
-      const Rational& ya = cuts[k];
-      const Rational& yb = cuts[k + 1];
-      // Every end inside the row is a cut: the chords over the slab are those begun by its top
-      // and not ended there.
-      for (; next < order.size() && chords[order[next]].ya <= ya; ++next)
-        active.push_back(order[next]);
-      std::erase_if(active, [&](std::size_t q) { return chords[q].yb <= ya; });
-      slices.clear();
-      for (const std::size_t m : active) {
-        const Chord& e = chords[m];
-        Rational xa = e.x_at(ya), xb = e.x_at(yb);
-        Rational key = xa + xb; // twice the x at mid-slab: no two chords cross inside the slab
-        slices.push_back(Slice{&e, std::move(xa), std::move(xb), std::move(key)});
-      }
-      std::sort(slices.begin(), slices.end(),
-                [](const Slice& p, const Slice& q) { return p.key < q.key; });
-      const Rational hgt = yb - ya;
+    slabs(poly, j, [&](const std::vector<Slice>& slices, const Rational& hgt) {
+      lens_sides(slices, lens_w);
       std::int64_t wn = 0;
       std::size_t run_start = 0;
       bool in_run = false;
-      std::int64_t before_equal = 0; // w left of the chords with this one's key
       for (std::size_t m = 0; m < slices.size(); ++m) {
-        const Chord& e = *slices[m].e;
-        if (m == 0 || slices[m - 1].key != slices[m].key)
-          before_equal = wn;
-        wn -= e.dir;
-        // A lens's side of its chord: left of every chord equal to it in the slab (its twins'),
-        // or right of them all.
-        if (e.lens && !e.lens_right)
-          lens_w.emplace(*e.lens, before_equal);
-        if (m + 1 == slices.size() || slices[m + 1].key != slices[m].key) {
-          for (std::size_t q = m + 1; q-- > 0 && slices[q].key == slices[m].key;)
-            if (slices[q].e->lens && slices[q].e->lens_right)
-              lens_w.emplace(*slices[q].e->lens, wn);
-        }
+        wn -= slices[m].e->dir;
         const bool filled = fill_holds(rule_, wn);
         if (filled && !in_run) {
           run_start = m;
@@ -669,14 +708,14 @@ void CurveAreas::emit(const std::function<void(const AreaCoverage&)>& out) const
           in_run = false;
         }
       }
-    }
+    });
     // The lenses: the area between the arc and its chord, where the fill rule holds on the arc's
     // side and not on the chord's (or the reverse).
     std::map<std::int64_t, Rational> lens_area; // raw^2
     for (const auto& [k, k1] : lens_w) {
       const Final& f = finals_[k];
-      const auto dw = lens_dw.find(k);
-      if (f.ci < 0 || f.ci >= w || dw == lens_dw.end())
+      const auto dw = poly.lens_dw.find(k);
+      if (f.ci < 0 || f.ci >= w || dw == poly.lens_dw.end())
         continue; // outside the target, or a twin of an earlier lens
       const std::int64_t k2 = k1 + dw->second;
       const int change = int{fill_holds(rule_, k2)} - int{fill_holds(rule_, k1)};
@@ -719,7 +758,54 @@ void CurveAreas::emit(const std::function<void(const AreaCoverage&)>& out) const
   }
 }
 
+// The parts of pixel (x, y) by winding number: between consecutive chords of a slab the
+// polygon's winding number is constant, and the area of the column between them is the
+// difference of their column integrals; a lens in the pixel moves its area from the winding
+// number on its chord's side to the curve's.
+PixelWindings CurveAreas::windings(std::int32_t x, std::int32_t y) const {
+  const Polygon poly = polygon();
+  std::map<std::int64_t, Rational> part; // raw^2, by winding number
+  std::map<std::size_t, std::int64_t> lens_w;
+  const std::int64_t lo = std::int64_t{x} * kSubpixelOne;
+  slabs(poly, y, [&](const std::vector<Slice>& slices, const Rational& hgt) {
+    lens_sides(slices, lens_w);
+    Rational left = 0; // the column's area left of the chord passed last
+    std::int64_t wn = 0;
+    for (const Slice& sl : slices) {
+      const Rational upto = column_integral(sl.xa, sl.xb, hgt, lo);
+      part[wn] += upto - left;
+      left = upto;
+      wn -= sl.e->dir;
+    }
+    part[wn] += Rational(kSubpixelOne) * hgt - left;
+  });
+  for (const auto& [k, k1] : lens_w) {
+    const Final& f = finals_[k];
+    const auto dw = poly.lens_dw.find(k);
+    if (f.ci != x || dw == poly.lens_dw.end() || dw->second == 0)
+      continue;
+    const Rational a = abs(f.twice_area) / 2;
+    part[k1] -= a;
+    part[k1 + dw->second] += a;
+  }
+  PixelWindings out;
+  const Rational pixel_area(std::int64_t{kSubpixelOne} * kSubpixelOne);
+  for (const auto& [k, a] : part)
+    if (a != 0)
+      out.parts.push_back(WindingArea{k, a / pixel_area, fill_holds(rule_, k)});
+  if (const auto it = poly.bound[static_cast<std::size_t>(y)].find(x);
+      it != poly.bound[static_cast<std::size_t>(y)].end())
+    out.error_bound = it->second / 2 / pixel_area;
+  return out;
+}
+
 } // namespace
+
+// rule: PATH.AREA.EXACT, PATH.AREA.CURVE
+PixelWindings pixel_windings(const Boundary& b, FillRule rule, std::int32_t x, std::int32_t y,
+                             std::int32_t w, std::int32_t h) {
+  return CurveAreas(b, rule, w, h).windings(x, y);
+}
 
 // rule: PATH.AREA.CURVE, PATH.AREA.EXACT
 void cover_area_curves(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,

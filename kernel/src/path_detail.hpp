@@ -115,6 +115,9 @@ void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
 // every pixel of [0, w) x [0, h) with a nonzero area or a nonzero error bound, row by row.
 void cover_area_curves(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,
                        const std::function<void(const AreaCoverage&)>& emit);
+// The parts of pixel (x, y) by winding number (path::winding_areas), lines or curves.
+[[nodiscard]] PixelWindings pixel_windings(const Boundary& b, FillRule rule, std::int32_t x,
+                                           std::int32_t y, std::int32_t w, std::int32_t h);
 
 // An edge oriented top end first (ya < yb), with the direction of the original (+1 down).
 struct DownEdge {

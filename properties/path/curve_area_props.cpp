@@ -414,3 +414,41 @@ TEST(PathCurveAreaRegression, ALoopThroughTheLensOfAPieceOfItsOwnCurve) {
 }
 
 } // namespace
+
+namespace {
+
+// The parts of a pixel by winding number (path::winding_areas, what explain prints) add up to
+// the whole pixel, those that fill to cover_area's area and the bound to its bound, exactly
+// (lines and curves: the same polygon and lenses), and they do not depend on the fill rule.
+// rule: PATH.AREA.EXACT, PATH.AREA.CURVE, PATH.WINDING
+RC_GTEST_PROP(PathWindingAreas, PartsAddUpToThePixelAndTheFilledOnesToItsArea, ()) {
+  const bool curves = *rc::gen::arbitrary<bool>();
+  const pg::GPath p = curves ? curve_path() : *pg::path(kSide, false);
+  pc::show_path(p);
+  RC_TAG(curves ? "curves" : "lines");
+  pg::GPath other = p;
+  other.evenodd = !p.evenodd;
+  const Areas areas = areas_of(to_kernel(p), kSide);
+  const std::int32_t x = *rc::gen::inRange(0, kSide), y = *rc::gen::inRange(0, kSide);
+  const kp::PixelWindings w = kp::winding_areas(to_kernel(p), x, y, kSide, kSide);
+  const kp::PixelWindings v = kp::winding_areas(to_kernel(other), x, y, kSide, kSide);
+  Rational all = 0, filled = 0;
+  RC_ASSERT(w.parts.size() == v.parts.size());
+  for (std::size_t k = 0; k < w.parts.size(); ++k) {
+    RC_ASSERT(w.parts[k].winding == v.parts[k].winding);
+    RC_ASSERT(w.parts[k].area == v.parts[k].area);
+    RC_ASSERT(w.parts[k].area > 0);
+    RC_ASSERT(w.parts[k].fills ==
+              rastrules::path::fill_holds(to_kernel(p).fill_rule, w.parts[k].winding));
+    all += w.parts[k].area;
+    if (w.parts[k].fills)
+      filled += w.parts[k].area;
+  }
+  RC_CLASSIFY(w.parts.size() >= 3, "three or more windings in the pixel");
+  RC_ASSERT(all == 1);
+  const auto it = areas.find({y, x});
+  RC_ASSERT(filled == (it == areas.end() ? Rational(0) : it->second.area));
+  RC_ASSERT(w.error_bound == (it == areas.end() ? Rational(0) : it->second.error_bound));
+}
+
+} // namespace

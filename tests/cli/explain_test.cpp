@@ -189,7 +189,7 @@ constexpr const char* kNested = R"({"target": {"width": 8, "height": 6}, "primit
    "d": "M 1 1 L 7 1 L 4 5 Z M 2 2 L 6 2 L 4 4.5 Z"}]})";
 
 // rule: SCENE.PRIM.PATH, PATH.WINDING, PATH.FILL.RULE, PATH.AREA.EXACT
-TEST(CliExplainPath, NamesEveryCrossingTheWindingAndTheExactArea) {
+TEST(CliExplainPath, NamesEveryCrossingTheWindingTheFacesAndTheExactArea) {
   const auto r = explain_pixel("3,3", kNested);
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string& out = r.out;
@@ -203,6 +203,13 @@ TEST(CliExplainPath, NamesEveryCrossingTheWindingAndTheExactArea) {
       << out;
   EXPECT_TRUE(contains(out, "mask 0b0 (no sample) -> no fragment")) << out;
   EXPECT_TRUE(contains(out, "area 11/60 px^2")) << out;
+  // The faces of the boundary in the pixel by winding number: the corner (3, 4) lies outside
+  // both triangles, the rest inside one or both; only winding 1 fills under evenodd.
+  EXPECT_TRUE(contains(out, "    winding 0: 1/24 px^2 (about 0.0416667), evenodd does not hold"))
+      << out;
+  EXPECT_TRUE(contains(out, "    winding 1: 11/60 px^2 (about 0.183333), evenodd holds")) << out;
+  EXPECT_TRUE(contains(out, "    winding 2: 31/40 px^2 (about 0.775), evenodd does not hold"))
+      << out;
   EXPECT_TRUE(contains(out, "alpha 47 -> fragment")) << out;
   EXPECT_TRUE(contains(out, "pixel (3, 3): covered by primitive 1\n")) << out;
   // The left side of the outer triangle is its closing line.
@@ -225,6 +232,10 @@ TEST(CliExplainPath, JsonCarriesTheCrossingsWindingsAndArea) {
   EXPECT_EQ(p0["covered"], false);
   const auto& p1 = doc["primitives"][1];
   EXPECT_EQ(p1["area"], "11/60");
+  ASSERT_EQ(p1["windings"].size(), 3u);
+  EXPECT_EQ(p1["windings"][1],
+            nlohmann::json({{"winding", 1}, {"area", "11/60"}, {"fills", true}}));
+  EXPECT_EQ(p1["windings"][2]["area"], "31/40");
   EXPECT_EQ(p1["alpha"], 47);
   EXPECT_EQ(doc["covered_by"], nlohmann::json::array({1}));
 }

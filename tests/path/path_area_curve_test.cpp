@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Examples of area coverage of curves (PATH.AREA.CURVE): a parabolic segment inside one pixel
 // (exact, bound 0), a circle of four quadratics whose total is its exact area, interior pixels
-// exactly 1, a contour of curves drawn twice (the conflation case: empty under even-odd), a ring
+// exactly 1, a contour of curves drawn twice (the conflation case: empty under even-odd; its
+// boundary pixels hold windings 0 and 2), a ring
 // (a glyph-like hole, both fill rules), a cubic with a loop, curves reaching the ends of the
 // int32 range, and the 8-bit alpha of curves.
 
@@ -120,6 +121,23 @@ TEST(PathAreaCurve, AContourOfCurvesDrawnTwiceIsEmptyUnderEvenOddAndOnceUnderNon
     single[{a.y, a.x}] = a.area;
   for (const path::AreaCoverage& a : path::cover_area(nonzero, 8, 8))
     EXPECT_LE(abs(a.area - single[{a.y, a.x}]), 2 * a.error_bound) << a.x << ", " << a.y;
+}
+
+// rule: PATH.AREA.CURVE, PATH.WINDING
+TEST(PathAreaCurve, AContourOfCurvesDrawnTwiceHasWindingsZeroAndTwoInItsBoundaryPixels) {
+  // Pixel (1, 2) lies across the circle's left arc: outside it w = 0, inside w = 2 (both copies
+  // run the same way), and even-odd fills neither, nonzero the part inside.
+  for (const FillRule rule : {FillRule::kEvenOdd, FillRule::kNonZero}) {
+    const path::Path twice{rule, {round(1024, 1024, 768), round(1024, 1024, 768)}};
+    const path::PixelWindings w = path::winding_areas(twice, 1, 2, 8, 8);
+    ASSERT_EQ(w.parts.size(), 2u);
+    EXPECT_EQ(w.parts[0].winding, 0);
+    EXPECT_EQ(w.parts[1].winding, 2);
+    EXPECT_EQ(w.parts[0].area + w.parts[1].area, 1);
+    EXPECT_EQ(w.parts[1].fills, rule == FillRule::kNonZero);
+    EXPECT_LE(w.error_bound, kMaxBound);
+    EXPECT_GT(w.parts[1].area, 0);
+  }
 }
 
 // rule: PATH.AREA.CURVE, PATH.FILL.RULE

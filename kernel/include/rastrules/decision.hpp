@@ -193,6 +193,9 @@ struct PathDecision {
   std::vector<PathSampleDecision> samples;
   std::uint32_t mask = 0; // the fragment's mask (0: no fragment)
   ExactArea area;         // "area" coverage: empty when the area is 0
+  // "area" coverage: the pixel's parts by winding number (path::winding_areas), the faces of
+  // the boundary's arrangement that gave the area.
+  path::PixelWindings windings;
 };
 
 // One primitive at one pixel.

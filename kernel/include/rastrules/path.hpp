@@ -96,6 +96,30 @@ struct AreaValue {
 void cover_area(const Path& path, std::int32_t w, std::int32_t h,
                 const std::function<void(const AreaCoverage&)>& emit);
 
+// The part of a pixel where the winding number is `winding` (the faces of the arrangement of the
+// boundary with that winding number, together), its area in px^2, and whether the fill rule
+// holds there: the pixel's area (cover_area) is the sum of the parts that fill.
+struct WindingArea {
+  std::int64_t winding = 0;
+  boost::multiprecision::cpp_rational area;
+  bool fills = false;
+  friend bool operator==(const WindingArea&, const WindingArea&) = default;
+};
+// A pixel's parts by increasing winding number (those of area 0 left out), exact for paths of
+// lines; for curves each within error_bound of the exact part (PATH.AREA.CURVE).
+struct PixelWindings {
+  std::vector<WindingArea> parts;
+  boost::multiprecision::cpp_rational error_bound;
+};
+
+// Returns the parts of pixel (x, y) of a w x h target by winding number, for explanations:
+// where several windings meet in the pixel (conflation), which of them fill; the filled parts
+// add up to cover_area(path, w, h)'s area of the pixel, and the bound is its bound. A pixel
+// outside the target or a side above kMaxTargetSide: std::invalid_argument.
+// rule: PATH.AREA.EXACT, PATH.AREA.CURVE, PATH.WINDING
+[[nodiscard]] PixelWindings winding_areas(const Path& path, std::int32_t x, std::int32_t y,
+                                          std::int32_t w, std::int32_t h);
+
 // Writes the 8-bit alpha of every pixel of [0, w) x [0, h) into alpha (row by row, w * h
 // bytes, else std::invalid_argument): floor(255 a + 1/2) of the exact area a of cover_area, so
 // a pixel listed by cover_area may get alpha 0 (a < 1/510). Builds no rational where the area

@@ -99,6 +99,13 @@ std::string point_px(Vec2 v) {
 std::string point_raw(Vec2 v) {
   return "(" + std::to_string(v.x.raw()) + ", " + std::to_string(v.y.raw()) + ")";
 }
+// A rational as "n/d", or "n" when it is an integer.
+std::string fraction_text(const boost::multiprecision::cpp_rational& q) {
+  const auto& d = boost::multiprecision::denominator(q);
+  return d == 1 ? boost::multiprecision::numerator(q).str()
+                : boost::multiprecision::numerator(q).str() + "/" + d.str();
+}
+
 std::string area_px2(std::int64_t raw) {
   return fixed_decimal(raw, 2 * kSubpixelBits);
 }
@@ -389,6 +396,20 @@ std::string path_text(const Report& r, const PreparedScene& s) {
            "  " + cite({rules::kPathFillRule}) + "\n";
   }
   if (area) {
+    // The faces of the boundary's arrangement in the pixel, by winding number.
+    out += "  the pixel by winding number (the faces of the boundary in it)  " +
+           cite({rules::kPathWinding, rules::kPathAreaExact}) + "\n";
+    for (const path::WindingArea& part : d.windings.parts) {
+      const std::string exact = fraction_text(part.area);
+      char approx[32];
+      std::snprintf(approx, sizeof approx, "%.6g", part.area.convert_to<double>());
+      out += "    winding " + std::to_string(part.winding) + ": " +
+             (exact.size() <= 24 ? exact + " px^2 (about " + approx + ")"
+                                 : std::string("about ") + approx + " px^2") +
+             ", " + std::string(to_string(d.fill_rule)) +
+             (part.fills ? " holds" : " does not hold") + "  " + cite({rules::kPathFillRule}) +
+             "\n";
+    }
     if (d.area) {
       const std::string bound = d.area.bound_text();
       out += "  area " + d.area.text() + " px^2 (about " + std::to_string(d.area.approx()) +
@@ -699,6 +720,11 @@ ojson path_json(const Report& r) {
   p["mask"] = d.mask;
   if (d.coverage == path::Coverage::kArea) {
     p["area"] = d.area ? d.area.text() : "0";
+    json parts = json::array();
+    for (const path::WindingArea& part : d.windings.parts)
+      parts.push_back(
+          {{"winding", part.winding}, {"area", fraction_text(part.area)}, {"fills", part.fills}});
+    p["windings"] = parts;
     if (d.area && !d.area.bound_text().empty())
       p["area_bound"] = d.area.bound_text(); // rule: PATH.AREA.CURVE
     p["alpha"] = d.area.alpha();
