@@ -303,8 +303,7 @@ bool twins(const Piece& a, const Piece& b) {
 
 // Whether the closed hulls of a and b meet nowhere but at an end point of both.
 bool apart(const Piece& a, const Piece& b) {
-  if (separated(a, b))
-    return true;
+  // Hulls with a common end point meet there: no strict separation, only the touch test.
   const std::array<const RPoint*, 2> ea{&a.p[0], &a.p[static_cast<std::size_t>(a.n)]};
   const std::array<const RPoint*, 2> eb{&b.p[0], &b.p[static_cast<std::size_t>(b.n)]};
   int shared = 0;
@@ -315,6 +314,8 @@ bool apart(const Piece& a, const Piece& b) {
         v = p;
         ++shared;
       }
+  if (shared == 0)
+    return separated(a, b);
   return shared == 1 && touch_only_at(a, b, *v);
 }
 
