@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <set>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -99,12 +100,12 @@ void check_curve_areas(const Scene& scene, std::size_t p, const oracle::path::Pa
       c.note(at + ": twice");
   }
   const Q most = Q(1) / Q(boost::multiprecision::cpp_int(1) << 32);
-  std::map<std::pair<std::int32_t, std::int32_t>, bool> pixels;
+  std::set<std::pair<std::int32_t, std::int32_t>> pixels;
   for (const auto& [key, v] : want)
-    pixels[key] = true;
+    pixels.insert(key);
   for (const auto& [key, v] : got)
-    pixels[key] = true;
-  for (const auto& [key, unused] : pixels) {
+    pixels.insert(key);
+  for (const auto& key : pixels) {
     const auto w = want.find(key);
     const auto g = got.find(key);
     const Q oa = w == want.end() ? Q(0) : w->second.first;

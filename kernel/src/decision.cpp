@@ -189,15 +189,18 @@ PathDecision decide_path(const PreparedScene& scene, const PreparedPrimitive& pr
     d.mask = covered & keep;
     return d;
   }
-  // rule: PATH.AREA.EXACT
-  path::cover_area(*prim.path, scene.width, y + 1, [&](const path::AreaCoverage& a) {
-    if (a.x == x && a.y == y && a.area != 0) {
-      d.area = ExactArea(
-          std::make_shared<const path::AreaValue>(path::AreaValue{a.area, a.error_bound}));
-    }
-  });
-  d.mask = d.area ? keep : 0u;
+  // rule: PATH.AREA.EXACT, PATH.AREA.CURVE
+  // The pixel's parts by winding number; those that fill add up to its area (cover_area's,
+  // which the fragments carry: fuzz_path holds the two computations to each other).
   d.windings = path::winding_areas(*prim.path, x, y, scene.width, scene.height);
+  boost::multiprecision::cpp_rational area = 0;
+  for (const path::WindingArea& part : d.windings.parts)
+    if (part.fills)
+      area += part.area;
+  if (area != 0)
+    d.area = ExactArea(std::make_shared<const path::AreaValue>(
+        path::AreaValue{std::move(area), d.windings.error_bound}));
+  d.mask = d.area ? keep : 0u;
   return d;
 }
 

@@ -184,8 +184,9 @@ struct PathSampleDecision {
 
 // A path primitive at one pixel (SCENE.PRIM.PATH): with "samples" coverage every sample of
 // the pattern and the fragment mask (covered samples ANDed with the sample mask); with "area"
-// the pixel's exact area, taken from path::cover_area of the target's rows up to the pixel's
-// (the rasterizer's own computation), and the windings at the samples for information.
+// the pixel's parts by winding number (path::winding_areas) and its area, the sum of the parts
+// that fill (equal to path::cover_area's, which fuzz_path checks), and the windings at the
+// samples for information.
 // rule: SCENE.PRIM.PATH, PATH.COVER.SAMPLE, PATH.AREA.EXACT
 struct PathDecision {
   path::Coverage coverage = path::Coverage::kSamples;

@@ -76,6 +76,34 @@ public:
     p_ += lit.size();
     return true;
   }
+  // The start of a number token at p_ (after whitespace): an optional '-' and 1 to max_digits
+  // digits without a leading zero (but "0" itself), their value and where they end; nullopt,
+  // consuming nothing but whitespace, where no such start is there.
+  struct Lead {
+    const char* end;
+    bool negative;
+    std::int64_t value;
+    int count;
+  };
+  std::optional<Lead> leading_digits(std::ptrdiff_t max_digits) {
+    skip_ws();
+    const char* q = p_;
+    const bool negative = q < end_ && *q == '-';
+    if (negative)
+      ++q;
+    const char* first = q;
+    std::int64_t v = 0;
+    q = digits_into(q, max_digits, v);
+    const auto count = static_cast<int>(q - first);
+    if (count == 0 || (count > 1 && *first == '0'))
+      return std::nullopt;
+    return Lead{q, negative, v, count};
+  }
+  // Whether the number token goes on at q (a digit beyond the limit, a point, an exponent): the
+  // short readers leave such a token to the general one.
+  bool number_goes_on(const char* q) const {
+    return q < end_ && ((*q >= '0' && *q <= '9') || *q == '.' || *q == 'e' || *q == 'E');
+  }
   // rule: SCENE.NUMBER.FLOAT32
   // A JSON number of at most 8 digits without exponent, in one pass: an integer (rounded to
   // float32 as short_integer's value is), or a decimal m / 10^k (k <= 7 digits after the point)
@@ -87,35 +115,29 @@ public:
   // scanning each coordinate three times and converting it with from_chars, half of
   // `render --count`'s time on 10^6 triangles with one-decimal coordinates.
   bool short_real(float& out) {
-    skip_ws();
-    const char* q = p_;
-    const bool negative = q < end_ && *q == '-';
-    if (negative)
-      ++q;
-    const char* first = q;
-    std::int64_t m = 0;
-    q = digits_into(q, 8, m);
-    const auto whole = static_cast<int>(q - first);
-    if (whole == 0 || (whole > 1 && *first == '0'))
+    const std::optional<Lead> lead = leading_digits(8);
+    if (!lead)
       return false;
+    const char* q = lead->end;
+    std::int64_t m = lead->value;
     int after = 0;
     if (q < end_ && *q == '.') {
       const char* frac = q + 1;
-      q = digits_into(frac, 8 - whole, m);
+      q = digits_into(frac, 8 - lead->count, m);
       after = static_cast<int>(q - frac);
       if (after == 0)
         return false;
     }
-    if (q < end_ && ((*q >= '0' && *q <= '9') || *q == '.' || *q == 'e' || *q == 'E'))
+    if (number_goes_on(q))
       return false;
     if (after == 0) {
-      out = static_cast<float>(negative ? -m : m);
+      out = static_cast<float>(lead->negative ? -m : m);
     } else {
       static constexpr float kPow10[] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f, 1e6f, 1e7f};
       if (m > (std::int64_t{1} << 24))
         return false;
       const float f = static_cast<float>(m) / kPow10[after];
-      out = negative ? -f : f;
+      out = lead->negative ? -f : f;
     }
     p_ = q;
     return true;
@@ -124,21 +146,13 @@ public:
   // returned; nullopt, consuming nothing but whitespace, for any other token (a fraction, an
   // exponent, more digits, a leading zero: the caller then reads it with number()).
   std::optional<std::int64_t> short_integer() {
-    skip_ws();
-    const char* q = p_;
-    const bool negative = q < end_ && *q == '-';
-    if (negative)
-      ++q;
-    const char* first = q;
-    std::int64_t v = 0;
-    q = digits_into(q, 18, v);
-    if (q == first || (q - first > 1 && *first == '0'))
+    const std::optional<Lead> lead = leading_digits(18);
+    if (!lead || number_goes_on(lead->end))
       return std::nullopt;
-    if (q < end_ && ((*q >= '0' && *q <= '9') || *q == '.' || *q == 'e' || *q == 'E'))
-      return std::nullopt;
-    p_ = q;
-    return negative ? -v : v;
+    p_ = lead->end;
+    return lead->negative ? -lead->value : lead->value;
   }
+
   // A JSON number token: -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)?. integral: no fraction
   // or exponent.
   std::optional<std::string_view> number(bool& integral) {
