@@ -19,6 +19,10 @@ std::unique_ptr<Driver> open_reference(std::string_view arg, std::string* error)
 std::unique_ptr<Driver> open_imprecise(std::string_view arg, std::string* error);
 // external.cpp: arg is the command line (DRIVER.EXTERNAL.PROTOCOL).
 std::unique_ptr<Driver> open_external(std::string_view arg, std::string* error);
+#if defined(RASTRULES_HAVE_FREETYPE)
+// freetype.cpp: FreeType's monochrome and gray rasterizers (DRIVER.PATH.FREETYPE).
+std::unique_ptr<Driver> open_freetype(std::string_view arg, std::string* error);
+#endif
 #if defined(RASTRULES_HAVE_LAVAPIPE)
 std::unique_ptr<Driver> open_lavapipe(std::string_view arg, std::string* error);
 #endif

@@ -113,6 +113,16 @@ public:
                                         "rastrules reference kernel (fixed point, 16.8 snapping)",
                                         kSubpixelBits)) {
     info_.values = true;
+    info_.paths = {true,
+                   true,
+                   true,
+                   true,
+                   true,
+                   true,
+                   1,
+                   "16.8",
+                   "PATH.COVER.SAMPLE (exact)",
+                   "PATH.AREA.EXACT (exact area)"};
   }
 
   [[nodiscard]] const DriverInfo& info() const override { return info_; }

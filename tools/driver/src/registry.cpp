@@ -30,6 +30,9 @@ constexpr auto kEntries = std::to_array<Entry>({
        "truncate",
        &detail::open_imprecise},
       {"external:", true, "external:COMMAND", &detail::open_external},
+#if defined(RASTRULES_HAVE_FREETYPE)
+      {"freetype", false, "freetype", &detail::open_freetype},
+#endif
 #if defined(RASTRULES_HAVE_LAVAPIPE)
       {"lavapipe", false, "lavapipe", &detail::open_lavapipe},
 #endif

@@ -19,6 +19,26 @@
 
 namespace rastrules::driver {
 
+// What a driver draws of 2D paths (SCENE.PRIM.PATH) and how (DRIVER.PATH.LIBRARY): a 2D
+// library draws "samples" paths aliased (one sample at the pixel centre) and "area" paths
+// antialiased, reporting 8-bit alpha.
+// rule: DRIVER.PATH.LIBRARY
+struct PathSupport {
+  bool samples = false;    // coverage "samples": aliased, one sample at the pixel centre
+  bool area = false;       // coverage "area": antialiased, 8-bit alpha
+  bool nonzero = false;    // fill_rule "nonzero"
+  bool evenodd = false;    // fill_rule "evenodd"
+  bool quadratics = false; // quadratic Béziers (else only paths of lines)
+  bool cubics = false;     // cubic Béziers
+  // Control points must be multiples of grid_raw raw 16.8 units (FreeType: 4, its 26.6 grid);
+  // grid names the library's own coordinates ("26.6", "24.8", "float").
+  std::int32_t grid_raw = 1;
+  std::string grid;
+  std::string aliased_method;     // how it decides an aliased pixel, as its documentation says
+  std::string antialiased_method; // how it computes alpha ("exact area", "signed-area cells", ...)
+  [[nodiscard]] bool any() const { return samples || area; }
+};
+
 // What a driver reports about itself, and what it can draw.
 struct DriverInfo {
   std::string name;        // "lavapipe", "opengl", "imprecise", "reference", "external"
@@ -36,6 +56,8 @@ struct DriverInfo {
   // Whether draw_values() reports depth and attribute values of pipeline scenes
   // (DRIVER.VALUES); false: it reports coverage only.
   bool values = false;
+  // 2D paths (DRIVER.PATH.LIBRARY): none unless set.
+  PathSupport paths;
   // How an external driver's capabilities were learnt (DRIVER.EXTERNAL.CAPABILITIES):
   // "declared", or "none declared (WHY)"; empty for the built-in drivers.
   std::string capabilities;
