@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <charconv>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -14,6 +15,7 @@
 
 #include "rastrules/driver/external.hpp"
 #include "rastrules/name_table.hpp"
+#include "rastrules/path_types.hpp"
 
 namespace rastrules::driver {
 
@@ -47,6 +49,90 @@ std::variant<bool, std::string> flag(const json& value, std::string_view key) {
   if (!value.is_boolean())
     return "capabilities: " + std::string(key) + ": expected true or false";
   return value.get<bool>();
+}
+
+// The longest method text a "paths" object may give (it is reported, one line).
+constexpr std::size_t kMaxMethodChars = 200;
+
+// The raw 16.8 step of a declared path grid: "float" (any float32, so every raw value: 1) or
+// "I.F", a fixed-point format with I integer and F fractional bits (I in [1, 32], F in [0, 32]):
+// 2^(8 - F) for F < 8 (26.6: 4), else 1. Zero: not a grid name.
+std::int32_t grid_step(std::string_view grid) {
+  if (grid == "float")
+    return 1;
+  const std::size_t dot = grid.find('.');
+  if (dot == std::string_view::npos)
+    return 0;
+  const auto number = [](std::string_view t, int hi) {
+    int n = -1;
+    if (t.empty() || t.size() > 2 || (t.size() == 2 && t[0] == '0'))
+      return -1;
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), n);
+    return ec == std::errc{} && end == t.data() + t.size() && n <= hi ? n : -1;
+  };
+  const int whole = number(grid.substr(0, dot), 32);
+  const int frac = number(grid.substr(dot + 1), 32);
+  if (whole < 1 || frac < 0)
+    return 0;
+  return frac < 8 ? std::int32_t{1} << (8 - frac) : 1;
+}
+
+// The "paths" object (DRIVER.EXTERNAL.PATHS): every key optional, an absent one allowing what it
+// would restrict, like the reply's other keys; "curves" may be empty (straight paths only).
+// rule: DRIVER.EXTERNAL.PATHS
+std::variant<PathSupport, std::string> parse_paths(const json& value) {
+  if (!value.is_object())
+    return std::string("capabilities: paths: expected an object");
+  PathSupport ps;
+  ps.samples = ps.area = ps.nonzero = ps.evenodd = ps.quadratics = ps.cubics = true;
+  ps.grid = "float";
+  for (const auto& [key, v] : value.items()) {
+    const std::string at = "paths." + key;
+    if (key == "samples" || key == "area") {
+      const auto on = flag(v, at);
+      if (const auto* e = std::get_if<std::string>(&on))
+        return *e;
+      (key == "samples" ? ps.samples : ps.area) = std::get<bool>(on);
+    } else if (key == "fill_rules") {
+      const auto bits = name_bits<path::FillRule>(v, at);
+      if (const auto* e = std::get_if<std::string>(&bits))
+        return *e;
+      ps.nonzero = (std::get<std::uint32_t>(bits) >> unsigned(path::FillRule::kNonZero) & 1u) != 0;
+      ps.evenodd = (std::get<std::uint32_t>(bits) >> unsigned(path::FillRule::kEvenOdd) & 1u) != 0;
+    } else if (key == "curves") {
+      if (!v.is_array())
+        return "capabilities: " + at + ": expected an array of \"quadratic\", \"cubic\"";
+      ps.quadratics = ps.cubics = false;
+      for (const json& c : v) {
+        const std::string name = c.is_string() ? c.get<std::string>() : c.dump();
+        if (name == "quadratic")
+          ps.quadratics = true;
+        else if (name == "cubic")
+          ps.cubics = true;
+        else
+          return "capabilities: " + at + ": unknown name \"" + name.substr(0, 40) +
+                 "\" (known: quadratic, cubic)";
+      }
+    } else if (key == "grid") {
+      const std::string g = v.is_string() ? v.get<std::string>() : std::string();
+      ps.grid_raw = grid_step(g);
+      if (ps.grid_raw == 0)
+        return "capabilities: " + at + ": expected \"float\" or a fixed-point format \"I.F\" " +
+               "(I in [1, 32], F in [0, 32] bits: \"26.6\")";
+      ps.grid = g;
+    } else if (key == "aliased_method" || key == "antialiased_method") {
+      if (!v.is_string() || v.get<std::string>().empty() ||
+          v.get<std::string>().size() > kMaxMethodChars)
+        return "capabilities: " + at + ": expected a text of 1 to " +
+               std::to_string(kMaxMethodChars) + " characters";
+      (key == "aliased_method" ? ps.aliased_method : ps.antialiased_method) = v.get<std::string>();
+    } else {
+      return "capabilities: paths: unknown key \"" + key.substr(0, 40) + "\"";
+    }
+  }
+  if (!ps.samples && !ps.area)
+    return std::string("capabilities: paths: neither \"samples\" nor \"area\" is drawn");
+  return ps;
 }
 
 } // namespace
@@ -107,6 +193,11 @@ std::variant<Capabilities, std::string> parse_capabilities(std::string_view text
     } else if (key == "values") { // rule: DRIVER.VALUES
       if (on = flag(value, key); std::holds_alternative<bool>(on))
         caps.values = std::get<bool>(on);
+    } else if (key == "paths") { // rule: DRIVER.EXTERNAL.PATHS
+      auto ps = parse_paths(value);
+      if (auto* e = std::get_if<std::string>(&ps))
+        return std::move(*e);
+      caps.paths = std::get<PathSupport>(std::move(ps));
     } else if (key == "max_target_side" || key == "subpixel_bits") {
       const std::int64_t hi = key == "max_target_side" ? std::int64_t{1} << 30 : 24;
       const std::int64_t n = value.is_number_integer() ? value.get<std::int64_t>() : -1;
@@ -122,6 +213,9 @@ std::variant<Capabilities, std::string> parse_capabilities(std::string_view text
     if (const auto* e = std::get_if<std::string>(&on))
       return *e;
   }
+  // rule: DRIVER.EXTERNAL.PATHS
+  if (caps.paths && (caps.primitives >> static_cast<unsigned>(PrimitiveType::kPath) & 1u) == 0)
+    return std::string("capabilities: paths: given, but \"path\" is not in primitives");
   return caps;
 }
 
@@ -150,6 +244,8 @@ std::string undeclared(const Capabilities& caps, const Scene& scene) {
   for (const Primitive& p : scene.primitives) {
     if (!has(caps.primitives, p.type))
       return "primitive type '" + std::string(to_string(p.type)) + "'" + declared;
+    if (p.type == PrimitiveType::kPath && !caps.paths) // rule: DRIVER.EXTERNAL.PATHS
+      return "paths" + declared + " (its capabilities have no \"paths\" object)";
     if (p.type == PrimitiveType::kLine || p.type == PrimitiveType::kLineStrip) {
       if (!has(caps.line_modes, scene.conventions.line_mode))
         return "line_mode '" + std::string(to_string(scene.conventions.line_mode)) + "'" + declared;
@@ -185,6 +281,8 @@ void apply_capabilities(const Capabilities& c, DriverInfo& info) {
   info.sample_shading = info.sample_shading && c.sample_shading;
   info.values = info.values && c.values && c.pipeline; // rule: DRIVER.VALUES
   info.max_target_side = std::min(info.max_target_side, c.max_target_side);
+  // rule: DRIVER.EXTERNAL.PATHS
+  info.paths = c.paths && on(c.primitives, PrimitiveType::kPath) ? *c.paths : PathSupport{};
 }
 
 } // namespace rastrules::driver

@@ -19,9 +19,25 @@ std::unique_ptr<Driver> open_reference(std::string_view arg, std::string* error)
 std::unique_ptr<Driver> open_imprecise(std::string_view arg, std::string* error);
 // external.cpp: arg is the command line (DRIVER.EXTERNAL.PROTOCOL).
 std::unique_ptr<Driver> open_external(std::string_view arg, std::string* error);
+// external.cpp: Skia (canvaskit-wasm) and tiny-skia (@resvg/resvg-js) as Node programs run
+// through the external protocol (DRIVER.PATH.SKIA, DRIVER.PATH.TINY_SKIA); always built, they
+// fail to open with what to run when node or the npm packages are missing.
+std::unique_ptr<Driver> open_skia(std::string_view arg, std::string* error);
+std::unique_ptr<Driver> open_tiny_skia(std::string_view arg, std::string* error);
+// path_planted.cpp: 2D rasterizers with one planted bug each (DRIVER.PATH.PLANTED).
+std::unique_ptr<Driver> open_planted_path(std::string_view arg, std::string* error);
 #if defined(RASTRULES_HAVE_FREETYPE)
 // freetype.cpp: FreeType's monochrome and gray rasterizers (DRIVER.PATH.FREETYPE).
 std::unique_ptr<Driver> open_freetype(std::string_view arg, std::string* error);
+#endif
+#if defined(RASTRULES_HAVE_CAIRO)
+// cairo.cpp: cairo_fill into an A8 image surface (DRIVER.PATH.CAIRO); arg "" or the antialias
+// mode of antialiased paths: "default", "best", "good", "fast".
+std::unique_ptr<Driver> open_cairo(std::string_view arg, std::string* error);
+#endif
+#if defined(RASTRULES_HAVE_AGG)
+// agg.cpp: AGG's rasterizer_scanline_aa into a gray8 buffer (DRIVER.PATH.AGG).
+std::unique_ptr<Driver> open_agg(std::string_view arg, std::string* error);
 #endif
 #if defined(RASTRULES_HAVE_LAVAPIPE)
 std::unique_ptr<Driver> open_lavapipe(std::string_view arg, std::string* error);

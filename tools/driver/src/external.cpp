@@ -25,6 +25,7 @@
 #include <thread>
 
 #include "drivers.hpp"
+#include "path_library.hpp"
 #include "rastrules/io/interrupt.hpp"
 #include "rastrules/io/json_stream.hpp"
 #include "rastrules/io/scene_json.hpp"
@@ -296,10 +297,13 @@ std::string one_line(std::string s) {
 // rule: DRIVER.EXTERNAL.PROTOCOL
 class ExternalDriver final : public Driver {
 public:
-  ExternalDriver(std::string command, ExternalOptions options, std::optional<Capabilities> declared,
+  // name: "external", or the name of a driver run through the protocol ("skia"); argv: what is
+  // run; command: argv as the user reads it (the description, and in error messages).
+  ExternalDriver(std::string name, std::vector<std::string> argv, const std::string& command,
+                 ExternalOptions options, std::optional<Capabilities> declared,
                  std::string declared_note)
-      : argv_(external_argv(command)), options_(options),
-        info_(detail::full_capabilities("external", command, -1)), caps_(declared) {
+      : argv_(std::move(argv)), options_(options),
+        info_(detail::full_capabilities(std::move(name), command, -1)), caps_(declared) {
     info_.values = true; // whatever it writes of DRIVER.VALUES is read, unless it declares none
     info_.capabilities = std::move(declared_note);
     if (caps_)
@@ -312,14 +316,22 @@ public:
   }
 
   [[nodiscard]] const DriverInfo& info() const override { return info_; }
+  // Path scenes only to a driver that declares paths, and then only what a 2D library adapter
+  // would take (one sample at the pixel centre, its coverage kinds, fill rules, curves, grid).
   // rule: SCENE.PRIM.PATH
-  // rule: DRIVER.EXTERNAL.CAPABILITIES
+  // rule: DRIVER.EXTERNAL.CAPABILITIES, DRIVER.EXTERNAL.PATHS
   [[nodiscard]] std::string unsupported(const Scene& scene) const override {
-    for (const Primitive& p : scene.primitives) {
-      if (p.type == PrimitiveType::kPath)
-        return "paths not supported (the external protocol draws triangles, points and lines)";
+    const bool paths =
+        std::any_of(scene.primitives.begin(), scene.primitives.end(),
+                    [](const Primitive& p) { return p.type == PrimitiveType::kPath; });
+    if (paths && !caps_)
+      return "paths not declared by the driver (it answered no capabilities query)";
+    if (caps_) {
+      if (std::string why = undeclared(*caps_, scene); !why.empty())
+        return why;
     }
-    return caps_ ? undeclared(*caps_, scene) : std::string();
+    return paths ? detail::path_unsupported(info_.paths, info_.name, scene, /*paths_only=*/false)
+                 : std::string();
   }
 
   [[nodiscard]] DrawResult draw(const Scene& scene) override {
@@ -380,6 +392,7 @@ struct QueryResult {
   std::optional<Capabilities> caps;
   std::string note;
   std::string error;
+  std::string err; // the first bytes of the query's standard error, one line
 };
 
 // rule: DRIVER.EXTERNAL.CAPABILITIES
@@ -389,21 +402,22 @@ QueryResult query_capabilities(const std::vector<std::string>& argv, ExternalOpt
   options.max_output_bytes = std::min<std::size_t>(options.max_output_bytes, 1 << 16);
   DriverProcess process(argv, std::string(), options, env.c_str());
   if (!process.spawn_error().empty())
-    return {std::nullopt, "none declared (" + process.spawn_error() + ")", {}};
+    return {std::nullopt, "none declared (" + process.spawn_error() + ")", {}, {}};
   std::string out;
   for (std::string_view piece = process.next_output(); !piece.empty();
        piece = process.next_output())
     out += piece;
   const ProcessResult r = process.finish();
+  const std::string err = one_line(r.err);
   if (r.timed_out || r.output_overflow || r.signal != 0 || !r.exited || r.exit_status != 0)
-    return {std::nullopt, "none declared (the query did not exit with status 0)", {}};
+    return {std::nullopt, "none declared (the query did not exit with status 0)", {}, err};
   const std::size_t first = out.find_first_not_of(" \t\r\n");
   if (first == std::string::npos || out.compare(first, 15, "{\"capabilities\"") != 0)
-    return {std::nullopt, "none declared (no {\"capabilities\": ...} reply)", {}};
+    return {std::nullopt, "none declared (no {\"capabilities\": ...} reply)", {}, err};
   auto parsed = parse_capabilities(out);
   if (auto* e = std::get_if<std::string>(&parsed))
-    return {std::nullopt, {}, std::move(*e)};
-  return {std::get<Capabilities>(parsed), "declared", {}};
+    return {std::nullopt, {}, std::move(*e), err};
+  return {std::get<Capabilities>(parsed), "declared", {}, err};
 }
 
 } // namespace
@@ -453,7 +467,8 @@ std::vector<std::string> external_argv(std::string_view command) {
 namespace {
 
 // The keys of a fragment (DRIVER.EXTERNAL.PROTOCOL, SCENE.OUTPUT.MSAA).
-// The last five are the pipeline fragment's (SCENE.OUTPUT.PIPELINE, DRIVER.VALUES).
+// kPart to kPassed are the pipeline fragment's (SCENE.OUTPUT.PIPELINE, DRIVER.VALUES); kAlpha an
+// antialiased path's (DRIVER.EXTERNAL.PATHS).
 enum FragmentKey : unsigned {
   kPrim,
   kX,
@@ -471,11 +486,12 @@ enum FragmentKey : unsigned {
   kAttr,
   kDepth,
   kPassed,
+  kAlpha,
   kKeyCount
 };
 constexpr std::array<std::string_view, kKeyCount> kKeyNames = {
-    "prim",     "x",   "y",   "mask", "seg",  "sample", "helper", "coverage",
-    "centroid", "ddx", "ddy", "part", "bary", "attr",   "depth",  "passed"};
+    "prim", "x",   "y",    "mask", "seg",  "sample", "helper", "coverage", "centroid",
+    "ddx",  "ddy", "part", "bary", "attr", "depth",  "passed", "alpha"};
 
 // The fragments read so far, each (prim, x, y, seg, sample) once: an open-addressing hash set
 // of indices into the list (4 bytes a slot, at most half the slots used), so that a repeat is
@@ -680,6 +696,19 @@ public:
       return fail(path_ + ".passed: " + std::to_string(passed_) + " has samples outside mask " +
                   std::to_string(frag_.mask));
     }
+    // rule: DRIVER.EXTERNAL.PATHS
+    const Primitive& prim = scene_.primitives[frag_.prim];
+    const bool area = prim.path && prim.path->coverage == path::Coverage::kArea;
+    const bool alpha = (seen_ & (1u << kAlpha)) != 0;
+    if (area != alpha) {
+      return fail(path_ + ".alpha: " +
+                  (area ? "missing (primitive " + std::to_string(frag_.prim) +
+                              " is a path with coverage \"area\")"
+                        : "primitive " + std::to_string(frag_.prim) +
+                              " is not a path with coverage \"area\""));
+    }
+    if (area)
+      frag_.area = detail::alpha_area(alpha_);
     frags_.push_back(frag_);
     if (vals_.part && !with_parts_) {
       with_parts_ = true;
@@ -829,6 +858,12 @@ private:
         return fail(field() + ": must be an array, one stored depth per covered sample");
       at_ = At::kDepth;
       return true;
+    // rule: DRIVER.EXTERNAL.PATHS
+    case kAlpha:
+      if (!integer || i < 1 || i > 255)
+        return fail(field() + ": must be an integer in [1, 255] (8-bit alpha; 0 is no fragment)");
+      alpha_ = static_cast<std::uint8_t>(i);
+      return true;
     case kPassed:
       if (!scene_.depth)
         return fail(field() + ": the scene has no depth");
@@ -895,6 +930,7 @@ private:
   // fragment that has them.
   driver::FragmentValues vals_;
   std::uint32_t passed_ = 0;
+  std::uint8_t alpha_ = 0; // DRIVER.EXTERNAL.PATHS: the current fragment's "alpha"
   std::uint32_t attr_seen_ = 0;
   std::size_t attr_index_ = 0;
   bool with_parts_ = false, with_values_ = false;
@@ -956,8 +992,86 @@ std::unique_ptr<Driver> open_external_driver(std::string_view command, std::stri
       *error = "external driver \"" + std::string(command) + "\": " + q.error;
     return nullptr;
   }
-  return std::make_unique<ExternalDriver>(std::string(command), options, q.caps, std::move(q.note));
+  return std::make_unique<ExternalDriver>("external", external_argv(command), std::string(command),
+                                          options, q.caps, std::move(q.note));
 }
+
+// rule: DRIVER.PATH.SKIA, DRIVER.PATH.TINY_SKIA
+std::string node_drivers_dir() {
+  if (const char* dir = std::getenv(kNodeDriversVariable); dir != nullptr && *dir != '\0')
+    return dir;
+#if defined(RASTRULES_NODE_DRIVERS_DIR)
+  return RASTRULES_NODE_DRIVERS_DIR;
+#else
+  return "tools/driver/node";
+#endif
+}
+
+namespace {
+
+// Whether an executable named `name` is found on PATH, as posix_spawnp would look for it.
+bool on_path(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::string_view rest = path != nullptr ? path : "/usr/local/bin:/usr/bin:/bin";
+  while (true) {
+    const std::size_t colon = rest.find(':');
+    const std::string dir(rest.substr(0, colon));
+    if (::access(((dir.empty() ? "." : dir) + "/" + name).c_str(), X_OK) == 0)
+      return true;
+    if (colon == std::string_view::npos)
+      return false;
+    rest.remove_prefix(colon + 1);
+  }
+}
+
+// Opens a driver that is a Node program of node_drivers_dir() run through the protocol: `name`
+// is the driver's name, `script` its program, `package` the npm package it loads. Opening fails
+// with one line saying what to run when node, the program or the package is missing, and when the
+// program answers no capabilities (it would otherwise be assumed to draw everything).
+// rule: DRIVER.PATH.SKIA, DRIVER.PATH.TINY_SKIA, DRIVER.EXTERNAL.PATHS
+std::unique_ptr<Driver> open_node_driver(std::string_view arg, std::string* error,
+                                         const std::string& name, const std::string& script,
+                                         const std::string& package) {
+  std::string ignored;
+  std::string& err = error != nullptr ? *error : ignored;
+  if (!arg.empty()) {
+    err = "driver '" + name + "' takes no argument";
+    return nullptr;
+  }
+  ExternalOptions options = default_external_options(&err);
+  if (!err.empty())
+    return nullptr;
+  const std::string dir = node_drivers_dir();
+  const std::string program = dir + "/" + script;
+  const std::string install = "run scripts/deps (or: npm ci --prefix " + dir + ")";
+  if (!on_path("node")) {
+    err = name + ": node is not installed (no \"node\" on PATH); " + install;
+    return nullptr;
+  }
+  if (::access(program.c_str(), R_OK) != 0) {
+    err = name + ": " + program + " not found (" + kNodeDriversVariable +
+          " names the directory of the Node drivers)";
+    return nullptr;
+  }
+  if (::access((dir + "/node_modules/" + package + "/package.json").c_str(), R_OK) != 0) {
+    err = name + ": the npm package " + package + " is not installed in " + dir +
+          "/node_modules; " + install;
+    return nullptr;
+  }
+  std::vector<std::string> argv = {"node", program};
+  const std::string command = "node " + program;
+  QueryResult q = query_capabilities(argv, options);
+  if (!q.error.empty() || !q.caps) {
+    err = name + " (" + command +
+          "): " + (!q.error.empty() ? q.error : "no capabilities: " + q.note) +
+          (q.err.empty() ? "" : "; its standard error: " + q.err);
+    return nullptr;
+  }
+  return std::make_unique<ExternalDriver>(name, std::move(argv), command, options, q.caps,
+                                          std::move(q.note));
+}
+
+} // namespace
 
 namespace detail {
 std::unique_ptr<Driver> open_external(std::string_view arg, std::string* error) {
@@ -969,6 +1083,16 @@ std::unique_ptr<Driver> open_external(std::string_view arg, std::string* error) 
     return nullptr;
   }
   return open_external_driver(arg, error, options);
+}
+
+// rule: DRIVER.PATH.SKIA
+std::unique_ptr<Driver> open_skia(std::string_view arg, std::string* error) {
+  return open_node_driver(arg, error, "skia", "skia.mjs", "canvaskit-wasm");
+}
+
+// rule: DRIVER.PATH.TINY_SKIA
+std::unique_ptr<Driver> open_tiny_skia(std::string_view arg, std::string* error) {
+  return open_node_driver(arg, error, "tiny-skia", "tiny-skia.mjs", "@resvg/resvg-js");
 }
 } // namespace detail
 

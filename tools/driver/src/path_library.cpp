@@ -4,6 +4,7 @@
 
 #include "path_library.hpp"
 
+#include <array>
 #include <memory>
 #include <variant>
 
@@ -47,33 +48,46 @@ DriverInfo path_library_info(std::string name, std::string description, PathSupp
   return info;
 }
 
-// rule: DRIVER.PATH.LIBRARY
-std::string PathLibraryDriver::unsupported(const Scene& scene) const {
-  const PathSupport& ps = info_.paths;
-  if (scene.width > info_.max_target_side || scene.height > info_.max_target_side)
-    return "target larger than " + std::to_string(info_.max_target_side) + " px";
+// rule: DRIVER.PATH.LIBRARY, DRIVER.EXTERNAL.PATHS
+ExactArea alpha_area(std::uint8_t a) {
+  static const std::array<ExactArea, 256> areas = [] {
+    std::array<ExactArea, 256> t;
+    for (unsigned k = 1; k < t.size(); ++k)
+      t[k] = ExactArea(std::make_shared<const path::AreaValue>(
+          path::AreaValue{boost::multiprecision::cpp_rational(k, 255), 0}));
+    return t;
+  }();
+  return areas[a];
+}
+
+// rule: DRIVER.PATH.LIBRARY, DRIVER.EXTERNAL.PATHS
+std::string path_unsupported(const PathSupport& ps, const std::string& name, const Scene& scene,
+                             bool paths_only) {
   if (scene.msaa.pattern.count() != 1 || scene.msaa.pattern.positions[0] != SampleOffset{})
-    return info_.name + " draws one sample at the pixel centre";
+    return name + " draws one sample at the pixel centre";
   if (has_pipeline_state(scene))
-    return info_.name + " draws window-space paths only";
+    return name + " draws window-space paths only";
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     const Primitive& p = scene.primitives[i];
     const std::string at = "primitives[" + std::to_string(i) + "]: ";
-    if (p.type != PrimitiveType::kPath || !p.path)
-      return at + info_.name + " draws paths only";
+    if (p.type != PrimitiveType::kPath || !p.path) {
+      if (paths_only)
+        return at + name + " draws paths only";
+      continue;
+    }
     const FloatPath& fp = *p.path;
     if (fp.coverage == path::Coverage::kSamples && !ps.samples)
-      return at + info_.name + " draws no aliased paths (coverage \"samples\")";
+      return at + name + " draws no aliased paths (coverage \"samples\")";
     if (fp.coverage == path::Coverage::kArea && !ps.area)
-      return at + info_.name + " draws no antialiased paths (coverage \"area\")";
+      return at + name + " draws no antialiased paths (coverage \"area\")";
     if (fp.fill_rule == path::FillRule::kNonZero ? !ps.nonzero : !ps.evenodd)
-      return at + info_.name + " has no fill rule " + std::string(to_string(fp.fill_rule));
+      return at + name + " has no fill rule " + std::string(to_string(fp.fill_rule));
     for (const FloatContour& c : fp.contours)
       for (const FloatPathSegment& s : c.segments) {
         if (s.kind == path::SegmentKind::kQuadratic && !ps.quadratics)
-          return at + info_.name + " draws no quadratic curves";
+          return at + name + " draws no quadratic curves";
         if (s.kind == path::SegmentKind::kCubic && !ps.cubics)
-          return at + info_.name + " draws no cubic curves";
+          return at + name + " draws no cubic curves";
       }
   }
   if (ps.grid_raw > 1) {
@@ -83,9 +97,16 @@ std::string PathLibraryDriver::unsupported(const Scene& scene) const {
         if (ok->primitives[i].path)
           if (auto q = off_grid(*ok->primitives[i].path, ps.grid_raw))
             return "primitives[" + std::to_string(i) + "]: control point " + *q + " is not on " +
-                   info_.name + "'s " + ps.grid + " grid";
+                   name + "'s " + ps.grid + " grid";
   }
   return {};
+}
+
+// rule: DRIVER.PATH.LIBRARY
+std::string PathLibraryDriver::unsupported(const Scene& scene) const {
+  if (scene.width > info_.max_target_side || scene.height > info_.max_target_side)
+    return "target larger than " + std::to_string(info_.max_target_side) + " px";
+  return path_unsupported(info_.paths, info_.name, scene, /*paths_only=*/true);
 }
 
 // rule: DRIVER.PATH.LIBRARY
@@ -112,8 +133,7 @@ DrawResult PathLibraryDriver::draw(const Scene& scene) {
           continue;
         Fragment f(static_cast<std::uint32_t>(i), x, y, 1);
         if (job.antialiased)
-          f.area = ExactArea(std::make_shared<const path::AreaValue>(
-              path::AreaValue{boost::multiprecision::cpp_rational(a, 255), 0}));
+          f.area = alpha_area(a);
         out.push_back(std::move(f));
       }
   }

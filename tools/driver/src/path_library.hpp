@@ -49,6 +49,21 @@ protected:
   DriverInfo info_;
 };
 
+// Why a driver named `name` that draws paths as `paths` says cannot draw the scene's paths, or an
+// empty string: multisampling (one sample at the pixel centre only), pipeline state, a coverage
+// kind, fill rule or curve it does not draw, a control point off its grid; with paths_only, a
+// primitive that is not a path too. The 2D library adapters (PathLibraryDriver::unsupported) and
+// the external driver's path scenes (DRIVER.EXTERNAL.PATHS) share it.
+// rule: DRIVER.PATH.LIBRARY, DRIVER.EXTERNAL.PATHS
+[[nodiscard]] std::string path_unsupported(const PathSupport& paths, const std::string& name,
+                                           const Scene& scene, bool paths_only);
+
+// The area of a pixel whose 8-bit alpha is a (1..255), exactly a / 255 px^2 with bound 0, as an
+// antialiased path's fragment carries it (DRIVER.PATH.LIBRARY): one value per alpha, made once
+// and shared by every fragment that has it.
+// rule: DRIVER.PATH.LIBRARY, DRIVER.EXTERNAL.PATHS
+[[nodiscard]] ExactArea alpha_area(std::uint8_t a);
+
 // The info of a 2D library driver: no triangles, points or lines; one sample; `paths` as given.
 [[nodiscard]] DriverInfo path_library_info(std::string name, std::string description,
                                            PathSupport paths, std::int32_t max_target_side);

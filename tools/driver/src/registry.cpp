@@ -30,8 +30,19 @@ constexpr auto kEntries = std::to_array<Entry>({
        "truncate",
        &detail::open_imprecise},
       {"external:", true, "external:COMMAND", &detail::open_external},
+      {"skia", false, "skia", &detail::open_skia},
+      {"tiny-skia", false, "tiny-skia", &detail::open_tiny_skia},
+      {"imprecise-path:", true, "imprecise-path:float-accumulation|4-bit-winding|flatten-quarter",
+       &detail::open_planted_path},
 #if defined(RASTRULES_HAVE_FREETYPE)
       {"freetype", false, "freetype", &detail::open_freetype},
+#endif
+#if defined(RASTRULES_HAVE_CAIRO)
+      {"cairo", false, "cairo", &detail::open_cairo},
+      {"cairo:", true, "cairo:default|best|good|fast", &detail::open_cairo},
+#endif
+#if defined(RASTRULES_HAVE_AGG)
+      {"agg", false, "agg", &detail::open_agg},
 #endif
 #if defined(RASTRULES_HAVE_LAVAPIPE)
       {"lavapipe", false, "lavapipe", &detail::open_lavapipe},

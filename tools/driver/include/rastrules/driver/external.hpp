@@ -11,6 +11,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -95,6 +96,9 @@ struct Capabilities {
   bool values = true;                // writes depth and attribute values (DRIVER.VALUES)
   std::int32_t max_target_side = std::numeric_limits<std::int32_t>::max();
   int subpixel_bits = -1; // as declared (-1: not said); reported, not used to decide
+  // What it draws of paths (DRIVER.EXTERNAL.PATHS), from the reply's "paths" object; none
+  // without it: path scenes are then never given to the driver.
+  std::optional<PathSupport> paths;
 };
 
 // The name of the environment variable that turns a run of the driver into the capabilities
@@ -114,9 +118,21 @@ inline constexpr const char* kCapabilitiesQueryValue = "capabilities";
 [[nodiscard]] std::string undeclared(const Capabilities& caps, const Scene& scene);
 
 // Narrows a driver's info to its declaration: the primitive types, line modes, sample counts,
-// mask, shading and target side campaigns may generate (FUZZ.GENERATE reads info()).
+// mask, shading and target side campaigns may generate (FUZZ.GENERATE reads info()), and its
+// paths (info.paths: none unless declared, DRIVER.EXTERNAL.PATHS).
 // rule: DRIVER.EXTERNAL.CAPABILITIES
 void apply_capabilities(const Capabilities& caps, DriverInfo& info);
+
+// The environment variable that names the directory of the Node drivers (skia.mjs,
+// tiny-skia.mjs and their node_modules; DRIVER.PATH.SKIA, DRIVER.PATH.TINY_SKIA).
+inline constexpr const char* kNodeDriversVariable = "RASTRULES_NODE_DRIVERS";
+
+// The directory of the Node drivers: $RASTRULES_NODE_DRIVERS when set and not empty, else the
+// source tree's tools/driver/node as configured by CMake. The "skia" and "tiny-skia" drivers run
+// `node DIR/skia.mjs` and `node DIR/tiny-skia.mjs` through the external protocol
+// (DRIVER.EXTERNAL.PATHS).
+// rule: DRIVER.PATH.SKIA, DRIVER.PATH.TINY_SKIA
+[[nodiscard]] std::string node_drivers_dir();
 
 // Opens "external:COMMAND" given COMMAND, and runs the capabilities query once
 // (DRIVER.EXTERNAL.CAPABILITIES): a reply restricts what the driver is given (info() and
