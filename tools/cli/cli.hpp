@@ -122,6 +122,8 @@ int run_fuzz(const Args& args);
 int run_check(const Args& args);
 int run_fuzz_merge(const Args& args);
 int run_probe(const Args& args);
+// rastrules fuzz2d: the 2D campaign against a 2D library (FUZZ.PATH.*).
+int run_fuzz2d(const Args& args);
 int run_bench(const Args& args);
 int run_glyph(const Args& args); // glyph.cpp: a glyph of a font file as a path scene
 int run_cases(const Args& args); // cases.cpp: the hard-case catalog (PIPE.CATALOG)

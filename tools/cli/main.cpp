@@ -24,7 +24,7 @@ constexpr Command kCommands[] = {
     {"showcase", rastrules::cli::run_showcase},     {"fuzz", rastrules::cli::run_fuzz},
     {"check", rastrules::cli::run_check},           {"probe", rastrules::cli::run_probe},
     {"bench", rastrules::cli::run_bench},           {"cases", rastrules::cli::run_cases},
-    {"fuzz-merge", rastrules::cli::run_fuzz_merge},
+    {"fuzz-merge", rastrules::cli::run_fuzz_merge}, {"fuzz2d", rastrules::cli::run_fuzz2d},
 #ifdef RASTRULES_HAVE_GLYPH
     {"glyph", rastrules::cli::run_glyph},
 #endif
@@ -85,7 +85,8 @@ int main(int argc, char** argv) {
     // rule: SCENE.INPUT.ERRORS
     // An interrupt removes the temporaries and ends the driver's process group; a campaign
     // then stops after its case and writes what it has, anything else exits at once.
-    const bool campaign = command == "fuzz" || command == "check" || command == "probe";
+    const bool campaign =
+        command == "fuzz" || command == "check" || command == "probe" || command == "fuzz2d";
     rastrules::io::handle_interrupts(campaign ? rastrules::io::OnInterrupt::kRecord
                                               : rastrules::io::OnInterrupt::kExit);
     return c->run(args);

@@ -1,0 +1,279 @@
+// SPDX-License-Identifier: MIT
+// The 2D campaign against one library (FUZZ.PATH.*): generate, draw, compare with the exact
+// coverage, shrink the first findings of each class, write the report and pictures, and time
+// the library against the exact kernel on the same scenes.
+// Implements: FUZZ.PATH.REPORT
+
+#include <chrono>
+#include <filesystem>
+#include <variant>
+
+#include <nlohmann/json.hpp>
+
+#include "rastrules/fuzzer/paths.hpp"
+#include "rastrules/io/image.hpp"
+#include "rastrules/io/output_file.hpp"
+#include "rastrules/io/scene_json.hpp"
+
+namespace rastrules::fuzzer::paths {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// Draws and compares; nullopt with *error on a driver or kernel failure.
+std::optional<PathComparison> draw_compare(driver::Driver& d, const Scene& scene,
+                                           const PathCompareOptions& o, std::string* error,
+                                           double* seconds = nullptr) {
+  const auto t = Clock::now();
+  driver::DrawResult r = d.draw(scene);
+  if (seconds != nullptr)
+    *seconds += since(t);
+  if (const auto* e = std::get_if<driver::DriverError>(&r)) {
+    *error = e->message;
+    return std::nullopt;
+  }
+  return compare_paths(scene, std::get<std::vector<Fragment>>(r), o, error);
+}
+
+nlohmann::json diff_json(const PixelDiff& d) {
+  return {{"prim", d.prim},     {"x", d.x},
+          {"y", d.y},           {"expected", d.expected},
+          {"actual", d.actual}, {"class", std::string(to_string(d.klass))},
+          {"why", d.why}};
+}
+
+std::string class_slug(DiffClass c) {
+  std::string s(to_string(c));
+  for (char& ch : s)
+    if (ch == ' ')
+      ch = '-';
+  return s;
+}
+
+} // namespace
+
+// rule: FUZZ.PATH.REPORT
+std::optional<std::string> write_path_picture(const std::string& file, const Scene& scene,
+                                              const PathComparison& c) {
+  if (c.expected.empty())
+    return std::nullopt;
+  const int w = scene.width, h = scene.height;
+  const int scale = std::max(4, std::min(32, 384 / std::max(1, std::max(w, h))));
+  const int gap = 8;
+  const int pw = w * scale;
+  io::Image img(3 * pw + 2 * gap, h * scale, {255, 255, 255});
+  const auto& e = c.expected.front();
+  const auto& a = c.actual.front();
+  auto level = [&](std::uint8_t v) {
+    const int l = c.antialiased ? v : (v != 0 ? 255 : 0);
+    return static_cast<std::uint8_t>(255 - l);
+  };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const std::size_t i =
+          static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x);
+      const std::uint8_t le = level(e[i]), la = level(a[i]);
+      img.fill_rect(x * scale, y * scale, (x + 1) * scale - 1, (y + 1) * scale - 1, {le, le, le});
+      img.fill_rect(pw + gap + x * scale, y * scale, pw + gap + (x + 1) * scale - 1,
+                    (y + 1) * scale - 1, {la, la, la});
+      // Difference: red where the library has more, blue where less, by how much.
+      const int d =
+          (c.antialiased ? a[i] : (a[i] ? 255 : 0)) - (c.antialiased ? e[i] : (e[i] ? 255 : 0));
+      const auto k = static_cast<std::uint8_t>(255 - std::min(255, std::abs(d) * 4));
+      const io::Rgb col = d > 0   ? io::Rgb{255, k, k}
+                          : d < 0 ? io::Rgb{k, k, 255}
+                                  : io::Rgb{255, 255, 255};
+      img.fill_rect(2 * (pw + gap) + x * scale, y * scale, 2 * (pw + gap) + (x + 1) * scale - 1,
+                    (y + 1) * scale - 1, col);
+    }
+  // The pixel grid on every panel.
+  for (int panel = 0; panel < 3; ++panel) {
+    const int x0 = panel * (pw + gap);
+    for (int x = 0; x <= w; ++x)
+      img.fill_rect(x0 + std::min(x * scale, pw - 1), 0, x0 + std::min(x * scale, pw - 1),
+                    h * scale - 1, {200, 200, 200});
+    for (int y = 0; y <= h; ++y)
+      img.fill_rect(x0, std::min(y * scale, h * scale - 1), x0 + pw - 1,
+                    std::min(y * scale, h * scale - 1), {200, 200, 200});
+  }
+  io::OutputFile out;
+  if (auto err = out.open(file))
+    return file + ": " + *err;
+  if (auto err = io::write_png(out.get(), img))
+    return file + ": " + *err;
+  if (auto err = out.commit())
+    return file + ": " + *err;
+  return std::nullopt;
+}
+
+// rule: FUZZ.PATH.GENERATE, FUZZ.PATH.SHRINK, FUZZ.PATH.REPORT
+PathSummary run_path_fuzz(driver::Driver& driver, const PathSettings& settings) {
+  PathSummary s;
+  const auto start = Clock::now();
+  std::string error;
+  auto reference = driver::open_driver("reference", &error);
+  if (!settings.out_dir.empty())
+    std::filesystem::create_directories(settings.out_dir);
+  std::array<std::uint64_t, kDiffClassCount> shrunk{};
+  for (std::uint64_t i = 0; i < settings.cases; ++i) {
+    auto c = generate_path_case(settings.seed, i, driver.info(), settings.families);
+    if (!c || !driver.unsupported(c->scene).empty()) {
+      ++s.skipped;
+      continue;
+    }
+    ++s.cases;
+    auto& fam = s.families[c->family];
+    ++fam.first;
+    auto cmp = draw_compare(driver, c->scene, settings.compare, &error, &s.driver_seconds);
+    if (!cmp) {
+      s.error = "case " + std::to_string(i) + ": " + error;
+      break;
+    }
+    {
+      const auto t = Clock::now();
+      (void)reference->draw(c->scene);
+      s.reference_seconds += since(t);
+    }
+    s.pixels += cmp->pixels;
+    s.legal_ties += cmp->legal_ties;
+    s.within += cmp->within;
+    s.max_alpha_error = std::max(s.max_alpha_error, cmp->max_alpha_error);
+    for (std::size_t k = 0; k < kDiffClassCount; ++k)
+      s.pixels_by_class[k] += cmp->by_class[k];
+    if (cmp->match)
+      continue;
+    ++s.mismatches;
+    ++fam.second;
+    const DiffClass klass = cmp->main_class();
+    ++s.cases_by_class[static_cast<std::size_t>(klass)];
+    if (shrunk[static_cast<std::size_t>(klass)] >= settings.max_findings)
+      continue;
+    ++shrunk[static_cast<std::size_t>(klass)];
+    PathFinding f;
+    f.case_index = i;
+    f.family = c->family;
+    f.klass = klass;
+    f.original = c->scene;
+    f.shrunk = shrink_path(c->scene, driver.info().paths.grid_raw, [&](const Scene& t) {
+      if (!driver.unsupported(t).empty())
+        return false;
+      std::string ignored;
+      auto r = draw_compare(driver, t, settings.compare, &ignored);
+      return r && r->by_class[static_cast<std::size_t>(klass)] > 0;
+    });
+    if (auto r = draw_compare(driver, f.shrunk, settings.compare, &error))
+      f.comparison = std::move(*r);
+    if (!settings.out_dir.empty()) {
+      const std::filesystem::path dir(settings.out_dir);
+      const std::string stem = "case-" + std::to_string(i) + "-" + class_slug(klass);
+      f.scene_file = (dir / (stem + ".json")).string();
+      f.shrunk_file = (dir / (stem + "-shrunk.json")).string();
+      f.picture_file = (dir / (stem + "-shrunk.png")).string();
+      if (auto err = io::write_text(f.scene_file, io::write_scene(f.original)))
+        s.error = *err;
+      if (auto err = io::write_text(f.shrunk_file, io::write_scene(f.shrunk)))
+        s.error = *err;
+      if (auto err = write_path_picture(f.picture_file, f.shrunk, f.comparison))
+        s.error = *err;
+    }
+    s.findings.push_back(std::move(f));
+  }
+  s.seconds = since(start);
+  if (!settings.out_dir.empty()) {
+    nlohmann::json j;
+    j["driver"] = driver.info().name;
+    j["description"] = driver.info().description;
+    j["seed"] = settings.seed;
+    j["cases"] = s.cases;
+    j["skipped"] = s.skipped;
+    j["mismatches"] = s.mismatches;
+    j["alpha_tolerance"] = settings.compare.alpha_tolerance;
+    j["mode"] = settings.compare.legal ? "legal" : "exact";
+    j["pixels"] = s.pixels;
+    j["legal_ties"] = s.legal_ties;
+    j["within_tolerance"] = s.within;
+    j["max_alpha_error"] = s.max_alpha_error;
+    j["seconds"] = {
+        {"campaign", s.seconds}, {"driver", s.driver_seconds}, {"reference", s.reference_seconds}};
+    for (std::size_t k = 0; k < kDiffClassCount; ++k) {
+      const std::string name(to_string(static_cast<DiffClass>(k)));
+      j["classes"][name] = {{"cases", s.cases_by_class[k]}, {"pixels", s.pixels_by_class[k]}};
+    }
+    for (const auto& [name, counts] : s.families)
+      j["families"][name] = {{"cases", counts.first}, {"mismatches", counts.second}};
+    j["findings"] = nlohmann::json::array();
+    for (const PathFinding& f : s.findings) {
+      nlohmann::json fj = {{"case", f.case_index},
+                           {"family", f.family},
+                           {"class", std::string(to_string(f.klass))},
+                           {"scene", f.scene_file},
+                           {"shrunk", f.shrunk_file},
+                           {"picture", f.picture_file},
+                           {"shrunk_scene", nlohmann::json::parse(io::write_scene(f.shrunk))}};
+      fj["diffs"] = nlohmann::json::array();
+      for (std::size_t k = 0; k < f.comparison.diffs.size() && k < 16; ++k)
+        fj["diffs"].push_back(diff_json(f.comparison.diffs[k]));
+      j["findings"].push_back(std::move(fj));
+    }
+    if (!s.error.empty())
+      j["error"] = s.error;
+    if (auto err = io::write_text(std::filesystem::path(settings.out_dir) / "report.json",
+                                  j.dump(2) + "\n"))
+      s.error = *err;
+  }
+  return s;
+}
+
+// rule: FUZZ.PATH.REPORT
+void print_path_summary(std::FILE* out, const PathSettings& settings,
+                        const driver::DriverInfo& info, const PathSummary& s) {
+  std::fprintf(out, "driver      %s (%s)\n", info.name.c_str(), info.description.c_str());
+  std::fprintf(out, "grid        %s; aliased: %s; antialiased: %s\n", info.paths.grid.c_str(),
+               info.paths.aliased_method.c_str(), info.paths.antialiased_method.c_str());
+  std::fprintf(out, "cases       %llu run, %llu skipped, %llu with differences (seed %llu)\n",
+               static_cast<unsigned long long>(s.cases), static_cast<unsigned long long>(s.skipped),
+               static_cast<unsigned long long>(s.mismatches),
+               static_cast<unsigned long long>(settings.seed));
+  std::fprintf(out,
+               "pixels      %llu compared; legal: %llu boundary ties, %llu alpha within %d; "
+               "largest alpha error %d\n",
+               static_cast<unsigned long long>(s.pixels),
+               static_cast<unsigned long long>(s.legal_ties),
+               static_cast<unsigned long long>(s.within), settings.compare.alpha_tolerance,
+               s.max_alpha_error);
+  for (std::size_t k = 0; k < kDiffClassCount; ++k)
+    if (s.cases_by_class[k] > 0 || s.pixels_by_class[k] > 0)
+      std::fprintf(out, "class       %-17s %llu cases, %llu pixels\n",
+                   std::string(to_string(static_cast<DiffClass>(k))).c_str(),
+                   static_cast<unsigned long long>(s.cases_by_class[k]),
+                   static_cast<unsigned long long>(s.pixels_by_class[k]));
+  if (s.driver_seconds > 0)
+    std::fprintf(out,
+                 "speed       %s %.3f s, the exact kernel %.3f s on the same scenes (exact / %s = "
+                 "%.2f)\n",
+                 info.name.c_str(), s.driver_seconds, s.reference_seconds, info.name.c_str(),
+                 s.reference_seconds / s.driver_seconds);
+  for (const PathFinding& f : s.findings) {
+    std::size_t contours = 0, segments = 0;
+    for (const Primitive& p : f.shrunk.primitives)
+      if (p.path)
+        for (const FloatContour& c : p.path->contours) {
+          ++contours;
+          segments += c.segments.size();
+        }
+    std::fprintf(out,
+                 "finding     case %llu (%s): %s, shrunk to %zu contour(s), %zu segment(s)%s%s\n",
+                 static_cast<unsigned long long>(f.case_index), f.family.c_str(),
+                 std::string(to_string(f.klass)).c_str(), contours, segments,
+                 f.shrunk_file.empty() ? "" : ": ", f.shrunk_file.c_str());
+  }
+  if (!s.error.empty())
+    std::fprintf(out, "error       %s\n", s.error.c_str());
+}
+
+} // namespace rastrules::fuzzer::paths
