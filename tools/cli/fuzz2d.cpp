@@ -23,7 +23,7 @@ int run_fuzz2d(const Args& args) {
                  "every other difference is classified (conflation, winding overflow, curve "
                  "flattening, grid snapping, boundary tie, other) and the first findings of each "
                  "class are shrunk, with pictures, into --out DIR.");
-  std::optional<std::string> driver, out, cases, seed, tolerance, families;
+  std::optional<std::string> driver, out, cases, seed, tolerance, families, max_findings;
   bool exact = false;
   cl.value("--driver", driver, "NAME",
            "the 2D library: freetype, cairo, agg, skia, tiny-skia, imprecise-path:BUG (required)",
@@ -38,6 +38,9 @@ int run_fuzz2d(const Args& args) {
            "--alpha-tolerance needs a value");
   cl.value("--families", families, "A,B", "only these path families (FUZZ.PATH.GENERATE)",
            "--families needs a value");
+  cl.value("--max-findings", max_findings, "N",
+           "findings shrunk and written per class (default 8; 0: none)",
+           "--max-findings needs a value");
   cl.flag("--exact", exact, "aliased boundary ties are differences too (default: legal)");
   if (const auto stop = cl.parse(args, "fuzz2d: "))
     return *stop;
@@ -67,6 +70,13 @@ int run_fuzz2d(const Args& args) {
       return usage_error("--alpha-tolerance: must be an integer in [0, 255], got " +
                          shown_value(*tolerance));
     settings.compare.alpha_tolerance = static_cast<int>(*n);
+  }
+  if (max_findings) {
+    const auto n = parse_int(*max_findings, 0, 1000000);
+    if (!n)
+      return usage_error("--max-findings: must be an integer in [0, 1000000], got " +
+                         shown_value(*max_findings));
+    settings.max_findings = static_cast<std::uint64_t>(*n);
   }
   if (families) {
     std::stringstream in(*families);

@@ -101,50 +101,39 @@ bool near_curve(const path::Path& p, std::int32_t x, std::int32_t y) {
   return false;
 }
 
-// Whether the boundary of the path meets pixel (x, y), its edges included: a line that meets the
-// closed square (clipped in exact integers, Liang-Barsky style on the square's four sides), or a
-// curve whose control-point box does.
-bool boundary_meets(const path::Path& p, std::int32_t x, std::int32_t y) {
+// Whether the boundary crosses one of the centre lines of pixel (x, y) inside the pixel, where a
+// scanline rasterizer's dropout control looks for spans that hold no pixel centre: a line that
+// meets the horizontal line through the centre between the pixel's left and right edges, or the
+// vertical one between its top and bottom edges (exact: integer cross-multiplication); a curve
+// whose control-point box meets the pixel (its hull holds the curve).
+bool crosses_centre_lines(const path::Path& p, std::int32_t x, std::int32_t y) {
   const std::int64_t one = kSubpixelOne;
   const std::int64_t x0 = x * one, x1 = (x + 1) * one, y0 = y * one, y1 = (y + 1) * one;
-  auto line_meets = [&](path::Point a, path::Point b) {
-    // The segment a + t (b - a), t in [0, 1], as the fraction interval [lo, hi] kept by each
-    // side; rationals compared by cross-multiplication (|values| < 2^40).
-    std::int64_t lo_n = 0, lo_d = 1, hi_n = 1, hi_d = 1;
-    auto clip = [&](std::int64_t pa, std::int64_t d, std::int64_t lim, bool upper) {
-      // upper: pa + t d <= lim; else pa + t d >= lim.
-      const std::int64_t num = lim - pa;
-      if (d == 0)
-        return upper ? num >= 0 : num <= 0;
-      std::int64_t n = num, dd = d;
-      if (dd < 0) {
-        n = -n;
-        dd = -dd;
-      }
-      const bool enter = upper ? d < 0 : d > 0;
-      if (enter) {
-        if (n * lo_d > lo_n * dd) {
-          lo_n = n;
-          lo_d = dd;
-        }
-      } else if (n * hi_d < hi_n * dd) {
-        hi_n = n;
-        hi_d = dd;
-      }
-      return true;
-    };
-    const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
-    if (!clip(a.x, dx, x0, false) || !clip(a.x, dx, x1, true) || !clip(a.y, dy, y0, false) ||
-        !clip(a.y, dy, y1, true))
+  // Whether segment a-b meets the segment {v = c, u in [lo, hi]} (u, v: the other axis and this).
+  auto meets = [](std::int64_t au, std::int64_t av, std::int64_t bu, std::int64_t bv,
+                  std::int64_t c, std::int64_t lo, std::int64_t hi) {
+    if ((av < c && bv < c) || (av > c && bv > c))
       return false;
-    return lo_n * hi_d <= hi_n * lo_d;
+    if (av == bv)
+      return std::max(au, bu) >= lo && std::min(au, bu) <= hi;
+    // u at v = c is au + (c - av) (bu - au) / (bv - av): compare with lo and hi exactly.
+    std::int64_t num = au * (bv - av) + (c - av) * (bu - au), den = bv - av;
+    if (den < 0) {
+      num = -num;
+      den = -den;
+    }
+    return num >= lo * den && num <= hi * den;
+  };
+  auto line = [&](path::Point a, path::Point b) {
+    return meets(a.x, a.y, b.x, b.y, y0 + one / 2, x0, x1) ||
+           meets(a.y, a.x, b.y, b.x, x0 + one / 2, y0, y1);
   };
   for (const path::Contour& c : p.contours) {
     path::Point prev = c.start;
     for (const path::Segment& s : c.segments) {
       const std::size_t n = path::point_count(s.kind);
       if (s.kind == path::SegmentKind::kLine) {
-        if (line_meets(prev, s.p[0]))
+        if (line(prev, s.p[0]))
           return true;
       } else {
         std::int64_t lx = prev.x, hx = prev.x, ly = prev.y, hy = prev.y;
@@ -159,10 +148,22 @@ bool boundary_meets(const path::Path& p, std::int32_t x, std::int32_t y) {
       }
       prev = s.p[n - 1];
     }
-    if (line_meets(prev, c.start))
+    if (line(prev, c.start))
       return true;
   }
   return false;
+}
+
+// The path moved by (dx, dy) raw units.
+path::Path moved(path::Path p, std::int32_t dx, std::int32_t dy) {
+  auto move = [&](path::Point& q) { q = {q.x + dx, q.y + dy}; };
+  for (path::Contour& c : p.contours) {
+    move(c.start);
+    for (path::Segment& s : c.segments)
+      for (std::size_t i = 0; i < path::point_count(s.kind); ++i)
+        move(s.p[i]);
+  }
+  return p;
 }
 
 // A winding number as a 4-bit signed accumulator holds it: w mod 16 in [-8, 8).
@@ -242,8 +243,26 @@ public:
         return DiffClass::kGridSnapping;
       }
     }
-    if (!aa_ && actual == 1 && boundary_meets(path_, x, y)) {
-      why = "the boundary meets the pixel but covers no sample: a dropout pixel";
+    if (!aa_) {
+      // The sample (or the path) off by one 16.8 unit: a library that samples 1/256 px away
+      // from the centre, or rounds its coordinates once more.
+      constexpr std::array<std::array<std::int32_t, 2>, 4> kShifts = {
+          {{1, 0}, {-1, 0}, {0, 1}, {0, -1}}};
+      for (std::size_t k = 0; k < kShifts.size(); ++k) {
+        auto& r = grid_models_[-1 - static_cast<std::int32_t>(k)];
+        if (r.empty())
+          r = samples_raster(moved(path_, kShifts[k][0], kShifts[k][1]), scene_.conventions.fill, w,
+                             h);
+        if (close(r[at(w, x, y)])) {
+          why = "the exact coverage with the sample 1/256 px off the centre (" +
+                std::to_string(-kShifts[k][0]) + ", " + std::to_string(-kShifts[k][1]) +
+                " raw) gives " + std::to_string(r[at(w, x, y)]);
+          return DiffClass::kGridSnapping;
+        }
+      }
+    }
+    if (!aa_ && actual == 1 && crosses_centre_lines(path_, x, y)) {
+      why = "the boundary crosses the pixel's centre lines but covers no centre: a dropout pixel";
       return DiffClass::kDropout;
     }
     if (has_curves(path_) && near_curve(path_, x, y)) {
