@@ -216,3 +216,58 @@ TEST(PathCampaign, TheReportListsEveryFindingWithItsScenesAndPicture) {
 
 } // namespace
 } // namespace rastrules::fuzzer::paths
+
+namespace rastrules::fuzzer::paths {
+namespace {
+
+// rule: FUZZ.PATH.PROBE
+TEST(PathProbe, FindsThePlantedAccumulationAndItsRounding) {
+  auto d = open("imprecise-path:float-accumulation");
+  ASSERT_NE(d, nullptr);
+  const PathProbeReport r = probe_path_library(*d);
+  ASSERT_EQ(r.error, "");
+  EXPECT_EQ(r.twice_evenodd, 255); // signed areas accumulated: conflation
+  EXPECT_EQ(r.levels_x, 65);
+  EXPECT_EQ(r.levels_y, 65);
+  EXPECT_EQ(r.max_edge_error, 0);
+  EXPECT_TRUE(r.quantisation.starts_with("floor(255 a + 1/2)")) << r.quantisation;
+  EXPECT_EQ(r.quadratic, -1);        // no curves
+  EXPECT_TRUE(r.convention.empty()); // no aliased paths
+}
+
+// rule: FUZZ.PATH.PROBE
+TEST(PathProbe, ReportsEachLibrarysConventionGridAndMethod) {
+  struct Expected {
+    const char* driver;
+    const char* convention;
+    int twice_evenodd;
+    const char* quantisation;
+  };
+  for (const Expected& e : {Expected{"cairo", "top-left", 0, "min(255, floor(256 a))"},
+                            Expected{"agg",
+                                     "none of PATH.SAMPLE.TIE's (left in, right in, top in, "
+                                     "bottom in)",
+                                     255, "min(255, floor(256 a))"},
+                            Expected{"freetype",
+                                     "none of PATH.SAMPLE.TIE's (left in, right in, "
+                                     "top in, bottom in)",
+                                     255, "min(255, floor(256 a))"}}) {
+    std::string error;
+    auto d = driver::open_driver(e.driver, &error);
+    if (d == nullptr) {
+      EXPECT_TRUE(error.starts_with("unknown driver")) << error;
+      continue; // not built here
+    }
+    SCOPED_TRACE(e.driver);
+    const PathProbeReport r = probe_path_library(*d);
+    ASSERT_EQ(r.error, "");
+    EXPECT_EQ(r.convention, e.convention);
+    EXPECT_EQ(r.twice_evenodd, e.twice_evenodd);
+    EXPECT_TRUE(r.quantisation.starts_with(e.quantisation)) << r.quantisation;
+    EXPECT_EQ(r.snap_extent, 0);
+    EXPECT_GE(r.levels_x, 60);
+  }
+}
+
+} // namespace
+} // namespace rastrules::fuzzer::paths

@@ -12,6 +12,7 @@
 #include "fuzz_options.hpp"
 #include "parser.hpp"
 #include "rastrules/fuzzer/fuzzer.hpp"
+#include "rastrules/fuzzer/paths.hpp"
 #include "rastrules/io/interrupt.hpp"
 
 namespace rastrules::cli {
@@ -44,6 +45,59 @@ std::string probe_json(const std::string& name, const driver::DriverInfo& info,
   return j.dump(2) + "\n";
 }
 
+// rule: FUZZ.PATH.PROBE
+// A 2D library's report: text, or one JSON document.
+int print_path_probe(const std::string& name, const driver::DriverInfo& info, bool as_json,
+                     const fuzzer::paths::PathProbeReport& r) {
+  auto edges = [](const std::array<bool, 4>& e) {
+    return std::string("left ") + (e[0] ? "in" : "out") + ", right " + (e[1] ? "in" : "out") +
+           ", top " + (e[2] ? "in" : "out") + ", bottom " + (e[3] ? "in" : "out");
+  };
+  if (as_json) {
+    nlohmann::ordered_json j;
+    j["driver"] = name;
+    j["description"] = info.description;
+    if (info.paths.samples) {
+      j["convention"] = r.convention;
+      j["on_edge_cw"] = r.on_edge_cw;
+      j["on_edge_ccw"] = r.on_edge_ccw;
+      j["snap_extent_256"] = r.snap_extent;
+      j["grid"] = r.grid;
+    }
+    if (info.paths.area) {
+      j["levels_x"] = r.levels_x;
+      j["levels_y"] = r.levels_y;
+      j["max_edge_error"] = r.max_edge_error;
+      j["aa_method"] = r.aa_method;
+      j["quantisation"] = r.quantisation;
+      j["twice_evenodd"] = r.twice_evenodd;
+      j["quadratic"] = r.quadratic;
+    }
+    std::fputs((j.dump(2) + "\n").c_str(), stdout);
+    return kExitOk;
+  }
+  std::printf("driver            %s (%s)\n", name.c_str(), info.description.c_str());
+  std::printf("declared          grid %s; aliased: %s; antialiased: %s\n", info.paths.grid.c_str(),
+              info.paths.aliased_method.empty() ? "no" : info.paths.aliased_method.c_str(),
+              info.paths.antialiased_method.empty() ? "no" : info.paths.antialiased_method.c_str());
+  if (info.paths.samples) {
+    std::printf("boundary          %s (centres on edges, cw: %s; ccw: %s)\n", r.convention.c_str(),
+                edges(r.on_edge_cw).c_str(), edges(r.on_edge_ccw).c_str());
+    std::printf("grid              %s\n", r.grid.c_str());
+  }
+  if (info.paths.area) {
+    std::printf("antialiasing      %s; %d and %d levels, largest error %d/255 on edges\n",
+                r.aa_method.c_str(), r.levels_x, r.levels_y, r.max_edge_error);
+    std::printf("quantisation      %s\n", r.quantisation.c_str());
+    std::printf("conflation        a half pixel drawn twice, even-odd: alpha %d (exact 0)%s\n",
+                r.twice_evenodd, r.twice_evenodd > 1 ? ": signed areas accumulated" : "");
+    if (r.quadratic >= 0)
+      std::printf("curves            a quadratic's segment of area 1/3: alpha %d (exact 85)\n",
+                  r.quadratic);
+  }
+  return kExitOk;
+}
+
 } // namespace
 
 int run_probe(const Args& args) {
@@ -63,6 +117,13 @@ int run_probe(const Args& args) {
   auto d = open_driver_or_report(name);
   if (!d)
     return kExitBadInput;
+  if (!d->info().triangles && d->info().paths.any()) {
+    // rule: FUZZ.PATH.PROBE
+    const fuzzer::paths::PathProbeReport pr = fuzzer::paths::probe_path_library(*d);
+    if (!pr.error.empty())
+      return error("probe: " + pr.error);
+    return print_path_probe(name, d->info(), as_json, pr);
+  }
   const fuzzer::ProbeReport r = fuzzer::probe(*d);
   if (io::interrupted()) { // rule: SCENE.INPUT.ERRORS
     error("interrupted");

@@ -171,3 +171,35 @@ void print_path_summary(std::FILE* out, const PathSettings& settings,
 write_path_picture(const std::string& file, const Scene& scene, const PathComparison& c);
 
 } // namespace rastrules::fuzzer::paths
+
+namespace rastrules::fuzzer::paths {
+
+// What `rastrules probe` finds out about a 2D library from dedicated path scenes
+// (FUZZ.PATH.PROBE). Every field is measured, not taken from the driver's declaration.
+struct PathProbeReport {
+  // Aliased: whether a pixel centre exactly on a left, right, top or bottom edge of an axis-
+  // aligned rectangle is covered, for both orientations of the contour (cw, ccw), and the name
+  // of the convention when both agree and one of PATH.SAMPLE.TIE's four fits.
+  std::array<bool, 4> on_edge_cw{}, on_edge_ccw{}; // left, right, top, bottom
+  std::string convention;
+  // Aliased: the largest distance e (1/256 px) at which a vertical edge moved off a pixel centre
+  // still decides the centre as an edge exactly on it does (0: none, the library resolves
+  // 1/256 px), and the grid that implies.
+  std::int32_t snap_extent = 0;
+  std::string grid;
+  // Antialiased: the distinct alphas of pixel coverage as a vertical (horizontal) edge moves
+  // across the pixel in 65 steps of 1/64 px, and the method they imply.
+  int levels_x = 0, levels_y = 0;
+  int max_edge_error = 0; // the largest |alpha - exact alpha| on those edges
+  std::string aa_method;
+  std::string quantisation; // how an exact area a becomes alpha, among the usual formulas
+  int twice_evenodd = -1;   // alpha of a half pixel drawn twice under even-odd (exact 0)
+  int quadratic = -1;       // alpha between a quadratic and its chord (exact 85), -1: no curves
+  std::string error;        // non-empty: a draw failed
+};
+
+// Probes a 2D library driver (info().paths.any()): a handful of scenes, each holding many paths.
+// rule: FUZZ.PATH.PROBE
+[[nodiscard]] PathProbeReport probe_path_library(driver::Driver& driver);
+
+} // namespace rastrules::fuzzer::paths
