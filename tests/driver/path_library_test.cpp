@@ -405,10 +405,11 @@ TEST(PathLibraryAgg, DrawsQuadraticsAndCubics) {
 // of a library that changes them fails here and the findings are revisited.
 struct FindingAlphas {
   const char* driver;
-  int twice_evenodd; // pixel (0, 0) of a half pixel drawn twice, even-odd (exact 0)
-  int diagonal;      // pixel (0, 0) of two opposite triangles on a diagonal, nonzero (exact 255)
-  int quadratic;     // pixel (0, 0) between a quadratic and its chord (exact 85)
-  bool dropout;      // pixel (0, 1) of a zero-area contour, aliased (exact: not covered)
+  int twice_evenodd;  // pixel (0, 0) of a half pixel drawn twice, even-odd (exact 0)
+  int diagonal;       // pixel (0, 0) of two opposite triangles on a diagonal, nonzero (exact 255)
+  int quadratic;      // pixel (0, 0) between a quadratic and its chord (exact 85)
+  bool dropout;       // pixel (0, 1) of a zero-area contour, aliased (exact: not covered)
+  bool twice_aliased; // pixel (0, 0) of a rectangle drawn twice, even-odd, aliased (exact: not)
 };
 
 int alpha_at(Driver& d, const Scene& s, std::int32_t x, std::int32_t y) {
@@ -418,7 +419,7 @@ int alpha_at(Driver& d, const Scene& s, std::int32_t x, std::int32_t y) {
 }
 
 // rule: DRIVER.PATH.FREETYPE, DRIVER.PATH.CAIRO, DRIVER.PATH.AGG
-TEST(PathLibraryFindings, ConflationFlatteningAndDropoutAsSpecFindingsRecordThem) {
+TEST(PathLibraryFindings, ConflationFlatteningDropoutAndEvenOddAsSpecFindingsRecordThem) {
   const std::vector<FloatPoint> half = {{0.5f, 0}, {1, 0}, {1, 1}, {0.5f, 1}};
   const Scene twice = path_scene({polygon(half), polygon(half)}, path::Coverage::kArea,
                                  path::FillRule::kEvenOdd, 2);
@@ -429,9 +430,12 @@ TEST(PathLibraryFindings, ConflationFlatteningAndDropoutAsSpecFindingsRecordThem
                                      path::Coverage::kArea, path::FillRule::kNonZero, 2);
   const Scene line = path_scene({polygon({{0.5f, 3}, {1.5f, 0}})}, path::Coverage::kSamples,
                                 path::FillRule::kNonZero, 4);
-  for (const FindingAlphas& f :
-       {FindingAlphas{"freetype", 255, 0, 64, true}, FindingAlphas{"cairo", 0, 255, 80, false},
-        FindingAlphas{"agg", 255, 0, 72, false}}) {
+  const std::vector<FloatPoint> bar = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
+  const Scene twice_aliased = path_scene({polygon(bar), polygon(bar)}, path::Coverage::kSamples,
+                                         path::FillRule::kEvenOdd, 2);
+  for (const FindingAlphas& f : {FindingAlphas{"freetype", 255, 0, 64, true, true},
+                                 FindingAlphas{"cairo", 0, 255, 80, false, false},
+                                 FindingAlphas{"agg", 255, 0, 72, false, false}}) {
     std::string missing;
     auto d = open_built(f.driver, &missing);
     if (d == nullptr)
@@ -442,6 +446,7 @@ TEST(PathLibraryFindings, ConflationFlatteningAndDropoutAsSpecFindingsRecordThem
     EXPECT_EQ(alpha_at(*d, diagonal, 1, 1), f.diagonal);
     EXPECT_EQ(alpha_at(*d, quadratic, 0, 0), f.quadratic);
     EXPECT_EQ(fragment_at(draw_ok(*d, line), 0, 1) != nullptr, f.dropout);
+    EXPECT_EQ(fragment_at(draw_ok(*d, twice_aliased), 0, 0) != nullptr, f.twice_aliased);
   }
 }
 

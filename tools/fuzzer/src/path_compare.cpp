@@ -231,8 +231,23 @@ public:
         return DiffClass::kWindingOverflow;
       }
     }
+    {
+      auto& r = models_[kOtherRule];
+      if (r.empty()) {
+        path::Path o = path_;
+        o.fill_rule = o.fill_rule == path::FillRule::kNonZero ? path::FillRule::kEvenOdd
+                                                              : path::FillRule::kNonZero;
+        r = aa_ ? alpha_raster(o, w, h) : samples_raster(o, scene_.conventions.fill, w, h);
+      }
+      if (close(r[at(w, x, y)])) {
+        why = std::string("the exact coverage under the other fill rule (") +
+              (path_.fill_rule == path::FillRule::kNonZero ? "evenodd" : "nonzero") + ") gives " +
+              std::to_string(r[at(w, x, y)]);
+        return DiffClass::kFillRule;
+      }
+    }
     for (const std::int32_t g : {4, 16}) {
-      auto& r = grid_models_[g];
+      auto& r = models_[g];
       if (r.empty()) {
         const path::Path s = snapped(path_, g);
         r = aa_ ? alpha_raster(s, w, h) : samples_raster(s, scene_.conventions.fill, w, h);
@@ -249,7 +264,7 @@ public:
       constexpr std::array<std::array<std::int32_t, 2>, 4> kShifts = {
           {{1, 0}, {-1, 0}, {0, 1}, {0, -1}}};
       for (std::size_t k = 0; k < kShifts.size(); ++k) {
-        auto& r = grid_models_[-1 - static_cast<std::int32_t>(k)];
+        auto& r = models_[-1 - static_cast<std::int32_t>(k)];
         if (r.empty())
           r = samples_raster(moved(path_, kShifts[k][0], kShifts[k][1]), scene_.conventions.fill, w,
                              h);
@@ -278,7 +293,10 @@ private:
   const Scene& scene_;
   bool aa_;
   const PathCompareOptions& options_;
-  std::map<std::int32_t, std::vector<std::uint8_t>> grid_models_;
+  // The models' rasters, computed when first needed: by grid step (4, 16), the path moved by
+  // one unit (-1 .. -4), the other fill rule (kOtherRule).
+  static constexpr std::int32_t kOtherRule = -100;
+  std::map<std::int32_t, std::vector<std::uint8_t>> models_;
 };
 
 } // namespace
@@ -286,8 +304,8 @@ private:
 // rule: FUZZ.PATH.CLASSIFY
 std::string_view to_string(DiffClass c) {
   constexpr std::array<std::string_view, kDiffClassCount> names = {
-      "boundary tie", "conflation", "winding overflow", "grid snapping", "curve flattening",
-      "dropout",      "other"};
+      "boundary tie",  "conflation",       "winding overflow", "fill rule",
+      "grid snapping", "curve flattening", "dropout",          "other"};
   return names[static_cast<std::size_t>(c)];
 }
 

@@ -60,13 +60,14 @@ enum class DiffClass {
   kBoundaryTie,     // aliased: the pixel centre on the boundary, decided by another convention
   kConflation,      // several windings in one pixel: the signed-area sum explains it
   kWindingOverflow, // a winding number of 8 or more, wrapped in 4 bits, explains it
+  kFillRule,        // the exact coverage under the other fill rule explains it
   kGridSnapping,    // the exact answer on the path snapped to 26.6 or 1/16 px explains it
   kFlattening,      // next to a curve: its flattening explains it
   kDropout,         // aliased: a pixel the boundary passes through added (dropout control)
   kOther,
 };
 [[nodiscard]] std::string_view to_string(DiffClass c); // "boundary tie", "conflation", ...
-inline constexpr std::size_t kDiffClassCount = 7;
+inline constexpr std::size_t kDiffClassCount = 8;
 
 // One pixel that differs beyond what is legal.
 struct PixelDiff {
