@@ -228,3 +228,25 @@ export async function run(capabilities, draw) {
     process.exitCode = 1;
   }
 }
+
+// The capabilities reply of a 2D library (DRIVER.EXTERNAL.PATHS): paths only, one sample, no
+// pipeline, both coverage kinds, both fill rules, both curves, float coordinates; what differs
+// between libraries is the largest target and how they decide aliased and antialiased pixels.
+export function pathLibraryCapabilities({ maxTargetSide, aliased, antialiased }) {
+  return {
+    primitives: ['path'],
+    sample_counts: [1],
+    pipeline: false,
+    values: false,
+    max_target_side: maxTargetSide,
+    paths: {
+      samples: true,
+      area: true,
+      fill_rules: ['nonzero', 'evenodd'],
+      curves: ['quadratic', 'cubic'],
+      grid: 'float',
+      aliased_method: aliased,
+      antialiased_method: antialiased,
+    },
+  };
+}

@@ -7,25 +7,16 @@
 // `node skia.mjs` (the "skia" driver), one process per scene.
 // Implements: DRIVER.PATH.SKIA
 
-import { DriverFailure, run } from './scene.mjs';
+import { DriverFailure, pathLibraryCapabilities, run } from './scene.mjs';
 
-const capabilities = {
-  primitives: ['path'],
-  sample_counts: [1],
-  pipeline: false,
-  values: false,
-  // A raster surface is width * height * 4 bytes of WebAssembly memory.
-  max_target_side: 4096,
-  paths: {
-    samples: true,
-    area: true,
-    fill_rules: ['nonzero', 'evenodd'],
-    curves: ['quadratic', 'cubic'],
-    grid: 'float',
-    aliased_method: 'SkScan non-antialiased fill: pixel centres inside, edges in 26.6 (SkEdge)',
-    antialiased_method: 'SkScan antialiased fill: analytic coverage (SkScan_AAAPath), 8-bit alpha',
-  },
-};
+// A raster surface is width * height * 4 bytes of WebAssembly memory.
+const capabilities = pathLibraryCapabilities({
+  maxTargetSide: 4096,
+  aliased:
+    'SkScan non-antialiased fill: pixel centres inside, edges in 26.6 (SkEdge)' +
+    ' rounded half up (centres on left and top edges out)',
+  antialiased: 'SkScan antialiased fill: analytic coverage (SkScan_AAAPath), 8-bit alpha',
+});
 
 let ck = null; // CanvasKit, loaded once per process (only for a draw: the query needs none)
 let surface = null; // the raster surface of the current target

@@ -9,27 +9,18 @@
 // `node tiny-skia.mjs` (the "tiny-skia" driver), one process per scene.
 // Implements: DRIVER.PATH.TINY_SKIA
 
-import { DriverFailure, rawText, run } from './scene.mjs';
+import { DriverFailure, pathLibraryCapabilities, rawText, run } from './scene.mjs';
 
 let Resvg = null; // loaded for the first draw only: the capabilities query needs no native module
 
-const capabilities = {
-  primitives: ['path'],
-  sample_counts: [1],
-  pipeline: false,
-  values: false,
-  // The pixmap is width * height * 4 bytes, and resvg-js copies it once to JavaScript.
-  max_target_side: 4096,
-  paths: {
-    samples: true,
-    area: true,
-    fill_rules: ['nonzero', 'evenodd'],
-    curves: ['quadratic', 'cubic'],
-    grid: 'float',
-    aliased_method: 'tiny-skia fill_path without anti_alias: pixel centres inside, edges in 26.6',
-    antialiased_method: 'tiny-skia fill_path with anti_alias: supersampled 4 x 4, 8-bit alpha',
-  },
-};
+// The pixmap is width * height * 4 bytes, and resvg-js copies it once to JavaScript.
+const capabilities = pathLibraryCapabilities({
+  maxTargetSide: 4096,
+  aliased:
+    'tiny-skia fill_path without anti_alias: pixel centres inside, edges in 26.6' +
+    ' rounded half up (centres on left and top edges out)',
+  antialiased: 'tiny-skia fill_path with anti_alias: supersampled 4 x 4, 8-bit alpha',
+});
 
 // SVG path data of the snapped path: absolute commands, every contour closed (PATH.CONTOUR.CLOSE).
 function pathData(path) {

@@ -75,6 +75,20 @@ bool has_curves(const path::Path& p) {
   return false;
 }
 
+// Whether the control-point box of segment s (from prev) meets [x0, x1] x [y0, y1] (raw): the
+// curve lies in the hull of its control points, so it can meet the box only then.
+bool box_meets(path::Point prev, const path::Segment& s, std::int64_t x0, std::int64_t y0,
+               std::int64_t x1, std::int64_t y1) {
+  std::int64_t lx = prev.x, hx = prev.x, ly = prev.y, hy = prev.y;
+  for (std::size_t i = 0; i < path::point_count(s.kind); ++i) {
+    lx = std::min<std::int64_t>(lx, s.p[i].x);
+    hx = std::max<std::int64_t>(hx, s.p[i].x);
+    ly = std::min<std::int64_t>(ly, s.p[i].y);
+    hy = std::max<std::int64_t>(hy, s.p[i].y);
+  }
+  return hx >= x0 && lx <= x1 && hy >= y0 && ly <= y1;
+}
+
 // Whether pixel (x, y), grown by one pixel on every side, meets the control-point box of a
 // curve of the path: where a flattening of that curve can change the pixel.
 bool near_curve(const path::Path& p, std::int32_t x, std::int32_t y) {
@@ -83,19 +97,9 @@ bool near_curve(const path::Path& p, std::int32_t x, std::int32_t y) {
   for (const path::Contour& c : p.contours) {
     path::Point prev = c.start;
     for (const path::Segment& s : c.segments) {
-      const std::size_t n = path::point_count(s.kind);
-      if (s.kind != path::SegmentKind::kLine) {
-        std::int64_t lx = prev.x, hx = prev.x, ly = prev.y, hy = prev.y;
-        for (std::size_t i = 0; i < n; ++i) {
-          lx = std::min<std::int64_t>(lx, s.p[i].x);
-          hx = std::max<std::int64_t>(hx, s.p[i].x);
-          ly = std::min<std::int64_t>(ly, s.p[i].y);
-          hy = std::max<std::int64_t>(hy, s.p[i].y);
-        }
-        if (hx >= x0 && lx <= x1 && hy >= y0 && ly <= y1)
-          return true;
-      }
-      prev = s.p[n - 1];
+      if (s.kind != path::SegmentKind::kLine && box_meets(prev, s, x0, y0, x1, y1))
+        return true;
+      prev = s.p[path::point_count(s.kind) - 1];
     }
   }
   return false;
@@ -136,14 +140,7 @@ bool crosses_centre_lines(const path::Path& p, std::int32_t x, std::int32_t y) {
         if (line(prev, s.p[0]))
           return true;
       } else {
-        std::int64_t lx = prev.x, hx = prev.x, ly = prev.y, hy = prev.y;
-        for (std::size_t i = 0; i < n; ++i) {
-          lx = std::min<std::int64_t>(lx, s.p[i].x);
-          hx = std::max<std::int64_t>(hx, s.p[i].x);
-          ly = std::min<std::int64_t>(ly, s.p[i].y);
-          hy = std::max<std::int64_t>(hy, s.p[i].y);
-        }
-        if (hx >= x0 && lx <= x1 && hy >= y0 && ly <= y1)
+        if (box_meets(prev, s, x0, y0, x1, y1))
           return true;
       }
       prev = s.p[n - 1];

@@ -6,8 +6,13 @@
 
 #include <algorithm>
 
+#include <filesystem>
+
 #include "rastrules/fuzzer/fuzzer.hpp"
 #include "rastrules/fuzzer/paths.hpp"
+#if defined(RASTRULES_FUZZ_GLYPHS)
+#include "rastrules/io/glyph.hpp"
+#endif
 
 namespace rastrules::fuzzer::paths {
 
@@ -191,24 +196,93 @@ bool draw_family(std::string_view family, Builder& b, Rng& rng, const driver::Pa
   return true;
 }
 
+// The font of the "glyph" family for a driver: DejaVu Sans (TrueType: quadratics) when it draws
+// quadratics, else Nimbus Sans (Type 1: cubics) when it draws cubics; empty when the build has
+// no glyph reader or the file is not there.
+std::string glyph_font(const driver::PathSupport& ps) {
+#if defined(RASTRULES_FUZZ_GLYPHS)
+  for (const auto& [has, file] : {std::pair{ps.quadratics, RASTRULES_FUZZ_FONT_QUADRATIC},
+                                  std::pair{ps.cubics, RASTRULES_FUZZ_FONT_CUBIC}})
+    if (has && std::filesystem::exists(file))
+      return file;
+#else
+  (void)ps;
+#endif
+  return {};
+}
+
+// A glyph as a path scene: a letter, digit or sign at 6-14 px in its own target (PATH.GLYPH.*).
+std::optional<Scene> glyph_scene([[maybe_unused]] Rng& rng, const std::string& font,
+                                 [[maybe_unused]] std::int32_t limit) {
+#if defined(RASTRULES_FUZZ_GLYPHS)
+  static constexpr std::string_view kChars =
+      "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789&@%$?#";
+  const char32_t ch = static_cast<unsigned char>(kChars[static_cast<std::size_t>(
+      rng.uniform(0, static_cast<std::int64_t>(kChars.size()) - 1))]);
+  const int size = static_cast<int>(rng.uniform(6, 14));
+  auto g = io::load_glyph(font, ch, size);
+  if (!std::holds_alternative<io::Glyph>(g))
+    return std::nullopt;
+  const io::Glyph& glyph = std::get<io::Glyph>(g);
+  if (glyph.width > limit || glyph.height > limit)
+    return std::nullopt;
+  Scene scene;
+  scene.width = glyph.width;
+  scene.height = glyph.height;
+  FloatPath fp;
+  fp.fill_rule = glyph.path.fill_rule;
+  auto f = [](path::Point q) {
+    return FloatPoint{static_cast<float>(q.x) / static_cast<float>(kOne),
+                      static_cast<float>(q.y) / static_cast<float>(kOne)};
+  };
+  for (const path::Contour& c : glyph.path.contours) {
+    FloatContour fc;
+    fc.start = f(c.start);
+    for (const path::Segment& seg : c.segments) {
+      FloatPathSegment fs;
+      fs.kind = seg.kind;
+      for (std::size_t i = 0; i < path::point_count(seg.kind); ++i)
+        fs.p[i] = f(seg.p[i]);
+      fc.segments.push_back(fs);
+    }
+    fp.contours.push_back(std::move(fc));
+  }
+  scene.primitives.push_back(make_path(std::move(fp)));
+  return scene;
+#else
+  (void)font;
+  return std::nullopt;
+#endif
+}
+
 } // namespace
+
+// rule: FUZZ.PATH.GENERATE
+std::vector<std::string_view> available_path_families(const driver::DriverInfo& info,
+                                                      const std::vector<std::string>& only) {
+  const driver::PathSupport& ps = info.paths;
+  std::vector<std::string_view> families;
+  if (!ps.any() || (!ps.nonzero && !ps.evenodd))
+    return families;
+  const bool curves = ps.quadratics || ps.cubics;
+  for (std::string_view f : kPathFamilies) {
+    if (!only.empty() && std::find(only.begin(), only.end(), f) == only.end())
+      continue;
+    if (!curves && (f == "cusp" || f == "near-flat" || f == "glyph"))
+      continue;
+    if (f == "glyph" && glyph_font(ps).empty())
+      continue;
+    families.push_back(f);
+  }
+  return families;
+}
 
 // rule: FUZZ.PATH.GENERATE
 std::optional<PathCase> generate_path_case(std::uint64_t seed, std::uint64_t index,
                                            const driver::DriverInfo& info,
                                            const std::vector<std::string>& only) {
   const driver::PathSupport& ps = info.paths;
-  if (!ps.any() || (!ps.nonzero && !ps.evenodd))
-    return std::nullopt;
-  std::vector<std::string_view> families;
-  const bool curves = ps.quadratics || ps.cubics;
-  for (std::string_view f : kPathFamilies) {
-    if (!only.empty() && std::find(only.begin(), only.end(), f) == only.end())
-      continue;
-    if (!curves && (f == "cusp" || f == "near-flat"))
-      continue;
-    families.push_back(f);
-  }
+  const std::vector<std::string_view> families = available_path_families(info, only);
   if (families.empty())
     return std::nullopt;
   Rng rng(seed * 0x9E3779B97F4A7C15ull ^ (index + 1) * 0xD1B54A32D192ED03ull);
@@ -219,15 +293,29 @@ std::optional<PathCase> generate_path_case(std::uint64_t seed, std::uint64_t ind
   Scene scene;
   scene.width = std::min(side, limit);
   scene.height = std::min(static_cast<std::int32_t>(rng.uniform(4, 12)), limit);
-  Builder b(rng, std::max<std::int32_t>(ps.grid_raw, 1), scene.width, scene.height);
-  if (!draw_family(family, b, rng, ps, scene.width, scene.height))
-    return std::nullopt;
-  FloatPath p = b.take();
+  FloatPath p;
+  if (family == "glyph") {
+    // A glyph keeps its own target and fill rule; its points are on 26.6, every library's grid.
+    auto g = glyph_scene(rng, glyph_font(ps), limit);
+    if (!g)
+      return std::nullopt;
+    scene.width = g->width;
+    scene.height = g->height;
+    p = std::move(*g->primitives[0].path);
+  } else {
+    Builder b(rng, std::max<std::int32_t>(ps.grid_raw, 1), scene.width, scene.height);
+    if (!draw_family(family, b, rng, ps, scene.width, scene.height))
+      return std::nullopt;
+    p = b.take();
+  }
+  const path::FillRule own_rule = p.fill_rule;
   if (ps.samples && ps.area)
     p.coverage = index % 2 == 0 ? path::Coverage::kArea : path::Coverage::kSamples;
   else
     p.coverage = ps.area ? path::Coverage::kArea : path::Coverage::kSamples;
-  if (ps.nonzero && ps.evenodd)
+  if (family == "glyph" && (own_rule == path::FillRule::kNonZero ? ps.nonzero : ps.evenodd))
+    p.fill_rule = own_rule;
+  else if (ps.nonzero && ps.evenodd)
     p.fill_rule = rng.chance(50) ? path::FillRule::kNonZero : path::FillRule::kEvenOdd;
   else
     p.fill_rule = ps.nonzero ? path::FillRule::kNonZero : path::FillRule::kEvenOdd;

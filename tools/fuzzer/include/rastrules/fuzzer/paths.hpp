@@ -26,7 +26,7 @@ namespace rastrules::fuzzer::paths {
 
 // The path families, in the order generate_path_case() draws from them (FUZZ.PATH.GENERATE).
 // rule: FUZZ.PATH.GENERATE
-inline constexpr std::array<std::string_view, 8> kPathFamilies = {
+inline constexpr std::array<std::string_view, 9> kPathFamilies = {
     "polygon",   // random simple or self-intersecting polygons, 3-8 vertices
     "overlap",   // two or three contours overlapping inside a few pixels
     "twice",     // one contour drawn twice, the same or the opposite way
@@ -35,7 +35,15 @@ inline constexpr std::array<std::string_view, 8> kPathFamilies = {
     "cusp",      // cubics with cusps and loops, quadratics folded back
     "near-flat", // curves whose control points are almost on their chord
     "ties",      // edges and vertices on pixel centres and grid lines
+    "glyph",     // a glyph of DejaVu Sans (quadratics) or Nimbus Sans (cubics) at 6-14 px
 };
+
+// The families generate_path_case() draws for a driver: those of kPathFamilies (or of `only`)
+// that it can draw (no curves: no "cusp", "near-flat", "glyph"; "glyph" also needs the fonts of
+// the build, read through FreeType).
+// rule: FUZZ.PATH.GENERATE
+[[nodiscard]] std::vector<std::string_view>
+available_path_families(const driver::DriverInfo& info, const std::vector<std::string>& only = {});
 
 // A generated case: the scene (one path primitive) and its family.
 struct PathCase {
