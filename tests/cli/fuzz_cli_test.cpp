@@ -128,3 +128,53 @@ TEST(CliFuzz, BadUsageAndDriverFailuresExitWith2) {
 
 } // namespace
 } // namespace rastrules::test
+
+namespace rastrules::test {
+namespace {
+
+// rule: FUZZ.PATH.REPORT
+TEST(CliFuzz2d, APlantedBugIsFoundWithReportAndPicturesAndExitWith1) {
+  TempDir dir;
+  const auto out = dir / "f2d";
+  const RunResult r = run_cli({"fuzz2d", "--driver", "imprecise-path:float-accumulation", "--cases",
+                               "20", "--max-findings", "1", "--out", out.string()});
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.out.find("class       conflation"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("finding     case "), std::string::npos) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(out / "report.json"));
+  const RunResult ref = run_cli({"fuzz2d", "--driver", "imprecise-path:flatten-quarter",
+                                 "--families", "polygon,ties", "--cases", "10"});
+  EXPECT_EQ(ref.status, 0) << ref.out << ref.err; // no curves drawn: no difference
+}
+
+// rule: FUZZ.PATH.PROBE
+TEST(CliFuzz2d, ProbeOfAPathDriverReportsItsMethod) {
+  const RunResult r = run_cli({"probe", "--driver", "imprecise-path:float-accumulation"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("conflation        a half pixel drawn twice, even-odd: alpha 255"),
+            std::string::npos)
+      << r.out;
+  const RunResult j = run_cli({"probe", "--driver", "imprecise-path:float-accumulation", "--json"});
+  EXPECT_NE(j.out.find("\"twice_evenodd\": 255"), std::string::npos) << j.out;
+}
+
+// rule: FUZZ.PATH.REPORT
+TEST(CliFuzz2d, BadUsageExitsWith2) {
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {"fuzz2d"},
+           {"fuzz2d", "--driver", "nonesuch"},
+           {"fuzz2d", "--driver", "reference", "--cases", "0"},
+           {"fuzz2d", "--driver", "reference", "--alpha-tolerance", "256"},
+           {"fuzz2d", "--driver", "reference", "--families", "spirals"},
+           {"fuzz2d", "--driver", "reference", "--max-findings", "-1"},
+           {"fuzz2d", "--driver", "imprecise"},
+           {"fuzz2d", "--driver", "imprecise-path:nonesuch"},
+       }) {
+    const RunResult r = run_cli(args);
+    EXPECT_EQ(r.status, 2) << args.back();
+    EXPECT_NE(r.err.find("rastrules: error: "), std::string::npos) << r.err;
+  }
+}
+
+} // namespace
+} // namespace rastrules::test
