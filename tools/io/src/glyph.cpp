@@ -321,8 +321,10 @@ std::variant<FreeTypeGlyph, GlyphError> freetype_outline_of(const Glyph& g) {
   std::copy(points.begin(), points.end(), impl->outline.points);
   std::copy(tags.begin(), tags.end(), impl->outline.tags);
   std::copy(ends.begin(), ends.end(), impl->outline.contours);
-  impl->outline.flags =
-      g.path.fill_rule == path::FillRule::kEvenOdd ? FT_OUTLINE_EVEN_ODD_FILL : FT_OUTLINE_NONE;
+  // Add to FT_Outline_New's flags, never replace them: its FT_OUTLINE_OWNER is what makes
+  // FT_Outline_Done free the arrays (without it every outline leaked its points).
+  if (g.path.fill_rule == path::FillRule::kEvenOdd)
+    impl->outline.flags |= FT_OUTLINE_EVEN_ODD_FILL;
   impl->glyph = g;
   return FreeTypeGlyph(std::move(impl));
 }
