@@ -88,6 +88,9 @@ TEST(PathCampaign, TheReferenceAgreesWithItselfOnEveryFamily) {
   EXPECT_EQ(s.mismatches, 0u);
   EXPECT_EQ(s.max_alpha_error, 0);
   EXPECT_EQ(s.families.size(), available_path_families(d->info()).size());
+  // The reference decides ties top-left: the campaign says so.
+  EXPECT_GT(s.tie_pixels, 0u);
+  EXPECT_EQ(s.conventions & 1u, 1u);
 }
 
 Scene square_twice(path::FillRule rule, path::Coverage coverage) {

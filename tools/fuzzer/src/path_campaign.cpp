@@ -55,6 +55,20 @@ std::string class_slug(DiffClass c) {
   return s;
 }
 
+// rule: FUZZ.PATH.COMPARE
+// The boundary conventions consistent with every tie pixel of a campaign, as text.
+std::string conventions_text(std::uint8_t mask, std::uint64_t tie_pixels) {
+  if (tie_pixels == 0)
+    return "no pixel centre on a boundary was drawn";
+  std::string names;
+  for (std::size_t k = 0; k < 4; ++k)
+    if ((mask >> k) & 1u)
+      names += (names.empty() ? "" : ", ") + std::string(to_string(static_cast<FillConvention>(k)));
+  return (names.empty() ? std::string("no single convention of PATH.SAMPLE.TIE")
+                        : "consistent with " + names) +
+         " (over " + std::to_string(tie_pixels) + " pixels whose centre is on a boundary)";
+}
+
 } // namespace
 
 // rule: FUZZ.PATH.REPORT
@@ -141,6 +155,8 @@ PathSummary run_path_fuzz(driver::Driver& driver, const PathSettings& settings) 
     }
     s.pixels += cmp->pixels;
     s.legal_ties += cmp->legal_ties;
+    s.tie_pixels += cmp->tie_pixels;
+    s.conventions = static_cast<std::uint8_t>(s.conventions & cmp->conventions);
     s.within += cmp->within;
     s.max_alpha_error = std::max(s.max_alpha_error, cmp->max_alpha_error);
     for (std::size_t k = 0; k < kDiffClassCount; ++k)
@@ -196,6 +212,8 @@ PathSummary run_path_fuzz(driver::Driver& driver, const PathSettings& settings) 
     j["mode"] = settings.compare.legal ? "legal" : "exact";
     j["pixels"] = s.pixels;
     j["legal_ties"] = s.legal_ties;
+    j["tie_pixels"] = s.tie_pixels;
+    j["boundary_conventions"] = conventions_text(s.conventions, s.tie_pixels);
     j["within_tolerance"] = s.within;
     j["max_alpha_error"] = s.max_alpha_error;
     j["seconds"] = {
@@ -246,6 +264,8 @@ void print_path_summary(std::FILE* out, const PathSettings& settings,
                static_cast<unsigned long long>(s.legal_ties),
                static_cast<unsigned long long>(s.within), settings.compare.alpha_tolerance,
                s.max_alpha_error);
+  if (info.paths.samples)
+    std::fprintf(out, "boundary    %s\n", conventions_text(s.conventions, s.tie_pixels).c_str());
   for (std::size_t k = 0; k < kDiffClassCount; ++k)
     if (s.cases_by_class[k] > 0 || s.pixels_by_class[k] > 0)
       std::fprintf(out, "class       %-17s %llu cases, %llu pixels\n",

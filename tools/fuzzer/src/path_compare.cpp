@@ -345,10 +345,27 @@ std::optional<PathComparison> compare_paths(const Scene& scene, const std::vecto
         aa ? alpha_raster(p, w, h) : samples_raster(p, ps.conventions.fill, w, h);
     std::array<std::vector<std::uint8_t>, 4> ties;
     Models models(p, scene, aa, options);
+    if (!aa)
+      for (std::size_t k = 0; k < ties.size(); ++k)
+        ties[k] = samples_raster(p, static_cast<FillConvention>(k), w, h);
     for (std::int32_t y = 0; y < h; ++y)
       for (std::int32_t x = 0; x < w; ++x) {
         ++out.pixels;
         const int e = exact[at(w, x, y)], a = got[at(w, x, y)];
+        if (!aa) {
+          // rule: FUZZ.PATH.COMPARE
+          // A pixel the conventions decide differently: which of them give the library's answer.
+          std::uint8_t agree = 0, differ = 0;
+          for (std::size_t k = 0; k < ties.size(); ++k) {
+            agree = static_cast<std::uint8_t>(agree | (ties[k][at(w, x, y)] == a ? 1u << k : 0u));
+            differ = static_cast<std::uint8_t>(
+                differ | (ties[k][at(w, x, y)] != ties[0][at(w, x, y)] ? 1 : 0));
+          }
+          if (differ != 0) {
+            ++out.tie_pixels;
+            out.conventions = static_cast<std::uint8_t>(out.conventions & agree);
+          }
+        }
         if (e == a)
           continue;
         bool tie = false;
@@ -362,11 +379,8 @@ std::optional<PathComparison> compare_paths(const Scene& scene, const std::vecto
         } else {
           // rule: FUZZ.PATH.COMPARE
           // The pixel centre on the boundary: another convention of PATH.SAMPLE.TIE decides it.
-          for (std::size_t k = 0; k < ties.size() && !tie; ++k) {
-            if (ties[k].empty())
-              ties[k] = samples_raster(p, static_cast<FillConvention>(k), w, h);
+          for (std::size_t k = 0; k < ties.size() && !tie; ++k)
             tie = ties[k][at(w, x, y)] == a;
-          }
           if (tie && options.legal) {
             ++out.legal_ties;
             continue;

@@ -102,6 +102,10 @@ struct PathComparison {
   bool antialiased = false;
   std::uint64_t pixels = 0;     // pixels compared (the target's, per path)
   std::uint64_t legal_ties = 0; // aliased pixels that differ only by the boundary convention
+  // Aliased: the pixels whose centre the four conventions of PATH.SAMPLE.TIE decide differently,
+  // and the conventions (bit k: FillConvention k) that give the library's answer on all of them.
+  std::uint64_t tie_pixels = 0;
+  std::uint8_t conventions = 0xF;
   std::uint64_t within = 0;     // antialiased pixels that differ within the tolerance
   int max_alpha_error = 0;      // the largest |A - exact alpha| seen, legal or not
   std::vector<PixelDiff> diffs; // every pixel beyond what is legal
@@ -153,6 +157,8 @@ struct PathFinding {
 struct PathSummary {
   std::uint64_t cases = 0, skipped = 0, mismatches = 0;
   std::uint64_t pixels = 0, legal_ties = 0, within = 0;
+  std::uint64_t tie_pixels = 0;   // aliased pixels the conventions decide differently
+  std::uint8_t conventions = 0xF; // the conventions consistent with every one of them
   int max_alpha_error = 0;
   std::array<std::uint64_t, kDiffClassCount> cases_by_class{};  // by the case's main class
   std::array<std::uint64_t, kDiffClassCount> pixels_by_class{}; // every differing pixel
