@@ -77,7 +77,7 @@ std::optional<std::string> write_path_picture(const std::string& file, const Sce
   if (c.expected.empty())
     return std::nullopt;
   const int w = scene.width, h = scene.height;
-  const int scale = std::max(4, std::min(32, 384 / std::max(1, std::max(w, h))));
+  const int scale = std::max(4, std::min(48, 480 / std::max(1, std::max(w, h))));
   const int gap = 8;
   const int pw = w * scale;
   io::Image img(3 * pw + 2 * gap, h * scale, {255, 255, 255});
@@ -92,9 +92,9 @@ std::optional<std::string> write_path_picture(const std::string& file, const Sce
       const std::size_t i =
           static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x);
       const std::uint8_t le = level(e[i]), la = level(a[i]);
-      img.fill_rect(x * scale, y * scale, (x + 1) * scale - 1, (y + 1) * scale - 1, {le, le, le});
-      img.fill_rect(pw + gap + x * scale, y * scale, pw + gap + (x + 1) * scale - 1,
-                    (y + 1) * scale - 1, {la, la, la});
+      img.fill_rect(x * scale, y * scale, (x + 1) * scale, (y + 1) * scale, {le, le, le});
+      img.fill_rect(pw + gap + x * scale, y * scale, pw + gap + (x + 1) * scale, (y + 1) * scale,
+                    {la, la, la});
       // Difference: red where the library has more, blue where less, by how much.
       const int d =
           (c.antialiased ? a[i] : (a[i] ? 255 : 0)) - (c.antialiased ? e[i] : (e[i] ? 255 : 0));
@@ -102,18 +102,64 @@ std::optional<std::string> write_path_picture(const std::string& file, const Sce
       const io::Rgb col = d > 0   ? io::Rgb{255, k, k}
                           : d < 0 ? io::Rgb{k, k, 255}
                                   : io::Rgb{255, 255, 255};
-      img.fill_rect(2 * (pw + gap) + x * scale, y * scale, 2 * (pw + gap) + (x + 1) * scale - 1,
-                    (y + 1) * scale - 1, col);
+      img.fill_rect(2 * (pw + gap) + x * scale, y * scale, 2 * (pw + gap) + (x + 1) * scale,
+                    (y + 1) * scale, col);
     }
-  // The pixel grid on every panel.
+  // On every panel: the pixel grid, the pixel centres and the path's boundary (each curve drawn
+  // as 32 chords: a picture, not a decision).
+  const Primitive* prim = scene.primitives.empty() ? nullptr : &scene.primitives.front();
   for (int panel = 0; panel < 3; ++panel) {
-    const int x0 = panel * (pw + gap);
+    const double x0 = panel * (pw + gap);
     for (int x = 0; x <= w; ++x)
-      img.fill_rect(x0 + std::min(x * scale, pw - 1), 0, x0 + std::min(x * scale, pw - 1),
-                    h * scale - 1, {200, 200, 200});
+      img.line(x0 + std::min(x * scale, pw - 1), 0, x0 + std::min(x * scale, pw - 1), h * scale - 1,
+               {170, 170, 170});
     for (int y = 0; y <= h; ++y)
-      img.fill_rect(x0, std::min(y * scale, h * scale - 1), x0 + pw - 1,
-                    std::min(y * scale, h * scale - 1), {200, 200, 200});
+      img.line(x0, std::min(y * scale, h * scale - 1), x0 + pw - 1,
+               std::min(y * scale, h * scale - 1), {170, 170, 170});
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        img.disc(static_cast<int>(x0) + x * scale + scale / 2, y * scale + scale / 2, 1,
+                 {120, 120, 120}, true);
+    if (prim == nullptr || !prim->path)
+      continue;
+    auto to_img = [&](const FloatPoint& q) {
+      return std::array<double, 2>{x0 + static_cast<double>(q[0]) * scale,
+                                   static_cast<double>(q[1]) * scale};
+    };
+    for (const FloatContour& contour : prim->path->contours) {
+      FloatPoint cur = contour.start;
+      auto chord = [&](const FloatPoint& from, const FloatPoint& to) {
+        const auto pa = to_img(from), pb = to_img(to);
+        img.line(pa[0], pa[1], pb[0], pb[1], {200, 30, 30});
+      };
+      for (const FloatPathSegment& seg : contour.segments) {
+        const std::size_t n = path::point_count(seg.kind);
+        std::array<FloatPoint, 4> ctl = {cur, seg.p[0], seg.p[1], seg.p[2]};
+        FloatPoint prev = cur;
+        const int pieces = n == 1 ? 1 : 32;
+        for (int k = 1; k <= pieces; ++k) {
+          const double t = static_cast<double>(k) / pieces, u = 1 - t;
+          double bx = 0, by = 0;
+          if (n == 1) {
+            bx = ctl[1][0];
+            by = ctl[1][1];
+          } else if (n == 2) {
+            bx = u * u * ctl[0][0] + 2 * u * t * ctl[1][0] + t * t * ctl[2][0];
+            by = u * u * ctl[0][1] + 2 * u * t * ctl[1][1] + t * t * ctl[2][1];
+          } else {
+            bx = u * u * u * ctl[0][0] + 3 * u * u * t * ctl[1][0] + 3 * u * t * t * ctl[2][0] +
+                 t * t * t * ctl[3][0];
+            by = u * u * u * ctl[0][1] + 3 * u * u * t * ctl[1][1] + 3 * u * t * t * ctl[2][1] +
+                 t * t * t * ctl[3][1];
+          }
+          const FloatPoint next{static_cast<float>(bx), static_cast<float>(by)};
+          chord(prev, next);
+          prev = next;
+        }
+        cur = seg.p[n - 1];
+      }
+      chord(cur, contour.start);
+    }
   }
   io::OutputFile out;
   if (auto err = out.open(file))
