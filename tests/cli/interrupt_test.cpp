@@ -114,5 +114,23 @@ TEST(CliInterrupt, ACampaignEndsTheDriverWritesItsReportAndExits130) {
   EXPECT_TRUE(std::filesystem::exists(dir / "out" / "report.json"));
 }
 
+// rule: SCENE.INPUT.ERRORS, FUZZ.PATH.REPORT
+TEST(CliInterrupt, A2dCampaignStopsBetweenCasesWritesItsReportAndExits130) {
+  const TempDir dir;
+  const pid_t pid = start({"fuzz2d", "--driver", "imprecise-path:float-accumulation", "--cases",
+                           "100000000", "--out", (dir / "out").string()},
+                          dir / "stdout");
+  // The first finding's scene appears once the campaign is under way.
+  ASSERT_TRUE(wait_for([&] {
+    return std::filesystem::exists(dir / "out") && !std::filesystem::is_empty(dir / "out");
+  })) << "the campaign did not start";
+  ::kill(pid, SIGINT);
+  EXPECT_EQ(exit_status(pid), 130);
+  EXPECT_NE(read_file(dir / "stdout").find("result      interrupted after"), std::string::npos)
+      << read_file(dir / "stdout");
+  EXPECT_NE(read_file(dir / "out" / "report.json").find("\"interrupted\": true"),
+            std::string::npos);
+}
+
 } // namespace
 } // namespace rastrules::test

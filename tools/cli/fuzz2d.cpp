@@ -100,6 +100,14 @@ int run_fuzz2d(const Args& args) {
     return error("fuzz2d: driver '" + settings.driver_name + "' draws no paths");
   const fuzzer::paths::PathSummary s = fuzzer::paths::run_path_fuzz(*d, settings);
   fuzzer::paths::print_path_summary(stdout, settings, d->info(), s);
+  // rule: SCENE.INPUT.ERRORS, FUZZ.PATH.REPORT
+  if (s.interrupted || io::interrupted()) {
+    std::printf("result      interrupted after %llu case(s)\n",
+                static_cast<unsigned long long>(s.cases));
+    std::fflush(stdout);
+    error("interrupted");
+    return io::kExitInterrupted;
+  }
   if (!s.error.empty())
     return kExitBadInput;
   return s.mismatches > 0 ? kExitDifference : kExitOk;

@@ -12,6 +12,7 @@
 
 #include "rastrules/fuzzer/paths.hpp"
 #include "rastrules/io/image.hpp"
+#include "rastrules/io/interrupt.hpp"
 #include "rastrules/io/output_file.hpp"
 #include "rastrules/io/scene_json.hpp"
 
@@ -181,6 +182,13 @@ PathSummary run_path_fuzz(driver::Driver& driver, const PathSettings& settings) 
     std::filesystem::create_directories(settings.out_dir);
   std::array<std::uint64_t, kDiffClassCount> shrunk{};
   for (std::uint64_t i = 0; i < settings.cases; ++i) {
+    // rule: FUZZ.PATH.REPORT
+    // An interrupt stops the campaign between cases (and a shrink between draws); the report
+    // holds what it has.
+    if (io::interrupted()) {
+      s.interrupted = true;
+      break;
+    }
     auto c = generate_path_case(settings.seed, i, driver.info(), settings.families);
     if (!c || !driver.unsupported(c->scene).empty()) {
       ++s.skipped;
@@ -191,6 +199,10 @@ PathSummary run_path_fuzz(driver::Driver& driver, const PathSettings& settings) 
     ++fam.first;
     auto cmp = draw_compare(driver, c->scene, settings.compare, &error, &s.driver_seconds);
     if (!cmp) {
+      if (io::interrupted()) { // the driver's process was ended by the interrupt
+        s.interrupted = true;
+        break;
+      }
       s.error = "case " + std::to_string(i) + ": " + error;
       break;
     }
@@ -222,7 +234,7 @@ PathSummary run_path_fuzz(driver::Driver& driver, const PathSettings& settings) 
     f.klass = klass;
     f.original = c->scene;
     f.shrunk = shrink_path(c->scene, driver.info().paths.grid_raw, [&](const Scene& t) {
-      if (!driver.unsupported(t).empty())
+      if (io::interrupted() || !driver.unsupported(t).empty())
         return false;
       std::string ignored;
       auto r = draw_compare(driver, t, settings.compare, &ignored);
@@ -286,6 +298,8 @@ PathSummary run_path_fuzz(driver::Driver& driver, const PathSettings& settings) 
     }
     if (!s.error.empty())
       j["error"] = s.error;
+    if (s.interrupted)
+      j["interrupted"] = true;
     if (auto err = io::write_text(std::filesystem::path(settings.out_dir) / "report.json",
                                   j.dump(2) + "\n"))
       s.error = *err;

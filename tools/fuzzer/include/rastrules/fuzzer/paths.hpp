@@ -168,6 +168,7 @@ struct PathSummary {
   double driver_seconds = 0;         // in the library's draw()
   double reference_seconds = 0;      // in the exact kernel, the same scenes
   std::string error;                 // non-empty: stopped on a driver error
+  bool interrupted = false;          // SIGINT or SIGTERM: stopped between cases
 };
 
 // Runs a campaign against one library and writes DIR/report.json, the findings' scenes and
