@@ -95,29 +95,7 @@ int run_glyph(const Args& args) {
   if (const auto* e = std::get_if<io::GlyphError>(&loaded))
     return error(e->what());
   const io::Glyph& g = std::get<io::Glyph>(loaded);
-  // raw / 256 is exact in float32 (|raw| < 2^24) and snaps back to raw.
-  auto fpt = [](const path::Point& p) {
-    return FloatPoint{static_cast<float>(p.x) / 256.0f, static_cast<float>(p.y) / 256.0f};
-  };
-  FloatPath fp;
-  fp.fill_rule = g.path.fill_rule;
-  fp.coverage = *kind;
-  for (const path::Contour& c : g.path.contours) {
-    FloatContour fc;
-    fc.start = fpt(c.start);
-    for (const path::Segment& s : c.segments) {
-      FloatPathSegment fs;
-      fs.kind = s.kind;
-      for (std::size_t k = 0; k < path::point_count(s.kind); ++k)
-        fs.p[k] = fpt(s.p[k]);
-      fc.segments.push_back(fs);
-    }
-    fp.contours.push_back(std::move(fc));
-  }
-  Scene scene;
-  scene.width = g.width;
-  scene.height = g.height;
-  scene.primitives.push_back(make_path(std::move(fp)));
+  const Scene scene = io::glyph_scene(g, *kind);
   const std::string text = io::write_scene(scene);
   if (!out || *out == "-") {
     std::fputs(text.c_str(), stdout);

@@ -212,8 +212,8 @@ std::string glyph_font(const driver::PathSupport& ps) {
 }
 
 // A glyph as a path scene: a letter, digit or sign at 6-14 px in its own target (PATH.GLYPH.*).
-std::optional<Scene> glyph_scene([[maybe_unused]] Rng& rng, const std::string& font,
-                                 [[maybe_unused]] std::int32_t limit) {
+std::optional<Scene> random_glyph([[maybe_unused]] Rng& rng, const std::string& font,
+                                  [[maybe_unused]] std::int32_t limit) {
 #if defined(RASTRULES_FUZZ_GLYPHS)
   static constexpr std::string_view kChars =
       "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789&@%$?#";
@@ -226,29 +226,7 @@ std::optional<Scene> glyph_scene([[maybe_unused]] Rng& rng, const std::string& f
   const io::Glyph& glyph = std::get<io::Glyph>(g);
   if (glyph.width > limit || glyph.height > limit)
     return std::nullopt;
-  Scene scene;
-  scene.width = glyph.width;
-  scene.height = glyph.height;
-  FloatPath fp;
-  fp.fill_rule = glyph.path.fill_rule;
-  auto f = [](path::Point q) {
-    return FloatPoint{static_cast<float>(q.x) / static_cast<float>(kOne),
-                      static_cast<float>(q.y) / static_cast<float>(kOne)};
-  };
-  for (const path::Contour& c : glyph.path.contours) {
-    FloatContour fc;
-    fc.start = f(c.start);
-    for (const path::Segment& seg : c.segments) {
-      FloatPathSegment fs;
-      fs.kind = seg.kind;
-      for (std::size_t i = 0; i < path::point_count(seg.kind); ++i)
-        fs.p[i] = f(seg.p[i]);
-      fc.segments.push_back(fs);
-    }
-    fp.contours.push_back(std::move(fc));
-  }
-  scene.primitives.push_back(make_path(std::move(fp)));
-  return scene;
+  return io::glyph_scene(glyph, path::Coverage::kSamples);
 #else
   (void)font;
   return std::nullopt;
@@ -296,7 +274,7 @@ std::optional<PathCase> generate_path_case(std::uint64_t seed, std::uint64_t ind
   FloatPath p;
   if (family == "glyph") {
     // A glyph keeps its own target and fill rule; its points are on 26.6, every library's grid.
-    auto g = glyph_scene(rng, glyph_font(ps), limit);
+    auto g = random_glyph(rng, glyph_font(ps), limit);
     if (!g)
       return std::nullopt;
     scene.width = g->width;

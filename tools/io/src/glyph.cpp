@@ -338,4 +338,32 @@ std::variant<Glyph, GlyphError> load_glyph(const std::string& font_file, char32_
   return std::get<FreeTypeGlyph>(r).glyph();
 }
 
+// rule: PATH.GLYPH.SOURCE
+Scene glyph_scene(const Glyph& g, path::Coverage coverage) {
+  // raw / 256 is exact in float32 (|raw| < 2^24) and snaps back to raw.
+  auto fpt = [](const path::Point& p) {
+    return FloatPoint{static_cast<float>(p.x) / 256.0f, static_cast<float>(p.y) / 256.0f};
+  };
+  FloatPath fp;
+  fp.fill_rule = g.path.fill_rule;
+  fp.coverage = coverage;
+  for (const path::Contour& c : g.path.contours) {
+    FloatContour fc;
+    fc.start = fpt(c.start);
+    for (const path::Segment& s : c.segments) {
+      FloatPathSegment fs;
+      fs.kind = s.kind;
+      for (std::size_t k = 0; k < path::point_count(s.kind); ++k)
+        fs.p[k] = fpt(s.p[k]);
+      fc.segments.push_back(fs);
+    }
+    fp.contours.push_back(std::move(fc));
+  }
+  Scene scene;
+  scene.width = g.width;
+  scene.height = g.height;
+  scene.primitives.push_back(make_path(std::move(fp)));
+  return scene;
+}
+
 } // namespace rastrules::io

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "rastrules/path.hpp"
+#include "rastrules/scene.hpp"
 
 namespace rastrules::io {
 
@@ -110,5 +111,11 @@ load_freetype_glyph(const std::string& font_file, char32_t code_point, int pixel
 // rule: PATH.GLYPH.SOURCE
 [[nodiscard]] std::variant<Glyph, GlyphError> load_glyph(const std::string& font_file,
                                                          char32_t code_point, int pixel_size);
+
+// The glyph as a scene of one path primitive in its target, with the glyph's fill rule and the
+// coverage asked for: every control point as the float32 raw / 256, exact (|raw| < 2^24) and
+// snapped back to raw by SNAP.VERTEX.ROUND (what `rastrules glyph` writes).
+// rule: PATH.GLYPH.SOURCE
+[[nodiscard]] Scene glyph_scene(const Glyph& g, path::Coverage coverage);
 
 } // namespace rastrules::io
