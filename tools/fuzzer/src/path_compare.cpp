@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <memory>
 #include <variant>
 
 #include "rastrules/fuzzer/paths.hpp"
@@ -19,14 +20,19 @@ using boost::multiprecision::cpp_rational;
 
 // rule: PATH.AREA.ALPHA
 int alpha_of(const cpp_rational& a) {
-  if (a <= 0)
-    return 0;
-  if (a >= 1)
-    return 255;
-  // floor(255 a + 1/2) = floor((510 num + den) / (2 den)).
-  const auto num = boost::multiprecision::numerator(a);
-  const auto den = boost::multiprecision::denominator(a);
-  return static_cast<int>(static_cast<long>((510 * num + den) / (2 * den)));
+  // The kernel's own rounding (ExactArea::alpha), not a second copy of it.
+  return ExactArea(std::make_shared<const path::AreaValue>(path::AreaValue{a, 0})).alpha();
+}
+
+// The path with f applied to every control point.
+template <class F> path::Path with_points(path::Path p, F f) {
+  for (path::Contour& c : p.contours) {
+    c.start = f(c.start);
+    for (path::Segment& s : c.segments)
+      for (std::size_t i = 0; i < path::point_count(s.kind); ++i)
+        s.p[i] = f(s.p[i]);
+  }
+  return p;
 }
 
 std::size_t at(std::int32_t w, std::int32_t x, std::int32_t y) {
@@ -57,14 +63,9 @@ path::Path snapped(path::Path p, std::int32_t g) {
       ++n;
     return static_cast<std::int32_t>(n * g);
   };
-  auto snap = [&](path::Point& q) { q = {round(q.x), round(q.y)}; };
-  for (path::Contour& c : p.contours) {
-    snap(c.start);
-    for (path::Segment& s : c.segments)
-      for (std::size_t i = 0; i < path::point_count(s.kind); ++i)
-        snap(s.p[i]);
-  }
-  return p;
+  return with_points(std::move(p), [&](path::Point q) {
+    return path::Point{round(q.x), round(q.y)};
+  });
 }
 
 bool has_curves(const path::Path& p) {
@@ -153,14 +154,7 @@ bool crosses_centre_lines(const path::Path& p, std::int32_t x, std::int32_t y) {
 
 // The path moved by (dx, dy) raw units.
 path::Path moved(path::Path p, std::int32_t dx, std::int32_t dy) {
-  auto move = [&](path::Point& q) { q = {q.x + dx, q.y + dy}; };
-  for (path::Contour& c : p.contours) {
-    move(c.start);
-    for (path::Segment& s : c.segments)
-      for (std::size_t i = 0; i < path::point_count(s.kind); ++i)
-        move(s.p[i]);
-  }
-  return p;
+  return with_points(std::move(p), [&](path::Point q) { return path::Point{q.x + dx, q.y + dy}; });
 }
 
 // A winding number as a 4-bit signed accumulator holds it: w mod 16 in [-8, 8).
