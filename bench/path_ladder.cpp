@@ -233,10 +233,17 @@ struct SceneResult {
   std::string curved_exact; // the exact rung on the curved outline
   std::uint64_t oracle_mismatch = 0;
   SampleRow samples;
+  // The curved outlines' 8-bit alpha (cover_area_alpha, PATH.AREA.FAST with the exact methods
+  // behind it) against FreeType's gray raster on the same curved outlines, alternating; the rows
+  // the fast cells decided of all rows; pixels whose alpha differs from FreeType's by more than 1.
+  double curved_alpha_seconds = 0, curved_gray_seconds = 0;
+  std::uint64_t curved_rows = 0, curved_rows_fast = 0, curved_alpha_differ = 0;
 };
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SceneResult, name, note, items, pixels, segments, touched,
                                    conflation, rows_by_cells, rows_by_slabs, rows, curved_exact,
-                                   oracle_mismatch, samples)
+                                   oracle_mismatch, samples, curved_alpha_seconds,
+                                   curved_gray_seconds, curved_rows, curved_rows_fast,
+                                   curved_alpha_differ)
 
 // Calls f(a, b) for every segment of the lines-only path, closing lines included (raw).
 template <class F> void each_segment(const kp::Path& lines, F&& f) {
@@ -286,6 +293,40 @@ bool outline_meets_pixel(const kp::Path& lines, std::int32_t x, std::int32_t y) 
   return meets;
 }
 
+// The curved outlines' alpha against FreeType gray on the same curved outlines (alternating,
+// medians), the rows PATH.AREA.FAST decided, and the pixels more than one level apart.
+// rule: BENCH.PATH.FREETYPE
+void run_curved_alpha(Scene& sc, int repeats, SceneResult& res) {
+  std::vector<double> tk, tg;
+  std::vector<std::vector<std::uint8_t>> alpha(sc.s.items.size());
+  for (std::size_t i = 0; i < sc.s.items.size(); ++i)
+    alpha[i].resize(static_cast<std::size_t>(sc.s.items[i].width) *
+                    static_cast<std::size_t>(sc.s.items[i].height));
+  for (int rep = 0; rep < repeats; ++rep) {
+    auto t0 = Clock::now();
+    for (std::size_t i = 0; i < sc.s.items.size(); ++i)
+      kp::cover_area_alpha(sc.s.items[i].curved, sc.s.items[i].width, sc.s.items[i].height,
+                           alpha[i]);
+    tk.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+    t0 = Clock::now();
+    for (const FreeTypeGlyph& ft : sc.ft_curved)
+      (void)ft.raster_gray();
+    tg.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+  }
+  res.curved_alpha_seconds = median(tk);
+  res.curved_gray_seconds = median(tg);
+  for (std::size_t i = 0; i < sc.s.items.size(); ++i) {
+    const bp::PathItem& it = sc.s.items[i];
+    kd::AreaRows by;
+    kd::cover_alpha_by(it.curved, it.width, it.height, kd::AreaMethod::kFast, alpha[i], &by);
+    res.curved_rows += static_cast<std::uint64_t>(it.height);
+    res.curved_rows_fast += by.fast;
+    const std::uint8_t* g = sc.ft_curved[i].raster_gray();
+    for (std::size_t k = 0; k < alpha[i].size(); ++k)
+      res.curved_alpha_differ += std::abs(int{alpha[i][k]} - int{g[k]}) > 1 ? 1u : 0u;
+  }
+}
+
 // The area rungs of one scene: times, errors, conflation pixels, into res.
 // rule: BENCH.PATH.METRICS
 void run_area(Scene& sc, int repeats, int min_slow_repeats, SceneResult& res) {
@@ -329,6 +370,7 @@ void run_area(Scene& sc, int repeats, int min_slow_repeats, SceneResult& res) {
       << " px^2 (PATH.AREA.CURVE)";
     res.curved_exact = o.str();
   }
+  run_curved_alpha(sc, repeats, res);
 
   // Timing: every repeat runs every rung once over every item, in turn (alternating).
   std::vector<std::vector<double>> times(rungs.size());
@@ -526,6 +568,23 @@ std::string markdown(const std::vector<SceneResult>& results, const std::string&
   }
   if (!areas)
     return o.str();
+  o << "\n## Curved outlines: exact alpha against FreeType's gray raster (same curved "
+       "outlines)\n\n";
+  o << "The kernel's cover_area_alpha (certified floating-point cells, PATH.AREA.FAST, the exact "
+       "methods behind them) and FreeType gray on the same curved outlines, alternating. Rows: "
+       "those the fast cells decided, of all rows. Differ: pixels more than one level apart "
+       "(FreeType flattens curves and accumulates signed areas).\n\n";
+  o << "| scene | exact alpha | FreeType gray | alpha / gray | rows fast | differ > 1 |\n"
+       "|---|---|---|---|---|---|\n";
+  for (const SceneResult& r : results) {
+    if (r.curved_rows == 0)
+      continue;
+    o << "| " << r.name << " | " << seconds_text(r.curved_alpha_seconds) << " | "
+      << seconds_text(r.curved_gray_seconds) << " | "
+      << fmt(r.curved_gray_seconds > 0 ? r.curved_alpha_seconds / r.curved_gray_seconds : 0)
+      << " | " << r.curved_rows_fast << " / " << r.curved_rows << " | " << r.curved_alpha_differ
+      << " |\n";
+  }
   o << "\n## Exact area against FreeType's gray raster (time ratio, same lines-only outlines)\n\n";
   o << "| scene | exact | exact-alpha8 | freetype-gray | exact / gray | exact-alpha8 / gray |\n"
        "|---|---|---|---|---|---|\n";

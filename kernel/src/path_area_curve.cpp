@@ -405,7 +405,9 @@ public:
     }
   }
 
-  void emit(const std::function<void(const AreaCoverage&)>& out) const;
+  // only (when not null): the rows to emit (1), the others skipped.
+  void emit(const std::function<void(const AreaCoverage&)>& out,
+            const std::vector<std::uint8_t>* only = nullptr) const;
   // The parts of pixel (x, y) by winding number, and its bound (PATH.AREA.CURVE).
   [[nodiscard]] PixelWindings windings(std::int32_t x, std::int32_t y) const;
 
@@ -682,7 +684,8 @@ void lens_sides(const std::vector<Slice>& slices, std::map<std::size_t, std::int
   }
 }
 
-void CurveAreas::emit(const std::function<void(const AreaCoverage&)>& out) const {
+void CurveAreas::emit(const std::function<void(const AreaCoverage&)>& out,
+                      const std::vector<std::uint8_t>* only) const {
   const std::int32_t w = w_, h = h_;
   const Polygon poly = polygon();
   RowAreas row(w);
@@ -690,6 +693,8 @@ void CurveAreas::emit(const std::function<void(const AreaCoverage&)>& out) const
   for (std::int32_t j = 0; j < h; ++j) {
     const std::map<std::int64_t, Rational>& extra = poly.bound[static_cast<std::size_t>(j)];
     if (poly.by_row[static_cast<std::size_t>(j)].empty() && extra.empty())
+      continue;
+    if (only != nullptr && (*only)[static_cast<std::size_t>(j)] == 0)
       continue;
     std::map<std::size_t, std::int64_t> lens_w;
     slabs(poly, j, [&](const std::vector<Slice>& slices, const Rational& hgt) {
@@ -810,8 +815,9 @@ PixelWindings pixel_windings(const Boundary& b, FillRule rule, std::int32_t x, s
 
 // rule: PATH.AREA.CURVE, PATH.AREA.EXACT
 void cover_area_curves(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,
-                       const std::function<void(const AreaCoverage&)>& emit) {
-  CurveAreas(b, rule, w, h).emit(emit);
+                       const std::function<void(const AreaCoverage&)>& emit,
+                       const std::vector<std::uint8_t>* only) {
+  CurveAreas(b, rule, w, h).emit(emit, only);
 }
 
 } // namespace rastrules::path::detail

@@ -112,9 +112,11 @@ void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
                                                              std::int64_t k);
 
 // Area coverage of a boundary with curves (PATH.AREA.CURVE; kernel/src/path_area_curve.cpp):
-// every pixel of [0, w) x [0, h) with a nonzero area or a nonzero error bound, row by row.
+// every pixel of [0, w) x [0, h) with a nonzero area or a nonzero error bound, row by row; only
+// (when not null) the rows marked 1 in it.
 void cover_area_curves(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,
-                       const std::function<void(const AreaCoverage&)>& emit);
+                       const std::function<void(const AreaCoverage&)>& emit,
+                       const std::vector<std::uint8_t>* only = nullptr);
 // The parts of pixel (x, y) by winding number (path::winding_areas), lines or curves.
 [[nodiscard]] PixelWindings pixel_windings(const Boundary& b, FillRule rule, std::int32_t x,
                                            std::int32_t y, std::int32_t w, std::int32_t h);
@@ -183,11 +185,19 @@ private:
 
 // How cover_area decides a pixel row: by cells where it can, else by slabs (PATH.AREA.CELLS),
 // or by slabs alone (PATH.AREA.EXACT's computation, for tests that compare the two).
-enum class AreaMethod { kCells, kSlabs };
-// Rows decided each way (rows no edge reaches into are neither).
+// kFast (cover_area_alpha alone) tries the certified floating-point cells of PATH.AREA.FAST first
+// and leaves the rows they do not decide to kCells.
+enum class AreaMethod { kCells, kSlabs, kFast };
+// Rows decided each way (rows no edge reaches into are neither; kFast counts every row it
+// decides, those without edges too).
 struct AreaRows {
-  std::size_t cells = 0, slabs = 0;
+  std::size_t cells = 0, slabs = 0, fast = 0;
 };
+// PATH.AREA.FAST: writes the alpha of every row it decides into out (w * h bytes) and marks
+// the others in undecided (1: left for the exact methods); false where it declines the whole
+// path (then every row is marked).
+bool alpha_fast(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,
+                std::span<std::uint8_t> out, std::vector<std::uint8_t>& undecided);
 // cover_area by the method given; rows, when not null, counts the rows.
 void cover_area_by(const Path& path, std::int32_t w, std::int32_t h, AreaMethod method,
                    const std::function<void(const AreaCoverage&)>& emit, AreaRows* rows);

@@ -4,9 +4,10 @@
 // the generators' paths (ties on the pixel grid, stars, nested and repeated contours, far
 // vertices), paths off the grid lines (where the cells decide nearly every row), many contours
 // crossing in a few pixels (where they must decline), and glyph-like rings. Each case prints
-// how many rows each method decided. The 8-bit alphas of both methods are those of the exact
+// how many rows each method decided. The 8-bit alphas of every method (the certified
+// floating-point cells of PATH.AREA.FAST too) are those of the exact
 // areas (PATH.AREA.ALPHA).
-// Implements (properties for): PATH.AREA.CELLS, PATH.AREA.EXACT, PATH.AREA.ALPHA
+// Implements (properties for): PATH.AREA.CELLS, PATH.AREA.EXACT, PATH.AREA.ALPHA, PATH.AREA.FAST
 
 #include <cstdint>
 #include <map>
@@ -89,10 +90,21 @@ void check_methods_agree(const pg::GPath& g, std::int32_t side) {
             kd::alpha_of(c.area);
       },
       nullptr);
-  for (const kd::AreaMethod m : {kd::AreaMethod::kCells, kd::AreaMethod::kSlabs}) {
+  for (const kd::AreaMethod m :
+       {kd::AreaMethod::kCells, kd::AreaMethod::kSlabs, kd::AreaMethod::kFast}) {
     std::vector<std::uint8_t> alpha(expected.size(), 7);
-    kd::cover_alpha_by(p, side, side, m, alpha, nullptr);
-    RC_ASSERT(alpha == expected);
+    kd::AreaRows rows;
+    kd::cover_alpha_by(p, side, side, m, alpha, &rows);
+    if (m == kd::AreaMethod::kFast) { // PATH.AREA.FAST: the rows it decides, and the others
+      RC_CLASSIFY(rows.fast == static_cast<std::size_t>(side), "fast: every row");
+      RC_CLASSIFY(rows.fast > 0 && rows.fast < static_cast<std::size_t>(side), "fast: some rows");
+      RC_CLASSIFY(rows.fast == 0, "fast: no row");
+    }
+    for (std::size_t k = 0; k < alpha.size(); ++k)
+      if (alpha[k] != expected[k])
+        RC_FAIL("alpha by method " + std::to_string(static_cast<int>(m)) + " at pixel (" +
+                std::to_string(k % stride) + ", " + std::to_string(k / stride) +
+                "): " + std::to_string(alpha[k]) + ", exact " + std::to_string(expected[k]));
   }
 }
 

@@ -7,8 +7,9 @@
 // bound; reversing every contour gives the same areas and bounds exactly, translating by whole
 // pixels too where the path stays in the target (else within the bounds); scaling by 2 splits each
 // pixel's area into its quarters' (within the bounds); a contour of curves drawn twice is empty
-// under even-odd. Every bound is at most 2^-32 px^2 and every area lies in [0, 1]. Implements
-// (properties for): PATH.AREA.CURVE, PATH.AREA.EXACT, PATH.FILL.RULE
+// under even-odd. Every bound is at most 2^-32 px^2 and every area lies in [0, 1]. The certified
+// floating-point cells (PATH.AREA.FAST) give each pixel the alpha of its area. Implements
+// (properties for): PATH.AREA.CURVE, PATH.AREA.EXACT, PATH.FILL.RULE, PATH.AREA.FAST
 
 #include <algorithm>
 #include <array>
@@ -23,6 +24,7 @@
 #include <rapidcheck/gtest.h>
 
 #include "path_checks.hpp"
+#include "path_detail.hpp"
 #include "path_gen.hpp"
 #include "path_kernel.hpp"
 #include "rastrules/oracle/path.hpp"
@@ -256,6 +258,35 @@ pg::GPath curve_path() {
   for (int i = 0; i < n; ++i)
     p.contours.push_back(*pg::curve_contour(kSide));
   return p;
+}
+
+// The certified floating-point cells (PATH.AREA.FAST) give every pixel the alpha of its area:
+// where cover_area's interval [A - E, A + E] decides floor(255 a + 1/2) they agree with it, and
+// elsewhere they give one of its two ends' alphas. Each case says how many rows they decided.
+// rule: PATH.AREA.FAST, PATH.AREA.ALPHA, PATH.AREA.CURVE
+RC_GTEST_PROP(PathCurveArea, FastCellsGiveTheAlphaOfTheArea, ()) {
+  const pg::GPath p = curve_path();
+  pc::show_path(p);
+  const kp::Path k = to_kernel(p);
+  namespace kd = rastrules::path::detail;
+  const auto stride = static_cast<std::size_t>(kSide);
+  std::vector<std::uint8_t> lo(stride * stride, 0), hi(stride * stride, 0);
+  for (const kp::AreaCoverage& a : kp::cover_area(k, kSide, kSide)) {
+    const std::size_t at = static_cast<std::size_t>(a.y) * stride + static_cast<std::size_t>(a.x);
+    lo[at] = kd::alpha_of(std::clamp<Rational>(a.area - a.error_bound, 0, 1));
+    hi[at] = kd::alpha_of(std::clamp<Rational>(a.area + a.error_bound, 0, 1));
+  }
+  std::vector<std::uint8_t> alpha(stride * stride, 7);
+  kd::AreaRows rows;
+  kd::cover_alpha_by(k, kSide, kSide, kd::AreaMethod::kFast, alpha, &rows);
+  RC_CLASSIFY(rows.fast == stride, "fast: every row");
+  RC_CLASSIFY(rows.fast > 0 && rows.fast < stride, "fast: some rows");
+  RC_CLASSIFY(rows.fast == 0, "fast: no row");
+  for (std::size_t at = 0; at < alpha.size(); ++at)
+    if (alpha[at] < lo[at] || alpha[at] > hi[at])
+      RC_FAIL("pixel (" + std::to_string(at % stride) + ", " + std::to_string(at / stride) +
+              "): fast alpha " + std::to_string(alpha[at]) + ", the area's " +
+              std::to_string(lo[at]) + " to " + std::to_string(hi[at]));
 }
 
 // rule: PATH.AREA.CURVE

@@ -4,7 +4,8 @@
 // and exact area coverage. Rules: spec/rules/path.md.
 // Implements: PATH.GEOMETRY, PATH.CONTOUR.CLOSE, PATH.WINDING, PATH.FILL.RULE,
 //             PATH.SAMPLE.TIE, PATH.COVER.SAMPLE, PATH.AREA.EXACT, PATH.DEGENERATE,
-//             PATH.CURVE.SAMPLE, PATH.AREA.CELLS, PATH.AREA.ALPHA, PATH.AREA.CURVE
+//             PATH.CURVE.SAMPLE, PATH.AREA.CELLS, PATH.AREA.ALPHA, PATH.AREA.CURVE,
+//             PATH.AREA.FAST
 // Needs, beyond the standard library, Boost.Multiprecision's headers (exact rational areas).
 
 #pragma once
@@ -123,8 +124,10 @@ struct PixelWindings {
 // Writes the 8-bit alpha of every pixel of [0, w) x [0, h) into alpha (row by row, w * h
 // bytes, else std::invalid_argument): floor(255 a + 1/2) of the exact area a of cover_area, so
 // a pixel listed by cover_area may get alpha 0 (a < 1/510). Builds no rational where the area
-// fits 128-bit fractions. Paths with curves: the alpha of cover_area's area (PATH.AREA.CURVE).
-// rule: PATH.AREA.ALPHA
+// fits 128-bit fractions. Paths with curves: certified floating-point cells decide the alpha of
+// the exact area where they can (PATH.AREA.FAST), the rows they leave get the alpha of
+// cover_area's area (PATH.AREA.CURVE).
+// rule: PATH.AREA.ALPHA, PATH.AREA.FAST
 void cover_area_alpha(const Path& path, std::int32_t w, std::int32_t h,
                       std::span<std::uint8_t> alpha);
 
