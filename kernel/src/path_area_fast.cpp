@@ -246,9 +246,32 @@ struct End {
   int dw = 0;
 };
 
+// A segment of the path by contour and segment (walk's order).
+struct Ref {
+  std::size_t contour, segment;
+  bool curve;
+  std::size_t index;
+};
+
 class FastAlpha {
 public:
-  FastAlpha(FillRule rule, std::int32_t w, std::int32_t h) : rule_(rule), w_(w), h_(h) {}
+  // Starts a path: the buffers keep their room from the last one (one workspace a thread).
+  void reset(FillRule rule, std::int32_t w, std::int32_t h) {
+    rule_ = rule;
+    w_ = w;
+    h_ = h;
+    shapes_.clear();
+    pieces_.clear();
+    subs_.clear();
+    sorted_.clear();
+    refs_.clear();
+    contour_first_.clear();
+    row_at_ = 0;
+    seq_ = 0;
+    last_row_ = last_idx_ = first_row_ = first_idx_ = -1;
+    last_seq_ = first_seq_ = 0;
+    q_shape_ = static_cast<std::uint32_t>(-1);
+  }
 
   // Builds the pieces and walks them; false where the walk is in doubt (the exact methods then
   // take every row).
@@ -270,8 +293,8 @@ private:
                           E above, std::uint8_t& alpha);
   [[nodiscard]] bool apart(const Sub& a, const Sub& b) const;
 
-  FillRule rule_;
-  std::int32_t w_, h_;
+  FillRule rule_ = FillRule::kNonZero;
+  std::int32_t w_ = 0, h_ = 0;
   std::vector<Shape> shapes_;
   std::vector<Piece> pieces_;
   std::vector<Sub> subs_, sorted_;
@@ -280,10 +303,16 @@ private:
   std::vector<std::int32_t> where_;
   std::vector<std::uint8_t> has_prev_, seen_;
   std::vector<End> ends_;
+  std::vector<Ref> refs_;
+  std::vector<std::size_t> contour_first_;
+  std::vector<E> cuts_;
   std::uint64_t seq_ = 0;
   // The last sub-arc emitted (row, index) with no gap after it, for linking.
   std::int32_t last_row_ = -1, last_idx_ = -1;
   std::uint64_t last_seq_ = 0;
+  // The last Q(t) computed (emit): shape, t, value.
+  std::uint32_t q_shape_ = static_cast<std::uint32_t>(-1);
+  E q_t_, q_;
   // The current contour's first sub-arc, when it was emitted with no gap before it.
   std::uint64_t first_seq_ = 0;
   std::int32_t first_row_ = -1, first_idx_ = -1;
@@ -319,10 +348,25 @@ bool FastAlpha::root(const Piece& p, bool in_x, double target, E& t) const {
   // An approximate root by safeguarded Newton steps in plain doubles, then a bracket around it
   // whose end signs are certified (the ends of the piece where nothing tighter is).
   double lo = p.t0.v, hi = p.t1.v;
+  double x = 0;
+  bool found = false;
+  if (f.n == 2 && f.c[2] != 0) { // a quadratic: the root in closed form (stable form)
+    const double qa = f.c[2], qb = f.c[1], qc = -off;
+    const double disc = qb * qb - 4 * qa * qc;
+    if (disc >= 0) {
+      const double q = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
+      for (const double r : {q / qa, q != 0 ? qc / q : -1.0})
+        if (r >= lo && r <= hi) {
+          x = r;
+          found = true;
+        }
+    }
+  }
   const double flo = f.at_d(lo) - off, fhi = f.at_d(hi) - off;
-  double x = flo != fhi ? lo + (hi - lo) * (-flo / (fhi - flo)) : 0.5 * (lo + hi);
+  if (!found)
+    x = flo != fhi ? lo + (hi - lo) * (-flo / (fhi - flo)) : 0.5 * (lo + hi);
   double a = lo, b = hi; // the plain bracket
-  for (int it = 0; it < 60; ++it) {
+  for (int it = 0; it < (found ? 0 : 60); ++it) {
     if (!(x > a && x < b))
       x = 0.5 * (a + b);
     const double fx = f.at_d(x) - off;
@@ -375,7 +419,8 @@ bool FastAlpha::root(const Piece& p, bool in_x, double target, E& t) const {
 // monotone pieces; false where a split is in doubt.
 bool FastAlpha::add_shape_pieces(std::uint32_t si, int degree, std::size_t contour) {
   const Shape& s = shapes_[si];
-  std::vector<E> cuts{exact(0.0)};
+  std::vector<E>& cuts = cuts_;
+  cuts.assign(1, exact(0.0));
   const auto derivative_roots = [&](const Poly& f) -> bool {
     // f' = a t^2 + b t + c (a = 0 for quadratics).
     const double a = degree == 3 ? 3 * f.c[3] : 0.0, b = 2 * f.c[2], c = f.c[1];
@@ -512,8 +557,12 @@ void FastAlpha::emit(std::int32_t row, std::int32_t col, std::uint32_t pi, E ta,
       s.area = mul(scale(add(sub(a.x, exact(left)), sub(b.x, exact(left))), -1), s.cover);
     } else {
       const Shape& sh = shapes_[p.shape];
-      s.area = add(sub(sh.q_at(tb), sh.q_at(ta)),
-                   mul(exact(static_cast<double>(sh.x0) - left), s.cover));
+      // Q at ta is usually Q at the last sub-arc's tb (the walk goes on from there).
+      const E qa = (q_shape_ == p.shape && q_t_.v == ta.v && q_t_.e == ta.e) ? q_ : sh.q_at(ta);
+      q_ = sh.q_at(tb);
+      q_t_ = tb;
+      q_shape_ = p.shape;
+      s.area = add(sub(q_, qa), mul(exact(static_cast<double>(sh.x0) - left), s.cover));
     }
   }
   std::vector<Sub>& r = subs_;
@@ -717,13 +766,7 @@ bool FastAlpha::walk_piece(std::uint32_t pi) {
 
 bool FastAlpha::walk(const Boundary& b) {
   // Shapes in contour order: lines and curves merged by (contour, segment).
-  struct Ref {
-    std::size_t contour, segment;
-    bool curve;
-    std::size_t index;
-  };
-  std::vector<Ref> refs;
-  refs.reserve(b.lines.size() + b.curves.size());
+  std::vector<Ref>& refs = refs_;
   for (std::size_t i = 0; i < b.lines.size(); ++i)
     refs.push_back(Ref{b.lines[i].contour, b.lines[i].segment, false, i});
   for (std::size_t i = 0; i < b.curves.size(); ++i)
@@ -733,7 +776,7 @@ bool FastAlpha::walk(const Boundary& b) {
   });
   shapes_.reserve(refs.size());
   // Contours: the first piece of each, to link a contour's last sub-arc to its first.
-  std::vector<std::size_t> contour_first;
+  std::vector<std::size_t>& contour_first = contour_first_;
   std::size_t current = static_cast<std::size_t>(-1);
   for (const Ref& r : refs) {
     Shape s;
@@ -1320,7 +1363,8 @@ bool FastAlpha::row(std::int32_t j, std::uint8_t* out) {
 bool alpha_fast(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,
                 std::span<std::uint8_t> out, std::vector<std::uint8_t>& undecided) {
   undecided.assign(static_cast<std::size_t>(h), 1);
-  FastAlpha f(rule, w, h);
+  thread_local FastAlpha f;
+  f.reset(rule, w, h);
   if (!f.walk(b))
     return false;
   f.sort();
