@@ -20,6 +20,7 @@
 
 #include "path_detail.hpp"
 #include "rastrules/fixed.hpp"
+#include "rastrules/formula/edge.hpp"
 #include "rastrules/path.hpp"
 
 namespace rastrules::path::detail {
@@ -116,6 +117,16 @@ int sign_of(E a) {
   return (a.v == 0 && a.e == 0) ? 0 : 2;
 }
 
+// The alpha of a pixel with one winding number, v (exact in exact arithmetic: the integral of w
+// over the pixel over its area); false where v's bound does not name one integer.
+bool whole_winding(E v, FillRule rule, std::uint8_t& alpha) {
+  const double r = std::nearbyint(v.v);
+  if (!(std::abs(v.v - r) + v.e < 0.5))
+    return false;
+  alpha = fill_holds(rule, static_cast<std::int64_t>(r)) ? 255 : 0;
+  return true;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Pieces of the boundary: monotone in x and in y, as a polynomial of degree n in t (power basis,
 // relative to the reference point (x0, y0), coefficients exact integers of raw units) on
@@ -205,10 +216,9 @@ struct Shape {
   }
 };
 
-// A point of the boundary, raw, with bounds; exact where it is a vertex of the path.
+// A point of the boundary, raw, with bounds.
 struct EPoint {
   E x, y;
-  bool vertex = false;
 };
 
 struct Piece {
@@ -217,7 +227,6 @@ struct Piece {
   EPoint p0, p1;
   int sx = 0, sy = 0; // signs of dx/dt and dy/dt on (t0, t1)
   bool line = false;  // shape is a line of the path (exact integer ends)
-  std::size_t contour = 0;
 };
 
 // Which side of its cell a point of a sub-arc lies on (none: inside).
@@ -282,7 +291,7 @@ public:
   bool row(std::int32_t j, std::uint8_t* out);
 
 private:
-  bool add_shape_pieces(std::uint32_t s, int degree, std::size_t contour);
+  bool add_shape_pieces(std::uint32_t s, int degree);
   bool walk_piece(std::uint32_t pi);
   void emit(std::int32_t row, std::int32_t col, std::uint32_t pi, E ta, E tb, const EPoint& a,
             const EPoint& b, Side sa, Side sb, bool interior);
@@ -322,13 +331,13 @@ private:
 
 EPoint FastAlpha::point_at_exact(const Shape& s, E t) const {
   return EPoint{add(exact(static_cast<double>(s.x0)), s.x.at_exact(t)),
-                add(exact(static_cast<double>(s.y0)), s.y.at_exact(t)), false};
+                add(exact(static_cast<double>(s.y0)), s.y.at_exact(t))};
 }
 
 EPoint FastAlpha::point_at(const Piece& p, E t) const {
   const Shape& s = shapes_[p.shape];
   return EPoint{add(exact(static_cast<double>(s.x0)), s.x.at(t)),
-                add(exact(static_cast<double>(s.y0)), s.y.at(t)), false};
+                add(exact(static_cast<double>(s.y0)), s.y.at(t))};
 }
 
 // The parameter t in (t0, t1) of piece p where x(t) (in_x) or y(t) equals target, which the
@@ -362,9 +371,10 @@ bool FastAlpha::root(const Piece& p, bool in_x, double target, E& t) const {
         }
     }
   }
-  const double flo = f.at_d(lo) - off, fhi = f.at_d(hi) - off;
-  if (!found)
+  if (!found) { // a start for Newton's steps: the chord's root
+    const double flo = f.at_d(lo) - off, fhi = f.at_d(hi) - off;
     x = flo != fhi ? lo + (hi - lo) * (-flo / (fhi - flo)) : 0.5 * (lo + hi);
+  }
   double a = lo, b = hi; // the plain bracket
   for (int it = 0; it < (found ? 0 : 60); ++it) {
     if (!(x > a && x < b))
@@ -417,7 +427,7 @@ bool FastAlpha::root(const Piece& p, bool in_x, double target, E& t) const {
 
 // Splits shape s (a curve of the given degree) where x' or y' vanish inside (0, 1) and adds the
 // monotone pieces; false where a split is in doubt.
-bool FastAlpha::add_shape_pieces(std::uint32_t si, int degree, std::size_t contour) {
+bool FastAlpha::add_shape_pieces(std::uint32_t si, int degree) {
   const Shape& s = shapes_[si];
   std::vector<E>& cuts = cuts_;
   cuts.assign(1, exact(0.0));
@@ -483,12 +493,11 @@ bool FastAlpha::add_shape_pieces(std::uint32_t si, int degree, std::size_t conto
     p.shape = si;
     p.t0 = ta;
     p.t1 = tb;
-    p.contour = contour;
-    p.p0 = ta.e == 0 && ta.v == 0 ? EPoint{exact(double(s.x0)), exact(double(s.y0)), true}
+    p.p0 = ta.e == 0 && ta.v == 0 ? EPoint{exact(double(s.x0)), exact(double(s.y0))}
                                   : point_at_exact(s, ta);
     if (tb.e == 0 && tb.v == 1) { // the last control point: integer sums, exact
       p.p1 = EPoint{exact(static_cast<double>(s.x0) + s.x.at_d(1.0)),
-                    exact(static_cast<double>(s.y0) + s.y.at_d(1.0)), true};
+                    exact(static_cast<double>(s.y0) + s.y.at_d(1.0))};
     } else {
       p.p1 = point_at_exact(s, tb);
     }
@@ -532,8 +541,8 @@ void FastAlpha::emit(std::int32_t row, std::int32_t col, std::uint32_t pi, E ta,
   s.b = b;
   s.sa = sa;
   s.sb = sb;
+  const double right_line = static_cast<double>(std::int64_t{w_} * kW);
   if (col >= w_) { // right of the target: only its left line x = w counts as a side
-    const double right_line = static_cast<double>(std::int64_t{w_} * kW);
     const auto fix = [&](Side& side, const EPoint& pt) {
       if ((side == kLeft || side == kRight) && !(pt.x.e == 0 && pt.x.v == right_line))
         side = kNone; // a line inside the region: the sub-arc beside it shares the point
@@ -546,8 +555,7 @@ void FastAlpha::emit(std::int32_t row, std::int32_t col, std::uint32_t pi, E ta,
   s.interior = interior && col < w_;
   // Along a column line; right of the target only the line x = w counts (along a line inside
   // that region its ends are shared like any other).
-  s.along = !interior &&
-            (col < w_ || (a.x.e == 0 && a.x.v == static_cast<double>(std::int64_t{w_} * kW)));
+  s.along = !interior && (col < w_ || (a.x.e == 0 && a.x.v == right_line));
   s.cover = sub(b.y, a.y);
   s.seq = seq;
   if (s.interior) {
@@ -835,13 +843,12 @@ bool FastAlpha::walk(const Boundary& b) {
       p.t0 = exact(0);
       p.t1 = exact(1);
       p.line = true;
-      p.contour = r.contour;
-      p.p0 = EPoint{exact(static_cast<double>(cp[0].x)), exact(static_cast<double>(cp[0].y)), true};
-      p.p1 = EPoint{exact(static_cast<double>(cp[1].x)), exact(static_cast<double>(cp[1].y)), true};
+      p.p0 = EPoint{exact(static_cast<double>(cp[0].x)), exact(static_cast<double>(cp[0].y))};
+      p.p1 = EPoint{exact(static_cast<double>(cp[1].x)), exact(static_cast<double>(cp[1].y))};
       p.sx = s.x.c[1] > 0 ? 1 : (s.x.c[1] < 0 ? -1 : 0);
       p.sy = s.y.c[1] > 0 ? 1 : (s.y.c[1] < 0 ? -1 : 0);
       pieces_.push_back(p);
-    } else if (!add_shape_pieces(si, degree, r.contour)) {
+    } else if (!add_shape_pieces(si, degree)) {
       return false;
     }
   }
@@ -992,7 +999,8 @@ bool curve_off_line(const Shape& c, bool at_end, const Shape& line, std::int64_t
 }
 
 // Whether curve a (ending at J) and curve b (starting at J) meet only at J: a line through J
-// (either one's tangent there, or their sum) with a strictly on one side and b on the other.
+// (either one's tangent there, their sum or their difference) with a strictly on one side and b
+// on the other.
 bool curves_apart(const Shape& a, const Shape& b, std::int64_t a_from, std::int64_t b_to) {
   const auto [ax, ay] = tangent_of(a, true);
   const auto [bx, by] = tangent_of(b, false);
@@ -1031,9 +1039,8 @@ bool FastAlpha::apart(const Sub& a, const Sub& b) const {
     const std::int64_t bx0 = t.x0, by0 = t.y0, bx1 = t.x0 + static_cast<std::int64_t>(t.x.c[1]),
                        by1 = t.y0 + static_cast<std::int64_t>(t.y.c[1]);
     const auto orient = [](std::int64_t px, std::int64_t py, std::int64_t qx, std::int64_t qy,
-                           std::int64_t rx, std::int64_t ry) {
-      const I128 v =
-          static_cast<I128>(qx - px) * (ry - py) - static_cast<I128>(qy - py) * (rx - px);
+                           std::int64_t rx, std::int64_t ry) { // |edge value| <= 2^49 in range
+      const std::int64_t v = formula::edge_value(px, py, qx, qy, rx, ry);
       return v > 0 ? 1 : (v < 0 ? -1 : 0);
     };
     const int o1 = orient(ax0, ay0, ax1, ay1, bx0, by0), o2 = orient(ax0, ay0, ax1, ay1, bx1, by1);
@@ -1054,7 +1061,7 @@ bool FastAlpha::apart(const Sub& a, const Sub& b) const {
     if (x.p->line) {
       const E half = exact(0.5);
       return std::pair{t, EPoint{add(x.a.x, mul(half, sub(x.b.x, x.a.x))),
-                                 add(x.a.y, mul(half, sub(x.b.y, x.a.y))), false}};
+                                 add(x.a.y, mul(half, sub(x.b.y, x.a.y)))}};
     }
     return std::pair{t, point_at(*x.p, exact(t))};
   };
@@ -1234,33 +1241,25 @@ bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std
         return false; // three or more winding numbers (or an inconsistent walk)
     }
   }
-  // Windings {m, m + 1} (or one): the area from I / A.
+  if (interior == 0)
+    return whole_winding(v, rule_, alpha);
+  // Windings {m, m + 1}: the area from I / A.
   const double m = std::floor(v.v);
   E cov;
   const auto fill = [&](double k) {
     return fill_holds(rule_, static_cast<std::int64_t>(k)) ? 1.0 : 0.0;
   };
-  if (interior == 0) {
-    const double r = std::nearbyint(v.v);
-    if (!(std::abs(v.v - r) + v.e < 0.5))
-      return false;
-    cov = exact(fill(r));
-  } else if (v.v - 2 * v.e > m && v.v + 2 * v.e < m + 1) {
+  if (v.v - 2 * v.e > m && v.v + 2 * v.e < m + 1) {
     const double f0 = fill(m), f1 = fill(m + 1);
     cov = f0 == f1 ? exact(f0) : add(exact(f0), mul(exact(f1 - f0), sub(v, exact(m))));
   } else {
     const double r = std::nearbyint(v.v);
     cov = E{fill(r), (std::abs(v.v - r) + v.e) * kUp};
   }
-  // alpha = floor((510 c + 1) / 2) = (floor(510 c) + 1) >> 1.
+  // alpha = floor((510 c + 1) / 2) = (floor(510 c) + 1) >> 1, the same at both ends of 510 c's
+  // interval (exactly 510 c where its bound is 0).
   const E y = mul(exact(510), cov);
-  if (y.e == 0) {
-    const double fl = std::floor(y.v);
-    alpha = static_cast<std::uint8_t>(
-        std::clamp((static_cast<std::int64_t>(fl) + 1) >> 1, std::int64_t{0}, std::int64_t{255}));
-    return true;
-  }
-  const double pad = 2 * y.e + 0x1p-40;
+  const double pad = y.e == 0 ? 0.0 : 2 * y.e + 0x1p-40;
   const auto a_lo = (static_cast<std::int64_t>(std::floor(y.v - pad)) + 1) >> 1;
   const auto a_hi = (static_cast<std::int64_t>(std::floor(y.v + pad)) + 1) >> 1;
   if (a_lo != a_hi)
@@ -1323,13 +1322,8 @@ bool FastAlpha::row(std::int32_t j, std::uint8_t* out) {
     fold(sorted[--end]);
   E right = add(base, line);
   bool decided = true;
-  const auto constant = [&](std::int32_t col) -> bool {
-    const E v = scale(right, -kSubpixelBits); // the winding number, exact in exact arithmetic
-    const double r = std::nearbyint(v.v);
-    if (!(std::abs(v.v - r) + v.e < 0.5))
-      return false;
-    out[col] = fill_holds(rule_, static_cast<std::int64_t>(r)) ? 255 : 0;
-    return true;
+  const auto constant = [&](std::int32_t col) { // the cover right of it: kW times w
+    return whole_winding(scale(right, -kSubpixelBits), rule_, out[col]);
   };
   while (c >= 0) {
     if (end > first && sorted[end - 1].col == c) {
