@@ -18,6 +18,8 @@
 #include <thread>
 #include <vector>
 
+#include "rastrules/io/interrupt.hpp"
+#include "rastrules/io/scene_json.hpp"
 #include "support.hpp"
 
 extern char** environ;
@@ -130,6 +132,32 @@ TEST(CliInterrupt, A2dCampaignStopsBetweenCasesWritesItsReportAndExits130) {
       << read_file(dir / "stdout");
   EXPECT_NE(read_file(dir / "out" / "report.json").find("\"interrupted\": true"),
             std::string::npos);
+}
+
+// rule: SCENE.INPUT.ERRORS
+// A scene file is mapped (open_scene_file); another process truncating it while it is read
+// raises SIGBUS, which the command line's handler turns into a one-line error and exit 2
+// (bad input), removing the temporaries as an interrupt does.
+TEST(CliInterruptDeathTest, AMappedSceneThatShrinksIsBadInputNotACrash) {
+  const TempDir dir;
+  const auto scene = dir.write("s.json", std::string(1 << 16, ' ') + "{}");
+  const auto temporary = dir.write(".rastrules-out", "partial");
+  EXPECT_EXIT(
+      {
+        io::handle_interrupts(io::OnInterrupt::kExit);
+        (void)io::register_temporary(temporary.string());
+        auto text = io::open_scene_file(scene.string());
+        auto* t = std::get_if<io::SceneText>(&text);
+        if (t == nullptr || !t->mapped())
+          std::_Exit(3);
+        std::filesystem::resize_file(scene, 0);
+        volatile char last = t->view().back(); // the page is gone: SIGBUS
+        (void)last;
+        std::_Exit(4);
+      },
+      ::testing::ExitedWithCode(io::kExitTruncatedInput),
+      "rastrules: error: the scene file shrank while it was being read");
+  EXPECT_FALSE(std::filesystem::exists(temporary));
 }
 
 } // namespace

@@ -8,12 +8,15 @@
 #include <limits>
 #include <string>
 #include <variant>
+
+#include <unistd.h>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "rastrules/io/fragment_json.hpp"
 #include "rastrules/io/scene_json.hpp"
+#include "support.hpp"
 
 namespace {
 
@@ -270,6 +273,44 @@ namespace {
 // rule: SCENE.INPUT.FAST_READER, SCENE.NUMBER.FLOAT32
 // The fast path reads its one form to the general reader's scene, numbers rounded alike, and
 // declines everything else, whose result (or error) is then the general reader's.
+// rule: SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
+// open_scene_file maps a regular file and otherwise reads as read_scene_file does: the same
+// text, the same errors (a missing file, a directory, the size limit), an empty file empty.
+TEST(SceneFile, MappedTextIsTheFileAndErrorsAreReadSceneFilesOwn) {
+  namespace io = rastrules::io;
+  using rastrules::io::kMaxSceneBytes;
+  const rastrules::test::TempDir dir;
+  const std::string body = R"({"target": {"width": 4, "height": 4}, "primitives": []})";
+  const auto file = dir.write("s.json", body);
+  auto mapped = io::open_scene_file(file.string());
+  ASSERT_TRUE(std::holds_alternative<io::SceneText>(mapped));
+  EXPECT_TRUE(std::get<io::SceneText>(mapped).mapped());
+  EXPECT_EQ(std::get<io::SceneText>(mapped).view(), body);
+  io::SceneText moved = std::move(std::get<io::SceneText>(mapped));
+  EXPECT_EQ(moved.view(), body);
+
+  const auto empty = dir.write("empty.json", "");
+  auto e = io::open_scene_file(empty.string());
+  ASSERT_TRUE(std::holds_alternative<io::SceneText>(e));
+  EXPECT_TRUE(std::get<io::SceneText>(e).view().empty());
+
+  const auto big = dir / "big.json";
+  {
+    std::FILE* f = std::fopen(big.c_str(), "wb");
+    ASSERT_NE(f, nullptr);
+    ASSERT_EQ(::ftruncate(::fileno(f), static_cast<off_t>(kMaxSceneBytes + 1)), 0);
+    std::fclose(f);
+  }
+  for (const std::string& path :
+       {(dir / "missing.json").string(), dir.path().string(), big.string()}) {
+    auto a = io::open_scene_file(path);
+    auto b = io::read_scene_file(path);
+    ASSERT_TRUE(std::holds_alternative<SceneError>(a)) << path;
+    ASSERT_TRUE(std::holds_alternative<SceneError>(b)) << path;
+    EXPECT_EQ(std::get<SceneError>(a).what(), std::get<SceneError>(b).what());
+  }
+}
+
 TEST(FastSceneReader, ReadsItsFormAsTheGeneralReaderAndDeclinesTheRest) {
   const auto tri = [](const std::string& v) {
     return R"({"target": {"width": 8, "height": 8}, "primitives": [{"type": "triangle", "v": )" +

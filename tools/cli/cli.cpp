@@ -160,20 +160,20 @@ int usage_error(std::string_view reason) {
 
 // rule: SCENE.INPUT.ERRORS
 std::optional<LoadedScene> load_scene(const std::string& path) {
-  const std::optional<std::string> text = read_scene_text(path);
+  const std::optional<io::SceneText> text = read_scene_text(path);
   if (!text)
     return std::nullopt;
-  return load_scene_text(*text, path);
+  return load_scene_text(text->view(), path);
 }
 
 // rule: SCENE.INPUT.ERRORS
-std::optional<std::string> read_scene_text(const std::string& path) {
-  auto text = io::read_scene_file(path);
+std::optional<io::SceneText> read_scene_text(const std::string& path) {
+  auto text = io::open_scene_file(path);
   if (auto* err = std::get_if<SceneError>(&text)) {
     error(err->what());
     return std::nullopt;
   }
-  return std::move(std::get<std::string>(text));
+  return std::move(std::get<io::SceneText>(text));
 }
 
 // rule: SCENE.INPUT.ERRORS

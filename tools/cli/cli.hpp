@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "rastrules/io/output_file.hpp"
+#include "rastrules/io/scene_json.hpp"
 #include "rastrules/pipeline.hpp"
 #include "rastrules/scene.hpp"
 
@@ -68,7 +69,7 @@ std::optional<LoadedScene> load_scene(const std::string& path);
 // the file), then the scene read from that text (errors printed as load_scene(path) prints
 // them, a parse error naming the file `path`).
 // rule: SCENE.INPUT.ERRORS
-std::optional<std::string> read_scene_text(const std::string& path);
+std::optional<io::SceneText> read_scene_text(const std::string& path);
 std::optional<LoadedScene> load_scene_text(std::string_view text, const std::string& path);
 
 // What load_scene() does after reading: a scene with pipeline state validated

@@ -900,20 +900,21 @@ int run_render(const Args& args) {
   RenderRequest rq;
   if (const auto stop = parse_render_args(args, rq))
     return *stop;
-  const std::optional<std::string> text = read_scene_text(rq.scene_path);
-  if (!text)
+  const std::optional<io::SceneText> text_file = read_scene_text(rq.scene_path);
+  if (!text_file)
     return kExitBadInput;
+  const std::string_view text = text_file->view();
   // rule: SCENE.OUTPUT.COUNT, SCENE.INPUT.FAST_READER
   // A large scene of triangles alone is counted from its coordinates, never prepared (the same
   // counts; the scene is loaded as any other wherever that path declines).
   if (rq.count_path) {
     if (const std::optional<FragmentCounts> counts =
-            fast_form_counts(*text, rq.options, rq.max_work))
+            fast_form_counts(text, rq.options, rq.max_work))
       return write_counts(*counts, rq);
-  } else if (const std::optional<int> done = render_fast_form_list(*text, rq)) {
+  } else if (const std::optional<int> done = render_fast_form_list(text, rq)) {
     return *done;
   }
-  const auto loaded = load_scene_text(*text, rq.scene_path);
+  const auto loaded = load_scene_text(text, rq.scene_path);
   if (!loaded)
     return kExitBadInput;
   if (rq.count_path)

@@ -44,6 +44,21 @@ extern "C" void on_interrupt(int) {
   ::_exit(kExitInterrupted);
 }
 
+// SIGBUS: a mapped scene file (open_scene_file) truncated by another process while it is read.
+// Nothing can go on after it: the temporaries are removed and the process exits as on bad input.
+extern "C" void on_bus_error(int) {
+  if (const pid_t group = g_driver_group.load(); group > 0)
+    ::kill(-group, SIGKILL);
+  for (Slot& s : g_slots) {
+    if (s.state.load() == 2)
+      ::unlink(s.path.data());
+  }
+  static constexpr char kMessage[] =
+      "rastrules: error: the scene file shrank while it was being read\n";
+  [[maybe_unused]] const ssize_t w = ::write(2, kMessage, sizeof kMessage - 1);
+  ::_exit(kExitTruncatedInput);
+}
+
 } // namespace
 
 void handle_interrupts(OnInterrupt mode) {
@@ -56,6 +71,10 @@ void handle_interrupts(OnInterrupt mode) {
   sa.sa_flags = 0; // no SA_RESTART: a blocking call returns with EINTR and the loop checks
   ::sigaction(SIGINT, &sa, nullptr);
   ::sigaction(SIGTERM, &sa, nullptr);
+  struct sigaction bus {};
+  bus.sa_handler = on_bus_error;
+  sigemptyset(&bus.sa_mask);
+  ::sigaction(SIGBUS, &bus, nullptr);
 }
 
 bool interrupted() {

@@ -34,7 +34,10 @@
 #include <utility>
 #include <vector>
 
+#include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "rastrules/fixed.hpp"
 #include "rastrules/io/json_stream.hpp"
@@ -1494,6 +1497,53 @@ std::variant<std::string, SceneError> read_scene_file(const std::string& path) {
   if (failed)
     return SceneError{name, std::string("cannot read: ") + std::strerror(err)};
   return text;
+}
+
+SceneText::SceneText(SceneText&& other) noexcept
+    : owned_(std::move(other.owned_)), map_(std::exchange(other.map_, nullptr)),
+      size_(std::exchange(other.size_, 0)) {}
+
+SceneText& SceneText::operator=(SceneText&& other) noexcept {
+  if (this != &other) {
+    SceneText old(std::move(*this));
+    owned_ = std::move(other.owned_);
+    map_ = std::exchange(other.map_, nullptr);
+    size_ = std::exchange(other.size_, 0);
+  }
+  return *this;
+}
+
+SceneText::~SceneText() {
+  if (map_ != nullptr)
+    ::munmap(const_cast<char*>(map_), size_);
+}
+
+// rule: SCENE.INPUT.ERRORS, SCENE.INPUT.LIMITS
+std::variant<SceneText, SceneError> open_scene_file(const std::string& path) {
+  if (path != "-") {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd >= 0) {
+      struct stat st {};
+      const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 &&
+                           static_cast<std::uint64_t>(st.st_size) <= kMaxSceneBytes;
+      void* map = regular ? ::mmap(nullptr, static_cast<std::size_t>(st.st_size), PROT_READ,
+                                   MAP_PRIVATE | MAP_POPULATE, fd, 0)
+                          : MAP_FAILED;
+      ::close(fd);
+      if (map != MAP_FAILED) {
+        SceneText text;
+        text.map_ = static_cast<const char*>(map);
+        text.size_ = static_cast<std::size_t>(st.st_size);
+        return text;
+      }
+    }
+  }
+  // Standard input, pipes, empty or oversized files, and every error (named by
+  // read_scene_file).
+  auto text = read_scene_file(path);
+  if (auto* err = std::get_if<SceneError>(&text))
+    return *err;
+  return SceneText(std::get<std::string>(std::move(text)));
 }
 
 namespace {

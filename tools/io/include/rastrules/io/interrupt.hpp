@@ -22,8 +22,13 @@ enum class OnInterrupt {
   kRecord, // kill the driver's group, then let interrupted() say so
 };
 
+// The exit status when a mapped scene file shrinks while it is read (SIGBUS): bad input.
+inline constexpr int kExitTruncatedInput = 2;
+
 // Installs the handler for SIGINT and SIGTERM (once per process; a second call changes the
-// mode only).
+// mode only), and one for SIGBUS, which a mapped scene file (open_scene_file) raises when
+// another process truncates it: temporaries removed, the driver's group killed, a one-line
+// error and _exit(kExitTruncatedInput).
 void handle_interrupts(OnInterrupt mode);
 
 // Whether SIGINT or SIGTERM arrived since handle_interrupts().
