@@ -59,7 +59,7 @@ inline std::uint32_t cover_rows(const Lanes& g, int t, std::uint32_t* hit, std::
       const __m256i in = _mm256_cmpgt_epi32(_mm256_or_si256(_mm256_or_si256(l0, l1), l2), minus1);
       acc = _mm256_sub_epi32(acc, in);
       if constexpr (kMode == kHits) {
-        add_hits(h + 8 * c, in);
+        add_hits(h + 8 * c, in, true);
       }
       add_run(8 * c, in);
       l0 = _mm256_add_epi32(l0, step8[0]);
@@ -72,7 +72,7 @@ inline std::uint32_t cover_rows(const Lanes& g, int t, std::uint32_t* hit, std::
       acc = _mm256_sub_epi32(acc, in);
       if constexpr (kMode == kHits) {
         // pixel x0 + 8 full lies inside the row: x0 + cols - 1 < width
-        add_hits(h + 8 * full, in);
+        add_hits(h + 8 * full, in, false);
       }
       add_run(8 * full, in);
     }

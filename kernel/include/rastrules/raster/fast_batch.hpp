@@ -52,7 +52,9 @@ struct FastBatchResult {
 // pixels walk_triangle(setup_triangle(snapped vertices, state), width, height) emits.
 //   per_triangle: empty, or one entry per triangle, set to that triangle's count;
 //   hits: empty, or width * height counters (row-major), each increased by the number of
-//         triangles covering its pixel (overdraw; a watertight mesh leaves 0 or 1).
+//         triangles covering its pixel (overdraw; a watertight mesh leaves 0 or 1). They
+//         are read and written back in blocks (adding zero to pixels a triangle does not
+//         cover), so no other thread may write them while the batch runs.
 // isa selects the lanes (scalar: every triangle through setup_triangle and the scalar tiles;
 // avx2 and avx512: the small triangles' snapping, setup and rows in AVX2 lanes, the others
 // through the tiles of that instruction set). Every isa gives the same result.
