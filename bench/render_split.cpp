@@ -214,8 +214,12 @@ int main(int argc, char** argv) {
     const std::string s = scene_path.string();
     processes = {
         {"rastrules render --count", {cli, "render", s, "--count", (dir / "c.json").string()}},
+        {"rastrules render --count --threads 2",
+         {cli, "render", s, "--count", (dir / "c2.json").string(), "--threads", "2"}},
         {"rastrules render --fragments OUT.bin",
          {cli, "render", s, "--fragments", (dir / "f.bin").string()}},
+        {"rastrules render --fragments OUT.bin --threads 2",
+         {cli, "render", s, "--fragments", (dir / "f2.bin").string(), "--threads", "2"}},
         {"rastrules render --fragments OUT.json",
          {cli, "render", s, "--fragments", (dir / "f.json").string()}},
     };

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <optional>
+#include <span>
 #include <string>
 #include <system_error>
 #include <variant>
@@ -183,6 +184,44 @@ void check_triangles_agree(const std::string& text, const std::optional<rastrule
     RC_ASSERT(t->xy.size() == xy.size());
     for (std::size_t i = 0; i < xy.size(); ++i)
       RC_ASSERT(std::bit_cast<std::uint32_t>(t->xy[i]) == std::bit_cast<std::uint32_t>(xy[i]));
+  }
+  // stream_triangles_fast: the same scene and coordinates, handed over in chunks after the
+  // head, wherever "primitives" is the last root key (the text ends with "]", whitespace, "}");
+  // it declines wherever read_scene_fast does or a key follows the list.
+  struct Collect final : io::TriangleStream {
+    std::optional<rastrules::Scene> head;
+    std::vector<float> xy;
+    bool begin(const rastrules::Scene& h) override {
+      RC_ASSERT(!head.has_value());
+      head = h;
+      return true;
+    }
+    bool triangles(std::span<const float> chunk) override {
+      RC_ASSERT(head.has_value());
+      RC_ASSERT(!chunk.empty() && chunk.size() % 6 == 0);
+      RC_ASSERT(chunk.size() <= 6 * io::kTriangleStreamChunk);
+      xy.insert(xy.end(), chunk.begin(), chunk.end());
+      return true;
+    }
+  } collect;
+  const std::optional<rastrules::Scene> streamed = io::stream_triangles_fast(text, collect);
+  std::size_t end = text.find_last_not_of(" \t\r\n");
+  const bool list_last = end != std::string::npos && text[end] == '}' && end > 0 &&
+                         (end = text.find_last_not_of(" \t\r\n", end - 1)) != std::string::npos &&
+                         text[end] == ']';
+  RC_CLASSIFY(streamed.has_value(), "streamed");
+  RC_ASSERT(streamed.has_value() == (fast.has_value() && list_last));
+  if (!streamed)
+    return;
+  rastrules::Scene bare = *fast;
+  bare.primitives.clear();
+  RC_ASSERT(io::same_scene(*streamed, bare));
+  RC_ASSERT(io::same_scene(*collect.head, bare));
+  RC_ASSERT(collect.xy.size() == 6 * fast->primitives.size());
+  for (std::size_t i = 0; i < collect.xy.size(); ++i) {
+    const rastrules::FloatPoint& v = fast->primitives[i / 6].v[(i % 6) / 2];
+    RC_ASSERT(std::bit_cast<std::uint32_t>(collect.xy[i]) ==
+              std::bit_cast<std::uint32_t>(v[i % 2]));
   }
 }
 

@@ -19,10 +19,12 @@
 #include <nlohmann/json.hpp>
 
 #include "rastrules/io/fragment_binary.hpp"
+#include "rastrules/io/scene_json.hpp"
 #include "support.hpp"
 
 namespace {
 
+namespace io = rastrules::io;
 using rastrules::Fragment;
 using rastrules::test::read_file;
 using rastrules::test::run_cli;
@@ -504,6 +506,82 @@ TEST(FragmentCount, TheCoordinatesPathDeclinesToThePreparedPathsAnswers) {
   EXPECT_EQ(bin_at_limit.status, 0) << bin_at_limit.err;
   EXPECT_TRUE(bin_at_limit.out == bin_all.out);
   EXPECT_EQ(rows_of(read_binary(bin_all.out).fragments).size(), 7u);
+}
+
+// rule: SCENE.OUTPUT.COUNT, SCENE.INPUT.FAST_READER, SCENE.INPUT.LIMITS, FAST.THREADS.DETERMINISTIC
+// A scene whose keys all come before its list is counted as it is read, in chunks of
+// io::kTriangleStreamChunk triangles (with two or more threads on a counting thread beside the
+// reader): the same bytes as the plain traversal (always prepared) for every thread count, with
+// a state key after the list (read the other way) too; a vertex that does not snap or a work
+// limit passed in a later chunk gives the prepared path's error.
+TEST(FragmentCount, ScenesCountedAsTheyAreReadGiveTheWholeListsCounts) {
+  const unsigned seed = printed_seed("FragmentCountStream");
+  std::mt19937 rng(seed);
+  SCOPED_TRACE("seed " + std::to_string(seed));
+  std::uniform_int_distribution<int> at(-10, 140), leg(0, 4), far(-2000, 2000);
+  const std::size_t n = 2 * io::kTriangleStreamChunk + 123;
+  std::vector<std::string> tris;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int x = at(rng), y = at(rng);
+    // Small triangles with shared, tie-heavy integer vertices; after the first chunk, every 11th
+    // large (its walk nearly always the whole target: work 128 x 120).
+    const bool large = i >= io::kTriangleStreamChunk && i % 11 == 0;
+    const auto v = [&](int dx, int dy) {
+      return "[" + std::to_string(large ? far(rng) : x + dx) + "," +
+             std::to_string(large ? far(rng) : y + dy) + "]";
+    };
+    tris.push_back(R"({"type":"triangle","v":[)" + v(0, 0) + "," + v(leg(rng), leg(rng)) + "," +
+                   v(leg(rng), leg(rng)) + "]}");
+  }
+  const auto scene = [&](const std::string& before, const std::string& after, std::size_t bad_at) {
+    std::string s = R"({"target":{"width":128,"height":120})" + before + R"(,"primitives":[)";
+    for (std::size_t i = 0; i < n; ++i)
+      s += (i ? "," : "") +
+           (i == bad_at ? R"({"type":"triangle","v":[[0,0],[1e9,0],[0,1]]})" : tris[i]);
+    return s + "]" + after + "}";
+  };
+  TempDir dir;
+  const auto in = dir.write("s.json", scene(R"(,"cull":"back","fill":"bottom-right")", "", n));
+  const auto late =
+      dir.write("late.json", scene(R"(,"fill":"bottom-right")", R"(,"cull":"back")", n));
+  const auto plain = run_cli(
+      std::vector<std::string>{"render", in.string(), "--count", "-", "--traversal", "plain"});
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  EXPECT_EQ(plain.out.rfind("{\"primitives\": " + std::to_string(n) + ",", 0), 0u);
+  for (const std::filesystem::path& file : {in, late}) {
+    for (const std::string threads : {"1", "2", "3"}) {
+      const auto r = run_cli(
+          std::vector<std::string>{"render", file.string(), "--count", "-", "--threads", threads});
+      EXPECT_EQ(r.status, 0) << r.err;
+      EXPECT_TRUE(r.out == plain.out) << file << " threads " << threads;
+    }
+  }
+  // A vertex that does not snap in the last chunk, and a work limit that the second chunk
+  // passes.
+  const auto bad = dir.write("bad.json", scene(R"(,"cull":"back")", "", n - 5));
+  // The first chunk's bound is at most 49 a triangle (spans of at most 4 px): under the limit,
+  // which the large triangles after it pass.
+  const std::uint64_t limit = 250000;
+  for (const std::string threads : {"1", "2"}) {
+    for (const auto& [file, extra] :
+         std::vector<std::pair<std::filesystem::path, std::vector<std::string>>>{
+             {bad, std::vector<std::string>{}},
+             {in, std::vector<std::string>{"--max-work", std::to_string(limit)}}}) {
+      auto args =
+          std::vector<std::string>{"render", file.string(), "--count", "-", "--threads", threads};
+      args.insert(args.end(), extra.begin(), extra.end());
+      const auto fast = run_cli(args);
+      args.insert(args.end(), {"--traversal", "plain"});
+      const auto prepared = run_cli(args);
+      EXPECT_EQ(fast.status, 2) << file;
+      EXPECT_EQ(fast.err, prepared.err);
+      EXPECT_NE(fast.err.find(file == bad ? "primitives[" + std::to_string(n - 5) + "]"
+                                          : "brings the work to more than"),
+                std::string::npos)
+          << fast.err;
+      EXPECT_TRUE(fast.out.empty());
+    }
+  }
 }
 
 // rule: SCENE.OUTPUT.COUNT

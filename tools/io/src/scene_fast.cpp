@@ -345,48 +345,30 @@ struct ListParts {
   bool ok = false;
 };
 
-// Scans the fast form: sink.reserve(n) once with a bound on the triangles the text can hold,
-// then sink.add(xy) for each triangle in order. Returns the scene the general reader gives for
-// the target with no primitives (every other field as it sets them), or nullopt where the fast
-// path declines (the sink may then hold part of the list). With parts, as ListParts says.
+// A sink that takes the triangles as they are read (stream_triangles_fast): begin(head) first.
+template <class Sink> constexpr bool kStreams = requires(Sink& sink, const Scene& head) {
+  sink.begin(head);
+};
+
+// The end of the list for the sink: its finish() where it has one.
+template <class Sink> bool finish(Sink& sink) {
+  if constexpr (requires { sink.finish(); })
+    return sink.finish();
+  else
+    return true;
+}
+
+// Scans the fast form: for a streaming sink (kStreams) sink.begin(head) with the scene of the
+// keys before the list, then sink.reserve(n) once with a bound on the triangles the text can
+// hold, then sink.add(xy) for each triangle in order (false declines), then finish(sink). Returns
+// the scene the general reader gives for the target with no primitives (every other field as it
+// sets them), or nullopt where the fast path declines (the sink may then hold part of the list).
+// With parts, as ListParts says.
 template <class Sink>
 std::optional<Scene> scan_fast(std::string_view json_text, Sink& sink, ListParts* parts = nullptr) {
   FastScanner s(json_text);
   std::int32_t width = 0, height = 0;
   bool have_target = false, have_primitives = false;
-  const auto list = [&] {
-    if (!s.eat('['))
-      return false;
-    if (s.eat(']'))
-      return true;
-    // The shortest triangle takes 44 bytes ({"type":"triangle","v":[[0,0],[0,0],[0,0]]},): one
-    // allocation holds them all (growing the list moved a million primitives about 20 times;
-    // the pages of a list left unused, when the fast path declines, are never touched).
-    sink.reserve(std::min(json_text.size() / 44 + 1, kMaxScenePrimitives));
-    std::size_t n = 0;
-    std::array<float, 6> xy{};
-    do {
-      if (parts != nullptr) {
-        s.skip_ws();
-        if (parts->probe) {
-          parts->first = s.at();
-          return false;
-        }
-        if (s.at() == parts->from) { // the next triangle is the parts' first
-          if (!parts->ok || parts->count > kMaxScenePrimitives - n)
-            return false;
-          s.seek(parts->after);
-          return true;
-        }
-      }
-      if (n++ >= kMaxScenePrimitives)
-        return false; // the general reader names the limit
-      if (!triangle(s, xy))
-        return false;
-      sink.add(xy);
-    } while (s.eat(','));
-    return parts == nullptr && s.eat(']');
-  };
   // The other keys' text, for the general reader: "version" (an integer) and kStateKeys (plain
   // strings), each once.
   std::string others;
@@ -415,7 +397,59 @@ std::optional<Scene> scan_fast(std::string_view json_text, Sink& sink, ListParts
     others += '"';
     return true;
   };
+  // The scene the general reader gives for the keys read so far and no primitives.
+  const auto head_scene = [&]() -> std::optional<Scene> {
+    if (!have_target)
+      return std::nullopt;
+    const std::string head = "{\"target\": {\"width\": " + std::to_string(width) +
+                             ", \"height\": " + std::to_string(height) + "}, \"primitives\": []" +
+                             others + "}";
+    auto base = read_scene_general(head);
+    if (!std::holds_alternative<Scene>(base))
+      return std::nullopt;
+    return std::get<Scene>(std::move(base));
+  };
+  const auto list = [&] {
+    if (!s.eat('['))
+      return false;
+    // A streaming sink starts with the keys read so far (all of them: none may follow).
+    if constexpr (kStreams<Sink>) {
+      const std::optional<Scene> head = head_scene();
+      if (!head || !sink.begin(*head))
+        return false;
+    }
+    if (s.eat(']'))
+      return finish(sink);
+    // The shortest triangle takes 44 bytes ({"type":"triangle","v":[[0,0],[0,0],[0,0]]},): one
+    // allocation holds them all (growing the list moved a million primitives about 20 times;
+    // the pages of a list left unused, when the fast path declines, are never touched).
+    sink.reserve(std::min(json_text.size() / 44 + 1, kMaxScenePrimitives));
+    std::size_t n = 0;
+    std::array<float, 6> xy{};
+    do {
+      if (parts != nullptr) {
+        s.skip_ws();
+        if (parts->probe) {
+          parts->first = s.at();
+          return false;
+        }
+        if (s.at() == parts->from) { // the next triangle is the parts' first
+          if (!parts->ok || parts->count > kMaxScenePrimitives - n)
+            return false;
+          s.seek(parts->after);
+          return true;
+        }
+      }
+      if (n++ >= kMaxScenePrimitives)
+        return false; // the general reader names the limit
+      if (!triangle(s, xy) || !sink.add(xy))
+        return false;
+    } while (s.eat(','));
+    return parts == nullptr && s.eat(']') && finish(sink);
+  };
   const bool ok = object_of_keys(s, [&](std::string_view key) {
+    if (have_primitives && kStreams<Sink>)
+      return false; // a key after the list: a streaming sink has begun without it
     if (key == "target")
       return !have_target && (have_target = target(s, width, height));
     if (key == "primitives")
@@ -424,13 +458,7 @@ std::optional<Scene> scan_fast(std::string_view json_text, Sink& sink, ListParts
   });
   if (!ok || !have_target || !have_primitives || !s.at_end())
     return std::nullopt;
-  const std::string head = "{\"target\": {\"width\": " + std::to_string(width) +
-                           ", \"height\": " + std::to_string(height) + "}, \"primitives\": []" +
-                           others + "}";
-  auto base = read_scene_general(head);
-  if (!std::holds_alternative<Scene>(base))
-    return std::nullopt;
-  return std::get<Scene>(std::move(base));
+  return head_scene();
 }
 
 } // namespace
@@ -440,11 +468,12 @@ std::optional<Scene> read_scene_fast(std::string_view json_text) {
   struct Primitives {
     std::vector<Primitive> list;
     void reserve(std::size_t n) { list.reserve(n); }
-    void add(const std::array<float, 6>& xy) {
+    bool add(const std::array<float, 6>& xy) {
       Primitive& p = list.emplace_back();
       p.type = PrimitiveType::kTriangle;
       for (std::size_t i = 0; i < 3; ++i)
         p.v[i] = FloatPoint{xy[2 * i], xy[2 * i + 1]};
+      return true;
     }
   } sink;
   std::optional<Scene> scene = scan_fast(json_text, sink);
@@ -459,7 +488,10 @@ namespace {
 struct Coordinates {
   std::vector<float> xy;
   void reserve(std::size_t n) { xy.reserve(6 * n); }
-  void add(const std::array<float, 6>& t) { xy.insert(xy.end(), t.begin(), t.end()); }
+  bool add(const std::array<float, 6>& t) {
+    xy.insert(xy.end(), t.begin(), t.end());
+    return true;
+  }
 };
 
 // Where the part of the list that starts at or after `at` begins: the '{' of a triangle after
@@ -566,6 +598,28 @@ std::optional<FastTriangles> read_triangles_fast(std::string_view json_text, uns
     std::vector<float>().swap(part.xy);
   }
   return FastTriangles{std::move(*scene), std::move(xy)};
+}
+
+// rule: SCENE.INPUT.FAST_READER
+std::optional<Scene> stream_triangles_fast(std::string_view json_text, TriangleStream& stream) {
+  struct Chunks {
+    TriangleStream& stream;
+    std::vector<float> xy = std::vector<float>(6 * kTriangleStreamChunk);
+    std::size_t n = 0; // floats held
+    bool begin(const Scene& head) { return stream.begin(head); }
+    void reserve(std::size_t) {}
+    bool add(const std::array<float, 6>& t) {
+      std::copy(t.begin(), t.end(), xy.begin() + static_cast<std::ptrdiff_t>(n));
+      n += 6;
+      return n < xy.size() || finish();
+    }
+    bool finish() {
+      const bool ok = n == 0 || stream.triangles(std::span<const float>(xy).first(n));
+      n = 0;
+      return ok;
+    }
+  } sink{stream};
+  return scan_fast(json_text, sink);
 }
 
 // rule: SCENE.INPUT.FAST_READER

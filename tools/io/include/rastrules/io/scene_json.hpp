@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -81,6 +82,28 @@ struct FastTriangles {
 [[nodiscard]] std::optional<FastTriangles>
 read_triangles_fast(std::string_view json_text, unsigned threads,
                     std::size_t min_part_bytes = std::size_t{1} << 20);
+
+// Takes the triangles of a scene of the fast form as stream_triangles_fast reads them.
+class TriangleStream {
+public:
+  virtual ~TriangleStream() = default;
+  // The scene of the keys before the list (its target and state; no primitives), before any
+  // triangle. false declines.
+  virtual bool begin(const Scene& head) = 0;
+  // The next triangles of the list in order, six floats each (x0 y0 x1 y1 x2 y2), at most
+  // kTriangleStreamChunk at a time. false declines.
+  virtual bool triangles(std::span<const float> xy) = 0;
+};
+inline constexpr std::size_t kTriangleStreamChunk = 4096;
+
+// read_triangles_fast without the list: the triangles handed to `stream` in chunks as they are
+// read (a 10^6-triangle scene's 24 MB of coordinates never held at once, and a consumer can work
+// while the text is read), for the text of the fast form whose root keys all come before
+// "primitives" (the order generated scenes use). Returns the scene read_triangles_fast gives, or
+// nullopt where it declines, where a root key follows the list, or where the stream declined:
+// the stream may then have taken part of the list, and the caller reads the text another way.
+[[nodiscard]] std::optional<Scene> stream_triangles_fast(std::string_view json_text,
+                                                         TriangleStream& stream);
 
 // Returns the whole content of a scene file ("-" is standard input), or an error naming the
 // file when it cannot be read or is larger than kMaxSceneBytes.
