@@ -77,12 +77,23 @@ private:
   std::FILE* out_;
   FragmentBinaryHeader header_;
   std::string buffer_;
+  // A fragment's place in the order the format holds: (prim, y, x, seg), seg -1 when there is
+  // none (a Fragment record, 76 bytes with its optionals, built twice a run made the writer
+  // cost three times the batch unit that found the runs).
+  struct Key {
+    std::uint32_t prim = 0;
+    std::int32_t y = 0, x = 0;
+    std::int64_t seg = -1;
+  };
+  // Whether the pixel at k continues the open run (its row's next pixel, the same primitive and
+  // segment); k comes after last_ (checked first).
+  [[nodiscard]] bool extends(const Key& k) const;
   // The open run: its first fragment and its masks.
   bool run_open_ = false;
-  Fragment run_first_{};
+  Key run_first_{};
   std::uint32_t run_length_ = 0;
   std::vector<std::uint16_t> run_masks_;
-  Fragment last_{};
+  Key last_{};
   std::uint64_t count_ = 0;
   std::uint64_t runs_ = 0;
   bool failed_ = false;
