@@ -508,23 +508,25 @@ TEST(FragmentCount, TheCoordinatesPathDeclinesToThePreparedPathsAnswers) {
   EXPECT_EQ(rows_of(read_binary(bin_all.out).fragments).size(), 7u);
 }
 
-// rule: SCENE.OUTPUT.COUNT, SCENE.INPUT.FAST_READER, SCENE.INPUT.LIMITS, FAST.THREADS.DETERMINISTIC
-// A scene whose keys all come before its list is counted as it is read, in chunks of
-// io::kTriangleStreamChunk triangles (with two or more threads on a counting thread beside the
-// reader): the same bytes as the plain traversal (always prepared) for every thread count, with
-// a state key after the list (read the other way) too; a vertex that does not snap or a work
-// limit passed in a later chunk gives the prepared path's error.
+// rule: SCENE.OUTPUT.COUNT, SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY
+// rule: SCENE.INPUT.FAST_READER, SCENE.INPUT.LIMITS, FAST.THREADS.DETERMINISTIC
+// A scene whose keys all come before its list is counted (--count) or listed (--fragments FILE,
+// binary or JSON) as it is read, in chunks of io::kTriangleStreamChunk triangles (with two or
+// more threads on a thread beside the reader): the same bytes as the plain traversal (always
+// prepared) for every thread count, with a state key after the list (read the other way) too;
+// a vertex that does not snap in the last chunk, a work limit or a fragment limit passed after
+// the first chunk give the prepared path's error and leave no file.
 TEST(FragmentCount, ScenesCountedAsTheyAreReadGiveTheWholeListsCounts) {
   const unsigned seed = printed_seed("FragmentCountStream");
   std::mt19937 rng(seed);
   SCOPED_TRACE("seed " + std::to_string(seed));
-  std::uniform_int_distribution<int> at(-10, 140), leg(0, 4), far(-2000, 2000);
+  std::uniform_int_distribution<int> at(-10, 70), leg(0, 4), far(-2000, 2000);
   const std::size_t n = 2 * io::kTriangleStreamChunk + 123;
   std::vector<std::string> tris;
   for (std::size_t i = 0; i < n; ++i) {
     const int x = at(rng), y = at(rng);
     // Small triangles with shared, tie-heavy integer vertices; after the first chunk, every 11th
-    // large (its walk nearly always the whole target: work 128 x 120).
+    // large (its walk nearly always the whole target: work 64 x 60).
     const bool large = i >= io::kTriangleStreamChunk && i % 11 == 0;
     const auto v = [&](int dx, int dy) {
       return "[" + std::to_string(large ? far(rng) : x + dx) + "," +
@@ -534,52 +536,82 @@ TEST(FragmentCount, ScenesCountedAsTheyAreReadGiveTheWholeListsCounts) {
                    v(leg(rng), leg(rng)) + "]}");
   }
   const auto scene = [&](const std::string& before, const std::string& after, std::size_t bad_at) {
-    std::string s = R"({"target":{"width":128,"height":120})" + before + R"(,"primitives":[)";
+    std::string s = R"({"target":{"width":64,"height":60})" + before + R"(,"primitives":[)";
     for (std::size_t i = 0; i < n; ++i)
       s += (i ? "," : "") +
            (i == bad_at ? R"({"type":"triangle","v":[[0,0],[1e9,0],[0,1]]})" : tris[i]);
     return s + "]" + after + "}";
   };
-  TempDir dir;
-  const auto in = dir.write("s.json", scene(R"(,"cull":"back","fill":"bottom-right")", "", n));
+  const TempDir scenes;
+  const auto in = scenes.write("s.json", scene(R"(,"cull":"back","fill":"bottom-right")", "", n));
   const auto late =
-      dir.write("late.json", scene(R"(,"fill":"bottom-right")", R"(,"cull":"back")", n));
-  const auto plain = run_cli(
-      std::vector<std::string>{"render", in.string(), "--count", "-", "--traversal", "plain"});
-  ASSERT_EQ(plain.status, 0) << plain.err;
-  EXPECT_EQ(plain.out.rfind("{\"primitives\": " + std::to_string(n) + ",", 0), 0u);
-  for (const std::filesystem::path& file : {in, late}) {
-    for (const std::string threads : {"1", "2", "3"}) {
-      const auto r = run_cli(
-          std::vector<std::string>{"render", file.string(), "--count", "-", "--threads", threads});
-      EXPECT_EQ(r.status, 0) << r.err;
-      EXPECT_TRUE(r.out == plain.out) << file << " threads " << threads;
+      scenes.write("late.json", scene(R"(,"fill":"bottom-right")", R"(,"cull":"back")", n));
+  const auto bad = scenes.write("bad.json", scene(R"(,"cull":"back")", "", n - 5));
+  const TempDir out;
+  // What an output holds: standard output for --count, the file for a list.
+  const auto run = [&](const std::filesystem::path& file, const std::string& output,
+                       std::vector<std::string> extra) {
+    auto args = std::vector<std::string>{"render", file.string()};
+    if (output == "count")
+      args.insert(args.end(), {"--count", "-"});
+    else
+      args.insert(args.end(), {"--fragments", (out / ("o." + output)).string()});
+    args.insert(args.end(), extra.begin(), extra.end());
+    rastrules::test::RunResult r = run_cli(args);
+    if (output != "count" && r.status == 0) {
+      r.out = read_file(out / ("o." + output));
+      std::filesystem::remove(out / ("o." + output));
     }
-  }
-  // A vertex that does not snap in the last chunk, and a work limit that the second chunk
-  // passes.
-  const auto bad = dir.write("bad.json", scene(R"(,"cull":"back")", "", n - 5));
-  // The first chunk's bound is at most 49 a triangle (spans of at most 4 px): under the limit,
-  // which the large triangles after it pass.
-  const std::uint64_t limit = 250000;
-  for (const std::string threads : {"1", "2"}) {
-    for (const auto& [file, extra] :
-         std::vector<std::pair<std::filesystem::path, std::vector<std::string>>>{
-             {bad, std::vector<std::string>{}},
-             {in, std::vector<std::string>{"--max-work", std::to_string(limit)}}}) {
-      auto args =
-          std::vector<std::string>{"render", file.string(), "--count", "-", "--threads", threads};
-      args.insert(args.end(), extra.begin(), extra.end());
-      const auto fast = run_cli(args);
-      args.insert(args.end(), {"--traversal", "plain"});
-      const auto prepared = run_cli(args);
-      EXPECT_EQ(fast.status, 2) << file;
-      EXPECT_EQ(fast.err, prepared.err);
-      EXPECT_NE(fast.err.find(file == bad ? "primitives[" + std::to_string(n - 5) + "]"
-                                          : "brings the work to more than"),
+    return r;
+  };
+  for (const std::string output : {"count", "bin", "json"}) {
+    SCOPED_TRACE(output);
+    const auto plain = run(in, output, {"--traversal", "plain"});
+    ASSERT_EQ(plain.status, 0) << plain.err;
+    if (output == "count") {
+      EXPECT_EQ(plain.out.rfind("{\"primitives\": " + std::to_string(n) + ",", 0), 0u);
+    }
+    // The JSON list (34 MB) on the scene and thread counts that reach its own code alone.
+    const bool json = output == "json";
+    for (const std::filesystem::path& file :
+         json ? std::vector<std::filesystem::path>{in} : std::vector{in, late}) {
+      for (const std::string& threads :
+           json ? std::vector<std::string>{"1", "2"} : std::vector<std::string>{"1", "2", "3"}) {
+        const auto r = run(file, output, {"--threads", threads});
+        EXPECT_EQ(r.status, 0) << r.err;
+        EXPECT_TRUE(r.out == plain.out) << file << " threads " << threads;
+      }
+    }
+    // The first chunk's work bound is at most 49 a triangle (spans of at most 4 px) and its
+    // fragments a few a triangle: under these limits, which the large triangles after it pass.
+    const std::uint64_t work_limit = 49 * io::kTriangleStreamChunk + 1000;
+    const std::uint64_t fragment_limit = 20 * io::kTriangleStreamChunk;
+    std::vector<std::pair<std::filesystem::path, std::vector<std::string>>> refused = {
+        {bad, {"--max-work", "100000000"}}, {in, {"--max-work", std::to_string(work_limit)}}};
+    if (json)
+      refused.erase(refused.begin() + 1); // the work limit is checked before the format matters
+    if (output != "count")
+      refused.push_back({in, {"--max-fragments", std::to_string(fragment_limit)}});
+    for (const auto& [file, limit] : refused) {
+      auto extra = limit;
+      extra.insert(extra.end(), {"--traversal", "plain"});
+      const auto prepared = run(file, output, extra);
+      EXPECT_EQ(prepared.status, 2);
+      EXPECT_NE(prepared.err.find(file == bad ? "primitives[" + std::to_string(n - 5) + "]"
+                                  : limit[0] == "--max-work"
+                                      ? "brings the work to more than"
+                                      : "more than " + std::to_string(fragment_limit)),
                 std::string::npos)
-          << fast.err;
-      EXPECT_TRUE(fast.out.empty());
+          << prepared.err;
+      for (const std::string threads : {"1", "2"}) {
+        extra = limit;
+        extra.insert(extra.end(), {"--threads", threads});
+        const auto fast = run(file, output, extra);
+        EXPECT_EQ(fast.status, 2) << file << " threads " << threads;
+        EXPECT_EQ(fast.err, prepared.err);
+        EXPECT_TRUE(fast.out.empty());
+        EXPECT_EQ(entries_of(out.path()), std::vector<std::string>{});
+      }
     }
   }
 }

@@ -3,17 +3,14 @@
 
 #include "count.hpp"
 
+#include "chunk_pipe.hpp"
+
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <charconv>
 #include <cmath>
-#include <condition_variable>
-#include <deque>
-#include <mutex>
 #include <span>
 #include <stdexcept>
-#include <thread>
 #include <variant>
 
 #include "rastrules/io/scene_json.hpp"
@@ -127,80 +124,55 @@ std::optional<FastForm> load_fast_form(std::string_view text, const RenderOption
   return FastForm{std::move(*loaded), std::move(t->xy)};
 }
 
+// rule: SCENE.INPUT.FAST_READER
+std::optional<PreparedScene> prepared_head(const Scene& head) {
+  auto base = load_scene(Scene(head));
+  auto* loaded = std::get_if<LoadedScene>(&base);
+  if (!loaded || !loaded->prepared || !is_single_sample(loaded->prepared->msaa))
+    return std::nullopt;
+  return std::move(*loaded->prepared);
+}
+
 namespace {
 
 // rule: SCENE.OUTPUT.COUNT, SCENE.INPUT.FAST_READER, SCENE.INPUT.LIMITS, FAST.THREADS.DETERMINISTIC
 // The batch counter fed as the text is read (io::stream_triangles_fast): each chunk's bound on
 // the work is added up (declining past max_work, as load_fast_form does for the whole list) and
-// the chunk counted, on this thread, or with two or more threads on one counting thread while
-// this one reads on (a bounded queue of kSlots chunks). The counts do not depend on the chunks
-// or the threads: each triangle's count is its own, the pixels' are sums.
+// the chunk counted, on this thread, or with two or more threads on a counting thread while this
+// one reads on (ChunkPipe). The counts do not depend on the chunks or the threads: each
+// triangle's count is its own, the pixels' are sums.
 class CountStream final : public io::TriangleStream {
 public:
   CountStream(const RenderOptions& options, std::uint64_t max_work)
       : options_(options), max_work_(max_work) {}
-  CountStream(const CountStream&) = delete;
-  CountStream& operator=(const CountStream&) = delete;
-  ~CountStream() override { stop(); }
 
   bool begin(const Scene& head) override {
-    auto base = load_scene(Scene(head));
-    auto* loaded = std::get_if<LoadedScene>(&base);
-    if (!loaded || !loaded->prepared || !is_single_sample(loaded->prepared->msaa))
+    std::optional<PreparedScene> scene = prepared_head(head);
+    if (!scene)
       return false;
-    scene_ = std::move(*loaded->prepared);
+    scene_ = std::move(*scene);
     counts_.emplace(0, scene_.width, scene_.height);
-    began_ = true;
-    if (options_.threads >= 2)
-      worker_ = std::thread([this] { work(); });
+    pipe_.emplace(options_.threads >= 2, [this](std::span<const float> xy) { return count(xy); });
     return true;
   }
-
-  bool triangles(std::span<const float> xy) override {
-    if (!worker_.joinable())
-      return count(xy) || refuse();
-    std::unique_lock lock(mutex_);
-    space_.wait(lock, [&] { return !free_.empty() || failed_; });
-    if (failed_)
-      return false; // the counting thread refused a chunk
-    std::vector<float> slot = std::move(free_.back());
-    free_.pop_back();
-    slot.assign(xy.begin(), xy.end());
-    ready_.push_back(std::move(slot));
-    lock.unlock();
-    data_.notify_one();
-    return true;
-  }
+  bool triangles(std::span<const float> xy) override { return pipe_->push(xy); }
 
   // The counts once the text is read to its end; nullopt when a chunk was refused.
   std::optional<FragmentCounts> take() {
-    stop();
-    if (!began_ || failed_)
+    refused_ = pipe_ && !pipe_->finish();
+    if (!pipe_ || refused_)
       return std::nullopt;
     return std::move(counts_);
   }
   // After take(): whether the text was of the form up to a chunk the batch unit or the work
   // limit refused (reading it another way would refuse it too).
-  [[nodiscard]] bool refused() const { return began_ && failed_; }
+  [[nodiscard]] bool refused() const { return refused_; }
 
 private:
-  static constexpr std::size_t kSlots = 4;
-
-  bool refuse() {
-    const std::lock_guard lock(mutex_);
-    failed_ = true;
-    return false;
-  }
   // Counts the next triangles (on the counting thread when there is one), after their bound
   // on the work.
   bool count(std::span<const float> xy) {
-    for (std::size_t i = 0; i < xy.size(); i += 6) {
-      const std::optional<TriangleBound> b = triangle_bound(&xy[i], scene_.width, scene_.height);
-      if (!b)
-        return false;
-      work_ += b->work();
-    }
-    if (!(work_ <= static_cast<double>(max_work_)))
+    if (!add_work_bounds(xy, scene_.width, scene_.height, max_work_, work_))
       return false;
     FragmentCounts& c = *counts_;
     const std::size_t first = c.per_primitive.size();
@@ -210,47 +182,14 @@ private:
         std::span(c.per_primitive).subspan(first), c.hits);
     return r.status == raster::BatchStatus::kOk;
   }
-  void work() {
-    for (;;) {
-      std::unique_lock lock(mutex_);
-      data_.wait(lock, [&] { return !ready_.empty() || done_ || failed_; });
-      if (failed_ || ready_.empty())
-        return;
-      std::vector<float> chunk = std::move(ready_.front());
-      ready_.pop_front();
-      lock.unlock();
-      const bool ok = count(chunk);
-      lock.lock();
-      failed_ = failed_ || !ok;
-      free_.push_back(std::move(chunk));
-      lock.unlock();
-      space_.notify_one();
-    }
-  }
-  void stop() {
-    if (!worker_.joinable())
-      return;
-    {
-      const std::lock_guard lock(mutex_);
-      done_ = true;
-    }
-    data_.notify_one();
-    worker_.join();
-  }
 
   const RenderOptions& options_;
   std::uint64_t max_work_;
   PreparedScene scene_;
   std::optional<FragmentCounts> counts_;
   double work_ = 0;
-  bool began_ = false;
-  std::thread worker_;
-  std::mutex mutex_;
-  std::condition_variable data_, space_;
-  std::deque<std::vector<float>> ready_;
-  std::vector<std::vector<float>> free_ = std::vector<std::vector<float>>(kSlots);
-  bool failed_ = false; // guarded by mutex_ while the worker runs
-  bool done_ = false;
+  bool refused_ = false;
+  std::optional<ChunkPipe> pipe_; // last: stopped before the members its thread uses
 };
 
 } // namespace

@@ -74,6 +74,13 @@ struct FastForm {
 [[nodiscard]] std::optional<FastForm>
 load_fast_form(std::string_view text, const RenderOptions& options, std::uint64_t max_work);
 
+// The head of a scene of the fast form (its target and state, no primitives) loaded and
+// prepared, as a stream of its triangles needs it: nullopt where the target or state is
+// refused or the scene is not single-sample (the stream declines; the scene's own load names
+// any error).
+// rule: SCENE.INPUT.FAST_READER
+[[nodiscard]] std::optional<PreparedScene> prepared_head(const Scene& head);
+
 // Counts a scene of the fast reader's form (io::read_triangles_fast: a target and triangles given
 // by "type" and "v" alone) with the batch counter without building its primitives or
 // preparing them: the counts batch_counts() gives for the loaded scene. nullopt when the form,

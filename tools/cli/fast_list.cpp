@@ -157,7 +157,7 @@ std::optional<std::uint64_t> count_fast_list(std::span<const float> xy, std::int
 FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, std::int32_t height,
                                const RasterState& state, Isa isa, unsigned threads,
                                std::uint64_t max_fragments, io::FragmentWriter* json,
-                               io::FragmentBinaryWriter* binary) {
+                               io::FragmentBinaryWriter* binary, std::uint32_t first_prim) {
   // Thrown where the list stops (declined); never seen outside.
   struct Stop {};
   FastListResult out;
@@ -167,9 +167,10 @@ FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, st
       io::FragmentWriter* json;
       io::FragmentBinaryWriter* binary;
       std::uint64_t max;
+      std::uint32_t first_prim;
       std::uint64_t count = 0;
       bool in_order = true;
-    } sink{json, binary, max_fragments};
+    } sink{json, binary, max_fragments, first_prim};
     const raster::RunSink runs{
         &sink, [](void* c, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t n) {
           auto& s = *static_cast<Sink*>(c);
@@ -177,7 +178,7 @@ FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, st
           s.count += k;
           if (s.count > s.max)
             throw Stop{}; // unwinds the batch unit: it holds its buffers in RAII owners
-          s.in_order = add_run(s.json, s.binary, tri, y, x, k) && s.in_order;
+          s.in_order = add_run(s.json, s.binary, s.first_prim + tri, y, x, k) && s.in_order;
         }};
     try {
       const raster::FastBatchResult r =
@@ -198,7 +199,7 @@ FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, st
     if (json)
       bytes.reserve(sizeof(UnitHead) + static_cast<std::size_t>(u.bound) * kMostJsonLine);
     bytes.resize(sizeof(UnitHead)); // written last
-    UnitSink sink{&bytes, u.band ? 0 : u.first, json != nullptr, {}, {}};
+    UnitSink sink{&bytes, first_prim + (u.band ? 0 : u.first), json != nullptr, {}, {}};
     const raster::RunSink runs{&sink, unit_run};
     const raster::FastBatchResult r =
         u.band ? raster::fast_runs_rows(xy, u.first, width, height, state, isa, u.y_first, u.y_last,

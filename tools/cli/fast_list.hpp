@@ -65,12 +65,14 @@ struct FastListResult {
 // runs). The same bytes for every thread count (FAST.THREADS.DETERMINISTIC). It stops, declined,
 // at a triangle that does not snap or once more than max_fragments fragments are found, having
 // written part of the list (a caller writing where that cannot be taken back counts the
-// triangles with fast_count_batch first).
+// triangles with fast_count_batch first). first_prim: the primitive index of xy's first
+// triangle (a list written a chunk at a time).
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY, FAST.THREADS.DETERMINISTIC
 [[nodiscard]] FastListResult write_fast_list(std::span<const float> xy, std::int32_t width,
                                              std::int32_t height, const RasterState& state, Isa isa,
                                              unsigned threads, std::uint64_t max_fragments,
                                              io::FragmentWriter* json,
-                                             io::FragmentBinaryWriter* binary);
+                                             io::FragmentBinaryWriter* binary,
+                                             std::uint32_t first_prim = 0);
 
 } // namespace rastrules::cli

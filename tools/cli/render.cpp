@@ -17,6 +17,7 @@
 #include <variant>
 #include <vector>
 
+#include "chunk_pipe.hpp"
 #include "cli.hpp"
 #include "count.hpp"
 #include "fast_list.hpp"
@@ -566,6 +567,24 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
 
 int write_counts(const FragmentCounts& counts, const RenderRequest& rq);
 
+// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY
+// Ends a list written from runs into file (--fragments, the only output): the writer finished,
+// the file committed and the summary printed; the error's status where one fails.
+int finish_list(OutputFile& file, io::FragmentWriter* json, io::FragmentBinaryWriter* binary,
+                bool in_order, const RenderRequest& rq, std::size_t primitives,
+                std::uint64_t covered) {
+  if (!in_order)
+    return error(kFragmentsOutOfOrder);
+  if (!(binary ? binary->finish() : json->finish()))
+    return error(*rq.fragments_path + ": write failed");
+  const std::vector<Output> outputs = {{&file, &rq.fragments_path}};
+  if (auto err = commit_outputs(outputs))
+    return error(*err);
+  if (rq.to_stdout == 0 && verbosity() != Verbosity::kQuiet)
+    print_summary(primitives, covered, outputs);
+  return kExitOk;
+}
+
 // rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY, SCENE.INPUT.FAST_READER
 // rule: FAST.BATCH.EQUALS.PLAIN
 // render --fragments OUT (the only output, JSON or binary) of a scene of the fast reader's
@@ -613,16 +632,109 @@ std::optional<int> render_fast_form_list(std::string_view text, const RenderRequ
                  std::to_string(counted.value_or(r.covered)) + ")");
   if (r.declined)
     return std::nullopt; // file (a temporary) is removed
-  if (!r.in_order)
-    return error(kFragmentsOutOfOrder);
-  if (!(binary ? binary->finish() : json->finish()))
-    return error(*rq.fragments_path + ": write failed");
-  const std::vector<Output> outputs = {{&file, &rq.fragments_path}};
-  if (auto err = commit_outputs(outputs))
-    return error(*err);
-  if (rq.to_stdout == 0 && verbosity() != Verbosity::kQuiet)
-    print_summary(form->xy.size() / 6, r.covered, outputs);
-  return kExitOk;
+  return finish_list(file, json ? &*json : nullptr, binary ? &*binary : nullptr, r.in_order, rq,
+                     form->xy.size() / 6, r.covered);
+}
+
+namespace {
+
+// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY, SCENE.INPUT.FAST_READER, SCENE.INPUT.LIMITS
+// rule: FAST.THREADS.DETERMINISTIC
+// The fragment list of a scene of the fast form written as the text is read
+// (io::stream_triangles_fast): each chunk's work bound added up (declining past the limit, as
+// load_fast_form does) and its runs written by write_fast_list into the output's temporary
+// file, on this thread or, with two or more threads, on a writing thread beside the reader
+// (ChunkPipe). The same bytes as the whole list written at once: the chunks are written in
+// order, each triangle's runs its own.
+class ListStream final : public io::TriangleStream {
+public:
+  explicit ListStream(const RenderRequest& rq) : rq_(rq) {}
+
+  bool begin(const Scene& head) override {
+    std::optional<PreparedScene> scene = prepared_head(head);
+    if (!scene)
+      return false;
+    scene_ = std::move(*scene);
+    if (file_.open(*rq_.fragments_path))
+      return false; // the usual path names the error
+    if (rq_.fragments_binary)
+      binary_.emplace(file_.get(), io::fragment_binary_header(scene_));
+    else
+      json_.emplace(file_.get());
+    pipe_.emplace(rq_.options.threads >= 2,
+                  [this](std::span<const float> xy) { return write(xy); });
+    return true;
+  }
+  bool triangles(std::span<const float> xy) override { return pipe_->push(xy); }
+
+  // Once the text is read: kExitOk or an error's exit status when the list was written and
+  // committed (or failed to be), nullopt when a chunk was refused or the text declined (the
+  // temporary is then removed).
+  std::optional<int> finish(bool read) {
+    refused_ = pipe_ && !pipe_->finish();
+    if (!read || !pipe_ || refused_)
+      return std::nullopt;
+    return finish_list(file_, json_ ? &*json_ : nullptr, binary_ ? &*binary_ : nullptr, in_order_,
+                       rq_, first_prim_, covered_);
+  }
+  // After finish(): whether a chunk was refused (a vertex that does not snap, a limit passed):
+  // reading the text another way would refuse it too.
+  [[nodiscard]] bool refused() const { return refused_; }
+  [[nodiscard]] bool disagreed() const { return disagreed_; }
+
+private:
+  bool write(std::span<const float> xy) {
+    if (!add_work_bounds(xy, scene_.width, scene_.height, rq_.max_work, work_))
+      return false;
+    const FastListResult r =
+        write_fast_list(xy, scene_.width, scene_.height, scene_.state, effective_isa(rq_.options),
+                        1, rq_.max_fragments - covered_, json_ ? &*json_ : nullptr,
+                        binary_ ? &*binary_ : nullptr, first_prim_);
+    disagreed_ = disagreed_ || !r.ok;
+    if (r.declined || !r.ok)
+      return false;
+    covered_ += r.covered;
+    in_order_ = in_order_ && r.in_order;
+    first_prim_ += static_cast<std::uint32_t>(xy.size() / 6);
+    return true;
+  }
+
+  const RenderRequest& rq_;
+  PreparedScene scene_;
+  OutputFile file_;
+  std::optional<io::FragmentWriter> json_;
+  std::optional<io::FragmentBinaryWriter> binary_; // rule: SCENE.OUTPUT.BINARY
+  double work_ = 0;
+  std::uint64_t covered_ = 0;
+  std::uint32_t first_prim_ = 0;
+  bool in_order_ = true;
+  bool refused_ = false;
+  bool disagreed_ = false;
+  std::optional<ChunkPipe> pipe_; // last: stopped before the members its thread uses
+};
+
+} // namespace
+
+// rule: SCENE.OUTPUT.FRAGMENTS, SCENE.OUTPUT.BINARY, SCENE.INPUT.FAST_READER
+// render --fragments FILE (the only output, a file written through a temporary) of a scene
+// whose root keys come before its list: the list written as the text is read (ListStream).
+// nullopt where it declines (the form, a key after the list, a target or state the fast form
+// does not take, output written in place); `refused` then says whether a chunk was refused
+// (a vertex that does not snap, a limit passed), where the coordinates path would decline too.
+std::optional<int> render_streamed_list(std::string_view text, const RenderRequest& rq,
+                                        bool& refused) {
+  refused = false;
+  if (!rq.fragments_path || rq.png_path || rq.resolve_path || rq.png_depth || rq.depth_out_path ||
+      rq.options.traversal != Traversal::kFast ||
+      io::OutputFile::writes_in_place(*rq.fragments_path))
+    return std::nullopt;
+  ListStream stream(rq);
+  const bool read = io::stream_triangles_fast(text, stream).has_value();
+  const std::optional<int> done = stream.finish(read);
+  if (stream.disagreed())
+    return error("internal error: the batch unit's runs disagree with its count");
+  refused = stream.refused();
+  return done;
 }
 
 // rule: SCENE.OUTPUT.COUNT, SCENE.INPUT.LIMITS
@@ -911,8 +1023,14 @@ int run_render(const Args& args) {
     if (const std::optional<FragmentCounts> counts =
             fast_form_counts(text, rq.options, rq.max_work))
       return write_counts(*counts, rq);
-  } else if (const std::optional<int> done = render_fast_form_list(text, rq)) {
-    return *done;
+  } else {
+    bool refused = false;
+    if (const std::optional<int> done = render_streamed_list(text, rq, refused))
+      return *done;
+    if (!refused) {
+      if (const std::optional<int> done = render_fast_form_list(text, rq))
+        return *done;
+    }
   }
   const auto loaded = load_scene_text(text, rq.scene_path);
   if (!loaded)
