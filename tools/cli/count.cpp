@@ -155,6 +155,10 @@ public:
     pipe_.emplace(options_.threads >= 2, [this](std::span<const float> xy) { return count(xy); });
     return true;
   }
+  // The counts a triangle reserved at once (growing them by doubling copied 4 and 8 MB of counts
+  // on 10^6 triangles); untouched pages of the reservation are never resident. Before the first
+  // chunk: the counting thread does not touch them yet.
+  void reserve(std::size_t triangles) override { counts_->per_primitive.reserve(triangles); }
   bool triangles(std::span<const float> xy) override { return pipe_->push(xy); }
 
   // The counts once the text is read to its end; nullopt when a chunk was refused.

@@ -607,7 +607,7 @@ std::optional<Scene> stream_triangles_fast(std::string_view json_text, TriangleS
     std::vector<float> xy = std::vector<float>(6 * kTriangleStreamChunk);
     std::size_t n = 0; // floats held
     bool begin(const Scene& head) { return stream.begin(head); }
-    void reserve(std::size_t) {}
+    void reserve(std::size_t triangles) { stream.reserve(triangles); }
     bool add(const std::array<float, 6>& t) {
       std::copy(t.begin(), t.end(), xy.begin() + static_cast<std::ptrdiff_t>(n));
       n += 6;

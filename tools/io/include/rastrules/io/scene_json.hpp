@@ -90,6 +90,9 @@ public:
   // The scene of the keys before the list (its target and state; no primitives), before any
   // triangle. false declines.
   virtual bool begin(const Scene& head) = 0;
+  // After begin(): at most this many triangles follow (a bound from the text's length), for a
+  // consumer that reserves its records once.
+  virtual void reserve(std::size_t triangles) { (void)triangles; }
   // The next triangles of the list in order, six floats each (x0 y0 x1 y1 x2 y2), at most
   // kTriangleStreamChunk at a time. false declines.
   virtual bool triangles(std::span<const float> xy) = 0;
