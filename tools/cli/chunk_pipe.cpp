@@ -3,10 +3,7 @@
 
 #include "chunk_pipe.hpp"
 
-#include <optional>
 #include <utility>
-
-#include "count.hpp"
 
 namespace rastrules::cli {
 
@@ -68,18 +65,6 @@ void ChunkPipe::work() {
     lock.unlock();
     space_.notify_one();
   }
-}
-
-// rule: SCENE.INPUT.LIMITS
-bool add_work_bounds(std::span<const float> xy, std::int32_t width, std::int32_t height,
-                     std::uint64_t max_work, double& work) {
-  for (std::size_t i = 0; i < xy.size(); i += 6) {
-    const std::optional<TriangleBound> b = triangle_bound(&xy[i], width, height);
-    if (!b)
-      return false;
-    work += b->work();
-  }
-  return work <= static_cast<double>(max_work);
 }
 
 } // namespace rastrules::cli

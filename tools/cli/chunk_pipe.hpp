@@ -9,7 +9,6 @@
 
 #include <condition_variable>
 #include <cstddef>
-#include <cstdint>
 #include <deque>
 #include <functional>
 #include <mutex>
@@ -54,12 +53,5 @@ private:
   bool done_ = false;
   std::thread worker_;
 };
-
-// rule: SCENE.INPUT.LIMITS
-// Adds the work bounds (triangle_bound) of the triangles xy on a width x height target to
-// `work`; false where a coordinate is not finite or the sum passes max_work (the caller then
-// declines, and the scene's own load names the error).
-[[nodiscard]] bool add_work_bounds(std::span<const float> xy, std::int32_t width,
-                                   std::int32_t height, std::uint64_t max_work, double& work);
 
 } // namespace rastrules::cli

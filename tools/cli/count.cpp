@@ -70,6 +70,18 @@ std::optional<TriangleBound> triangle_bound(const float* t, std::int32_t w, std:
   return b;
 }
 
+// rule: SCENE.INPUT.LIMITS
+bool add_work_bounds(std::span<const float> xy, std::int32_t width, std::int32_t height,
+                     std::uint64_t max_work, double& work) {
+  for (std::size_t i = 0; i < xy.size(); i += 6) {
+    const std::optional<TriangleBound> b = triangle_bound(&xy[i], width, height);
+    if (!b)
+      return false;
+    work += b->work();
+  }
+  return work <= static_cast<double>(max_work);
+}
+
 // rule: SCENE.OUTPUT.COUNT, FAST.BATCH.EQUALS.PLAIN
 std::optional<FragmentCounts> batch_counts(const LoadedScene& loaded,
                                            const RenderOptions& options) {
@@ -113,13 +125,7 @@ std::optional<FastForm> load_fast_form(std::string_view text, const RenderOption
   // The work limit: the triangles' bound within it means their exact work is too (else the
   // whole scene is prepared, and the first primitive over the limit named).
   double work = 0;
-  for (std::size_t i = 0; i < t->xy.size(); i += 6) {
-    const std::optional<TriangleBound> b = triangle_bound(&t->xy[i], scene.width, scene.height);
-    if (!b)
-      return std::nullopt;
-    work += b->work();
-  }
-  if (!(work <= static_cast<double>(max_work)))
+  if (!add_work_bounds(t->xy, scene.width, scene.height, max_work, work))
     return std::nullopt;
   return FastForm{std::move(*loaded), std::move(t->xy)};
 }

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -58,6 +59,13 @@ struct TriangleBound {
 };
 [[nodiscard]] std::optional<TriangleBound> triangle_bound(const float* t, std::int32_t w,
                                                           std::int32_t h);
+
+// rule: SCENE.INPUT.LIMITS
+// Adds the work bounds (triangle_bound) of the triangles xy on a width x height target to
+// `work`; false where a coordinate is not finite or the sum passes max_work (the caller then
+// declines, and the scene's own load names the error).
+[[nodiscard]] bool add_work_bounds(std::span<const float> xy, std::int32_t width,
+                                   std::int32_t height, std::uint64_t max_work, double& work);
 
 // A scene of the fast reader's form (io::read_triangles_fast: a target and triangles given by
 // "type" and "v" alone) ready for the batch unit without its primitives built or prepared: the

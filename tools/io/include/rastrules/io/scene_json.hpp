@@ -97,7 +97,7 @@ public:
   // kTriangleStreamChunk at a time. false declines.
   virtual bool triangles(std::span<const float> xy) = 0;
 };
-inline constexpr std::size_t kTriangleStreamChunk = 65536;
+inline constexpr std::size_t kTriangleStreamChunk = 16384;
 
 // read_triangles_fast without the list: the triangles handed to `stream` in chunks as they are
 // read (a 10^6-triangle scene's 24 MB of coordinates never held at once, and a consumer can work
