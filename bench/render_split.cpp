@@ -157,8 +157,7 @@ int main(int argc, char** argv) {
       {"batch counter with per-pixel counts (what --count computes)",
        [&] {
          std::vector<std::uint64_t> per(n);
-         std::vector<std::uint32_t> hits(static_cast<std::size_t>(prepared.width) *
-                                         static_cast<std::size_t>(prepared.height));
+         rastrules::raster::PixelCounts hits(prepared.width, prepared.height);
          (void)rastrules::raster::fast_count_batch(
              xy, prepared.width, prepared.height, prepared.state, rastrules::best_isa(), per, hits);
        }},

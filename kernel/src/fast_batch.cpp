@@ -9,7 +9,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
 #include <memory>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -57,7 +59,7 @@ struct Context {
   RasterState state;
   Isa isa;
   std::span<std::uint64_t> per_triangle;
-  std::span<std::uint32_t> hits;
+  std::uint32_t* hits; // the 32-bit overdraw counts, or null (FAST.BATCH.PIXEL_COUNTS)
 };
 
 // Snaps and sets up triangle i into t: false when a coordinate does not snap (r says which
@@ -89,11 +91,11 @@ bool one_triangle(const Context& c, std::size_t i, FastBatchResult& r) {
   if (t.status != TriangleStatus::kRasterized)
     return true;
   std::uint64_t n = 0;
-  if (c.hits.empty()) {
+  if (c.hits == nullptr) {
     n = fast_count_covered(t, c.width, c.height, c.isa);
   } else {
     const auto w = static_cast<std::size_t>(c.width);
-    std::uint32_t* hits = c.hits.data();
+    std::uint32_t* hits = c.hits;
     walk_triangle_fast(t, c.width, c.height, c.isa, [&](std::int32_t x, std::int32_t y) {
       ++hits[static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x)];
       ++n;
@@ -204,26 +206,25 @@ std::string describe(const FastBatchResult& r) {
   return "batch: unknown status";
 }
 
-// rule: FAST.BATCH.EQUALS.PLAIN, FAST.ISA.DISPATCH
-FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width, std::int32_t height,
-                                 const RasterState& state, Isa isa,
-                                 std::span<std::uint64_t> per_triangle,
-                                 std::span<std::uint32_t> hits) {
+namespace {
+
+// fast_count_batch after its checks (r: kOk), the overdraw added to hits (32-bit counts: the
+// plain way's pixels, and the lanes' bytes that reach 255) and low (bytes: the lanes' pixels),
+// both null for none; low may be null only under kScalar or without hits.
+// rule: FAST.BATCH.EQUALS.PLAIN, FAST.ISA.DISPATCH, FAST.BATCH.PIXEL_COUNTS
+FastBatchResult count_checked(std::span<const float> xy, std::int32_t width, std::int32_t height,
+                              const RasterState& state, Isa isa,
+                              std::span<std::uint64_t> per_triangle, std::uint32_t* hits,
+                              [[maybe_unused]] std::uint8_t* low) {
   FastBatchResult r;
   const std::size_t n = xy.size() / 6;
-  r.status = check_call(
-      xy, width, height, isa,
-      (per_triangle.empty() || per_triangle.size() == n) &&
-          (hits.empty() || hits.size() == static_cast<std::size_t>(std::max(width, 0)) *
-                                              static_cast<std::size_t>(std::max(height, 0))));
-  if (r.status != BatchStatus::kOk)
-    return r;
   std::fill(per_triangle.begin(), per_triangle.end(), std::uint64_t{0});
   const Context c{xy, width, height, state, isa, per_triangle, hits};
 #if RASTRULES_FAST_X86
   if (isa != Isa::kScalar) {
     batch_detail::Params p = lane_params(width, height, state);
-    p.hits = hits.empty() ? nullptr : hits.data();
+    p.hits = hits;
+    p.low = hits == nullptr ? nullptr : low;
     std::array<std::uint32_t, kChunk> large;
     for (std::size_t base = 0; base < n; base += kChunk) {
       p.xy = xy.data() + 6 * base;
@@ -251,6 +252,73 @@ FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width, 
     if (!one_triangle(c, i, r))
       return r;
   return r;
+}
+
+std::size_t pixels_of(std::int32_t width, std::int32_t height) {
+  return static_cast<std::size_t>(std::max(width, 0)) *
+         static_cast<std::size_t>(std::max(height, 0));
+}
+
+} // namespace
+
+void PixelCounts::Free::operator()(void* p) const {
+  std::free(p);
+}
+
+// rule: FAST.BATCH.PIXEL_COUNTS
+PixelCounts::PixelCounts(std::int32_t width, std::int32_t height)
+    : width_(width), height_(height), size_(pixels_of(width, height)),
+      low_(static_cast<std::uint8_t*>(std::calloc(std::max<std::size_t>(size_, 1), 1))),
+      high_(static_cast<std::uint32_t*>(
+          std::calloc(std::max<std::size_t>(size_, 1), sizeof(std::uint32_t)))) {
+  if (!low_ || !high_)
+    throw std::bad_alloc();
+}
+
+bool operator==(const PixelCounts& a, const PixelCounts& b) {
+  if (a.width_ != b.width_ || a.height_ != b.height_)
+    return false;
+  for (std::size_t i = 0; i < a.size_; ++i)
+    if (a[i] != b[i])
+      return false;
+  return true;
+}
+
+// rule: FAST.BATCH.EQUALS.PLAIN, FAST.ISA.DISPATCH
+FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width, std::int32_t height,
+                                 const RasterState& state, Isa isa,
+                                 std::span<std::uint64_t> per_triangle,
+                                 std::span<std::uint32_t> hits) {
+  FastBatchResult r;
+  r.status = check_call(xy, width, height, isa,
+                        (per_triangle.empty() || per_triangle.size() == xy.size() / 6) &&
+                            (hits.empty() || hits.size() == pixels_of(width, height)));
+  if (r.status != BatchStatus::kOk)
+    return r;
+  if (hits.empty() || isa == Isa::kScalar)
+    return count_checked(xy, width, height, state, isa, per_triangle,
+                         hits.empty() ? nullptr : hits.data(), nullptr);
+  // rule: FAST.BATCH.PIXEL_COUNTS
+  // The lanes add to bytes beside the caller's counts, added to them at the end.
+  PixelCounts counts(width, height);
+  r = count_checked(xy, width, height, state, isa, per_triangle, hits.data(), counts.low());
+  const std::uint8_t* low = counts.low();
+  for (std::size_t i = 0; i < hits.size(); ++i)
+    hits[i] += low[i];
+  return r;
+}
+
+// rule: FAST.BATCH.EQUALS.PLAIN, FAST.ISA.DISPATCH, FAST.BATCH.PIXEL_COUNTS
+FastBatchResult fast_count_batch(std::span<const float> xy, std::int32_t width, std::int32_t height,
+                                 const RasterState& state, Isa isa,
+                                 std::span<std::uint64_t> per_triangle, PixelCounts& counts) {
+  FastBatchResult r;
+  r.status = check_call(xy, width, height, isa,
+                        (per_triangle.empty() || per_triangle.size() == xy.size() / 6) &&
+                            counts.width() == width && counts.height() == height);
+  if (r.status != BatchStatus::kOk)
+    return r;
+  return count_checked(xy, width, height, state, isa, per_triangle, counts.high(), counts.low());
 }
 
 // rule: FAST.BATCH.EQUALS.PLAIN, FAST.ISA.DISPATCH

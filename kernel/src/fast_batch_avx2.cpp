@@ -24,7 +24,7 @@ namespace {
 // More than 16 pixels a row: each row in chunks of eight lanes, stepped by 8 * 256 A; the last
 // chunk's lanes at or past `cols` masked off (|E| < 2^30 there, FAST.BATCH.SMALL_I32).
 template <Mode kMode>
-inline std::uint32_t cover_rows(const Lanes& g, int t, std::uint32_t* hit, std::size_t stride,
+inline std::uint32_t cover_rows(const Lanes& g, int t, HitRow hit, std::size_t stride,
                                 RunWriter& rw) {
   const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
   const std::int32_t cols = g.cols[t], full = cols / 8, rest = cols % 8;
@@ -39,11 +39,14 @@ inline std::uint32_t cover_rows(const Lanes& g, int t, std::uint32_t* hit, std::
   const __m256i minus1 = _mm256_set1_epi32(-1);
   __m256i acc = _mm256_setzero_si256();
   const std::int32_t rows = g.rows[t];
+  // The last chunk's eight counters lie inside the target's row (stride: its width).
+  [[maybe_unused]] const bool tail_fits =
+      static_cast<std::size_t>(g.x0[t]) + 8 * static_cast<std::size_t>(full) + 8 <= stride;
   for (std::int32_t j = 0; j < rows; ++j) {
     __m256i l0 = row[0], l1 = row[1], l2 = row[2];
     // Only a walk with hits passes hit != nullptr: no row pointer is formed otherwise (an
     // offset on a null pointer is undefined behaviour, which clang's UBSan reports).
-    std::uint32_t* h = kMode == kHits ? hit + static_cast<std::size_t>(j) * stride : nullptr;
+    HitRow h = kMode == kHits ? hit + static_cast<std::size_t>(j) * stride : HitRow{};
     std::int32_t first = -1, count = 0; // the row's run (kRuns)
     const auto add_run = [&](std::int32_t at, __m256i in) {
       if constexpr (kMode == kRuns) {
@@ -72,7 +75,7 @@ inline std::uint32_t cover_rows(const Lanes& g, int t, std::uint32_t* hit, std::
       acc = _mm256_sub_epi32(acc, in);
       if constexpr (kMode == kHits) {
         // pixel x0 + 8 full lies inside the row: x0 + cols - 1 < width
-        add_hits(h + 8 * full, in, false);
+        add_hits(h + 8 * full, in, tail_fits);
       }
       add_run(8 * full, in);
     }
@@ -89,8 +92,7 @@ inline std::uint32_t cover_rows(const Lanes& g, int t, std::uint32_t* hit, std::
 // The rows of a triangle in lanes of eight.
 struct Rows8 {
   template <Mode kMode>
-  static std::uint32_t cover(const Lanes& g, int t, std::uint32_t* hit, std::size_t stride,
-                             RunWriter& rw) {
+  static std::uint32_t cover(const Lanes& g, int t, HitRow hit, std::size_t stride, RunWriter& rw) {
     if (g.cols[t] > 16)
       return cover_rows<kMode>(g, t, hit, stride, rw);
     return g.cols[t] > 8 ? cover_one<kMode, true>(g, t, hit, stride, rw)

@@ -31,18 +31,23 @@ namespace rastrules::raster::batch_detail {
 
 namespace {
 
-// Adds one to h[i] for each lane i that m sets. Masked loads and stores of AVX-512 never touch
-// the memory of lanes the mask leaves out, so a chunk that ends past the row's last pixel (and
-// the target's last column) reads and writes only the row's pixels.
-RASTRULES_ROWS16 inline void add_hits16(std::uint32_t* h, __mmask16 m) {
-  const __m512i v = _mm512_maskz_loadu_epi32(m, h);
-  _mm512_mask_storeu_epi32(h, m, _mm512_add_epi32(v, _mm512_set1_epi32(1)));
+// Adds one to the count of pixel i for each lane i that m sets: the sixteen bytes
+// (FAST.BATCH.PIXEL_COUNTS) in one masked load, add and store. Masked loads and stores of
+// AVX-512 never touch the memory of lanes the mask leaves out, so a chunk that ends past the
+// row's last pixel (and the target's last column) reads and writes only the row's pixels. A
+// byte that reaches 255 moves to its 32-bit count.
+RASTRULES_ROWS16 inline void add_hits16(HitRow h, __mmask16 m) {
+  const __m128i v = _mm_add_epi8(_mm_maskz_loadu_epi8(m, h.low), _mm_set1_epi8(1));
+  _mm_mask_storeu_epi8(h.low, m, v);
+  if (const __mmask16 full = _mm_mask_cmpeq_epi8_mask(m, v, _mm_set1_epi8(-1)); full != 0)
+      [[unlikely]]
+    spill_full(h, full);
 }
 
 // What a row chunk c with covered lanes `in` does besides counting: the per-pixel counts (kHits,
 // h the row's first pixel), or the row's run so far (kRuns: its first pixel and length).
 template <Mode kMode>
-RASTRULES_ROWS16 inline void chunk_extra(__mmask16 in, std::int32_t c, std::uint32_t* h,
+RASTRULES_ROWS16 inline void chunk_extra(__mmask16 in, std::int32_t c, HitRow h,
                                          std::int32_t& first, std::int32_t& count) {
   if constexpr (kMode == kHits) {
     if (in != 0)
@@ -68,8 +73,8 @@ RASTRULES_ROWS16 inline void chunk_extra(__mmask16 in, std::int32_t c, std::uint
 // the end), not by a population count a chunk (a scalar count a row was 23 % slower on small
 // triangles).
 template <Mode kMode>
-RASTRULES_ROWS16 inline std::uint32_t cover16(const Lanes& g, int t, std::uint32_t* hit,
-                                              std::size_t stride, RunWriter& rw) {
+RASTRULES_ROWS16 inline std::uint32_t cover16(const Lanes& g, int t, HitRow hit, std::size_t stride,
+                                              RunWriter& rw) {
   const __m512i iota = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
   const std::int32_t cols = g.cols[t], full = (cols - 1) / 16, rest = cols - 16 * full;
   const auto tail = static_cast<__mmask16>((1u << rest) - 1u); // rest in 1..16
@@ -89,7 +94,7 @@ RASTRULES_ROWS16 inline std::uint32_t cover16(const Lanes& g, int t, std::uint32
   for (std::int32_t j = 0; j < rows; ++j) {
     __m512i l0 = row[0], l1 = row[1], l2 = row[2];
     // Only a walk with hits passes hit != nullptr: no row pointer is formed otherwise.
-    std::uint32_t* h = kMode == kHits ? hit + static_cast<std::size_t>(j) * stride : nullptr;
+    HitRow h = kMode == kHits ? hit + static_cast<std::size_t>(j) * stride : HitRow{};
     std::int32_t first = -1, count = 0; // the row's run (kRuns)
     for (std::int32_t c = 0; c < full; ++c) {
       const __mmask16 in =
@@ -124,8 +129,8 @@ RASTRULES_ROWS16 inline std::uint32_t cover16(const Lanes& g, int t, std::uint32
 // The rows of a triangle in lanes of sixteen.
 struct Rows16 {
   template <Mode kMode>
-  RASTRULES_ROWS16 static std::uint32_t cover(const Lanes& g, int t, std::uint32_t* hit,
-                                              std::size_t stride, RunWriter& rw) {
+  RASTRULES_ROWS16 static std::uint32_t cover(const Lanes& g, int t, HitRow hit, std::size_t stride,
+                                              RunWriter& rw) {
     // Rows of up to 8 pixels in one half of eight lanes (fast_batch_group.hpp; proved with the
     // AVX2 unit, proofs/fast/batch_small_i32.cpp): sixteen lanes would do twice the work.
     if (g.cols[t] <= 8)

@@ -43,7 +43,11 @@ struct Params {
   bool skip_cw = false;                  // TRI.CULL.MODE: clockwise triangles are culled
   bool skip_ccw = false;                 // counter-clockwise triangles are culled
   std::uint64_t* per_triangle = nullptr; // n entries, zeroed by the caller, or null
-  std::uint32_t* hits = nullptr;         // width * height, or null
+  // The overdraw (FAST.BATCH.PIXEL_COUNTS), or both null: pixel i's count is low[i] + hits[i];
+  // the rows add to the bytes of low (never 255 between calls) and move 255 to hits when one
+  // reaches it.
+  std::uint32_t* hits = nullptr; // width * height, or null
+  std::uint8_t* low = nullptr;   // width * height, or null
   // With runs (and no hits): each small triangle's rows appended as runs, in triangle order,
   // rows top down; room for kMaxRunsPerSmall a triangle of p. tri_base: the index in the whole
   // batch of p's first triangle.

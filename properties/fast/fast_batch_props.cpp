@@ -8,9 +8,11 @@
 // Implements (properties for): FAST.BATCH.EQUALS.PLAIN, FAST.BATCH.SMALL_I32,
 //   FAST.BATCH.SNAP_SIMD
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -170,6 +172,56 @@ RC_GTEST_PROP(FastBatch, EveryIsaCountsEachTrianglesPlainPixels, ()) {
     const raster::FastBatchResult bare = raster::fast_count_batch(b.xy, b.w, b.h, state, isa);
     RC_ASSERT(bare.covered == e.covered);
     RC_ASSERT(bare.rasterized == e.rasterized);
+  }
+}
+
+// rule: FAST.BATCH.PIXEL_COUNTS, FAST.BATCH.EQUALS.PLAIN, FAST.ISA.DISPATCH
+// The per-pixel counts past a byte: a batch drawn 128 to 600 times over (so that a pixel
+// covered once a copy passes 254, and pixels covered by several triangles pass it several
+// times), given to fast_count_batch in random chunks that share one PixelCounts (render
+// --count's chunks) and, once, with 32-bit counts that start non-zero: every count is the
+// copies times the plain count, on every instruction set.
+RC_GTEST_PROP(FastBatch, EveryIsaKeepsCountsPastAByteExact, ()) {
+  const Batch b = *batch();
+  const rastrules::RasterState state = *rastrules::gen::raster_state();
+  const Expected e = plain(b, state);
+  const auto copies = *rc::gen::element<std::size_t>(128, 254, 255, 256, 300, 509, 510, 600);
+  std::vector<float> xy;
+  for (std::size_t c = 0; c < copies; ++c)
+    xy.insert(xy.end(), b.xy.begin(), b.xy.end());
+  const std::size_t n = xy.size() / 6;
+  const auto chunk = *rc::gen::inRange<std::size_t>(1, n + 1);
+  std::uint32_t most = 0;
+  for (const std::uint32_t h : e.hits)
+    most = std::max(most, h);
+  RC_CLASSIFY(most * copies >= 255, "a count past 254");
+  RC_CLASSIFY(most * copies >= 510, "a count past 509");
+  for (Isa isa : fg::supported_isas()) {
+    raster::PixelCounts counts(b.w, b.h);
+    std::uint64_t covered = 0;
+    for (std::size_t first = 0; first < n; first += chunk) {
+      const std::size_t m = std::min(chunk, n - first);
+      std::vector<std::uint64_t> per(m, 99);
+      const raster::FastBatchResult r = raster::fast_count_batch(
+          std::span(xy).subspan(6 * first, 6 * m), b.w, b.h, state, isa, per, counts);
+      RC_ASSERT(r.status == raster::BatchStatus::kOk);
+      for (std::size_t i = 0; i < m; ++i)
+        RC_ASSERT(per[i] == e.per_triangle[(first + i) % e.per_triangle.size()]);
+      covered += r.covered;
+    }
+    RC_ASSERT(covered == e.covered * copies);
+    std::vector<std::uint32_t> wide(e.hits.size());
+    for (std::size_t i = 0; i < wide.size(); ++i)
+      wide[i] = static_cast<std::uint32_t>(i % 7);
+    const raster::FastBatchResult r = raster::fast_count_batch(xy, b.w, b.h, state, isa, {}, wide);
+    RC_ASSERT(r.status == raster::BatchStatus::kOk);
+    for (std::size_t i = 0; i < e.hits.size(); ++i) {
+      const auto want = static_cast<std::uint32_t>(e.hits[i] * copies);
+      if (counts[i] != want || wide[i] != want + i % 7)
+        RC_FAIL(std::string(rastrules::to_string(isa)) + ": pixel " + std::to_string(i) +
+                " counts " + std::to_string(counts[i]) + " and " + std::to_string(wide[i]) + " - " +
+                std::to_string(i % 7) + ", plain " + std::to_string(want));
+    }
   }
 }
 

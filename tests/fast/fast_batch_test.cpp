@@ -4,11 +4,13 @@
 // triangles mixed, culling, clipping at the target's sides, a triangle at the 64-pixel bound of
 // the small lanes, and every error it names, for every instruction set this processor runs.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -195,6 +197,55 @@ struct RunLog {
     static_cast<RunLog*>(self)->runs.push_back({static_cast<std::int32_t>(tri), y, x, n});
   }
 };
+
+// The per-pixel counts are bytes until they reach 255 (FAST.BATCH.PIXEL_COUNTS): 600 copies of
+// three small triangles (rows of 3, 12 and 20 pixels: the eight-lane chunk that fits in its
+// row, the wide rows, the rows in chunks with a tail), one against the target's right side (the
+// pixel-by-pixel path), and 600 of a large one, cover their pixels 600 times, 1200 where two
+// overlap; in one call, in chunks of 7 triangles into one PixelCounts, and into 32-bit counts.
+// rule: FAST.BATCH.PIXEL_COUNTS, FAST.BATCH.EQUALS.PLAIN
+TEST(FastBatch, CountsPastAByteMoveToTheirWideCounts) {
+  const std::int32_t w = 100, h = 90;
+  const std::vector<float> one = {
+      1.0f,  1.0f,  4.0f,  1.0f,  1.0f,  4.0f,  // rows of up to 3 px
+      2.0f,  6.0f,  14.0f, 6.0f,  2.0f,  10.0f, // up to 12 px
+      80.0f, 2.0f,  99.8f, 2.0f,  80.0f, 8.0f,  // up to 20 px, at the right side
+      97.0f, 20.0f, 99.9f, 20.0f, 97.0f, 23.0f, // 3 px against the right side
+      0.0f,  0.0f,  90.0f, 0.0f,  0.0f,  89.0f, // large: over every other one
+  };
+  std::vector<float> xy;
+  for (int c = 0; c < 600; ++c)
+    xy.insert(xy.end(), one.begin(), one.end());
+  // One copy, the plain way.
+  std::vector<std::uint32_t> plain(static_cast<std::size_t>(w * h), 0);
+  ASSERT_EQ(fast_count_batch(one, w, h, RasterState{}, Isa::kScalar, {}, plain).status,
+            BatchStatus::kOk);
+  std::uint32_t most = 0;
+  for (const std::uint32_t p : plain)
+    most = std::max(most, p);
+  EXPECT_EQ(most, 2u); // the large triangle over the small ones
+  for (Isa isa : rastrules::test::supported_isas()) {
+    std::vector<std::uint32_t> wide(plain.size(), 0);
+    ASSERT_EQ(fast_count_batch(xy, w, h, RasterState{}, isa, {}, wide).status, BatchStatus::kOk);
+    raster::PixelCounts whole(w, h), chunks(w, h);
+    ASSERT_EQ(fast_count_batch(xy, w, h, RasterState{}, isa, {}, whole).status, BatchStatus::kOk);
+    for (std::size_t first = 0; first < xy.size(); first += 6 * 7) {
+      const std::size_t m = std::min<std::size_t>(6 * 7, xy.size() - first);
+      ASSERT_EQ(
+          fast_count_batch(std::span(xy).subspan(first, m), w, h, RasterState{}, isa, {}, chunks)
+              .status,
+          BatchStatus::kOk);
+    }
+    for (std::size_t i = 0; i < plain.size(); ++i) {
+      ASSERT_EQ(wide[i], 600 * plain[i]) << to_string(isa) << " pixel " << i;
+      ASSERT_EQ(whole[i], 600 * plain[i]) << to_string(isa) << " pixel " << i;
+      ASSERT_EQ(chunks[i], 600 * plain[i]) << to_string(isa) << " pixel " << i;
+    }
+  }
+  raster::PixelCounts other(w, h + 1);
+  EXPECT_EQ(fast_count_batch(one, w, h, RasterState{}, Isa::kScalar, {}, other).status,
+            BatchStatus::kBadLength);
+}
 
 // The AVX-512 unit's rows in sixteen lanes give the AVX2 unit's counts, per-triangle counts,
 // per-pixel counts and runs on triangles whose rows are 1..64 pixels wide (every tail length of

@@ -32,19 +32,30 @@ FragmentCounts::FragmentCounts(std::size_t primitives, std::int32_t w, std::int3
     : width(w), height(h), per_primitive(primitives, 0) {
   const std::uint64_t pixels = static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h);
   if (pixels <= kMaxOverdrawPixels)
-    hits.assign(static_cast<std::size_t>(pixels), 0);
+    hits.emplace(w, h);
 }
 
 namespace {
+
+// Counts the triangles xy with the batch counter into c (their counts from per_primitive[first]
+// on, the overdraw added to c's); false when it refuses them.
+bool count_into(FragmentCounts& c, std::span<const float> xy, const PreparedScene& scene,
+                const RenderOptions& options, std::size_t first) {
+  const std::span<std::uint64_t> per = std::span(c.per_primitive).subspan(first, xy.size() / 6);
+  const Isa isa = effective_isa(options);
+  const raster::FastBatchResult r =
+      c.hits
+          ? raster::fast_count_batch(xy, scene.width, scene.height, scene.state, isa, per, *c.hits)
+          : raster::fast_count_batch(xy, scene.width, scene.height, scene.state, isa, per);
+  return r.status == raster::BatchStatus::kOk;
+}
 
 // The batch counter's counts of the triangles xy on scene's target and state, or nullopt when
 // it refuses them (a vertex that does not snap, a target it does not take).
 std::optional<FragmentCounts> count_batch(std::span<const float> xy, const PreparedScene& scene,
                                           const RenderOptions& options) {
   FragmentCounts c(xy.size() / 6, scene.width, scene.height);
-  const raster::FastBatchResult r = raster::fast_count_batch(
-      xy, scene.width, scene.height, scene.state, effective_isa(options), c.per_primitive, c.hits);
-  if (r.status != raster::BatchStatus::kOk)
+  if (!count_into(c, xy, scene, options, 0))
     return std::nullopt;
   return c;
 }
@@ -187,10 +198,7 @@ private:
     FragmentCounts& c = *counts_;
     const std::size_t first = c.per_primitive.size();
     c.per_primitive.resize(first + xy.size() / 6, 0);
-    const raster::FastBatchResult r = raster::fast_count_batch(
-        xy, scene_.width, scene_.height, scene_.state, effective_isa(options_),
-        std::span(c.per_primitive).subspan(first), c.hits);
-    return r.status == raster::BatchStatus::kOk;
+    return count_into(c, xy, scene_, options_, first);
   }
 
   const RenderOptions& options_;
@@ -256,13 +264,14 @@ std::string counts_json(const FragmentCounts& c) {
     out.append(block.data(), p);
   }
   out += "], \"overdraw\": ";
-  if (c.hits.empty()) {
+  if (!c.hits) {
     out += "null}\n";
     return out;
   }
   // pixels[k - 1]: the pixels holding exactly k fragments.
   std::vector<std::uint64_t> pixels;
-  for (const std::uint32_t h : c.hits) {
+  for (std::size_t i = 0; i < c.hits->size(); ++i) {
+    const std::uint32_t h = (*c.hits)[i];
     if (h == 0)
       continue;
     if (h > pixels.size())

@@ -13,11 +13,13 @@
 #include <vector>
 
 #include "cli.hpp"
+#include "rastrules/raster/fast_batch.hpp"
 
 namespace rastrules::cli {
 
-// Targets of at most this many pixels get the per-pixel counts of the overdraw (4 bytes a
-// pixel: at most 256 MiB); larger ones the per-primitive counts alone.
+// Targets of at most this many pixels get the per-pixel counts of the overdraw (a byte a pixel,
+// and 4 bytes a pixel where a count passes 254: at most 320 MiB); larger ones the per-primitive
+// counts alone.
 inline constexpr std::uint64_t kMaxOverdrawPixels = std::uint64_t{1} << 26;
 
 // The counts of one render.
@@ -27,14 +29,15 @@ struct FragmentCounts {
   std::int32_t width = 0;
   std::int32_t height = 0;
   std::vector<std::uint64_t> per_primitive;
-  // Fragments per pixel (row-major), empty when the target has more than kMaxOverdrawPixels.
-  std::vector<std::uint32_t> hits;
+  // Fragments per pixel (row-major; FAST.BATCH.PIXEL_COUNTS), none when the target has more
+  // than kMaxOverdrawPixels.
+  std::optional<raster::PixelCounts> hits;
   // Counts one fragment (of prim, at x, y inside the target).
   void add(std::uint32_t prim, std::int32_t x, std::int32_t y) {
     ++per_primitive[prim];
-    if (!hits.empty())
-      ++hits[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-             static_cast<std::size_t>(x)];
+    if (hits)
+      hits->add(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                static_cast<std::size_t>(x));
   }
 };
 
