@@ -382,4 +382,43 @@ TEST(FastSceneReader, ReadsItsFormAsTheGeneralReaderAndDeclinesTheRest) {
   }
 }
 
+// rule: SCENE.INPUT.FAST_READER, SCENE.NUMBER.FLOAT32
+// A triangle written without whitespace, with 128 bytes of text after it, is read in one pass
+// (compact_vertices); each spelling below, at each of the six coordinates, reads as the same
+// triangle written with spaces (which the token reader reads), or is declined alike, and never
+// differs from the general reader: leading zeros, a ninth digit, points and exponents, signs.
+TEST(FastSceneReader, CompactTrianglesReadAsSpacedOnesAndDeclineAlike) {
+  const std::vector<std::string> spellings = {
+      "0",          "-0",         "-0.0",      "01",        "-01",         "00",
+      "1.",         ".5",         "-",         "--1",       "+1",          "1.5",
+      "-1.25",      "12345678",   "123456789", "1234567.8", "1234567.89",  "0.0000001",
+      "0.00000001", "16777216.5", "1677721.7", "1677721.6", "-1677721.7",  "1e2",
+      "1E2",        "1.5e1",      "7",         "99999999",  "999999999.0", "0.10000000"};
+  const std::string more = R"({"type":"triangle","v":[[1,1],[5,1],[1,5]]})";
+  for (const std::string& sp : spellings)
+    for (int at = 0; at < 6; ++at) {
+      std::string c[6] = {"0", "0", "4", "0", "0", "4"};
+      c[at] = sp;
+      const std::string compact = R"({"target":{"width":8,"height":8},"primitives":[)"
+                                  R"({"type":"triangle","v":[[)" +
+                                  c[0] + "," + c[1] + "],[" + c[2] + "," + c[3] + "],[" + c[4] +
+                                  "," + c[5] + "]]}," + more + "," + more + "," + more + "]}";
+      const std::string spaced = R"({"target": {"width": 8, "height": 8}, "primitives": [)"
+                                 R"({"type": "triangle", "v": [[)" +
+                                 c[0] + ", " + c[1] + "], [" + c[2] + ", " + c[3] + "], [" + c[4] +
+                                 ", " + c[5] + "]]}, " + more + ", " + more + ", " + more + "]}";
+      SCOPED_TRACE(compact);
+      const auto fast = rastrules::io::read_scene_fast(compact);
+      const auto fast_spaced = rastrules::io::read_scene_fast(spaced);
+      const auto general = rastrules::io::read_scene_general(compact);
+      ASSERT_EQ(fast.has_value(), fast_spaced.has_value());
+      if (!fast) {
+        continue;
+      }
+      EXPECT_TRUE(rastrules::io::same_scene(*fast, *fast_spaced));
+      ASSERT_TRUE(std::holds_alternative<Scene>(general));
+      EXPECT_TRUE(rastrules::io::same_scene(*fast, std::get<Scene>(general)));
+    }
+}
+
 } // namespace
