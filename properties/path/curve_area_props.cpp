@@ -306,7 +306,8 @@ RC_GTEST_PROP(PathCurveArea, ReversingEveryContourKeepsAreasAndBoundsExactly, ()
 }
 
 // Translating by whole pixels keeps every area and bound exactly where the path lies inside
-// the target before and after (here: a target around the path, 2 px from it either way),
+// the target before and after (here: a target around the path, 2 px from it either way after
+// the move),
 // and each pixel's area within the two bounds where the path leaves the target (a piece
 // outside the target is left as its chord, so the pieces near its border may be cut
 // otherwise).
@@ -327,8 +328,12 @@ RC_GTEST_PROP(PathCurveArea, TranslationByWholePixelsKeepsAreas, ()) {
         hi = std::max(hi, v);
       }
   }
-  const std::int64_t shift = (-lo + 255) / 256 + 2; // px
-  const auto side = static_cast<std::int32_t>((hi + 255) / 256 + shift + 3);
+  // 2 px of margin beyond the largest move (2 px) on every side: a path 2 px from the border
+  // moved by -2 px would touch it, and a pixel outside the target that the path touches (its
+  // border on the column line of a control point) would have no place (seed
+  // 2746564697985240041: M 0 640 Q 16 640 0 0 L 128 640 Z moved by (-2, -2) px).
+  const std::int64_t shift = (-lo + 255) / 256 + 4; // px
+  const auto side = static_cast<std::int32_t>((hi + 255) / 256 + shift + 4);
   const pg::GPath mid = pg::translated(p, 256 * shift, 256 * shift);
   const Areas a = areas_of(to_kernel(mid), side);
   const Areas b = areas_of(to_kernel(pg::translated(mid, 256 * dx, 256 * dy)), side);
@@ -415,6 +420,40 @@ namespace {
 // curve, which was added back where the loop changes the winding number: pixel (0, 0) got
 // 0.00186 instead of 0.00130 px^2 (its bound, 1.5e-10, gave it away). Held to the certified
 // oracle at depth 7 (128 pieces a curve).
+// Shrunk from PathCurveArea.TranslationByWholePixelsKeepsAreas (seed 2746564697985240041): the
+// property placed the path 2 px from the target's left side and then moved it by -2 px, onto
+// the side, where the column left of it does not exist. M 0 640 Q 16 640 0 0 L 128 640 Z
+// (x in [0, 0.5] px, the curve's ends on the column line x = 0): placed at 2 px and at 4 px
+// from the side, the same areas and bounds one column apart, every one inside [0, 1].
+// rule: PATH.AREA.CURVE
+TEST(PathCurveAreaRegression, ACurveWhoseEndsLieOnAColumnLineMovesWithItsAreas) {
+  const pg::GContour c{{0, 640}, {pg::GPiece{2, {{16, 640}, {0, 0}}}, pg::GPiece{1, {{128, 640}}}}};
+  const pg::GPath p{pg::PathKind::kCurves, false, {c}};
+  const auto areas = [&](std::int64_t dx) {
+    std::map<std::pair<std::int32_t, std::int32_t>, kp::AreaCoverage> m;
+    for (const kp::AreaCoverage& a :
+         kp::cover_area(to_kernel(pg::translated(p, 256 * dx, 512)), 12, 12))
+      m.emplace(std::make_pair(a.y, a.x - static_cast<std::int32_t>(dx)), a);
+    return m;
+  };
+  const auto at2 = areas(2), at4 = areas(4);
+  ASSERT_EQ(at2.size(), at4.size());
+  Rational sum = 0, bound = 0;
+  for (const auto& [px, a] : at2) {
+    const auto it = at4.find(px);
+    ASSERT_NE(it, at4.end()) << "pixel (" << px.second << ", " << px.first << ")";
+    EXPECT_EQ(it->second.area, a.area);
+    EXPECT_EQ(it->second.error_bound, a.error_bound);
+    EXPECT_GE(a.area, 0);
+    EXPECT_LE(a.area, 1);
+    sum += a.area;
+    bound += a.error_bound;
+  }
+  // The triangle (0, 0) (0.5, 2.5) (0, 2.5), 5/8 px^2, less the curve's bulge into it: x(t) =
+  // t (1 - t) / 8, y(t) = 2.5 (1 - t^2), the integral of x dy is 5/96 px^2.
+  EXPECT_LE(abs(sum - Rational(55, 96)), bound);
+}
+
 // rule: PATH.AREA.CURVE
 TEST(PathCurveAreaRegression, ALoopThroughTheLensOfAPieceOfItsOwnCurve) {
   const pg::GContour loop{{128, -192}, {pg::GPiece{3, {{640, 168}, {-128, -72}, {384, 48}}}}};
