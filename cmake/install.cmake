@@ -46,7 +46,8 @@ if(TARGET rastrules_c)
   rastrules_install_part(rastrules_c C ${PROJECT_SOURCE_DIR}/capi/include)
 endif()
 if(TARGET rastrules)
-  install(TARGETS rastrules RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  # Both programs in one directory: rastrules runs rastrules-full beside it (SCENE.CLI.FRONT).
+  install(TARGETS rastrules rastrules_full RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
 
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/rastrulesConfig.cmake.in

@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Command-line usage: unknown commands and options, missing arguments, --help.
 
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
+
+#include <sys/wait.h>
 
 #include <gtest/gtest.h>
 
@@ -142,6 +146,59 @@ TEST(CliUsage, QuotedValuesAreEscapedAndCut) {
     EXPECT_EQ(r.status, 2) << c.want;
     EXPECT_EQ(r.err.substr(0, r.err.find('\n')), "rastrules: error: " + c.want);
   }
+}
+
+// rastrules holds render and explain and runs rastrules-full, beside it, for the rest with the
+// same arguments (-q included), whose output and status are then the command's own; through a
+// symbolic link too (the program's own path, /proc/self/exe). Alone in a directory it still
+// renders, and names the missing program in one line, exit 2, for the other commands.
+// rule: SCENE.CLI.FRONT, SCENE.INPUT.ERRORS
+TEST(CliFront, OtherCommandsRunTheFullProgramBesideIt) {
+  namespace fs = std::filesystem;
+  const fs::path front = RASTRULES_CLI;
+  const fs::path full = front.parent_path() / "rastrules-full";
+  ASSERT_TRUE(fs::exists(full));
+  const rastrules::test::TempDir dir;
+  const auto run = [&](const fs::path& program, const std::string& args) {
+    const fs::path out = dir / "out", err = dir / "err";
+    const int raw = std::system(("'" + program.string() + "' " + args + " </dev/null >'" +
+                                 out.string() + "' 2>'" + err.string() + "'")
+                                    .c_str());
+    return rastrules::test::RunResult{raw != -1 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1,
+                                      rastrules::test::read_file(out),
+                                      rastrules::test::read_file(err)};
+  };
+  for (const std::string args : {"help fuzz", "-q cases --help", "fuzz2d --help", "draw"}) {
+    SCOPED_TRACE(args);
+    const auto a = run(front, args), b = run(full, args);
+    EXPECT_EQ(a.status, b.status);
+    EXPECT_EQ(a.out, b.out);
+    EXPECT_EQ(a.err, b.err);
+  }
+  EXPECT_EQ(run(front, "draw").err, "rastrules: error: unknown command \"draw\"\n"
+                                    "run 'rastrules --help'\n");
+  const fs::path scene = dir.write(
+      "scene.json", R"({"target": {"width": 4, "height": 4}, "primitives": [{"type": "triangle", )"
+                    R"("v": [[0, 0], [4, 0], [0, 4]]}]})");
+  // Through a link, the full program is found beside the file it names.
+  fs::create_directory(dir / "link");
+  fs::create_symlink(front, dir / "link" / "rastrules");
+  EXPECT_EQ(run(dir / "link" / "rastrules", "cases --help").out, run(full, "cases --help").out);
+  // Alone.
+  fs::create_directory(dir / "alone");
+  fs::copy_file(front, dir / "alone" / "rastrules");
+  fs::permissions(dir / "alone" / "rastrules", fs::perms::owner_exec, fs::perm_options::add);
+  const auto rendered =
+      run(dir / "alone" / "rastrules", "render '" + scene.string() + "' --count -");
+  EXPECT_EQ(rendered.status, 0) << rendered.err;
+  EXPECT_NE(rendered.out.find("\"fragments\": 6"), std::string::npos) << rendered.out;
+  const auto missing = run(dir / "alone" / "rastrules", "fuzz --help");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_EQ(missing.out, "");
+  EXPECT_EQ(missing.err, "rastrules: error: the command \"fuzz\" is run by " +
+                             fs::weakly_canonical(dir / "alone").string() +
+                             "/rastrules-full, which cannot be started (No such file or "
+                             "directory)\n");
 }
 
 } // namespace

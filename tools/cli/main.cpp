@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: MIT
 // rastrules: the command line: --version, help [COMMAND], -q/-v, and the commands (each
-// parses its own options with CLI11, parser.hpp).
-// Implements: SCENE.INPUT.ERRORS (exit codes)
+// parses its own options with CLI11, parser.hpp). Built twice: rastrules-full holds every
+// command; rastrules (RASTRULES_CLI_FRONT) holds render and explain, linked against the kernel
+// and io alone, and runs rastrules-full beside it for every other command (SCENE.CLI.FRONT).
+// Implements: SCENE.INPUT.ERRORS (exit codes), SCENE.CLI.FRONT
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <new>
 #include <string>
@@ -11,6 +15,11 @@
 
 #include "cli.hpp"
 #include "rastrules/io/interrupt.hpp"
+
+#ifdef RASTRULES_CLI_FRONT
+#include <climits>
+#include <unistd.h>
+#endif
 
 namespace {
 
@@ -21,6 +30,7 @@ struct Command {
 
 constexpr Command kCommands[] = {
     {"render", rastrules::cli::run_render},         {"explain", rastrules::cli::run_explain},
+#ifndef RASTRULES_CLI_FRONT
     {"showcase", rastrules::cli::run_showcase},     {"fuzz", rastrules::cli::run_fuzz},
     {"check", rastrules::cli::run_check},           {"probe", rastrules::cli::run_probe},
     {"bench", rastrules::cli::run_bench},           {"cases", rastrules::cli::run_cases},
@@ -28,7 +38,30 @@ constexpr Command kCommands[] = {
 #ifdef RASTRULES_HAVE_GLYPH
     {"glyph", rastrules::cli::run_glyph},
 #endif
+#endif
 };
+
+#ifdef RASTRULES_CLI_FRONT
+// rule: SCENE.CLI.FRONT
+// Runs rastrules-full, the program beside this one, with this one's arguments (argv as given:
+// the same options, -q/-v included; its exit status and signals are the command's own). Returns
+// only when it cannot be started, with the one-line error.
+int run_full(char** argv, const std::string& command) {
+  char self[PATH_MAX];
+  const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
+  std::string full = "rastrules-full";
+  if (n > 0) {
+    const std::string_view path(self, static_cast<std::size_t>(n));
+    full = std::string(path.substr(0, path.rfind('/') + 1)) + full;
+  }
+  argv[0] = full.data();
+  ::execv(full.c_str(), argv);
+  const int err = errno;
+  return rastrules::cli::error("the command " + rastrules::cli::shown_value(command) +
+                               " is run by " + full + ", which cannot be started (" +
+                               std::strerror(err) + ")");
+}
+#endif
 
 } // namespace
 
@@ -75,11 +108,19 @@ int main(int argc, char** argv) {
       if (args.size() > 1)
         return usage_error("help: one command only");
       const Command* c = find_command(args.front());
+#ifdef RASTRULES_CLI_FRONT
+      if (c == nullptr)
+        return run_full(argv, args.front());
+#endif
       if (c == nullptr)
         return usage_error("help: unknown command " + shown_value(args.front()));
       return c->run({"--help"});
     }
     const Command* c = find_command(command);
+#ifdef RASTRULES_CLI_FRONT
+    if (c == nullptr)
+      return run_full(argv, command);
+#endif
     if (c == nullptr)
       return usage_error("unknown command " + shown_value(command));
     // rule: SCENE.INPUT.ERRORS
