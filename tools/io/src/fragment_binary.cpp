@@ -13,8 +13,6 @@
 namespace rastrules::io {
 namespace {
 
-constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
-
 // Little-endian, whatever the host's byte order.
 void put_u32(std::string& out, std::uint32_t v) {
   const char b[4] = {static_cast<char>(v & 0xFF), static_cast<char>((v >> 8) & 0xFF),
@@ -126,28 +124,13 @@ FragmentBinaryWriter::Added FragmentBinaryWriter::add(const Fragment& f) {
   return Added::kOk;
 }
 
-FragmentBinaryWriter::Added FragmentBinaryWriter::add_run(std::uint32_t prim, std::int32_t y,
-                                                          std::int32_t x, std::uint32_t n) {
-  if (header_.mask_bytes != 0)
-    return Added::kUnsupported;
-  const Key first{prim, y, x, -1};
-  if (count_ > 0 && !(key_order(last_) < key_order(first)))
-    return Added::kOutOfOrder;
-  if (!extends(first)) {
-    close_run();
-    run_open_ = true;
-    run_first_ = first;
-    run_length_ = 0;
-  }
-  run_length_ += n;
-  last_ = Key{prim, y, static_cast<std::int32_t>(std::int64_t{x} + n - 1), -1};
-  count_ += n;
-  return Added::kOk;
-}
-
 void FragmentBinaryWriter::close_run() {
   if (!run_open_)
     return;
+  if (header_.mask_bytes == 0 && std::endian::native == std::endian::little) {
+    close_plain_run();
+    return;
+  }
   // The run's 20 bytes in one append (five appends of four bytes each checked the capacity).
   const std::uint32_t fields[5] = {run_first_.prim,
                                    run_first_.seg < 0 ? kFragmentBinaryNoSeg

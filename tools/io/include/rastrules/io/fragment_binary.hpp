@@ -6,6 +6,7 @@
 
 #pragma once
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -63,7 +64,30 @@ public:
   // Appends the n >= 1 fragments of primitive prim at x, x + 1, ..., x + n - 1 of row y (no
   // segment, mask 1): the same file as adding them one by one. kUnsupported when the header
   // stores masks; kOutOfOrder when the first does not come after the previous fragment.
-  Added add_run(std::uint32_t prim, std::int32_t y, std::int32_t x, std::uint32_t n);
+  // Inline: the batch unit's runs come here one by one (2.6 x 10^6 of them for 10^6 small
+  // triangles, where a call, tuple comparisons and a second call to write each run cost a fifth
+  // of `render --fragments OUT.bin`).
+  Added add_run(std::uint32_t prim, std::int32_t y, std::int32_t x, std::uint32_t n) {
+    if (header_.mask_bytes != 0)
+      return Added::kUnsupported;
+    // After last_ in (prim, y, x, seg) order, this run's seg (none) being the least.
+    if (count_ > 0 && !(last_.prim < prim ||
+                        (last_.prim == prim && (last_.y < y || (last_.y == y && last_.x < x)))))
+      return Added::kOutOfOrder;
+    if (run_open_ && prim == run_first_.prim && run_first_.seg == -1 && y == run_first_.y &&
+        std::int64_t{x} == std::int64_t{run_first_.x} + run_length_) {
+      run_length_ += n;
+    } else {
+      if (run_open_)
+        close_plain_run();
+      run_open_ = true;
+      run_first_ = Key{prim, y, x, -1};
+      run_length_ = n;
+    }
+    last_ = Key{prim, y, static_cast<std::int32_t>(std::int64_t{x} + n - 1), -1};
+    count_ += n;
+    return Added::kOk;
+  }
   // Writes the last run and the end record. Returns false when any write failed.
   bool finish();
 
@@ -71,7 +95,26 @@ public:
   [[nodiscard]] std::uint64_t runs() const { return runs_; }
 
 private:
+  // The buffer is written out when it holds this many bytes.
+  static constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
   void close_run();
+  // close_run for an open run without masks (mask_bytes 0): its 20 bytes in one append.
+  void close_plain_run() {
+    if constexpr (std::endian::native == std::endian::little) {
+      const std::uint32_t fields[5] = {
+          run_first_.prim,
+          run_first_.seg < 0 ? kFragmentBinaryNoSeg : static_cast<std::uint32_t>(run_first_.seg),
+          static_cast<std::uint32_t>(run_first_.y), static_cast<std::uint32_t>(run_first_.x),
+          run_length_};
+      buffer_.append(reinterpret_cast<const char*>(fields), sizeof fields);
+      run_open_ = false;
+      ++runs_;
+      if (buffer_.size() >= kBufferBytes)
+        flush_buffer();
+    } else {
+      close_run();
+    }
+  }
   void flush_buffer();
 
   std::FILE* out_;
