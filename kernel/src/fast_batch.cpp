@@ -353,8 +353,14 @@ FastBatchResult fast_runs_batch(std::span<const float> xy, std::int32_t width, s
       std::size_t ri = 0;
       for (std::size_t j = 0; j <= k; ++j) {
         const std::size_t until = j < k ? base + large[j] : base + p.n;
-        for (; ri < o.runs && runs[ri].tri < until; ++ri)
-          sink.run(sink.context, runs[ri].tri, runs[ri].y, runs[ri].x, runs[ri].n);
+        const std::size_t from = ri;
+        while (ri < o.runs && runs[ri].tri < until)
+          ++ri;
+        if (sink.runs != nullptr && ri > from)
+          sink.runs(sink.context, runs.get() + from, ri - from);
+        else
+          for (std::size_t q = from; q < ri; ++q)
+            sink.run(sink.context, runs[q].tri, runs[q].y, runs[q].x, runs[q].n);
         if (j < k && !one_triangle_runs(c, base + large[j], sink, r))
           return r; // cannot fail: all snapped
       }

@@ -10,6 +10,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "rastrules/raster/fast_batch.hpp"
+
 #ifndef RASTRULES_FAST_X86
 #define RASTRULES_FAST_X86 0
 #endif
@@ -23,12 +25,9 @@ inline constexpr std::int32_t kSmallSpan = 64 * 256;
 // covered pixel centres in a row are consecutive: the row meets a convex set in an interval).
 // Left uninitialised where it is allocated (make_unique_for_overwrite): a buffer of runs is
 // only read where the unit wrote it.
-struct Run {
-  std::uint32_t tri; // index in the whole batch
-  std::int32_t y;
-  std::int32_t x;
-  std::int32_t n;
-};
+// The lanes' runs, as fast_runs_batch sends them (BatchRun: tri is the index in the whole
+// batch).
+using Run = BatchRun;
 
 // The most runs one small triangle gives: one a row, rows below 64 + 1.
 inline constexpr std::size_t kMaxRunsPerSmall = 65;

@@ -234,6 +234,24 @@ std::vector<Run> runs_of(const Batch& b, const rastrules::RasterState& state, Is
         static_cast<std::vector<Run>*>(c)->push_back(Run{tri, y, x, n});
       }};
   r = raster::fast_runs_batch(b.xy, b.w, b.h, state, isa, sink);
+  // With the batch callback set too: the same runs in the same order, the same result.
+  std::vector<Run> both;
+  const raster::RunSink batched{
+      &both,
+      [](void* c, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t n) {
+        static_cast<std::vector<Run>*>(c)->push_back(Run{tri, y, x, n});
+      },
+      [](void* c, const raster::BatchRun* runs, std::size_t n) {
+        RC_ASSERT(n > 0);
+        for (std::size_t i = 0; i < n; ++i)
+          static_cast<std::vector<Run>*>(c)->push_back(
+              Run{runs[i].tri, runs[i].y, runs[i].x, runs[i].n});
+      }};
+  const raster::FastBatchResult rb = raster::fast_runs_batch(b.xy, b.w, b.h, state, isa, batched);
+  RC_ASSERT(rb.status == r.status);
+  RC_ASSERT(rb.covered == r.covered);
+  if (r.status == raster::BatchStatus::kOk)
+    RC_ASSERT(both == got);
   return got;
 }
 

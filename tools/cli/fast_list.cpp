@@ -172,13 +172,38 @@ FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, st
       bool in_order = true;
     } sink{json, binary, max_fragments, first_prim};
     const raster::RunSink runs{
-        &sink, [](void* c, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t n) {
+        &sink,
+        [](void* c, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t n) {
           auto& s = *static_cast<Sink*>(c);
           const auto k = static_cast<std::uint32_t>(n);
           s.count += k;
           if (s.count > s.max)
             throw Stop{}; // unwinds the batch unit: it holds its buffers in RAII owners
           s.in_order = add_run(s.json, s.binary, s.first_prim + tri, y, x, k) && s.in_order;
+        },
+        // The small triangles' runs of a chunk at once: the limit checked once for all of them
+        // (a list that passes it is declined whatever it wrote), each run written in a loop
+        // (FragmentBinaryWriter::add_run is inline) instead of a call a run.
+        [](void* c, const raster::BatchRun* r, std::size_t n) {
+          auto& s = *static_cast<Sink*>(c);
+          std::uint64_t k = 0;
+          for (std::size_t i = 0; i < n; ++i)
+            k += static_cast<std::uint32_t>(r[i].n);
+          s.count += k;
+          if (s.count > s.max)
+            throw Stop{};
+          bool in_order = true;
+          if (s.binary != nullptr) {
+            for (std::size_t i = 0; i < n; ++i)
+              in_order &= s.binary->add_run(s.first_prim + r[i].tri, r[i].y, r[i].x,
+                                            static_cast<std::uint32_t>(r[i].n)) ==
+                          io::FragmentBinaryWriter::Added::kOk;
+          } else {
+            for (std::size_t i = 0; i < n; ++i)
+              in_order &= s.json->add_run(s.first_prim + r[i].tri, r[i].y, r[i].x,
+                                          static_cast<std::uint32_t>(r[i].n));
+          }
+          s.in_order = s.in_order && in_order;
         }};
     try {
       const raster::FastBatchResult r =
