@@ -62,42 +62,6 @@ std::optional<FragmentCounts> count_batch(std::span<const float> xy, const Prepa
 
 } // namespace
 
-namespace {
-
-// Whether the six coordinates at t are finite: x - x is 0 for a finite x and NaN otherwise,
-// which the sum keeps (one branch, not six).
-bool finite_triangle(const float* t) {
-  const float f = ((t[0] - t[0]) + (t[1] - t[1])) + ((t[2] - t[2]) + (t[3] - t[3])) +
-                  ((t[4] - t[4]) + (t[5] - t[5]));
-  return f == 0.0f;
-}
-
-// floor(span) + 3 clipped to the side, the span clipped to the side first: then the conversion
-// to an integer (a truncation, the floor of a non-negative value) is in range and exact, and no
-// call to floor() is made (the baseline instruction set has no rounding instruction: two calls
-// a triangle were a tenth of the bounds' time). A NaN span gives the side (its triangle is
-// refused as not finite apart).
-double clipped_extent(double span, std::int32_t side) {
-  const double s = span < side ? span : static_cast<double>(side);
-  return std::min<double>(side, static_cast<double>(static_cast<std::int64_t>(s)) + 3);
-}
-
-} // namespace
-
-// rule: SCENE.INPUT.LIMITS
-std::optional<TriangleBound> triangle_bound(const float* t, std::int32_t w, std::int32_t h) {
-  if (!finite_triangle(t))
-    return std::nullopt;
-  const float lo_x = std::min({t[0], t[2], t[4]}), hi_x = std::max({t[0], t[2], t[4]});
-  const float lo_y = std::min({t[1], t[3], t[5]}), hi_y = std::max({t[1], t[3], t[5]});
-  TriangleBound b;
-  b.cols = clipped_extent(double{hi_x} - double{lo_x}, w);
-  b.rows = clipped_extent(double{hi_y} - double{lo_y}, h);
-  b.lo_y = lo_y;
-  b.hi_y = hi_y;
-  return b;
-}
-
 // rule: SCENE.INPUT.LIMITS
 bool add_work_bounds(std::span<const float> xy, std::int32_t width, std::int32_t height,
                      std::uint64_t max_work, double& work) {
@@ -109,11 +73,11 @@ bool add_work_bounds(std::span<const float> xy, std::int32_t width, std::int32_t
   double sum = 0;
   for (std::size_t i = 0; i < xy.size(); i += 6) {
     const float* t = &xy[i];
-    finite &= finite_triangle(t);
+    finite &= bound_detail::finite_triangle(t);
     const float lo_x = std::min({t[0], t[2], t[4]}), hi_x = std::max({t[0], t[2], t[4]});
     const float lo_y = std::min({t[1], t[3], t[5]}), hi_y = std::max({t[1], t[3], t[5]});
-    sum += clipped_extent(double{hi_x} - double{lo_x}, width) *
-           clipped_extent(double{hi_y} - double{lo_y}, height);
+    sum += bound_detail::clipped_extent(double{hi_x} - double{lo_x}, width) *
+           bound_detail::clipped_extent(double{hi_y} - double{lo_y}, height);
   }
   if (!finite)
     return false;
