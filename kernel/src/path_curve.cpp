@@ -642,8 +642,11 @@ bool estimated_as_quadratic(const Cubic& g) {
   return g.c[3] == 0 && g.c[2] != 0;
 }
 
-// cuts: derivative_cuts(g), unless estimated_as_quadratic(g).
-int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t) {
+// cuts: derivative_cuts(g), unless estimated_as_quadratic(g). hints (or null): where the
+// Newton steps of each cut interval start, from the rows before (RootHints::start), and where
+// this row's roots are recorded.
+int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t,
+                   RootHints* hints = nullptr, std::int64_t row = 0) {
   const double c1 = static_cast<double>(g.c[1]), c2 = static_cast<double>(g.c[2]),
                c3 = static_cast<double>(g.c[3]);
   if (c3 == 0.0 && c2 != 0.0) { // a quadratic: the roots by the stable quadratic formula
@@ -670,8 +673,12 @@ int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t) {
     if (!((glo < 0.0 && ghi > 0.0) || (glo > 0.0 && ghi < 0.0)))
       continue;
     const bool rising = ghi > 0.0;
-    // Start where the chord meets 0 (g is monotone on the piece): nearer than the midpoint.
-    double u = lo + (hi - lo) * (glo / (glo - ghi));
+    // Start where the rows before put the root (a few steps fewer: the roots of consecutive
+    // rows lie close), else where the chord meets 0 (g is monotone on the piece): nearer than
+    // the midpoint. Only the start: the steps, their end and the checks after are the same.
+    double u = hints != nullptr ? hints->start(i, row) : std::nan("");
+    if (!(u > lo && u < hi))
+      u = lo + (hi - lo) * (glo / (glo - ghi));
     if (!(u > lo && u < hi))
       u = 0.5 * (lo + hi);
     for (int it = 0; it < 100; ++it) {
@@ -683,14 +690,18 @@ int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t) {
       double next = d != 0.0 ? u - gu / d : lo;
       if (!(next > lo && next < hi))
         next = 0.5 * (lo + hi);
-      // A Newton step of 2^-38 leaves an error of the order of its square: far below the
-      // 2^-30 grid the estimate is checked on.
-      const bool settled = std::abs(next - u) <= 0x1p-38;
+      // A Newton step of 2^-24 leaves an error of the order of its square (times |g''| / |g'|):
+      // far below the 2^-30 grid the estimate is checked on, which also takes a neighbour's
+      // cell; an estimate left outside them only sends the row to the exact paths. (2^-38 took
+      // a step more a root, most of the estimates' time on cubic glyphs.)
+      const bool settled = std::abs(next - u) <= 0x1p-24;
       u = next;
       if (settled)
         break;
     }
     t[static_cast<std::size_t>(n++)] = u;
+    if (hints != nullptr)
+      hints->found[static_cast<std::size_t>(i)] = u;
   }
   return n;
 }
@@ -706,10 +717,14 @@ int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t) {
 // rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
 bool estimated_crossings(const Cubic& g, double bound, const Cuts& cuts, const Cubic& x,
                          std::int64_t x_lip, double x_bound, int v, Tie t,
-                         std::vector<Crossing>& found, int dir_sign = 1) {
+                         std::vector<Crossing>& found, int dir_sign = 1, RootHints* hints = nullptr,
+                         std::int64_t row = 0) {
   constexpr std::int64_t kOne = std::int64_t{1} << kFastBits;
   std::array<double, 3> est{};
-  if (root_estimates(g, cuts, est) != v)
+  const int n = root_estimates(g, cuts, est, hints, row);
+  if (hints != nullptr)
+    hints->record(row);
+  if (n != v)
     return false;
   std::array<std::pair<std::int64_t, std::int64_t>, 3> regions{};
   for (int r = 0; r < v; ++r) {
@@ -1024,6 +1039,7 @@ void prepare_curve(const Curve& c, PreparedCurve& p) {
   const int n = c.degree;
   std::array<std::int64_t, 4> xs{}, ys{};
   p.curve = &c;
+  p.hints = RootHints{}; // a walk's own rows (the vector of prepared curves is reused)
   p.ymin = p.ymax = c.p[0].y;
   for (int k = 0; k <= n; ++k) {
     xs[static_cast<std::size_t>(k)] = c.p[static_cast<std::size_t>(k)].x;
@@ -1062,7 +1078,7 @@ void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
         static_cast<double>((g.c[0] < 0 ? -g.c[0] : g.c[0]) + p.y_abs_rest) * 0x1p-50;
     const std::size_t mark = out.size();
     if (estimated_crossings(g, bound, Cuts{p.cut, p.cuts}, Cubic{p.x}, p.x_lipschitz, p.x_bound, v,
-                            t, out))
+                            t, out, 1, &p.hints, sy))
       return;
     out.resize(mark);
   }

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <span>
 #include <tuple>
@@ -85,6 +86,38 @@ void curve_crossings_into(const Curve& c, std::int64_t sy, Tie t, bool fast,
 // What the crossings of one curve with every row share, computed once (prepare_curve): the
 // power coefficients of x and y, x's Lipschitz bound and filter bound (PATH.CURVE.FILTER), the
 // cuts of [0, 1] at the estimated roots of y', and the control points' y-range.
+// Where the roots of a curve's last two rows were, one a cut interval of its derivative (NaN:
+// none there), so that the next row's Newton steps start near its root: the linear
+// extrapolation of the two (the roots of consecutive rows move smoothly along a piece), or the
+// last alone. Only a start: every estimate is still confined by exact signs, so the crossings
+// do not depend on it (PATH.CURVE.FILTER).
+struct RootHints {
+  std::array<double, 3> last{}, before{}, found{};
+  std::int64_t last_row = 0, before_row = 0;
+  int rows = 0; // rows recorded, up to 2
+  RootHints() { clear(found); }
+  static void clear(std::array<double, 3>& a) { a.fill(std::numeric_limits<double>::quiet_NaN()); }
+  // The start for cut interval i on row `row` (NaN: none).
+  [[nodiscard]] double start(int i, std::int64_t row) const {
+    const auto k = static_cast<std::size_t>(i);
+    if (rows == 0)
+      return std::numeric_limits<double>::quiet_NaN();
+    if (rows == 1 || last_row == before_row)
+      return last[k];
+    return last[k] + (last[k] - before[k]) * static_cast<double>(row - last_row) /
+                         static_cast<double>(last_row - before_row);
+  }
+  // Takes the roots found on `row` (in found) as the last, and clears found.
+  void record(std::int64_t row) {
+    before = last;
+    before_row = last_row;
+    last = found;
+    last_row = row;
+    rows = rows < 2 ? rows + 1 : 2;
+    clear(found);
+  }
+};
+
 struct PreparedCurve {
   const Curve* curve = nullptr;
   std::int64_t ymin = 0, ymax = 0;
@@ -94,6 +127,9 @@ struct PreparedCurve {
   double x_bound = 0.0;
   std::array<double, 4> cut{};
   int cuts = 1;
+  // The start of the next row's root estimates (not part of the curve: a walk's rows, in
+  // order, on one thread).
+  mutable RootHints hints;
 };
 void prepare_curve(const Curve& c, PreparedCurve& p);
 // The crossings of curve_crossings_into (fast), from a prepared curve: the same crossings,
