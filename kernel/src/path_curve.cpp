@@ -701,7 +701,7 @@ int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t,
     }
     t[static_cast<std::size_t>(n++)] = u;
     if (hints != nullptr)
-      hints->found[static_cast<std::size_t>(i)] = u;
+      hints->found_at(i, u);
   }
   return n;
 }
@@ -1039,7 +1039,7 @@ void prepare_curve(const Curve& c, PreparedCurve& p) {
   const int n = c.degree;
   std::array<std::int64_t, 4> xs{}, ys{};
   p.curve = &c;
-  p.hints = RootHints{}; // a walk's own rows (the vector of prepared curves is reused)
+  p.hints.reset(); // a walk's own rows (the vector of prepared curves is reused)
   p.ymin = p.ymax = c.p[0].y;
   for (int k = 0; k <= n; ++k) {
     xs[static_cast<std::size_t>(k)] = c.p[static_cast<std::size_t>(k)].x;
@@ -1047,12 +1047,16 @@ void prepare_curve(const Curve& c, PreparedCurve& p) {
     p.ymin = std::min(p.ymin, ys[static_cast<std::size_t>(k)]);
     p.ymax = std::max(p.ymax, ys[static_cast<std::size_t>(k)]);
   }
-  p.y = formula::curve_power_coefficients(ys, n == 3);
-  p.x = formula::curve_power_coefficients(xs, n == 3);
-  const Cubic x{p.x}, y{p.y};
+  // Computed from locals and stored once: read back from p right after its stores, the
+  // coefficients stalled on store forwarding (a fifth of cover_samples on DejaVu glyphs, whose
+  // quadratics meet few rows each).
+  const Cubic x{formula::curve_power_coefficients(xs, n == 3)},
+      y{formula::curve_power_coefficients(ys, n == 3)};
+  p.y = y.c;
+  p.x = x.c;
   p.x_lipschitz = lipschitz(x);
-  p.y_abs_rest = (p.y[1] < 0 ? -p.y[1] : p.y[1]) + (p.y[2] < 0 ? -p.y[2] : p.y[2]) +
-                 (p.y[3] < 0 ? -p.y[3] : p.y[3]);
+  p.y_abs_rest = (y.c[1] < 0 ? -y.c[1] : y.c[1]) + (y.c[2] < 0 ? -y.c[2] : y.c[2]) +
+                 (y.c[3] < 0 ? -y.c[3] : y.c[3]);
   p.x_bound = horner_error_bound(x);
   // g = y - s.y has y's coefficients but the constant: the same derivative, the same cuts.
   const Cuts cs = estimated_as_quadratic(y) ? Cuts{} : derivative_cuts(y);

@@ -92,29 +92,36 @@ void curve_crossings_into(const Curve& c, std::int64_t sy, Tie t, bool fast,
 // last alone. Only a start: every estimate is still confined by exact signs, so the crossings
 // do not depend on it (PATH.CURVE.FILTER).
 struct RootHints {
-  std::array<double, 3> last{}, before{}, found{};
+  std::array<double, 3> last, before, found; // valid where the masks' bits say
+  unsigned last_mask = 0, before_mask = 0, found_mask = 0;
   std::int64_t last_row = 0, before_row = 0;
-  int rows = 0; // rows recorded, up to 2
-  RootHints() { clear(found); }
-  static void clear(std::array<double, 3>& a) { a.fill(std::numeric_limits<double>::quiet_NaN()); }
+  // Forgets every row (cheap: no array is written).
+  void reset() { last_mask = before_mask = found_mask = 0; }
   // The start for cut interval i on row `row` (NaN: none).
   [[nodiscard]] double start(int i, std::int64_t row) const {
     const auto k = static_cast<std::size_t>(i);
-    if (rows == 0)
+    const unsigned bit = 1u << i;
+    if ((last_mask & bit) == 0)
       return std::numeric_limits<double>::quiet_NaN();
-    if (rows == 1 || last_row == before_row)
+    if ((before_mask & bit) == 0 || last_row == before_row)
       return last[k];
     return last[k] + (last[k] - before[k]) * static_cast<double>(row - last_row) /
                          static_cast<double>(last_row - before_row);
   }
-  // Takes the roots found on `row` (in found) as the last, and clears found.
+  // A root found in cut interval i on the row being estimated.
+  void found_at(int i, double t) {
+    found[static_cast<std::size_t>(i)] = t;
+    found_mask |= 1u << i;
+  }
+  // Takes the roots found on `row` as the last.
   void record(std::int64_t row) {
     before = last;
+    before_mask = last_mask;
     before_row = last_row;
     last = found;
+    last_mask = found_mask;
     last_row = row;
-    rows = rows < 2 ? rows + 1 : 2;
-    clear(found);
+    found_mask = 0;
   }
 };
 
