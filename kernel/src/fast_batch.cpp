@@ -118,22 +118,13 @@ bool one_triangle_runs(const Context& c, std::size_t i, const RunSink& sink, Fas
   if (t.status != TriangleStatus::kRasterized)
     return true;
   const auto tri = static_cast<std::uint32_t>(i);
-  std::int32_t ry = 0, rx = 0, rn = 0; // the open run
-  walk_triangle_fast_rows(t, c.width, c.height, y_first, y_last, c.isa,
-                          [&](std::int32_t x, std::int32_t y) {
-                            ++r.covered;
-                            if (rn > 0 && y == ry && x == rx + rn) {
-                              ++rn;
-                              return;
-                            }
-                            if (rn > 0)
-                              sink.run(sink.context, tri, ry, rx, rn);
-                            ry = y;
-                            rx = x;
-                            rn = 1;
-                          });
-  if (rn > 0)
-    sink.run(sink.context, tri, ry, rx, rn);
+  // The walk's rows as runs, from its row bits (a pixel a call cost a 4096^2 triangle's binary
+  // list 30 times its runs).
+  walk_triangle_fast_row_runs(t, c.width, c.height, y_first, y_last, c.isa,
+                              [&](std::int32_t y, std::int32_t x, std::int32_t n) {
+                                r.covered += static_cast<std::uint64_t>(n);
+                                sink.run(sink.context, tri, y, x, n);
+                              });
   return true;
 }
 

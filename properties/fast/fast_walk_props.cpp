@@ -60,6 +60,20 @@ RC_GTEST_PROP(FastWalk, EveryIsaEmitsThePlainWalksPixelsInOrder, ()) {
               " pixels, plain " + std::to_string(plain.size()) + "; " + fg::show(g, w, h));
     }
     RC_ASSERT(raster::fast_count_covered(t, w, h, isa) == plain.size());
+    // As runs (walk_triangle_fast_row_runs): maximal in their row, rows and runs in order,
+    // the same pixels.
+    std::vector<Px> from_runs;
+    std::int32_t last_y = -1, last_end = -1;
+    raster::walk_triangle_fast_row_runs(
+        t, w, h, 0, h - 1, isa, [&](std::int32_t y, std::int32_t x, std::int32_t n) {
+          RC_ASSERT(n >= 1);
+          RC_ASSERT(y > last_y || (y == last_y && x > last_end + 1)); // in order, maximal
+          for (std::int32_t k = 0; k < n; ++k)
+            from_runs.emplace_back(y, x + k);
+          last_y = y;
+          last_end = x + n - 1;
+        });
+    RC_ASSERT(from_runs == plain);
   }
 }
 

@@ -125,30 +125,28 @@ constexpr std::int32_t strip_rows(std::size_t words_per_row, std::size_t planes)
   return n.x1 < n.x0 ? PixelRect{} : n;
 }
 
-// Calls emit(x, y) for exactly the pixels walk_triangle_rows(t, width, height, y_first, y_last,
-// emit) emits, in the same order. Strips of whole tile rows from the first row (all of the
-// pixel bounds when they fit 4 KiB of bits) are decided by fast_cover_rect, then their set bits
-// emitted row by row.
-// Preconditions: width, height in [1, kMaxTargetSide]; isa_supported(isa).
-// rule: FAST.EQUALS.PLAIN
-template <class Emit>
-void walk_triangle_fast_rows(const TriangleSetup& t, std::int32_t width, std::int32_t height,
-                             std::int32_t y_first, std::int32_t y_last, Isa isa, Emit&& emit) {
+namespace fast_detail {
+// The covered bits of the rows y_first to y_last of walk_triangle_rows's bounds: row(y, x0, bits,
+// words) for each row, bit i of bits[i / 64] set when pixel x0 + i is covered, rows in order.
+// Strips of whole tile rows from the first row (all of the pixel bounds when they fit 4 KiB of
+// bits), each narrowed to the columns the triangle reaches in its rows (at most wpr words a
+// row), are decided by fast_cover_rect.
+template <class Row>
+void for_each_covered_row(const TriangleSetup& t, std::int32_t width, std::int32_t height,
+                          std::int32_t y_first, std::int32_t y_last, Isa isa, Row&& row) {
   const PixelRect r = rows_of(walk_bounds(t, width, height), y_first, y_last);
   if (r.empty())
     return;
   const auto wpr = static_cast<std::size_t>(r.x1 - r.x0 + 64) / 64;
-  const std::int32_t rows = fast_detail::strip_rows(wpr, 1);
+  const std::int32_t rows = strip_rows(wpr, 1);
   const std::size_t words = wpr * static_cast<std::size_t>(rows);
-  std::uint64_t stack[fast_detail::kStackWords];
+  std::uint64_t stack[kStackWords];
   std::vector<std::uint64_t> heap;
   std::uint64_t* buf = stack;
-  if (words > fast_detail::kStackWords) {
+  if (words > kStackWords) {
     heap.resize(words);
     buf = heap.data();
   }
-  // Strips of whole tile rows from the first row of the bounds, each narrowed to the columns
-  // the triangle reaches in its rows (at most wpr words a row).
   for (std::int32_t sy = r.y0; sy <= r.y1; sy += rows) {
     const PixelRect strip =
         narrow_to_rows(t, PixelRect{r.x0, sy, r.x1, std::min(sy + rows - 1, r.y1)}, 0);
@@ -156,15 +154,65 @@ void walk_triangle_fast_rows(const TriangleSetup& t, std::int32_t width, std::in
       continue;
     const auto spr = static_cast<std::size_t>(strip.x1 - strip.x0 + 64) / 64;
     fast_cover_rect(t, strip, 0, 0, isa, buf, spr);
-    for (std::int32_t y = strip.y0; y <= strip.y1; ++y) {
-      const std::uint64_t* row = buf + static_cast<std::size_t>(y - strip.y0) * spr;
-      for (std::size_t w = 0; w < spr; ++w) {
-        const std::int32_t x_base = strip.x0 + static_cast<std::int32_t>(w * 64);
-        for (std::uint64_t bits = row[w]; bits != 0; bits &= bits - 1)
-          emit(x_base + std::countr_zero(bits), y);
-      }
-    }
+    for (std::int32_t y = strip.y0; y <= strip.y1; ++y)
+      row(y, strip.x0, buf + static_cast<std::size_t>(y - strip.y0) * spr, spr);
   }
+}
+} // namespace fast_detail
+
+// Calls emit(x, y) for exactly the pixels walk_triangle_rows(t, width, height, y_first, y_last,
+// emit) emits, in the same order: the set bits of fast_detail::for_each_covered_row, row by row.
+// Preconditions: width, height in [1, kMaxTargetSide]; isa_supported(isa).
+// rule: FAST.EQUALS.PLAIN
+template <class Emit>
+void walk_triangle_fast_rows(const TriangleSetup& t, std::int32_t width, std::int32_t height,
+                             std::int32_t y_first, std::int32_t y_last, Isa isa, Emit&& emit) {
+  fast_detail::for_each_covered_row(
+      t, width, height, y_first, y_last, isa,
+      [&](std::int32_t y, std::int32_t x0, const std::uint64_t* row, std::size_t words) {
+        for (std::size_t w = 0; w < words; ++w) {
+          const std::int32_t x_base = x0 + static_cast<std::int32_t>(w * 64);
+          for (std::uint64_t bits = row[w]; bits != 0; bits &= bits - 1)
+            emit(x_base + std::countr_zero(bits), y);
+        }
+      });
+}
+
+// Calls run(y, x, n) for each maximal run of consecutive pixels x, x + 1, ..., x + n - 1 of a
+// row among those walk_triangle_fast_rows emits, rows and runs in its order: its pixels as
+// runs, taken from the row bits a word at a time (a large triangle's rows cost per run, not
+// per pixel: fast_runs_batch, the binary list of SCENE.OUTPUT.BINARY).
+// rule: FAST.EQUALS.PLAIN
+template <class Run>
+void walk_triangle_fast_row_runs(const TriangleSetup& t, std::int32_t width, std::int32_t height,
+                                 std::int32_t y_first, std::int32_t y_last, Isa isa, Run&& run) {
+  fast_detail::for_each_covered_row(
+      t, width, height, y_first, y_last, isa,
+      [&](std::int32_t y, std::int32_t x0, const std::uint64_t* row, std::size_t words) {
+        std::int32_t rx = 0, rn = 0; // the open run of the row
+        for (std::size_t w = 0; w < words; ++w) {
+          std::uint64_t bits = row[w];
+          std::int32_t at = x0 + static_cast<std::int32_t>(w * 64);
+          while (bits != 0) {
+            const int zeros = std::countr_zero(bits);
+            bits >>= zeros; // zeros < 64: bits is not 0
+            at += zeros;
+            const int ones = std::countr_one(bits);
+            if (rn > 0 && rx + rn == at) {
+              rn += ones;
+            } else {
+              if (rn > 0)
+                run(y, rx, rn);
+              rx = at;
+              rn = ones;
+            }
+            at += ones;
+            bits = ones == 64 ? 0 : bits >> ones;
+          }
+        }
+        if (rn > 0)
+          run(y, rx, rn);
+      });
 }
 
 // Calls emit(x, y) for exactly the pixels walk_triangle(t, width, height, emit) emits, in the
