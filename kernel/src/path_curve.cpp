@@ -737,13 +737,15 @@ bool estimated_crossings(const Cubic& g, double bound, const Cuts& cuts, const C
         continue;
       const int s0 = sign_at_grid(g, k, bound), s1 = sign_at_grid(g, k + 1, bound);
       std::int64_t a = k, b = k + 1, root = -1; // the region (a, b); root: a dyadic root in it
+      int sb = s1;                              // the sign of g at b
       if (s0 == 0 || s1 == 0) {
         root = s0 == 0 ? k : k + 1;
         a = root - 1;
         b = root + 1;
         if (a < 0 || b > kOne)
           return false;
-        if (sign_at_grid(g, a, bound) * sign_at_grid(g, b, bound) >= 0)
+        sb = sign_at_grid(g, b, bound);
+        if (sign_at_grid(g, a, bound) * sb >= 0)
           return false; // no sign change around the root: a multiple root, or none counted
       } else if (s0 == s1) {
         continue;
@@ -753,7 +755,7 @@ bool estimated_crossings(const Cubic& g, double bound, const Cuts& cuts, const C
         if (a < qb && qa < b)
           return false; // regions must be disjoint
       }
-      const int dir = dir_sign * sign_at_grid(g, b, bound);
+      const int dir = dir_sign * sb; // the sign at b, known: not evaluated again
       Crossing c;
       if (root >= 0) {
         // x at t = root / 2^30 exactly: P(k / 2^30) 2^90, then floor and integrality.
