@@ -46,7 +46,7 @@ struct E {
 
 // The rounding error of a * b, exactly (Dekker's product with Veltkamp's split: no fused
 // multiply-add needed, which the baseline instruction set lacks; no overflow in the ranges here).
-double product_error(double a, double b, double p) {
+[[gnu::always_inline]] inline double product_error(double a, double b, double p) {
   constexpr double kSplit = 134217729.0; // 2^27 + 1
   const double ca = kSplit * a, cb = kSplit * b;
   const double ah = ca - (ca - a), al = a - ah;
@@ -58,7 +58,7 @@ E exact(double v) {
   return E{v, 0.0};
 }
 
-E add(E a, E b) {
+[[gnu::always_inline]] inline E add(E a, E b) {
   const double s = a.v + b.v;
   if (a.e == 0 && b.e == 0) { // TwoSum: the rounding error, exactly
     const double bb = s - a.v;
@@ -68,15 +68,15 @@ E add(E a, E b) {
   return E{s, (a.e + b.e + kU * std::abs(s)) * kUp};
 }
 
-E neg(E a) {
+[[gnu::always_inline]] inline E neg(E a) {
   return E{-a.v, a.e};
 }
 
-E sub(E a, E b) {
+[[gnu::always_inline]] inline E sub(E a, E b) {
   return add(a, neg(b));
 }
 
-E mul(E a, E b) {
+[[gnu::always_inline]] inline E mul(E a, E b) {
   if ((a.v == 0 && a.e == 0) || (b.v == 0 && b.e == 0))
     return E{};
   const double p = a.v * b.v;
@@ -94,7 +94,7 @@ E scale(E a, int k) {
 }
 
 // a / b; b must be bounded away from 0 (|b.v| > 2 b.e), else ok is cleared.
-E div(E a, E b, bool& ok) {
+[[gnu::always_inline]] inline E div(E a, E b, bool& ok) {
   const double q = a.v / b.v;
   if (a.e == 0 && b.e == 0) {
     const double r = (a.v - q * b.v) - product_error(q, b.v, q * b.v); // the remainder, exactly
