@@ -44,18 +44,25 @@ constexpr Command kCommands[] = {
 #ifdef RASTRULES_CLI_FRONT
 // rule: SCENE.CLI.FRONT
 // Runs rastrules-full, the program beside this one, with this one's arguments (argv as given:
-// the same options, -q/-v included; its exit status and signals are the command's own). Returns
-// only when it cannot be started, with the one-line error.
+// the same options, -q/-v included; its exit status and signals are the command's own). Beside:
+// in the directory of /proc/self/exe (symbolic links resolved); where /proc is not mounted, of
+// argv[0] when it names a path, else rastrules-full is looked for on PATH as rastrules was.
+// Returns only when it cannot be started, with the one-line error.
 int run_full(char** argv, const std::string& command) {
+  constexpr std::string_view kFull = "rastrules-full";
   char self[PATH_MAX];
   const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
-  std::string full = "rastrules-full";
-  if (n > 0) {
-    const std::string_view path(self, static_cast<std::size_t>(n));
-    full = std::string(path.substr(0, path.rfind('/') + 1)) + full;
-  }
+  const std::string_view path =
+      n > 0 ? std::string_view(self, static_cast<std::size_t>(n)) : std::string_view(argv[0]);
+  const std::size_t slash = path.rfind('/');
+  std::string full(kFull);
+  if (slash != std::string_view::npos)
+    full = std::string(path.substr(0, slash + 1)) + full;
   argv[0] = full.data();
-  ::execv(full.c_str(), argv);
+  if (slash != std::string_view::npos)
+    ::execv(full.c_str(), argv);
+  else
+    ::execvp(full.c_str(), argv);
   const int err = errno;
   return rastrules::cli::error("the command " + rastrules::cli::shown_value(command) +
                                " is run by " + full + ", which cannot be started (" +
