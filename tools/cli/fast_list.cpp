@@ -192,18 +192,10 @@ FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, st
           s.count += k;
           if (s.count > s.max)
             throw Stop{};
-          bool in_order = true;
-          if (s.binary != nullptr) {
-            for (std::size_t i = 0; i < n; ++i)
-              in_order &= s.binary->add_run(s.first_prim + r[i].tri, r[i].y, r[i].x,
-                                            static_cast<std::uint32_t>(r[i].n)) ==
-                          io::FragmentBinaryWriter::Added::kOk;
-          } else {
-            for (std::size_t i = 0; i < n; ++i)
-              in_order &= s.json->add_run(s.first_prim + r[i].tri, r[i].y, r[i].x,
-                                          static_cast<std::uint32_t>(r[i].n));
-          }
-          s.in_order = s.in_order && in_order;
+          for (std::size_t i = 0; i < n; ++i)
+            s.in_order = add_run(s.json, s.binary, s.first_prim + r[i].tri, r[i].y, r[i].x,
+                                 static_cast<std::uint32_t>(r[i].n)) &&
+                         s.in_order;
         }};
     try {
       const raster::FastBatchResult r =

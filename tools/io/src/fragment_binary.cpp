@@ -99,11 +99,6 @@ FragmentBinaryWriter::FragmentBinaryWriter(std::FILE* out, FragmentBinaryHeader 
   put_u32(buffer_, 0); // reserved
 }
 
-bool FragmentBinaryWriter::extends(const Key& k) const {
-  return run_open_ && k.prim == run_first_.prim && k.seg == run_first_.seg && k.y == run_first_.y &&
-         std::int64_t{k.x} == std::int64_t{run_first_.x} + run_length_;
-}
-
 FragmentBinaryWriter::Added FragmentBinaryWriter::add(const Fragment& f) {
   if (unsupported_field(f, header_))
     return Added::kUnsupported;
@@ -124,25 +119,15 @@ FragmentBinaryWriter::Added FragmentBinaryWriter::add(const Fragment& f) {
   return Added::kOk;
 }
 
+void FragmentBinaryWriter::append_little_endian(const std::uint32_t (&fields)[5]) {
+  for (const std::uint32_t v : fields)
+    put_u32(buffer_, v);
+}
+
 void FragmentBinaryWriter::close_run() {
   if (!run_open_)
     return;
-  if (header_.mask_bytes == 0 && std::endian::native == std::endian::little) {
-    close_plain_run();
-    return;
-  }
-  // The run's 20 bytes in one append (five appends of four bytes each checked the capacity).
-  const std::uint32_t fields[5] = {run_first_.prim,
-                                   run_first_.seg < 0 ? kFragmentBinaryNoSeg
-                                                      : static_cast<std::uint32_t>(run_first_.seg),
-                                   static_cast<std::uint32_t>(run_first_.y),
-                                   static_cast<std::uint32_t>(run_first_.x), run_length_};
-  if constexpr (std::endian::native == std::endian::little) {
-    buffer_.append(reinterpret_cast<const char*>(fields), sizeof fields);
-  } else {
-    for (const std::uint32_t v : fields)
-      put_u32(buffer_, v);
-  }
+  append_run_fields();
   if (header_.mask_bytes != 0) {
     for (const std::uint16_t m : run_masks_) {
       const char b[2] = {static_cast<char>(m & 0xFF), static_cast<char>(m >> 8)};
@@ -152,10 +137,7 @@ void FragmentBinaryWriter::close_run() {
       buffer_.append(2, '\0');
     run_masks_.clear();
   }
-  run_open_ = false;
-  ++runs_;
-  if (buffer_.size() >= kBufferBytes)
-    flush_buffer();
+  end_run();
 }
 
 void FragmentBinaryWriter::flush_buffer() {

@@ -252,7 +252,9 @@ private:
         return nullptr;
     }
     // A number that goes on here (a ninth digit, a point, an exponent) is declined by the
-    // caller, which takes only its separator next.
+    // caller, which takes only its separator next. The value as short_real's (the same lines:
+    // a helper shared by both measured 2 ms slower on `render --count` of 10^6 triangles; the
+    // properties compare both readers with the general one).
     if (after == 0) {
       out = static_cast<float>(negative ? -m : m);
     } else {

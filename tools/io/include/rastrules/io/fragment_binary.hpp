@@ -74,6 +74,8 @@ public:
     if (count_ > 0 && !(last_.prim < prim ||
                         (last_.prim == prim && (last_.y < y || (last_.y == y && last_.x < x)))))
       return Added::kOutOfOrder;
+    // extends(Key{prim, y, x, -1}), written out: through a Key built here, 10^6 small
+    // triangles' binary list took 10 ms more.
     if (run_open_ && prim == run_first_.prim && run_first_.seg == -1 && y == run_first_.y &&
         std::int64_t{x} == std::int64_t{run_first_.x} + run_length_) {
       run_length_ += n;
@@ -98,22 +100,30 @@ private:
   // The buffer is written out when it holds this many bytes.
   static constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
   void close_run();
-  // close_run for an open run without masks (mask_bytes 0): its 20 bytes in one append.
-  void close_plain_run() {
-    if constexpr (std::endian::native == std::endian::little) {
-      const std::uint32_t fields[5] = {
-          run_first_.prim,
-          run_first_.seg < 0 ? kFragmentBinaryNoSeg : static_cast<std::uint32_t>(run_first_.seg),
-          static_cast<std::uint32_t>(run_first_.y), static_cast<std::uint32_t>(run_first_.x),
-          run_length_};
+  // The open run's 20 bytes: one append on a little-endian host, four bytes at a time elsewhere.
+  void append_run_fields() {
+    const std::uint32_t fields[5] = {
+        run_first_.prim,
+        run_first_.seg < 0 ? kFragmentBinaryNoSeg : static_cast<std::uint32_t>(run_first_.seg),
+        static_cast<std::uint32_t>(run_first_.y), static_cast<std::uint32_t>(run_first_.x),
+        run_length_};
+    if constexpr (std::endian::native == std::endian::little)
       buffer_.append(reinterpret_cast<const char*>(fields), sizeof fields);
-      run_open_ = false;
-      ++runs_;
-      if (buffer_.size() >= kBufferBytes)
-        flush_buffer();
-    } else {
-      close_run();
-    }
+    else
+      append_little_endian(fields);
+  }
+  void append_little_endian(const std::uint32_t (&fields)[5]);
+  // The open run is written: counted, and the buffer flushed when full.
+  void end_run() {
+    run_open_ = false;
+    ++runs_;
+    if (buffer_.size() >= kBufferBytes)
+      flush_buffer();
+  }
+  // close_run for an open run without masks (mask_bytes 0).
+  void close_plain_run() {
+    append_run_fields();
+    end_run();
   }
   void flush_buffer();
 
@@ -130,7 +140,10 @@ private:
   };
   // Whether the pixel at k continues the open run (its row's next pixel, the same primitive and
   // segment); k comes after last_ (checked first).
-  [[nodiscard]] bool extends(const Key& k) const;
+  [[nodiscard]] bool extends(const Key& k) const {
+    return run_open_ && k.prim == run_first_.prim && k.seg == run_first_.seg &&
+           k.y == run_first_.y && std::int64_t{k.x} == std::int64_t{run_first_.x} + run_length_;
+  }
   // The open run: its first fragment and its masks.
   bool run_open_ = false;
   Key run_first_{};
