@@ -65,11 +65,12 @@ std::vector<std::string> RunResult::err_lines() const {
   return lines;
 }
 
-RunResult run_cli(const std::vector<std::string>& args, const std::string& stdin_path) {
-  const TempDir io;
+namespace {
+
+RunResult run_command(std::string cmd, const std::vector<std::string>& args,
+                      const std::string& stdin_path, const TempDir& io) {
   const auto out_path = io / "stdout";
   const auto err_path = io / "stderr";
-  std::string cmd = shell_quote(RASTRULES_CLI);
   for (const std::string& a : args)
     cmd += " " + shell_quote(a);
   cmd += " <" + shell_quote(stdin_path) + " >" + shell_quote(out_path.string()) + " 2>" +
@@ -81,6 +82,28 @@ RunResult run_cli(const std::vector<std::string>& args, const std::string& stdin
   r.err = read_file(err_path);
   return r;
 }
+
+} // namespace
+
+RunResult run_cli(const std::vector<std::string>& args, const std::string& stdin_path) {
+  const TempDir io;
+  return run_command(shell_quote(RASTRULES_CLI), args, stdin_path, io);
+}
+
+#ifdef RASTRULES_TEST_PEAK // the CLI tests (tests/cli/CMakeLists.txt) build the helper
+RunResult run_cli_peak(const std::vector<std::string>& args, long& peak_kib) {
+  const TempDir io;
+  const auto peak_path = io / "peak";
+  RunResult r = run_command(shell_quote(RASTRULES_TEST_PEAK) + " " +
+                                shell_quote(peak_path.string()) + " " + shell_quote(RASTRULES_CLI),
+                            args, "/dev/null", io);
+  peak_kib = -1;
+  std::istringstream in(read_file(peak_path));
+  if (long v = 0; in >> v)
+    peak_kib = v;
+  return r;
+}
+#endif
 
 std::string read_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

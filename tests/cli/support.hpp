@@ -44,6 +44,11 @@ struct RunResult {
 RunResult run_cli(const std::vector<std::string>& args,
                   const std::string& stdin_path = "/dev/null");
 
+// The same, with the peak resident set of that run alone in KiB (its own ru_maxrss, through
+// the small program rastrules_test_peak: a test process's getrusage(RUSAGE_CHILDREN) counts
+// its own size at every fork), or -1 when it could not be measured.
+RunResult run_cli_peak(const std::vector<std::string>& args, long& peak_kib);
+
 std::string read_file(const std::filesystem::path& path);
 
 // Writes `scene_json` to a fresh temporary directory and runs
