@@ -686,15 +686,23 @@ int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t,
       if (gu == 0.0)
         break;
       ((gu < 0.0) == rising ? lo : hi) = u;
+      // Halley's step (cubic convergence: the start, from the rows before or the chord, is
+      // typically 2^-6 off, which Newton's method took three or four steps to settle).
       const double d = (3.0 * c3 * u + 2.0 * c2) * u + c1;
-      double next = d != 0.0 ? u - gu / d : lo;
-      if (!(next > lo && next < hi))
+      const double dd = 6.0 * c3 * u + 2.0 * c2;
+      const double den = 2.0 * d * d - gu * dd;
+      double next = den != 0.0 ? u - 2.0 * gu * d / den : lo;
+      bool halley = true;
+      if (!(next > lo && next < hi)) {
         next = 0.5 * (lo + hi);
-      // A Newton step of 2^-24 leaves an error of the order of its square (times |g''| / |g'|):
-      // far below the 2^-30 grid the estimate is checked on, which also takes a neighbour's
-      // cell; an estimate left outside them only sends the row to the exact paths. (2^-38 took
-      // a step more a root, most of the estimates' time on cubic glyphs.)
-      const bool settled = std::abs(next - u) <= 0x1p-24;
+        halley = false;
+      }
+      // A Halley step s leaves an error of the order of s^3 (times a ratio of g's derivatives
+      // of order one on glyph curves): settled when s <= 2^-13, or when s <= 2^-24 whatever the
+      // step was. The check on the 2^-30 grid that follows takes a neighbour's cell too; an
+      // estimate left outside them only sends the row to the exact paths.
+      const double step = next - u;
+      const bool settled = std::abs(step) <= 0x1p-24 || (halley && std::abs(step) <= 0x1p-13);
       u = next;
       if (settled)
         break;
