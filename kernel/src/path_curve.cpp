@@ -553,27 +553,30 @@ std::int64_t lipschitz(const Cubic& x) {
 // E = 2^-50 sum |e_j| (bound) of the double value v. With F = floor(v), the computed v - F is
 // within 2^-53 of the exact difference d (rounded to nearest, |d| < 1), so a computed value
 // above m = 2^-40 + 2 max(L 2^-30, E) makes d > L 2^-30 + E, and one below 1 - m makes
-// d < 1 - (L 2^-30 + E): then F < x(t) < F + 1 on the whole interval, and F is returned;
-// nothing where it cannot tell. m and 1 - m are exact (their bits lie within 2^-49 .. 2^1).
+// d < 1 - (L 2^-30 + E): then F < x(t) < F + 1 on the whole interval, F is written to
+// floor_out and true returned; false where it cannot tell. m and 1 - m are exact (their bits
+// lie within 2^-49 .. 2^1). (A bool and an integer, not an optional: one returned in two
+// registers was stored and reloaded as 16 bytes, stalling on store forwarding.)
 // rule: PATH.CURVE.FILTER
-std::optional<std::int64_t> filter_floor(const Cubic& x, std::int64_t lip, double bound,
-                                         std::int64_t k) {
+bool filter_floor(const Cubic& x, std::int64_t lip, double bound, std::int64_t k,
+                  std::int64_t& floor_out) {
   const double v = x.approx(grid_point(k));
   const std::int64_t f = floor_to_int(v);
   const double m = 0x1p-40 + 2.0 * std::max(grid_point(lip), bound);
   const double frac = v - static_cast<double>(f); // |f| < 2^27: exact as a double
-  if (frac > m && frac < 1.0 - m)
-    return f;
-  return std::nullopt;
+  floor_out = f;
+  return frac > m && frac < 1.0 - m;
 }
 
-// lip = lipschitz(x) and bound = horner_error_bound(x), which do not depend on the row.
-bool crossing_on(const Cubic& x, std::int64_t lip, double bound, std::int64_t k, int dir,
-                 Crossing& out) {
-  if (const std::optional<std::int64_t> f = filter_floor(x, lip, bound, k)) {
-    out = Crossing{*f, dir};
+// lip = lipschitz(x) and bound = horner_error_bound(x), which do not depend on the row. Returns
+// whether the crossing's threshold F (floor(x_c), x_c not an integer) is found, F in threshold.
+// (A plain bool and integer: a Crossing built in a local, or an optional, was stored in two
+// halves and reloaded as 16 bytes, a store-forwarding stall that was a sixth of the row
+// estimates' time.)
+bool crossing_on(const Cubic& x, std::int64_t lip, double bound, std::int64_t k,
+                 std::int64_t& threshold) {
+  if (filter_floor(x, lip, bound, k, threshold))
     return true;
-  }
   // First a Lipschitz bound: |x'| <= L = |e1| + 2 |e2| + 3 |e3| on [0, 1], so x_c lies within
   // L 2^-30 of x(k / 2^30), which scaled() gives exactly (times 2^90); B = L 2^60 < 2^90.
   {
@@ -582,7 +585,7 @@ bool crossing_on(const Cubic& x, std::int64_t lip, double bound, std::int64_t k,
     const Wide one = Wide{1} << (3 * kFastBits);
     const Wide f = xk >> (3 * kFastBits); // floor(xk / 2^90): >> is arithmetic on __int128
     if (formula::curve_strictly_between<Wide>(xk - lip_scaled, xk + lip_scaled, f, one)) {
-      out = Crossing{static_cast<std::int64_t>(f), dir};
+      threshold = static_cast<std::int64_t>(f);
       return true;
     }
   }
@@ -594,7 +597,7 @@ bool crossing_on(const Cubic& x, std::int64_t lip, double bound, std::int64_t k,
   const Wide f = wide_floor_div(xmin, scale);
   if (!formula::curve_strictly_between<Wide>(xmin, xmax, f, scale))
     return false; // an integer in reach of x_c: decide exactly on the rational path
-  out = Crossing{static_cast<std::int64_t>(f), dir};
+  threshold = static_cast<std::int64_t>(f);
   return true;
 }
 
@@ -764,15 +767,15 @@ bool estimated_crossings(const Cubic& g, double bound, const Cuts& cuts, const C
           return false; // regions must be disjoint
       }
       const int dir = dir_sign * sb; // the sign at b, known: not evaluated again
-      Crossing c;
+      std::int64_t threshold = 0;
       if (root >= 0) {
         // x at t = root / 2^30 exactly: P(k / 2^30) 2^90, then floor and integrality.
-        c = Crossing{threshold_of(x.scaled(root), Wide{1} << (3 * kFastBits), t), dir};
-      } else if (!crossing_on(x, x_lip, x_bound, k, dir, c)) {
+        threshold = threshold_of(x.scaled(root), Wide{1} << (3 * kFastBits), t);
+      } else if (!crossing_on(x, x_lip, x_bound, k, threshold)) {
         return false;
       }
       regions[static_cast<std::size_t>(r)] = {a, b};
-      found.push_back(c);
+      found.emplace_back(threshold, dir);
       confined = true;
       break;
     }
@@ -1020,10 +1023,10 @@ bool scan_crossings(const Cubic& g, const Cubic& x, std::vector<Crossing>& out) 
     const int s0 = wide_sign(g.scaled(k)), s1 = wide_sign(g.scaled(k + 1));
     if (s0 != sa || s1 != sb)
       return false;
-    Crossing c;
-    if (!crossing_on(x, lipschitz(x), horner_error_bound(x), k, sb, c))
+    std::int64_t threshold = 0;
+    if (!crossing_on(x, lipschitz(x), horner_error_bound(x), k, threshold))
       return false;
-    found.push_back(c);
+    found.emplace_back(threshold, sb);
   }
   return true;
 }
@@ -1220,7 +1223,10 @@ std::optional<int> curve_filter_sign(const std::array<std::int64_t, 4>& c, std::
 std::optional<std::int64_t> curve_filter_floor(const std::array<std::int64_t, 4>& e,
                                                std::int64_t k) {
   const Cubic x{e};
-  return filter_floor(x, lipschitz(x), horner_error_bound(x), k);
+  std::int64_t f = 0;
+  if (filter_floor(x, lipschitz(x), horner_error_bound(x), k, f))
+    return f;
+  return std::nullopt;
 }
 
 } // namespace rastrules::path::detail

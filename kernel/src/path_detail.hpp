@@ -92,36 +92,40 @@ void curve_crossings_into(const Curve& c, std::int64_t sy, Tie t, bool fast,
 // last alone. Only a start: every estimate is still confined by exact signs, so the crossings
 // do not depend on it (PATH.CURVE.FILTER).
 struct RootHints {
-  std::array<double, 3> last, before, found; // valid where the masks' bits say
-  unsigned last_mask = 0, before_mask = 0, found_mask = 0;
-  std::int64_t last_row = 0, before_row = 0;
-  // Forgets every row (cheap: no array is written).
-  void reset() { last_mask = before_mask = found_mask = 0; }
+  // Three rows' roots in rotating slots (record() moves indices, not arrays: a copy of the
+  // roots just found, read as 16 bytes right after their 8-byte stores, stalled on store
+  // forwarding on every row).
+  std::array<std::array<double, 3>, 3> roots; // valid where masks' bits say
+  std::array<unsigned, 3> masks{};
+  std::array<std::int64_t, 3> rows{};
+  std::uint8_t last = 0, before = 1, found = 2; // the slots
+  // Forgets every row (cheap: no root is written).
+  void reset() { masks = {0, 0, 0}; }
   // The start for cut interval i on row `row` (NaN: none).
   [[nodiscard]] double start(int i, std::int64_t row) const {
     const auto k = static_cast<std::size_t>(i);
     const unsigned bit = 1u << i;
-    if ((last_mask & bit) == 0)
+    if ((masks[last] & bit) == 0)
       return std::numeric_limits<double>::quiet_NaN();
-    if ((before_mask & bit) == 0 || last_row == before_row)
-      return last[k];
-    return last[k] + (last[k] - before[k]) * static_cast<double>(row - last_row) /
-                         static_cast<double>(last_row - before_row);
+    const double l = roots[last][k];
+    if ((masks[before] & bit) == 0 || rows[last] == rows[before])
+      return l;
+    return l + (l - roots[before][k]) * static_cast<double>(row - rows[last]) /
+                   static_cast<double>(rows[last] - rows[before]);
   }
   // A root found in cut interval i on the row being estimated.
   void found_at(int i, double t) {
-    found[static_cast<std::size_t>(i)] = t;
-    found_mask |= 1u << i;
+    roots[found][static_cast<std::size_t>(i)] = t;
+    masks[found] |= 1u << i;
   }
   // Takes the roots found on `row` as the last.
   void record(std::int64_t row) {
+    rows[found] = row;
+    const std::uint8_t free = before;
     before = last;
-    before_mask = last_mask;
-    before_row = last_row;
     last = found;
-    last_mask = found_mask;
-    last_row = row;
-    found_mask = 0;
+    found = free;
+    masks[found] = 0;
   }
 };
 
