@@ -548,24 +548,31 @@ std::int64_t lipschitz(const Cubic& x) {
          3 * (x.c[3] < 0 ? -x.c[3] : x.c[3]);
 }
 
-// The double filter (PATH.CURVE.FILTER) of a crossing's x on [k, k + 1] / 2^30: x_c lies
-// within L 2^-30 of x(k / 2^30) (lip = L, the Lipschitz bound), which lies within
+// The double filter (PATH.CURVE.FILTER) of a crossing's x at a root t_c within 2^-30 of t
+// (t in [0, 1] a double: on [k, k + 1] / 2^30 with t = k / 2^30, or near a computed root):
+// x_c lies within L 2^-30 of x(t) (lip = L, the Lipschitz bound), which lies within
 // E = 2^-50 sum |e_j| (bound) of the double value v. With F = floor(v), the computed v - F is
 // within 2^-53 of the exact difference d (rounded to nearest, |d| < 1), so a computed value
 // above m = 2^-40 + 2 max(L 2^-30, E) makes d > L 2^-30 + E, and one below 1 - m makes
-// d < 1 - (L 2^-30 + E): then F < x(t) < F + 1 on the whole interval, F is written to
+// d < 1 - (L 2^-30 + E): then F < x_c < F + 1, F is written to
 // floor_out and true returned; false where it cannot tell. m and 1 - m are exact (their bits
 // lie within 2^-49 .. 2^1). (A bool and an integer, not an optional: one returned in two
 // registers was stored and reloaded as 16 bytes, stalling on store forwarding.)
 // rule: PATH.CURVE.FILTER
-bool filter_floor(const Cubic& x, std::int64_t lip, double bound, std::int64_t k,
-                  std::int64_t& floor_out) {
-  const double v = x.approx(grid_point(k));
+bool filter_floor_at(const Cubic& x, std::int64_t lip, double bound, double t,
+                     std::int64_t& floor_out) {
+  const double v = x.approx(t);
   const std::int64_t f = floor_to_int(v);
   const double m = 0x1p-40 + 2.0 * std::max(grid_point(lip), bound);
   const double frac = v - static_cast<double>(f); // |f| < 2^27: exact as a double
   floor_out = f;
   return frac > m && frac < 1.0 - m;
+}
+
+// The same at t = k / 2^30.
+bool filter_floor(const Cubic& x, std::int64_t lip, double bound, std::int64_t k,
+                  std::int64_t& floor_out) {
+  return filter_floor_at(x, lip, bound, grid_point(k), floor_out);
 }
 
 // lip = lipschitz(x) and bound = horner_error_bound(x), which do not depend on the row. Returns
@@ -726,10 +733,58 @@ int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t,
 // dyadic root is the region's root, where x is exact. The direction is the sign of g after the
 // root (times dir_sign). Signs come through the double filter (sign_at_grid).
 // rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
+// The crossings of a quadratic g (c3 = 0, c2 != 0, no root at t = 0 or 1) certified by the
+// quadratic formula's own error bound (PATH.CURVE.FILTER): the discriminant D is exact in
+// integers and, below 2^53, in double; sqrt, the same-sign sum c1 + sgn(c1) sqrt(D), the halving
+// and one division leave each computed root within 3.01 u < 2^-51 of the true one relatively
+// (u = 2^-53; no cancellation), so within 2^-50 max(1, |r|) absolutely. A root farther than
+// 2^-40 inside (0, 1) or outside [0, 1] is known to lie there; two roots inside more than 2^-40
+// apart are distinct, the smaller one crossed in direction -sgn(c2), the larger +sgn(c2) (times
+// dir_sign); each x_c is within L 2^-50 < L 2^-30 of x at the computed root, so filter_floor's
+// test decides its floor as on a grid cell. Returns whether it decided (crossings appended);
+// false (nothing appended) leaves the row to the grid estimates. v: g's sign variations, which
+// the count must match in parity and not exceed (Descartes), a check that costs nothing.
+bool quadratic_crossings(const Cubic& g, const Cubic& x, std::int64_t x_lip, double x_bound, int v,
+                         std::vector<Crossing>& found, int dir_sign) {
+  const Wide disc = formula::curve_discriminant(Wide{g.c[0]}, Wide{g.c[1]}, Wide{g.c[2]});
+  constexpr Wide kExact = Wide{1} << 53;
+  if (disc <= 0 || disc >= kExact)
+    return false; // no real root, a double one, or D not exact in double: the other paths
+  const double c0 = static_cast<double>(g.c[0]), c1 = static_cast<double>(g.c[1]),
+               c2 = static_cast<double>(g.c[2]);
+  const double q = -0.5 * (c1 + std::copysign(std::sqrt(static_cast<double>(disc)), c1));
+  double r0 = q / c2, r1 = c0 / q; // q != 0: |q| >= sqrt(D) / 2 > 0
+  if (r0 > r1)
+    std::swap(r0, r1);
+  constexpr double kMargin = 0x1p-40;
+  const auto inside = [&](double r) { return r > kMargin && r < 1.0 - kMargin; };
+  const auto outside = [&](double r) { return r < -kMargin || r > 1.0 + kMargin; };
+  if (!(inside(r0) || outside(r0)) || !(inside(r1) || outside(r1)))
+    return false;
+  const int n = (inside(r0) ? 1 : 0) + (inside(r1) ? 1 : 0);
+  if (n > v || (v - n) % 2 != 0 || (n == 2 && !(r1 - r0 > kMargin)))
+    return false;
+  const int first_dir = (g.c[2] > 0 ? -1 : 1) * dir_sign;
+  std::array<std::int64_t, 2> floors{};
+  int k = 0;
+  for (const double r : {r0, r1}) {
+    if (inside(r) && !filter_floor_at(x, x_lip, x_bound, r, floors[static_cast<std::size_t>(k++)]))
+      return false;
+  }
+  k = 0;
+  if (inside(r0))
+    found.emplace_back(floors[static_cast<std::size_t>(k++)], first_dir);
+  if (inside(r1))
+    found.emplace_back(floors[static_cast<std::size_t>(k)], -first_dir);
+  return true;
+}
+
 bool estimated_crossings(const Cubic& g, double bound, const Cuts& cuts, const Cubic& x,
                          std::int64_t x_lip, double x_bound, int v, Tie t,
                          std::vector<Crossing>& found, int dir_sign = 1, RootHints* hints = nullptr,
                          std::int64_t row = 0) {
+  if (g.c[3] == 0 && g.c[2] != 0 && quadratic_crossings(g, x, x_lip, x_bound, v, found, dir_sign))
+    return true;
   constexpr std::int64_t kOne = std::int64_t{1} << kFastBits;
   std::array<double, 3> est{};
   const int n = root_estimates(g, cuts, est, hints, row);

@@ -216,4 +216,73 @@ RC_GTEST_PROP(PathCurveFilter, FloorHoldsOnTheWholeIntervalWhereItDecides, ()) {
   RC_CLASSIFY(deferred > 0, "deferred: x within its error bound of an integer");
 }
 
+// The quadratic rows of the filter (quadratic_crossings: the quadratic formula's error bound,
+// PATH.CURVE.FILTER): a quadratic curve's crossings of a sample row by the integer paths (the
+// filter first) equal the rational path's, with every tie sign, on rows chosen where the filter
+// is most likely to be wrong: next to the y-extremum (two roots close together, a tiny
+// discriminant), one raw unit from an end's y (a root next to t = 0 or 1), through the point at
+// t = 1/2 made a whole raw point (x_c an integer: only the tie sign decides), and anywhere. Found
+// necessary 2026-11-28, when the quadratic rows stopped being confined on the 2^30 grid.
+// rule: PATH.CURVE.FILTER, PATH.CURVE.SAMPLE
+RC_GTEST_PROP(PathCurveFilter, QuadraticRowsGiveTheRationalPathsCrossings, ()) {
+  std::array<std::int64_t, 4> xs = controls(), ys = controls();
+  const int kind = *rc::gen::element(0, 1, 2, 3);
+  if (kind == 3) { // q0 + 2 q1 + q2 = 0 mod 4: the point at t = 1/2 is a raw point
+    for (std::array<std::int64_t, 4>* q : {&xs, &ys}) {
+      std::array<std::int64_t, 4>& v = *q;
+      v[0] = std::clamp(v[0], -kMaxRaw + 4, kMaxRaw - 4);
+      v[1] = std::clamp(v[1], -kMaxRaw + 4, kMaxRaw - 4);
+      v[2] = std::clamp(v[2], -kMaxRaw + 4, kMaxRaw - 4);
+      if ((v[0] + v[2]) % 2 != 0)
+        ++v[2];
+      if (((v[0] + v[2]) / 2 + v[1]) % 2 != 0)
+        ++v[1];
+    }
+  }
+  kd::Curve c;
+  c.degree = 2;
+  for (std::size_t k = 0; k < 3; ++k)
+    c.p[k] =
+        rastrules::path::Point{static_cast<std::int32_t>(std::clamp(xs[k], -kMaxRaw, kMaxRaw - 1)),
+                               static_cast<std::int32_t>(std::clamp(ys[k], -kMaxRaw, kMaxRaw - 1))};
+  c.p[3] = c.p[2];
+  const std::int64_t y0 = c.p[0].y, y1 = c.p[1].y, y2 = c.p[2].y;
+  const std::int64_t lo = std::min({y0, y1, y2}), hi = std::max({y0, y1, y2});
+  // The y-extremum at t = (y0 - y1) / (y0 - 2 y1 + y2), where the rows' two roots meet.
+  const std::int64_t a = y0 - 2 * y1 + y2;
+  std::int64_t extremum = lo + (hi - lo) / 2;
+  if (a != 0) {
+    const long double t = static_cast<long double>(y0 - y1) / static_cast<long double>(a);
+    if (t > 0 && t < 1)
+      extremum = std::llround((1 - t) * (1 - t) * y0 + 2 * t * (1 - t) * y1 + t * t * y2);
+  }
+  std::int64_t sy = 0;
+  if (kind == 3)
+    sy = (y0 + 2 * y1 + y2) / 4;
+  else if (kind == 0)
+    sy = extremum + *rc::gen::inRange<std::int64_t>(-3, 4);
+  else if (kind == 1)
+    sy = *rc::gen::element(y0, y2) + *rc::gen::element<std::int64_t>(-1, 1);
+  else
+    sy = *rc::gen::inRange<std::int64_t>(lo, hi + 1);
+  const kd::Tie t{*rc::gen::arbitrary<bool>(), *rc::gen::arbitrary<bool>()};
+  std::vector<kd::Crossing> fast = kd::curve_crossings(c, sy, t);
+  std::vector<kd::Crossing> exact = kd::curve_crossings_exact(c, sy, t);
+  const auto key = [](const kd::Crossing& p, const kd::Crossing& q) {
+    return std::tie(p.threshold, p.dir) < std::tie(q.threshold, q.dir);
+  };
+  std::sort(fast.begin(), fast.end(), key);
+  std::sort(exact.begin(), exact.end(), key);
+  RC_CLASSIFY(kind == 0, "row next to the y-extremum");
+  RC_CLASSIFY(kind == 1, "row next to an end");
+  RC_CLASSIFY(kind == 3, "row through the raw point at t = 1/2");
+  RC_CLASSIFY(exact.size() == 2, "two crossings");
+  RC_CLASSIFY(exact.size() == 1, "one crossing");
+  RC_ASSERT(fast.size() == exact.size());
+  for (std::size_t i = 0; i < fast.size(); ++i) {
+    RC_ASSERT(fast[i].threshold == exact[i].threshold);
+    RC_ASSERT(fast[i].dir == exact[i].dir);
+  }
+}
+
 } // namespace
