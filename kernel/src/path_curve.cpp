@@ -724,15 +724,6 @@ int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t,
   return n;
 }
 
-// Finds the v crossings from root_estimates(): each estimate must be confined by exact signs
-// of g to a region of the 2^30 grid, (k, k + 1) / 2^30 where g changes sign, or (k - 1, k + 1)
-// / 2^30 where g(k / 2^30) = 0 and g changes sign from k - 1 to k + 1 (a dyadic root, t = 1/2
-// on many glyph rows); the regions pairwise disjoint, and their number v: then they hold
-// exactly the v roots of g in (0, 1), one simple root each (Descartes: v bounds the roots
-// counted with multiplicity and has their parity; each region holds an odd number), and a
-// dyadic root is the region's root, where x is exact. The direction is the sign of g after the
-// root (times dir_sign). Signs come through the double filter (sign_at_grid).
-// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
 // The crossings of a quadratic g (c3 = 0, c2 != 0, no root at t = 0 or 1) certified by the
 // quadratic formula's own error bound (PATH.CURVE.FILTER): the discriminant D is exact in
 // integers and, below 2^53, in double; sqrt, the same-sign sum c1 + sgn(c1) sqrt(D), the halving
@@ -744,6 +735,7 @@ int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t,
 // test decides its floor as on a grid cell. Returns whether it decided (crossings appended);
 // false (nothing appended) leaves the row to the grid estimates. v: g's sign variations, which
 // the count must match in parity and not exceed (Descartes), a check that costs nothing.
+// rule: PATH.CURVE.FILTER, PATH.CURVE.SAMPLE
 bool quadratic_crossings(const Cubic& g, const Cubic& x, std::int64_t x_lip, double x_bound, int v,
                          std::vector<Crossing>& found, int dir_sign) {
   const Wide disc = formula::curve_discriminant(Wide{g.c[0]}, Wide{g.c[1]}, Wide{g.c[2]});
@@ -773,12 +765,22 @@ bool quadratic_crossings(const Cubic& g, const Cubic& x, std::int64_t x_lip, dou
   }
   k = 0;
   if (inside(r0))
-    found.emplace_back(floors[static_cast<std::size_t>(k++)], first_dir);
+    found.push_back(Crossing{floors[static_cast<std::size_t>(k++)], first_dir});
   if (inside(r1))
-    found.emplace_back(floors[static_cast<std::size_t>(k)], -first_dir);
+    found.push_back(Crossing{floors[static_cast<std::size_t>(k)], -first_dir});
   return true;
 }
 
+// Finds the v crossings from root_estimates(): each estimate must be confined by exact signs
+// of g to a region of the 2^30 grid, (k, k + 1) / 2^30 where g changes sign, or (k - 1, k + 1)
+// / 2^30 where g(k / 2^30) = 0 and g changes sign from k - 1 to k + 1 (a dyadic root, t = 1/2
+// on many glyph rows); the regions pairwise disjoint, and their number v: then they hold
+// exactly the v roots of g in (0, 1), one simple root each (Descartes: v bounds the roots
+// counted with multiplicity and has their parity; each region holds an odd number), and a
+// dyadic root is the region's root, where x is exact. The direction is the sign of g after the
+// root (times dir_sign). Signs come through the double filter (sign_at_grid). A quadratic g is
+// first given to quadratic_crossings, which needs no signs where it decides.
+// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
 bool estimated_crossings(const Cubic& g, double bound, const Cuts& cuts, const Cubic& x,
                          std::int64_t x_lip, double x_bound, int v, Tie t,
                          std::vector<Crossing>& found, int dir_sign = 1, RootHints* hints = nullptr,
@@ -830,7 +832,7 @@ bool estimated_crossings(const Cubic& g, double bound, const Cuts& cuts, const C
         return false;
       }
       regions[static_cast<std::size_t>(r)] = {a, b};
-      found.emplace_back(threshold, dir);
+      found.push_back(Crossing{threshold, dir});
       confined = true;
       break;
     }
@@ -1081,7 +1083,7 @@ bool scan_crossings(const Cubic& g, const Cubic& x, std::vector<Crossing>& out) 
     std::int64_t threshold = 0;
     if (!crossing_on(x, lipschitz(x), horner_error_bound(x), k, threshold))
       return false;
-    found.emplace_back(threshold, sb);
+    found.push_back(Crossing{threshold, sb});
   }
   return true;
 }
