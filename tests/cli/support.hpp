@@ -46,8 +46,11 @@ RunResult run_cli(const std::vector<std::string>& args,
 
 // The same, with the peak resident set of that run alone in KiB (its own ru_maxrss, through
 // the small program rastrules_test_peak: a test process's getrusage(RUSAGE_CHILDREN) counts
-// its own size at every fork), or -1 when it could not be measured.
+// its own size at every fork), or -1 when it could not be measured. Only where the helper is
+// built (the CLI tests): elsewhere a call does not compile, rather than failing to link.
+#ifdef RASTRULES_TEST_PEAK
 RunResult run_cli_peak(const std::vector<std::string>& args, long& peak_kib);
+#endif
 
 std::string read_file(const std::filesystem::path& path);
 
