@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <span>
 #include <tuple>
 #include <vector>
@@ -135,9 +136,17 @@ bool whole_winding(E v, FillRule rule, std::uint8_t& alpha) {
 // Horner's rule at t (a double) has |computed - exact| <= gamma(2n) sum |c_k| |t|^k, gamma(m)
 // = m u / (1 - m u) (Higham, Accuracy and Stability of Numerical Algorithms, 5.1); a parameter
 // known within t.e adds at most t.e times a bound of |p'| on [t - t.e, t + t.e].
-double gamma_of(int m) {
+constexpr double gamma_of(int m) {
   return (m * kU) / (1.0 - m * kU) * kUp;
 }
+// gamma_of(2n) for the degrees here, computed once (the same doubles: constant evaluation
+// rounds as the processor does).
+constexpr std::array<double, 13> kGamma2n = [] {
+  std::array<double, 13> g{};
+  for (int k = 0; k < 13; ++k)
+    g[static_cast<std::size_t>(k)] = gamma_of(k);
+  return g;
+}();
 
 struct Poly {
   int n = 1;
@@ -158,7 +167,7 @@ struct Poly {
       r = r * tv + c[static_cast<std::size_t>(k)];
       a = a * at + std::abs(c[static_cast<std::size_t>(k)]);
     }
-    double e = gamma_of(2 * n) * a;
+    double e = kGamma2n[static_cast<std::size_t>(2 * n)] * a;
     if (t.e > 0) {
       const double m = at + t.e;
       double d = n * std::abs(c[static_cast<std::size_t>(n)]);
@@ -202,7 +211,7 @@ struct Shape {
       a = a * at + std::abs(qk.v);
       ce = ce * at + qk.e;
     }
-    double e = gamma_of(2 * qn) * a + ce * kUp;
+    double e = kGamma2n[static_cast<std::size_t>(2 * qn)] * a + ce * kUp;
     if (t.e > 0) {
       const double m = at + t.e;
       double d =
@@ -242,10 +251,8 @@ struct Sub {
   Side sa = kNone, sb = kNone;
   bool interior = true;   // meets the cell's interior (false: along a column line, or col == w)
   bool along = false;     // along a column line (cover only)
-  E cover;                // y(b) - y(a), raw
   E area;                 // integral of (x - left) dy along the sub-arc, raw squared
   std::int32_t next = -1; // the next sub-arc of the boundary when it is in the same cell
-  std::uint64_t seq = 0;
 };
 
 // A chain's end on a cell's border: its position clockwise from the top-left corner (0 to 4,
@@ -297,6 +304,8 @@ private:
             const EPoint& b, Side sa, Side sb, bool interior);
   [[nodiscard]] bool root(const Piece& p, bool in_x, double target, E& t) const;
   [[nodiscard]] EPoint point_at(const Piece& p, E t) const;
+  // One coordinate of point_at (x where in_x, else y).
+  [[nodiscard]] E coordinate_at(const Piece& p, bool in_x, E t) const;
   [[nodiscard]] EPoint point_at_exact(const Shape& s, E t) const;
   [[nodiscard]] bool cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std::size_t end,
                           E above, std::uint8_t& alpha);
@@ -310,8 +319,10 @@ private:
   std::size_t row_at_ = 0; // sorted_: where the next row starts
   std::vector<std::uint32_t> order_;
   std::vector<std::int32_t> where_;
+  std::vector<std::uint32_t> row_start_;
   std::vector<std::uint8_t> has_prev_, seen_;
   std::vector<End> ends_;
+  std::vector<std::pair<std::size_t, std::size_t>> chains_;
   std::vector<Ref> refs_;
   std::vector<std::size_t> contour_first_;
   std::vector<E> cuts_;
@@ -332,6 +343,12 @@ private:
 EPoint FastAlpha::point_at_exact(const Shape& s, E t) const {
   return EPoint{add(exact(static_cast<double>(s.x0)), s.x.at_exact(t)),
                 add(exact(static_cast<double>(s.y0)), s.y.at_exact(t))};
+}
+
+E FastAlpha::coordinate_at(const Piece& p, bool in_x, E t) const {
+  const Shape& s = shapes_[p.shape];
+  return in_x ? add(exact(static_cast<double>(s.x0)), s.x.at(t))
+              : add(exact(static_cast<double>(s.y0)), s.y.at(t));
 }
 
 EPoint FastAlpha::point_at(const Piece& p, E t) const {
@@ -560,13 +577,12 @@ void FastAlpha::emit(std::int32_t row, std::int32_t col, std::uint32_t pi, E ta,
   // Along a column line; right of the target only the line x = w counts (along a line inside
   // that region its ends are shared like any other).
   s.along = !interior && (col < w_ || (a.x.e == 0 && a.x.v == right_line));
-  s.cover = sub(b.y, a.y);
-  s.seq = seq;
+  const E cover = sub(b.y, a.y); // y(b) - y(a), raw
   if (s.interior) {
     const double left = static_cast<double>(std::int64_t{col} * kW);
     if (p.line) {
       // ((xa - l) + (xb - l)) / 2 (yb - ya)
-      s.area = mul(scale(add(sub(a.x, exact(left)), sub(b.x, exact(left))), -1), s.cover);
+      s.area = mul(scale(add(sub(a.x, exact(left)), sub(b.x, exact(left))), -1), cover);
     } else {
       const Shape& sh = shapes_[p.shape];
       // Q at ta is usually Q at the last sub-arc's tb (the walk goes on from there).
@@ -574,7 +590,7 @@ void FastAlpha::emit(std::int32_t row, std::int32_t col, std::uint32_t pi, E ta,
       q_ = sh.q_at(tb);
       q_t_ = tb;
       q_shape_ = p.shape;
-      s.area = add(sub(q_, qa), mul(exact(static_cast<double>(sh.x0) - left), s.cover));
+      s.area = add(sub(q_, qa), mul(exact(static_cast<double>(sh.x0) - left), cover));
     }
   }
   std::vector<Sub>& r = subs_;
@@ -747,12 +763,12 @@ bool FastAlpha::walk_piece(std::uint32_t pi) {
       nxt.y = p.line ? div(exact(static_cast<double>(sh.y0) * sh.x.c[1] +
                                  static_cast<double>(X - sh.x0) * sh.y.c[1]),
                            exact(sh.x.c[1]), ok)
-                     : point_at(p, tn).y;
+                     : coordinate_at(p, false, tn);
     if (first_y && !first_x)
       nxt.x = p.line ? div(exact(static_cast<double>(sh.x0) * sh.y.c[1] +
                                  static_cast<double>(Y - sh.y0) * sh.x.c[1]),
                            exact(sh.y.c[1]), ok)
-                     : point_at(p, tn).x;
+                     : coordinate_at(p, true, tn);
     if (!ok)
       return false;
     Side side_out = first_y ? (p.sy > 0 ? kBottom : kTop) : (p.sx > 0 ? kRight : kLeft);
@@ -1103,7 +1119,11 @@ bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std
     }
   }
   const E v = scale(integral, -2 * kSubpixelBits); // I / A
-  if (interior > 0) {
+  if (end - at == 1 && interior == 1 && subs[at].next < 0) {
+    // One sub-arc, a part of one monotone piece: a simple arc, which must run from side to side.
+    if (subs[at].sa == kNone || subs[at].sb == kNone)
+      return false;
+  } else if (interior > 0) {
     // (a) No two sub-arcs meet but where one continues into the next, and those do not turn
     // back into each other's quadrant.
     for (std::size_t p = at; p < end; ++p) {
@@ -1192,7 +1212,9 @@ bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std
     };
     std::vector<std::uint8_t>& seen = seen_;
     seen.assign(end - at, 0);
-    bool ok = true;
+    // Each open chain's first and last sub-arc; their ends must lie on the border (a side).
+    std::vector<std::pair<std::size_t, std::size_t>>& chains = chains_;
+    chains.clear();
     for (std::size_t k = at; k < end; ++k) {
       if (!subs[k].interior || has_prev[k - at] != 0)
         continue;
@@ -1206,10 +1228,9 @@ bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std
           return false;
         seen[x - at] = 1;
       }
-      const Sub& first = subs[k];
-      const Sub& last = subs[x];
-      ends.push_back(End{position(first.a, first.sa, ok), change(pieces_[first.piece], first.sa)});
-      ends.push_back(End{position(last.b, last.sb, ok), change(pieces_[last.piece], last.sb)});
+      if (subs[k].sa == kNone || subs[x].sb == kNone)
+        return false; // an end inside the cell
+      chains.emplace_back(k, x);
     }
     for (std::size_t k = at; k < end; ++k) {
       if (!subs[k].interior || seen[k - at] != 0)
@@ -1221,11 +1242,19 @@ bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std
           return false;
       }
     }
-    if (!ok)
-      return false;
     if (closed > 1 || (closed > 0 && open > 0))
       return false;
-    if (open > 1) {
+    if (open > 1) { // several chains: the winding numbers met walking around the border
+      bool ok = true;
+      for (const auto& [k, x] : chains) {
+        const Sub& first = subs[k];
+        const Sub& last = subs[x];
+        ends.push_back(
+            End{position(first.a, first.sa, ok), change(pieces_[first.piece], first.sa)});
+        ends.push_back(End{position(last.b, last.sb, ok), change(pieces_[last.piece], last.sb)});
+      }
+      if (!ok)
+        return false;
       std::sort(ends.begin(), ends.end(), [](const End& p, const End& q) { return p.s.v < q.s.v; });
       for (std::size_t k = 0; k < ends.size(); ++k) {
         const End& p = ends[k];
@@ -1273,14 +1302,30 @@ bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std
 }
 
 void FastAlpha::sort() {
-  order_.resize(subs_.size());
-  for (std::size_t k = 0; k < order_.size(); ++k)
-    order_[k] = static_cast<std::uint32_t>(k);
-  std::sort(order_.begin(), order_.end(), [&](std::uint32_t p, std::uint32_t q) {
-    const Sub& a = subs_[p];
-    const Sub& b = subs_[q];
-    return a.row != b.row ? a.row < b.row : (a.col != b.col ? a.col < b.col : a.seq < b.seq);
-  });
+  // By row, column and seq: subs_ is in seq order (emit's), so a counting sort by row keeps seq
+  // order within a row, and an insertion sort by column (stable, a row holds few sub-arcs)
+  // finishes it.
+  const std::size_t n = subs_.size();
+  std::vector<std::uint32_t>& start = row_start_;
+  start.assign(static_cast<std::size_t>(h_) + 1, 0);
+  for (const Sub& s : subs_)
+    ++start[static_cast<std::size_t>(s.row) + 1];
+  for (std::size_t r = 0; r < static_cast<std::size_t>(h_); ++r)
+    start[r + 1] += start[r];
+  order_.resize(n);
+  for (std::size_t k = 0; k < n; ++k)
+    order_[start[static_cast<std::size_t>(subs_[k].row)]++] = static_cast<std::uint32_t>(k);
+  // start[r] is now where row r + 1 begins.
+  for (std::size_t r = 0, from = 0; r < static_cast<std::size_t>(h_); from = start[r++]) {
+    for (std::size_t k = from + 1; k < start[r]; ++k) {
+      const std::uint32_t v = order_[k];
+      const std::int32_t col = subs_[v].col;
+      std::size_t i = k;
+      for (; i > from && subs_[order_[i - 1]].col > col; --i)
+        order_[i] = order_[i - 1];
+      order_[i] = v;
+    }
+  }
   where_.resize(subs_.size());
   for (std::size_t k = 0; k < order_.size(); ++k)
     where_[order_[k]] = static_cast<std::int32_t>(k);
@@ -1348,9 +1393,10 @@ bool FastAlpha::row(std::int32_t j, std::uint8_t* out) {
     }
     // A run of cells without sub-arcs: one winding number each, the same for all of them.
     const std::int32_t stop = end > first ? sorted[end - 1].col : -1;
-    for (; c > stop; --c)
-      if (!constant(c))
-        decided = false;
+    if (!constant(c))
+      decided = false;
+    std::memset(out + stop + 1, out[c], static_cast<std::size_t>(c - stop - 1));
+    c = stop;
   }
   return decided;
 }
