@@ -320,6 +320,7 @@ private:
   std::vector<std::uint32_t> order_;
   std::vector<std::int32_t> where_;
   std::vector<std::uint32_t> row_start_;
+  std::vector<std::uint64_t> keys_;
   std::vector<std::uint8_t> has_prev_, seen_;
   std::vector<End> ends_;
   std::vector<std::pair<std::size_t, std::size_t>> chains_;
@@ -1303,8 +1304,7 @@ bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std
 
 void FastAlpha::sort() {
   // By row, column and seq: subs_ is in seq order (emit's), so a counting sort by row keeps seq
-  // order within a row, and an insertion sort by column (stable, a row holds few sub-arcs)
-  // finishes it.
+  // order within a row; then each row's keys (column, index), index in seq order, are sorted.
   const std::size_t n = subs_.size();
   std::vector<std::uint32_t>& start = row_start_;
   start.assign(static_cast<std::size_t>(h_) + 1, 0);
@@ -1312,20 +1312,18 @@ void FastAlpha::sort() {
     ++start[static_cast<std::size_t>(s.row) + 1];
   for (std::size_t r = 0; r < static_cast<std::size_t>(h_); ++r)
     start[r + 1] += start[r];
+  std::vector<std::uint64_t>& keys = keys_;
+  keys.resize(n);
+  for (std::size_t k = 0; k < n; ++k)
+    keys[start[static_cast<std::size_t>(subs_[k].row)]++] =
+        (static_cast<std::uint64_t>(subs_[k].col) << 32) | k; // col in [0, w], k < 2^32
+  // start[r] is now where row r + 1 begins.
+  for (std::size_t r = 0, from = 0; r < static_cast<std::size_t>(h_); from = start[r++])
+    std::sort(keys.begin() + static_cast<std::ptrdiff_t>(from),
+              keys.begin() + static_cast<std::ptrdiff_t>(start[r]));
   order_.resize(n);
   for (std::size_t k = 0; k < n; ++k)
-    order_[start[static_cast<std::size_t>(subs_[k].row)]++] = static_cast<std::uint32_t>(k);
-  // start[r] is now where row r + 1 begins.
-  for (std::size_t r = 0, from = 0; r < static_cast<std::size_t>(h_); from = start[r++]) {
-    for (std::size_t k = from + 1; k < start[r]; ++k) {
-      const std::uint32_t v = order_[k];
-      const std::int32_t col = subs_[v].col;
-      std::size_t i = k;
-      for (; i > from && subs_[order_[i - 1]].col > col; --i)
-        order_[i] = order_[i - 1];
-      order_[i] = v;
-    }
-  }
+    order_[k] = static_cast<std::uint32_t>(keys[k]);
   where_.resize(subs_.size());
   for (std::size_t k = 0; k < order_.size(); ++k)
     where_[order_[k]] = static_cast<std::int32_t>(k);
