@@ -794,8 +794,11 @@ void cover_alpha_by(const Path& path, std::int32_t w, std::int32_t h, AreaMethod
   if (out.size() != stride * static_cast<std::size_t>(h))
     throw std::invalid_argument("path: alpha buffer is not w * h bytes (PATH.AREA.ALPHA)");
   check_side(w, h);
-  const Boundary b = boundary_of(path);
-  std::vector<std::uint8_t> undecided;
+  // One workspace a thread, as alpha_fast's: the vectors keep their room from the last path.
+  thread_local Boundary b;
+  boundary_into(path, b);
+  thread_local std::vector<std::uint8_t> undecided;
+  undecided.clear();
   if (method == AreaMethod::kFast) {
     alpha_fast(b, path.fill_rule, w, h, out, undecided);
     if (rows != nullptr)
