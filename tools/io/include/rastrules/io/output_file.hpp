@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -36,13 +37,15 @@ public:
 
 private:
   void discard();
+  void use_large_buffer();
   std::string path_;
   std::string temp_path_;
   std::string target_path_; // path_, or the real file a link at path_ names
   int interrupt_slot_ = -1; // the temporary's slot in io::register_temporary
   std::FILE* file_ = nullptr;
   bool is_stdout_ = false;
-  bool is_in_place_ = false; // not a regular file: written directly, never renamed
+  bool is_in_place_ = false;       // not a regular file: written directly, never renamed
+  std::unique_ptr<char[]> buffer_; // file_'s stdio buffer (freed after file_ is closed)
 };
 
 // Whether two output paths name one file: equal canonical paths, following links, for files
