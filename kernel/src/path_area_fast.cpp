@@ -160,32 +160,43 @@ struct Poly {
     return r;
   }
   // p(t) with a bound.
-  [[nodiscard]] E at(E t) const {
+  [[nodiscard]] E at(E t) const { return n == 3 ? at_n<3>(t) : (n == 2 ? at_n<2>(t) : at_n<1>(t)); }
+  [[nodiscard]] double at_d(double t) const {
+    return n == 3 ? at_d_n<3>(t) : (n == 2 ? at_d_n<2>(t) : at_d_n<1>(t));
+  }
+  [[nodiscard]] double slope_d(double t) const {
+    return n == 3 ? slope_d_n<3>(t) : (n == 2 ? slope_d_n<2>(t) : slope_d_n<1>(t));
+  }
+
+private:
+  // The loops unrolled for the degree N == n: the same operations in the same order as with n
+  // in a variable.
+  template <int N> [[nodiscard]] E at_n(E t) const {
     const double tv = t.v, at = std::abs(tv);
-    double r = c[static_cast<std::size_t>(n)], a = std::abs(r);
-    for (int k = n - 1; k >= 0; --k) {
+    double r = c[N], a = std::abs(r);
+    for (int k = N - 1; k >= 0; --k) {
       r = r * tv + c[static_cast<std::size_t>(k)];
       a = a * at + std::abs(c[static_cast<std::size_t>(k)]);
     }
-    double e = kGamma2n[static_cast<std::size_t>(2 * n)] * a;
+    double e = kGamma2n[2 * N] * a;
     if (t.e > 0) {
       const double m = at + t.e;
-      double d = n * std::abs(c[static_cast<std::size_t>(n)]);
-      for (int k = n - 1; k >= 1; --k)
+      double d = N * std::abs(c[N]);
+      for (int k = N - 1; k >= 1; --k)
         d = d * m + k * std::abs(c[static_cast<std::size_t>(k)]);
       e += t.e * d * kUp;
     }
     return E{r, (e + kTiny) * kUp};
   }
-  [[nodiscard]] double at_d(double t) const {
-    double r = c[static_cast<std::size_t>(n)];
-    for (int k = n - 1; k >= 0; --k)
+  template <int N> [[nodiscard]] double at_d_n(double t) const {
+    double r = c[N];
+    for (int k = N - 1; k >= 0; --k)
       r = r * t + c[static_cast<std::size_t>(k)];
     return r;
   }
-  [[nodiscard]] double slope_d(double t) const {
-    double r = n * c[static_cast<std::size_t>(n)];
-    for (int k = n - 1; k >= 1; --k)
+  template <int N> [[nodiscard]] double slope_d_n(double t) const {
+    double r = N * c[N];
+    for (int k = N - 1; k >= 1; --k)
       r = r * t + k * c[static_cast<std::size_t>(k)];
     return r;
   }
@@ -202,21 +213,25 @@ struct Shape {
   // Q(t) with a bound: Horner's on the coefficients' values, plus their own bounds, plus the
   // parameter's (|Q'| = |x - x0| |y'|, bounded from the coefficients' magnitudes).
   [[nodiscard]] E q_at(E t) const {
+    return qn == 6 ? q_at_n<6>(t) : (qn == 4 ? q_at_n<4>(t) : q_at_n<2>(t));
+  }
+
+private:
+  // q_at unrolled for the degree QN == qn (the same operations in the same order).
+  template <int QN> [[nodiscard]] E q_at_n(E t) const {
     const double tv = t.v, at = std::abs(tv);
-    double r = q[static_cast<std::size_t>(qn)].v, a = std::abs(r),
-           ce = q[static_cast<std::size_t>(qn)].e;
-    for (int k = qn - 1; k >= 0; --k) {
+    double r = q[QN].v, a = std::abs(r), ce = q[QN].e;
+    for (int k = QN - 1; k >= 0; --k) {
       const E& qk = q[static_cast<std::size_t>(k)];
       r = r * tv + qk.v;
       a = a * at + std::abs(qk.v);
       ce = ce * at + qk.e;
     }
-    double e = kGamma2n[static_cast<std::size_t>(2 * qn)] * a + ce * kUp;
+    double e = kGamma2n[2 * QN] * a + ce * kUp;
     if (t.e > 0) {
       const double m = at + t.e;
-      double d =
-          qn * (std::abs(q[static_cast<std::size_t>(qn)].v) + q[static_cast<std::size_t>(qn)].e);
-      for (int k = qn - 1; k >= 1; --k)
+      double d = QN * (std::abs(q[QN].v) + q[QN].e);
+      for (int k = QN - 1; k >= 1; --k)
         d = d * m +
             k * (std::abs(q[static_cast<std::size_t>(k)].v) + q[static_cast<std::size_t>(k)].e);
       e += t.e * d * kUp;
