@@ -333,6 +333,7 @@ private:
   [[nodiscard]] bool cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std::size_t end,
                           E above, std::uint8_t& alpha);
   [[nodiscard]] bool apart(const Sub& a, const Sub& b) const;
+  [[nodiscard]] bool joint_ok(const Sub& first, const Sub& second) const;
 
   FillRule rule_ = FillRule::kNonZero;
   std::int32_t w_ = 0, h_ = 0;
@@ -1139,6 +1140,45 @@ bool FastAlpha::apart(const Sub& a, const Sub& b) const {
                   Span{&pb, b.ta.v, b.tb.v, b.a, b.b});
 }
 
+// Whether sub-arc `second`, which continues `first` in the same cell, meets it only at their
+// joint: it does not turn back into the quadrant `first` came from, or where it does, the
+// exact tests say they keep apart.
+bool FastAlpha::joint_ok(const Sub& first, const Sub& second) const {
+  const Piece& pf = pieces_[first.piece];
+  const Piece& ps = pieces_[second.piece];
+  if (ps.sx != -pf.sx || ps.sy != -pf.sy)
+    return true;
+  if (pf.line != ps.line) { // a curve and a line: apart if the curve keeps to one side
+    const bool curve_first = !pf.line;
+    const Sub& cs = curve_first ? first : second;
+    return curve_off_line(shapes_[curve_first ? pf.shape : ps.shape], curve_first,
+                          shapes_[curve_first ? ps.shape : pf.shape],
+                          curve_first ? dyadic_below(cs.ta) : dyadic_above(cs.tb));
+  }
+  if (!pf.line) // two curves: in doubt unless a line through the joint separates them
+    return curves_apart(shapes_[pf.shape], shapes_[ps.shape], dyadic_below(first.ta),
+                        dyadic_above(second.tb));
+  const Shape& sf = shapes_[pf.shape];
+  const Shape& ss = shapes_[ps.shape];
+  return sf.x.c[1] * ss.y.c[1] - sf.y.c[1] * ss.x.c[1] != 0; // else it doubles back
+}
+
+// The first of subs[at, end) when they are two interior sub-arcs of which one continues into
+// the other and not back (one open chain), else end.
+std::size_t two_chain(const std::vector<Sub>& subs, std::size_t at, std::size_t end,
+                      std::size_t interior) {
+  if (end - at != 2 || interior != 2)
+    return end;
+  const auto a = static_cast<std::int32_t>(at), b = a + 1;
+  const Sub& sa = subs[at];
+  const Sub& sb = subs[at + 1];
+  if (sa.next == b && sb.next < 0)
+    return at;
+  if (sb.next == a && sa.next < 0)
+    return at + 1;
+  return end;
+}
+
 // Decides one cell (its sub-arcs subs[at, end)), `above` the integral of w from the sub-arcs
 // right of it (kW times their cover, raw squared); false where it is not certified.
 bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std::size_t end,
@@ -1157,6 +1197,13 @@ bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std
     // One sub-arc, a part of one monotone piece: a simple arc, which must run from side to side.
     if (subs[at].sa == kNone || subs[at].sb == kNone)
       return false;
+  } else if (const std::size_t f = two_chain(subs, at, end, interior); f != end) {
+    // Two sub-arcs, one continuing into the other (the commonest cell after one sub-arc): one
+    // chain, so (a) and (b) below come to its joint and its two ends.
+    const Sub& first = subs[f];
+    const Sub& second = subs[static_cast<std::size_t>(first.next)];
+    if (!joint_ok(first, second) || first.sa == kNone || second.sb == kNone)
+      return false;
   } else if (interior > 0) {
     // (a) No two sub-arcs meet but where one continues into the next, and those do not turn
     // back into each other's quadrant.
@@ -1174,33 +1221,10 @@ bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std
           return false;
       }
     }
-    for (std::size_t p = at; p < end; ++p) {
-      if (!subs[p].interior || subs[p].next < 0)
-        continue;
-      const Piece& pf = pieces_[subs[p].piece];
-      const Piece& ps = pieces_[subs[static_cast<std::size_t>(subs[p].next)].piece];
-      if (ps.sx == -pf.sx && ps.sy == -pf.sy) { // the second turns back into the first's quadrant
-        if (pf.line != ps.line) { // a curve and a line: apart if the curve keeps to one side
-          const bool curve_first = !pf.line;
-          const Sub& cs = curve_first ? subs[p] : subs[static_cast<std::size_t>(subs[p].next)];
-          if (!curve_off_line(shapes_[curve_first ? pf.shape : ps.shape], curve_first,
-                              shapes_[curve_first ? ps.shape : pf.shape],
-                              curve_first ? dyadic_below(cs.ta) : dyadic_above(cs.tb)))
-            return false;
-          continue;
-        }
-        if (!pf.line) {
-          if (!curves_apart(shapes_[pf.shape], shapes_[ps.shape], dyadic_below(subs[p].ta),
-                            dyadic_above(subs[static_cast<std::size_t>(subs[p].next)].tb)))
-            return false; // two curves: in doubt
-          continue;
-        }
-        const Shape& sf = shapes_[pf.shape];
-        const Shape& ss = shapes_[ps.shape];
-        if (sf.x.c[1] * ss.y.c[1] - sf.y.c[1] * ss.x.c[1] == 0)
-          return false; // doubles back
-      }
-    }
+    for (std::size_t p = at; p < end; ++p)
+      if (subs[p].interior && subs[p].next >= 0 &&
+          !joint_ok(subs[p], subs[static_cast<std::size_t>(subs[p].next)]))
+        return false;
     // (b) The chains of sub-arcs, their ends on the border, and the winding numbers met walking
     // around it.
     std::vector<End>& ends = ends_;
