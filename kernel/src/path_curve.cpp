@@ -739,8 +739,10 @@ int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t,
 // rule: PATH.CURVE.FILTER, PATH.CURVE.SAMPLE
 bool quadratic_crossings(const Cubic& g, const Cubic& x, std::int64_t x_lip, double x_bound,
                          std::vector<Crossing>& found, int dir_sign) {
-  const Wide disc = formula::curve_discriminant(Wide{g.c[0]}, Wide{g.c[1]}, Wide{g.c[2]});
-  constexpr Wide kExact = Wide{1} << 53;
+  // |c_j| < 2^27: |D| < 2^57, exact in int64_t.
+  static_assert(2 * kCoefficientBits + 3 <= 62, "the discriminant must fit int64_t");
+  const std::int64_t disc = formula::curve_discriminant(g.c[0], g.c[1], g.c[2]);
+  constexpr std::int64_t kExact = std::int64_t{1} << 53;
   if (disc < 0)
     return true; // no real root: g keeps its sign, the row is not crossed
   if (disc == 0 || disc >= kExact)
@@ -752,24 +754,19 @@ bool quadratic_crossings(const Cubic& g, const Cubic& x, std::int64_t x_lip, dou
   if (r0 > r1)
     std::swap(r0, r1);
   constexpr double kMargin = 0x1p-40;
-  const auto inside = [&](double r) { return r > kMargin && r < 1.0 - kMargin; };
-  const auto outside = [&](double r) { return r < -kMargin || r > 1.0 + kMargin; };
-  if (!(inside(r0) || outside(r0)) || !(inside(r1) || outside(r1)))
-    return false;
-  if (inside(r0) && inside(r1) && !(r1 - r0 > kMargin))
+  const bool in0 = r0 > kMargin && r0<1.0 - kMargin, in1 = r1> kMargin && r1 < 1.0 - kMargin;
+  const bool out0 = r0 < -kMargin || r0 > 1.0 + kMargin, out1 = r1 < -kMargin || r1 > 1.0 + kMargin;
+  if (!(in0 || out0) || !(in1 || out1) || (in0 && in1 && !(r1 - r0 > kMargin)))
     return false;
   const int first_dir = (g.c[2] > 0 ? -1 : 1) * dir_sign;
-  std::array<std::int64_t, 2> floors{};
-  int k = 0;
-  for (const double r : {r0, r1}) {
-    if (inside(r) && !filter_floor_at(x, x_lip, x_bound, r, floors[static_cast<std::size_t>(k++)]))
-      return false;
-  }
-  k = 0;
-  if (inside(r0))
-    found.push_back(Crossing{floors[static_cast<std::size_t>(k++)], first_dir});
-  if (inside(r1))
-    found.push_back(Crossing{floors[static_cast<std::size_t>(k)], -first_dir});
+  std::int64_t f0 = 0, f1 = 0;
+  if ((in0 && !filter_floor_at(x, x_lip, x_bound, r0, f0)) ||
+      (in1 && !filter_floor_at(x, x_lip, x_bound, r1, f1)))
+    return false;
+  if (in0)
+    found.push_back(Crossing{f0, first_dir});
+  if (in1)
+    found.push_back(Crossing{f1, -first_dir});
   return true;
 }
 
