@@ -401,6 +401,29 @@ bool FastAlpha::root(const Piece& p, bool in_x, double target, double from, E& t
   double lo = p.t0.v, hi = p.t1.v;
   double x = 0;
   bool found = false;
+  if (f.n == 2 && f.c[2] != 0) {
+    // A quadratic piece, where the discriminant of f - off (integers) is exact in double: the
+    // quadratic formula's own error bound (PATH.CURVE.FILTER's quadratic rows) puts each
+    // computed root within 3.01 u of the true one relatively, so within 2^-50 max(1, |r|); a
+    // root that bound places inside the piece is its one root (f is monotone there), and no
+    // bracket needs certifying.
+    const auto ia = static_cast<std::int64_t>(f.c[2]), ib = static_cast<std::int64_t>(f.c[1]),
+               ic = static_cast<std::int64_t>(-off);
+    const I128 d = I128{ib} * ib - I128{4} * ia * ic;
+    if (d > 0 && d < (I128{1} << 53)) {
+      const double q = -0.5 * (f.c[1] + std::copysign(std::sqrt(static_cast<double>(d)), f.c[1]));
+      const std::array<double, 2> r{q / f.c[2], -off / q};
+      const auto err = [](double v) { return 0x1p-50 * std::max(1.0, std::abs(v)); };
+      const auto inside = [&](double v) {
+        return v - err(v) > p.t0.v + p.t0.e && v + err(v) < p.t1.v - p.t1.e;
+      };
+      if (inside(r[0]) != inside(r[1])) {
+        const double v = inside(r[0]) ? r[0] : r[1];
+        t = E{v, err(v)};
+        return true;
+      }
+    }
+  }
   if (f.n == 2 && f.c[2] != 0) { // a quadratic: the root in closed form (stable form)
     const double qa = f.c[2], qb = f.c[1], qc = -off;
     const double disc = qb * qb - 4 * qa * qc;
