@@ -109,6 +109,14 @@ E scale(E a, int k) {
   return E{q, ((a.e + std::abs(q) * b.e) / den + kU * std::abs(q) + kTiny) * kUp};
 }
 
+// floor(x) for |x| < 2^52 (every value floored here is a coordinate over 256, an integral over
+// the pixel's area or 510 times an area, far below): the same double as std::floor, which the
+// baseline instruction set (no SSE4.1 rounding) makes a library call.
+[[gnu::always_inline]] inline double floor_small(double x) {
+  const auto i = static_cast<double>(static_cast<std::int64_t>(x)); // toward zero, exact
+  return i > x ? i - 1.0 : i;
+}
+
 // The sign of a where its bound decides it, else 2.
 int sign_of(E a) {
   if (a.v > a.e)
@@ -682,10 +690,10 @@ bool cell_of(E v, int s, std::int64_t& c, bool& on_line) {
       c = floor_div(iv, kW) - (s < 0 ? 1 : 0);
       return true;
     }
-    c = static_cast<std::int64_t>(std::floor(v.v / kWd));
+    c = static_cast<std::int64_t>(floor_small(v.v / kWd));
     return true;
   }
-  const double lo = std::floor((v.v - 2 * v.e) / kWd), hi = std::floor((v.v + 2 * v.e) / kWd);
+  const double lo = floor_small((v.v - 2 * v.e) / kWd), hi = floor_small((v.v + 2 * v.e) / kWd);
   const double lo_line = lo * kWd, hi_line = (lo + 1) * kWd;
   if (lo != hi || !(v.v - 2 * v.e > lo_line) || !(v.v + 2 * v.e < hi_line))
     return false;
@@ -1358,7 +1366,7 @@ bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std
   if (interior == 0)
     return whole_winding(v, rule_, alpha);
   // Windings {m, m + 1}: the area from I / A.
-  const double m = std::floor(v.v);
+  const double m = floor_small(v.v);
   E cov;
   const auto fill = [&](double k) {
     return fill_holds(rule_, static_cast<std::int64_t>(k)) ? 1.0 : 0.0;
@@ -1374,8 +1382,8 @@ bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std
   // interval (exactly 510 c where its bound is 0).
   const E y = mul(exact(510), cov);
   const double pad = y.e == 0 ? 0.0 : 2 * y.e + 0x1p-40;
-  const auto a_lo = (static_cast<std::int64_t>(std::floor(y.v - pad)) + 1) >> 1;
-  const auto a_hi = (static_cast<std::int64_t>(std::floor(y.v + pad)) + 1) >> 1;
+  const auto a_lo = (static_cast<std::int64_t>(floor_small(y.v - pad)) + 1) >> 1;
+  const auto a_hi = (static_cast<std::int64_t>(floor_small(y.v + pad)) + 1) >> 1;
   if (a_lo != a_hi)
     return false;
   alpha = static_cast<std::uint8_t>(std::clamp(a_lo, std::int64_t{0}, std::int64_t{255}));
