@@ -349,7 +349,6 @@ private:
   std::vector<Piece> pieces_;
   std::vector<Sub> subs_, sorted_;
   std::size_t row_at_ = 0; // sorted_: where the next row starts
-  std::vector<std::uint32_t> order_;
   std::vector<std::int32_t> where_;
   std::vector<std::uint32_t> row_start_;
   std::vector<std::uint64_t> keys_;
@@ -385,9 +384,7 @@ E FastAlpha::coordinate_at(const Piece& p, bool in_x, E t) const {
 }
 
 EPoint FastAlpha::point_at(const Piece& p, E t) const {
-  const Shape& s = shapes_[p.shape];
-  return EPoint{add(exact(static_cast<double>(s.x0)), s.x.at(t)),
-                add(exact(static_cast<double>(s.y0)), s.y.at(t))};
+  return EPoint{coordinate_at(p, true, t), coordinate_at(p, false, t)};
 }
 
 // The parameter t in (t0, t1) of piece p where x(t) (in_x) or y(t) equals target, which the
@@ -410,36 +407,32 @@ bool FastAlpha::root(const Piece& p, bool in_x, double target, double from, E& t
   double x = 0;
   bool found = false;
   if (f.n == 2 && f.c[2] != 0) {
-    // A quadratic piece, where the discriminant of f - off (integers) is exact in double: the
-    // quadratic formula's own error bound (PATH.CURVE.FILTER's quadratic rows) puts each
-    // computed root within 3.01 u of the true one relatively, so within 2^-50 max(1, |r|); a
-    // root that bound places inside the piece is its one root (f is monotone there), and no
-    // bracket needs certifying.
+    // A quadratic piece: the roots of f - off (integer coefficients) in closed form (stable
+    // form). Where the discriminant is exact in double, the quadratic formula's own error bound
+    // (PATH.CURVE.FILTER's quadratic rows) puts each computed root within 3.01 u of the true one
+    // relatively, so within 2^-50 max(1, |r|); a root that bound places inside the piece is its
+    // one root (f is monotone there), and no bracket needs certifying. Else the root inside the
+    // piece starts the bracket below.
     const auto ia = static_cast<std::int64_t>(f.c[2]), ib = static_cast<std::int64_t>(f.c[1]),
                ic = static_cast<std::int64_t>(-off);
     const I128 d = I128{ib} * ib - I128{4} * ia * ic;
-    if (d > 0 && d < (I128{1} << 53)) {
+    if (d >= 0) {
       const double q = -0.5 * (f.c[1] + std::copysign(std::sqrt(static_cast<double>(d)), f.c[1]));
-      const std::array<double, 2> r{q / f.c[2], -off / q};
-      const auto err = [](double v) { return 0x1p-50 * std::max(1.0, std::abs(v)); };
-      const auto inside = [&](double v) {
-        return v - err(v) > p.t0.v + p.t0.e && v + err(v) < p.t1.v - p.t1.e;
-      };
-      if (inside(r[0]) != inside(r[1])) {
-        const double v = inside(r[0]) ? r[0] : r[1];
-        t = E{v, err(v)};
-        return true;
+      const std::array<double, 2> r{q / f.c[2], q != 0 ? -off / q : -1.0};
+      if (d > 0 && d < (I128{1} << 53)) {
+        const auto err = [](double v) { return 0x1p-50 * std::max(1.0, std::abs(v)); };
+        const auto inside = [&](double v) {
+          return v - err(v) > p.t0.v + p.t0.e && v + err(v) < p.t1.v - p.t1.e;
+        };
+        if (inside(r[0]) != inside(r[1])) {
+          const double v = inside(r[0]) ? r[0] : r[1];
+          t = E{v, err(v)};
+          return true;
+        }
       }
-    }
-  }
-  if (f.n == 2 && f.c[2] != 0) { // a quadratic: the root in closed form (stable form)
-    const double qa = f.c[2], qb = f.c[1], qc = -off;
-    const double disc = qb * qb - 4 * qa * qc;
-    if (disc >= 0) {
-      const double q = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
-      for (const double r : {q / qa, q != 0 ? qc / q : -1.0})
-        if (r >= lo && r <= hi) {
-          x = r;
+      for (const double v : r)
+        if (v >= lo && v <= hi) {
+          x = v;
           found = true;
         }
     }
@@ -1409,16 +1402,15 @@ void FastAlpha::sort() {
   for (std::size_t r = 0, from = 0; r < static_cast<std::size_t>(h_); from = start[r++])
     std::sort(keys.begin() + static_cast<std::ptrdiff_t>(from),
               keys.begin() + static_cast<std::ptrdiff_t>(start[r]));
-  order_.resize(n);
+  for (std::uint64_t& key : keys)
+    key &= 0xFFFFFFFFu; // the order: each key's index
+  where_.resize(n);
   for (std::size_t k = 0; k < n; ++k)
-    order_[k] = static_cast<std::uint32_t>(keys[k]);
-  where_.resize(subs_.size());
-  for (std::size_t k = 0; k < order_.size(); ++k)
-    where_[order_[k]] = static_cast<std::int32_t>(k);
+    where_[static_cast<std::size_t>(keys[k])] = static_cast<std::int32_t>(k);
   sorted_.clear();
-  sorted_.reserve(subs_.size());
-  for (const std::uint32_t k : order_) {
-    sorted_.push_back(subs_[k]);
+  sorted_.reserve(n);
+  for (const std::uint64_t k : keys) {
+    sorted_.push_back(subs_[static_cast<std::size_t>(k)]);
     if (sorted_.back().next >= 0)
       sorted_.back().next = where_[static_cast<std::size_t>(sorted_.back().next)];
   }

@@ -754,9 +754,10 @@ bool quadratic_crossings(const Cubic& g, const Cubic& x, std::int64_t x_lip, dou
   if (r0 > r1)
     std::swap(r0, r1);
   constexpr double kMargin = 0x1p-40;
-  const bool in0 = r0 > kMargin && r0<1.0 - kMargin, in1 = r1> kMargin && r1 < 1.0 - kMargin;
-  const bool out0 = r0 < -kMargin || r0 > 1.0 + kMargin, out1 = r1 < -kMargin || r1 > 1.0 + kMargin;
-  if (!(in0 || out0) || !(in1 || out1) || (in0 && in1 && !(r1 - r0 > kMargin)))
+  const auto inside = [](double r) { return r > kMargin && r < 1.0 - kMargin; };
+  const auto outside = [](double r) { return r < -kMargin || r > 1.0 + kMargin; };
+  const bool in0 = inside(r0), in1 = inside(r1); // each test once
+  if (!(in0 || outside(r0)) || !(in1 || outside(r1)) || (in0 && in1 && !(r1 - r0 > kMargin)))
     return false;
   const int first_dir = (g.c[2] > 0 ? -1 : 1) * dir_sign;
   std::int64_t f0 = 0, f1 = 0;
