@@ -113,8 +113,11 @@ RC_GTEST_PROP(OutputBinary, ReadsBackToTheFragmentListOrRefusesAFieldItDoesNotHo
     RC_FAIL("kernel rejected a valid scene: " + err->what() + "\n" + shown(s));
   const auto& ps = std::get<rastrules::PreparedScene>(prepared);
   const std::vector<Fragment> fragments = rastrules::rasterize(ps);
-  const io::FragmentBinaryHeader header = io::fragment_binary_header(ps);
+  io::FragmentBinaryHeader header = io::fragment_binary_header(ps);
   RC_ASSERT((header.mask_bytes == 0) == rastrules::is_single_sample(ps.msaa));
+  RC_ASSERT(header.version == 2); // the default
+  header.version = *rc::gen::element<std::uint32_t>(1, 2);
+  RC_CLASSIFY(header.version == 1, "version 1");
 
   std::size_t refused = 0;
   const auto bytes = written(fragments, header, refused);
@@ -145,19 +148,38 @@ RC_GTEST_PROP(OutputBinary, ReadsBackToTheFragmentListOrRefusesAFieldItDoesNotHo
   RC_ASSERT(r.header.height == static_cast<std::uint32_t>(ps.height));
   RC_ASSERT(r.header.samples == ps.msaa.pattern.count());
   RC_ASSERT(r.runs == runs_of(fragments));
-  // Size: header, a run's 20 bytes and its masks padded to 4 bytes, the end record.
-  std::uint64_t size = io::kFragmentBinaryHeaderBytes + io::kFragmentBinaryEndBytes +
-                       r.runs * io::kFragmentBinaryRunBytes;
-  if (header.mask_bytes == 2) {
-    std::uint64_t n = 0;
-    for (std::size_t i = 0; i < fragments.size(); ++i) {
-      ++n;
-      const bool last = i + 1 == fragments.size() || runs_of({fragments[i], fragments[i + 1]}) == 2;
-      if (last) {
-        size += (2 * n + 3) / 4 * 4;
-        n = 0;
+  RC_ASSERT(r.header.version == header.version);
+  // Size: header, the end record, and each run: version 1 its 20 bytes and its masks padded to
+  // 4 bytes; version 2 its word, its masks padded to 8 bytes, and a control word before it for
+  // a primitive that its step cannot reach (more than 2^21 - 1 on, or a segment) and another
+  // for a segment other than the previous run's (none after a step).
+  const std::uint64_t unit = header.version == 1 ? 4 : 8;
+  std::uint64_t size = io::kFragmentBinaryHeaderBytes + io::kFragmentBinaryEndBytes;
+  std::uint32_t prim = 0;
+  std::int64_t seg = -1;
+  std::uint64_t n = 0;
+  for (std::size_t i = 0; i < fragments.size(); ++i) {
+    ++n;
+    const bool last = i + 1 == fragments.size() || runs_of({fragments[i], fragments[i + 1]}) == 2;
+    if (!last)
+      continue;
+    const Fragment& f = fragments[i];
+    const std::int64_t f_seg = f.seg ? std::int64_t{*f.seg} : -1;
+    size += header.version == 1 ? io::kFragmentBinaryRunBytes : io::kFragmentBinaryWordBytes;
+    if (header.version == 2) {
+      if (f.prim != prim) {
+        if (f.prim - prim > io::kFragmentBinaryMaxStep || f_seg != -1)
+          size += io::kFragmentBinaryWordBytes;
+        prim = f.prim;
+        seg = -1;
       }
+      if (f_seg != seg)
+        size += io::kFragmentBinaryWordBytes;
+      seg = f_seg;
     }
+    if (header.mask_bytes == 2)
+      size += (2 * n + unit - 1) / unit * unit;
+    n = 0;
   }
   RC_ASSERT(bytes->size() == size);
 

@@ -334,14 +334,22 @@ def test_binary_fragments_equal_the_json_list(tmp_path, name):
     # The same bytes from standard output with the format named.
     assert subprocess.run([CLI, "render", str(scene), "--fragments", "-", "--fragments-format",
                            "binary"], capture_output=True, check=True).stdout == out.read_bytes()
+    assert header["version"] == 2
+    # Version 1 holds the same list.
+    v1 = subprocess.run([CLI, "render", str(scene), "--fragments", "-", "--fragments-format",
+                         "binary-v1"], capture_output=True, check=True).stdout
+    header1, frags1 = rastrules.read_fragments_binary(v1)
+    assert header1["version"] == 1 and header1["runs"] == header["runs"]
+    assert np.array_equal(frags1, frags)
 
 
-def test_binary_reader_refuses_damaged_files(tmp_path):
+@pytest.mark.parametrize("version", [1, 2])
+def test_binary_reader_refuses_damaged_files(tmp_path, version):
     scene = scene_file(tmp_path, BINARY_SCENES["msaa"])
-    out = tmp_path / "f.bin"
-    assert cli("render", str(scene), "--fragments", str(out)).returncode == 0
-    good = out.read_bytes()
-    rastrules.read_fragments_binary(good)
+    good = subprocess.run([CLI, "render", str(scene), "--fragments", "-", "--fragments-format",
+                           "binary" if version == 2 else "binary-v1"],
+                          capture_output=True, check=True).stdout
+    assert rastrules.read_fragments_binary(good)[0]["version"] == version
     # Every cut is refused with a one-line error naming a byte offset.
     for cut in range(len(good)):
         with pytest.raises(ValueError, match=r"^byte \d+: "):
@@ -353,19 +361,60 @@ def test_binary_reader_refuses_damaged_files(tmp_path):
         return bytes(b)
 
     u32 = lambda v: v.to_bytes(4, "little")
-    for data, message in [
+    u64 = lambda v: v.to_bytes(8, "little")
+    cases = [
         (damaged(0, b"\x88"), "wrong magic"),
-        (damaged(8, u32(2)), "version 2"),
+        (damaged(8, u32(3)), "version 3 is neither 1 nor 2"),
         (damaged(12, u32(0)), "width 0"),
         (damaged(20, u32(17)), "samples 17"),
         (damaged(24, u32(1)), "mask bytes 1"),
         (damaged(28, u32(1)), "reserved"),
-        (damaged(32 + 8, u32(6)), "row 6 is outside"),
-        (damaged(32 + 16, u32(0)), "a run of 0 pixels"),
-        (damaged(32 + 20, b"\x00\x00"), "mask 0"),
-        (damaged(32 + 20, b"\x10\x00"), "mask 16"),
         (good + b"\x00", "bytes after the end record"),
         (damaged(len(good) - 16, (1 << 40).to_bytes(8, "little")), "the end record counts"),
-    ]:
+    ]
+    if version == 1:
+        cases += [
+            (damaged(32 + 8, u32(6)), "row 6 is outside"),
+            (damaged(32 + 16, u32(0)), "a run of 0 pixels"),
+            (damaged(32 + 20, b"\x00\x00"), "mask 0"),
+            (damaged(32 + 20, b"\x10\x00"), "mask 16"),
+        ]
+    else:
+        w = int.from_bytes(good[32:40], "little")
+        n, x, y = w & 0x7FFF, (w >> 15) & 0x3FFF, (w >> 29) & 0x3FFF
+        run = lambda n, x, y, step=0: u64(n | (x << 15) | (y << 29) | (step << 43))
+        cases += [
+            (damaged(32, run(n, x, 6)), "byte 32: row 6 is outside"),
+            (damaged(32, run(n, 8, y)), "byte 32: column 8 is outside"),
+            (damaged(32, run(100, x, y)), "a run of 100 pixels"),
+            (damaged(32, u64(9 << 15)), "byte 32: a control word of unknown kind 9"),
+            (damaged(40, b"\x00\x00"), "mask 0"),
+            (damaged(40, b"\x10\x00"), "mask 16"),
+            (damaged(len(good) - 20, u32(1)), "the end record's value is not 0"),
+            (good[:32] + u64((0xFFFFFFFF << 32) | (1 << 15)) + damaged(32, run(n, x, y, 1))[32:],
+             "byte 40: a run whose primitive passes 4294967295"),
+        ]
+    for data, message in cases:
         with pytest.raises(ValueError, match=message):
             rastrules.read_fragments_binary(data)
+    # The single-sample (vectorised) reader refuses the same damage.
+    plain = subprocess.run([CLI, "render", str(scene_file(tmp_path, BINARY_SCENES["triangles"])),
+                            "--fragments", "-", "--fragments-format",
+                            "binary" if version == 2 else "binary-v1"],
+                           capture_output=True, check=True).stdout
+    for cut in range(0, len(plain), 7):
+        with pytest.raises(ValueError, match=r"^byte \d+: "):
+            rastrules.read_fragments_binary(plain[:cut])
+    if version == 2:
+        w = int.from_bytes(plain[32:40], "little")
+        n, x, y = w & 0x7FFF, (w >> 15) & 0x3FFF, (w >> 29) & 0x3FFF
+        for data, message in [
+            (plain[:32] + u64(9 << 15) + plain[40:], "byte 32: a control word of unknown kind 9"),
+            (plain[:32] + u64(n | (x << 15) | (12 << 29)) + plain[40:], "byte 32: row 12"),
+            (plain[:32] + u64((0xFFFFFFFF << 32) | (1 << 15)) +
+             u64(n | (x << 15) | (y << 29) | (1 << 43)) + plain[40:],
+             "byte 40: a run whose primitive passes 4294967295"),
+            (plain[:-24], "the file ends before the end record"),
+        ]:
+            with pytest.raises(ValueError, match=message):
+                rastrules.read_fragments_binary(data)

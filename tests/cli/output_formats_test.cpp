@@ -110,6 +110,16 @@ TEST(BinaryFragments, HoldExactlyTheJsonListForEveryKindOfScene) {
                   .status,
               0);
     EXPECT_EQ(read_file(dir / "g.dat"), bin);
+    EXPECT_EQ(read.header.version, 2u);
+    // Version 1 (20 bytes a run) holds the same list.
+    const auto v1 = run_cli({"render", in.string(), "--fragments", "-", "--fragments-format",
+                             "binary-v1", "--threads", "2"});
+    ASSERT_EQ(v1.status, 0) << v1.err;
+    const auto read1 = read_binary(v1.out);
+    EXPECT_EQ(read1.header.version, 1u);
+    EXPECT_EQ(read1.fragments, read.fragments);
+    EXPECT_EQ(read1.runs, read.runs);
+    EXPECT_LT(bin.size(), v1.out.size());
   }
 }
 
@@ -126,7 +136,58 @@ TEST(BinaryFragments, ATriangleIsOneRunARowAndSingleSampleScenesStoreNoMasks) {
   EXPECT_EQ(read.runs, 63u);
   EXPECT_EQ(read.header.mask_bytes, 0u);
   EXPECT_EQ(read.fragments.size(), 63u * 64u / 2u);
-  EXPECT_EQ(bin.size(), 32u + 63u * 20u + 24u);
+  // Version 2: a word a run (the first primitive is 0, the step from the start).
+  EXPECT_EQ(bin.size(), 32u + 63u * 8u + 24u);
+  const auto v1 =
+      run_cli({"render", in.string(), "--fragments", "-", "--fragments-format", "binary-v1"});
+  EXPECT_EQ(v1.out.size(), 32u + 63u * 20u + 24u);
+  EXPECT_EQ(read_binary(v1.out).fragments, read.fragments);
+}
+
+// rule: SCENE.OUTPUT.BINARY
+// Version 2's steps and control words: a step of 2^21 - 1 is a word, one more a control word,
+// segments control words, and primitives up to 2^32 - 2; the reader gives the list back.
+TEST(BinaryFragments, VersionTwoReachesEveryPrimitiveAndSegment) {
+  namespace io = rastrules::io;
+  const std::uint32_t big = io::kFragmentBinaryMaxStep;
+  std::vector<Fragment> list = {
+      Fragment(0, 1, 0, 1),
+      Fragment(0, 2, 0, 1),
+      Fragment(big, 3, 1, 1),             // a step of 2^21 - 1: in the word
+      Fragment(2 * big + 1, 0, 0, 1),     // 2^21: a control word
+      Fragment(2 * big + 1, 4, 5, 1, 0u), // a segment: a control word
+      Fragment(2 * big + 1, 4, 6, 1, 0u), // the same segment: none
+      Fragment(2 * big + 1, 4, 6, 1, 7u), // another
+      Fragment(2 * big + 2, 0, 0, 1, 3u), // a new primitive with a segment: two
+      Fragment(2 * big + 3, 0, 0, 1),     // a step: the segment ends
+      Fragment(0xFFFFFFFEu, 7, 7, 1),     // the largest primitive
+  };
+  io::FragmentBinaryHeader h;
+  h.width = h.height = 8;
+  ASSERT_EQ(h.version, 2u);
+  for (const std::uint32_t version : {1u, 2u}) {
+    SCOPED_TRACE(version);
+    h.version = version;
+    std::FILE* f = std::tmpfile();
+    ASSERT_NE(f, nullptr);
+    {
+      io::FragmentBinaryWriter w(f, h);
+      for (const Fragment& fr : list)
+        ASSERT_EQ(w.add(fr), io::FragmentBinaryWriter::Added::kOk);
+      ASSERT_TRUE(w.finish());
+      EXPECT_EQ(w.runs(), 9u);
+    }
+    std::string bytes(static_cast<std::size_t>(std::ftell(f)), '\0');
+    std::rewind(f);
+    ASSERT_EQ(std::fread(bytes.data(), 1, bytes.size(), f), bytes.size());
+    std::fclose(f);
+    // 9 runs; version 2: control words for 2^21, the first and second segments, the new
+    // primitive with a segment (prim and seg), and the step to 0xFFFFFFFE (over 2^21).
+    EXPECT_EQ(bytes.size(), version == 1 ? 32u + 9u * 20u + 24u : 32u + (9u + 6u) * 8u + 24u);
+    const auto back = read_binary(bytes);
+    EXPECT_EQ(back.fragments, list);
+    EXPECT_EQ(back.runs, 9u);
+  }
 }
 
 // rule: SCENE.OUTPUT.BINARY
@@ -158,60 +219,106 @@ TEST(BinaryFragments, FieldsTheFormatDoesNotHoldAreBadInputAndLeaveNoFile) {
 }
 
 // rule: SCENE.OUTPUT.BINARY
-// Every cut and every damaged field is refused with a one-line error naming its byte.
+// Every cut and every damaged field is refused with a one-line error naming its byte, in both
+// versions.
 TEST(BinaryFragments, TheReaderRefusesEveryCutAndEveryDamagedField) {
   TempDir dir;
   const auto in = dir.write("s.json", kScenes.at("msaa"));
-  ASSERT_EQ(run_cli({"render", in.string(), "--fragments", (dir / "f.bin").string()}).status, 0);
-  const std::string good = read_file(dir / "f.bin");
-  for (std::size_t cut = 0; cut < good.size(); ++cut) {
-    const auto r = rastrules::io::read_fragment_binary(bytes_of(good.substr(0, cut)));
-    ASSERT_TRUE(std::holds_alternative<std::string>(r)) << "cut at " << cut;
-    EXPECT_EQ(std::get<std::string>(r).rfind("byte ", 0), 0u);
-  }
   const auto u32 = [](std::uint32_t v) {
     return std::string{static_cast<char>(v & 0xFF), static_cast<char>((v >> 8) & 0xFF),
                        static_cast<char>((v >> 16) & 0xFF), static_cast<char>(v >> 24)};
   };
-  const auto damaged = [&](std::size_t at, const std::string& value) {
-    std::string b = good;
-    b.replace(at, value.size(), value);
-    return b;
+  const auto u64 = [&](std::uint64_t v) {
+    return u32(static_cast<std::uint32_t>(v)) + u32(static_cast<std::uint32_t>(v >> 32));
   };
-  // The second run, to break the order: the first run's bytes (20 + masks padded).
-  const auto first_run_bytes = [&] {
-    const std::uint32_t n = static_cast<std::uint8_t>(good[32 + 16]);
-    return 20 + (n * 2 + 3) / 4 * 4;
-  }();
-  const std::vector<std::pair<std::string, std::string>> cases = {
-      {damaged(0, "\x88"), "byte 0: not a rastrules binary fragment list"},
-      {damaged(8, u32(2)), "byte 8: version 2 is not 1"},
-      {damaged(12, u32(0)), "byte 12: width 0 is outside [1, 16384]"},
-      {damaged(16, u32(16385)), "byte 16: height 16385"},
-      {damaged(20, u32(17)), "byte 20: samples 17"},
-      {damaged(24, u32(1)), "byte 24: mask bytes 1"},
-      {damaged(28, u32(1)), "byte 28: the reserved field is not 0"},
-      {damaged(32 + 8, u32(6)), "byte 40: row 6 is outside the target's 6"},
-      {damaged(32 + 12, u32(8)), "byte 44: column 8 is outside the target's 8"},
-      {damaged(32 + 16, u32(0)), "byte 48: a run of 0 pixels"},
-      {damaged(32 + 16, u32(100)), "does not fit a row of 8"},
-      {damaged(32 + 20, std::string(2, '\0')), "byte 52: mask 0 is not a nonzero mask"},
-      {damaged(32 + 20, std::string("\x10\0", 2)), "mask 16 is not a nonzero mask of 4 samples"},
-      {damaged(32 + first_run_bytes + 8, u32(0)), "does not come after the previous one"},
-      {good + std::string(1, '\0'), "bytes after the end record"},
-      {damaged(good.size() - 16, u32(12345)), "the end record counts 12345 fragments"},
-      {damaged(good.size() - 8, u32(7)), "the end record counts 7 runs"},
-  };
-  for (const auto& [data, message] : cases) {
-    const auto r = rastrules::io::read_fragment_binary(bytes_of(data));
-    ASSERT_TRUE(std::holds_alternative<std::string>(r)) << message;
-    EXPECT_NE(std::get<std::string>(r).find(message), std::string::npos)
-        << std::get<std::string>(r);
+  for (const std::string version : {"binary-v1", "binary"}) {
+    SCOPED_TRACE(version);
+    const auto written =
+        run_cli({"render", in.string(), "--fragments", "-", "--fragments-format", version});
+    ASSERT_EQ(written.status, 0) << written.err;
+    const std::string good = written.out;
+    for (std::size_t cut = 0; cut < good.size(); ++cut) {
+      const auto r = rastrules::io::read_fragment_binary(bytes_of(good.substr(0, cut)));
+      ASSERT_TRUE(std::holds_alternative<std::string>(r)) << "cut at " << cut;
+      EXPECT_EQ(std::get<std::string>(r).rfind("byte ", 0), 0u);
+    }
+    const auto damaged = [&](std::size_t at, const std::string& value) {
+      std::string b = good;
+      b.replace(at, value.size(), value);
+      return b;
+    };
+    std::vector<std::pair<std::string, std::string>> cases = {
+        {damaged(0, "\x88"), "byte 0: not a rastrules binary fragment list"},
+        {damaged(8, u32(3)), "byte 8: version 3 is neither 1 nor 2"},
+        {damaged(12, u32(0)), "byte 12: width 0 is outside [1, 16384]"},
+        {damaged(16, u32(16385)), "byte 16: height 16385"},
+        {damaged(20, u32(17)), "byte 20: samples 17"},
+        {damaged(24, u32(1)), "byte 24: mask bytes 1"},
+        {damaged(28, u32(1)), "byte 28: the reserved field is not 0"},
+        {good + std::string(1, '\0'), "bytes after the end record"},
+        {damaged(good.size() - 16, u32(12345)), "the end record counts 12345 fragments"},
+        {damaged(good.size() - 8, u32(7)), "the end record counts 7 runs"},
+    };
+    if (version == "binary-v1") {
+      // The second run, to break the order: the first run's bytes (20 + masks padded).
+      const std::uint32_t n = static_cast<std::uint8_t>(good[32 + 16]);
+      const std::size_t first_run_bytes = 20 + (n * 2 + 3) / 4 * 4;
+      cases.insert(
+          cases.end(),
+          {
+              {damaged(32 + 8, u32(6)), "byte 40: row 6 is outside the target's 6"},
+              {damaged(32 + 12, u32(8)), "byte 44: column 8 is outside the target's 8"},
+              {damaged(32 + 16, u32(0)), "byte 48: a run of 0 pixels"},
+              {damaged(32 + 16, u32(100)), "does not fit a row of 8"},
+              {damaged(32 + 20, std::string(2, '\0')), "byte 52: mask 0 is not a nonzero mask"},
+              {damaged(32 + 20, std::string("\x10\0", 2)),
+               "mask 16 is not a nonzero mask of 4 samples"},
+              {damaged(32 + first_run_bytes + 8, u32(0)), "does not come after the previous one"},
+              {damaged(good.size() - 20, u32(1)), "the end record's reserved field is not 0"},
+          });
+    } else {
+      // The first run's word (primitive 0 needs no control word): n, x, y, the step.
+      std::uint64_t w = 0;
+      for (int b = 7; b >= 0; --b)
+        w = (w << 8) | static_cast<std::uint8_t>(good[32 + static_cast<std::size_t>(b)]);
+      const std::uint64_t n = w & 0x7FFF;
+      ASSERT_GT(n, 0u);
+      const auto with = [&](std::uint64_t nn, std::uint64_t x, std::uint64_t y,
+                            std::uint64_t step) {
+        return damaged(32, u64(nn | (x << 15) | (y << 29) | (step << 43)));
+      };
+      const std::uint64_t x0 = (w >> 15) & 0x3FFF, y0 = (w >> 29) & 0x3FFF;
+      const std::size_t second = 32 + 8 + (n * 2 + 7) / 8 * 8;
+      // A control word setting primitive 0xFFFFFFFF before the first run, whose step is then 1.
+      std::string overflow = with(n, x0, y0, 1);
+      overflow.insert(32, u64((std::uint64_t{0xFFFFFFFFu} << 32) | (1u << 15)));
+      cases.insert(
+          cases.end(),
+          {
+              {with(n, x0, 6, 0), "byte 32: row 6 is outside the target's 6"},
+              {with(n, 8, y0, 0), "byte 32: column 8 is outside the target's 8"},
+              {with(100, x0, y0, 0), "byte 32: a run of 100 pixels from column"},
+              {damaged(32, u64(std::uint64_t{9} << 15)),
+               "byte 32: a control word of unknown kind 9"},
+              {damaged(40, std::string(2, '\0')), "byte 40: mask 0 is not a nonzero mask"},
+              {damaged(40, std::string("\x10\0", 2)), "mask 16 is not a nonzero mask of 4 samples"},
+              {damaged(second, u64(1 | (x0 << 15) | (y0 << 29))),
+               "does not come after the previous one"},
+              {overflow, "byte 40: a run whose primitive passes 4294967295"},
+              {damaged(good.size() - 20, u32(1)), "the end record's value is not 0"},
+          });
+    }
+    for (const auto& [data, message] : cases) {
+      const auto r = rastrules::io::read_fragment_binary(bytes_of(data));
+      ASSERT_TRUE(std::holds_alternative<std::string>(r)) << message;
+      EXPECT_NE(std::get<std::string>(r).find(message), std::string::npos)
+          << std::get<std::string>(r);
+    }
+    // The fragment limit bounds the result's memory.
+    const auto limited = rastrules::io::read_fragment_binary(bytes_of(good), 3);
+    ASSERT_TRUE(std::holds_alternative<std::string>(limited));
+    EXPECT_NE(std::get<std::string>(limited).find("more than 3 fragments"), std::string::npos);
   }
-  // The fragment limit bounds the result's memory.
-  const auto limited = rastrules::io::read_fragment_binary(bytes_of(good), 3);
-  ASSERT_TRUE(std::holds_alternative<std::string>(limited));
-  EXPECT_NE(std::get<std::string>(limited).find("more than 3 fragments"), std::string::npos);
 }
 
 // The counts a fragment list implies (SCENE.OUTPUT.COUNT), helper lanes left out.
@@ -637,7 +744,7 @@ TEST(FragmentCount, UsageErrorsNameTheOption) {
       {{"--count", ""}, "--count needs a file name"},
       {{"--png", "p.png", "--fragments-format", "binary"}, "--fragments-format needs --fragments"},
       {{"--fragments", "f", "--fragments-format", "csv"},
-       "--fragments-format needs \"json\" or \"binary\", got \"csv\""},
+       "--fragments-format needs \"json\", \"binary\" or \"binary-v1\", got \"csv\""},
   };
   for (const auto& [extra, message] : cases) {
     auto args = std::vector<std::string>{"render", in.string()};

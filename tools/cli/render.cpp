@@ -126,7 +126,8 @@ std::optional<std::string> write_resolved(const PreparedScene& scene,
 struct RenderRequest {
   std::string scene_path;
   std::optional<std::string> fragments_path, png_path, resolve_path, depth_out_path, count_path;
-  bool fragments_binary = false; // SCENE.OUTPUT.BINARY
+  bool fragments_binary = false;    // SCENE.OUTPUT.BINARY
+  std::uint32_t binary_version = 2; // 1 with --fragments-format binary-v1
   std::optional<int> scale;
   bool png_depth = false;
   std::uint64_t max_fragments = io::kDefaultMaxFragments;
@@ -135,6 +136,14 @@ struct RenderRequest {
   int to_stdout = 0;
   bool pipeline_plain = false;
 };
+
+// The binary list's header for the scene, in the version asked for.
+// rule: SCENE.OUTPUT.BINARY
+io::FragmentBinaryHeader binary_header(const RenderRequest& rq, const PreparedScene& scene) {
+  io::FragmentBinaryHeader h = io::fragment_binary_header(scene);
+  h.version = rq.binary_version;
+  return h;
+}
 
 // Returns the picture's magnification (0 without --png); prints the error and returns nullopt
 // when the picture would be too large.
@@ -440,7 +449,7 @@ int render_window(const PreparedScene& scene, const RenderRequest& rq) {
   std::optional<io::FragmentWriter> writer;
   std::optional<io::FragmentBinaryWriter> binary_writer; // rule: SCENE.OUTPUT.BINARY
   if (rq.fragments_path && rq.fragments_binary)
-    binary_writer.emplace(fragments_file.get(), io::fragment_binary_header(scene));
+    binary_writer.emplace(fragments_file.get(), binary_header(rq, scene));
   else if (rq.fragments_path)
     writer.emplace(fragments_file.get());
   std::unique_ptr<io::CoverageMap> coverage;
@@ -620,7 +629,7 @@ std::optional<int> render_fast_form_list(std::string_view text, const RenderRequ
   std::optional<io::FragmentWriter> json;
   std::optional<io::FragmentBinaryWriter> binary; // rule: SCENE.OUTPUT.BINARY
   if (rq.fragments_binary)
-    binary.emplace(file.get(), io::fragment_binary_header(scene));
+    binary.emplace(file.get(), binary_header(rq, scene));
   else
     json.emplace(file.get());
   const FastListResult r =
@@ -658,7 +667,7 @@ public:
     if (file_.open(*rq_.fragments_path))
       return false; // the usual path names the error
     if (rq_.fragments_binary)
-      binary_.emplace(file_.get(), io::fragment_binary_header(scene_));
+      binary_.emplace(file_.get(), binary_header(rq_, scene_));
     else
       json_.emplace(file_.get());
     pipe_.emplace(rq_.options.threads >= 2,
@@ -837,10 +846,11 @@ std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
   cl.scene_files(scenes);
   cl.value("--fragments", rq.fragments_path, "OUT.json",
            "write the fragment list, sorted by (prim, y, x)", "--fragments needs a file name");
-  cl.value("--fragments-format", fragments_format, "json|binary",
+  cl.value("--fragments-format", fragments_format, "json|binary|binary-v1",
            "the fragment list's format: JSON, or the compact binary runs of "
-           "SCENE.OUTPUT.BINARY (default: binary when OUT ends in .bin)",
-           "--fragments-format needs \"json\" or \"binary\", got nothing");
+           "SCENE.OUTPUT.BINARY (version 2, 8 bytes a run; binary-v1: version 1, 20 bytes a "
+           "run) (default: binary when OUT ends in .bin)",
+           "--fragments-format needs \"json\", \"binary\" or \"binary-v1\", got nothing");
   cl.value("--count", rq.count_path, "OUT.json",
            "write the counts alone: fragments per primitive and per pixel (overdraw), from the "
            "batch counter where the scene allows (SCENE.OUTPUT.COUNT)",
@@ -969,11 +979,13 @@ std::optional<int> parse_render_args(const Args& args, RenderRequest& rq) {
   if (fragments_format) {
     if (!rq.fragments_path)
       return usage_error("render: --fragments-format needs --fragments");
-    if (*fragments_format != "json" && *fragments_format != "binary") {
-      return error("--fragments-format needs \"json\" or \"binary\", got " +
+    if (*fragments_format != "json" && *fragments_format != "binary" &&
+        *fragments_format != "binary-v1") {
+      return error("--fragments-format needs \"json\", \"binary\" or \"binary-v1\", got " +
                    shown_value(fragments_format));
     }
-    rq.fragments_binary = *fragments_format == "binary";
+    rq.fragments_binary = *fragments_format != "json";
+    rq.binary_version = *fragments_format == "binary-v1" ? 1 : 2;
   } else if (rq.fragments_path) {
     rq.fragments_binary = rq.fragments_path->size() > 4 &&
                           rq.fragments_path->compare(rq.fragments_path->size() - 4, 4, ".bin") == 0;

@@ -34,11 +34,12 @@ std::uint64_t get_u64(std::span<const std::uint8_t> b, std::size_t at) {
   return std::uint64_t{get_u32(b, at)} | (std::uint64_t{get_u32(b, at + 4)} << 32);
 }
 
-// The bytes of a run's masks with their padding to a multiple of 4.
-std::size_t mask_block_bytes(std::uint32_t mask_bytes, std::uint64_t n) {
+// The bytes of a run's masks with their padding to a multiple of 4 (version 1) or 8.
+std::size_t mask_block_bytes(std::uint32_t mask_bytes, std::uint64_t n, std::uint32_t version = 1) {
   if (mask_bytes == 0)
     return 0;
-  return static_cast<std::size_t>((n * mask_bytes + 3) / 4 * 4);
+  const std::uint64_t unit = version == 1 ? 4 : 8;
+  return static_cast<std::size_t>((n * mask_bytes + unit - 1) / unit * unit);
 }
 
 // The order of SCENE.OUTPUT.FRAGMENTS restricted to what the format holds: (prim, y, x, seg),
@@ -90,8 +91,10 @@ std::optional<std::string> unsupported_field(const Fragment& f,
 FragmentBinaryWriter::FragmentBinaryWriter(std::FILE* out, FragmentBinaryHeader header)
     : out_(out), header_(header) {
   buffer_.reserve(kBufferBytes + 64);
+  if (header_.version != 1)
+    header_.version = 2;
   buffer_.append(reinterpret_cast<const char*>(kFragmentBinaryMagic), 8);
-  put_u32(buffer_, kFragmentBinaryVersion);
+  put_u32(buffer_, header_.version);
   put_u32(buffer_, header_.width);
   put_u32(buffer_, header_.height);
   put_u32(buffer_, header_.samples);
@@ -127,14 +130,19 @@ void FragmentBinaryWriter::append_little_endian(const std::uint32_t (&fields)[5]
 void FragmentBinaryWriter::close_run() {
   if (!run_open_)
     return;
-  append_run_fields();
+  if (header_.version == 1)
+    append_run_fields();
+  else
+    append_run_word();
   if (header_.mask_bytes != 0) {
     for (const std::uint16_t m : run_masks_) {
       const char b[2] = {static_cast<char>(m & 0xFF), static_cast<char>(m >> 8)};
       buffer_.append(b, 2);
     }
-    if (run_masks_.size() % 2 != 0)
-      buffer_.append(2, '\0');
+    // Padded to a multiple of 4 bytes (version 1) or 8 (version 2).
+    const std::size_t bytes = run_masks_.size() * 2;
+    const std::size_t unit = header_.version == 1 ? 4 : 8;
+    buffer_.append((unit - bytes % unit) % unit, '\0');
     run_masks_.clear();
   }
   end_run();
@@ -148,8 +156,12 @@ void FragmentBinaryWriter::flush_buffer() {
 
 bool FragmentBinaryWriter::finish() {
   close_run();
-  put_u32(buffer_, kFragmentBinaryEnd);
-  put_u32(buffer_, 0);
+  if (header_.version == 1) {
+    put_u32(buffer_, kFragmentBinaryEnd);
+    put_u32(buffer_, 0);
+  } else {
+    append_control(kFragmentBinaryStop, 0);
+  }
   put_u64(buffer_, count_);
   put_u64(buffer_, runs_);
   flush_buffer();
@@ -157,6 +169,164 @@ bool FragmentBinaryWriter::finish() {
     failed_ = true;
   return !failed_;
 }
+
+namespace {
+
+// What a reader has read so far of the runs: the last fragment, for the order.
+struct ReadState {
+  FragmentBinary& r;
+  std::uint64_t max_fragments;
+  std::uint32_t max_mask;
+  bool have_last = false;
+  Fragment last{};
+};
+
+// Where a run's fields lie, for the errors: the offsets of its row, its column and its n (a
+// version 2 word's own offset for all three), and of its masks.
+struct RunPlace {
+  std::size_t row, column, n, masks;
+};
+
+// Checks one run and appends its fragments; returns the bytes its masks take with their
+// padding, or an error.
+std::variant<std::size_t, std::string> take_run(std::span<const std::uint8_t> bytes, ReadState& st,
+                                                const RunPlace& at, std::uint32_t prim,
+                                                std::int64_t seg, std::uint32_t x, std::uint32_t y,
+                                                std::uint32_t n) {
+  const FragmentBinaryHeader& h = st.r.header;
+  if (y >= h.height)
+    return at_offset(at.row, "row " + std::to_string(static_cast<std::int32_t>(y)) +
+                                 " is outside the target's " + std::to_string(h.height));
+  if (x >= h.width)
+    return at_offset(at.column, "column " + std::to_string(static_cast<std::int32_t>(x)) +
+                                    " is outside the target's " + std::to_string(h.width));
+  if (n < 1 || std::uint64_t{x} + n > h.width)
+    return at_offset(at.n, "a run of " + std::to_string(n) + " pixels from column " +
+                               std::to_string(x) + " does not fit a row of " +
+                               std::to_string(h.width));
+  if (st.r.fragments.size() + n > st.max_fragments)
+    return at_offset(at.n, "more than " + std::to_string(st.max_fragments) + " fragments");
+  const std::size_t masks = mask_block_bytes(h.mask_bytes, n, h.version);
+  if (bytes.size() - at.masks < masks)
+    return at_offset(bytes.size(), "the file ends inside a run's masks");
+  Fragment first(prim, static_cast<std::int32_t>(x), static_cast<std::int32_t>(y), 1,
+                 seg < 0 ? std::nullopt
+                         : std::optional<std::uint32_t>(static_cast<std::uint32_t>(seg)));
+  if (st.have_last && !(order_key(st.last) < order_key(first)))
+    return at_offset(h.version == 1 ? at.row - 8 : at.n,
+                     "a run that does not come after the previous one in (prim, y, x, seg) "
+                     "order");
+  for (std::uint32_t i = 0; i < n; ++i) {
+    Fragment f = first;
+    f.x = static_cast<std::int32_t>(x + i);
+    if (h.mask_bytes != 0) {
+      const std::size_t m_at = at.masks + std::size_t{i} * 2;
+      f.mask = std::uint32_t{bytes[m_at]} | (std::uint32_t{bytes[m_at + 1]} << 8);
+      if (f.mask == 0 || f.mask > st.max_mask)
+        return at_offset(m_at, "mask " + std::to_string(f.mask) + " is not a nonzero mask of " +
+                                   std::to_string(h.samples) + " samples");
+    }
+    st.r.fragments.push_back(f);
+  }
+  for (std::size_t p = at.masks + std::size_t{n} * h.mask_bytes; p < at.masks + masks; ++p) {
+    if (bytes[p] != 0)
+      return at_offset(p, "a run's padding is not 0");
+  }
+  st.last = st.r.fragments.back();
+  st.have_last = true;
+  ++st.r.runs;
+  return masks;
+}
+
+// The end record at `at` (whole: its 24 bytes; its first 8 checked by the caller's version):
+// the counts, and nothing after it.
+std::optional<std::string> check_end(std::span<const std::uint8_t> bytes, std::size_t at,
+                                     const FragmentBinary& r) {
+  if (const std::uint64_t n = get_u64(bytes, at + 8); n != r.fragments.size())
+    return at_offset(at + 8, "the end record counts " + std::to_string(n) +
+                                 " fragments, the runs hold " + std::to_string(r.fragments.size()));
+  if (const std::uint64_t n = get_u64(bytes, at + 16); n != r.runs)
+    return at_offset(at + 16, "the end record counts " + std::to_string(n) +
+                                  " runs, the file holds " + std::to_string(r.runs));
+  if (at + kFragmentBinaryEndBytes != bytes.size())
+    return at_offset(at + kFragmentBinaryEndBytes, "bytes after the end record");
+  return std::nullopt;
+}
+
+// Version 1: 20-byte runs, each with its prim and seg.
+std::optional<std::string> read_runs20(std::span<const std::uint8_t> bytes, ReadState& st) {
+  std::size_t at = kFragmentBinaryHeaderBytes;
+  while (true) {
+    if (bytes.size() - at < 4)
+      return at_offset(bytes.size(), "the file ends before the end record");
+    const std::uint32_t prim = get_u32(bytes, at);
+    if (prim == kFragmentBinaryEnd) {
+      if (bytes.size() - at < kFragmentBinaryEndBytes)
+        return at_offset(bytes.size(), "the file ends inside the end record");
+      if (get_u32(bytes, at + 4) != 0)
+        return at_offset(at + 4, "the end record's reserved field is not 0");
+      return check_end(bytes, at, st.r);
+    }
+    if (bytes.size() - at < kFragmentBinaryRunBytes)
+      return at_offset(bytes.size(), "the file ends inside a run");
+    const std::uint32_t seg = get_u32(bytes, at + 4);
+    const auto taken =
+        take_run(bytes, st, RunPlace{at + 8, at + 12, at + 16, at + kFragmentBinaryRunBytes}, prim,
+                 seg == kFragmentBinaryNoSeg ? -1 : std::int64_t{seg}, get_u32(bytes, at + 12),
+                 get_u32(bytes, at + 8), get_u32(bytes, at + 16));
+    if (const auto* err = std::get_if<std::string>(&taken))
+      return *err;
+    at += kFragmentBinaryRunBytes + std::get<std::size_t>(taken);
+  }
+}
+
+// Version 2: 64-bit words, runs and control words.
+std::optional<std::string> read_words(std::span<const std::uint8_t> bytes, ReadState& st) {
+  std::size_t at = kFragmentBinaryHeaderBytes;
+  std::uint32_t prim = 0;
+  std::int64_t seg = -1;
+  while (true) {
+    if (bytes.size() - at < kFragmentBinaryWordBytes)
+      return at_offset(bytes.size(), "the file ends before the end record");
+    const std::uint64_t w = get_u64(bytes, at);
+    const auto n = static_cast<std::uint32_t>(w & 0x7FFF);
+    if (n == 0) {
+      const auto kind = static_cast<std::uint32_t>((w >> 15) & 0x1FFFF);
+      const auto value = static_cast<std::uint32_t>(w >> 32);
+      if (kind == kFragmentBinaryStop) {
+        if (bytes.size() - at < kFragmentBinaryEndBytes)
+          return at_offset(bytes.size(), "the file ends inside the end record");
+        if (value != 0)
+          return at_offset(at + 4, "the end record's value is not 0");
+        return check_end(bytes, at, st.r);
+      }
+      if (kind == kFragmentBinaryPrim) {
+        prim = value;
+        seg = -1;
+      } else if (kind == kFragmentBinarySeg) {
+        seg = value == kFragmentBinaryNoSeg ? -1 : std::int64_t{value};
+      } else {
+        return at_offset(at, "a control word of unknown kind " + std::to_string(kind));
+      }
+      at += kFragmentBinaryWordBytes;
+      continue;
+    }
+    if (const auto step = static_cast<std::uint32_t>(w >> 43); step != 0) {
+      if (prim > 0xFFFFFFFFu - step)
+        return at_offset(at, "a run whose primitive passes 4294967295");
+      prim += step;
+      seg = -1;
+    }
+    const auto taken = take_run(bytes, st, RunPlace{at, at, at, at + kFragmentBinaryWordBytes},
+                                prim, seg, static_cast<std::uint32_t>((w >> 15) & 0x3FFF),
+                                static_cast<std::uint32_t>((w >> 29) & 0x3FFF), n);
+    if (const auto* err = std::get_if<std::string>(&taken))
+      return *err;
+    at += kFragmentBinaryWordBytes + std::get<std::size_t>(taken);
+  }
+}
+
+} // namespace
 
 // rule: SCENE.OUTPUT.BINARY
 std::variant<FragmentBinary, std::string> read_fragment_binary(std::span<const std::uint8_t> bytes,
@@ -166,9 +336,10 @@ std::variant<FragmentBinary, std::string> read_fragment_binary(std::span<const s
     return at_offset(bytes.size(), "the file ends inside the 32-byte header");
   if (!std::equal(bytes.begin(), bytes.begin() + 8, std::begin(kFragmentBinaryMagic)))
     return at_offset(0, "not a rastrules binary fragment list (wrong magic bytes)");
-  if (const std::uint32_t v = get_u32(bytes, 8); v != kFragmentBinaryVersion)
-    return at_offset(8, "version " + std::to_string(v) + " is not 1");
   FragmentBinaryHeader& h = r.header;
+  h.version = get_u32(bytes, 8);
+  if (h.version != 1 && h.version != 2)
+    return at_offset(8, "version " + std::to_string(h.version) + " is neither 1 nor 2");
   h.width = get_u32(bytes, 12);
   h.height = get_u32(bytes, 16);
   h.samples = get_u32(bytes, 20);
@@ -187,79 +358,11 @@ std::variant<FragmentBinary, std::string> read_fragment_binary(std::span<const s
     return at_offset(24, "mask bytes 0 (no masks) with " + std::to_string(h.samples) + " samples");
   if (get_u32(bytes, 28) != 0)
     return at_offset(28, "the reserved field is not 0");
-  const std::uint32_t max_mask =
-      h.samples >= 16 ? 0xFFFFu : static_cast<std::uint32_t>((1u << h.samples) - 1u);
-  std::size_t at = kFragmentBinaryHeaderBytes;
-  bool have_last = false;
-  Fragment last{};
-  while (true) {
-    if (bytes.size() - at < 4)
-      return at_offset(bytes.size(), "the file ends before the end record");
-    const std::uint32_t prim = get_u32(bytes, at);
-    if (prim == kFragmentBinaryEnd) {
-      if (bytes.size() - at < kFragmentBinaryEndBytes)
-        return at_offset(bytes.size(), "the file ends inside the end record");
-      if (get_u32(bytes, at + 4) != 0)
-        return at_offset(at + 4, "the end record's reserved field is not 0");
-      if (const std::uint64_t n = get_u64(bytes, at + 8); n != r.fragments.size())
-        return at_offset(at + 8, "the end record counts " + std::to_string(n) +
-                                     " fragments, the runs hold " +
-                                     std::to_string(r.fragments.size()));
-      if (const std::uint64_t n = get_u64(bytes, at + 16); n != r.runs)
-        return at_offset(at + 16, "the end record counts " + std::to_string(n) +
-                                      " runs, the file holds " + std::to_string(r.runs));
-      if (at + kFragmentBinaryEndBytes != bytes.size())
-        return at_offset(at + kFragmentBinaryEndBytes, "bytes after the end record");
-      return r;
-    }
-    if (bytes.size() - at < kFragmentBinaryRunBytes)
-      return at_offset(bytes.size(), "the file ends inside a run");
-    const std::uint32_t seg = get_u32(bytes, at + 4);
-    const std::uint32_t y = get_u32(bytes, at + 8);
-    const std::uint32_t x = get_u32(bytes, at + 12);
-    const std::uint32_t n = get_u32(bytes, at + 16);
-    if (y >= h.height)
-      return at_offset(at + 8, "row " + std::to_string(static_cast<std::int32_t>(y)) +
-                                   " is outside the target's " + std::to_string(h.height));
-    if (x >= h.width)
-      return at_offset(at + 12, "column " + std::to_string(static_cast<std::int32_t>(x)) +
-                                    " is outside the target's " + std::to_string(h.width));
-    if (n < 1 || std::uint64_t{x} + n > h.width)
-      return at_offset(at + 16, "a run of " + std::to_string(n) + " pixels from column " +
-                                    std::to_string(x) + " does not fit a row of " +
-                                    std::to_string(h.width));
-    if (r.fragments.size() + n > max_fragments)
-      return at_offset(at + 16, "more than " + std::to_string(max_fragments) + " fragments");
-    const std::size_t masks = mask_block_bytes(h.mask_bytes, n);
-    if (bytes.size() - at - kFragmentBinaryRunBytes < masks)
-      return at_offset(bytes.size(), "the file ends inside a run's masks");
-    Fragment first(prim, static_cast<std::int32_t>(x), static_cast<std::int32_t>(y), 1,
-                   seg == kFragmentBinaryNoSeg ? std::nullopt : std::optional<std::uint32_t>(seg));
-    if (have_last && !(order_key(last) < order_key(first)))
-      return at_offset(at, "a run that does not come after the previous one in (prim, y, x, seg) "
-                           "order");
-    const std::size_t mask_at = at + kFragmentBinaryRunBytes;
-    for (std::uint32_t i = 0; i < n; ++i) {
-      Fragment f = first;
-      f.x = static_cast<std::int32_t>(x + i);
-      if (h.mask_bytes != 0) {
-        const std::size_t m_at = mask_at + std::size_t{i} * 2;
-        f.mask = std::uint32_t{bytes[m_at]} | (std::uint32_t{bytes[m_at + 1]} << 8);
-        if (f.mask == 0 || f.mask > max_mask)
-          return at_offset(m_at, "mask " + std::to_string(f.mask) + " is not a nonzero mask of " +
-                                     std::to_string(h.samples) + " samples");
-      }
-      r.fragments.push_back(f);
-    }
-    for (std::size_t p = mask_at + std::size_t{n} * h.mask_bytes; p < mask_at + masks; ++p) {
-      if (bytes[p] != 0)
-        return at_offset(p, "a run's padding is not 0");
-    }
-    last = r.fragments.back();
-    have_last = true;
-    ++r.runs;
-    at = mask_at + masks;
-  }
+  ReadState st{r, max_fragments,
+               h.samples >= 16 ? 0xFFFFu : static_cast<std::uint32_t>((1u << h.samples) - 1u)};
+  if (auto err = h.version == 1 ? read_runs20(bytes, st) : read_words(bytes, st))
+    return *err;
+  return r;
 }
 
 } // namespace rastrules::io

@@ -24,12 +24,22 @@ namespace rastrules::io {
 // or cut by a terminal does not pass for one).
 inline constexpr std::uint8_t kFragmentBinaryMagic[8] = {0x89, 'R',  'R',  'F',
                                                          '\r', '\n', 0x1A, '\n'};
-inline constexpr std::uint32_t kFragmentBinaryVersion = 1;
+// Version 2 (the default) packs a run into one 64-bit word; version 1 takes 20 bytes a run.
+inline constexpr std::uint32_t kFragmentBinaryVersion = 2;
 inline constexpr std::size_t kFragmentBinaryHeaderBytes = 32;
-inline constexpr std::size_t kFragmentBinaryRunBytes = 20; // before its masks
+inline constexpr std::size_t kFragmentBinaryRunBytes = 20; // version 1, before its masks
 inline constexpr std::size_t kFragmentBinaryEndBytes = 24;
 inline constexpr std::uint32_t kFragmentBinaryNoSeg = 0xFFFFFFFFu;
-inline constexpr std::uint32_t kFragmentBinaryEnd = 0xFFFFFFFFu; // the end record's "prim"
+inline constexpr std::uint32_t kFragmentBinaryEnd = 0xFFFFFFFFu; // version 1's end "prim"
+// Version 2's words (little-endian u64). A run: bits 0-14 n (1 .. 16384), 15-28 x, 29-42 y,
+// 43-63 the step of prim from the previous run's (0 .. 2^21 - 1; a step other than 0 starts the
+// new primitive with no segment). A control word: bits 0-14 zero, 15-31 its kind, 32-63 its
+// value.
+inline constexpr std::size_t kFragmentBinaryWordBytes = 8;
+inline constexpr std::uint32_t kFragmentBinaryMaxStep = (std::uint32_t{1} << 21) - 1;
+inline constexpr std::uint32_t kFragmentBinaryPrim = 1; // prim := value, no segment
+inline constexpr std::uint32_t kFragmentBinarySeg = 2;  // seg := value (0xFFFFFFFF: none)
+inline constexpr std::uint32_t kFragmentBinaryStop = 3; // the end record's first word (value 0)
 
 // What the header says about the target and the masks.
 struct FragmentBinaryHeader {
@@ -39,6 +49,7 @@ struct FragmentBinaryHeader {
   // 0: every mask is 1 and none is stored (single-sample scenes, is_single_sample); 2: one
   // 16-bit mask a fragment.
   std::uint32_t mask_bytes = 0;
+  std::uint32_t version = kFragmentBinaryVersion; // 1 or 2
 };
 
 // Returns the header a render of the prepared scene writes: its target, its sample count, and
@@ -120,9 +131,47 @@ private:
     if (buffer_.size() >= kBufferBytes)
       flush_buffer();
   }
+  // Version 2: the open run's word, after the control words its primitive and segment need
+  // (prim_ and seg_ are the previous run's, 0 and none before the first).
+  void append_run_word() {
+    const Key& k = run_first_;
+    std::uint64_t step = k.prim - prim_; // k.prim >= prim_: runs come in order
+    if (step != 0) {
+      if (step > kFragmentBinaryMaxStep || k.seg != -1) {
+        append_control(kFragmentBinaryPrim, k.prim);
+        step = 0;
+      }
+      prim_ = k.prim;
+      seg_ = -1;
+    }
+    if (k.seg != seg_) {
+      append_control(kFragmentBinarySeg,
+                     k.seg < 0 ? kFragmentBinaryNoSeg : static_cast<std::uint32_t>(k.seg));
+      seg_ = k.seg;
+    }
+    append_word(std::uint64_t{run_length_} |
+                (std::uint64_t{static_cast<std::uint32_t>(k.x)} << 15) |
+                (std::uint64_t{static_cast<std::uint32_t>(k.y)} << 29) | (step << 43));
+  }
+  void append_control(std::uint32_t kind, std::uint32_t value) {
+    append_word((std::uint64_t{value} << 32) | (std::uint64_t{kind} << 15));
+  }
+  void append_word(std::uint64_t w) {
+    if constexpr (std::endian::native == std::endian::little) {
+      buffer_.append(reinterpret_cast<const char*>(&w), sizeof w);
+    } else {
+      char b[8];
+      for (int i = 0; i < 8; ++i)
+        b[i] = static_cast<char>((w >> (8 * i)) & 0xFF);
+      buffer_.append(b, 8);
+    }
+  }
   // close_run for an open run without masks (mask_bytes 0).
   void close_plain_run() {
-    append_run_fields();
+    if (header_.version == 1)
+      append_run_fields();
+    else
+      append_run_word();
     end_run();
   }
   void flush_buffer();
@@ -150,6 +199,8 @@ private:
   std::uint32_t run_length_ = 0;
   std::vector<std::uint16_t> run_masks_;
   Key last_{};
+  std::uint32_t prim_ = 0; // version 2: the previous run's primitive and segment
+  std::int64_t seg_ = -1;
   std::uint64_t count_ = 0;
   std::uint64_t runs_ = 0;
   bool failed_ = false;
