@@ -165,10 +165,16 @@ int main(int argc, char** argv) {
        [&] {
          rastrules::io::FragmentBinaryWriter w(null,
                                                rastrules::io::fragment_binary_header(prepared));
+         // As write_fast_list hands them over: a chunk's runs at once where the batch unit
+         // has them so (add_runs), the others one by one.
          const rastrules::raster::RunSink sink{
-             &w, [](void* c, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t k) {
+             &w,
+             [](void* c, std::uint32_t tri, std::int32_t y, std::int32_t x, std::int32_t k) {
                (void)static_cast<rastrules::io::FragmentBinaryWriter*>(c)->add_run(
                    tri, y, x, static_cast<std::uint32_t>(k));
+             },
+             [](void* c, const rastrules::raster::BatchRun* r, std::size_t k) {
+               (void)static_cast<rastrules::io::FragmentBinaryWriter*>(c)->add_runs(r, k, 0);
              }};
          (void)rastrules::raster::fast_runs_batch(xy, prepared.width, prepared.height,
                                                   prepared.state, rastrules::best_isa(), sink);

@@ -219,6 +219,55 @@ TEST(BinaryFragments, FieldsTheFormatDoesNotHoldAreBadInputAndLeaveNoFile) {
 }
 
 // rule: SCENE.OUTPUT.BINARY
+// add_runs writes what add_run writes run by run, leaving out (and reporting) a run that does
+// not come after the one before it, in both versions.
+TEST(BinaryFragments, RunsAtOnceWriteWhatRunsOneByOneWrite) {
+  namespace io = rastrules::io;
+  struct Run {
+    std::uint32_t tri;
+    std::int32_t y, x, n;
+  };
+  // Primitive 5 + tri: two rows of one, a run joining the previous one, one out of order.
+  const std::vector<Run> runs = {{0, 0, 1, 2}, {0, 1, 0, 3}, {0, 1, 3, 1},
+                                 {1, 0, 0, 1}, {1, 0, 0, 4}, {3, 7, 2, 5}};
+  io::FragmentBinaryHeader h;
+  h.width = h.height = 8;
+  const auto file_of = [&](bool at_once, std::uint32_t version) {
+    h.version = version;
+    std::FILE* f = std::tmpfile();
+    EXPECT_NE(f, nullptr);
+    {
+      io::FragmentBinaryWriter w(f, h);
+      if (at_once) {
+        EXPECT_EQ(w.add_runs(runs.data(), runs.size(), 5),
+                  io::FragmentBinaryWriter::Added::kOutOfOrder);
+      } else {
+        for (std::size_t i = 0; i < runs.size(); ++i) {
+          const Run& r = runs[i];
+          EXPECT_EQ(w.add_run(5 + r.tri, r.y, r.x, static_cast<std::uint32_t>(r.n)),
+                    i == 4 ? io::FragmentBinaryWriter::Added::kOutOfOrder
+                           : io::FragmentBinaryWriter::Added::kOk);
+        }
+      }
+      EXPECT_TRUE(w.finish());
+      EXPECT_EQ(w.count(), 2u + 3u + 1u + 1u + 5u);
+      EXPECT_EQ(w.runs(), 4u); // (0, 1..2), (1, 0..3), (0, 0), (7, 2..6)
+    }
+    std::string bytes(static_cast<std::size_t>(std::ftell(f)), '\0');
+    std::rewind(f);
+    EXPECT_EQ(std::fread(bytes.data(), 1, bytes.size(), f), bytes.size());
+    std::fclose(f);
+    return bytes;
+  };
+  for (const std::uint32_t version : {1u, 2u}) {
+    SCOPED_TRACE(version);
+    const std::string at_once = file_of(true, version);
+    EXPECT_EQ(at_once, file_of(false, version));
+    EXPECT_EQ(read_binary(at_once).fragments.size(), 12u);
+  }
+}
+
+// rule: SCENE.OUTPUT.BINARY
 // Every cut and every damaged field is refused with a one-line error naming its byte, in both
 // versions.
 TEST(BinaryFragments, TheReaderRefusesEveryCutAndEveryDamagedField) {

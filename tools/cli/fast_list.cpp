@@ -31,9 +31,9 @@ constexpr double kBinaryBandBudget = 65536;
 constexpr std::size_t kMostJsonLine = 60;
 
 // A run as the units of a binary list hold it (16 bytes, the host's byte order: it never
-// leaves the process).
+// leaves the process); tri is the run's primitive (FragmentBinaryWriter::add_runs with base 0).
 struct RunRecord {
-  std::uint32_t prim;
+  std::uint32_t tri;
   std::int32_t y, x;
   std::uint32_t n;
 };
@@ -182,8 +182,8 @@ FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, st
           s.in_order = add_run(s.json, s.binary, s.first_prim + tri, y, x, k) && s.in_order;
         },
         // The small triangles' runs of a chunk at once: the limit checked once for all of them
-        // (a list that passes it is declined whatever it wrote), each run written in a loop
-        // (FragmentBinaryWriter::add_run is inline) instead of a call a run.
+        // (a list that passes it is declined whatever it wrote), the runs written by the binary
+        // writer's add_runs in one call, or each run in a loop (FragmentWriter::add_run).
         [](void* c, const raster::BatchRun* r, std::size_t n) {
           auto& s = *static_cast<Sink*>(c);
           std::uint64_t k = 0;
@@ -192,6 +192,12 @@ FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, st
           s.count += k;
           if (s.count > s.max)
             throw Stop{};
+          if (s.binary) {
+            s.in_order =
+                s.binary->add_runs(r, n, s.first_prim) == io::FragmentBinaryWriter::Added::kOk &&
+                s.in_order;
+            return;
+          }
           for (std::size_t i = 0; i < n; ++i)
             s.in_order = add_run(s.json, s.binary, s.first_prim + r[i].tri, r[i].y, r[i].x,
                                  static_cast<std::uint32_t>(r[i].n)) &&
@@ -247,10 +253,16 @@ FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, st
       json->add_encoded_text(body);
       return;
     }
-    for (std::size_t at = 0; at + sizeof(RunRecord) <= body.size(); at += sizeof(RunRecord)) {
-      RunRecord r;
-      std::memcpy(&r, body.data() + at, sizeof r);
-      out.in_order = add_run(json, binary, r.prim, r.y, r.x, r.n) && out.in_order;
+    // The unit's runs to the writer's add_runs a block at a time (copied out of the bytes).
+    RunRecord block[256];
+    for (std::size_t at = 0; at < body.size();) {
+      const std::size_t k = std::min(std::size(block), (body.size() - at) / sizeof(RunRecord));
+      if (k == 0)
+        break;
+      std::memcpy(block, body.data() + at, k * sizeof(RunRecord));
+      out.in_order =
+          binary->add_runs(block, k, 0) == io::FragmentBinaryWriter::Added::kOk && out.in_order;
+      at += k * sizeof(RunRecord);
     }
   };
   try {

@@ -122,18 +122,14 @@ FragmentBinaryWriter::Added FragmentBinaryWriter::add(const Fragment& f) {
   return Added::kOk;
 }
 
-void FragmentBinaryWriter::append_little_endian(const std::uint32_t (&fields)[5]) {
-  for (const std::uint32_t v : fields)
-    put_u32(buffer_, v);
-}
-
 void FragmentBinaryWriter::close_run() {
   if (!run_open_)
     return;
-  if (header_.version == 1)
-    append_run_fields();
-  else
-    append_run_word();
+  char fields[3 * kFragmentBinaryWordBytes];
+  const char* end = header_.version == 1
+                        ? put_fields(fields, run_first_, run_length_)
+                        : put_run_word(fields, run_first_, run_length_, prim_, seg_);
+  buffer_.append(fields, static_cast<std::size_t>(end - fields));
   if (header_.mask_bytes != 0) {
     for (const std::uint16_t m : run_masks_) {
       const char b[2] = {static_cast<char>(m & 0xFF), static_cast<char>(m >> 8)};
@@ -145,7 +141,10 @@ void FragmentBinaryWriter::close_run() {
     buffer_.append((unit - bytes % unit) % unit, '\0');
     run_masks_.clear();
   }
-  end_run();
+  run_open_ = false;
+  ++runs_;
+  if (buffer_.size() >= kBufferBytes)
+    flush_buffer();
 }
 
 void FragmentBinaryWriter::flush_buffer() {
@@ -160,7 +159,9 @@ bool FragmentBinaryWriter::finish() {
     put_u32(buffer_, kFragmentBinaryEnd);
     put_u32(buffer_, 0);
   } else {
-    append_control(kFragmentBinaryStop, 0);
+    char word[kFragmentBinaryWordBytes];
+    buffer_.append(word,
+                   static_cast<std::size_t>(put_control(word, kFragmentBinaryStop, 0) - word));
   }
   put_u64(buffer_, count_);
   put_u64(buffer_, runs_);

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <optional>
 #include <span>
 #include <string>
@@ -75,31 +76,77 @@ public:
   // Appends the n >= 1 fragments of primitive prim at x, x + 1, ..., x + n - 1 of row y (no
   // segment, mask 1): the same file as adding them one by one. kUnsupported when the header
   // stores masks; kOutOfOrder when the first does not come after the previous fragment.
-  // Inline: the batch unit's runs come here one by one (2.6 x 10^6 of them for 10^6 small
-  // triangles, where a call, tuple comparisons and a second call to write each run cost a fifth
-  // of `render --fragments OUT.bin`).
   Added add_run(std::uint32_t prim, std::int32_t y, std::int32_t x, std::uint32_t n) {
+    const struct {
+      std::uint32_t tri;
+      std::int32_t y, x;
+      std::uint32_t n;
+    } one{0, y, x, n};
+    return add_runs(&one, 1, prim);
+  }
+  // add_run for each of runs[0 .. count) in turn (each with .tri, .y, .x and .n: primitive
+  // prim_base + tri); kOutOfOrder when any run was out of order (it is left out, as add_run
+  // leaves it). Inline, with the writer's state in locals for the loop and the runs' bytes
+  // staged on the stack: the batch unit hands over a chunk's runs at once (2.6 x 10^6 runs for
+  // 10^6 small triangles, where a call a run, its state stored and reloaded through the writer
+  // and an append a run took 15 % of `render --fragments OUT.bin`).
+  template <class Run> Added add_runs(const Run* runs, std::size_t count, std::uint32_t prim_base) {
     if (header_.mask_bytes != 0)
       return Added::kUnsupported;
-    // After last_ in (prim, y, x, seg) order, this run's seg (none) being the least.
-    if (count_ > 0 && !(last_.prim < prim ||
-                        (last_.prim == prim && (last_.y < y || (last_.y == y && last_.x < x)))))
-      return Added::kOutOfOrder;
-    // extends(Key{prim, y, x, -1}), written out: through a Key built here, 10^6 small
-    // triangles' binary list took 10 ms more.
-    if (run_open_ && prim == run_first_.prim && run_first_.seg == -1 && y == run_first_.y &&
-        std::int64_t{x} == std::int64_t{run_first_.x} + run_length_) {
-      run_length_ += n;
-    } else {
-      if (run_open_)
-        close_plain_run();
-      run_open_ = true;
-      run_first_ = Key{prim, y, x, -1};
-      run_length_ = n;
+    const bool v1 = header_.version == 1;
+    bool in_order = true;
+    bool open = run_open_;
+    Key first = run_first_, last = last_;
+    std::uint32_t length = run_length_, prim = prim_;
+    std::int64_t seg = seg_;
+    std::uint64_t fragments = count_, written = runs_;
+    char stage[kStageBytes + 3 * kFragmentBinaryWordBytes];
+    char* out = stage;
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::uint32_t p = prim_base + runs[i].tri;
+      const std::int32_t y = runs[i].y, x = runs[i].x;
+      const auto n = static_cast<std::uint32_t>(runs[i].n);
+      // After last in (prim, y, x, seg) order, this run's seg (none) being the least.
+      if (fragments > 0 &&
+          !(last.prim < p || (last.prim == p && (last.y < y || (last.y == y && last.x < x))))) {
+        in_order = false;
+        continue;
+      }
+      if (open && p == first.prim && first.seg == -1 && y == first.y &&
+          std::int64_t{x} == std::int64_t{first.x} + length) {
+        length += n;
+      } else {
+        if (open) {
+          out = v1 ? put_fields(out, first, length) : put_run_word(out, first, length, prim, seg);
+          ++written;
+          if (out - stage >= static_cast<std::ptrdiff_t>(kStageBytes)) {
+            buffer_.append(stage, static_cast<std::size_t>(out - stage));
+            out = stage;
+            if (buffer_.size() >= kBufferBytes)
+              flush_buffer();
+          }
+        }
+        open = true;
+        first = Key{p, y, x, -1};
+        length = n;
+      }
+      last = Key{p, y, static_cast<std::int32_t>(std::int64_t{x} + n - 1), -1};
+      fragments += n;
     }
-    last_ = Key{prim, y, static_cast<std::int32_t>(std::int64_t{x} + n - 1), -1};
-    count_ += n;
-    return Added::kOk;
+    if (out != stage) {
+      buffer_.append(stage, static_cast<std::size_t>(out - stage));
+      if (buffer_.size() >= kBufferBytes)
+        flush_buffer();
+    }
+    run_open_ = open;
+    run_first_ = first;
+    last_ = last;
+    run_length_ = length;
+    prim_ = prim;
+    seg_ = seg;
+    count_ = fragments;
+    runs_ = written;
+    return in_order ? Added::kOk : Added::kOutOfOrder;
   }
   // Writes the last run and the end record. Returns false when any write failed.
   bool finish();
@@ -110,75 +157,8 @@ public:
 private:
   // The buffer is written out when it holds this many bytes.
   static constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
-  void close_run();
-  // The open run's 20 bytes: one append on a little-endian host, four bytes at a time elsewhere.
-  void append_run_fields() {
-    const std::uint32_t fields[5] = {
-        run_first_.prim,
-        run_first_.seg < 0 ? kFragmentBinaryNoSeg : static_cast<std::uint32_t>(run_first_.seg),
-        static_cast<std::uint32_t>(run_first_.y), static_cast<std::uint32_t>(run_first_.x),
-        run_length_};
-    if constexpr (std::endian::native == std::endian::little)
-      buffer_.append(reinterpret_cast<const char*>(fields), sizeof fields);
-    else
-      append_little_endian(fields);
-  }
-  void append_little_endian(const std::uint32_t (&fields)[5]);
-  // The open run is written: counted, and the buffer flushed when full.
-  void end_run() {
-    run_open_ = false;
-    ++runs_;
-    if (buffer_.size() >= kBufferBytes)
-      flush_buffer();
-  }
-  // Version 2: the open run's word, after the control words its primitive and segment need
-  // (prim_ and seg_ are the previous run's, 0 and none before the first).
-  void append_run_word() {
-    const Key& k = run_first_;
-    std::uint64_t step = k.prim - prim_; // k.prim >= prim_: runs come in order
-    if (step != 0) {
-      if (step > kFragmentBinaryMaxStep || k.seg != -1) {
-        append_control(kFragmentBinaryPrim, k.prim);
-        step = 0;
-      }
-      prim_ = k.prim;
-      seg_ = -1;
-    }
-    if (k.seg != seg_) {
-      append_control(kFragmentBinarySeg,
-                     k.seg < 0 ? kFragmentBinaryNoSeg : static_cast<std::uint32_t>(k.seg));
-      seg_ = k.seg;
-    }
-    append_word(std::uint64_t{run_length_} |
-                (std::uint64_t{static_cast<std::uint32_t>(k.x)} << 15) |
-                (std::uint64_t{static_cast<std::uint32_t>(k.y)} << 29) | (step << 43));
-  }
-  void append_control(std::uint32_t kind, std::uint32_t value) {
-    append_word((std::uint64_t{value} << 32) | (std::uint64_t{kind} << 15));
-  }
-  void append_word(std::uint64_t w) {
-    if constexpr (std::endian::native == std::endian::little) {
-      buffer_.append(reinterpret_cast<const char*>(&w), sizeof w);
-    } else {
-      char b[8];
-      for (int i = 0; i < 8; ++i)
-        b[i] = static_cast<char>((w >> (8 * i)) & 0xFF);
-      buffer_.append(b, 8);
-    }
-  }
-  // close_run for an open run without masks (mask_bytes 0).
-  void close_plain_run() {
-    if (header_.version == 1)
-      append_run_fields();
-    else
-      append_run_word();
-    end_run();
-  }
-  void flush_buffer();
-
-  std::FILE* out_;
-  FragmentBinaryHeader header_;
-  std::string buffer_;
+  // add_runs appends its staged bytes to the buffer when they reach this many.
+  static constexpr std::size_t kStageBytes = 4096;
   // A fragment's place in the order the format holds: (prim, y, x, seg), seg -1 when there is
   // none (a Fragment record, 76 bytes with its optionals, built twice a run made the writer
   // cost three times the batch unit that found the runs).
@@ -187,6 +167,61 @@ private:
     std::int32_t y = 0, x = 0;
     std::int64_t seg = -1;
   };
+  // Version 1: the run (k, n)'s 20 bytes at out; returns their end.
+  static char* put_fields(char* out, const Key& k, std::uint32_t n) {
+    const std::uint32_t fields[5] = {
+        k.prim, k.seg < 0 ? kFragmentBinaryNoSeg : static_cast<std::uint32_t>(k.seg),
+        static_cast<std::uint32_t>(k.y), static_cast<std::uint32_t>(k.x), n};
+    if constexpr (std::endian::native == std::endian::little) {
+      std::memcpy(out, fields, sizeof fields);
+      return out + sizeof fields;
+    }
+    for (const std::uint32_t v : fields)
+      for (int b = 0; b < 4; ++b)
+        *out++ = static_cast<char>((v >> (8 * b)) & 0xFF);
+    return out;
+  }
+  // A little-endian u64 at out; returns its end.
+  static char* put_word(char* out, std::uint64_t w) {
+    if constexpr (std::endian::native == std::endian::little) {
+      std::memcpy(out, &w, sizeof w);
+      return out + sizeof w;
+    }
+    for (int b = 0; b < 8; ++b)
+      *out++ = static_cast<char>((w >> (8 * b)) & 0xFF);
+    return out;
+  }
+  static char* put_control(char* out, std::uint32_t kind, std::uint32_t value) {
+    return put_word(out, (std::uint64_t{value} << 32) | (std::uint64_t{kind} << 15));
+  }
+  // Version 2: the run (k, n)'s word at out, after the control words its primitive and segment
+  // need (prim and seg: the previous run's, 0 and none before the first; updated). At most 24
+  // bytes; returns their end.
+  static char* put_run_word(char* out, const Key& k, std::uint32_t n, std::uint32_t& prim,
+                            std::int64_t& seg) {
+    std::uint64_t step = k.prim - prim; // k.prim >= prim: runs come in order
+    if (step != 0) {
+      if (step > kFragmentBinaryMaxStep || k.seg != -1) {
+        out = put_control(out, kFragmentBinaryPrim, k.prim);
+        step = 0;
+      }
+      prim = k.prim;
+      seg = -1;
+    }
+    if (k.seg != seg) {
+      out = put_control(out, kFragmentBinarySeg,
+                        k.seg < 0 ? kFragmentBinaryNoSeg : static_cast<std::uint32_t>(k.seg));
+      seg = k.seg;
+    }
+    return put_word(out, std::uint64_t{n} | (std::uint64_t{static_cast<std::uint32_t>(k.x)} << 15) |
+                             (std::uint64_t{static_cast<std::uint32_t>(k.y)} << 29) | (step << 43));
+  }
+  void close_run();
+  void flush_buffer();
+
+  std::FILE* out_;
+  FragmentBinaryHeader header_;
+  std::string buffer_;
   // Whether the pixel at k continues the open run (its row's next pixel, the same primitive and
   // segment); k comes after last_ (checked first).
   [[nodiscard]] bool extends(const Key& k) const {
