@@ -151,7 +151,7 @@ public:
   // an exponent, less room): the caller reads it token by token, which accepts all that this
   // does. (The token reader's bounds and whitespace checks: 6 ms of `render --count`'s 102 on
   // 10^6 small triangles.)
-  bool compact_vertices(std::array<float, 6>& xy) {
+  bool compact_vertices(float* xy) {
     if (end_ - p_ < kCompactRoom)
       return false;
     static constexpr char kAfter[6] = {',', ']', ',', ']', ',', ']'};
@@ -160,7 +160,7 @@ public:
       return false;
     q += 2;
     for (int k = 0; k < 6; ++k) {
-      q = compact_number(q, xy[static_cast<std::size_t>(k)]);
+      q = compact_number(q, xy[k]);
       if (q == nullptr || *q != kAfter[k])
         return false;
       ++q;
@@ -377,8 +377,8 @@ bool target(FastScanner& s, std::int32_t& width, std::int32_t& height) {
   });
 }
 
-// [[x, y], [x, y], [x, y]] into xy (x0 y0 x1 y1 x2 y2).
-bool vertices(FastScanner& s, std::array<float, 6>& xy) {
+// [[x, y], [x, y], [x, y]] into xy[0 .. 6) (x0 y0 x1 y1 x2 y2).
+bool vertices(FastScanner& s, float* xy) {
   if (!s.eat('['))
     return false;
   for (std::size_t i = 0; i < 3; ++i) {
@@ -391,7 +391,10 @@ bool vertices(FastScanner& s, std::array<float, 6>& xy) {
 }
 
 // {"type": "triangle", "v": [[x, y], [x, y], [x, y]]} in either key order.
-bool triangle(FastScanner& s, std::array<float, 6>& xy) {
+// Read into xy[0 .. 6): the sink's own storage (scan_fast), since six floats stored one by one
+// and copied at once as 16 and 8 bytes stalled on store forwarding (5 % of `render --fragments
+// OUT.bin` of 10^6 small triangles).
+bool triangle(FastScanner& s, float* xy) {
   // The spelling without whitespace, which generated scenes use, is matched at once: the same
   // tokens the object's general form below reads.
   s.skip_ws();
@@ -437,7 +440,8 @@ template <class Sink> bool finish(Sink& sink) {
 
 // Scans the fast form: for a streaming sink (kStreams) sink.begin(head) with the scene of the
 // keys before the list, then sink.reserve(n) once with a bound on the triangles the text can
-// hold, then sink.add(xy) for each triangle in order (false declines), then finish(sink). Returns
+// hold, then for each triangle in order sink.slot() (six floats it is read into) and
+// sink.add() (false declines), then finish(sink). Returns
 // the scene the general reader gives for the target with no primitives (every other field as it
 // sets them), or nullopt where the fast path declines (the sink may then hold part of the list).
 // With parts, as ListParts says.
@@ -502,7 +506,6 @@ std::optional<Scene> scan_fast(std::string_view json_text, Sink& sink, ListParts
     // the pages of a list left unused, when the fast path declines, are never touched).
     sink.reserve(std::min(json_text.size() / 44 + 1, kMaxScenePrimitives));
     std::size_t n = 0;
-    std::array<float, 6> xy{};
     do {
       if (parts != nullptr) {
         s.skip_ws();
@@ -519,7 +522,7 @@ std::optional<Scene> scan_fast(std::string_view json_text, Sink& sink, ListParts
       }
       if (n++ >= kMaxScenePrimitives)
         return false; // the general reader names the limit
-      if (!triangle(s, xy) || !sink.add(xy))
+      if (!triangle(s, sink.slot()) || !sink.add())
         return false;
     } while (s.eat(','));
     return parts == nullptr && s.eat(']') && finish(sink);
@@ -544,8 +547,10 @@ std::optional<Scene> scan_fast(std::string_view json_text, Sink& sink, ListParts
 std::optional<Scene> read_scene_fast(std::string_view json_text) {
   struct Primitives {
     std::vector<Primitive> list;
+    std::array<float, 6> xy{};
     void reserve(std::size_t n) { list.reserve(n); }
-    bool add(const std::array<float, 6>& xy) {
+    float* slot() { return xy.data(); }
+    bool add() {
       Primitive& p = list.emplace_back();
       p.type = PrimitiveType::kTriangle;
       for (std::size_t i = 0; i < 3; ++i)
@@ -565,10 +570,12 @@ namespace {
 struct Coordinates {
   std::vector<float> xy;
   void reserve(std::size_t n) { xy.reserve(6 * n); }
-  bool add(const std::array<float, 6>& t) {
-    xy.insert(xy.end(), t.begin(), t.end());
-    return true;
+  // Six floats at the end (a triangle that fails leaves them: the scan then declines).
+  float* slot() {
+    xy.resize(xy.size() + 6);
+    return xy.data() + xy.size() - 6;
   }
+  bool add() { return true; }
 };
 
 // Where the part of the list that starts at or after `at` begins: the '{' of a triangle after
@@ -604,11 +611,14 @@ ListPart read_part(const char* from, const char* until, const char* text_end) {
   FastScanner s(from, text_end);
   // At least 44 bytes a triangle, comma included (scan_fast's bound).
   part.xy.reserve(6 * (static_cast<std::size_t>((until ? until : text_end) - from) / 44 + 1));
-  std::array<float, 6> xy{};
   for (;;) {
-    if (part.xy.size() / 6 >= kMaxScenePrimitives || !triangle(s, xy))
+    if (part.xy.size() / 6 >= kMaxScenePrimitives)
       return part;
-    part.xy.insert(part.xy.end(), xy.begin(), xy.end());
+    part.xy.resize(part.xy.size() + 6);
+    if (!triangle(s, part.xy.data() + part.xy.size() - 6)) {
+      part.xy.resize(part.xy.size() - 6);
+      return part;
+    }
     if (!s.eat(',')) {
       part.ok = until == nullptr && s.eat(']');
       part.end = s.at();
@@ -685,8 +695,8 @@ std::optional<Scene> stream_triangles_fast(std::string_view json_text, TriangleS
     std::size_t n = 0; // floats held
     bool begin(const Scene& head) { return stream.begin(head); }
     void reserve(std::size_t triangles) { stream.reserve(triangles); }
-    bool add(const std::array<float, 6>& t) {
-      std::copy(t.begin(), t.end(), xy.begin() + static_cast<std::ptrdiff_t>(n));
+    float* slot() { return xy.data() + n; }
+    bool add() {
       n += 6;
       return n < xy.size() || finish();
     }
