@@ -223,6 +223,9 @@ int main(int argc, char** argv) {
          {cli, "render", s, "--count", (dir / "c2.json").string(), "--threads", "2"}},
         {"rastrules render --fragments OUT.bin",
          {cli, "render", s, "--fragments", (dir / "f.bin").string()}},
+        {"rastrules render --fragments OUT.bin --fragments-format binary-v1",
+         {cli, "render", s, "--fragments", (dir / "f1.bin").string(), "--fragments-format",
+          "binary-v1"}},
         {"rastrules render --fragments OUT.bin --threads 2",
          {cli, "render", s, "--fragments", (dir / "f2.bin").string(), "--threads", "2"}},
         {"rastrules render --fragments OUT.json",
@@ -230,9 +233,30 @@ int main(int argc, char** argv) {
     };
   }
   if (!before.empty()) {
-    processes.push_back(
-        {"earlier rastrules render --fragments OUT.json",
-         {before, "render", scene_path.string(), "--fragments", (dir / "e.json").string()}});
+    // Each earlier run beside the same run of this build, first on even rounds and second on
+    // odd ones (a run's time depends on what ran just before it: the page cache's writeback of
+    // the previous outputs, above all).
+    const std::string s = scene_path.string();
+    const std::map<std::string, std::pair<std::string, std::vector<std::string>>> earlier = {
+        {"rastrules render --count",
+         {"earlier rastrules render --count",
+          {before, "render", s, "--count", (dir / "ec.json").string()}}},
+        {"rastrules render --fragments OUT.bin",
+         {"earlier rastrules render --fragments OUT.bin",
+          {before, "render", s, "--fragments", (dir / "e.bin").string()}}},
+        {"rastrules render --fragments OUT.json",
+         {"earlier rastrules render --fragments OUT.json",
+          {before, "render", s, "--fragments", (dir / "e.json").string()}}},
+    };
+    std::vector<std::pair<std::string, std::vector<std::string>>> paired;
+    for (auto& p : processes) {
+      paired.push_back(p);
+      if (const auto e = earlier.find(p.first); e != earlier.end())
+        paired.push_back(e->second);
+    }
+    if (cli.empty()) // no current command line: the earlier one's JSON list alone, as before
+      paired.push_back(earlier.at("rastrules render --fragments OUT.json"));
+    processes = std::move(paired);
   }
   for (int r = 0; r < rounds; ++r) {
     for (const auto& [name, run] : stages) {
@@ -240,7 +264,15 @@ int main(int argc, char** argv) {
       run();
       t[name].push_back(seconds_since(t0));
     }
-    for (const auto& [name, args] : processes) {
+    for (std::size_t i = 0; i < processes.size(); ++i) {
+      // On odd rounds an earlier run goes before the run it follows on even ones.
+      std::size_t k = i;
+      if (r % 2 == 1 && i + 1 < processes.size() && processes[i + 1].first.rfind("earlier", 0) == 0)
+        k = i + 1;
+      else if (r % 2 == 1 && i > 0 && processes[i].first.rfind("earlier", 0) == 0 &&
+               processes[i - 1].first.rfind("earlier", 0) != 0)
+        k = i - 1;
+      const auto& [name, args] = processes[k];
       const auto t0 = Clock::now();
       if (run_process(args) != 0) {
         std::fprintf(stderr, "rastrules_render_split: %s failed\n", name.c_str());
