@@ -96,7 +96,11 @@ public:
     const bool v1 = header_.version == 1;
     bool in_order = true;
     bool open = run_open_;
-    Key first = run_first_, last = last_;
+    Key first = run_first_;
+    // The last fragment as one unsigned 128-bit key ordered as (prim, y, x): the order check
+    // without a branch on each field.
+    Order last = order_of(last_.prim, last_.y, last_.x);
+    bool have_last = count_ > 0;
     std::uint32_t length = run_length_, prim = prim_;
     std::int64_t seg = seg_;
     std::uint64_t fragments = count_, written = runs_;
@@ -107,19 +111,21 @@ public:
       const std::int32_t y = runs[i].y, x = runs[i].x;
       const auto n = static_cast<std::uint32_t>(runs[i].n);
       // After last in (prim, y, x, seg) order, this run's seg (none) being the least.
-      if (fragments > 0 &&
-          !(last.prim < p || (last.prim == p && (last.y < y || (last.y == y && last.x < x))))) {
+      if (have_last && !(last < order_of(p, y, x))) [[unlikely]] {
         in_order = false;
         continue;
       }
-      if (open && p == first.prim && first.seg == -1 && y == first.y &&
-          std::int64_t{x} == std::int64_t{first.x} + length) {
+      // The batch unit's runs never join (one a row of a triangle): a branch on the whole test,
+      // not on each of its parts (the first, the same primitive, is a coin toss).
+      const bool joins = open & (p == first.prim) & (first.seg == -1) & (y == first.y) &
+                         (std::int64_t{x} == std::int64_t{first.x} + length);
+      if (joins) [[unlikely]] {
         length += n;
       } else {
         if (open) {
           out = v1 ? put_fields(out, first, length) : put_run_word(out, first, length, prim, seg);
           ++written;
-          if (out - stage >= static_cast<std::ptrdiff_t>(kStageBytes)) {
+          if (out - stage >= static_cast<std::ptrdiff_t>(kStageBytes)) [[unlikely]] {
             buffer_.append(stage, static_cast<std::size_t>(out - stage));
             out = stage;
             if (buffer_.size() >= kBufferBytes)
@@ -130,7 +136,8 @@ public:
         first = Key{p, y, x, -1};
         length = n;
       }
-      last = Key{p, y, static_cast<std::int32_t>(std::int64_t{x} + n - 1), -1};
+      last = order_of(p, y, static_cast<std::int32_t>(std::int64_t{x} + n - 1));
+      have_last = true;
       fragments += n;
     }
     if (out != stage) {
@@ -140,7 +147,9 @@ public:
     }
     run_open_ = open;
     run_first_ = first;
-    last_ = last;
+    if (fragments != count_) // the last fragment added, which closes the open run's row
+      last_ = Key{first.prim, first.y,
+                  static_cast<std::int32_t>(std::int64_t{first.x} + length - 1), first.seg};
     run_length_ = length;
     prim_ = prim;
     seg_ = seg;
@@ -167,6 +176,14 @@ private:
     std::int32_t y = 0, x = 0;
     std::int64_t seg = -1;
   };
+  // (prim, y, x) as an unsigned 128-bit integer in the same order.
+  __extension__ typedef unsigned __int128 Order; // GCC and Clang
+  static Order order_of(std::uint32_t prim, std::int32_t y, std::int32_t x) {
+    const auto flip = [](std::int32_t v) {
+      return std::uint64_t{static_cast<std::uint32_t>(v) ^ 0x80000000u};
+    };
+    return (Order{prim} << 64) | (flip(y) << 32) | flip(x);
+  }
   // Version 1: the run (k, n)'s 20 bytes at out; returns their end.
   static char* put_fields(char* out, const Key& k, std::uint32_t n) {
     const std::uint32_t fields[5] = {
@@ -200,6 +217,14 @@ private:
   static char* put_run_word(char* out, const Key& k, std::uint32_t n, std::uint32_t& prim,
                             std::int64_t& seg) {
     std::uint64_t step = k.prim - prim; // k.prim >= prim: runs come in order
+    // No segment before or now, and a step the word holds (every triangle's run): no control
+    // word, and no branch on whether the primitive is new.
+    if (step <= kFragmentBinaryMaxStep && k.seg == -1 && seg == -1) [[likely]] {
+      prim = k.prim;
+      return put_word(out,
+                      std::uint64_t{n} | (std::uint64_t{static_cast<std::uint32_t>(k.x)} << 15) |
+                          (std::uint64_t{static_cast<std::uint32_t>(k.y)} << 29) | (step << 43));
+    }
     if (step != 0) {
       if (step > kFragmentBinaryMaxStep || k.seg != -1) {
         out = put_control(out, kFragmentBinaryPrim, k.prim);
