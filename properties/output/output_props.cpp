@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -190,6 +191,57 @@ RC_GTEST_PROP(OutputBinary, ReadsBackToTheFragmentListOrRefusesAFieldItDoesNotHo
   std::vector<std::uint8_t> longer = *bytes;
   longer.push_back(*rc::gen::arbitrary<std::uint8_t>());
   RC_ASSERT(std::holds_alternative<std::string>(io::read_fragment_binary(longer)));
+}
+
+// rule: SCENE.INPUT.LIMITS
+// add_work_bounds (four triangles at a time in SSE2 lanes where it can) adds exactly the work of
+// each triangle's triangle_bound, and refuses exactly the lists with a coordinate that is not
+// finite, whatever the coordinates (huge, tiny, negative, zeros of both signs, infinities, NaN)
+// and however many triangles (the lanes' tail).
+RC_GTEST_PROP(OutputCount, WorkBoundsAddEachTrianglesBound, ()) {
+  const auto coordinate = rc::gen::weightedOneOf<float>(
+      {{40, rc::gen::map(rc::gen::inRange(0, 64), [](int v) { return static_cast<float>(v); })},
+       {6, rc::gen::map(rc::gen::inRange(-40, 20000), [](int v) { return static_cast<float>(v); })},
+       {6, rc::gen::map(rc::gen::inRange(-400000, 400000),
+                        [](int v) { return static_cast<float>(v) / 64.0f; })},
+       {4, rc::gen::element(0.0f, -0.0f, 1e-40f, -1e-40f, 16383.5f, 16384.0f, 1e7f, -1e7f, 3e38f,
+                            -3e38f)}});
+  const auto triangles = *rc::gen::inRange<std::size_t>(0, 14);
+  std::vector<float> xy;
+  for (std::size_t i = 0; i < 6 * triangles; ++i)
+    xy.push_back(*coordinate);
+  // A quarter of the lists: one coordinate not finite, anywhere.
+  if (triangles > 0 && *rc::gen::inRange(0, 4) == 0)
+    xy[*rc::gen::inRange<std::size_t>(0, xy.size())] = *rc::gen::element(
+        std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+        std::numeric_limits<float>::quiet_NaN());
+  const auto width = *rc::gen::inRange<std::int32_t>(1, 16385);
+  const auto height = *rc::gen::inRange<std::int32_t>(1, 16385);
+  bool finite = true;
+  double want = 0;
+  for (std::size_t i = 0; i < triangles; ++i) {
+    const auto b = rastrules::cli::triangle_bound(&xy[6 * i], width, height);
+    if (!b)
+      finite = false;
+    else
+      want += b->work();
+  }
+  RC_CLASSIFY(!finite, "not finite");
+  RC_CLASSIFY(triangles >= 4, "four or more");
+  double work = 7; // added to
+  const bool ok = rastrules::cli::add_work_bounds(xy, width, height, std::uint64_t{1} << 62, work);
+  RC_ASSERT(ok == finite);
+  if (finite)
+    RC_ASSERT(work == 7 + want);
+  // The limit: exactly at the sum passes, one below refuses.
+  if (finite && want >= 1) {
+    double w = 0;
+    RC_ASSERT(
+        rastrules::cli::add_work_bounds(xy, width, height, static_cast<std::uint64_t>(want), w));
+    w = 0;
+    RC_ASSERT(!rastrules::cli::add_work_bounds(xy, width, height,
+                                               static_cast<std::uint64_t>(want) - 1, w));
+  }
 }
 
 // rule: SCENE.OUTPUT.COUNT, FAST.BATCH.EQUALS.PLAIN

@@ -13,6 +13,10 @@
 #include <stdexcept>
 #include <variant>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "rastrules/io/scene_json.hpp"
 #include "rastrules/msaa.hpp"
 #include "rastrules/raster/fast_batch.hpp"
@@ -71,7 +75,45 @@ bool add_work_bounds(std::span<const float> xy, std::int32_t width, std::int32_t
   // by one, while work stays below 2^53 (far above any work limit).
   bool finite = true;
   double sum = 0;
-  for (std::size_t i = 0; i < xy.size(); i += 6) {
+  std::size_t i = 0;
+#if defined(__SSE2__)
+  // Four triangles at a time in SSE2 lanes (the baseline instruction set), each triangle's
+  // x and y side by side: the same minima, maxima, double differences, clips, truncations and
+  // products as below, lane by lane (minpd is "a < b ? a : b", the ternaries below), and
+  // the products summed in other partial sums, which the sums' exactness allows. (Scalar, a
+  // triangle's 50 operations were 6 % of `render --fragments OUT.bin` on 10^6 small triangles.)
+  {
+    const __m128d side = _mm_set_pd(static_cast<double>(height), static_cast<double>(width));
+    const __m128d three = _mm_set1_pd(3.0);
+    __m128 not_finite = _mm_setzero_ps(); // x - x summed: 0, or NaN from an infinity or a NaN
+    __m128d sums = _mm_setzero_pd();
+    // The clipped extents (cols, rows) of the triangle whose first two vertices are a (x0 y0 x1
+    // y1) and whose third is b's low half (x2 y2).
+    const auto extents = [&](__m128 a, __m128 b) {
+      const __m128 lo = _mm_min_ps(_mm_min_ps(a, _mm_movehl_ps(a, a)), b);
+      const __m128 hi = _mm_max_ps(_mm_max_ps(a, _mm_movehl_ps(a, a)), b);
+      const __m128d span = _mm_sub_pd(_mm_cvtps_pd(hi), _mm_cvtps_pd(lo));
+      const __m128d s = _mm_min_pd(span, side); // span < side ? span : side
+      return _mm_min_pd(_mm_add_pd(_mm_cvtepi32_pd(_mm_cvttpd_epi32(s)), three), side);
+    };
+    for (; i + 24 <= xy.size(); i += 24) {
+      __m128 v[6];
+      for (int k = 0; k < 6; ++k) {
+        v[k] = _mm_loadu_ps(&xy[i + 4 * static_cast<std::size_t>(k)]);
+        not_finite = _mm_add_ps(not_finite, _mm_sub_ps(v[k], v[k]));
+      }
+      const __m128d e0 = extents(v[0], v[1]), e1 = extents(v[2], _mm_movehl_ps(v[1], v[1]));
+      const __m128d e2 = extents(v[3], v[4]), e3 = extents(v[5], _mm_movehl_ps(v[4], v[4]));
+      sums = _mm_add_pd(sums, _mm_mul_pd(_mm_unpacklo_pd(e0, e1), _mm_unpackhi_pd(e0, e1)));
+      sums = _mm_add_pd(sums, _mm_mul_pd(_mm_unpacklo_pd(e2, e3), _mm_unpackhi_pd(e2, e3)));
+    }
+    finite = _mm_movemask_ps(_mm_cmpeq_ps(not_finite, _mm_setzero_ps())) == 0xF;
+    double lanes[2];
+    _mm_storeu_pd(lanes, sums);
+    sum = lanes[0] + lanes[1];
+  }
+#endif
+  for (; i < xy.size(); i += 6) {
     const float* t = &xy[i];
     finite &= bound_detail::finite_triangle(t);
     const float lo_x = std::min({t[0], t[2], t[4]}), hi_x = std::max({t[0], t[2], t[4]});
