@@ -232,8 +232,11 @@ private:
     const bool negative = *q == '-';
     q += negative ? 1 : 0;
     const char* first = q;
-    std::int64_t m = 0;
-    while (q - first < 8 && is_digit(*q)) {
+    // At most 8 digits in all, so m < 10^8 fits 32 bits (a 64-bit m cost a sign extension a
+    // digit, and the count test q - first < 8 two more instructions than a pointer test).
+    const char* const last = first + 8;
+    std::int32_t m = 0;
+    while (q != last && is_digit(*q)) {
       m = 10 * m + (*q - '0');
       ++q;
     }
@@ -243,7 +246,8 @@ private:
     int after = 0;
     if (*q == '.') {
       const char* frac = ++q;
-      while (q - frac < 8 - count && is_digit(*q)) {
+      const char* const frac_last = last + 1; // 8 - count digits after the point
+      while (q != frac_last && is_digit(*q)) {
         m = 10 * m + (*q - '0');
         ++q;
       }
@@ -259,7 +263,7 @@ private:
       out = static_cast<float>(negative ? -m : m);
     } else {
       static constexpr float kPow10[] = {1e0f, 1e1f, 1e2f, 1e3f, 1e4f, 1e5f, 1e6f, 1e7f};
-      if (m > (std::int64_t{1} << 24))
+      if (m > (std::int32_t{1} << 24))
         return nullptr;
       const float f = static_cast<float>(m) / kPow10[after];
       out = negative ? -f : f;
