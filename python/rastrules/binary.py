@@ -133,9 +133,19 @@ def _runs_v2(data, width, height, samples, mask_bytes, max_fragments):
         if unknown.size:
             i = int(unknown[0])
             _fail(_HEADER + i * _WORD, f"a control word of unknown kind {int(kind[i])}")
+        index = np.arange(end, dtype=np.int64)
+        field = lambda w, shift: ((w >> np.uint64(shift)) & np.uint64(0x3FFF)).astype(np.int64)
+        if not control.any():
+            # Runs alone (every list of triangles whose primitives step by less than 2^21): prim
+            # is the sum of the steps, and no run has a segment.
+            prim = np.cumsum((w >> np.uint64(43)).astype(np.int64))
+            over = np.nonzero(prim > 0xFFFFFFFF)[0]
+            if over.size:
+                _fail(_HEADER + int(over[0]) * _WORD, "a run whose primitive passes 4294967295")
+            seg = np.full(end, _NO_SEG, dtype=np.int64)
+            return prim, seg, field(w, 29), field(w, 15), n, _HEADER + index * _WORD, masks, at
         value = (w >> np.uint64(32)).astype(np.int64)
         step = np.where(control, 0, (w >> np.uint64(43)).astype(np.int64))
-        index = np.arange(end, dtype=np.int64)
         sets = control & (kind == _PRIM)
         # prim: the last control word's value, plus the steps since.
         moved = np.cumsum(step)
@@ -155,8 +165,7 @@ def _runs_v2(data, width, height, samples, mask_bytes, max_fragments):
             _fail(_HEADER + int(over[0]) * _WORD, "a run whose primitive passes 4294967295")
         run_at = _HEADER + index[runs] * _WORD
         w = w[runs]
-        field = lambda shift: ((w >> np.uint64(shift)) & np.uint64(0x3FFF)).astype(np.int64)
-        return prim[runs], seg[runs], field(29), field(15), n[runs], run_at, masks, at
+        return prim[runs], seg[runs], field(w, 29), field(w, 15), n[runs], run_at, masks, at
     # With masks: a walk, word by word.
     rows = []
     starts = []
