@@ -415,6 +415,10 @@ def test_binary_reader_refuses_damaged_files(tmp_path, version):
              u64(n | (x << 15) | (y << 29) | (1 << 43)) + plain[40:],
              "byte 40: a run whose primitive passes 4294967295"),
             (plain[:-24], "the file ends before the end record"),
+            # Runs alone whose steps of 2^21 - 1 pass 2^32 - 1 at the 2049th.
+            (plain[:32] + b"".join(u64(1 | ((2**21 - 1) << 43)) for _ in range(2049)) +
+             u64(3 << 15) + u64(2049) + u64(2049),
+             f"byte {32 + 2048 * 8}: a run whose primitive passes 4294967295"),
         ]:
             with pytest.raises(ValueError, match=message):
                 rastrules.read_fragments_binary(data)
