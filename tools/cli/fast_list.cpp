@@ -199,8 +199,8 @@ FastListResult write_fast_list(std::span<const float> xy, std::int32_t width, st
             return;
           }
           for (std::size_t i = 0; i < n; ++i)
-            s.in_order = add_run(s.json, s.binary, s.first_prim + r[i].tri, r[i].y, r[i].x,
-                                 static_cast<std::uint32_t>(r[i].n)) &&
+            s.in_order = s.json->add_run(s.first_prim + r[i].tri, r[i].y, r[i].x,
+                                         static_cast<std::uint32_t>(r[i].n)) &&
                          s.in_order;
         }};
     try {

@@ -35,7 +35,7 @@ std::uint64_t get_u64(std::span<const std::uint8_t> b, std::size_t at) {
 }
 
 // The bytes of a run's masks with their padding to a multiple of 4 (version 1) or 8.
-std::size_t mask_block_bytes(std::uint32_t mask_bytes, std::uint64_t n, std::uint32_t version = 1) {
+std::size_t mask_block_bytes(std::uint32_t mask_bytes, std::uint64_t n, std::uint32_t version) {
   if (mask_bytes == 0)
     return 0;
   const std::uint64_t unit = version == 1 ? 4 : 8;
@@ -135,10 +135,8 @@ void FragmentBinaryWriter::close_run() {
       const char b[2] = {static_cast<char>(m & 0xFF), static_cast<char>(m >> 8)};
       buffer_.append(b, 2);
     }
-    // Padded to a multiple of 4 bytes (version 1) or 8 (version 2).
-    const std::size_t bytes = run_masks_.size() * 2;
-    const std::size_t unit = header_.version == 1 ? 4 : 8;
-    buffer_.append((unit - bytes % unit) % unit, '\0');
+    buffer_.append(mask_block_bytes(2, run_masks_.size(), header_.version) - run_masks_.size() * 2,
+                   '\0');
     run_masks_.clear();
   }
   run_open_ = false;
@@ -182,10 +180,10 @@ struct ReadState {
   Fragment last{};
 };
 
-// Where a run's fields lie, for the errors: the offsets of its row, its column and its n (a
-// version 2 word's own offset for all three), and of its masks.
+// Where a run lies, for the errors: the offsets of the run, of its row, its column and its n
+// (a version 2 word's own offset for all four), and of its masks.
 struct RunPlace {
-  std::size_t row, column, n, masks;
+  std::size_t start, row, column, n, masks;
 };
 
 // Checks one run and appends its fragments; returns the bytes its masks take with their
@@ -214,7 +212,7 @@ std::variant<std::size_t, std::string> take_run(std::span<const std::uint8_t> by
                  seg < 0 ? std::nullopt
                          : std::optional<std::uint32_t>(static_cast<std::uint32_t>(seg)));
   if (st.have_last && !(order_key(st.last) < order_key(first)))
-    return at_offset(h.version == 1 ? at.row - 8 : at.n,
+    return at_offset(at.start,
                      "a run that does not come after the previous one in (prim, y, x, seg) "
                      "order");
   for (std::uint32_t i = 0; i < n; ++i) {
@@ -272,9 +270,9 @@ std::optional<std::string> read_runs20(std::span<const std::uint8_t> bytes, Read
       return at_offset(bytes.size(), "the file ends inside a run");
     const std::uint32_t seg = get_u32(bytes, at + 4);
     const auto taken =
-        take_run(bytes, st, RunPlace{at + 8, at + 12, at + 16, at + kFragmentBinaryRunBytes}, prim,
-                 seg == kFragmentBinaryNoSeg ? -1 : std::int64_t{seg}, get_u32(bytes, at + 12),
-                 get_u32(bytes, at + 8), get_u32(bytes, at + 16));
+        take_run(bytes, st, RunPlace{at, at + 8, at + 12, at + 16, at + kFragmentBinaryRunBytes},
+                 prim, seg == kFragmentBinaryNoSeg ? -1 : std::int64_t{seg},
+                 get_u32(bytes, at + 12), get_u32(bytes, at + 8), get_u32(bytes, at + 16));
     if (const auto* err = std::get_if<std::string>(&taken))
       return *err;
     at += kFragmentBinaryRunBytes + std::get<std::size_t>(taken);
@@ -318,7 +316,7 @@ std::optional<std::string> read_words(std::span<const std::uint8_t> bytes, ReadS
       prim += step;
       seg = -1;
     }
-    const auto taken = take_run(bytes, st, RunPlace{at, at, at, at + kFragmentBinaryWordBytes},
+    const auto taken = take_run(bytes, st, RunPlace{at, at, at, at, at + kFragmentBinaryWordBytes},
                                 prim, seg, static_cast<std::uint32_t>((w >> 15) & 0x3FFF),
                                 static_cast<std::uint32_t>((w >> 29) & 0x3FFF), n);
     if (const auto* err = std::get_if<std::string>(&taken))

@@ -208,6 +208,11 @@ private:
       *out++ = static_cast<char>((w >> (8 * b)) & 0xFF);
     return out;
   }
+  // Version 2's word of the run (k, n) whose primitive is step after the previous run's.
+  static std::uint64_t run_word(const Key& k, std::uint32_t n, std::uint64_t step) {
+    return std::uint64_t{n} | (std::uint64_t{static_cast<std::uint32_t>(k.x)} << 15) |
+           (std::uint64_t{static_cast<std::uint32_t>(k.y)} << 29) | (step << 43);
+  }
   static char* put_control(char* out, std::uint32_t kind, std::uint32_t value) {
     return put_word(out, (std::uint64_t{value} << 32) | (std::uint64_t{kind} << 15));
   }
@@ -221,9 +226,7 @@ private:
     // word, and no branch on whether the primitive is new.
     if (step <= kFragmentBinaryMaxStep && k.seg == -1 && seg == -1) [[likely]] {
       prim = k.prim;
-      return put_word(out,
-                      std::uint64_t{n} | (std::uint64_t{static_cast<std::uint32_t>(k.x)} << 15) |
-                          (std::uint64_t{static_cast<std::uint32_t>(k.y)} << 29) | (step << 43));
+      return put_word(out, run_word(k, n, step));
     }
     if (step != 0) {
       if (step > kFragmentBinaryMaxStep || k.seg != -1) {
@@ -238,8 +241,7 @@ private:
                         k.seg < 0 ? kFragmentBinaryNoSeg : static_cast<std::uint32_t>(k.seg));
       seg = k.seg;
     }
-    return put_word(out, std::uint64_t{n} | (std::uint64_t{static_cast<std::uint32_t>(k.x)} << 15) |
-                             (std::uint64_t{static_cast<std::uint32_t>(k.y)} << 29) | (step << 43));
+    return put_word(out, run_word(k, n, step));
   }
   void close_run();
   void flush_buffer();
