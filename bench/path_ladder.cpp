@@ -4,14 +4,15 @@
 // comparisons with FreeType's gray and monochrome rasterizers on the same outlines.
 //
 //   rastrules_path_ladder [--quick] [--samples-only] [--repeats N] [--json FILE]
-//                         [--plot FILE.png] [--dejavu FONT] [--cubic FONT]
+//                         [--plot FILE.png] [--dejavu FONT] [--cubic FONT] [--scenes PREFIX]
 //   rastrules_path_ladder --picture FILE.png
 //
 // Prints the tables (Markdown) on standard output; --json writes the same figures, --plot the
 // time against error of every rung. --samples-only runs the sample-coverage comparison alone
-// (no area rungs), with the cubic font at every size too. --picture writes the conflation cases,
-// exact beside FreeType's gray raster, and runs nothing else. Implements: BENCH.PATH.RUNGS,
-// BENCH.PATH.SCENES, BENCH.PATH.METRICS, BENCH.PATH.FREETYPE, BENCH.PATH.PICTURES
+// (no area rungs), with the cubic font at every size too; --scenes runs only the scenes whose name
+// begins with PREFIX (e.g. nimbus-cubic-64, for a profile of one scene). --picture writes the
+// conflation cases, exact beside FreeType's gray raster, and runs nothing else. Implements:
+// BENCH.PATH.RUNGS, BENCH.PATH.SCENES, BENCH.PATH.METRICS, BENCH.PATH.FREETYPE, BENCH.PATH.PICTURES
 
 #include <algorithm>
 #include <chrono>
@@ -635,7 +636,7 @@ int main(int argc, char** argv) {
   using namespace rastrules::bench::path_ladder;
   bool quick = false, samples_only = false;
   int repeats = 0;
-  std::string json_path, plot_path, picture_path;
+  std::string json_path, plot_path, picture_path, scene_prefix;
   std::string dejavu = RASTRULES_FONT_DEJAVU, cubic = RASTRULES_FONT_CUBIC;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -662,6 +663,8 @@ int main(int argc, char** argv) {
       dejavu = value();
     else if (a == "--cubic")
       cubic = value();
+    else if (a == "--scenes")
+      scene_prefix = value();
     else {
       std::cerr << "rastrules_path_ladder: unknown argument '" << a << "'\n";
       return 2;
@@ -686,6 +689,11 @@ int main(int argc, char** argv) {
     for (const int size : samples_only ? sizes : std::vector<int>{quick ? 12 : 24})
       scenes.push_back(glyph_scene(cubic, "nimbus-cubic", quick ? U"S" : text, size));
     scenes.push_back(polygon_scene(1, quick ? 16 : 64));
+    std::erase_if(scenes, [&](const Scene& sc) { return sc.s.name.rfind(scene_prefix, 0) != 0; });
+    if (scenes.empty()) {
+      std::cerr << "rastrules_path_ladder: no scene's name begins with '" << scene_prefix << "'\n";
+      return 2;
+    }
     std::vector<SceneResult> results;
     for (Scene& sc : scenes) {
       std::cerr << "scene " << sc.s.name << "\n";
