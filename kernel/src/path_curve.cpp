@@ -542,6 +542,21 @@ int sign_at_grid(const Cubic& p, std::int64_t k, double bound) {
 // -dir to dir): false unless the Bernstein coefficients of x on that interval lie strictly
 // between two consecutive integers F and F + 1 (then F < x_c < F + 1: the crossing counts for a
 // sample x <= F under either hx).
+// The signs of P(k / 2^30) and P((k + 1) / 2^30), exactly (0 <= k < 2^30): both values by
+// Horner's rule in the two lanes of one vector of doubles (the filter's bound holds lane by
+// lane), each sign the filter's where it decides, else from scaled().
+// rule: PATH.CURVE.FILTER
+void signs_at_cell(const Cubic& p, std::int64_t k, double bound, int& s0, int& s1) {
+  typedef double Pair __attribute__((vector_size(16)));
+  const Pair t = Pair{static_cast<double>(k), static_cast<double>(k + 1)} * 0x1p-30;
+  const Pair v = ((static_cast<double>(p.c[3]) * t + static_cast<double>(p.c[2])) * t +
+                  static_cast<double>(p.c[1])) *
+                     t +
+                 static_cast<double>(p.c[0]);
+  s0 = v[0] > bound ? 1 : (v[0] < -bound ? -1 : wide_sign(p.scaled(k)));
+  s1 = v[1] > bound ? 1 : (v[1] < -bound ? -1 : wide_sign(p.scaled(k + 1)));
+}
+
 // Returns L = |e1| + 2 |e2| + 3 |e3|, which bounds |x'| on [0, 1] (below 2^31).
 std::int64_t lipschitz(const Cubic& x) {
   return (x.c[1] < 0 ? -x.c[1] : x.c[1]) + 2 * (x.c[2] < 0 ? -x.c[2] : x.c[2]) +
@@ -652,6 +667,47 @@ bool estimated_as_quadratic(const Cubic& g) {
   return g.c[3] == 0 && g.c[2] != 0;
 }
 
+// An estimate of the root of g in (lo, hi), on which g is monotone, rising or not, with g
+// about glo and ghi at the ends (doubles: only the start depends on them): Halley's method
+// from u (NaN or outside: where the chord meets 0, else the midpoint), kept inside the bracket
+// by bisection. Only proposes: the caller confines the estimate by exact signs.
+double halley_root(const Cubic& g, double lo, double hi, double glo, double ghi, bool rising,
+                   double u, double settle = 0x1p-13) {
+  const double c1 = static_cast<double>(g.c[1]), c2 = static_cast<double>(g.c[2]),
+               c3 = static_cast<double>(g.c[3]);
+  if (!(u > lo && u < hi))
+    u = lo + (hi - lo) * (glo / (glo - ghi));
+  if (!(u > lo && u < hi))
+    u = 0.5 * (lo + hi);
+  for (int it = 0; it < 100; ++it) {
+    const double gu = g.approx(u);
+    if (gu == 0.0)
+      break;
+    ((gu < 0.0) == rising ? lo : hi) = u;
+    // Halley's step (cubic convergence: the start, from the rows before or the chord, is
+    // typically 2^-6 off, which Newton's method took three or four steps to settle).
+    const double d = (3.0 * c3 * u + 2.0 * c2) * u + c1;
+    const double dd = 6.0 * c3 * u + 2.0 * c2;
+    const double den = 2.0 * d * d - gu * dd;
+    double next = den != 0.0 ? u - 2.0 * gu * d / den : lo;
+    bool halley = true;
+    if (!(next > lo && next < hi)) {
+      next = 0.5 * (lo + hi);
+      halley = false;
+    }
+    // A Halley step s leaves an error of the order of s^3 (times a ratio of g's derivatives
+    // of order one on glyph curves): settled when s <= 2^-13, or when s <= 2^-24 whatever the
+    // step was. The check on the 2^-30 grid that follows takes a neighbour's cell too; an
+    // estimate left outside them only sends the row to the exact paths.
+    const double step = next - u;
+    const bool settled = std::abs(step) <= 0x1p-24 || (halley && std::abs(step) <= settle);
+    u = next;
+    if (settled)
+      break;
+  }
+  return u;
+}
+
 // cuts: derivative_cuts(g), unless estimated_as_quadratic(g). hints (or null): where the
 // Newton steps of each cut interval start, from the rows before (RootHints::start), and where
 // this row's roots are recorded.
@@ -678,7 +734,7 @@ int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t,
   const int cuts = cs.n;
   int n = 0;
   for (int i = 0; i < cuts; ++i) {
-    double lo = cut[static_cast<std::size_t>(i)], hi = cut[static_cast<std::size_t>(i) + 1];
+    const double lo = cut[static_cast<std::size_t>(i)], hi = cut[static_cast<std::size_t>(i) + 1];
     const double glo = g.approx(lo), ghi = g.approx(hi);
     if (!((glo < 0.0 && ghi > 0.0) || (glo > 0.0 && ghi < 0.0)))
       continue;
@@ -686,37 +742,8 @@ int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t,
     // Start where the rows before put the root (a few steps fewer: the roots of consecutive
     // rows lie close), else where the chord meets 0 (g is monotone on the piece): nearer than
     // the midpoint. Only the start: the steps, their end and the checks after are the same.
-    double u = hints != nullptr ? hints->start(i, row) : std::nan("");
-    if (!(u > lo && u < hi))
-      u = lo + (hi - lo) * (glo / (glo - ghi));
-    if (!(u > lo && u < hi))
-      u = 0.5 * (lo + hi);
-    for (int it = 0; it < 100; ++it) {
-      const double gu = g.approx(u);
-      if (gu == 0.0)
-        break;
-      ((gu < 0.0) == rising ? lo : hi) = u;
-      // Halley's step (cubic convergence: the start, from the rows before or the chord, is
-      // typically 2^-6 off, which Newton's method took three or four steps to settle).
-      const double d = (3.0 * c3 * u + 2.0 * c2) * u + c1;
-      const double dd = 6.0 * c3 * u + 2.0 * c2;
-      const double den = 2.0 * d * d - gu * dd;
-      double next = den != 0.0 ? u - 2.0 * gu * d / den : lo;
-      bool halley = true;
-      if (!(next > lo && next < hi)) {
-        next = 0.5 * (lo + hi);
-        halley = false;
-      }
-      // A Halley step s leaves an error of the order of s^3 (times a ratio of g's derivatives
-      // of order one on glyph curves): settled when s <= 2^-13, or when s <= 2^-24 whatever the
-      // step was. The check on the 2^-30 grid that follows takes a neighbour's cell too; an
-      // estimate left outside them only sends the row to the exact paths.
-      const double step = next - u;
-      const bool settled = std::abs(step) <= 0x1p-24 || (halley && std::abs(step) <= 0x1p-13);
-      u = next;
-      if (settled)
-        break;
-    }
+    const double u = halley_root(g, lo, hi, glo, ghi, rising,
+                                 hints != nullptr ? hints->start(i, row) : std::nan(""));
     t[static_cast<std::size_t>(n++)] = u;
     if (hints != nullptr)
       hints->found_at(i, u);
@@ -838,6 +865,170 @@ bool estimated_crossings(const Cubic& g, double bound, const Cuts& cuts, const C
     }
     if (!confined)
       return false;
+  }
+  return true;
+}
+
+// The monotone pieces of a cubic y (c3 != 0; PATH.CURVE.SAMPLE), from the estimated roots cs
+// of y' (derivative_cuts): each estimate inside (0, 1) is bracketed by the grid points
+// a = k - 1 and b = k + 2 (k = floor(u 2^30)) where the exact signs of y' differ; the pieces
+// are the rest of [0, 1], and the sign of y' must be one and the same at both ends of each
+// (inside the piece: at t = 0 or 1 where y' = 0 there, the sign of y' just after 0 or just
+// before 1, from the first nonzero derivative; glyph cubics mostly start and end at a
+// y-extremum). Then y' has no root inside a piece: with D = c2^2 - 3 c1 c3 <= 0 it has no two
+// simple real roots, so it keeps one sign on [0, 1] but at one point at most. With D > 0 it
+// has exactly two, both simple: a bracket (a sign change) holds an odd number, so one; a piece
+// holds an even number; so once the brackets and the zeros of y' at t = 0 and 1 account for
+// one root or both, no piece holds one. With none accounted for, the vertex of y' outside
+// (0, 1), or y' at the ends of the sign opposite to c3 (y' curved away from 0 between them),
+// keeps both out. Otherwise mono.n stays 0 and every row takes the estimates.
+// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
+void prepare_monotone(const Cubic& y, const Cuts& cs, MonotonePieces& mono) {
+  mono.n = 0;
+  if (y.c[3] == 0)
+    return;
+  constexpr std::int64_t kOne = std::int64_t{1} << kFastBits;
+  const Cubic dy{formula::curve_derivative_coefficients(y.c)};
+  const auto sgn = [](std::int64_t v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); };
+  // The sign of y' just after 0 and just before 1: y'(0) = d0, else d1 t, else d2 t^2 near 0;
+  // y'(1), else -y''(1) (1 - t), else d2 (1 - t)^2 near 1 (d2 = 3 c3 != 0).
+  const std::int64_t at1 = formula::curve_at_one(dy.c);
+  const std::array<std::int64_t, 3> der1 = formula::curve_derivatives_at_one(dy.c);
+  const int s0 = dy.c[0] != 0 ? sgn(dy.c[0]) : (dy.c[1] != 0 ? sgn(dy.c[1]) : sgn(dy.c[2]));
+  const int s1 = at1 != 0 ? sgn(at1) : (der1[0] != 0 ? -sgn(der1[0]) : sgn(dy.c[2]));
+  const int end_zeros = (dy.c[0] == 0 ? 1 : 0) + (at1 == 0 ? 1 : 0);
+  const double dbound = horner_error_bound(dy);
+  // Piece j runs from the grid point lo[j] to hi[j], with y' of sign slo[j] and shi[j] there.
+  std::array<std::int64_t, 3> lo{0, 0, 0}, hi{kOne, kOne, kOne};
+  std::array<int, 3> slo{s0, 0, 0}, shi{s1, s1, s1};
+  int nb = 0;
+  if (formula::curve_derivative_discriminant(y.c) > 0) {
+    for (int i = 1; i < cs.n; ++i) {
+      const std::int64_t k = floor_to_int(cs.at[static_cast<std::size_t>(i)] * 0x1p30);
+      const std::int64_t ka = k - 1, kb = k + 2; // the bracket [a, b]: a piece ends, one starts
+      const auto j = static_cast<std::size_t>(nb);
+      if (ka <= lo[j] || kb > kOne - 1)
+        return;
+      const int sa = sign_at_grid(dy, ka, dbound), sb = sign_at_grid(dy, kb, dbound);
+      if (sa == 0 || sb == 0 || sa == sb)
+        return;
+      hi[j] = ka;
+      shi[j] = sa;
+      lo[j + 1] = kb;
+      slo[j + 1] = sb;
+      ++nb;
+    }
+    if (nb + end_zeros == 0 && s0 == sgn(dy.c[2]) && formula::curve_vertex_inside(dy.c, kSelect))
+      return; // both roots of y' may lie inside (0, 1)
+  }
+  // One sign of y' at both ends of each piece.
+  for (int j = 0; j <= nb; ++j)
+    if (slo[static_cast<std::size_t>(j)] != shi[static_cast<std::size_t>(j)])
+      return;
+  const Wide lip = formula::curve_lipschitz_scaled<std::int64_t, Wide>(y.c, kSelect);
+  for (int j = 0; j <= nb; ++j) {
+    const auto i = static_cast<std::size_t>(j);
+    mono.lo[i] = lo[i];
+    mono.hi[i] = hi[i];
+    mono.ylo[i] = y.scaled(lo[i]);
+    mono.yhi[i] = y.scaled(hi[i]);
+    mono.ylo_d[i] = y.approx(grid_point(lo[i]));
+    mono.yhi_d[i] = y.approx(grid_point(hi[i]));
+    if (j < nb) { // the bracket after piece j: y within 3 cells of its start
+      const std::array<Wide, 2> r =
+          formula::curve_bracket_range<Wide>(mono.yhi[i], lip, Wide{lo[i + 1] - hi[i]});
+      mono.near_lo[i] = r[0];
+      mono.near_hi[i] = r[1];
+    }
+  }
+  mono.brackets = nb;
+  mono.last = {};
+  mono.n = nb + 1;
+}
+
+// The crossings of row sy with a cubic whose monotone pieces are proved (mono.n > 0): false,
+// having appended nothing, where they do not decide (the row near a bracket, through a piece's
+// end, or an estimate not confined to its cell or a neighbour). A piece whose ends lie on
+// either side of the row (exact comparisons of y(k / 2^30) 2^90 with s.y 2^90) holds exactly
+// one root, simple, crossed in the direction of the sign of g after it; its estimate is
+// confined by exact signs of g to (k, k + 1) / 2^30, or found at a grid point (then x there
+// exactly), and crossing_on decides its x. No sign variations are counted and no piece without
+// a crossing is evaluated.
+// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
+bool monotone_crossings(const PreparedCurve& p, std::int64_t sy, Tie t,
+                        std::vector<Crossing>& out) {
+  const MonotonePieces& m = p.mono;
+  const Wide s = formula::curve_row_scaled<Wide>(sy);
+  for (int j = 0; j < m.brackets; ++j)
+    if (s >= m.near_lo[static_cast<std::size_t>(j)] && s <= m.near_hi[static_cast<std::size_t>(j)])
+      return false;
+  Cubic g{p.y};
+  g.c[0] -= sy;
+  const double bound =
+      static_cast<double>((g.c[0] < 0 ? -g.c[0] : g.c[0]) + p.y_abs_rest) * 0x1p-50;
+  const Cubic x{p.x};
+  const std::size_t mark = out.size();
+  const auto give_up = [&] {
+    out.resize(mark);
+    return false;
+  };
+  const double syd = static_cast<double>(sy);
+  for (int j = 0; j < m.n; ++j) {
+    const auto i = static_cast<std::size_t>(j);
+    const int sl = m.ylo[i] > s ? 1 : (m.ylo[i] < s ? -1 : 0);
+    const int sh = m.yhi[i] > s ? 1 : (m.yhi[i] < s ? -1 : 0);
+    if (sl == sh)
+      continue; // the piece lies on one side of the row (never both ends on it: monotone)
+    if (sl == 0 || sh == 0)
+      return give_up(); // the row through a piece's end
+    MonotonePieces::Last& last = m.last[i];
+    double start = std::numeric_limits<double>::quiet_NaN();
+    if (last.valid) {
+      const double dy = static_cast<double>(sy - last.row);
+      start = last.t + (last.d1 + last.d2 * dy) * dy;
+    }
+    // Halley's steps settle after a step of 2^-10 (an error of the order of 2^-30 where g's
+    // derivatives are of one order); where the exact signs find the root farther than the
+    // cell's neighbours (near a y-extremum), the steps go on from there until they stop moving
+    // (2^-24), and the signs are asked again.
+    bool found = false;
+    double u = start;
+    for (int round = 0; round < 2 && !found; ++round) {
+      u = halley_root(g, grid_point(m.lo[i]), grid_point(m.hi[i]), m.ylo_d[i] - syd,
+                      m.yhi_d[i] - syd, sh > 0, u, round == 0 ? 0x1p-10 : 0.0);
+      std::int64_t k = std::clamp(floor_to_int(u * 0x1p30), m.lo[i], m.hi[i] - 1);
+      for (int attempt = 0; attempt < 3 && !found; ++attempt) {
+        if (k < m.lo[i] || k >= m.hi[i])
+          return give_up();
+        int s0 = 0, s1 = 0;
+        signs_at_cell(g, k, bound, s0, s1);
+        s0 = k == m.lo[i] ? sl : s0;
+        s1 = k + 1 == m.hi[i] ? sh : s1;
+        std::int64_t threshold = 0;
+        if (s0 == 0 || s1 == 0) { // the root at a grid point: x there exactly
+          threshold = threshold_of(x.scaled(s0 == 0 ? k : k + 1), Wide{1} << (3 * kFastBits), t);
+        } else if (s0 == sh) { // g has passed the root at k already: it lies before k
+          --k;
+          continue;
+        } else if (s1 == sl) { // not yet at k + 1: after it
+          ++k;
+          continue;
+        } else if (!crossing_on(x, p.x_lipschitz, p.x_bound, k, threshold)) {
+          return give_up();
+        }
+        out.push_back(Crossing{threshold, sh});
+        found = true;
+      }
+    }
+    if (!found)
+      return give_up();
+    {
+      const double c1 = static_cast<double>(g.c[1]), c2 = static_cast<double>(g.c[2]),
+                   c3 = static_cast<double>(g.c[3]);
+      const double d = (3.0 * c3 * u + 2.0 * c2) * u + c1, dd = 6.0 * c3 * u + 2.0 * c2;
+      const double inv = 1.0 / d;
+      last = {u, inv, -0.5 * dd * inv * inv * inv, sy, std::isfinite(inv)};
+    }
   }
   return true;
 }
@@ -1132,6 +1323,7 @@ void prepare_curve(const Curve& c, PreparedCurve& p) {
   const Cuts cs = estimated_as_quadratic(y) ? Cuts{} : derivative_cuts(y);
   p.cut = cs.at;
   p.cuts = cs.n;
+  prepare_monotone(y, cs, p.mono);
 }
 
 // rule: PATH.CURVE.SAMPLE, PATH.SAMPLE.TIE
@@ -1139,6 +1331,8 @@ void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
                               std::vector<Crossing>& out, std::vector<Crossing>& scratch) {
   if (sy < p.ymin || sy > p.ymax)
     return; // the curve lies in the convex hull of its control points
+  if (p.mono.n > 0 && monotone_crossings(p, sy, t, out))
+    return;
   Cubic g{p.y};
   g.c[0] -= sy;
   // No root at an end: the estimates (most rows of a glyph's curves), as in
@@ -1163,6 +1357,12 @@ void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
   }
   curve_crossings_into(*p.curve, sy, t, true, scratch);
   out.insert(out.end(), scratch.begin(), scratch.end());
+}
+
+// rule: PATH.CURVE.SAMPLE
+bool curve_crossings_monotone(const PreparedCurve& p, std::int64_t sy, Tie t,
+                              std::vector<Crossing>& out) {
+  return p.mono.n > 0 && sy >= p.ymin && sy <= p.ymax && monotone_crossings(p, sy, t, out);
 }
 
 namespace {

@@ -129,6 +129,33 @@ struct RootHints {
   }
 };
 
+__extension__ typedef __int128 CurveWide; // the curve test's wide integers (GCC/Clang)
+
+// The y-monotone pieces of a cubic (PATH.CURVE.SAMPLE): [0, 1] cut at brackets of the roots of
+// y' on the 2^30 grid, y' of one strict sign on each piece, proved when the curve is prepared;
+// a row then crosses piece i iff y at its two ends lies on either side of the row, exactly.
+struct MonotonePieces {
+  int n = 0;                              // pieces; 0: none proved (every row takes the estimates)
+  std::array<std::int64_t, 3> lo{}, hi{}; // each piece's ends k on the 2^30 grid
+  std::array<CurveWide, 3> ylo{}, yhi{};  // y(k / 2^30) 2^90 at them, exactly
+  std::array<double, 3> ylo_d{}, yhi_d{}; // the same in double, for the estimates' start
+  int brackets = 0;
+  // A row s.y with near_lo <= s.y 2^90 <= near_hi might cross y inside a bracket: the
+  // estimates decide it.
+  std::array<CurveWide, 2> near_lo{}, near_hi{};
+  // Where the next row's root estimate on each piece starts (a walk's rows, in order, on one
+  // thread; only a start): the last root found there, t at row `row`, with the first two
+  // Taylor coefficients of the inverse of y there, 1 / y' and -y'' / (2 y'^3), so that the
+  // row s.y starts at t + d1 (s.y - row) + d2 (s.y - row)^2 (an error of the order of the cube
+  // of the step in t, against its square for the extrapolation of two rows' roots).
+  struct Last {
+    double t = 0.0, d1 = 0.0, d2 = 0.0;
+    std::int64_t row = 0;
+    bool valid = false;
+  };
+  mutable std::array<Last, 3> last{};
+};
+
 struct PreparedCurve {
   const Curve* curve = nullptr;
   std::int64_t ymin = 0, ymax = 0;
@@ -138,6 +165,7 @@ struct PreparedCurve {
   double x_bound = 0.0;
   std::array<double, 4> cut{};
   int cuts = 1;
+  MonotonePieces mono;
   // The start of the next row's root estimates (not part of the curve: a walk's rows, in
   // order, on one thread).
   mutable RootHints hints;
@@ -147,6 +175,12 @@ void prepare_curve(const Curve& c, PreparedCurve& p);
 // appended to out (scratch: room for the unprepared path, when the estimates give up).
 void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
                               std::vector<Crossing>& out, std::vector<Crossing>& scratch);
+// The monotone pieces alone (PATH.CURVE.SAMPLE): false, with nothing appended, where prepare_curve
+// proved none (p.mono.n == 0) or they leave row sy to the estimates; else true with the row's
+// crossings appended to out. For the tests that check which rows they decide (rows of one
+// prepared curve in order, as the row walk asks them).
+[[nodiscard]] bool curve_crossings_monotone(const PreparedCurve& p, std::int64_t sy, Tie t,
+                                            std::vector<Crossing>& out);
 
 // The floating-point filter of PATH.CURVE.FILTER alone, for the properties that check it against
 // exact arithmetic. For power coefficients c of a curve coordinate (|c_j| within the bounds of

@@ -5,7 +5,8 @@
 // (int64_t); the fast path's P(k / 2^30) 2^90, the Lipschitz and Bernstein tests of a root's x,
 // their floors (__int128, thresholds narrowed to int64_t); the quadratic rational path's
 // discriminant, square root, roots p / q, slope, numerator and threshold; the cubic end path's
-// divisions by t and t - 1, h's discriminant, roots, numerator and threshold: all fit, with the
+// divisions by t and t - 1, h's discriminant, roots, numerator and threshold; the monotone
+// pieces' y', its discriminant, the vertex test, a bracket's range and s.y 2^90: all fit, with the
 // magnitudes PATH.CURVE.SAMPLE states (rastrules/formula/path_curve.hpp, instantiated on Sym).
 // Method: the templates on Sym<std::int64_t> and Sym<__int128> (exact integers with "fits"
 // obligations); nonlinear bounds through lemmas P, M, L, A, D (proved first) instantiated as

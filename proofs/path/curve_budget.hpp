@@ -106,6 +106,9 @@ struct CurveKernelModel : PathKernelModel {
   static constexpr Int128 kNum2 = pow2(79);
   static constexpr Int128 kDiscH = pow2(58);
   static constexpr Int128 kNum3 = pow2(115);
+  // the monotone pieces: c2^2 - 3 c1 c3 (at most 9 2^50 + 9 2^50), and s.y 2^90.
+  static constexpr Int128 kDiscDeriv = pow2(55);
+  static constexpr Int128 kRowScaled = pow2(113);
 
   static std::vector<Constant> constants() {
     return kernel_constants_and({{"path kMinRaw", kMinRaw, Unit::kCoordRaw},
@@ -156,6 +159,20 @@ struct CurveKernelModel : PathKernelModel {
   static std::array<S, 4> divide_by_t_minus_one(const std::array<S, 4>& h, int deg, S& sum) {
     return formula::curve_divide_by_t_minus_one<S>(h, deg, sum);
   }
+  template <class S> static std::array<S, 4> derivative_coefficients(const std::array<S, 4>& c) {
+    return formula::curve_derivative_coefficients<S>(c);
+  }
+  template <class S> static S derivative_discriminant(const std::array<S, 4>& c) {
+    return formula::curve_derivative_discriminant<S>(c);
+  }
+  template <class S> static SymBool vertex_inside(const std::array<S, 4>& d) {
+    return formula::curve_vertex_inside<S>(
+        d, [](const SymBool& c, const S& t, const S& f) { return select(c, t, f); });
+  }
+  template <class S> static std::array<S, 2> bracket_range(const S& y, const S& lip, const S& n) {
+    return formula::curve_bracket_range<S>(y, lip, n);
+  }
+  template <class S> static S row_scaled(const S& sy) { return formula::curve_row_scaled<S>(sy); }
 };
 
 // Lemmas (proved first; a theorem that takes their instances as hypotheses is skipped, UNKNOWN,
@@ -227,8 +244,13 @@ inline bool prove_product_lemmas(Prover& pr) {
 //   C6. cubic_end_crossings: g(1), g's derivatives at 1, x(1) fit; after dividing out t^m0
 //       (t - 1)^m1 (every case), |h_j| <= kH; then h's discriminant (<= kDiscH), the square
 //       root, p, q, the slope, |numerator| <= kNum3, q^3 and the threshold fit; h narrowed to
-//       int64_t and its Bernstein coefficients fit.
-// The theorem groups C1 .. C6, for running some of them (the mutation self-check runs the group
+//       int64_t and its Bernstein coefficients fit;
+//   C7. the monotone pieces of a cubic (prepare_monotone, monotone_crossings): y' = (c1, 2 c2,
+//       3 c3, 0) fits int64_t with |.| <= kH (so C2's theorem for h covers its scaled values
+//       and the filter's bound covers it), y'(1), y''(1) and the vertex test fit, c2^2 - 3 c1 c3
+//       fits with |.| <= kDiscDeriv; a bracket's range Y -+ 3 L 2^60 (|Y| <= kScaled,
+//       0 <= L 2^60 <= kLip) and the row s.y 2^90 (|.| <= kRowScaled) fit __int128.
+// The theorem groups C1 .. C7, for running some of them (the mutation self-check runs the group
 // a mutant targets; the proof runs all).
 enum CurvePart : unsigned {
   kC1 = 1,
@@ -237,7 +259,8 @@ enum CurvePart : unsigned {
   kC4 = 8,
   kC5 = 16,
   kC6 = 32,
-  kAllCurveParts = 63
+  kC7 = 64,
+  kAllCurveParts = 127
 };
 
 template <class F> void prove_curve_budget(Prover& pr, unsigned parts = kAllCurveParts) {
@@ -566,6 +589,43 @@ template <class F> void prove_curve_budget(Prover& pr, unsigned parts = kAllCurv
     const RootCase rc{"C5", false, F::kCoefQuad, F::kCoefQuad, pow2(26), pow2(26), F::kNum2};
     root_theorem(rc, false);
     root_theorem(rc, true);
+  }
+
+  // C7: the monotone pieces.
+  if ((parts & kC7) != 0 && needs_lemmas("C7: monotone pieces")) {
+    std::vector<z3::expr> h;
+    std::array<I, 4> c{ivar("mc0", Unit::kInteger), ivar("mc1", Unit::kInteger),
+                       ivar("mc2", Unit::kInteger), ivar("mc3", Unit::kInteger)};
+    for (std::size_t j = 0; j < 4; ++j)
+      h.push_back(abs_at_most(c[j].expr(), F::kCoef[j]));
+    h.push_back(product_bound128(c[2].expr(), F::kCoef[2], c[2].expr(), F::kCoef[2]));
+    h.push_back(product_bound128(c[1].expr(), F::kCoef[1], c[3].expr(), F::kCoef[3]));
+    const I sy = ivar("msy", Unit::kCoordRaw);
+    h.push_back(in_closed(sy.expr(), F::kMinRaw, F::kMaxRaw));
+    const W y = wvar("my", Unit::kInteger), lip = wvar("mlip", Unit::kInteger);
+    h.push_back(abs_at_most(y.expr(), F::kScaled));             // C2
+    h.push_back(0 <= lip.expr() && lip.expr() <= big(F::kLip)); // C3
+    const std::size_t mark = dom.mark();
+    const std::array<I, 4> d = F::derivative_coefficients(c);
+    const I disc = F::derivative_discriminant(c);
+    (void)F::at_one(d);
+    (void)F::derivatives_at_one(d);
+    (void)F::vertex_inside(d);
+    const std::array<W, 2> range = F::bracket_range(y, lip, W(3));
+    const W row = F::row_scaled(W(sy));
+    std::vector<z3::expr> goal;
+    for (const I& v : d)
+      goal.push_back(abs_at_most(v.expr(), F::kH));
+    goal.push_back(abs_at_most(disc.expr(), F::kDiscDeriv));
+    for (const W& v : range)
+      goal.push_back(abs_at_most(v.expr(), F::kScaled + 3 * F::kLip));
+    goal.push_back(abs_at_most(row.expr(), F::kRowScaled));
+    pr.prove("C7: monotone pieces: y' within kH, c2^2 - 3 c1 c3 within " +
+                 magnitude(F::kDiscDeriv) +
+                 ", y'(1), y''(1), the vertex test, a bracket's range "
+                 "and s.y 2^90 (<= " +
+                 magnitude(F::kRowScaled) + ") fit",
+             h, all(goal), dom.obligations_since(mark));
   }
 
   // C6: cubic_end_crossings. First g(1), the derivatives at 1, x(1), and every division.

@@ -56,7 +56,9 @@ enum Bound {
   kNum2B,
   kHB,
   kDiscHB,
-  kNum3B
+  kNum3B,
+  kDiscDerivB,
+  kRowScaledB
 };
 template <Bound Which, int Bits, MutantName Name> struct Smaller : CurveKernelModel {
   using Base = CurveKernelModel;
@@ -76,6 +78,8 @@ template <Bound Which, int Bits, MutantName Name> struct Smaller : CurveKernelMo
   static constexpr Int128 kH = half(kHB, Base::kH);
   static constexpr Int128 kDiscH = half(kDiscHB, Base::kDiscH);
   static constexpr Int128 kNum3 = half(kNum3B, Base::kNum3);
+  static constexpr Int128 kDiscDeriv = half(kDiscDerivB, Base::kDiscDeriv);
+  static constexpr Int128 kRowScaled = half(kRowScaledB, Base::kRowScaled);
 };
 using CoefHalved = Smaller<kCoefB, 1, "power coefficients claimed within kCoef / 2 (C1)">;
 using BernHalved = Smaller<kBernB, 1, "3 b(g) claimed within 3 2^23 (C1)">;
@@ -90,6 +94,8 @@ using Num2Halved = Smaller<kNum2B, 1, "quadratic x numerator claimed below 2^78 
 using HHalved = Smaller<kHB, 1, "h's coefficients claimed within 7 2^24 (C6)">;
 using DiscHHalved = Smaller<kDiscHB, 1, "h's discriminant claimed below 2^57 (C6)">;
 using Num3Short = Smaller<kNum3B, 4, "cubic x numerator claimed below 2^111 (C6)">;
+using DiscDerivHalved = Smaller<kDiscDerivB, 1, "c2^2 - 3 c1 c3 claimed below 2^54 (C7)">;
+using RowScaledHalved = Smaller<kRowScaledB, 1, "s.y 2^90 claimed below 2^112 (C7)">;
 
 // A crossing at the sample counts for edges running down and never for edges running up
 // (whatever hx says): an edge and its reverse no longer cancel there.
@@ -141,6 +147,7 @@ MutationSelfcheck mutation_selfcheck() {
            refute<IntervalHalved, ScanHalved>(kCurveBudgetPart<kC4>),
            refute<DiscQuadHalved, Num2Halved>(kCurveBudgetPart<kC5>),
            refute<HHalved, DiscHHalved, Num3Short>(kCurveBudgetPart<kC6>),
+           refute<DiscDerivHalved, RowScaledHalved>(kCurveBudgetPart<kC7>),
            refute<TieByDirection, EndParityFlipped, QuadraticEndParityFlipped>(kTiePartition)},
           CurveKernelModel::constants(),
           {"PATH.GEOMETRY", "SNAP.VERTEX.RANGE", "PATH.WINDING", "PATH.SAMPLE.TIE"}};

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <variant>
@@ -95,6 +96,50 @@ TEST(GlyphCurveRows, FastCrossingsEqualRationalOnGlyphRows) {
   EXPECT_GT(rows, 50);
   EXPECT_GT(cubic_end_rows, 0);
   EXPECT_GT(end_rows, cubic_end_rows);
+}
+
+// The monotone pieces (PATH.CURVE.SAMPLE) on the cubics of Nimbus Sans (the path ladder's
+// glyphs, at 24 px): every row of every cubic, walked in order through one prepared curve as
+// the row walk does, gives the rational path's crossings; and the pieces are proved for the
+// cubics and decide their rows (the counts are printed).
+// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
+TEST(GlyphCurveRows, MonotonePiecesDecideNimbusCubicRows) {
+  int cubics = 0, with_pieces = 0, rows = 0, decided = 0;
+  std::vector<kd::Crossing> out, scratch, mono;
+  for (const char32_t c : std::u32string(U"ag&@8eS%")) {
+    const rastrules::io::Glyph g =
+        rastrules::glyph_support::load_or_fail(RASTRULES_FONT_CUBIC, c, 24);
+    const kd::Boundary b = kd::boundary_of(g.path);
+    for (const kd::Curve& curve : b.curves) {
+      if (curve.degree != 3)
+        continue;
+      kd::PreparedCurve p;
+      kd::prepare_curve(curve, p);
+      if (p.y[3] == 0)
+        continue; // a quadratic in the power basis: the quadratic rows
+      ++cubics;
+      with_pieces += p.mono.n > 0 ? 1 : 0;
+      const kd::Tie t{true, true};
+      for (std::int32_t j = 0; j < g.height; ++j) {
+        const std::int64_t sy = 256 * std::int64_t{j} + 128;
+        if (sy < p.ymin || sy > p.ymax)
+          continue;
+        ++rows;
+        mono.clear();
+        decided += kd::curve_crossings_monotone(p, sy, t, mono) ? 1 : 0;
+        out.clear();
+        kd::curve_crossings_prepared(p, sy, t, out, scratch);
+        const auto exact = kd::curve_crossings_exact(curve, sy, t);
+        ASSERT_TRUE(same(out, exact)) << "row " << sy << " of U+" << static_cast<unsigned>(c);
+        ASSERT_TRUE(mono.empty() || same(mono, exact)) << "row " << sy;
+      }
+    }
+  }
+  std::printf("Nimbus Sans cubics at 24 px: %d, with pieces %d; rows %d, decided by them %d\n",
+              cubics, with_pieces, rows, decided);
+  EXPECT_GT(cubics, 100);
+  EXPECT_GE(with_pieces * 100, cubics * 95);
+  EXPECT_GE(decided * 100, rows * 95);
 }
 
 } // namespace

@@ -8,10 +8,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <random>
 #include <vector>
+
+#include <boost/multiprecision/cpp_int.hpp>
 
 #include "path_detail.hpp"
 
@@ -94,6 +97,216 @@ TEST(PathCurvePaths, ScanDecidesRowsWhereDescartesOverCounts) {
   EXPECT_GT(rows, 2000);
   EXPECT_GT(compared, 300);
   EXPECT_GT(one_crossing, 400); // rows between the polygon's turns
+}
+
+using Q = boost::multiprecision::cpp_rational;
+
+// The number of simple roots (where the sign changes) of d0 + d1 t + d2 t^2 (d2 != 0) in the
+// open interval (l, r), exactly: with t = l + (r - l) s, the roots of e0 + e1 s + e2 s^2 in
+// (0, 1), from its values at 0 and 1, its discriminant and its vertex. Written here, apart from
+// the kernel's reasoning, to check the pieces it proves.
+int simple_roots_between(const std::array<Q, 3>& d, const Q& l, const Q& r) {
+  const Q w = r - l;
+  const Q e0 = d[0] + d[1] * l + d[2] * l * l, e1 = (d[1] + 2 * d[2] * l) * w, e2 = d[2] * w * w;
+  const Q q0 = e0, q1 = e0 + e1 + e2, disc = e1 * e1 - 4 * e0 * e2;
+  const auto inside = [](const Q& v) { return v > 0 && v < 1; };
+  if (disc <= 0)
+    return 0; // no real root, or a double one (no sign change)
+  if (q0 == 0)
+    return inside(-e1 / e2) ? 1 : 0; // roots 0 and -e1 / e2
+  if (q1 == 0)
+    return inside(e0 / e2) ? 1 : 0; // roots 1 and e0 / e2 (their product is e0 / e2)
+  if ((q0 < 0) != (q1 < 0))
+    return 1;
+  return inside(-e1 / (2 * e2)) && ((q0 > 0) == (e2 > 0)) ? 2 : 0;
+}
+
+// The curves of the monotone pieces' tests: random ones on coarse and fine grids (end tangents,
+// an extremum at t = 1/2), and named ones: y' with two simple roots 2^-25 apart at t = 1/2 at the
+// edge of the coordinate range (D = 9, the smallest for a curve: c1 and c2 are multiples of 3),
+// two roots 2^-21 apart near t = 1/2048, a double root of y' at t = 1/2 (a flat inflection, D = 0;
+// the row through it meets a triple root), y' = 0 at t = 0 twice over (y = 2048 t^3), and y'
+// positive on [0, 1] with its vertex at t = 1/2 and both roots outside (one piece).
+std::vector<Curve> monotone_test_curves() {
+  std::vector<Curve> curves;
+  std::mt19937 rng(27);
+  for (int n = 0; n < 80; ++n) {
+    const int grid = n % 4 == 0 ? 256 : (n % 4 == 1 ? 16 : 1);
+    std::uniform_int_distribution<int> coord(-4 * 256 / grid, 8 * 256 / grid);
+    Curve c;
+    c.degree = 3;
+    for (int k = 0; k <= 3; ++k)
+      c.p[static_cast<std::size_t>(k)] = path::Point{coord(rng) * grid, coord(rng) * grid};
+    switch (n % 5) {
+    case 0: // horizontal tangents at both ends: y' = 0 at t = 0 and 1
+      c.p[1].y = c.p[0].y;
+      c.p[2].y = c.p[3].y;
+      break;
+    case 1: // y'(1/2) = 0 (y1 - y0 = (y2 - y0) + (y3 - y0)): an extremum at t = 1/2, whose
+            // y = (y0 + 3 y1 + 3 y2 + y3) / 8 is a raw row on the coarse grid (a tangent row)
+      c.p[1].y = c.p[2].y + c.p[3].y - c.p[0].y;
+      break;
+    case 2: // one horizontal tangent
+      c.p[1].y = c.p[0].y;
+      break;
+    default:
+      break;
+    }
+    curves.push_back(c);
+  }
+  constexpr std::int32_t kM = 1 << 23;
+  const auto named = [&](std::array<std::int32_t, 4> ys) {
+    Curve c;
+    c.degree = 3;
+    for (std::size_t k = 0; k < 4; ++k)
+      c.p[k] = path::Point{static_cast<std::int32_t>(k) * 300 - 200, ys[k]};
+    curves.push_back(c);
+  };
+  named({-kM, kM - 1, -kM + 1, kM - 2});            // roots of y' at 1/2 - 2^-25 and 1/2
+  named({0, 1, -2047, 2049 * 2049 - 3 * 2049 + 2}); // roots 1/2050 and 1/2048
+  named({-1024, 1024, -1024, 1024});                // y' = 6144 (2 t - 1)^2
+  named({0, 0, 0, 2048});                           // y = 2048 t^3
+  named({0, 256, 1536, 1792}); // y' = 768 + 6144 t - 6144 t^2: its vertex inside, roots outside
+  return curves;
+}
+
+// The monotone pieces of cubics (PATH.CURVE.SAMPLE): on curves whose y starts or ends at an
+// extremum (a horizontal tangent, as glyph cubics mostly do), with an extremum at t = 1/2 whose
+// row is a raw row (a tangent row), and generic ones (inflections, both roots of y' inside) on
+// coarse and fine grids, every row walked in order through one prepared curve
+// gives the rational path's crossings, whichever path decides it; the pieces decide most rows,
+// and leave the rows near a y-extremum inside (0, 1) and through a piece's end to the
+// estimates.
+// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
+TEST(PathCurvePaths, MonotonePiecesGiveTheRationalPathsCrossings) {
+  int rows = 0, decided = 0, crossings = 0, with_pieces = 0, left_near_extremum = 0, n = -1;
+  std::vector<Crossing> out, scratch, mono;
+  for (const Curve& c : monotone_test_curves()) {
+    ++n;
+    path::detail::PreparedCurve p;
+    path::detail::prepare_curve(c, p);
+    with_pieces += p.mono.n > 0 ? 1 : 0;
+    // Rows across the curve, and for an extremum at t = 1/2 on a raw row, that row (tangent:
+    // inside a bracket) and the raw rows next to it, in order.
+    const std::int64_t step = std::max<std::int64_t>(1, (p.ymax - p.ymin) / 24);
+    std::vector<std::int64_t> sys;
+    for (std::int64_t sy = p.ymin - 1; sy <= p.ymax + 1; sy += step)
+      sys.push_back(sy);
+    const std::int64_t y8 = c.p[0].y + 3 * c.p[1].y + 3 * c.p[2].y + c.p[3].y;
+    const bool tangent_row = n < 80 && n % 5 == 1 && y8 % 8 == 0;
+    if (tangent_row)
+      sys.insert(sys.end(), {y8 / 8 - 1, y8 / 8, y8 / 8 + 1});
+    std::sort(sys.begin(), sys.end());
+    for (const Tie t : {Tie{true, true}, Tie{false, false}}) {
+      path::detail::prepare_curve(c, p); // a fresh walk: the starts of the rows before reset
+      for (const std::int64_t sy : sys) {
+        out.clear();
+        path::detail::curve_crossings_prepared(p, sy, t, out, scratch);
+        const auto exact = sorted(path::detail::curve_crossings_exact(c, sy, t));
+        ASSERT_EQ(sorted(out), exact) << "curve " << n << " row " << sy;
+        mono.clear();
+        const bool by_pieces = path::detail::curve_crossings_monotone(p, sy, t, mono);
+        if (by_pieces) {
+          ASSERT_EQ(sorted(mono), exact) << "curve " << n << " row " << sy;
+          ++decided;
+        }
+        if (tangent_row && sy == y8 / 8 && p.mono.n > 0) {
+          EXPECT_FALSE(by_pieces) << "curve " << n << ": the tangent row " << sy;
+          ++left_near_extremum;
+        }
+        ++rows;
+        crossings += static_cast<int>(exact.size());
+      }
+    }
+  }
+  EXPECT_GT(with_pieces, 50);
+  EXPECT_GT(rows, 4000);
+  EXPECT_GT(crossings, 3500);
+  EXPECT_GT(decided, rows * 3 / 4);
+  EXPECT_GT(left_near_extremum, 0);
+}
+
+// The pieces prepare_curve proves are what PATH.CURVE.SAMPLE says: on each, y' changes sign
+// nowhere inside (simple_roots_between, exact), its ends are grid points in order, their values
+// are y(k / 2^30) 2^90 exactly, and each bracket between two pieces is 3 cells wide; and a cubic
+// whose y' changes sign nowhere in (0, 1) always gets its one piece (a sign taken the wrong way
+// at an end where y' = 0, or the vertex test read the wrong way, refuses some).
+// rule: PATH.CURVE.SAMPLE
+TEST(PathCurvePaths, MonotonePiecesAreMonotone) {
+  int proved = 0, pieces = 0, brackets = 0, monotone = 0;
+  const Q grid = Q(1) / Q(boost::multiprecision::cpp_int(1) << 30);
+  for (const Curve& c : monotone_test_curves()) {
+    path::detail::PreparedCurve p;
+    path::detail::prepare_curve(c, p);
+    const std::array<Q, 4> y{c.p[0].y, c.p[1].y, c.p[2].y, c.p[3].y};
+    const std::array<Q, 4> pc{y[0], 3 * (y[1] - y[0]), 3 * (y[0] - 2 * y[1] + y[2]),
+                              y[3] - 3 * y[2] + 3 * y[1] - y[0]};
+    const std::array<Q, 3> dy{pc[1], 2 * pc[2], 3 * pc[3]};
+    // y' without a sign change in (0, 1) (ends where y' = 0 included): one piece, always.
+    if (pc[3] != 0 && simple_roots_between(dy, Q(0), Q(1)) == 0) {
+      EXPECT_EQ(p.mono.n, 1) << "the curve from y " << c.p[0].y << " is monotone";
+      ++monotone;
+    }
+    if (p.mono.n == 0)
+      continue;
+    ++proved;
+    for (int j = 0; j < p.mono.n; ++j) {
+      const auto i = static_cast<std::size_t>(j);
+      ASSERT_LT(p.mono.lo[i], p.mono.hi[i]);
+      EXPECT_EQ(simple_roots_between(dy, Q(p.mono.lo[i]) * grid, Q(p.mono.hi[i]) * grid), 0)
+          << "piece " << j << " of the curve from y " << c.p[0].y;
+      for (const auto& [k, value] :
+           {std::pair{p.mono.lo[i], p.mono.ylo[i]}, std::pair{p.mono.hi[i], p.mono.yhi[i]}}) {
+        const Q t = Q(k) * grid;
+        const Q exact = ((pc[3] * t + pc[2]) * t + pc[1]) * t + pc[0];
+        const Q scaled = exact * Q(boost::multiprecision::cpp_int(1) << 90);
+        EXPECT_EQ(Q(static_cast<boost::multiprecision::cpp_int>(value)), scaled);
+      }
+      if (j + 1 < p.mono.n) {
+        EXPECT_EQ(p.mono.lo[i + 1] - p.mono.hi[i], 3);
+      }
+      ++pieces;
+    }
+    brackets += p.mono.brackets;
+  }
+  EXPECT_GT(proved, 50);
+  EXPECT_GT(monotone, 20);
+  EXPECT_GT(pieces, proved);
+  EXPECT_GT(brackets, 10);
+}
+
+// Named rows of the monotone pieces: the cubic (0, 0), (256, 768), (768, 256), (1024, 512) has
+// y = 2304 t - 3840 t^2 + 2048 t^3, a maximum 448 at t = 1/2 and a minimum 432 at t = 3/4 (two
+// brackets, three pieces). The rows y = 448 and 432 touch the curve (two crossings that cancel)
+// inside a bracket, and rows 0 and 512 pass through its ends: the pieces leave them to the
+// estimates. Row 440 crosses all three pieces, 447 and 433 next to the extrema too, 300 and
+// 480 one piece each: the pieces decide those.
+// rule: PATH.CURVE.SAMPLE
+TEST(PathCurvePaths, MonotonePiecesLeaveExtremaAndEndsToTheEstimates) {
+  Curve c;
+  c.degree = 3;
+  c.p = {path::Point{0, 0}, path::Point{256, 768}, path::Point{768, 256}, path::Point{1024, 512}};
+  path::detail::PreparedCurve p;
+  path::detail::prepare_curve(c, p);
+  ASSERT_EQ(p.mono.n, 3);
+  ASSERT_EQ(p.mono.brackets, 2);
+  std::vector<Crossing> mono, out, scratch;
+  for (const Tie t : {Tie{true, true}, Tie{false, false}}) {
+    path::detail::prepare_curve(c, p);
+    for (const std::int64_t sy : {0, 300, 432, 433, 440, 447, 448, 480, 512}) {
+      mono.clear();
+      const bool decided = path::detail::curve_crossings_monotone(p, sy, t, mono);
+      EXPECT_EQ(decided, sy != 0 && sy != 432 && sy != 448 && sy != 512) << "row " << sy;
+      out.clear();
+      path::detail::curve_crossings_prepared(p, sy, t, out, scratch);
+      const auto exact = sorted(path::detail::curve_crossings_exact(c, sy, t));
+      EXPECT_EQ(sorted(out), exact) << "row " << sy;
+      if (decided) {
+        EXPECT_EQ(sorted(mono), exact) << "row " << sy;
+        EXPECT_EQ(exact.size(), sy > 432 && sy < 448 ? 3u : 1u) << "row " << sy;
+      }
+    }
+  }
 }
 
 // The floating-point filter (PATH.CURVE.FILTER) decides where the double value is clear of its

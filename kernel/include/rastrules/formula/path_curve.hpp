@@ -122,6 +122,50 @@ template <class W> constexpr W curve_numerator3(const std::array<W, 4>& e, W p, 
   return ((e[3] * p + e[2] * q) * p + e[1] * q * q) * p + e[0] * q * q * q;
 }
 
+// Returns the power coefficients of y' for y with power coefficients c: (c1, 2 c2, 3 c3, 0),
+// within |.| <= 14 2^24 (kH) for |c_j| within PATH.CURVE.SAMPLE's bounds, so that `scaled()`
+// and the filter take them as they take h's (the monotone pieces of a cubic).
+// rule: PATH.CURVE.SAMPLE
+template <class I>
+constexpr std::array<I, 4> curve_derivative_coefficients(const std::array<I, 4>& c) {
+  return {c[1], I(2) * c[2], I(3) * c[3], I(0)};
+}
+
+// Returns c2^2 - 3 c1 c3, a quarter of the discriminant of y' = c1 + 2 c2 t + 3 c3 t^2: y' has
+// two simple real roots iff it is positive (|.| <= 18 2^50 < 2^55 within PATH.CURVE.SAMPLE's
+// bounds).
+// rule: PATH.CURVE.SAMPLE
+template <class I> constexpr I curve_derivative_discriminant(const std::array<I, 4>& c) {
+  return c[2] * c[2] - I(3) * c[1] * c[3];
+}
+
+// Returns whether the vertex -d1 / (2 d2) of the parabola d0 + d1 t + d2 t^2 (d2 != 0) lies in
+// the open interval (0, 1): 0 < -d1 sgn(d2) < 2 |d2|.
+// rule: PATH.CURVE.SAMPLE
+template <class I, class Select>
+constexpr auto curve_vertex_inside(const std::array<I, 4>& d, Select select) {
+  const I zero(0);
+  const I num = select(d[2] > zero, -d[1], d[1]);
+  const I den = I(2) * select(d[2] > zero, d[2], -d[2]);
+  return num > zero && num < den;
+}
+
+// Returns s.y 2^90, the row on the scale of curve_scaled (|.| <= 2^113 for |s.y| <= 2^23).
+// rule: PATH.CURVE.SAMPLE
+template <class W> constexpr W curve_row_scaled(W sy) {
+  const W u1 = W(std::int64_t{1} << kCurveFastBits);
+  return sy * (u1 * u1 * u1);
+}
+
+// Returns the range [Y - G, Y + G] (G = lip cells) that holds y(t) 2^90 for every t within
+// `cells` grid cells after a grid point where y(t) 2^90 = Y, lip = L 2^60 being y's Lipschitz
+// bound (curve_lipschitz_scaled): a bracket of the monotone pieces.
+// rule: PATH.CURVE.SAMPLE
+template <class W> constexpr std::array<W, 2> curve_bracket_range(W y_scaled, W lip, W cells) {
+  const W g = lip * cells;
+  return {y_scaled - g, y_scaled + g};
+}
+
 // Returns g(1) = c0 + c1 + c2 + c3.
 // rule: PATH.CURVE.SAMPLE
 template <class W> constexpr W curve_at_one(const std::array<W, 4>& c) {
