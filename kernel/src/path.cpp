@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <iterator>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -298,8 +299,12 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
           if (i_lo > i_hi)
             continue;
           if (single) {
-            for (std::int64_t i = i_lo; i <= i_hi; ++i)
-              emit(SampleCoverage{static_cast<std::int32_t>(i), j, smp.bit});
+            if constexpr (requires { emit.span(i_lo, i_hi, j, smp.bit); }) {
+              emit.span(i_lo, i_hi, j, smp.bit);
+            } else {
+              for (std::int64_t i = i_lo; i <= i_hi; ++i)
+                emit(SampleCoverage{static_cast<std::int32_t>(i), j, smp.bit});
+            }
             continue;
           }
           for (std::int64_t i = i_lo; i <= i_hi; ++i)
@@ -354,6 +359,33 @@ void cover_samples(const Path& path, const SamplePattern& pattern, FillConventio
   walk_samples(path, pattern, fill, w, h, emit);
 }
 
+namespace {
+
+// The pixels of one row's run as a forward range, from the pixel `at` up to the end iterator's x
+// (vector::insert then grows the vector once and constructs the run in one loop).
+struct RunIterator {
+  using iterator_category = std::forward_iterator_tag;
+  using value_type = SampleCoverage;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const SampleCoverage*;
+  using reference = const SampleCoverage&;
+  SampleCoverage at;
+  reference operator*() const { return at; }
+  pointer operator->() const { return &at; }
+  RunIterator& operator++() {
+    ++at.x;
+    return *this;
+  }
+  RunIterator operator++(int) {
+    RunIterator r = *this;
+    ++at.x;
+    return r;
+  }
+  friend bool operator==(const RunIterator& a, const RunIterator& b) { return a.at.x == b.at.x; }
+};
+
+} // namespace
+
 // rule: PATH.COVER.SAMPLE
 std::vector<SampleCoverage> cover_samples(const Path& path, const SamplePattern& pattern,
                                           FillConvention fill, std::int32_t w, std::int32_t h) {
@@ -363,7 +395,18 @@ std::vector<SampleCoverage> cover_samples(const Path& path, const SamplePattern&
   if (w > 0 && h > 0)
     out.reserve(std::min<std::size_t>(static_cast<std::size_t>(w) * static_cast<std::size_t>(h),
                                       std::size_t{1} << 12));
-  walk_samples(path, pattern, fill, w, h, [&](const SampleCoverage& c) { out.push_back(c); });
+  // Pixels one at a time (the masks of several samples), or a run of one row at once (one
+  // sample a pixel: a row's interval): the run grows the vector once and is written in a plain
+  // loop, not a push_back (a capacity test and a store of the end) a pixel.
+  struct Append {
+    std::vector<SampleCoverage>& out;
+    void operator()(const SampleCoverage& c) const { out.push_back(c); }
+    void span(std::int64_t lo, std::int64_t hi, std::int32_t y, std::uint32_t bit) const {
+      out.insert(out.end(), RunIterator{SampleCoverage{static_cast<std::int32_t>(lo), y, bit}},
+                 RunIterator{SampleCoverage{static_cast<std::int32_t>(hi + 1), y, bit}});
+    }
+  };
+  walk_samples(path, pattern, fill, w, h, Append{out});
   return out;
 }
 

@@ -327,7 +327,8 @@ TEST(PathBudget, PathsAtTheEdgeOfTheCoordinateRange) {
 }
 
 // The row walk of cover_samples equals covers_sample at every sample of every pattern and
-// convention, on self-intersecting paths with several contours and tie-heavy vertices.
+// convention, on self-intersecting paths with several contours and tie-heavy vertices, in its
+// list form and its callback form alike.
 // rule: PATH.COVER.SAMPLE, MSAA.SAMPLE.POSITION
 TEST(PathCoverSamples, RowWalkEqualsEverySampleOfEveryPattern) {
   std::vector<path::Path> paths;
@@ -347,10 +348,17 @@ TEST(PathCoverSamples, RowWalkEqualsEverySampleOfEveryPattern) {
   patterns.push_back(custom_pattern({{-8, -8}, {7, 7}, {0, -8}, {-8, 0}, {0, 0}, {7, -8}}));
   for (const path::Path& p : paths)
     for (const SamplePattern& pattern : patterns)
-      for (const FillConvention f : kAllConventions)
-        EXPECT_EQ(as_map(path::cover_samples(p, pattern, f, 9, 9)),
-                  brute_masks(p, pattern, f, 9, 9))
+      for (const FillConvention f : kAllConventions) {
+        const std::vector<path::SampleCoverage> list = path::cover_samples(p, pattern, f, 9, 9);
+        EXPECT_EQ(as_map(list), brute_masks(p, pattern, f, 9, 9))
             << "pattern of " << pattern.count() << " convention " << static_cast<int>(f);
+        // The callback form emits the same pixels in the same order (the list form appends a
+        // row's run of one-sample pixels at once).
+        std::vector<path::SampleCoverage> called;
+        path::cover_samples(p, pattern, f, 9, 9,
+                            [&](const path::SampleCoverage& c) { called.push_back(c); });
+        EXPECT_EQ(called, list) << "pattern of " << pattern.count();
+      }
 }
 
 // rule: PATH.COVER.SAMPLE, PATH.DEGENERATE
