@@ -930,9 +930,10 @@ void prepare_monotone(const Cubic& y, const Cuts& cs, MonotonePieces& mono) {
     const auto i = static_cast<std::size_t>(j);
     mono.lo[i] = lo[i];
     mono.hi[i] = hi[i];
-    mono.ylo[i] = y.scaled(lo[i]);
-    mono.yhi[i] = y.scaled(hi[i]);
-    mono.ylo_d[i] = y.approx(grid_point(lo[i]));
+    // Piece ends at t = 0 and 1 (every piece has one) without Horner's steps.
+    mono.ylo[i] = lo[i] == 0 ? formula::curve_scaled_end<Wide>(y.wide(), false) : y.scaled(lo[i]);
+    mono.yhi[i] = hi[i] == kOne ? formula::curve_scaled_end<Wide>(y.wide(), true) : y.scaled(hi[i]);
+    mono.ylo_d[i] = lo[i] == 0 ? static_cast<double>(y.c[0]) : y.approx(grid_point(lo[i]));
     mono.yhi_d[i] = y.approx(grid_point(hi[i]));
     if (j < nb) { // the bracket after piece j: y within 3 cells of its start
       const std::array<Wide, 2> r =

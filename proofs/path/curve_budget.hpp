@@ -173,6 +173,9 @@ struct CurveKernelModel : PathKernelModel {
     return formula::curve_bracket_range<S>(y, lip, n);
   }
   template <class S> static S row_scaled(const S& sy) { return formula::curve_row_scaled<S>(sy); }
+  template <class S> static S scaled_end(const std::array<S, 4>& c, bool at_one) {
+    return formula::curve_scaled_end<S>(c, at_one);
+  }
 };
 
 // Lemmas (proved first; a theorem that takes their instances as hypotheses is skipped, UNKNOWN,
@@ -249,7 +252,8 @@ inline bool prove_product_lemmas(Prover& pr) {
 //       3 c3, 0) fits int64_t with |.| <= kH (so C2's theorem for h covers its scaled values
 //       and the filter's bound covers it), y'(1), y''(1) and the vertex test fit, c2^2 - 3 c1 c3
 //       fits with |.| <= kDiscDeriv; a bracket's range Y -+ 3 L 2^60 (|Y| <= kScaled,
-//       0 <= L 2^60 <= kLip) and the row s.y 2^90 (|.| <= kRowScaled) fit __int128.
+//       0 <= L 2^60 <= kLip), the row s.y 2^90 (|.| <= kRowScaled) and y 2^90 at t = 0 and 1
+//       (curve_scaled_end, |.| <= kScaled) fit __int128.
 // The theorem groups C1 .. C7, for running some of them (the mutation self-check runs the group
 // a mutant targets; the proof runs all).
 enum CurvePart : unsigned {
@@ -613,6 +617,8 @@ template <class F> void prove_curve_budget(Prover& pr, unsigned parts = kAllCurv
     (void)F::vertex_inside(d);
     const std::array<W, 2> range = F::bracket_range(y, lip, W(3));
     const W row = F::row_scaled(W(sy));
+    const std::array<W, 4> cw{W(c[0]), W(c[1]), W(c[2]), W(c[3])};
+    const W end0 = F::scaled_end(cw, false), end1 = F::scaled_end(cw, true);
     std::vector<z3::expr> goal;
     for (const I& v : d)
       goal.push_back(abs_at_most(v.expr(), F::kH));
@@ -620,11 +626,11 @@ template <class F> void prove_curve_budget(Prover& pr, unsigned parts = kAllCurv
     for (const W& v : range)
       goal.push_back(abs_at_most(v.expr(), F::kScaled + 3 * F::kLip));
     goal.push_back(abs_at_most(row.expr(), F::kRowScaled));
+    goal.push_back(abs_at_most(end0.expr(), F::kScaled) && abs_at_most(end1.expr(), F::kScaled));
     pr.prove("C7: monotone pieces: y' within kH, c2^2 - 3 c1 c3 within " +
                  magnitude(F::kDiscDeriv) +
-                 ", y'(1), y''(1), the vertex test, a bracket's range "
-                 "and s.y 2^90 (<= " +
-                 magnitude(F::kRowScaled) + ") fit",
+                 ", y'(1), y''(1), the vertex test, a bracket's range, s.y 2^90 (<= " +
+                 magnitude(F::kRowScaled) + ") and y 2^90 at t = 0, 1 fit",
              h, all(goal), dom.obligations_since(mark));
   }
 

@@ -150,6 +150,14 @@ constexpr auto curve_vertex_inside(const std::array<I, 4>& d, Select select) {
   return num > zero && num < den;
 }
 
+// Returns curve_scaled(c, 0) = c0 2^90 (at_one false) or curve_scaled(c, 2^30) = (c0 + c1 + c2
+// + c3) 2^90 (at_one true) without its Horner steps: the ends of a cubic's monotone pieces.
+// rule: PATH.CURVE.SAMPLE
+template <class W> constexpr W curve_scaled_end(const std::array<W, 4>& c, bool at_one) {
+  const W u1 = W(std::int64_t{1} << kCurveFastBits);
+  return (at_one ? c[0] + c[1] + c[2] + c[3] : c[0]) * (u1 * u1 * u1);
+}
+
 // Returns s.y 2^90, the row on the scale of curve_scaled (|.| <= 2^113 for |s.y| <= 2^23).
 // rule: PATH.CURVE.SAMPLE
 template <class W> constexpr W curve_row_scaled(W sy) {
