@@ -452,7 +452,7 @@ std::int64_t threshold_at(const Poly& x, Root& r, Tie t) {
 // rastrules/formula/path_curve.hpp): power coefficients |c| < 2^27; with k <= 2^30,
 // |P(k / 2^30) * 2^90| < 2^118, and the Bernstein coefficients of x on [k, k + 1] / 2^30, scaled
 // by 3 * 2^90, are at most 2^120 in magnitude: all in __int128.
-__extension__ typedef __int128 Wide;
+using Wide = CurveWide; // __int128 (path_detail.hpp)
 constexpr int kFastBits = formula::kCurveFastBits;
 // |raw| <= 2^23: a power coefficient is a sum of raw values with weights |w| summing to at
 // most 12 (the cubic's 3 (y0 - 2 y1 + y2)), so |c| <= 12 * 2^23 < 2^27.
@@ -473,6 +473,12 @@ struct Cubic {
             static_cast<double>(c[1])) *
                t +
            static_cast<double>(c[0]);
+  }
+  // Returns P'(t) and P''(t) in double (the estimates' Halley steps and their starts).
+  [[nodiscard]] std::array<double, 2> slopes(double t) const {
+    const double c1 = static_cast<double>(c[1]), c2 = static_cast<double>(c[2]),
+                 c3 = static_cast<double>(c[3]);
+    return {(3.0 * c3 * t + 2.0 * c2) * t + c1, 6.0 * c3 * t + 2.0 * c2};
   }
 };
 
@@ -503,6 +509,12 @@ double horner_error_bound(const Cubic& p) {
   for (const std::int64_t c : p.c)
     s += c < 0 ? -c : c;
   return static_cast<double>(s) * 0x1p-50;
+}
+
+// horner_error_bound(g) for g = y - s.y of a prepared curve: g's coefficients are y's but the
+// constant, whose |y1| + |y2| + |y3| the curve keeps (y_abs_rest).
+double row_error_bound(const Cubic& g, std::int64_t y_abs_rest) {
+  return static_cast<double>((g.c[0] < 0 ? -g.c[0] : g.c[0]) + y_abs_rest) * 0x1p-50;
 }
 
 // Returns floor(v) for |v| < 2^62 (no call into the C library: the conversion truncates).
@@ -538,10 +550,6 @@ int sign_at_grid(const Cubic& p, std::int64_t k, double bound) {
   return wide_sign(p.scaled(k));
 }
 
-// The crossing of a root confined to [k, k + 1] / 2^30 (g changes sign there exactly, from
-// -dir to dir): false unless the Bernstein coefficients of x on that interval lie strictly
-// between two consecutive integers F and F + 1 (then F < x_c < F + 1: the crossing counts for a
-// sample x <= F under either hx).
 // The signs of P(k / 2^30) and P((k + 1) / 2^30), exactly (0 <= k < 2^30): both values by
 // Horner's rule in the two lanes of one vector of doubles (the filter's bound holds lane by
 // lane), each sign the filter's where it decides, else from scaled().
@@ -557,6 +565,10 @@ void signs_at_cell(const Cubic& p, std::int64_t k, double bound, int& s0, int& s
   s1 = v[1] > bound ? 1 : (v[1] < -bound ? -1 : wide_sign(p.scaled(k + 1)));
 }
 
+// The crossing of a root confined to [k, k + 1] / 2^30 (g changes sign there exactly, from
+// -dir to dir): false unless the Bernstein coefficients of x on that interval lie strictly
+// between two consecutive integers F and F + 1 (then F < x_c < F + 1: the crossing counts for a
+// sample x <= F under either hx).
 // Returns L = |e1| + 2 |e2| + 3 |e3|, which bounds |x'| on [0, 1] (below 2^31).
 std::int64_t lipschitz(const Cubic& x) {
   return (x.c[1] < 0 ? -x.c[1] : x.c[1]) + 2 * (x.c[2] < 0 ? -x.c[2] : x.c[2]) +
@@ -673,8 +685,6 @@ bool estimated_as_quadratic(const Cubic& g) {
 // by bisection. Only proposes: the caller confines the estimate by exact signs.
 double halley_root(const Cubic& g, double lo, double hi, double glo, double ghi, bool rising,
                    double u, double settle = 0x1p-13) {
-  const double c1 = static_cast<double>(g.c[1]), c2 = static_cast<double>(g.c[2]),
-               c3 = static_cast<double>(g.c[3]);
   if (!(u > lo && u < hi))
     u = lo + (hi - lo) * (glo / (glo - ghi));
   if (!(u > lo && u < hi))
@@ -686,8 +696,7 @@ double halley_root(const Cubic& g, double lo, double hi, double glo, double ghi,
     ((gu < 0.0) == rising ? lo : hi) = u;
     // Halley's step (cubic convergence: the start, from the rows before or the chord, is
     // typically 2^-6 off, which Newton's method took three or four steps to settle).
-    const double d = (3.0 * c3 * u + 2.0 * c2) * u + c1;
-    const double dd = 6.0 * c3 * u + 2.0 * c2;
+    const auto [d, dd] = g.slopes(u);
     const double den = 2.0 * d * d - gu * dd;
     double next = den != 0.0 ? u - 2.0 * gu * d / den : lo;
     bool halley = true;
@@ -965,8 +974,7 @@ bool monotone_crossings(const PreparedCurve& p, std::int64_t sy, Tie t,
       return false;
   Cubic g{p.y};
   g.c[0] -= sy;
-  const double bound =
-      static_cast<double>((g.c[0] < 0 ? -g.c[0] : g.c[0]) + p.y_abs_rest) * 0x1p-50;
+  const double bound = row_error_bound(g, p.y_abs_rest);
   const Cubic x{p.x};
   const std::size_t mark = out.size();
   const auto give_up = [&] {
@@ -1023,13 +1031,9 @@ bool monotone_crossings(const PreparedCurve& p, std::int64_t sy, Tie t,
     }
     if (!found)
       return give_up();
-    {
-      const double c1 = static_cast<double>(g.c[1]), c2 = static_cast<double>(g.c[2]),
-                   c3 = static_cast<double>(g.c[3]);
-      const double d = (3.0 * c3 * u + 2.0 * c2) * u + c1, dd = 6.0 * c3 * u + 2.0 * c2;
-      const double inv = 1.0 / d;
-      last = {u, inv, -0.5 * dd * inv * inv * inv, sy, std::isfinite(inv)};
-    }
+    const auto [d, dd] = g.slopes(u);
+    const double inv = 1.0 / d;
+    last = {u, inv, -0.5 * dd * inv * inv * inv, sy, std::isfinite(inv)};
   }
   return true;
 }
@@ -1347,9 +1351,7 @@ void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
     const int v = bernstein_variations(g);
     if (v == 0)
       return;
-    // horner_error_bound(g): g's coefficients are y's but the constant.
-    const double bound =
-        static_cast<double>((g.c[0] < 0 ? -g.c[0] : g.c[0]) + p.y_abs_rest) * 0x1p-50;
+    const double bound = row_error_bound(g, p.y_abs_rest);
     const std::size_t mark = out.size();
     if (estimated_crossings(g, bound, Cuts{p.cut, p.cuts}, Cubic{p.x}, p.x_lipschitz, p.x_bound, v,
                             t, out, 1, &p.hints, sy))

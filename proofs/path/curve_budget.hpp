@@ -372,13 +372,19 @@ template <class F> void prove_curve_budget(Prover& pr, unsigned parts = kAllCurv
              abs_at_most(v.expr(), of_h ? F::kScaledH : F::kScaled), dom.obligations_since(mark));
   }
 
+  // Power coefficients in int64_t (I) within kCoef, as in C1's results.
+  const auto icoef_vars = [&](const std::string& tag, std::vector<z3::expr>& h) {
+    std::array<I, 4> c{ivar(tag + "0", Unit::kInteger), ivar(tag + "1", Unit::kInteger),
+                       ivar(tag + "2", Unit::kInteger), ivar(tag + "3", Unit::kInteger)};
+    for (std::size_t j = 0; j < 4; ++j)
+      h.push_back(abs_at_most(c[j].expr(), F::kCoef[j]));
+    return c;
+  };
+
   // C3: the Lipschitz test of crossing_on.
   if ((parts & kC3) != 0 && needs_lemmas("C3: Lipschitz test")) {
     std::vector<z3::expr> h;
-    std::array<I, 4> e{ivar("le0", Unit::kInteger), ivar("le1", Unit::kInteger),
-                       ivar("le2", Unit::kInteger), ivar("le3", Unit::kInteger)};
-    for (std::size_t j = 0; j < 4; ++j)
-      h.push_back(abs_at_most(e[j].expr(), F::kCoef[j]));
+    const std::array<I, 4> e = icoef_vars("le", h);
     const W xk = wvar("lxk", Unit::kInteger);
     const W f = wvar("lf90", Unit::kInteger);
     const z3::expr one = big(pow2(3 * F::kFastBits));
@@ -598,10 +604,7 @@ template <class F> void prove_curve_budget(Prover& pr, unsigned parts = kAllCurv
   // C7: the monotone pieces.
   if ((parts & kC7) != 0 && needs_lemmas("C7: monotone pieces")) {
     std::vector<z3::expr> h;
-    std::array<I, 4> c{ivar("mc0", Unit::kInteger), ivar("mc1", Unit::kInteger),
-                       ivar("mc2", Unit::kInteger), ivar("mc3", Unit::kInteger)};
-    for (std::size_t j = 0; j < 4; ++j)
-      h.push_back(abs_at_most(c[j].expr(), F::kCoef[j]));
+    const std::array<I, 4> c = icoef_vars("mc", h);
     h.push_back(product_bound128(c[2].expr(), F::kCoef[2], c[2].expr(), F::kCoef[2]));
     h.push_back(product_bound128(c[1].expr(), F::kCoef[1], c[3].expr(), F::kCoef[3]));
     const I sy = ivar("msy", Unit::kCoordRaw);
