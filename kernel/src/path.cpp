@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <functional>
 #include <iterator>
+#include <span>
+#include <stdexcept>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -408,6 +410,48 @@ std::vector<SampleCoverage> cover_samples(const Path& path, const SamplePattern&
   };
   walk_samples(path, pattern, fill, w, h, Append{out});
   return out;
+}
+
+// rule: PATH.COVER.MONO
+void cover_samples_mono(const Path& path, FillConvention fill, std::int32_t w, std::int32_t h,
+                        std::span<std::uint8_t> bits, std::size_t pitch) {
+  if (w < 0 || h < 0 || w > kMaxTargetSide || h > kMaxTargetSide)
+    throw std::invalid_argument(
+        "path: a mono bitmap's width and height must be in [0, 16384] (PATH.COVER.MONO)");
+  if (pitch < (static_cast<std::size_t>(w) + 7) / 8)
+    throw std::invalid_argument("path: a mono bitmap's pitch is below (w + 7) / 8 bytes "
+                                "(PATH.COVER.MONO)");
+  const auto rows = static_cast<std::size_t>(h);
+  if ((rows != 0 && pitch > bits.size() / rows) || bits.size() != pitch * rows)
+    throw std::invalid_argument("path: a mono bitmap's buffer is not h * pitch bytes "
+                                "(PATH.COVER.MONO)");
+  std::fill(bits.begin(), bits.end(), std::uint8_t{0});
+  // A row's covered pixels come as runs, left to right and disjoint (one sample a pixel): the
+  // run's partial bytes at both ends are masked in, the bytes between filled.
+  struct SetBits {
+    std::uint8_t* bits;
+    std::size_t pitch;
+    void run(std::int64_t lo, std::int64_t hi, std::int32_t y) const {
+      std::uint8_t* row = bits + static_cast<std::size_t>(y) * pitch;
+      const auto b0 = static_cast<std::size_t>(lo >> 3), b1 = static_cast<std::size_t>(hi >> 3);
+      // Pixel x is bit 7 - x % 8: pixels lo % 8 .. 7 of the first byte, 0 .. hi % 8 of the last.
+      const auto first = static_cast<std::uint8_t>(0xFFu >> (lo & 7));
+      const auto last = static_cast<std::uint8_t>(0xFFu << (7 - (hi & 7)));
+      if (b0 == b1) {
+        row[b0] |= static_cast<std::uint8_t>(first & last);
+        return;
+      }
+      row[b0] |= first;
+      std::fill(row + b0 + 1, row + b1, std::uint8_t{0xFF});
+      row[b1] |= last;
+    }
+    void operator()(const SampleCoverage& c) const { run(c.x, c.x, c.y); }
+    void span(std::int64_t lo, std::int64_t hi, std::int32_t y, std::uint32_t) const {
+      run(lo, hi, y);
+    }
+  };
+  static const SamplePattern centre = standard_pattern(1);
+  walk_samples(path, centre, fill, w, h, SetBits{bits.data(), pitch});
 }
 
 } // namespace rastrules::path

@@ -77,6 +77,20 @@ pc::Masks kernel_masks(const pg::GPath& p, const rastrules::SamplePattern& patte
   return m;
 }
 
+// The pixels set in the kernel's mono bitmap (PATH.COVER.MONO), as one-sample masks; the
+// rows padded by a byte, so that a bit written past w shows as a pixel the oracle lacks.
+pc::Masks kernel_mono_masks(const pg::GPath& p, const std::string& fill, std::int32_t side) {
+  const std::size_t pitch = (static_cast<std::size_t>(side) + 7) / 8 + 1;
+  std::vector<std::uint8_t> bits(pitch * static_cast<std::size_t>(side), 0xFF);
+  kp::cover_samples_mono(to_kernel(p), convention(fill), side, side, bits, pitch);
+  pc::Masks m;
+  for (std::int32_t y = 0; y < side; ++y)
+    for (std::size_t x = 0; x < pitch * 8; ++x)
+      if (((bits[static_cast<std::size_t>(y) * pitch + x / 8] >> (7 - x % 8)) & 1) != 0)
+        m[{y, static_cast<std::int32_t>(x)}] = 1;
+  return m;
+}
+
 pc::Areas kernel_areas(const pg::GPath& p, std::int32_t side) {
   pc::Areas a;
   for (const kp::AreaCoverage& c : kp::cover_area(to_kernel(p), side, side)) {
@@ -127,7 +141,7 @@ std::vector<om::Offset> any_standard_pattern() {
 // Kernel == oracle
 
 // rule: PATH.COVER.SAMPLE, PATH.SAMPLE.TIE, PATH.FILL.RULE, PATH.WINDING, PATH.DEGENERATE
-// rule: PATH.GEOMETRY
+// rule: PATH.GEOMETRY, PATH.COVER.MONO
 RC_GTEST_PROP(PathKernel, SampleMasksEqualOracle, ()) {
   const pg::GPath p = *pg::path(kSide, false);
   show_path(p);
@@ -141,6 +155,12 @@ RC_GTEST_PROP(PathKernel, SampleMasksEqualOracle, ()) {
                                             pc::oracle_masks(p, pattern, fill, kSide));
     if (!diff.empty())
       RC_FAIL(fill + ", " + std::to_string(pattern.size()) + " samples: " + diff);
+    if (pattern.size() == 1) {
+      const std::string mono = map_difference(kernel_mono_masks(p, fill, kSide),
+                                              pc::oracle_masks(p, pattern, fill, kSide));
+      if (!mono.empty())
+        RC_FAIL(fill + ", mono bitmap: " + mono);
+    }
   }
 }
 
@@ -405,7 +425,7 @@ RC_GTEST_PROP(PathKernel, AreaWithinTheGridBoundOfItsSamples, ()) {
 // Curves: exact sample decisions, kernel == oracle.
 
 // rule: PATH.CURVE.SAMPLE, PATH.WINDING, PATH.SAMPLE.TIE, PATH.COVER.SAMPLE, PATH.GEOMETRY
-// rule: PATH.TIE.PARTITION
+// rule: PATH.TIE.PARTITION, PATH.COVER.MONO
 TEST(PathKernel, CurveSampleMasksAndTieWindingsEqualOracle) {
   EXPECT_TRUE(rc::check("curve sample masks and tie windings, kernel == oracle", [] {
     pg::GPath p;
@@ -421,6 +441,12 @@ TEST(PathKernel, CurveSampleMasksAndTieWindingsEqualOracle) {
                                             pc::oracle_masks(p, pattern, fill, kSide));
     if (!diff.empty())
       RC_FAIL(fill + ": " + diff);
+    if (pattern.size() == 1) {
+      const std::string mono = map_difference(kernel_mono_masks(p, fill, kSide),
+                                              pc::oracle_masks(p, pattern, fill, kSide));
+      if (!mono.empty())
+        RC_FAIL(fill + ", mono bitmap: " + mono);
+    }
     const kp::Path k = to_kernel(p);
     const bool split = check_tie_windings(p);
     RC_CLASSIFY(split, "a tie sample the conventions decide differently");

@@ -11,6 +11,9 @@
 #include <array>
 #include <cstdint>
 #include <cstdlib>
+#include <limits>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "fill_convention_cases.hpp"
@@ -359,6 +362,84 @@ TEST(PathCoverSamples, RowWalkEqualsEverySampleOfEveryPattern) {
                             [&](const path::SampleCoverage& c) { called.push_back(c); });
         EXPECT_EQ(called, list) << "pattern of " << pattern.count();
       }
+}
+
+// The bit of pixel (x, y) in a mono bitmap of PATH.COVER.MONO's layout.
+bool mono_bit(const std::vector<std::uint8_t>& bits, std::size_t pitch, std::int32_t x,
+              std::int32_t y) {
+  const std::uint8_t byte =
+      bits[static_cast<std::size_t>(y) * pitch + static_cast<std::size_t>(x) / 8];
+  return ((byte >> (7 - x % 8)) & 1) != 0;
+}
+
+// The mono bitmap holds exactly the pixels of the one-sample list, bit by bit, with runs that
+// start and end inside a byte, on byte boundaries and across several bytes, with rows padded
+// (pitch above (w + 7) / 8): padding bits and bytes stay 0 even in a buffer written over.
+// rule: PATH.COVER.MONO, PATH.COVER.SAMPLE
+TEST(PathCoverSamples, MonoBitmapHoldsTheOneSampleListsPixels) {
+  std::vector<path::Path> paths;
+  for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
+    paths.push_back(make_path(
+        rule, {polygon({{0.5, 0.5}, {37.5, 3.5}, {0.5, 9.5}, {30.5, 0.5}, {13.5, 11.5}})}));
+    paths.push_back(
+        make_path(rule, {polygon({{-3, -2}, {40, 3.5}, {2.5, 12}, {2.5, 1}, {26.25, 6.75}}),
+                         reversed(polygon({{7, 1}, {16, 1}, {16, 8}, {7, 8}})),
+                         polygon({{8, 2}, {24, 2}, {24, 9}, {8, 9}})}));
+  }
+  for (const path::Path& p : paths)
+    for (const FillConvention f : kAllConventions)
+      for (const std::int32_t w : {1, 7, 8, 9, 16, 17, 33}) {
+        constexpr std::int32_t h = 12;
+        std::vector<std::vector<bool>> listed(h, std::vector<bool>(static_cast<std::size_t>(w)));
+        for (const path::SampleCoverage& c : path::cover_samples(p, kCentre, f, w, h))
+          listed[static_cast<std::size_t>(c.y)][static_cast<std::size_t>(c.x)] = true;
+        for (const std::size_t pitch :
+             {(static_cast<std::size_t>(w) + 7) / 8, (static_cast<std::size_t>(w) + 7) / 8 + 3}) {
+          std::vector<std::uint8_t> bits(pitch * h, 0xA5);
+          path::cover_samples_mono(p, f, w, h, bits, pitch);
+          for (std::int32_t y = 0; y < h; ++y) {
+            for (std::int32_t x = 0; x < w; ++x)
+              EXPECT_EQ(mono_bit(bits, pitch, x, y),
+                        listed[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)])
+                  << "pixel (" << x << ", " << y << "), w " << w << ", pitch " << pitch;
+            for (std::size_t x = static_cast<std::size_t>(w); x < pitch * 8; ++x)
+              EXPECT_EQ(mono_bit(bits, pitch, static_cast<std::int32_t>(x), y), false)
+                  << "padding bit " << x << " of row " << y << ", w " << w;
+          }
+        }
+      }
+}
+
+// A buffer that does not fit the target is refused, naming the rule; an empty target writes
+// every byte it is given (none, or rows of padding).
+// rule: PATH.COVER.MONO
+TEST(PathCoverSamples, MonoBitmapRefusesABufferThatDoesNotFit) {
+  const path::Path p = square(FillRule::kNonZero);
+  std::vector<std::uint8_t> bits(8, 0xFF);
+  const auto refused = [&](std::int32_t w, std::int32_t h, std::size_t size, std::size_t pitch) {
+    std::vector<std::uint8_t> b(size, 0);
+    try {
+      path::cover_samples_mono(p, FillConvention::kTopLeft, w, h, b, pitch);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what()).find("PATH.COVER.MONO") != std::string::npos;
+    }
+    return false;
+  };
+  EXPECT_TRUE(refused(9, 4, 4, 1));         // pitch below (9 + 7) / 8
+  EXPECT_TRUE(refused(8, 4, 5, 1));         // 5 bytes for 4 rows of 1
+  EXPECT_TRUE(refused(8, 4, 3, 1));         // 3 bytes for 4 rows of 1
+  EXPECT_TRUE(refused(-1, 4, 0, 0));        // a negative width
+  EXPECT_TRUE(refused(8, 16385, 16385, 1)); // taller than kMaxTargetSide
+  // A pitch whose product with h wraps around std::size_t.
+  EXPECT_TRUE(refused(8, 4, 0, (std::numeric_limits<std::size_t>::max() / 4) + 1));
+  path::cover_samples_mono(p, FillConvention::kTopLeft, 0, 4, bits, 2);
+  EXPECT_EQ(bits, std::vector<std::uint8_t>(8, 0));
+  std::vector<std::uint8_t> none;
+  path::cover_samples_mono(p, FillConvention::kTopLeft, 8, 0, none, 1);
+  // The square [1, 5]^2 covers the centres of pixels 1..4 of rows 1..4.
+  std::vector<std::uint8_t> four(6, 0xFF);
+  path::cover_samples_mono(p, FillConvention::kTopLeft, 6, 6, four, 1);
+  EXPECT_EQ(four, (std::vector<std::uint8_t>{0x00, 0x78, 0x78, 0x78, 0x78, 0x00}));
 }
 
 // rule: PATH.COVER.SAMPLE, PATH.DEGENERATE

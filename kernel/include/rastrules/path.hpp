@@ -70,6 +70,17 @@ void cover_samples(const Path& path, const SamplePattern& pattern, FillConventio
                    std::int32_t w, std::int32_t h,
                    const std::function<void(const SampleCoverage&)>& emit);
 
+// Writes the aliased coverage of [0, w) x [0, h) as a packed bitmap of one bit a pixel, the
+// layout of FreeType's FT_PIXEL_MODE_MONO and of 1-bit surfaces: row y from bits[y * pitch],
+// pixel x at bit 7 - x % 8 of the row's byte x / 8, set iff the path covers the pixel's centre
+// (the one sample of standard_pattern(1), PATH.SAMPLE.TIE). Writes every byte of the buffer:
+// the bits past w and the bytes past (w + 7) / 8 of a row are 0. Builds no record a pixel.
+// Preconditions: 0 <= w, h <= kMaxTargetSide; pitch >= (w + 7) / 8 and bits.size() == h * pitch,
+// else std::invalid_argument.
+// rule: PATH.COVER.MONO
+void cover_samples_mono(const Path& path, FillConvention fill, std::int32_t w, std::int32_t h,
+                        std::span<std::uint8_t> bits, std::size_t pitch);
+
 // One pixel with nonzero area: area in px^2 as a reduced rational, exact (error_bound 0) for
 // paths of lines; for curves within error_bound of the exact area.
 struct AreaCoverage {
