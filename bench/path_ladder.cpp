@@ -54,6 +54,11 @@ using rastrules::io::GlyphError;
 using Clock = std::chrono::steady_clock;
 using Dense = std::vector<double>;
 
+// The pitch of a 1-bit bitmap w pixels wide, as FreeType's mono bitmaps have it.
+std::size_t mono_pitch(std::int32_t w) {
+  return (static_cast<std::size_t>(w) + 7) / 8;
+}
+
 double median(std::vector<double> v) {
   if (v.empty())
     return 0.0;
@@ -213,16 +218,16 @@ struct AreaRow {
 };
 
 struct SampleRow {
-  double kernel_seconds = 0, mono_seconds = 0;
+  double kernel_seconds = 0, bitmap_seconds = 0, mono_seconds = 0;
   int repeats = 0;
   std::uint64_t covered_kernel = 0, covered_mono = 0, differ = 0;
   std::uint64_t near = 0, freetype_only_dropout = 0, freetype_only_other = 0, kernel_only_far = 0;
 };
 
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ErrorFigures, mean, max, visible, on_conflation, max_conflation)
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SampleRow, kernel_seconds, mono_seconds, repeats, covered_kernel,
-                                   covered_mono, differ, near, freetype_only_dropout,
-                                   freetype_only_other, kernel_only_far)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SampleRow, kernel_seconds, bitmap_seconds, mono_seconds, repeats,
+                                   covered_kernel, covered_mono, differ, near,
+                                   freetype_only_dropout, freetype_only_other, kernel_only_far)
 
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(AreaRow, rung, note, seconds, repeats, err)
 
@@ -447,8 +452,20 @@ SceneResult run_scene(Scene& sc, int repeats, int min_slow_repeats, bool samples
     run_area(sc, repeats, min_slow_repeats, res);
 
   // Sample coverage: the kernel (1 sample at the centre, curves exact) against FreeType's mono
-  // raster on the same (curved) outline, alternating.
-  std::vector<double> tk, tm;
+  // raster on the same (curved) outline, alternating: the kernel's list of pixels, and its
+  // 1-bit bitmap (PATH.COVER.MONO), FreeType's own output form (buffers sized once, as
+  // FreeType's are).
+  std::vector<std::vector<std::uint8_t>> bitmaps;
+  for (const bp::PathItem& it : sc.s.items)
+    bitmaps.emplace_back(mono_pitch(it.width) * static_cast<std::size_t>(it.height));
+  const auto draw_bitmaps = [&] {
+    for (std::size_t i = 0; i < sc.s.items.size(); ++i) {
+      const bp::PathItem& it = sc.s.items[i];
+      kp::cover_samples_mono(it.curved, rastrules::FillConvention::kTopLeft, it.width, it.height,
+                             bitmaps[i], mono_pitch(it.width));
+    }
+  };
+  std::vector<double> tk, tb, tm;
   for (int rep = 0; rep < repeats; ++rep) {
     auto t0 = Clock::now();
     for (const bp::PathItem& it : sc.s.items)
@@ -456,13 +473,18 @@ SceneResult run_scene(Scene& sc, int repeats, int min_slow_repeats, bool samples
                               rastrules::FillConvention::kTopLeft, it.width, it.height);
     tk.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
     t0 = Clock::now();
+    draw_bitmaps();
+    tb.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+    t0 = Clock::now();
     for (const FreeTypeGlyph& ft : sc.ft_curved)
       (void)ft.raster_mono();
     tm.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
   }
   res.samples.kernel_seconds = median(tk);
+  res.samples.bitmap_seconds = median(tb);
   res.samples.mono_seconds = median(tm);
   res.samples.repeats = repeats;
+  draw_bitmaps();
   GlyphBitmap mono;
   for (std::size_t i = 0; i < sc.s.items.size(); ++i) {
     const bp::PathItem& it = sc.s.items[i];
@@ -473,6 +495,18 @@ SceneResult run_scene(Scene& sc, int repeats, int min_slow_repeats, bool samples
                            rastrules::FillConvention::kTopLeft, it.width, it.height))
       k[static_cast<std::size_t>(s.y) * static_cast<std::size_t>(it.width) +
         static_cast<std::size_t>(s.x)] = 1;
+    // The bitmap holds the list's pixels (PATH.COVER.MONO); a difference is a kernel defect.
+    for (std::int32_t y = 0; y < it.height; ++y)
+      for (std::int32_t x = 0; x < it.width; ++x) {
+        const std::uint8_t byte = bitmaps[i][static_cast<std::size_t>(y) * mono_pitch(it.width) +
+                                             static_cast<std::size_t>(x) / 8];
+        const bool bit = ((byte >> (7 - x % 8)) & 1) != 0;
+        if (bit != (k[static_cast<std::size_t>(y) * static_cast<std::size_t>(it.width) +
+                      static_cast<std::size_t>(x)] != 0))
+          throw std::logic_error("kernel: the mono bitmap differs from the pixel list at (" +
+                                 std::to_string(x) + ", " + std::to_string(y) + ") of " +
+                                 sc.s.name);
+      }
     sc.ft_curved[i].render_mono(mono);
     // Distances to the outline: the curved outline flattened finely.
     const kp::Path fine = bp::flatten(it.curved, 1.0 / 1024.0);
@@ -555,14 +589,18 @@ std::string markdown(const std::vector<SceneResult>& results, const std::string&
        "the boundary rule, FreeType's rounding and curve flattening); FreeType only, the outline "
        "meets the pixel but the centre is outside (dropout control: thin parts, and coincident "
        "edges under evenodd); FreeType only, elsewhere; kernel only, farther than 1/32 px.\n\n";
-  o << "| scene | kernel | FreeType mono | kernel / mono time | covered (kernel, mono) | differ | "
-       "near | FreeType only, dropout | FreeType only, other | kernel only |\n";
-  o << "|---|---|---|---|---|---|---|---|---|---|\n";
+  o << "Kernel times: the list of covered pixels (cover_samples) and the 1-bit bitmap "
+       "(cover_samples_mono, FreeType mono's own output form).\n\n";
+  o << "| scene | kernel list | kernel bitmap | FreeType mono | list / mono | bitmap / mono | "
+       "covered (kernel, mono) | differ | near | FreeType only, dropout | FreeType only, other | "
+       "kernel only |\n";
+  o << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const SceneResult& r : results) {
     const SampleRow& s = r.samples;
     o << "| " << r.name << " | " << seconds_text(s.kernel_seconds) << " | "
-      << seconds_text(s.mono_seconds) << " | "
+      << seconds_text(s.bitmap_seconds) << " | " << seconds_text(s.mono_seconds) << " | "
       << fmt(s.mono_seconds > 0 ? s.kernel_seconds / s.mono_seconds : 0) << " | "
+      << fmt(s.mono_seconds > 0 ? s.bitmap_seconds / s.mono_seconds : 0) << " | "
       << s.covered_kernel << ", " << s.covered_mono << " | " << s.differ << " | " << s.near << " | "
       << s.freetype_only_dropout << " | " << s.freetype_only_other << " | " << s.kernel_only_far
       << " |\n";
