@@ -272,8 +272,12 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
         if (spans)
           crossings.push_back(Crossing{line_threshold(*e, sy, t), e->dir});
       }
+      // One sample in this row of the pattern: a curve's crossing needs only the samples'
+      // class (PATH.CURVE.COARSE).
+      const std::int64_t sample_x =
+          rows[r].count == 1 ? samples[rows[r].first].x_offset : detail::kExactThresholds;
       for (const detail::PreparedCurve* c : curves.advance(sy))
-        detail::curve_crossings_prepared(*c, sy, t, crossings, work.curve_out);
+        detail::curve_crossings_prepared(*c, sy, t, crossings, work.curve_out, sample_x);
       if (crossings.empty())
         continue;
       std::sort(crossings.begin(), crossings.end(),

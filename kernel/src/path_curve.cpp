@@ -550,19 +550,25 @@ int sign_at_grid(const Cubic& p, std::int64_t k, double bound) {
   return wide_sign(p.scaled(k));
 }
 
-// The signs of P(k / 2^30) and P((k + 1) / 2^30), exactly (0 <= k < 2^30): both values by
+// The signs of P(k0 / 2^30) and P(k1 / 2^30), exactly (0 <= k0, k1 <= 2^30): both values by
 // Horner's rule in the two lanes of one vector of doubles (the filter's bound holds lane by
 // lane), each sign the filter's where it decides, else from scaled().
 // rule: PATH.CURVE.FILTER
-void signs_at_cell(const Cubic& p, std::int64_t k, double bound, int& s0, int& s1) {
+[[gnu::always_inline]] inline void signs_at_points(const Cubic& p, std::int64_t k0, std::int64_t k1,
+                                                   double bound, int& s0, int& s1) {
   typedef double Pair __attribute__((vector_size(16)));
-  const Pair t = Pair{static_cast<double>(k), static_cast<double>(k + 1)} * 0x1p-30;
+  const Pair t = Pair{static_cast<double>(k0), static_cast<double>(k1)} * 0x1p-30;
   const Pair v = ((static_cast<double>(p.c[3]) * t + static_cast<double>(p.c[2])) * t +
                   static_cast<double>(p.c[1])) *
                      t +
                  static_cast<double>(p.c[0]);
-  s0 = v[0] > bound ? 1 : (v[0] < -bound ? -1 : wide_sign(p.scaled(k)));
-  s1 = v[1] > bound ? 1 : (v[1] < -bound ? -1 : wide_sign(p.scaled(k + 1)));
+  s0 = v[0] > bound ? 1 : (v[0] < -bound ? -1 : wide_sign(p.scaled(k0)));
+  s1 = v[1] > bound ? 1 : (v[1] < -bound ? -1 : wide_sign(p.scaled(k1)));
+}
+
+// The signs at both ends of the cell [k, k + 1] / 2^30.
+void signs_at_cell(const Cubic& p, std::int64_t k, double bound, int& s0, int& s1) {
+  signs_at_points(p, k, k + 1, bound, s0, s1);
 }
 
 // The crossing of a root confined to [k, k + 1] / 2^30 (g changes sign there exactly, from
@@ -956,6 +962,47 @@ void prepare_monotone(const Cubic& y, const Cuts& cs, MonotonePieces& mono) {
   mono.n = nb + 1;
 }
 
+// The half-width of PATH.CURVE.COARSE's bracket around a root estimate, in cells of 2^-30
+// (2^-14: one Halley step from the start lands that close on most glyph rows; x then moves by
+// at most L 2^-14, a fraction of a raw unit on glyphs).
+constexpr std::int64_t kCoarseCells = std::int64_t{1} << 16;
+
+// PATH.CURVE.COARSE on the piece (lo, hi) / 2^30 of a monotone cubic (g from sign sl at lo to
+// sh at hi): true, with threshold = 256 q + sample_x, where g changes sign exactly between the
+// grid points k0 = K - D and k1 = K + D + 1 around the estimate u (K = floor(u 2^30),
+// D = kCoarseCells, both strictly inside the piece) and x there provably lies strictly between
+// the samples 256 q + sample_x and 256 (q + 1) + sample_x. Then the root t_c lies in
+// (k0, k1) / 2^30, within (D + 1) 2^-30 of u, so |x_c - x(u)| < L (D + 1) 2^-30 = R (L the
+// Lipschitz bound of x'), and x(u) lies within E (x_bound) of the double value v. With
+// F = floor(v) and the sample below F at 256 q + sample_x, the computed distance
+// rel = (F - 256 q - sample_x) + (v - F) is within 2^-40 of v's distance above that sample (the
+// integer part exact, v - F within 2^-53, the sum below 2^9); rel > m and rel < 256 - m with
+// m = 2^-30 + 2 (E + R) (twice: the sum E + R rounded) put x_c strictly between the two.
+// rule: PATH.CURVE.COARSE, PATH.CURVE.FILTER
+bool coarse_crossing(const Cubic& g, double g_bound, const Cubic& x, std::int64_t lip,
+                     double x_bound, std::int64_t lo, std::int64_t hi, int sl, int sh, double u,
+                     std::int64_t sample_x, std::int64_t& threshold) {
+  if (!(u > 0.0 && u < 1.0))
+    return false; // NaN too
+  const std::int64_t kf = floor_to_int(u * 0x1p30);
+  const std::int64_t k0 = kf - kCoarseCells, k1 = kf + kCoarseCells + 1;
+  if (k0 <= lo || k1 >= hi)
+    return false;
+  int s0 = 0, s1 = 0;
+  signs_at_points(g, k0, k1, g_bound, s0, s1);
+  if (s0 != sl || s1 != sh)
+    return false;
+  const double v = x.approx(u);
+  const std::int64_t f = floor_to_int(v);
+  const std::int64_t q = floor_div(f - sample_x, std::int64_t{256});
+  const double rel = static_cast<double>(f - 256 * q - sample_x) + (v - static_cast<double>(f));
+  const double m = 0x1p-30 + 2.0 * (x_bound + grid_point(lip * (kCoarseCells + 1)));
+  if (!(rel > m && rel < 256.0 - m))
+    return false;
+  threshold = 256 * q + sample_x;
+  return true;
+}
+
 // The crossings of row sy with a cubic whose monotone pieces are proved (mono.n > 0): false,
 // having appended nothing, where they do not decide (the row near a bracket, through a piece's
 // end, or an estimate not confined to its cell or a neighbour). A piece whose ends lie on
@@ -965,8 +1012,8 @@ void prepare_monotone(const Cubic& y, const Cuts& cs, MonotonePieces& mono) {
 // exactly), and crossing_on decides its x. No sign variations are counted and no piece without
 // a crossing is evaluated.
 // rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
-bool monotone_crossings(const PreparedCurve& p, std::int64_t sy, Tie t,
-                        std::vector<Crossing>& out) {
+bool monotone_crossings(const PreparedCurve& p, std::int64_t sy, Tie t, std::vector<Crossing>& out,
+                        std::int64_t sample_x) {
   const MonotonePieces& m = p.mono;
   const Wide s = formula::curve_row_scaled<Wide>(sy);
   for (int j = 0; j < m.brackets; ++j)
@@ -995,6 +1042,33 @@ bool monotone_crossings(const PreparedCurve& p, std::int64_t sy, Tie t,
     if (last.valid) {
       const double dy = static_cast<double>(sy - last.row);
       start = last.t + (last.d1 + last.d2 * dy) * dy;
+    } else {
+      // The piece's first row (rows come in increasing y): from its lower end, where y' is
+      // often 0 (a glyph's extremum), y's Taylor polynomial of degree 2 there solved for the
+      // row (NaN where it has no root: halley_root then starts from the chord).
+      const double te = grid_point(sh > 0 ? m.lo[i] : m.hi[i]);
+      const double r = syd - (sh > 0 ? m.ylo_d[i] : m.yhi_d[i]);
+      const auto [d1, d2] = g.slopes(te);
+      const double e = sh > 0 ? d1 : -d1;
+      const double tau = 2.0 * r / (e + std::sqrt(e * e + 2.0 * d2 * r));
+      start = sh > 0 ? te + tau : te - tau;
+    }
+    // The samples' class alone (PATH.CURVE.COARSE): one Halley step from the start, and a
+    // bracket 2^-14 wide around it instead of a cell of 2^-30. The next row's start takes
+    // the slopes at the start (not at the step's end: one evaluation fewer; only a start).
+    if (sample_x != kExactThresholds) {
+      std::int64_t threshold = 0;
+      const double gu = g.approx(start);
+      const auto [d0, dd0] = g.slopes(start);
+      const double u1 = start - 2.0 * gu * d0 / (2.0 * d0 * d0 - gu * dd0);
+      if (coarse_crossing(g, bound, x, p.x_lipschitz, p.x_bound, m.lo[i], m.hi[i], sl, sh, u1,
+                          sample_x, threshold)) {
+        out.push_back(Crossing{threshold, sh});
+        const double inv = 1.0 / d0;
+        last = {u1, inv, -0.5 * dd0 * inv * inv * inv, sy, std::isfinite(inv)};
+        continue;
+      }
+      start = u1; // Halley's steps go on from there (halley_root restarts outside the piece)
     }
     // Halley's steps settle after a step of 2^-10 (an error of the order of 2^-30 where g's
     // derivatives are of one order); where the exact signs find the root farther than the
@@ -1333,10 +1407,11 @@ void prepare_curve(const Curve& c, PreparedCurve& p) {
 
 // rule: PATH.CURVE.SAMPLE, PATH.SAMPLE.TIE
 void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
-                              std::vector<Crossing>& out, std::vector<Crossing>& scratch) {
+                              std::vector<Crossing>& out, std::vector<Crossing>& scratch,
+                              std::int64_t sample_x) {
   if (sy < p.ymin || sy > p.ymax)
     return; // the curve lies in the convex hull of its control points
-  if (p.mono.n > 0 && monotone_crossings(p, sy, t, out))
+  if (p.mono.n > 0 && monotone_crossings(p, sy, t, out, sample_x))
     return;
   Cubic g{p.y};
   g.c[0] -= sy;
@@ -1364,8 +1439,9 @@ void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
 
 // rule: PATH.CURVE.SAMPLE
 bool curve_crossings_monotone(const PreparedCurve& p, std::int64_t sy, Tie t,
-                              std::vector<Crossing>& out) {
-  return p.mono.n > 0 && sy >= p.ymin && sy <= p.ymax && monotone_crossings(p, sy, t, out);
+                              std::vector<Crossing>& out, std::int64_t sample_x) {
+  return p.mono.n > 0 && sy >= p.ymin && sy <= p.ymax &&
+         monotone_crossings(p, sy, t, out, sample_x);
 }
 
 namespace {

@@ -173,14 +173,23 @@ struct PreparedCurve {
 void prepare_curve(const Curve& c, PreparedCurve& p);
 // The crossings of curve_crossings_into (fast), from a prepared curve: the same crossings,
 // appended to out (scratch: room for the unprepared path, when the estimates give up).
+//
+// sample_x: kExactThresholds, or the raw x offset (mod 256) shared by every sample the row's
+// crossings will be asked about (one sample in the row of the pattern). Then a crossing whose
+// x lies strictly between two consecutive such samples, 256 q + sample_x and 256 (q + 1) +
+// sample_x, may carry the threshold 256 q + sample_x in place of floor(x_c): every such sample
+// counts it alike (PATH.CURVE.COARSE), and the root need not be found to 2^-30.
+inline constexpr std::int64_t kExactThresholds = std::numeric_limits<std::int64_t>::min();
 void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
-                              std::vector<Crossing>& out, std::vector<Crossing>& scratch);
+                              std::vector<Crossing>& out, std::vector<Crossing>& scratch,
+                              std::int64_t sample_x = kExactThresholds);
 // The monotone pieces alone (PATH.CURVE.SAMPLE): false, with nothing appended, where prepare_curve
 // proved none (p.mono.n == 0) or they leave row sy to the estimates; else true with the row's
 // crossings appended to out. For the tests that check which rows they decide (rows of one
 // prepared curve in order, as the row walk asks them).
 [[nodiscard]] bool curve_crossings_monotone(const PreparedCurve& p, std::int64_t sy, Tie t,
-                                            std::vector<Crossing>& out);
+                                            std::vector<Crossing>& out,
+                                            std::int64_t sample_x = kExactThresholds);
 
 // The floating-point filter of PATH.CURVE.FILTER alone, for the properties that check it against
 // exact arithmetic. For power coefficients c of a curve coordinate (|c_j| within the bounds of

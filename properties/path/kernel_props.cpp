@@ -425,7 +425,7 @@ RC_GTEST_PROP(PathKernel, AreaWithinTheGridBoundOfItsSamples, ()) {
 // Curves: exact sample decisions, kernel == oracle.
 
 // rule: PATH.CURVE.SAMPLE, PATH.WINDING, PATH.SAMPLE.TIE, PATH.COVER.SAMPLE, PATH.GEOMETRY
-// rule: PATH.TIE.PARTITION, PATH.COVER.MONO
+// rule: PATH.TIE.PARTITION, PATH.COVER.MONO, PATH.CURVE.COARSE
 TEST(PathKernel, CurveSampleMasksAndTieWindingsEqualOracle) {
   EXPECT_TRUE(rc::check("curve sample masks and tie windings, kernel == oracle", [] {
     pg::GPath p;

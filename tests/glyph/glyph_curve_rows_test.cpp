@@ -101,10 +101,11 @@ TEST(GlyphCurveRows, FastCrossingsEqualRationalOnGlyphRows) {
 // The monotone pieces (PATH.CURVE.SAMPLE) on the cubics of Nimbus Sans (the path ladder's
 // glyphs, at 24 px): every row of every cubic, walked in order through one prepared curve as
 // the row walk does, gives the rational path's crossings; and the pieces are proved for the
-// cubics and decide their rows (the counts are printed).
-// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
+// cubics and decide their rows (the counts are printed); the aliased walk's crossings are
+// those of the rational path class by class, most with a class threshold.
+// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER, PATH.CURVE.COARSE
 TEST(GlyphCurveRows, MonotonePiecesDecideNimbusCubicRows) {
-  int cubics = 0, with_pieces = 0, rows = 0, decided = 0;
+  int cubics = 0, with_pieces = 0, rows = 0, decided = 0, coarse = 0, crossings = 0;
   std::vector<kd::Crossing> out, scratch, mono;
   for (const char32_t c : std::u32string(U"ag&@8eS%")) {
     const rastrules::io::Glyph g =
@@ -133,8 +134,38 @@ TEST(GlyphCurveRows, MonotonePiecesDecideNimbusCubicRows) {
         ASSERT_TRUE(same(out, exact)) << "row " << sy << " of U+" << static_cast<unsigned>(c);
         ASSERT_TRUE(mono.empty() || same(mono, exact)) << "row " << sy;
       }
+      // The aliased walk's crossings (PATH.CURVE.COARSE: the sample at raw x = 128 mod 256)
+      // on a fresh walk of the same curve: each in the class of the exact one.
+      kd::prepare_curve(curve, p);
+      for (std::int32_t j = 0; j < g.height; ++j) {
+        const std::int64_t sy = 256 * std::int64_t{j} + 128;
+        if (sy < p.ymin || sy > p.ymax)
+          continue;
+        out.clear();
+        kd::curve_crossings_prepared(p, sy, t, out, scratch, 128);
+        const auto exact = kd::curve_crossings_exact(curve, sy, t);
+        const auto classes = [](const std::vector<kd::Crossing>& v) {
+          std::vector<std::pair<std::int64_t, int>> r;
+          for (const kd::Crossing& x : v)
+            r.emplace_back(rastrules::floor_div(x.threshold - 128, 256), x.dir);
+          std::sort(r.begin(), r.end());
+          return r;
+        };
+        ASSERT_EQ(classes(out), classes(exact))
+            << "row " << sy << " of U+" << static_cast<unsigned>(c);
+        for (const kd::Crossing& x : out) {
+          const bool is_exact = std::any_of(exact.begin(), exact.end(), [&](const kd::Crossing& e) {
+            return e.threshold == x.threshold;
+          });
+          coarse += is_exact ? 0 : 1;
+          ++crossings;
+        }
+      }
     }
   }
+  std::printf("aliased walk: %d of %d crossings carry a class threshold (PATH.CURVE.COARSE)\n",
+              coarse, crossings);
+  EXPECT_GE(coarse * 100, crossings * 80);
   std::printf("Nimbus Sans cubics at 24 px: %d, with pieces %d; rows %d, decided by them %d\n",
               cubics, with_pieces, rows, decided);
   EXPECT_GT(cubics, 100);

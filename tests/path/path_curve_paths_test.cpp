@@ -33,6 +33,16 @@ std::vector<std::pair<std::int64_t, int>> sorted(const std::vector<Crossing>& v)
   return out;
 }
 
+// The crossings as the samples at raw x = o mod 256 see them (PATH.CURVE.COARSE): each
+// threshold's class floor((T - o) / 256) with its direction, sorted.
+std::vector<std::pair<std::int64_t, int>> classes(const std::vector<Crossing>& v, std::int64_t o) {
+  std::vector<std::pair<std::int64_t, int>> out;
+  for (const Crossing& c : v)
+    out.emplace_back(floor_div(c.threshold - o, 256), c.dir);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 // rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
 TEST(PathCurvePaths, FastPathEqualsRationalPath) {
   std::mt19937 rng(20);
@@ -224,6 +234,80 @@ TEST(PathCurvePaths, MonotonePiecesGiveTheRationalPathsCrossings) {
   EXPECT_GT(crossings, 3500);
   EXPECT_GT(decided, rows * 3 / 4);
   EXPECT_GT(left_near_extremum, 0);
+}
+
+// PATH.CURVE.COARSE: rows of the monotone test curves walked in order with the samples'
+// offset o (that of the aliased sample, 128, and another of the 16-sample grid) give, class
+// by class, the rational path's crossings; the coarse thresholds (256 q + o, not floor(x_c))
+// decide most crossings the pieces decide, and a walk asking exact thresholds gets exact ones.
+// rule: PATH.CURVE.COARSE, PATH.CURVE.SAMPLE
+TEST(PathCurvePaths, MonotonePiecesDecideTheSamplesClassOfEachCrossing) {
+  int rows = 0, coarse = 0, crossings = 0;
+  std::vector<Crossing> out, scratch;
+  for (const Curve& c : monotone_test_curves()) {
+    path::detail::PreparedCurve p;
+    path::detail::prepare_curve(c, p);
+    const std::int64_t rows_step = std::max<std::int64_t>(1, (p.ymax - p.ymin) / 12);
+    for (const std::int64_t o : {std::int64_t{128}, std::int64_t{200}}) {
+      for (const Tie t : {Tie{true, true}, Tie{false, true}}) {
+        path::detail::prepare_curve(c, p); // a fresh walk
+        for (std::int64_t sy = p.ymin - 1; sy <= p.ymax + 1; sy += rows_step) {
+          out.clear();
+          path::detail::curve_crossings_prepared(p, sy, t, out, scratch, o);
+          const std::vector<Crossing> exact = path::detail::curve_crossings_exact(c, sy, t);
+          ASSERT_EQ(classes(out, o), classes(exact, o)) << "row " << sy << ", offset " << o;
+          const auto s = sorted(out), e = sorted(exact);
+          for (std::size_t k = 0; k < s.size(); ++k)
+            coarse += s[k] != e[k] && (s[k].first - o) % 256 == 0 ? 1 : 0;
+          crossings += static_cast<int>(exact.size());
+          ++rows;
+        }
+      }
+    }
+  }
+  EXPECT_GT(rows, 4000);
+  EXPECT_GT(coarse, crossings / 2) << "of " << crossings << " crossings";
+}
+
+// PATH.CURVE.COARSE leaves a sample on the curve to the tie: x = 1152 t and a monotone y with
+// y(1/2) an integer row, so that the row crosses at t = 1/2 exactly on the sample x = 576
+// (offset 64 = 576 mod 256). Whichever side of 576 the double estimate lands, a class taken
+// without the margin would be the tie's for one of the two directions only; the walks give
+// the rational path's classes under both.
+// rule: PATH.CURVE.COARSE, PATH.SAMPLE.TIE
+TEST(PathCurvePaths, CoarseThresholdsLeaveSamplesOnTheCurveToTheTie) {
+  std::vector<Crossing> out, scratch;
+  int on_sample = 0;
+  for (std::int32_t i = 0; i < 10; ++i)
+    for (std::int32_t j = 0; j < 10; ++j) {
+      Curve c;
+      c.degree = 3;
+      const std::array<std::int32_t, 4> ys{0, 40 + 8 * i, 320 + 8 * j, 1000};
+      for (std::size_t k = 0; k < 4; ++k)
+        c.p[k] = path::Point{384 * static_cast<std::int32_t>(k), ys[k]};
+      const std::int64_t mid = (3 * ys[1] + 3 * ys[2] + ys[3]) / 8; // y(1/2), exact
+      std::vector<std::int64_t> sys{mid};
+      for (std::int64_t sy = 1; sy < 1000; sy += 37)
+        sys.push_back(sy);
+      std::sort(sys.begin(), sys.end());
+      sys.erase(std::unique(sys.begin(), sys.end()), sys.end());
+      for (const Tie t : {Tie{true, true}, Tie{false, true}}) {
+        path::detail::PreparedCurve p;
+        path::detail::prepare_curve(c, p);
+        for (const std::int64_t sy : sys) {
+          out.clear();
+          path::detail::curve_crossings_prepared(p, sy, t, out, scratch, 64);
+          const std::vector<Crossing> exact = path::detail::curve_crossings_exact(c, sy, t);
+          ASSERT_EQ(classes(out, 64), classes(exact, 64))
+              << "y controls " << ys[1] << ", " << ys[2] << ", row " << sy;
+          if (sy == mid)
+            on_sample +=
+                exact.size() == 1 && (exact[0].threshold == 576 || exact[0].threshold == 575) ? 1
+                                                                                              : 0;
+        }
+      }
+    }
+  EXPECT_EQ(on_sample, 200); // every curve's middle row crosses on the sample
 }
 
 // The pieces prepare_curve proves are what PATH.CURVE.SAMPLE says: on each, y' changes sign
