@@ -1010,8 +1010,9 @@ bool coarse_crossing(const Cubic& g, double g_bound, const Cubic& x, std::int64_
 // one root, simple, crossed in the direction of the sign of g after it; its estimate is
 // confined by exact signs of g to (k, k + 1) / 2^30, or found at a grid point (then x there
 // exactly), and crossing_on decides its x. No sign variations are counted and no piece without
-// a crossing is evaluated.
-// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
+// a crossing is evaluated. With a sample_x (not kExactThresholds), a crossing whose samples'
+// class coarse_crossing decides carries that class's threshold (PATH.CURVE.COARSE).
+// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER, PATH.CURVE.COARSE
 bool monotone_crossings(const PreparedCurve& p, std::int64_t sy, Tie t, std::vector<Crossing>& out,
                         std::int64_t sample_x) {
   const MonotonePieces& m = p.mono;
