@@ -962,6 +962,13 @@ void prepare_monotone(const Cubic& y, const Cuts& cs, MonotonePieces& mono) {
   mono.n = nb + 1;
 }
 
+// Where the next row's root on a piece starts (MonotonePieces::Last): from the root u of row sy
+// and y' = d, y'' = dd there, the inverse Taylor coefficients 1 / y' and -y'' / (2 y'^3).
+MonotonePieces::Last next_row_start(double u, double d, double dd, std::int64_t sy) {
+  const double inv = 1.0 / d;
+  return {u, inv, -0.5 * dd * inv * inv * inv, sy, std::isfinite(inv)};
+}
+
 // The half-width of PATH.CURVE.COARSE's bracket around a root estimate, in cells of 2^-30
 // (2^-14: one Halley step from the start lands that close on most glyph rows; x then moves by
 // at most L 2^-14, a fraction of a raw unit on glyphs).
@@ -994,12 +1001,13 @@ bool coarse_crossing(const Cubic& g, double g_bound, const Cubic& x, std::int64_
     return false;
   const double v = x.approx(u);
   const std::int64_t f = floor_to_int(v);
-  const std::int64_t q = floor_div(f - sample_x, std::int64_t{256});
-  const double rel = static_cast<double>(f - 256 * q - sample_x) + (v - static_cast<double>(f));
+  constexpr std::int64_t kPixel = kSubpixelOne; // the samples' spacing: 256 raw units
+  const std::int64_t q = floor_div(f - sample_x, kPixel);
+  const double rel = static_cast<double>(f - kPixel * q - sample_x) + (v - static_cast<double>(f));
   const double m = 0x1p-30 + 2.0 * (x_bound + grid_point(lip * (kCoarseCells + 1)));
-  if (!(rel > m && rel < 256.0 - m))
+  if (!(rel > m && rel < static_cast<double>(kPixel) - m))
     return false;
-  threshold = 256 * q + sample_x;
+  threshold = kPixel * q + sample_x;
   return true;
 }
 
@@ -1065,8 +1073,7 @@ bool monotone_crossings(const PreparedCurve& p, std::int64_t sy, Tie t, std::vec
       if (coarse_crossing(g, bound, x, p.x_lipschitz, p.x_bound, m.lo[i], m.hi[i], sl, sh, u1,
                           sample_x, threshold)) {
         out.push_back(Crossing{threshold, sh});
-        const double inv = 1.0 / d0;
-        last = {u1, inv, -0.5 * dd0 * inv * inv * inv, sy, std::isfinite(inv)};
+        last = next_row_start(u1, d0, dd0, sy);
         continue;
       }
       start = u1; // Halley's steps go on from there (halley_root restarts outside the piece)
@@ -1107,8 +1114,7 @@ bool monotone_crossings(const PreparedCurve& p, std::int64_t sy, Tie t, std::vec
     if (!found)
       return give_up();
     const auto [d, dd] = g.slopes(u);
-    const double inv = 1.0 / d;
-    last = {u, inv, -0.5 * dd * inv * inv * inv, sy, std::isfinite(inv)};
+    last = next_row_start(u, d, dd, sy);
   }
   return true;
 }
