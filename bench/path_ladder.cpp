@@ -3,14 +3,15 @@
 // rungs alternating within every repeat, medians; errors against the exact areas; and the
 // comparisons with FreeType's gray and monochrome rasterizers on the same outlines.
 //
-//   rastrules_path_ladder [--quick] [--samples-only] [--repeats N] [--json FILE]
+//   rastrules_path_ladder [--quick] [--samples-only | --alpha-only] [--repeats N] [--json FILE]
 //                         [--plot FILE.png] [--dejavu FONT] [--cubic FONT] [--scenes PREFIX]
 //   rastrules_path_ladder --picture FILE.png
 //
 // Prints the tables (Markdown) on standard output; --json writes the same figures, --plot the
 // time against error of every rung. --samples-only runs the sample-coverage comparison alone
-// (no area rungs), with the cubic font at every size too; --scenes runs only the scenes whose name
-// begins with PREFIX (e.g. nimbus-cubic-64, for a profile of one scene). --picture writes the
+// (no area rungs), with the cubic font at every size too; --alpha-only the curved outlines' exact
+// alpha against FreeType gray alone, likewise at every size; --scenes runs only the scenes whose
+// name begins with PREFIX (e.g. nimbus-cubic-64, for a profile of one scene). --picture writes the
 // conflation cases, exact beside FreeType's gray raster, and runs nothing else. Implements:
 // BENCH.PATH.RUNGS, BENCH.PATH.SCENES, BENCH.PATH.METRICS, BENCH.PATH.FREETYPE, BENCH.PATH.PICTURES
 
@@ -440,15 +441,22 @@ void run_area(Scene& sc, int repeats, int min_slow_repeats, SceneResult& res) {
   }
 }
 
+// What a run measures: everything, the sample coverage alone, or the curved alpha alone.
+enum class Only { kNothing, kSamples, kAlpha };
+
 // rule: BENCH.PATH.METRICS, BENCH.PATH.FREETYPE
-SceneResult run_scene(Scene& sc, int repeats, int min_slow_repeats, bool samples_only) {
+SceneResult run_scene(Scene& sc, int repeats, int min_slow_repeats, Only only) {
   SceneResult res;
   res.name = sc.s.name;
   res.note = sc.s.note;
   res.items = sc.s.items.size();
   res.pixels = sc.s.pixels();
   res.segments = sc.s.segments();
-  if (!samples_only)
+  if (only == Only::kAlpha) {
+    run_curved_alpha(sc, repeats, res);
+    return res;
+  }
+  if (only == Only::kNothing)
     run_area(sc, repeats, min_slow_repeats, res);
 
   // Sample coverage: the kernel (1 sample at the centre, curves exact) against FreeType's mono
@@ -548,82 +556,92 @@ std::string markdown(const std::vector<SceneResult>& results, const std::string&
   o << header << "\n";
   const bool areas = std::any_of(results.begin(), results.end(),
                                  [](const SceneResult& r) { return !r.rows.empty(); });
-  if (areas)
+  if (areas) {
     o << "## Area coverage: error against the exact area, and time\n\n";
-  o << "Every area rung fills the lines-only flattening of the scene (curves flattened to chords "
-       "within 1/64 px, points on the 26.6 grid): exact curve areas are not built. Error: |rung - "
-       "exact| per pixel over the pixels either covers; visible: > 1/255; conflation pixels: "
-       "where signed-area accumulation in float64 is off the exact area by more than 2^-20 px^2 "
-       "(several windings meet in the pixel). Time: median per scene, rungs alternating.\n\n";
-  for (const SceneResult& r : results) {
-    if (r.rows.empty())
-      continue;
-    o << "### " << r.name << " (" << r.note << "; " << r.segments << " line segments, " << r.pixels
-      << " pixels, " << r.touched << " covered, " << r.conflation
-      << " conflation pixels; exact rows: " << r.rows_by_cells << " by cells, " << r.rows_by_slabs
-      << " by slabs)\n\n";
-    o << "| rung | time | x exact's time | mean error | max error | visible errors | on "
-         "conflation pixels | max error on conflation pixels |\n";
-    o << "|---|---|---|---|---|---|---|---|\n";
-    double exact_s = 0;
-    for (const AreaRow& row : r.rows)
-      if (row.rung == "exact")
-        exact_s = row.seconds;
-    for (const AreaRow& row : r.rows) {
-      const ErrorFigures& e = row.err;
-      o << "| " << row.rung << " | " << seconds_text(row.seconds) << " | "
-        << (exact_s > 0 ? fmt(row.seconds / exact_s) : "-") << " | " << fmt(e.mean) << " | "
-        << fmt(e.max) << " | " << e.visible << " | " << e.on_conflation << " | "
-        << fmt(e.max_conflation) << " |\n";
+    o << "Every area rung fills the lines-only flattening of the scene (curves flattened to chords "
+         "within 1/64 px, points on the 26.6 grid): exact curve areas are not built. Error: |rung "
+         "- "
+         "exact| per pixel over the pixels either covers; visible: > 1/255; conflation pixels: "
+         "where signed-area accumulation in float64 is off the exact area by more than 2^-20 px^2 "
+         "(several windings meet in the pixel). Time: median per scene, rungs alternating.\n\n";
+    for (const SceneResult& r : results) {
+      if (r.rows.empty())
+        continue;
+      o << "### " << r.name << " (" << r.note << "; " << r.segments << " line segments, "
+        << r.pixels << " pixels, " << r.touched << " covered, " << r.conflation
+        << " conflation pixels; exact rows: " << r.rows_by_cells << " by cells, " << r.rows_by_slabs
+        << " by slabs)\n\n";
+      o << "| rung | time | x exact's time | mean error | max error | visible errors | on "
+           "conflation pixels | max error on conflation pixels |\n";
+      o << "|---|---|---|---|---|---|---|---|\n";
+      double exact_s = 0;
+      for (const AreaRow& row : r.rows)
+        if (row.rung == "exact")
+          exact_s = row.seconds;
+      for (const AreaRow& row : r.rows) {
+        const ErrorFigures& e = row.err;
+        o << "| " << row.rung << " | " << seconds_text(row.seconds) << " | "
+          << (exact_s > 0 ? fmt(row.seconds / exact_s) : "-") << " | " << fmt(e.mean) << " | "
+          << fmt(e.max) << " | " << e.visible << " | " << e.on_conflation << " | "
+          << fmt(e.max_conflation) << " |\n";
+      }
+      o << "| exact (curved outline) | " << r.curved_exact << " | | | | | | |\n\n";
+      if (r.oracle_mismatch != 0)
+        o << "**oracle and kernel areas differ on " << r.oracle_mismatch << " pixels**\n\n";
+      else
+        o << "oracle == exact on every pixel (rationals compared).\n\n";
     }
-    o << "| exact (curved outline) | " << r.curved_exact << " | | | | | | |\n\n";
-    if (r.oracle_mismatch != 0)
-      o << "**oracle and kernel areas differ on " << r.oracle_mismatch << " pixels**\n\n";
-    else
-      o << "oracle == exact on every pixel (rationals compared).\n\n";
   }
-  o << "## Sample coverage: the kernel against FreeType's monochrome raster\n\n";
-  o << "Same outlines, curves kept (the kernel decides curves exactly; FreeType flattens them). "
-       "One sample at the pixel centre, top-left rule; FreeType mono has dropout control and its "
-       "own boundary rule. Differing pixels: near (the centre within 1/32 px of the outline: "
-       "the boundary rule, FreeType's rounding and curve flattening); FreeType only, the outline "
-       "meets the pixel but the centre is outside (dropout control: thin parts, and coincident "
-       "edges under evenodd); FreeType only, elsewhere; kernel only, farther than 1/32 px.\n\n";
-  o << "Kernel times: the list of covered pixels (cover_samples) and the 1-bit bitmap "
-       "(cover_samples_mono, FreeType mono's own output form).\n\n";
-  o << "| scene | kernel list | kernel bitmap | FreeType mono | list / mono | bitmap / mono | "
-       "covered (kernel, mono) | differ | near | FreeType only, dropout | FreeType only, other | "
-       "kernel only |\n";
-  o << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const SceneResult& r : results) {
-    const SampleRow& s = r.samples;
-    o << "| " << r.name << " | " << seconds_text(s.kernel_seconds) << " | "
-      << seconds_text(s.bitmap_seconds) << " | " << seconds_text(s.mono_seconds) << " | "
-      << fmt(s.mono_seconds > 0 ? s.kernel_seconds / s.mono_seconds : 0) << " | "
-      << fmt(s.mono_seconds > 0 ? s.bitmap_seconds / s.mono_seconds : 0) << " | "
-      << s.covered_kernel << ", " << s.covered_mono << " | " << s.differ << " | " << s.near << " | "
-      << s.freetype_only_dropout << " | " << s.freetype_only_other << " | " << s.kernel_only_far
-      << " |\n";
+  const bool samples = std::any_of(results.begin(), results.end(),
+                                   [](const SceneResult& r) { return r.samples.repeats > 0; });
+  if (samples) {
+    o << "## Sample coverage: the kernel against FreeType's monochrome raster\n\n";
+    o << "Same outlines, curves kept (the kernel decides curves exactly; FreeType flattens them). "
+         "One sample at the pixel centre, top-left rule; FreeType mono has dropout control and its "
+         "own boundary rule. Differing pixels: near (the centre within 1/32 px of the outline: "
+         "the boundary rule, FreeType's rounding and curve flattening); FreeType only, the outline "
+         "meets the pixel but the centre is outside (dropout control: thin parts, and coincident "
+         "edges under evenodd); FreeType only, elsewhere; kernel only, farther than 1/32 px.\n\n";
+    o << "Kernel times: the list of covered pixels (cover_samples) and the 1-bit bitmap "
+         "(cover_samples_mono, FreeType mono's own output form).\n\n";
+    o << "| scene | kernel list | kernel bitmap | FreeType mono | list / mono | bitmap / mono | "
+         "covered (kernel, mono) | differ | near | FreeType only, dropout | FreeType only, other | "
+         "kernel only |\n";
+    o << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const SceneResult& r : results) {
+      const SampleRow& s = r.samples;
+      o << "| " << r.name << " | " << seconds_text(s.kernel_seconds) << " | "
+        << seconds_text(s.bitmap_seconds) << " | " << seconds_text(s.mono_seconds) << " | "
+        << fmt(s.mono_seconds > 0 ? s.kernel_seconds / s.mono_seconds : 0) << " | "
+        << fmt(s.mono_seconds > 0 ? s.bitmap_seconds / s.mono_seconds : 0) << " | "
+        << s.covered_kernel << ", " << s.covered_mono << " | " << s.differ << " | " << s.near
+        << " | " << s.freetype_only_dropout << " | " << s.freetype_only_other << " | "
+        << s.kernel_only_far << " |\n";
+    }
+  }
+  const bool curved = std::any_of(results.begin(), results.end(),
+                                  [](const SceneResult& r) { return r.curved_rows > 0; });
+  if (curved) {
+    o << "\n## Curved outlines: exact alpha against FreeType's gray raster (same curved "
+         "outlines)\n\n";
+    o << "The kernel's cover_area_alpha (certified floating-point cells, PATH.AREA.FAST, the exact "
+         "methods behind them) and FreeType gray on the same curved outlines, alternating. Rows: "
+         "those the fast cells decided, of all rows. Differ: pixels more than one level apart "
+         "(FreeType flattens curves and accumulates signed areas).\n\n";
+    o << "| scene | exact alpha | FreeType gray | alpha / gray | rows fast | differ > 1 |\n"
+         "|---|---|---|---|---|---|\n";
+    for (const SceneResult& r : results) {
+      if (r.curved_rows == 0)
+        continue;
+      o << "| " << r.name << " | " << seconds_text(r.curved_alpha_seconds) << " | "
+        << seconds_text(r.curved_gray_seconds) << " | "
+        << fmt(r.curved_gray_seconds > 0 ? r.curved_alpha_seconds / r.curved_gray_seconds : 0)
+        << " | " << r.curved_rows_fast << " / " << r.curved_rows << " | " << r.curved_alpha_differ
+        << " |\n";
+    }
   }
   if (!areas)
     return o.str();
-  o << "\n## Curved outlines: exact alpha against FreeType's gray raster (same curved "
-       "outlines)\n\n";
-  o << "The kernel's cover_area_alpha (certified floating-point cells, PATH.AREA.FAST, the exact "
-       "methods behind them) and FreeType gray on the same curved outlines, alternating. Rows: "
-       "those the fast cells decided, of all rows. Differ: pixels more than one level apart "
-       "(FreeType flattens curves and accumulates signed areas).\n\n";
-  o << "| scene | exact alpha | FreeType gray | alpha / gray | rows fast | differ > 1 |\n"
-       "|---|---|---|---|---|---|\n";
-  for (const SceneResult& r : results) {
-    if (r.curved_rows == 0)
-      continue;
-    o << "| " << r.name << " | " << seconds_text(r.curved_alpha_seconds) << " | "
-      << seconds_text(r.curved_gray_seconds) << " | "
-      << fmt(r.curved_gray_seconds > 0 ? r.curved_alpha_seconds / r.curved_gray_seconds : 0)
-      << " | " << r.curved_rows_fast << " / " << r.curved_rows << " | " << r.curved_alpha_differ
-      << " |\n";
-  }
   o << "\n## Exact area against FreeType's gray raster (time ratio, same lines-only outlines)\n\n";
   o << "| scene | exact | exact-alpha8 | freetype-gray | exact / gray | exact-alpha8 / gray |\n"
        "|---|---|---|---|---|---|\n";
@@ -672,7 +690,8 @@ int write_png_file(const std::string& file, const rastrules::io::Image& im) {
 
 int main(int argc, char** argv) {
   using namespace rastrules::bench::path_ladder;
-  bool quick = false, samples_only = false;
+  bool quick = false;
+  Only only = Only::kNothing;
   int repeats = 0;
   std::string json_path, plot_path, picture_path, scene_prefix;
   std::string dejavu = RASTRULES_FONT_DEJAVU, cubic = RASTRULES_FONT_CUBIC;
@@ -688,7 +707,9 @@ int main(int argc, char** argv) {
     if (a == "--quick")
       quick = true;
     else if (a == "--samples-only")
-      samples_only = true;
+      only = Only::kSamples;
+    else if (a == "--alpha-only")
+      only = Only::kAlpha;
     else if (a == "--repeats")
       repeats = std::atoi(value().c_str());
     else if (a == "--json")
@@ -723,8 +744,8 @@ int main(int argc, char** argv) {
     const std::vector<int> sizes = quick ? std::vector<int>{12} : std::vector<int>{12, 24, 48, 64};
     for (const int size : sizes)
       scenes.push_back(glyph_scene(dejavu, "dejavu", quick ? U"a" : text, size));
-    // The cubics at one size, or (samples only, where they cost little) at every size.
-    for (const int size : samples_only ? sizes : std::vector<int>{quick ? 12 : 24})
+    // The cubics at one size, or (one comparison alone, where they cost little) at every size.
+    for (const int size : only != Only::kNothing ? sizes : std::vector<int>{quick ? 12 : 24})
       scenes.push_back(glyph_scene(cubic, "nimbus-cubic", quick ? U"S" : text, size));
     scenes.push_back(polygon_scene(1, quick ? 16 : 64));
     std::erase_if(scenes, [&](const Scene& sc) { return sc.s.name.rfind(scene_prefix, 0) != 0; });
@@ -735,7 +756,7 @@ int main(int argc, char** argv) {
     std::vector<SceneResult> results;
     for (Scene& sc : scenes) {
       std::cerr << "scene " << sc.s.name << "\n";
-      results.push_back(run_scene(sc, repeats, quick ? 1 : 3, samples_only));
+      results.push_back(run_scene(sc, repeats, quick ? 1 : 3, only));
     }
     std::ostringstream header;
     header << "# Path ladder: what accuracy costs for 2D paths\n\nFreeType "
