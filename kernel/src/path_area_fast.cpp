@@ -226,20 +226,44 @@ struct Shape {
   Poly x, y;
   std::array<E, 7> q{}; // q[k]: coefficient of t^k
   int qn = 2;
+  // Sums over k of |q_k|, of q_k's bounds, and of k (|q_k| + its bound): Horner's bound and the
+  // parameter's term on [-1, 1] without a pass over the coefficients (set_q_sums).
+  double q_abs = 0, q_err = 0, q_slope = 0;
   // Q(t) with a bound: Horner's on the coefficients' values, plus their own bounds, plus the
   // parameter's (|Q'| = |x - x0| |y'|, bounded from the coefficients' magnitudes).
   [[nodiscard]] E q_at(E t) const {
     return qn == 6 ? q_at_n<6>(t) : (qn == 4 ? q_at_n<4>(t) : q_at_n<2>(t));
   }
+  void set_q_sums() {
+    q_abs = q_err = q_slope = 0;
+    for (int k = 1; k <= qn; ++k) {
+      const E& qk = q[static_cast<std::size_t>(k)];
+      q_abs += std::abs(qk.v);
+      q_err += qk.e;
+      q_slope += k * (std::abs(qk.v) + qk.e);
+    }
+    // Sums of a few non-negative terms: rounded up by kUp (relative error below 8 u).
+    q_abs *= kUp;
+    q_err *= kUp;
+    q_slope *= kUp;
+  }
 
 private:
-  // q_at unrolled for the degree QN == qn (the same operations in the same order).
+  // q_at unrolled for the degree QN == qn. For |t| + t.e <= 1 (every parameter of a curve's
+  // pieces, t in [0, 1]) |t|^k <= 1 bounds every term: Horner's bound gamma(2 QN) sum |q_k|, the
+  // coefficients' sum e_k, and the parameter's t.e sum k |q_k| (|Q'| on [t - t.e, t + t.e]), from
+  // the shape's sums. Elsewhere the same bounds with the powers of |t| (a pass over the
+  // coefficients).
   template <int QN> [[nodiscard]] E q_at_n(E t) const {
     const double tv = t.v, at = std::abs(tv);
-    double r = q[QN].v, a = std::abs(r), ce = q[QN].e;
+    double r = q[QN].v;
+    for (int k = QN - 1; k >= 0; --k)
+      r = r * tv + q[static_cast<std::size_t>(k)].v;
+    if (at + t.e <= 1.0)
+      return E{r, (kGamma2n[2 * QN] * q_abs + q_err + t.e * q_slope + kTiny) * kUp};
+    double a = std::abs(q[QN].v), ce = q[QN].e;
     for (int k = QN - 1; k >= 0; --k) {
       const E& qk = q[static_cast<std::size_t>(k)];
-      r = r * tv + qk.v;
       a = a * at + std::abs(qk.v);
       ce = ce * at + qk.e;
     }
@@ -899,17 +923,29 @@ bool FastAlpha::walk(const Boundary& b) {
                             s.y.c[2] == 0 && s.y.c[3] == 0;
     if (degenerate)
       continue; // a point (PATH.DEGENERATE)
-    // Q(t) = integral of (x(s) - x0) y'(s): coefficient of t^(i + j) is a_i j b_j / (i + j).
+    // Q(t) = integral of (x(s) - x0) y'(s): the coefficient of t^k is M_k / k, M_k the sum of
+    // a_i j b_j over i + j = k, an integer (|raw| <= 2^23 makes |a_i|, |b_j| <= 12 2^23 < 2^27,
+    // so |M_k| <= 3 * 3 * 2^54 < 2^58: exact in 64 bits), rounded once to a double m and divided
+    // once: exact (bound 0) where |M_k| <= 2^53 and k divides it, else within
+    // |M_k - m| / k + u |q_k| (M_k - m exact: |m| < 2^58 converts back exactly).
     s.qn = 2 * degree;
     s.q.fill(E{});
-    for (int i = 1; i <= degree; ++i)
-      for (int j = 1; j <= degree; ++j) {
-        bool ok = true;
-        const E term = div(mul(exact(s.x.c[static_cast<std::size_t>(i)]),
-                               exact(j * s.y.c[static_cast<std::size_t>(j)])),
-                           exact(static_cast<double>(i + j)), ok);
-        s.q[static_cast<std::size_t>(i + j)] = add(s.q[static_cast<std::size_t>(i + j)], term);
+    for (int k = 2; k <= 2 * degree; ++k) {
+      std::int64_t mk = 0;
+      for (int i = std::max(1, k - degree); i <= std::min(degree, k - 1); ++i) {
+        const int j = k - i;
+        mk += static_cast<std::int64_t>(s.x.c[static_cast<std::size_t>(i)]) * j *
+              static_cast<std::int64_t>(s.y.c[static_cast<std::size_t>(j)]);
       }
+      const auto md = static_cast<double>(mk);
+      const double qk = md / k;
+      const std::int64_t lost = mk - static_cast<std::int64_t>(md);
+      const bool whole = lost == 0 && std::abs(mk) <= (std::int64_t{1} << 53) && mk % k == 0;
+      s.q[static_cast<std::size_t>(k)] = E{
+          qk, whole ? 0.0
+                    : (std::abs(static_cast<double>(lost)) / k + kU * std::abs(qk) + kTiny) * kUp};
+    }
+    s.set_q_sums();
     const auto si = static_cast<std::uint32_t>(shapes_.size());
     shapes_.push_back(s);
     if (r.contour != current) {
