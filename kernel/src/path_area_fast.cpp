@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -304,10 +305,20 @@ struct Sub {
   E ta, tb;    // parameter range
   EPoint a, b; // end points
   Side sa = kNone, sb = kNone;
-  bool interior = true;   // meets the cell's interior (false: along a column line, or col == w)
-  bool along = false;     // along a column line (cover only)
-  E area;                 // integral of (x - left) dy along the sub-arc, raw squared
-  std::int32_t next = -1; // the next sub-arc of the boundary when it is in the same cell
+  bool interior = true;      // meets the cell's interior (false: along a column line, or col == w)
+  bool along = false;        // along a column line (cover only)
+  E area;                    // integral of (x - left) dy along the sub-arc, raw squared
+  std::int32_t next = -1;    // the next sub-arc of the boundary when it is in the same cell
+  std::int32_t in_cell = -1; // the sub-arc emitted before it into the same cell
+};
+
+// What the sub-arcs of one cell add up to, kept as they are emitted (FastAlpha::Cells).
+struct CellSums {
+  E area;                  // the interior sub-arcs' areas
+  E rows;                  // their ends on row lines, y signed (- at a start, + at an end)
+  E left;                  // their ends on the cell's left line (and along it), y signed
+  std::int32_t last = -1;  // the last sub-arc emitted into the cell (a list by in_cell)
+  std::uint32_t count = 0; // sub-arcs
 };
 
 // A chain's end on a cell's border: its position clockwise from the top-left corner (0 to 4,
@@ -334,11 +345,18 @@ public:
     shapes_.clear();
     pieces_.clear();
     subs_.clear();
-    sorted_.clear();
     refs_.clear();
     contour_first_.clear();
-    row_at_ = 0;
     seq_ = 0;
+    // The cells (w + 1 a row: the last holds what lies right of the target) and a bit a cell
+    // that holds a sub-arc; row() leaves them empty again.
+    stride_ = static_cast<std::size_t>(w) + 1;
+    words_ = (stride_ + 63) / 64;
+    const std::size_t n = stride_ * static_cast<std::size_t>(h);
+    if (cells_.size() < n)
+      cells_.resize(n);
+    if (occupied_.size() < words_ * static_cast<std::size_t>(h))
+      occupied_.resize(words_ * static_cast<std::size_t>(h));
     last_row_ = last_idx_ = first_row_ = first_idx_ = -1;
     last_seq_ = first_seq_ = 0;
     q_shape_ = static_cast<std::uint32_t>(-1);
@@ -347,8 +365,8 @@ public:
   // Builds the pieces and walks them; false where the walk is in doubt (the exact methods then
   // take every row).
   bool walk(const Boundary& b);
-  // Sorts the sub-arcs by row, column and order along the boundary (links kept).
-  void sort();
+  // Empties the cells after a walk that gave up (row() empties those of the rows it decides).
+  void clear_cells();
   // Decides row j into out (w bytes); false where a cell of it is not certified.
   bool row(std::int32_t j, std::uint8_t* out);
 
@@ -363,7 +381,11 @@ private:
   [[nodiscard]] E coordinate_at(const Piece& p, bool in_x, E t) const;
   [[nodiscard]] EPoint point_at_exact(const Shape& s, E t) const;
   [[nodiscard]] bool cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std::size_t end,
-                          E above, std::uint8_t& alpha);
+                          E integral, std::uint8_t& alpha);
+  [[nodiscard]] bool finish(E v, std::size_t interior, std::uint8_t& alpha) const;
+  // Decides an occupied cell of row j from its sums and sub-arcs, `right` the cover right of it.
+  [[nodiscard]] bool occupied_cell(std::int32_t j, const CellSums& cs, E right,
+                                   std::uint8_t& alpha);
   [[nodiscard]] bool apart(const Sub& a, const Sub& b) const;
   [[nodiscard]] bool joint_ok(const Sub& first, const Sub& second) const;
 
@@ -371,11 +393,10 @@ private:
   std::int32_t w_ = 0, h_ = 0;
   std::vector<Shape> shapes_;
   std::vector<Piece> pieces_;
-  std::vector<Sub> subs_, sorted_;
-  std::size_t row_at_ = 0; // sorted_: where the next row starts
-  std::vector<std::int32_t> where_;
-  std::vector<std::uint32_t> row_start_;
-  std::vector<std::uint64_t> keys_;
+  std::vector<Sub> subs_, gathered_;
+  std::vector<CellSums> cells_;         // row j, column c at j * stride_ + c
+  std::vector<std::uint64_t> occupied_; // row j's bits at j * words_
+  std::size_t stride_ = 0, words_ = 0;
   std::vector<std::uint8_t> has_prev_, seen_;
   std::vector<End> ends_;
   std::vector<std::pair<std::size_t, std::size_t>> chains_;
@@ -678,6 +699,25 @@ void FastAlpha::emit(std::int32_t row, std::int32_t col, std::uint32_t pi, E ta,
       q_shape_ = p.shape;
       s.area = add(sub(q_, qa), mul(exact(static_cast<double>(sh.x0) - left), cover));
     }
+  }
+  // The cell's sums: the area, and the sub-arc's ends as row()'s cover needs them (an end on a
+  // row line, or on the cell's left line or along it; the others are shared with the sub-arc
+  // before or after it and cancel).
+  const std::size_t ci = static_cast<std::size_t>(row) * stride_ + static_cast<std::size_t>(s.col);
+  CellSums& cs = cells_[ci];
+  s.in_cell = cs.last;
+  cs.last = idx;
+  ++cs.count;
+  occupied_[static_cast<std::size_t>(row) * words_ + static_cast<std::size_t>(s.col) / 64] |=
+      std::uint64_t{1} << (static_cast<unsigned>(s.col) % 64);
+  if (s.interior)
+    cs.area = add(cs.area, s.area);
+  for (const auto& [side, y, sign] :
+       {std::tuple{s.sa, s.a.y, -1.0}, std::tuple{s.sb, s.b.y, 1.0}}) {
+    if (side == kTop || side == kBottom)
+      cs.rows = add(cs.rows, E{sign * y.v, y.e});
+    else if (side == kLeft || s.along)
+      cs.left = add(cs.left, E{sign * y.v, y.e});
   }
   if (s.interior && last_row_ == row && last_seq_ + 1 == seq &&
       r[static_cast<std::size_t>(last_idx_)].col == s.col)
@@ -1242,16 +1282,11 @@ std::size_t two_chain(const std::vector<Sub>& subs, std::size_t at, std::size_t 
 // Decides one cell (its sub-arcs subs[at, end)), `above` the integral of w from the sub-arcs
 // right of it (kW times their cover, raw squared); false where it is not certified.
 bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std::size_t end,
-                     E above, std::uint8_t& alpha) {
+                     E integral, std::uint8_t& alpha) {
   const std::int32_t c = subs[at].col;
-  E integral = above;
   std::size_t interior = 0;
-  for (std::size_t k = at; k < end; ++k) {
-    if (subs[k].interior) {
-      integral = add(integral, subs[k].area);
-      ++interior;
-    }
-  }
+  for (std::size_t k = at; k < end; ++k)
+    interior += subs[k].interior ? 1u : 0u;
   const E v = scale(integral, -2 * kSubpixelBits); // I / A
   if (end - at == 1 && interior == 1 && subs[at].next < 0) {
     // One sub-arc, a part of one monotone piece: a simple arc, which must run from side to side.
@@ -1392,6 +1427,11 @@ bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std
         return false; // three or more winding numbers (or an inconsistent walk)
     }
   }
+  return finish(v, interior, alpha);
+}
+
+// The alpha of a cell whose sub-arcs are certified (at most two winding numbers), from v = I / A.
+bool FastAlpha::finish(E v, std::size_t interior, std::uint8_t& alpha) const {
   if (interior == 0)
     return whole_winding(v, rule_, alpha);
   // Windings {m, m + 1}: the area from I / A.
@@ -1419,99 +1459,116 @@ bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std
   return true;
 }
 
-void FastAlpha::sort() {
-  // By row, column and seq: subs_ is in seq order (emit's), so a counting sort by row keeps seq
-  // order within a row; then each row's keys (column, index), index in seq order, are sorted.
-  const std::size_t n = subs_.size();
-  std::vector<std::uint32_t>& start = row_start_;
-  start.assign(static_cast<std::size_t>(h_) + 1, 0);
-  for (const Sub& s : subs_)
-    ++start[static_cast<std::size_t>(s.row) + 1];
-  for (std::size_t r = 0; r < static_cast<std::size_t>(h_); ++r)
-    start[r + 1] += start[r];
-  std::vector<std::uint64_t>& keys = keys_;
-  keys.resize(n);
-  for (std::size_t k = 0; k < n; ++k)
-    keys[start[static_cast<std::size_t>(subs_[k].row)]++] =
-        (static_cast<std::uint64_t>(subs_[k].col) << 32) | k; // col in [0, w], k < 2^32
-  // start[r] is now where row r + 1 begins.
-  for (std::size_t r = 0, from = 0; r < static_cast<std::size_t>(h_); from = start[r++])
-    std::sort(keys.begin() + static_cast<std::ptrdiff_t>(from),
-              keys.begin() + static_cast<std::ptrdiff_t>(start[r]));
-  for (std::uint64_t& key : keys)
-    key &= 0xFFFFFFFFu; // the order: each key's index
-  where_.resize(n);
-  for (std::size_t k = 0; k < n; ++k)
-    where_[static_cast<std::size_t>(keys[k])] = static_cast<std::int32_t>(k);
-  sorted_.clear();
-  sorted_.reserve(n);
-  for (const std::uint64_t k : keys) {
-    sorted_.push_back(subs_[static_cast<std::size_t>(k)]);
-    if (sorted_.back().next >= 0)
-      sorted_.back().next = where_[static_cast<std::size_t>(sorted_.back().next)];
+void FastAlpha::clear_cells() {
+  for (const Sub& sb : subs_) {
+    cells_[static_cast<std::size_t>(sb.row) * stride_ + static_cast<std::size_t>(sb.col)] =
+        CellSums{};
+    occupied_[static_cast<std::size_t>(sb.row) * words_ + static_cast<std::size_t>(sb.col) / 64] =
+        0;
   }
-  row_at_ = 0;
+}
+
+bool FastAlpha::occupied_cell(std::int32_t j, const CellSums& cs, E right, std::uint8_t& alpha) {
+  const E integral = add(scale(right, kSubpixelBits), cs.area);
+  const auto k1 = static_cast<std::size_t>(cs.last);
+  const Sub& s1 = subs_[k1];
+  if (cs.count == 1) {
+    if (!s1.interior)
+      return finish(scale(integral, -2 * kSubpixelBits), 0, alpha);
+    // One sub-arc, a part of one monotone piece: a simple arc, which must run from side to side.
+    if (s1.next < 0)
+      return s1.sa != kNone && s1.sb != kNone &&
+             finish(scale(integral, -2 * kSubpixelBits), 1, alpha);
+  } else if (cs.count == 2 && s1.interior) {
+    // Two sub-arcs, one continuing into the other (the commonest cell after one sub-arc): one
+    // chain, so cell()'s (a) and (b) come to its joint and its two ends.
+    const auto k0 = static_cast<std::size_t>(s1.in_cell);
+    const Sub& s0 = subs_[k0];
+    const Sub* first = nullptr;
+    if (s0.interior && s0.next == static_cast<std::int32_t>(k1) && s1.next < 0)
+      first = &s0;
+    else if (s0.interior && s1.next == static_cast<std::int32_t>(k0) && s0.next < 0)
+      first = &s1;
+    if (first != nullptr) {
+      const Sub& second = first == &s0 ? s1 : s0;
+      return joint_ok(*first, second) && first->sa != kNone && second.sb != kNone &&
+             finish(scale(integral, -2 * kSubpixelBits), 2, alpha);
+    }
+  }
+  // The general case: the cell's sub-arcs in the order they were emitted, links made local.
+  std::vector<Sub>& g = gathered_;
+  g.clear();
+  for (std::int32_t k = cs.last; k >= 0; k = subs_[static_cast<std::size_t>(k)].in_cell)
+    g.push_back(subs_[static_cast<std::size_t>(k)]);
+  std::reverse(g.begin(), g.end());
+  // in_cell still names each one's predecessor by its index in subs_: the index of g[i] is
+  // g[i + 1].in_cell, and that of the last is cs.last.
+  const auto index_of = [&](std::size_t i) {
+    return i + 1 < g.size() ? g[i + 1].in_cell : cs.last;
+  };
+  for (Sub& sb : g) {
+    if (sb.next < 0)
+      continue;
+    std::int32_t local = -1;
+    for (std::size_t i = 0; i < g.size(); ++i)
+      if (index_of(i) == sb.next)
+        local = static_cast<std::int32_t>(i);
+    sb.next = local;
+  }
+  return cell(j, g, 0, g.size(), integral, alpha);
+}
+
+// The highest occupied column <= c of a row's bits, or -1.
+std::int32_t occupied_at_or_below(const std::uint64_t* bits, std::int32_t c) {
+  auto wi = static_cast<std::size_t>(c) / 64;
+  std::uint64_t m = bits[wi] & (~std::uint64_t{0} >> (63 - static_cast<unsigned>(c) % 64));
+  while (m == 0) {
+    if (wi == 0)
+      return -1;
+    m = bits[--wi];
+  }
+  return static_cast<std::int32_t>(wi * 64 + 63 - static_cast<std::size_t>(std::countl_zero(m)));
 }
 
 bool FastAlpha::row(std::int32_t j, std::uint8_t* out) {
-  // This row's sub-arcs: sorted_[first, last).
-  const std::size_t first = row_at_;
-  while (row_at_ < sorted_.size() && sorted_[row_at_].row == j)
-    ++row_at_;
-  std::vector<Sub>& sorted = sorted_;
-  const std::size_t last = row_at_;
+  CellSums* cells = cells_.data() + static_cast<std::size_t>(j) * stride_;
+  std::uint64_t* bits = occupied_.data() + static_cast<std::size_t>(j) * words_;
   // The cover right of a cell, S = the sum of y(b) - y(a) over the sub-arcs right of it, is
   // summed by its end points so that those shared by two of them cancel exactly instead of
   // adding their errors: an end inside the cell (a vertex, a cut of a curve) is shared with the
   // sub-arc before or after it in the same cell, and an end on a column line with the sub-arc
   // on the other side of it (or on the same side). What is left are the ends on row lines
-  // (exact) and the ends on the column line left of the last column summed (`line`, with the
-  // pieces along that line). Then S is exact wherever those crossings are (a half-covered pixel
-  // left of a curve is decided).
-  E base, line;
-  const auto fold = [&](const Sub& s) { // s's terms, its column now the leftmost summed
-    for (const auto& [side, y, sign] :
-         {std::tuple{s.sa, s.a.y, -1.0}, std::tuple{s.sb, s.b.y, 1.0}}) {
-      if (side == kTop || side == kBottom)
-        base = add(base, E{sign * y.v, y.e});
-      else if (side == kLeft || s.along) // a piece along a column line: on its left line
-        line = add(line, E{sign * y.v, y.e});
-      // kNone, kRight: cancelled by the sub-arc that shares the point.
-    }
-  };
-  std::size_t end = last;
-  std::int32_t c = w_ - 1;
-  while (end > first && sorted[end - 1].col >= w_)
-    fold(sorted[--end]);
+  // (exact; `base`, every cell right of this one) and the ends on the column line left of the
+  // cell right of this one (`line`, with the pieces along that line; emit keeps both sums a
+  // cell). Then S is exact wherever those crossings are (a half-covered pixel left of a curve
+  // is decided).
+  E base = cells[w_].rows, line = cells[w_].left;
+  cells[w_] = CellSums{};
   E right = add(base, line);
   bool decided = true;
-  const auto constant = [&](std::int32_t col) { // the cover right of it: kW times w
-    return whole_winding(scale(right, -kSubpixelBits), rule_, out[col]);
-  };
+  std::int32_t c = w_ - 1;
   while (c >= 0) {
-    if (end > first && sorted[end - 1].col == c) {
-      std::size_t at = end;
-      while (at > first && sorted[at - 1].col == c)
-        --at;
-      std::uint8_t a = 0;
-      if (!cell(j, sorted, at, end, scale(right, kSubpixelBits), a))
+    const std::int32_t at = occupied_at_or_below(bits, c);
+    if (at < c) {
+      // A run of cells without sub-arcs: one winding number each, the same for all of them.
+      if (!whole_winding(scale(right, -kSubpixelBits), rule_, out[c]))
         decided = false;
-      out[c] = a;
-      line = E{};
-      for (std::size_t k = at; k < end; ++k)
-        fold(sorted[k]);
-      right = add(base, line);
-      end = at;
-      --c;
+      std::memset(out + at + 1, out[c], static_cast<std::size_t>(c - at - 1));
+      c = at;
       continue;
     }
-    // A run of cells without sub-arcs: one winding number each, the same for all of them.
-    const std::int32_t stop = end > first ? sorted[end - 1].col : -1;
-    if (!constant(c))
+    CellSums& cs = cells[c];
+    std::uint8_t a = 0;
+    if (!occupied_cell(j, cs, right, a))
       decided = false;
-    std::memset(out + stop + 1, out[c], static_cast<std::size_t>(c - stop - 1));
-    c = stop;
+    out[c] = a;
+    base = add(base, cs.rows);
+    line = cs.left;
+    right = add(base, line);
+    cs = CellSums{};
+    --c;
   }
+  std::fill_n(bits, words_, std::uint64_t{0});
   return decided;
 }
 
@@ -1523,9 +1580,10 @@ bool alpha_fast(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h
   undecided.assign(static_cast<std::size_t>(h), 1);
   thread_local FastAlpha f;
   f.reset(rule, w, h);
-  if (!f.walk(b))
+  if (!f.walk(b)) {
+    f.clear_cells();
     return false;
-  f.sort();
+  }
   for (std::int32_t j = 0; j < h; ++j) {
     std::uint8_t* row = out.data() + static_cast<std::size_t>(j) * static_cast<std::size_t>(w);
     undecided[static_cast<std::size_t>(j)] = f.row(j, row) ? 0 : 1;
