@@ -1440,8 +1440,24 @@ bool FastAlpha::finish(E v, std::size_t interior, std::uint8_t& alpha) const {
   const auto fill = [&](double k) {
     return fill_holds(rule_, static_cast<std::int64_t>(k)) ? 1.0 : 0.0;
   };
+  const auto alpha_of = [&](double y, double pad) {
+    const auto a_lo = (static_cast<std::int64_t>(floor_small(y - pad)) + 1) >> 1;
+    const auto a_hi = (static_cast<std::int64_t>(floor_small(y + pad)) + 1) >> 1;
+    if (a_lo != a_hi)
+      return false;
+    alpha = static_cast<std::uint8_t>(std::clamp(a_lo, std::int64_t{0}, std::int64_t{255}));
+    return true;
+  };
   if (v.v - 2 * v.e > m && v.v + 2 * v.e < m + 1) {
     const double f0 = fill(m), f1 = fill(m + 1);
+    if (v.e > 0) {
+      // Plain doubles where v carries a bound (no tie to decide exactly): v - m and the sum
+      // with f0 round once each, by at most u (both within [-1, 1]; (f1 - f0) (v - m) is exact,
+      // f1 - f0 in {-1, 0, 1}), and 510 c once, by at most 510 u; so 510 c is within
+      // 510 (e + 2 u) + 510 u < 510 e + 2^-42 of its true value.
+      const double y = 510.0 * (f0 + (f1 - f0) * (v.v - m));
+      return alpha_of(y, 2 * (510.0 * v.e * kUp + 0x1p-42) + 0x1p-40);
+    }
     cov = f0 == f1 ? exact(f0) : add(exact(f0), mul(exact(f1 - f0), sub(v, exact(m))));
   } else {
     const double r = std::nearbyint(v.v);
@@ -1450,13 +1466,7 @@ bool FastAlpha::finish(E v, std::size_t interior, std::uint8_t& alpha) const {
   // alpha = floor((510 c + 1) / 2) = (floor(510 c) + 1) >> 1, the same at both ends of 510 c's
   // interval (exactly 510 c where its bound is 0).
   const E y = mul(exact(510), cov);
-  const double pad = y.e == 0 ? 0.0 : 2 * y.e + 0x1p-40;
-  const auto a_lo = (static_cast<std::int64_t>(floor_small(y.v - pad)) + 1) >> 1;
-  const auto a_hi = (static_cast<std::int64_t>(floor_small(y.v + pad)) + 1) >> 1;
-  if (a_lo != a_hi)
-    return false;
-  alpha = static_cast<std::uint8_t>(std::clamp(a_lo, std::int64_t{0}, std::int64_t{255}));
-  return true;
+  return alpha_of(y.v, y.e == 0 ? 0.0 : 2 * y.e + 0x1p-40);
 }
 
 void FastAlpha::clear_cells() {

@@ -166,5 +166,36 @@ TEST(PathAreaFast, RegressionAnEdgeAlongAColumnLineRightOfTheTarget) {
   EXPECT_EQ(a.fast[7], 128);
 }
 
+// Curved pixels whose exact alpha is a tie of the rounding: a quadratic with y linear in t
+// (its control point halfway up) across one pixel row covers (x0 + x1 + x2) / 3 - left of the
+// pixel, here 128 / 3 raw over 256, an area of exactly 1/6: 510 a = 85, the boundary between
+// alphas 42 and 43 (floor(255 / 6 + 1/2) = 43). Q's coefficient M_3 / 3 is inexact, so the
+// fast cells carry a bound and must leave the pixel to the exact methods or decide it through
+// the bound; a bound left out (PATH.AREA.FAST's plain-double alpha taken without its pad)
+// rounds some of these to 42.
+// rule: PATH.AREA.FAST, PATH.AREA.ALPHA
+TEST(PathAreaFast, CurvedPixelsOnARoundingBoundaryAreDecidedThroughTheBound) {
+  int cases = 0;
+  for (std::int32_t col = 0; col < 3; ++col)
+    for (std::int32_t x0 = 1; x0 < 128; x0 += 7)
+      for (std::int32_t x2 = 3; x2 < 128 - x0; x2 += 11) {
+        const std::int32_t x1 = 128 - x0 - x2; // x0 + x1 + x2 = 128 (raw, from the column's left)
+        const double l = 256.0 * col, top = 256.0 * col, bottom = top + 256.0;
+        path::Path p = make_path(
+            FillRule::kNonZero,
+            {contour(0, top / 256,
+                     {line_to((l + x0) / 256, top / 256),
+                      quad_to((l + x1) / 256, (top + 128) / 256, (l + x2) / 256, bottom / 256),
+                      line_to(0, bottom / 256)})});
+        const std::int32_t w = col + 2, h = col + 2;
+        const Alphas a = alphas(p, w, h);
+        const auto at = static_cast<std::size_t>(col) * static_cast<std::size_t>(w) +
+                        static_cast<std::size_t>(col);
+        ASSERT_EQ(a.fast[at], 43) << "col " << col << " x0 " << x0 << " x2 " << x2;
+        ++cases;
+      }
+  EXPECT_GT(cases, 100);
+}
+
 } // namespace
 } // namespace rastrules::test
