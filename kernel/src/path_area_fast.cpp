@@ -307,7 +307,6 @@ struct Sub {
   Side sa = kNone, sb = kNone;
   bool interior = true;      // meets the cell's interior (false: along a column line, or col == w)
   bool along = false;        // along a column line (cover only)
-  E area;                    // integral of (x - left) dy along the sub-arc, raw squared
   std::int32_t next = -1;    // the next sub-arc of the boundary when it is in the same cell
   std::int32_t in_cell = -1; // the sub-arc emitted before it into the same cell
 };
@@ -684,12 +683,13 @@ void FastAlpha::emit(std::int32_t row, std::int32_t col, std::uint32_t pi, E ta,
   // Along a column line; right of the target only the line x = w counts (along a line inside
   // that region its ends are shared like any other).
   s.along = !interior && (col < w_ || (a.x.e == 0 && a.x.v == right_line));
-  const E cover = sub(b.y, a.y); // y(b) - y(a), raw
+  E area; // integral of (x - left) dy along the sub-arc, raw squared
   if (s.interior) {
+    const E cover = sub(b.y, a.y); // y(b) - y(a), raw
     const double left = static_cast<double>(std::int64_t{col} * kW);
     if (p.line) {
       // ((xa - l) + (xb - l)) / 2 (yb - ya)
-      s.area = mul(scale(add(sub(a.x, exact(left)), sub(b.x, exact(left))), -1), cover);
+      area = mul(scale(add(sub(a.x, exact(left)), sub(b.x, exact(left))), -1), cover);
     } else {
       const Shape& sh = shapes_[p.shape];
       // Q at ta is usually Q at the last sub-arc's tb (the walk goes on from there).
@@ -697,7 +697,7 @@ void FastAlpha::emit(std::int32_t row, std::int32_t col, std::uint32_t pi, E ta,
       q_ = sh.q_at(tb);
       q_t_ = tb;
       q_shape_ = p.shape;
-      s.area = add(sub(q_, qa), mul(exact(static_cast<double>(sh.x0) - left), cover));
+      area = add(sub(q_, qa), mul(exact(static_cast<double>(sh.x0) - left), cover));
     }
   }
   // The cell's sums: the area, and the sub-arc's ends as row()'s cover needs them (an end on a
@@ -711,7 +711,7 @@ void FastAlpha::emit(std::int32_t row, std::int32_t col, std::uint32_t pi, E ta,
   occupied_[static_cast<std::size_t>(row) * words_ + static_cast<std::size_t>(s.col) / 64] |=
       std::uint64_t{1} << (static_cast<unsigned>(s.col) % 64);
   if (s.interior)
-    cs.area = add(cs.area, s.area);
+    cs.area = add(cs.area, area);
   for (const auto& [side, y, sign] :
        {std::tuple{s.sa, s.a.y, -1.0}, std::tuple{s.sb, s.b.y, 1.0}}) {
     if (side == kTop || side == kBottom)
