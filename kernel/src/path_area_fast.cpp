@@ -788,6 +788,12 @@ bool FastAlpha::walk_piece(std::uint32_t pi) {
     side_in = p.sx > 0 ? kLeft : kRight;
   if (on_y)
     side_in = p.sy > 0 ? kTop : kBottom;
+  // A curve's last crossing found of a column line and of a row line.
+  struct Kept {
+    bool valid = false;
+    std::int64_t line = 0;
+    E t;
+  } kept_x, kept_y;
   for (int guard = 0;; ++guard) {
     if (guard > 4 * (w_ + h_) + 16)
       return false;
@@ -845,9 +851,21 @@ bool FastAlpha::walk_piece(std::uint32_t pi) {
     // Which comes first.
     bool first_x = cx == 1, first_y = cy == 1;
     E tx, ty;
-    if (first_x && !p.line && !root(p, true, static_cast<double>(X), tc.v, tx))
+    // A curve's crossing of the line that did not come first stays valid for the next step
+    // (the same line, the same piece): kept, not found again.
+    const auto crossing = [&](bool in_x, std::int64_t g, Kept& kept, E& t) {
+      if (kept.valid && kept.line == g) {
+        t = kept.t;
+        return true;
+      }
+      if (!root(p, in_x, static_cast<double>(g), tc.v, t))
+        return false;
+      kept = Kept{true, g, t};
+      return true;
+    };
+    if (first_x && !p.line && !crossing(true, X, kept_x, tx))
       return false;
-    if (first_y && !p.line && !root(p, false, static_cast<double>(Y), tc.v, ty))
+    if (first_y && !p.line && !crossing(false, Y, kept_y, ty))
       return false;
     if (first_x && first_y) {
       if (p.line) {
