@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -305,19 +304,9 @@ struct Sub {
   E ta, tb;    // parameter range
   EPoint a, b; // end points
   Side sa = kNone, sb = kNone;
-  bool interior = true;      // meets the cell's interior (false: along a column line, or col == w)
-  bool along = false;        // along a column line (cover only)
-  std::int32_t next = -1;    // the next sub-arc of the boundary when it is in the same cell
-  std::int32_t in_cell = -1; // the sub-arc emitted before it into the same cell
-};
-
-// What the sub-arcs of one cell add up to, kept as they are emitted (FastAlpha::Cells).
-struct CellSums {
-  E area;                  // the interior sub-arcs' areas
-  E rows;                  // their ends on row lines, y signed (- at a start, + at an end)
-  E left;                  // their ends on the cell's left line (and along it), y signed
-  std::int32_t last = -1;  // the last sub-arc emitted into the cell (a list by in_cell)
-  std::uint32_t count = 0; // sub-arcs
+  bool interior = true;   // meets the cell's interior (false: along a column line, or col == w)
+  bool along = false;     // along a column line (cover only)
+  std::int32_t next = -1; // the next sub-arc of the boundary when it is in the same cell
 };
 
 // A chain's end on a cell's border: its position clockwise from the top-left corner (0 to 4,
@@ -347,15 +336,7 @@ public:
     refs_.clear();
     contour_first_.clear();
     seq_ = 0;
-    // The cells (w + 1 a row: the last holds what lies right of the target) and a bit a cell
-    // that holds a sub-arc; row() leaves them empty again.
-    stride_ = static_cast<std::size_t>(w) + 1;
-    words_ = (stride_ + 63) / 64;
-    const std::size_t n = stride_ * static_cast<std::size_t>(h);
-    if (cells_.size() < n)
-      cells_.resize(n);
-    if (occupied_.size() < words_ * static_cast<std::size_t>(h))
-      occupied_.resize(words_ * static_cast<std::size_t>(h));
+    areas_.clear();
     last_row_ = last_idx_ = first_row_ = first_idx_ = -1;
     last_seq_ = first_seq_ = 0;
     q_shape_ = static_cast<std::uint32_t>(-1);
@@ -364,8 +345,8 @@ public:
   // Builds the pieces and walks them; false where the walk is in doubt (the exact methods then
   // take every row).
   bool walk(const Boundary& b);
-  // Empties the cells after a walk that gave up (row() empties those of the rows it decides).
-  void clear_cells();
+  // Orders each row's sub-arcs by column and order along the boundary (keys_, row_start_).
+  void sort_rows();
   // Decides row j into out (w bytes); false where a cell of it is not certified.
   bool row(std::int32_t j, std::uint8_t* out);
 
@@ -383,7 +364,7 @@ private:
                           E integral, std::uint8_t& alpha);
   [[nodiscard]] bool finish(E v, std::size_t interior, std::uint8_t& alpha) const;
   // Decides an occupied cell of row j from its sums and sub-arcs, `right` the cover right of it.
-  [[nodiscard]] bool occupied_cell(std::int32_t j, const CellSums& cs, E right,
+  [[nodiscard]] bool occupied_cell(std::int32_t j, std::size_t at, std::size_t end, E integral,
                                    std::uint8_t& alpha);
   [[nodiscard]] bool apart(const Sub& a, const Sub& b) const;
   [[nodiscard]] bool joint_ok(const Sub& first, const Sub& second) const;
@@ -393,9 +374,11 @@ private:
   std::vector<Shape> shapes_;
   std::vector<Piece> pieces_;
   std::vector<Sub> subs_, gathered_;
-  std::vector<CellSums> cells_;         // row j, column c at j * stride_ + c
-  std::vector<std::uint64_t> occupied_; // row j's bits at j * words_
-  std::size_t stride_ = 0, words_ = 0;
+  std::vector<E> areas_; // a sub-arc's integral of (x - left) dy (0 where not interior)
+  // Row j's sub-arcs: keys_[row_start_[j], row_start_[j + 1]), each (column << 32) | index,
+  // sorted: by column, then in the order they were emitted.
+  std::vector<std::uint64_t> keys_;
+  std::vector<std::uint32_t> row_start_, row_fill_;
   std::vector<std::uint8_t> has_prev_, seen_;
   std::vector<End> ends_;
   std::vector<std::pair<std::size_t, std::size_t>> chains_;
@@ -700,25 +683,7 @@ void FastAlpha::emit(std::int32_t row, std::int32_t col, std::uint32_t pi, E ta,
       area = add(sub(q_, qa), mul(exact(static_cast<double>(sh.x0) - left), cover));
     }
   }
-  // The cell's sums: the area, and the sub-arc's ends as row()'s cover needs them (an end on a
-  // row line, or on the cell's left line or along it; the others are shared with the sub-arc
-  // before or after it and cancel).
-  const std::size_t ci = static_cast<std::size_t>(row) * stride_ + static_cast<std::size_t>(s.col);
-  CellSums& cs = cells_[ci];
-  s.in_cell = cs.last;
-  cs.last = idx;
-  ++cs.count;
-  occupied_[static_cast<std::size_t>(row) * words_ + static_cast<std::size_t>(s.col) / 64] |=
-      std::uint64_t{1} << (static_cast<unsigned>(s.col) % 64);
-  if (s.interior)
-    cs.area = add(cs.area, area);
-  for (const auto& [side, y, sign] :
-       {std::tuple{s.sa, s.a.y, -1.0}, std::tuple{s.sb, s.b.y, 1.0}}) {
-    if (side == kTop || side == kBottom)
-      cs.rows = add(cs.rows, E{sign * y.v, y.e});
-    else if (side == kLeft || s.along)
-      cs.left = add(cs.left, E{sign * y.v, y.e});
-  }
+  areas_.push_back(area);
   if (s.interior && last_row_ == row && last_seq_ + 1 == seq &&
       r[static_cast<std::size_t>(last_idx_)].col == s.col)
     r[static_cast<std::size_t>(last_idx_)].next = idx;
@@ -1487,116 +1452,139 @@ bool FastAlpha::finish(E v, std::size_t interior, std::uint8_t& alpha) const {
   return alpha_of(y.v, y.e == 0 ? 0.0 : 2 * y.e + 0x1p-40);
 }
 
-void FastAlpha::clear_cells() {
-  for (const Sub& sb : subs_) {
-    cells_[static_cast<std::size_t>(sb.row) * stride_ + static_cast<std::size_t>(sb.col)] =
-        CellSums{};
-    occupied_[static_cast<std::size_t>(sb.row) * words_ + static_cast<std::size_t>(sb.col) / 64] =
-        0;
-  }
+void FastAlpha::sort_rows() {
+  // A counting sort by row keeps the order of emission within a row; then each row's keys
+  // (column, index) are sorted. Memory: the sub-arcs and the rows, not the cells.
+  const std::size_t n = subs_.size();
+  std::vector<std::uint32_t>& start = row_start_;
+  start.assign(static_cast<std::size_t>(h_) + 1, 0);
+  for (const Sub& sb : subs_)
+    ++start[static_cast<std::size_t>(sb.row) + 1];
+  for (std::size_t r = 0; r < static_cast<std::size_t>(h_); ++r)
+    start[r + 1] += start[r];
+  keys_.resize(n);
+  std::vector<std::uint32_t>& at = row_fill_;
+  at.assign(start.begin(), start.end() - 1);
+  for (std::size_t k = 0; k < n; ++k)
+    keys_[at[static_cast<std::size_t>(subs_[k].row)]++] =
+        (static_cast<std::uint64_t>(subs_[k].col) << 32) | k; // col in [0, w], k < 2^32
+  for (std::size_t r = 0; r < static_cast<std::size_t>(h_); ++r)
+    std::sort(keys_.begin() + static_cast<std::ptrdiff_t>(start[r]),
+              keys_.begin() + static_cast<std::ptrdiff_t>(start[r + 1]));
 }
 
-bool FastAlpha::occupied_cell(std::int32_t j, const CellSums& cs, E right, std::uint8_t& alpha) {
-  const E integral = add(scale(right, kSubpixelBits), cs.area);
-  const auto k1 = static_cast<std::size_t>(cs.last);
-  const Sub& s1 = subs_[k1];
-  if (cs.count == 1) {
-    if (!s1.interior)
-      return finish(scale(integral, -2 * kSubpixelBits), 0, alpha);
+bool FastAlpha::occupied_cell(std::int32_t j, std::size_t at, std::size_t end, E integral,
+                              std::uint8_t& alpha) {
+  const auto index = [&](std::size_t k) {
+    return static_cast<std::size_t>(keys_[k] & 0xFFFFFFFFu);
+  };
+  const E v = scale(integral, -2 * kSubpixelBits); // I / A
+  if (end - at == 1) {
+    const Sub& s = subs_[index(at)];
+    if (!s.interior)
+      return finish(v, 0, alpha);
     // One sub-arc, a part of one monotone piece: a simple arc, which must run from side to side.
-    if (s1.next < 0)
-      return s1.sa != kNone && s1.sb != kNone &&
-             finish(scale(integral, -2 * kSubpixelBits), 1, alpha);
-  } else if (cs.count == 2 && s1.interior) {
+    if (s.next < 0)
+      return s.sa != kNone && s.sb != kNone && finish(v, 1, alpha);
+  } else if (end - at == 2) {
     // Two sub-arcs, one continuing into the other (the commonest cell after one sub-arc): one
     // chain, so cell()'s (a) and (b) come to its joint and its two ends.
-    const auto k0 = static_cast<std::size_t>(s1.in_cell);
+    const std::size_t k0 = index(at), k1 = index(at + 1);
     const Sub& s0 = subs_[k0];
+    const Sub& s1 = subs_[k1];
     const Sub* first = nullptr;
-    if (s0.interior && s0.next == static_cast<std::int32_t>(k1) && s1.next < 0)
-      first = &s0;
-    else if (s0.interior && s1.next == static_cast<std::int32_t>(k0) && s0.next < 0)
-      first = &s1;
+    if (s0.interior && s1.interior) {
+      if (s0.next == static_cast<std::int32_t>(k1) && s1.next < 0)
+        first = &s0;
+      else if (s1.next == static_cast<std::int32_t>(k0) && s0.next < 0)
+        first = &s1;
+    }
     if (first != nullptr) {
       const Sub& second = first == &s0 ? s1 : s0;
       return joint_ok(*first, second) && first->sa != kNone && second.sb != kNone &&
-             finish(scale(integral, -2 * kSubpixelBits), 2, alpha);
+             finish(v, 2, alpha);
     }
   }
   // The general case: the cell's sub-arcs in the order they were emitted, links made local.
   std::vector<Sub>& g = gathered_;
   g.clear();
-  for (std::int32_t k = cs.last; k >= 0; k = subs_[static_cast<std::size_t>(k)].in_cell)
-    g.push_back(subs_[static_cast<std::size_t>(k)]);
-  std::reverse(g.begin(), g.end());
-  // in_cell still names each one's predecessor by its index in subs_: the index of g[i] is
-  // g[i + 1].in_cell, and that of the last is cs.last.
-  const auto index_of = [&](std::size_t i) {
-    return i + 1 < g.size() ? g[i + 1].in_cell : cs.last;
-  };
+  for (std::size_t k = at; k < end; ++k)
+    g.push_back(subs_[index(k)]);
   for (Sub& sb : g) {
     if (sb.next < 0)
       continue;
     std::int32_t local = -1;
-    for (std::size_t i = 0; i < g.size(); ++i)
-      if (index_of(i) == sb.next)
-        local = static_cast<std::int32_t>(i);
+    for (std::size_t k = at; k < end; ++k)
+      if (index(k) == static_cast<std::size_t>(sb.next))
+        local = static_cast<std::int32_t>(k - at);
     sb.next = local;
   }
   return cell(j, g, 0, g.size(), integral, alpha);
 }
 
-// The highest occupied column <= c of a row's bits, or -1.
-std::int32_t occupied_at_or_below(const std::uint64_t* bits, std::int32_t c) {
-  auto wi = static_cast<std::size_t>(c) / 64;
-  std::uint64_t m = bits[wi] & (~std::uint64_t{0} >> (63 - static_cast<unsigned>(c) % 64));
-  while (m == 0) {
-    if (wi == 0)
-      return -1;
-    m = bits[--wi];
-  }
-  return static_cast<std::int32_t>(wi * 64 + 63 - static_cast<std::size_t>(std::countl_zero(m)));
-}
-
 bool FastAlpha::row(std::int32_t j, std::uint8_t* out) {
-  CellSums* cells = cells_.data() + static_cast<std::size_t>(j) * stride_;
-  std::uint64_t* bits = occupied_.data() + static_cast<std::size_t>(j) * words_;
+  const std::size_t first = row_start_[static_cast<std::size_t>(j)];
+  std::size_t end = row_start_[static_cast<std::size_t>(j) + 1];
+  const auto column = [&](std::size_t k) { return static_cast<std::int32_t>(keys_[k] >> 32); };
   // The cover right of a cell, S = the sum of y(b) - y(a) over the sub-arcs right of it, is
   // summed by its end points so that those shared by two of them cancel exactly instead of
   // adding their errors: an end inside the cell (a vertex, a cut of a curve) is shared with the
   // sub-arc before or after it in the same cell, and an end on a column line with the sub-arc
   // on the other side of it (or on the same side). What is left are the ends on row lines
   // (exact; `base`, every cell right of this one) and the ends on the column line left of the
-  // cell right of this one (`line`, with the pieces along that line; emit keeps both sums a
-  // cell). Then S is exact wherever those crossings are (a half-covered pixel left of a curve
-  // is decided).
-  E base = cells[w_].rows, line = cells[w_].left;
-  cells[w_] = CellSums{};
+  // cell right of this one (`line`, with the pieces along that line). Then S is exact wherever
+  // those crossings are (a half-covered pixel left of a curve is decided).
+  E base, line;
+  const auto fold = [&](std::size_t at, std::size_t to) { // a cell's ends, and its area
+    line = E{};
+    E area;
+    for (std::size_t k = at; k < to; ++k) {
+      const auto i = static_cast<std::size_t>(keys_[k] & 0xFFFFFFFFu);
+      const Sub& s = subs_[i];
+      if (s.interior)
+        area = add(area, areas_[i]);
+      for (const auto& [side, y, sign] :
+           {std::tuple{s.sa, s.a.y, -1.0}, std::tuple{s.sb, s.b.y, 1.0}}) {
+        if (side == kTop || side == kBottom)
+          base = add(base, E{sign * y.v, y.e});
+        else if (side == kLeft || s.along) // a piece along a column line: on its left line
+          line = add(line, E{sign * y.v, y.e});
+        // kNone, kRight: cancelled by the sub-arc that shares the point.
+      }
+    }
+    return area;
+  };
+  std::size_t at = end;
+  while (at > first && column(at - 1) >= w_)
+    --at;
+  (void)fold(at, end);
+  end = at;
   E right = add(base, line);
   bool decided = true;
   std::int32_t c = w_ - 1;
   while (c >= 0) {
-    const std::int32_t at = occupied_at_or_below(bits, c);
-    if (at < c) {
+    const std::int32_t next = end > first ? column(end - 1) : -1;
+    if (next < c) {
       // A run of cells without sub-arcs: one winding number each, the same for all of them.
       if (!whole_winding(scale(right, -kSubpixelBits), rule_, out[c]))
         decided = false;
-      std::memset(out + at + 1, out[c], static_cast<std::size_t>(c - at - 1));
-      c = at;
+      std::memset(out + next + 1, out[c], static_cast<std::size_t>(c - next - 1));
+      c = next;
       continue;
     }
-    CellSums& cs = cells[c];
+    at = end;
+    while (at > first && column(at - 1) == c)
+      --at;
+    const E above = scale(right, kSubpixelBits);
+    const E area = fold(at, end);
     std::uint8_t a = 0;
-    if (!occupied_cell(j, cs, right, a))
+    if (!occupied_cell(j, at, end, add(above, area), a))
       decided = false;
     out[c] = a;
-    base = add(base, cs.rows);
-    line = cs.left;
     right = add(base, line);
-    cs = CellSums{};
+    end = at;
     --c;
   }
-  std::fill_n(bits, words_, std::uint64_t{0});
   return decided;
 }
 
@@ -1608,10 +1596,9 @@ bool alpha_fast(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h
   undecided.assign(static_cast<std::size_t>(h), 1);
   thread_local FastAlpha f;
   f.reset(rule, w, h);
-  if (!f.walk(b)) {
-    f.clear_cells();
+  if (!f.walk(b))
     return false;
-  }
+  f.sort_rows();
   for (std::int32_t j = 0; j < h; ++j) {
     std::uint8_t* row = out.data() + static_cast<std::size_t>(j) * static_cast<std::size_t>(w);
     undecided[static_cast<std::size_t>(j)] = f.row(j, row) ? 0 : 1;
