@@ -442,21 +442,21 @@ void run_area(Scene& sc, int repeats, int min_slow_repeats, SceneResult& res) {
 }
 
 // What a run measures: everything, the sample coverage alone, or the curved alpha alone.
-enum class Only { kNothing, kSamples, kAlpha };
+enum class Measure { kAll, kSamples, kAlpha };
 
 // rule: BENCH.PATH.METRICS, BENCH.PATH.FREETYPE
-SceneResult run_scene(Scene& sc, int repeats, int min_slow_repeats, Only only) {
+SceneResult run_scene(Scene& sc, int repeats, int min_slow_repeats, Measure measure) {
   SceneResult res;
   res.name = sc.s.name;
   res.note = sc.s.note;
   res.items = sc.s.items.size();
   res.pixels = sc.s.pixels();
   res.segments = sc.s.segments();
-  if (only == Only::kAlpha) {
+  if (measure == Measure::kAlpha) {
     run_curved_alpha(sc, repeats, res);
     return res;
   }
-  if (only == Only::kNothing)
+  if (measure == Measure::kAll)
     run_area(sc, repeats, min_slow_repeats, res);
 
   // Sample coverage: the kernel (1 sample at the centre, curves exact) against FreeType's mono
@@ -691,7 +691,7 @@ int write_png_file(const std::string& file, const rastrules::io::Image& im) {
 int main(int argc, char** argv) {
   using namespace rastrules::bench::path_ladder;
   bool quick = false;
-  Only only = Only::kNothing;
+  Measure measure = Measure::kAll;
   int repeats = 0;
   std::string json_path, plot_path, picture_path, scene_prefix;
   std::string dejavu = RASTRULES_FONT_DEJAVU, cubic = RASTRULES_FONT_CUBIC;
@@ -707,9 +707,9 @@ int main(int argc, char** argv) {
     if (a == "--quick")
       quick = true;
     else if (a == "--samples-only")
-      only = Only::kSamples;
+      measure = Measure::kSamples;
     else if (a == "--alpha-only")
-      only = Only::kAlpha;
+      measure = Measure::kAlpha;
     else if (a == "--repeats")
       repeats = std::atoi(value().c_str());
     else if (a == "--json")
@@ -745,7 +745,7 @@ int main(int argc, char** argv) {
     for (const int size : sizes)
       scenes.push_back(glyph_scene(dejavu, "dejavu", quick ? U"a" : text, size));
     // The cubics at one size, or (one comparison alone, where they cost little) at every size.
-    for (const int size : only != Only::kNothing ? sizes : std::vector<int>{quick ? 12 : 24})
+    for (const int size : measure != Measure::kAll ? sizes : std::vector<int>{quick ? 12 : 24})
       scenes.push_back(glyph_scene(cubic, "nimbus-cubic", quick ? U"S" : text, size));
     scenes.push_back(polygon_scene(1, quick ? 16 : 64));
     std::erase_if(scenes, [&](const Scene& sc) { return sc.s.name.rfind(scene_prefix, 0) != 0; });
@@ -756,7 +756,7 @@ int main(int argc, char** argv) {
     std::vector<SceneResult> results;
     for (Scene& sc : scenes) {
       std::cerr << "scene " << sc.s.name << "\n";
-      results.push_back(run_scene(sc, repeats, quick ? 1 : 3, only));
+      results.push_back(run_scene(sc, repeats, quick ? 1 : 3, measure));
     }
     std::ostringstream header;
     header << "# Path ladder: what accuracy costs for 2D paths\n\nFreeType "
