@@ -427,7 +427,6 @@ bool FastAlpha::root(const Piece& p, bool in_x, double target, double from, E& t
     t = div(exact(off), exact(f.c[1]), ok);
     return ok;
   }
-  const auto sgn = [&](double u) { return sign_of(sub(f.at(exact(u)), exact(off))); };
   // An approximate root by safeguarded Halley steps in plain doubles, then a bracket around it
   // whose end signs are certified (the ends of the piece where nothing tighter is).
   double lo = p.t0.v, hi = p.t1.v;
@@ -503,6 +502,19 @@ bool FastAlpha::root(const Piece& p, bool in_x, double target, double from, E& t
     x = nx;
   }
   x = std::clamp(x, lo, hi);
+  // The sign of f(u) - off where certified, else 2: Horner's rule in plain doubles, its bound
+  // gamma(2n) sum |c_k| for |u| <= 1 (every parameter here lies in [0, 1]), and the
+  // subtraction's rounding; the same test as sign_of(sub(f.at(exact(u)), exact(off))) with
+  // |u|^k <= 1 in Horner's bound.
+  double c_abs = 0;
+  for (int k = 1; k <= f.n; ++k)
+    c_abs += std::abs(f.c[static_cast<std::size_t>(k)]);
+  const double horner = (kGamma2n[static_cast<std::size_t>(2 * f.n)] * c_abs * kUp + kTiny) * kUp;
+  const auto sgn = [&](double u) {
+    const double r = f.at_d(u) - off;
+    const double e = (horner + kU * std::abs(r)) * kUp;
+    return r > e ? 1 : (r < -e ? -1 : 2);
+  };
   bool lo_done = false, hi_done = false;
   for (double d = 4 * kU * std::max(1.0, std::abs(x)); !(lo_done && hi_done); d *= 16) {
     if (!lo_done) {
