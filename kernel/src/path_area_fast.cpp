@@ -306,6 +306,7 @@ struct Sub {
   Side sa = kNone, sb = kNone;
   bool interior = true;   // meets the cell's interior (false: along a column line, or col == w)
   bool along = false;     // along a column line (cover only)
+  E area;                 // integral of (x - left) dy along the sub-arc, raw squared
   std::int32_t next = -1; // the next sub-arc of the boundary when it is in the same cell
 };
 
@@ -336,7 +337,6 @@ public:
     refs_.clear();
     contour_first_.clear();
     seq_ = 0;
-    areas_.clear();
     last_row_ = last_idx_ = first_row_ = first_idx_ = -1;
     last_seq_ = first_seq_ = 0;
     q_shape_ = static_cast<std::uint32_t>(-1);
@@ -363,7 +363,8 @@ private:
   [[nodiscard]] bool cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std::size_t end,
                           E integral, std::uint8_t& alpha);
   [[nodiscard]] bool finish(E v, std::size_t interior, std::uint8_t& alpha) const;
-  // Decides an occupied cell of row j from its sums and sub-arcs, `right` the cover right of it.
+  // Decides a cell of row j holding the sub-arcs of keys_[at, end), `integral` the integral of w
+  // over it (its sub-arcs' areas and kW times the cover right of it, raw squared).
   [[nodiscard]] bool occupied_cell(std::int32_t j, std::size_t at, std::size_t end, E integral,
                                    std::uint8_t& alpha);
   [[nodiscard]] bool apart(const Sub& a, const Sub& b) const;
@@ -374,7 +375,6 @@ private:
   std::vector<Shape> shapes_;
   std::vector<Piece> pieces_;
   std::vector<Sub> subs_, gathered_;
-  std::vector<E> areas_; // a sub-arc's integral of (x - left) dy (0 where not interior)
   // Row j's sub-arcs: keys_[row_start_[j], row_start_[j + 1]), each (column << 32) | index,
   // sorted: by column, then in the order they were emitted.
   std::vector<std::uint64_t> keys_;
@@ -678,13 +678,12 @@ void FastAlpha::emit(std::int32_t row, std::int32_t col, std::uint32_t pi, E ta,
   // Along a column line; right of the target only the line x = w counts (along a line inside
   // that region its ends are shared like any other).
   s.along = !interior && (col < w_ || (a.x.e == 0 && a.x.v == right_line));
-  E area; // integral of (x - left) dy along the sub-arc, raw squared
   if (s.interior) {
     const E cover = sub(b.y, a.y); // y(b) - y(a), raw
     const double left = static_cast<double>(std::int64_t{col} * kW);
     if (p.line) {
       // ((xa - l) + (xb - l)) / 2 (yb - ya)
-      area = mul(scale(add(sub(a.x, exact(left)), sub(b.x, exact(left))), -1), cover);
+      s.area = mul(scale(add(sub(a.x, exact(left)), sub(b.x, exact(left))), -1), cover);
     } else {
       const Shape& sh = shapes_[p.shape];
       // Q at ta is usually Q at the last sub-arc's tb (the walk goes on from there).
@@ -692,10 +691,9 @@ void FastAlpha::emit(std::int32_t row, std::int32_t col, std::uint32_t pi, E ta,
       q_ = sh.q_at(tb);
       q_t_ = tb;
       q_shape_ = p.shape;
-      area = add(sub(q_, qa), mul(exact(static_cast<double>(sh.x0) - left), cover));
+      s.area = add(sub(q_, qa), mul(exact(static_cast<double>(sh.x0) - left), cover));
     }
   }
-  areas_.push_back(area);
   if (s.interior && last_row_ == row && last_seq_ + 1 == seq &&
       r[static_cast<std::size_t>(last_idx_)].col == s.col)
     r[static_cast<std::size_t>(last_idx_)].next = idx;
@@ -1258,24 +1256,9 @@ bool FastAlpha::joint_ok(const Sub& first, const Sub& second) const {
   return sf.x.c[1] * ss.y.c[1] - sf.y.c[1] * ss.x.c[1] != 0; // else it doubles back
 }
 
-// The first of subs[at, end) when they are two interior sub-arcs of which one continues into
-// the other and not back (one open chain), else end.
-std::size_t two_chain(const std::vector<Sub>& subs, std::size_t at, std::size_t end,
-                      std::size_t interior) {
-  if (end - at != 2 || interior != 2)
-    return end;
-  const auto a = static_cast<std::int32_t>(at), b = a + 1;
-  const Sub& sa = subs[at];
-  const Sub& sb = subs[at + 1];
-  if (sa.next == b && sb.next < 0)
-    return at;
-  if (sb.next == a && sa.next < 0)
-    return at + 1;
-  return end;
-}
-
-// Decides one cell (its sub-arcs subs[at, end)), `above` the integral of w from the sub-arcs
-// right of it (kW times their cover, raw squared); false where it is not certified.
+// Decides a cell that occupied_cell does not (its sub-arcs subs[at, end): three or more, or one
+// or two that do not form one open chain), `integral` the integral of w over it (raw squared);
+// false where it is not certified.
 bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std::size_t end,
                      E integral, std::uint8_t& alpha) {
   const std::int32_t c = subs[at].col;
@@ -1283,18 +1266,7 @@ bool FastAlpha::cell(std::int32_t j, std::vector<Sub>& subs, std::size_t at, std
   for (std::size_t k = at; k < end; ++k)
     interior += subs[k].interior ? 1u : 0u;
   const E v = scale(integral, -2 * kSubpixelBits); // I / A
-  if (end - at == 1 && interior == 1 && subs[at].next < 0) {
-    // One sub-arc, a part of one monotone piece: a simple arc, which must run from side to side.
-    if (subs[at].sa == kNone || subs[at].sb == kNone)
-      return false;
-  } else if (const std::size_t f = two_chain(subs, at, end, interior); f != end) {
-    // Two sub-arcs, one continuing into the other (the commonest cell after one sub-arc): one
-    // chain, so (a) and (b) below come to its joint and its two ends.
-    const Sub& first = subs[f];
-    const Sub& second = subs[static_cast<std::size_t>(first.next)];
-    if (!joint_ok(first, second) || first.sa == kNone || second.sb == kNone)
-      return false;
-  } else if (interior > 0) {
+  if (interior > 0) {
     // (a) No two sub-arcs meet but where one continues into the next, and those do not turn
     // back into each other's quadrant.
     for (std::size_t p = at; p < end; ++p) {
@@ -1554,7 +1526,7 @@ bool FastAlpha::row(std::int32_t j, std::uint8_t* out) {
       const auto i = static_cast<std::size_t>(keys_[k] & 0xFFFFFFFFu);
       const Sub& s = subs_[i];
       if (s.interior)
-        area = add(area, areas_[i]);
+        area = add(area, s.area);
       for (const auto& [side, y, sign] :
            {std::tuple{s.sa, s.a.y, -1.0}, std::tuple{s.sb, s.b.y, 1.0}}) {
         if (side == kTop || side == kBottom)
