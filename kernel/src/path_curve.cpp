@@ -482,6 +482,18 @@ struct Cubic {
   }
 };
 
+// A row s.y on the scale of Cubic::scaled is s.y 2^90 (formula::curve_row_scaled).
+constexpr int kRowShift = 3 * kFastBits;
+static_assert(kRowShift == 90, "rows on the 2^30 grid's cube (PATH.CURVE.SAMPLE)");
+
+// The key of a piece's end Y = y 2^90 against integer rows (MonotonePieces): 2 floor(y), plus 1
+// where y is not an integer. For an integer row r, key - 2 r has the sign of y - r: both are 0
+// together (y = r), and otherwise floor(y) >= r iff y > r.
+std::int64_t row_key(Wide y_scaled) {
+  const Wide f = y_scaled >> kRowShift; // floor (C++20: arithmetic shift)
+  return static_cast<std::int64_t>(2 * f + ((f << kRowShift) == y_scaled ? 0 : 1));
+}
+
 int wide_sign(Wide v) {
   return v > 0 ? 1 : (v < 0 ? -1 : 0);
 }
@@ -946,15 +958,20 @@ void prepare_monotone(const Cubic& y, const Cuts& cs, MonotonePieces& mono) {
     mono.lo[i] = lo[i];
     mono.hi[i] = hi[i];
     // Piece ends at t = 0 and 1 (every piece has one) without Horner's steps.
-    mono.ylo[i] = lo[i] == 0 ? formula::curve_scaled_end<Wide>(y.wide(), false) : y.scaled(lo[i]);
-    mono.yhi[i] = hi[i] == kOne ? formula::curve_scaled_end<Wide>(y.wide(), true) : y.scaled(hi[i]);
+    const Wide ylo =
+        lo[i] == 0 ? formula::curve_scaled_end<Wide>(y.wide(), false) : y.scaled(lo[i]);
+    const Wide yhi =
+        hi[i] == kOne ? formula::curve_scaled_end<Wide>(y.wide(), true) : y.scaled(hi[i]);
+    mono.ylo[i] = row_key(ylo);
+    mono.yhi[i] = row_key(yhi);
     mono.ylo_d[i] = lo[i] == 0 ? static_cast<double>(y.c[0]) : y.approx(grid_point(lo[i]));
     mono.yhi_d[i] = y.approx(grid_point(hi[i]));
     if (j < nb) { // the bracket after piece j: y within 3 cells of its start
       const std::array<Wide, 2> r =
-          formula::curve_bracket_range<Wide>(mono.yhi[i], lip, Wide{lo[i + 1] - hi[i]});
-      mono.near_lo[i] = r[0];
-      mono.near_hi[i] = r[1];
+          formula::curve_bracket_range<Wide>(yhi, lip, Wide{lo[i + 1] - hi[i]});
+      // The rows s.y with r0 <= s.y 2^90 <= r1: ceil(r0 / 2^90) .. floor(r1 / 2^90).
+      mono.near_lo[i] = static_cast<std::int64_t>(-((-r[0]) >> kRowShift));
+      mono.near_hi[i] = static_cast<std::int64_t>(r[1] >> kRowShift);
     }
   }
   mono.brackets = nb;
@@ -1014,8 +1031,8 @@ bool coarse_crossing(const Cubic& g, double g_bound, const Cubic& x, std::int64_
 // The crossings of row sy with a cubic whose monotone pieces are proved (mono.n > 0): false,
 // having appended nothing, where they do not decide (the row near a bracket, through a piece's
 // end, or an estimate not confined to its cell or a neighbour). A piece whose ends lie on
-// either side of the row (exact comparisons of y(k / 2^30) 2^90 with s.y 2^90) holds exactly
-// one root, simple, crossed in the direction of the sign of g after it; its estimate is
+// either side of the row (exact: their keys against 2 s.y, MonotonePieces) holds exactly one
+// root, simple, crossed in the direction of the sign of g after it; its estimate is
 // confined by exact signs of g to (k, k + 1) / 2^30, or found at a grid point (then x there
 // exactly), and crossing_on decides its x. No sign variations are counted and no piece without
 // a crossing is evaluated. With a sample_x (not kExactThresholds), a crossing whose samples'
@@ -1024,10 +1041,11 @@ bool coarse_crossing(const Cubic& g, double g_bound, const Cubic& x, std::int64_
 bool monotone_crossings(const PreparedCurve& p, std::int64_t sy, Tie t, std::vector<Crossing>& out,
                         std::int64_t sample_x) {
   const MonotonePieces& m = p.mono;
-  const Wide s = formula::curve_row_scaled<Wide>(sy);
   for (int j = 0; j < m.brackets; ++j)
-    if (s >= m.near_lo[static_cast<std::size_t>(j)] && s <= m.near_hi[static_cast<std::size_t>(j)])
+    if (sy >= m.near_lo[static_cast<std::size_t>(j)] &&
+        sy <= m.near_hi[static_cast<std::size_t>(j)])
       return false;
+  const std::int64_t s = 2 * sy; // against the pieces' ends' keys
   Cubic g{p.y};
   g.c[0] -= sy;
   const double bound = row_error_bound(g, p.y_abs_rest);

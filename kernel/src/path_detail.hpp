@@ -137,12 +137,14 @@ __extension__ typedef __int128 CurveWide; // the curve test's wide integers (GCC
 struct MonotonePieces {
   int n = 0;                              // pieces; 0: none proved (every row takes the estimates)
   std::array<std::int64_t, 3> lo{}, hi{}; // each piece's ends k on the 2^30 grid
-  std::array<CurveWide, 3> ylo{}, yhi{};  // y(k / 2^30) 2^90 at them, exactly
-  std::array<double, 3> ylo_d{}, yhi_d{}; // the same in double, for the estimates' start
+  // y(k / 2^30) at them as an exact key: 2 floor(y) where y is an integer, 2 floor(y) + 1
+  // where not, so that the sign of key - 2 s.y is the sign of y - s.y for every integer row.
+  std::array<std::int64_t, 3> ylo{}, yhi{};
+  std::array<double, 3> ylo_d{}, yhi_d{}; // y there in double, for the estimates' start
   int brackets = 0;
-  // A row s.y with near_lo <= s.y 2^90 <= near_hi might cross y inside a bracket: the
-  // estimates decide it.
-  std::array<CurveWide, 2> near_lo{}, near_hi{};
+  // A row with near_lo <= s.y <= near_hi might cross y inside a bracket: the estimates decide
+  // it (the integer rows of the bracket's exact range of y).
+  std::array<std::int64_t, 2> near_lo{}, near_hi{};
   // Where the next row's root estimate on each piece starts (a walk's rows, in order, on one
   // thread; only a start): the last root found there, t at row `row`, with the first two
   // Taylor coefficients of the inverse of y there, 1 / y' and -y'' / (2 y'^3), so that the

@@ -343,8 +343,14 @@ TEST(PathCurvePaths, MonotonePiecesAreMonotone) {
            {std::pair{p.mono.lo[i], p.mono.ylo[i]}, std::pair{p.mono.hi[i], p.mono.yhi[i]}}) {
         const Q t = Q(k) * grid;
         const Q exact = ((pc[3] * t + pc[2]) * t + pc[1]) * t + pc[0];
-        const Q scaled = exact * Q(boost::multiprecision::cpp_int(1) << 90);
-        EXPECT_EQ(Q(static_cast<boost::multiprecision::cpp_int>(value)), scaled);
+        // The end's key: 2 floor(y), plus 1 where y is not an integer.
+        const boost::multiprecision::cpp_int num = numerator(exact), den = denominator(exact);
+        boost::multiprecision::cpp_int fl = num / den;
+        if (fl * den > num)
+          --fl; // toward minus infinity
+        const boost::multiprecision::cpp_int key = 2 * fl + (fl * den == num ? 0 : 1);
+        EXPECT_EQ(boost::multiprecision::cpp_int(value), key)
+            << "piece " << j << " end at k " << k << " of the curve from y " << c.p[0].y;
       }
       if (j + 1 < p.mono.n) {
         EXPECT_EQ(p.mono.lo[i + 1] - p.mono.hi[i], 3);
