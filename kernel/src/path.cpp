@@ -81,13 +81,14 @@ public:
     if (prepared_.size() < ranges_.size())
       prepared_.resize(ranges_.size());
   }
-  // The curves with lo <= y <= hi. Calls must come with non-decreasing y.
-  const std::vector<const detail::PreparedCurve*>& advance(std::int64_t y) {
-    while (next_ < ranges_.size() && ranges_[next_].lo <= y) {
+  // The curves whose range meets [y_lo, y_hi] (lo <= y_hi, hi >= y_lo). Calls must come with
+  // non-decreasing y_lo and y_hi.
+  const std::vector<const detail::PreparedCurve*>& advance(std::int64_t y_lo, std::int64_t y_hi) {
+    while (next_ < ranges_.size() && ranges_[next_].lo <= y_hi) {
       detail::prepare_curve(*ranges_[next_].curve, prepared_[next_]);
       live_.push_back(&prepared_[next_++]);
     }
-    std::erase_if(live_, [&](const detail::PreparedCurve* p) { return p->ymax < y; });
+    std::erase_if(live_, [&](const detail::PreparedCurve* p) { return p->ymax < y_lo; });
     return live_;
   }
 
@@ -201,7 +202,9 @@ struct SampleWork {
   std::vector<CurveRange> curve_ranges;
   std::vector<detail::PreparedCurve> prepared_curves;
   std::vector<const detail::PreparedCurve*> live_curves;
-  std::vector<Crossing> crossings, curve_out;
+  std::vector<Crossing> curve_out;
+  std::vector<detail::BandRow> band;            // the sample rows of a band of pixel rows
+  std::vector<std::vector<Crossing>> crossings; // their crossings, one vector a sample row
   std::vector<std::uint32_t> masks;
   bool busy = false;
 };
@@ -259,72 +262,95 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
   std::vector<std::uint32_t>& masks = work.masks;
   if (!single)
     masks.assign(static_cast<std::size_t>(w), 0);
-  std::vector<Crossing>& crossings = work.crossings;
-  for (std::int32_t j = 0; j < h; ++j) {
-    std::int64_t touched_lo = w, touched_hi = -1;
-    for (std::size_t r = 0; r < n_rows; ++r) {
-      const std::int64_t sy = std::int64_t{j} * kSubpixelOne + kSubpixelHalf +
-                              std::int64_t{rows[r].oy} * kSampleGridUnit;
-      crossings.clear();
-      for (const DownEdge* e : active.advance(sy, sy)) {
-        const bool spans = t.y_down ? formula::path_edge_spans<true>(e->ya, e->yb, sy)
-                                    : formula::path_edge_spans<false>(e->ya, e->yb, sy);
-        if (spans)
-          crossings.push_back(Crossing{line_threshold(*e, sy, t), e->dir});
-      }
-      // One sample in this row of the pattern: a curve's crossing needs only the samples'
-      // class (PATH.CURVE.COARSE).
-      const std::int64_t sample_x =
-          rows[r].count == 1 ? samples[rows[r].first].x_offset : detail::kExactThresholds;
-      for (const detail::PreparedCurve* c : curves.advance(sy))
-        detail::curve_crossings_prepared(*c, sy, t, crossings, work.curve_out, sample_x);
-      if (crossings.empty())
-        continue;
-      std::sort(crossings.begin(), crossings.end(),
-                [](const Crossing& p, const Crossing& q) { return p.threshold < q.threshold; });
-      // Winding on each interval of sample x: (T[m-1], T[m]] has the sum of dir over l >= m,
-      // the total less the sum over l < m.
-      std::int64_t total = 0;
-      for (const Crossing& c : crossings)
-        total += c.dir;
-      for (std::size_t k = rows[r].first; k < rows[r].first + rows[r].count; ++k) {
-        const Sample& smp = samples[k];
-        std::int64_t winding = total;
-        for (std::size_t m = 0; m <= crossings.size(); ++m) {
-          if (m > 0)
-            winding -= crossings[m - 1].dir;
-          if (!fill_holds(path.fill_rule, winding))
-            continue;
-          // Pixels i with A < 256 i + x_offset <= B.
-          std::int64_t i_lo = 0, i_hi = std::int64_t{w} - 1;
-          if (m > 0)
-            i_lo = std::max(i_lo,
-                            floor_div(crossings[m - 1].threshold - smp.x_offset, kSubpixelOne) + 1);
-          if (m < crossings.size())
-            i_hi = std::min(i_hi, floor_div(crossings[m].threshold - smp.x_offset, kSubpixelOne));
-          if (i_lo > i_hi)
-            continue;
-          if (single) {
-            if constexpr (requires { emit.span(i_lo, i_hi, j, smp.bit); }) {
-              emit.span(i_lo, i_hi, j, smp.bit);
-            } else {
-              for (std::int64_t i = i_lo; i <= i_hi; ++i)
-                emit(SampleCoverage{static_cast<std::int32_t>(i), j, smp.bit});
-            }
-            continue;
-          }
-          for (std::int64_t i = i_lo; i <= i_hi; ++i)
-            masks[static_cast<std::size_t>(i)] |= smp.bit;
-          touched_lo = std::min(touched_lo, i_lo);
-          touched_hi = std::max(touched_hi, i_hi);
+  // Pixel rows go in bands of up to kBandRows sample rows (whole pixel rows; at least one):
+  // each curve is asked for all its rows of a band at once (detail::curve_crossings_band).
+  // The band holds every crossing of its rows at once, so a boundary of many segments takes
+  // fewer rows a band: at most about 2^16 segment rows (a few MiB of crossings).
+  constexpr std::size_t kBandRows = 16, kBandSegmentRows = std::size_t{1} << 16;
+  const std::size_t segments =
+      std::max<std::size_t>(1, work.boundary.lines.size() + work.boundary.curves.size());
+  const auto band_pixels = static_cast<std::int32_t>(
+      std::max<std::size_t>(1, std::min(kBandRows, kBandSegmentRows / segments) / n_rows));
+  std::vector<detail::BandRow>& band = work.band;
+  std::vector<std::vector<Crossing>>& crossings = work.crossings;
+  if (crossings.size() < static_cast<std::size_t>(band_pixels) * n_rows)
+    crossings.resize(static_cast<std::size_t>(band_pixels) * n_rows);
+  for (std::int32_t j0 = 0; j0 < h; j0 += band_pixels) {
+    const std::int32_t j1 = std::min(h, j0 + band_pixels);
+    band.clear();
+    for (std::int32_t j = j0; j < j1; ++j) {
+      for (std::size_t r = 0; r < n_rows; ++r) {
+        const std::int64_t sy = std::int64_t{j} * kSubpixelOne + kSubpixelHalf +
+                                std::int64_t{rows[r].oy} * kSampleGridUnit;
+        // One sample in this row of the pattern: a curve's crossing needs only the samples'
+        // class (PATH.CURVE.COARSE).
+        const std::int64_t sample_x =
+            rows[r].count == 1 ? samples[rows[r].first].x_offset : detail::kExactThresholds;
+        std::vector<Crossing>& row = crossings[band.size()];
+        row.clear();
+        for (const DownEdge* e : active.advance(sy, sy)) {
+          const bool spans = t.y_down ? formula::path_edge_spans<true>(e->ya, e->yb, sy)
+                                      : formula::path_edge_spans<false>(e->ya, e->yb, sy);
+          if (spans)
+            row.push_back(Crossing{line_threshold(*e, sy, t), e->dir});
         }
+        band.push_back(detail::BandRow{sy, sample_x});
       }
     }
-    for (std::int64_t i = touched_lo; i <= touched_hi; ++i) {
-      std::uint32_t& m = masks[static_cast<std::size_t>(i)];
-      if (m != 0)
-        emit(SampleCoverage{static_cast<std::int32_t>(i), j, m});
-      m = 0;
+    for (const detail::PreparedCurve* c : curves.advance(band.front().sy, band.back().sy))
+      detail::curve_crossings_band(*c, band, t, crossings, work.curve_out);
+    for (std::int32_t j = j0; j < j1; ++j) {
+      std::int64_t touched_lo = w, touched_hi = -1;
+      for (std::size_t r = 0; r < n_rows; ++r) {
+        std::vector<Crossing>& row = crossings[static_cast<std::size_t>(j - j0) * n_rows + r];
+        if (row.empty())
+          continue;
+        std::sort(row.begin(), row.end(),
+                  [](const Crossing& p, const Crossing& q) { return p.threshold < q.threshold; });
+        // Winding on each interval of sample x: (T[m-1], T[m]] has the sum of dir over l >= m,
+        // the total less the sum over l < m.
+        std::int64_t total = 0;
+        for (const Crossing& c : row)
+          total += c.dir;
+        for (std::size_t k = rows[r].first; k < rows[r].first + rows[r].count; ++k) {
+          const Sample& smp = samples[k];
+          std::int64_t winding = total;
+          for (std::size_t m = 0; m <= row.size(); ++m) {
+            if (m > 0)
+              winding -= row[m - 1].dir;
+            if (!fill_holds(path.fill_rule, winding))
+              continue;
+            // Pixels i with A < 256 i + x_offset <= B.
+            std::int64_t i_lo = 0, i_hi = std::int64_t{w} - 1;
+            if (m > 0)
+              i_lo =
+                  std::max(i_lo, floor_div(row[m - 1].threshold - smp.x_offset, kSubpixelOne) + 1);
+            if (m < row.size())
+              i_hi = std::min(i_hi, floor_div(row[m].threshold - smp.x_offset, kSubpixelOne));
+            if (i_lo > i_hi)
+              continue;
+            if (single) {
+              if constexpr (requires { emit.span(i_lo, i_hi, j, smp.bit); }) {
+                emit.span(i_lo, i_hi, j, smp.bit);
+              } else {
+                for (std::int64_t i = i_lo; i <= i_hi; ++i)
+                  emit(SampleCoverage{static_cast<std::int32_t>(i), j, smp.bit});
+              }
+              continue;
+            }
+            for (std::int64_t i = i_lo; i <= i_hi; ++i)
+              masks[static_cast<std::size_t>(i)] |= smp.bit;
+            touched_lo = std::min(touched_lo, i_lo);
+            touched_hi = std::max(touched_hi, i_hi);
+          }
+        }
+      }
+      for (std::int64_t i = touched_lo; i <= touched_hi; ++i) {
+        std::uint32_t& m = masks[static_cast<std::size_t>(i)];
+        if (m != 0)
+          emit(SampleCoverage{static_cast<std::int32_t>(i), j, m});
+        m = 0;
+      }
     }
   }
 }

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -468,7 +469,7 @@ struct Cubic {
   // Returns P(k / 2^30) * 2^90, exactly.
   [[nodiscard]] Wide scaled(std::int64_t k) const { return formula::curve_scaled<Wide>(wide(), k); }
   [[nodiscard]] std::array<Wide, 4> wide() const { return {c[0], c[1], c[2], c[3]}; }
-  [[nodiscard]] double approx(double t) const {
+  [[nodiscard, gnu::always_inline]] double approx(double t) const {
     return ((static_cast<double>(c[3]) * t + static_cast<double>(c[2])) * t +
             static_cast<double>(c[1])) *
                t +
@@ -1003,9 +1004,11 @@ constexpr std::int64_t kCoarseCells = std::int64_t{1} << 16;
 // integer part exact, v - F within 2^-53, the sum below 2^9); rel > m and rel < 256 - m with
 // m = 2^-30 + 2 (E + R) (twice: the sum E + R rounded) put x_c strictly between the two.
 // rule: PATH.CURVE.COARSE, PATH.CURVE.FILTER
-bool coarse_crossing(const Cubic& g, double g_bound, const Cubic& x, std::int64_t lip,
-                     double x_bound, std::int64_t lo, std::int64_t hi, int sl, int sh, double u,
-                     std::int64_t sample_x, std::int64_t& threshold) {
+[[gnu::always_inline]] inline bool coarse_crossing(const Cubic& g, double g_bound, const Cubic& x,
+                                                   std::int64_t lip, double x_bound,
+                                                   std::int64_t lo, std::int64_t hi, int sl, int sh,
+                                                   double u, std::int64_t sample_x,
+                                                   std::int64_t& threshold) {
   if (!(u > 0.0 && u < 1.0))
     return false; // NaN too
   const std::int64_t kf = floor_to_int(u * 0x1p30);
@@ -1038,8 +1041,12 @@ bool coarse_crossing(const Cubic& g, double g_bound, const Cubic& x, std::int64_
 // a crossing is evaluated. With a sample_x (not kExactThresholds), a crossing whose samples'
 // class coarse_crossing decides carries that class's threshold (PATH.CURVE.COARSE).
 // rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER, PATH.CURVE.COARSE
-bool monotone_crossings(const PreparedCurve& p, std::int64_t sy, Tie t, std::vector<Crossing>& out,
-                        std::int64_t sample_x) {
+// x is the curve's x (p.x, copied once by the caller for all its rows). Inlined into the band
+// loop (curve_crossings_band), so that a row costs no call.
+[[gnu::always_inline]] inline bool monotone_crossings(const PreparedCurve& p, const Cubic& x,
+                                                      std::int64_t sy, Tie t,
+                                                      std::vector<Crossing>& out,
+                                                      std::int64_t sample_x) {
   const MonotonePieces& m = p.mono;
   for (int j = 0; j < m.brackets; ++j)
     if (sy >= m.near_lo[static_cast<std::size_t>(j)] &&
@@ -1049,7 +1056,6 @@ bool monotone_crossings(const PreparedCurve& p, std::int64_t sy, Tie t, std::vec
   Cubic g{p.y};
   g.c[0] -= sy;
   const double bound = row_error_bound(g, p.y_abs_rest);
-  const Cubic x{p.x};
   const std::size_t mark = out.size();
   const auto give_up = [&] {
     out.resize(mark);
@@ -1434,10 +1440,18 @@ void prepare_curve(const Curve& c, PreparedCurve& p) {
 void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
                               std::vector<Crossing>& out, std::vector<Crossing>& scratch,
                               std::int64_t sample_x) {
-  if (sy < p.ymin || sy > p.ymax)
-    return; // the curve lies in the convex hull of its control points
-  if (p.mono.n > 0 && monotone_crossings(p, sy, t, out, sample_x))
-    return;
+  const BandRow row{sy, sample_x};
+  curve_crossings_band(p, std::span{&row, 1}, t, std::span{&out, 1}, scratch);
+}
+
+namespace {
+
+// The rows the monotone pieces leave (curve_crossings_band): the estimates, else the exact
+// paths of curve_crossings_into.
+// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
+[[gnu::noinline]] void curve_crossings_left(const PreparedCurve& p, std::int64_t sy, Tie t,
+                                            std::vector<Crossing>& out,
+                                            std::vector<Crossing>& scratch) {
   Cubic g{p.y};
   g.c[0] -= sy;
   // No root at an end: the estimates (most rows of a glyph's curves), as in
@@ -1462,11 +1476,30 @@ void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
   out.insert(out.end(), scratch.begin(), scratch.end());
 }
 
+} // namespace
+
+// rule: PATH.CURVE.SAMPLE
+void curve_crossings_band(const PreparedCurve& p, std::span<const BandRow> rows, Tie t,
+                          std::span<std::vector<Crossing>> out, std::vector<Crossing>& scratch) {
+  const Cubic x{p.x};
+  // The rows within the control points' y-range (the curve lies in their convex hull).
+  const auto first = std::partition_point(rows.begin(), rows.end(),
+                                          [&](const BandRow& r) { return r.sy < p.ymin; });
+  for (auto i = static_cast<std::size_t>(first - rows.begin()); i < rows.size(); ++i) {
+    const std::int64_t sy = rows[i].sy;
+    if (sy > p.ymax)
+      return; // the rows come in increasing y
+    if (p.mono.n > 0 && monotone_crossings(p, x, sy, t, out[i], rows[i].sample_x))
+      continue;
+    curve_crossings_left(p, sy, t, out[i], scratch);
+  }
+}
+
 // rule: PATH.CURVE.SAMPLE
 bool curve_crossings_monotone(const PreparedCurve& p, std::int64_t sy, Tie t,
                               std::vector<Crossing>& out, std::int64_t sample_x) {
   return p.mono.n > 0 && sy >= p.ymin && sy <= p.ymax &&
-         monotone_crossings(p, sy, t, out, sample_x);
+         monotone_crossings(p, Cubic{p.x}, sy, t, out, sample_x);
 }
 
 namespace {

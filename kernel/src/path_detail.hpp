@@ -185,6 +185,16 @@ inline constexpr std::int64_t kExactThresholds = std::numeric_limits<std::int64_
 void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
                               std::vector<Crossing>& out, std::vector<Crossing>& scratch,
                               std::int64_t sample_x = kExactThresholds);
+// A row of a band (curve_crossings_band): its y and its sample_x, as above.
+struct BandRow {
+  std::int64_t sy = 0;
+  std::int64_t sample_x = kExactThresholds;
+};
+// The same for several rows of increasing y at once (a band of the row walk), row i's
+// crossings appended to out[i] (out.size() >= rows.size()): what the rows of one curve share
+// is read once, and a row costs no call where the monotone pieces decide it.
+void curve_crossings_band(const PreparedCurve& p, std::span<const BandRow> rows, Tie t,
+                          std::span<std::vector<Crossing>> out, std::vector<Crossing>& scratch);
 // The monotone pieces alone (PATH.CURVE.SAMPLE): false, with nothing appended, where prepare_curve
 // proved none (p.mono.n == 0) or they leave row sy to the estimates; else true with the row's
 // crossings appended to out. For the tests that check which rows they decide (rows of one

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <optional>
 #include <random>
+#include <span>
 #include <vector>
 
 #include <boost/multiprecision/cpp_int.hpp>
@@ -234,6 +235,45 @@ TEST(PathCurvePaths, MonotonePiecesGiveTheRationalPathsCrossings) {
   EXPECT_GT(crossings, 3500);
   EXPECT_GT(decided, rows * 3 / 4);
   EXPECT_GT(left_near_extremum, 0);
+}
+
+// The row walk asks a curve for a band of rows at once (curve_crossings_band): the same
+// crossings, row by row, as one row at a time, for bands that start and end above, across and
+// below the curve's y-range, with exact thresholds and with the samples' class.
+// rule: PATH.CURVE.SAMPLE, PATH.CURVE.COARSE
+TEST(PathCurvePaths, ABandOfRowsGivesEachRowsCrossings) {
+  std::vector<Crossing> one, scratch;
+  std::vector<std::vector<Crossing>> band_out;
+  int rows = 0, crossings = 0, n = -1;
+  for (const Curve& c : monotone_test_curves()) {
+    ++n;
+    path::detail::PreparedCurve single, banded;
+    path::detail::prepare_curve(c, single);
+    const std::int64_t step = std::max<std::int64_t>(1, (single.ymax - single.ymin) / 20);
+    std::vector<path::detail::BandRow> all;
+    for (std::int64_t sy = single.ymin - 3 * step; sy <= single.ymax + 3 * step; sy += step)
+      all.push_back(path::detail::BandRow{sy, n % 2 == 0 ? path::detail::kExactThresholds : 128});
+    for (const Tie t : {Tie{true, true}, Tie{false, true}}) {
+      path::detail::prepare_curve(c, single);
+      path::detail::prepare_curve(c, banded);
+      for (std::size_t first = 0; first < all.size(); first += 5) {
+        const std::span<const path::detail::BandRow> band =
+            std::span{all}.subspan(first, std::min<std::size_t>(5, all.size() - first));
+        band_out.assign(band.size(), {});
+        path::detail::curve_crossings_band(banded, band, t, band_out, scratch);
+        for (std::size_t i = 0; i < band.size(); ++i) {
+          one.clear();
+          path::detail::curve_crossings_prepared(single, band[i].sy, t, one, scratch,
+                                                 band[i].sample_x);
+          ASSERT_EQ(sorted(band_out[i]), sorted(one)) << "curve " << n << " row " << band[i].sy;
+          ++rows;
+          crossings += static_cast<int>(one.size());
+        }
+      }
+    }
+  }
+  EXPECT_GT(rows, 4000);
+  EXPECT_GT(crossings, 3000);
 }
 
 // PATH.CURVE.COARSE: rows of the monotone test curves walked in order with the samples'
