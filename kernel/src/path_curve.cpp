@@ -953,30 +953,28 @@ void prepare_monotone(const Cubic& y, const Cuts& cs, MonotonePieces& mono) {
   for (int j = 0; j <= nb; ++j)
     if (slo[static_cast<std::size_t>(j)] != shi[static_cast<std::size_t>(j)])
       return;
-  const Wide lip = formula::curve_lipschitz_scaled<std::int64_t, Wide>(y.c, kSelect);
+  // y at t = 0 and 1: the integers c0 and c0 + c1 + c2 + c3, keys 2 y (every piece has an end
+  // there; the others on the grid inside, through scaled()).
+  const std::int64_t y_at1 = formula::curve_at_one(y.c);
   for (int j = 0; j <= nb; ++j) {
     const auto i = static_cast<std::size_t>(j);
     mono.lo[i] = lo[i];
     mono.hi[i] = hi[i];
-    // Piece ends at t = 0 and 1 (every piece has one) without Horner's steps.
-    const Wide ylo =
-        lo[i] == 0 ? formula::curve_scaled_end<Wide>(y.wide(), false) : y.scaled(lo[i]);
-    const Wide yhi =
-        hi[i] == kOne ? formula::curve_scaled_end<Wide>(y.wide(), true) : y.scaled(hi[i]);
-    mono.ylo[i] = row_key(ylo);
-    mono.yhi[i] = row_key(yhi);
+    mono.ylo[i] = lo[i] == 0 ? 2 * y.c[0] : row_key(y.scaled(lo[i]));
+    mono.yhi[i] = hi[i] == kOne ? 2 * y_at1 : row_key(y.scaled(hi[i]));
     mono.ylo_d[i] = lo[i] == 0 ? static_cast<double>(y.c[0]) : y.approx(grid_point(lo[i]));
-    mono.yhi_d[i] = y.approx(grid_point(hi[i]));
+    mono.yhi_d[i] = hi[i] == kOne ? static_cast<double>(y_at1) : y.approx(grid_point(hi[i]));
+    mono.last[i].valid = false;
     if (j < nb) { // the bracket after piece j: y within 3 cells of its start
+      const Wide lip = formula::curve_lipschitz_scaled<std::int64_t, Wide>(y.c, kSelect);
       const std::array<Wide, 2> r =
-          formula::curve_bracket_range<Wide>(yhi, lip, Wide{lo[i + 1] - hi[i]});
+          formula::curve_bracket_range<Wide>(y.scaled(hi[i]), lip, Wide{lo[i + 1] - hi[i]});
       // The rows s.y with r0 <= s.y 2^90 <= r1: ceil(r0 / 2^90) .. floor(r1 / 2^90).
       mono.near_lo[i] = static_cast<std::int64_t>(-((-r[0]) >> kRowShift));
       mono.near_hi[i] = static_cast<std::int64_t>(r[1] >> kRowShift);
     }
   }
   mono.brackets = nb;
-  mono.last = {};
   mono.n = nb + 1;
 }
 
