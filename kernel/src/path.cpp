@@ -271,6 +271,8 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
       std::max<std::size_t>(1, work.boundary.lines.size() + work.boundary.curves.size());
   const auto band_pixels = static_cast<std::int32_t>(
       std::max<std::size_t>(1, std::min(kBandRows, kBandSegmentRows / segments) / n_rows));
+  const std::int64_t off_lo = kSubpixelHalf + std::int64_t{rows[0].oy} * kSampleGridUnit,
+                     off_hi = kSubpixelHalf + std::int64_t{rows[n_rows - 1].oy} * kSampleGridUnit;
   std::vector<detail::BandRow>& band = work.band;
   std::vector<std::vector<Crossing>>& crossings = work.crossings;
   if (crossings.size() < static_cast<std::size_t>(band_pixels) * n_rows)
@@ -297,8 +299,19 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
         band.push_back(detail::BandRow{sy, sample_x});
       }
     }
-    for (const detail::PreparedCurve* c : curves.advance(band.front().sy, band.back().sy))
-      detail::curve_crossings_band(*c, band, t, crossings, work.curve_out);
+    // Each curve gets the band's pixel rows that may hold a sample row within its control
+    // points' y-range: rows of pixel j lie at 256 j + off_lo .. 256 j + off_hi. (Shifts right
+    // of signed values are floor divisions by 256: arithmetic since C++20.)
+    for (const detail::PreparedCurve* c : curves.advance(band.front().sy, band.back().sy)) {
+      const std::int64_t first = std::max<std::int64_t>(j0, -((off_hi - c->ymin) >> kSubpixelBits));
+      const std::int64_t last = std::min<std::int64_t>(j1 - 1, (c->ymax - off_lo) >> kSubpixelBits);
+      if (first > last)
+        continue;
+      const auto at = static_cast<std::size_t>(first - j0) * n_rows;
+      const auto count = static_cast<std::size_t>(last - first + 1) * n_rows;
+      detail::curve_crossings_band(*c, std::span{band}.subspan(at, count), t,
+                                   std::span{crossings}.subspan(at, count), work.curve_out);
+    }
     for (std::int32_t j = j0; j < j1; ++j) {
       std::int64_t touched_lo = w, touched_hi = -1;
       for (std::size_t r = 0; r < n_rows; ++r) {
@@ -323,10 +336,9 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
             // Pixels i with A < 256 i + x_offset <= B.
             std::int64_t i_lo = 0, i_hi = std::int64_t{w} - 1;
             if (m > 0)
-              i_lo =
-                  std::max(i_lo, floor_div(row[m - 1].threshold - smp.x_offset, kSubpixelOne) + 1);
+              i_lo = std::max(i_lo, ((row[m - 1].threshold - smp.x_offset) >> kSubpixelBits) + 1);
             if (m < row.size())
-              i_hi = std::min(i_hi, floor_div(row[m].threshold - smp.x_offset, kSubpixelOne));
+              i_hi = std::min(i_hi, (row[m].threshold - smp.x_offset) >> kSubpixelBits);
             if (i_lo > i_hi)
               continue;
             if (single) {

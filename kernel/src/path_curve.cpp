@@ -1447,9 +1447,9 @@ namespace {
 // The rows the monotone pieces leave (curve_crossings_band): the estimates, else the exact
 // paths of curve_crossings_into.
 // rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
-[[gnu::noinline]] void curve_crossings_left(const PreparedCurve& p, std::int64_t sy, Tie t,
-                                            std::vector<Crossing>& out,
-                                            std::vector<Crossing>& scratch) {
+[[gnu::always_inline]] inline void curve_crossings_left(const PreparedCurve& p, std::int64_t sy,
+                                                        Tie t, std::vector<Crossing>& out,
+                                                        std::vector<Crossing>& scratch) {
   Cubic g{p.y};
   g.c[0] -= sy;
   // No root at an end: the estimates (most rows of a glyph's curves), as in
@@ -1480,13 +1480,12 @@ namespace {
 void curve_crossings_band(const PreparedCurve& p, std::span<const BandRow> rows, Tie t,
                           std::span<std::vector<Crossing>> out, std::vector<Crossing>& scratch) {
   const Cubic x{p.x};
-  // The rows within the control points' y-range (the curve lies in their convex hull).
-  const auto first = std::partition_point(rows.begin(), rows.end(),
-                                          [&](const BandRow& r) { return r.sy < p.ymin; });
-  for (auto i = static_cast<std::size_t>(first - rows.begin()); i < rows.size(); ++i) {
+  for (std::size_t i = 0; i < rows.size(); ++i) {
     const std::int64_t sy = rows[i].sy;
+    if (sy < p.ymin)
+      continue; // the curve lies in the convex hull of its control points
     if (sy > p.ymax)
-      return; // the rows come in increasing y
+      return; // and the rows come in increasing y
     if (p.mono.n > 0 && monotone_crossings(p, x, sy, t, out[i], rows[i].sample_x))
       continue;
     curve_crossings_left(p, sy, t, out[i], scratch);
