@@ -506,9 +506,7 @@ SceneResult run_scene(Scene& sc, int repeats, int min_slow_repeats, Measure meas
     // The bitmap holds the list's pixels (PATH.COVER.MONO); a difference is a kernel defect.
     for (std::int32_t y = 0; y < it.height; ++y)
       for (std::int32_t x = 0; x < it.width; ++x) {
-        const std::uint8_t byte = bitmaps[i][static_cast<std::size_t>(y) * mono_pitch(it.width) +
-                                             static_cast<std::size_t>(x) / 8];
-        const bool bit = ((byte >> (7 - x % 8)) & 1) != 0;
+        const bool bit = kp::mono_bit(bitmaps[i], mono_pitch(it.width), x, y);
         if (bit != (k[static_cast<std::size_t>(y) * static_cast<std::size_t>(it.width) +
                       static_cast<std::size_t>(x)] != 0))
           throw std::logic_error("kernel: the mono bitmap differs from the pixel list at (" +

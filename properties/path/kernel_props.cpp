@@ -85,9 +85,9 @@ pc::Masks kernel_mono_masks(const pg::GPath& p, const std::string& fill, std::in
   kp::cover_samples_mono(to_kernel(p), convention(fill), side, side, bits, pitch);
   pc::Masks m;
   for (std::int32_t y = 0; y < side; ++y)
-    for (std::size_t x = 0; x < pitch * 8; ++x)
-      if (((bits[static_cast<std::size_t>(y) * pitch + x / 8] >> (7 - x % 8)) & 1) != 0)
-        m[{y, static_cast<std::int32_t>(x)}] = 1;
+    for (std::int32_t x = 0; static_cast<std::size_t>(x) < pitch * 8; ++x)
+      if (kp::mono_bit(bits, pitch, x, y))
+        m[{y, x}] = 1;
   return m;
 }
 

@@ -364,12 +364,16 @@ TEST(PathCoverSamples, RowWalkEqualsEverySampleOfEveryPattern) {
       }
 }
 
-// The bit of pixel (x, y) in a mono bitmap of PATH.COVER.MONO's layout.
-bool mono_bit(const std::vector<std::uint8_t>& bits, std::size_t pitch, std::int32_t x,
-              std::int32_t y) {
-  const std::uint8_t byte =
-      bits[static_cast<std::size_t>(y) * pitch + static_cast<std::size_t>(x) / 8];
-  return ((byte >> (7 - x % 8)) & 1) != 0;
+// mono_bit reads FreeType mono's layout: most significant bit first, rows pitch bytes apart.
+// rule: PATH.COVER.MONO
+TEST(PathCoverSamples, MonoBitReadsTheMostSignificantBitFirst) {
+  const std::vector<std::uint8_t> bits{0x80, 0x01, 0x00, 0x00, 0x40, 0x00};
+  std::vector<std::pair<std::int32_t, std::int32_t>> set;
+  for (std::int32_t y = 0; y < 2; ++y)
+    for (std::int32_t x = 0; x < 24; ++x)
+      if (path::mono_bit(bits, 3, x, y))
+        set.emplace_back(x, y);
+  EXPECT_EQ(set, (std::vector<std::pair<std::int32_t, std::int32_t>>{{0, 0}, {15, 0}, {9, 1}}));
 }
 
 // The mono bitmap holds exactly the pixels of the one-sample list, bit by bit, with runs that
@@ -399,11 +403,11 @@ TEST(PathCoverSamples, MonoBitmapHoldsTheOneSampleListsPixels) {
           path::cover_samples_mono(p, f, w, h, bits, pitch);
           for (std::int32_t y = 0; y < h; ++y) {
             for (std::int32_t x = 0; x < w; ++x)
-              EXPECT_EQ(mono_bit(bits, pitch, x, y),
+              EXPECT_EQ(path::mono_bit(bits, pitch, x, y),
                         listed[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)])
                   << "pixel (" << x << ", " << y << "), w " << w << ", pitch " << pitch;
             for (std::size_t x = static_cast<std::size_t>(w); x < pitch * 8; ++x)
-              EXPECT_EQ(mono_bit(bits, pitch, static_cast<std::int32_t>(x), y), false)
+              EXPECT_EQ(path::mono_bit(bits, pitch, static_cast<std::int32_t>(x), y), false)
                   << "padding bit " << x << " of row " << y << ", w " << w;
           }
         }

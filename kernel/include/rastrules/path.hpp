@@ -80,6 +80,16 @@ void cover_samples(const Path& path, const SamplePattern& pattern, FillConventio
 // rule: PATH.COVER.MONO
 void cover_samples_mono(const Path& path, FillConvention fill, std::int32_t w, std::int32_t h,
                         std::span<std::uint8_t> bits, std::size_t pitch);
+// Returns whether pixel (x, y) is set in a bitmap of cover_samples_mono's layout: the bit
+// 7 - x % 8 of byte y * pitch + x / 8 (the reader of that layout, for callers comparing
+// another 1-bit output with it). Preconditions: 0 <= x < 8 pitch, 0 <= y and
+// (y + 1) * pitch <= bits.size().
+// rule: PATH.COVER.MONO
+[[nodiscard]] inline bool mono_bit(std::span<const std::uint8_t> bits, std::size_t pitch,
+                                   std::int32_t x, std::int32_t y) {
+  const auto ux = static_cast<std::size_t>(x);
+  return ((bits[static_cast<std::size_t>(y) * pitch + ux / 8] >> (7 - ux % 8)) & 1u) != 0;
+}
 
 // One pixel with nonzero area: area in px^2 as a reduced rational, exact (error_bound 0) for
 // paths of lines; for curves within error_bound of the exact area.
