@@ -1000,12 +1000,12 @@ constexpr std::int64_t kCoarseCells = std::int64_t{1} << 16;
 // F = floor(v) and the sample below F at 256 q + sample_x, the computed distance
 // rel = (F - 256 q - sample_x) + (v - F) is within 2^-40 of v's distance above that sample (the
 // integer part exact, v - F within 2^-53, the sum below 2^9); rel > m and rel < 256 - m with
-// m = 2^-30 + 2 (E + R) (twice: the sum E + R rounded) put x_c strictly between the two.
+// m = 2^-30 + 2 (E + R) (twice: the sum E + R rounded; coarse_margin, once a curve) put x_c
+// strictly between the two.
 // rule: PATH.CURVE.COARSE, PATH.CURVE.FILTER
 [[gnu::always_inline]] inline bool coarse_crossing(const Cubic& g, double g_bound, const Cubic& x,
-                                                   std::int64_t lip, double x_bound,
-                                                   std::int64_t lo, std::int64_t hi, int sl, int sh,
-                                                   double u, std::int64_t sample_x,
+                                                   double m, std::int64_t lo, std::int64_t hi,
+                                                   int sl, int sh, double u, std::int64_t sample_x,
                                                    std::int64_t& threshold) {
   if (!(u > 0.0 && u < 1.0))
     return false; // NaN too
@@ -1020,9 +1020,11 @@ constexpr std::int64_t kCoarseCells = std::int64_t{1} << 16;
   const double v = x.approx(u);
   const std::int64_t f = floor_to_int(v);
   constexpr std::int64_t kPixel = kSubpixelOne; // the samples' spacing: 256 raw units
-  const std::int64_t q = floor_div(f - sample_x, kPixel);
-  const double rel = static_cast<double>(f - kPixel * q - sample_x) + (v - static_cast<double>(f));
-  const double m = 0x1p-30 + 2.0 * (x_bound + grid_point(lip * (kCoarseCells + 1)));
+  // q = floor((F - sample_x) / 256) and F - 256 q - sample_x, by shift and mask (C++20: two's
+  // complement, arithmetic shift).
+  const std::int64_t q = (f - sample_x) >> kSubpixelBits;
+  const double rel =
+      static_cast<double>((f - sample_x) & (kPixel - 1)) + (v - static_cast<double>(f));
   if (!(rel > m && rel < static_cast<double>(kPixel) - m))
     return false;
   threshold = kPixel * q + sample_x;
@@ -1092,8 +1094,8 @@ constexpr std::int64_t kCoarseCells = std::int64_t{1} << 16;
       const double gu = g.approx(start);
       const auto [d0, dd0] = g.slopes(start);
       const double u1 = start - 2.0 * gu * d0 / (2.0 * d0 * d0 - gu * dd0);
-      if (coarse_crossing(g, bound, x, p.x_lipschitz, p.x_bound, m.lo[i], m.hi[i], sl, sh, u1,
-                          sample_x, threshold)) {
+      if (coarse_crossing(g, bound, x, p.coarse_margin, m.lo[i], m.hi[i], sl, sh, u1, sample_x,
+                          threshold)) {
         out.push_back(Crossing{threshold, sh});
         last = next_row_start(u1, d0, dd0, sy);
         continue;
@@ -1432,6 +1434,8 @@ void prepare_curve(const Curve& c, PreparedCurve& p) {
   p.cut = cs.at;
   p.cuts = cs.n;
   prepare_monotone(y, cs, p.mono);
+  if (p.mono.n > 0) // only the pieces' rows use it
+    p.coarse_margin = 0x1p-30 + 2.0 * (p.x_bound + grid_point(p.x_lipschitz * (kCoarseCells + 1)));
 }
 
 // rule: PATH.CURVE.SAMPLE, PATH.SAMPLE.TIE

@@ -165,6 +165,8 @@ struct PreparedCurve {
   std::int64_t x_lipschitz = 0;
   std::int64_t y_abs_rest = 0; // |y1| + |y2| + |y3|, for g's filter bound
   double x_bound = 0.0;
+  // PATH.CURVE.COARSE's margin m = 2^-30 + 2 (E + R) around a crossing's x (coarse_crossing).
+  double coarse_margin = 0.0;
   std::array<double, 4> cut{};
   int cuts = 1;
   MonotonePieces mono;
