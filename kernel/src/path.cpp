@@ -288,27 +288,36 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
         // class (PATH.CURVE.COARSE).
         const std::int64_t sample_x =
             rows[r].count == 1 ? samples[rows[r].first].x_offset : detail::kExactThresholds;
-        std::vector<Crossing>& row = crossings[band.size()];
-        row.clear();
-        for (const DownEdge* e : active.advance(sy, sy)) {
-          const bool spans = t.y_down ? formula::path_edge_spans<true>(e->ya, e->yb, sy)
-                                      : formula::path_edge_spans<false>(e->ya, e->yb, sy);
-          if (spans)
-            row.push_back(Crossing{line_threshold(*e, sy, t), e->dir});
-        }
+        crossings[band.size()].clear();
         band.push_back(detail::BandRow{sy, sample_x});
       }
     }
-    // Each curve gets the band's pixel rows that may hold a sample row within its control
-    // points' y-range: rows of pixel j lie at 256 j + off_lo .. 256 j + off_hi. (Shifts right
-    // of signed values are floor divisions by 256: arithmetic since C++20.)
+    // The band's sample rows that may lie within [lo, hi], as the first and the count: whole
+    // pixel rows, those of pixel j lying at 256 j + off_lo .. 256 j + off_hi. (Shifts right of
+    // signed values are floor divisions by 256: arithmetic since C++20.)
+    const auto rows_within = [&](std::int64_t lo, std::int64_t hi) {
+      const std::int64_t first = std::max<std::int64_t>(j0, -((off_hi - lo) >> kSubpixelBits));
+      const std::int64_t last = std::min<std::int64_t>(j1 - 1, (hi - off_lo) >> kSubpixelBits);
+      return first > last ? std::pair<std::size_t, std::size_t>{0, 0}
+                          : std::pair{static_cast<std::size_t>(first - j0) * n_rows,
+                                      static_cast<std::size_t>(last - first + 1) * n_rows};
+    };
+    // The lines first, then the curves, into each row (the lines of the band found once).
+    for (const DownEdge* e : active.advance(band.front().sy, band.back().sy)) {
+      const auto [at, count] = rows_within(e->ya, e->yb);
+      for (std::size_t i = at; i < at + count; ++i) {
+        const std::int64_t sy = band[i].sy;
+        const bool spans = t.y_down ? formula::path_edge_spans<true>(e->ya, e->yb, sy)
+                                    : formula::path_edge_spans<false>(e->ya, e->yb, sy);
+        if (spans)
+          crossings[i].push_back(Crossing{line_threshold(*e, sy, t), e->dir});
+      }
+    }
+    // Each curve gets the rows within its control points' y-range.
     for (const detail::PreparedCurve* c : curves.advance(band.front().sy, band.back().sy)) {
-      const std::int64_t first = std::max<std::int64_t>(j0, -((off_hi - c->ymin) >> kSubpixelBits));
-      const std::int64_t last = std::min<std::int64_t>(j1 - 1, (c->ymax - off_lo) >> kSubpixelBits);
-      if (first > last)
+      const auto [at, count] = rows_within(c->ymin, c->ymax);
+      if (count == 0)
         continue;
-      const auto at = static_cast<std::size_t>(first - j0) * n_rows;
-      const auto count = static_cast<std::size_t>(last - first + 1) * n_rows;
       detail::curve_crossings_band(*c, std::span{band}.subspan(at, count), t,
                                    std::span{crossings}.subspan(at, count), work.curve_out);
     }
