@@ -202,9 +202,10 @@ struct SampleWork {
   std::vector<CurveRange> curve_ranges;
   std::vector<detail::PreparedCurve> prepared_curves;
   std::vector<const detail::PreparedCurve*> live_curves;
-  std::vector<Crossing> curve_out;
-  std::vector<detail::BandRow> band;            // the sample rows of a band of pixel rows
-  std::vector<std::vector<Crossing>> crossings; // their crossings, one vector a sample row
+  std::vector<Crossing> curve_out, curve_left;
+  std::vector<detail::BandRow> band;           // the sample rows of a band of pixel rows
+  std::vector<detail::RowCrossings> crossings; // their crossings, each in room of
+  std::vector<Crossing> room;                  // this buffer
   std::vector<std::uint32_t> masks;
   bool busy = false;
 };
@@ -265,7 +266,8 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
   // Pixel rows go in bands of up to kBandRows sample rows (whole pixel rows; at least one):
   // each curve is asked for all its rows of a band at once (detail::curve_crossings_band).
   // The band holds every crossing of its rows at once, so a boundary of many segments takes
-  // fewer rows a band: at most about 2^16 segment rows (a few MiB of crossings).
+  // fewer rows a band: at most about 2^16 segment rows (a few MiB of crossings). Each row has
+  // room for what can cross it: one crossing a live line, three a live curve.
   constexpr std::size_t kBandRows = 16, kBandSegmentRows = std::size_t{1} << 16;
   const std::size_t segments =
       std::max<std::size_t>(1, work.boundary.lines.size() + work.boundary.curves.size());
@@ -274,9 +276,8 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
   const std::int64_t off_lo = kSubpixelHalf + std::int64_t{rows[0].oy} * kSampleGridUnit,
                      off_hi = kSubpixelHalf + std::int64_t{rows[n_rows - 1].oy} * kSampleGridUnit;
   std::vector<detail::BandRow>& band = work.band;
-  std::vector<std::vector<Crossing>>& crossings = work.crossings;
-  if (crossings.size() < static_cast<std::size_t>(band_pixels) * n_rows)
-    crossings.resize(static_cast<std::size_t>(band_pixels) * n_rows);
+  std::vector<detail::RowCrossings>& crossings = work.crossings;
+  crossings.resize(static_cast<std::size_t>(band_pixels) * n_rows);
   for (std::int32_t j0 = 0; j0 < h; j0 += band_pixels) {
     const std::int32_t j1 = std::min(h, j0 + band_pixels);
     band.clear();
@@ -288,10 +289,17 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
         // class (PATH.CURVE.COARSE).
         const std::int64_t sample_x =
             rows[r].count == 1 ? samples[rows[r].first].x_offset : detail::kExactThresholds;
-        crossings[band.size()].clear();
         band.push_back(detail::BandRow{sy, sample_x});
       }
     }
+    const std::vector<const DownEdge*>& lines = active.advance(band.front().sy, band.back().sy);
+    const std::vector<const detail::PreparedCurve*>& live =
+        curves.advance(band.front().sy, band.back().sy);
+    const std::size_t room = lines.size() + 3 * live.size();
+    if (work.room.size() < room * band.size())
+      work.room.resize(room * band.size());
+    for (std::size_t i = 0; i < band.size(); ++i)
+      crossings[i] = detail::RowCrossings{work.room.data() + i * room, 0};
     // The band's sample rows that may lie within [lo, hi], as the first and the count: whole
     // pixel rows, those of pixel j lying at 256 j + off_lo .. 256 j + off_hi. (Shifts right of
     // signed values are floor divisions by 256: arithmetic since C++20.)
@@ -303,7 +311,7 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
                                       static_cast<std::size_t>(last - first + 1) * n_rows};
     };
     // The lines first, then the curves, into each row (the lines of the band found once).
-    for (const DownEdge* e : active.advance(band.front().sy, band.back().sy)) {
+    for (const DownEdge* e : lines) {
       const auto [at, count] = rows_within(e->ya, e->yb);
       for (std::size_t i = at; i < at + count; ++i) {
         const std::int64_t sy = band[i].sy;
@@ -314,17 +322,18 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
       }
     }
     // Each curve gets the rows within its control points' y-range.
-    for (const detail::PreparedCurve* c : curves.advance(band.front().sy, band.back().sy)) {
+    for (const detail::PreparedCurve* c : live) {
       const auto [at, count] = rows_within(c->ymin, c->ymax);
       if (count == 0)
         continue;
       detail::curve_crossings_band(*c, std::span{band}.subspan(at, count), t,
-                                   std::span{crossings}.subspan(at, count), work.curve_out);
+                                   std::span{crossings}.subspan(at, count), work.curve_out,
+                                   work.curve_left);
     }
     for (std::int32_t j = j0; j < j1; ++j) {
       std::int64_t touched_lo = w, touched_hi = -1;
       for (std::size_t r = 0; r < n_rows; ++r) {
-        std::vector<Crossing>& row = crossings[static_cast<std::size_t>(j - j0) * n_rows + r];
+        const detail::RowCrossings& row = crossings[static_cast<std::size_t>(j - j0) * n_rows + r];
         if (row.empty())
           continue;
         std::sort(row.begin(), row.end(),

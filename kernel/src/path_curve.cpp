@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -792,8 +793,10 @@ int root_estimates(const Cubic& g, const Cuts& cs, std::array<double, 3>& t,
 // the grid estimates. Tried before g's sign variations are counted (12-14 % of the kernel's
 // instructions on DejaVu glyphs at 24-64 px went to counting them for every quadratic row).
 // rule: PATH.CURVE.FILTER, PATH.CURVE.SAMPLE
+// Out: std::vector<Crossing> or RowCrossings (push_back).
+template <class Out>
 bool quadratic_crossings(const Cubic& g, const Cubic& x, std::int64_t x_lip, double x_bound,
-                         std::vector<Crossing>& found, int dir_sign) {
+                         Out& found, int dir_sign) {
   // |c_j| < 2^27: |D| < 2^57, exact in int64_t.
   static_assert(2 * kCoefficientBits + 3 <= 62, "the discriminant must fit int64_t");
   const std::int64_t disc = formula::curve_discriminant(g.c[0], g.c[1], g.c[2]);
@@ -1043,9 +1046,10 @@ constexpr std::int64_t kCoarseCells = std::int64_t{1} << 16;
 // rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER, PATH.CURVE.COARSE
 // x is the curve's x (p.x, copied once by the caller for all its rows). Inlined into the band
 // loop (curve_crossings_band), so that a row costs no call.
+// Out: std::vector<Crossing> or RowCrossings (size, resize to forget, push_back).
+template <class Out>
 [[gnu::always_inline]] inline bool monotone_crossings(const PreparedCurve& p, const Cubic& x,
-                                                      std::int64_t sy, Tie t,
-                                                      std::vector<Crossing>& out,
+                                                      std::int64_t sy, Tie t, Out& out,
                                                       std::int64_t sample_x) {
   const MonotonePieces& m = p.mono;
   for (int j = 0; j < m.brackets; ++j)
@@ -1437,21 +1441,16 @@ void prepare_curve(const Curve& c, PreparedCurve& p) {
 }
 
 // rule: PATH.CURVE.SAMPLE, PATH.SAMPLE.TIE
-void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
-                              std::vector<Crossing>& out, std::vector<Crossing>& scratch,
-                              std::int64_t sample_x) {
-  const BandRow row{sy, sample_x};
-  curve_crossings_band(p, std::span{&row, 1}, t, std::span{&out, 1}, scratch);
-}
-
 namespace {
 
 // The rows the monotone pieces leave (curve_crossings_band): the estimates, else the exact
 // paths of curve_crossings_into.
 // rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
+// try_quadratic: false where the caller has tried quadratic_crossings on the row already.
 [[gnu::always_inline]] inline void curve_crossings_left(const PreparedCurve& p, std::int64_t sy,
                                                         Tie t, std::vector<Crossing>& out,
-                                                        std::vector<Crossing>& scratch) {
+                                                        std::vector<Crossing>& scratch,
+                                                        bool try_quadratic = true) {
   Cubic g{p.y};
   g.c[0] -= sy;
   // No root at an end: the estimates (most rows of a glyph's curves), as in
@@ -1459,7 +1458,7 @@ namespace {
   if (g.c[0] != 0 && formula::curve_at_one(g.c) != 0) {
     // A quadratic row first, before the sign variations (estimated_crossings tries it again
     // on the rows it leaves, which are few).
-    if (g.c[3] == 0 && g.c[2] != 0 &&
+    if (try_quadratic && g.c[3] == 0 && g.c[2] != 0 &&
         quadratic_crossings(g, Cubic{p.x}, p.x_lipschitz, p.x_bound, out, 1))
       return;
     const int v = bernstein_variations(g);
@@ -1478,9 +1477,21 @@ namespace {
 
 } // namespace
 
+// rule: PATH.CURVE.SAMPLE, PATH.SAMPLE.TIE
+void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
+                              std::vector<Crossing>& out, std::vector<Crossing>& scratch,
+                              std::int64_t sample_x) {
+  if (sy < p.ymin || sy > p.ymax)
+    return; // the curve lies in the convex hull of its control points
+  if (p.mono.n > 0 && monotone_crossings(p, Cubic{p.x}, sy, t, out, sample_x))
+    return;
+  curve_crossings_left(p, sy, t, out, scratch);
+}
+
 // rule: PATH.CURVE.SAMPLE
 void curve_crossings_band(const PreparedCurve& p, std::span<const BandRow> rows, Tie t,
-                          std::span<std::vector<Crossing>> out, std::vector<Crossing>& scratch) {
+                          std::span<RowCrossings> out, std::vector<Crossing>& scratch,
+                          std::vector<Crossing>& left) {
   const Cubic x{p.x};
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const std::int64_t sy = rows[i].sy;
@@ -1490,7 +1501,21 @@ void curve_crossings_band(const PreparedCurve& p, std::span<const BandRow> rows,
       return; // and the rows come in increasing y
     if (p.mono.n > 0 && monotone_crossings(p, x, sy, t, out[i], rows[i].sample_x))
       continue;
-    curve_crossings_left(p, sy, t, out[i], scratch);
+    // A quadratic row (no root at an end) straight into the row's room, as
+    // curve_crossings_left would try it first.
+    const std::int64_t c0 = p.y[0] - sy;
+    const bool quadratic = p.y[3] == 0 && p.y[2] != 0 && c0 != 0 && c0 + p.y[1] + p.y[2] != 0;
+    if (quadratic &&
+        quadratic_crossings(Cubic{{c0, p.y[1], p.y[2], 0}}, x, p.x_lipschitz, p.x_bound, out[i], 1))
+      continue;
+    left.clear();
+    curve_crossings_left(p, sy, t, left, scratch, !quadratic);
+    // At most three (a cubic and a line meet in three points, with multiplicity): the room the
+    // walk reserved a curve.
+    if (left.size() > 3)
+      throw std::logic_error("path: more than three crossings of one curve with a row");
+    for (const Crossing& c : left)
+      out[i].push_back(c);
   }
 }
 

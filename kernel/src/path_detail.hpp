@@ -192,11 +192,27 @@ struct BandRow {
   std::int64_t sy = 0;
   std::int64_t sample_x = kExactThresholds;
 };
+// A band row's crossings in room its owner reserved: at[0 .. n), with room for every crossing
+// the row can get (one a line, three a curve: a cubic meets a line in three points at most,
+// counted with multiplicity), so that an append is a store, not a call.
+struct RowCrossings {
+  Crossing* at = nullptr;
+  std::size_t n = 0;
+  [[nodiscard]] std::size_t size() const { return n; }
+  [[nodiscard]] bool empty() const { return n == 0; }
+  [[nodiscard]] Crossing* begin() const { return at; }
+  [[nodiscard]] Crossing* end() const { return at + n; }
+  Crossing& operator[](std::size_t i) const { return at[i]; }
+  void push_back(const Crossing& c) { at[n++] = c; }
+  void resize(std::size_t k) { n = k; } // k <= n: forgets the crossings after k
+};
 // The same for several rows of increasing y at once (a band of the row walk), row i's
-// crossings appended to out[i] (out.size() >= rows.size()): what the rows of one curve share
-// is read once, and a row costs no call where the monotone pieces decide it.
+// crossings appended to out[i] (out.size() >= rows.size(), each with room for three more):
+// what the rows of one curve share is read once, and a row costs no call where the monotone
+// pieces decide it. scratch and left: memory for the rows the pieces leave.
 void curve_crossings_band(const PreparedCurve& p, std::span<const BandRow> rows, Tie t,
-                          std::span<std::vector<Crossing>> out, std::vector<Crossing>& scratch);
+                          std::span<RowCrossings> out, std::vector<Crossing>& scratch,
+                          std::vector<Crossing>& left);
 // The monotone pieces alone (PATH.CURVE.SAMPLE): false, with nothing appended, where prepare_curve
 // proved none (p.mono.n == 0) or they leave row sy to the estimates; else true with the row's
 // crossings appended to out. For the tests that check which rows they decide (rows of one

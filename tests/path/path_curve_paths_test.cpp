@@ -237,13 +237,15 @@ TEST(PathCurvePaths, MonotonePiecesGiveTheRationalPathsCrossings) {
   EXPECT_GT(left_near_extremum, 0);
 }
 
-// The row walk asks a curve for a band of rows at once (curve_crossings_band): the same
-// crossings, row by row, as one row at a time, for bands that start and end above, across and
-// below the curve's y-range, with exact thresholds and with the samples' class.
+// The row walk asks a curve for a band of rows at once (curve_crossings_band, appending to
+// room the walk reserved): the same crossings, row by row, as one row at a time, for bands that
+// start and end above, across and below the curve's y-range, with exact thresholds and with
+// the samples' class.
 // rule: PATH.CURVE.SAMPLE, PATH.CURVE.COARSE
 TEST(PathCurvePaths, ABandOfRowsGivesEachRowsCrossings) {
-  std::vector<Crossing> one, scratch;
-  std::vector<std::vector<Crossing>> band_out;
+  std::vector<Crossing> one, scratch, left;
+  std::vector<Crossing> room;
+  std::vector<path::detail::RowCrossings> band_out;
   int rows = 0, crossings = 0, n = -1;
   for (const Curve& c : monotone_test_curves()) {
     ++n;
@@ -259,15 +261,20 @@ TEST(PathCurvePaths, ABandOfRowsGivesEachRowsCrossings) {
       for (std::size_t first = 0; first < all.size(); first += 5) {
         const std::span<const path::detail::BandRow> band =
             std::span{all}.subspan(first, std::min<std::size_t>(5, all.size() - first));
-        band_out.assign(band.size(), {});
-        path::detail::curve_crossings_band(banded, band, t, band_out, scratch);
+        // Room for three crossings a row, after one already there (the band appends).
+        room.assign(4 * band.size(), Crossing{-7, 1});
+        band_out.clear();
+        for (std::size_t i = 0; i < band.size(); ++i)
+          band_out.push_back(path::detail::RowCrossings{room.data() + 4 * i, 1});
+        path::detail::curve_crossings_band(banded, band, t, band_out, scratch, left);
         for (std::size_t i = 0; i < band.size(); ++i) {
-          one.clear();
+          one.assign(1, Crossing{-7, 1});
           path::detail::curve_crossings_prepared(single, band[i].sy, t, one, scratch,
                                                  band[i].sample_x);
-          ASSERT_EQ(sorted(band_out[i]), sorted(one)) << "curve " << n << " row " << band[i].sy;
+          const std::vector<Crossing> got(band_out[i].begin(), band_out[i].end());
+          ASSERT_EQ(sorted(got), sorted(one)) << "curve " << n << " row " << band[i].sy;
           ++rows;
-          crossings += static_cast<int>(one.size());
+          crossings += static_cast<int>(one.size()) - 1;
         }
       }
     }
