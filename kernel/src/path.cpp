@@ -333,7 +333,7 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
     for (std::int32_t j = j0; j < j1; ++j) {
       std::int64_t touched_lo = w, touched_hi = -1;
       for (std::size_t r = 0; r < n_rows; ++r) {
-        const detail::RowCrossings& row = crossings[static_cast<std::size_t>(j - j0) * n_rows + r];
+        detail::RowCrossings& row = crossings[static_cast<std::size_t>(j - j0) * n_rows + r];
         if (row.empty())
           continue;
         std::sort(row.begin(), row.end(),
@@ -404,7 +404,7 @@ void walk_samples(const Path& path, const SamplePattern& pattern, FillConvention
       // Memory kept for glyph-sized paths and targets, not for the largest ever walked.
       constexpr std::size_t kKeep = std::size_t{1} << 14;
       if (work.boundary.lines.capacity() + work.boundary.curves.capacity() > kKeep ||
-          work.masks.capacity() > kKeep)
+          work.masks.capacity() > kKeep || work.room.capacity() > kKeep)
         work = SampleWork{};
       work.busy = false;
     }

@@ -1444,9 +1444,9 @@ void prepare_curve(const Curve& c, PreparedCurve& p) {
 namespace {
 
 // The rows the monotone pieces leave (curve_crossings_band): the estimates, else the exact
-// paths of curve_crossings_into.
+// paths of curve_crossings_into. try_quadratic: false where the caller has tried
+// quadratic_crossings on the row already.
 // rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
-// try_quadratic: false where the caller has tried quadratic_crossings on the row already.
 [[gnu::always_inline]] inline void curve_crossings_left(const PreparedCurve& p, std::int64_t sy,
                                                         Tie t, std::vector<Crossing>& out,
                                                         std::vector<Crossing>& scratch,
