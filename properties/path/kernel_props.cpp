@@ -421,6 +421,38 @@ RC_GTEST_PROP(PathKernel, AreaWithinTheGridBoundOfItsSamples, ()) {
     RC_FAIL(problem);
 }
 
+// The row walk takes the rows in bands of up to 16 sample rows, each line and curve asked once
+// a band for the rows within its y-range (PATH.COVER.SAMPLE; kernel/src/path.cpp): the bands
+// change no sample. On paths scaled to 32 px (curves split at t = 1/2) and moved down by 0-15
+// px, so that band boundaries fall at every offset in the path, the whole target's masks equal,
+// row by row, those of a one-row target that holds the row alone (the path moved up by whole
+// pixels, which moves no sample: TranslationByWholePixels). The properties above use 4 px
+// targets, inside one band.
+// rule: PATH.COVER.SAMPLE
+RC_GTEST_PROP(PathKernel, BandsOfRowsChangeNoSample, ()) {
+  const std::int32_t shift = *rc::gen::inRange(0, 16);
+  const pg::GPath p =
+      pg::translated(pg::scaled_and_split(*pg::path(kSide, true), 8), 0, 256 * shift);
+  show_path(p);
+  RC_PRE(pg::in_range(p));
+  RC_TAG(pg::name(p.kind));
+  const std::string fill = *rc::gen::elementOf(pg::conventions());
+  const rastrules::SamplePattern kpat = kernel_pattern(any_standard_pattern());
+  constexpr std::int32_t side = 8 * kSide + 16;
+  const pc::Masks whole = kernel_masks(p, kpat, fill, side);
+  pc::Masks by_rows;
+  for (std::int32_t y = 0; y < side; ++y)
+    for (const kp::SampleCoverage& s :
+         kp::cover_samples(to_kernel(pg::translated(p, 0, -256 * std::int64_t{y})), kpat,
+                           convention(fill), side, 1))
+      by_rows[{y, s.x}] = s.mask;
+  RC_CLASSIFY(whole.size() > 64, "more than 64 pixels covered");
+  const std::string diff = map_difference(whole, by_rows);
+  if (!diff.empty())
+    RC_FAIL(fill + ", " + std::to_string(kpat.count()) + " samples, moved down " +
+            std::to_string(shift) + " px: whole target against one row at a time: " + diff);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Curves: exact sample decisions, kernel == oracle.
 
