@@ -336,8 +336,15 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
         detail::RowCrossings& row = crossings[static_cast<std::size_t>(j - j0) * n_rows + r];
         if (row.empty())
           continue;
-        std::sort(row.begin(), row.end(),
-                  [](const Crossing& p, const Crossing& q) { return p.threshold < q.threshold; });
+        // By threshold (the order of equal thresholds changes no winding on an interval that
+        // holds a sample). Two crossings, the most common row of a glyph: one comparison.
+        if (row.size() == 2) {
+          if (row[1].threshold < row[0].threshold)
+            std::swap(row[0], row[1]);
+        } else {
+          std::sort(row.begin(), row.end(),
+                    [](const Crossing& p, const Crossing& q) { return p.threshold < q.threshold; });
+        }
         // Winding on each interval of sample x: (T[m-1], T[m]] has the sum of dir over l >= m,
         // the total less the sum over l < m.
         std::int64_t total = 0;
