@@ -964,14 +964,15 @@ void prepare_monotone(const Cubic& y, const Cuts& cs, MonotonePieces& mono) {
     mono.lo[i] = lo[i];
     mono.hi[i] = hi[i];
     mono.ylo[i] = lo[i] == 0 ? 2 * y.c[0] : row_key(y.scaled(lo[i]));
-    mono.yhi[i] = hi[i] == kOne ? 2 * y_at1 : row_key(y.scaled(hi[i]));
+    const Wide yhi = hi[i] == kOne ? Wide{0} : y.scaled(hi[i]); // inside: exact, on 2^90
+    mono.yhi[i] = hi[i] == kOne ? 2 * y_at1 : row_key(yhi);
     mono.ylo_d[i] = lo[i] == 0 ? static_cast<double>(y.c[0]) : y.approx(grid_point(lo[i]));
     mono.yhi_d[i] = hi[i] == kOne ? static_cast<double>(y_at1) : y.approx(grid_point(hi[i]));
     mono.last[i].valid = false;
     if (j < nb) { // the bracket after piece j: y within 3 cells of its start
       const Wide lip = formula::curve_lipschitz_scaled<std::int64_t, Wide>(y.c, kSelect);
       const std::array<Wide, 2> r =
-          formula::curve_bracket_range<Wide>(y.scaled(hi[i]), lip, Wide{lo[i + 1] - hi[i]});
+          formula::curve_bracket_range<Wide>(yhi, lip, Wide{lo[i + 1] - hi[i]});
       // The rows s.y with r0 <= s.y 2^90 <= r1: ceil(r0 / 2^90) .. floor(r1 / 2^90).
       mono.near_lo[i] = static_cast<std::int64_t>(-((-r[0]) >> kRowShift));
       mono.near_hi[i] = static_cast<std::int64_t>(r[1] >> kRowShift);
@@ -1443,36 +1444,50 @@ void prepare_curve(const Curve& c, PreparedCurve& p) {
 // rule: PATH.CURVE.SAMPLE, PATH.SAMPLE.TIE
 namespace {
 
-// The rows the monotone pieces leave (curve_crossings_band): the estimates, else the exact
-// paths of curve_crossings_into. try_quadratic: false where the caller has tried
-// quadratic_crossings on the row already.
+// The estimates, else the exact paths of curve_crossings_into, for a row of curve_crossings_left
+// (g = y - s.y): the crossings, in found or in scratch. Out of line: the rarer rows.
 // rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
-[[gnu::always_inline]] inline void curve_crossings_left(const PreparedCurve& p, std::int64_t sy,
-                                                        Tie t, std::vector<Crossing>& out,
-                                                        std::vector<Crossing>& scratch,
-                                                        bool try_quadratic = true) {
-  Cubic g{p.y};
-  g.c[0] -= sy;
-  // No root at an end: the estimates (most rows of a glyph's curves), as in
-  // curve_crossings_into, with what does not depend on the row computed once.
+[[gnu::noinline]] const std::vector<Crossing>&
+crossings_estimated_or_exact(const PreparedCurve& p, const Cubic& g, const Cubic& x,
+                             std::int64_t sy, Tie t, std::vector<Crossing>& found,
+                             std::vector<Crossing>& scratch) {
   if (g.c[0] != 0 && formula::curve_at_one(g.c) != 0) {
-    // A quadratic row first, before the sign variations (estimated_crossings tries it again
-    // on the rows it leaves, which are few).
-    if (try_quadratic && g.c[3] == 0 && g.c[2] != 0 &&
-        quadratic_crossings(g, Cubic{p.x}, p.x_lipschitz, p.x_bound, out, 1))
-      return;
     const int v = bernstein_variations(g);
+    found.clear();
     if (v == 0)
-      return;
+      return found;
     const double bound = row_error_bound(g, p.y_abs_rest);
-    const std::size_t mark = out.size();
-    if (estimated_crossings(g, bound, Cuts{p.cut, p.cuts}, Cubic{p.x}, p.x_lipschitz, p.x_bound, v,
-                            t, out, 1, &p.hints, sy))
-      return;
-    out.resize(mark);
+    if (estimated_crossings(g, bound, Cuts{p.cut, p.cuts}, x, p.x_lipschitz, p.x_bound, v, t, found,
+                            1, &p.hints, sy))
+      return found;
   }
   curve_crossings_into(*p.curve, sy, t, true, scratch);
-  out.insert(out.end(), scratch.begin(), scratch.end());
+  return scratch;
+}
+
+// The rows the monotone pieces leave: with no root at an end, the quadratic formula (straight
+// into out; most rows of a glyph's quadratics), else crossings_estimated_or_exact's, appended.
+// x is the curve's x (p.x). Out: std::vector<Crossing> or RowCrossings, whose room holds three
+// a curve: more is a logic error (a cubic and a line meet in three points at most, counted
+// with multiplicity).
+// rule: PATH.CURVE.SAMPLE, PATH.CURVE.FILTER
+template <class Out>
+[[gnu::always_inline]] inline void
+curve_crossings_left(const PreparedCurve& p, const Cubic& x, std::int64_t sy, Tie t, Out& out,
+                     std::vector<Crossing>& found, std::vector<Crossing>& scratch) {
+  Cubic g{p.y};
+  g.c[0] -= sy;
+  // Before the sign variations (estimated_crossings tries it again on the rows it leaves,
+  // which are few).
+  if (g.c[3] == 0 && g.c[2] != 0 && g.c[0] != 0 && formula::curve_at_one(g.c) != 0 &&
+      quadratic_crossings(g, x, p.x_lipschitz, p.x_bound, out, 1))
+    return;
+  const std::vector<Crossing>& decided =
+      crossings_estimated_or_exact(p, g, x, sy, t, found, scratch);
+  if (decided.size() > 3)
+    throw std::logic_error("path: more than three crossings of one curve with a row");
+  for (const Crossing& c : decided)
+    out.push_back(c);
 }
 
 } // namespace
@@ -1483,9 +1498,11 @@ void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
                               std::int64_t sample_x) {
   if (sy < p.ymin || sy > p.ymax)
     return; // the curve lies in the convex hull of its control points
-  if (p.mono.n > 0 && monotone_crossings(p, Cubic{p.x}, sy, t, out, sample_x))
+  const Cubic x{p.x};
+  if (p.mono.n > 0 && monotone_crossings(p, x, sy, t, out, sample_x))
     return;
-  curve_crossings_left(p, sy, t, out, scratch);
+  std::vector<Crossing> found;
+  curve_crossings_left(p, x, sy, t, out, found, scratch);
 }
 
 // rule: PATH.CURVE.SAMPLE
@@ -1501,21 +1518,7 @@ void curve_crossings_band(const PreparedCurve& p, std::span<const BandRow> rows,
       return; // and the rows come in increasing y
     if (p.mono.n > 0 && monotone_crossings(p, x, sy, t, out[i], rows[i].sample_x))
       continue;
-    // A quadratic row (no root at an end) straight into the row's room, as
-    // curve_crossings_left would try it first.
-    const std::int64_t c0 = p.y[0] - sy;
-    const bool quadratic = p.y[3] == 0 && p.y[2] != 0 && c0 != 0 && c0 + p.y[1] + p.y[2] != 0;
-    if (quadratic &&
-        quadratic_crossings(Cubic{{c0, p.y[1], p.y[2], 0}}, x, p.x_lipschitz, p.x_bound, out[i], 1))
-      continue;
-    left.clear();
-    curve_crossings_left(p, sy, t, left, scratch, !quadratic);
-    // At most three (a cubic and a line meet in three points, with multiplicity): the room the
-    // walk reserved a curve.
-    if (left.size() > 3)
-      throw std::logic_error("path: more than three crossings of one curve with a row");
-    for (const Crossing& c : left)
-      out[i].push_back(c);
+    curve_crossings_left(p, x, sy, t, out[i], left, scratch);
   }
 }
 
