@@ -299,7 +299,7 @@ void walk_samples_with(SampleWork& work, const Path& path, const SamplePattern& 
     if (work.room.size() < room * band.size())
       work.room.resize(room * band.size());
     for (std::size_t i = 0; i < band.size(); ++i)
-      crossings[i] = detail::RowCrossings{work.room.data() + i * room, 0};
+      crossings[i] = detail::RowCrossings{work.room.data() + i * room, 0, room};
     // The band's sample rows that may lie within [lo, hi], as the first and the count: whole
     // pixel rows, those of pixel j lying at 256 j + off_lo .. 256 j + off_hi. (Shifts right of
     // signed values are floor divisions by 256: arithmetic since C++20.)

@@ -1506,6 +1506,12 @@ void curve_crossings_prepared(const PreparedCurve& p, std::int64_t sy, Tie t,
 }
 
 // rule: PATH.CURVE.SAMPLE
+void RowCrossings::overflow() {
+  throw std::logic_error("path: more crossings of a sample row than its room holds (one a line, "
+                         "three a curve; PATH.CURVE.SAMPLE)");
+}
+
+// rule: PATH.CURVE.SAMPLE
 void curve_crossings_band(const PreparedCurve& p, std::span<const BandRow> rows, Tie t,
                           std::span<RowCrossings> out, std::vector<Crossing>& scratch,
                           std::vector<Crossing>& left) {

@@ -193,18 +193,25 @@ struct BandRow {
   std::int64_t sample_x = kExactThresholds;
 };
 // A band row's crossings in room its owner reserved: at[0 .. n), with room for every crossing
-// the row can get (one a line, three a curve: a cubic meets a line in three points at most,
-// counted with multiplicity), so that an append is a store, not a call.
+// the row can get (cap: one a line, three a curve: a cubic meets a line in three points at
+// most, counted with multiplicity), so that an append is a store and a comparison, not a call.
+// An append past cap would break that bound: a logic_error, never a write past the room.
 struct RowCrossings {
   Crossing* at = nullptr;
   std::size_t n = 0;
+  std::size_t cap = 0;
   [[nodiscard]] std::size_t size() const { return n; }
   [[nodiscard]] bool empty() const { return n == 0; }
   [[nodiscard]] Crossing* begin() const { return at; }
   [[nodiscard]] Crossing* end() const { return at + n; }
   Crossing& operator[](std::size_t i) const { return at[i]; }
-  void push_back(const Crossing& c) { at[n++] = c; }
+  void push_back(const Crossing& c) {
+    if (n == cap) [[unlikely]]
+      overflow();
+    at[n++] = c;
+  }
   void resize(std::size_t k) { n = k; } // k <= n: forgets the crossings after k
+  [[noreturn, gnu::cold, gnu::noinline]] static void overflow();
 };
 // The same for several rows of increasing y at once (a band of the row walk), row i's
 // crossings appended to out[i] (out.size() >= rows.size(), each with room for three more):

@@ -265,7 +265,7 @@ TEST(PathCurvePaths, ABandOfRowsGivesEachRowsCrossings) {
         room.assign(4 * band.size(), Crossing{-7, 1});
         band_out.clear();
         for (std::size_t i = 0; i < band.size(); ++i)
-          band_out.push_back(path::detail::RowCrossings{room.data() + 4 * i, 1});
+          band_out.push_back(path::detail::RowCrossings{room.data() + 4 * i, 1, 4});
         path::detail::curve_crossings_band(banded, band, t, band_out, scratch, left);
         for (std::size_t i = 0; i < band.size(); ++i) {
           one.assign(1, Crossing{-7, 1});
@@ -281,6 +281,37 @@ TEST(PathCurvePaths, ABandOfRowsGivesEachRowsCrossings) {
   }
   EXPECT_GT(rows, 4000);
   EXPECT_GT(crossings, 3000);
+}
+
+// A band row's room is a bound, not a hope: an S-shaped cubic crossing one row three times,
+// given room for two, throws logic_error and leaves the memory past its room alone (the walk
+// reserves three a curve, so this names a broken bound rather than writing past it).
+// rule: PATH.CURVE.SAMPLE
+TEST(PathCurvePaths, ABandRowPastItsRoomIsALogicErrorNotAWrite) {
+  Curve c;
+  c.degree = 3;
+  c.p = {path::Point{0, -10}, path::Point{1000, 2000}, path::Point{2000, -2000},
+         path::Point{3000, 10}};
+  path::detail::PreparedCurve p;
+  path::detail::prepare_curve(c, p);
+  const std::vector<path::detail::BandRow> band{path::detail::BandRow{0}};
+  std::vector<Crossing> scratch, left;
+  for (const std::size_t cap : {std::size_t{3}, std::size_t{2}}) {
+    std::vector<Crossing> room(4, Crossing{-7, 1});
+    std::vector<path::detail::RowCrossings> out{path::detail::RowCrossings{room.data(), 0, cap}};
+    if (cap == 3) {
+      path::detail::curve_crossings_band(p, band, Tie{}, out, scratch, left);
+      EXPECT_EQ(out[0].size(), 3u);
+    } else {
+      EXPECT_THROW(path::detail::curve_crossings_band(p, band, Tie{}, out, scratch, left),
+                   std::logic_error);
+      EXPECT_EQ(out[0].size(), 2u);
+    }
+    EXPECT_EQ(room[3].threshold, -7) << "cap " << cap;
+    if (cap == 2) {
+      EXPECT_EQ(room[2].threshold, -7);
+    }
+  }
 }
 
 // PATH.CURVE.COARSE: rows of the monotone test curves walked in order with the samples'
