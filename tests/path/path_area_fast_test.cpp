@@ -41,37 +41,6 @@ Alphas alphas(const path::Path& p, std::int32_t w, std::int32_t h) {
   return a;
 }
 
-path::Segment line_to(double x, double y) {
-  path::Segment s;
-  s.kind = path::SegmentKind::kLine;
-  s.p[0] = pt(x, y);
-  return s;
-}
-
-path::Segment quad_to(double cx, double cy, double x, double y) {
-  path::Segment s;
-  s.kind = path::SegmentKind::kQuadratic;
-  s.p[0] = pt(cx, cy);
-  s.p[1] = pt(x, y);
-  return s;
-}
-
-path::Segment cubic_to(double c1x, double c1y, double c2x, double c2y, double x, double y) {
-  path::Segment s;
-  s.kind = path::SegmentKind::kCubic;
-  s.p[0] = pt(c1x, c1y);
-  s.p[1] = pt(c2x, c2y);
-  s.p[2] = pt(x, y);
-  return s;
-}
-
-path::Contour contour(double x, double y, std::vector<path::Segment> segments) {
-  path::Contour c;
-  c.start = pt(x, y);
-  c.segments = std::move(segments);
-  return c;
-}
-
 // A square on pixel centres: its edge pixels are half covered (alpha 128: 255 / 2 + 1/2 is
 // exactly 128, a tie of the rounding), decided exactly since every number of it is exact.
 // rule: PATH.AREA.FAST, PATH.AREA.ALPHA

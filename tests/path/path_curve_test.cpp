@@ -24,16 +24,6 @@ namespace {
 using path::FillRule;
 using path::SegmentKind;
 
-path::Segment line_to(double x, double y) {
-  return {SegmentKind::kLine, {pt(x, y), {}, {}}};
-}
-path::Segment quad_to(double cx, double cy, double x, double y) {
-  return {SegmentKind::kQuadratic, {pt(cx, cy), pt(x, y), {}}};
-}
-path::Segment cubic_to(double c1x, double c1y, double c2x, double c2y, double x, double y) {
-  return {SegmentKind::kCubic, {pt(c1x, c1y), pt(c2x, c2y), pt(x, y)}};
-}
-
 // The winding number at (x, y) px of the path with every curve cut into n straight pieces, in
 // double, and the distance from (x, y) to that polyline: an independent reference wherever
 // the distance is far above the flattening error.

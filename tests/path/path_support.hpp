@@ -39,6 +39,25 @@ inline path::Contour polygon(std::initializer_list<std::pair<double, double>> pt
   return c;
 }
 
+// Segments to (x, y) px, through control points in px.
+inline path::Segment line_to(double x, double y) {
+  return {path::SegmentKind::kLine, {pt(x, y), {}, {}}};
+}
+inline path::Segment quad_to(double cx, double cy, double x, double y) {
+  return {path::SegmentKind::kQuadratic, {pt(cx, cy), pt(x, y), {}}};
+}
+inline path::Segment cubic_to(double c1x, double c1y, double c2x, double c2y, double x, double y) {
+  return {path::SegmentKind::kCubic, {pt(c1x, c1y), pt(c2x, c2y), pt(x, y)}};
+}
+
+// A contour from (x, y) px through the segments, closed by PATH.CONTOUR.CLOSE.
+inline path::Contour contour(double x, double y, std::vector<path::Segment> segments) {
+  path::Contour c;
+  c.start = pt(x, y);
+  c.segments = std::move(segments);
+  return c;
+}
+
 // A contour of straight lines through raw 16.8 points, closed by PATH.CONTOUR.CLOSE.
 inline path::Contour raw_polygon(std::initializer_list<path::Point> pts) {
   path::Contour c;
