@@ -154,6 +154,32 @@ void boundary_into(const Path& path, Boundary& b) {
   }
 }
 
+// rule: PATH.GEOMETRY
+void segments_in_order(const Boundary& b, std::vector<SegmentRef>& refs) {
+  refs.clear();
+  for (std::size_t i = 0; i < b.lines.size(); ++i)
+    refs.push_back(SegmentRef{b.lines[i].contour, b.lines[i].segment, false, i});
+  for (std::size_t i = 0; i < b.curves.size(); ++i)
+    refs.push_back(SegmentRef{b.curves[i].contour, b.curves[i].segment, true, i});
+  std::sort(refs.begin(), refs.end(), [](const SegmentRef& p, const SegmentRef& q) {
+    return p.contour != q.contour ? p.contour < q.contour : p.segment < q.segment;
+  });
+}
+
+// rule: PATH.GEOMETRY
+int control_points(const Boundary& b, const SegmentRef& r, std::array<Point, 4>& cp) {
+  if (r.curve) {
+    const Curve& c = b.curves[r.index];
+    cp = c.p;
+    return c.degree;
+  }
+  const Edge& e = b.lines[r.index];
+  cp = {};
+  cp[0] = Point{static_cast<std::int32_t>(e.x0), static_cast<std::int32_t>(e.y0)};
+  cp[1] = Point{static_cast<std::int32_t>(e.x1), static_cast<std::int32_t>(e.y1)};
+  return 1;
+}
+
 } // namespace detail
 
 // rule: PATH.WINDING, PATH.SAMPLE.TIE

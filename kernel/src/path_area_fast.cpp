@@ -318,12 +318,6 @@ struct End {
 };
 
 // A segment of the path by contour and segment (walk's order).
-struct Ref {
-  std::size_t contour, segment;
-  bool curve;
-  std::size_t index;
-};
-
 class FastAlpha {
 public:
   // Starts a path: the buffers keep their room from the last one (one workspace a thread).
@@ -382,7 +376,7 @@ private:
   std::vector<std::uint8_t> has_prev_, seen_;
   std::vector<End> ends_;
   std::vector<std::pair<std::size_t, std::size_t>> chains_;
-  std::vector<Ref> refs_;
+  std::vector<SegmentRef> refs_;
   std::vector<std::size_t> contour_first_;
   std::vector<E> cuts_;
   std::uint64_t seq_ = 0;
@@ -910,31 +904,16 @@ bool FastAlpha::walk_piece(std::uint32_t pi) {
 
 bool FastAlpha::walk(const Boundary& b) {
   // Shapes in contour order: lines and curves merged by (contour, segment).
-  std::vector<Ref>& refs = refs_;
-  for (std::size_t i = 0; i < b.lines.size(); ++i)
-    refs.push_back(Ref{b.lines[i].contour, b.lines[i].segment, false, i});
-  for (std::size_t i = 0; i < b.curves.size(); ++i)
-    refs.push_back(Ref{b.curves[i].contour, b.curves[i].segment, true, i});
-  std::sort(refs.begin(), refs.end(), [](const Ref& p, const Ref& q) {
-    return p.contour != q.contour ? p.contour < q.contour : p.segment < q.segment;
-  });
+  std::vector<SegmentRef>& refs = refs_;
+  segments_in_order(b, refs);
   shapes_.reserve(refs.size());
   // Contours: the first piece of each, to link a contour's last sub-arc to its first.
   std::vector<std::size_t>& contour_first = contour_first_;
   std::size_t current = static_cast<std::size_t>(-1);
-  for (const Ref& r : refs) {
+  for (const SegmentRef& r : refs) {
     Shape s;
-    int degree = 1;
     std::array<Point, 4> cp{};
-    if (r.curve) {
-      const Curve& c = b.curves[r.index];
-      degree = c.degree;
-      cp = c.p;
-    } else {
-      const Edge& e = b.lines[r.index];
-      cp[0] = Point{static_cast<std::int32_t>(e.x0), static_cast<std::int32_t>(e.y0)};
-      cp[1] = Point{static_cast<std::int32_t>(e.x1), static_cast<std::int32_t>(e.y1)};
-    }
+    const int degree = control_points(b, r, cp);
     s.x0 = cp[0].x;
     s.y0 = cp[0].y;
     const auto power = [&](auto get) {

@@ -57,6 +57,18 @@ struct Boundary {
 [[nodiscard]] Boundary boundary_of(const Path& path);
 // The same into b (cleared first; no allocation once b has room).
 void boundary_into(const Path& path, Boundary& b);
+// A segment of a boundary: a line (curve false) or a curve, by its contour and segment, and its
+// index in the boundary's list.
+struct SegmentRef {
+  std::size_t contour = 0, segment = 0;
+  bool curve = false;
+  std::size_t index = 0;
+};
+// The boundary's lines and curves in the order of their contours (contour, then segment), into
+// refs (cleared first).
+void segments_in_order(const Boundary& b, std::vector<SegmentRef>& refs);
+// The control points of segment r of b into cp (a line's two first); its degree (1 a line).
+int control_points(const Boundary& b, const SegmentRef& r, std::array<Point, 4>& cp);
 
 // One crossing of the displaced horizontal line through a sample row: it counts for a sample
 // at raw x iff x <= threshold (PATH.SAMPLE.TIE: x_c > x, or x_c == x and hx = -1); dir is +1
