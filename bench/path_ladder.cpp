@@ -242,15 +242,17 @@ struct SceneResult {
   SampleRow samples;
   // The curved outlines' 8-bit alpha (cover_area_alpha, PATH.AREA.FAST with the exact methods
   // behind it) against FreeType's gray raster on the same curved outlines, alternating; the rows
-  // the fast cells decided of all rows; pixels whose alpha differs from FreeType's by more than 1.
+  // the sweep decided (its whole paths) and those the fast cells decided of the rest, of all
+  // rows; pixels whose alpha differs from FreeType's by more than 1.
   double curved_alpha_seconds = 0, curved_gray_seconds = 0;
-  std::uint64_t curved_rows = 0, curved_rows_fast = 0, curved_alpha_differ = 0;
+  std::uint64_t curved_rows = 0, curved_rows_swept = 0, curved_rows_fast = 0,
+                curved_alpha_differ = 0;
 };
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(SceneResult, name, note, items, pixels, segments, touched,
                                    conflation, rows_by_cells, rows_by_slabs, rows, curved_exact,
                                    oracle_mismatch, samples, curved_alpha_seconds,
-                                   curved_gray_seconds, curved_rows, curved_rows_fast,
-                                   curved_alpha_differ)
+                                   curved_gray_seconds, curved_rows, curved_rows_swept,
+                                   curved_rows_fast, curved_alpha_differ)
 
 // Calls f(a, b) for every segment of the lines-only path, closing lines included (raw).
 template <class F> void each_segment(const kp::Path& lines, F&& f) {
@@ -325,8 +327,9 @@ void run_curved_alpha(Scene& sc, int repeats, SceneResult& res) {
   for (std::size_t i = 0; i < sc.s.items.size(); ++i) {
     const bp::PathItem& it = sc.s.items[i];
     kd::AreaRows by;
-    kd::cover_alpha_by(it.curved, it.width, it.height, kd::AreaMethod::kFast, alpha[i], &by);
+    kd::cover_alpha_by(it.curved, it.width, it.height, kd::AreaMethod::kSweep, alpha[i], &by);
     res.curved_rows += static_cast<std::uint64_t>(it.height);
+    res.curved_rows_swept += by.swept;
     res.curved_rows_fast += by.fast;
     const std::uint8_t* g = sc.ft_curved[i].raster_gray();
     for (std::size_t k = 0; k < alpha[i].size(); ++k)
@@ -622,11 +625,13 @@ std::string markdown(const std::vector<SceneResult>& results, const std::string&
   if (curved) {
     o << "\n## Curved outlines: exact alpha against FreeType's gray raster (same curved "
          "outlines)\n\n";
-    o << "The kernel's cover_area_alpha (certified floating-point cells, PATH.AREA.FAST, the exact "
-         "methods behind them) and FreeType gray on the same curved outlines, alternating. Rows: "
-         "those the fast cells decided, of all rows. Differ: pixels more than one level apart "
-         "(FreeType flattens curves and accumulates signed areas).\n\n";
-    o << "| scene | exact alpha | FreeType gray | alpha / gray | rows fast | differ > 1 |\n"
+    o << "The kernel's cover_area_alpha (the certified sweep, PATH.AREA.SWEEP; where it declines "
+         "a glyph, certified floating-point cells, PATH.AREA.FAST, the exact methods behind them) "
+         "and FreeType gray on the same curved outlines, alternating. Rows: those the sweep "
+         "decided, and those the fast cells decided of the rest, of all rows. Differ: pixels more "
+         "than one level apart (FreeType flattens curves and accumulates signed areas).\n\n";
+    o << "| scene | exact alpha | FreeType gray | alpha / gray | rows swept, fast | differ > 1 "
+         "|\n"
          "|---|---|---|---|---|---|\n";
     for (const SceneResult& r : results) {
       if (r.curved_rows == 0)
@@ -634,8 +639,8 @@ std::string markdown(const std::vector<SceneResult>& results, const std::string&
       o << "| " << r.name << " | " << seconds_text(r.curved_alpha_seconds) << " | "
         << seconds_text(r.curved_gray_seconds) << " | "
         << fmt(r.curved_gray_seconds > 0 ? r.curved_alpha_seconds / r.curved_gray_seconds : 0)
-        << " | " << r.curved_rows_fast << " / " << r.curved_rows << " | " << r.curved_alpha_differ
-        << " |\n";
+        << " | " << r.curved_rows_swept << ", " << r.curved_rows_fast << " / " << r.curved_rows
+        << " | " << r.curved_alpha_differ << " |\n";
     }
   }
   if (!areas)

@@ -776,7 +776,8 @@ void cover_area_by(const Path& path, std::int32_t w, std::int32_t h, AreaMethod 
   check_side(w, h);
   area_rows(
       detail::boundary_of(path), path.contours.size(), path.fill_rule, w, h,
-      method == AreaMethod::kFast ? AreaMethod::kCells : method, rows, nullptr,
+      method == AreaMethod::kFast || method == AreaMethod::kSweep ? AreaMethod::kCells : method,
+      rows, nullptr,
       [&](std::int32_t j, const CellRows& cells) {
         std::size_t k = 0;
         for (const CellArea& a : cells.results())
@@ -799,6 +800,14 @@ void cover_alpha_by(const Path& path, std::int32_t w, std::int32_t h, AreaMethod
   boundary_into(path, b);
   thread_local std::vector<std::uint8_t> undecided;
   undecided.clear();
+  if (method == AreaMethod::kSweep) {
+    if (alpha_sweep(b, path.fill_rule, w, h, out)) {
+      if (rows != nullptr)
+        rows->swept += static_cast<std::size_t>(h);
+      return;
+    }
+    method = AreaMethod::kFast; // declined: the certified cells, then the exact methods
+  }
   if (method == AreaMethod::kFast) {
     alpha_fast(b, path.fill_rule, w, h, out, undecided);
     if (rows != nullptr)
@@ -844,7 +853,7 @@ void cover_area_alpha(const Path& path, std::int32_t w, std::int32_t h,
                        [](const Segment& g) { return g.kind != SegmentKind::kLine; });
   });
   detail::cover_alpha_by(
-      path, w, h, curves ? detail::AreaMethod::kFast : detail::AreaMethod::kCells, alpha, nullptr);
+      path, w, h, curves ? detail::AreaMethod::kSweep : detail::AreaMethod::kCells, alpha, nullptr);
 }
 
 // rule: PATH.AREA.EXACT, PATH.AREA.CURVE, PATH.WINDING

@@ -90,8 +90,8 @@ void check_methods_agree(const pg::GPath& g, std::int32_t side) {
             kd::alpha_of(c.area);
       },
       nullptr);
-  for (const kd::AreaMethod m :
-       {kd::AreaMethod::kCells, kd::AreaMethod::kSlabs, kd::AreaMethod::kFast}) {
+  for (const kd::AreaMethod m : {kd::AreaMethod::kCells, kd::AreaMethod::kSlabs,
+                                 kd::AreaMethod::kFast, kd::AreaMethod::kSweep}) {
     std::vector<std::uint8_t> alpha(expected.size(), 7);
     kd::AreaRows rows;
     kd::cover_alpha_by(p, side, side, m, alpha, &rows);
@@ -100,6 +100,8 @@ void check_methods_agree(const pg::GPath& g, std::int32_t side) {
       RC_CLASSIFY(rows.fast > 0 && rows.fast < static_cast<std::size_t>(side), "fast: some rows");
       RC_CLASSIFY(rows.fast == 0, "fast: no row");
     }
+    if (m == kd::AreaMethod::kSweep) // PATH.AREA.SWEEP: the whole path, or declined
+      RC_CLASSIFY(rows.swept > 0, "sweep: decided");
     for (std::size_t k = 0; k < alpha.size(); ++k)
       if (alpha[k] != expected[k])
         RC_FAIL("alpha by method " + std::to_string(static_cast<int>(m)) + " at pixel (" +
@@ -122,14 +124,14 @@ pg::GContour off_grid_polygon(std::int32_t side, int lo, int hi) {
   return pg::polygon(v);
 }
 
-// rule: PATH.AREA.CELLS, PATH.AREA.EXACT, PATH.AREA.ALPHA
+// rule: PATH.AREA.CELLS, PATH.AREA.EXACT, PATH.AREA.ALPHA, PATH.AREA.SWEEP
 RC_GTEST_PROP(PathAreaCells, EqualSlabsOnTheGeneratorsPaths, ()) {
   const pg::GPath g = *pg::path(pc::kSide, false);
   RC_TAG(pg::name(g.kind), pg::fill_rule(g));
   check_methods_agree(g, pc::kSide);
 }
 
-// rule: PATH.AREA.CELLS, PATH.AREA.EXACT, PATH.AREA.ALPHA
+// rule: PATH.AREA.CELLS, PATH.AREA.EXACT, PATH.AREA.ALPHA, PATH.AREA.SWEEP
 RC_GTEST_PROP(PathAreaCells, EqualSlabsOffTheGridLines, ()) {
   constexpr std::int32_t kBig = 12;
   pg::GPath g;
@@ -141,7 +143,7 @@ RC_GTEST_PROP(PathAreaCells, EqualSlabsOffTheGridLines, ()) {
 }
 
 // Many small contours in a few pixels: crossings and several windings in most cells.
-// rule: PATH.AREA.CELLS, PATH.AREA.EXACT, PATH.AREA.ALPHA
+// rule: PATH.AREA.CELLS, PATH.AREA.EXACT, PATH.AREA.ALPHA, PATH.AREA.SWEEP
 RC_GTEST_PROP(PathAreaCells, EqualSlabsWhereManyContoursCross, ()) {
   pg::GPath g;
   g.evenodd = *rc::gen::arbitrary<bool>();
@@ -153,7 +155,7 @@ RC_GTEST_PROP(PathAreaCells, EqualSlabsWhereManyContoursCross, ()) {
 
 // Rings like a glyph's: a polygon and a smaller one inside it, reversed or not, sampled from
 // circles (many short edges per cell).
-// rule: PATH.AREA.CELLS, PATH.AREA.EXACT, PATH.AREA.ALPHA
+// rule: PATH.AREA.CELLS, PATH.AREA.EXACT, PATH.AREA.ALPHA, PATH.AREA.SWEEP
 RC_GTEST_PROP(PathAreaCells, EqualSlabsOnRings, ()) {
   constexpr std::int32_t kBig = 10;
   pg::GPath g;

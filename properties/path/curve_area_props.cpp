@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -260,6 +261,20 @@ pg::GPath curve_path() {
   return p;
 }
 
+// The alphas of every pixel's [A - E, A + E] by cover_area (PATH.AREA.CURVE), row by row over
+// a side x side target: the range any certified method's alpha must lie in.
+std::pair<std::vector<std::uint8_t>, std::vector<std::uint8_t>> alpha_interval(const kp::Path& k,
+                                                                               std::int32_t side) {
+  const auto stride = static_cast<std::size_t>(side);
+  std::vector<std::uint8_t> lo(stride * stride, 0), hi(stride * stride, 0);
+  for (const kp::AreaCoverage& a : kp::cover_area(k, side, side)) {
+    const std::size_t at = static_cast<std::size_t>(a.y) * stride + static_cast<std::size_t>(a.x);
+    lo[at] = rastrules::path::detail::alpha_of(std::clamp<Rational>(a.area - a.error_bound, 0, 1));
+    hi[at] = rastrules::path::detail::alpha_of(std::clamp<Rational>(a.area + a.error_bound, 0, 1));
+  }
+  return {lo, hi};
+}
+
 // The certified floating-point cells (PATH.AREA.FAST) give every pixel the alpha of its area:
 // where cover_area's interval [A - E, A + E] decides floor(255 a + 1/2) they agree with it, and
 // elsewhere they give one of its two ends' alphas. Each case says how many rows they decided.
@@ -270,12 +285,7 @@ RC_GTEST_PROP(PathCurveArea, FastCellsGiveTheAlphaOfTheArea, ()) {
   const kp::Path k = to_kernel(p);
   namespace kd = rastrules::path::detail;
   const auto stride = static_cast<std::size_t>(kSide);
-  std::vector<std::uint8_t> lo(stride * stride, 0), hi(stride * stride, 0);
-  for (const kp::AreaCoverage& a : kp::cover_area(k, kSide, kSide)) {
-    const std::size_t at = static_cast<std::size_t>(a.y) * stride + static_cast<std::size_t>(a.x);
-    lo[at] = kd::alpha_of(std::clamp<Rational>(a.area - a.error_bound, 0, 1));
-    hi[at] = kd::alpha_of(std::clamp<Rational>(a.area + a.error_bound, 0, 1));
-  }
+  const auto [lo, hi] = alpha_interval(k, kSide);
   std::vector<std::uint8_t> alpha(stride * stride, 7);
   kd::AreaRows rows;
   kd::cover_alpha_by(k, kSide, kSide, kd::AreaMethod::kFast, alpha, &rows);
@@ -287,6 +297,105 @@ RC_GTEST_PROP(PathCurveArea, FastCellsGiveTheAlphaOfTheArea, ()) {
       RC_FAIL("pixel (" + std::to_string(at % stride) + ", " + std::to_string(at / stride) +
               "): fast alpha " + std::to_string(alpha[at]) + ", the area's " +
               std::to_string(lo[at]) + " to " + std::to_string(hi[at]));
+}
+
+// The certified sweep (PATH.AREA.SWEEP), where it decides the path, gives every pixel the
+// alpha of its area as the fast cells do: within the alphas of cover_area's [A - E, A + E].
+// Each case says whether it decided; where it declines, cover_area_alpha's answer (the sweep
+// first) must still be the exact methods'.
+// rule: PATH.AREA.SWEEP, PATH.AREA.ALPHA, PATH.AREA.CURVE
+RC_GTEST_PROP(PathCurveArea, SweepGivesTheAlphaOfTheArea, ()) {
+  const pg::GPath p = curve_path();
+  pc::show_path(p);
+  const kp::Path k = to_kernel(p);
+  namespace kd = rastrules::path::detail;
+  const auto stride = static_cast<std::size_t>(kSide);
+  const auto [lo, hi] = alpha_interval(k, kSide);
+  std::vector<std::uint8_t> swept(stride * stride, 7), alpha(stride * stride, 7);
+  const bool decided = kd::alpha_sweep(kd::boundary_of(k), k.fill_rule, kSide, kSide, swept);
+  RC_CLASSIFY(decided, "sweep: decided");
+  RC_CLASSIFY(!decided, "sweep: declined");
+  kp::cover_area_alpha(k, kSide, kSide, alpha);
+  for (std::size_t at = 0; at < alpha.size(); ++at) {
+    const auto where = "pixel (" + std::to_string(at % stride) + ", " +
+                       std::to_string(at / stride) + "): the area's " + std::to_string(lo[at]) +
+                       " to " + std::to_string(hi[at]);
+    if (decided && (swept[at] < lo[at] || swept[at] > hi[at]))
+      RC_FAIL(where + ", swept " + std::to_string(swept[at]));
+    if (alpha[at] < lo[at] || alpha[at] > hi[at])
+      RC_FAIL(where + ", cover_area_alpha " + std::to_string(alpha[at]));
+  }
+}
+
+// A glyph-like contour around (cx, cy) raw: a star-shaped polygon of 3 to 6 vertices at
+// radii up to r, each edge a line or a quadratic or cubic whose controls lie on the chord at
+// its thirds (the half for a quadratic), moved along its normal by up to a third of its length
+// either way; either way round.
+pg::GContour gentle_contour(double cx, double cy, double r) {
+  const int n = *rc::gen::inRange(3, 7);
+  std::vector<double> angles;
+  for (int i = 0; i < n; ++i)
+    angles.push_back(*rc::gen::inRange(0, 6283) / 1000.0);
+  std::sort(angles.begin(), angles.end());
+  std::vector<std::array<double, 2>> v;
+  for (const double a : angles) {
+    const double ri = r * *rc::gen::inRange(55, 101) / 100.0;
+    v.push_back({cx + ri * std::cos(a), cy + ri * std::sin(a)});
+  }
+  if (*rc::gen::arbitrary<bool>())
+    std::reverse(v.begin(), v.end());
+  const auto raw = [](double x, double y) {
+    return Raw2{static_cast<std::int64_t>(std::llround(x)),
+                static_cast<std::int64_t>(std::llround(y))};
+  };
+  pg::GContour c{raw(v[0][0], v[0][1]), {}};
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const auto& a = v[i];
+    const auto& b = v[(i + 1) % v.size()];
+    const double dx = b[0] - a[0], dy = b[1] - a[1];
+    const int degree = *rc::gen::inRange(1, 4);
+    pg::GPiece q{degree, {}};
+    for (int k = 1; k < degree; ++k) {
+      const double f = static_cast<double>(k) / degree;
+      const double bulge = *rc::gen::inRange(-33, 34) / 100.0;
+      q.pts.push_back(raw(a[0] + f * dx - bulge * dy, a[1] + f * dy + bulge * dx));
+    }
+    q.pts.push_back(raw(b[0], b[1]));
+    c.pieces.push_back(q);
+  }
+  return c;
+}
+
+// The sweep on glyph-like paths, which it mostly decides (the generators' paths above cross
+// themselves and each other on purpose, so it declines most of them): one contour, or two
+// (the second inside the first, either way round: a hole or a nested contour), in a 6 px
+// target; where it decides, every pixel within the alphas of cover_area's [A - E, A + E].
+// rule: PATH.AREA.SWEEP, PATH.AREA.ALPHA, PATH.AREA.CURVE
+RC_GTEST_PROP(PathCurveArea, SweepGivesTheAlphaOfGlyphLikePaths, ()) {
+  constexpr std::int32_t kTarget = 6;
+  const double mid = kTarget * 128.0;
+  pg::GPath p{pg::PathKind::kCurves, *rc::gen::arbitrary<bool>(), {}};
+  const double r = *rc::gen::inRange(kTarget * 40, kTarget * 128);
+  p.contours.push_back(gentle_contour(mid, mid, r));
+  if (*rc::gen::arbitrary<bool>())
+    p.contours.push_back(gentle_contour(mid, mid, r * 0.4));
+  pc::show_path(p);
+  const kp::Path k = to_kernel(p);
+  namespace kd = rastrules::path::detail;
+  const auto stride = static_cast<std::size_t>(kTarget);
+  const auto [lo, hi] = alpha_interval(k, kTarget);
+  std::vector<std::uint8_t> swept(stride * stride, 7);
+  const bool decided = kd::alpha_sweep(kd::boundary_of(k), k.fill_rule, kTarget, kTarget, swept);
+  RC_CLASSIFY(decided, "sweep: decided");
+  RC_CLASSIFY(!decided, "sweep: declined");
+  RC_CLASSIFY(p.contours.size() == 2, "two contours");
+  if (!decided)
+    return;
+  for (std::size_t at = 0; at < swept.size(); ++at)
+    if (swept[at] < lo[at] || swept[at] > hi[at])
+      RC_FAIL("pixel (" + std::to_string(at % stride) + ", " + std::to_string(at / stride) +
+              "): swept " + std::to_string(swept[at]) + ", the area's " + std::to_string(lo[at]) +
+              " to " + std::to_string(hi[at]));
 }
 
 // rule: PATH.AREA.CURVE

@@ -1,0 +1,899 @@
+// SPDX-License-Identifier: MIT
+// 2D paths: the 8-bit alpha of area coverage by one certified sweep (spec/rules/path.md,
+// PATH.AREA.SWEEP). The accumulation of FreeType's gray raster and font-rs, on the path's own
+// lines and curves (no flattening): every monotone piece is walked cell by cell, its signed
+// area and cover added to dense cells, and a row swept left to right. Every number's error has
+// a bound fixed in advance per piece (not carried through each operation), a cell's chains are
+// checked with a few bits, and the alpha of a cell is written only where that bound and those
+// bits decide it; anything else (a doubtful crossing order, a cell that may hold three winding
+// numbers, a rounding the bound cannot decide, a path too large for dense cells) declines the
+// whole path, which then goes to PATH.AREA.FAST and the exact methods. So the alphas never
+// depend on this rule; only the time does.
+// Implements: PATH.AREA.SWEEP
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "path_detail.hpp"
+
+namespace rastrules::path::detail {
+namespace {
+
+constexpr std::int64_t kW = kSubpixelOne; // a pixel's side, raw
+constexpr double kWd = static_cast<double>(kW);
+constexpr double kU = 0x1p-53; // the unit roundoff of double
+// Coordinates and targets the sweep takes: |raw| <= 2^23 (power coefficients below 2^27, their
+// products below 2^58), cells (w + 1) h <= 2^18 (dense arrays of a few MiB at most).
+constexpr std::int64_t kMaxRaw = std::int64_t{1} << 23;
+constexpr std::size_t kMaxCells = std::size_t{1} << 18;
+// Covers are fixed point, 2^-kFix raw, so that a row's running sum is exact and a crossing
+// point shared by two cells cancels exactly right of them.
+constexpr int kFix = 20;
+constexpr double kFixScale = 0x1p20;
+// A split point (where x' or y' vanishes inside a curve) must lie this far (raw) from every
+// grid line: far above the error of its parameter's effect (the piece may overshoot the
+// extremum by |x''| tau^2 / 2 < 2^30 2^-100) and of its evaluation (< 2^-20 raw).
+constexpr double kSplitMargin = 0x1p-10;
+
+// floor(x) for |x| < 2^62 (coordinates, cells' integrals over 2^16, 510 times an alpha): the
+// same double as std::floor, which the baseline instruction set (no SSE4.1) makes a call.
+[[gnu::always_inline]] inline double floor_of(double x) {
+  const auto t = static_cast<double>(static_cast<std::int64_t>(x));
+  return t > x ? t - 1 : t;
+}
+
+[[gnu::always_inline]] inline std::int64_t floor_div(std::int64_t a, std::int64_t b) {
+  std::int64_t q = a / b;
+  if ((a % b != 0) && ((a < 0) != (b < 0)))
+    --q;
+  return q;
+}
+
+// A line or curve in power form relative to its start (x0, y0): x(t) = x0 + sum ax[k] t^k,
+// coefficients exact integers (raw) held as doubles; Q(t) = integral from 0 to t of
+// (x(s) - x0) y'(s) ds, its coefficients rounded, with a bound qerr on |Q computed - Q| over
+// [0, 1] (coefficient roundings and Horner's rule); xerr, yerr the same for x(t) - x0 and
+// y(t) - y0; dx_max, dy_max bounds of |x'|, |y'| on [0, 1].
+struct Shape {
+  int n = 1;
+  double x0 = 0, y0 = 0;
+  std::array<double, 4> ax{}, ay{};
+  std::array<double, 7> q{};
+  double qerr = 0, xerr = 0, yerr = 0, dx_max = 0, dy_max = 0;
+
+  [[nodiscard]] double x_at(double t) const { return ((ax[3] * t + ax[2]) * t + ax[1]) * t; }
+  [[nodiscard]] double y_at(double t) const { return ((ay[3] * t + ay[2]) * t + ay[1]) * t; }
+  [[nodiscard]] double dx_at(double t) const { return (3 * ax[3] * t + 2 * ax[2]) * t + ax[1]; }
+  [[nodiscard]] double dy_at(double t) const { return (3 * ay[3] * t + 2 * ay[2]) * t + ay[1]; }
+  [[nodiscard]] double q_at(double t) const {
+    return ((((q[6] * t + q[5]) * t + q[4]) * t + q[3]) * t + q[2]) * t * t;
+  }
+};
+
+// A point of the boundary: raw coordinates, the cover coordinate in fixed point, and the
+// bound on its distance from the true point along the grid line it lies on (0: exact).
+struct Pt {
+  double x = 0, y = 0;
+  std::int64_t yfix = 0;
+  double err = 0;
+};
+
+// A box (raw), the end points of a piece's visit to a cell widened by their bounds: a monotone
+// piece's part between two of its points lies in their box.
+struct Box {
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  void add(const Box& b) {
+    x0 = std::min(x0, b.x0);
+    x1 = std::max(x1, b.x1);
+    y0 = std::min(y0, b.y0);
+    y1 = std::max(y1, b.y1);
+  }
+};
+[[gnu::always_inline]] inline Box box_of(const Pt& a, const Pt& b) {
+  const double e = std::max(a.err, b.err);
+  return Box{std::min(a.x, b.x) - e, std::max(a.x, b.x) + e, std::min(a.y, b.y) - e,
+             std::max(a.y, b.y) + e};
+}
+
+// A cell: the integral of (x - left) dy of its visits (raw^2), their cover (fixed point), the
+// sum of their bounds; the first piece of the first run of consecutive pieces and the last
+// piece seen, the directions of all its visits (bit 0: x grows, 1: x falls, 2: y grows, 3: y
+// falls; bit 4: the visit starts at its piece's start, 5: ends at its end, for the first
+// visit), how many visits (up to 255), the first visit's box, and the visits' list in seen_
+// once there are two (first and last index + 1). How many runs it holds (0 to 3: more) is kept
+// apart (runs_), so that only that byte is cleared a path.
+struct Cell {
+  double area = 0, err = 0;
+  std::int64_t cover = 0;
+  std::uint32_t head = 0, tail = 0;
+  std::uint8_t dirs = 0, flags0 = 0, count = 0;
+  std::uint32_t first = 0, last = 0;
+  Box box0;
+};
+
+// A visit in a cell's list: its piece, directions and flags (as Cell's bits 0-5), box, and the
+// next (index + 1 in Sweep::seen_, 0 for none).
+struct Seen {
+  std::uint32_t id = 0;
+  std::uint8_t flags = 0;
+  Box box;
+  std::uint32_t next = 0;
+};
+
+// Flags passed with a visit's directions: it starts at its piece's start, it ends at its end.
+constexpr int kStarts = 16, kEnds = 32;
+
+struct PieceRef {
+  std::uint32_t shape = 0;
+  double t0 = 0, t1 = 1;
+  Pt a, b;
+  int sx = 0, sy = 0;
+};
+
+class Sweep {
+public:
+  bool run(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,
+           std::span<std::uint8_t> out);
+
+private:
+  bool build(const Boundary& b);
+  bool add_curve_pieces(std::uint32_t si, std::uint32_t& id);
+  void walk_flat(const Pt& a, const Pt& b, std::uint32_t id, int dirs);
+  bool walk_line(const Shape& s, std::uint32_t id, const Pt& a, const Pt& b, int sx, int sy);
+  bool walk_curve(const PieceRef& p, std::uint32_t id);
+  // The root of x(t) = target (in_x) or y(t) = target on [lo, hi], where the coordinate runs
+  // with sign sgn and crosses target strictly inside; a certified bracket [blo, bhi] and t.
+  // f_lo, f_hi: the coordinate less target near lo and at hi (a start for the steps).
+  bool root(const Shape& s, bool in_x, int sgn, double target, double lo, double hi, double f_lo,
+            double f_hi, double& t, double& blo, double& bhi) const;
+  void visit(std::int64_t row, std::int64_t col, std::uint32_t id, int dirs, double area,
+             std::int64_t cover, double err, const Box& box);
+  void touch(std::int64_t row, std::int64_t col, std::uint32_t id, int dirs, const Box& box);
+  bool record(std::int64_t row, std::int64_t col, std::uint32_t id, int dirs, bool first, bool last,
+              double area, double err, const Pt& a, const Pt& n, bool on_col);
+  bool two_windings(const Cell& c, std::uint8_t runs) const;
+  bool sweep(std::span<std::uint8_t> out) const;
+
+  FillRule rule_ = FillRule::kNonZero;
+  std::int32_t w_ = 0, h_ = 0;
+  std::size_t stride_ = 0;
+  std::vector<SegmentRef> refs_;
+  std::vector<Shape> shapes_;
+  std::vector<PieceRef> pieces_;
+  std::vector<std::uint32_t> piece_id_;
+  // Per contour: the ids of its first and last pieces (ids run on within a contour and skip
+  // one between contours, so that consecutive ids mean consecutive pieces of one contour).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> contours_;
+  std::vector<std::uint32_t> contour_of_;
+  std::vector<Cell> cells_;
+  std::vector<Seen> seen_;
+  std::vector<std::uint8_t> runs_;
+  std::vector<std::int64_t> left_cover_; // a row's cover left of the target
+  std::vector<double> left_err_;
+};
+
+// rule: PATH.AREA.SWEEP
+// A walk's visit from a to n (the piece's first, its last), and on a column line its touch of
+// the cell left of it; true where it was the piece's last.
+bool Sweep::record(std::int64_t row, std::int64_t col, std::uint32_t id, int dirs, bool first,
+                   bool last, double area, double err, const Pt& a, const Pt& n, bool on_col) {
+  const Box box = box_of(a, n);
+  const int flags = dirs | (first ? kStarts : 0) | (last ? kEnds : 0);
+  visit(row, col, id, flags, area, n.yfix - a.yfix, err, box);
+  if (on_col)
+    touch(row, col - 1, id, flags, box);
+  return last;
+}
+
+void Sweep::touch(std::int64_t row, std::int64_t col, std::uint32_t id, int dirs, const Box& box) {
+  visit(row, col, id, dirs, 0, 0, 0, box);
+}
+
+// rule: PATH.AREA.SWEEP
+void Sweep::visit(std::int64_t row, std::int64_t col, std::uint32_t id, int dirs, double area,
+                  std::int64_t cover, double err, const Box& box) {
+  if (row < 0 || row >= h_ || col >= w_)
+    return; // right of the target: no cell left of it depends on it
+  const auto r = static_cast<std::size_t>(row);
+  if (col < 0) {
+    left_cover_[r] += cover; // left of the target: its cover alone
+    left_err_[r] += err;
+    return;
+  }
+  const std::size_t i = r * stride_ + static_cast<std::size_t>(col);
+  Cell& c = cells_[i];
+  std::uint8_t& runs = runs_[i];
+  if (runs == 0) {
+    c = Cell{area,
+             err,
+             cover,
+             id,
+             id,
+             static_cast<std::uint8_t>(dirs & 15),
+             static_cast<std::uint8_t>(dirs),
+             1,
+             0,
+             0,
+             box};
+    runs = 1;
+    return;
+  }
+  c.area += area;
+  c.cover += cover;
+  c.err += err;
+  c.dirs = static_cast<std::uint8_t>(c.dirs | (dirs & 15));
+  // The list of visits, for cells where more than the directions must be looked at.
+  if (c.count == 1) {
+    seen_.push_back(Seen{c.head, c.flags0, c.box0, 0});
+    c.first = c.last = static_cast<std::uint32_t>(seen_.size());
+  }
+  if (c.count < 255) {
+    seen_.push_back(Seen{id, static_cast<std::uint8_t>(dirs), box, 0});
+    seen_[c.last - 1].next = static_cast<std::uint32_t>(seen_.size());
+    c.last = static_cast<std::uint32_t>(seen_.size());
+    ++c.count;
+  }
+  if (id != c.tail + 1)
+    runs = static_cast<std::uint8_t>(std::min(runs + 1, 3));
+  c.tail = id;
+}
+
+int dirs_of(int sx, int sy) {
+  return (sx > 0 ? 1 : 0) | (sx < 0 ? 2 : 0) | (sy > 0 ? 4 : 0) | (sy < 0 ? 8 : 0);
+}
+
+// y in fixed point, truncated (any rounding will do: the same point gives the same value, and
+// its error, below 2^-kFix raw, is in the point's bound).
+std::int64_t fix_of(double y) {
+  return static_cast<std::int64_t>(y * kFixScale);
+}
+
+// The cell of coordinate v moving with sign s: on a grid line, the cell it moves into.
+std::int64_t cell_of(double v, int s) {
+  const double f = floor_of(v * (1 / kWd));
+  if (f * kWd == v && s < 0)
+    return static_cast<std::int64_t>(f) - 1;
+  return static_cast<std::int64_t>(f);
+}
+
+// rule: PATH.AREA.SWEEP
+// A piece along which y is constant: no area and no cover, but its cells hold it for their
+// chains (on a row line, the cells on both sides).
+void Sweep::walk_flat(const Pt& a, const Pt& b, std::uint32_t id, int dirs) {
+  const double e = std::max(a.err, b.err);
+  const double xl = std::min(a.x, b.x), xr = std::max(a.x, b.x);
+  const auto row = static_cast<std::int64_t>(floor_of(a.y * (1 / kWd)));
+  const bool on_line = e == 0 && a.y == static_cast<double>(row * kW);
+  const std::int64_t c0 = cell_of(xl, 1), c1 = cell_of(xr, -1);
+  // The cells of a's and b's ends (c0 holds the left one).
+  const bool a_left = a.x <= b.x;
+  for (std::int64_t c = std::max<std::int64_t>(c0, 0); c <= std::min<std::int64_t>(c1, w_ - 1);
+       ++c) {
+    const auto left = static_cast<double>(c * kW);
+    const Box box{std::max(xl, left) - e, std::min(xr, left + kWd) + e, a.y - e, a.y + e};
+    const int flags =
+        dirs | (c == (a_left ? c0 : c1) ? kStarts : 0) | (c == (a_left ? c1 : c0) ? kEnds : 0);
+    touch(row, c, id, flags, box);
+    if (on_line)
+      touch(row - 1, c, id, flags, box);
+  }
+}
+
+// rule: PATH.AREA.SWEEP
+// A line from a to b (exact integer end points), walked with exact integer tests for which
+// grid line comes first; crossing coordinates are one division each, within 2 u of their
+// magnitude.
+bool Sweep::walk_line(const Shape& s, std::uint32_t id, const Pt& a, const Pt& b, int sx, int sy) {
+  const auto x0 = static_cast<std::int64_t>(a.x), y0 = static_cast<std::int64_t>(a.y);
+  const auto x1 = static_cast<std::int64_t>(b.x), y1 = static_cast<std::int64_t>(b.y);
+  const std::int64_t dx = x1 - x0, dy = y1 - y0;
+  const int dirs = dirs_of(sx, sy);
+  // Axis-parallel lines are exact throughout.
+  const double ep =
+      (dx == 0 || dy == 0) ? 0.0 : 4 * kU * static_cast<double>(kMaxRaw) + 1 / kFixScale;
+  if (sy == 0) {
+    walk_flat(a, b, id, dirs);
+    return true;
+  }
+  (void)s;
+  std::int64_t row = cell_of(static_cast<double>(y0), sy);
+  std::int64_t col;
+  bool on_col = false;
+  if (sx == 0) {
+    col = floor_div(x0, kW);
+    on_col = x0 == col * kW; // a vertical line on a column line: cell col, touched in col - 1
+  } else {
+    col = cell_of(static_cast<double>(x0), sx);
+  }
+  Pt p = a;
+  for (int guard = 0; guard < 4 * (w_ + h_) + 64; ++guard) {
+    const std::int64_t X = sx > 0 ? (col + 1) * kW : col * kW;
+    const std::int64_t Y = sy > 0 ? (row + 1) * kW : row * kW;
+    const bool reach_x = sx != 0 && (sx > 0 ? x1 > X : x1 < X);
+    const bool reach_y = sy > 0 ? y1 > Y : y1 < Y;
+    Pt n = b;
+    bool step_x = false, step_y = false;
+    if (reach_x || reach_y) {
+      if (reach_x && reach_y) {
+        // |X - x0| |dy| against |Y - y0| |dx|: which line the segment meets first.
+        const std::int64_t kx = std::abs(X - x0) * std::abs(dy);
+        const std::int64_t ky = std::abs(Y - y0) * std::abs(dx);
+        step_x = kx <= ky;
+        step_y = ky <= kx;
+      } else {
+        step_x = reach_x;
+        step_y = reach_y;
+      }
+      if (step_x && step_y) {
+        n = Pt{static_cast<double>(X), static_cast<double>(Y), Y << kFix, 0};
+      } else if (step_x) {
+        const double yn =
+            static_cast<double>(y0) + static_cast<double>((X - x0) * dy) / static_cast<double>(dx);
+        n = Pt{static_cast<double>(X), yn, fix_of(yn), ep};
+      } else {
+        const double xn =
+            static_cast<double>(x0) + static_cast<double>((Y - y0) * dx) / static_cast<double>(dy);
+        n = Pt{xn, static_cast<double>(Y), Y << kFix, ep};
+      }
+    }
+    const double left = static_cast<double>(col * kW);
+    const double area = 0.5 * ((p.x - left) + (n.x - left)) * (n.y - p.y);
+    const double err =
+        p.err == 0 && n.err == 0
+            ? 0.0
+            : 2048 * (p.err + n.err) + 8 * kU * (std::abs(area) + kWd * std::abs(n.y - p.y));
+    if (record(row, col, id, dirs, guard == 0, !step_x && !step_y, area, err, p, n, on_col))
+      return true;
+    p = n;
+    if (step_x)
+      col += sx;
+    if (step_y)
+      row += sy;
+  }
+  return false;
+}
+
+// rule: PATH.AREA.SWEEP
+bool Sweep::root(const Shape& s, bool in_x, int sgn, double target, double lo, double hi,
+                 double f_lo, double f_hi, double& t, double& blo, double& bhi) const {
+  const std::array<double, 4>& c = in_x ? s.ax : s.ay;
+  const auto f = [&](double u) { return ((c[3] * u + c[2]) * u + c[1]) * u - target; };
+  const double ferr = (in_x ? s.xerr : s.yerr) + kU * std::abs(target);
+  t = -1;
+  if (s.n == 2 && c[2] != 0) {
+    // The quadratic formula (the root in [lo, hi]); the bracket below certifies it.
+    const double disc = c[1] * c[1] + 4 * c[2] * target;
+    if (disc >= 0) {
+      const double sq = std::sqrt(disc);
+      const double qv = -0.5 * (c[1] + (c[1] >= 0 ? sq : -sq));
+      const double r1 = qv / c[2], r2 = qv != 0 ? -target / qv : r1;
+      const double slack = 0x1p-30;
+      if (r1 >= lo - slack && r1 <= hi + slack)
+        t = r1;
+      else if (r2 >= lo - slack && r2 <= hi + slack)
+        t = r2;
+      t = std::clamp(t, lo, hi);
+    }
+  }
+  if (t < 0) {
+    // Safeguarded Newton steps from the secant's point; [a, b] keeps the sign change.
+    double a = lo, b = hi;
+    t = f_lo == f_hi ? 0.5 * (a + b) : a + (b - a) * (f_lo / (f_lo - f_hi));
+    if (!(t > a && t < b))
+      t = 0.5 * (a + b);
+    for (int it = 0; it < 30; ++it) {
+      const double ft = f(t);
+      if (std::abs(ft) <= 2 * ferr)
+        break;
+      if (ft * sgn < 0)
+        a = t;
+      else
+        b = t;
+      const double d = (3 * c[3] * t + 2 * c[2]) * t + c[1];
+      double next = d != 0 ? t - ft / d : 0.5 * (a + b);
+      if (!(next > a && next < b))
+        next = 0.5 * (a + b);
+      const double step = std::abs(next - t);
+      t = next;
+      if (step <= 0x1p-46)
+        break;
+    }
+  }
+  // A bracket whose ends have certified signs: f(blo) sgn < 0 < f(bhi) sgn, or an end of
+  // [lo, hi] (whose sign the caller knows).
+  for (double d = 0x1p-44; d <= 0x1p-20; d *= 64) {
+    blo = t - d;
+    bhi = t + d;
+    bool ok_lo = true, ok_hi = true;
+    if (blo <= lo)
+      blo = lo;
+    else
+      ok_lo = f(blo) * sgn < -ferr;
+    if (bhi >= hi)
+      bhi = hi;
+    else
+      ok_hi = f(bhi) * sgn > ferr;
+    if (ok_lo && ok_hi)
+      return true;
+  }
+  return false;
+}
+
+// rule: PATH.AREA.SWEEP
+// A monotone curve piece from p.a to p.b: at each step the next column and row lines it
+// reaches, their crossings' certified brackets (apart, or the path is declined), the visit's
+// area Q(t_b) - Q(t_a) + (x0 - left)(y(t_b) - y(t_a)) and its cover.
+bool Sweep::walk_curve(const PieceRef& p, std::uint32_t id) {
+  const Shape& s = shapes_[p.shape];
+  const int sx = p.sx, sy = p.sy;
+  const int dirs = dirs_of(sx, sy);
+  std::int64_t col = cell_of(p.a.x, sx), row = cell_of(p.a.y, sy);
+  if (sy == 0) {
+    walk_flat(p.a, p.b, id, dirs); // y constant: a horizontal curve
+    return true;
+  }
+  const bool on_col =
+      sx == 0 && p.a.x == static_cast<double>(floor_div(static_cast<std::int64_t>(p.a.x), kW) * kW);
+  if (sx == 0)
+    col = floor_div(static_cast<std::int64_t>(p.a.x), kW);
+  Pt a = p.a;
+  double ta = p.t0, ta_lo = p.t0;
+  double qa = s.q_at(ta), ya = s.y_at(ta);
+  // A crossing's point moves at most this far (raw, in x and in y) over its bracket.
+  const double span = s.dx_max + s.dy_max;
+  std::int64_t x_line = std::numeric_limits<std::int64_t>::min(), y_line = x_line;
+  double txt = 0, txl = 0, txh = 0, tyt = 0, tyl = 0, tyh = 0;
+  for (int guard = 0; guard < 4 * (w_ + h_) + 64; ++guard) {
+    const std::int64_t X = sx > 0 ? (col + 1) * kW : col * kW;
+    const std::int64_t Y = sy > 0 ? (row + 1) * kW : row * kW;
+    const auto Xd = static_cast<double>(X), Yd = static_cast<double>(Y);
+    const bool reach_x = sx != 0 && (sx > 0 ? p.b.x > Xd : p.b.x < Xd);
+    const bool reach_y = sy > 0 ? p.b.y > Yd : p.b.y < Yd;
+    Pt n = p.b;
+    double tn = p.t1, tn_lo = p.t1;
+    bool step_x = false, step_y = false;
+    if (reach_x || reach_y) {
+      // A crossing found but not taken stays valid while its line is still the next one.
+      if (reach_x && X != x_line) {
+        if (!root(s, true, sx, Xd - s.x0, ta_lo, p.t1, a.x - Xd, p.b.x - Xd, txt, txl, txh))
+          return false;
+        x_line = X;
+      }
+      if (reach_y && Y != y_line) {
+        if (!root(s, false, sy, Yd - s.y0, ta_lo, p.t1, a.y - Yd, p.b.y - Yd, tyt, tyl, tyh))
+          return false;
+        y_line = Y;
+      }
+      if (reach_x && reach_y) {
+        if (txh < tyl)
+          step_x = true;
+        else if (tyh < txl)
+          step_y = true;
+        else
+          return false; // the crossings may coincide (near a grid corner)
+      } else {
+        step_x = reach_x;
+        step_y = reach_y;
+      }
+      if (step_x) {
+        tn = txt;
+        tn_lo = txl;
+        const double yv = s.y0 + s.y_at(tn);
+        n = Pt{Xd, yv, fix_of(yv), span * (txh - txl) + s.xerr + s.yerr + 1 / kFixScale};
+      } else {
+        tn = tyt;
+        tn_lo = tyl;
+        n = Pt{s.x0 + s.x_at(tn), Yd, Y << kFix,
+               span * (tyh - tyl) + s.xerr + s.yerr + 1 / kFixScale};
+      }
+    }
+    const double left = static_cast<double>(col * kW);
+    const double qb = s.q_at(tn);
+    const double yb = s.y_at(tn);
+    const double dyv = yb - ya;
+    const double area = (qb - qa) + (s.x0 - left) * dyv;
+    const double err =
+        2 * s.qerr + (std::abs(s.x0 - left) + 4 * kWd) * 2 * (s.yerr + a.err + n.err) +
+        2048 * (a.err + n.err) +
+        8 * kU * (std::abs(area) + std::abs(qb) + std::abs(qa) + kWd * std::abs(dyv));
+    if (record(row, col, id, dirs, guard == 0, !step_x && !step_y, area, err, a, n, on_col))
+      return true;
+    a = n;
+    ta = tn;
+    ta_lo = tn_lo;
+    qa = qb;
+    ya = yb;
+    if (step_x)
+      col += sx;
+    if (step_y)
+      row += sy;
+  }
+  return false;
+}
+
+// Roots of c0 + c1 t + c2 t^2 strictly inside (0, 1), ascending; false where two roots may be
+// too close to tell (a discriminant near 0).
+bool roots_inside(double c0, double c1, double c2, std::array<double, 2>& r, int& n) {
+  n = 0;
+  if (c2 == 0) {
+    if (c1 != 0) {
+      const double t = -c0 / c1;
+      if (t > 0 && t < 1)
+        r[static_cast<std::size_t>(n++)] = t;
+    }
+    return true;
+  }
+  const double disc = c1 * c1 - 4 * c2 * c0;
+  const double scale = c1 * c1 + std::abs(4 * c2 * c0);
+  if (std::abs(disc) <= 0x1p-30 * scale)
+    return false;
+  if (disc < 0)
+    return true;
+  const double sq = std::sqrt(disc);
+  const double qv = -0.5 * (c1 + (c1 >= 0 ? sq : -sq));
+  double t1 = qv / c2, t2 = qv != 0 ? c0 / qv : t1;
+  if (t1 > t2)
+    std::swap(t1, t2);
+  for (const double t : {t1, t2})
+    if (t > 0 && t < 1)
+      r[static_cast<std::size_t>(n++)] = t;
+  return true;
+}
+
+// Whether v lies within kSplitMargin of a grid line.
+bool near_line(double v) {
+  const double m = v - kWd * floor_of(v * (1 / kWd));
+  return m < kSplitMargin || kWd - m < kSplitMargin;
+}
+
+int sign_of(double v) {
+  return v > 0 ? 1 : (v < 0 ? -1 : 0);
+}
+
+// rule: PATH.AREA.SWEEP
+bool Sweep::add_curve_pieces(std::uint32_t si, std::uint32_t& id) {
+  const Shape& s = shapes_[si];
+  std::array<double, 6> cuts{};
+  int nc = 0;
+  cuts[static_cast<std::size_t>(nc++)] = 0;
+  for (const bool in_x : {true, false}) {
+    const std::array<double, 4>& c = in_x ? s.ax : s.ay;
+    std::array<double, 2> r{};
+    int n = 0;
+    if (!roots_inside(c[1], 2 * c[2], 3 * c[3], r, n))
+      return false;
+    for (int k = 0; k < n; ++k)
+      cuts[static_cast<std::size_t>(nc++)] = r[static_cast<std::size_t>(k)];
+  }
+  cuts[static_cast<std::size_t>(nc++)] = 1;
+  for (int k = 1; k < nc; ++k) // at most six cuts: insertion
+    for (int m = k;
+         m > 0 && cuts[static_cast<std::size_t>(m)] < cuts[static_cast<std::size_t>(m - 1)]; --m)
+      std::swap(cuts[static_cast<std::size_t>(m)], cuts[static_cast<std::size_t>(m - 1)]);
+  Pt a{s.x0, s.y0, static_cast<std::int64_t>(s.y0) << kFix, 0};
+  for (int k = 0; k + 1 < nc; ++k) {
+    const double t0 = cuts[static_cast<std::size_t>(k)], t1 = cuts[static_cast<std::size_t>(k + 1)];
+    if (!(t1 > t0))
+      continue;
+    Pt b;
+    if (t1 == 1) {
+      b = Pt{s.x0 + s.ax[1] + s.ax[2] + s.ax[3], s.y0 + s.ay[1] + s.ay[2] + s.ay[3], 0, 0};
+      b.yfix = static_cast<std::int64_t>(b.y) << kFix;
+    } else {
+      const double bx = s.x0 + s.x_at(t1), by = s.y0 + s.y_at(t1);
+      if (near_line(bx) || near_line(by))
+        return false;
+      b = Pt{bx, by, fix_of(by), s.xerr + s.yerr + 1 / kFixScale};
+    }
+    PieceRef p;
+    p.shape = si;
+    p.t0 = t0;
+    p.t1 = t1;
+    p.a = a;
+    p.b = b;
+    // Directions from the end points (the piece is monotone), which the derivative at the
+    // middle must confirm; 0 only where the coordinate is constant on the whole curve.
+    const double tm = 0.5 * (t0 + t1);
+    const bool x_flat = s.ax[1] == 0 && s.ax[2] == 0 && s.ax[3] == 0;
+    const bool y_flat = s.ay[1] == 0 && s.ay[2] == 0 && s.ay[3] == 0;
+    p.sx = x_flat ? 0 : sign_of(b.x - a.x);
+    p.sy = y_flat ? 0 : sign_of(b.y - a.y);
+    if ((!x_flat && (p.sx == 0 || sign_of(s.dx_at(tm)) != p.sx)) ||
+        (!y_flat && (p.sy == 0 || sign_of(s.dy_at(tm)) != p.sy)))
+      return false;
+    pieces_.push_back(p);
+    piece_id_.push_back(id++);
+    a = b;
+  }
+  return true;
+}
+
+// rule: PATH.AREA.SWEEP
+bool Sweep::build(const Boundary& b) {
+  std::vector<SegmentRef>& refs = refs_;
+  segments_in_order(b, refs);
+  std::uint32_t id = 0;
+  std::size_t current = static_cast<std::size_t>(-1);
+  for (const SegmentRef& r : refs) {
+    // Edges hold 64-bit coordinates; the range test below reads them as 32-bit points.
+    if (!r.curve) {
+      const Edge& e = b.lines[r.index];
+      if (std::max({std::abs(e.x0), std::abs(e.y0), std::abs(e.x1), std::abs(e.y1)}) > kMaxRaw)
+        return false;
+    }
+    std::array<Point, 4> cp{};
+    const int degree = control_points(b, r, cp);
+    for (int k = 0; k <= degree; ++k) {
+      const Point& q = cp[static_cast<std::size_t>(k)];
+      if (std::abs(std::int64_t{q.x}) > kMaxRaw || std::abs(std::int64_t{q.y}) > kMaxRaw)
+        return false;
+    }
+    if (r.contour != current) {
+      if (current != static_cast<std::size_t>(-1))
+        ++id; // a gap between contours
+      current = r.contour;
+      contours_.push_back({id, id});
+    }
+    Shape s;
+    s.n = degree;
+    s.x0 = cp[0].x;
+    s.y0 = cp[0].y;
+    const auto power = [&](auto get) {
+      const double p0 = get(cp[0]), p1 = get(cp[1]), p2 = get(cp[2]), p3 = get(cp[3]);
+      if (degree == 1)
+        return std::array<double, 4>{0, p1 - p0, 0, 0};
+      if (degree == 2)
+        return std::array<double, 4>{0, 2 * (p1 - p0), p0 - 2 * p1 + p2, 0};
+      return std::array<double, 4>{0, 3 * (p1 - p0), 3 * (p0 - 2 * p1 + p2),
+                                   p3 - 3 * p2 + 3 * p1 - p0};
+    };
+    s.ax = power([](Point q) { return static_cast<double>(q.x); });
+    s.ay = power([](Point q) { return static_cast<double>(q.y); });
+    if (s.ax[1] == 0 && s.ax[2] == 0 && s.ax[3] == 0 && s.ay[1] == 0 && s.ay[2] == 0 &&
+        s.ay[3] == 0)
+      continue; // a point (PATH.DEGENERATE)
+    // Bounds over [0, 1]: sums of |coefficients| (|t|^k <= 1); Horner's rule on degree m
+    // within gamma(2m) of that sum; Q's coefficients M_k / k with M_k exact in 64 bits
+    // (|M_k| < 2^58), rounded twice.
+    double sx_abs = 0, sy_abs = 0;
+    for (int k = 1; k <= 3; ++k) {
+      sx_abs += std::abs(s.ax[static_cast<std::size_t>(k)]);
+      sy_abs += std::abs(s.ay[static_cast<std::size_t>(k)]);
+      s.dx_max += k * std::abs(s.ax[static_cast<std::size_t>(k)]);
+      s.dy_max += k * std::abs(s.ay[static_cast<std::size_t>(k)]);
+    }
+    s.xerr = 8 * kU * sx_abs;
+    s.yerr = 8 * kU * sy_abs;
+    double q_abs = 0;
+    for (int k = 2; k <= 2 * degree; ++k) {
+      std::int64_t mk = 0;
+      for (int i = std::max(1, k - degree); i <= std::min(degree, k - 1); ++i) {
+        const int j = k - i;
+        mk += static_cast<std::int64_t>(s.ax[static_cast<std::size_t>(i)]) * j *
+              static_cast<std::int64_t>(s.ay[static_cast<std::size_t>(j)]);
+      }
+      s.q[static_cast<std::size_t>(k)] = static_cast<double>(mk) / k;
+      q_abs += std::abs(s.q[static_cast<std::size_t>(k)]);
+    }
+    s.qerr = 32 * kU * q_abs;
+    const auto si = static_cast<std::uint32_t>(shapes_.size());
+    shapes_.push_back(s);
+    if (degree == 1) {
+      PieceRef p;
+      p.shape = si;
+      p.a = Pt{s.x0, s.y0, static_cast<std::int64_t>(s.y0) << kFix, 0};
+      p.b = Pt{s.x0 + s.ax[1], s.y0 + s.ay[1], 0, 0};
+      p.b.yfix = static_cast<std::int64_t>(p.b.y) << kFix;
+      p.sx = sign_of(s.ax[1]);
+      p.sy = sign_of(s.ay[1]);
+      pieces_.push_back(p);
+      piece_id_.push_back(id++);
+    } else if (!add_curve_pieces(si, id)) {
+      return false;
+    }
+    contours_.back().second = id - 1;
+  }
+  return true;
+}
+
+// Whether the pieces of directions d are monotone in x or in y (bits as Cell's): then their
+// chain does not cross itself.
+bool monotone(int d) {
+  return (d & 3) != 3 || (d & 12) != 12;
+}
+
+bool apart(const Box& p, const Box& q) {
+  return p.x1 < q.x0 || q.x1 < p.x0 || p.y1 < q.y0 || q.y1 < p.y0;
+}
+
+// rule: PATH.AREA.SWEEP
+// Whether a cell holds at most two winding numbers, and they differ by one. Its visits form
+// arcs: consecutive pieces of one contour joined inside the cell (the one ending where the
+// next starts), and a contour's last piece joined to its first. One run of consecutive pieces
+// monotone in x or in y is a graph: any straight path in the cell crosses it with alternating
+// signs. Else one arc that does not cross itself (two pieces that meet at a joint do not turn
+// back into each other's quadrant, any other two have boxes apart), whose ends lie on the
+// border, cuts the cell into two sides; or two arcs, each of one sense in y and the two of
+// opposite senses, with boxes apart in x (left of the left one, between, right of the right
+// one: W + d, W, W - d' with d = d'), or the same with x and y exchanged.
+bool Sweep::two_windings(const Cell& c, std::uint8_t runs) const {
+  if (runs == 1 && monotone(c.dirs))
+    return true;
+  if (c.count < 2 || c.count > 8)
+    return false;
+  std::array<const Seen*, 8> v{};
+  int n = 0;
+  for (std::uint32_t k = c.first; k != 0; k = seen_[k - 1].next)
+    v[static_cast<std::size_t>(n++)] = &seen_[k - 1];
+  const auto joined = [](const Seen& p, const Seen& q) {
+    return q.id == p.id + 1 && (p.flags & kEnds) != 0 && (q.flags & kStarts) != 0;
+  };
+  // The arcs as index ranges; a contour's last arc joined to its first goes in front of it.
+  std::array<int, 9> cut{};
+  int arcs = 0;
+  for (int i = 0; i < n; ++i)
+    if (i == 0 || !joined(*v[static_cast<std::size_t>(i - 1)], *v[static_cast<std::size_t>(i)]))
+      cut[static_cast<std::size_t>(arcs++)] = i;
+  cut[static_cast<std::size_t>(arcs)] = n;
+  std::array<const Seen*, 8> order{};
+  int m = 0;
+  if (arcs > 1) {
+    const Seen& f = *v[0];
+    const Seen& l = *v[static_cast<std::size_t>(n - 1)];
+    const auto it =
+        std::upper_bound(contours_.begin(), contours_.end(), f.id,
+                         [](std::uint32_t x, const std::pair<std::uint32_t, std::uint32_t>& k) {
+                           return x < k.first;
+                         });
+    if (f.id == (it - 1)->first && l.id == (it - 1)->second && (l.flags & kEnds) != 0 &&
+        (f.flags & kStarts) != 0) {
+      const int from = cut[static_cast<std::size_t>(arcs - 1)];
+      for (int i = from; i < n; ++i)
+        order[static_cast<std::size_t>(m++)] = v[static_cast<std::size_t>(i)];
+      n = from;
+      --arcs;
+    }
+  }
+  for (int i = 0; i < n; ++i)
+    order[static_cast<std::size_t>(m++)] = v[static_cast<std::size_t>(i)];
+  // order: the first arc (with the wrapped part in front), then the others from cut[1].
+  const int first_end = arcs > 1 ? m - (n - cut[1]) : m;
+  if (arcs == 1) {
+    for (int a = 0; a < m; ++a)
+      for (int b = a + 1; b < m; ++b) {
+        const Seen& p = *order[static_cast<std::size_t>(a)];
+        const Seen& q = *order[static_cast<std::size_t>(b)];
+        if (!(b == a + 1 ? monotone((p.flags | q.flags) & 15) : apart(p.box, q.box)))
+          return false;
+      }
+    return true;
+  }
+  if (arcs != 2)
+    return false;
+  // Two arcs: each monotone in the coordinate they are apart in the other of.
+  Box b1 = order[0]->box, b2 = order[static_cast<std::size_t>(first_end)]->box;
+  int d1 = 0, d2 = 0;
+  for (int i = 0; i < m; ++i) {
+    const Seen& s = *order[static_cast<std::size_t>(i)];
+    (i < first_end ? b1 : b2).add(s.box);
+    (i < first_end ? d1 : d2) |= s.flags & 15;
+  }
+  const int y1 = d1 & 12, y2 = d2 & 12, x1 = d1 & 3, x2 = d2 & 3;
+  const bool apart_x = b1.x1 < b2.x0 || b2.x1 < b1.x0;
+  const bool apart_y = b1.y1 < b2.y0 || b2.y1 < b1.y0;
+  if (apart_x && ((y1 == 4 && y2 == 8) || (y1 == 8 && y2 == 4)))
+    return true;
+  return apart_y && ((x1 == 1 && x2 == 2) || (x1 == 2 && x2 == 1));
+}
+
+// rule: PATH.AREA.SWEEP, PATH.AREA.ALPHA
+bool Sweep::sweep(std::span<std::uint8_t> out) const {
+  const auto w = static_cast<std::size_t>(w_);
+  constexpr std::int64_t kWhole = kW << kFix; // a whole winding's cover
+  for (std::int32_t j = 0; j < h_; ++j) {
+    const auto r = static_cast<std::size_t>(j);
+    const std::size_t at = r * stride_;
+    std::int64_t s = left_cover_[r]; // the cover left of the cell
+    double e_left = left_err_[r];
+    std::uint8_t* row = out.data() + r * w;
+    // The alpha of a cell without boundary after the last cell with some (-1: not yet known).
+    int empty_alpha = -1;
+    for (std::size_t k = 0; k < w; ++k) {
+      const std::uint8_t runs = runs_[at + k];
+      if (runs == 0) {
+        // No boundary in the cell: one winding number, minus the cover left of it, exact
+        // (every point of the boundary left of it is shared by two visits there, in fixed
+        // point, or lies on a row line).
+        if (empty_alpha < 0) {
+          if (s % kWhole != 0)
+            return false;
+          empty_alpha = fill_holds(rule_, -s / kWhole) ? 255 : 0;
+        }
+        row[k] = static_cast<std::uint8_t>(empty_alpha);
+        e_left = 0;
+        continue;
+      }
+      empty_alpha = -1;
+      const Cell& c = cells_[at + k];
+      if (!two_windings(c, runs))
+        return false;
+      // I = the integral of w over the cell (raw^2): the winding at a point is minus the cover
+      // left of it; c.area is the integral of (x - left) dy.
+      const std::int64_t cs = s + c.cover;
+      const double integral = c.area - kWd * (static_cast<double>(cs) * (1 / kFixScale));
+      const double v = integral * (1.0 / (kWd * kWd));
+      const double m = floor_of(v);
+      const double f0 = fill_holds(rule_, static_cast<std::int64_t>(m)) ? 1.0 : 0.0;
+      const double f1 = fill_holds(rule_, static_cast<std::int64_t>(m) + 1) ? 1.0 : 0.0;
+      const double x = 510 * (f0 + (f1 - f0) * (v - m));
+      const auto alpha_at = [](double y) {
+        return std::clamp<std::int64_t>((static_cast<std::int64_t>(floor_of(y)) + 1) >> 1, 0, 255);
+      };
+      const std::int64_t alpha = alpha_at(x);
+      const double e = c.err + e_left;
+      if (e > 0) {
+        // |510 a - 510 a_true| <= 510 (the integral's bound / 2^16 + the roundings of the
+        // integral and of v - m, a and x: 4 u (|v| + 1) and 2^-40); the alpha, clamped to
+        // [0, 255] as the true 510 a lies in [0, 510], must be the same at both ends.
+        const double d =
+            510 * (e * (1.0 / (kWd * kWd)) + 4 * kU * (std::abs(v) + 1)) * (1 + 0x1p-40) + 0x1p-40;
+        if (alpha_at(x - d) != alpha || alpha_at(x + d) != alpha)
+          return false;
+      }
+      row[k] = static_cast<std::uint8_t>(alpha);
+      s = cs;
+      e_left = c.err;
+    }
+  }
+  return true;
+}
+
+// rule: PATH.AREA.SWEEP
+bool Sweep::run(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,
+                std::span<std::uint8_t> out) {
+  rule_ = rule;
+  w_ = w;
+  h_ = h;
+  stride_ = static_cast<std::size_t>(w);
+  const std::size_t cells = stride_ * static_cast<std::size_t>(h);
+  if (cells > kMaxCells)
+    return false;
+  shapes_.clear();
+  pieces_.clear();
+  piece_id_.clear();
+  contours_.clear();
+  if (!build(b))
+    return false;
+  if (cells_.size() < cells)
+    cells_.resize(cells);
+  runs_.assign(cells, 0);
+  seen_.clear();
+  left_cover_.assign(static_cast<std::size_t>(h), 0);
+  left_err_.assign(static_cast<std::size_t>(h), 0.0);
+  for (std::size_t k = 0; k < pieces_.size(); ++k) {
+    const PieceRef& p = pieces_[k];
+    const Shape& s = shapes_[p.shape];
+    const bool ok =
+        s.n == 1 ? walk_line(s, piece_id_[k], p.a, p.b, p.sx, p.sy) : walk_curve(p, piece_id_[k]);
+    if (!ok)
+      return false;
+  }
+  return sweep(out);
+}
+
+} // namespace
+
+// rule: PATH.AREA.SWEEP
+bool alpha_sweep(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,
+                 std::span<std::uint8_t> out) {
+  thread_local Sweep s;
+  return s.run(b, rule, w, h, out);
+}
+
+} // namespace rastrules::path::detail

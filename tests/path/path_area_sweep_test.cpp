@@ -1,0 +1,170 @@
+// SPDX-License-Identifier: MIT
+// The certified sweep of PATH.AREA.SWEEP on examples: paths it decides whole (glyph-like shapes
+// with curves and holes, ties of the rounding beside exact lines, thin bars whose two edges
+// share pixels, curved pixels on a rounding boundary decided through the bound) and paths it
+// declines (a contour drawn twice, two bars the same way round in one pixel, a tiny loop, a
+// target too large for its cells). Every alpha is compared with the exact methods', and with
+// cover_area_alpha's.
+// Tests: PATH.AREA.SWEEP, PATH.AREA.ALPHA
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "path_detail.hpp"
+#include "path_support.hpp"
+#include "rastrules/path.hpp"
+
+namespace rastrules::test {
+namespace {
+
+using path::FillRule;
+namespace pd = path::detail;
+
+struct Swept {
+  bool decided = false;
+  std::vector<std::uint8_t> alpha, exact;
+};
+
+// The sweep alone, and the exact methods; where the sweep decides, they must agree, and
+// cover_area_alpha (the sweep first) always agrees with the exact methods.
+Swept sweep(const path::Path& p, std::int32_t w, std::int32_t h) {
+  Swept s;
+  const auto n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+  s.alpha.assign(n, 7);
+  s.exact.assign(n, 9);
+  pd::cover_alpha_by(p, w, h, pd::AreaMethod::kCells, s.exact, nullptr);
+  s.decided = pd::alpha_sweep(pd::boundary_of(p), p.fill_rule, w, h, s.alpha);
+  if (s.decided) {
+    EXPECT_EQ(s.alpha, s.exact);
+  }
+  std::vector<std::uint8_t> pub(n, 5);
+  path::cover_area_alpha(p, w, h, pub);
+  EXPECT_EQ(pub, s.exact);
+  pd::AreaRows rows;
+  std::vector<std::uint8_t> by(n, 3);
+  pd::cover_alpha_by(p, w, h, pd::AreaMethod::kSweep, by, &rows);
+  EXPECT_EQ(by, s.exact);
+  EXPECT_EQ(rows.swept, s.decided ? static_cast<std::size_t>(h) : 0u);
+  return s;
+}
+
+// A small curved contour far right of the rest, so that a path of lines is a path with curves.
+path::Contour curl(double x) {
+  return contour(x, 0.5, {quad_to(x + 1.5, 0.75, x + 1, 2.5), line_to(x, 2.25)});
+}
+
+// An 'o': two circles of four cubics, the inner one the other way round (a hole), across
+// several pixels: every cell holds one chain, monotone in x or in y.
+// rule: PATH.AREA.SWEEP
+TEST(PathAreaSweep, AGlyphLikeShapeWithAHoleIsSweptWhole) {
+  const auto circle = [](double cx, double cy, double r, bool clockwise) {
+    const double k = 0.5546875 * r; // 142 / 256: near 0.5523 r, on the 16.8 grid
+    const double s = clockwise ? 1 : -1;
+    return contour(cx + r, cy,
+                   {cubic_to(cx + r, cy + s * k, cx + k, cy + s * r, cx, cy + s * r),
+                    cubic_to(cx - k, cy + s * r, cx - r, cy + s * k, cx - r, cy),
+                    cubic_to(cx - r, cy - s * k, cx - k, cy - s * r, cx, cy - s * r),
+                    cubic_to(cx + k, cy - s * r, cx + r, cy - s * k, cx + r, cy)});
+  };
+  for (const FillRule rule : {FillRule::kNonZero, FillRule::kEvenOdd}) {
+    const path::Path o = make_path(rule, {circle(5, 5, 4.5, true), circle(5, 5, 2, false)});
+    const Swept s = sweep(o, 10, 10);
+    EXPECT_TRUE(s.decided);
+    EXPECT_EQ(s.alpha[5 * 10 + 5], 0);   // the hole
+    EXPECT_EQ(s.alpha[5 * 10 + 1], 255); // the ring
+  }
+}
+
+// A square on pixel centres beside a curve: its edge pixels are half covered (510 a = 255, a
+// tie of the rounding) and every visit of them is exact (lines along the axes), so the sweep
+// decides the tie exactly (128).
+// rule: PATH.AREA.SWEEP, PATH.AREA.ALPHA
+TEST(PathAreaSweep, TiesBesideLinesAlongTheAxesAreDecidedExactly) {
+  const path::Path p = make_path(
+      FillRule::kNonZero, {polygon({{0.5, 0.5}, {2.5, 0.5}, {2.5, 2.5}, {0.5, 2.5}}), curl(5)});
+  const Swept s = sweep(p, 8, 4);
+  ASSERT_TRUE(s.decided);
+  EXPECT_EQ(s.alpha[0], 64);
+  EXPECT_EQ(s.alpha[1], 128);
+  EXPECT_EQ(s.alpha[8], 128);
+  EXPECT_EQ(s.alpha[9], 255);
+}
+
+// A bar a quarter of a pixel thick: its top and bottom edges cross the same pixels, two runs
+// apart in y and running opposite ways in x (windings 0, 1, 0): decided. Two bars the same way
+// round, one inside the other, within one pixel row (windings 0, 1, 2): declined, and the
+// exact methods give the answer.
+// rule: PATH.AREA.SWEEP
+TEST(PathAreaSweep, TwoChainsInAPixelAreDecidedOnlyWhenTheyMeetTwoWindings) {
+  const path::Path bar = make_path(
+      FillRule::kNonZero, {polygon({{0.5, 1.25}, {3.5, 1.25}, {3.5, 1.5}, {0.5, 1.5}}), curl(5)});
+  const Swept one = sweep(bar, 8, 3);
+  EXPECT_TRUE(one.decided);
+  EXPECT_EQ(one.alpha[8 + 1], 64); // a quarter of the pixel
+  const path::Path nested =
+      make_path(FillRule::kNonZero,
+                {polygon({{0.5, 1.125}, {3.5, 1.125}, {3.5, 1.875}, {0.5, 1.875}}),
+                 polygon({{1.25, 1.25}, {2.75, 1.25}, {2.75, 1.5}, {1.25, 1.5}}), curl(5)});
+  EXPECT_FALSE(sweep(nested, 8, 3).decided);
+  // A bar standing up: its left and right edges share pixels, apart in x, running opposite
+  // ways in y.
+  const path::Path stem =
+      make_path(FillRule::kNonZero,
+                {polygon({{1.25, 0.5}, {1.25, 2.5}, {1.625, 2.5}, {1.625, 0.5}}), curl(5)});
+  const Swept up = sweep(stem, 8, 3);
+  EXPECT_TRUE(up.decided);
+  EXPECT_EQ(up.alpha[8 + 1], 96); // three eighths of the pixel
+}
+
+// Paths the sweep declines: a square drawn twice under even-odd (two runs that meet: the
+// conflation case, alpha 0 everywhere), a cubic with a small loop inside one pixel (a chain
+// that turns both ways), and a target of more than 2^18 cells.
+// rule: PATH.AREA.SWEEP
+TEST(PathAreaSweep, DeclinedPathsGoToTheOtherMethods) {
+  const path::Contour sq = polygon({{0.5, 0.5}, {2.5, 0.5}, {2.5, 2.5}, {0.5, 2.5}});
+  const Swept twice = sweep(make_path(FillRule::kEvenOdd, {sq, sq, curl(5)}), 8, 3);
+  EXPECT_FALSE(twice.decided);
+  EXPECT_EQ(twice.exact[1], 0);
+  const path::Path loop =
+      make_path(FillRule::kNonZero, {contour(0.25, 1.5,
+                                             {cubic_to(2.75, 1.25, 0.25, 1.25, 2.75, 1.5),
+                                              line_to(2.75, 2.75), line_to(0.25, 2.75)})});
+  EXPECT_FALSE(sweep(loop, 4, 4).decided);
+  std::vector<std::uint8_t> big(std::size_t{600} * 600, 1);
+  EXPECT_FALSE(pd::alpha_sweep(pd::boundary_of(make_path(FillRule::kNonZero, {curl(5)})),
+                               FillRule::kNonZero, 600, 600, big));
+}
+
+// Curved pixels whose exact alpha lies on a rounding boundary (510 a = 85, between alphas 42
+// and 43; as PathAreaFast.CurvedPixelsOnARoundingBoundaryAreDecidedThroughTheBound): the
+// sweep's bound keeps it from rounding them down, so it either declines or gives 43.
+// rule: PATH.AREA.SWEEP, PATH.AREA.ALPHA
+TEST(PathAreaSweep, CurvedPixelsOnARoundingBoundaryAreDecidedThroughTheBound) {
+  int cases = 0, decided = 0;
+  for (std::int32_t col = 0; col < 3; ++col)
+    for (std::int32_t x0 = 1; x0 < 128; x0 += 7)
+      for (std::int32_t x2 = 3; x2 < 128 - x0; x2 += 11) {
+        const std::int32_t x1 = 128 - x0 - x2;
+        const double l = 256.0 * col, top = 256.0 * col, bottom = top + 256.0;
+        const path::Path p = make_path(
+            FillRule::kNonZero,
+            {contour(0, top / 256,
+                     {line_to((l + x0) / 256, top / 256),
+                      quad_to((l + x1) / 256, (top + 128) / 256, (l + x2) / 256, bottom / 256),
+                      line_to(0, bottom / 256)})});
+        const std::int32_t side = col + 2;
+        const Swept s = sweep(p, side, side);
+        const auto at = static_cast<std::size_t>(col) * static_cast<std::size_t>(side) +
+                        static_cast<std::size_t>(col);
+        ASSERT_EQ(s.exact[at], 43);
+        decided += s.decided ? 1 : 0;
+        ++cases;
+      }
+  EXPECT_GT(cases, 100);
+  RecordProperty("decided", decided);
+}
+
+} // namespace
+} // namespace rastrules::test
