@@ -175,7 +175,6 @@ private:
   std::vector<Seen> seen_;
   std::vector<std::uint8_t> runs_;
   std::vector<std::int64_t> left_cover_; // a row's cover left of the target
-  std::vector<double> left_err_;
 };
 
 // rule: PATH.AREA.SWEEP
@@ -203,7 +202,6 @@ void Sweep::visit(std::int64_t row, std::int64_t col, std::uint32_t id, int dirs
   const auto r = static_cast<std::size_t>(row);
   if (col < 0) {
     left_cover_[r] += cover; // left of the target: its cover alone
-    left_err_[r] += err;
     return;
   }
   const std::size_t i = r * stride_ + static_cast<std::size_t>(col);
@@ -763,7 +761,6 @@ bool Sweep::two_windings(const Cell& c, std::uint8_t runs) const {
   for (int i = 0; i < n; ++i)
     order[static_cast<std::size_t>(m++)] = v[static_cast<std::size_t>(i)];
   // order: the first arc (with the wrapped part in front), then the others from cut[1].
-  const int first_end = arcs > 1 ? m - (n - cut[1]) : m;
   if (arcs == 1) {
     for (int a = 0; a < m; ++a)
       for (int b = a + 1; b < m; ++b) {
@@ -774,22 +771,45 @@ bool Sweep::two_windings(const Cell& c, std::uint8_t runs) const {
       }
     return true;
   }
-  if (arcs != 2)
-    return false;
-  // Two arcs: each monotone in the coordinate they are apart in the other of.
-  Box b1 = order[0]->box, b2 = order[static_cast<std::size_t>(first_end)]->box;
-  int d1 = 0, d2 = 0;
-  for (int i = 0; i < m; ++i) {
-    const Seen& s = *order[static_cast<std::size_t>(i)];
-    (i < first_end ? b1 : b2).add(s.box);
-    (i < first_end ? d1 : d2) |= s.flags & 15;
+  // Several arcs: each of one sense in y, their boxes apart in x one after the other, the
+  // senses alternating (left of the first, between two, right of the last: the windings go
+  // W, W + d, W, W + d, ...); or the same with x and y exchanged.
+  const int shift = m - n; // the first arc's wrapped part, in front of order
+  std::array<Box, 8> box{};
+  std::array<int, 8> dirs{}, idx{};
+  for (int a = 0; a < arcs; ++a) {
+    const int lo = a == 0 ? 0 : cut[static_cast<std::size_t>(a)] + shift;
+    const int hi = cut[static_cast<std::size_t>(a + 1)] + shift;
+    box[static_cast<std::size_t>(a)] = order[static_cast<std::size_t>(lo)]->box;
+    for (int i = lo; i < hi; ++i) {
+      box[static_cast<std::size_t>(a)].add(order[static_cast<std::size_t>(i)]->box);
+      dirs[static_cast<std::size_t>(a)] |= order[static_cast<std::size_t>(i)]->flags & 15;
+    }
+    idx[static_cast<std::size_t>(a)] = a;
   }
-  const int y1 = d1 & 12, y2 = d2 & 12, x1 = d1 & 3, x2 = d2 & 3;
-  const bool apart_x = b1.x1 < b2.x0 || b2.x1 < b1.x0;
-  const bool apart_y = b1.y1 < b2.y0 || b2.y1 < b1.y0;
-  if (apart_x && ((y1 == 4 && y2 == 8) || (y1 == 8 && y2 == 4)))
+  const auto alternate = [&](bool in_x) {
+    const auto lo = [&](int a) {
+      return in_x ? box[static_cast<std::size_t>(a)].x0 : box[static_cast<std::size_t>(a)].y0;
+    };
+    const auto hi = [&](int a) {
+      return in_x ? box[static_cast<std::size_t>(a)].x1 : box[static_cast<std::size_t>(a)].y1;
+    };
+    const auto sense = [&](int a) { return dirs[static_cast<std::size_t>(a)] & (in_x ? 12 : 3); };
+    std::sort(idx.begin(), idx.begin() + arcs, [&](int a, int b) { return lo(a) < lo(b); });
+    for (int k = 0; k < arcs; ++k) {
+      const int a = idx[static_cast<std::size_t>(k)];
+      const int d = sense(a);
+      if (d != (in_x ? 4 : 1) && d != (in_x ? 8 : 2))
+        return false;
+      if (k > 0) {
+        const int p = idx[static_cast<std::size_t>(k - 1)];
+        if (!(hi(p) < lo(a)) || sense(p) == d)
+          return false;
+      }
+    }
     return true;
-  return apart_y && ((x1 == 1 && x2 == 2) || (x1 == 2 && x2 == 1));
+  };
+  return alternate(true) || alternate(false);
 }
 
 // rule: PATH.AREA.SWEEP, PATH.AREA.ALPHA
@@ -800,7 +820,6 @@ bool Sweep::sweep(std::span<std::uint8_t> out) const {
     const auto r = static_cast<std::size_t>(j);
     const std::size_t at = r * stride_;
     std::int64_t s = left_cover_[r]; // the cover left of the cell
-    double e_left = left_err_[r];
     std::uint8_t* row = out.data() + r * w;
     // The alpha of a cell without boundary after the last cell with some (-1: not yet known).
     int empty_alpha = -1;
@@ -816,7 +835,6 @@ bool Sweep::sweep(std::span<std::uint8_t> out) const {
           empty_alpha = fill_holds(rule_, -s / kWhole) ? 255 : 0;
         }
         row[k] = static_cast<std::uint8_t>(empty_alpha);
-        e_left = 0;
         continue;
       }
       empty_alpha = -1;
@@ -836,7 +854,10 @@ bool Sweep::sweep(std::span<std::uint8_t> out) const {
         return std::clamp<std::int64_t>((static_cast<std::int64_t>(floor_of(y)) + 1) >> 1, 0, 255);
       };
       const std::int64_t alpha = alpha_at(x);
-      const double e = c.err + e_left;
+      // The cell's own visits bound its error: every other point in the cover left of it is
+      // shared by two visits there and cancels, and what it shares with the cells right of it
+      // is its own visits' end points.
+      const double e = c.err;
       if (e > 0) {
         // |510 a - 510 a_true| <= 510 (the integral's bound / 2^16 + the roundings of the
         // integral and of v - m, a and x: 4 u (|v| + 1) and 2^-40); the alpha, clamped to
@@ -848,7 +869,6 @@ bool Sweep::sweep(std::span<std::uint8_t> out) const {
       }
       row[k] = static_cast<std::uint8_t>(alpha);
       s = cs;
-      e_left = c.err;
     }
   }
   return true;
@@ -875,7 +895,6 @@ bool Sweep::run(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h
   runs_.assign(cells, 0);
   seen_.clear();
   left_cover_.assign(static_cast<std::size_t>(h), 0);
-  left_err_.assign(static_cast<std::size_t>(h), 0.0);
   for (std::size_t k = 0; k < pieces_.size(); ++k) {
     const PieceRef& p = pieces_[k];
     const Shape& s = shapes_[p.shape];

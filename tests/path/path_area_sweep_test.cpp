@@ -118,6 +118,28 @@ TEST(PathAreaSweep, TwoChainsInAPixelAreDecidedOnlyWhenTheyMeetTwoWindings) {
   EXPECT_EQ(up.alpha[8 + 1], 96); // three eighths of the pixel
 }
 
+// Three thin bars standing in one pixel column, through the target's rows: six edges apart in x
+// whose senses alternate (windings 0, 1, 0, 1, 0, 1, 0): decided. The middle bar the other way
+// round (windings 0, 1, 0, -1, 0, 1, 0): three values in a pixel under the nonzero rule's view of
+// the sum, declined.
+// rule: PATH.AREA.SWEEP
+TEST(PathAreaSweep, SeveralChainsApartMustAlternate) {
+  const auto bar = [](double x0, double x1, bool reverse) {
+    return reverse ? polygon({{x0, -1}, {x1, -1}, {x1, 4}, {x0, 4}})
+                   : polygon({{x0, -1}, {x0, 4}, {x1, 4}, {x1, -1}});
+  };
+  const path::Path same =
+      make_path(FillRule::kNonZero, {bar(1.125, 1.25, false), bar(1.5, 1.625, false),
+                                     bar(1.75, 1.875, false), curl(5)});
+  const Swept s = sweep(same, 8, 3);
+  EXPECT_TRUE(s.decided);
+  EXPECT_EQ(s.alpha[8 + 1], 96); // three bars of an eighth
+  const path::Path mixed =
+      make_path(FillRule::kEvenOdd,
+                {bar(1.125, 1.25, false), bar(1.5, 1.625, true), bar(1.75, 1.875, false), curl(5)});
+  EXPECT_FALSE(sweep(mixed, 8, 3).decided);
+}
+
 // Paths the sweep declines: a square drawn twice under even-odd (two runs that meet: the
 // conflation case, alpha 0 everywhere), a cubic with a small loop inside one pixel (a chain
 // that turns both ways), and a target of more than 2^18 cells.
