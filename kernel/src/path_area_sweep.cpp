@@ -145,7 +145,7 @@ private:
   bool build(const Boundary& b);
   bool add_curve_pieces(std::uint32_t si, std::uint32_t& id);
   void walk_flat(const Pt& a, const Pt& b, std::uint32_t id, int dirs);
-  bool walk_line(const Shape& s, std::uint32_t id, const Pt& a, const Pt& b, int sx, int sy);
+  bool walk_line(std::uint32_t id, const Pt& a, const Pt& b, int sx, int sy);
   bool walk_curve(const PieceRef& p, std::uint32_t id);
   // The root of x(t) = target (in_x) or y(t) = target on [lo, hi], where the coordinate runs
   // with sign sgn and crosses target strictly inside; a certified bracket [blo, bhi] and t.
@@ -170,7 +170,6 @@ private:
   // Per contour: the ids of its first and last pieces (ids run on within a contour and skip
   // one between contours, so that consecutive ids mean consecutive pieces of one contour).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> contours_;
-  std::vector<std::uint32_t> contour_of_;
   std::vector<Cell> cells_;
   std::vector<Seen> seen_;
   std::vector<std::uint8_t> runs_;
@@ -287,7 +286,7 @@ void Sweep::walk_flat(const Pt& a, const Pt& b, std::uint32_t id, int dirs) {
 // A line from a to b (exact integer end points), walked with exact integer tests for which
 // grid line comes first; crossing coordinates are one division each, within 2 u of their
 // magnitude.
-bool Sweep::walk_line(const Shape& s, std::uint32_t id, const Pt& a, const Pt& b, int sx, int sy) {
+bool Sweep::walk_line(std::uint32_t id, const Pt& a, const Pt& b, int sx, int sy) {
   const auto x0 = static_cast<std::int64_t>(a.x), y0 = static_cast<std::int64_t>(a.y);
   const auto x1 = static_cast<std::int64_t>(b.x), y1 = static_cast<std::int64_t>(b.y);
   const std::int64_t dx = x1 - x0, dy = y1 - y0;
@@ -299,7 +298,6 @@ bool Sweep::walk_line(const Shape& s, std::uint32_t id, const Pt& a, const Pt& b
     walk_flat(a, b, id, dirs);
     return true;
   }
-  (void)s;
   std::int64_t row = cell_of(static_cast<double>(y0), sy);
   std::int64_t col;
   bool on_col = false;
@@ -373,10 +371,9 @@ bool Sweep::root(const Shape& s, bool in_x, int sgn, double target, double lo, d
       const double r1 = qv / c[2], r2 = qv != 0 ? -target / qv : r1;
       const double slack = 0x1p-30;
       if (r1 >= lo - slack && r1 <= hi + slack)
-        t = r1;
+        t = std::clamp(r1, lo, hi);
       else if (r2 >= lo - slack && r2 <= hi + slack)
-        t = r2;
-      t = std::clamp(t, lo, hi);
+        t = std::clamp(r2, lo, hi);
     }
   }
   if (t < 0) {
@@ -901,7 +898,7 @@ bool Sweep::run(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h
     const PieceRef& p = pieces_[k];
     const Shape& s = shapes_[p.shape];
     const bool ok =
-        s.n == 1 ? walk_line(s, piece_id_[k], p.a, p.b, p.sx, p.sy) : walk_curve(p, piece_id_[k]);
+        s.n == 1 ? walk_line(piece_id_[k], p.a, p.b, p.sx, p.sy) : walk_curve(p, piece_id_[k]);
     if (!ok)
       return false;
   }
