@@ -29,7 +29,7 @@ constexpr std::int64_t kW = kSubpixelOne; // a pixel's side, raw
 constexpr double kWd = static_cast<double>(kW);
 constexpr double kU = 0x1p-53; // the unit roundoff of double
 // Coordinates and targets the sweep takes: |raw| <= 2^23 (power coefficients below 2^27, their
-// products below 2^58), cells (w + 1) h <= 2^18 (dense arrays of a few MiB at most).
+// products below 2^58), cells w h <= 2^18 (dense arrays of a few MiB at most).
 constexpr std::int64_t kMaxRaw = std::int64_t{1} << 23;
 constexpr std::size_t kMaxCells = std::size_t{1} << 18;
 // Covers are fixed point, 2^-kFix raw, so that a row's running sum is exact and a crossing
@@ -46,13 +46,6 @@ constexpr double kSplitMargin = 0x1p-10;
 [[gnu::always_inline]] inline double floor_of(double x) {
   const auto t = static_cast<double>(static_cast<std::int64_t>(x));
   return t > x ? t - 1 : t;
-}
-
-[[gnu::always_inline]] inline std::int64_t floor_div(std::int64_t a, std::int64_t b) {
-  std::int64_t q = a / b;
-  if ((a % b != 0) && ((a < 0) != (b < 0)))
-    --q;
-  return q;
 }
 
 // A line or curve in power form relative to its start (x0, y0): x(t) = x0 + sum ax[k] t^k,
@@ -130,7 +123,7 @@ struct Seen {
 constexpr int kStarts = 16, kEnds = 32;
 
 struct PieceRef {
-  std::uint32_t shape = 0;
+  std::uint32_t shape = 0, id = 0; // its shape, and its id (Sweep::contours_)
   double t0 = 0, t1 = 1;
   Pt a, b;
   int sx = 0, sy = 0;
@@ -166,7 +159,6 @@ private:
   std::vector<SegmentRef> refs_;
   std::vector<Shape> shapes_;
   std::vector<PieceRef> pieces_;
-  std::vector<std::uint32_t> piece_id_;
   // Per contour: the ids of its first and last pieces (ids run on within a contour and skip
   // one between contours, so that consecutive ids mean consecutive pieces of one contour).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> contours_;
@@ -251,12 +243,25 @@ std::int64_t fix_of(double y) {
   return static_cast<std::int64_t>(y * kFixScale);
 }
 
+// An end point with integer coordinates (raw): exact, its cover coordinate too.
+Pt exact_point(double x, double y) {
+  return Pt{x, y, static_cast<std::int64_t>(y) << kFix, 0};
+}
+
 // The cell of coordinate v moving with sign s: on a grid line, the cell it moves into.
 std::int64_t cell_of(double v, int s) {
   const double f = floor_of(v * (1 / kWd));
   if (f * kWd == v && s < 0)
     return static_cast<std::int64_t>(f) - 1;
   return static_cast<std::int64_t>(f);
+}
+
+// The column a piece starts in from x, moving with sign sx; on_col: it runs along that column's
+// left line (sx == 0 on a grid line), so the cell left of it holds it too.
+std::int64_t start_col(double x, int sx, bool& on_col) {
+  const std::int64_t col = cell_of(x, sx);
+  on_col = sx == 0 && x == static_cast<double>(col * kW);
+  return col;
 }
 
 // rule: PATH.AREA.SWEEP
@@ -298,15 +303,9 @@ bool Sweep::walk_line(std::uint32_t id, const Pt& a, const Pt& b, int sx, int sy
     walk_flat(a, b, id, dirs);
     return true;
   }
-  std::int64_t row = cell_of(static_cast<double>(y0), sy);
-  std::int64_t col;
+  std::int64_t row = cell_of(a.y, sy);
   bool on_col = false;
-  if (sx == 0) {
-    col = floor_div(x0, kW);
-    on_col = x0 == col * kW; // a vertical line on a column line: cell col, touched in col - 1
-  } else {
-    col = cell_of(static_cast<double>(x0), sx);
-  }
+  std::int64_t col = start_col(a.x, sx, on_col);
   Pt p = a;
   for (int guard = 0; guard < 4 * (w_ + h_) + 64; ++guard) {
     const std::int64_t X = sx > 0 ? (col + 1) * kW : col * kW;
@@ -430,15 +429,13 @@ bool Sweep::walk_curve(const PieceRef& p, std::uint32_t id) {
   const Shape& s = shapes_[p.shape];
   const int sx = p.sx, sy = p.sy;
   const int dirs = dirs_of(sx, sy);
-  std::int64_t col = cell_of(p.a.x, sx), row = cell_of(p.a.y, sy);
   if (sy == 0) {
     walk_flat(p.a, p.b, id, dirs); // y constant: a horizontal curve
     return true;
   }
-  const bool on_col =
-      sx == 0 && p.a.x == static_cast<double>(floor_div(static_cast<std::int64_t>(p.a.x), kW) * kW);
-  if (sx == 0)
-    col = floor_div(static_cast<std::int64_t>(p.a.x), kW);
+  std::int64_t row = cell_of(p.a.y, sy);
+  bool on_col = false;
+  std::int64_t col = start_col(p.a.x, sx, on_col);
   Pt a = p.a;
   double ta = p.t0, ta_lo = p.t0;
   double qa = s.q_at(ta), ya = s.y_at(ta);
@@ -573,15 +570,14 @@ bool Sweep::add_curve_pieces(std::uint32_t si, std::uint32_t& id) {
     for (int m = k;
          m > 0 && cuts[static_cast<std::size_t>(m)] < cuts[static_cast<std::size_t>(m - 1)]; --m)
       std::swap(cuts[static_cast<std::size_t>(m)], cuts[static_cast<std::size_t>(m - 1)]);
-  Pt a{s.x0, s.y0, static_cast<std::int64_t>(s.y0) << kFix, 0};
+  Pt a = exact_point(s.x0, s.y0);
   for (int k = 0; k + 1 < nc; ++k) {
     const double t0 = cuts[static_cast<std::size_t>(k)], t1 = cuts[static_cast<std::size_t>(k + 1)];
     if (!(t1 > t0))
       continue;
     Pt b;
     if (t1 == 1) {
-      b = Pt{s.x0 + s.ax[1] + s.ax[2] + s.ax[3], s.y0 + s.ay[1] + s.ay[2] + s.ay[3], 0, 0};
-      b.yfix = static_cast<std::int64_t>(b.y) << kFix;
+      b = exact_point(s.x0 + s.ax[1] + s.ax[2] + s.ax[3], s.y0 + s.ay[1] + s.ay[2] + s.ay[3]);
     } else {
       const double bx = s.x0 + s.x_at(t1), by = s.y0 + s.y_at(t1);
       if (near_line(bx) || near_line(by))
@@ -604,8 +600,8 @@ bool Sweep::add_curve_pieces(std::uint32_t si, std::uint32_t& id) {
     if ((!x_flat && (p.sx == 0 || sign_of(s.dx_at(tm)) != p.sx)) ||
         (!y_flat && (p.sy == 0 || sign_of(s.dy_at(tm)) != p.sy)))
       return false;
+    p.id = id++;
     pieces_.push_back(p);
-    piece_id_.push_back(id++);
     a = b;
   }
   return true;
@@ -618,12 +614,6 @@ bool Sweep::build(const Boundary& b) {
   std::uint32_t id = 0;
   std::size_t current = static_cast<std::size_t>(-1);
   for (const SegmentRef& r : refs) {
-    // Edges hold 64-bit coordinates; the range test below reads them as 32-bit points.
-    if (!r.curve) {
-      const Edge& e = b.lines[r.index];
-      if (std::max({std::abs(e.x0), std::abs(e.y0), std::abs(e.x1), std::abs(e.y1)}) > kMaxRaw)
-        return false;
-    }
     std::array<Point, 4> cp{};
     const int degree = control_points(b, r, cp);
     for (int k = 0; k <= degree; ++k) {
@@ -684,13 +674,12 @@ bool Sweep::build(const Boundary& b) {
     if (degree == 1) {
       PieceRef p;
       p.shape = si;
-      p.a = Pt{s.x0, s.y0, static_cast<std::int64_t>(s.y0) << kFix, 0};
-      p.b = Pt{s.x0 + s.ax[1], s.y0 + s.ay[1], 0, 0};
-      p.b.yfix = static_cast<std::int64_t>(p.b.y) << kFix;
+      p.a = exact_point(s.x0, s.y0);
+      p.b = exact_point(s.x0 + s.ax[1], s.y0 + s.ay[1]);
       p.sx = sign_of(s.ax[1]);
       p.sy = sign_of(s.ay[1]);
+      p.id = id++;
       pieces_.push_back(p);
-      piece_id_.push_back(id++);
     } else if (!add_curve_pieces(si, id)) {
       return false;
     }
@@ -885,7 +874,6 @@ bool Sweep::run(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h
     return false;
   shapes_.clear();
   pieces_.clear();
-  piece_id_.clear();
   contours_.clear();
   if (!build(b))
     return false;
@@ -894,11 +882,9 @@ bool Sweep::run(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h
   runs_.assign(cells, 0);
   seen_.clear();
   left_cover_.assign(static_cast<std::size_t>(h), 0);
-  for (std::size_t k = 0; k < pieces_.size(); ++k) {
-    const PieceRef& p = pieces_[k];
-    const Shape& s = shapes_[p.shape];
+  for (const PieceRef& p : pieces_) {
     const bool ok =
-        s.n == 1 ? walk_line(piece_id_[k], p.a, p.b, p.sx, p.sy) : walk_curve(p, piece_id_[k]);
+        shapes_[p.shape].n == 1 ? walk_line(p.id, p.a, p.b, p.sx, p.sy) : walk_curve(p, p.id);
     if (!ok)
       return false;
   }
