@@ -317,7 +317,6 @@ struct End {
   int dw = 0;
 };
 
-// A segment of the path by contour and segment (walk's order).
 class FastAlpha {
 public:
   // Starts a path: the buffers keep their room from the last one (one workspace a thread).
@@ -935,6 +934,15 @@ bool FastAlpha::walk(const Boundary& b) {
                             s.y.c[2] == 0 && s.y.c[3] == 0;
     if (degenerate)
       continue; // a point (PATH.DEGENERATE)
+    // A curve that runs along a grid line (x or y constant on it, back and forth) is left to the
+    // exact methods: along the target's right side x = w its sub-arcs were given the alpha of
+    // a cover they do not have (PathCurveArea.FastCellsGiveTheAlphaOfTheArea, seed
+    // 4470124809348599784).
+    const auto along = [&](const Poly& f, std::int32_t v0) {
+      return f.c[1] == 0 && f.c[2] == 0 && f.c[3] == 0 && (v0 & (kW - 1)) == 0;
+    };
+    if (degree > 1 && (along(s.x, cp[0].x) || along(s.y, cp[0].y)))
+      return false;
     // Q(t) = integral of (x(s) - x0) y'(s): the coefficient of t^k is M_k / k, M_k the sum of
     // a_i j b_j over i + j = k, an integer (|raw| <= 2^23 makes |a_i|, |b_j| <= 12 2^23 < 2^27,
     // so |M_k| <= 3 * 3 * 2^54 < 2^58: exact in 64 bits), rounded once to a double m and divided

@@ -135,6 +135,23 @@ TEST(PathAreaFast, RegressionAnEdgeAlongAColumnLineRightOfTheTarget) {
   EXPECT_EQ(a.fast[7], 128);
 }
 
+// A cubic whose control points all lie on the target's right side x = w, running up and down
+// along it, closed by lines into the target: the fast cells gave pixel (3, 0) alpha 26 for the
+// exact 114 (PathCurveArea.FastCellsGiveTheAlphaOfTheArea, seed 4470124809348599784, shrunk).
+// Curves along a grid line now go to the exact methods.
+// rule: PATH.AREA.FAST
+TEST(PathAreaFast, RegressionACurveAlongTheTargetsRightSide) {
+  path::Contour c;
+  c.start = path::Point{-192, 0};
+  c.segments = {
+      path::Segment{path::SegmentKind::kLine, {path::Point{1024, -192}, {}, {}}},
+      path::Segment{path::SegmentKind::kCubic,
+                    {path::Point{1024, 288}, path::Point{1024, -32}, path::Point{1024, 128}}}};
+  const Alphas a = alphas(make_path(FillRule::kNonZero, {c}), 4, 4);
+  EXPECT_EQ(a.fast[3], 114);
+  EXPECT_EQ(a.rows.fast, 0u);
+}
+
 // Curved pixels whose exact alpha is a tie of the rounding: a quadratic with y linear in t
 // (its control point halfway up) across one pixel row covers (x0 + x1 + x2) / 3 - left of the
 // pixel, here 128 / 3 raw over 256, an area of exactly 1/6: 510 a = 85, the boundary between
