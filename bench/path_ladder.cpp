@@ -625,8 +625,8 @@ std::string markdown(const std::vector<SceneResult>& results, const std::string&
   if (curved) {
     o << "\n## Curved outlines: exact alpha against FreeType's gray raster (same curved "
          "outlines)\n\n";
-    o << "The kernel's cover_area_alpha (the certified sweep, PATH.AREA.SWEEP; where it declines "
-         "a glyph, certified floating-point cells, PATH.AREA.FAST, the exact methods behind them) "
+    o << "The kernel's cover_area_alpha (the certified sweep, PATH.AREA.SWEEP; for the rows it "
+         "leaves, certified floating-point cells, PATH.AREA.FAST, the exact methods behind them) "
          "and FreeType gray on the same curved outlines, alternating. Rows: those the sweep "
          "decided, and those the fast cells decided of the rest, of all rows. Differ: pixels more "
          "than one level apart (FreeType flattens curves and accumulates signed areas).\n\n";

@@ -800,18 +800,25 @@ void cover_alpha_by(const Path& path, std::int32_t w, std::int32_t h, AreaMethod
   boundary_into(path, b);
   thread_local std::vector<std::uint8_t> undecided;
   undecided.clear();
+  // Rows decided by the sweep, then the fast cells; the others (undecided) go to the exact
+  // methods.
+  std::size_t swept = 0;
   if (method == AreaMethod::kSweep) {
-    if (alpha_sweep(b, path.fill_rule, w, h, out)) {
-      if (rows != nullptr)
-        rows->swept += static_cast<std::size_t>(h);
-      return;
-    }
-    method = AreaMethod::kFast; // declined: the certified cells, then the exact methods
+    if (alpha_sweep(b, path.fill_rule, w, h, out, undecided))
+      swept = static_cast<std::size_t>(std::count(undecided.begin(), undecided.end(), 0));
+    if (rows != nullptr)
+      rows->swept += swept;
+    method = AreaMethod::kFast; // the rows it left (all, where it declined the path)
   }
   if (method == AreaMethod::kFast) {
-    alpha_fast(b, path.fill_rule, w, h, out, undecided);
-    if (rows != nullptr)
-      rows->fast += static_cast<std::size_t>(std::count(undecided.begin(), undecided.end(), 0));
+    if (swept < static_cast<std::size_t>(h)) {
+      thread_local std::vector<std::uint8_t> left;
+      left.assign(undecided.begin(), undecided.end());
+      alpha_fast(b, path.fill_rule, w, h, out, undecided, swept > 0 ? &left : nullptr);
+      if (rows != nullptr)
+        rows->fast +=
+            static_cast<std::size_t>(std::count(undecided.begin(), undecided.end(), 0)) - swept;
+    }
     for (std::size_t j = 0; j < undecided.size(); ++j)
       if (undecided[j] != 0)
         std::fill_n(out.begin() + static_cast<std::ptrdiff_t>(j * stride), stride, std::uint8_t{0});

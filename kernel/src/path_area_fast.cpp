@@ -291,6 +291,7 @@ struct Piece {
   EPoint p0, p1;
   int sx = 0, sy = 0; // signs of dx/dt and dy/dt on (t0, t1)
   bool line = false;  // shape is a line of the path (exact integer ends)
+  bool gap = false;   // a shape before it was left out (its rows are not wanted)
 };
 
 // Which side of its cell a point of a sub-arc lies on (none: inside).
@@ -320,10 +321,17 @@ struct End {
 class FastAlpha {
 public:
   // Starts a path: the buffers keep their room from the last one (one workspace a thread).
-  void reset(FillRule rule, std::int32_t w, std::int32_t h) {
+  // only: the rows wanted (a byte a row, 1: wanted), or null for all.
+  void reset(FillRule rule, std::int32_t w, std::int32_t h, const std::vector<std::uint8_t>* only) {
     rule_ = rule;
     w_ = w;
     h_ = h;
+    only_ = only;
+    if (only != nullptr) {
+      wanted_before_.assign(static_cast<std::size_t>(h) + 1, 0);
+      for (std::size_t j = 0; j < static_cast<std::size_t>(h); ++j)
+        wanted_before_[j + 1] = wanted_before_[j] + ((*only)[j] != 0 ? 1 : 0);
+    }
     shapes_.clear();
     pieces_.clear();
     subs_.clear();
@@ -333,6 +341,7 @@ public:
     last_row_ = last_idx_ = first_row_ = first_idx_ = -1;
     last_seq_ = first_seq_ = 0;
     q_shape_ = static_cast<std::uint32_t>(-1);
+    gap_ = false;
   }
 
   // Builds the pieces and walks them; false where the walk is in doubt (the exact methods then
@@ -344,6 +353,11 @@ public:
   bool row(std::int32_t j, std::uint8_t* out);
 
 private:
+  // Whether a wanted row lies within one row of the raw heights y0 to y1.
+  [[nodiscard]] bool wanted_near(double y0, double y1) const;
+  [[nodiscard]] bool wanted(std::int32_t row) const {
+    return only_ == nullptr || (*only_)[static_cast<std::size_t>(row)] != 0;
+  }
   bool add_shape_pieces(std::uint32_t s, int degree);
   bool walk_piece(std::uint32_t pi);
   void emit(std::int32_t row, std::int32_t col, std::uint32_t pi, E ta, E tb, const EPoint& a,
@@ -365,6 +379,9 @@ private:
 
   FillRule rule_ = FillRule::kNonZero;
   std::int32_t w_ = 0, h_ = 0;
+  const std::vector<std::uint8_t>* only_ = nullptr;
+  std::vector<std::uint32_t> wanted_before_; // wanted rows before row j (only_ given)
+  bool gap_ = false;                         // a shape left out since the last piece
   std::vector<Shape> shapes_;
   std::vector<Piece> pieces_;
   std::vector<Sub> subs_, gathered_;
@@ -391,6 +408,18 @@ private:
 };
 
 // ---------------------------------------------------------------------------------------------
+
+bool FastAlpha::wanted_near(double y0, double y1) const {
+  if (only_ == nullptr)
+    return true;
+  const double lo = std::floor(std::min(y0, y1) / kW) - 1;
+  const double hi = std::floor(std::max(y0, y1) / kW) + 1;
+  if (hi < 0 || lo >= h_)
+    return false;
+  const auto a = static_cast<std::size_t>(std::max(lo, 0.0));
+  const auto b = static_cast<std::size_t>(std::min(hi, h_ - 1.0));
+  return wanted_before_[b + 1] > wanted_before_[a];
+}
 
 EPoint FastAlpha::point_at_exact(const Shape& s, E t) const {
   return EPoint{add(exact(static_cast<double>(s.x0)), s.x.at_exact(t)),
@@ -631,6 +660,8 @@ bool FastAlpha::add_shape_pieces(std::uint32_t si, int degree) {
     const int ex = sign_of(sub(p.p1.x, p.p0.x)), ey = sign_of(sub(p.p1.y, p.p0.y));
     if (ex != p.sx || ey != p.sy)
       return false;
+    p.gap = gap_;
+    gap_ = false;
     pieces_.push_back(p);
   }
   return true;
@@ -639,7 +670,7 @@ bool FastAlpha::add_shape_pieces(std::uint32_t si, int degree) {
 void FastAlpha::emit(std::int32_t row, std::int32_t col, std::uint32_t pi, E ta, E tb,
                      const EPoint& a, const EPoint& b, Side sa, Side sb, bool interior) {
   const std::uint64_t seq = ++seq_;
-  if (row < 0 || row >= h_ || col < 0) {
+  if (row < 0 || row >= h_ || col < 0 || !wanted(row)) {
     last_row_ = -1; // a gap: the next sub-arc cannot link to anything before it
     return;
   }
@@ -934,6 +965,19 @@ bool FastAlpha::walk(const Boundary& b) {
                             s.y.c[2] == 0 && s.y.c[3] == 0;
     if (degenerate)
       continue; // a point (PATH.DEGENERATE)
+    // A shape with no wanted row within a row of its control points (whose box holds it) has
+    // no part in them; the pieces after it must not link to those before it.
+    {
+      double y_lo = cp[0].y, y_hi = y_lo;
+      for (int k = 1; k <= degree; ++k) {
+        y_lo = std::min<double>(y_lo, cp[static_cast<std::size_t>(k)].y);
+        y_hi = std::max<double>(y_hi, cp[static_cast<std::size_t>(k)].y);
+      }
+      if (!wanted_near(y_lo, y_hi)) {
+        gap_ = true;
+        continue;
+      }
+    }
     // A curve that runs along a grid line (x or y constant on it, back and forth) is left to the
     // exact methods: along the target's right side x = w its sub-arcs were given the alpha of
     // a cover they do not have (PathCurveArea.FastCellsGiveTheAlphaOfTheArea, seed
@@ -982,6 +1026,8 @@ bool FastAlpha::walk(const Boundary& b) {
       p.p1 = EPoint{exact(static_cast<double>(cp[1].x)), exact(static_cast<double>(cp[1].y))};
       p.sx = s.x.c[1] > 0 ? 1 : (s.x.c[1] < 0 ? -1 : 0);
       p.sy = s.y.c[1] > 0 ? 1 : (s.y.c[1] < 0 ? -1 : 0);
+      p.gap = gap_;
+      gap_ = false;
       pieces_.push_back(p);
     } else if (!add_shape_pieces(si, degree)) {
       return false;
@@ -996,9 +1042,14 @@ bool FastAlpha::walk(const Boundary& b) {
     first_seq_ = seq_ + 1;
     first_row_ = -1;
     last_row_ = -1;
-    for (std::size_t pi = first; pi < end; ++pi)
+    for (std::size_t pi = first; pi < end; ++pi) {
+      if (pieces_[pi].gap && pi > first) {
+        last_row_ = -1; // no link across the shapes left out
+        ++seq_;
+      }
       if (!walk_piece(static_cast<std::uint32_t>(pi)))
         return false;
+    }
     if (last_row_ >= 0 && first_row_ == last_row_ && first_idx_ != last_idx_) {
       std::vector<Sub>& r = subs_;
       if (r[static_cast<std::size_t>(first_idx_)].col == r[static_cast<std::size_t>(last_idx_)].col)
@@ -1563,16 +1614,23 @@ bool FastAlpha::row(std::int32_t j, std::uint8_t* out) {
 
 // rule: PATH.AREA.FAST
 bool alpha_fast(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,
-                std::span<std::uint8_t> out, std::vector<std::uint8_t>& undecided) {
+                std::span<std::uint8_t> out, std::vector<std::uint8_t>& undecided,
+                const std::vector<std::uint8_t>* only) {
+  const auto wanted = [&](std::int32_t j) {
+    return only == nullptr || (*only)[static_cast<std::size_t>(j)] != 0;
+  };
   undecided.assign(static_cast<std::size_t>(h), 1);
   thread_local FastAlpha f;
-  f.reset(rule, w, h);
-  if (!f.walk(b))
+  f.reset(rule, w, h, only);
+  if (!f.walk(b)) {
+    for (std::int32_t j = 0; j < h; ++j)
+      undecided[static_cast<std::size_t>(j)] = wanted(j) ? 1 : 0;
     return false;
+  }
   f.sort_rows();
   for (std::int32_t j = 0; j < h; ++j) {
     std::uint8_t* row = out.data() + static_cast<std::size_t>(j) * static_cast<std::size_t>(w);
-    undecided[static_cast<std::size_t>(j)] = f.row(j, row) ? 0 : 1;
+    undecided[static_cast<std::size_t>(j)] = wanted(j) && !f.row(j, row) ? 1 : 0;
   }
   return true;
 }

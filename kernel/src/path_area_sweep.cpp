@@ -5,10 +5,10 @@
 // area and cover added to dense cells, and a row swept left to right. Every number's error has
 // a bound fixed in advance per piece (not carried through each operation), a cell's chains are
 // checked with a few bits, and the alpha of a cell is written only where that bound and those
-// bits decide it; anything else (a doubtful crossing order, a cell that may hold three winding
-// numbers, a rounding the bound cannot decide, a path too large for dense cells) declines the
-// whole path, which then goes to PATH.AREA.FAST and the exact methods. So the alphas never
-// depend on this rule; only the time does.
+// bits decide it; a doubtful crossing order, a curve not cut into certified pieces, a cell that
+// may hold three winding numbers or a rounding the bound cannot decide leaves the rows it
+// touches to PATH.AREA.FAST and the exact methods, and a path too large for dense cells is
+// declined whole. So the alphas never depend on this rule; only the time does.
 // Implements: PATH.AREA.SWEEP
 
 #include <algorithm>
@@ -132,7 +132,7 @@ struct PieceRef {
 class Sweep {
 public:
   bool run(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,
-           std::span<std::uint8_t> out);
+           std::span<std::uint8_t> out, std::vector<std::uint8_t>& undecided);
 
 private:
   bool build(const Boundary& b);
@@ -151,7 +151,10 @@ private:
   bool record(std::int64_t row, std::int64_t col, std::uint32_t id, int dirs, bool first, bool last,
               double area, double err, const Pt& a, const Pt& n, bool on_col);
   bool two_windings(const Cell& c, std::uint8_t runs) const;
-  bool sweep(std::span<std::uint8_t> out) const;
+  void sweep(std::span<std::uint8_t> out);
+  bool sweep_row(std::size_t r, std::uint8_t* row) const;
+  // Leaves the rows from raw height y0 to y1 (and one more each way) to the other methods.
+  void doubt(double y0, double y1);
 
   FillRule rule_ = FillRule::kNonZero;
   std::int32_t w_ = 0, h_ = 0;
@@ -166,7 +169,15 @@ private:
   std::vector<Seen> seen_;
   std::vector<std::uint8_t> runs_;
   std::vector<std::int64_t> left_cover_; // a row's cover left of the target
+  std::uint8_t* doubted_ = nullptr;      // a byte a row: 1 where the sweep does not decide it
 };
+
+void Sweep::doubt(double y0, double y1) {
+  const double lo = std::max(floor_of(std::min(y0, y1) * (1 / kWd)) - 1, 0.0);
+  const double hi = std::min(floor_of(std::max(y0, y1) * (1 / kWd)) + 1, h_ - 1.0);
+  for (double j = lo; j <= hi; ++j)
+    doubted_[static_cast<std::size_t>(j)] = 1;
+}
 
 // rule: PATH.AREA.SWEEP
 // A walk's visit from a to n (the piece's first, its last), and on a column line its touch of
@@ -454,23 +465,32 @@ bool Sweep::walk_curve(const PieceRef& p, std::uint32_t id) {
     bool step_x = false, step_y = false;
     if (reach_x || reach_y) {
       // A crossing found but not taken stays valid while its line is still the next one.
+      // A crossing without a certified bracket, or two that may coincide (near a grid
+      // corner): the cells of the rest of the piece are not known, so the rows it spans
+      // from here are left (the rows before hold all of its visits there).
       if (reach_x && X != x_line) {
-        if (!root(s, true, sx, Xd - s.x0, ta_lo, p.t1, a.x - Xd, p.b.x - Xd, txt, txl, txh))
-          return false;
+        if (!root(s, true, sx, Xd - s.x0, ta_lo, p.t1, a.x - Xd, p.b.x - Xd, txt, txl, txh)) {
+          doubt(a.y, p.b.y);
+          return true;
+        }
         x_line = X;
       }
       if (reach_y && Y != y_line) {
-        if (!root(s, false, sy, Yd - s.y0, ta_lo, p.t1, a.y - Yd, p.b.y - Yd, tyt, tyl, tyh))
-          return false;
+        if (!root(s, false, sy, Yd - s.y0, ta_lo, p.t1, a.y - Yd, p.b.y - Yd, tyt, tyl, tyh)) {
+          doubt(a.y, p.b.y);
+          return true;
+        }
         y_line = Y;
       }
       if (reach_x && reach_y) {
-        if (txh < tyl)
+        if (txh < tyl) {
           step_x = true;
-        else if (tyh < txl)
+        } else if (tyh < txl) {
           step_y = true;
-        else
-          return false; // the crossings may coincide (near a grid corner)
+        } else {
+          doubt(a.y, p.b.y);
+          return true;
+        }
       } else {
         step_x = reach_x;
         step_y = reach_y;
@@ -671,6 +691,7 @@ bool Sweep::build(const Boundary& b) {
     s.qerr = 32 * kU * q_abs;
     const auto si = static_cast<std::uint32_t>(shapes_.size());
     shapes_.push_back(s);
+    const std::size_t first_piece = pieces_.size();
     if (degree == 1) {
       PieceRef p;
       p.shape = si;
@@ -681,7 +702,17 @@ bool Sweep::build(const Boundary& b) {
       p.id = id++;
       pieces_.push_back(p);
     } else if (!add_curve_pieces(si, id)) {
-      return false;
+      // A curve not cut into certified monotone pieces (extrema too close to tell, or near a
+      // grid line): the rows of its control points' box are not the sweep's, and the curve
+      // is left out (an id apart: no piece is joined to it).
+      pieces_.resize(first_piece);
+      ++id;
+      double y_lo = cp[0].y, y_hi = y_lo;
+      for (int k = 1; k <= degree; ++k) {
+        y_lo = std::min<double>(y_lo, cp[static_cast<std::size_t>(k)].y);
+        y_hi = std::max<double>(y_hi, cp[static_cast<std::size_t>(k)].y);
+      }
+      doubt(y_lo, y_hi);
     }
     contours_.back().second = id - 1;
   }
@@ -801,103 +832,126 @@ bool Sweep::two_windings(const Cell& c, std::uint8_t runs) const {
 }
 
 // rule: PATH.AREA.SWEEP, PATH.AREA.ALPHA
-bool Sweep::sweep(std::span<std::uint8_t> out) const {
+void Sweep::sweep(std::span<std::uint8_t> out) {
   const auto w = static_cast<std::size_t>(w_);
-  constexpr std::int64_t kWhole = kW << kFix; // a whole winding's cover
   for (std::int32_t j = 0; j < h_; ++j) {
     const auto r = static_cast<std::size_t>(j);
-    const std::size_t at = r * stride_;
-    std::int64_t s = left_cover_[r]; // the cover left of the cell
-    std::uint8_t* row = out.data() + r * w;
-    // The alpha of a cell without boundary after the last cell with some (-1: not yet known).
-    int empty_alpha = -1;
-    for (std::size_t k = 0; k < w; ++k) {
-      const std::uint8_t runs = runs_[at + k];
-      if (runs == 0) {
-        // No boundary in the cell: one winding number, minus the cover left of it, exact
-        // (every point of the boundary left of it is shared by two visits there, in fixed
-        // point, or lies on a row line).
-        if (empty_alpha < 0) {
-          if (s % kWhole != 0)
-            return false;
-          empty_alpha = fill_holds(rule_, -s / kWhole) ? 255 : 0;
-        }
-        row[k] = static_cast<std::uint8_t>(empty_alpha);
-        continue;
-      }
-      empty_alpha = -1;
-      const Cell& c = cells_[at + k];
-      if (!two_windings(c, runs))
-        return false;
-      // I = the integral of w over the cell (raw^2): the winding at a point is minus the cover
-      // left of it; c.area is the integral of (x - left) dy.
-      const std::int64_t cs = s + c.cover;
-      const double integral = c.area - kWd * (static_cast<double>(cs) * (1 / kFixScale));
-      const double v = integral * (1.0 / (kWd * kWd));
-      const double m = floor_of(v);
-      const double f0 = fill_holds(rule_, static_cast<std::int64_t>(m)) ? 1.0 : 0.0;
-      const double f1 = fill_holds(rule_, static_cast<std::int64_t>(m) + 1) ? 1.0 : 0.0;
-      const double x = 510 * (f0 + (f1 - f0) * (v - m));
-      const auto alpha_at = [](double y) {
-        return std::clamp<std::int64_t>((static_cast<std::int64_t>(floor_of(y)) + 1) >> 1, 0, 255);
-      };
-      const std::int64_t alpha = alpha_at(x);
-      // The cell's own visits bound its error: every other point in the cover left of it is
-      // shared by two visits there and cancels, and what it shares with the cells right of it
-      // is its own visits' end points.
-      const double e = c.err;
-      if (e > 0) {
-        // |510 a - 510 a_true| <= 510 (the integral's bound / 2^16 + the roundings of the
-        // integral and of v - m, a and x: 4 u (|v| + 1) and 2^-40); the alpha, clamped to
-        // [0, 255] as the true 510 a lies in [0, 510], must be the same at both ends.
-        const double d =
-            510 * (e * (1.0 / (kWd * kWd)) + 4 * kU * (std::abs(v) + 1)) * (1 + 0x1p-40) + 0x1p-40;
-        if (alpha_at(x - d) != alpha || alpha_at(x + d) != alpha)
+    if (doubted_[r] != 0 || !sweep_row(r, out.data() + r * w))
+      doubted_[r] = 1;
+  }
+}
+
+// rule: PATH.AREA.SWEEP, PATH.AREA.ALPHA
+// Row r's alphas, or false where a cell may hold more than two winding numbers or its bound
+// does not decide its rounding.
+bool Sweep::sweep_row(std::size_t r, std::uint8_t* row) const {
+  const auto w = static_cast<std::size_t>(w_);
+  constexpr std::int64_t kWhole = kW << kFix; // a whole winding's cover
+  const std::size_t at = r * stride_;
+  std::int64_t s = left_cover_[r]; // the cover left of the cell
+  // The alpha of a cell without boundary after the last cell with some (-1: not yet known).
+  int empty_alpha = -1;
+  for (std::size_t k = 0; k < w; ++k) {
+    const std::uint8_t runs = runs_[at + k];
+    if (runs == 0) {
+      // No boundary in the cell: one winding number, minus the cover left of it, exact
+      // (every point of the boundary left of it is shared by two visits there, in fixed
+      // point, or lies on a row line).
+      if (empty_alpha < 0) {
+        if (s % kWhole != 0)
           return false;
+        empty_alpha = fill_holds(rule_, -s / kWhole) ? 255 : 0;
       }
-      row[k] = static_cast<std::uint8_t>(alpha);
-      s = cs;
+      row[k] = static_cast<std::uint8_t>(empty_alpha);
+      continue;
     }
+    empty_alpha = -1;
+    const Cell& c = cells_[at + k];
+    if (!two_windings(c, runs))
+      return false;
+    // I = the integral of w over the cell (raw^2): the winding at a point is minus the cover
+    // left of it; c.area is the integral of (x - left) dy.
+    const std::int64_t cs = s + c.cover;
+    const double integral = c.area - kWd * (static_cast<double>(cs) * (1 / kFixScale));
+    const double v = integral * (1.0 / (kWd * kWd));
+    const double m = floor_of(v);
+    const double f0 = fill_holds(rule_, static_cast<std::int64_t>(m)) ? 1.0 : 0.0;
+    const double f1 = fill_holds(rule_, static_cast<std::int64_t>(m) + 1) ? 1.0 : 0.0;
+    const double x = 510 * (f0 + (f1 - f0) * (v - m));
+    const auto alpha_at = [](double y) {
+      return std::clamp<std::int64_t>((static_cast<std::int64_t>(floor_of(y)) + 1) >> 1, 0, 255);
+    };
+    const std::int64_t alpha = alpha_at(x);
+    // The cell's own visits bound its error: every other point in the cover left of it is
+    // shared by two visits there and cancels, and what it shares with the cells right of it
+    // is its own visits' end points.
+    const double e = c.err;
+    if (e > 0) {
+      // |510 a - 510 a_true| <= 510 (the integral's bound / 2^16 + the roundings of the
+      // integral and of v - m, a and x: 4 u (|v| + 1) and 2^-40); the alpha, clamped to
+      // [0, 255] as the true 510 a lies in [0, 510], must be the same at both ends.
+      const double d =
+          510 * (e * (1.0 / (kWd * kWd)) + 4 * kU * (std::abs(v) + 1)) * (1 + 0x1p-40) + 0x1p-40;
+      if (alpha_at(x - d) != alpha || alpha_at(x + d) != alpha)
+        return false;
+    }
+    row[k] = static_cast<std::uint8_t>(alpha);
+    s = cs;
   }
   return true;
 }
 
 // rule: PATH.AREA.SWEEP
 bool Sweep::run(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,
-                std::span<std::uint8_t> out) {
+                std::span<std::uint8_t> out, std::vector<std::uint8_t>& undecided) {
+  if (w <= 0 || h <= 0) {
+    undecided.clear();
+    return true;
+  }
   rule_ = rule;
   w_ = w;
   h_ = h;
   stride_ = static_cast<std::size_t>(w);
   const std::size_t cells = stride_ * static_cast<std::size_t>(h);
+  undecided.assign(static_cast<std::size_t>(h), 1);
   if (cells > kMaxCells)
     return false;
+  std::fill(undecided.begin(), undecided.end(), std::uint8_t{0});
+  doubted_ = undecided.data();
   shapes_.clear();
   pieces_.clear();
   contours_.clear();
-  if (!build(b))
-    return false;
-  if (cells_.size() < cells)
-    cells_.resize(cells);
-  runs_.assign(cells, 0);
-  seen_.clear();
-  left_cover_.assign(static_cast<std::size_t>(h), 0);
-  for (const PieceRef& p : pieces_) {
-    const bool ok =
-        shapes_[p.shape].n == 1 ? walk_line(p.id, p.a, p.b, p.sx, p.sy) : walk_curve(p, p.id);
-    if (!ok)
+  const auto walk = [&] {
+    if (!build(b))
       return false;
+    if (cells_.size() < cells)
+      cells_.resize(cells);
+    runs_.assign(cells, 0);
+    seen_.clear();
+    left_cover_.assign(static_cast<std::size_t>(h), 0);
+    for (const PieceRef& p : pieces_) {
+      const bool ok =
+          shapes_[p.shape].n == 1 ? walk_line(p.id, p.a, p.b, p.sx, p.sy) : walk_curve(p, p.id);
+      if (!ok)
+        return false;
+    }
+    return true;
+  };
+  if (!walk()) {
+    std::fill(undecided.begin(), undecided.end(), std::uint8_t{1});
+    return false;
   }
-  return sweep(out);
+  sweep(out);
+  return true;
 }
 
 } // namespace
 
 // rule: PATH.AREA.SWEEP
 bool alpha_sweep(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,
-                 std::span<std::uint8_t> out) {
+                 std::span<std::uint8_t> out, std::vector<std::uint8_t>& undecided) {
   thread_local Sweep s;
-  return s.run(b, rule, w, h, out);
+  return s.run(b, rule, w, h, out, undecided);
 }
 
 } // namespace rastrules::path::detail

@@ -326,22 +326,26 @@ private:
 // or by slabs alone (PATH.AREA.EXACT's computation, for tests that compare the two).
 // kFast (cover_area_alpha alone) tries the certified floating-point cells of PATH.AREA.FAST first
 // and leaves the rows they do not decide to kCells; kSweep (cover_area_alpha alone) tries
-// PATH.AREA.SWEEP on the whole path first and, where it declines, goes on as kFast.
+// PATH.AREA.SWEEP first and leaves the rows it does not decide to kCells, or, where it declines
+// the whole path, goes on as kFast.
 enum class AreaMethod { kCells, kSlabs, kFast, kSweep };
 // Rows decided each way (rows no edge reaches into are neither; kFast counts every row it
-// decides, those without edges too; swept: every row of a path PATH.AREA.SWEEP decided).
+// decides, those without edges too; swept: every row PATH.AREA.SWEEP decides, likewise).
 struct AreaRows {
   std::size_t cells = 0, slabs = 0, fast = 0, swept = 0;
 };
 // PATH.AREA.FAST: writes the alpha of every row it decides into out (w * h bytes) and marks
 // the others in undecided (1: left for the exact methods); false where it declines the whole
-// path (then every row is marked).
+// path (then every row is marked). Only the rows marked in only, where given, are its (the
+// others are neither written nor marked).
 bool alpha_fast(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,
-                std::span<std::uint8_t> out, std::vector<std::uint8_t>& undecided);
-// PATH.AREA.SWEEP: writes the alpha of every pixel into out (w * h bytes) and returns true, or
-// returns false (out then holds anything) where it declines the path.
+                std::span<std::uint8_t> out, std::vector<std::uint8_t>& undecided,
+                const std::vector<std::uint8_t>* only = nullptr);
+// PATH.AREA.SWEEP: writes the alpha of every row it decides into out (w * h bytes) and marks
+// the others in undecided (1: left for the other methods; their bytes of out hold anything);
+// false where it declines the whole path (then every row is marked).
 bool alpha_sweep(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h,
-                 std::span<std::uint8_t> out);
+                 std::span<std::uint8_t> out, std::vector<std::uint8_t>& undecided);
 // cover_area by the method given; rows, when not null, counts the rows.
 void cover_area_by(const Path& path, std::int32_t w, std::int32_t h, AreaMethod method,
                    const std::function<void(const AreaCoverage&)>& emit, AreaRows* rows);

@@ -100,8 +100,11 @@ void check_methods_agree(const pg::GPath& g, std::int32_t side) {
       RC_CLASSIFY(rows.fast > 0 && rows.fast < static_cast<std::size_t>(side), "fast: some rows");
       RC_CLASSIFY(rows.fast == 0, "fast: no row");
     }
-    if (m == kd::AreaMethod::kSweep) // PATH.AREA.SWEEP: the whole path, or declined
-      RC_CLASSIFY(rows.swept > 0, "sweep: decided");
+    if (m == kd::AreaMethod::kSweep) { // PATH.AREA.SWEEP: the rows it decides, and the others
+      RC_CLASSIFY(rows.swept == static_cast<std::size_t>(side), "sweep: every row");
+      RC_CLASSIFY(rows.swept > 0 && rows.swept < static_cast<std::size_t>(side),
+                  "sweep: some rows");
+    }
     for (std::size_t k = 0; k < alpha.size(); ++k)
       if (alpha[k] != expected[k])
         RC_FAIL("alpha by method " + std::to_string(static_cast<int>(m)) + " at pixel (" +

@@ -299,10 +299,50 @@ RC_GTEST_PROP(PathCurveArea, FastCellsGiveTheAlphaOfTheArea, ()) {
               std::to_string(lo[at]) + " to " + std::to_string(hi[at]));
 }
 
-// The certified sweep (PATH.AREA.SWEEP), where it decides the path, gives every pixel the
-// alpha of its area as the fast cells do: within the alphas of cover_area's [A - E, A + E].
-// Each case says whether it decided; where it declines, cover_area_alpha's answer (the sweep
-// first) must still be the exact methods'.
+// The fast cells asked for some rows only (as for the rows the sweep leaves): the shapes far
+// from them are left out and the sub-arcs in other rows dropped, which must neither change a
+// wanted row's alphas nor touch or mark any other row.
+// rule: PATH.AREA.FAST, PATH.AREA.ALPHA, PATH.AREA.CURVE
+RC_GTEST_PROP(PathCurveArea, FastCellsOnSomeRowsKeepToThem, ()) {
+  const pg::GPath p = curve_path();
+  pc::show_path(p);
+  const kp::Path k = to_kernel(p);
+  namespace kd = rastrules::path::detail;
+  const auto stride = static_cast<std::size_t>(kSide);
+  std::vector<std::uint8_t> only(stride);
+  for (std::uint8_t& b : only)
+    b = *rc::gen::inRange(0, 4) == 0 ? 1 : 0;
+  RC_CLASSIFY(std::count(only.begin(), only.end(), 1) <= 1, "one row wanted or none");
+  const auto [lo, hi] = alpha_interval(k, kSide);
+  std::vector<std::uint8_t> alpha(stride * stride, 7), undecided;
+  kd::alpha_fast(kd::boundary_of(k), k.fill_rule, kSide, kSide, alpha, undecided, &only);
+  RC_ASSERT(undecided.size() == stride);
+  std::size_t decided = 0;
+  for (std::size_t at = 0; at < alpha.size(); ++at) {
+    const std::size_t j = at / stride;
+    const auto where = "pixel (" + std::to_string(at % stride) + ", " + std::to_string(j) + ")";
+    if (only[j] == 0 && (undecided[j] != 0 || alpha[at] != 7))
+      RC_FAIL(where + ": a row not wanted was marked or written");
+    if (only[j] != 0 && undecided[j] == 0 && (alpha[at] < lo[at] || alpha[at] > hi[at]))
+      RC_FAIL(where + ": fast alpha " + std::to_string(alpha[at]) + ", the area's " +
+              std::to_string(lo[at]) + " to " + std::to_string(hi[at]));
+    decided += only[j] != 0 && undecided[j] == 0 && at % stride == 0 ? 1u : 0u;
+  }
+  RC_CLASSIFY(decided > 0, "fast: some wanted rows decided");
+}
+
+// Whether the sweep decided every row, some or none (left: a byte a row, 1 where it left it).
+void classify_rows(const std::vector<std::uint8_t>& left) {
+  const auto n = std::count(left.begin(), left.end(), std::uint8_t{0});
+  RC_CLASSIFY(n == static_cast<std::ptrdiff_t>(left.size()), "sweep: every row");
+  RC_CLASSIFY(n > 0 && n < static_cast<std::ptrdiff_t>(left.size()), "sweep: some rows");
+  RC_CLASSIFY(n == 0, "sweep: no row");
+}
+
+// The certified sweep (PATH.AREA.SWEEP), in the rows it decides, gives every pixel the alpha of
+// its area as the fast cells do: within the alphas of cover_area's [A - E, A + E]. Each case
+// says whether it decided every row, some or none; cover_area_alpha's answer (the sweep first,
+// the other methods for the rows it leaves) must be the exact methods' everywhere.
 // rule: PATH.AREA.SWEEP, PATH.AREA.ALPHA, PATH.AREA.CURVE
 RC_GTEST_PROP(PathCurveArea, SweepGivesTheAlphaOfTheArea, ()) {
   const pg::GPath p = curve_path();
@@ -312,15 +352,15 @@ RC_GTEST_PROP(PathCurveArea, SweepGivesTheAlphaOfTheArea, ()) {
   const auto stride = static_cast<std::size_t>(kSide);
   const auto [lo, hi] = alpha_interval(k, kSide);
   std::vector<std::uint8_t> swept(stride * stride, 7), alpha(stride * stride, 7);
-  const bool decided = kd::alpha_sweep(kd::boundary_of(k), k.fill_rule, kSide, kSide, swept);
-  RC_CLASSIFY(decided, "sweep: decided");
-  RC_CLASSIFY(!decided, "sweep: declined");
+  std::vector<std::uint8_t> left;
+  kd::alpha_sweep(kd::boundary_of(k), k.fill_rule, kSide, kSide, swept, left);
+  classify_rows(left);
   kp::cover_area_alpha(k, kSide, kSide, alpha);
   for (std::size_t at = 0; at < alpha.size(); ++at) {
     const auto where = "pixel (" + std::to_string(at % stride) + ", " +
                        std::to_string(at / stride) + "): the area's " + std::to_string(lo[at]) +
                        " to " + std::to_string(hi[at]);
-    if (decided && (swept[at] < lo[at] || swept[at] > hi[at]))
+    if (left[at / stride] == 0 && (swept[at] < lo[at] || swept[at] > hi[at]))
       RC_FAIL(where + ", swept " + std::to_string(swept[at]));
     if (alpha[at] < lo[at] || alpha[at] > hi[at])
       RC_FAIL(where + ", cover_area_alpha " + std::to_string(alpha[at]));
@@ -369,7 +409,7 @@ pg::GContour gentle_contour(double cx, double cy, double r) {
 // The sweep on glyph-like paths, which it mostly decides (the generators' paths above cross
 // themselves and each other on purpose, so it declines most of them): one contour, or two
 // (the second inside the first, either way round: a hole or a nested contour), in a 6 px
-// target; where it decides, every pixel within the alphas of cover_area's [A - E, A + E].
+// target; in the rows it decides, every pixel within the alphas of cover_area's [A - E, A + E].
 // rule: PATH.AREA.SWEEP, PATH.AREA.ALPHA, PATH.AREA.CURVE
 RC_GTEST_PROP(PathCurveArea, SweepGivesTheAlphaOfGlyphLikePaths, ()) {
   constexpr std::int32_t kTarget = 6;
@@ -385,14 +425,12 @@ RC_GTEST_PROP(PathCurveArea, SweepGivesTheAlphaOfGlyphLikePaths, ()) {
   const auto stride = static_cast<std::size_t>(kTarget);
   const auto [lo, hi] = alpha_interval(k, kTarget);
   std::vector<std::uint8_t> swept(stride * stride, 7);
-  const bool decided = kd::alpha_sweep(kd::boundary_of(k), k.fill_rule, kTarget, kTarget, swept);
-  RC_CLASSIFY(decided, "sweep: decided");
-  RC_CLASSIFY(!decided, "sweep: declined");
+  std::vector<std::uint8_t> left;
+  kd::alpha_sweep(kd::boundary_of(k), k.fill_rule, kTarget, kTarget, swept, left);
+  classify_rows(left);
   RC_CLASSIFY(p.contours.size() == 2, "two contours");
-  if (!decided)
-    return;
   for (std::size_t at = 0; at < swept.size(); ++at)
-    if (swept[at] < lo[at] || swept[at] > hi[at])
+    if (left[at / stride] == 0 && (swept[at] < lo[at] || swept[at] > hi[at]))
       RC_FAIL("pixel (" + std::to_string(at % stride) + ", " + std::to_string(at / stride) +
               "): swept " + std::to_string(swept[at]) + ", the area's " + std::to_string(lo[at]) +
               " to " + std::to_string(hi[at]));

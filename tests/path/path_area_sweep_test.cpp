@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The certified sweep of PATH.AREA.SWEEP on examples: paths it decides whole (glyph-like shapes
 // with curves and holes, ties of the rounding beside exact lines, thin bars whose two edges
-// share pixels, curved pixels on a rounding boundary decided through the bound) and paths it
-// declines (a contour drawn twice, two bars the same way round in one pixel, a tiny loop, a
-// target too large for its cells). Every alpha is compared with the exact methods', and with
-// cover_area_alpha's.
+// share pixels, curved pixels on a rounding boundary decided through the bound), rows it leaves
+// to the other methods (a contour drawn twice, two bars the same way round in one pixel, a tiny
+// loop) and a path it declines whole (a target too large for its cells). Every alpha of a row it
+// decides is compared with the exact methods', and cover_area_alpha's with theirs.
 // Tests: PATH.AREA.SWEEP, PATH.AREA.ALPHA
 
 #include <gtest/gtest.h>
@@ -23,22 +23,32 @@ using path::FillRule;
 namespace pd = path::detail;
 
 struct Swept {
-  bool decided = false;
+  bool decided = false;           // every row
+  std::vector<std::uint8_t> left; // the rows left to the other methods (1)
   std::vector<std::uint8_t> alpha, exact;
 };
 
-// The sweep alone, and the exact methods; where the sweep decides, they must agree, and
+// The sweep alone, and the exact methods; in the rows the sweep decides they must agree, and
 // cover_area_alpha (the sweep first) always agrees with the exact methods.
 Swept sweep(const path::Path& p, std::int32_t w, std::int32_t h) {
   Swept s;
   const auto n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+  const auto stride = static_cast<std::size_t>(w);
   s.alpha.assign(n, 7);
   s.exact.assign(n, 9);
   pd::cover_alpha_by(p, w, h, pd::AreaMethod::kCells, s.exact, nullptr);
-  s.decided = pd::alpha_sweep(pd::boundary_of(p), p.fill_rule, w, h, s.alpha);
-  if (s.decided) {
-    EXPECT_EQ(s.alpha, s.exact);
+  const bool some = pd::alpha_sweep(pd::boundary_of(p), p.fill_rule, w, h, s.alpha, s.left);
+  EXPECT_EQ(s.left.size(), static_cast<std::size_t>(h));
+  std::size_t swept = 0;
+  for (std::size_t j = 0; j < s.left.size(); ++j) {
+    EXPECT_TRUE(some || s.left[j] == 1) << "a declined path leaves every row";
+    if (s.left[j] != 0)
+      continue;
+    ++swept;
+    for (std::size_t i = 0; i < stride; ++i)
+      EXPECT_EQ(s.alpha[j * stride + i], s.exact[j * stride + i]) << "pixel " << i << ", " << j;
   }
+  s.decided = swept == static_cast<std::size_t>(h);
   std::vector<std::uint8_t> pub(n, 5);
   path::cover_area_alpha(p, w, h, pub);
   EXPECT_EQ(pub, s.exact);
@@ -46,7 +56,7 @@ Swept sweep(const path::Path& p, std::int32_t w, std::int32_t h) {
   std::vector<std::uint8_t> by(n, 3);
   pd::cover_alpha_by(p, w, h, pd::AreaMethod::kSweep, by, &rows);
   EXPECT_EQ(by, s.exact);
-  EXPECT_EQ(rows.swept, s.decided ? static_cast<std::size_t>(h) : 0u);
+  EXPECT_EQ(rows.swept, swept);
   return s;
 }
 
@@ -94,8 +104,8 @@ TEST(PathAreaSweep, TiesBesideLinesAlongTheAxesAreDecidedExactly) {
 
 // A bar a quarter of a pixel thick: its top and bottom edges cross the same pixels, two runs
 // apart in y and running opposite ways in x (windings 0, 1, 0): decided. Two bars the same way
-// round, one inside the other, within one pixel row (windings 0, 1, 2): declined, and the
-// exact methods give the answer.
+// round, one inside the other, within one pixel row (windings 0, 1, 2): that row is left to
+// the other methods, which give the answer.
 // rule: PATH.AREA.SWEEP
 TEST(PathAreaSweep, TwoChainsInAPixelAreDecidedOnlyWhenTheyMeetTwoWindings) {
   const path::Path bar = make_path(
@@ -107,7 +117,7 @@ TEST(PathAreaSweep, TwoChainsInAPixelAreDecidedOnlyWhenTheyMeetTwoWindings) {
       make_path(FillRule::kNonZero,
                 {polygon({{0.5, 1.125}, {3.5, 1.125}, {3.5, 1.875}, {0.5, 1.875}}),
                  polygon({{1.25, 1.25}, {2.75, 1.25}, {2.75, 1.5}, {1.25, 1.5}}), curl(5)});
-  EXPECT_FALSE(sweep(nested, 8, 3).decided);
+  EXPECT_EQ(sweep(nested, 8, 3).left, (std::vector<std::uint8_t>{0, 1, 0}));
   // A bar standing up: its left and right edges share pixels, apart in x, running opposite
   // ways in y.
   const path::Path stem =
@@ -121,7 +131,7 @@ TEST(PathAreaSweep, TwoChainsInAPixelAreDecidedOnlyWhenTheyMeetTwoWindings) {
 // Three thin bars standing in one pixel column, through the target's rows: six edges apart in x
 // whose senses alternate (windings 0, 1, 0, 1, 0, 1, 0): decided. The middle bar the other way
 // round (windings 0, 1, 0, -1, 0, 1, 0): three values in a pixel under the nonzero rule's view of
-// the sum, declined.
+// the sum, every row left.
 // rule: PATH.AREA.SWEEP
 TEST(PathAreaSweep, SeveralChainsApartMustAlternate) {
   const auto bar = [](double x0, double x1, bool reverse) {
@@ -137,31 +147,50 @@ TEST(PathAreaSweep, SeveralChainsApartMustAlternate) {
   const path::Path mixed =
       make_path(FillRule::kEvenOdd,
                 {bar(1.125, 1.25, false), bar(1.5, 1.625, true), bar(1.75, 1.875, false), curl(5)});
-  EXPECT_FALSE(sweep(mixed, 8, 3).decided);
+  EXPECT_EQ(sweep(mixed, 8, 3).left, (std::vector<std::uint8_t>{1, 1, 1}));
 }
 
-// Paths the sweep declines: a square drawn twice under even-odd (two runs that meet: the
-// conflation case, alpha 0 everywhere), a cubic with a small loop inside one pixel (a chain
-// that turns both ways), and a target of more than 2^18 cells.
+// Rows the sweep leaves: a square drawn twice under even-odd (two runs that meet in every cell of
+// its edges: the conflation case, alpha 0 everywhere) leaves its rows, the empty row below
+// decided; a cubic with a small loop inside one pixel (extrema too close to tell) leaves the rows
+// of its control points and one more each way. A target of more than 2^18 cells is declined
+// whole.
 // rule: PATH.AREA.SWEEP
-TEST(PathAreaSweep, DeclinedPathsGoToTheOtherMethods) {
+TEST(PathAreaSweep, RowsInDoubtGoToTheOtherMethods) {
   const path::Contour sq = polygon({{0.5, 0.5}, {2.5, 0.5}, {2.5, 2.5}, {0.5, 2.5}});
-  const Swept twice = sweep(make_path(FillRule::kEvenOdd, {sq, sq, curl(5)}), 8, 3);
-  EXPECT_FALSE(twice.decided);
+  const Swept twice = sweep(make_path(FillRule::kEvenOdd, {sq, sq, curl(5)}), 8, 4);
+  EXPECT_EQ(twice.left, (std::vector<std::uint8_t>{1, 1, 1, 0}));
   EXPECT_EQ(twice.exact[1], 0);
   const path::Path loop =
       make_path(FillRule::kNonZero, {contour(0.25, 1.5,
                                              {cubic_to(2.75, 1.25, 0.25, 1.25, 2.75, 1.5),
                                               line_to(2.75, 2.75), line_to(0.25, 2.75)})});
-  EXPECT_FALSE(sweep(loop, 4, 4).decided);
-  std::vector<std::uint8_t> big(std::size_t{600} * 600, 1);
+  EXPECT_EQ(sweep(loop, 4, 4).left, (std::vector<std::uint8_t>{1, 1, 1, 0}));
+  std::vector<std::uint8_t> big(std::size_t{600} * 600, 1), left;
   EXPECT_FALSE(pd::alpha_sweep(pd::boundary_of(make_path(FillRule::kNonZero, {curl(5)})),
-                               FillRule::kNonZero, 600, 600, big));
+                               FillRule::kNonZero, 600, 600, big, left));
+  EXPECT_EQ(left, std::vector<std::uint8_t>(600, 1));
+}
+
+// A quadratic through a grid corner, (1, 1) px at t = 1/2: its crossings of the column line and
+// the row line there cannot be told apart, so the cells after it are not known; the sweep leaves
+// the rows from there to the curve's end (and one more each way), and decides the rows of the
+// lines below it.
+// rule: PATH.AREA.SWEEP
+TEST(PathAreaSweep, ACurveThroughAGridCornerLeavesItsRows) {
+  const path::Path p = make_path(
+      FillRule::kNonZero,
+      {contour(0.5, 0.25,
+               {quad_to(1.125, 0.5, 1.25, 2.75), line_to(1.25, 5.5), line_to(0.5, 5.5)})});
+  const Swept s = sweep(p, 3, 7);
+  EXPECT_EQ(s.left, (std::vector<std::uint8_t>{1, 1, 1, 1, 0, 0, 0}));
+  EXPECT_EQ(s.alpha[4 * 3], 128);    // half of pixel (0, 4)
+  EXPECT_EQ(s.alpha[4 * 3 + 1], 64); // a quarter of pixel (1, 4)
 }
 
 // Curved pixels whose exact alpha lies on a rounding boundary (510 a = 85, between alphas 42
 // and 43; as PathAreaFast.CurvedPixelsOnARoundingBoundaryAreDecidedThroughTheBound): the
-// sweep's bound keeps it from rounding them down, so it either declines or gives 43.
+// sweep's bound keeps it from rounding them down, so it either leaves the row or gives 43.
 // rule: PATH.AREA.SWEEP, PATH.AREA.ALPHA
 TEST(PathAreaSweep, CurvedPixelsOnARoundingBoundaryAreDecidedThroughTheBound) {
   int cases = 0, decided = 0;
@@ -181,7 +210,7 @@ TEST(PathAreaSweep, CurvedPixelsOnARoundingBoundaryAreDecidedThroughTheBound) {
         const auto at = static_cast<std::size_t>(col) * static_cast<std::size_t>(side) +
                         static_cast<std::size_t>(col);
         ASSERT_EQ(s.exact[at], 43);
-        decided += s.decided ? 1 : 0;
+        decided += s.left[static_cast<std::size_t>(col)] == 0 ? 1 : 0;
         ++cases;
       }
   EXPECT_GT(cases, 100);
