@@ -97,30 +97,40 @@ struct Box {
 // A cell: the integral of (x - left) dy of its visits (raw^2), their cover (fixed point), the
 // sum of their bounds; the first piece of the first run of consecutive pieces and the last
 // piece seen, the directions of all its visits (bit 0: x grows, 1: x falls, 2: y grows, 3: y
-// falls; bit 4: the visit starts at its piece's start, 5: ends at its end, for the first
-// visit), how many visits (up to 255), the first visit's box, and the visits' list in seen_
-// once there are two (first and last index + 1). How many runs it holds (0 to 3: more) is kept
-// apart (runs_), so that only that byte is cleared a path.
+// falls), the first visit's flags (below), how many visits (up to 255), the first visit's box,
+// and the visits' list in seen_ once there are two (first and last index + 1). How many runs it
+// holds (0 to 3: more) is kept apart (runs_), so that only that byte is cleared a path.
 struct Cell {
   double area = 0, err = 0;
   std::int64_t cover = 0;
   std::uint32_t head = 0, tail = 0;
-  std::uint8_t dirs = 0, flags0 = 0, count = 0;
+  std::uint8_t dirs = 0, count = 0;
+  std::uint16_t flags0 = 0;
   std::uint32_t first = 0, last = 0;
   Box box0;
 };
 
-// A visit in a cell's list: its piece, directions and flags (as Cell's bits 0-5), box, and the
-// next (index + 1 in Sweep::seen_, 0 for none).
+// A visit in a cell's list: its piece, directions and flags (as Cell's), box, and the next
+// (index + 1 in Sweep::seen_, 0 for none).
 struct Seen {
   std::uint32_t id = 0;
-  std::uint8_t flags = 0;
+  std::uint16_t flags = 0;
   Box box;
   std::uint32_t next = 0;
 };
 
-// Flags passed with a visit's directions: it starts at its piece's start, it ends at its end.
-constexpr int kStarts = 16, kEnds = 32;
+// A visit's flags beside its directions (bits 0-3): it starts at its piece's start, it ends at
+// its end, it runs along a grid line (a side of the cell); the sides of the cell its start
+// lies on (bits 8-11) and its end (bits 12-15).
+constexpr int kStarts = 16, kEnds = 32, kAlong = 64;
+// A cell's sides (for the ends of a visit).
+constexpr int kTop = 1, kRight = 2, kBottom = 4, kLeft = 8;
+constexpr int start_sides(int flags) {
+  return (flags >> 8) & 15;
+}
+constexpr int end_sides(int flags) {
+  return (flags >> 12) & 15;
+}
 
 struct PieceRef {
   std::uint32_t shape = 0, id = 0; // its shape, and its id (Sweep::contours_)
@@ -149,7 +159,7 @@ private:
              std::int64_t cover, double err, const Box& box);
   void touch(std::int64_t row, std::int64_t col, std::uint32_t id, int dirs, const Box& box);
   bool record(std::int64_t row, std::int64_t col, std::uint32_t id, int dirs, bool first, bool last,
-              double area, double err, const Pt& a, const Pt& n, bool on_col);
+              int sides, double area, double err, const Pt& a, const Pt& n, bool on_col);
   bool two_windings(const Cell& c, std::uint8_t runs) const;
   void sweep(std::span<std::uint8_t> out);
   bool sweep_row(std::size_t r, std::uint8_t* row) const;
@@ -180,12 +190,15 @@ void Sweep::doubt(double y0, double y1) {
 }
 
 // rule: PATH.AREA.SWEEP
-// A walk's visit from a to n (the piece's first, its last), and on a column line its touch of
-// the cell left of it; true where it was the piece's last.
+// A walk's visit from a to n (the piece's first, its last; sides: the cell's sides a and n lie
+// on, n's shifted by 4), and on a column line its touch of the cell left of it; true where it
+// was the piece's last.
 bool Sweep::record(std::int64_t row, std::int64_t col, std::uint32_t id, int dirs, bool first,
-                   bool last, double area, double err, const Pt& a, const Pt& n, bool on_col) {
+                   bool last, int sides, double area, double err, const Pt& a, const Pt& n,
+                   bool on_col) {
   const Box box = box_of(a, n);
-  const int flags = dirs | (first ? kStarts : 0) | (last ? kEnds : 0);
+  const int flags =
+      dirs | (first ? kStarts : 0) | (last ? kEnds : 0) | (on_col ? kAlong : 0) | (sides << 8);
   visit(row, col, id, flags, area, n.yfix - a.yfix, err, box);
   if (on_col)
     touch(row, col - 1, id, flags, box);
@@ -210,16 +223,11 @@ void Sweep::visit(std::int64_t row, std::int64_t col, std::uint32_t id, int dirs
   Cell& c = cells_[i];
   std::uint8_t& runs = runs_[i];
   if (runs == 0) {
-    c = Cell{area,
-             err,
-             cover,
-             id,
-             id,
-             static_cast<std::uint8_t>(dirs & 15),
-             static_cast<std::uint8_t>(dirs),
-             1,
-             0,
-             0,
+    c = Cell{area,  err,
+             cover, id,
+             id,    static_cast<std::uint8_t>(dirs & 15),
+             1,     static_cast<std::uint16_t>(dirs),
+             0,     0,
              box};
     runs = 1;
     return;
@@ -234,7 +242,7 @@ void Sweep::visit(std::int64_t row, std::int64_t col, std::uint32_t id, int dirs
     c.first = c.last = static_cast<std::uint32_t>(seen_.size());
   }
   if (c.count < 255) {
-    seen_.push_back(Seen{id, static_cast<std::uint8_t>(dirs), box, 0});
+    seen_.push_back(Seen{id, static_cast<std::uint16_t>(dirs), box, 0});
     seen_[c.last - 1].next = static_cast<std::uint32_t>(seen_.size());
     c.last = static_cast<std::uint32_t>(seen_.size());
     ++c.count;
@@ -257,6 +265,24 @@ std::int64_t fix_of(double y) {
 // An end point with integer coordinates (raw): exact, its cover coordinate too.
 Pt exact_point(double x, double y) {
   return Pt{x, y, static_cast<std::int64_t>(y) << kFix, 0};
+}
+
+// The sides of cell (row, col) that an exact point lies on (none for a point with a bound: the
+// walk knows which line such a point lies on).
+int sides_of(const Pt& p, std::int64_t row, std::int64_t col) {
+  if (p.err != 0)
+    return 0;
+  const auto l = static_cast<double>(col * kW), t = static_cast<double>(row * kW);
+  return (p.x == l ? kLeft : 0) | (p.x == l + kWd ? kRight : 0) | (p.y == t ? kTop : 0) |
+         (p.y == t + kWd ? kBottom : 0);
+}
+
+// The sides a walk leaves a cell by (stepping in x with sign sx, in y with sy), or enters the
+// next by (entering).
+int step_sides(bool step_x, bool step_y, int sx, int sy, bool entering) {
+  const int x = step_x ? ((sx > 0) != entering ? kRight : kLeft) : 0;
+  const int y = step_y ? ((sy > 0) != entering ? kBottom : kTop) : 0;
+  return x | y;
 }
 
 // The cell of coordinate v moving with sign s: on a grid line, the cell it moves into.
@@ -290,8 +316,12 @@ void Sweep::walk_flat(const Pt& a, const Pt& b, std::uint32_t id, int dirs) {
        ++c) {
     const auto left = static_cast<double>(c * kW);
     const Box box{std::max(xl, left) - e, std::min(xr, left + kWd) + e, a.y - e, a.y + e};
-    const int flags =
-        dirs | (c == (a_left ? c0 : c1) ? kStarts : 0) | (c == (a_left ? c1 : c0) ? kEnds : 0);
+    const bool starts = c == (a_left ? c0 : c1), ends = c == (a_left ? c1 : c0);
+    // Between its cells it crosses column lines (left to right where a is left of b).
+    const int in = starts ? sides_of(a, row, c) : (a_left ? kLeft : kRight);
+    const int out = ends ? sides_of(b, row, c) : (a_left ? kRight : kLeft);
+    const int flags = dirs | (starts ? kStarts : 0) | (ends ? kEnds : 0) | (on_line ? kAlong : 0) |
+                      (in << 8) | (out << 12);
     touch(row, c, id, flags, box);
     if (on_line)
       touch(row - 1, c, id, flags, box);
@@ -318,6 +348,7 @@ bool Sweep::walk_line(std::uint32_t id, const Pt& a, const Pt& b, int sx, int sy
   bool on_col = false;
   std::int64_t col = start_col(a.x, sx, on_col);
   Pt p = a;
+  int in = sides_of(a, row, col);
   for (int guard = 0; guard < 4 * (w_ + h_) + 64; ++guard) {
     const std::int64_t X = sx > 0 ? (col + 1) * kW : col * kW;
     const std::int64_t Y = sy > 0 ? (row + 1) * kW : row * kW;
@@ -354,9 +385,12 @@ bool Sweep::walk_line(std::uint32_t id, const Pt& a, const Pt& b, int sx, int sy
         p.err == 0 && n.err == 0
             ? 0.0
             : 2048 * (p.err + n.err) + 8 * kU * (std::abs(area) + kWd * std::abs(n.y - p.y));
-    if (record(row, col, id, dirs, guard == 0, !step_x && !step_y, area, err, p, n, on_col))
+    const bool last = !step_x && !step_y;
+    const int out = last ? sides_of(n, row, col) : step_sides(step_x, step_y, sx, sy, false);
+    if (record(row, col, id, dirs, guard == 0, last, in | (out << 4), area, err, p, n, on_col))
       return true;
     p = n;
+    in = step_sides(step_x, step_y, sx, sy, true);
     if (step_x)
       col += sx;
     if (step_y)
@@ -387,9 +421,13 @@ bool Sweep::root(const Shape& s, bool in_x, int sgn, double target, double lo, d
     }
   }
   if (t < 0) {
-    // Safeguarded Newton steps from the secant's point; [a, b] keeps the sign change.
+    // Safeguarded Newton steps from a Newton step at lo (the crossing is usually within a
+    // pixel of the walk's point there), else the secant's point; [a, b] keeps the sign change.
     double a = lo, b = hi;
-    t = f_lo == f_hi ? 0.5 * (a + b) : a + (b - a) * (f_lo / (f_lo - f_hi));
+    const double d_lo = (3 * c[3] * lo + 2 * c[2]) * lo + c[1];
+    t = d_lo != 0 ? lo - f_lo / d_lo : -1;
+    if (!(t > a && t < b))
+      t = f_lo == f_hi ? 0.5 * (a + b) : a + (b - a) * (f_lo / (f_lo - f_hi));
     if (!(t > a && t < b))
       t = 0.5 * (a + b);
     for (int it = 0; it < 30; ++it) {
@@ -448,6 +486,7 @@ bool Sweep::walk_curve(const PieceRef& p, std::uint32_t id) {
   bool on_col = false;
   std::int64_t col = start_col(p.a.x, sx, on_col);
   Pt a = p.a;
+  int in = sides_of(a, row, col);
   double ta = p.t0, ta_lo = p.t0;
   double qa = s.q_at(ta), ya = s.y_at(ta);
   // A crossing's point moves at most this far (raw, in x and in y) over its bracket.
@@ -516,8 +555,11 @@ bool Sweep::walk_curve(const PieceRef& p, std::uint32_t id) {
         2 * s.qerr + (std::abs(s.x0 - left) + 4 * kWd) * 2 * (s.yerr + a.err + n.err) +
         2048 * (a.err + n.err) +
         8 * kU * (std::abs(area) + std::abs(qb) + std::abs(qa) + kWd * std::abs(dyv));
-    if (record(row, col, id, dirs, guard == 0, !step_x && !step_y, area, err, a, n, on_col))
+    const bool last = !step_x && !step_y;
+    const int out = last ? sides_of(n, row, col) : step_sides(step_x, step_y, sx, sy, false);
+    if (record(row, col, id, dirs, guard == 0, last, in | (out << 4), area, err, a, n, on_col))
       return true;
+    in = step_sides(step_x, step_y, sx, sy, true);
     a = n;
     ta = tn;
     ta_lo = tn_lo;
@@ -729,16 +771,71 @@ bool apart(const Box& p, const Box& q) {
   return p.x1 < q.x0 || q.x1 < p.x0 || p.y1 < q.y0 || q.y1 < p.y0;
 }
 
+// An arc of a cell: its box, directions, and the sides its start and its end lie on.
+struct ArcInfo {
+  Box box;
+  int dirs = 0, start = 0, end = 0;
+};
+
+// The side of arc a holding arc b, whose box is apart from a's: +1 the side of the higher
+// winding number, -1 the lower, 0 not known. a is monotone in x or in y (a graph over that
+// coordinate, vertical or horizontal pieces as jumps) with both ends on the cell's border, so it
+// cuts the cell into two sides. Monotone in x with sense sx: below it (greater y) the winding is
+// higher by sx (crossing a curve moving in +x downwards adds one); what lies above a's box is
+// above it and what lies below is below; what lies left of its box is below it where the end
+// at its least x lies on the top side (the region beside that end reaches under the arc) and
+// above where it lies on the bottom side, and likewise right of it with the end at its greatest
+// x. Monotone in y with sense sy the same with x and y exchanged: right of it the winding is
+// lower by sy.
+int side_of(const ArcInfo& a, const Box& b) {
+  const auto pick = [](int sides, int near, int far, int sign) {
+    if ((sides & near) != 0 && (sides & far) == 0)
+      return sign;
+    if ((sides & far) != 0 && (sides & near) == 0)
+      return -sign;
+    return 0;
+  };
+  if ((a.dirs & 3) != 3 && (a.dirs & 3) != 0) {
+    const int sx = (a.dirs & 1) != 0 ? 1 : -1;
+    const int lo_end = sx > 0 ? a.start : a.end, hi_end = sx > 0 ? a.end : a.start;
+    if (b.y1 < a.box.y0)
+      return -sx;
+    if (b.y0 > a.box.y1)
+      return sx;
+    if (b.x1 < a.box.x0)
+      return pick(lo_end, kTop, kBottom, sx);
+    if (b.x0 > a.box.x1)
+      return pick(hi_end, kTop, kBottom, sx);
+    return 0;
+  }
+  if ((a.dirs & 12) != 12 && (a.dirs & 12) != 0) {
+    const int sy = (a.dirs & 4) != 0 ? 1 : -1;
+    const int lo_end = sy > 0 ? a.start : a.end, hi_end = sy > 0 ? a.end : a.start;
+    if (b.x1 < a.box.x0)
+      return sy;
+    if (b.x0 > a.box.x1)
+      return -sy;
+    if (b.y1 < a.box.y0)
+      return pick(lo_end, kLeft, kRight, -sy);
+    if (b.y0 > a.box.y1)
+      return pick(hi_end, kLeft, kRight, -sy);
+  }
+  return 0;
+}
+
 // rule: PATH.AREA.SWEEP
 // Whether a cell holds at most two winding numbers, and they differ by one. Its visits form
 // arcs: consecutive pieces of one contour joined inside the cell (the one ending where the
 // next starts), and a contour's last piece joined to its first. One run of consecutive pieces
 // monotone in x or in y is a graph: any straight path in the cell crosses it with alternating
-// signs. Else one arc that does not cross itself (two pieces that meet at a joint do not turn
-// back into each other's quadrant, any other two have boxes apart), whose ends lie on the
-// border, cuts the cell into two sides; or two arcs, each of one sense in y and the two of
-// opposite senses, with boxes apart in x (left of the left one, between, right of the right
-// one: W + d, W, W - d' with d = d'), or the same with x and y exchanged.
+// signs. Else (b) one arc that does not cross itself (two pieces that meet at a joint do not
+// turn back into each other's quadrant, any other two have boxes apart), whose ends lie on the
+// border, cuts the cell into two sides; or (c) several arcs, each of one sense in y and the two
+// of opposite senses, with boxes apart in x (left of the left one, between, right of the right
+// one: W + d, W, W - d' with d = d'), or the same with x and y exchanged; or (d) several arcs,
+// each monotone in x or in y from border to border and apart from the others, each with all the
+// others on its side of the same sign (side_of): then they bound one region between them, and
+// beyond each arc the winding differs from it by that sign's opposite, the same for all.
 bool Sweep::two_windings(const Cell& c, std::uint8_t runs) const {
   if (runs == 1 && monotone(c.dirs))
     return true;
@@ -751,35 +848,54 @@ bool Sweep::two_windings(const Cell& c, std::uint8_t runs) const {
   const auto joined = [](const Seen& p, const Seen& q) {
     return q.id == p.id + 1 && (p.flags & kEnds) != 0 && (q.flags & kStarts) != 0;
   };
-  // The arcs as index ranges; a contour's last arc joined to its first goes in front of it.
+  // Runs of joined visits (segs of them, from cut[s] to cut[s + 1]).
   std::array<int, 9> cut{};
-  int arcs = 0;
+  int segs = 0;
   for (int i = 0; i < n; ++i)
     if (i == 0 || !joined(*v[static_cast<std::size_t>(i - 1)], *v[static_cast<std::size_t>(i)]))
-      cut[static_cast<std::size_t>(arcs++)] = i;
-  cut[static_cast<std::size_t>(arcs)] = n;
-  std::array<const Seen*, 8> order{};
-  int m = 0;
-  if (arcs > 1) {
-    const Seen& f = *v[0];
-    const Seen& l = *v[static_cast<std::size_t>(n - 1)];
+      cut[static_cast<std::size_t>(segs++)] = i;
+  cut[static_cast<std::size_t>(segs)] = n;
+  // A run that ends with its contour's last piece, at its end, goes on with the run that starts
+  // with that contour's first piece at its start (the contour closes there).
+  std::array<int, 8> next{};
+  std::array<bool, 8> has_prev{};
+  next.fill(-1);
+  for (int r = 0; r < segs; ++r) {
+    const Seen& l = *v[static_cast<std::size_t>(cut[static_cast<std::size_t>(r + 1)] - 1)];
+    if ((l.flags & kEnds) == 0)
+      continue;
     const auto it =
-        std::upper_bound(contours_.begin(), contours_.end(), f.id,
+        std::upper_bound(contours_.begin(), contours_.end(), l.id,
                          [](std::uint32_t x, const std::pair<std::uint32_t, std::uint32_t>& k) {
                            return x < k.first;
                          });
-    if (f.id == (it - 1)->first && l.id == (it - 1)->second && (l.flags & kEnds) != 0 &&
-        (f.flags & kStarts) != 0) {
-      const int from = cut[static_cast<std::size_t>(arcs - 1)];
-      for (int i = from; i < n; ++i)
-        order[static_cast<std::size_t>(m++)] = v[static_cast<std::size_t>(i)];
-      n = from;
-      --arcs;
+    if (l.id != (it - 1)->second)
+      continue;
+    for (int q = 0; q < segs; ++q) {
+      const Seen& f = *v[static_cast<std::size_t>(cut[static_cast<std::size_t>(q)])];
+      if (f.id == (it - 1)->first && (f.flags & kStarts) != 0) {
+        if (q == r)
+          return false; // a whole contour inside the cell
+        next[static_cast<std::size_t>(r)] = q;
+        has_prev[static_cast<std::size_t>(q)] = true;
+      }
     }
   }
-  for (int i = 0; i < n; ++i)
-    order[static_cast<std::size_t>(m++)] = v[static_cast<std::size_t>(i)];
-  // order: the first arc (with the wrapped part in front), then the others from cut[1].
+  // The arcs: order[at[a], at[a + 1]) for arc a.
+  std::array<const Seen*, 8> order{};
+  std::array<int, 9> at{};
+  int arcs = 0, m = 0;
+  for (int r = 0; r < segs; ++r) {
+    if (has_prev[static_cast<std::size_t>(r)])
+      continue;
+    at[static_cast<std::size_t>(arcs++)] = m;
+    for (int q = r; q >= 0 && m < n; q = next[static_cast<std::size_t>(q)])
+      for (int i = cut[static_cast<std::size_t>(q)]; i < cut[static_cast<std::size_t>(q + 1)]; ++i)
+        order[static_cast<std::size_t>(m++)] = v[static_cast<std::size_t>(i)];
+  }
+  at[static_cast<std::size_t>(arcs)] = m;
+  if (m != n)
+    return false; // runs in a cycle (not expected): in doubt
   if (arcs == 1) {
     for (int a = 0; a < m; ++a)
       for (int b = a + 1; b < m; ++b) {
@@ -790,30 +906,44 @@ bool Sweep::two_windings(const Cell& c, std::uint8_t runs) const {
       }
     return true;
   }
-  // Several arcs: each of one sense in y, their boxes apart in x one after the other, the
-  // senses alternating (left of the first, between two, right of the last: the windings go
-  // W, W + d, W, W + d, ...); or the same with x and y exchanged.
-  const int shift = m - n; // the first arc's wrapped part, in front of order
-  std::array<Box, 8> box{};
-  std::array<int, 8> dirs{}, idx{};
+  std::array<ArcInfo, 8> arc{};
+  bool simple = true; // every arc a cut from border to border, off the grid lines
   for (int a = 0; a < arcs; ++a) {
-    const int lo = a == 0 ? 0 : cut[static_cast<std::size_t>(a)] + shift;
-    const int hi = cut[static_cast<std::size_t>(a + 1)] + shift;
-    box[static_cast<std::size_t>(a)] = order[static_cast<std::size_t>(lo)]->box;
+    ArcInfo& info = arc[static_cast<std::size_t>(a)];
+    const int lo = at[static_cast<std::size_t>(a)], hi = at[static_cast<std::size_t>(a + 1)];
+    info.box = order[static_cast<std::size_t>(lo)]->box;
     for (int i = lo; i < hi; ++i) {
-      box[static_cast<std::size_t>(a)].add(order[static_cast<std::size_t>(i)]->box);
-      dirs[static_cast<std::size_t>(a)] |= order[static_cast<std::size_t>(i)]->flags & 15;
+      const Seen& p = *order[static_cast<std::size_t>(i)];
+      info.box.add(p.box);
+      info.dirs |= p.flags & 15;
+      // Joints inside the cell: an arc that touches the border between its ends cuts it in
+      // more than two.
+      if ((p.flags & kAlong) != 0 || (i + 1 < hi && end_sides(p.flags) != 0))
+        simple = false;
     }
-    idx[static_cast<std::size_t>(a)] = a;
+    info.start = start_sides(order[static_cast<std::size_t>(lo)]->flags);
+    info.end = end_sides(order[static_cast<std::size_t>(hi - 1)]->flags);
+    if (info.start == 0 || info.end == 0 || !monotone(info.dirs))
+      simple = false;
   }
+  // (c): each arc of one sense in y, their boxes apart in x one after the other, the senses
+  // alternating (left of the first, between two, right of the last: the windings go W, W + d,
+  // W, W + d, ...); or the same with x and y exchanged.
+  std::array<int, 8> idx{};
+  for (int a = 0; a < arcs; ++a)
+    idx[static_cast<std::size_t>(a)] = a;
   const auto alternate = [&](bool in_x) {
     const auto lo = [&](int a) {
-      return in_x ? box[static_cast<std::size_t>(a)].x0 : box[static_cast<std::size_t>(a)].y0;
+      const Box& b = arc[static_cast<std::size_t>(a)].box;
+      return in_x ? b.x0 : b.y0;
     };
     const auto hi = [&](int a) {
-      return in_x ? box[static_cast<std::size_t>(a)].x1 : box[static_cast<std::size_t>(a)].y1;
+      const Box& b = arc[static_cast<std::size_t>(a)].box;
+      return in_x ? b.x1 : b.y1;
     };
-    const auto sense = [&](int a) { return dirs[static_cast<std::size_t>(a)] & (in_x ? 12 : 3); };
+    const auto sense = [&](int a) {
+      return arc[static_cast<std::size_t>(a)].dirs & (in_x ? 12 : 3);
+    };
     std::sort(idx.begin(), idx.begin() + arcs, [&](int a, int b) { return lo(a) < lo(b); });
     for (int k = 0; k < arcs; ++k) {
       const int a = idx[static_cast<std::size_t>(k)];
@@ -828,7 +958,23 @@ bool Sweep::two_windings(const Cell& c, std::uint8_t runs) const {
     }
     return true;
   };
-  return alternate(true) || alternate(false);
+  if (alternate(true) || alternate(false))
+    return true;
+  // (d): one region between all the arcs, the same change of winding beyond each.
+  if (!simple)
+    return false;
+  int near = 0;
+  for (int a = 0; a < arcs; ++a)
+    for (int b = 0; b < arcs; ++b) {
+      if (a == b)
+        continue;
+      const int side =
+          side_of(arc[static_cast<std::size_t>(a)], arc[static_cast<std::size_t>(b)].box);
+      if (side == 0 || (near != 0 && side != near))
+        return false;
+      near = side;
+    }
+  return true;
 }
 
 // rule: PATH.AREA.SWEEP, PATH.AREA.ALPHA

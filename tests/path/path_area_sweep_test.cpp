@@ -150,6 +150,56 @@ TEST(PathAreaSweep, SeveralChainsApartMustAlternate) {
   EXPECT_EQ(sweep(mixed, 8, 3).left, (std::vector<std::uint8_t>{1, 1, 1}));
 }
 
+// Two arcs in pixel (1, 1), each a cut from border to border, apart: a bump from one side,
+// monotone in one coordinate and turning in the other, and a cut-off corner or a second bump.
+// Each has the other on the side of its lower winding (both shapes the same way round), so the
+// pixel holds two winding numbers and the sweep decides it; the bump's side holding the other
+// arc comes from where the other lies (beside its box, beyond the end on that side). The same
+// shapes with one the other way round hold three and leave the row, and so does an arc whose
+// joint touches the border.
+// rule: PATH.AREA.SWEEP
+TEST(PathAreaSweep, ArcsApartWithTheSameChangeOfWindingAreDecided) {
+  const auto reversed = [](const path::Contour& c) {
+    std::vector<path::Point> v{c.start};
+    for (const path::Segment& g : c.segments)
+      v.push_back(g.p[0]);
+    path::Contour r{v.back(), {}};
+    for (std::size_t i = v.size() - 1; i-- > 0;)
+      r.segments.push_back(path::Segment{path::SegmentKind::kLine, {v[i], {}, {}}});
+    return r;
+  };
+  const struct {
+    const char* what;
+    path::Contour a, b;
+  } cases[] = {
+      // A '<' from the left side (monotone in y), a '^' from the bottom side below it.
+      {"bump left, bump below it", polygon({{0.5, 1.1875}, {1.5, 1.3125}, {0.5, 1.4375}}),
+       polygon({{1.1875, 2.5}, {1.3125, 1.75}, {1.4375, 2.5}})},
+      // The same upside down: a '<' low, a 'v' from the top side above it.
+      {"bump left, bump above it", polygon({{0.5, 1.8125}, {1.5, 1.6875}, {0.5, 1.5625}}),
+       polygon({{1.1875, 0.5}, {1.3125, 1.25}, {1.4375, 0.5}})},
+      // A '^' from the bottom side (monotone in x) with a '<' from the left side beside it.
+      {"bump below, bump left of it", polygon({{1.5, 2.5}, {1.6875, 1.3125}, {1.875, 2.5}}),
+       polygon({{0.5, 1.5}, {1.3125, 1.5625}, {0.5, 1.6875}})},
+      // A 'v' from the top side with a '>' from the right side beside it.
+      {"bump above, bump right of it", polygon({{1.5, 0.5}, {1.3125, 1.6875}, {1.125, 0.5}}),
+       polygon({{2.5, 1.5}, {1.6875, 1.4375}, {2.5, 1.3125}})},
+  };
+  // A '>' from the right side whose tip touches the left side (a joint on the border), a '^'
+  // below it: the rule asks for joints inside the cell, so the row is left.
+  const path::Path touching =
+      make_path(FillRule::kNonZero, {polygon({{2.5, 1.25}, {1, 1.5}, {2.5, 1.75}}),
+                                     polygon({{1.5, 2.5}, {1.375, 1.875}, {1.25, 2.5}})});
+  EXPECT_EQ(sweep(touching, 4, 4).left[1], 1);
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.what);
+    const Swept same = sweep(make_path(FillRule::kNonZero, {c.a, c.b}), 4, 4);
+    EXPECT_EQ(same.left[1], 0);
+    const Swept mixed = sweep(make_path(FillRule::kNonZero, {c.a, reversed(c.b)}), 4, 4);
+    EXPECT_EQ(mixed.left[1], 1);
+  }
+}
+
 // Rows the sweep leaves: a square drawn twice under even-odd (two runs that meet in every cell of
 // its edges: the conflation case, alpha 0 everywhere) leaves its rows, the empty row below
 // decided; a cubic with a small loop inside one pixel (extrema too close to tell) leaves the rows
