@@ -132,8 +132,11 @@ constexpr int end_sides(int flags) {
   return (flags >> 12) & 15;
 }
 
+// PieceRef::shape of a line (lines have no Shape).
+constexpr std::uint32_t kLine = 0xFFFFFFFFu;
+
 struct PieceRef {
-  std::uint32_t shape = 0, id = 0; // its shape, and its id (Sweep::contours_)
+  std::uint32_t shape = 0, id = 0; // its shape (kLine: none), and its id (Sweep::contours_)
   double t0 = 0, t1 = 1;
   Pt a, b;
   int sx = 0, sy = 0;
@@ -689,7 +692,22 @@ bool Sweep::build(const Boundary& b) {
       current = r.contour;
       contours_.push_back({id, id});
     }
-    Shape s;
+    if (degree == 1) { // a line: its exact end points are all its walk needs
+      if (cp[0] == cp[1])
+        continue; // a point (PATH.DEGENERATE)
+      PieceRef p;
+      p.shape = kLine;
+      p.a = exact_point(cp[0].x, cp[0].y);
+      p.b = exact_point(cp[1].x, cp[1].y);
+      p.sx = sign_of(cp[1].x - cp[0].x);
+      p.sy = sign_of(cp[1].y - cp[0].y);
+      p.id = id++;
+      pieces_.push_back(p);
+      contours_.back().second = id - 1;
+      continue;
+    }
+    const auto si = static_cast<std::uint32_t>(shapes_.size());
+    Shape& s = shapes_.emplace_back();
     s.n = degree;
     s.x0 = cp[0].x;
     s.y0 = cp[0].y;
@@ -705,8 +723,10 @@ bool Sweep::build(const Boundary& b) {
     s.ax = power([](Point q) { return static_cast<double>(q.x); });
     s.ay = power([](Point q) { return static_cast<double>(q.y); });
     if (s.ax[1] == 0 && s.ax[2] == 0 && s.ax[3] == 0 && s.ay[1] == 0 && s.ay[2] == 0 &&
-        s.ay[3] == 0)
+        s.ay[3] == 0) {
+      shapes_.pop_back();
       continue; // a point (PATH.DEGENERATE)
+    }
     // Bounds over [0, 1]: sums of |coefficients| (|t|^k <= 1); Horner's rule on degree m
     // within gamma(2m) of that sum; Q's coefficients M_k / k with M_k exact in 64 bits
     // (|M_k| < 2^58), rounded twice.
@@ -731,19 +751,8 @@ bool Sweep::build(const Boundary& b) {
       q_abs += std::abs(s.q[static_cast<std::size_t>(k)]);
     }
     s.qerr = 32 * kU * q_abs;
-    const auto si = static_cast<std::uint32_t>(shapes_.size());
-    shapes_.push_back(s);
     const std::size_t first_piece = pieces_.size();
-    if (degree == 1) {
-      PieceRef p;
-      p.shape = si;
-      p.a = exact_point(s.x0, s.y0);
-      p.b = exact_point(s.x0 + s.ax[1], s.y0 + s.ay[1]);
-      p.sx = sign_of(s.ax[1]);
-      p.sy = sign_of(s.ay[1]);
-      p.id = id++;
-      pieces_.push_back(p);
-    } else if (!add_curve_pieces(si, id)) {
+    if (!add_curve_pieces(si, id)) {
       // A curve not cut into certified monotone pieces (extrema too close to tell, or near a
       // grid line): the rows of its control points' box are not the sweep's, and the curve
       // is left out (an id apart: no piece is joined to it).
@@ -1077,7 +1086,7 @@ bool Sweep::run(const Boundary& b, FillRule rule, std::int32_t w, std::int32_t h
     left_cover_.assign(static_cast<std::size_t>(h), 0);
     for (const PieceRef& p : pieces_) {
       const bool ok =
-          shapes_[p.shape].n == 1 ? walk_line(p.id, p.a, p.b, p.sx, p.sy) : walk_curve(p, p.id);
+          p.shape == kLine ? walk_line(p.id, p.a, p.b, p.sx, p.sy) : walk_curve(p, p.id);
       if (!ok)
         return false;
     }
