@@ -164,6 +164,10 @@ private:
   bool record(std::int64_t row, std::int64_t col, std::uint32_t id, int dirs, bool first, bool last,
               int sides, double area, double err, const Pt& a, const Pt& n, bool on_col);
   bool two_windings(const Cell& c, std::uint8_t runs) const;
+  // Whether pieces p and q, joined (p ends where q starts), meet nowhere else however sharply
+  // they turn: one is a line and the other's shape has all its control points but the joint
+  // strictly on one side of that line (its convex hull holds it).
+  bool turn_apart(std::uint32_t p, std::uint32_t q) const;
   void sweep(std::span<std::uint8_t> out);
   bool sweep_row(std::size_t r, std::uint8_t* row) const;
   // Leaves the rows from raw height y0 to y1 (and one more each way) to the other methods.
@@ -833,6 +837,65 @@ int side_of(const ArcInfo& a, const Box& b) {
 }
 
 // rule: PATH.AREA.SWEEP
+bool Sweep::turn_apart(std::uint32_t p, std::uint32_t q) const {
+  const auto find = [&](std::uint32_t id) {
+    const auto it = std::lower_bound(pieces_.begin(), pieces_.end(), id,
+                                     [](const PieceRef& r, std::uint32_t x) { return r.id < x; });
+    return it != pieces_.end() && it->id == id ? &*it : nullptr;
+  };
+  const PieceRef* a = find(p);
+  const PieceRef* b = find(q);
+  if (a == nullptr || b == nullptr)
+    return false;
+  // The line (from the joint J along d) and the other piece, whose shape ends at J.
+  const bool a_line = a->shape == kLine;
+  if (!a_line && b->shape != kLine)
+    return false;
+  const PieceRef& line = a_line ? *a : *b;
+  const PieceRef& other = a_line ? *b : *a;
+  const double jx = a->b.x, jy = a->b.y; // exact: a shape's end
+  const double dx = (a_line ? line.a.x : line.b.x) - jx, dy = (a_line ? line.a.y : line.b.y) - jy;
+  // 3 (P_k - J) for the other shape's control points, from its power form (exact integers
+  // below 2^27; the cross products below 2^53).
+  std::array<std::array<double, 2>, 4> cp{};
+  int n = 1;
+  if (other.shape == kLine) {
+    cp[0] = {3 * other.a.x, 3 * other.a.y};
+    cp[1] = {3 * other.b.x, 3 * other.b.y};
+  } else {
+    const Shape& s = shapes_[other.shape];
+    n = s.n;
+    const double x0 = 3 * s.x0, y0 = 3 * s.y0;
+    if (n == 2) {
+      cp[0] = {x0, y0};
+      cp[1] = {x0 + 1.5 * s.ax[1], y0 + 1.5 * s.ay[1]};
+      cp[2] = {x0 + 3 * (s.ax[1] + s.ax[2]), y0 + 3 * (s.ay[1] + s.ay[2])};
+    } else {
+      cp[0] = {x0, y0};
+      cp[1] = {x0 + s.ax[1], y0 + s.ay[1]};
+      cp[2] = {x0 + 2 * s.ax[1] + s.ax[2], y0 + 2 * s.ay[1] + s.ay[2]};
+      cp[3] = {x0 + 3 * (s.ax[1] + s.ax[2] + s.ax[3]), y0 + 3 * (s.ay[1] + s.ay[2] + s.ay[3])};
+    }
+  }
+  int sign = 0;
+  bool at_joint = false;
+  for (int k = 0; k <= n; ++k) {
+    const double ex = cp[static_cast<std::size_t>(k)][0] - 3 * jx;
+    const double ey = cp[static_cast<std::size_t>(k)][1] - 3 * jy;
+    if (ex == 0 && ey == 0 && (k == 0 || k == n) && !at_joint) {
+      at_joint = true; // the joint itself, once, at an end
+      continue;
+    }
+    const double c = dx * ey - dy * ex;
+    const int sk = c > 0 ? 1 : (c < 0 ? -1 : 0);
+    if (sk == 0 || (sign != 0 && sk != sign))
+      return false;
+    sign = sk;
+  }
+  return at_joint && (dx != 0 || dy != 0);
+}
+
+// rule: PATH.AREA.SWEEP
 // Whether a cell holds at most two winding numbers, and they differ by one. Its visits form
 // arcs: consecutive pieces of one contour joined inside the cell (the one ending where the
 // next starts), and a contour's last piece joined to its first. One run of consecutive pieces
@@ -910,7 +973,8 @@ bool Sweep::two_windings(const Cell& c, std::uint8_t runs) const {
       for (int b = a + 1; b < m; ++b) {
         const Seen& p = *order[static_cast<std::size_t>(a)];
         const Seen& q = *order[static_cast<std::size_t>(b)];
-        if (!(b == a + 1 ? monotone((p.flags | q.flags) & 15) : apart(p.box, q.box)))
+        if (!(b == a + 1 ? monotone((p.flags | q.flags) & 15) || turn_apart(p.id, q.id)
+                         : apart(p.box, q.box)))
           return false;
       }
     return true;

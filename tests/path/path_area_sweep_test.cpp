@@ -200,6 +200,24 @@ TEST(PathAreaSweep, ArcsApartWithTheSameChangeOfWindingAreDecided) {
   }
 }
 
+// A quadratic coming down into pixel (1, 1) and a line leaving its end back up to the right:
+// a sharp V (their directions together turn in x and in y). The curve's control points lie on
+// one side of the line, so the two meet only at the joint and the pixel is decided. With the
+// control point across the line the curve may cross it again inside the pixel (here it does,
+// arriving level at the joint: a small loop): the row is left.
+// rule: PATH.AREA.SWEEP
+TEST(PathAreaSweep, ASharpTurnOfACurveAndALineIsDecidedWhereTheyMeetOnce) {
+  const auto v = [](double sx, double cx, double cy) {
+    return make_path(
+        FillRule::kNonZero,
+        {contour(sx, 0.75, {quad_to(cx, cy, 1.25, 1.5), line_to(2.5, 0.875), line_to(2.5, 0.75)})});
+  };
+  EXPECT_EQ(sweep(v(1.5, 1.5, 1.25), 4, 3).left, (std::vector<std::uint8_t>{0, 0, 0}));
+  // Arriving level at the joint, below the line, after crossing it at (1.625, 1.3125) (t = 1/2):
+  // a loop of 1/64 px^2.
+  EXPECT_EQ(sweep(v(1.75, 1.75, 1.5), 4, 3).left[1], 1);
+}
+
 // Rows the sweep leaves: a square drawn twice under even-odd (two runs that meet in every cell of
 // its edges: the conflation case, alpha 0 everywhere) leaves its rows, the empty row below
 // decided; a cubic with a small loop inside one pixel (extrema too close to tell) leaves the rows
