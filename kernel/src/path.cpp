@@ -180,6 +180,15 @@ int control_points(const Boundary& b, const SegmentRef& r, std::array<Point, 4>&
   return 1;
 }
 
+std::pair<double, double> control_y_range(const std::array<Point, 4>& cp, int degree) {
+  std::int32_t lo = cp[0].y, hi = lo;
+  for (int k = 1; k <= degree; ++k) {
+    lo = std::min(lo, cp[static_cast<std::size_t>(k)].y);
+    hi = std::max(hi, cp[static_cast<std::size_t>(k)].y);
+  }
+  return {lo, hi};
+}
+
 } // namespace detail
 
 // rule: PATH.WINDING, PATH.SAMPLE.TIE

@@ -967,16 +967,9 @@ bool FastAlpha::walk(const Boundary& b) {
       continue; // a point (PATH.DEGENERATE)
     // A shape with no wanted row within a row of its control points (whose box holds it) has
     // no part in them; the pieces after it must not link to those before it.
-    {
-      double y_lo = cp[0].y, y_hi = y_lo;
-      for (int k = 1; k <= degree; ++k) {
-        y_lo = std::min<double>(y_lo, cp[static_cast<std::size_t>(k)].y);
-        y_hi = std::max<double>(y_hi, cp[static_cast<std::size_t>(k)].y);
-      }
-      if (!wanted_near(y_lo, y_hi)) {
-        gap_ = true;
-        continue;
-      }
+    if (const auto [y_lo, y_hi] = control_y_range(cp, degree); !wanted_near(y_lo, y_hi)) {
+      gap_ = true;
+      continue;
     }
     // A curve that runs along a grid line (x or y constant on it, back and forth) is left to the
     // exact methods: along the target's right side x = w its sub-arcs were given the alpha of

@@ -189,6 +189,7 @@ private:
   std::uint8_t* doubted_ = nullptr;      // a byte a row: 1 where the sweep does not decide it
 };
 
+// rule: PATH.AREA.SWEEP
 void Sweep::doubt(double y0, double y1) {
   const double lo = std::max(floor_of(std::min(y0, y1) * (1 / kWd)) - 1, 0.0);
   const double hi = std::min(floor_of(std::max(y0, y1) * (1 / kWd)) + 1, h_ - 1.0);
@@ -762,11 +763,7 @@ bool Sweep::build(const Boundary& b) {
       // is left out (an id apart: no piece is joined to it).
       pieces_.resize(first_piece);
       ++id;
-      double y_lo = cp[0].y, y_hi = y_lo;
-      for (int k = 1; k <= degree; ++k) {
-        y_lo = std::min<double>(y_lo, cp[static_cast<std::size_t>(k)].y);
-        y_hi = std::max<double>(y_hi, cp[static_cast<std::size_t>(k)].y);
-      }
+      const auto [y_lo, y_hi] = control_y_range(cp, degree);
       doubt(y_lo, y_hi);
     }
     contours_.back().second = id - 1;
@@ -800,6 +797,7 @@ struct ArcInfo {
 // above where it lies on the bottom side, and likewise right of it with the end at its greatest
 // x. Monotone in y with sense sy the same with x and y exchanged: right of it the winding is
 // lower by sy.
+// rule: PATH.AREA.SWEEP
 int side_of(const ArcInfo& a, const Box& b) {
   const auto pick = [](int sides, int near, int far, int sign) {
     if ((sides & near) != 0 && (sides & far) == 0)
@@ -892,7 +890,7 @@ bool Sweep::turn_apart(std::uint32_t p, std::uint32_t q) const {
       return false;
     sign = sk;
   }
-  return at_joint && (dx != 0 || dy != 0);
+  return at_joint;
 }
 
 // rule: PATH.AREA.SWEEP
@@ -901,7 +899,8 @@ bool Sweep::turn_apart(std::uint32_t p, std::uint32_t q) const {
 // next starts), and a contour's last piece joined to its first. One run of consecutive pieces
 // monotone in x or in y is a graph: any straight path in the cell crosses it with alternating
 // signs. Else (b) one arc that does not cross itself (two pieces that meet at a joint do not
-// turn back into each other's quadrant, any other two have boxes apart), whose ends lie on the
+// turn back into each other's quadrant or are apart by turn_apart, any other two have boxes
+// apart), whose ends lie on the
 // border, cuts the cell into two sides; or (c) several arcs, each of one sense in y and the two
 // of opposite senses, with boxes apart in x (left of the left one, between, right of the right
 // one: W + d, W, W - d' with d = d'), or the same with x and y exchanged; or (d) several arcs,

@@ -14,6 +14,7 @@
 #include <optional>
 #include <span>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "rastrules/fixed.hpp"
@@ -69,6 +70,9 @@ struct SegmentRef {
 void segments_in_order(const Boundary& b, std::vector<SegmentRef>& refs);
 // The control points of segment r of b into cp (a line's two first); its degree (1 a line).
 int control_points(const Boundary& b, const SegmentRef& r, std::array<Point, 4>& cp);
+// The least and greatest y (raw) of cp's first degree + 1 points: the convex hull, and so the
+// segment, lies between them.
+std::pair<double, double> control_y_range(const std::array<Point, 4>& cp, int degree);
 
 // One crossing of the displaced horizontal line through a sample row: it counts for a sample
 // at raw x iff x <= threshold (PATH.SAMPLE.TIE: x_c > x, or x_c == x and hx = -1); dir is +1
